@@ -1,0 +1,409 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+
+/*
+ * Draw contexts: where a view's renderer puts its image. Q3 provides the
+ * pixmap draw context, which renders into memory the caller owns.
+ *
+ * Error conventions shared by every function in this header: a call that
+ * fails posts exactly one error, the first of its listed codes that applies,
+ * and leaves every object and output it was given unchanged. "Not a live Q3
+ * object" means a handle that was disposed or never came from Q3.
+ *
+ * Changes made to a draw context while a view is rendering into it take
+ * effect at that view's next Q3View_StartRendering.
+ *
+ * TQ3Boolean fields and arguments: any value other than kQ3False is taken,
+ * and stored, as kQ3True (legacy code often leaves them as plain nonzero
+ * ints).
+ */
+#ifndef QD3DDRAWCONTEXT_H
+#define QD3DDRAWCONTEXT_H
+
+#include "QD3D.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What Q3View_StartRendering does to the image before drawing. */
+enum TQ3DrawContextClearImageMethod {
+    kQ3ClearMethodNone      = 0, /* leave the pixels as they are          */
+    kQ3ClearMethodWithColor = 1  /* fill the pane (or image) with
+                                    clearImageColor                       */
+};
+typedef enum TQ3DrawContextClearImageMethod TQ3DrawContextClearImageMethod;
+
+/*
+ * State common to every draw context.
+ *   clearImageMethod   see TQ3DrawContextClearImageMethod.
+ *   clearImageColor    the clear colour; components outside 0 to 1 are
+ *                      clamped when used.
+ *   pane               the rectangle drawn into, in pixels: (0, 0) is the
+ *                      top-left corner of the top-left pixel, x grows to the
+ *                      right and y downwards. The camera's view port is
+ *                      mapped onto the pane; pixels of the pane outside the
+ *                      image are not drawn.
+ *   paneState          kQ3True to draw into pane only; kQ3False to draw into
+ *                      the whole image (pane is then ignored and may hold
+ *                      anything).
+ *   mask, maskState    stored and returned as given; Q3's renderers do not
+ *                      apply a mask and never read mask.image.
+ *   doubleBufferState  stored and returned as given; a pixmap draw context is
+ *                      always drawn into directly.
+ *
+ * The rules a TQ3DrawContextData must obey wherever one is accepted
+ * (Q3PixmapDrawContext_New, Q3DrawContext_SetData), all reported as
+ * kQ3ErrorInvalidData:
+ *   clearImageMethod is a TQ3DrawContextClearImageMethod value;
+ *   the clearImageColor components are finite;
+ *   when paneState is kQ3True: the pane coordinates are finite,
+ *     pane.min.x < pane.max.x and pane.min.y < pane.max.y.
+ */
+struct TQ3DrawContextData {
+    TQ3DrawContextClearImageMethod clearImageMethod;
+    TQ3ColorARGB clearImageColor;
+    TQ3Area pane;
+    TQ3Boolean paneState;
+    TQ3Bitmap mask;
+    TQ3Boolean maskState;
+    TQ3Boolean doubleBufferState;
+};
+typedef struct TQ3DrawContextData TQ3DrawContextData;
+
+/*
+ * A pixmap draw context: the common state plus the image (TQ3Pixmap, in
+ * QD3D.h) rendered into.
+ *
+ * How Q3 writes a pixel. Each pixel is a pixelSize-bit unsigned value whose
+ * channels sit in the order the type's name gives, most significant first:
+ *   kQ3PixelTypeARGB32     32 bits  A 31-24, R 23-16, G 15-8, B 7-0
+ *   kQ3PixelTypeRGB32      32 bits  bits 31-24 unused, R 23-16, G 15-8, B 7-0
+ *   kQ3PixelTypeARGB16     16 bits  A 15, R 14-10, G 9-5, B 4-0
+ *   kQ3PixelTypeRGB16      16 bits  bit 15 unused, R 14-10, G 9-5, B 4-0
+ *   kQ3PixelTypeRGB16_565  16 bits  R 15-11, G 10-5, B 4-0
+ *   kQ3PixelTypeRGB24      24 bits  R 23-16, G 15-8, B 7-0
+ * Channel values from 0 to 1 are scaled to the channel's range and rounded to
+ * nearest; unused bits are written as ones. Alpha is 1 wherever geometry is
+ * drawn and the clear colour's alpha wherever only the clear reaches.
+ * byteOrder is the order in which the bytes of each pixel value are stored
+ * (kQ3EndianBig: most significant byte at the lowest address). bitOrder is
+ * not used for pixmaps. Rows are stored top row first, rowBytes apart.
+ *
+ * The rules a TQ3Pixmap must obey wherever one is accepted
+ * (Q3PixmapDrawContext_New, Q3PixmapDrawContext_SetPixmap), with the error
+ * posted when one is broken, checked in this order:
+ *   image is not NULL                               kQ3ErrorNULLParameter
+ *   pixelType is a TQ3PixelType value, and
+ *     byteOrder and bitOrder are TQ3Endian values   kQ3ErrorInvalidData
+ *   pixelSize is the size the table above gives
+ *     for pixelType                          kQ3ErrorUnsupportedPixelDepth
+ *   width >= 1, height >= 1, and
+ *     rowBytes >= width * pixelSize / 8             kQ3ErrorInvalidData
+ *
+ * The image memory stays the caller's: Q3 neither copies nor frees it. It
+ * must remain valid, and must not move, for as long as a view may render
+ * into the draw context with this pixmap.
+ */
+struct TQ3PixmapDrawContextData {
+    TQ3DrawContextData drawContextData;
+    TQ3Pixmap pixmap;
+};
+typedef struct TQ3PixmapDrawContextData TQ3PixmapDrawContextData;
+
+/* ---- Draw context ------------------------------------------------------- */
+
+/**
+ * Reports the kind of a draw context.
+ *
+ * @param drawContext  the draw context to query.
+ * @return its type code (kQ3DrawContextTypePixmap for a pixmap draw
+ *         context), or kQ3ObjectTypeInvalid on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      drawContext is NULL.
+ *   kQ3ErrorInvalidObject      drawContext is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  drawContext is not a draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3DrawContext_GetType(TQ3DrawContextObject drawContext);
+
+/**
+ * Replaces all the common state of a draw context at once.
+ *
+ * @param context      the draw context to change.
+ * @param contextData  the new state; it must obey the TQ3DrawContextData
+ *                     rules above. It is copied.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or contextData is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *   kQ3ErrorInvalidData        contextData breaks a TQ3DrawContextData rule.
+ *
+ * Ownership: no references change; mask.image stays the caller's.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetData(TQ3DrawContextObject context,
+                                                 const TQ3DrawContextData *contextData);
+
+/**
+ * Reads all the common state of a draw context.
+ *
+ * @param context      the draw context to read.
+ * @param contextData  receives the state as last set.
+ * @return kQ3Success, or kQ3Failure with *contextData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or contextData is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change; mask.image is the pointer the caller gave.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetData(TQ3DrawContextObject context,
+                                                 TQ3DrawContextData *contextData);
+
+/**
+ * Sets the colour Q3View_StartRendering clears the image to when the clear
+ * method is kQ3ClearMethodWithColor.
+ *
+ * @param context  the draw context to change.
+ * @param color    the clear colour; components must be finite and are
+ *                 clamped to 0 to 1 when used.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or color is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *   kQ3ErrorInvalidParameter   a component of *color is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetClearImageColor(TQ3DrawContextObject context,
+                                                            const TQ3ColorARGB *color);
+
+/**
+ * Reads the clear colour of a draw context, as set (not clamped).
+ *
+ * @param context  the draw context to read.
+ * @param color    receives the clear colour.
+ * @return kQ3Success, or kQ3Failure with *color unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or color is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetClearImageColor(TQ3DrawContextObject context,
+                                                            TQ3ColorARGB *color);
+
+/**
+ * Sets the pane of a draw context: the rectangle, in pixels, that rendering
+ * is confined to while the pane state is kQ3True.
+ *
+ * @param context  the draw context to change.
+ * @param pane     the pane; coordinates must be finite with min.x < max.x
+ *                 and min.y < max.y.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or pane is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *   kQ3ErrorInvalidParameter   a coordinate is not finite, or the pane is
+ *                              empty or inverted.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetPane(TQ3DrawContextObject context,
+                                                 const TQ3Area *pane);
+
+/**
+ * Reads the pane of a draw context, as last set.
+ *
+ * @param context  the draw context to read.
+ * @param pane     receives the pane.
+ * @return kQ3Success, or kQ3Failure with *pane unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or pane is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetPane(TQ3DrawContextObject context, TQ3Area *pane);
+
+/**
+ * Turns the pane on (kQ3True: draw into the pane only) or off (kQ3False:
+ * draw into the whole image). Turning it on checks the stored pane.
+ *
+ * @param context  the draw context to change.
+ * @param state    the new pane state.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *   kQ3ErrorInvalidParameter   state is kQ3True and the stored pane has a
+ *                              non-finite coordinate or is empty or inverted.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetPaneState(TQ3DrawContextObject context,
+                                                      TQ3Boolean state);
+
+/**
+ * Reads the pane state of a draw context.
+ *
+ * @param context  the draw context to read.
+ * @param state    receives kQ3True or kQ3False.
+ * @return kQ3Success, or kQ3Failure with *state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or state is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetPaneState(TQ3DrawContextObject context,
+                                                      TQ3Boolean *state);
+
+/**
+ * Sets what Q3View_StartRendering does to the image before drawing.
+ *
+ * @param context  the draw context to change.
+ * @param method   kQ3ClearMethodNone or kQ3ClearMethodWithColor.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *   kQ3ErrorInvalidParameter   method is not a TQ3DrawContextClearImageMethod
+ *                              value.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetClearImageMethod(TQ3DrawContextObject context,
+                                                             TQ3DrawContextClearImageMethod method);
+
+/**
+ * Reads the clear method of a draw context.
+ *
+ * @param context  the draw context to read.
+ * @param method   receives the clear method.
+ * @return kQ3Success, or kQ3Failure with *method unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or method is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetClearImageMethod(TQ3DrawContextObject context,
+                                                             TQ3DrawContextClearImageMethod *method);
+
+/* ---- Pixmap draw context ------------------------------------------------ */
+
+/**
+ * Creates a draw context that renders into a caller-owned pixmap.
+ *
+ * @param contextData  the common state, which must obey the
+ *                     TQ3DrawContextData rules, and the pixmap, which must
+ *                     obey the TQ3Pixmap rules (both above). The structure is
+ *                     copied; the image memory is not.
+ * @return the new draw context, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized         Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter          contextData is NULL.
+ *   kQ3ErrorInvalidData            drawContextData breaks a
+ *                                  TQ3DrawContextData rule.
+ *   then the codes of the TQ3Pixmap rules, in their order:
+ *   kQ3ErrorNULLParameter          pixmap.image is NULL.
+ *   kQ3ErrorInvalidData            pixelType, byteOrder or bitOrder is not a
+ *                                  value of its enumeration.
+ *   kQ3ErrorUnsupportedPixelDepth  pixelSize does not fit pixelType.
+ *   kQ3ErrorInvalidData            width or height is 0, or rowBytes is too
+ *                                  small for a row.
+ *   kQ3ErrorOutOfMemory            the draw context cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new draw context is born
+ * with and releases it with Q3Object_Dispose. The image memory stays the
+ * caller's and must outlive its use by the draw context.
+ */
+Q3_EXTERN_API_C(TQ3DrawContextObject) Q3PixmapDrawContext_New(
+    const TQ3PixmapDrawContextData *contextData);
+
+/**
+ * Replaces the pixmap a pixmap draw context renders into.
+ *
+ * @param drawContext  the pixmap draw context to change.
+ * @param pixmap       the new pixmap; it must obey the TQ3Pixmap rules above.
+ *                     The structure is copied; the image memory is not.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized         Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter          drawContext or pixmap is NULL.
+ *   kQ3ErrorInvalidObject          drawContext is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType      drawContext is not a pixmap draw context.
+ *   then the codes of the TQ3Pixmap rules, in their order:
+ *   kQ3ErrorNULLParameter          pixmap->image is NULL.
+ *   kQ3ErrorInvalidData            pixelType, byteOrder or bitOrder is not a
+ *                                  value of its enumeration.
+ *   kQ3ErrorUnsupportedPixelDepth  pixelSize does not fit pixelType.
+ *   kQ3ErrorInvalidData            width or height is 0, or rowBytes is too
+ *                                  small for a row.
+ *
+ * Ownership: no references change. Q3 stops using the previous image memory
+ * once no view is rendering into the draw context with it; the new memory
+ * stays the caller's and must outlive its use by the draw context.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapDrawContext_SetPixmap(TQ3DrawContextObject drawContext,
+                                                         const TQ3Pixmap *pixmap);
+
+/**
+ * Reads the pixmap a pixmap draw context renders into.
+ *
+ * @param drawContext  the pixmap draw context to read.
+ * @param pixmap       receives the pixmap as last set (image is the caller's
+ *                     pointer).
+ * @return kQ3Success, or kQ3Failure with *pixmap unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      drawContext or pixmap is NULL.
+ *   kQ3ErrorInvalidObject      drawContext is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  drawContext is not a pixmap draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapDrawContext_GetPixmap(TQ3DrawContextObject drawContext,
+                                                         TQ3Pixmap *pixmap);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* QD3DDRAWCONTEXT_H */

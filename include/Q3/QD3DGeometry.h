@@ -1,0 +1,777 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+
+/*
+ * Geometries: NURB curves, polylines, lines and points, in retained mode (an
+ * object made by ..._New and drawn with Q3Geometry_Submit) and immediate mode
+ * (a data structure drawn at once with ..._Submit).
+ *
+ * Error conventions shared by every function in this header: a call that
+ * fails posts exactly one error, the first of its listed codes that applies,
+ * and leaves every object and output it was given unchanged (a retained
+ * geometry keeps its data and its edit index). Warnings do not make a call
+ * fail. "Not a live Q3 object" means a handle that was disposed or never
+ * came from Q3.
+ *
+ * Attribute sets inside the data structures may be NULL. Q3 does not copy
+ * them: a retained geometry holds its own reference to each set it was given.
+ */
+#ifndef QD3DGEOMETRY_H
+#define QD3DGEOMETRY_H
+
+#include "QD3D.h"
+#include "QD3DSet.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Geometry ----------------------------------------------------------- */
+
+/**
+ * Reports the kind of a geometry.
+ *
+ * @param geometry  the geometry to query.
+ * @return its type code (kQ3GeometryTypeNURBCurve, kQ3GeometryTypePolyLine,
+ *         kQ3GeometryTypeLine, kQ3GeometryTypePoint), or kQ3ObjectTypeInvalid
+ *         on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry is NULL.
+ *   kQ3ErrorInvalidObject      geometry is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a geometry.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3Geometry_GetType(TQ3GeometryObject geometry);
+
+/**
+ * Submits a retained geometry to a view in a rendering or bounding loop. It
+ * is drawn (or bounded) under the view's current transform, style and
+ * attribute state; a NURB curve is first subdivided into line segments as
+ * the current subdivision style says.
+ *
+ * @param geometry  the geometry to draw.
+ * @param view      a view inside a loop.
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry or view is NULL.
+ *   kQ3ErrorInvalidObject      geometry or view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a geometry, or view is not a
+ *                              view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   kQ3ErrorOutOfMemory        a NURB curve cannot be subdivided for lack of
+ *                              memory.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  a NURB curve would need more than
+ *                              kQ3SubdivisionMaxSegmentsPerCurve segments
+ *                              (QD3DStyle.h) and is drawn with that many.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Geometry_Submit(TQ3GeometryObject geometry, TQ3ViewObject view);
+
+/**
+ * Q3 extension (the name and signature are Quesa's; QuickDraw 3D never had
+ * this call). Returns, as a new polyline, exactly the line segments the view
+ * would draw for a NURB curve if the curve were submitted now: same
+ * subdivision style, same local-to-world transform, same camera and draw
+ * context (for screen-space subdivision; a bounding loop without them
+ * subdivides as QD3DView.h describes). The polyline's vertices are in the
+ * curve's local coordinates, untransformed.
+ *
+ * The new polyline's polyLineAttributeSet is the curve's attribute set (a new
+ * reference to the same set, or NULL); its vertices and segments have no
+ * attribute sets.
+ *
+ * Geometries other than NURB curves are not decomposed: for them the call
+ * returns NULL and posts nothing.
+ *
+ * @param geometry  the geometry to decompose.
+ * @param view      a view inside a rendering or bounding loop, supplying the
+ *                  current state.
+ * @return a new PolyLine, or NULL on failure or when geometry is not a NURB
+ *         curve.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry or view is NULL.
+ *   kQ3ErrorInvalidObject      geometry or view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a geometry, or view is not a
+ *                              view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   kQ3ErrorOutOfMemory        the polyline cannot be allocated.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the curve would need more than
+ *                              kQ3SubdivisionMaxSegmentsPerCurve segments and
+ *                              the polyline has that many.
+ *
+ * Ownership: the caller owns the one reference the new polyline is born with
+ * and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Geometry_GetDecomposed(TQ3GeometryObject geometry,
+                                                            TQ3ViewObject view);
+
+/* ---- NURB curve --------------------------------------------------------- */
+
+/* The highest order a NURB curve may have (order = degree + 1). */
+#define kQ3NURBCurveMaxOrder 16
+
+/*
+ * A non-uniform rational B-spline curve.
+ *   order          degree + 1, from 2 to kQ3NURBCurveMaxOrder.
+ *   numPoints      the number of control points, at least order.
+ *   controlPoints  numPoints homogeneous control points; the position of
+ *                  each is (x/w, y/w, z/w) and w is its weight.
+ *   knots          numPoints + order knot values.
+ *   curveAttributeSet  attributes of the whole curve, or NULL.
+ *
+ * Q3 cannot see how long the arrays are: they must hold the counts above.
+ *
+ * The rules a TQ3NURBCurveData must obey wherever one is accepted
+ * (Q3NURBCurve_New, Q3NURBCurve_SetData, Q3NURBCurve_Submit), with the error
+ * posted when one is broken, checked in this order:
+ *   controlPoints and knots are not NULL            kQ3ErrorNULLParameter
+ *   2 <= order <= kQ3NURBCurveMaxOrder              kQ3ErrorParameterOutOfRange
+ *   numPoints >= order                 kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   numPoints + order, and the byte size of each
+ *     array, fit in a size_t                        kQ3ErrorParameterOutOfRange
+ *   every coordinate, weight and knot is finite     kQ3ErrorInvalidData
+ *   every weight w is greater than 0                kQ3ErrorInvalidData
+ *   the knots never decrease                        kQ3ErrorInvalidData
+ *   no knot value occurs more than order times at
+ *     the start or at the end of the knot vector,
+ *     or more than order - 1 times anywhere else    kQ3ErrorInvalidData
+ *   curveAttributeSet is NULL or a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ *
+ * Article-compatibility alias: "nurbCurveAttributes" is a second name for
+ * curveAttributeSet, because the develop article's Listing 3 writes
+ * "nurbCurveData->nurbCurveAttributes = NULL;" although QuickDraw 3D's field
+ * was always curveAttributeSet. C99 has no anonymous unions, so the alias is
+ * a macro that renames the identifier nurbCurveAttributes everywhere after
+ * this header is included. Code that uses nurbCurveAttributes for anything
+ * else can define Q3_NO_ARTICLE_ALIASES before including any Q3 header to
+ * turn this alias (and TQ3RationalPoint4D_Set in QD3DMath.h) off.
+ */
+struct TQ3NURBCurveData {
+    unsigned long order;
+    unsigned long numPoints;
+    TQ3RationalPoint4D *controlPoints;
+    float *knots;
+    TQ3AttributeSet curveAttributeSet;
+};
+typedef struct TQ3NURBCurveData TQ3NURBCurveData;
+
+#ifndef Q3_NO_ARTICLE_ALIASES
+#define nurbCurveAttributes curveAttributeSet
+#endif
+
+/**
+ * Creates a retained NURB curve from a copy of the caller's description.
+ *
+ * @param curveData  the curve; it must obey the TQ3NURBCurveData rules above.
+ *                   Its arrays are copied.
+ * @return the new curve, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        curveData is NULL.
+ *   then the codes of the TQ3NURBCurveData rules, in their order:
+ *   kQ3ErrorNULLParameter        controlPoints or knots is NULL.
+ *   kQ3ErrorParameterOutOfRange  order is outside 2 to kQ3NURBCurveMaxOrder, or
+ *                                the counts overflow a size_t.
+ *   kQ3ErrorGeometryInsufficientNumberOfPoints  numPoints < order.
+ *   kQ3ErrorInvalidData          a value is not finite, a weight is not
+ *                                positive, the knots decrease, or a knot value
+ *                                repeats more often than allowed.
+ *   kQ3ErrorInvalidObject        curveAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    curveAttributeSet is not an attribute set.
+ *   kQ3ErrorOutOfMemory          the curve cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new curve is born with and
+ * releases it with Q3Object_Dispose. The curve takes its own reference to
+ * curveAttributeSet; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3NURBCurve_New(const TQ3NURBCurveData *curveData);
+
+/**
+ * Draws (or bounds) a NURB curve described by a data structure without
+ * creating an object (immediate mode), exactly as Q3Geometry_Submit would
+ * draw a retained curve made from the same data.
+ *
+ * @param curveData  the curve; it must obey the TQ3NURBCurveData rules above.
+ * @param view       a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        curveData or view is NULL.
+ *   kQ3ErrorInvalidObject        view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    view is not a view.
+ *   kQ3ErrorViewNotStarted       view is not inside a rendering or bounding
+ *                                loop.
+ *   then the codes of the TQ3NURBCurveData rules, in their order:
+ *   kQ3ErrorNULLParameter        controlPoints or knots is NULL.
+ *   kQ3ErrorParameterOutOfRange  order is outside 2 to kQ3NURBCurveMaxOrder, or
+ *                                the counts overflow a size_t.
+ *   kQ3ErrorGeometryInsufficientNumberOfPoints  numPoints < order.
+ *   kQ3ErrorInvalidData          a value is not finite, a weight is not
+ *                                positive, the knots decrease, or a knot value
+ *                                repeats more often than allowed.
+ *   kQ3ErrorInvalidObject        curveAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    curveAttributeSet is not an attribute set.
+ *   kQ3ErrorOutOfMemory          the subdivided curve cannot be allocated.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the curve would need more than
+ *                                kQ3SubdivisionMaxSegmentsPerCurve segments
+ *                                and is drawn with that many.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_Submit(const TQ3NURBCurveData *curveData,
+                                              TQ3ViewObject view);
+
+/**
+ * Replaces the whole description of a retained NURB curve; the only way to
+ * change its order or number of control points.
+ *
+ * @param curve          the curve to change.
+ * @param nurbCurveData  the new curve; it must obey the TQ3NURBCurveData
+ *                       rules above. Its arrays are copied.
+ * @return kQ3Success, or kQ3Failure with the curve unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        curve or nurbCurveData is NULL.
+ *   kQ3ErrorInvalidObject        curve is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    curve is not a NURB curve.
+ *   then the codes of the TQ3NURBCurveData rules, in their order:
+ *   kQ3ErrorNULLParameter        controlPoints or knots is NULL.
+ *   kQ3ErrorParameterOutOfRange  order is outside 2 to kQ3NURBCurveMaxOrder, or
+ *                                the counts overflow a size_t.
+ *   kQ3ErrorGeometryInsufficientNumberOfPoints  numPoints < order.
+ *   kQ3ErrorInvalidData          a value is not finite, a weight is not
+ *                                positive, the knots decrease, or a knot value
+ *                                repeats more often than allowed.
+ *   kQ3ErrorInvalidObject        curveAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    curveAttributeSet is not an attribute set.
+ *   kQ3ErrorOutOfMemory          the copy cannot be allocated.
+ *
+ * Ownership: the curve takes a reference to the new curveAttributeSet and
+ * releases the one it held; the caller keeps its own references.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_SetData(TQ3GeometryObject curve,
+                                               const TQ3NURBCurveData *nurbCurveData);
+
+/**
+ * Copies the whole description of a retained NURB curve into caller memory
+ * allocated by Q3. Release it with Q3NURBCurve_EmptyData.
+ *
+ * @param curve          the curve to read.
+ * @param nurbCurveData  receives order, numPoints, newly allocated copies of
+ *                       the control point and knot arrays, and the attribute
+ *                       set (or NULL).
+ * @return kQ3Success, or kQ3Failure with *nurbCurveData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      curve or nurbCurveData is NULL.
+ *   kQ3ErrorInvalidObject      curve is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  curve is not a NURB curve.
+ *   kQ3ErrorOutOfMemory        the arrays cannot be allocated.
+ *
+ * Ownership: the caller owns the two arrays and one new reference to the
+ * attribute set, and gives them all back with Q3NURBCurve_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_GetData(TQ3GeometryObject curve,
+                                               TQ3NURBCurveData *nurbCurveData);
+
+/**
+ * Releases what Q3NURBCurve_GetData put in a TQ3NURBCurveData: frees both
+ * arrays, disposes the attribute set reference, and sets controlPoints,
+ * knots and curveAttributeSet to NULL (order and numPoints are left alone).
+ * Calling it again on the emptied structure does nothing and succeeds.
+ * Use it only on data filled by Q3NURBCurve_GetData: arrays the caller
+ * allocated itself must be freed by the caller.
+ *
+ * @param nurbCurveData  the structure to empty.
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   nurbCurveData is NULL.
+ *
+ * Ownership: consumes the attribute set reference held in the structure.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_EmptyData(TQ3NURBCurveData *nurbCurveData);
+
+/**
+ * Replaces one control point of a retained NURB curve.
+ *
+ * @param curve       the curve to change.
+ * @param pointIndex  which control point, from 0 to numPoints - 1.
+ * @param point4D     the new homogeneous control point; its coordinates must
+ *                    be finite and its weight w greater than 0.
+ * @return kQ3Success, or kQ3Failure with the curve unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        curve or point4D is NULL.
+ *   kQ3ErrorInvalidObject        curve is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    curve is not a NURB curve.
+ *   kQ3ErrorParameterOutOfRange  pointIndex >= numPoints.
+ *   kQ3ErrorInvalidParameter     a coordinate of *point4D is not finite, or its
+ *                                w is not greater than 0.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_SetControlPoint(TQ3GeometryObject curve,
+                                                       unsigned long pointIndex,
+                                                       const TQ3RationalPoint4D *point4D);
+
+/**
+ * Reads one control point of a retained NURB curve.
+ *
+ * @param curve       the curve to read.
+ * @param pointIndex  which control point, from 0 to numPoints - 1.
+ * @param point4D     receives the homogeneous control point.
+ * @return kQ3Success, or kQ3Failure with *point4D unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        curve or point4D is NULL.
+ *   kQ3ErrorInvalidObject        curve is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    curve is not a NURB curve.
+ *   kQ3ErrorParameterOutOfRange  pointIndex >= numPoints.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_GetControlPoint(TQ3GeometryObject curve,
+                                                       unsigned long pointIndex,
+                                                       TQ3RationalPoint4D *point4D);
+
+/**
+ * Replaces one knot of a retained NURB curve. The knot vector that results
+ * must still obey the knot rules of TQ3NURBCurveData (finite, never
+ * decreasing, no value repeated too often).
+ *
+ * @param curve      the curve to change.
+ * @param knotIndex  which knot, from 0 to numPoints + order - 1.
+ * @param knotValue  the new value.
+ * @return kQ3Success, or kQ3Failure with the curve unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        curve is NULL.
+ *   kQ3ErrorInvalidObject        curve is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    curve is not a NURB curve.
+ *   kQ3ErrorParameterOutOfRange  knotIndex >= numPoints + order.
+ *   kQ3ErrorInvalidParameter     knotValue is not finite, is less than the
+ *                                knot before it or greater than the knot after
+ *                                it, or would repeat a value more often than
+ *                                allowed.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_SetKnot(TQ3GeometryObject curve,
+                                               unsigned long knotIndex,
+                                               float knotValue);
+
+/**
+ * Reads one knot of a retained NURB curve.
+ *
+ * @param curve      the curve to read.
+ * @param knotIndex  which knot, from 0 to numPoints + order - 1.
+ * @param knotValue  receives the knot value.
+ * @return kQ3Success, or kQ3Failure with *knotValue unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        curve or knotValue is NULL.
+ *   kQ3ErrorInvalidObject        curve is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    curve is not a NURB curve.
+ *   kQ3ErrorParameterOutOfRange  knotIndex >= numPoints + order.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_GetKnot(TQ3GeometryObject curve,
+                                               unsigned long knotIndex,
+                                               float *knotValue);
+
+/* ---- PolyLine ----------------------------------------------------------- */
+
+/*
+ * A connected sequence of line segments.
+ *   numVertices          at least 2.
+ *   vertices             numVertices points, each with an attribute set or
+ *                        NULL.
+ *   segmentAttributeSet  NULL, or numVertices - 1 attribute sets (entries may
+ *                        be NULL); entry i belongs to the segment from vertex
+ *                        i to vertex i + 1.
+ *   polyLineAttributeSet attributes of the whole polyline, or NULL.
+ *
+ * The rules a TQ3PolyLineData must obey wherever one is accepted, with the
+ * error posted when one is broken, checked in this order:
+ *   vertices is not NULL                            kQ3ErrorNULLParameter
+ *   numVertices >= 2                   kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   every coordinate is finite                      kQ3ErrorInvalidData
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3PolyLineData {
+    unsigned long numVertices;
+    TQ3Vertex3D *vertices;
+    TQ3AttributeSet *segmentAttributeSet;
+    TQ3AttributeSet polyLineAttributeSet;
+};
+typedef struct TQ3PolyLineData TQ3PolyLineData;
+
+/**
+ * Creates a retained polyline from a copy of the caller's description.
+ *
+ * @param polylineData  the polyline; it must obey the TQ3PolyLineData rules
+ *                      above. Its arrays are copied.
+ * @return the new polyline, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polylineData is NULL.
+ *   then the codes of the TQ3PolyLineData rules, in their order:
+ *   kQ3ErrorNULLParameter      vertices is NULL.
+ *   kQ3ErrorGeometryInsufficientNumberOfPoints  numVertices < 2.
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      an attribute set given is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set given is not an attribute set.
+ *   kQ3ErrorOutOfMemory        the polyline cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new polyline is born with
+ * and releases it with Q3Object_Dispose. The polyline takes its own
+ * reference to every attribute set given; the caller keeps its references.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3PolyLine_New(const TQ3PolyLineData *polylineData);
+
+/**
+ * Draws (or bounds) a polyline described by a data structure without
+ * creating an object (immediate mode).
+ *
+ * @param polyLineData  the polyline; it must obey the TQ3PolyLineData rules
+ *                      above.
+ * @param view          a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polyLineData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3PolyLineData rules, in their order:
+ *   kQ3ErrorNULLParameter      vertices is NULL.
+ *   kQ3ErrorGeometryInsufficientNumberOfPoints  numVertices < 2.
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      an attribute set given is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set given is not an attribute set.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_Submit(const TQ3PolyLineData *polyLineData,
+                                             TQ3ViewObject view);
+
+/**
+ * Replaces the whole description of a retained polyline.
+ *
+ * @param polyLine      the polyline to change.
+ * @param polyLineData  the new polyline; it must obey the TQ3PolyLineData
+ *                      rules above. Its arrays are copied.
+ * @return kQ3Success, or kQ3Failure with the polyline unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polyLine or polyLineData is NULL.
+ *   kQ3ErrorInvalidObject      polyLine is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  polyLine is not a polyline.
+ *   then the codes of the TQ3PolyLineData rules, in their order:
+ *   kQ3ErrorNULLParameter      vertices is NULL.
+ *   kQ3ErrorGeometryInsufficientNumberOfPoints  numVertices < 2.
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      an attribute set given is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set given is not an attribute set.
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the polyline takes references to the attribute sets given and
+ * releases those it held; the caller keeps its own references.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_SetData(TQ3GeometryObject polyLine,
+                                              const TQ3PolyLineData *polyLineData);
+
+/**
+ * Copies the whole description of a retained polyline into caller memory
+ * allocated by Q3. Release it with Q3PolyLine_EmptyData.
+ *
+ * @param polyLine      the polyline to read.
+ * @param polyLineData  receives numVertices, a newly allocated vertex array,
+ *                      a newly allocated segment attribute array if the
+ *                      polyline was given one (else NULL) and the polyline
+ *                      attribute set (or NULL).
+ * @return kQ3Success, or kQ3Failure with *polyLineData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polyLine or polyLineData is NULL.
+ *   kQ3ErrorInvalidObject      polyLine is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  polyLine is not a polyline.
+ *   kQ3ErrorOutOfMemory        the arrays cannot be allocated.
+ *
+ * Ownership: the caller owns the arrays and one new reference to every
+ * attribute set in the result, and gives them all back with
+ * Q3PolyLine_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_GetData(TQ3GeometryObject polyLine,
+                                              TQ3PolyLineData *polyLineData);
+
+/**
+ * Releases what Q3PolyLine_GetData put in a TQ3PolyLineData: disposes every
+ * attribute set reference, frees both arrays, and sets vertices,
+ * segmentAttributeSet and polyLineAttributeSet to NULL (numVertices is left
+ * alone). Calling it again on the emptied structure does nothing and
+ * succeeds. Use it only on data filled by Q3PolyLine_GetData.
+ *
+ * @param polyLineData  the structure to empty.
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   polyLineData is NULL.
+ *
+ * Ownership: consumes the attribute set references held in the structure.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_EmptyData(TQ3PolyLineData *polyLineData);
+
+/* ---- Line --------------------------------------------------------------- */
+
+/*
+ * A single line segment between two vertices, each with an attribute set or
+ * NULL, plus an attribute set for the whole line or NULL.
+ *
+ * The rules a TQ3LineData must obey wherever one is accepted, with the error
+ * posted when one is broken, checked in this order:
+ *   every coordinate is finite                      kQ3ErrorInvalidData
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3LineData {
+    TQ3Vertex3D vertices[2];
+    TQ3AttributeSet lineAttributeSet;
+};
+typedef struct TQ3LineData TQ3LineData;
+
+/**
+ * Creates a retained line from a copy of the caller's description.
+ *
+ * @param lineData  the line; it must obey the TQ3LineData rules above.
+ * @return the new line, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      lineData is NULL.
+ *   then the codes of the TQ3LineData rules, in their order:
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      an attribute set given is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set given is not an attribute set.
+ *   kQ3ErrorOutOfMemory        the line cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new line is born with and
+ * releases it with Q3Object_Dispose. The line takes its own reference to
+ * every attribute set given; the caller keeps its references.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Line_New(const TQ3LineData *lineData);
+
+/**
+ * Draws (or bounds) a line described by a data structure without creating
+ * an object (immediate mode).
+ *
+ * @param lineData  the line; it must obey the TQ3LineData rules above.
+ * @param view      a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      lineData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3LineData rules, in their order:
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      an attribute set given is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set given is not an attribute set.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Line_Submit(const TQ3LineData *lineData, TQ3ViewObject view);
+
+/**
+ * Copies the description of a retained line.
+ *
+ * @param line      the line to read.
+ * @param lineData  receives both vertices and the attribute sets (or NULL).
+ * @return kQ3Success, or kQ3Failure with *lineData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      line or lineData is NULL.
+ *   kQ3ErrorInvalidObject      line is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  line is not a line.
+ *
+ * Ownership: the caller owns one new reference to every attribute set in the
+ * result and gives them back with Q3Line_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Line_GetData(TQ3GeometryObject line, TQ3LineData *lineData);
+
+/**
+ * Replaces the description of a retained line.
+ *
+ * @param line      the line to change.
+ * @param lineData  the new line; it must obey the TQ3LineData rules above.
+ * @return kQ3Success, or kQ3Failure with the line unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      line or lineData is NULL.
+ *   kQ3ErrorInvalidObject      line is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  line is not a line.
+ *   then the codes of the TQ3LineData rules, in their order:
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      an attribute set given is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set given is not an attribute set.
+ *
+ * Ownership: the line takes references to the attribute sets given and
+ * releases those it held; the caller keeps its own references.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Line_SetData(TQ3GeometryObject line, const TQ3LineData *lineData);
+
+/**
+ * Releases what Q3Line_GetData put in a TQ3LineData: disposes the three
+ * attribute set references and sets them to NULL. Calling it again on the
+ * emptied structure does nothing and succeeds.
+ *
+ * @param lineData  the structure to empty.
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   lineData is NULL.
+ *
+ * Ownership: consumes the attribute set references held in the structure.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Line_EmptyData(TQ3LineData *lineData);
+
+/* ---- Point -------------------------------------------------------------- */
+
+/*
+ * A single point with an attribute set or NULL.
+ *
+ * The rules a TQ3PointData must obey wherever one is accepted, with the
+ * error posted when one is broken, checked in this order:
+ *   every coordinate is finite                      kQ3ErrorInvalidData
+ *   pointAttributeSet is NULL or a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3PointData {
+    TQ3Point3D point;
+    TQ3AttributeSet pointAttributeSet;
+};
+typedef struct TQ3PointData TQ3PointData;
+
+/**
+ * Creates a retained point from a copy of the caller's description.
+ *
+ * @param pointData  the point; it must obey the TQ3PointData rules above.
+ * @return the new point, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pointData is NULL.
+ *   then the codes of the TQ3PointData rules, in their order:
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      pointAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pointAttributeSet is not an attribute set.
+ *   kQ3ErrorOutOfMemory        the point cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new point is born with
+ * and releases it with Q3Object_Dispose. The point takes its own reference to
+ * pointAttributeSet; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Point_New(const TQ3PointData *pointData);
+
+/**
+ * Draws (or bounds) a point described by a data structure without creating
+ * an object (immediate mode).
+ *
+ * @param pointData  the point; it must obey the TQ3PointData rules above.
+ * @param view       a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pointData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3PointData rules, in their order:
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      pointAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pointAttributeSet is not an attribute set.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Point_Submit(const TQ3PointData *pointData, TQ3ViewObject view);
+
+/**
+ * Copies the description of a retained point.
+ *
+ * @param point      the point to read.
+ * @param pointData  receives the position and the attribute set (or NULL).
+ * @return kQ3Success, or kQ3Failure with *pointData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      point or pointData is NULL.
+ *   kQ3ErrorInvalidObject      point is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  point is not a point.
+ *
+ * Ownership: when pointData->pointAttributeSet is not NULL the caller owns a
+ * new reference to it and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Point_GetData(TQ3GeometryObject point, TQ3PointData *pointData);
+
+/**
+ * Replaces the description of a retained point.
+ *
+ * @param point      the point to change.
+ * @param pointData  the new point; it must obey the TQ3PointData rules above.
+ * @return kQ3Success, or kQ3Failure with the point unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      point or pointData is NULL.
+ *   kQ3ErrorInvalidObject      point is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  point is not a point.
+ *   then the codes of the TQ3PointData rules, in their order:
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *   kQ3ErrorInvalidObject      pointAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pointAttributeSet is not an attribute set.
+ *
+ * Ownership: the point takes a reference to the new pointAttributeSet and
+ * releases the one it held; the caller keeps its own reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Point_SetData(TQ3GeometryObject point, const TQ3PointData *pointData);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* QD3DGEOMETRY_H */

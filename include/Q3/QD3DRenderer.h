@@ -1,0 +1,298 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+
+/*
+ * Renderers: the objects that turn what a view traverses into pixels in its
+ * draw context. The renderer type codes (kQ3RendererType...) are in QD3D.h.
+ *
+ * Q3 provides the interactive renderer (kQ3RendererTypeInteractive). The
+ * Q3InteractiveRenderer_... settings below were hints for QuickDraw 3D's RAVE
+ * acceleration layer, which Q3 does not have: Q3 stores each value and
+ * returns it, so legacy code that sets and reads them keeps working, but the
+ * values do not change the image.
+ *
+ * Error conventions shared by every function in this header: a call that
+ * fails posts exactly one error, the first of its listed codes that applies,
+ * and leaves every object and output it was given unchanged. "Not a live Q3
+ * object" means a handle that was disposed or never came from Q3.
+ */
+#ifndef QD3DRENDERER_H
+#define QD3DRENDERER_H
+
+#include "QD3D.h"
+#include "QD3DSet.h"
+#include "QD3DView.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Constructive solid geometry (stored only; see above) --------------- */
+
+/* Attribute type naming the CSG object (A to E) a geometry belongs to. Q3's
+ * attribute sets do not store it (Q3AttributeSet_Add rejects it). */
+#define kQ3AttributeTypeConstructiveSolidGeometryID Q3_OBJECT_TYPE('c', 's', 'g', 'i')
+
+/* CSG object IDs, the values of that attribute. */
+#define kQ3SolidGeometryObjNone (-1)
+#define kQ3SolidGeometryObjA 0
+#define kQ3SolidGeometryObjB 1
+#define kQ3SolidGeometryObjC 2
+#define kQ3SolidGeometryObjD 3
+#define kQ3SolidGeometryObjE 4
+
+/*
+ * CSG equations: 32-bit truth tables over objects A to E; these are common
+ * ones, and any other 32-bit value is also an equation.
+ * kQ3CSGEquationAandB is the bit pattern 0x88888888. QuickDraw 3D wrote it as
+ * (long)0x88888888, which is negative with 32-bit long; here it is spelled as
+ * that negative int so that the enumeration stays within int, as C99
+ * requires.
+ */
+enum TQ3CSGEquation {
+    kQ3CSGEquationAandB      = -0x77777777 - 1,
+    kQ3CSGEquationAandnotB   = 0x22222222,
+    kQ3CSGEquationAanBonCad  = 0x2F222F22,
+    kQ3CSGEquationnotAandB   = 0x44444444,
+    kQ3CSGEquationnAaBorCanB = 0x74747474
+};
+typedef enum TQ3CSGEquation TQ3CSGEquation;
+
+/* ---- Renderer ----------------------------------------------------------- */
+
+/**
+ * Creates a renderer of the given type.
+ *
+ * @param rendererObjectType  a renderer type code of a renderer Q3 provides
+ *                            (kQ3RendererTypeInteractive).
+ * @return the new renderer, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorInvalidObjectType  rendererObjectType is not the type of a
+ *                              renderer Q3 provides.
+ *   kQ3ErrorOutOfMemory        the renderer cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new renderer is born with
+ * and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3RendererObject) Q3Renderer_NewFromType(TQ3ObjectType rendererObjectType);
+
+/**
+ * Reports the kind of a renderer.
+ *
+ * @param renderer  the renderer to query.
+ * @return its type code (kQ3RendererType...), or kQ3ObjectTypeInvalid on
+ *         failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not a renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3Renderer_GetType(TQ3RendererObject renderer);
+
+/* ---- Interactive renderer settings (stored only; see above) ------------- */
+
+/**
+ * Stores the CSG equation of an interactive renderer. Q3 does not perform
+ * CSG.
+ *
+ * @param renderer  an interactive renderer.
+ * @param equation  any 32-bit truth table (TQ3CSGEquation lists common ones).
+ * @return kQ3Success, or kQ3Failure with the renderer unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetCSGEquation(TQ3RendererObject renderer,
+                                                                TQ3CSGEquation equation);
+
+/**
+ * Reads the stored CSG equation of an interactive renderer
+ * (kQ3CSGEquationAandB until one is set).
+ *
+ * @param renderer  an interactive renderer.
+ * @param equation  receives the equation.
+ * @return kQ3Success, or kQ3Failure with *equation unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer or equation is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetCSGEquation(TQ3RendererObject renderer,
+                                                                TQ3CSGEquation *equation);
+
+/**
+ * Stores the preferred RAVE drawing engine of an interactive renderer. Q3
+ * always draws with its own engine.
+ *
+ * @param renderer  an interactive renderer.
+ * @param vendorID  a RAVE vendor ID (-1 is RAVE's "best choice"); any value.
+ * @param engineID  a RAVE engine ID of that vendor; any value.
+ * @return kQ3Success, or kQ3Failure with the renderer unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetPreferences(TQ3RendererObject renderer,
+                                                                long vendorID,
+                                                                long engineID);
+
+/**
+ * Reads the stored RAVE engine preference of an interactive renderer
+ * (vendorID -1 and engineID 0 until set).
+ *
+ * @param renderer  an interactive renderer.
+ * @param vendorID  receives the vendor ID.
+ * @param engineID  receives the engine ID.
+ * @return kQ3Success, or kQ3Failure with both outputs unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer, vendorID or engineID is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetPreferences(TQ3RendererObject renderer,
+                                                                long *vendorID,
+                                                                long *engineID);
+
+/**
+ * Stores whether an interactive renderer may draw straight to the front
+ * buffer. Q3 renders into the draw context's own image in every case.
+ *
+ * @param renderer  an interactive renderer.
+ * @param bypass    kQ3True or kQ3False; any other value is stored as kQ3True.
+ * @return kQ3Success, or kQ3Failure with the renderer unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetDoubleBufferBypass(TQ3RendererObject renderer,
+                                                                       TQ3Boolean bypass);
+
+/**
+ * Reads the stored double-buffer bypass setting of an interactive renderer
+ * (kQ3False until set).
+ *
+ * @param renderer  an interactive renderer.
+ * @param bypass    receives kQ3True or kQ3False.
+ * @return kQ3Success, or kQ3Failure with *bypass unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer or bypass is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetDoubleBufferBypass(TQ3RendererObject renderer,
+                                                                       TQ3Boolean *bypass);
+
+/**
+ * Stores the RAVE draw context flags (RAVE's kQAContext_... bits) of an
+ * interactive renderer. The flags do not change how Q3 renders.
+ *
+ * @param renderer          an interactive renderer.
+ * @param RAVEContextHints  any combination of flags.
+ * @return kQ3Success, or kQ3Failure with the renderer unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetRAVEContextHints(TQ3RendererObject renderer,
+                                                                     unsigned long RAVEContextHints);
+
+/**
+ * Reads the stored RAVE draw context flags of an interactive renderer (0
+ * until set).
+ *
+ * @param renderer          an interactive renderer.
+ * @param RAVEContextHints  receives the flags.
+ * @return kQ3Success, or kQ3Failure with *RAVEContextHints unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer or RAVEContextHints is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetRAVEContextHints(TQ3RendererObject renderer,
+                                                                     unsigned long *RAVEContextHints);
+
+/**
+ * Stores the RAVE texture filter of an interactive renderer (RAVE's
+ * kQATextureFilter_Fast 0, _Mid 1, _Best 2). Q3 draws no textures.
+ *
+ * @param renderer                an interactive renderer.
+ * @param RAVEtextureFilterValue  any value.
+ * @return kQ3Success, or kQ3Failure with the renderer unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetRAVETextureFilter(
+    TQ3RendererObject renderer, unsigned long RAVEtextureFilterValue);
+
+/**
+ * Reads the stored RAVE texture filter of an interactive renderer (0 until
+ * set).
+ *
+ * @param renderer                an interactive renderer.
+ * @param RAVEtextureFilterValue  receives the value.
+ * @return kQ3Success, or kQ3Failure with *RAVEtextureFilterValue unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer or RAVEtextureFilterValue is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetRAVETextureFilter(
+    TQ3RendererObject renderer, unsigned long *RAVEtextureFilterValue);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* QD3DRENDERER_H */

@@ -1,0 +1,245 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+
+/*
+ * Transforms: objects and immediate-mode calls that change a view's
+ * local-to-world transform while a scene is submitted.
+ *
+ * Submitting a transform with matrix T inside a traversal changes the view's
+ * local-to-world matrix L to T * L (matrices act on row vectors, see QD3D.h):
+ * T applies to geometry submitted afterwards, before every transform already
+ * in effect. Q3Push_Submit / Q3Pop_Submit (QD3DView.h) save and restore L.
+ *
+ * Error conventions shared by every function in this header: a call that
+ * fails posts exactly one error, the first of its listed codes that applies,
+ * and leaves every object and output it was given unchanged. "Not a live Q3
+ * object" means a handle that was disposed or never came from Q3.
+ */
+#ifndef QD3DTRANSFORM_H
+#define QD3DTRANSFORM_H
+
+#include "QD3D.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/*
+ * A rotation by radians about one coordinate axis through the local origin;
+ * positive angles turn counterclockwise as seen from the positive end of the
+ * axis (y towards z about X, z towards x about Y, x towards y about Z), the
+ * same matrix as Q3Matrix4x4_SetRotate_X/_Y/_Z (QD3DMath.h).
+ * Rules, reported as kQ3ErrorInvalidData: axis is a TQ3Axis value and
+ * radians is finite.
+ */
+struct TQ3RotateTransformData {
+    TQ3Axis axis;
+    float radians;
+};
+typedef struct TQ3RotateTransformData TQ3RotateTransformData;
+
+/* ---- Matrix transform --------------------------------------------------- */
+
+/**
+ * Creates a transform object holding an arbitrary matrix (it need not be
+ * invertible).
+ *
+ * @param matrix  the matrix; every entry must be finite. It is copied.
+ * @return the new transform, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     matrix is NULL.
+ *   kQ3ErrorInvalidParameter  an entry of *matrix is not finite.
+ *   kQ3ErrorOutOfMemory       the transform cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new transform is born
+ * with and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3TransformObject) Q3MatrixTransform_New(const TQ3Matrix4x4 *matrix);
+
+/**
+ * Applies a matrix to a view's local-to-world transform without creating an
+ * object (immediate mode).
+ *
+ * @param matrix  the matrix; every entry must be finite.
+ * @param view    a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with the view state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      matrix or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   kQ3ErrorInvalidParameter   an entry of *matrix is not finite.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3MatrixTransform_Submit(const TQ3Matrix4x4 *matrix,
+                                                    TQ3ViewObject view);
+
+/* ---- Translate transform ------------------------------------------------ */
+
+/**
+ * Creates a transform object that moves geometry by a vector.
+ *
+ * @param translate  the offset; its components must be finite. It is copied.
+ * @return the new transform, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     translate is NULL.
+ *   kQ3ErrorInvalidParameter  a component of *translate is not finite.
+ *   kQ3ErrorOutOfMemory       the transform cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new transform is born
+ * with and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3TransformObject) Q3TranslateTransform_New(const TQ3Vector3D *translate);
+
+/**
+ * Applies a translation to a view's local-to-world transform without
+ * creating an object (immediate mode).
+ *
+ * @param translate  the offset; its components must be finite.
+ * @param view       a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with the view state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      translate or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   kQ3ErrorInvalidParameter   a component of *translate is not finite.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TranslateTransform_Submit(const TQ3Vector3D *translate,
+                                                       TQ3ViewObject view);
+
+/* ---- Scale transform ---------------------------------------------------- */
+
+/**
+ * Creates a transform object that scales geometry about the local origin,
+ * by a separate factor along each axis (zero and negative factors allowed).
+ *
+ * @param scale  the factors; they must be finite. They are copied.
+ * @return the new transform, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     scale is NULL.
+ *   kQ3ErrorInvalidParameter  a component of *scale is not finite.
+ *   kQ3ErrorOutOfMemory       the transform cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new transform is born
+ * with and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3TransformObject) Q3ScaleTransform_New(const TQ3Vector3D *scale);
+
+/**
+ * Applies a scale to a view's local-to-world transform without creating an
+ * object (immediate mode).
+ *
+ * @param scale  the factors; they must be finite.
+ * @param view   a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with the view state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      scale or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   kQ3ErrorInvalidParameter   a component of *scale is not finite.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ScaleTransform_Submit(const TQ3Vector3D *scale, TQ3ViewObject view);
+
+/* ---- Rotate transform --------------------------------------------------- */
+
+/**
+ * Creates a transform object that rotates geometry about one coordinate
+ * axis.
+ *
+ * @param data  the axis and angle; they must obey the TQ3RotateTransformData
+ *              rules. They are copied.
+ * @return the new transform, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   data is NULL.
+ *   kQ3ErrorInvalidData     axis is not a TQ3Axis value, or radians is not
+ *                           finite.
+ *   kQ3ErrorOutOfMemory     the transform cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new transform is born
+ * with and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3TransformObject) Q3RotateTransform_New(const TQ3RotateTransformData *data);
+
+/**
+ * Applies a rotation about one coordinate axis to a view's local-to-world
+ * transform without creating an object (immediate mode).
+ *
+ * @param data  the axis and angle; they must obey the TQ3RotateTransformData
+ *              rules.
+ * @param view  a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with the view state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      data or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   kQ3ErrorInvalidData        axis is not a TQ3Axis value, or radians is not
+ *                              finite.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3RotateTransform_Submit(const TQ3RotateTransformData *data,
+                                                    TQ3ViewObject view);
+
+/* ---- Reset transform ---------------------------------------------------- */
+
+/**
+ * Creates a transform object that, when submitted, sets the view's
+ * local-to-world matrix back to the identity.
+ *
+ * @return the new transform, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorOutOfMemory     the transform cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new transform is born
+ * with and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3TransformObject) Q3ResetTransform_New(void);
+
+/**
+ * Sets a view's local-to-world matrix back to the identity (immediate mode).
+ *
+ * @param view  a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with the view state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ResetTransform_Submit(TQ3ViewObject view);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* QD3DTRANSFORM_H */

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "QD3DGeometry.h"
+#include "api/Entry.h"
+#include "geometry/Geometry.h"
+#include "view/View.h"
+
+using namespace q3;
+using q3::api::guard;
+using q3::api::guardStatus;
+
+extern "C" {
+
+TQ3ObjectType Q3Geometry_GetType(TQ3GeometryObject geometry)
+{
+    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
+                 [&] { return lookup<Geometry>(geometry, "geometry").leafType(); });
+}
+
+TQ3Status Q3Geometry_Submit(TQ3GeometryObject geometry, TQ3ViewObject view)
+{
+    return guardStatus(__func__, [&] {
+        const Geometry& shape = lookup<Geometry>(geometry, "geometry");
+        shape.accept(lookup<View>(view, "view").submitTarget());
+    });
+}
+
+} // extern "C"

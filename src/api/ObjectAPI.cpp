@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "QD3D.h"
+#include "api/Entry.h"
+
+using namespace q3;
+using q3::api::guard;
+using q3::api::guardStatus;
+
+extern "C" {
+
+TQ3Status Q3Initialize(void)
+{
+    errors::beginCall();
+    if (!system::initialize())
+        errors::postNotice(kQ3NoticeSystemAlreadyInitialized,
+                           "Q3Initialize: already initialized; the call nests and needs its own Q3Exit");
+    return kQ3Success;
+}
+
+TQ3Status Q3Exit(void)
+{
+    return guardStatus(__func__, [] {
+        system::exit();
+        const unsigned long live = liveObjectCount();
+        if (!system::isInitialized() && live != 0)
+            errors::postWarning(kQ3WarningPossibleMemoryLeak,
+                                "Q3Exit: " + std::to_string(live) + " object(s) were never disposed");
+    });
+}
+
+TQ3Boolean Q3IsInitialized(void)
+{
+    errors::beginCall();
+    return system::isInitialized() ? kQ3True : kQ3False;
+}
+
+TQ3Status Q3GetVersion(unsigned long* majorRevision, unsigned long* minorRevision)
+{
+    return guardStatus(__func__, [&] {
+        requireNonNull(majorRevision, "majorRevision");
+        requireNonNull(minorRevision, "minorRevision");
+        *majorRevision = 1;
+        *minorRevision = 6;
+    });
+}
+
+unsigned long Q3Memory_CountLiveObjects(void)
+{
+    return liveObjectCount();
+}
+
+TQ3Status Q3Object_Dispose(TQ3Object object)
+{
+    return guardStatus(__func__, [&] { lookupObject(object, "object").dispose(); });
+}
+
+TQ3Object Q3Object_Duplicate(TQ3Object object)
+{
+    return guard(__func__, TQ3Object{nullptr},
+                 [&]() -> TQ3Object { return lookupObject(object, "object").duplicate(); });
+}
+
+TQ3Boolean Q3Object_IsDrawable(TQ3Object object)
+{
+    return guard(__func__, kQ3False, [&] {
+        return lookupObject(object, "object").isDrawable() ? kQ3True : kQ3False;
+    });
+}
+
+TQ3ObjectType Q3Object_GetType(TQ3Object object)
+{
+    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
+                 [&] { return lookupObject(object, "object").classInfo().typeAtLevel(1); });
+}
+
+TQ3ObjectType Q3Object_GetLeafType(TQ3Object object)
+{
+    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
+                 [&] { return lookupObject(object, "object").leafType(); });
+}
+
+TQ3Boolean Q3Object_IsType(TQ3Object object, TQ3ObjectType theType)
+{
+    return guard(__func__, kQ3False,
+                 [&] { return lookupObject(object, "object").isType(theType) ? kQ3True : kQ3False; });
+}
+
+TQ3ObjectType Q3Shared_GetType(TQ3SharedObject sharedObject)
+{
+    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid}, [&] {
+        return lookup<SharedObject>(sharedObject, "sharedObject").classInfo().typeAtLevel(2);
+    });
+}
+
+TQ3SharedObject Q3Shared_GetReference(TQ3SharedObject sharedObject)
+{
+    return guard(__func__, TQ3SharedObject{nullptr}, [&]() -> TQ3SharedObject {
+        return lookupRef<SharedObject>(sharedObject, "sharedObject").detach();
+    });
+}
+
+TQ3Boolean Q3Shared_IsReferenced(TQ3SharedObject sharedObject)
+{
+    return guard(__func__, kQ3False, [&] {
+        return lookup<SharedObject>(sharedObject, "sharedObject").referenceCount() > 1 ? kQ3True
+                                                                                        : kQ3False;
+    });
+}
+
+unsigned long Q3Shared_GetEditIndex(TQ3SharedObject sharedObject)
+{
+    return guard(__func__, 0UL,
+                 [&] { return lookup<SharedObject>(sharedObject, "sharedObject").editIndex(); });
+}
+
+TQ3Status Q3Shared_Edited(TQ3SharedObject sharedObject)
+{
+    return guardStatus(__func__,
+                       [&] { lookup<SharedObject>(sharedObject, "sharedObject").markEdited(); });
+}
+
+TQ3ObjectType Q3Shape_GetType(TQ3ShapeObject shape)
+{
+    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid}, [&] {
+        Object& object = lookupObject(shape, "shape");
+        if (!object.isType(kQ3SharedTypeShape))
+            fail(kQ3ErrorInvalidObjectType, std::string("shape is a ") + object.classInfo().name);
+        return object.classInfo().typeAtLevel(3);
+    });
+}
+
+} // extern "C"

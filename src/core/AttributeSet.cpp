@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "core/AttributeSet.h"
+
+#include "core/ShapeVisitor.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace q3 {
+
+const ClassInfo kSetClass{kQ3SharedTypeSet, &kSharedClass, "set"};
+const ClassInfo kAttributeSetClass{kQ3SetTypeAttribute, &kSetClass, "attribute set"};
+
+namespace {
+
+std::size_t floatCount(TQ3AttributeType type)
+{
+    switch (type) {
+    case kQ3AttributeTypeSurfaceUV:
+    case kQ3AttributeTypeShadingUV:
+        return 2;
+    case kQ3AttributeTypeNormal:
+    case kQ3AttributeTypeDiffuseColor:
+    case kQ3AttributeTypeSpecularColor:
+    case kQ3AttributeTypeTransparencyColor:
+        return 3;
+    case kQ3AttributeTypeAmbientCoefficient:
+    case kQ3AttributeTypeSpecularControl:
+        return 1;
+    case kQ3AttributeTypeSurfaceTangent:
+        return 6;
+    default:
+        return 0;
+    }
+}
+
+} // namespace
+
+std::size_t AttributeSet::slotIndex(TQ3AttributeType type)
+{
+    if (type < kFirstType || type > kLastType)
+        fail(kQ3ErrorAttributeInvalidType,
+             "attribute type " + std::to_string(type) +
+                 " is not one Q3 stores (1 to 10: surface UV ... highlight state)");
+    return static_cast<std::size_t>(type - kFirstType);
+}
+
+std::size_t AttributeSet::dataSize(TQ3AttributeType type)
+{
+    slotIndex(type);
+    if (type == kQ3AttributeTypeHighlightState)
+        return sizeof(TQ3Switch);
+    return floatCount(type) * sizeof(float);
+}
+
+Object* AttributeSet::duplicate() const
+{
+    Ref<AttributeSet> copy = makeShared<AttributeSet>();
+    copy->m_slots = m_slots;
+    return copy.detach();
+}
+
+void AttributeSet::accept(ShapeVisitor& visitor) const
+{
+    visitor.visitAttributeSet(*this);
+}
+
+void AttributeSet::add(TQ3AttributeType type, const void* data)
+{
+    const std::size_t index = slotIndex(type);
+    requireNonNull(data, "data");
+    Slot slot{};
+    std::memcpy(slot.data(), data, dataSize(type));
+    if (type == kQ3AttributeTypeHighlightState) {
+        TQ3Switch value;
+        std::memcpy(&value, slot.data(), sizeof value);
+        if (value != kQ3On && value != kQ3Off)
+            fail(kQ3ErrorInvalidParameter, "a highlight state must be kQ3On or kQ3Off");
+    } else {
+        float values[6];
+        std::memcpy(values, slot.data(), floatCount(type) * sizeof(float));
+        for (std::size_t i = 0; i < floatCount(type); ++i)
+            if (!std::isfinite(values[i]))
+                fail(kQ3ErrorInvalidParameter, "attribute " + std::to_string(type) + " component " +
+                                                   std::to_string(i) + " is not a finite number");
+    }
+    m_slots[index] = slot;
+    markEdited();
+}
+
+void AttributeSet::get(TQ3AttributeType type, void* data) const
+{
+    const std::size_t index = slotIndex(type);
+    requireNonNull(data, "data");
+    if (!m_slots[index])
+        fail(kQ3ErrorAttributeNotContained,
+             "the set holds no attribute of type " + std::to_string(type));
+    std::memcpy(data, m_slots[index]->data(), dataSize(type));
+}
+
+bool AttributeSet::contains(TQ3AttributeType type) const
+{
+    return m_slots[slotIndex(type)].has_value();
+}
+
+void AttributeSet::clear(TQ3AttributeType type)
+{
+    const std::size_t index = slotIndex(type);
+    if (!m_slots[index])
+        fail(kQ3ErrorAttributeNotContained,
+             "the set holds no attribute of type " + std::to_string(type));
+    m_slots[index].reset();
+    markEdited();
+}
+
+void AttributeSet::empty()
+{
+    for (auto& slot : m_slots)
+        slot.reset();
+    markEdited();
+}
+
+void AttributeSet::inheritFrom(const AttributeSet& other)
+{
+    for (std::size_t i = 0; i < m_slots.size(); ++i)
+        if (other.m_slots[i])
+            m_slots[i] = other.m_slots[i];
+    markEdited();
+}
+
+std::optional<TQ3ColorRGB> AttributeSet::diffuseColor() const
+{
+    const auto& slot = m_slots[kQ3AttributeTypeDiffuseColor - kFirstType];
+    if (!slot)
+        return std::nullopt;
+    TQ3ColorRGB color;
+    std::memcpy(&color, slot->data(), sizeof color);
+    return color;
+}
+
+} // namespace q3

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3DSet.h"
+#include "core/Object.h"
+
+#include <array>
+#include <cstddef>
+#include <optional>
+
+namespace q3 {
+
+extern const ClassInfo kSetClass;
+extern const ClassInfo kAttributeSetClass;
+
+/// A set of QuickDraw 3D attributes (colors, normals, UVs, ...), at most one
+/// of each type. Invariant: every stored value is well formed (finite floats,
+/// a switch that is kQ3On or kQ3Off); add() checks before it stores.
+class AttributeSet final : public SharedObject {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3SetTypeAttribute;
+
+    /// The first and last attribute types Q3 stores: the plain-data types
+    /// (surface shaders, type 11, are objects Q3 does not have).
+    static constexpr TQ3AttributeType kFirstType = kQ3AttributeTypeSurfaceUV;
+    static constexpr TQ3AttributeType kLastType = kQ3AttributeTypeHighlightState;
+
+    AttributeSet() = default;
+
+    const ClassInfo& classInfo() const override { return kAttributeSetClass; }
+    Object* duplicate() const override;
+    bool isDrawable() const override { return true; }
+    void accept(ShapeVisitor& visitor) const override;
+
+    /// Bytes of data of one attribute type; throws kQ3ErrorAttributeInvalidType
+    /// for a type Q3 does not store.
+    static std::size_t dataSize(TQ3AttributeType type);
+
+    void add(TQ3AttributeType type, const void* data);
+    void get(TQ3AttributeType type, void* data) const;
+    bool contains(TQ3AttributeType type) const;
+    void clear(TQ3AttributeType type);
+    void empty();
+
+    /// Copies into this set every attribute of `other` (others' values win).
+    void inheritFrom(const AttributeSet& other);
+    std::optional<TQ3ColorRGB> diffuseColor() const;
+
+private:
+    using Slot = std::array<unsigned char, 24>;
+    static std::size_t slotIndex(TQ3AttributeType type);
+
+    std::array<std::optional<Slot>, kLastType> m_slots;
+};
+
+} // namespace q3

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "core/Object.h"
+
+#include <mutex>
+#include <unordered_set>
+
+namespace q3 {
+
+const ClassInfo kRootClass{kQ3ObjectTypeInvalid, nullptr, "object"};
+const ClassInfo kSharedClass{kQ3ObjectTypeShared, &kRootClass, "shared object"};
+const ClassInfo kShapeClass{kQ3SharedTypeShape, &kSharedClass, "shape"};
+
+namespace {
+
+// The live-object registry: a handle is trusted only if it is in here, which
+// catches disposed handles and stray pointers before any memory behind them
+// is read. A mutex keeps it consistent when views render on several threads.
+struct Registry {
+    std::mutex mutex;
+    std::unordered_set<const OpaqueTQ3Object*> live;
+};
+
+Registry& registry()
+{
+    // Never destroyed, so objects released during static destruction are safe.
+    static Registry* instance = new Registry;
+    return *instance;
+}
+
+std::atomic<unsigned long> g_editCounter{0};
+std::atomic<int> g_initializeCount{0};
+
+} // namespace
+
+bool ClassInfo::isA(TQ3ObjectType other) const
+{
+    for (const ClassInfo* info = this; info != nullptr; info = info->parent)
+        if (info->type == other)
+            return true;
+    return false;
+}
+
+TQ3ObjectType ClassInfo::typeAtLevel(int level) const
+{
+    int depth = 0;
+    for (const ClassInfo* info = this; info->parent != nullptr; info = info->parent)
+        ++depth;
+    if (level < 1 || level > depth)
+        return kQ3ObjectTypeInvalid;
+    const ClassInfo* info = this;
+    for (int i = depth; i > level; --i)
+        info = info->parent;
+    return info->type;
+}
+
+Object::Object() = default;
+
+Object::~Object()
+{
+    if (m_registered) {
+        Registry& r = registry();
+        std::lock_guard<std::mutex> lock(r.mutex);
+        r.live.erase(this);
+    }
+}
+
+void Object::registerLive()
+{
+    Registry& r = registry();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    r.live.insert(this);
+    m_registered = true;
+}
+
+void Object::dispose()
+{
+    delete this;
+}
+
+Object* Object::duplicate() const
+{
+    fail(kQ3ErrorInvalidObjectType, std::string("a ") + classInfo().name + " cannot be duplicated");
+}
+
+void Object::accept(ShapeVisitor&) const
+{
+    fail(kQ3ErrorInvalidObjectType, std::string("a ") + classInfo().name + " cannot be submitted");
+}
+
+SharedObject::SharedObject() : m_editIndex(++g_editCounter) {}
+
+void SharedObject::markEdited()
+{
+    m_editIndex = ++g_editCounter;
+    onEdited();
+}
+
+void SharedObject::releaseReference() noexcept
+{
+    if (m_references.fetch_sub(1) == 1)
+        delete this;
+}
+
+Object& lookupObject(TQ3Object handle, const char* name)
+{
+    if (handle == nullptr)
+        fail(kQ3ErrorNULLParameter, std::string(name) + " is NULL");
+    Registry& r = registry();
+    {
+        std::lock_guard<std::mutex> lock(r.mutex);
+        if (r.live.count(handle) == 0)
+            fail(kQ3ErrorInvalidObject,
+                 std::string(name) + " is not a live Q3 object (disposed already, or never created)");
+    }
+    return static_cast<Object&>(*handle);
+}
+
+unsigned long liveObjectCount()
+{
+    Registry& r = registry();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    return static_cast<unsigned long>(r.live.size());
+}
+
+namespace system {
+
+bool isInitialized()
+{
+    return g_initializeCount.load() > 0;
+}
+
+bool initialize()
+{
+    return g_initializeCount.fetch_add(1) == 0;
+}
+
+bool exit()
+{
+    int count = g_initializeCount.load();
+    while (count > 0)
+        if (g_initializeCount.compare_exchange_weak(count, count - 1))
+            return true;
+    return false;
+}
+
+} // namespace system
+
+} // namespace q3

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3D.h"
+#include "core/Error.h"
+#include "core/Ref.h"
+
+#include <atomic>
+#include <memory>
+#include <string>
+
+/// The C handle type. Every q3::Object is one, so object -> handle is an
+/// implicit upcast; handle -> object goes through q3::lookup().
+struct OpaqueTQ3Object {
+protected:
+    OpaqueTQ3Object() = default;
+};
+
+namespace q3 {
+
+class ShapeVisitor;
+
+/// A node of the QuickDraw 3D class tree: a type code and its parent.
+struct ClassInfo {
+    TQ3ObjectType type;
+    const ClassInfo* parent;
+    const char* name;
+
+    bool isA(TQ3ObjectType other) const;
+    /// The type at depth `level` of this class's chain: 1 is the child of the
+    /// root (kQ3ObjectTypeShared, kQ3ObjectTypeView), 2 its child, and so on;
+    /// kQ3ObjectTypeInvalid when the chain is shorter.
+    TQ3ObjectType typeAtLevel(int level) const;
+};
+
+/// The root of the class tree (type kQ3ObjectTypeInvalid) and its first-level
+/// classes.
+extern const ClassInfo kRootClass;
+extern const ClassInfo kSharedClass;
+extern const ClassInfo kShapeClass;
+
+/// Every Q3 object. Invariant: an Object is in the live-object registry from
+/// the end of its construction to the start of its destruction, so a handle
+/// found there points at a fully constructed object of classInfo()'s class.
+class Object : public OpaqueTQ3Object {
+public:
+    Object(const Object&) = delete;
+    Object& operator=(const Object&) = delete;
+    virtual ~Object();
+
+    virtual const ClassInfo& classInfo() const = 0;
+
+    bool isType(TQ3ObjectType type) const { return classInfo().isA(type); }
+    TQ3ObjectType leafType() const { return classInfo().type; }
+
+    /// Drops the caller's reference (shared objects) or destroys (others).
+    virtual void dispose();
+    /// A deep copy holding one reference for the caller.
+    virtual Object* duplicate() const;
+    virtual bool isDrawable() const { return false; }
+    /// Submits the object to a view (drawables only).
+    virtual void accept(ShapeVisitor& visitor) const;
+
+    TQ3Object handle() noexcept { return this; }
+
+    /// Enters the object in the live registry; makeShared/makeObject call it
+    /// once the object is fully constructed.
+    void registerLive();
+
+protected:
+    Object();
+
+private:
+    bool m_registered = false;
+};
+
+/// A reference-counted object. Born with one reference, held by its creator.
+/// Invariant: the edit index changes with every edit (markEdited), and every
+/// cache derived from the object is dropped at the same time.
+class SharedObject : public Object {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3ObjectTypeShared;
+
+    void dispose() override { releaseReference(); }
+
+    unsigned long referenceCount() const noexcept { return m_references.load(); }
+    unsigned long editIndex() const noexcept { return m_editIndex.load(); }
+    void markEdited();
+
+    void addReference() noexcept { m_references.fetch_add(1); }
+    void releaseReference() noexcept;
+
+protected:
+    SharedObject();
+    /// Drops caches derived from the object's data; called by markEdited().
+    virtual void onEdited() {}
+
+private:
+    std::atomic<unsigned long> m_references{1};
+    std::atomic<unsigned long> m_editIndex;
+};
+
+/// Creates a shared object, registers it, and returns its first reference.
+template <class T, class... Args>
+Ref<T> makeShared(Args&&... args)
+{
+    Ref<T> ref = Ref<T>::adopt(new T(std::forward<Args>(args)...));
+    ref->registerLive();
+    return ref;
+}
+
+/// Creates and registers a non-shared object (a view); the caller owns it.
+template <class T, class... Args>
+T* makeObject(Args&&... args)
+{
+    std::unique_ptr<T> object(new T(std::forward<Args>(args)...));
+    object->registerLive();
+    return object.release();
+}
+
+/// The handle's object if it is a live Q3 object; throws kQ3ErrorNULLParameter
+/// or kQ3ErrorInvalidObject otherwise. `name` is the parameter's name.
+Object& lookupObject(TQ3Object handle, const char* name);
+
+/// The handle's object as a T (a class with kClassType); throws as
+/// lookupObject, or kQ3ErrorInvalidObjectType when it is of another class.
+template <class T>
+T& lookup(TQ3Object handle, const char* name)
+{
+    Object& object = lookupObject(handle, name);
+    if (!object.isType(T::kClassType))
+        fail(kQ3ErrorInvalidObjectType, std::string(name) + " is a " + object.classInfo().name +
+                                            ", not the kind of object this call takes");
+    return static_cast<T&>(object);
+}
+
+/// As lookup(), returning a new counted reference.
+template <class T>
+Ref<T> lookupRef(TQ3Object handle, const char* name)
+{
+    return Ref<T>::retain(&lookup<T>(handle, name));
+}
+
+/// As lookup() but NULL is allowed and gives nullptr.
+template <class T>
+T* lookupOptional(TQ3Object handle, const char* name)
+{
+    return handle == nullptr ? nullptr : &lookup<T>(handle, name);
+}
+
+/// The number of live objects (Q3Memory_CountLiveObjects).
+unsigned long liveObjectCount();
+
+/// Q3Initialize / Q3Exit nesting.
+namespace system {
+bool isInitialized();
+bool initialize(); // false when it was already initialized
+bool exit();       // false when it was not initialized
+} // namespace system
+
+} // namespace q3

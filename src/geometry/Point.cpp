@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/Point.h"
+
+#include "core/ShapeVisitor.h"
+
+#include <cmath>
+
+namespace q3 {
+
+const ClassInfo kPointClass{kQ3GeometryTypePoint, &kGeometryClass, "point"};
+
+void validatePointData(const TQ3PointData* data)
+{
+    requireNonNull(data, "point data");
+    const TQ3Point3D& p = data->point;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        fail(kQ3ErrorInvalidData, "point has a coordinate that is not finite");
+}
+
+Point::Point(const TQ3PointData& data)
+    : Point(data.point, attributeSetFromHandle(data.pointAttributeSet, "pointAttributeSet"))
+{
+}
+
+Point::Point(const TQ3Point3D& point, Ref<AttributeSet> attributes)
+    : m_point(point), m_attributes(std::move(attributes))
+{
+}
+
+Object* Point::duplicate() const
+{
+    Ref<Point> copy = Ref<Point>::adopt(new Point(m_point, duplicateAttributeSet(m_attributes)));
+    copy->registerLive();
+    return copy.detach();
+}
+
+void Point::accept(ShapeVisitor& visitor) const
+{
+    visitor.visitPoint(*this);
+}
+
+void Point::getData(TQ3PointData& out) const
+{
+    out.point = m_point;
+    out.pointAttributeSet = attributeSetToHandle(m_attributes);
+}
+
+void Point::setData(const TQ3PointData& data)
+{
+    validatePointData(&data);
+    Ref<AttributeSet> attributes = attributeSetFromHandle(data.pointAttributeSet, "pointAttributeSet");
+    m_point = data.point;
+    m_attributes = std::move(attributes);
+    markEdited();
+}
+
+} // namespace q3

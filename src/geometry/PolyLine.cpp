@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/PolyLine.h"
+
+#include "core/ShapeVisitor.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <new>
+#include <string>
+
+namespace q3 {
+
+const ClassInfo kPolyLineClass{kQ3GeometryTypePolyLine, &kGeometryClass, "polyline"};
+
+namespace {
+
+bool isFinite(const TQ3Point3D& p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+template <class T>
+T* mallocArray(std::size_t count)
+{
+    T* array = static_cast<T*>(std::malloc(count * sizeof(T)));
+    if (array == nullptr)
+        throw std::bad_alloc();
+    return array;
+}
+
+std::string indexed(const char* what, std::size_t index)
+{
+    return std::string(what) + "[" + std::to_string(index) + "]";
+}
+
+// Deep copies for duplicate(): a set named in several places is copied once
+// and the copy is shared the same way, as the original's sharing was.
+class SetCopier {
+public:
+    Ref<AttributeSet> copy(const Ref<AttributeSet>& set)
+    {
+        if (!set)
+            return nullptr;
+        auto found = m_copies.find(set.get());
+        if (found != m_copies.end())
+            return found->second;
+        Ref<AttributeSet> copied = duplicateAttributeSet(set);
+        m_copies.emplace(set.get(), copied);
+        return copied;
+    }
+
+private:
+    std::map<const AttributeSet*, Ref<AttributeSet>> m_copies;
+};
+
+} // namespace
+
+void validatePolyLineData(const TQ3PolyLineData* data)
+{
+    requireNonNull(data, "polyline data");
+    requireNonNull(data->vertices, "vertices");
+    if (data->numVertices < 2)
+        fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
+             "numVertices is " + std::to_string(data->numVertices) + "; a polyline needs at least 2");
+    for (unsigned long i = 0; i < data->numVertices; ++i)
+        if (!isFinite(data->vertices[i].point))
+            fail(kQ3ErrorInvalidData, indexed("vertices", i) + ".point has a coordinate that is not finite");
+}
+
+PolyLine::PolyLine(const TQ3PolyLineData& data)
+{
+    assign(data);
+}
+
+Ref<PolyLine> PolyLine::fromPoints(const float* xyz, std::size_t count, const AttributeSet* attributes)
+{
+    requireNonNull(xyz, "xyz");
+    if (count < 2)
+        fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
+             "a polyline needs at least 2 points, not " + std::to_string(count));
+    Ref<PolyLine> polyLine = Ref<PolyLine>::adopt(new PolyLine);
+    polyLine->m_vertices.resize(count);
+    polyLine->m_vertexSets.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const TQ3Point3D point{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+        if (!isFinite(point))
+            fail(kQ3ErrorInvalidData, "point " + std::to_string(i) + " has a coordinate that is not finite");
+        polyLine->m_vertices[i] = TQ3Vertex3D{point, nullptr};
+    }
+    // A reference count is bookkeeping, not part of the set's value, so a
+    // const set may gain a holder.
+    polyLine->m_attributes = Ref<AttributeSet>::retain(const_cast<AttributeSet*>(attributes));
+    polyLine->registerLive();
+    return polyLine;
+}
+
+void PolyLine::assign(const TQ3PolyLineData& data)
+{
+    // Resolve every handle and build every copy before touching the members,
+    // so a bad handle or a failed allocation changes nothing.
+    const std::size_t count = data.numVertices;
+    std::vector<TQ3Vertex3D> vertices(data.vertices, data.vertices + count);
+    std::vector<Ref<AttributeSet>> vertexSets(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::string name = indexed("vertices", i) + ".attributeSet";
+        vertexSets[i] = attributeSetFromHandle(data.vertices[i].attributeSet, name.c_str());
+    }
+    std::vector<Ref<AttributeSet>> segmentSets;
+    if (data.segmentAttributeSet != nullptr) {
+        segmentSets.resize(count - 1);
+        for (std::size_t i = 0; i + 1 < count; ++i) {
+            const std::string name = indexed("segmentAttributeSet", i);
+            segmentSets[i] = attributeSetFromHandle(data.segmentAttributeSet[i], name.c_str());
+        }
+    }
+    Ref<AttributeSet> attributes = attributeSetFromHandle(data.polyLineAttributeSet, "polyLineAttributeSet");
+
+    m_vertices.swap(vertices);
+    m_vertexSets.swap(vertexSets);
+    m_segmentSets.swap(segmentSets);
+    m_attributes = std::move(attributes);
+}
+
+Object* PolyLine::duplicate() const
+{
+    SetCopier copier;
+    Ref<PolyLine> copy = Ref<PolyLine>::adopt(new PolyLine);
+    copy->m_vertices = m_vertices;
+    copy->m_vertexSets.reserve(m_vertexSets.size());
+    for (std::size_t i = 0; i < m_vertexSets.size(); ++i) {
+        copy->m_vertexSets.push_back(copier.copy(m_vertexSets[i]));
+        copy->m_vertices[i].attributeSet = copy->m_vertexSets[i].get();
+    }
+    copy->m_segmentSets.reserve(m_segmentSets.size());
+    for (const Ref<AttributeSet>& set : m_segmentSets)
+        copy->m_segmentSets.push_back(copier.copy(set));
+    copy->m_attributes = copier.copy(m_attributes);
+    copy->registerLive();
+    return copy.detach();
+}
+
+void PolyLine::accept(ShapeVisitor& visitor) const
+{
+    visitor.visitPolyLine(*this);
+}
+
+const AttributeSet* PolyLine::vertexAttributeSet(std::size_t index) const
+{
+    if (index >= m_vertexSets.size())
+        fail(kQ3ErrorParameterOutOfRange, "vertex index " + std::to_string(index) +
+                                              " is out of range (the polyline has " +
+                                              std::to_string(m_vertexSets.size()) + ")");
+    return m_vertexSets[index].get();
+}
+
+const AttributeSet* PolyLine::segmentAttributeSet(std::size_t index) const
+{
+    if (index + 1 >= m_vertices.size())
+        fail(kQ3ErrorParameterOutOfRange, "segment index " + std::to_string(index) +
+                                              " is out of range (the polyline has " +
+                                              std::to_string(m_vertices.size() - 1) + ")");
+    return m_segmentSets.empty() ? nullptr : m_segmentSets[index].get();
+}
+
+void PolyLine::getData(TQ3PolyLineData& out) const
+{
+    // Allocate everything first; handing out references cannot fail.
+    TQ3Vertex3D* vertices = mallocArray<TQ3Vertex3D>(m_vertices.size());
+    TQ3AttributeSet* segments = nullptr;
+    if (!m_segmentSets.empty()) {
+        try {
+            segments = mallocArray<TQ3AttributeSet>(m_segmentSets.size());
+        } catch (...) {
+            std::free(vertices);
+            throw;
+        }
+    }
+    for (std::size_t i = 0; i < m_vertices.size(); ++i)
+        vertices[i] = TQ3Vertex3D{m_vertices[i].point, attributeSetToHandle(m_vertexSets[i])};
+    for (std::size_t i = 0; i < m_segmentSets.size(); ++i)
+        segments[i] = attributeSetToHandle(m_segmentSets[i]);
+    out.numVertices = static_cast<unsigned long>(m_vertices.size());
+    out.vertices = vertices;
+    out.segmentAttributeSet = segments;
+    out.polyLineAttributeSet = attributeSetToHandle(m_attributes);
+}
+
+void PolyLine::emptyData(TQ3PolyLineData& data)
+{
+    // Check every handle before releasing any, so a failure releases nothing;
+    // then take back the references GetData handed out (one per entry).
+    std::vector<AttributeSet*> handedOut;
+    if (data.vertices != nullptr) {
+        for (unsigned long i = 0; i < data.numVertices; ++i) {
+            const std::string name = indexed("vertices", i) + ".attributeSet";
+            handedOut.push_back(lookupOptional<AttributeSet>(data.vertices[i].attributeSet, name.c_str()));
+        }
+    }
+    if (data.segmentAttributeSet != nullptr) {
+        for (unsigned long i = 0; i + 1 < data.numVertices; ++i) {
+            const std::string name = indexed("segmentAttributeSet", i);
+            handedOut.push_back(lookupOptional<AttributeSet>(data.segmentAttributeSet[i], name.c_str()));
+        }
+    }
+    handedOut.push_back(lookupOptional<AttributeSet>(data.polyLineAttributeSet, "polyLineAttributeSet"));
+    for (AttributeSet* set : handedOut)
+        Ref<AttributeSet>::adopt(set).reset();
+    std::free(data.vertices);
+    std::free(data.segmentAttributeSet);
+    data.vertices = nullptr;
+    data.segmentAttributeSet = nullptr;
+    data.polyLineAttributeSet = nullptr;
+}
+
+void PolyLine::setData(const TQ3PolyLineData& data)
+{
+    validatePolyLineData(&data);
+    assign(data);
+    markEdited();
+}
+
+} // namespace q3

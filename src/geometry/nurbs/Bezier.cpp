@@ -1,0 +1,285 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+//
+// Rational Bezier form of each span, and the fast sampling kernel built on it.
+//
+// Conversion. The article's section "CONVERTING NURB TO BEZIER CURVES" describes
+// the method: insert knots at both ends of a span until each end has k-1 equal
+// knots; the k control points that then govern the span are its Bezier points.
+// Repeated Boehm insertion of the same knot (article, "KNOT INSERTION") at the span
+// start a = x_l is exactly de Boor's triangle evaluated at t = a (lecture eqs.
+// 6.28-6.30): its right edge P_l^0, P_l^1, ..., P_l^{k-1} are the control points of
+// the curve with a inserted k-1 times (lecture 6.6.1 notes the triangle "permits the
+// splitting of the segment"). A second triangle then inserts b = x_{l+1} k-1 times
+// into those points; in blossom terms it turns f(a^{k-1-m}, x_{l+1} .. x_{l+m}) into
+// f(a^{k-1-m}, b^m) with the step weight (b - a) / (x_{l+m-s+1} - a). Both triangles
+// only ever form convex combinations, so the conversion is as stable as de Boor
+// itself. Each span is converted independently (O(k^2) per span) rather than
+// sweeping the knot vector as Piegl & Tiller's algorithm A5.6 does, so a tessellator
+// can convert spans one at a time without storing the whole form.
+//
+// Sampling. On a Bezier span the homogeneous point is sum_r B_{r,k-1}(u) P_r
+// (Bernstein basis). For uniform samples u_j = j/m the weights B_{r,k-1}(u_j) do not
+// depend on the span, so they are tabulated once per (order, m) and each sample is
+// k multiply-adds per coordinate plus one division by w. The table rows are built by
+// the de Casteljau-style recurrence B_{r,d}(u) = (1-u) B_{r,d-1}(u) + u B_{r-1,d-1}(u),
+// which makes the end rows exact.
+//
+// Single points at arbitrary u use the Bernstein form with Horner's rule in
+// s = u/(1-u) (or (1-u)/u past the midpoint, so |s| <= 1), O(k) per point.
+
+#include "geometry/nurbs/Bezier.h"
+
+#include <algorithm>
+
+namespace q3::nurbs {
+namespace {
+
+struct Binomials {
+    double value[kMaxOrder][kMaxOrder] = {};
+    constexpr Binomials()
+    {
+        for (unsigned n = 0; n < kMaxOrder; ++n) {
+            value[n][0] = 1.0;
+            for (unsigned r = 1; r <= n; ++r) {
+                value[n][r] = value[n - 1][r - 1] + (r < n ? value[n - 1][r] : 0.0);
+            }
+        }
+    }
+};
+constexpr Binomials kBinomials;
+
+inline Point4 lerp(const Point4& a, const Point4& b, double alpha)
+{
+    const double beta = 1.0 - alpha;
+    return Point4{beta * a.x + alpha * b.x, beta * a.y + alpha * b.y,
+                  beta * a.z + alpha * b.z, beta * a.w + alpha * b.w};
+}
+
+template <unsigned K, typename Out>
+void sampleFixed(const Point4* points, const double* weights, std::uint32_t count, Out* xyz)
+{
+    double px[K];
+    double py[K];
+    double pz[K];
+    double pw[K];
+    for (unsigned r = 0; r < K; ++r) {
+        px[r] = points[r].x;
+        py[r] = points[r].y;
+        pz[r] = points[r].z;
+        pw[r] = points[r].w;
+    }
+    for (std::uint32_t j = 0; j < count; ++j) {
+        const double* b = weights + std::size_t(j) * K;
+        double x = 0.0;
+        double y = 0.0;
+        double z = 0.0;
+        double w = 0.0;
+        for (unsigned r = 0; r < K; ++r) {
+            x += b[r] * px[r];
+            y += b[r] * py[r];
+            z += b[r] * pz[r];
+            w += b[r] * pw[r];
+        }
+        const double inv = 1.0 / w;
+        xyz[3 * std::size_t(j)] = Out(x * inv);
+        xyz[3 * std::size_t(j) + 1] = Out(y * inv);
+        xyz[3 * std::size_t(j) + 2] = Out(z * inv);
+    }
+}
+
+template <typename Out>
+void sampleDispatch(const Point4* points, const BernsteinTable& table, std::uint32_t first,
+                    std::uint32_t count, Out* xyz)
+{
+    const double* weights = table.row(first);
+    switch (table.order()) {
+    case 2: sampleFixed<2>(points, weights, count, xyz); break;
+    case 3: sampleFixed<3>(points, weights, count, xyz); break;
+    case 4: sampleFixed<4>(points, weights, count, xyz); break;
+    case 5: sampleFixed<5>(points, weights, count, xyz); break;
+    case 6: sampleFixed<6>(points, weights, count, xyz); break;
+    case 7: sampleFixed<7>(points, weights, count, xyz); break;
+    case 8: sampleFixed<8>(points, weights, count, xyz); break;
+    case 9: sampleFixed<9>(points, weights, count, xyz); break;
+    case 10: sampleFixed<10>(points, weights, count, xyz); break;
+    case 11: sampleFixed<11>(points, weights, count, xyz); break;
+    case 12: sampleFixed<12>(points, weights, count, xyz); break;
+    case 13: sampleFixed<13>(points, weights, count, xyz); break;
+    case 14: sampleFixed<14>(points, weights, count, xyz); break;
+    case 15: sampleFixed<15>(points, weights, count, xyz); break;
+    case 16: sampleFixed<16>(points, weights, count, xyz); break;
+    default: break;
+    }
+}
+
+} // namespace
+
+BernsteinTable::BernsteinTable(unsigned order, std::uint32_t segments)
+    : m_order(order), m_segments(segments), m_weights((std::size_t(segments) + 1) * order, 0.0)
+{
+    for (std::uint32_t j = 0; j <= segments; ++j) {
+        const double u = double(j) / double(segments);
+        const double v = 1.0 - u;
+        double* b = m_weights.data() + std::size_t(j) * order;
+        b[0] = 1.0;
+        for (unsigned degree = 1; degree < order; ++degree) {
+            b[degree] = u * b[degree - 1];
+            for (unsigned r = degree - 1; r > 0; --r) {
+                b[r] = v * b[r] + u * b[r - 1];
+            }
+            b[0] = v * b[0];
+        }
+    }
+}
+
+void spanToBezier(const CurveRef& curve, std::size_t l, Point4* out)
+{
+    const unsigned deg = curve.order - 1;
+    const float* x = curve.knots;
+    const float* p = curve.points;
+    const double a = x[l];
+    const double b = x[l + 1];
+
+    // First triangle: de Boor at t = a; its right edge becomes out[deg], ..., out[0].
+    Point4 d[kMaxOrder];
+    for (unsigned j = 0; j <= deg; ++j) {
+        const float* q = p + 4 * (l - deg + j);
+        d[j] = Point4{q[0], q[1], q[2], q[3]};
+    }
+    out[deg] = d[deg];
+    for (unsigned r = 1; r <= deg; ++r) {
+        for (unsigned j = deg; j >= r; --j) {
+            const double lo = x[l - deg + j];
+            const double hi = x[l + 1 + j - r];
+            d[j] = lerp(d[j - 1], d[j], (a - lo) / (hi - lo));
+        }
+        out[deg - r] = d[deg];
+    }
+
+    // Second triangle: replace the right-hand knots x_{l+1} .. x_{l+m} by b.
+    for (unsigned s = 1; s <= deg; ++s) {
+        for (unsigned m = deg; m >= s; --m) {
+            const double xm = x[l + m - s + 1];
+            out[m] = lerp(out[m - 1], out[m], (b - a) / (xm - a));
+        }
+    }
+}
+
+Point4 evaluateBezier(const Point4* points, unsigned order, double u)
+{
+    const unsigned deg = order - 1;
+    const double* binomial = kBinomials.value[deg];
+    Point4 acc;
+    double scale = 1.0;
+    if (u <= 0.5) {
+        const double v = 1.0 - u;
+        const double s = u / v;
+        acc = points[deg];
+        for (unsigned r = deg; r-- > 0;) {
+            const double c = binomial[r];
+            acc = Point4{acc.x * s + c * points[r].x, acc.y * s + c * points[r].y,
+                         acc.z * s + c * points[r].z, acc.w * s + c * points[r].w};
+            scale *= v;
+        }
+    } else {
+        const double s = (1.0 - u) / u;
+        acc = points[0];
+        for (unsigned r = 1; r <= deg; ++r) {
+            const double c = binomial[r];
+            acc = Point4{acc.x * s + c * points[r].x, acc.y * s + c * points[r].y,
+                         acc.z * s + c * points[r].z, acc.w * s + c * points[r].w};
+            scale *= u;
+        }
+    }
+    return Point4{acc.x * scale, acc.y * scale, acc.z * scale, acc.w * scale};
+}
+
+void sampleBezier(const Point4* points, const BernsteinTable& table, std::uint32_t first,
+                  std::uint32_t count, float* xyz)
+{
+    sampleDispatch(points, table, first, count, xyz);
+}
+
+void sampleBezier(const Point4* points, const BernsteinTable& table, std::uint32_t first,
+                  std::uint32_t count, double* xyz)
+{
+    sampleDispatch(points, table, first, count, xyz);
+}
+
+BezierForm::BezierForm(const CurveRef& curve)
+{
+    rebuild(curve);
+}
+
+void BezierForm::rebuild(const CurveRef& curve)
+{
+    m_spans.clear();
+    m_points.clear();
+    m_order = 0;
+    if (!validateCurve(curve).ok()) {
+        return;
+    }
+    m_order = curve.order;
+    for (std::size_t i = curve.order - 1; i < curve.numPoints; ++i) {
+        const double a = curve.knots[i];
+        const double b = curve.knots[i + 1];
+        if (a < b) {
+            m_spans.push_back(Span{i, a, b});
+        }
+    }
+    m_points.resize(m_spans.size() * m_order);
+    for (std::size_t s = 0; s < m_spans.size(); ++s) {
+        spanToBezier(curve, m_spans[s].knotIndex, m_points.data() + s * m_order);
+    }
+}
+
+Domain BezierForm::domain() const
+{
+    return Domain{m_spans.front().start, m_spans.back().end};
+}
+
+std::size_t BezierForm::findSpan(double t) const
+{
+    // Largest s with span(s).start <= t, or 0.
+    std::size_t lo = 0;
+    std::size_t hi = m_spans.size();
+    while (hi - lo > 1) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        if (m_spans[mid].start <= t) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
+}
+
+Point4 BezierForm::evaluateHomogeneous(double t) const
+{
+    t = clampToDomain(domain(), t);
+    const std::size_t s = findSpan(t);
+    const Span& span = m_spans[s];
+    double u = (t - span.start) / (span.end - span.start);
+    u = std::min(1.0, std::max(0.0, u));
+    return evaluateBezier(spanPoints(s), m_order, u);
+}
+
+Point3 BezierForm::evaluate(double t) const
+{
+    return project(evaluateHomogeneous(t));
+}
+
+void BezierForm::sampleSpan(std::size_t s, const BernsteinTable& table, std::uint32_t first,
+                            std::uint32_t count, float* xyz) const
+{
+    sampleDispatch(spanPoints(s), table, first, count, xyz);
+}
+
+void BezierForm::sampleSpan(std::size_t s, const BernsteinTable& table, std::uint32_t first,
+                            std::uint32_t count, double* xyz) const
+{
+    sampleDispatch(spanPoints(s), table, first, count, xyz);
+}
+
+} // namespace q3::nurbs

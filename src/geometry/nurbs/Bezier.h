@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "geometry/nurbs/Curve.h"
+#include "geometry/nurbs/Knots.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace q3::nurbs {
+
+/// Bernstein weights B_{r,k-1}(u_j) at the uniform local parameters u_j = j / segments,
+/// j = 0..segments, for one order. Build one per (order, segments) and reuse it for
+/// every span; rows 0 and `segments` are exactly (1, 0, ..., 0) and (0, ..., 0, 1).
+/// Invariant: weights().size() == (segments + 1) * order.
+class BernsteinTable {
+public:
+    BernsteinTable() = default;
+    /// order in 2..16, segments >= 1. Memory (segments + 1) * order doubles.
+    BernsteinTable(unsigned order, std::uint32_t segments);
+
+    unsigned order() const { return m_order; }
+    std::uint32_t segments() const { return m_segments; }
+    /// The `order` weights of sample j, 0 <= j <= segments.
+    const double* row(std::uint32_t j) const { return m_weights.data() + std::size_t(j) * m_order; }
+
+private:
+    unsigned m_order = 0;
+    std::uint32_t m_segments = 0;
+    std::vector<double> m_weights;
+};
+
+/// Converts the span [knots[knotIndex], knots[knotIndex+1]) of a valid curve to
+/// rational Bezier form: writes `order` homogeneous Bezier control points to out.
+/// The span must be non-empty and inside the domain. Cost O(order^2), no allocation.
+void spanToBezier(const CurveRef& curve, std::size_t knotIndex, Point4* out);
+
+/// The homogeneous point of a Bezier curve with `order` control points at local
+/// parameter u in [0, 1]. O(order), no allocation; exact control points at u = 0 and 1.
+Point4 evaluateBezier(const Point4* points, unsigned order, double u);
+
+/// Writes samples first .. first+count-1 of `table` for the Bezier curve `points`
+/// (table.order() control points) as projected x, y, z triples: 3 * count values.
+/// This is the fast kernel: no allocation, no branches per vertex beyond the loop.
+void sampleBezier(const Point4* points, const BernsteinTable& table, std::uint32_t first,
+                  std::uint32_t count, float* xyz);
+void sampleBezier(const Point4* points, const BernsteinTable& table, std::uint32_t first,
+                  std::uint32_t count, double* xyz);
+
+/// A curve cut into its non-empty spans, each converted once to rational Bezier form
+/// in double: what a retained curve caches and rebuilds on edit.
+/// Invariant: points().size() == spanCount() * order(); span s covers
+/// [span(s).start, span(s).end] and its Bezier points are spanPoints(s)[0 .. order-1].
+/// An invalid curve gives an empty form (spanCount() == 0).
+/// Memory: spanCount * order * 32 bytes (order 16 with a million spans is 512 MB; the
+/// tessellators also accept a CurveRef and then convert one span at a time).
+class BezierForm {
+public:
+    BezierForm() = default;
+    explicit BezierForm(const CurveRef& curve);
+
+    /// Replaces the contents with the form of `curve`, reusing the storage.
+    void rebuild(const CurveRef& curve);
+
+    bool empty() const { return m_spans.empty(); }
+    unsigned order() const { return m_order; }
+    std::size_t spanCount() const { return m_spans.size(); }
+    const Span& span(std::size_t s) const { return m_spans[s]; }
+    const Point4* spanPoints(std::size_t s) const { return m_points.data() + s * m_order; }
+    Domain domain() const;
+
+    /// The span holding t (clamped to the domain; the last span at its end).
+    std::size_t findSpan(double t) const;
+
+    /// The curve at t, in double, through the Bezier points. Requires !empty().
+    Point4 evaluateHomogeneous(double t) const;
+    Point3 evaluate(double t) const;
+
+    /// sampleBezier() on span s.
+    void sampleSpan(std::size_t s, const BernsteinTable& table, std::uint32_t first,
+                    std::uint32_t count, float* xyz) const;
+    void sampleSpan(std::size_t s, const BernsteinTable& table, std::uint32_t first,
+                    std::uint32_t count, double* xyz) const;
+
+private:
+    unsigned m_order = 0;
+    std::vector<Span> m_spans;
+    std::vector<Point4> m_points;
+};
+
+} // namespace q3::nurbs

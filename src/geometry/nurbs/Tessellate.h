@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "geometry/nurbs/Bezier.h"
+#include "geometry/nurbs/Curve.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace q3::nurbs {
+
+/// Most segments one tessellation produces, except that a curve always gets at least
+/// one segment per non-empty span (so the output never exceeds
+/// max(kMaxSegments, number of spans), which is linear in the input size).
+constexpr std::size_t kMaxSegments = std::size_t{1} << 20;
+
+/// Most segments per span for the constant method.
+constexpr std::uint32_t kMaxSegmentsPerSpan = 1024;
+
+/// Adaptive method: the share of kMaxSegments its first placement may use; the rest
+/// is left for bisecting the chords that come out too long.
+constexpr std::size_t kPlacementBudget = kMaxSegments - kMaxSegments / 8;
+
+/// Adaptive method: segments per run are ceil(padding * length / c1); the padding
+/// absorbs the error of placing points uniformly in an estimated arc length.
+constexpr double kLengthPadding = 1.03;
+
+/// Adaptive method: probe samples per span used to estimate mapped length and to find
+/// where the mapping fails. Parts of a span where the mapping fails get one segment per
+/// probe interval, so at most this many segments per span.
+constexpr std::uint32_t probeSegmentsPerSpan(unsigned order)
+{
+    return order > 8 ? order : 8;
+}
+
+/// Adaptive method: most samples in one arc-length table and most halvings of one chord.
+constexpr std::uint32_t kMaxLengthTableSegments = std::uint32_t{1} << 16;
+constexpr unsigned kMaxBisectionDepth = 48;
+
+/// Maps a curve point (the curve's local coordinates) into the space where segment
+/// lengths are measured: local-to-world for world space, local-to-pixels including the
+/// perspective divide for screen space (set z to 0 there). Returns false when the point
+/// has no image, e.g. at or behind the eye; a result that is not finite counts as false.
+using PointMapping = std::function<bool(const Point3& local, Point3& mapped)>;
+
+/// A polyline approximating a curve.
+/// Invariant: vertices.size() == 3 * parameters.size(); parameters increase strictly;
+/// the first and last parameters are the domain ends (exactly) and their vertices are
+/// the curve there; no two consecutive vertices are equal. A curve that is a single
+/// point in float gives a single vertex; an invalid curve gives no vertices.
+struct TessellatedCurve {
+    std::vector<float> vertices;     ///< x, y, z per vertex
+    std::vector<double> parameters;  ///< curve parameter t of each vertex
+    bool substituted = false;        ///< the requested value was replaced by effectiveValue
+    double effectiveValue = 0.0;     ///< segments per span (constant) or maximum length (adaptive) used
+    bool capped = false;             ///< adaptive: kMaxSegments stopped bisection, some segments exceed effectiveValue
+    std::size_t unmeasuredSegments = 0; ///< adaptive: segments with an endpoint the mapping rejected
+
+    std::size_t vertexCount() const { return parameters.size(); }
+};
+
+/// kQ3SubdivisionMethodConstant: segmentsPerSpan segments in every non-empty span, at
+/// uniform parameters within the span; s spans give segmentsPerSpan * s + 1 vertices
+/// before exact duplicates are dropped. 0 is replaced by 1, more than
+/// kMaxSegmentsPerSpan by kMaxSegmentsPerSpan, and the count is lowered further so the
+/// total stays within kMaxSegments (never below 1 per span); any replacement sets
+/// `substituted`. Uses the Bezier sampling kernel.
+/// An invalid curve (see validateCurve) gives an empty result.
+TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan);
+TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan);
+
+/// kQ3SubdivisionMethodWorldSpace and kQ3SubdivisionMethodScreenSpace: a polyline whose
+/// segments, measured between the mapped images of their end points, are at most
+/// maxSegmentLength long, with close to the fewest segments (per run of mappable curve:
+/// ceil(1.03 * length / maxSegmentLength), plus a bisection of each chord still too long).
+/// When the request would exceed kPlacementBudget, or maxSegmentLength is not > 0, a
+/// larger length is used and `substituted` set; if even one segment per probe interval
+/// is too many, every span gets one segment and effectiveValue is infinity.
+/// Where the mapping fails, segments are not measured: one per probe interval
+/// (probeSegmentsPerSpan), counted in unmeasuredSegments.
+/// Time and output are bounded by O(kMaxSegments + spans * order^2) for any finite input.
+/// An invalid curve gives an empty result.
+TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength,
+                                    const PointMapping& mapping);
+TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength,
+                                    const PointMapping& mapping);
+
+} // namespace q3::nurbs

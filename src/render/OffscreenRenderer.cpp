@@ -1,0 +1,752 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// The OSMesa backend of OffscreenRenderer.
+//
+// Rendering goes into OSMesa's own window-system framebuffer, which OSMesa
+// copies into our RGBA8 buffer (top row first, OSMESA_Y_UP = 0) at glFinish.
+// That is the path every plain OSMesa program takes, so an image drawn here is
+// bit-identical to one drawn by raw OpenGL calls with the same vertices and
+// matrix. (Rendering into a framebuffer object instead was tried: llvmpipe
+// rasterizes it with the opposite y orientation and about 1 line pixel in 5000
+// came out different, at exact ties.)
+//
+// Determinism. Images must be bit-reproducible across runs and across x86-64
+// machines with this Mesa (22.3). What was measured, with 65,000 random
+// vertices drawn as triangles, 1,000 line strips and 2.5-pixel points, comparing
+// the MD5 of the image:
+//   - GALLIUM_DRIVER=softpipe gives a different image from llvmpipe: the driver
+//     is pinned (below) and checked through GL_RENDERER.
+//   - LP_NUM_THREADS = 0, 1, 2, 3, 8, 16 all give the same image. llvmpipe bins
+//     primitives into 64x64 tiles and each tile is rasterized by one thread in
+//     submission order, so the thread count only changes which thread does a
+//     tile. It is left alone: it is a performance knob only.
+//   - LP_NATIVE_VECTOR_WIDTH = 128 or 256 and LP_FORCE_SSE2 (no AVX, no FMA)
+//     give the same image as AVX2+FMA: the host's SIMD level does not matter.
+//   - DRAW_USE_LLVM=0, GALLIUM_NOSSE, GALLIUM_OVERRIDE_CPU_CAPS=nosse,
+//     LP_NO_RAST and GALLIUM_NOOP each change the image: they are unset.
+//   - Drawing through a framebuffer object differs slightly (see above).
+// The OpenGL state that matters is pinned in initializeState(): no dithering,
+// no multisampling, no smoothing or stippling, line width 1, no blending, no
+// depth test, no culling, no lighting, flat shading.
+//
+// Threads. Mesa 22.3 keeps one OSMesa buffer per context (older Mesa shared
+// buffers of equal size between contexts, which broke concurrent rendering;
+// RenderOffscreen.TwoThreadsMatchSequentialRendering checks this), the GL
+// dispatch is per thread, and the llvmpipe screen with its rasterizer thread
+// pool is shared by all contexts and thread-safe. Context creation and
+// destruction are still serialized by one mutex: they are rare and they touch
+// the process-wide screen and, the first time, the environment.
+//
+// Resizing. Mesa 22.3 leaks the old buffer's storage (width * height * 4 bytes
+// per resize, measured) when a context is re-bound at a new size, so a frame of
+// a new size gets a new context instead; frames of an unchanged size reuse the
+// context and the image buffer.
+
+#include "render/OffscreenRenderer.h"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <mutex>
+#include <new>
+#include <string>
+#include <vector>
+
+namespace q3 {
+namespace {
+
+// llvmpipe's limit for a 2D surface and a viewport (OSMESA_MAX_WIDTH,
+// GL_MAX_VIEWPORT_DIMS); its viewport bounds range is [-32768, 32767], so a
+// pane origin within +-kMaxImageSize keeps every viewport coordinate legal.
+constexpr std::uint32_t kMaxImageSize = 16384;
+constexpr int kMaxPaneOffset = 16384;
+
+// A batch is handed to OpenGL when it would grow past this many vertices
+// (24 MiB of vertex data); a typical frame of curves stays well below.
+constexpr std::size_t kFlushVertexCount = std::size_t(1) << 20;
+
+struct PinnedVariable {
+    const char* name;
+    const char* value; // nullptr: unset
+};
+
+// Mesa reads these once, when the first OSMesa context of the process creates
+// the process-wide llvmpipe screen. GALLIUM_DRIVER is forced rather than set
+// only when absent: Q3 refuses any other driver (the GL_RENDERER check), so
+// honouring a different value would only turn a working setup into an error.
+// The others are Mesa debugging switches measured to change the image.
+constexpr PinnedVariable kPinnedEnvironment[] = {
+    {"GALLIUM_DRIVER", "llvmpipe"},
+    {"DRAW_USE_LLVM", nullptr},
+    {"GALLIUM_NOSSE", nullptr},
+    {"GALLIUM_OVERRIDE_CPU_CAPS", nullptr},
+    {"LP_NO_RAST", nullptr},
+    {"GALLIUM_NOOP", nullptr},
+};
+
+std::mutex& contextMutex()
+{
+    static std::mutex mutex;
+    return mutex;
+}
+
+// Called with contextMutex() held, before every context creation; only the
+// first call changes the environment. If the process created an OSMesa
+// context before (outside Q3), Mesa has already chosen its driver and the
+// GL_RENDERER check reports it.
+void pinMesaEnvironment()
+{
+    static bool pinned = false;
+    if (pinned)
+        return;
+    for (const PinnedVariable& variable : kPinnedEnvironment) {
+        if (variable.value != nullptr)
+            setenv(variable.name, variable.value, 1);
+        else
+            unsetenv(variable.name);
+    }
+    pinned = true;
+}
+
+/// Makes a context current for the lifetime of the scope, then makes the
+/// thread's previous OSMesa context (with its buffer) current again, or none.
+class CurrentContextScope {
+public:
+    CurrentContextScope()
+    {
+        m_previous = OSMesaGetCurrentContext();
+        if (m_previous == nullptr)
+            return;
+        GLint format = 0;
+        if (!OSMesaGetColorBuffer(m_previous, &m_previousWidth, &m_previousHeight, &format,
+                                  &m_previousBuffer)) {
+            m_previous = nullptr;
+            return;
+        }
+        OSMesaGetIntegerv(OSMESA_TYPE, &m_previousType);
+    }
+
+    ~CurrentContextScope()
+    {
+        if (!m_bound)
+            return;
+        if (m_previous != nullptr)
+            OSMesaMakeCurrent(m_previous, m_previousBuffer, GLenum(m_previousType), m_previousWidth,
+                              m_previousHeight);
+        else
+            OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    }
+
+    CurrentContextScope(const CurrentContextScope&) = delete;
+    CurrentContextScope& operator=(const CurrentContextScope&) = delete;
+
+    bool bind(OSMesaContext context, void* buffer, std::uint32_t width, std::uint32_t height)
+    {
+        m_bound = OSMesaMakeCurrent(context, buffer, GL_UNSIGNED_BYTE, GLsizei(width),
+                                    GLsizei(height)) == GL_TRUE;
+        return m_bound;
+    }
+
+private:
+    OSMesaContext m_previous = nullptr;
+    void* m_previousBuffer = nullptr;
+    GLint m_previousWidth = 0;
+    GLint m_previousHeight = 0;
+    GLint m_previousType = GL_UNSIGNED_BYTE;
+    bool m_bound = false;
+};
+
+enum class Primitive : std::uint8_t { kPoints, kLines, kLineStrip, kTriangles };
+
+GLenum glMode(Primitive primitive)
+{
+    switch (primitive) {
+    case Primitive::kPoints:
+        return GL_POINTS;
+    case Primitive::kLines:
+        return GL_LINES;
+    case Primitive::kLineStrip:
+        return GL_LINE_STRIP;
+    case Primitive::kTriangles:
+        return GL_TRIANGLES;
+    }
+    return GL_POINTS;
+}
+
+const char* glErrorName(GLenum error)
+{
+    switch (error) {
+    case GL_INVALID_ENUM:
+        return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE:
+        return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION:
+        return "GL_INVALID_OPERATION";
+    case GL_OUT_OF_MEMORY:
+        return "GL_OUT_OF_MEMORY";
+    case GL_INVALID_FRAMEBUFFER_OPERATION:
+        return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    default:
+        return "unknown GL error";
+    }
+}
+
+// Returns the first pending GL error and clears the rest.
+GLenum takeGlError()
+{
+    GLenum first = glGetError();
+    if (first != GL_NO_ERROR) {
+        for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+        }
+    }
+    return first;
+}
+
+// x - x is 0 for a finite x and NaN for an infinite or NaN one.
+bool allFinite(const float* values, std::size_t count)
+{
+    float acc = 0.0f;
+    for (std::size_t i = 0; i < count; ++i)
+        acc += values[i] - values[i];
+    return acc == 0.0f;
+}
+
+RenderResult invalid(std::string message)
+{
+    return RenderResult::failure(RenderStatus::kInvalidArgument, std::move(message));
+}
+
+RenderResult outOfMemory()
+{
+    return RenderResult::failure(RenderStatus::kOutOfMemory, "out of memory for the render batch");
+}
+
+} // namespace
+
+class OffscreenRenderer::Impl {
+public:
+    ~Impl() { destroyContext(); }
+
+    RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
+                            const PixelRect& pane);
+    RenderResult setMatrix(const std::array<float, 16>& matrix);
+    RenderResult draw(Primitive primitive, const float* xyz, std::size_t count, const RgbColor& color,
+                      float pointSize);
+    RenderResult endFrame();
+    void cancelFrame();
+
+    bool m_inFrame = false;
+    std::uint32_t m_width = 0;
+    std::uint32_t m_height = 0;
+    std::vector<std::uint8_t> m_image;
+
+private:
+    // Interleaved for glVertexPointer/glColorPointer with one stride. No
+    // member initializers: storage is allocated uninitialized.
+    struct Vertex {
+        float x, y, z;
+        float r, g, b;
+    };
+
+    struct DrawCommand {
+        Primitive primitive;
+        float pointSize;
+        std::uint32_t matrixIndex;
+        GLint first;
+        GLsizei count;
+    };
+
+    RenderResult createContext(std::uint32_t width, std::uint32_t height);
+    void destroyContext();
+    void initializeState();
+    void startFrameInGl();
+    RenderResult flush(bool finish);
+    void resetBatch();
+    void reserveVertices(std::size_t needed);
+
+    OSMesaContext m_context = nullptr;
+    GLint m_maxViewport[2] = {0, 0};
+
+    PixelRect m_pane;
+    RgbaColor m_clearColor;
+    bool m_clearedInGl = false;
+
+    std::unique_ptr<Vertex[]> m_vertices;
+    std::size_t m_vertexCount = 0;
+    std::size_t m_vertexCapacity = 0;
+    std::vector<DrawCommand> m_commands;
+    std::vector<std::array<float, 16>> m_matrices;
+    std::uint32_t m_currentMatrix = 0;
+    std::vector<GLint> m_multiFirsts;
+    std::vector<GLsizei> m_multiCounts;
+};
+
+RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::uint32_t height)
+{
+    destroyContext();
+    std::vector<std::uint8_t>().swap(m_image);
+    m_width = 0;
+    m_height = 0;
+    m_image.resize(std::size_t(width) * height * 4);
+
+    {
+        std::lock_guard<std::mutex> lock(contextMutex());
+        pinMesaEnvironment();
+        const int attributes[] = {OSMESA_FORMAT,       OSMESA_RGBA, OSMESA_DEPTH_BITS,  0,
+                                  OSMESA_STENCIL_BITS, 0,           OSMESA_ACCUM_BITS,  0,
+                                  OSMESA_PROFILE,      OSMESA_COMPAT_PROFILE, 0};
+        m_context = OSMesaCreateContextAttribs(attributes, nullptr);
+    }
+    if (m_context == nullptr)
+        return RenderResult::failure(RenderStatus::kContextFailure,
+                                     "OSMesaCreateContextAttribs failed for an RGBA compatibility context");
+
+    RenderResult result;
+    {
+        CurrentContextScope scope;
+        if (!scope.bind(m_context, m_image.data(), width, height)) {
+            result = RenderResult::failure(RenderStatus::kContextFailure,
+                                           "OSMesaMakeCurrent failed for a " + std::to_string(width) +
+                                               " x " + std::to_string(height) + " RGBA8 buffer");
+        } else {
+            const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+            if (renderer == nullptr || std::strncmp(renderer, "llvmpipe", 8) != 0) {
+                result = RenderResult::failure(
+                    RenderStatus::kWrongRenderer,
+                    std::string("OpenGL renderer is '") + (renderer ? renderer : "(none)") +
+                        "', not llvmpipe: Q3 pins GALLIUM_DRIVER=llvmpipe for reproducible images, "
+                        "but Mesa chose its driver earlier (an OSMesa context created before Q3's?)");
+            } else {
+                glGetIntegerv(GL_MAX_VIEWPORT_DIMS, m_maxViewport);
+                initializeState();
+                GLenum error = takeGlError();
+                if (error != GL_NO_ERROR)
+                    result = RenderResult::failure(RenderStatus::kGraphicsError,
+                                                   std::string("setting up the OpenGL state failed: ") +
+                                                       glErrorName(error));
+            }
+        }
+    }
+    if (!result) {
+        destroyContext();
+        std::vector<std::uint8_t>().swap(m_image);
+        return result;
+    }
+    m_width = width;
+    m_height = height;
+    return result;
+}
+
+void OffscreenRenderer::Impl::destroyContext()
+{
+    if (m_context == nullptr)
+        return;
+    std::lock_guard<std::mutex> lock(contextMutex());
+    OSMesaDestroyContext(m_context);
+    m_context = nullptr;
+}
+
+// Every value here is OpenGL's default except the shade model; they are set
+// anyway because reproducible images depend on them (see the file comment).
+void OffscreenRenderer::Impl::initializeState()
+{
+    OSMesaPixelStore(OSMESA_Y_UP, 0);
+
+    const GLenum disabled[] = {GL_DITHER,       GL_MULTISAMPLE,    GL_LINE_SMOOTH,  GL_POINT_SMOOTH,
+                               GL_POLYGON_SMOOTH, GL_LINE_STIPPLE, GL_POLYGON_STIPPLE, GL_BLEND,
+                               GL_DEPTH_TEST,   GL_STENCIL_TEST,   GL_ALPHA_TEST,   GL_CULL_FACE,
+                               GL_LIGHTING,     GL_FOG,            GL_COLOR_LOGIC_OP, GL_TEXTURE_2D,
+                               GL_VERTEX_PROGRAM_POINT_SIZE};
+    for (GLenum capability : disabled)
+        glDisable(capability);
+    glLineWidth(1.0f);
+    glPointSize(1.0f);
+    glShadeModel(GL_FLAT);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+}
+
+RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint32_t height,
+                                                 const RgbaColor& clearColor, const PixelRect& pane)
+{
+    if (m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "beginFrame called inside a frame");
+    if (width == 0 || height == 0 || width > kMaxImageSize || height > kMaxImageSize)
+        return invalid("image size " + std::to_string(width) + " x " + std::to_string(height) +
+                       " is outside 1.." + std::to_string(kMaxImageSize));
+    const float clear[4] = {clearColor.r, clearColor.g, clearColor.b, clearColor.a};
+    if (!allFinite(clear, 4))
+        return invalid("clear colour has a NaN or infinite channel");
+    if (pane.width <= 0 || pane.height <= 0 || pane.width > int(kMaxImageSize) ||
+        pane.height > int(kMaxImageSize))
+        return invalid("pane size " + std::to_string(pane.width) + " x " + std::to_string(pane.height) +
+                       " is outside 1.." + std::to_string(kMaxImageSize));
+    if (pane.x < -kMaxPaneOffset || pane.x > kMaxPaneOffset || pane.y < -kMaxPaneOffset ||
+        pane.y > kMaxPaneOffset)
+        return invalid("pane origin is outside +-" + std::to_string(kMaxPaneOffset));
+
+    if (m_context == nullptr || width != m_width || height != m_height) {
+        RenderResult created = createContext(width, height);
+        if (!created)
+            return created;
+    }
+    if (pane.width > m_maxViewport[0] || pane.height > m_maxViewport[1])
+        return invalid("pane is larger than the maximum viewport");
+
+    m_pane = pane;
+    m_clearColor = clearColor;
+    m_clearedInGl = false;
+    resetBatch();
+    m_matrices.clear();
+    m_matrices.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+    m_currentMatrix = 0;
+    m_inFrame = true;
+    return RenderResult::success();
+}
+
+RenderResult OffscreenRenderer::Impl::setMatrix(const std::array<float, 16>& matrix)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "setMatrix called outside a frame");
+    if (!allFinite(matrix.data(), 16))
+        return invalid("matrix has a NaN or infinite element (after rounding to float)");
+    if (matrix == m_matrices[m_currentMatrix])
+        return RenderResult::success();
+    // A matrix no command refers to yet is overwritten rather than kept.
+    if (!m_commands.empty() && m_commands.back().matrixIndex == m_currentMatrix) {
+        m_matrices.push_back(matrix);
+        m_currentMatrix = std::uint32_t(m_matrices.size() - 1);
+    } else {
+        m_matrices[m_currentMatrix] = matrix;
+    }
+    return RenderResult::success();
+}
+
+void OffscreenRenderer::Impl::reserveVertices(std::size_t needed)
+{
+    if (needed <= m_vertexCapacity)
+        return;
+    std::size_t capacity = m_vertexCapacity < 4096 ? 4096 : m_vertexCapacity;
+    while (capacity < needed)
+        capacity *= 2;
+    std::unique_ptr<Vertex[]> grown(new Vertex[capacity]);
+    if (m_vertexCount > 0)
+        std::memcpy(grown.get(), m_vertices.get(), m_vertexCount * sizeof(Vertex));
+    m_vertices = std::move(grown);
+    m_vertexCapacity = capacity;
+}
+
+RenderResult OffscreenRenderer::Impl::draw(Primitive primitive, const float* xyz, std::size_t count,
+                                           const RgbColor& color, float pointSize)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "draw call outside a frame");
+    if (count == 0)
+        return RenderResult::success();
+    if (xyz == nullptr)
+        return invalid("vertex pointer is NULL");
+    if (primitive == Primitive::kLines && count % 2 != 0)
+        return invalid("drawLines needs an even vertex count, got " + std::to_string(count));
+    if (primitive == Primitive::kTriangles && count % 3 != 0)
+        return invalid("drawTriangles needs a multiple of 3 vertices, got " + std::to_string(count));
+    if (count > std::size_t(std::numeric_limits<GLint>::max()))
+        return invalid("too many vertices in one call");
+    const float rgb[3] = {color.r, color.g, color.b};
+    if (!allFinite(rgb, 3))
+        return invalid("colour has a NaN or infinite channel");
+    if (primitive == Primitive::kPoints && !(pointSize > 0.0f && std::isfinite(pointSize)))
+        return invalid("point size must be positive and finite");
+    if (primitive == Primitive::kLineStrip && count < 2)
+        return RenderResult::success();
+    if (!allFinite(xyz, count * 3))
+        return invalid("a vertex coordinate is NaN or infinite");
+
+    if (m_vertexCount > 0 && m_vertexCount + count > kFlushVertexCount) {
+        RenderResult flushed = flush(false);
+        if (!flushed)
+            return flushed;
+    }
+
+    try {
+        reserveVertices(m_vertexCount + count);
+        if (m_commands.size() == m_commands.capacity())
+            m_commands.reserve(m_commands.empty() ? 256 : m_commands.size() * 2);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+
+    Vertex* out = m_vertices.get() + m_vertexCount;
+    for (std::size_t i = 0; i < count; ++i, xyz += 3)
+        out[i] = Vertex{xyz[0], xyz[1], xyz[2], color.r, color.g, color.b};
+
+    const GLint first = GLint(m_vertexCount);
+    m_vertexCount += count;
+    if (primitive != Primitive::kLineStrip && !m_commands.empty()) {
+        DrawCommand& last = m_commands.back();
+        if (last.primitive == primitive && last.matrixIndex == m_currentMatrix &&
+            last.pointSize == pointSize && std::size_t(last.first) + std::size_t(last.count) == std::size_t(first) &&
+            std::size_t(last.count) + count <= std::size_t(std::numeric_limits<GLsizei>::max())) {
+            last.count += GLsizei(count);
+            return RenderResult::success();
+        }
+    }
+    m_commands.push_back(DrawCommand{primitive, pointSize, m_currentMatrix, first, GLsizei(count)});
+    return RenderResult::success();
+}
+
+void OffscreenRenderer::Impl::startFrameInGl()
+{
+    const std::int64_t imageWidth = m_width;
+    const std::int64_t imageHeight = m_height;
+    const PixelRect& pane = m_pane;
+    // OpenGL window y runs upwards from the bottom row.
+    glViewport(pane.x, GLint(imageHeight - (std::int64_t(pane.y) + pane.height)), pane.width, pane.height);
+
+    const std::int64_t x0 = std::max<std::int64_t>(pane.x, 0);
+    const std::int64_t y0 = std::max<std::int64_t>(pane.y, 0);
+    const std::int64_t x1 = std::min<std::int64_t>(std::int64_t(pane.x) + pane.width, imageWidth);
+    const std::int64_t y1 = std::min<std::int64_t>(std::int64_t(pane.y) + pane.height, imageHeight);
+    const bool empty = x0 >= x1 || y0 >= y1;
+    const bool coversImage = x0 == 0 && y0 == 0 && x1 == imageWidth && y1 == imageHeight;
+
+    if (!coversImage) {
+        glDisable(GL_SCISSOR_TEST);
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    // The scissor also keeps wide points near the pane's edge inside it.
+    glEnable(GL_SCISSOR_TEST);
+    if (empty)
+        glScissor(0, 0, 0, 0);
+    else
+        glScissor(GLint(x0), GLint(imageHeight - y1), GLsizei(x1 - x0), GLsizei(y1 - y0));
+    glClearColor(m_clearColor.r, m_clearColor.g, m_clearColor.b, m_clearColor.a);
+    glClear(GL_COLOR_BUFFER_BIT);
+}
+
+RenderResult OffscreenRenderer::Impl::flush(bool finish)
+{
+    RenderResult result;
+    {
+        CurrentContextScope scope;
+        if (!scope.bind(m_context, m_image.data(), m_width, m_height)) {
+            resetBatch();
+            return RenderResult::failure(RenderStatus::kContextFailure, "OSMesaMakeCurrent failed");
+        }
+        if (!m_clearedInGl) {
+            startFrameInGl();
+            m_clearedInGl = true;
+        }
+        if (m_vertexCount > 0) {
+            const Vertex* vertices = m_vertices.get();
+            glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
+            glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
+
+            std::uint32_t loadedMatrix = std::numeric_limits<std::uint32_t>::max();
+            float loadedPointSize = -1.0f;
+            const std::size_t commandCount = m_commands.size();
+            std::size_t i = 0;
+            while (i < commandCount) {
+                const DrawCommand& head = m_commands[i];
+                std::size_t end = i + 1;
+                while (end < commandCount && m_commands[end].primitive == head.primitive &&
+                       m_commands[end].matrixIndex == head.matrixIndex &&
+                       m_commands[end].pointSize == head.pointSize)
+                    ++end;
+                if (head.matrixIndex != loadedMatrix) {
+                    glLoadMatrixf(m_matrices[head.matrixIndex].data());
+                    loadedMatrix = head.matrixIndex;
+                }
+                if (head.primitive == Primitive::kPoints && head.pointSize != loadedPointSize) {
+                    glPointSize(head.pointSize);
+                    loadedPointSize = head.pointSize;
+                }
+                if (end - i == 1) {
+                    glDrawArrays(glMode(head.primitive), head.first, head.count);
+                } else {
+                    m_multiFirsts.clear();
+                    m_multiCounts.clear();
+                    for (std::size_t k = i; k < end; ++k) {
+                        m_multiFirsts.push_back(m_commands[k].first);
+                        m_multiCounts.push_back(m_commands[k].count);
+                    }
+                    glMultiDrawArrays(glMode(head.primitive), m_multiFirsts.data(), m_multiCounts.data(),
+                                      GLsizei(end - i));
+                }
+                i = end;
+            }
+        }
+        // glFinish makes OSMesa copy the framebuffer into m_image.
+        if (finish)
+            glFinish();
+        const GLenum error = takeGlError();
+        if (error != GL_NO_ERROR)
+            result = RenderResult::failure(RenderStatus::kGraphicsError,
+                                           std::string("OpenGL reported ") + glErrorName(error));
+    }
+    resetBatch();
+    return result;
+}
+
+void OffscreenRenderer::Impl::resetBatch()
+{
+    m_vertexCount = 0;
+    m_commands.clear();
+    if (!m_matrices.empty()) {
+        m_matrices[0] = m_matrices[m_currentMatrix];
+        m_matrices.resize(1);
+    }
+    m_currentMatrix = 0;
+}
+
+RenderResult OffscreenRenderer::Impl::endFrame()
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "endFrame called outside a frame");
+    m_inFrame = false;
+    return flush(true);
+}
+
+void OffscreenRenderer::Impl::cancelFrame()
+{
+    m_inFrame = false;
+    resetBatch();
+}
+
+OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>()) {}
+
+OffscreenRenderer::~OffscreenRenderer() = default;
+
+RenderResult OffscreenRenderer::beginFrame(std::uint32_t width, std::uint32_t height,
+                                           const RgbaColor& clearColor, const PixelRect& pane)
+{
+    try {
+        return m_impl->beginFrame(width, height, clearColor, pane);
+    } catch (const std::bad_alloc&) {
+        return RenderResult::failure(RenderStatus::kOutOfMemory,
+                                     "out of memory for a " + std::to_string(width) + " x " +
+                                         std::to_string(height) + " image");
+    }
+}
+
+RenderResult OffscreenRenderer::setMatrix(const float m[16])
+{
+    if (m == nullptr)
+        return invalid("matrix pointer is NULL");
+    std::array<float, 16> matrix;
+    std::memcpy(matrix.data(), m, sizeof(float) * 16);
+    try {
+        return m_impl->setMatrix(matrix);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::setMatrix(const double m[16])
+{
+    if (m == nullptr)
+        return invalid("matrix pointer is NULL");
+    std::array<float, 16> matrix;
+    for (int i = 0; i < 16; ++i)
+        matrix[i] = float(m[i]);
+    try {
+        return m_impl->setMatrix(matrix);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color)
+{
+    try {
+        return m_impl->draw(Primitive::kLineStrip, xyz, count, color, 1.0f);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::drawLines(const float* xyz, std::size_t count, const RgbColor& color)
+{
+    try {
+        return m_impl->draw(Primitive::kLines, xyz, count, color, 1.0f);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::drawPoints(const float* xyz, std::size_t count, const RgbColor& color,
+                                           float pointSize)
+{
+    try {
+        return m_impl->draw(Primitive::kPoints, xyz, count, color, pointSize);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::drawTriangles(const float* xyz, std::size_t count, const RgbColor& color)
+{
+    try {
+        return m_impl->draw(Primitive::kTriangles, xyz, count, color, 1.0f);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::endFrame()
+{
+    try {
+        return m_impl->endFrame();
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+void OffscreenRenderer::cancelFrame()
+{
+    m_impl->cancelFrame();
+}
+
+bool OffscreenRenderer::inFrame() const
+{
+    return m_impl->m_inFrame;
+}
+
+std::uint32_t OffscreenRenderer::width() const
+{
+    return m_impl->m_width;
+}
+
+std::uint32_t OffscreenRenderer::height() const
+{
+    return m_impl->m_height;
+}
+
+std::size_t OffscreenRenderer::rowBytes() const
+{
+    return std::size_t(m_impl->m_width) * 4;
+}
+
+const std::uint8_t* OffscreenRenderer::pixels() const
+{
+    return m_impl->m_width == 0 ? nullptr : m_impl->m_image.data();
+}
+
+} // namespace q3

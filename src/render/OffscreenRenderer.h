@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "render/RenderResult.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+namespace q3 {
+
+/// A colour with float channels, nominally in [0, 1] (OpenGL clamps).
+struct RgbColor {
+    float r = 0.0f;
+    float g = 0.0f;
+    float b = 0.0f;
+};
+
+struct RgbaColor {
+    float r = 0.0f;
+    float g = 0.0f;
+    float b = 0.0f;
+    float a = 0.0f;
+};
+
+/// Draws points, lines and filled triangles into its own RGBA8 image, headless.
+/// One per QuickDraw 3D view. This header is deliberately free of OpenGL: the
+/// implementation (OffscreenRenderer.cpp) uses OSMesa with llvmpipe today and
+/// another rasterizer could replace it without touching callers.
+///
+/// A frame is beginFrame(), any number of setMatrix() and draw calls, then
+/// endFrame(); afterwards pixels() holds the finished image. Draw calls only
+/// copy their vertices into a CPU-side batch; the batch is handed to OpenGL in
+/// a few multi-draw calls at endFrame() (or when it grows past a threshold),
+/// so the cost per call is a copy, not an OpenGL round trip.
+///
+/// Primitives are painted in submission order, later ones over earlier ones:
+/// there is no depth buffer and no blending; lines are 1 pixel wide, aliased.
+///
+/// Threads: the renderer's OpenGL context is current on the calling thread
+/// only inside beginFrame() (the first time, or when the size changes),
+/// inside endFrame(), and inside a draw call that flushes a full batch. On
+/// return from each of these, whatever OSMesa context the thread had current
+/// before is current again (or none). Hence separate renderers may render on
+/// separate threads at the same time, and frames of two renderers may even be
+/// interleaved on one thread. One renderer must not be used by two threads at
+/// once.
+///
+/// Invariant: outside a frame the batch is empty; pixels() has
+/// width() * height() * 4 bytes, valid after a successful endFrame().
+class OffscreenRenderer {
+public:
+    OffscreenRenderer();
+    ~OffscreenRenderer();
+    OffscreenRenderer(const OffscreenRenderer&) = delete;
+    OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
+
+    /// Starts a frame on an image of width x height pixels. The pane is the
+    /// part of the image the view draws into (y measured from the top): its
+    /// pixels are cleared to clearColor and the viewport maps clip space onto
+    /// it; pixels outside the pane become (0, 0, 0, 0). The pane may extend
+    /// beyond the image (that part is simply not stored). The matrix is reset
+    /// to identity. The first frame, or a frame of a new size, creates the
+    /// OpenGL context and image; frames of an unchanged size reuse both.
+    /// Errors: kWrongState if a frame is open; kInvalidArgument if width or
+    /// height is 0 or above the implementation limit (16384 for llvmpipe),
+    /// the pane is empty or too large, or a colour channel is NaN/infinite;
+    /// kOutOfMemory; kContextFailure or kWrongRenderer if no llvmpipe context
+    /// could be made (see the .cpp for the pinned Mesa settings).
+    RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
+                            const PixelRect& pane);
+
+    /// Sets the matrix for the following draw calls: it maps the caller's 3D
+    /// points straight to OpenGL clip space (homogeneous, before the divide).
+    /// Convention: QuickDraw 3D's row-vector form, p' = p * M, with the 16
+    /// values in row-major order m[row * 4 + column], exactly the memory
+    /// layout of a TQ3Matrix4x4. (That memory is also OpenGL's column-major
+    /// layout of the column-vector matrix M^T, so it is passed to OpenGL
+    /// as is.) Doubles are rounded to float, as OpenGL stores matrices.
+    /// Errors: kWrongState outside a frame; kInvalidArgument if m is NULL or
+    /// holds NaN/infinity (the previous matrix stays).
+    RenderResult setMatrix(const float m[16]);
+    RenderResult setMatrix(const double m[16]);
+
+    /// Draws one connected polyline through `count` points (xyz: 3 floats per
+    /// point, tightly packed). Fewer than 2 points draw nothing.
+    RenderResult drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color);
+    /// Draws count / 2 separate segments; count must be even.
+    RenderResult drawLines(const float* xyz, std::size_t count, const RgbColor& color);
+    /// Draws count square points of pointSize pixels (aliased; OpenGL clamps
+    /// the size to its range, 1..255 for llvmpipe).
+    RenderResult drawPoints(const float* xyz, std::size_t count, const RgbColor& color,
+                            float pointSize = 1.0f);
+    /// Draws count / 3 filled, unlit, single-coloured triangles (both faces);
+    /// count must be a multiple of 3.
+    /// Errors (all four draw calls): kWrongState outside a frame;
+    /// kInvalidArgument if xyz is NULL while count > 0, a count does not fit
+    /// the primitive, any coordinate or colour channel is NaN/infinite, or
+    /// pointSize is not a positive finite number; kOutOfMemory; and, if the
+    /// call flushed a full batch, the endFrame() errors. On error nothing of
+    /// the call is drawn.
+    RenderResult drawTriangles(const float* xyz, std::size_t count, const RgbColor& color);
+
+    /// Renders everything batched since beginFrame() and stores the image.
+    /// Errors: kWrongState if no frame is open; kContextFailure;
+    /// kGraphicsError if OpenGL reported an error. The frame is closed even
+    /// on failure (pixels() is then unspecified).
+    RenderResult endFrame();
+
+    /// Discards an open frame without rendering it (no effect otherwise);
+    /// pixels() is unspecified until the next successful endFrame().
+    void cancelFrame();
+
+    bool inFrame() const;
+    std::uint32_t width() const;
+    std::uint32_t height() const;
+    /// Bytes from one row to the next: always width() * 4 (tightly packed).
+    std::size_t rowBytes() const;
+    /// RGBA8 pixels, R first in memory, top row first; null before the first frame.
+    const std::uint8_t* pixels() const;
+
+private:
+    class Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace q3

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "style/SubdivisionStyle.h"
+
+#include "core/ErrorManager.h"
+#include "core/ShapeVisitor.h"
+
+#include <cmath>
+#include <string>
+
+namespace q3 {
+
+const ClassInfo kStyleClass{kQ3ShapeTypeStyle, &kShapeClass, "style"};
+const ClassInfo kSubdivisionStyleClass{kQ3StyleTypeSubdivision, &kStyleClass, "subdivision style"};
+
+namespace {
+
+const char* methodName(TQ3SubdivisionMethod method)
+{
+    switch (method) {
+    case kQ3SubdivisionMethodConstant:
+        return "constant";
+    case kQ3SubdivisionMethodWorldSpace:
+        return "world-space";
+    case kQ3SubdivisionMethodScreenSpace:
+        return "screen-space";
+    }
+    return "unknown";
+}
+
+// One parameter (c1 or c2) under QD3DStyle.h's substitution rule: returns the
+// value to use and appends to `report` when it replaced an unreasonable one.
+float checkParameter(TQ3SubdivisionMethod method, float value, const char* name, std::string& report)
+{
+    float result = value;
+    const char* why = nullptr;
+    if (!std::isfinite(value)) {
+        result = kQ3SubdivisionDefaultC1;
+        why = "is not finite";
+    } else if (method == kQ3SubdivisionMethodConstant) {
+        if (value < 1.0f) {
+            result = 1.0f;
+            why = "is less than one segment per span";
+        } else if (value > static_cast<float>(kQ3SubdivisionMaxConstantSegments)) {
+            result = static_cast<float>(kQ3SubdivisionMaxConstantSegments);
+            why = "asks for more than kQ3SubdivisionMaxConstantSegments segments per span";
+        }
+    } else if (value <= 0.0f) {
+        result = kQ3SubdivisionDefaultC1;
+        why = "is not a positive length";
+    }
+    if (why != nullptr) {
+        if (!report.empty())
+            report += "; ";
+        report += std::string(name) + " = " + std::to_string(value) + " " + why + " for the " +
+                  methodName(method) + " method, so " + std::to_string(result) + " is used";
+    }
+    return result;
+}
+
+} // namespace
+
+TQ3SubdivisionStyleData defaultSubdivisionStyle()
+{
+    return {kQ3SubdivisionMethodScreenSpace, kQ3SubdivisionDefaultC1, kQ3SubdivisionDefaultC1};
+}
+
+TQ3SubdivisionStyleData checkSubdivisionStyle(const TQ3SubdivisionStyleData& requested)
+{
+    const long method = static_cast<long>(requested.method);
+    if (method < kQ3SubdivisionMethodConstant || method > kQ3SubdivisionMethodScreenSpace)
+        fail(kQ3ErrorInvalidData,
+             "subdivision method " + std::to_string(method) +
+                 " is none of kQ3SubdivisionMethodConstant, WorldSpace, ScreenSpace");
+    TQ3SubdivisionStyleData result = requested;
+    std::string report;
+    result.c1 = checkParameter(requested.method, requested.c1, "c1", report);
+    result.c2 = checkParameter(requested.method, requested.c2, "c2", report);
+    if (!report.empty())
+        errors::postWarning(kQ3WarningParameterOutOfRange, "subdivision style: " + report);
+    return result;
+}
+
+SubdivisionStyle::SubdivisionStyle(const TQ3SubdivisionStyleData& data)
+    : m_data(checkSubdivisionStyle(data))
+{
+}
+
+Object* SubdivisionStyle::duplicate() const
+{
+    return makeShared<SubdivisionStyle>(m_data).detach();
+}
+
+void SubdivisionStyle::accept(ShapeVisitor& visitor) const
+{
+    visitor.visitSubdivisionStyle(*this);
+}
+
+void SubdivisionStyle::setData(const TQ3SubdivisionStyleData& data)
+{
+    m_data = checkSubdivisionStyle(data);
+    markEdited();
+}
+
+} // namespace q3

@@ -1,0 +1,36 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+
+/* Proves that every public header compiles as strict C99 with warnings as
+ * errors, together and in any order, and that the C ABI links and runs. */
+#include "QD3D.h"
+#include "QD3DErrors.h"
+#include "QD3DGeometry.h"
+#include "QD3DSet.h"
+#include "QD3DStyle.h"
+
+#include <stdio.h>
+
+int main(void)
+{
+    TQ3NURBCurveData data;
+    TQ3SubdivisionStyleData style;
+    TQ3GeometryObject curve = NULL;
+    unsigned long major = 0, minor = 0;
+
+    data.curveAttributeSet = NULL;
+    style.method = kQ3SubdivisionMethodConstant;
+    style.c1 = style.c2 = 5.0f;
+    (void)style;
+    (void)curve;
+    if (Q3Initialize() != kQ3Success)
+        return 1;
+    if (Q3GetVersion(&major, &minor) != kQ3Success || major != 1 || minor != 6)
+        return 2;
+    if (Q3NURBCurve_New(NULL) != NULL || Q3Error_Get(NULL) != kQ3ErrorNULLParameter)
+        return 3;
+    Q3Exit();
+    printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
+           (void *)data.curveAttributeSet);
+    return 0;
+}

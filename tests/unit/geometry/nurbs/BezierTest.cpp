@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/nurbs/Bezier.h"
+
+#include "geometry/nurbs/Evaluate.h"
+
+#include "NurbsTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace q3::nurbs {
+namespace {
+
+using test::TestCurve;
+
+TEST(NurbsBezier, BernsteinRowsSumToOneAndEndRowsAreExact)
+{
+    for (unsigned k = kMinOrder; k <= kMaxOrder; ++k) {
+        for (std::uint32_t m : {1u, 2u, 7u, 64u}) {
+            const BernsteinTable table(k, m);
+            EXPECT_EQ(table.order(), k);
+            EXPECT_EQ(table.segments(), m);
+            for (std::uint32_t j = 0; j <= m; ++j) {
+                double sum = 0.0;
+                for (unsigned r = 0; r < k; ++r) {
+                    EXPECT_GE(table.row(j)[r], 0.0);
+                    sum += table.row(j)[r];
+                }
+                EXPECT_NEAR(sum, 1.0, 1e-14);
+            }
+            for (unsigned r = 0; r < k; ++r) {
+                EXPECT_EQ(table.row(0)[r], r == 0 ? 1.0 : 0.0);
+                EXPECT_EQ(table.row(m)[r], r == k - 1 ? 1.0 : 0.0);
+            }
+        }
+    }
+}
+
+TEST(NurbsBezier, BernsteinRowMatchesClosedForm)
+{
+    // B_{r,3}(1/4) for the cubic: 27/64, 27/64, 9/64, 1/64.
+    const BernsteinTable table(4, 4);
+    EXPECT_DOUBLE_EQ(table.row(1)[0], 27.0 / 64.0);
+    EXPECT_DOUBLE_EQ(table.row(1)[1], 27.0 / 64.0);
+    EXPECT_DOUBLE_EQ(table.row(1)[2], 9.0 / 64.0);
+    EXPECT_DOUBLE_EQ(table.row(1)[3], 1.0 / 64.0);
+}
+
+TEST(NurbsBezier, BezierCurveConvertsToItsOwnControlPoints)
+{
+    const TestCurve curve = test::listingOneCurve();
+    Point4 out[4];
+    spanToBezier(curve.ref(), 3, out);
+    for (int r = 0; r < 4; ++r) {
+        EXPECT_DOUBLE_EQ(out[r].x, curve.points[4 * r]);
+        EXPECT_DOUBLE_EQ(out[r].y, curve.points[4 * r + 1]);
+        EXPECT_DOUBLE_EQ(out[r].w, 1.0);
+    }
+}
+
+TEST(NurbsBezier, UniformQuadraticSpanHasMidpointBezierPoints)
+{
+    // Uniform quadratic B-spline: the Bezier points of a span are the midpoint of the
+    // first two control points, the middle control point, the midpoint of the last two.
+    const TestCurve curve = test::makeCurve(3, {0, 0, 0, 1, 2, 4, 0, 1, 6, 0, 0, 1}, {0, 1, 2, 3, 4, 5});
+    Point4 out[3];
+    spanToBezier(curve.ref(), 2, out);
+    EXPECT_DOUBLE_EQ(out[0].x, 1.0);
+    EXPECT_DOUBLE_EQ(out[0].y, 2.0);
+    EXPECT_DOUBLE_EQ(out[1].x, 2.0);
+    EXPECT_DOUBLE_EQ(out[1].y, 4.0);
+    EXPECT_DOUBLE_EQ(out[2].x, 4.0);
+    EXPECT_DOUBLE_EQ(out[2].y, 2.0);
+}
+
+TEST(NurbsBezier, EvaluateBezierIsExactAtEnds)
+{
+    const Point4 points[3] = {{1, 2, 3, 0.5}, {4, 5, 6, 2}, {7, 8, 9, 3}};
+    const Point4 start = evaluateBezier(points, 3, 0.0);
+    const Point4 end = evaluateBezier(points, 3, 1.0);
+    EXPECT_EQ(start.x, 1.0);
+    EXPECT_EQ(start.w, 0.5);
+    EXPECT_EQ(end.y, 8.0);
+    EXPECT_EQ(end.w, 3.0);
+    const Point4 mid = evaluateBezier(points, 3, 0.5);
+    EXPECT_DOUBLE_EQ(mid.x, 0.25 * 1 + 0.5 * 4 + 0.25 * 7);
+    EXPECT_DOUBLE_EQ(mid.w, 0.25 * 0.5 + 0.5 * 2 + 0.25 * 3);
+}
+
+TEST(NurbsBezier, FormAgreesWithDeBoorForEveryOrder)
+{
+    // Tolerance: both paths are convex combinations of the same float inputs in double,
+    // so they may differ by a few hundred ulps of the curve's size at order 16.
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 450; ++trial) {
+        const unsigned k = 2 + trial % 15;
+        test::RandomCurveOptions options;
+        options.clamped = trial % 2 == 0;
+        options.repeatProbability = trial % 3 == 0 ? 0.5 : 0.1;
+        const TestCurve curve = test::randomCurve(rng, k, options);
+        const CurveRef ref = curve.ref();
+        const double tolerance = 1e-12 * test::curveScale(curve);
+        const BezierForm form(ref);
+        ASSERT_FALSE(form.empty());
+        ASSERT_EQ(form.spanCount(), countNonEmptySpans(ref));
+        EXPECT_EQ(form.domain().start, curve.domainStart());
+        EXPECT_EQ(form.domain().end, curve.domainEnd());
+        for (int s = 0; s <= 40; ++s) {
+            const double t = s == 40 ? curve.domainEnd()
+                                     : curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * unit(rng);
+            const Point3 byDeBoor = evaluate(ref, t).point;
+            EXPECT_LE(test::distance3(form.evaluate(t), byDeBoor), tolerance) << "order " << k << " t " << t;
+            EXPECT_LE(test::distance3(form.evaluate(t), test::referencePoint3(curve, t)), tolerance);
+        }
+        // The table kernel at its uniform samples.
+        const std::uint32_t m = 5;
+        const BernsteinTable table(k, m);
+        std::vector<double> xyz(3 * (m + 1));
+        std::vector<float> xyzFloat(3 * (m + 1));
+        for (std::size_t sIndex = 0; sIndex < form.spanCount(); ++sIndex) {
+            const Span& span = form.span(sIndex);
+            form.sampleSpan(sIndex, table, 0, m + 1, xyz.data());
+            form.sampleSpan(sIndex, table, 0, m + 1, xyzFloat.data());
+            for (std::uint32_t j = 0; j <= m; ++j) {
+                const double t = span.start + (span.end - span.start) * (double(j) / m);
+                const Point3 expected = evaluate(ref, j == m ? span.end : t).point;
+                const Point3 sampled{xyz[3 * j], xyz[3 * j + 1], xyz[3 * j + 2]};
+                EXPECT_LE(test::distance3(sampled, expected), tolerance) << "order " << k;
+                for (int c = 0; c < 3; ++c) {
+                    EXPECT_EQ(xyzFloat[3 * j + c], float(xyz[3 * j + c]));
+                }
+            }
+        }
+    }
+}
+
+TEST(NurbsBezier, SampleRangeWritesOnlyRequestedSamples)
+{
+    const TestCurve curve = test::listingOneCurve();
+    const BezierForm form(curve.ref());
+    const BernsteinTable table(4, 4);
+    std::vector<double> all(15);
+    form.sampleSpan(0, table, 0, 5, all.data());
+    std::vector<double> part(7, -1.0);
+    form.sampleSpan(0, table, 2, 2, part.data());
+    for (int i = 0; i < 6; ++i) {
+        EXPECT_EQ(part[i], all[6 + i]);
+    }
+    EXPECT_EQ(part[6], -1.0);
+    EXPECT_DOUBLE_EQ(all[6], 1.5);
+    EXPECT_DOUBLE_EQ(all[7], 0.5);
+}
+
+TEST(NurbsBezier, InvalidCurveGivesEmptyForm)
+{
+    TestCurve curve = test::listingOneCurve();
+    curve.points[3] = 0.0f;
+    const BezierForm form(curve.ref());
+    EXPECT_TRUE(form.empty());
+    EXPECT_EQ(form.spanCount(), 0u);
+}
+
+TEST(NurbsBezier, RebuildFollowsAnEditedCurve)
+{
+    TestCurve curve = test::listingOneCurve();
+    BezierForm form(curve.ref());
+    EXPECT_DOUBLE_EQ(form.evaluate(0.5).y, 0.5);
+    curve.points[4 * 1 + 1] = 3.0f;  // P1.y from 1 to 3: Q(0.5).y gains 3/8 * 2
+    form.rebuild(curve.ref());
+    EXPECT_DOUBLE_EQ(form.evaluate(0.5).y, 0.5 + 0.75);
+    curve.knots = {0, 0, 0, 1, 2, 3, 3, 3};
+    curve.order = 3;
+    curve.points.insert(curve.points.end(), {4, 0, 0, 1});
+    form.rebuild(curve.ref());
+    EXPECT_EQ(form.order(), 3u);
+    EXPECT_EQ(form.spanCount(), 3u);
+    EXPECT_LE(test::distance3(form.evaluate(1.7), evaluate(curve.ref(), 1.7).point), 1e-14);
+}
+
+} // namespace
+} // namespace q3::nurbs

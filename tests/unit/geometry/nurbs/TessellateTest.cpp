@@ -1,0 +1,483 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/nurbs/Tessellate.h"
+
+#include "geometry/nurbs/Evaluate.h"
+
+#include "NurbsTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace q3::nurbs {
+namespace {
+
+using test::TestCurve;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Vertices are floats: each coordinate carries a rounding error of at most 2^-24 of
+// the curve's size, so 1e-6 of the size is a safe bound for "on the curve".
+constexpr double kOnCurveTolerance = 1e-6;
+
+std::size_t segmentCount(const TessellatedCurve& result)
+{
+    return result.vertexCount() == 0 ? 0 : result.vertexCount() - 1;
+}
+
+Point3 vertex(const TessellatedCurve& result, std::size_t i)
+{
+    return Point3{result.vertices[3 * i], result.vertices[3 * i + 1], result.vertices[3 * i + 2]};
+}
+
+// The guarantees every tessellation gives: exact end parameters, increasing
+// parameters, no repeated consecutive vertex, every vertex on the curve.
+// Vertices are checked against the reference evaluator every `stride` vertices.
+void expectPolylineInvariants(const TestCurve& curve, const TessellatedCurve& result, std::size_t stride = 1)
+{
+    ASSERT_GE(result.vertexCount(), 1u);
+    ASSERT_EQ(result.vertices.size(), 3 * result.parameters.size());
+    EXPECT_EQ(result.parameters.front(), curve.domainStart());
+    if (result.vertexCount() > 1) {
+        EXPECT_EQ(result.parameters.back(), curve.domainEnd());
+    }
+    const double tolerance = kOnCurveTolerance * test::curveScale(curve);
+    for (std::size_t i = 0; i < result.vertexCount(); ++i) {
+        if (i > 0) {
+            ASSERT_LT(result.parameters[i - 1], result.parameters[i]) << i;
+            const bool same = result.vertices[3 * i] == result.vertices[3 * i - 3] &&
+                              result.vertices[3 * i + 1] == result.vertices[3 * i - 2] &&
+                              result.vertices[3 * i + 2] == result.vertices[3 * i - 1];
+            ASSERT_FALSE(same) << "repeated vertex " << i;
+        }
+        if (i % stride == 0 || i + 1 == result.vertexCount()) {
+            ASSERT_LE(test::distance3(vertex(result, i), test::referencePoint3(curve, result.parameters[i])),
+                      tolerance)
+                << "vertex " << i << " t " << result.parameters[i];
+        }
+    }
+}
+
+// A random affine map: non-uniform scale, then a rotation, then a translation.
+struct AffineMap {
+    double m[3][3];
+    double offset[3];
+
+    bool operator()(const Point3& p, Point3& q) const
+    {
+        q.x = m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + offset[0];
+        q.y = m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + offset[1];
+        q.z = m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + offset[2];
+        return true;
+    }
+};
+
+AffineMap randomAffine(std::mt19937& rng)
+{
+    std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
+    std::uniform_real_distribution<double> scale(0.5, 3.0);
+    std::uniform_real_distribution<double> shift(-50.0, 50.0);
+    const double a = angle(rng);
+    const double b = angle(rng);
+    const double s[3] = {scale(rng), scale(rng), scale(rng)};
+    // Rotation about z by a, then about x by b.
+    const double rz[3][3] = {{std::cos(a), -std::sin(a), 0}, {std::sin(a), std::cos(a), 0}, {0, 0, 1}};
+    const double rx[3][3] = {{1, 0, 0}, {0, std::cos(b), -std::sin(b)}, {0, std::sin(b), std::cos(b)}};
+    AffineMap map{};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            double sum = 0.0;
+            for (int l = 0; l < 3; ++l) {
+                sum += rx[i][l] * rz[l][j];
+            }
+            map.m[i][j] = sum * s[j];
+        }
+        map.offset[i] = shift(rng);
+    }
+    return map;
+}
+
+// Perspective projection to pixels for an eye at (0, 0, eyeZ) looking down +z; points
+// closer than `nearDepth` have no image.
+struct PerspectiveMap {
+    double eyeZ;
+    double nearDepth;
+    double focal = 500.0;
+
+    bool operator()(const Point3& p, Point3& q) const
+    {
+        const double depth = p.z - eyeZ;
+        if (!(depth >= nearDepth)) {
+            return false;
+        }
+        q = Point3{320.0 + focal * p.x / depth, 240.0 - focal * p.y / depth, 0.0};
+        return true;
+    }
+};
+
+// Mapped length of the curve from many samples per span (a lower bound of the true length).
+double mappedLength(const TestCurve& curve, const PointMapping& mapping, int samplesPerSpan)
+{
+    double total = 0.0;
+    for (const Span& span : nonEmptySpans(curve.ref())) {
+        Point3 previous;
+        mapping(evaluate(curve.ref(), span.start).point, previous);
+        for (int i = 1; i <= samplesPerSpan; ++i) {
+            const double t = i == samplesPerSpan ? span.end
+                                                 : span.start + (span.end - span.start) * i / samplesPerSpan;
+            Point3 q;
+            mapping(evaluate(curve.ref(), t).point, q);
+            total += test::distance3(previous, q);
+            previous = q;
+        }
+    }
+    return total;
+}
+
+// Longest chord between mapped end points, evaluating the curve at each vertex's
+// parameter with the reference evaluator (or, for very long polylines, with de Boor,
+// which the evaluation tests check against the reference); chords with an unmappable
+// end are skipped.
+double longestMappedChord(const TestCurve& curve, const TessellatedCurve& result, const PointMapping& mapping,
+                          bool useReference = true)
+{
+    const auto at = [&](double t) {
+        return useReference ? test::referencePoint3(curve, t) : evaluate(curve.ref(), t).point;
+    };
+    double longest = 0.0;
+    for (std::size_t i = 1; i < result.vertexCount(); ++i) {
+        Point3 a;
+        Point3 b;
+        if (mapping(at(result.parameters[i - 1]), a) && mapping(at(result.parameters[i]), b)) {
+            longest = std::max(longest, test::distance3(a, b));
+        }
+    }
+    return longest;
+}
+
+// A long order-k curve with n points on a wiggly path and unit-spaced clamped knots.
+TestCurve longCurve(unsigned k, std::size_t n)
+{
+    TestCurve curve;
+    curve.order = k;
+    curve.points.reserve(4 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double t = double(i);
+        curve.points.insert(curve.points.end(),
+                            {float(t), float(std::sin(0.7 * t) * 3.0), float(std::cos(0.3 * t)), 1.0f});
+    }
+    curve.knots.reserve(n + k);
+    for (std::size_t i = 0; i < n + k; ++i) {
+        const std::size_t clamped = std::min(std::max(i, std::size_t(k - 1)), n);
+        curve.knots.push_back(float(clamped));
+    }
+    return curve;
+}
+
+TEST(NurbsTessellate, ConstantGivesMSegmentsPerSpanOnRandomCurves)
+{
+    std::mt19937 rng(1);
+    for (int trial = 0; trial < 300; ++trial) {
+        const unsigned k = 2 + trial % 15;
+        test::RandomCurveOptions options;
+        options.clamped = trial % 2 == 0;
+        options.repeatProbability = trial % 4 == 0 ? 0.5 : 0.0;
+        const TestCurve curve = test::randomCurve(rng, k, options);
+        const std::uint32_t m = 1 + std::uint32_t(trial % 9);
+        const TessellatedCurve result = tessellateConstant(curve.ref(), m);
+        const std::vector<Span> spans = nonEmptySpans(curve.ref());
+        EXPECT_FALSE(result.substituted);
+        EXPECT_EQ(result.effectiveValue, double(m));
+        ASSERT_EQ(result.vertexCount(), m * spans.size() + 1) << "order " << k;
+        expectPolylineInvariants(curve, result);
+        // Uniform in each span; the span's end vertex appears once, as the next span's start.
+        for (std::size_t s = 0; s < spans.size(); ++s) {
+            for (std::uint32_t j = 0; j < m; ++j) {
+                const double expected = spans[s].start + (spans[s].end - spans[s].start) * j / m;
+                EXPECT_NEAR(result.parameters[s * m + j], expected, 1e-14 * (1.0 + std::fabs(expected)));
+            }
+        }
+    }
+}
+
+TEST(NurbsTessellate, ConstantFromCachedFormMatchesConstantFromCurve)
+{
+    std::mt19937 rng(2);
+    for (int trial = 0; trial < 40; ++trial) {
+        const TestCurve curve = test::randomCurve(rng, 2 + trial % 15, {});
+        const TessellatedCurve direct = tessellateConstant(curve.ref(), 6);
+        const TessellatedCurve cached = tessellateConstant(BezierForm(curve.ref()), 6);
+        EXPECT_EQ(direct.vertices, cached.vertices);
+        EXPECT_EQ(direct.parameters, cached.parameters);
+    }
+}
+
+TEST(NurbsTessellate, ConstantListingOneWithFiveSegments)
+{
+    // The article's subdivision example: c1 = 5 on the single-span Bezier curve.
+    const TestCurve curve = test::listingOneCurve();
+    const TessellatedCurve result = tessellateConstant(curve.ref(), 5);
+    ASSERT_EQ(result.vertexCount(), 6u);
+    EXPECT_EQ(result.parameters[0], 0.0);
+    EXPECT_EQ(result.parameters[5], 1.0);
+    EXPECT_FLOAT_EQ(result.vertices[0], 0.0f);
+    EXPECT_FLOAT_EQ(result.vertices[15], 3.0f);
+    EXPECT_FLOAT_EQ(result.vertices[16], 1.0f);
+    expectPolylineInvariants(curve, result);
+}
+
+TEST(NurbsTessellate, ConstantDropsRepeatedVertices)
+{
+    // Order 2 through A, A, B: the first span is a single point.
+    const TestCurve curve = test::makeCurve(2, {1, 2, 3, 1, 1, 2, 3, 1, 4, 2, 3, 1}, {0, 0, 1, 2, 2});
+    const TessellatedCurve result = tessellateConstant(curve.ref(), 3);
+    ASSERT_EQ(result.vertexCount(), 4u);  // A, then three points up to B
+    EXPECT_EQ(result.parameters.front(), 0.0);
+    EXPECT_EQ(result.parameters.back(), 2.0);
+    expectPolylineInvariants(curve, result);
+}
+
+TEST(NurbsTessellate, PointCurveGivesSingleVertex)
+{
+    const TestCurve curve = test::makeCurve(3, {2, 2, 2, 2, 1, 1, 1, 1, 3, 3, 3, 3}, {0, 0, 0, 1, 1, 1});
+    const TessellatedCurve constant = tessellateConstant(curve.ref(), 10);
+    ASSERT_EQ(constant.vertexCount(), 1u);
+    EXPECT_EQ(constant.parameters[0], 0.0);
+    EXPECT_EQ(constant.vertices[0], 1.0f);
+    const TessellatedCurve adaptive = tessellateAdaptive(curve.ref(), 0.01, AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}});
+    EXPECT_EQ(adaptive.vertexCount(), 1u);
+}
+
+TEST(NurbsTessellate, ConstantReplacesZeroByOne)
+{
+    const TestCurve curve = test::listingOneCurve();
+    const TessellatedCurve result = tessellateConstant(curve.ref(), 0);
+    EXPECT_TRUE(result.substituted);
+    EXPECT_EQ(result.effectiveValue, 1.0);
+    EXPECT_EQ(result.vertexCount(), 2u);
+}
+
+TEST(NurbsTessellate, ConstantCapsSegmentsPerSpan)
+{
+    const TestCurve curve = test::makeCurve(3, {0, 0, 0, 1, 1, 1, 0, 1, 2, 0, 0, 1, 3, 1, 0, 1, 4, 0, 0, 1},
+                                            {0, 0, 0, 1, 2, 3, 3, 3});
+    for (std::uint32_t requested : {kMaxSegmentsPerSpan + 1, 100000u, 0xFFFFFFFFu}) {
+        const TessellatedCurve result = tessellateConstant(curve.ref(), requested);
+        EXPECT_TRUE(result.substituted);
+        EXPECT_EQ(result.effectiveValue, double(kMaxSegmentsPerSpan));
+        EXPECT_EQ(result.vertexCount(), 3 * kMaxSegmentsPerSpan + 1);
+    }
+    const TessellatedCurve exact = tessellateConstant(curve.ref(), kMaxSegmentsPerSpan);
+    EXPECT_FALSE(exact.substituted);
+}
+
+TEST(NurbsTessellate, ConstantCapsTotalSegments)
+{
+    const TestCurve curve = longCurve(4, 5003);  // 5000 spans
+    const TessellatedCurve result = tessellateConstant(curve.ref(), 1000);
+    EXPECT_TRUE(result.substituted);
+    const std::uint32_t expected = std::uint32_t(kMaxSegments / 5000);
+    EXPECT_EQ(result.effectiveValue, double(expected));
+    EXPECT_EQ(result.vertexCount(), 5000u * expected + 1);
+    EXPECT_LE(segmentCount(result), kMaxSegments);
+    EXPECT_EQ(result.parameters.back(), curve.domainEnd());
+}
+
+TEST(NurbsTessellate, HugeOrderSixteenCurveStaysBounded)
+{
+    // A million points of order 16: more spans than kMaxSegments allows segments, so both
+    // methods fall back to one segment per span (the documented floor).
+    const TestCurve curve = longCurve(16, 1000000);
+    const std::size_t spans = 1000000 - 15;
+    const TessellatedCurve constant = tessellateConstant(curve.ref(), 4);
+    EXPECT_TRUE(constant.substituted);
+    EXPECT_EQ(constant.effectiveValue, 1.0);
+    EXPECT_EQ(constant.vertexCount(), spans + 1);
+    EXPECT_EQ(constant.parameters.back(), curve.domainEnd());
+
+    const double size = curve.domainEnd();
+    const TessellatedCurve adaptive =
+        tessellateAdaptive(curve.ref(), size * 1e-6, AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}});
+    EXPECT_TRUE(adaptive.substituted);
+    EXPECT_LE(segmentCount(adaptive), std::max(kMaxSegments, spans));
+    EXPECT_EQ(adaptive.parameters.front(), curve.domainStart());
+    EXPECT_EQ(adaptive.parameters.back(), curve.domainEnd());
+    // Spot-check vertices against de Boor.
+    for (std::size_t i = 0; i < adaptive.vertexCount(); i += 99991) {
+        const Point3 expected = evaluate(curve.ref(), adaptive.parameters[i]).point;
+        EXPECT_LE(test::distance3(vertex(adaptive, i), expected), 1e-6 * size);
+    }
+}
+
+TEST(NurbsTessellate, WorldSpaceChordsAreShortAndFewOnRandomCurves)
+{
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<double> divisions(3.0, 300.0);
+    double worstRatio = 0.0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const unsigned k = 2 + trial % 15;
+        test::RandomCurveOptions options;
+        options.clamped = trial % 2 == 0;
+        options.repeatProbability = trial % 3 == 0 ? 0.5 : 0.0;
+        const TestCurve curve = test::randomCurve(rng, k, options);
+        const AffineMap affine = randomAffine(rng);
+        const PointMapping mapping = affine;
+        const double length = mappedLength(curve, mapping, 400);
+        const double c1 = length / divisions(rng);
+        const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+        EXPECT_FALSE(result.substituted);
+        EXPECT_FALSE(result.capped);
+        EXPECT_EQ(result.effectiveValue, c1);
+        EXPECT_EQ(result.unmeasuredSegments, 0u);
+        expectPolylineInvariants(curve, result);
+        EXPECT_LE(longestMappedChord(curve, result, mapping), c1 * (1.0 + 1e-9)) << "order " << k;
+        const std::size_t spans = countNonEmptySpans(curve.ref());
+        EXPECT_LE(double(segmentCount(result)), 1.2 * length / c1 + double(spans)) << "order " << k;
+        worstRatio = std::max(worstRatio, (double(segmentCount(result)) - double(spans)) / (length / c1));
+    }
+    RecordProperty("worstSegmentRatio", std::to_string(worstRatio));
+}
+
+TEST(NurbsTessellate, ScreenSpaceChordsAreShortAndFewUnderPerspective)
+{
+    std::mt19937 rng(6);
+    std::uniform_real_distribution<double> pixels(2.0, 40.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const unsigned k = 2 + trial % 15;
+        const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, 0.2, 12});
+        const PointMapping mapping = PerspectiveMap{-25.0, 1.0};
+        const double c1 = pixels(rng);
+        const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+        EXPECT_FALSE(result.substituted);
+        EXPECT_EQ(result.unmeasuredSegments, 0u);
+        expectPolylineInvariants(curve, result);
+        EXPECT_LE(longestMappedChord(curve, result, mapping), c1 * (1.0 + 1e-9));
+        const double length = mappedLength(curve, mapping, 400);
+        EXPECT_LE(double(segmentCount(result)), 1.2 * length / c1 + double(countNonEmptySpans(curve.ref())));
+    }
+}
+
+TEST(NurbsTessellate, AdaptiveFromCachedFormMatchesAdaptiveFromCurve)
+{
+    std::mt19937 rng(12);
+    const PointMapping mapping = PerspectiveMap{-25.0, 1.0};
+    for (int trial = 0; trial < 30; ++trial) {
+        const TestCurve curve = test::randomCurve(rng, 2 + trial % 15, {});
+        const TessellatedCurve direct = tessellateAdaptive(curve.ref(), 3.0, mapping);
+        const TessellatedCurve cached = tessellateAdaptive(BezierForm(curve.ref()), 3.0, mapping);
+        EXPECT_EQ(direct.vertices, cached.vertices);
+        EXPECT_EQ(direct.parameters, cached.parameters);
+    }
+}
+
+TEST(NurbsTessellate, AdaptiveStreamingMatchesCachedFormOnLongCurve)
+{
+    // 20000 order-16 spans exceed the size converted up front, so the CurveRef path
+    // converts span by span; it must give the same polyline as the cached form.
+    const TestCurve curve = longCurve(16, 20015);
+    const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+    const TessellatedCurve streamed = tessellateAdaptive(curve.ref(), 0.3, mapping);
+    const TessellatedCurve cached = tessellateAdaptive(BezierForm(curve.ref()), 0.3, mapping);
+    EXPECT_FALSE(streamed.substituted);
+    EXPECT_EQ(streamed.parameters, cached.parameters);
+    EXPECT_EQ(streamed.vertices, cached.vertices);
+}
+
+TEST(NurbsTessellate, PartlyBehindEyeCurveTerminatesAndMeasuresVisibleChords)
+{
+    // The eye sits inside the curves' bounding box, so parts of every curve are behind it.
+    std::mt19937 rng(9);
+    std::size_t unmeasured = 0;
+    for (int trial = 0; trial < 100; ++trial) {
+        const unsigned k = 2 + trial % 15;
+        const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, 0.2, 12});
+        const PointMapping mapping = PerspectiveMap{0.0, 0.1};
+        const double c1 = 8.0;
+        const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+        expectPolylineInvariants(curve, result);
+        EXPECT_LE(segmentCount(result), kMaxSegments);
+        if (!result.capped) {
+            EXPECT_LE(longestMappedChord(curve, result, mapping), result.effectiveValue * (1.0 + 1e-9));
+        }
+        unmeasured += result.unmeasuredSegments;
+    }
+    EXPECT_GT(unmeasured, 0u);
+}
+
+TEST(NurbsTessellate, UnmappableCurveGetsProbeSegmentsPerSpan)
+{
+    const TestCurve curve = test::listingOneCurve();
+    const PointMapping never = [](const Point3&, Point3&) { return false; };
+    const TessellatedCurve result = tessellateAdaptive(curve.ref(), 0.001, never);
+    EXPECT_EQ(segmentCount(result), probeSegmentsPerSpan(4));
+    EXPECT_EQ(result.unmeasuredSegments, probeSegmentsPerSpan(4));
+    EXPECT_FALSE(result.substituted);
+    expectPolylineInvariants(curve, result);
+}
+
+TEST(NurbsTessellate, NonFiniteMappedPointCountsAsUnmappable)
+{
+    const TestCurve curve = test::listingOneCurve();
+    const PointMapping nan = [](const Point3& p, Point3& q) {
+        q = Point3{p.x, p.x > 1.0 ? std::numeric_limits<double>::quiet_NaN() : p.y, 0.0};
+        return true;
+    };
+    const TessellatedCurve result = tessellateAdaptive(curve.ref(), 0.05, nan);
+    expectPolylineInvariants(curve, result);
+    EXPECT_GT(result.unmeasuredSegments, 0u);
+    EXPECT_LE(segmentCount(result), 200u);
+}
+
+TEST(NurbsTessellate, TinyLengthIsSubstitutedAndBounded)
+{
+    const TestCurve curve = longCurve(4, 40);
+    const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+    const double length = mappedLength(curve, mapping, 200);
+    const double c1 = length * 1e-6 / 1e3;
+    const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+    EXPECT_TRUE(result.substituted);
+    EXPECT_GT(result.effectiveValue, c1);
+    EXPECT_LE(segmentCount(result), kMaxSegments);
+    EXPECT_GE(segmentCount(result), kPlacementBudget / 2);
+    EXPECT_FALSE(result.capped);
+    expectPolylineInvariants(curve, result, 97);
+    EXPECT_LE(longestMappedChord(curve, result, mapping, false), result.effectiveValue * (1.0 + 1e-9));
+}
+
+TEST(NurbsTessellate, NonPositiveOrNaNLengthIsSubstituted)
+{
+    const TestCurve curve = test::listingOneCurve();
+    const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+    for (double c1 : {0.0, -1.0, -kInf, std::numeric_limits<double>::quiet_NaN()}) {
+        const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+        EXPECT_TRUE(result.substituted) << c1;
+        EXPECT_GT(result.effectiveValue, 0.0);
+        EXPECT_LE(segmentCount(result), kMaxSegments);
+        EXPECT_EQ(result.parameters.back(), 1.0);
+    }
+}
+
+TEST(NurbsTessellate, InfiniteLengthGivesOneSegmentPerSpan)
+{
+    const TestCurve curve = longCurve(3, 12);
+    const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+    const TessellatedCurve result = tessellateAdaptive(curve.ref(), kInf, mapping);
+    EXPECT_FALSE(result.substituted);
+    EXPECT_EQ(segmentCount(result), countNonEmptySpans(curve.ref()));
+    expectPolylineInvariants(curve, result);
+}
+
+TEST(NurbsTessellate, InvalidCurveGivesEmptyResult)
+{
+    TestCurve curve = test::listingOneCurve();
+    curve.knots[2] = 5.0f;
+    const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+    EXPECT_EQ(tessellateConstant(curve.ref(), 4).vertexCount(), 0u);
+    EXPECT_EQ(tessellateAdaptive(curve.ref(), 0.1, mapping).vertexCount(), 0u);
+    EXPECT_EQ(tessellateConstant(BezierForm(curve.ref()), 4).vertexCount(), 0u);
+}
+
+} // namespace
+} // namespace q3::nurbs
