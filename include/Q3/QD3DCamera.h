@@ -6,9 +6,14 @@
  * projected (orthographic, view plane, or view angle and aspect ratio).
  *
  * Error conventions shared by every function in this header: a call that
- * fails posts exactly one error, the first of its listed codes that applies,
- * and leaves every object and output it was given unchanged. "Not a live Q3
- * object" means a handle that was disposed or never came from Q3.
+ * fails posts exactly one error and leaves every object and output it was
+ * given unchanged. "Not a live Q3 object" means a handle that was disposed
+ * or never came from Q3. The checks run in this order, and the first that
+ * fails decides the error: Q3 is initialized; then the arguments from left
+ * to right (a handle: not NULL, a live Q3 object, of the right class; a
+ * pointer: not NULL); then the function's other conditions in the order it
+ * lists them (for a data structure, the rules given with its type, in their
+ * order).
  *
  * A view reads its camera at Q3View_StartRendering; a camera changed during
  * a rendering loop affects the next loop.

@@ -6,9 +6,14 @@
  * pixmap draw context, which renders into memory the caller owns.
  *
  * Error conventions shared by every function in this header: a call that
- * fails posts exactly one error, the first of its listed codes that applies,
- * and leaves every object and output it was given unchanged. "Not a live Q3
- * object" means a handle that was disposed or never came from Q3.
+ * fails posts exactly one error and leaves every object and output it was
+ * given unchanged. "Not a live Q3 object" means a handle that was disposed
+ * or never came from Q3. The checks run in this order, and the first that
+ * fails decides the error: Q3 is initialized; then the arguments from left
+ * to right (a handle: not NULL, a live Q3 object, of the right class; a
+ * pointer: not NULL); then the function's other conditions in the order it
+ * lists them (for a data structure, the rules given with its type, in their
+ * order).
  *
  * Changes made to a draw context while a view is rendering into it take
  * effect at that view's next Q3View_StartRendering.
@@ -320,8 +325,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetClearImageMethod(TQ3DrawContextObjec
  *
  * Ownership: no references change.
  */
-Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetClearImageMethod(TQ3DrawContextObject context,
-                                                             TQ3DrawContextClearImageMethod *method);
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetClearImageMethod(
+    TQ3DrawContextObject context, TQ3DrawContextClearImageMethod *method);
 
 /* ---- Pixmap draw context ------------------------------------------------ */
 

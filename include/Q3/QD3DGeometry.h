@@ -7,11 +7,15 @@
  * (a data structure drawn at once with ..._Submit).
  *
  * Error conventions shared by every function in this header: a call that
- * fails posts exactly one error, the first of its listed codes that applies,
- * and leaves every object and output it was given unchanged (a retained
- * geometry keeps its data and its edit index). Warnings do not make a call
- * fail. "Not a live Q3 object" means a handle that was disposed or never
- * came from Q3.
+ * fails posts exactly one error and leaves every object and output it was
+ * given unchanged (a retained geometry keeps its data and its edit index).
+ * Warnings do not make a call fail. "Not a live Q3 object" means a handle
+ * that was disposed or never came from Q3. The checks run in this order, and
+ * the first that fails decides the error: Q3 is initialized; then the
+ * arguments from left to right (a handle: not NULL, a live Q3 object, of the
+ * right class; a pointer: not NULL); then the function's other conditions in
+ * the order it lists them (for a data structure, the rules given with its
+ * type, in their order).
  *
  * Attribute sets inside the data structures may be NULL. Q3 does not copy
  * them: a retained geometry holds its own reference to each set it was given.

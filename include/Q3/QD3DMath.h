@@ -15,9 +15,10 @@
  * being finite: NaNs and infinities go through the IEEE arithmetic.
  *
  * Error conventions shared by every function in this header: a call that
- * fails posts exactly one error, the first of its listed codes that applies,
- * and leaves its result unchanged. Like every Q3 call outside the error
- * manager, these fail with kQ3ErrorNotInitialized before Q3Initialize.
+ * fails posts exactly one error and leaves its result unchanged. Like every
+ * Q3 call outside the error manager, these fail with kQ3ErrorNotInitialized
+ * before Q3Initialize; after that, the pointer arguments are checked for
+ * NULL from left to right, then the function's other conditions.
  */
 #ifndef QD3DMATH_H
 #define QD3DMATH_H

@@ -5,16 +5,24 @@
  * Renderers: the objects that turn what a view traverses into pixels in its
  * draw context. The renderer type codes (kQ3RendererType...) are in QD3D.h.
  *
- * Q3 provides the interactive renderer (kQ3RendererTypeInteractive). The
- * Q3InteractiveRenderer_... settings below were hints for QuickDraw 3D's RAVE
+ * Q3 provides two renderers, both rasterizing offscreen into the view's
+ * pixmap: the wireframe renderer (kQ3RendererTypeWireFrame), which draws
+ * curves, lines and points and the edges of filled shapes, and the
+ * interactive renderer (kQ3RendererTypeInteractive), which also fills what
+ * it is given. The Q3InteractiveRenderer_... settings below were hints for QuickDraw 3D's RAVE
  * acceleration layer, which Q3 does not have: Q3 stores each value and
  * returns it, so legacy code that sets and reads them keeps working, but the
  * values do not change the image.
  *
  * Error conventions shared by every function in this header: a call that
- * fails posts exactly one error, the first of its listed codes that applies,
- * and leaves every object and output it was given unchanged. "Not a live Q3
- * object" means a handle that was disposed or never came from Q3.
+ * fails posts exactly one error and leaves every object and output it was
+ * given unchanged. "Not a live Q3 object" means a handle that was disposed
+ * or never came from Q3. The checks run in this order, and the first that
+ * fails decides the error: Q3 is initialized; then the arguments from left
+ * to right (a handle: not NULL, a live Q3 object, of the right class; a
+ * pointer: not NULL); then the function's other conditions in the order it
+ * lists them (for a data structure, the rules given with its type, in their
+ * order).
  */
 #ifndef QD3DRENDERER_H
 #define QD3DRENDERER_H
@@ -64,7 +72,8 @@ typedef enum TQ3CSGEquation TQ3CSGEquation;
  * Creates a renderer of the given type.
  *
  * @param rendererObjectType  a renderer type code of a renderer Q3 provides
- *                            (kQ3RendererTypeInteractive).
+ *                            (kQ3RendererTypeWireFrame or
+ *                            kQ3RendererTypeInteractive).
  * @return the new renderer, or NULL on failure.
  *
  * Errors:
@@ -231,8 +240,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetDoubleBufferBypass(TQ3Render
  *
  * Ownership: no references change.
  */
-Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetRAVEContextHints(TQ3RendererObject renderer,
-                                                                     unsigned long RAVEContextHints);
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetRAVEContextHints(
+    TQ3RendererObject renderer, unsigned long RAVEContextHints);
 
 /**
  * Reads the stored RAVE draw context flags of an interactive renderer (0
@@ -250,8 +259,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetRAVEContextHints(TQ3Renderer
  *
  * Ownership: no references change.
  */
-Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetRAVEContextHints(TQ3RendererObject renderer,
-                                                                     unsigned long *RAVEContextHints);
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetRAVEContextHints(
+    TQ3RendererObject renderer, unsigned long *RAVEContextHints);
 
 /**
  * Stores the RAVE texture filter of an interactive renderer (RAVE's

@@ -6,8 +6,13 @@
  * highlight state, ...) that geometries carry and views inherit.
  *
  * Error conventions shared by every function in this header: a call that
- * fails posts exactly one error, the first of its listed codes that applies,
- * and leaves every object and output it was given unchanged.
+ * fails posts exactly one error and leaves every object and output it was
+ * given unchanged. The checks run in this order, and the first that fails
+ * decides the error: Q3 is initialized; then the arguments from left to
+ * right (a handle: not NULL, a live Q3 object, of the right class; a
+ * pointer: not NULL); then the function's other conditions in the order it
+ * lists them (for a data structure, the rules given with its type, in their
+ * order).
  */
 #ifndef QD3DSET_H
 #define QD3DSET_H

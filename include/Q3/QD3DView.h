@@ -20,10 +20,14 @@
  * attributes (kQ3ViewDefault*) and an empty Push/Pop stack.
  *
  * Error conventions shared by every function in this header: a call that
- * fails posts exactly one error, the first of its listed codes that applies,
- * and leaves every object and output it was given unchanged (a running loop
- * keeps running). "Not a live Q3 object" means a handle that was disposed or
- * never came from Q3.
+ * fails posts exactly one error and leaves every object and output it was
+ * given unchanged (a running loop keeps running). "Not a live Q3 object"
+ * means a handle that was disposed or never came from Q3. The checks run in
+ * this order, and the first that fails decides the error: Q3 is initialized;
+ * then the arguments from left to right (a handle: not NULL, a live Q3
+ * object, of the right class; a pointer: not NULL); then the function's
+ * other conditions in the order it lists them (for a data structure, the
+ * rules given with its type, in their order).
  */
 #ifndef QD3DVIEW_H
 #define QD3DVIEW_H
@@ -112,9 +116,10 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_Cancel(TQ3ViewObject view);
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      view is NULL.
  *   kQ3ErrorInvalidObject      view is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  view is not a view, or theType is not the type
- *                              of a renderer Q3 provides.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
  *   kQ3ErrorViewIsStarted      view is inside a rendering or bounding loop.
+ *   kQ3ErrorInvalidObjectType  theType is not the type of a renderer Q3
+ *                              provides.
  *   kQ3ErrorOutOfMemory        the renderer cannot be allocated.
  *
  * Ownership: the view holds the only reference to the new renderer and

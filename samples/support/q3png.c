@@ -8,6 +8,9 @@
  * volatile (C99 7.13.2.1). The error and warning functions print nothing.
  */
 
+/* lstat is POSIX, not C99. */
+#define _POSIX_C_SOURCE 200809L
+
 #include "q3png.h"
 
 #include <png.h>
@@ -17,6 +20,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 
 /* Fixed so that output bytes depend on the pixels only. The up filter
  * (subtract the row above) suits wireframe images, which are mostly rows
@@ -27,6 +31,15 @@
 typedef struct {
     int code; /* what a long jump should return; 0 until known */
 } ErrorState;
+
+/* Removes what a failed write left behind, but only a regular file: the path
+ * may name a device or a symbolic link such as /dev/stdout, which must stay. */
+static void discard_partial(const char* path)
+{
+    struct stat info;
+    if (lstat(path, &info) == 0 && S_ISREG(info.st_mode))
+        remove(path);
+}
 
 static void on_error(png_structp png, png_const_charp message)
 {
@@ -107,14 +120,14 @@ static int write_png(const char* path, const unsigned char* pixels, int width, i
     if (png == NULL || info == NULL) {
         png_destroy_write_struct(&png, &info);
         fclose(file);
-        remove(path);
+        discard_partial(path);
         return Q3PNG_ERROR_MEMORY;
     }
 
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
         fclose(file);
-        remove(path);
+        discard_partial(path);
         return state.code;
     }
 
@@ -134,7 +147,7 @@ static int write_png(const char* path, const unsigned char* pixels, int width, i
     png_destroy_write_struct(&png, &info);
 
     if (fclose(file) != 0) {
-        remove(path);
+        discard_partial(path);
         return Q3PNG_ERROR_WRITE;
     }
     return Q3PNG_OK;

@@ -13,7 +13,7 @@
  *
  * Every function returns Q3PNG_OK (0) on success and one of the nonzero codes
  * below on failure; on failure nothing is leaked, no output pointer is set,
- * and a file being written is removed. Nothing is printed.
+ * and a partly written regular file is removed. Nothing is printed.
  */
 
 #ifdef __cplusplus

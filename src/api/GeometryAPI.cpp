@@ -3,6 +3,7 @@
 #include "QD3DGeometry.h"
 #include "api/Entry.h"
 #include "geometry/Geometry.h"
+#include "geometry/PolyLine.h"
 #include "view/View.h"
 
 using namespace q3;
@@ -22,6 +23,14 @@ TQ3Status Q3Geometry_Submit(TQ3GeometryObject geometry, TQ3ViewObject view)
     return guardStatus(__func__, [&] {
         const Geometry& shape = lookup<Geometry>(geometry, "geometry");
         shape.accept(lookup<View>(view, "view").submitTarget());
+    });
+}
+
+TQ3GeometryObject Q3Geometry_GetDecomposed(TQ3GeometryObject geometry, TQ3ViewObject view)
+{
+    return guard(__func__, TQ3GeometryObject{nullptr}, [&]() -> TQ3GeometryObject {
+        const Geometry& shape = lookup<Geometry>(geometry, "geometry");
+        return lookup<View>(view, "view").decompose(shape).detach();
     });
 }
 

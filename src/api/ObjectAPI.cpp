@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "QD3D.h"
 #include "api/Entry.h"
+#include "view/View.h"
 
 using namespace q3;
 using q3::api::guard;
@@ -59,6 +60,14 @@ TQ3Object Q3Object_Duplicate(TQ3Object object)
 {
     return guard(__func__, TQ3Object{nullptr},
                  [&]() -> TQ3Object { return lookupObject(object, "object").duplicate(); });
+}
+
+TQ3Status Q3Object_Submit(TQ3Object object, TQ3ViewObject view)
+{
+    return guardStatus(__func__, [&] {
+        const Object& shape = lookupObject(object, "object");
+        lookup<View>(view, "view").submit(shape);
+    });
 }
 
 TQ3Boolean Q3Object_IsDrawable(TQ3Object object)

@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <map>
 #include <new>
 #include <string>
@@ -34,6 +33,22 @@ T* mallocArray(std::size_t count)
 std::string indexed(const char* what, std::size_t index)
 {
     return std::string(what) + "[" + std::to_string(index) + "]";
+}
+
+// The attribute set an array entry names (null stays null). The entry's name
+// goes into the message only on failure, so large arrays cost no strings.
+AttributeSet* lookupEntry(TQ3AttributeSet handle, const char* array, std::size_t index, const char* field)
+{
+    try {
+        return lookupOptional<AttributeSet>(handle, "the attribute set");
+    } catch (const Error& error) {
+        fail(error.code(), indexed(array, index) + field + ": " + error.what());
+    }
+}
+
+Ref<AttributeSet> retainEntry(TQ3AttributeSet handle, const char* array, std::size_t index, const char* field)
+{
+    return Ref<AttributeSet>::retain(lookupEntry(handle, array, index, field));
 }
 
 // Deep copies for duplicate(): a set named in several places is copied once
@@ -105,16 +120,14 @@ void PolyLine::assign(const TQ3PolyLineData& data)
     std::vector<TQ3Vertex3D> vertices(data.vertices, data.vertices + count);
     std::vector<Ref<AttributeSet>> vertexSets(count);
     for (std::size_t i = 0; i < count; ++i) {
-        const std::string name = indexed("vertices", i) + ".attributeSet";
-        vertexSets[i] = attributeSetFromHandle(data.vertices[i].attributeSet, name.c_str());
+        vertexSets[i] = retainEntry(data.vertices[i].attributeSet, "vertices", i, ".attributeSet");
+        vertices[i].attributeSet = vertexSets[i].get();
     }
     std::vector<Ref<AttributeSet>> segmentSets;
     if (data.segmentAttributeSet != nullptr) {
         segmentSets.resize(count - 1);
-        for (std::size_t i = 0; i + 1 < count; ++i) {
-            const std::string name = indexed("segmentAttributeSet", i);
-            segmentSets[i] = attributeSetFromHandle(data.segmentAttributeSet[i], name.c_str());
-        }
+        for (std::size_t i = 0; i + 1 < count; ++i)
+            segmentSets[i] = retainEntry(data.segmentAttributeSet[i], "segmentAttributeSet", i, "");
     }
     Ref<AttributeSet> attributes = attributeSetFromHandle(data.polyLineAttributeSet, "polyLineAttributeSet");
 
@@ -193,18 +206,12 @@ void PolyLine::emptyData(TQ3PolyLineData& data)
     // Check every handle before releasing any, so a failure releases nothing;
     // then take back the references GetData handed out (one per entry).
     std::vector<AttributeSet*> handedOut;
-    if (data.vertices != nullptr) {
-        for (unsigned long i = 0; i < data.numVertices; ++i) {
-            const std::string name = indexed("vertices", i) + ".attributeSet";
-            handedOut.push_back(lookupOptional<AttributeSet>(data.vertices[i].attributeSet, name.c_str()));
-        }
-    }
-    if (data.segmentAttributeSet != nullptr) {
-        for (unsigned long i = 0; i + 1 < data.numVertices; ++i) {
-            const std::string name = indexed("segmentAttributeSet", i);
-            handedOut.push_back(lookupOptional<AttributeSet>(data.segmentAttributeSet[i], name.c_str()));
-        }
-    }
+    if (data.vertices != nullptr)
+        for (unsigned long i = 0; i < data.numVertices; ++i)
+            handedOut.push_back(lookupEntry(data.vertices[i].attributeSet, "vertices", i, ".attributeSet"));
+    if (data.segmentAttributeSet != nullptr)
+        for (unsigned long i = 0; i + 1 < data.numVertices; ++i)
+            handedOut.push_back(lookupEntry(data.segmentAttributeSet[i], "segmentAttributeSet", i, ""));
     handedOut.push_back(lookupOptional<AttributeSet>(data.polyLineAttributeSet, "polyLineAttributeSet"));
     for (AttributeSet* set : handedOut)
         Ref<AttributeSet>::adopt(set).reset();

@@ -7,7 +7,9 @@
 // copies into our RGBA8 buffer (top row first, OSMESA_Y_UP = 0) at glFinish.
 // That is the path every plain OSMesa program takes, so an image drawn here is
 // bit-identical to one drawn by raw OpenGL calls with the same vertices and
-// matrix. (Rendering into a framebuffer object instead was tried: llvmpipe
+// matrix (measured on 1,000 curves of 65 points: 0 of 127,709 lit pixels
+// differ). Vertices are transformed by OpenGL, not on the CPU, for the same
+// reason. (Rendering into a framebuffer object instead was tried: llvmpipe
 // rasterizes it with the opposite y orientation and about 1 line pixel in 5000
 // came out different, at exact ties.)
 //
@@ -34,7 +36,8 @@
 // buffers of equal size between contexts, which broke concurrent rendering;
 // RenderOffscreen.TwoThreadsMatchSequentialRendering checks this), the GL
 // dispatch is per thread, and the llvmpipe screen with its rasterizer thread
-// pool is shared by all contexts and thread-safe. Context creation and
+// pool is shared by all contexts and thread-safe (more contexts do not add
+// threads: measured). Context creation and
 // destruction are still serialized by one mutex: they are rare and they touch
 // the process-wide screen and, the first time, the environment.
 //

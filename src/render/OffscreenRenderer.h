@@ -65,7 +65,8 @@ public:
     /// OpenGL context and image; frames of an unchanged size reuse both.
     /// Errors: kWrongState if a frame is open; kInvalidArgument if width or
     /// height is 0 or above the implementation limit (16384 for llvmpipe),
-    /// the pane is empty or too large, or a colour channel is NaN/infinite;
+    /// the pane is empty, wider or taller than 16384 or has its origin
+    /// beyond +-16384, or a colour channel is NaN/infinite;
     /// kOutOfMemory; kContextFailure or kWrongRenderer if no llvmpipe context
     /// could be made (see the .cpp for the pinned Mesa settings).
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,

@@ -5,13 +5,39 @@
 #include "QD3DView.h"
 #include "core/Object.h"
 #include "core/ShapeVisitor.h"
+#include "render/PixelConvert.h"
+#include "render/RenderResult.h"
+
+#include <memory>
 
 namespace q3 {
 
 extern const ClassInfo kViewClass;
 
-/// A QuickDraw 3D view: draw context, camera, renderer, and the state stack
-/// of a rendering or bounding loop. Not shared: disposing it destroys it.
+class Camera;
+class DrawContext;
+class Geometry;
+class OffscreenRenderer;
+class Pass;
+class PolyLine;
+class Renderer;
+
+/// A QuickDraw 3D view: draw context, camera, renderer, and the loop running
+/// in it. A loop is a Pass (RenderPass or BoundsPass) that receives every
+/// submitted shape and owns the graphics state and its push/pop stack.
+///
+/// Rendering draws through one OffscreenRenderer per view, created at the
+/// first rendering loop and reused by the next ones. The image reaches the
+/// caller's pixmap when the loop ends: Q3View_EndRendering converts the
+/// finished frame into the pixmap's pixel type (only the pane, when the pane
+/// state is on; only the pixels geometry covered, when the clear method is
+/// kQ3ClearMethodNone). Q3's renderers finish in one traversal, so
+/// EndRendering never asks for a retraversal and the article's
+/// do { ... } while (EndRendering == kQ3ViewStatusRetraverse) loop runs once.
+///
+/// Not shared: disposing it destroys it. Invariant: a pass exists exactly
+/// while a loop runs; while a rendering loop runs, the OffscreenRenderer has a
+/// frame open on the image and pane snapshotted at its start.
 class View final : public Object {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3ObjectTypeView;
@@ -21,9 +47,95 @@ public:
 
     const ClassInfo& classInfo() const override { return kViewClass; }
 
-    /// Where shapes go when submitted: the active rendering or bounding pass.
-    /// Throws kQ3ErrorViewNotStarted outside a loop.
+    /// The setters throw kQ3ErrorViewIsStarted inside a loop and then change
+    /// nothing. The view keeps its own reference to what it is given.
+    void setRenderer(Ref<Renderer> renderer);
+    /// A new renderer of that type (Renderer::newFromType), checked after
+    /// the loop.
+    void setRendererByType(TQ3ObjectType type);
+    void setCamera(Ref<Camera> camera);
+    void setDrawContext(Ref<DrawContext> drawContext);
+    const Ref<Renderer>& renderer() const { return m_renderer; }
+    const Ref<Camera>& camera() const { return m_camera; }
+    const Ref<DrawContext>& drawContext() const { return m_drawContext; }
+
+    /// Starts a rendering loop. Throws kQ3ErrorViewIsStarted,
+    /// kQ3ErrorDrawContextNotSet, kQ3ErrorCameraNotSet,
+    /// kQ3ErrorRendererNotSet (in that order), or what the renderer's frame
+    /// start reports (throwIfFailed in view/RenderPass.h).
+    void startRendering();
+    /// Ends it and writes the image: kQ3ViewStatusDone, or
+    /// kQ3ViewStatusCancelled after cancel(). Throws
+    /// kQ3ErrorRenderingNotStarted outside a rendering loop and
+    /// kQ3ErrorRenderingLoopFailed when the image cannot be finished (the
+    /// loop is over then too).
+    TQ3ViewStatus endRendering();
+
+    /// Start a bounding loop. Throw kQ3ErrorViewIsStarted, then
+    /// kQ3ErrorInvalidParameter for a computeBounds that is no
+    /// TQ3ComputeBounds value.
+    void startBoundingBox(TQ3ComputeBounds computeBounds);
+    void startBoundingSphere(TQ3ComputeBounds computeBounds);
+    /// End it: kQ3ViewStatusDone with the result set, or
+    /// kQ3ViewStatusCancelled with it untouched. Throw
+    /// kQ3ErrorBoundsNotStarted unless a loop of that kind runs.
+    TQ3ViewStatus endBoundingBox(TQ3BoundingBox& result);
+    TQ3ViewStatus endBoundingSphere(TQ3BoundingSphere& result);
+
+    /// Makes the running loop's end report kQ3ViewStatusCancelled; until then
+    /// submitted shapes are ignored. Does nothing outside a loop.
+    void cancel();
+    /// Throws kQ3ErrorRenderingIsActive inside a rendering loop; otherwise
+    /// every image is already complete.
+    void sync() const;
+
+    /// Where shapes go when submitted: the active pass (or, after cancel(), a
+    /// visitor ignoring them). Throws kQ3ErrorViewNotStarted outside a loop.
     ShapeVisitor& submitTarget();
+    /// Submits any drawable object; throws kQ3ErrorInvalidObjectType for one
+    /// that is not drawable, then as submitTarget().
+    void submit(const Object& object);
+
+    /// Graphics state operations; each throws kQ3ErrorViewNotStarted outside
+    /// a loop, pop() kQ3ErrorNothingToPop when nothing pushed is left.
+    void push();
+    void pop();
+    TQ3Matrix4x4 localToWorldState();
+    TQ3SubdivisionStyleData subdivisionStyleState();
+
+    /// Q3Geometry_GetDecomposed: the polyline a NURB curve submitted now would
+    /// be drawn as (Pass::decompose); null for any other geometry. Throws
+    /// kQ3ErrorViewNotStarted outside a loop.
+    Ref<PolyLine> decompose(const Geometry& geometry);
+
+private:
+    enum class Loop { kNone, kRendering, kBoundingBox, kBoundingSphere };
+
+    /// The rendering loop's destination, read from the draw context at its
+    /// start (changes to the draw context affect the next loop).
+    struct Destination {
+        void* image = nullptr;
+        PixmapLayout layout;
+        PixelRect pane;
+        bool cleared = true;
+    };
+
+    void requireNoLoop() const;
+    Pass& activePass();
+    void startBounding(Loop loop, TQ3ComputeBounds computeBounds);
+    /// Closes the loop, whatever state it is in.
+    void endLoop();
+    RenderResult writeImage() const;
+
+    Ref<Renderer> m_renderer;
+    Ref<Camera> m_camera;
+    Ref<DrawContext> m_drawContext;
+
+    Loop m_loop = Loop::kNone;
+    bool m_cancelled = false;
+    std::unique_ptr<Pass> m_pass;
+    std::unique_ptr<OffscreenRenderer> m_offscreen;
+    Destination m_destination;
 };
 
 } // namespace q3

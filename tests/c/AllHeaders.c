@@ -4,10 +4,16 @@
 /* Proves that every public header compiles as strict C99 with warnings as
  * errors, together and in any order, and that the C ABI links and runs. */
 #include "QD3D.h"
+#include "QD3DCamera.h"
+#include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
+#include "QD3DMath.h"
+#include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DStyle.h"
+#include "QD3DTransform.h"
+#include "QD3DView.h"
 
 #include <stdio.h>
 

@@ -21,7 +21,7 @@ int main(void)
     curve = Q3NURBCurve_New(&data);
     if (curve == NULL)
         return 2;
-    if (Q3NURBCurve_SetKnot(curve, 4, 0.5f) != kQ3Failure || Q3Error_Get(NULL) != kQ3ErrorInvalidParameter)
+    if (Q3NURBCurve_SetKnot(curve, 4, -1.0f) != kQ3Failure || Q3Error_Get(NULL) != kQ3ErrorInvalidParameter)
         return 3;
     if (Q3NURBCurve_GetKnot(curve, 7, &knot) != kQ3Success || knot != 1.0f)
         return 4;

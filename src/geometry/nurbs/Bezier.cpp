@@ -21,9 +21,9 @@
 // Sampling. On a Bezier span the homogeneous point is sum_r B_{r,k-1}(u) P_r
 // (Bernstein basis). For uniform samples u_j = j/m the weights B_{r,k-1}(u_j) do not
 // depend on the span, so they are tabulated once per (order, m) and each sample is
-// k multiply-adds per coordinate plus one division by w. The table rows are built by
-// the de Casteljau-style recurrence B_{r,d}(u) = (1-u) B_{r,d-1}(u) + u B_{r-1,d-1}(u),
-// which makes the end rows exact.
+// k multiply-adds per coordinate plus one division by w; two samples share each
+// vector instruction. The weights are built by the de Casteljau-style recurrence
+// B_{r,d}(u) = (1-u) B_{r,d-1}(u) + u B_{r-1,d-1}(u), which makes the end samples exact.
 //
 // Single points at arbitrary u use the Bernstein form with Horner's rule in
 // s = u/(1-u) (or (1-u)/u past the midpoint, so |s| <= 1), O(k) per point.
@@ -31,6 +31,7 @@
 #include "geometry/nurbs/Bezier.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace q3::nurbs {
 namespace {
@@ -56,35 +57,79 @@ inline Point4 lerp(const Point4& a, const Point4& b, double alpha)
                   beta * a.z + alpha * b.z, beta * a.w + alpha * b.w};
 }
 
+#if defined(__GNUC__)
+// Two samples per step in one SSE2 register pair: the weights of consecutive samples
+// are adjacent in a table column, so one load feeds both, and one division serves two w.
+typedef double Double2 __attribute__((vector_size(16)));
+
+inline Double2 load2(const double* p)
+{
+    Double2 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+#endif
+
 template <unsigned K, typename Out>
-void sampleFixed(const Point4* points, const double* weights, std::uint32_t count, Out* xyz)
+void sampleFixed(const Point4* points, const BernsteinTable& table, std::uint32_t first,
+                 std::uint32_t count, Out* xyz)
 {
     double px[K];
     double py[K];
     double pz[K];
     double pw[K];
+    const double* column[K];
     for (unsigned r = 0; r < K; ++r) {
         px[r] = points[r].x;
         py[r] = points[r].y;
         pz[r] = points[r].z;
         pw[r] = points[r].w;
+        column[r] = table.column(r) + first;
     }
-    for (std::uint32_t j = 0; j < count; ++j) {
-        const double* b = weights + std::size_t(j) * K;
+    std::uint32_t j = 0;
+#if defined(__GNUC__)
+    for (; j + 2 <= count; j += 2) {
+        Double2 x = {0.0, 0.0};
+        Double2 y = {0.0, 0.0};
+        Double2 z = {0.0, 0.0};
+        Double2 w = {0.0, 0.0};
+        for (unsigned r = 0; r < K; ++r) {
+            const Double2 b = load2(column[r] + j);
+            x += b * px[r];
+            y += b * py[r];
+            z += b * pz[r];
+            w += b * pw[r];
+        }
+        const Double2 inv = 1.0 / w;
+        x *= inv;
+        y *= inv;
+        z *= inv;
+        Out* out = xyz + 3 * std::size_t(j);
+        out[0] = Out(x[0]);
+        out[1] = Out(y[0]);
+        out[2] = Out(z[0]);
+        out[3] = Out(x[1]);
+        out[4] = Out(y[1]);
+        out[5] = Out(z[1]);
+    }
+#endif
+    for (; j < count; ++j) {
         double x = 0.0;
         double y = 0.0;
         double z = 0.0;
         double w = 0.0;
         for (unsigned r = 0; r < K; ++r) {
-            x += b[r] * px[r];
-            y += b[r] * py[r];
-            z += b[r] * pz[r];
-            w += b[r] * pw[r];
+            const double b = column[r][j];
+            x += b * px[r];
+            y += b * py[r];
+            z += b * pz[r];
+            w += b * pw[r];
         }
         const double inv = 1.0 / w;
-        xyz[3 * std::size_t(j)] = Out(x * inv);
-        xyz[3 * std::size_t(j) + 1] = Out(y * inv);
-        xyz[3 * std::size_t(j) + 2] = Out(z * inv);
+        Out* out = xyz + 3 * std::size_t(j);
+        out[0] = Out(x * inv);
+        out[1] = Out(y * inv);
+        out[2] = Out(z * inv);
     }
 }
 
@@ -92,23 +137,22 @@ template <typename Out>
 void sampleDispatch(const Point4* points, const BernsteinTable& table, std::uint32_t first,
                     std::uint32_t count, Out* xyz)
 {
-    const double* weights = table.row(first);
     switch (table.order()) {
-    case 2: sampleFixed<2>(points, weights, count, xyz); break;
-    case 3: sampleFixed<3>(points, weights, count, xyz); break;
-    case 4: sampleFixed<4>(points, weights, count, xyz); break;
-    case 5: sampleFixed<5>(points, weights, count, xyz); break;
-    case 6: sampleFixed<6>(points, weights, count, xyz); break;
-    case 7: sampleFixed<7>(points, weights, count, xyz); break;
-    case 8: sampleFixed<8>(points, weights, count, xyz); break;
-    case 9: sampleFixed<9>(points, weights, count, xyz); break;
-    case 10: sampleFixed<10>(points, weights, count, xyz); break;
-    case 11: sampleFixed<11>(points, weights, count, xyz); break;
-    case 12: sampleFixed<12>(points, weights, count, xyz); break;
-    case 13: sampleFixed<13>(points, weights, count, xyz); break;
-    case 14: sampleFixed<14>(points, weights, count, xyz); break;
-    case 15: sampleFixed<15>(points, weights, count, xyz); break;
-    case 16: sampleFixed<16>(points, weights, count, xyz); break;
+    case 2: sampleFixed<2>(points, table, first, count, xyz); break;
+    case 3: sampleFixed<3>(points, table, first, count, xyz); break;
+    case 4: sampleFixed<4>(points, table, first, count, xyz); break;
+    case 5: sampleFixed<5>(points, table, first, count, xyz); break;
+    case 6: sampleFixed<6>(points, table, first, count, xyz); break;
+    case 7: sampleFixed<7>(points, table, first, count, xyz); break;
+    case 8: sampleFixed<8>(points, table, first, count, xyz); break;
+    case 9: sampleFixed<9>(points, table, first, count, xyz); break;
+    case 10: sampleFixed<10>(points, table, first, count, xyz); break;
+    case 11: sampleFixed<11>(points, table, first, count, xyz); break;
+    case 12: sampleFixed<12>(points, table, first, count, xyz); break;
+    case 13: sampleFixed<13>(points, table, first, count, xyz); break;
+    case 14: sampleFixed<14>(points, table, first, count, xyz); break;
+    case 15: sampleFixed<15>(points, table, first, count, xyz); break;
+    case 16: sampleFixed<16>(points, table, first, count, xyz); break;
     default: break;
     }
 }
@@ -118,10 +162,11 @@ void sampleDispatch(const Point4* points, const BernsteinTable& table, std::uint
 BernsteinTable::BernsteinTable(unsigned order, std::uint32_t segments)
     : m_order(order), m_segments(segments), m_weights((std::size_t(segments) + 1) * order, 0.0)
 {
+    const std::size_t stride = std::size_t(segments) + 1;
+    double b[kMaxOrder];
     for (std::uint32_t j = 0; j <= segments; ++j) {
         const double u = double(j) / double(segments);
         const double v = 1.0 - u;
-        double* b = m_weights.data() + std::size_t(j) * order;
         b[0] = 1.0;
         for (unsigned degree = 1; degree < order; ++degree) {
             b[degree] = u * b[degree - 1];
@@ -129,6 +174,9 @@ BernsteinTable::BernsteinTable(unsigned order, std::uint32_t segments)
                 b[r] = v * b[r] + u * b[r - 1];
             }
             b[0] = v * b[0];
+        }
+        for (unsigned r = 0; r < order; ++r) {
+            m_weights[r * stride + j] = b[r];
         }
     }
 }

@@ -13,8 +13,10 @@ namespace q3::nurbs {
 
 /// Bernstein weights B_{r,k-1}(u_j) at the uniform local parameters u_j = j / segments,
 /// j = 0..segments, for one order. Build one per (order, segments) and reuse it for
-/// every span; rows 0 and `segments` are exactly (1, 0, ..., 0) and (0, ..., 0, 1).
-/// Invariant: weights().size() == (segments + 1) * order.
+/// every span; samples 0 and `segments` are exactly (1, 0, ..., 0) and (0, ..., 0, 1).
+/// Stored by basis function (column r holds B_r at every sample) so the sampling kernel
+/// reads consecutive samples with one vector load.
+/// Invariant: (segments + 1) * order weights.
 class BernsteinTable {
 public:
     BernsteinTable() = default;
@@ -23,8 +25,10 @@ public:
 
     unsigned order() const { return m_order; }
     std::uint32_t segments() const { return m_segments; }
-    /// The `order` weights of sample j, 0 <= j <= segments.
-    const double* row(std::uint32_t j) const { return m_weights.data() + std::size_t(j) * m_order; }
+    /// B_{r,order-1}(j / segments), 0 <= j <= segments, 0 <= r < order.
+    double weight(std::uint32_t j, unsigned r) const { return column(r)[j]; }
+    /// The segments + 1 values of B_{r,order-1} at the samples.
+    const double* column(unsigned r) const { return m_weights.data() + std::size_t(r) * (m_segments + 1); }
 
 private:
     unsigned m_order = 0;

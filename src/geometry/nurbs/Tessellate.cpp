@@ -11,20 +11,24 @@
 // Constant: m segments per span at u_j = j/m, sampled with one Bernstein table for the
 // whole curve; the end vertex of a span is the start vertex of the next, emitted once.
 //
-// Adaptive: a chord of a smooth curve is no longer than the arc it spans, so points
-// placed uniformly in (mapped) arc length, L/n apart with n = ceil(L/c1), give chords of
-// at most c1. Arc length is estimated with chord sums, first over probeSegmentsPerSpan
-// probes per span (which also find where the mapping fails and give the totals needed
-// to respect kMaxSegments before anything is emitted), then, where a run needs more
-// segments than half its probes, over a finer table of about 2n samples; points are
-// placed by inverting the piecewise-linear cumulative length. Estimation is only a
-// guide: every chord is measured between its mapped end points and halved in
-// parameter while it is longer than c1, so the bound holds wherever the mapping does.
-// The padding kLengthPadding keeps such halvings rare, which is what keeps the count
-// near the minimum.
+// Adaptive: the fewest segments no longer than c1 come from marching along the curve
+// and ending each segment as late as the length bound allows. Per span,
+// probeSegmentsPerSpan probes are mapped first; they find where the mapping fails and
+// estimate the mapped length L of each run of mappable curve (chord sums), which gives
+// the planned count ceil(1.03 L / c1) and lets kMaxSegments be respected, by choosing
+// a larger c1, before anything is emitted. The march then goes run by run: from the
+// current vertex it scans a table of samples (the probes, or about two per planned
+// segment) for the first one whose mapped chord exceeds c1, and closes in on the
+// crossing inside that bracket with safeguarded regula falsi until the chord is within
+// 3% below c1. Every chord is thus measured exactly between its mapped end points, so
+// the bound holds by construction, and segments are normally at least 97% of c1, the
+// last of each run excepted. Parts where the mapping fails get one segment per probe interval.
+// This is greedy chord-length parameterisation, not a formula from the article, which
+// only defines what the methods promise ("CONTROLLING SUBDIVISION").
 
 #include "geometry/nurbs/Tessellate.h"
 
+#include "geometry/nurbs/Evaluate.h"
 #include "geometry/nurbs/Knots.h"
 
 #include <algorithm>
@@ -47,6 +51,8 @@ public:
     unsigned order() const { return m_form.order(); }
     const Span& span(std::size_t s) const { return m_form.span(s); }
     const Point4* points(std::size_t s) { return m_form.spanPoints(s); }
+    Point4 startPoint(std::size_t s) { return m_form.spanPoints(s)[0]; }
+    Point4 endPoint() { return m_form.spanPoints(count() - 1)[order() - 1]; }
 
 private:
     const BezierForm& m_form;
@@ -63,6 +69,10 @@ public:
         spanToBezier(m_curve, m_spans[s].knotIndex, m_scratch);
         return m_scratch;
     }
+    // The Bezier form's first point is de Boor's value at the span start (same
+    // arithmetic), at half the cost of converting the span.
+    Point4 startPoint(std::size_t s) { return evaluate(m_curve, m_spans[s].start).homogeneous; }
+    Point4 endPoint() { return evaluate(m_curve, m_spans.back().end).homogeneous; }
 
 private:
     CurveRef m_curve;
@@ -105,18 +115,12 @@ private:
     TessellatedCurve& m_out;
 };
 
-// The same rule as PolylineBuilder, applied in place after bulk sampling.
-void dropRepeats(TessellatedCurve& out)
+// The same rule as PolylineBuilder, applied in place to vertices [from, to) that were
+// written in bulk; `kept` vertices before `from` are final. Returns the new count.
+std::size_t dropRepeats(float* v, double* t, std::size_t kept, std::size_t from, std::size_t to)
 {
-    const std::size_t count = out.parameters.size();
-    if (count < 2) {
-        return;
-    }
-    float* v = out.vertices.data();
-    double* t = out.parameters.data();
-    std::size_t kept = 1;
-    for (std::size_t r = 1; r < count; ++r) {
-        if (sameVertex(v + 3 * r, v + 3 * (kept - 1))) {
+    for (std::size_t r = from; r < to; ++r) {
+        if (kept > 0 && sameVertex(v + 3 * r, v + 3 * (kept - 1))) {
             if (kept > 1) {
                 t[kept - 1] = t[r];
             }
@@ -130,17 +134,27 @@ void dropRepeats(TessellatedCurve& out)
         }
         ++kept;
     }
-    out.vertices.resize(3 * kept);
-    out.parameters.resize(kept);
+    return kept;
+}
+
+// Empties a result but keeps its storage for reuse.
+void reset(TessellatedCurve& out)
+{
+    out.vertices.clear();
+    out.parameters.clear();
+    out.substituted = false;
+    out.effectiveValue = 0.0;
+    out.capped = false;
+    out.unmeasuredSegments = 0;
 }
 
 template <typename Spans>
-TessellatedCurve constantImpl(Spans& spans, std::uint32_t requested)
+void constantImpl(Spans& spans, std::uint32_t requested, TessellatedCurve& out)
 {
-    TessellatedCurve out;
+    reset(out);
     const std::size_t spanCount = spans.count();
     if (spanCount == 0) {
-        return out;
+        return;
     }
     std::uint32_t m = std::max<std::uint32_t>(requested, 1);
     m = std::min(m, kMaxSegmentsPerSpan);
@@ -159,20 +173,44 @@ TessellatedCurve constantImpl(Spans& spans, std::uint32_t requested)
     out.parameters.resize(vertexCount);
     float* v = out.vertices.data();
     double* t = out.parameters.data();
+    std::size_t kept = 0;
+    if (m == 1) {
+        // Only span starts: no need for whole Bezier forms.
+        for (std::size_t s = 0; s < spanCount; ++s) {
+            const Point3 p = project(spans.startPoint(s));
+            v[3 * s] = float(p.x);
+            v[3 * s + 1] = float(p.y);
+            v[3 * s + 2] = float(p.z);
+            t[s] = spans.span(s).start;
+        }
+        const Point3 p = project(spans.endPoint());
+        v[3 * spanCount] = float(p.x);
+        v[3 * spanCount + 1] = float(p.y);
+        v[3 * spanCount + 2] = float(p.z);
+        t[spanCount] = spans.span(spanCount - 1).end;
+        kept = dropRepeats(v, t, 0, 0, vertexCount);
+        out.vertices.resize(3 * kept);
+        out.parameters.resize(kept);
+        return;
+    }
+    // Each span is sampled just past the vertices kept so far and compacted while it is
+    // still in cache.
     const Point4* points = nullptr;
     for (std::size_t s = 0; s < spanCount; ++s) {
         points = spans.points(s);
-        sampleBezier(points, table, 0, m, v + 3 * s * m);
+        sampleBezier(points, table, 0, m, v + 3 * kept);
         const Span& span = spans.span(s);
         const double width = span.end - span.start;
         for (std::uint32_t j = 0; j < m; ++j) {
-            t[s * m + j] = span.start + width * fraction[j];
+            t[kept + j] = span.start + width * fraction[j];
         }
+        kept = dropRepeats(v, t, kept, kept, kept + m);
     }
-    sampleBezier(points, table, m, 1, v + 3 * (vertexCount - 1));
-    t[vertexCount - 1] = spans.span(spanCount - 1).end;
-    dropRepeats(out);
-    return out;
+    sampleBezier(points, table, m, 1, v + 3 * kept);
+    t[kept] = spans.span(spanCount - 1).end;
+    kept = dropRepeats(v, t, kept, kept, kept + 1);
+    out.vertices.resize(3 * kept);
+    out.parameters.resize(kept);
 }
 
 struct Sample {
@@ -216,8 +254,15 @@ public:
         if (spanCount == 0) {
             return;
         }
-        collectRuns();
-        chooseLength(c1);
+        if (spanCount >= kPlacementBudget) {
+            // At least one segment per span already exceeds the budget.
+            m_out.substituted = true;
+            m_onePerSpan = true;
+            m_out.effectiveValue = kInfinity;
+        } else {
+            collectRuns();
+            chooseLength(c1);
+        }
         if (m_onePerSpan) {
             emitOnePerSpan();
         } else {
@@ -323,8 +368,7 @@ private:
     {
         const bool usable = c1 > 0.0;
         if (usable) {
-            m_planned = wanted(c1);
-            if (m_planned <= kPlacementBudget) {
+            if (wanted(c1) <= kPlacementBudget) {
                 m_c = c1;
                 m_out.effectiveValue = c1;
                 return;
@@ -336,7 +380,6 @@ private:
             m_onePerSpan = true;
             m_c = kInfinity;
             m_out.effectiveValue = kInfinity;
-            m_planned = m_spans.count();
             return;
         }
         // Each run needs at most padding * length / c + 1 segments, so this c fits.
@@ -345,145 +388,150 @@ private:
         if (!(c > 0.0)) {
             c = kInfinity;
         }
-        m_planned = wanted(c);
-        for (int attempt = 0; attempt < 64 && m_planned > kPlacementBudget; ++attempt) {
+        for (int attempt = 0; attempt < 64 && wanted(c) > kPlacementBudget; ++attempt) {
             c *= 1.0 + 1.0 / 1024.0;
-            m_planned = wanted(c);
         }
         m_c = c;
         m_out.effectiveValue = c;
     }
 
+    // Appends the vertex that starts the next chord.
     void emit(const Sample& sample)
     {
         m_builder.add(spanParameter(m_spans.span(m_currentSpan), sample.u), sample.point);
+        ++m_used;
     }
 
-    bool tooLong(const Sample& a, const Sample& b) const
+    // Room for `count` more chords besides the final chord of the current run and the
+    // minimum every later run still needs.
+    bool haveRoom(std::size_t count) const
+    {
+        return m_used + count + 1 + m_reserve <= kMaxSegments;
+    }
+
+    // Chord length between mapped points; infinity when it cannot be measured.
+    double chord(const Sample& a, const Sample& b) const
     {
         if (!a.mapped || !b.mapped) {
-            return false;
+            return kInfinity;
         }
         const double d = distance(a.image, b.image);
-        return std::isfinite(d) && d > m_c;
+        return std::isfinite(d) ? d : kInfinity;
     }
 
-    // Emits a and every point bisection inserts before b; b itself is left to the caller.
-    void emitChord(const Sample& a, const Sample& b)
+    // The samples a run's chords are bracketed with: the run's probes, or ~2n samples
+    // uniform in u when the run needs more segments than half its probes.
+    void buildTable(const Run& run, std::size_t n)
     {
-        emit(a);
-        m_stack.clear();
-        m_stack.push_back(Pending{b, 0});
-        Sample left = a;
-        for (;;) {
-            const Sample right = m_stack.back().sample;
-            const unsigned depth = m_stack.back().depth;
-            if (tooLong(left, right)) {
-                const double um = 0.5 * (left.u + right.u);
-                const bool splittable = depth < kMaxBisectionDepth && left.u < um && um < right.u;
-                if (splittable && m_planned + m_extra < kMaxSegments) {
-                    m_stack.back().depth = depth + 1;
-                    m_stack.push_back(Pending{makeSample(um), depth + 1});
-                    ++m_extra;
-                    continue;
-                }
-                m_out.capped = true;
-            }
-            double length = 0.0;
-            if (!measurable(left, right, length)) {
-                ++m_out.unmeasuredSegments;
-            }
-            m_stack.pop_back();
-            if (m_stack.empty()) {
-                return;
-            }
-            emit(right);
-            left = right;
-        }
-    }
-
-    void emitMeasurableRun(const Run& run)
-    {
-        const Sample& start = m_probes[run.first];
-        const Sample& end = m_probes[run.last];
-        const std::size_t n = segmentsFor(run.length, m_c);
-        if (n <= 1) {
-            emitChord(start, end);
-            return;
-        }
-        // Cumulative mapped length table over [start.u, end.u].
-        m_tableU.clear();
-        m_tableLength.clear();
+        m_table.clear();
         const std::uint32_t probeIntervals = run.last - run.first;
-        bool refined = false;
         if (2 * n > probeIntervals) {
-            const std::uint32_t tableSegments = std::uint32_t(
+            const std::uint32_t segments = std::uint32_t(
                 std::min<std::size_t>(std::max<std::size_t>(2 * n, probeIntervals), kMaxLengthTableSegments));
-            refined = true;
-            Point3 previous = start.image;
-            double total = 0.0;
-            m_tableU.push_back(start.u);
-            m_tableLength.push_back(0.0);
-            for (std::uint32_t i = 1; i <= tableSegments && refined; ++i) {
-                const double u = i == tableSegments
-                                     ? end.u
-                                     : start.u + (end.u - start.u) * (double(i) / double(tableSegments));
-                const Sample sample = i == tableSegments ? end : makeSample(u);
-                double step = 0.0;
-                if (!sample.mapped || !std::isfinite(step = distance(previous, sample.image))) {
-                    refined = false;
+            const double u0 = m_probes[run.first].u;
+            const double u1 = m_probes[run.last].u;
+            m_table.push_back(m_probes[run.first]);
+            for (std::uint32_t i = 1; i < segments; ++i) {
+                m_table.push_back(makeSample(u0 + (u1 - u0) * (double(i) / double(segments))));
+                if (!m_table.back().mapped) {
+                    m_table.clear();
                     break;
                 }
-                total += step;
-                previous = sample.image;
-                m_tableU.push_back(u);
-                m_tableLength.push_back(total);
             }
-            if (!refined) {
-                m_tableU.clear();
-                m_tableLength.clear();
+            if (!m_table.empty()) {
+                m_table.push_back(m_probes[run.last]);
+                return;
             }
         }
-        if (!refined) {
-            double total = 0.0;
-            m_tableU.push_back(start.u);
-            m_tableLength.push_back(0.0);
-            for (std::uint32_t j = run.first + 1; j <= run.last; ++j) {
-                total += distance(m_probes[j - 1].image, m_probes[j].image);
-                m_tableU.push_back(m_probes[j].u);
-                m_tableLength.push_back(total);
-            }
-        }
+        m_table.assign(m_probes.begin() + run.first, m_probes.begin() + run.last + 1);
+    }
 
-        const double total = m_tableLength.back();
-        Sample previous = start;
-        std::size_t index = 0;
-        for (std::size_t i = 1; i < n; ++i) {
-            double u;
-            if (total > 0.0) {
-                const double target = total * (double(i) / double(n));
-                while (index + 2 < m_tableLength.size() && m_tableLength[index + 1] < target) {
-                    ++index;
-                }
-                const double l0 = m_tableLength[index];
-                const double l1 = m_tableLength[index + 1];
-                const double f = l1 > l0 ? std::min(1.0, std::max(0.0, (target - l0) / (l1 - l0))) : 0.0;
-                u = m_tableU[index] + (m_tableU[index + 1] - m_tableU[index]) * f;
-            } else {
-                u = start.u + (end.u - start.u) * (double(i) / double(n));
+    // Searches (lo, hi) for a point whose chord from `from` is within
+    // [(1 - kChordTolerance) c, c], given chord(from, lo) <= c < chord(from, hi). Returns
+    // the best lo found; sets `unmappable` instead when it meets a point with no image.
+    Sample findCrossing(const Sample& from, Sample lo, Sample hi, bool& unmappable) const
+    {
+        unmappable = false;
+        double dlo = chord(from, lo);
+        double dhi = chord(from, hi);
+        const double accept = (1.0 - kChordTolerance) * m_c;
+        const double target = (1.0 - 0.5 * kChordTolerance) * m_c;
+        for (unsigned iteration = 0; iteration < kMaxRootIterations && dlo < accept; ++iteration) {
+            double f = 0.5;
+            if (iteration % 3 != 2 && std::isfinite(dhi)) {
+                f = std::min(0.95, std::max(0.05, (target - dlo) / (dhi - dlo)));
             }
-            if (!(u > previous.u && u < end.u)) {
-                continue;
+            const double u = lo.u + (hi.u - lo.u) * f;
+            if (!(lo.u < u && u < hi.u)) {
+                break;
             }
             const Sample sample = makeSample(u);
-            emitChord(previous, sample);
-            previous = sample;
+            if (!sample.mapped) {
+                unmappable = true;
+                return sample;
+            }
+            const double d = chord(from, sample);
+            if (d <= m_c) {
+                lo = sample;
+                dlo = d;
+            } else {
+                hi = sample;
+                dhi = d;
+            }
         }
-        emitChord(previous, end);
+        return lo.u > from.u ? lo : hi;
+    }
+
+    // Greedy march along a measurable run: from each vertex, the next is the point
+    // where the mapped chord reaches (1 - kChordTolerance) c to c, found by scanning the
+    // table for the first sample farther than c and closing in on the crossing.
+    void emitMeasurableRun(const Run& run)
+    {
+        buildTable(run, segmentsFor(run.length, m_c));
+        const std::size_t last = m_table.size() - 1;
+        Sample current = m_table.front();
+        std::size_t index = 0;  // largest table index with u <= current.u
+        for (;;) {
+            std::size_t j = index + 1;
+            while (j <= last && chord(current, m_table[j]) <= m_c) {
+                ++j;
+            }
+            if (j > last) {
+                break;
+            }
+            if (!haveRoom(2)) {
+                m_out.capped = true;
+                break;
+            }
+            const Sample lo = m_table[j - 1].u > current.u ? m_table[j - 1] : current;
+            bool unmappable = false;
+            const Sample next = findCrossing(current, lo, m_table[j], unmappable);
+            emit(current);
+            if (unmappable) {
+                // No measure between here and table sample j: two unmeasured chords.
+                emit(next);
+                m_out.unmeasuredSegments += 2;
+                current = m_table[j];
+                index = j;
+                continue;
+            }
+            if (chord(current, next) > m_c) {
+                m_out.capped = true;
+            }
+            current = next;
+            while (index < last && m_table[index + 1].u <= current.u) {
+                ++index;
+            }
+        }
+        emit(current);
+        if (chord(current, m_table[last]) > m_c) {
+            m_out.capped = true;
+        }
     }
 
     void emitRuns()
     {
+        m_reserve = m_measurableRuns + m_unmeasurableIntervals;
         std::size_t cursor = 0;
         for (std::size_t s = 0; s < m_spans.count(); ++s) {
             m_currentSpan = s;
@@ -491,25 +539,26 @@ private:
             for (; cursor < m_runs.size() && m_runs[cursor].span == s; ++cursor) {
                 const Run& run = m_runs[cursor];
                 if (run.measurable) {
+                    m_reserve -= 1;
                     emitMeasurableRun(run);
                 } else {
+                    m_reserve -= run.last - run.first;
                     for (std::uint32_t j = run.first; j < run.last; ++j) {
-                        emitChord(m_probes[j], m_probes[j + 1]);
+                        emit(m_probes[j]);
+                        ++m_out.unmeasuredSegments;
                     }
                 }
             }
         }
-        emit(m_probes[m_probeSegments]);
+        m_builder.add(m_spans.span(m_currentSpan).end, m_probes[m_probeSegments].point);
     }
 
     void emitOnePerSpan()
     {
         for (std::size_t s = 0; s < m_spans.count(); ++s) {
-            m_currentSpan = s;
-            m_points = m_spans.points(s);
-            m_builder.add(m_spans.span(s).start, project(m_points[0]));
+            m_builder.add(m_spans.span(s).start, project(m_spans.startPoint(s)));
         }
-        m_builder.add(m_spans.span(m_currentSpan).end, project(m_points[m_order - 1]));
+        m_builder.add(m_spans.span(m_spans.count() - 1).end, project(m_spans.endPoint()));
     }
 
     Spans& m_spans;
@@ -530,58 +579,77 @@ private:
 
     double m_c = kInfinity;
     bool m_onePerSpan = false;
-    std::size_t m_planned = 0;
-    std::size_t m_extra = 0;
-
-    // Right ends still to reach while bisecting one chord; depth counts the halvings
-    // of the interval that ends there.
-    struct Pending {
-        Sample sample;
-        unsigned depth;
-    };
-    std::vector<Pending> m_stack;
-    std::vector<double> m_tableU;
-    std::vector<double> m_tableLength;
+    std::size_t m_used = 0;     // chords started so far
+    std::size_t m_reserve = 0;  // chords the runs not yet started need at least
+    std::vector<Sample> m_table;
 };
 
 } // namespace
 
-TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan)
+void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out)
 {
     if (!validateCurve(curve).ok()) {
-        return TessellatedCurve{};
+        reset(out);
+        return;
     }
     CurveSpans spans(curve);
-    return constantImpl(spans, segmentsPerSpan);
+    constantImpl(spans, segmentsPerSpan, out);
+}
+
+void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, TessellatedCurve& out)
+{
+    FormSpans spans(form);
+    constantImpl(spans, segmentsPerSpan, out);
+}
+
+void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
+                        TessellatedCurve& out)
+{
+    reset(out);
+    if (!validateCurve(curve).ok()) {
+        return;
+    }
+    if (countNonEmptySpans(curve) * curve.order <= kConvertOnceLimit) {
+        tessellateAdaptive(BezierForm(curve), maxSegmentLength, mapping, out);
+        return;
+    }
+    CurveSpans spans(curve);
+    Adaptive<CurveSpans>(spans, mapping, out).run(maxSegmentLength);
+}
+
+void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
+                        TessellatedCurve& out)
+{
+    reset(out);
+    FormSpans spans(form);
+    Adaptive<FormSpans>(spans, mapping, out).run(maxSegmentLength);
+}
+
+TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan)
+{
+    TessellatedCurve out;
+    tessellateConstant(curve, segmentsPerSpan, out);
+    return out;
 }
 
 TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan)
 {
-    FormSpans spans(form);
-    return constantImpl(spans, segmentsPerSpan);
-}
-
-TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength,
-                                    const PointMapping& mapping)
-{
-    if (!validateCurve(curve).ok()) {
-        return TessellatedCurve{};
-    }
-    if (countNonEmptySpans(curve) * curve.order <= kConvertOnceLimit) {
-        return tessellateAdaptive(BezierForm(curve), maxSegmentLength, mapping);
-    }
     TessellatedCurve out;
-    CurveSpans spans(curve);
-    Adaptive<CurveSpans>(spans, mapping, out).run(maxSegmentLength);
+    tessellateConstant(form, segmentsPerSpan, out);
     return out;
 }
 
-TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength,
-                                    const PointMapping& mapping)
+TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping)
 {
     TessellatedCurve out;
-    FormSpans spans(form);
-    Adaptive<FormSpans>(spans, mapping, out).run(maxSegmentLength);
+    tessellateAdaptive(curve, maxSegmentLength, mapping, out);
+    return out;
+}
+
+TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping)
+{
+    TessellatedCurve out;
+    tessellateAdaptive(form, maxSegmentLength, mapping, out);
     return out;
 }
 

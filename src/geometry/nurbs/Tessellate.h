@@ -24,9 +24,13 @@ constexpr std::uint32_t kMaxSegmentsPerSpan = 1024;
 /// is left for bisecting the chords that come out too long.
 constexpr std::size_t kPlacementBudget = kMaxSegments - kMaxSegments / 8;
 
-/// Adaptive method: segments per run are ceil(padding * length / c1); the padding
-/// absorbs the error of placing points uniformly in an estimated arc length.
+/// Adaptive method: the segment count planned for a run of mapped length L is
+/// ceil(kLengthPadding * L / c1); it sizes the budget and the sample tables.
 constexpr double kLengthPadding = 1.03;
+
+/// Adaptive method: each segment ends where its mapped length lies in
+/// [(1 - kChordTolerance) * c1, c1] (except the last of a run, which is what is left).
+constexpr double kChordTolerance = 0.03;
 
 /// Adaptive method: probe samples per span used to estimate mapped length and to find
 /// where the mapping fails. Parts of a span where the mapping fails get one segment per
@@ -36,9 +40,10 @@ constexpr std::uint32_t probeSegmentsPerSpan(unsigned order)
     return order > 8 ? order : 8;
 }
 
-/// Adaptive method: most samples in one arc-length table and most halvings of one chord.
+/// Adaptive method: most samples in one run's table, and most evaluations spent
+/// finding one segment end.
 constexpr std::uint32_t kMaxLengthTableSegments = std::uint32_t{1} << 16;
-constexpr unsigned kMaxBisectionDepth = 48;
+constexpr unsigned kMaxRootIterations = 60;
 
 /// Maps a curve point (the curve's local coordinates) into the space where segment
 /// lengths are measured: local-to-world for world space, local-to-pixels including the
@@ -56,7 +61,7 @@ struct TessellatedCurve {
     std::vector<double> parameters;  ///< curve parameter t of each vertex
     bool substituted = false;        ///< the requested value was replaced by effectiveValue
     double effectiveValue = 0.0;     ///< segments per span (constant) or maximum length (adaptive) used
-    bool capped = false;             ///< adaptive: kMaxSegments stopped bisection, some segments exceed effectiveValue
+    bool capped = false;             ///< adaptive: kMaxSegments (or a mapping too steep to resolve) left segments longer than effectiveValue
     std::size_t unmeasuredSegments = 0; ///< adaptive: segments with an endpoint the mapping rejected
 
     std::size_t vertexCount() const { return parameters.size(); }
@@ -71,21 +76,31 @@ struct TessellatedCurve {
 /// An invalid curve (see validateCurve) gives an empty result.
 TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan);
 TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan);
+/// The same, replacing the contents of `out` and reusing its storage (for a renderer
+/// that tessellates every frame).
+void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out);
+void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, TessellatedCurve& out);
 
 /// kQ3SubdivisionMethodWorldSpace and kQ3SubdivisionMethodScreenSpace: a polyline whose
 /// segments, measured between the mapped images of their end points, are at most
-/// maxSegmentLength long, with close to the fewest segments (per run of mappable curve:
-/// ceil(1.03 * length / maxSegmentLength), plus a bisection of each chord still too long).
-/// When the request would exceed kPlacementBudget, or maxSegmentLength is not > 0, a
-/// larger length is used and `substituted` set; if even one segment per probe interval
-/// is too many, every span gets one segment and effectiveValue is infinity.
+/// maxSegmentLength long, with close to the fewest segments: every segment but the last
+/// of each run of mappable curve is at least (1 - kChordTolerance) * maxSegmentLength.
+/// When the planned count (kLengthPadding * length / maxSegmentLength per run) would
+/// exceed kPlacementBudget, or maxSegmentLength is not > 0, a larger length is used and
+/// `substituted` set; if even one segment per probe interval is too many, every span gets
+/// one segment and effectiveValue is infinity.
 /// Where the mapping fails, segments are not measured: one per probe interval
 /// (probeSegmentsPerSpan), counted in unmeasuredSegments.
-/// Time and output are bounded by O(kMaxSegments + spans * order^2) for any finite input.
-/// An invalid curve gives an empty result.
+/// Time and output are bounded by O(kMaxSegments * kMaxRootIterations + spans * order^2)
+/// for any finite input. An invalid curve gives an empty result.
 TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength,
                                     const PointMapping& mapping);
 TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength,
                                     const PointMapping& mapping);
+/// The same, replacing the contents of `out` and reusing its storage.
+void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
+                        TessellatedCurve& out);
+void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
+                        TessellatedCurve& out);
 
 } // namespace q3::nurbs

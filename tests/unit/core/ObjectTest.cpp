@@ -3,6 +3,7 @@
 #include "core/AttributeSet.h"
 #include "core/ErrorManager.h"
 #include "core/Object.h"
+#include "style/SubdivisionStyle.h"
 
 #include <gtest/gtest.h>
 
@@ -59,10 +60,8 @@ TEST(CoreRegistry, LookupRejectsNullStrayAndWrongClass)
     EXPECT_EQ(codeOf([&] { lookupObject(reinterpret_cast<TQ3Object>(&notAnObject), "h"); }),
               kQ3ErrorInvalidObject);
     Ref<AttributeSet> set = makeShared<AttributeSet>();
-    struct NotASet {
-        static constexpr TQ3ObjectType kClassType = kQ3ShapeTypeGeometry;
-    };
-    EXPECT_EQ(codeOf([&] { lookup<NotASet>(set->handle(), "h"); }), kQ3ErrorInvalidObjectType);
+    EXPECT_EQ(codeOf([&] { lookup<SubdivisionStyle>(set->handle(), "h"); }), kQ3ErrorInvalidObjectType);
+    EXPECT_EQ(&lookup<AttributeSet>(set->handle(), "h"), set.get());
 }
 
 TEST(CoreSharedObject, EveryEditGivesANewEditIndex)

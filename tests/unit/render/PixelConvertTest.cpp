@@ -188,8 +188,9 @@ TEST(RenderPixelConvert, WritesOnlyTheDestinationRectangle)
                     const std::uint32_t x = byte / bpp;
                     const bool inRect = byte < layout.width * bpp && int(x) >= toX && int(x) < toX + from.width &&
                                         int(y) >= toY && int(y) < toY + from.height;
-                    if (!inRect)
+                    if (!inRect) {
                         ASSERT_EQ(pixmap[std::size_t(y) * layout.rowBytes + byte], 0xAB) << byte << "," << y;
+                    }
                 }
             }
             for (int y = 0; y < from.height; ++y) {

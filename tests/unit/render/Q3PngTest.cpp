@@ -186,6 +186,20 @@ TEST(PngFile, WriteToUnwritablePathFails)
     EXPECT_FALSE(fileExists(path));
 }
 
+TEST(PngFile, WriteFailureReportsErrorAndKeepsDeviceFiles)
+{
+    // /dev/full accepts open() and fails every write with ENOSPC. The failed
+    // write must be reported, and the device node must not be "cleaned up".
+    const char* path = "/dev/full";
+    if (!fileExists(path))
+        GTEST_SKIP() << "no /dev/full here";
+    const std::vector<unsigned char> small = makeRgba(2, 2, 8);
+    EXPECT_EQ(q3png_write_rgba8(path, small.data(), 2, 2, 8), Q3PNG_ERROR_WRITE);
+    const std::vector<unsigned char> large = makeRgba(300, 200, 1200);
+    EXPECT_EQ(q3png_write_rgba8(path, large.data(), 300, 200, 1200), Q3PNG_ERROR_WRITE);
+    EXPECT_TRUE(fileExists(path));
+}
+
 TEST(PngFile, ReadMissingFileFailsWithoutTouchingOutputs)
 {
     unsigned char sentinel = 0;

@@ -25,14 +25,14 @@ TEST(NurbsBezier, BernsteinRowsSumToOneAndEndRowsAreExact)
             for (std::uint32_t j = 0; j <= m; ++j) {
                 double sum = 0.0;
                 for (unsigned r = 0; r < k; ++r) {
-                    EXPECT_GE(table.row(j)[r], 0.0);
-                    sum += table.row(j)[r];
+                    EXPECT_GE(table.weight(j, r), 0.0);
+                    sum += table.weight(j, r);
                 }
                 EXPECT_NEAR(sum, 1.0, 1e-14);
             }
             for (unsigned r = 0; r < k; ++r) {
-                EXPECT_EQ(table.row(0)[r], r == 0 ? 1.0 : 0.0);
-                EXPECT_EQ(table.row(m)[r], r == k - 1 ? 1.0 : 0.0);
+                EXPECT_EQ(table.weight(0, r), r == 0 ? 1.0 : 0.0);
+                EXPECT_EQ(table.weight(m, r), r == k - 1 ? 1.0 : 0.0);
             }
         }
     }
@@ -42,10 +42,10 @@ TEST(NurbsBezier, BernsteinRowMatchesClosedForm)
 {
     // B_{r,3}(1/4) for the cubic: 27/64, 27/64, 9/64, 1/64.
     const BernsteinTable table(4, 4);
-    EXPECT_DOUBLE_EQ(table.row(1)[0], 27.0 / 64.0);
-    EXPECT_DOUBLE_EQ(table.row(1)[1], 27.0 / 64.0);
-    EXPECT_DOUBLE_EQ(table.row(1)[2], 9.0 / 64.0);
-    EXPECT_DOUBLE_EQ(table.row(1)[3], 1.0 / 64.0);
+    EXPECT_DOUBLE_EQ(table.weight(1, 0), 27.0 / 64.0);
+    EXPECT_DOUBLE_EQ(table.weight(1, 1), 27.0 / 64.0);
+    EXPECT_DOUBLE_EQ(table.weight(1, 2), 9.0 / 64.0);
+    EXPECT_DOUBLE_EQ(table.weight(1, 3), 1.0 / 64.0);
 }
 
 TEST(NurbsBezier, BezierCurveConvertsToItsOwnControlPoints)

@@ -239,7 +239,8 @@ TEST(NurbsEvaluate, ClampsParameterToDomain)
 TEST(NurbsEvaluate, ListingOneDerivativeIsHandComputedValue)
 {
     // Q'(t) = 3 * sum (P_{i+1} - P_i) B_{i,2}(t); the differences are (1,1), (1,-1), (1,1).
-    const CurveRef ref = test::listingOneCurve().ref();
+    const TestCurve curve = test::listingOneCurve();
+    const CurveRef ref = curve.ref();
     const CurvePointDerivative mid = evaluateWithDerivative(ref, 0.5);
     EXPECT_DOUBLE_EQ(mid.tangent.x, 3.0);
     EXPECT_NEAR(mid.tangent.y, 0.0, 1e-15);

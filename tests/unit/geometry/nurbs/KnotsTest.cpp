@@ -272,9 +272,13 @@ TEST(NurbsKnots, FindSpanAgreesWithLinearScanOnRandomCurves)
             if (s < 5 && s > 0) {
                 t = curve.knots[k - 1 + std::size_t(s) % (curve.numPoints() - k + 1)];
             }
+            // The half-open span holding t, or at the domain end the last non-empty one.
             std::size_t expected = 0;
             for (std::size_t i = k - 1; i < curve.numPoints(); ++i) {
                 if (curve.knots[i] <= t && t < curve.knots[i + 1]) {
+                    expected = i;
+                }
+                if (t == curve.domainEnd() && curve.knots[i] < curve.knots[i + 1]) {
                     expected = i;
                 }
             }

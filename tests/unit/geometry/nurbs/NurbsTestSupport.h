@@ -71,8 +71,10 @@ inline TestCurve randomCurve(std::mt19937& rng, unsigned order, const RandomCurv
         std::size_t run = 1;
         x[0] = value;
         for (std::size_t i = 1; i < numKnots; ++i) {
-            const bool clampedEnd = options.clamped && (i < order || i >= n);
-            const bool repeat = clampedEnd || (run < order - 1 && unit(rng) < options.repeatProbability);
+            const bool clampedEnd = options.clamped && (i < order || i > n);
+            const bool startsEnd = options.clamped && i == n;
+            const bool repeat =
+                clampedEnd || (!startsEnd && run < order - 1 && unit(rng) < options.repeatProbability);
             if (repeat) {
                 ++run;
             } else {

@@ -1,0 +1,352 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Cameras and their matrices, in QuickDraw 3D's row-vector convention (see
+// view/Matrix.h for how that maps onto glm).
+//
+// World to view is the usual "look at" frame: the eye at the origin, looking
+// down -z, +y towards the up vector. The projections follow the frustum that
+// QD3DCamera.h defines (QuickDraw 3D's, as Quesa's E3Camera also has it):
+// after the homogeneous divide x and y run from -1 to 1 across the view
+// port, and z from 0 at the hither plane to -1 at the yon plane.
+//   Orthographic: x' = (2x - (r + l)) / (r - l), likewise y with top and
+//     bottom; z' = (z + hither) / (yon - hither), which is 0 at z = -hither
+//     and -1 at z = -yon.
+//   Perspective: w' = -z (the distance in front of the eye) and
+//     z' = q (z + hither) with q = yon / (yon - hither), so z'/w' is 0 at
+//     z = -hither and -1 at z = -yon. A view plane camera at distance d
+//     with centre (cx, cy) and half sizes (hw, hh) has
+//     x' = (d x + cx z) / hw, so that x'/w' = (d x / -z - cx) / hw: the
+//     point's projection onto the view plane, measured across the
+//     rectangle. The view angle aspect camera is the centred case with
+//     d / hw = cot(fov / 2) across its narrower dimension.
+// The view port then selects a rectangle of that -1..1 square: origin is its
+// top-left corner, so its centre is (ox + w/2, oy - h/2).
+
+#include "view/Camera.h"
+
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace q3 {
+
+const ClassInfo kCameraClass{kQ3ShapeTypeCamera, &kShapeClass, "camera"};
+const ClassInfo kOrthographicCameraClass{kQ3CameraTypeOrthographic, &kCameraClass,
+                                         "orthographic camera"};
+const ClassInfo kViewPlaneCameraClass{kQ3CameraTypeViewPlane, &kCameraClass, "view plane camera"};
+const ClassInfo kViewAngleAspectCameraClass{kQ3CameraTypeViewAngleAspect, &kCameraClass,
+                                            "view angle aspect camera"};
+
+namespace {
+
+// Below this sine of the angle between the up vector and the viewing
+// direction the two count as parallel: the camera's x axis would be the
+// normalized cross product of nearly parallel vectors, which float input
+// cannot determine.
+constexpr double kMinUpSine = 1e-6;
+
+constexpr double kPi = 3.14159265358979323846;
+
+[[noreturn]] void invalid(const std::string& why)
+{
+    fail(kQ3ErrorInvalidCameraValues, why);
+}
+
+void requireFinite(float value, const char* name)
+{
+    if (!std::isfinite(value))
+        invalid(std::string(name) + " is not a finite number");
+}
+
+glm::dvec3 toVec(const TQ3Point3D& p)
+{
+    return glm::dvec3(p.x, p.y, p.z);
+}
+
+glm::dvec3 toVec(const TQ3Vector3D& v)
+{
+    return glm::dvec3(v.x, v.y, v.z);
+}
+
+double cotangent(double angle)
+{
+    return std::cos(angle) / std::sin(angle);
+}
+
+// The perspective part common to both perspective cameras: w' = -z and the
+// z mapping described at the top of the file.
+Matrix perspectiveDepth(const TQ3CameraRange& range)
+{
+    const double q = double(range.yon) / (double(range.yon) - double(range.hither));
+    Matrix m(0.0);
+    m[2][2] = q;
+    m[3][2] = q * range.hither;
+    m[2][3] = -1.0;
+    return m;
+}
+
+} // namespace
+
+void validatePlacement(const TQ3CameraPlacement& placement)
+{
+    requireFinite(placement.cameraLocation.x, "cameraLocation.x");
+    requireFinite(placement.cameraLocation.y, "cameraLocation.y");
+    requireFinite(placement.cameraLocation.z, "cameraLocation.z");
+    requireFinite(placement.pointOfInterest.x, "pointOfInterest.x");
+    requireFinite(placement.pointOfInterest.y, "pointOfInterest.y");
+    requireFinite(placement.pointOfInterest.z, "pointOfInterest.z");
+    requireFinite(placement.upVector.x, "upVector.x");
+    requireFinite(placement.upVector.y, "upVector.y");
+    requireFinite(placement.upVector.z, "upVector.z");
+    const glm::dvec3 direction = toVec(placement.pointOfInterest) - toVec(placement.cameraLocation);
+    const glm::dvec3 up = toVec(placement.upVector);
+    if (glm::length(direction) == 0.0)
+        invalid("cameraLocation equals pointOfInterest, so there is no viewing direction");
+    if (glm::length(up) == 0.0)
+        invalid("upVector is zero");
+    const double sine = glm::length(glm::cross(glm::normalize(direction), glm::normalize(up)));
+    if (!(sine >= kMinUpSine))
+        invalid("upVector is parallel to the viewing direction");
+}
+
+void validateRange(const TQ3CameraRange& range, bool perspective)
+{
+    requireFinite(range.hither, "range.hither");
+    requireFinite(range.yon, "range.yon");
+    if (!(range.hither < range.yon))
+        invalid("range.hither " + std::to_string(range.hither) + " is not less than range.yon " +
+                std::to_string(range.yon));
+    if (perspective && !(range.hither > 0.0f))
+        invalid("range.hither " + std::to_string(range.hither) +
+                " must be greater than 0 for a perspective camera");
+}
+
+void validateViewPort(const TQ3CameraViewPort& viewPort)
+{
+    requireFinite(viewPort.origin.x, "viewPort.origin.x");
+    requireFinite(viewPort.origin.y, "viewPort.origin.y");
+    requireFinite(viewPort.width, "viewPort.width");
+    requireFinite(viewPort.height, "viewPort.height");
+    if (!(viewPort.width > 0.0f) || !(viewPort.height > 0.0f))
+        invalid("the view port's width and height must be greater than 0");
+}
+
+void validateCameraData(const TQ3CameraData& data, bool perspective)
+{
+    validatePlacement(data.placement);
+    validateRange(data.range, perspective);
+    validateViewPort(data.viewPort);
+}
+
+Matrix viewPortMatrix(const TQ3CameraViewPort& viewPort)
+{
+    const double width = viewPort.width;
+    const double height = viewPort.height;
+    const double centerX = viewPort.origin.x + width / 2.0;
+    const double centerY = viewPort.origin.y - height / 2.0;
+    Matrix m(1.0);
+    m[0][0] = 2.0 / width;
+    m[3][0] = -centerX * 2.0 / width;
+    m[1][1] = 2.0 / height;
+    m[3][1] = -centerY * 2.0 / height;
+    return m;
+}
+
+void Camera::setData(const TQ3CameraData& data)
+{
+    validateCameraData(data, isPerspective());
+    m_data = data;
+    markEdited();
+}
+
+void Camera::setPlacement(const TQ3CameraPlacement& placement)
+{
+    validatePlacement(placement);
+    m_data.placement = placement;
+    markEdited();
+}
+
+void Camera::setRange(const TQ3CameraRange& range)
+{
+    validateRange(range, isPerspective());
+    m_data.range = range;
+    markEdited();
+}
+
+void Camera::setViewPort(const TQ3CameraViewPort& viewPort)
+{
+    validateViewPort(viewPort);
+    m_data.viewPort = viewPort;
+    markEdited();
+}
+
+Matrix Camera::worldToView() const
+{
+    return glm::lookAtRH(toVec(m_data.placement.cameraLocation), toVec(m_data.placement.pointOfInterest),
+                         toVec(m_data.placement.upVector));
+}
+
+Matrix Camera::viewToFrustum() const
+{
+    return then(projection(), viewPortMatrix(m_data.viewPort));
+}
+
+void OrthographicCamera::validate(const TQ3OrthographicCameraData& data)
+{
+    validateCameraData(data.cameraData, false);
+    requireFinite(data.left, "left");
+    requireFinite(data.top, "top");
+    requireFinite(data.right, "right");
+    requireFinite(data.bottom, "bottom");
+    if (data.left == data.right)
+        invalid("left equals right, so the visible rectangle has no width");
+    if (data.top == data.bottom)
+        invalid("top equals bottom, so the visible rectangle has no height");
+}
+
+OrthographicCamera::OrthographicCamera(const TQ3OrthographicCameraData& data)
+    : Camera(data.cameraData), m_left(data.left), m_top(data.top), m_right(data.right),
+      m_bottom(data.bottom)
+{
+}
+
+Object* OrthographicCamera::duplicate() const
+{
+    return makeShared<OrthographicCamera>(orthographicData()).detach();
+}
+
+TQ3OrthographicCameraData OrthographicCamera::orthographicData() const
+{
+    return {data(), m_left, m_top, m_right, m_bottom};
+}
+
+void OrthographicCamera::setOrthographicData(const TQ3OrthographicCameraData& data)
+{
+    validate(data);
+    assignCommon(data.cameraData);
+    m_left = data.left;
+    m_top = data.top;
+    m_right = data.right;
+    m_bottom = data.bottom;
+    markEdited();
+}
+
+Matrix OrthographicCamera::projection() const
+{
+    const double width = double(m_right) - double(m_left);
+    const double height = double(m_top) - double(m_bottom);
+    const double depth = double(data().range.yon) - double(data().range.hither);
+    Matrix m(1.0);
+    m[0][0] = 2.0 / width;
+    m[3][0] = -(double(m_right) + double(m_left)) / width;
+    m[1][1] = 2.0 / height;
+    m[3][1] = -(double(m_top) + double(m_bottom)) / height;
+    m[2][2] = 1.0 / depth;
+    m[3][2] = double(data().range.hither) / depth;
+    return m;
+}
+
+void ViewPlaneCamera::validate(const TQ3ViewPlaneCameraData& data)
+{
+    validateCameraData(data.cameraData, true);
+    requireFinite(data.viewPlane, "viewPlane");
+    requireFinite(data.halfWidthAtViewPlane, "halfWidthAtViewPlane");
+    requireFinite(data.halfHeightAtViewPlane, "halfHeightAtViewPlane");
+    requireFinite(data.centerXOnViewPlane, "centerXOnViewPlane");
+    requireFinite(data.centerYOnViewPlane, "centerYOnViewPlane");
+    if (!(data.viewPlane > 0.0f))
+        invalid("viewPlane must be greater than 0");
+    if (!(data.halfWidthAtViewPlane > 0.0f) || !(data.halfHeightAtViewPlane > 0.0f))
+        invalid("halfWidthAtViewPlane and halfHeightAtViewPlane must be greater than 0");
+}
+
+ViewPlaneCamera::ViewPlaneCamera(const TQ3ViewPlaneCameraData& data)
+    : Camera(data.cameraData), m_viewPlane(data.viewPlane), m_halfWidth(data.halfWidthAtViewPlane),
+      m_halfHeight(data.halfHeightAtViewPlane), m_centerX(data.centerXOnViewPlane),
+      m_centerY(data.centerYOnViewPlane)
+{
+}
+
+Object* ViewPlaneCamera::duplicate() const
+{
+    return makeShared<ViewPlaneCamera>(viewPlaneData()).detach();
+}
+
+TQ3ViewPlaneCameraData ViewPlaneCamera::viewPlaneData() const
+{
+    return {data(), m_viewPlane, m_halfWidth, m_halfHeight, m_centerX, m_centerY};
+}
+
+void ViewPlaneCamera::setViewPlaneData(const TQ3ViewPlaneCameraData& data)
+{
+    validate(data);
+    assignCommon(data.cameraData);
+    m_viewPlane = data.viewPlane;
+    m_halfWidth = data.halfWidthAtViewPlane;
+    m_halfHeight = data.halfHeightAtViewPlane;
+    m_centerX = data.centerXOnViewPlane;
+    m_centerY = data.centerYOnViewPlane;
+    markEdited();
+}
+
+Matrix ViewPlaneCamera::projection() const
+{
+    Matrix m = perspectiveDepth(data().range);
+    m[0][0] = double(m_viewPlane) / m_halfWidth;
+    m[2][0] = double(m_centerX) / m_halfWidth;
+    m[1][1] = double(m_viewPlane) / m_halfHeight;
+    m[2][1] = double(m_centerY) / m_halfHeight;
+    return m;
+}
+
+void ViewAngleAspectCamera::validate(const TQ3ViewAngleAspectCameraData& data)
+{
+    validateCameraData(data.cameraData, true);
+    requireFinite(data.fov, "fov");
+    requireFinite(data.aspectRatioXToY, "aspectRatioXToY");
+    if (!(data.fov > 0.0f) || !(double(data.fov) < kPi))
+        invalid("fov " + std::to_string(data.fov) + " is not between 0 and pi radians");
+    if (!(data.aspectRatioXToY > 0.0f))
+        invalid("aspectRatioXToY must be greater than 0");
+}
+
+ViewAngleAspectCamera::ViewAngleAspectCamera(const TQ3ViewAngleAspectCameraData& data)
+    : Camera(data.cameraData), m_fov(data.fov), m_aspect(data.aspectRatioXToY)
+{
+}
+
+Object* ViewAngleAspectCamera::duplicate() const
+{
+    return makeShared<ViewAngleAspectCamera>(viewAngleAspectData()).detach();
+}
+
+TQ3ViewAngleAspectCameraData ViewAngleAspectCamera::viewAngleAspectData() const
+{
+    return {data(), m_fov, m_aspect};
+}
+
+void ViewAngleAspectCamera::setViewAngleAspectData(const TQ3ViewAngleAspectCameraData& data)
+{
+    validate(data);
+    assignCommon(data.cameraData);
+    m_fov = data.fov;
+    m_aspect = data.aspectRatioXToY;
+    markEdited();
+}
+
+Matrix ViewAngleAspectCamera::projection() const
+{
+    // fov spans the narrower dimension: vertical when the view is at least as
+    // wide as it is high.
+    const double across = cotangent(double(m_fov) / 2.0);
+    const double aspect = m_aspect;
+    Matrix m = perspectiveDepth(data().range);
+    m[0][0] = aspect >= 1.0 ? across / aspect : across;
+    m[1][1] = aspect >= 1.0 ? across : across * aspect;
+    return m;
+}
+
+} // namespace q3

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// From a view's state to the nurbs module's tessellators (Tessellate.h),
+// with the retained curve's cache in between. A setting resolves to a Plan:
+// the method, c1, and the matrix segment lengths are measured through
+// (local -> world for world space; local -> frustum, then the perspective
+// divide and the pane's pixel scale, for screen space: the article's
+// "measured in screen space"). The plan's values are the cache key, so a
+// polyline is reused exactly when everything it was made from is unchanged.
+
+#include "view/CurveTessellation.h"
+
+#include "core/ErrorManager.h"
+#include "geometry/nurbs/Tessellate.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace q3 {
+
+namespace {
+
+enum class Measure { kConstant, kWorld, kScreen };
+
+// What one subdivision is made under, resolved from a setting.
+struct Plan {
+    Measure measure = Measure::kConstant;
+    double c1 = 0.0;
+    Matrix through{1.0}; // local -> world (world space) or local -> frustum (screen space)
+    PixelRect pane;
+
+    // The cache key: every value the polyline depends on. The pane's origin
+    // is left out on purpose: moving the pane does not change any length.
+    std::vector<double> key() const
+    {
+        std::vector<double> values{double(measure), c1};
+        if (measure != Measure::kConstant)
+            for (int i = 0; i < 4; ++i)
+                for (int j = 0; j < 4; ++j)
+                    values.push_back(through[i][j]);
+        if (measure == Measure::kScreen) {
+            values.push_back(pane.width);
+            values.push_back(pane.height);
+        }
+        return values;
+    }
+};
+
+Plan planFor(const TessellationSetting& setting)
+{
+    Plan plan;
+    plan.c1 = setting.style.c1;
+    switch (setting.style.method) {
+    case kQ3SubdivisionMethodConstant:
+        // QD3DStyle.h: a fractional segment count is truncated when used.
+        plan.measure = Measure::kConstant;
+        plan.c1 = std::floor(plan.c1);
+        break;
+    case kQ3SubdivisionMethodWorldSpace:
+        plan.measure = Measure::kWorld;
+        plan.through = setting.localToWorld;
+        break;
+    case kQ3SubdivisionMethodScreenSpace:
+        if (setting.window) {
+            plan.measure = Measure::kScreen;
+            plan.through = then(setting.localToWorld, setting.window->worldToFrustum);
+            plan.pane = setting.window->pane;
+        } else {
+            plan.measure = Measure::kWorld;
+            plan.through = setting.localToWorld;
+        }
+        break;
+    }
+    return plan;
+}
+
+bool isFinite(const nurbs::Point3& p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+// The space segment lengths are measured in (Tessellate.h's PointMapping).
+nurbs::PointMapping mappingFor(const Plan& plan)
+{
+    if (plan.measure == Measure::kWorld)
+        return [m = plan.through](const nurbs::Point3& p, nurbs::Point3& out) {
+            const glm::dvec4 v = transformPoint(m, glm::dvec3(p.x, p.y, p.z));
+            if (v.w == 0.0)
+                return false;
+            out = nurbs::Point3{v.x / v.w, v.y / v.w, v.z / v.w};
+            return isFinite(out);
+        };
+    return [m = plan.through, pane = plan.pane](const nurbs::Point3& p, nurbs::Point3& out) {
+        // w is the distance in front of the eye for a perspective camera:
+        // points at or behind the eye have no image.
+        const glm::dvec4 v = transformPoint(m, glm::dvec3(p.x, p.y, p.z));
+        if (!(v.w > 0.0))
+            return false;
+        const glm::dvec2 pixel = frustumToPane(pane, v.x / v.w, v.y / v.w);
+        out = nurbs::Point3{pixel.x, pixel.y, 0.0};
+        return isFinite(out);
+    };
+}
+
+template <class Source>
+nurbs::TessellatedCurve subdivide(const Plan& plan, const Source& source)
+{
+    if (plan.measure == Measure::kConstant)
+        return nurbs::tessellateConstant(source, static_cast<std::uint32_t>(plan.c1));
+    return nurbs::tessellateAdaptive(source, plan.c1, mappingFor(plan));
+}
+
+// Why the subdivision gave in, for the warning; empty when it did not.
+std::string substitutionReport(const Plan& plan, const nurbs::TessellatedCurve& result)
+{
+    const std::string limit = " would need more than kQ3SubdivisionMaxSegmentsPerCurve (" +
+                              std::to_string(kQ3SubdivisionMaxSegmentsPerCurve) + ") segments";
+    if (plan.measure == Measure::kConstant && result.substituted)
+        return "constant subdivision with c1 = " + std::to_string(plan.c1) + limit + "; " +
+               std::to_string(result.effectiveValue) + " segments per span are used";
+    const char* space = plan.measure == Measure::kWorld ? "world-space" : "screen-space";
+    if (result.substituted)
+        return std::string(space) + " subdivision with c1 = " + std::to_string(plan.c1) + limit +
+               "; segments up to " + std::to_string(result.effectiveValue) + " long are used";
+    if (result.capped)
+        return std::string(space) + " subdivision with c1 = " + std::to_string(plan.c1) + limit +
+               "; some segments are longer than c1";
+    return {};
+}
+
+// Retained curves drawn by views on several threads share their cache; a
+// few striped locks keep that safe without a lock in every curve.
+std::mutex& lockFor(const CurveCache* cache)
+{
+    static std::array<std::mutex, 64> stripes;
+    const auto address = reinterpret_cast<std::uintptr_t>(cache);
+    return stripes[(address / alignof(CurveCache)) % stripes.size()];
+}
+
+// Reuses or rebuilds a cache's polyline; returns the warning to post. The
+// cache's key holds the plan's key followed by one entry, 1 when the build
+// gave in to the segment cap, so that reusing it repeats the warning.
+std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan& plan,
+                     const PolylineUser& use)
+{
+    std::vector<double> key = plan.key();
+    const bool current = cache.valid && cache.key.size() == key.size() + 1 &&
+                         std::equal(key.begin(), key.end(), cache.key.begin());
+    std::string report;
+    if (!current) {
+        if (!cache.bezier)
+            cache.bezier = std::make_shared<const nurbs::BezierForm>(curve);
+        nurbs::TessellatedCurve result = subdivide(plan, *cache.bezier);
+        report = substitutionReport(plan, result);
+        key.push_back(report.empty() ? 0.0 : 1.0);
+        cache.polyline = std::move(result.vertices);
+        cache.key = std::move(key);
+        cache.valid = true;
+        ++cache.tessellations;
+    }
+    use(cache.polyline.data(), cache.polyline.size() / 3);
+    if (!report.empty() || cache.key.back() == 0.0)
+        return report;
+    return "the curve's " + std::string(plan.measure == Measure::kConstant ? "constant" : "adaptive") +
+           " subdivision with c1 = " + std::to_string(plan.c1) +
+           " would need more than kQ3SubdivisionMaxSegmentsPerCurve segments; it is drawn with fewer";
+}
+
+} // namespace
+
+glm::dvec2 frustumToPane(const PixelRect& pane, double x, double y)
+{
+    return glm::dvec2(pane.x + (x + 1.0) * 0.5 * pane.width, pane.y + (1.0 - y) * 0.5 * pane.height);
+}
+
+void withCurvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
+                       const TessellationSetting& setting, const PolylineUser& use)
+{
+    const Plan plan = planFor(setting);
+    std::string report;
+    if (cache != nullptr) {
+        std::lock_guard<std::mutex> lock(lockFor(cache));
+        report = useCache(curve, *cache, plan, use);
+    } else {
+        const nurbs::TessellatedCurve result = subdivide(plan, curve);
+        use(result.vertices.data(), result.vertexCount());
+        report = substitutionReport(plan, result);
+    }
+    if (!report.empty())
+        errors::postWarning(kQ3WarningParameterOutOfRange, report);
+}
+
+} // namespace q3

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3DStyle.h"
+#include "geometry/CurveCache.h"
+#include "geometry/nurbs/Curve.h"
+#include "render/RenderResult.h"
+#include "view/Matrix.h"
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+
+namespace q3 {
+
+/// Where a loop's image goes: the camera's world-to-frustum matrix and the
+/// pixels of the pane it maps onto (y down, as QuickDraw 3D panes are).
+struct Window {
+    Matrix worldToFrustum{1.0};
+    PixelRect pane;
+};
+
+/// The pixel position of a frustum point (after the homogeneous divide):
+/// x -1..1 across the pane from its left edge, y 1..-1 from its top edge.
+glm::dvec2 frustumToPane(const PixelRect& pane, double x, double y);
+
+/// Everything besides the curve that its polyline depends on.
+struct TessellationSetting {
+    /// A style that passed checkSubdivisionStyle.
+    TQ3SubdivisionStyleData style{};
+    Matrix localToWorld{1.0};
+    /// The loop's window; without one, screen-space subdivision is done as
+    /// world-space subdivision with the same c1 (QD3DView.h, bounding loops).
+    std::optional<Window> window;
+};
+
+/// Receives a polyline: vertexCount vertices, x y z each, in the curve's local
+/// coordinates.
+using PolylineUser = std::function<void(const float* xyz, std::size_t vertexCount)>;
+
+/// Subdivides a valid curve as the setting says and hands the polyline to
+/// `use`. The methods are the article's ("CONTROLLING SUBDIVISION"):
+/// constant, c1 segments per non-empty knot span; world space, no segment
+/// longer than c1 after the local-to-world transform; screen space, no
+/// segment longer than c1 pixels after local -> world -> frustum (with the
+/// perspective divide) -> pane.
+///
+/// A retained curve passes its cache: the polyline is rebuilt only when the
+/// cache is empty (the curve drops it on every edit) or was built under
+/// another setting (its key: method, c1, the matrix the method measures
+/// through, and for screen space the pane size); the Bezier form is built once
+/// per edit. `tessellations` counts rebuilds. Caches are locked while in use,
+/// so views on several threads may draw the same retained curve. Immediate
+/// mode (cache null) subdivides on every call.
+///
+/// When the subdivision had to give in to kQ3SubdivisionMaxSegmentsPerCurve
+/// (QD3DStyle.h), kQ3WarningParameterOutOfRange is posted after `use`
+/// returns, also when the polyline comes from the cache.
+void withCurvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
+                       const TessellationSetting& setting, const PolylineUser& use);
+
+} // namespace q3

@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "view/DrawContext.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+namespace q3 {
+
+const ClassInfo kDrawContextClass{kQ3SharedTypeDrawContext, &kSharedClass, "draw context"};
+const ClassInfo kPixmapDrawContextClass{kQ3DrawContextTypePixmap, &kDrawContextClass,
+                                        "pixmap draw context"};
+
+namespace {
+
+constexpr double kPaneLimit = double(1 << 30);
+
+TQ3Boolean normalized(TQ3Boolean value)
+{
+    return value != kQ3False ? kQ3True : kQ3False;
+}
+
+TQ3DrawContextData normalized(const TQ3DrawContextData& data)
+{
+    TQ3DrawContextData result = data;
+    result.paneState = normalized(data.paneState);
+    result.maskState = normalized(data.maskState);
+    result.doubleBufferState = normalized(data.doubleBufferState);
+    return result;
+}
+
+bool isFinite(const TQ3ColorARGB& color)
+{
+    return std::isfinite(color.a) && std::isfinite(color.r) && std::isfinite(color.g) &&
+           std::isfinite(color.b);
+}
+
+bool isClearMethod(TQ3DrawContextClearImageMethod method)
+{
+    const long value = static_cast<long>(method);
+    return value == kQ3ClearMethodNone || value == kQ3ClearMethodWithColor;
+}
+
+// Bits per pixel of a TQ3PixelType, 0 for a value that is none.
+unsigned long pixelBits(TQ3PixelType type)
+{
+    switch (static_cast<long>(type)) {
+    case kQ3PixelTypeRGB32:
+    case kQ3PixelTypeARGB32:
+        return 32;
+    case kQ3PixelTypeRGB16:
+    case kQ3PixelTypeARGB16:
+    case kQ3PixelTypeRGB16_565:
+        return 16;
+    case kQ3PixelTypeRGB24:
+        return 24;
+    default:
+        return 0;
+    }
+}
+
+bool isEndian(TQ3Endian value)
+{
+    const long v = static_cast<long>(value);
+    return v == kQ3EndianBig || v == kQ3EndianLittle;
+}
+
+int roundEdge(float value)
+{
+    const double clamped = std::clamp(double(value), -kPaneLimit, kPaneLimit);
+    return static_cast<int>(std::floor(clamped + 0.5));
+}
+
+} // namespace
+
+void validatePane(const TQ3Area& pane, TQ3Error code)
+{
+    if (!std::isfinite(pane.min.x) || !std::isfinite(pane.min.y) || !std::isfinite(pane.max.x) ||
+        !std::isfinite(pane.max.y))
+        fail(code, "a pane coordinate is not a finite number");
+    if (!(pane.min.x < pane.max.x) || !(pane.min.y < pane.max.y))
+        fail(code, "the pane is empty or inverted (min must be less than max in x and y)");
+}
+
+void validateDrawContextData(const TQ3DrawContextData& data)
+{
+    if (!isClearMethod(data.clearImageMethod))
+        fail(kQ3ErrorInvalidData, "clearImageMethod " + std::to_string(long(data.clearImageMethod)) +
+                                      " is neither kQ3ClearMethodNone nor kQ3ClearMethodWithColor");
+    if (!isFinite(data.clearImageColor))
+        fail(kQ3ErrorInvalidData, "a clearImageColor component is not a finite number");
+    if (data.paneState != kQ3False)
+        validatePane(data.pane, kQ3ErrorInvalidData);
+}
+
+void validatePixmap(const TQ3Pixmap& pixmap)
+{
+    requireNonNull(pixmap.image, "pixmap.image");
+    const unsigned long bits = pixelBits(pixmap.pixelType);
+    if (bits == 0)
+        fail(kQ3ErrorInvalidData,
+             "pixelType " + std::to_string(long(pixmap.pixelType)) + " is not a TQ3PixelType value");
+    if (!isEndian(pixmap.byteOrder) || !isEndian(pixmap.bitOrder))
+        fail(kQ3ErrorInvalidData, "byteOrder and bitOrder must be kQ3EndianBig or kQ3EndianLittle");
+    if (pixmap.pixelSize != bits)
+        fail(kQ3ErrorUnsupportedPixelDepth, "pixelSize " + std::to_string(pixmap.pixelSize) +
+                                                " does not fit the pixel type, which has " +
+                                                std::to_string(bits) + " bits");
+    if (pixmap.width == 0 || pixmap.height == 0)
+        fail(kQ3ErrorInvalidData, "the pixmap is " + std::to_string(pixmap.width) + " x " +
+                                      std::to_string(pixmap.height) + " pixels; both must be at least 1");
+    constexpr unsigned long kMax32 = std::numeric_limits<std::uint32_t>::max();
+    if (pixmap.width > kMax32 || pixmap.height > kMax32 || pixmap.rowBytes > kMax32)
+        fail(kQ3ErrorInvalidData, "width, height and rowBytes must fit in 32 bits");
+    const unsigned long rowMinimum = pixmap.width * (bits / 8);
+    if (pixmap.rowBytes < rowMinimum)
+        fail(kQ3ErrorInvalidData, "rowBytes " + std::to_string(pixmap.rowBytes) +
+                                      " is too small for a row of " + std::to_string(pixmap.width) +
+                                      " pixels (" + std::to_string(rowMinimum) + " bytes)");
+}
+
+PixmapLayout layoutOf(const TQ3Pixmap& pixmap)
+{
+    PixmapLayout layout;
+    layout.width = static_cast<std::uint32_t>(pixmap.width);
+    layout.height = static_cast<std::uint32_t>(pixmap.height);
+    layout.rowBytes = static_cast<std::uint32_t>(pixmap.rowBytes);
+    layout.pixelType = static_cast<PixelType>(pixmap.pixelType);
+    layout.byteOrder = pixmap.byteOrder == kQ3EndianLittle ? ByteOrder::kLittle : ByteOrder::kBig;
+    return layout;
+}
+
+PixelRect paneRect(const TQ3Area& pane)
+{
+    PixelRect rect;
+    rect.x = roundEdge(pane.min.x);
+    rect.y = roundEdge(pane.min.y);
+    rect.width = std::max(1, roundEdge(pane.max.x) - rect.x);
+    rect.height = std::max(1, roundEdge(pane.max.y) - rect.y);
+    return rect;
+}
+
+DrawContext::DrawContext(const TQ3DrawContextData& data) : m_data(normalized(data)) {}
+
+void DrawContext::setData(const TQ3DrawContextData& data)
+{
+    validateDrawContextData(data);
+    m_data = normalized(data);
+    markEdited();
+}
+
+void DrawContext::setClearImageColor(const TQ3ColorARGB& color)
+{
+    if (!isFinite(color))
+        fail(kQ3ErrorInvalidParameter, "a clear colour component is not a finite number");
+    m_data.clearImageColor = color;
+    markEdited();
+}
+
+void DrawContext::setPane(const TQ3Area& pane)
+{
+    validatePane(pane, kQ3ErrorInvalidParameter);
+    m_data.pane = pane;
+    markEdited();
+}
+
+void DrawContext::setPaneState(TQ3Boolean state)
+{
+    if (state != kQ3False)
+        validatePane(m_data.pane, kQ3ErrorInvalidParameter);
+    m_data.paneState = normalized(state);
+    markEdited();
+}
+
+void DrawContext::setClearImageMethod(TQ3DrawContextClearImageMethod method)
+{
+    if (!isClearMethod(method))
+        fail(kQ3ErrorInvalidParameter,
+             "clear method " + std::to_string(long(method)) +
+                 " is neither kQ3ClearMethodNone nor kQ3ClearMethodWithColor");
+    m_data.clearImageMethod = method;
+    markEdited();
+}
+
+PixelRect DrawContext::drawRect(std::uint32_t width, std::uint32_t height) const
+{
+    if (m_data.paneState == kQ3True)
+        return paneRect(m_data.pane);
+    constexpr std::uint32_t kIntMax = std::numeric_limits<int>::max();
+    return PixelRect{0, 0, int(std::min(width, kIntMax)), int(std::min(height, kIntMax))};
+}
+
+void PixmapDrawContext::validate(const TQ3PixmapDrawContextData& data)
+{
+    validateDrawContextData(data.drawContextData);
+    validatePixmap(data.pixmap);
+}
+
+PixmapDrawContext::PixmapDrawContext(const TQ3PixmapDrawContextData& data)
+    : DrawContext(data.drawContextData), m_pixmap(data.pixmap)
+{
+}
+
+Object* PixmapDrawContext::duplicate() const
+{
+    return makeShared<PixmapDrawContext>(TQ3PixmapDrawContextData{data(), m_pixmap}).detach();
+}
+
+void PixmapDrawContext::setPixmap(const TQ3Pixmap& pixmap)
+{
+    validatePixmap(pixmap);
+    m_pixmap = pixmap;
+    markEdited();
+}
+
+} // namespace q3

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "view/Pass.h"
+
+#include "core/AttributeSet.h"
+#include "geometry/NURBCurve.h"
+#include "geometry/PolyLine.h"
+#include "style/SubdivisionStyle.h"
+#include "view/Transform.h"
+
+namespace q3 {
+
+void Pass::visitAttributeSet(const AttributeSet& attributes)
+{
+    if (const std::optional<TQ3ColorRGB> color = attributes.diffuseColor())
+        m_state.diffuseColor = *color;
+}
+
+void Pass::visitSubdivisionStyle(const SubdivisionStyle& style)
+{
+    m_state.subdivision = style.data();
+}
+
+void Pass::visitTransform(const Transform& transform)
+{
+    if (transform.isReset())
+        m_state.localToWorld = Matrix(1.0);
+    else
+        m_state.localToWorld = then(fromQ3(transform.matrix()), m_state.localToWorld);
+}
+
+void Pass::push()
+{
+    m_stack.push_back(m_state);
+}
+
+void Pass::pop()
+{
+    if (m_stack.empty())
+        fail(kQ3ErrorNothingToPop, "no state pushed with Q3Push_Submit in this traversal is left to pop");
+    m_state = m_stack.back();
+    m_stack.pop_back();
+}
+
+TessellationSetting Pass::tessellationSetting() const
+{
+    TessellationSetting setting;
+    setting.style = m_state.subdivision;
+    setting.localToWorld = m_state.localToWorld;
+    setting.window = m_window;
+    return setting;
+}
+
+Ref<PolyLine> Pass::decompose(const NURBCurve& curve) const
+{
+    Ref<PolyLine> result;
+    withCurvePolyline(curve.curve(), &curve.cache(), tessellationSetting(),
+                      [&](const float* xyz, std::size_t count) {
+                          if (count == 1) {
+                              const float twice[6] = {xyz[0], xyz[1], xyz[2], xyz[0], xyz[1], xyz[2]};
+                              result = PolyLine::fromPoints(twice, 2, curve.attributeSet());
+                          } else {
+                              result = PolyLine::fromPoints(xyz, count, curve.attributeSet());
+                          }
+                      });
+    return result;
+}
+
+TQ3ColorRGB Pass::colorOf(const AttributeSet* own) const
+{
+    if (own != nullptr)
+        if (const std::optional<TQ3ColorRGB> color = own->diffuseColor())
+            return *color;
+    return m_state.diffuseColor;
+}
+
+} // namespace q3

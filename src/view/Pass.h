@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3DStyle.h"
+#include "QD3DView.h"
+#include "core/Object.h"
+#include "core/ShapeVisitor.h"
+#include "view/CurveTessellation.h"
+#include "view/Matrix.h"
+
+#include <optional>
+#include <vector>
+
+namespace q3 {
+
+class NURBCurve;
+class PolyLine;
+
+/// The graphics state of a traversal (QD3DView.h): what Q3Push_Submit saves.
+/// Of the attributes, the view keeps those its renderers use: the diffuse
+/// colour. Other attributes submitted are accepted and have no effect.
+struct GraphicsState {
+    Matrix localToWorld{1.0};
+    TQ3SubdivisionStyleData subdivision{kQ3ViewDefaultSubdivisionMethod, kQ3ViewDefaultSubdivisionC1,
+                                        kQ3ViewDefaultSubdivisionC2};
+    TQ3ColorRGB diffuseColor{kQ3ViewDefaultDiffuseColor};
+};
+
+/// One traversal of a rendering or bounding loop: the graphics state with its
+/// push/pop stack, and the state-changing shapes (attribute sets, styles,
+/// transforms). Subclasses decide what geometry does. Invariant: a traversal
+/// starts from the default GraphicsState with an empty stack, and the state
+/// changes only through the visit methods, push and pop.
+class Pass : public ShapeVisitor {
+public:
+    /// window: the loop's camera and pane, when it has them (always for
+    /// rendering; for bounding loops when the view has a camera and a draw
+    /// context).
+    explicit Pass(std::optional<Window> window) : m_window(std::move(window)) {}
+
+    /// Merges the set's attributes into the state (its diffuse colour, if any,
+    /// becomes the current one).
+    void visitAttributeSet(const AttributeSet& attributes) override;
+    void visitSubdivisionStyle(const SubdivisionStyle& style) override;
+    /// Local-to-world becomes transform * local-to-world (row vectors), or the
+    /// identity for a reset transform.
+    void visitTransform(const Transform& transform) override;
+
+    void push();
+    /// Throws kQ3ErrorNothingToPop when nothing pushed is left.
+    void pop();
+
+    const GraphicsState& state() const { return m_state; }
+    const std::optional<Window>& window() const { return m_window; }
+
+    /// What a NURB curve submitted now would be subdivided under.
+    TessellationSetting tessellationSetting() const;
+
+    /// The polyline a curve submitted now would be drawn as, as a new
+    /// PolyLine in the curve's local coordinates with the curve's attribute
+    /// set (Q3Geometry_GetDecomposed). A curve that subdivides to a single
+    /// point gives a polyline of two equal vertices.
+    Ref<PolyLine> decompose(const NURBCurve& curve) const;
+
+    /// A geometry's colour: its own attribute set's diffuse colour, else the
+    /// state's.
+    TQ3ColorRGB colorOf(const AttributeSet* own) const;
+
+private:
+    std::optional<Window> m_window;
+    GraphicsState m_state;
+    std::vector<GraphicsState> m_stack;
+};
+
+} // namespace q3

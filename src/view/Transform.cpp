@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "view/Transform.h"
+
+#include "core/ShapeVisitor.h"
+#include "view/MatrixMath.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+namespace q3 {
+
+const ClassInfo kTransformClass{kQ3ShapeTypeTransform, &kShapeClass, "transform"};
+const ClassInfo kMatrixTransformClass{kQ3TransformTypeMatrix, &kTransformClass, "matrix transform"};
+const ClassInfo kTranslateTransformClass{kQ3TransformTypeTranslate, &kTransformClass,
+                                         "translate transform"};
+const ClassInfo kScaleTransformClass{kQ3TransformTypeScale, &kTransformClass, "scale transform"};
+const ClassInfo kRotateTransformClass{kQ3TransformTypeRotate, &kTransformClass, "rotate transform"};
+const ClassInfo kResetTransformClass{kQ3TransformTypeReset, &kTransformClass, "reset transform"};
+
+namespace {
+
+void requireFinite(const TQ3Vector3D& v, const char* name)
+{
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        fail(kQ3ErrorInvalidParameter, std::string(name) + " has a component that is not finite");
+}
+
+template <class T, class... Args>
+Object* duplicateOf(Args&&... args)
+{
+    return makeShared<T>(std::forward<Args>(args)...).detach();
+}
+
+} // namespace
+
+void validateMatrixTransform(const TQ3Matrix4x4& matrix)
+{
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(matrix.value[i][j]))
+                fail(kQ3ErrorInvalidParameter, "matrix entry value[" + std::to_string(i) + "][" +
+                                                   std::to_string(j) + "] is not finite");
+}
+
+void validateTranslateTransform(const TQ3Vector3D& translate)
+{
+    requireFinite(translate, "translate");
+}
+
+void validateScaleTransform(const TQ3Vector3D& scale)
+{
+    requireFinite(scale, "scale");
+}
+
+void validateRotateTransform(const TQ3RotateTransformData& data)
+{
+    // C callers may store any int in the enum; reading it as a TQ3Axis would
+    // be undefined behaviour in C++ for values outside the enum's range, so
+    // read the bits as the int C stored.
+    int axis;
+    static_assert(sizeof axis == sizeof data.axis, "TQ3Axis is int-sized, as in C");
+    std::memcpy(&axis, &data.axis, sizeof axis);
+    if (axis != kQ3AxisX && axis != kQ3AxisY && axis != kQ3AxisZ)
+        fail(kQ3ErrorInvalidData,
+             "axis " + std::to_string(axis) + " is none of kQ3AxisX, kQ3AxisY, kQ3AxisZ");
+    if (!std::isfinite(data.radians))
+        fail(kQ3ErrorInvalidData, "radians is not finite");
+}
+
+void Transform::accept(ShapeVisitor& visitor) const
+{
+    visitor.visitTransform(*this);
+}
+
+MatrixTransform::MatrixTransform(const TQ3Matrix4x4& matrix) : m_matrix(matrix)
+{
+    validateMatrixTransform(matrix);
+}
+
+Object* MatrixTransform::duplicate() const
+{
+    return duplicateOf<MatrixTransform>(m_matrix);
+}
+
+TranslateTransform::TranslateTransform(const TQ3Vector3D& translate) : m_translate(translate)
+{
+    validateTranslateTransform(translate);
+}
+
+Object* TranslateTransform::duplicate() const
+{
+    return duplicateOf<TranslateTransform>(m_translate);
+}
+
+TQ3Matrix4x4 TranslateTransform::matrix() const
+{
+    return math::translation(m_translate.x, m_translate.y, m_translate.z);
+}
+
+ScaleTransform::ScaleTransform(const TQ3Vector3D& scale) : m_scale(scale)
+{
+    validateScaleTransform(scale);
+}
+
+Object* ScaleTransform::duplicate() const
+{
+    return duplicateOf<ScaleTransform>(m_scale);
+}
+
+TQ3Matrix4x4 ScaleTransform::matrix() const
+{
+    return math::scaling(m_scale.x, m_scale.y, m_scale.z);
+}
+
+RotateTransform::RotateTransform(const TQ3RotateTransformData& data) : m_data(data)
+{
+    validateRotateTransform(data);
+}
+
+Object* RotateTransform::duplicate() const
+{
+    return duplicateOf<RotateTransform>(m_data);
+}
+
+TQ3Matrix4x4 RotateTransform::matrix() const
+{
+    switch (m_data.axis) {
+    case kQ3AxisX:
+        return math::rotationX(m_data.radians);
+    case kQ3AxisY:
+        return math::rotationY(m_data.radians);
+    case kQ3AxisZ:
+        break;
+    }
+    return math::rotationZ(m_data.radians);
+}
+
+Object* ResetTransform::duplicate() const
+{
+    return duplicateOf<ResetTransform>();
+}
+
+TQ3Matrix4x4 ResetTransform::matrix() const
+{
+    return math::identity();
+}
+
+} // namespace q3

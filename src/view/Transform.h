@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3DTransform.h"
+#include "core/Object.h"
+
+namespace q3 {
+
+extern const ClassInfo kTransformClass;
+extern const ClassInfo kMatrixTransformClass;
+extern const ClassInfo kTranslateTransformClass;
+extern const ClassInfo kScaleTransformClass;
+extern const ClassInfo kRotateTransformClass;
+extern const ClassInfo kResetTransformClass;
+
+/// The checks QD3DTransform.h lists, one per kind of data; each is the one
+/// routine behind that transform's _New and _Submit (the constructors call
+/// it). Matrix, translate and scale throw kQ3ErrorInvalidParameter for a
+/// value that is not finite; rotate throws kQ3ErrorInvalidData for an axis
+/// that is not a TQ3Axis or an angle that is not finite. Zero and negative
+/// scale factors are accepted without a post, as in QuickDraw 3D ("when two
+/// or three of the scale factors are 0, nothing is drawn").
+void validateMatrixTransform(const TQ3Matrix4x4& matrix);
+void validateTranslateTransform(const TQ3Vector3D& translate);
+void validateScaleTransform(const TQ3Vector3D& scale);
+void validateRotateTransform(const TQ3RotateTransformData& data);
+
+/// A QuickDraw 3D transform: a drawable that changes the view's
+/// local-to-world matrix L when submitted, to matrix() * L, or, for the reset
+/// transform only, to the identity. Invariant: matrix() has finite entries.
+class Transform : public SharedObject {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3ShapeTypeTransform;
+
+    bool isDrawable() const override { return true; }
+    void accept(ShapeVisitor& visitor) const override;
+
+    /// The transform as a QuickDraw 3D matrix (row vectors: p' = p * M).
+    virtual TQ3Matrix4x4 matrix() const = 0;
+    /// True only for the reset transform, which replaces the local-to-world
+    /// matrix with the identity instead of multiplying it.
+    virtual bool isReset() const { return false; }
+
+protected:
+    Transform() = default;
+};
+
+/// An arbitrary matrix. Invariant: every entry is finite.
+class MatrixTransform final : public Transform {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeMatrix;
+
+    /// Throws as validateMatrixTransform.
+    explicit MatrixTransform(const TQ3Matrix4x4& matrix);
+
+    const ClassInfo& classInfo() const override { return kMatrixTransformClass; }
+    Object* duplicate() const override;
+    TQ3Matrix4x4 matrix() const override { return m_matrix; }
+
+private:
+    TQ3Matrix4x4 m_matrix;
+};
+
+/// A translation. Invariant: the offset is finite.
+class TranslateTransform final : public Transform {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeTranslate;
+
+    /// Throws as validateTranslateTransform.
+    explicit TranslateTransform(const TQ3Vector3D& translate);
+
+    const ClassInfo& classInfo() const override { return kTranslateTransformClass; }
+    Object* duplicate() const override;
+    TQ3Matrix4x4 matrix() const override;
+    const TQ3Vector3D& translate() const { return m_translate; }
+
+private:
+    TQ3Vector3D m_translate;
+};
+
+/// A scale about the local origin. Invariant: the factors are finite (zero
+/// and negative factors are allowed).
+class ScaleTransform final : public Transform {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeScale;
+
+    /// Throws as validateScaleTransform.
+    explicit ScaleTransform(const TQ3Vector3D& scale);
+
+    const ClassInfo& classInfo() const override { return kScaleTransformClass; }
+    Object* duplicate() const override;
+    TQ3Matrix4x4 matrix() const override;
+    const TQ3Vector3D& scale() const { return m_scale; }
+
+private:
+    TQ3Vector3D m_scale;
+};
+
+/// A rotation about a coordinate axis. Invariant: the axis is X, Y or Z and
+/// the angle is finite.
+class RotateTransform final : public Transform {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeRotate;
+
+    /// Throws as validateRotateTransform.
+    explicit RotateTransform(const TQ3RotateTransformData& data);
+
+    const ClassInfo& classInfo() const override { return kRotateTransformClass; }
+    Object* duplicate() const override;
+    TQ3Matrix4x4 matrix() const override;
+    const TQ3RotateTransformData& data() const { return m_data; }
+
+private:
+    TQ3RotateTransformData m_data;
+};
+
+/// The reset transform: no data. Invariant: matrix() is the identity and
+/// isReset() is true.
+class ResetTransform final : public Transform {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeReset;
+
+    ResetTransform() = default;
+
+    const ClassInfo& classInfo() const override { return kResetTransformClass; }
+    Object* duplicate() const override;
+    TQ3Matrix4x4 matrix() const override;
+    bool isReset() const override { return true; }
+};
+
+} // namespace q3

@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "view/View.h"
+
+#include "geometry/NURBCurve.h"
+#include "geometry/PolyLine.h"
+#include "render/OffscreenRenderer.h"
+#include "render/Renderer.h"
+#include "view/BoundsPass.h"
+#include "view/Camera.h"
+#include "view/DrawContext.h"
+#include "view/RenderPass.h"
+
+#include <algorithm>
+#include <string>
+
+namespace q3 {
+
+const ClassInfo kViewClass{kQ3ObjectTypeView, &kRootClass, "view"};
+
+namespace {
+
+// What a cancelled loop submits to: everything is ignored until its end.
+class IgnoringVisitor final : public ShapeVisitor {
+public:
+    void visitNURBCurve(const nurbs::CurveRef&, const AttributeSet*, CurveCache*) override {}
+    void visitPolyLine(const PolyLine&) override {}
+    void visitLine(const Line&) override {}
+    void visitPoint(const Point&) override {}
+    void visitAttributeSet(const AttributeSet&) override {}
+    void visitSubdivisionStyle(const SubdivisionStyle&) override {}
+    void visitTransform(const Transform&) override {}
+};
+
+float clampUnit(float value)
+{
+    return std::clamp(value, 0.0f, 1.0f);
+}
+
+bool isComputeBounds(TQ3ComputeBounds value)
+{
+    const long v = static_cast<long>(value);
+    return v == kQ3ComputeBoundsExact || v == kQ3ComputeBoundsApproximate;
+}
+
+// The part of rect inside a width x height image (possibly empty).
+PixelRect clipToImage(const PixelRect& rect, std::uint32_t width, std::uint32_t height)
+{
+    const long long x0 = std::max<long long>(rect.x, 0);
+    const long long y0 = std::max<long long>(rect.y, 0);
+    const long long x1 = std::min<long long>((long long)rect.x + rect.width, width);
+    const long long y1 = std::min<long long>((long long)rect.y + rect.height, height);
+    if (x0 >= x1 || y0 >= y1)
+        return PixelRect{};
+    return PixelRect{int(x0), int(y0), int(x1 - x0), int(y1 - y0)};
+}
+
+PixmapDrawContext& pixmapContext(DrawContext& context)
+{
+    // Q3 has one kind of draw context; the check keeps this honest if more come.
+    if (!context.isType(kQ3DrawContextTypePixmap))
+        fail(kQ3ErrorInvalidObjectType, std::string("the view's draw context is a ") +
+                                            context.classInfo().name + ", which Q3 cannot render into");
+    return static_cast<PixmapDrawContext&>(context);
+}
+
+} // namespace
+
+View::View() = default;
+
+View::~View()
+{
+    if (m_loop == Loop::kRendering)
+        m_offscreen->cancelFrame();
+}
+
+void View::requireNoLoop() const
+{
+    if (m_loop != Loop::kNone)
+        fail(kQ3ErrorViewIsStarted, "the view is inside a rendering or bounding loop");
+}
+
+Pass& View::activePass()
+{
+    if (m_loop == Loop::kNone)
+        fail(kQ3ErrorViewNotStarted, "the view is not inside a rendering or bounding loop");
+    return *m_pass;
+}
+
+void View::setRenderer(Ref<Renderer> renderer)
+{
+    requireNoLoop();
+    m_renderer = std::move(renderer);
+}
+
+void View::setRendererByType(TQ3ObjectType type)
+{
+    requireNoLoop();
+    m_renderer = Renderer::newFromType(type);
+}
+
+void View::setCamera(Ref<Camera> camera)
+{
+    requireNoLoop();
+    m_camera = std::move(camera);
+}
+
+void View::setDrawContext(Ref<DrawContext> drawContext)
+{
+    requireNoLoop();
+    m_drawContext = std::move(drawContext);
+}
+
+void View::startRendering()
+{
+    requireNoLoop();
+    if (!m_drawContext)
+        fail(kQ3ErrorDrawContextNotSet, "the view has no draw context (Q3View_SetDrawContext)");
+    if (!m_camera)
+        fail(kQ3ErrorCameraNotSet, "the view has no camera (Q3View_SetCamera)");
+    if (!m_renderer)
+        fail(kQ3ErrorRendererNotSet, "the view has no renderer (Q3View_SetRenderer)");
+
+    const PixmapDrawContext& context = pixmapContext(*m_drawContext);
+    const TQ3DrawContextData& settings = context.data();
+    Destination destination;
+    destination.image = context.pixmap().image;
+    destination.layout = layoutOf(context.pixmap());
+    destination.pane = context.drawRect(destination.layout.width, destination.layout.height);
+    destination.cleared = settings.clearImageMethod == kQ3ClearMethodWithColor;
+    // Without a clear, the frame starts transparent so that writeImage can
+    // tell drawn pixels (alpha 1) from untouched ones.
+    RgbaColor clear;
+    if (destination.cleared) {
+        const TQ3ColorARGB& color = settings.clearImageColor;
+        clear = RgbaColor{clampUnit(color.r), clampUnit(color.g), clampUnit(color.b), clampUnit(color.a)};
+    }
+
+    if (!m_offscreen)
+        m_offscreen = std::make_unique<OffscreenRenderer>();
+    auto pass = std::make_unique<RenderPass>(*m_offscreen,
+                                             Window{m_camera->worldToFrustum(), destination.pane});
+    throwIfFailed(m_offscreen->beginFrame(destination.layout.width, destination.layout.height, clear,
+                                          destination.pane),
+                  "starting the image");
+    m_destination = destination;
+    m_pass = std::move(pass);
+    m_loop = Loop::kRendering;
+    m_cancelled = false;
+}
+
+TQ3ViewStatus View::endRendering()
+{
+    if (m_loop != Loop::kRendering)
+        fail(kQ3ErrorRenderingNotStarted, "no rendering loop is running in the view");
+    const bool cancelled = m_cancelled;
+    endLoop();
+    const RenderResult finished = m_offscreen->endFrame();
+    if (!finished)
+        fail(kQ3ErrorRenderingLoopFailed, "the image could not be finished: " + finished.message);
+    const RenderResult written = writeImage();
+    if (!written)
+        fail(kQ3ErrorRenderingLoopFailed, "the image could not be written: " + written.message);
+    return cancelled ? kQ3ViewStatusCancelled : kQ3ViewStatusDone;
+}
+
+RenderResult View::writeImage() const
+{
+    const Destination& to = m_destination;
+    const Rgba8ImageView frame{m_offscreen->pixels(), m_offscreen->width(), m_offscreen->height(),
+                               m_offscreen->rowBytes()};
+    const PixelRect area = clipToImage(to.pane, to.layout.width, to.layout.height);
+    if (area.width == 0)
+        return RenderResult::success();
+    if (to.cleared)
+        return writeRgba8ToPixmap(frame, area, to.image, to.layout, area.x, area.y);
+    // kQ3ClearMethodNone: write only the runs of pixels geometry covered.
+    for (int y = area.y; y < area.y + area.height; ++y) {
+        const std::uint8_t* row = frame.pixels + std::size_t(y) * frame.rowBytes;
+        int x = area.x;
+        while (x < area.x + area.width) {
+            if (row[4 * x + 3] == 0) {
+                ++x;
+                continue;
+            }
+            const int start = x;
+            while (x < area.x + area.width && row[4 * x + 3] != 0)
+                ++x;
+            const PixelRect run{start, y, x - start, 1};
+            RenderResult result = writeRgba8ToPixmap(frame, run, to.image, to.layout, start, y);
+            if (!result)
+                return result;
+        }
+    }
+    return RenderResult::success();
+}
+
+void View::startBounding(Loop loop, TQ3ComputeBounds computeBounds)
+{
+    requireNoLoop();
+    if (!isComputeBounds(computeBounds))
+        fail(kQ3ErrorInvalidParameter, "computeBounds " + std::to_string(long(computeBounds)) +
+                                           " is neither kQ3ComputeBoundsExact nor Approximate");
+    // Screen-space subdivision (for Q3Geometry_GetDecomposed) needs a window.
+    std::optional<Window> window;
+    if (m_camera && m_drawContext && m_drawContext->isType(kQ3DrawContextTypePixmap)) {
+        const TQ3Pixmap& pixmap = pixmapContext(*m_drawContext).pixmap();
+        const PixmapLayout layout = layoutOf(pixmap);
+        window = Window{m_camera->worldToFrustum(), m_drawContext->drawRect(layout.width, layout.height)};
+    }
+    m_pass = std::make_unique<BoundsPass>(computeBounds, window);
+    m_loop = loop;
+    m_cancelled = false;
+}
+
+void View::startBoundingBox(TQ3ComputeBounds computeBounds)
+{
+    startBounding(Loop::kBoundingBox, computeBounds);
+}
+
+void View::startBoundingSphere(TQ3ComputeBounds computeBounds)
+{
+    startBounding(Loop::kBoundingSphere, computeBounds);
+}
+
+TQ3ViewStatus View::endBoundingBox(TQ3BoundingBox& result)
+{
+    if (m_loop != Loop::kBoundingBox)
+        fail(kQ3ErrorBoundsNotStarted, "no bounding-box loop is running in the view");
+    const TQ3BoundingBox box = static_cast<const BoundsPass&>(*m_pass).box();
+    const bool cancelled = m_cancelled;
+    endLoop();
+    if (cancelled)
+        return kQ3ViewStatusCancelled;
+    result = box;
+    return kQ3ViewStatusDone;
+}
+
+TQ3ViewStatus View::endBoundingSphere(TQ3BoundingSphere& result)
+{
+    if (m_loop != Loop::kBoundingSphere)
+        fail(kQ3ErrorBoundsNotStarted, "no bounding-sphere loop is running in the view");
+    const TQ3BoundingSphere sphere = static_cast<const BoundsPass&>(*m_pass).sphere();
+    const bool cancelled = m_cancelled;
+    endLoop();
+    if (cancelled)
+        return kQ3ViewStatusCancelled;
+    result = sphere;
+    return kQ3ViewStatusDone;
+}
+
+void View::endLoop()
+{
+    m_pass.reset();
+    m_loop = Loop::kNone;
+    m_cancelled = false;
+}
+
+void View::cancel()
+{
+    if (m_loop != Loop::kNone)
+        m_cancelled = true;
+}
+
+void View::sync() const
+{
+    if (m_loop == Loop::kRendering)
+        fail(kQ3ErrorRenderingIsActive, "a rendering loop is running in the view");
+}
+
+ShapeVisitor& View::submitTarget()
+{
+    static IgnoringVisitor ignoring;
+    Pass& pass = activePass();
+    if (m_cancelled)
+        return ignoring;
+    return pass;
+}
+
+void View::submit(const Object& object)
+{
+    if (!object.isDrawable())
+        fail(kQ3ErrorInvalidObjectType,
+             std::string("object is a ") + object.classInfo().name + ", which cannot be submitted");
+    object.accept(submitTarget());
+}
+
+void View::push()
+{
+    activePass().push();
+}
+
+void View::pop()
+{
+    activePass().pop();
+}
+
+TQ3Matrix4x4 View::localToWorldState()
+{
+    return toQ3(activePass().state().localToWorld);
+}
+
+TQ3SubdivisionStyleData View::subdivisionStyleState()
+{
+    return activePass().state().subdivision;
+}
+
+Ref<PolyLine> View::decompose(const Geometry& geometry)
+{
+    const Pass& pass = activePass();
+    if (!geometry.isType(kQ3GeometryTypeNURBCurve))
+        return nullptr;
+    return pass.decompose(static_cast<const NURBCurve&>(geometry));
+}
+
+} // namespace q3

@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Inputs at the limits: a curve of a million control points of the highest
+// order, a world-space c1 a million times smaller than the curve, and a
+// perspective camera inside the curve. Each must be created, drawn, bounded
+// and decomposed to completion with output bounded by
+// kQ3SubdivisionMaxSegmentsPerCurve (QD3DStyle.h), posting
+// kQ3WarningParameterOutOfRange exactly where the subdivision gave in.
+// These tests assert no times: speed belongs to the benchmarks.
+
+#include "RenderTestSupport.h"
+
+#include "QD3DStyle.h"
+#include "QD3DTransform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace {
+
+using namespace q3test;
+
+constexpr unsigned long kCap = kQ3SubdivisionMaxSegmentsPerCurve;
+
+/// A clamped uniform curve: order, a knot vector 0 .. spans with end knots
+/// repeated `order` times, and `count` control points from `at`.
+struct BigCurve {
+    std::vector<TQ3RationalPoint4D> points;
+    std::vector<float> knots;
+    unsigned long order;
+
+    template <class At>
+    BigCurve(unsigned long count, unsigned long curveOrder, At at) : order(curveOrder)
+    {
+        points.reserve(count);
+        for (unsigned long i = 0; i < count; ++i)
+            points.push_back(at(i));
+        const unsigned long spans = count - order + 1;
+        knots.reserve(count + order);
+        for (unsigned long i = 0; i < count + order; ++i)
+            knots.push_back(float(std::min(i < order ? 0 : i - order + 1, spans)));
+    }
+
+    TQ3NURBCurveData data() { return TQ3NURBCurveData{order, points.size(), points.data(), knots.data(), nullptr}; }
+};
+
+class LimitsApiTest : public Q3ApiTest {
+protected:
+    /// The number of vertices of the polyline `curve` decomposes into in the
+    /// current state of `view` (0 on failure).
+    unsigned long decomposedVertices(TQ3GeometryObject curve, TQ3ViewObject view, bool expectCapWarning)
+    {
+        TQ3GeometryObject polyLine = nullptr;
+        if (expectCapWarning)
+            EXPECT_Q3_WARNING(polyLine = Q3Geometry_GetDecomposed(curve, view), kQ3WarningParameterOutOfRange);
+        else
+            polyLine = Q3Geometry_GetDecomposed(curve, view);
+        EXPECT_NE(polyLine, nullptr);
+        if (polyLine == nullptr)
+            return 0;
+        TQ3PolyLineData data{};
+        EXPECT_EQ(Q3PolyLine_GetData(polyLine, &data), kQ3Success);
+        const unsigned long count = data.numVertices;
+        bool finite = true;
+        for (unsigned long i = 0; i < count; ++i)
+            finite = finite && std::isfinite(data.vertices[i].point.x) && std::isfinite(data.vertices[i].point.y) &&
+                     std::isfinite(data.vertices[i].point.z);
+        EXPECT_TRUE(finite) << "the decomposed polyline has a vertex that is not finite";
+        Q3PolyLine_EmptyData(&data);
+        Q3Object_Dispose(polyLine);
+        return count;
+    }
+
+    /// Draws `curve` (retained) and the same data in immediate mode, in one
+    /// rendering loop of `view` under `style`.
+    void render(TestView& view, TQ3GeometryObject curve, TQ3NURBCurveData& data,
+                const TQ3SubdivisionStyleData& style, bool expectCapWarning)
+    {
+        ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+        EXPECT_EQ(Q3SubdivisionStyle_Submit(&style, view.view()), kQ3Success);
+        if (expectCapWarning) {
+            EXPECT_Q3_WARNING(EXPECT_EQ(Q3Geometry_Submit(curve, view.view()), kQ3Success),
+                              kQ3WarningParameterOutOfRange);
+            EXPECT_Q3_WARNING(EXPECT_EQ(Q3NURBCurve_Submit(&data, view.view()), kQ3Success),
+                              kQ3WarningParameterOutOfRange);
+        } else {
+            EXPECT_EQ(Q3Geometry_Submit(curve, view.view()), kQ3Success);
+            EXPECT_EQ(Q3NURBCurve_Submit(&data, view.view()), kQ3Success);
+        }
+        EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
+    }
+};
+
+/// How many pixels of an image are lit.
+std::size_t litPixels(const Pixmap& image)
+{
+    std::size_t lit = 0;
+    for (unsigned long y = 0; y < image.height(); ++y)
+        for (unsigned long x = 0; x < image.width(); ++x)
+            lit += image.lit(x, y) ? 1 : 0;
+    return lit;
+}
+
+// 10^6 control points of order 16: 999,985 spans, just under the segment
+// cap, so one constant segment per span fits and draws without a warning,
+// while screen-space subdivision of a zigzag that crosses the image a million
+// times would need far more and gives in (one segment per span).
+TEST_F(LimitsApiTest, AMillionControlPointsOfOrderSixteenAreCreatedDrawnBoundedAndDecomposed)
+{
+    constexpr unsigned long kPoints = 1000000;
+    BigCurve big(kPoints, 16, [](unsigned long i) {
+        const float x = -1.0f + 2.0f * float(i) / float(kPoints - 1);
+        return TQ3RationalPoint4D{x, i % 2 ? 0.9f : -0.9f, 0.0f, 1.0f};
+    });
+    TQ3NURBCurveData data = big.data();
+    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+    ASSERT_NE(curve, nullptr);
+
+    Pixmap image(64, 64);
+    TQ3OrthographicCameraData cameraData = listing1OrthographicCamera();
+    cameraData.cameraData.placement = {{0.0f, 0.0f, 10.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+    cameraData.left = -1.25f;
+    cameraData.right = 1.25f;
+    cameraData.top = 1.25f;
+    cameraData.bottom = -1.25f;
+    TQ3CameraObject camera = Q3OrthographicCamera_New(&cameraData);
+    TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera);
+    Q3Object_Dispose(camera);
+
+    const TQ3SubdivisionStyleData constant{kQ3SubdivisionMethodConstant, 1.0f, 1.0f};
+    render(view, curve, data, constant, false);
+    EXPECT_GT(litPixels(image), 64u * 32u) << "the zigzag should cover most of the image";
+    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+    Q3SubdivisionStyle_Submit(&constant, view.view());
+    const unsigned long constantVertices = decomposedVertices(curve, view.view(), false);
+    EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
+    EXPECT_LE(constantVertices, kCap + 1);
+    EXPECT_GE(constantVertices, kPoints - 15);
+
+    const TQ3SubdivisionStyleData screen{kQ3SubdivisionMethodScreenSpace, 1.0f, 1.0f};
+    render(view, curve, data, screen, true);
+    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+    Q3SubdivisionStyle_Submit(&screen, view.view());
+    const unsigned long screenVertices = decomposedVertices(curve, view.view(), true);
+    EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
+    EXPECT_LE(screenVertices, kCap + 1);
+    EXPECT_GE(screenVertices, 2u);
+
+    // The box bounds the control points (the curve lies in their hull).
+    TQ3BoundingBox box{};
+    ASSERT_EQ(Q3View_StartBoundingBox(view.view(), kQ3ComputeBoundsExact), kQ3Success);
+    EXPECT_EQ(Q3Geometry_Submit(curve, view.view()), kQ3Success);
+    ASSERT_EQ(Q3View_EndBoundingBox(view.view(), &box), kQ3ViewStatusDone);
+    EXPECT_EQ(box.isEmpty, kQ3False);
+    EXPECT_FLOAT_EQ(box.min.x, -1.0f);
+    EXPECT_FLOAT_EQ(box.max.x, 1.0f);
+    EXPECT_FLOAT_EQ(box.min.y, -0.9f);
+    EXPECT_FLOAT_EQ(box.max.y, 0.9f);
+    TQ3BoundingSphere sphere{};
+    ASSERT_EQ(Q3View_StartBoundingSphere(view.view(), kQ3ComputeBoundsApproximate), kQ3Success);
+    EXPECT_EQ(Q3NURBCurve_Submit(&data, view.view()), kQ3Success);
+    ASSERT_EQ(Q3View_EndBoundingSphere(view.view(), &sphere), kQ3ViewStatusDone);
+    EXPECT_GE(sphere.radius, std::hypot(1.0f, 0.9f));
+
+    Q3Object_Dispose(curve);
+}
+
+// Listing 1 is about 3.9 units long; segments of at most 3.9e-6 would take
+// a million of them (1.03 million with Q3's padding), more than the cap
+// leaves for placement, so the length is raised and the warning posted.
+TEST_F(LimitsApiTest, AWorldSpaceC1AMillionTimesSmallerThanTheCurveIsCapped)
+{
+    Listing1 listing;
+    TQ3NURBCurveData data = listing.data();
+    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+    ASSERT_NE(curve, nullptr);
+    Pixmap image(64, 64);
+    TestView view(image.pixmap());
+
+    const TQ3SubdivisionStyleData tiny{kQ3SubdivisionMethodWorldSpace, 3.9e-6f, 3.9e-6f};
+    render(view, curve, data, tiny, true);
+    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+    Q3SubdivisionStyle_Submit(&tiny, view.view());
+    const unsigned long vertices = decomposedVertices(curve, view.view(), true);
+    EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
+    EXPECT_LE(vertices, kCap + 1);
+    EXPECT_GE(vertices, kCap / 2) << "capped, but it should still come close to the cap";
+    const CurveImageReport report = checkCurveImage(image, orthographicProjection(0, 0, 64, 64), 0, 0, 64, 64);
+    EXPECT_EQ(report.strayPixels, 0u) << report.firstProblem;
+    EXPECT_EQ(report.missedSamples, 0u) << report.firstProblem;
+
+    // The smallest positive c1 of all: the same, not worse.
+    const TQ3SubdivisionStyleData least{kQ3SubdivisionMethodWorldSpace, std::numeric_limits<float>::denorm_min(),
+                                        1.0f};
+    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+    Q3SubdivisionStyle_Submit(&least, view.view());
+    EXPECT_LE(decomposedVertices(curve, view.view(), true), kCap + 1);
+    EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
+    Q3Object_Dispose(curve);
+}
+
+// A helix of radius 2 around the eye of a perspective camera, running from
+// 5 units in front of it to 5 units behind it: part of the curve has no
+// image at all, part of it passes within a hair of the eye where a pixel
+// length becomes enormous. Screen-space subdivision to a pixel must still
+// finish with bounded output; so must a curve through the eye itself.
+TEST_F(LimitsApiTest, APerspectiveCameraInsideTheCurveDrawsAndDecomposesIt)
+{
+    BigCurve helix(400, 4, [](unsigned long i) {
+        const float t = float(i) * 0.3f;
+        return TQ3RationalPoint4D{2.0f * std::cos(t), 2.0f * std::sin(t), 5.0f - 0.025f * float(i), 1.0f};
+    });
+    TQ3NURBCurveData helixData = helix.data();
+    TQ3GeometryObject helixCurve = Q3NURBCurve_New(&helixData);
+    ASSERT_NE(helixCurve, nullptr);
+    // A line whose midpoint, where the subdivision probes it, is the eye.
+    BigCurve through(2, 2, [](unsigned long i) {
+        return i == 0 ? TQ3RationalPoint4D{-1.0f, 0.5f, 4.0f, 1.0f} : TQ3RationalPoint4D{1.0f, -0.5f, -4.0f, 1.0f};
+    });
+    TQ3NURBCurveData throughData = through.data();
+    TQ3GeometryObject throughCurve = Q3NURBCurve_New(&throughData);
+    ASSERT_NE(throughCurve, nullptr);
+
+    TQ3ViewAngleAspectCameraData cameraData{};
+    cameraData.cameraData.placement = {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, {0.0f, 1.0f, 0.0f}};
+    cameraData.cameraData.range = {0.001f, 100.0f};
+    cameraData.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
+    cameraData.fov = 1.5f;
+    cameraData.aspectRatioXToY = 1.0f;
+    TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
+    ASSERT_NE(camera, nullptr);
+    Pixmap image(64, 64);
+    TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera);
+    Q3Object_Dispose(camera);
+
+    const TQ3SubdivisionStyleData pixel{kQ3SubdivisionMethodScreenSpace, 1.0f, 1.0f};
+    forgetPosted();
+    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+    EXPECT_EQ(Q3SubdivisionStyle_Submit(&pixel, view.view()), kQ3Success);
+    EXPECT_EQ(Q3Geometry_Submit(helixCurve, view.view()), kQ3Success);
+    EXPECT_EQ(Q3NURBCurve_Submit(&helixData, view.view()), kQ3Success);
+    EXPECT_EQ(Q3Geometry_Submit(throughCurve, view.view()), kQ3Success);
+    EXPECT_EQ(Q3NURBCurve_Submit(&throughData, view.view()), kQ3Success);
+    EXPECT_LE(decomposedVertices(helixCurve, view.view(), false), kCap + 1);
+    EXPECT_LE(decomposedVertices(throughCurve, view.view(), false), kCap + 1);
+    EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
+    // Whether the part near the eye needed the cap is the curve's business;
+    // what matters is that nothing failed.
+    forgetPosted();
+    EXPECT_GT(litPixels(image), 0u);
+
+    Q3Object_Dispose(helixCurve);
+    Q3Object_Dispose(throughCurve);
+}
+
+} // namespace

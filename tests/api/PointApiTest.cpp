@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "Q3ApiTest.h"
+
+#include "QD3DGeometry.h"
+#include "QD3DSet.h"
+#include "QD3DView.h"
+
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace {
+
+using q3test::Q3ApiTest;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+const float kNonFinite[] = {kNaN, kInf, -kInf};
+
+class PointApiTest : public Q3ApiTest {
+protected:
+    void TearDown() override
+    {
+        for (TQ3Object object : m_owned)
+            Q3Object_Dispose(object);
+        Q3ApiTest::TearDown();
+    }
+
+    /// Disposed by TearDown (before the leak check).
+    template <class T>
+    T own(T object)
+    {
+        m_owned.push_back(object);
+        return object;
+    }
+
+    TQ3ViewObject view()
+    {
+        if (m_view == nullptr)
+            m_view = own(Q3View_New());
+        return m_view;
+    }
+
+    TQ3BoundingBox boundsOf(const std::function<void(TQ3ViewObject)>& scene)
+    {
+        TQ3BoundingBox box{};
+        EXPECT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
+        do
+            scene(view());
+        while (Q3View_EndBoundingBox(view(), &box) == kQ3ViewStatusRetraverse);
+        return box;
+    }
+
+    TQ3PointData m_data{{1.5f, -2, 3}, nullptr};
+
+private:
+    std::vector<TQ3Object> m_owned;
+    TQ3ViewObject m_view = nullptr;
+};
+
+TEST_F(PointApiTest, NewMakesAPointThatGetDataReturns)
+{
+    TQ3GeometryObject point = own(Q3Point_New(&m_data));
+    ASSERT_NE(point, nullptr);
+    EXPECT_EQ(Q3Object_GetLeafType(point), kQ3GeometryTypePoint);
+    EXPECT_EQ(Q3Geometry_GetType(point), kQ3GeometryTypePoint);
+    EXPECT_EQ(Q3Object_IsDrawable(point), kQ3True);
+    TQ3PointData out{{0, 0, 0}, nullptr};
+    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
+    EXPECT_EQ(out.point.x, 1.5f);
+    EXPECT_EQ(out.point.y, -2.0f);
+    EXPECT_EQ(out.point.z, 3.0f);
+    EXPECT_EQ(out.pointAttributeSet, nullptr);
+}
+
+TEST_F(PointApiTest, TheAttributeSetIsHeldByReferenceAndHandedOutWithANewOne)
+{
+    TQ3AttributeSet set = own(Q3AttributeSet_New());
+    m_data.pointAttributeSet = set;
+    TQ3GeometryObject point = Q3Point_New(&m_data);
+    ASSERT_NE(point, nullptr);
+    EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3True);
+    TQ3PointData out{};
+    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
+    Q3Object_Dispose(point);
+    EXPECT_EQ(out.pointAttributeSet, set);
+    EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3True); // GetData's reference
+    Q3Object_Dispose(out.pointAttributeSet);
+    EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3False);
+}
+
+TEST_F(PointApiTest, NewRejectsNullDataAndNonFiniteCoordinates)
+{
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(nullptr), nullptr), kQ3ErrorNULLParameter);
+    for (int axis = 0; axis < 3; ++axis)
+        for (float bad : kNonFinite) {
+            TQ3PointData data = m_data;
+            float* coordinates[] = {&data.point.x, &data.point.y, &data.point.z};
+            *coordinates[axis] = bad;
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(&data), nullptr), kQ3ErrorInvalidData);
+        }
+}
+
+TEST_F(PointApiTest, NewRejectsBadAttributeSetHandlesAfterCoordinates)
+{
+    TQ3GeometryObject notASet = own(Q3Point_New(&m_data));
+    int notAnObject = 0;
+    TQ3PointData data = m_data;
+    data.pointAttributeSet = notASet;
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(&data), nullptr), kQ3ErrorInvalidObjectType);
+    data.pointAttributeSet = reinterpret_cast<TQ3AttributeSet>(&notAnObject);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(&data), nullptr), kQ3ErrorInvalidObject);
+    data.point.z = kNaN;
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(&data), nullptr), kQ3ErrorInvalidData);
+}
+
+TEST_F(PointApiTest, SetDataReplacesThePointAndBumpsTheEditIndex)
+{
+    TQ3GeometryObject point = own(Q3Point_New(&m_data));
+    ASSERT_NE(point, nullptr);
+    const unsigned long edit = Q3Shared_GetEditIndex(point);
+    TQ3AttributeSet set = own(Q3AttributeSet_New());
+    const TQ3PointData replacement{{7, 8, 9}, set};
+    EXPECT_EQ(Q3Point_SetData(point, &replacement), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(point), edit);
+    TQ3PointData out{};
+    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
+    EXPECT_EQ(out.point.y, 8.0f);
+    EXPECT_EQ(out.pointAttributeSet, set);
+    Q3Object_Dispose(out.pointAttributeSet);
+}
+
+TEST_F(PointApiTest, FailedSetDataChangesNothing)
+{
+    TQ3GeometryObject point = own(Q3Point_New(&m_data));
+    ASSERT_NE(point, nullptr);
+    const unsigned long edit = Q3Shared_GetEditIndex(point);
+    TQ3PointData bad{{kNaN, 0, 0}, nullptr};
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(point, &bad), kQ3Failure), kQ3ErrorInvalidData);
+    bad = TQ3PointData{{5, 5, 5}, point};
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(point, &bad), kQ3Failure), kQ3ErrorInvalidObjectType);
+    EXPECT_EQ(Q3Shared_GetEditIndex(point), edit);
+    TQ3PointData out{};
+    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
+    EXPECT_EQ(out.point.x, 1.5f);
+    EXPECT_EQ(out.pointAttributeSet, nullptr);
+}
+
+TEST_F(PointApiTest, SetDataAndGetDataRejectBadArguments)
+{
+    TQ3GeometryObject point = own(Q3Point_New(&m_data));
+    TQ3AttributeSet notAPoint = own(Q3AttributeSet_New());
+    TQ3PointData out{{4, 4, 4}, nullptr};
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(nullptr, &m_data), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(point, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(notAPoint, &m_data), kQ3Failure), kQ3ErrorInvalidObjectType);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_GetData(nullptr, &out), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_GetData(point, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_GetData(notAPoint, &out), kQ3Failure), kQ3ErrorInvalidObjectType);
+    EXPECT_EQ(out.point.x, 4.0f);
+}
+
+TEST_F(PointApiTest, DuplicateCopiesTheAttributeSet)
+{
+    TQ3AttributeSet set = own(Q3AttributeSet_New());
+    m_data.pointAttributeSet = set;
+    TQ3GeometryObject point = own(Q3Point_New(&m_data));
+    TQ3GeometryObject copy = own(static_cast<TQ3GeometryObject>(Q3Object_Duplicate(point)));
+    ASSERT_NE(copy, nullptr);
+    EXPECT_EQ(Q3Object_GetLeafType(copy), kQ3GeometryTypePoint);
+    TQ3PointData out{};
+    ASSERT_EQ(Q3Point_GetData(copy, &out), kQ3Success);
+    EXPECT_EQ(out.point.z, 3.0f);
+    ASSERT_NE(out.pointAttributeSet, nullptr);
+    EXPECT_NE(out.pointAttributeSet, set);
+    Q3Object_Dispose(out.pointAttributeSet);
+}
+
+TEST_F(PointApiTest, SubmitOutsideALoopFailsWithViewNotStarted)
+{
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&m_data, view()), kQ3Failure), kQ3ErrorViewNotStarted);
+    TQ3GeometryObject point = own(Q3Point_New(&m_data));
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(point, view()), kQ3Failure), kQ3ErrorViewNotStarted);
+}
+
+TEST_F(PointApiTest, SubmitRejectsBadArguments)
+{
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(nullptr, view()), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&m_data, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+    TQ3AttributeSet notAView = own(Q3AttributeSet_New());
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&m_data, notAView), kQ3Failure), kQ3ErrorInvalidObjectType);
+}
+
+TEST_F(PointApiTest, PointsBoundTheirPositions)
+{
+    const TQ3PointData other{{-1, 4, 0}, nullptr};
+    TQ3GeometryObject point = own(Q3Point_New(&other));
+    const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
+        EXPECT_EQ(Q3Point_Submit(&m_data, v), kQ3Success);
+        EXPECT_EQ(Q3Geometry_Submit(point, v), kQ3Success);
+    });
+    EXPECT_EQ(box.isEmpty, kQ3False);
+    EXPECT_FLOAT_EQ(box.min.x, -1);
+    EXPECT_FLOAT_EQ(box.min.y, -2);
+    EXPECT_FLOAT_EQ(box.min.z, 0);
+    EXPECT_FLOAT_EQ(box.max.x, 1.5f);
+    EXPECT_FLOAT_EQ(box.max.y, 4);
+    EXPECT_FLOAT_EQ(box.max.z, 3);
+}
+
+TEST_F(PointApiTest, SubmitInsideALoopChecksTheDataRules)
+{
+    const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
+        const TQ3PointData nan{{0, kNaN, 0}, nullptr};
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&nan, v), kQ3Failure), kQ3ErrorInvalidData);
+        const TQ3PointData badSet{{0, 0, 0}, v};
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&badSet, v), kQ3Failure), kQ3ErrorInvalidObjectType);
+    });
+    EXPECT_EQ(box.isEmpty, kQ3True);
+}
+
+TEST(PointApiUninitialized, EveryFunctionFailsWithNotInitialized)
+{
+    ASSERT_EQ(Q3IsInitialized(), kQ3False);
+    TQ3PointData data{};
+    auto failed = [] { return Q3Error_Get(nullptr) == kQ3ErrorNotInitialized; };
+    EXPECT_EQ(Q3Point_New(&data), nullptr);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3Point_Submit(&data, nullptr), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3Point_GetData(nullptr, &data), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3Point_SetData(nullptr, &data), kQ3Failure);
+    EXPECT_TRUE(failed());
+}
+
+} // namespace

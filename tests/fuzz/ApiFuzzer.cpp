@@ -1,0 +1,1446 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+//
+// libFuzzer target: random sequences of Q3's public C API, decoded from the
+// fuzzer's bytes (format: FuzzInput.h). It plays a careless C caller that
+// never corrupts memory itself: it passes arbitrary values, NULL, disposed
+// handles, stray pointers and objects of the wrong class, but every array
+// it passes is as long as the counts it claims (Q3 cannot check that), and
+// it never releases a reference it does not hold (no reference count can
+// survive that).
+//
+// Besides the sanitizers, it aborts when Q3 breaks the contract its headers
+// state:
+//   - a call that fails (kQ3Failure, NULL, kQ3ViewStatusError, or a query's
+//     fallback) posts exactly one error, readable with Q3Error_Get and with a
+//     message; a call that succeeds posts none; kQ3ErrorInternalError (an
+//     unexpected exception) is never posted;
+//   - a failed edit leaves the object and its edit index unchanged, a failed
+//     getter leaves its output unchanged; a successful edit reads back;
+//   - a subdivision style is substituted exactly as QD3DStyle.h says, with
+//     one warning when anything was replaced;
+//   - a decomposed curve has at most kQ3SubdivisionMaxSegmentsPerCurve + 1
+//     vertices; a bounding box is never NaN;
+//   - after every input, once the fuzzer has disposed what it holds,
+//     Q3Memory_CountLiveObjects() is 0 and the last Q3Exit warns of nothing.
+// Work per input is bounded (control points, curve draws, loops, views) so
+// that no input takes more than a fraction of libFuzzer's -timeout.
+
+#include "CCaller.h"
+#include "FuzzInput.h"
+
+#include "QD3D.h"
+#include "QD3DCamera.h"
+#include "QD3DDrawContext.h"
+#include "QD3DErrors.h"
+#include "QD3DGeometry.h"
+#include "QD3DMath.h"
+#include "QD3DRenderer.h"
+#include "QD3DSet.h"
+#include "QD3DStyle.h"
+#include "QD3DTransform.h"
+#include "QD3DView.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace q3fuzz {
+namespace {
+
+// Bounds on the work one input may ask for.
+constexpr unsigned long kPointBudget = 4096;    // control points over all curve data built
+constexpr int kMaxCurveDraws = 24;              // curve and polyline submits and decompositions
+constexpr int kMaxOperations = 400;
+constexpr int kMaxViews = 3;
+constexpr int kMaxLoops = 24;                   // rendering and bounding loops started
+constexpr int kMaxDrawContexts = 6;
+constexpr std::size_t kMaxStale = 64;
+
+// What the callbacks saw during the current call.
+struct Posts {
+    int errors = 0;
+    int warnings = 0;
+    int notices = 0;
+    TQ3Warning lastWarning = kQ3WarningNone;
+};
+Posts g_posts;
+// Q3_FUZZ_TRACE=1 prints each operation, for checking what a seed decodes to.
+bool g_trace = false;
+
+void onError(TQ3Error, TQ3Error, long) { ++g_posts.errors; }
+void onWarning(TQ3Warning, TQ3Warning last, long)
+{
+    ++g_posts.warnings;
+    g_posts.lastWarning = last;
+}
+void onNotice(TQ3Notice, TQ3Notice, long) { ++g_posts.notices; }
+
+[[noreturn]] void die(const char* call, const char* why)
+{
+    std::fprintf(stderr, "q3 fuzz: %s: %s (Q3Error_Get %d, message \"%s\")\n", call, why,
+                 int(Q3Error_Get(nullptr)), Q3Error_GetMessage());
+    std::abort();
+}
+
+void require(bool condition, const char* call, const char* why)
+{
+    if (!condition)
+        die(call, why);
+}
+
+// Call before each API call (the macros below do).
+void begin() { g_posts = Posts{}; }
+
+// The error contract, read right after the call.
+void checkPosted(const char* call, bool failed)
+{
+    const TQ3Error error = Q3Error_Get(nullptr);
+    require(error != kQ3ErrorInternalError, call, "posted kQ3ErrorInternalError");
+    if (failed) {
+        require(error != kQ3ErrorNone, call, "failed without posting an error");
+        require(g_posts.errors == 1, call, "failed and did not post exactly one error");
+        require(Q3Error_GetMessage()[0] != '\0', call, "posted an error without a message");
+    } else {
+        require(error == kQ3ErrorNone && g_posts.errors == 0, call, "succeeded but posted an error");
+    }
+}
+
+TQ3Status checkStatus(const char* call, TQ3Status status)
+{
+    checkPosted(call, status == kQ3Failure);
+    return status;
+}
+
+TQ3Object checkObject(const char* call, TQ3Object object)
+{
+    checkPosted(call, object == nullptr);
+    return object;
+}
+
+TQ3ViewStatus checkViewStatus(const char* call, TQ3ViewStatus status)
+{
+    checkPosted(call, status == kQ3ViewStatusError);
+    return status;
+}
+
+// For calls whose result cannot say "failed": an error must come with the
+// documented fallback result.
+template <class T>
+T checkQuery(const char* call, T result, T fallback)
+{
+    const bool failed = Q3Error_Get(nullptr) != kQ3ErrorNone || g_posts.errors != 0;
+    checkPosted(call, failed);
+    if (failed)
+        require(result == fallback, call, "failed but did not return its fallback value");
+    return result;
+}
+
+#define STATUS(call) checkStatus(#call, (begin(), (call)))
+#define OBJECT(call) checkObject(#call, (begin(), (call)))
+#define VIEWSTATUS(call) checkViewStatus(#call, (begin(), (call)))
+#define QUERY(call, fallback) checkQuery(#call, (begin(), (call)), (fallback))
+
+// Stores a raw integer in an enum-typed field, as a C caller may.
+template <class E>
+void setRaw(E& field, std::int32_t raw)
+{
+    static_assert(sizeof(E) == sizeof(raw), "Q3's enums are int-sized");
+    std::memcpy(&field, &raw, sizeof raw);
+}
+
+template <class T>
+bool sameBytes(const T& a, const T& b)
+{
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
+                  kDrawContext, kRenderer, kView };
+
+struct Held {
+    TQ3Object handle;
+    Kind kind;
+};
+
+// A TQ3NURBCurveData and the arrays it points at. The arrays always hold at
+// least what the counts claim, unless numPoints claims more than a size_t can
+// address (which Q3 must reject before reading).
+struct CurveBuffers {
+    std::vector<TQ3RationalPoint4D> points;
+    std::vector<float> knots;
+    TQ3NURBCurveData data{};
+};
+
+// The substitution rule of QD3DStyle.h, written from the header.
+float expectedParameter(std::int32_t method, float value, bool& replaced)
+{
+    float result = value;
+    if (!std::isfinite(value))
+        result = kQ3SubdivisionDefaultC1;
+    else if (method == kQ3SubdivisionMethodConstant)
+        result = value < 1.0f ? 1.0f : std::min(value, float(kQ3SubdivisionMaxConstantSegments));
+    else if (value <= 0.0f)
+        result = kQ3SubdivisionDefaultC1;
+    if (!sameBytes(result, value))
+        replaced = true;
+    return result;
+}
+
+class Session {
+public:
+    explicit Session(Reader& in) : m_in(in) {}
+
+    void run()
+    {
+        require(Q3Memory_CountLiveObjects() == 0, "start of input", "objects alive from a previous input");
+        begin();
+        Q3Initialize();
+        require(g_posts.notices == 0 && g_posts.errors == 0, "Q3Initialize", "posted something");
+        m_initialized = 1;
+        for (int n = 0; n < kMaxOperations && !m_in.atEnd(); ++n)
+            step(static_cast<Op>(m_in.u8() % kOpCount));
+        finish();
+    }
+
+private:
+    // ---- Handles -----------------------------------------------------------
+
+    bool holds(TQ3Object handle) const
+    {
+        return std::any_of(m_held.begin(), m_held.end(), [&](const Held& h) { return h.handle == handle; });
+    }
+
+    const Held* heldEntry(TQ3Object handle) const
+    {
+        for (const Held& h : m_held)
+            if (h.handle == handle)
+                return &h;
+        return nullptr;
+    }
+
+    bool holdsKind(TQ3Object handle, Kind kind) const
+    {
+        const Held* h = heldEntry(handle);
+        return h != nullptr && h->kind == kind;
+    }
+
+    void hold(TQ3Object handle, Kind kind) { m_held.push_back({handle, kind}); }
+
+    // Gives back one held reference (the caller disposes it); forgets the
+    // object once the last one is gone.
+    void release(TQ3Object handle)
+    {
+        for (auto it = m_held.begin(); it != m_held.end(); ++it)
+            if (it->handle == handle) {
+                m_held.erase(it);
+                break;
+            }
+        if (!holds(handle)) {
+            m_curves.erase(handle);
+            if (m_stale.size() < kMaxStale)
+                m_stale.push_back(handle);
+        }
+    }
+
+    // A handle Q3 no longer knows: disposed, and its address not reused.
+    bool isDead(TQ3Object handle)
+    {
+        begin();
+        const TQ3ObjectType type = Q3Object_GetLeafType(handle);
+        return type == kQ3ObjectTypeInvalid && Q3Error_Get(nullptr) == kQ3ErrorInvalidObject;
+    }
+
+    TQ3Object pick(Kind wanted)
+    {
+        const std::uint8_t selector = m_in.u8();
+        const std::uint8_t which = m_in.u8();
+        if (selector < 200) {
+            std::vector<TQ3Object> candidates;
+            if (selector < 160)
+                for (const Held& h : m_held)
+                    if (h.kind == wanted)
+                        candidates.push_back(h.handle);
+            if (candidates.empty())
+                for (const Held& h : m_held)
+                    candidates.push_back(h.handle);
+            return candidates.empty() ? nullptr : candidates[which % candidates.size()];
+        }
+        if (selector < 215 || (selector < 235 && m_stale.empty()))
+            return nullptr;
+        if (selector < 235) {
+            const TQ3Object old = m_stale[which % m_stale.size()];
+            // A live address (reused, or kept alive by another object) is not
+            // ours to use as a dead one.
+            return m_initialized > 0 && !holds(old) && isDead(old) ? old : nullptr;
+        }
+        static unsigned char neverAnObject[64];
+        return reinterpret_cast<TQ3Object>(neverAnObject + 8 * (which % 8));
+    }
+
+    // ---- Values ------------------------------------------------------------
+
+    std::int32_t enumValue(std::int32_t validCount)
+    {
+        const std::uint8_t tag = m_in.u8();
+        if (tag < 224)
+            return tag % (validCount + 1);
+        return static_cast<std::int32_t>(m_in.u32());
+    }
+
+    TQ3Point3D point3() { return TQ3Point3D{m_in.value(), m_in.value(), m_in.value()}; }
+    TQ3Vector3D vector3() { return TQ3Vector3D{m_in.value(), m_in.value(), m_in.value()}; }
+
+    // ---- Curve data --------------------------------------------------------
+
+    unsigned long takePoints(unsigned long wanted, unsigned long minimum)
+    {
+        const unsigned long granted = std::max(std::min(wanted, m_pointBudget), minimum);
+        m_pointBudget -= std::min(granted, m_pointBudget);
+        return granted;
+    }
+
+    void readCurve(CurveBuffers& c)
+    {
+        const std::uint8_t flags = m_in.u8();
+        const std::uint8_t mode = flags & 3;
+        unsigned long order = (flags & kCurveRawOrder) ? m_in.u32() : 1 + m_in.u8() % 18;
+        if (mode == kCurveListing1)
+            order = 4;
+        // Arrays are sized with an order Q3 accepts, whatever the field says.
+        const unsigned long arrayOrder = std::clamp<unsigned long>(order, 2, 16);
+        unsigned long count = 0;
+        if (mode == kCurveListing1) {
+            count = takePoints(4, 4);
+            const TQ3RationalPoint4D listing[4] = {{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}};
+            c.points.assign(listing, listing + 4);
+            c.knots = {0, 0, 0, 0, 1, 1, 1, 1};
+        } else if (mode == kCurveRaw) {
+            // Bounded by the input too: 16 bytes per point at the least.
+            const unsigned long fits = m_in.remaining() / 20 + 1;
+            count = takePoints(std::min<unsigned long>(m_in.u8(), fits), 0);
+            c.points.resize(count);
+            for (TQ3RationalPoint4D& p : c.points)
+                p = TQ3RationalPoint4D{m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+            c.knots.resize(count + arrayOrder);
+            float knot = m_in.value();
+            for (float& k : c.knots) {
+                k = knot;
+                knot += float(m_in.u8() % 4);
+            }
+        } else {
+            count = takePoints(arrayOrder + m_in.u16() % kPointBudget, arrayOrder);
+            const float scale = m_in.value();
+            const std::uint8_t shape = m_in.u8();
+            c.points.resize(count);
+            for (unsigned long i = 0; i < count; ++i) {
+                const float t = float(i);
+                const float w = (shape & 1) ? 1.0f + float(i % 3) : 1.0f;
+                const float x = (shape & 2) ? std::cos(t) * scale : t * scale / float(count);
+                const float y = (shape & 4) ? std::sin(t) * scale : float(i % 2) * scale;
+                const float z = (shape & 8) ? t * scale : 0.0f;
+                c.points[i] = TQ3RationalPoint4D{x * w, y * w, z * w, w};
+            }
+            c.knots.resize(count + arrayOrder);
+            const unsigned long interior = count - arrayOrder;
+            for (unsigned long i = 0; i < c.knots.size(); ++i) {
+                const unsigned long clamped = std::min(std::max(i, arrayOrder - 1) - (arrayOrder - 1), interior + 1);
+                c.knots[i] = (shape & 16) ? float(i) : float(clamped);
+            }
+            if (mode == kCurveRawKnots)
+                for (float& k : c.knots)
+                    if (m_in.u8() & 1)
+                        k = m_in.value();
+        }
+        if (mode != kCurveRaw) {
+            // Patches: single values overwritten anywhere.
+            for (int n = m_in.u8() % 8; n > 0; --n) {
+                const std::uint8_t target = m_in.u8();
+                const float v = m_in.value();
+                if ((target & 1) && !c.knots.empty())
+                    c.knots[m_in.u16() % c.knots.size()] = v;
+                else if (!c.points.empty()) {
+                    float* p = &c.points[m_in.u16() % c.points.size()].x;
+                    p[target >> 6] = v;
+                }
+            }
+        }
+        c.data.order = order;
+        c.data.numPoints = count;
+        if (flags & kCurveShortCount) {
+            const std::uint16_t claimed = m_in.u16();
+            c.data.numPoints = count == 0 ? 0 : claimed % count;
+        }
+        if (flags & kCurveHugeCount)
+            c.data.numPoints = ~0UL - m_in.u8();
+        c.data.controlPoints = (flags & kCurveNullPoints) || c.points.empty() ? nullptr : c.points.data();
+        c.data.knots = (flags & kCurveNullKnots) || c.knots.empty() ? nullptr : c.knots.data();
+        c.data.curveAttributeSet = (flags & kCurveAttributes) ? pick(Kind::kAttributeSet) : nullptr;
+    }
+
+    struct CurveShape {
+        unsigned long order;
+        unsigned long numPoints;
+    };
+
+    // Checks that a held curve reads back as `c` described it.
+    void verifyCurve(TQ3Object curve, const TQ3NURBCurveData& expected)
+    {
+        TQ3NURBCurveData got{};
+        if (STATUS(Q3NURBCurve_GetData(curve, &got)) != kQ3Success)
+            die("Q3NURBCurve_GetData", "failed on a live curve");
+        require(got.order == expected.order && got.numPoints == expected.numPoints, "Q3NURBCurve_GetData",
+                "order or numPoints differ from what was set");
+        require(std::memcmp(got.controlPoints, expected.controlPoints,
+                            expected.numPoints * sizeof(TQ3RationalPoint4D)) == 0,
+                "Q3NURBCurve_GetData", "control points differ from what was set");
+        require(std::memcmp(got.knots, expected.knots, (expected.numPoints + expected.order) * sizeof(float)) == 0,
+                "Q3NURBCurve_GetData", "knots differ from what was set");
+        require(got.curveAttributeSet == expected.curveAttributeSet, "Q3NURBCurve_GetData",
+                "the attribute set differs from what was set");
+        STATUS(Q3NURBCurve_EmptyData(&got));
+        require(got.controlPoints == nullptr && got.knots == nullptr && got.curveAttributeSet == nullptr,
+                "Q3NURBCurve_EmptyData", "left pointers behind");
+    }
+
+    unsigned long editIndex(TQ3Object object) { return QUERY(Q3Shared_GetEditIndex(object), 0UL); }
+
+    bool drawAllowed()
+    {
+        if (m_curveDraws >= kMaxCurveDraws)
+            return false;
+        ++m_curveDraws;
+        return true;
+    }
+
+    // ---- Operations --------------------------------------------------------
+
+    void step(Op op)
+    {
+        if (g_trace)
+            std::fprintf(stderr, "q3 fuzz: op %u\n", unsigned(op));
+        switch (op) {
+        case Op::kNewCurve: newCurve(); break;
+        case Op::kCurveSetData: curveSetData(); break;
+        case Op::kCurveGetData: curveGetData(); break;
+        case Op::kSetKnot: setKnot(); break;
+        case Op::kGetKnot: getKnot(); break;
+        case Op::kSetControlPoint: setControlPoint(); break;
+        case Op::kGetControlPoint: getControlPoint(); break;
+        case Op::kDuplicate: duplicate(); break;
+        case Op::kDispose: dispose(); break;
+        case Op::kGetReference: getReference(); break;
+        case Op::kNewStyle: newStyle(); break;
+        case Op::kStyleSetGet: styleSetGet(); break;
+        case Op::kNewTransform: newTransform(); break;
+        case Op::kNewAttributeSet: attributeSet(); break;
+        case Op::kNewOtherGeometry: otherGeometry(); break;
+        case Op::kNewCamera: newCamera(); break;
+        case Op::kCameraEdit: cameraEdit(); break;
+        case Op::kNewDrawContext: newDrawContext(); break;
+        case Op::kDrawContextEdit: drawContextEdit(); break;
+        case Op::kNewRenderer: renderer(); break;
+        case Op::kNewView: newView(); break;
+        case Op::kViewSet: viewSet(); break;
+        case Op::kViewGet: viewGet(); break;
+        case Op::kStartRendering: startRendering(); break;
+        case Op::kEndRendering: VIEWSTATUS(Q3View_EndRendering(pick(Kind::kView))); break;
+        case Op::kStartBounding: startBounding(); break;
+        case Op::kEndBounding: endBounding(); break;
+        case Op::kSubmitRetained: submitRetained(); break;
+        case Op::kSubmitCurveImmediate: submitCurveImmediate(); break;
+        case Op::kSubmitStyleImmediate: submitStyleImmediate(); break;
+        case Op::kSubmitTransformImmediate: submitImmediate(); break;
+        case Op::kPushPop: pushPop(); break;
+        case Op::kDecompose: decompose(); break;
+        case Op::kViewState: viewState(); break;
+        case Op::kCancelSync: cancelSync(); break;
+        case Op::kObjectQueries: objectQueries(); break;
+        case Op::kInitializeExit: initializeExit(); break;
+        case Op::kCount: break;
+        }
+    }
+
+    void newCurve()
+    {
+        CurveBuffers c;
+        readCurve(c);
+        const TQ3Object curve = OBJECT(Q3NURBCurve_New(&c.data));
+        if (curve == nullptr)
+            return;
+        hold(curve, Kind::kCurve);
+        m_curves[curve] = CurveShape{c.data.order, c.data.numPoints};
+        verifyCurve(curve, c.data);
+    }
+
+    void curveSetData()
+    {
+        const TQ3Object curve = pick(Kind::kCurve);
+        CurveBuffers c;
+        readCurve(c);
+        const bool isCurve = holdsKind(curve, Kind::kCurve) && m_initialized > 0;
+        const unsigned long before = isCurve ? editIndex(curve) : 0;
+        const bool nullData = m_in.u8() == 0;
+        if (STATUS(Q3NURBCurve_SetData(curve, nullData ? nullptr : &c.data)) == kQ3Success) {
+            require(isCurve, "Q3NURBCurve_SetData", "accepted something that is not a held curve");
+            require(editIndex(curve) != before, "Q3NURBCurve_SetData", "did not change the edit index");
+            m_curves[curve] = CurveShape{c.data.order, c.data.numPoints};
+            verifyCurve(curve, c.data);
+        } else if (isCurve) {
+            require(editIndex(curve) == before, "Q3NURBCurve_SetData", "failed but changed the edit index");
+        }
+    }
+
+    void curveGetData()
+    {
+        const TQ3Object curve = pick(Kind::kCurve);
+        const bool nullData = m_in.u8() == 0;
+        TQ3NURBCurveData data;
+        std::memset(&data, 0xA5, sizeof data);
+        TQ3NURBCurveData untouched = data;
+        if (STATUS(Q3NURBCurve_GetData(curve, nullData ? nullptr : &data)) == kQ3Success) {
+            const auto shape = m_curves.find(curve);
+            require(shape != m_curves.end(), "Q3NURBCurve_GetData", "succeeded on something that is not a curve");
+            require(data.order == shape->second.order && data.numPoints == shape->second.numPoints,
+                    "Q3NURBCurve_GetData", "order or numPoints changed behind the caller's back");
+            STATUS(Q3NURBCurve_EmptyData(&data));
+            // Emptying again does nothing and succeeds.
+            if (STATUS(Q3NURBCurve_EmptyData(&data)) != kQ3Success)
+                die("Q3NURBCurve_EmptyData", "failed on emptied data");
+        } else {
+            require(sameBytes(data, untouched), "Q3NURBCurve_GetData", "failed but wrote its output");
+        }
+        if (m_in.u8() == 0)
+            STATUS(Q3NURBCurve_EmptyData(nullptr));
+    }
+
+    unsigned long knotCount(TQ3Object curve) const
+    {
+        const auto shape = m_curves.find(curve);
+        return shape == m_curves.end() ? 8 : shape->second.numPoints + shape->second.order;
+    }
+
+    unsigned long pointCount(TQ3Object curve) const
+    {
+        const auto shape = m_curves.find(curve);
+        return shape == m_curves.end() ? 4 : shape->second.numPoints;
+    }
+
+    bool inRangeOfHeldCurve(TQ3Object curve, unsigned long index, unsigned long count) const
+    {
+        return m_initialized > 0 && m_curves.count(curve) != 0 && index < count;
+    }
+
+    void setKnot()
+    {
+        const TQ3Object curve = pick(Kind::kCurve);
+        const unsigned long count = knotCount(curve);
+        const unsigned long index = m_in.index(count);
+        const float value = m_in.value();
+        const bool known = inRangeOfHeldCurve(curve, index, count);
+        float old = 0.0f;
+        unsigned long before = 0;
+        if (known) {
+            before = editIndex(curve);
+            STATUS(Q3NURBCurve_GetKnot(curve, index, &old));
+        }
+        if (STATUS(Q3NURBCurve_SetKnot(curve, index, value)) == kQ3Success) {
+            require(known, "Q3NURBCurve_SetKnot", "succeeded on an index or object it should reject");
+            float now = 0.0f;
+            STATUS(Q3NURBCurve_GetKnot(curve, index, &now));
+            require(sameBytes(now, value), "Q3NURBCurve_SetKnot", "the knot does not read back");
+            require(editIndex(curve) != before, "Q3NURBCurve_SetKnot", "did not change the edit index");
+        } else if (known) {
+            float now = 0.0f;
+            STATUS(Q3NURBCurve_GetKnot(curve, index, &now));
+            require(sameBytes(now, old), "Q3NURBCurve_SetKnot", "failed but changed the knot");
+            require(editIndex(curve) == before, "Q3NURBCurve_SetKnot", "failed but changed the edit index");
+        }
+    }
+
+    void getKnot()
+    {
+        const TQ3Object curve = pick(Kind::kCurve);
+        const unsigned long count = knotCount(curve);
+        const unsigned long index = m_in.index(count);
+        const bool nullOut = m_in.u8() == 0;
+        float value = -12345.0f;
+        const TQ3Status status = STATUS(Q3NURBCurve_GetKnot(curve, index, nullOut ? nullptr : &value));
+        if (inRangeOfHeldCurve(curve, index, count) && !nullOut)
+            require(status == kQ3Success, "Q3NURBCurve_GetKnot", "failed on a valid index");
+        if (status == kQ3Failure)
+            require(value == -12345.0f, "Q3NURBCurve_GetKnot", "failed but wrote its output");
+    }
+
+    void setControlPoint()
+    {
+        const TQ3Object curve = pick(Kind::kCurve);
+        const unsigned long count = pointCount(curve);
+        const unsigned long index = m_in.index(count);
+        const TQ3RationalPoint4D point{m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+        const bool nullPoint = m_in.u8() == 0;
+        const bool known = inRangeOfHeldCurve(curve, index, count);
+        TQ3RationalPoint4D old{};
+        unsigned long before = 0;
+        if (known) {
+            before = editIndex(curve);
+            STATUS(Q3NURBCurve_GetControlPoint(curve, index, &old));
+        }
+        if (STATUS(Q3NURBCurve_SetControlPoint(curve, index, nullPoint ? nullptr : &point)) == kQ3Success) {
+            require(known, "Q3NURBCurve_SetControlPoint", "succeeded on an index or object it should reject");
+            TQ3RationalPoint4D now{};
+            STATUS(Q3NURBCurve_GetControlPoint(curve, index, &now));
+            require(sameBytes(now, point), "Q3NURBCurve_SetControlPoint", "the point does not read back");
+            require(editIndex(curve) != before, "Q3NURBCurve_SetControlPoint", "did not change the edit index");
+        } else if (known) {
+            TQ3RationalPoint4D now{};
+            STATUS(Q3NURBCurve_GetControlPoint(curve, index, &now));
+            require(sameBytes(now, old), "Q3NURBCurve_SetControlPoint", "failed but changed the point");
+            require(editIndex(curve) == before, "Q3NURBCurve_SetControlPoint", "failed but changed the edit index");
+        }
+    }
+
+    void getControlPoint()
+    {
+        const TQ3Object curve = pick(Kind::kCurve);
+        const unsigned long count = pointCount(curve);
+        const unsigned long index = m_in.index(count);
+        const bool nullOut = m_in.u8() == 0;
+        TQ3RationalPoint4D point{-1, -2, -3, -4};
+        const TQ3RationalPoint4D untouched = point;
+        const TQ3Status status =
+            STATUS(Q3NURBCurve_GetControlPoint(curve, index, nullOut ? nullptr : &point));
+        if (inRangeOfHeldCurve(curve, index, count) && !nullOut)
+            require(status == kQ3Success, "Q3NURBCurve_GetControlPoint", "failed on a valid index");
+        if (status == kQ3Failure)
+            require(sameBytes(point, untouched), "Q3NURBCurve_GetControlPoint", "failed but wrote its output");
+    }
+
+    void duplicate()
+    {
+        const TQ3Object original = pick(Kind(m_in.u8() % 11));
+        const TQ3Object copy = OBJECT(Q3Object_Duplicate(original));
+        if (copy == nullptr)
+            return;
+        const Held* entry = heldEntry(original);
+        require(entry != nullptr && copy != original, "Q3Object_Duplicate", "copied something it should reject");
+        hold(copy, entry->kind);
+        const auto shape = m_curves.find(original);
+        if (shape != m_curves.end()) {
+            const CurveShape copied = shape->second;
+            m_curves[copy] = copied;
+            TQ3NURBCurveData data{};
+            STATUS(Q3NURBCurve_GetData(original, &data));
+            TQ3AttributeSet originalSet = data.curveAttributeSet;
+            // The copy has a copy of the attribute set, not the same one.
+            TQ3NURBCurveData copyData{};
+            STATUS(Q3NURBCurve_GetData(copy, &copyData));
+            require(copyData.order == data.order && copyData.numPoints == data.numPoints &&
+                        std::memcmp(copyData.controlPoints, data.controlPoints,
+                                    data.numPoints * sizeof(TQ3RationalPoint4D)) == 0 &&
+                        std::memcmp(copyData.knots, data.knots, (data.numPoints + data.order) * sizeof(float)) == 0,
+                    "Q3Object_Duplicate", "the copy of a curve differs from it");
+            require((originalSet == nullptr) == (copyData.curveAttributeSet == nullptr) &&
+                        (originalSet == nullptr || originalSet != copyData.curveAttributeSet),
+                    "Q3Object_Duplicate", "the copy does not have its own attribute set");
+            STATUS(Q3NURBCurve_EmptyData(&data));
+            STATUS(Q3NURBCurve_EmptyData(&copyData));
+        }
+    }
+
+    void dispose()
+    {
+        const TQ3Object object = pick(Kind(m_in.u8() % 11));
+        for (int times = 1 + m_in.u8() % 2; times > 0; --times) {
+            const bool held = holds(object);
+            const TQ3Status status = STATUS(Q3Object_Dispose(object));
+            if (m_initialized == 0)
+                continue;
+            if (held) {
+                require(status == kQ3Success, "Q3Object_Dispose", "failed on a held reference");
+                release(object);
+            } else {
+                require(status == kQ3Failure, "Q3Object_Dispose", "disposed something nobody held");
+                const TQ3Error expected = object == nullptr ? kQ3ErrorNULLParameter : kQ3ErrorInvalidObject;
+                require(Q3Error_Get(nullptr) == expected, "Q3Object_Dispose", "posted the wrong error");
+            }
+        }
+    }
+
+    void getReference()
+    {
+        const TQ3Object object = pick(Kind(m_in.u8() % 11));
+        const TQ3Object reference = OBJECT(Q3Shared_GetReference(object));
+        if (reference == nullptr)
+            return;
+        const Held* entry = heldEntry(object);
+        require(entry != nullptr && reference == object, "Q3Shared_GetReference", "referenced something odd");
+        hold(reference, entry->kind);
+        begin();
+        require(Q3Shared_IsReferenced(object) == kQ3True, "Q3Shared_IsReferenced", "missed a second reference");
+    }
+
+    TQ3SubdivisionStyleData readStyle(bool& replaced)
+    {
+        TQ3SubdivisionStyleData data{};
+        const std::int32_t method = enumValue(3);
+        setRaw(data.method, method);
+        data.c1 = m_in.value();
+        data.c2 = m_in.value();
+        replaced = false;
+        m_expectedStyle = data;
+        m_expectedStyle.c1 = expectedParameter(method, data.c1, replaced);
+        m_expectedStyle.c2 = expectedParameter(method, data.c2, replaced);
+        m_styleValid = method >= 0 && method <= 2;
+        return data;
+    }
+
+    void checkStyle(const char* call, TQ3Status status, bool replaced)
+    {
+        if (status == kQ3Success) {
+            require(m_styleValid, call, "accepted a method outside the enumeration");
+            require((g_posts.warnings == 1 && g_posts.lastWarning == kQ3WarningParameterOutOfRange) == replaced,
+                    call, "the substitution warning does not match QD3DStyle.h's rule");
+        }
+    }
+
+    void newStyle()
+    {
+        bool replaced = false;
+        const TQ3SubdivisionStyleData data = readStyle(replaced);
+        const TQ3Object style = OBJECT(Q3SubdivisionStyle_New(&data));
+        checkStyle("Q3SubdivisionStyle_New", style != nullptr ? kQ3Success : kQ3Failure, replaced);
+        if (style == nullptr)
+            return;
+        hold(style, Kind::kStyle);
+        TQ3SubdivisionStyleData got{};
+        STATUS(Q3SubdivisionStyle_GetData(style, &got));
+        require(sameBytes(got, m_expectedStyle), "Q3SubdivisionStyle_GetData",
+                "does not read back as QD3DStyle.h's substitution rule says");
+    }
+
+    void styleSetGet()
+    {
+        const TQ3Object style = pick(Kind::kStyle);
+        bool replaced = false;
+        const TQ3SubdivisionStyleData data = readStyle(replaced);
+        const bool nullData = m_in.u8() == 0;
+        const bool isStyle = holdsKind(style, Kind::kStyle) && m_initialized > 0;
+        TQ3SubdivisionStyleData before{};
+        unsigned long beforeIndex = 0;
+        if (isStyle) {
+            STATUS(Q3SubdivisionStyle_GetData(style, &before));
+            beforeIndex = editIndex(style);
+        }
+        const TQ3Status status = STATUS(Q3SubdivisionStyle_SetData(style, nullData ? nullptr : &data));
+        checkStyle("Q3SubdivisionStyle_SetData", status, replaced);
+        TQ3SubdivisionStyleData got;
+        std::memset(&got, 0x5A, sizeof got);
+        const TQ3SubdivisionStyleData untouched = got;
+        const TQ3Status read = STATUS(Q3SubdivisionStyle_GetData(style, m_in.u8() == 0 ? nullptr : &got));
+        if (read == kQ3Failure)
+            require(sameBytes(got, untouched), "Q3SubdivisionStyle_GetData", "failed but wrote its output");
+        else if (status == kQ3Success)
+            require(sameBytes(got, m_expectedStyle), "Q3SubdivisionStyle_SetData", "does not read back");
+        else if (isStyle) {
+            require(sameBytes(got, before), "Q3SubdivisionStyle_SetData", "failed but changed the style");
+            require(editIndex(style) == beforeIndex, "Q3SubdivisionStyle_SetData", "failed but changed the edit index");
+        }
+    }
+
+    TQ3Matrix4x4 readMatrix()
+    {
+        TQ3Matrix4x4 m{};
+        const std::uint8_t mode = m_in.u8();
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c)
+                m.value[r][c] = (mode & 1) ? m_in.value() : (r == c ? 1.0f : 0.0f);
+        if (!(mode & 1))
+            for (int n = mode >> 5; n > 0; --n)
+                m.value[m_in.u8() % 4][m_in.u8() % 4] = m_in.value();
+        return m;
+    }
+
+    void newTransform()
+    {
+        TQ3Object transform = nullptr;
+        switch (m_in.u8() % 6) {
+        case 0: {
+            const TQ3Matrix4x4 m = readMatrix();
+            transform = OBJECT(Q3MatrixTransform_New(m_in.u8() == 0 ? nullptr : &m));
+            break;
+        }
+        case 1: {
+            const TQ3Vector3D v = vector3();
+            transform = OBJECT(Q3TranslateTransform_New(m_in.u8() == 0 ? nullptr : &v));
+            break;
+        }
+        case 2: {
+            const TQ3Vector3D v = vector3();
+            transform = OBJECT(Q3ScaleTransform_New(m_in.u8() == 0 ? nullptr : &v));
+            break;
+        }
+        case 3: {
+            TQ3RotateTransformData data{};
+            setRaw(data.axis, enumValue(3));
+            data.radians = m_in.value();
+            transform = OBJECT(Q3RotateTransform_New(m_in.u8() == 0 ? nullptr : &data));
+            break;
+        }
+        case 4:
+            transform = OBJECT(Q3ResetTransform_New());
+            break;
+        default: {
+            // Q3's matrix helpers feed the transform, as an application's would.
+            TQ3Matrix4x4 m{};
+            const TQ3Point3D origin = point3();
+            const TQ3Vector3D axis = vector3();
+            const float angle = m_in.value();
+            begin();
+            const TQ3Matrix4x4* set = Q3Matrix4x4_SetRotateAboutAxis(&m, &origin, &axis, angle);
+            checkPosted("Q3Matrix4x4_SetRotateAboutAxis", set == nullptr);
+            transform = OBJECT(Q3MatrixTransform_New(&m));
+            break;
+        }
+        }
+        if (transform != nullptr)
+            hold(transform, Kind::kTransform);
+    }
+
+    void attributeSet()
+    {
+        TQ3Object set = nullptr;
+        if (m_in.u8() < 64) {
+            set = OBJECT(Q3AttributeSet_New());
+            if (set == nullptr)
+                return;
+            hold(set, Kind::kAttributeSet);
+        } else {
+            set = pick(Kind::kAttributeSet);
+        }
+        for (int n = 1 + m_in.u8() % 4; n > 0; --n) {
+            const std::uint8_t which = m_in.u8();
+            const TQ3AttributeType type = which < 240 ? TQ3AttributeType(which % 14) : TQ3AttributeType(m_in.u32());
+            // Large enough for any attribute's C type (TQ3Tangent2D is 24 bytes).
+            float data[8];
+            for (float& f : data)
+                f = m_in.value();
+            if (type == kQ3AttributeTypeHighlightState) {
+                const std::int32_t raw = enumValue(2);
+                std::memcpy(data, &raw, sizeof raw);
+            }
+            const bool nullData = m_in.u8() == 0;
+            switch (m_in.u8() % 5) {
+            case 0:
+                STATUS(Q3AttributeSet_Add(set, type, nullData ? nullptr : data));
+                break;
+            case 1: {
+                float out[8];
+                STATUS(Q3AttributeSet_Get(set, type, nullData ? nullptr : out));
+                break;
+            }
+            case 2:
+                QUERY(Q3AttributeSet_Contains(set, type), kQ3False);
+                break;
+            case 3:
+                STATUS(Q3AttributeSet_Clear(set, type));
+                break;
+            default:
+                STATUS(Q3AttributeSet_Empty(set));
+                break;
+            }
+        }
+    }
+
+    void otherGeometry()
+    {
+        const std::uint8_t which = m_in.u8() % 3;
+        TQ3AttributeSet sets[3] = {nullptr, nullptr, nullptr};
+        const std::uint8_t withSets = m_in.u8();
+        for (int i = 0; i < 3; ++i)
+            if (withSets & (1 << i))
+                sets[i] = pick(Kind::kAttributeSet);
+        TQ3Object geometry = nullptr;
+        Kind kind = Kind::kPoint;
+        if (which == 0) {
+            const TQ3PointData data{point3(), sets[0]};
+            geometry = OBJECT(Q3Point_New(&data));
+        } else if (which == 1) {
+            const TQ3LineData data{{{point3(), sets[0]}, {point3(), sets[1]}}, sets[2]};
+            geometry = OBJECT(Q3Line_New(&data));
+            kind = Kind::kLine;
+        } else {
+            std::vector<TQ3Vertex3D> vertices(m_in.u8() % 17);
+            for (TQ3Vertex3D& v : vertices)
+                v = TQ3Vertex3D{point3(), nullptr};
+            std::vector<TQ3AttributeSet> segmentSets(vertices.empty() ? 0 : vertices.size() - 1, sets[0]);
+            TQ3PolyLineData data{};
+            data.numVertices = vertices.size();
+            data.vertices = vertices.empty() ? nullptr : vertices.data();
+            data.segmentAttributeSet = (withSets & 8) && !segmentSets.empty() ? segmentSets.data() : nullptr;
+            data.polyLineAttributeSet = sets[1];
+            geometry = OBJECT(Q3PolyLine_New(&data));
+            kind = Kind::kPolyLine;
+        }
+        if (geometry != nullptr)
+            hold(geometry, kind);
+    }
+
+    TQ3CameraData readCameraData()
+    {
+        TQ3CameraData data{};
+        data.placement = {{1.5f, 0.5f, 10.0f}, {1.5f, 0.5f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+        data.range = {1.0f, 100.0f};
+        data.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
+        const std::uint8_t mode = m_in.u8();
+        if (mode & 1) {
+            data.placement = {point3(), point3(), vector3()};
+            data.range = {m_in.value(), m_in.value()};
+            data.viewPort = {{m_in.value(), m_in.value()}, m_in.value(), m_in.value()};
+        } else {
+            float* values = &data.placement.cameraLocation.x;
+            constexpr int kFloats = sizeof(TQ3CameraData) / sizeof(float);
+            for (int n = (mode >> 1) % 4; n > 0; --n)
+                values[m_in.u8() % kFloats] = m_in.value();
+        }
+        return data;
+    }
+
+    void newCamera()
+    {
+        TQ3Object camera = nullptr;
+        const bool nullData = m_in.u8() == 0;
+        switch (m_in.u8() % 3) {
+        case 0: {
+            TQ3OrthographicCameraData data{readCameraData(), -2.0f, 1.5f, 2.0f, -1.5f};
+            if (m_in.u8() & 1) {
+                data.left = m_in.value();
+                data.top = m_in.value();
+                data.right = m_in.value();
+                data.bottom = m_in.value();
+            }
+            camera = OBJECT(Q3OrthographicCamera_New(nullData ? nullptr : &data));
+            break;
+        }
+        case 1: {
+            TQ3ViewPlaneCameraData data{readCameraData(), 10.0f, 2.0f, 1.5f, 0.0f, 0.0f};
+            if (m_in.u8() & 1) {
+                data.viewPlane = m_in.value();
+                data.halfWidthAtViewPlane = m_in.value();
+                data.halfHeightAtViewPlane = m_in.value();
+                data.centerXOnViewPlane = m_in.value();
+                data.centerYOnViewPlane = m_in.value();
+            }
+            camera = OBJECT(Q3ViewPlaneCamera_New(nullData ? nullptr : &data));
+            break;
+        }
+        default: {
+            TQ3ViewAngleAspectCameraData data{readCameraData(), 0.8f, 1.0f};
+            if (m_in.u8() & 1) {
+                data.fov = m_in.value();
+                data.aspectRatioXToY = m_in.value();
+            }
+            camera = OBJECT(Q3ViewAngleAspectCamera_New(nullData ? nullptr : &data));
+            break;
+        }
+        }
+        if (camera != nullptr)
+            hold(camera, Kind::kCamera);
+    }
+
+    void cameraEdit()
+    {
+        const TQ3Object camera = pick(Kind::kCamera);
+        const bool nullArg = m_in.u8() == 0;
+        TQ3CameraData data = readCameraData();
+        TQ3Matrix4x4 matrix;
+        switch (m_in.u8() % 10) {
+        case 0: STATUS(Q3Camera_SetData(camera, nullArg ? nullptr : &data)); break;
+        case 1: STATUS(Q3Camera_GetData(camera, nullArg ? nullptr : &data)); break;
+        case 2: STATUS(Q3Camera_SetPlacement(camera, nullArg ? nullptr : &data.placement)); break;
+        case 3: STATUS(Q3Camera_SetRange(camera, nullArg ? nullptr : &data.range)); break;
+        case 4: STATUS(Q3Camera_SetViewPort(camera, nullArg ? nullptr : &data.viewPort)); break;
+        case 5: STATUS(Q3Camera_GetWorldToFrustum(camera, nullArg ? nullptr : &matrix)); break;
+        case 6: STATUS(Q3Camera_GetViewToFrustum(camera, nullArg ? nullptr : &matrix)); break;
+        case 7: STATUS(Q3Camera_GetWorldToView(camera, nullArg ? nullptr : &matrix)); break;
+        case 8: QUERY(Q3Camera_GetType(camera), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+        default: {
+            TQ3ViewAngleAspectCameraData angle{data, m_in.value(), m_in.value()};
+            STATUS(Q3ViewAngleAspectCamera_SetData(camera, nullArg ? nullptr : &angle));
+            break;
+        }
+        }
+    }
+
+    // A pixmap over memory that lives until the end of the input and is as
+    // large as the pixmap claims.
+    TQ3Pixmap readPixmap()
+    {
+        TQ3Pixmap pixmap{};
+        const std::uint8_t shape = m_in.u8();
+        static const unsigned long kSizes[] = {32, 24, 16, 16, 16, 24};
+        const std::int32_t type = enumValue(6);
+        setRaw(pixmap.pixelType, type);
+        const unsigned long bits = type >= 0 && type < 6 ? kSizes[type] : 32;
+        pixmap.pixelSize = (shape & 1) ? m_in.u8() : bits;
+        if (shape & 2) {
+            // A wide strip, up to beyond what the renderer supports.
+            pixmap.width = m_in.u16();
+            pixmap.height = m_in.u8() % 3;
+        } else {
+            pixmap.width = m_in.u8() % 70;
+            pixmap.height = m_in.u8() % 70;
+        }
+        pixmap.rowBytes = pixmap.width * ((bits + 7) / 8) + m_in.u8() % 8;
+        if (shape & 4)
+            pixmap.rowBytes = m_in.u16() % (pixmap.rowBytes + 1);
+        setRaw(pixmap.byteOrder, enumValue(2));
+        setRaw(pixmap.bitOrder, enumValue(2));
+        const std::size_t bytes = std::max<std::size_t>(pixmap.rowBytes, pixmap.width * 4) *
+                                      std::max<std::size_t>(pixmap.height, 1) + 8;
+        m_images.push_back(std::make_unique<std::vector<unsigned char>>(bytes, 0x5A));
+        pixmap.image = (shape & 8) ? nullptr : m_images.back()->data();
+        return pixmap;
+    }
+
+    TQ3DrawContextData readDrawContextData()
+    {
+        TQ3DrawContextData data{};
+        setRaw(data.clearImageMethod, enumValue(2));
+        data.clearImageColor = {m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+        data.pane = {{m_in.value(), m_in.value()}, {m_in.value(), m_in.value()}};
+        setRaw(data.paneState, enumValue(2));
+        setRaw(data.maskState, enumValue(2));
+        setRaw(data.doubleBufferState, enumValue(2));
+        return data;
+    }
+
+    void newDrawContext()
+    {
+        if (m_drawContexts >= kMaxDrawContexts)
+            return;
+        ++m_drawContexts;
+        TQ3PixmapDrawContextData data{};
+        data.drawContextData = readDrawContextData();
+        data.pixmap = readPixmap();
+        const TQ3Object context = OBJECT(Q3PixmapDrawContext_New(m_in.u8() == 0 ? nullptr : &data));
+        if (context != nullptr)
+            hold(context, Kind::kDrawContext);
+    }
+
+    void drawContextEdit()
+    {
+        const TQ3Object context = pick(Kind::kDrawContext);
+        const bool nullArg = m_in.u8() == 0;
+        TQ3DrawContextData data = readDrawContextData();
+        switch (m_in.u8() % 12) {
+        case 0: STATUS(Q3DrawContext_SetData(context, nullArg ? nullptr : &data)); break;
+        case 1: STATUS(Q3DrawContext_GetData(context, nullArg ? nullptr : &data)); break;
+        case 2: STATUS(Q3DrawContext_SetClearImageColor(context, nullArg ? nullptr : &data.clearImageColor)); break;
+        case 3: STATUS(Q3DrawContext_GetClearImageColor(context, nullArg ? nullptr : &data.clearImageColor)); break;
+        case 4: STATUS(Q3DrawContext_SetPane(context, nullArg ? nullptr : &data.pane)); break;
+        case 5: STATUS(Q3DrawContext_GetPane(context, nullArg ? nullptr : &data.pane)); break;
+        case 6: STATUS(q3fuzz_SetPaneState(context, enumValue(2))); break;
+        case 7: STATUS(Q3DrawContext_GetPaneState(context, nullArg ? nullptr : &data.paneState)); break;
+        case 8: STATUS(q3fuzz_SetClearImageMethod(context, enumValue(2))); break;
+        case 9: STATUS(Q3DrawContext_GetClearImageMethod(context, nullArg ? nullptr : &data.clearImageMethod)); break;
+        case 10: {
+            if (m_drawContexts >= kMaxDrawContexts)
+                break;
+            ++m_drawContexts;
+            const TQ3Pixmap pixmap = readPixmap();
+            STATUS(Q3PixmapDrawContext_SetPixmap(context, nullArg ? nullptr : &pixmap));
+            break;
+        }
+        default: {
+            TQ3Pixmap pixmap{};
+            STATUS(Q3PixmapDrawContext_GetPixmap(context, nullArg ? nullptr : &pixmap));
+            QUERY(Q3DrawContext_GetType(context), TQ3ObjectType{kQ3ObjectTypeInvalid});
+            break;
+        }
+        }
+    }
+
+    TQ3ObjectType rendererType()
+    {
+        static const TQ3ObjectType kTypes[] = {kQ3RendererTypeInteractive, kQ3RendererTypeWireFrame,
+                                               kQ3RendererTypeGeneric, kQ3ObjectTypeView, 0};
+        const std::uint8_t which = m_in.u8();
+        return which < 250 ? kTypes[which % 5] : TQ3ObjectType(static_cast<std::int32_t>(m_in.u32()));
+    }
+
+    void renderer()
+    {
+        if (m_in.u8() < 128) {
+            const TQ3Object renderer = OBJECT(Q3Renderer_NewFromType(rendererType()));
+            if (renderer != nullptr)
+                hold(renderer, Kind::kRenderer);
+            return;
+        }
+        const TQ3Object renderer = pick(Kind::kRenderer);
+        const bool nullArg = m_in.u8() == 0;
+        TQ3CSGEquation equation{};
+        setRaw(equation, static_cast<std::int32_t>(m_in.u32()));
+        long vendor = 0, engine = 0;
+        TQ3Boolean bypass{};
+        unsigned long value = 0;
+        switch (m_in.u8() % 10) {
+        case 0: STATUS(Q3InteractiveRenderer_SetCSGEquation(renderer, equation)); break;
+        case 1: STATUS(Q3InteractiveRenderer_GetCSGEquation(renderer, nullArg ? nullptr : &equation)); break;
+        case 2: STATUS(Q3InteractiveRenderer_SetPreferences(renderer, long(m_in.u32()), long(m_in.u32()))); break;
+        case 3: STATUS(Q3InteractiveRenderer_GetPreferences(renderer, nullArg ? nullptr : &vendor, &engine)); break;
+        case 4: STATUS(q3fuzz_SetDoubleBufferBypass(renderer, enumValue(2))); break;
+        case 5: STATUS(Q3InteractiveRenderer_GetDoubleBufferBypass(renderer, nullArg ? nullptr : &bypass)); break;
+        case 6: STATUS(Q3InteractiveRenderer_SetRAVEContextHints(renderer, m_in.u32())); break;
+        case 7: STATUS(Q3InteractiveRenderer_GetRAVETextureFilter(renderer, nullArg ? nullptr : &value)); break;
+        case 8: STATUS(Q3InteractiveRenderer_SetRAVETextureFilter(renderer, m_in.u32())); break;
+        default: QUERY(Q3Renderer_GetType(renderer), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+        }
+    }
+
+    void newView()
+    {
+        if (m_views >= kMaxViews)
+            return;
+        ++m_views;
+        const TQ3Object view = OBJECT(Q3View_New());
+        if (view == nullptr)
+            return;
+        hold(view, Kind::kView);
+        // Most views get everything they need at once.
+        if (m_in.u8() < 200) {
+            STATUS(Q3View_SetCamera(view, pick(Kind::kCamera)));
+            STATUS(Q3View_SetDrawContext(view, pick(Kind::kDrawContext)));
+            STATUS(Q3View_SetRendererByType(view, rendererType()));
+        }
+    }
+
+    void viewSet()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        switch (m_in.u8() % 4) {
+        case 0: STATUS(Q3View_SetCamera(view, pick(Kind::kCamera))); break;
+        case 1: STATUS(Q3View_SetDrawContext(view, pick(Kind::kDrawContext))); break;
+        case 2: STATUS(Q3View_SetRenderer(view, pick(Kind::kRenderer))); break;
+        default: STATUS(Q3View_SetRendererByType(view, rendererType())); break;
+        }
+    }
+
+    void viewGet()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        const bool nullOut = m_in.u8() == 0;
+        TQ3Object got = nullptr;
+        Kind kind = Kind::kCamera;
+        TQ3Status status = kQ3Failure;
+        switch (m_in.u8() % 3) {
+        case 0:
+            status = STATUS(Q3View_GetCamera(view, nullOut ? nullptr : &got));
+            break;
+        case 1:
+            status = STATUS(Q3View_GetDrawContext(view, nullOut ? nullptr : &got));
+            kind = Kind::kDrawContext;
+            break;
+        default:
+            status = STATUS(Q3View_GetRenderer(view, nullOut ? nullptr : &got));
+            kind = Kind::kRenderer;
+            break;
+        }
+        if (status == kQ3Success && got != nullptr)
+            hold(got, kind);
+    }
+
+    void startRendering()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        if (m_loops >= kMaxLoops)
+            return;
+        ++m_loops;
+        STATUS(Q3View_StartRendering(view));
+    }
+
+    void startBounding()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        const int mode = enumValue(2);
+        if (m_loops >= kMaxLoops)
+            return;
+        ++m_loops;
+        if (m_in.u8() & 1)
+            STATUS(q3fuzz_StartBoundingBox(view, mode));
+        else
+            STATUS(q3fuzz_StartBoundingSphere(view, mode));
+    }
+
+    void endBounding()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        const bool nullOut = m_in.u8() == 0;
+        if (m_in.u8() & 1) {
+            TQ3BoundingBox box;
+            std::memset(&box, 0x5A, sizeof box);
+            const TQ3BoundingBox untouched = box;
+            const TQ3ViewStatus status = VIEWSTATUS(Q3View_EndBoundingBox(view, nullOut ? nullptr : &box));
+            if (status == kQ3ViewStatusDone && !box.isEmpty) {
+                const float* low = &box.min.x;
+                const float* high = &box.max.x;
+                for (int i = 0; i < 3; ++i)
+                    require(low[i] <= high[i], "Q3View_EndBoundingBox", "gave a NaN or inverted box");
+            } else if (status != kQ3ViewStatusDone) {
+                require(sameBytes(box, untouched), "Q3View_EndBoundingBox", "wrote its result without finishing");
+            }
+        } else {
+            TQ3BoundingSphere sphere;
+            std::memset(&sphere, 0x5A, sizeof sphere);
+            const TQ3ViewStatus status = VIEWSTATUS(Q3View_EndBoundingSphere(view, nullOut ? nullptr : &sphere));
+            if (status == kQ3ViewStatusDone && !sphere.isEmpty)
+                require(sphere.radius >= 0.0f, "Q3View_EndBoundingSphere", "gave a NaN or negative radius");
+        }
+    }
+
+    void submitRetained()
+    {
+        const TQ3Object object = pick(Kind(m_in.u8() % 11));
+        const TQ3Object view = pick(Kind::kView);
+        const Held* entry = heldEntry(object);
+        if (entry != nullptr && (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine) && !drawAllowed())
+            return;
+        switch (m_in.u8() % 3) {
+        case 0: STATUS(Q3Geometry_Submit(object, view)); break;
+        case 1: STATUS(Q3Object_Submit(object, view)); break;
+        default: STATUS(Q3AttributeSet_Submit(object, view)); break;
+        }
+    }
+
+    void submitCurveImmediate()
+    {
+        CurveBuffers c;
+        readCurve(c);
+        const TQ3Object view = pick(Kind::kView);
+        if (!drawAllowed())
+            return;
+        STATUS(Q3NURBCurve_Submit(m_in.u8() == 0 ? nullptr : &c.data, view));
+    }
+
+    void submitStyleImmediate()
+    {
+        bool replaced = false;
+        const TQ3SubdivisionStyleData data = readStyle(replaced);
+        const TQ3Object view = pick(Kind::kView);
+        const TQ3Status status = STATUS(Q3SubdivisionStyle_Submit(m_in.u8() == 0 ? nullptr : &data, view));
+        checkStyle("Q3SubdivisionStyle_Submit", status, replaced);
+        if (status == kQ3Success) {
+            // Unless the loop was cancelled (then the style is ignored), the
+            // view's state is now the substituted style.
+            TQ3SubdivisionStyleData state{};
+            STATUS(Q3View_GetSubdivisionStyleState(view, &state));
+        }
+    }
+
+    void submitImmediate()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        const bool nullData = m_in.u8() == 0;
+        switch (m_in.u8() % 8) {
+        case 0: {
+            const TQ3Matrix4x4 m = readMatrix();
+            STATUS(Q3MatrixTransform_Submit(nullData ? nullptr : &m, view));
+            break;
+        }
+        case 1: {
+            const TQ3Vector3D v = vector3();
+            STATUS(Q3TranslateTransform_Submit(nullData ? nullptr : &v, view));
+            break;
+        }
+        case 2: {
+            const TQ3Vector3D v = vector3();
+            STATUS(Q3ScaleTransform_Submit(nullData ? nullptr : &v, view));
+            break;
+        }
+        case 3: {
+            TQ3RotateTransformData data{};
+            setRaw(data.axis, enumValue(3));
+            data.radians = m_in.value();
+            STATUS(Q3RotateTransform_Submit(nullData ? nullptr : &data, view));
+            break;
+        }
+        case 4:
+            STATUS(Q3ResetTransform_Submit(view));
+            break;
+        case 5: {
+            const TQ3PointData data{point3(), nullptr};
+            STATUS(Q3Point_Submit(nullData ? nullptr : &data, view));
+            break;
+        }
+        case 6: {
+            const TQ3LineData data{{{point3(), nullptr}, {point3(), nullptr}}, nullptr};
+            STATUS(Q3Line_Submit(nullData ? nullptr : &data, view));
+            break;
+        }
+        default: {
+            TQ3Vertex3D vertices[4] = {{point3(), nullptr}, {point3(), nullptr}, {point3(), nullptr},
+                                       {point3(), nullptr}};
+            TQ3PolyLineData data{1u + m_in.u8() % 4, vertices, nullptr, nullptr};
+            STATUS(Q3PolyLine_Submit(nullData ? nullptr : &data, view));
+            break;
+        }
+        }
+    }
+
+    void pushPop()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        if (m_in.u8() & 1)
+            STATUS(Q3Push_Submit(view));
+        else
+            STATUS(Q3Pop_Submit(view));
+    }
+
+    void decompose()
+    {
+        const TQ3Object geometry = pick(Kind::kCurve);
+        const TQ3Object view = pick(Kind::kView);
+        if (!drawAllowed())
+            return;
+        begin();
+        const TQ3Object polyline = Q3Geometry_GetDecomposed(geometry, view);
+        const bool posted = Q3Error_Get(nullptr) != kQ3ErrorNone;
+        checkPosted("Q3Geometry_GetDecomposed", posted);
+        if (polyline == nullptr) {
+            if (!posted) {
+                const Held* entry = heldEntry(geometry);
+                require(entry != nullptr && (entry->kind == Kind::kPolyLine || entry->kind == Kind::kLine ||
+                                             entry->kind == Kind::kPoint),
+                        "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a geometry");
+            }
+            return;
+        }
+        require(!posted && holdsKind(geometry, Kind::kCurve), "Q3Geometry_GetDecomposed",
+                "decomposed something that is not a curve");
+        hold(polyline, Kind::kPolyLine);
+        TQ3PolyLineData data{};
+        STATUS(Q3PolyLine_GetData(polyline, &data));
+        require(data.numVertices >= 2 && data.numVertices <= (unsigned long)kQ3SubdivisionMaxSegmentsPerCurve + 1,
+                "Q3Geometry_GetDecomposed", "the polyline's vertex count is outside 2 .. cap + 1");
+        STATUS(Q3PolyLine_EmptyData(&data));
+    }
+
+    void viewState()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        const bool nullOut = m_in.u8() == 0;
+        if (m_in.u8() & 1) {
+            TQ3Matrix4x4 m;
+            STATUS(Q3View_GetLocalToWorldMatrixState(view, nullOut ? nullptr : &m));
+        } else {
+            TQ3SubdivisionStyleData style;
+            STATUS(Q3View_GetSubdivisionStyleState(view, nullOut ? nullptr : &style));
+        }
+    }
+
+    void cancelSync()
+    {
+        const TQ3Object view = pick(Kind::kView);
+        if (m_in.u8() & 1)
+            STATUS(Q3View_Cancel(view));
+        else
+            STATUS(Q3View_Sync(view));
+    }
+
+    void objectQueries()
+    {
+        const TQ3Object object = pick(Kind(m_in.u8() % 11));
+        constexpr TQ3ObjectType kInvalid = kQ3ObjectTypeInvalid;
+        switch (m_in.u8() % 11) {
+        case 0: QUERY(Q3Object_GetType(object), kInvalid); break;
+        case 1: QUERY(Q3Object_GetLeafType(object), kInvalid); break;
+        case 2: QUERY(Q3Object_IsType(object, TQ3ObjectType(static_cast<std::int32_t>(m_in.u32()))), kQ3False); break;
+        case 3: QUERY(Q3Object_IsDrawable(object), kQ3False); break;
+        case 4: QUERY(Q3Shared_GetType(object), kInvalid); break;
+        case 5: QUERY(Q3Shared_IsReferenced(object), kQ3False); break;
+        case 6: QUERY(Q3Shared_GetEditIndex(object), 0UL); break;
+        case 7: STATUS(Q3Shared_Edited(object)); break;
+        case 8: QUERY(Q3Shape_GetType(object), kInvalid); break;
+        case 9: QUERY(Q3Geometry_GetType(object), kInvalid); break;
+        default: QUERY(Q3Camera_GetType(object), kInvalid); break;
+        }
+    }
+
+    void initializeExit()
+    {
+        if (m_in.u8() & 1) {
+            if (m_initialized >= 3)
+                return;
+            begin();
+            Q3Initialize();
+            require(g_posts.errors == 0, "Q3Initialize", "posted an error");
+            require((g_posts.notices == 1) == (m_initialized > 0), "Q3Initialize", "the nesting notice is wrong");
+            ++m_initialized;
+            return;
+        }
+        const TQ3Status status = STATUS(Q3Exit());
+        require((status == kQ3Success) == (m_initialized > 0), "Q3Exit", "disagrees about being initialized");
+        if (m_initialized > 0)
+            --m_initialized;
+    }
+
+    void finish()
+    {
+        while (m_initialized == 0) {
+            begin();
+            Q3Initialize();
+            ++m_initialized;
+        }
+        while (!m_held.empty()) {
+            const TQ3Object object = m_held.back().handle;
+            if (STATUS(Q3Object_Dispose(object)) != kQ3Success)
+                die("Q3Object_Dispose", "failed to release a held reference at the end");
+            m_held.pop_back();
+        }
+        require(Q3Memory_CountLiveObjects() == 0, "end of input", "objects are still alive: a leak");
+        for (; m_initialized > 0; --m_initialized) {
+            if (STATUS(Q3Exit()) != kQ3Success)
+                die("Q3Exit", "failed");
+            require(g_posts.warnings == 0, "Q3Exit", "warned at the end of a leak-free input");
+        }
+    }
+
+    Reader& m_in;
+    int m_initialized = 0;
+    std::vector<Held> m_held;
+    std::vector<TQ3Object> m_stale;
+    std::map<TQ3Object, CurveShape> m_curves;
+    std::vector<std::unique_ptr<std::vector<unsigned char>>> m_images;
+    unsigned long m_pointBudget = kPointBudget;
+    int m_curveDraws = 0;
+    int m_views = 0;
+    int m_loops = 0;
+    int m_drawContexts = 0;
+    TQ3SubdivisionStyleData m_expectedStyle{};
+    bool m_styleValid = false;
+};
+
+} // namespace
+} // namespace q3fuzz
+
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+    q3fuzz::g_trace = std::getenv("Q3_FUZZ_TRACE") != nullptr;
+    Q3Error_Register(&q3fuzz::onError, 0);
+    Q3Warning_Register(&q3fuzz::onWarning, 0);
+    Q3Notice_Register(&q3fuzz::onNotice, 0);
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    q3fuzz::Reader in(data, size);
+    q3fuzz::Session(in).run();
+    return 0;
+}

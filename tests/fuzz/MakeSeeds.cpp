@@ -1,0 +1,566 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+//
+// Writes the API fuzzer's seed corpus: one small input per scenario, each a
+// sensible use of the API (the article's Listing 1 drawn in retained and
+// immediate mode, bounded, decomposed) or one class of bad input from
+// docs/robustness.md. Usage: q3_fuzz_seeds DIRECTORY. Run with
+// Q3_FUZZ_TRACE=1 q3_fuzz_api FILE to see what a seed decodes to.
+
+#include "FuzzInput.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace {
+
+using q3fuzz::Op;
+
+// Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
+enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
+                           kDrawContext, kRenderer, kView };
+
+enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
+
+struct Patch {
+    std::uint8_t target; // bit 0: knot; bits 6-7: point component
+    float value;
+    std::uint16_t index;
+};
+
+// Each method writes one operation exactly as ApiFuzzer.cpp reads it.
+class Seed : public q3fuzz::BasicWriter<Seed> {
+public:
+    Seed& listing1Curve(const std::vector<Patch>& patches = {}, std::uint8_t flags = 0)
+    {
+        u8(q3fuzz::kCurveListing1 | flags).u8(3);
+        writePatches(patches);
+        return curveTail(flags);
+    }
+
+    // A clamped uniform curve of order + extra points on a shape (bits: 1
+    // weights, 2 cos, 4 sin, 8 helix, 16 unclamped knots).
+    Seed& generatedCurve(std::uint8_t order, std::uint16_t extra, float scale, std::uint8_t shape,
+                         const std::vector<Patch>& patches = {}, std::uint8_t flags = 0)
+    {
+        u8(q3fuzz::kCurveGenerated | flags).u8(order - 1).u16(extra).value(scale).u8(shape);
+        writePatches(patches);
+        return curveTail(flags);
+    }
+
+    // Every value given: count points (x, y, z, w), the first knot and
+    // count + order knot steps.
+    Seed& rawCurve(std::uint8_t order, const std::vector<float>& xyzw, float firstKnot,
+                   const std::vector<std::uint8_t>& steps, std::uint8_t flags = 0)
+    {
+        u8(q3fuzz::kCurveRaw | flags).u8(order - 1).u8(std::uint8_t(xyzw.size() / 4));
+        for (float v : xyzw)
+            value(v);
+        value(firstKnot);
+        for (std::uint8_t s : steps)
+            u8(s);
+        return curveTail(flags);
+    }
+
+    Seed& newCurveListing1(const std::vector<Patch>& patches = {})
+    {
+        op(Op::kNewCurve);
+        return listing1Curve(patches);
+    }
+
+    // Camera, 64 x 64 ARGB32 pixmap draw context, view with an interactive
+    // renderer; cameraKind 0 orthographic (Listing 1 framed), 1 view plane,
+    // 2 view angle aspect.
+    Seed& scene(std::uint8_t cameraKind = 0, std::uint16_t size = 64)
+    {
+        op(Op::kNewCamera).u8(1).u8(cameraKind).u8(0).u8(0);
+        op(Op::kNewDrawContext);
+        drawContextData();
+        pixmap(1, std::uint8_t(size), std::uint8_t(size));
+        u8(1);
+        op(Op::kNewView).u8(0).held().held().u8(0);
+        return *this;
+    }
+
+    Seed& drawContextData()
+    {
+        u8(1);                             // clear with colour
+        value(1).value(0).value(0).value(0); // opaque black
+        value(0).value(0).value(64).value(64);
+        return u8(0).u8(0).u8(0);          // pane, mask and double buffer off
+    }
+
+    Seed& pixmap(std::uint8_t type, std::uint8_t width, std::uint8_t height, std::uint8_t shape = 0)
+    {
+        u8(shape).u8(type);
+        if (shape & 1)
+            u8(32);
+        if (shape & 2)
+            u16(width).u8(height);
+        else
+            u8(width).u8(height);
+        u8(0);
+        if (shape & 4)
+            u16(width);
+        return u8(0).u8(0);
+    }
+
+    Seed& style(std::uint8_t method, float c1, float c2 = 20.0f) { return u8(method).value(c1).value(c2); }
+
+    Seed& startRendering() { op(Op::kStartRendering).held(); return *this; }
+    Seed& endRendering() { op(Op::kEndRendering).held(); return *this; }
+    Seed& startBox(std::uint8_t mode = 0) { op(Op::kStartBounding).held().u8(mode).u8(1); return *this; }
+    Seed& endBox() { op(Op::kEndBounding).held().u8(1).u8(1); return *this; }
+    Seed& startSphere(std::uint8_t mode = 0) { op(Op::kStartBounding).held().u8(mode).u8(0); return *this; }
+    Seed& endSphere() { op(Op::kEndBounding).held().u8(1).u8(0); return *this; }
+
+    Seed& submitHeld(Kind kind, std::uint8_t which = 0, std::uint8_t call = 0)
+    {
+        op(Op::kSubmitRetained).u8(kind).held(which).held().u8(call);
+        return *this;
+    }
+    Seed& submitStyle(std::uint8_t method, float c1)
+    {
+        op(Op::kSubmitStyleImmediate);
+        style(method, c1);
+        held().u8(1);
+        return *this;
+    }
+    Seed& decompose(std::uint8_t which = 0)
+    {
+        op(Op::kDecompose).held(which).held();
+        return *this;
+    }
+    Seed& dispose(Kind kind, std::uint8_t which = 0, bool twice = false)
+    {
+        op(Op::kDispose).u8(kind).held(which).u8(twice ? 1 : 0);
+        return *this;
+    }
+
+private:
+    void writePatches(const std::vector<Patch>& patches)
+    {
+        u8(std::uint8_t(patches.size()));
+        for (const Patch& p : patches)
+            u8(p.target).value(p.value).u16(p.index);
+    }
+
+    Seed& curveTail(std::uint8_t flags)
+    {
+        if (flags & q3fuzz::kCurveShortCount)
+            u16(2);
+        if (flags & q3fuzz::kCurveHugeCount)
+            u8(0);
+        if (flags & q3fuzz::kCurveAttributes)
+            held();
+        return *this;
+    }
+};
+
+constexpr float kNaN = __builtin_nanf("");
+constexpr float kInf = __builtin_inff();
+
+std::vector<std::pair<std::string, Seed>> seeds()
+{
+    std::vector<std::pair<std::string, Seed>> all;
+    auto add = [&](const char* name) -> Seed& {
+        all.emplace_back(name, Seed{});
+        return all.back().second;
+    };
+
+    // The article's Listing 1, retained: New, render, dispose.
+    add("listing1-retained").scene().newCurveListing1().startRendering().submitHeld(kCurve).endRendering()
+        .dispose(kCurve);
+    // The same curve in immediate mode, then bounded as a box and a sphere.
+    {
+        Seed& s = add("listing1-immediate");
+        s.scene().startRendering();
+        s.op(Op::kSubmitCurveImmediate).listing1Curve().held().u8(1);
+        s.endRendering();
+    }
+    add("listing1-bounds").newCurveListing1().op(Op::kNewView).u8(255);
+    all.back().second.startBox().submitHeld(kCurve).endBox().startSphere(1).submitHeld(kCurve).endSphere();
+    // Decomposed under each subdivision method.
+    {
+        Seed& s = add("listing1-decompose");
+        s.scene().newCurveListing1().startRendering();
+        s.submitStyle(kConstant, 10).decompose().submitStyle(kWorld, 0.1f).decompose();
+        s.submitStyle(kScreen, 2).decompose().endRendering();
+    }
+    // Perspective cameras.
+    add("listing1-viewplane").scene(1).newCurveListing1().startRendering().submitHeld(kCurve).endRendering();
+    add("listing1-viewangle").scene(2).newCurveListing1().startRendering().submitHeld(kCurve).endRendering();
+    // The largest curve an input may make: 4096 points of order 16, drawn
+    // with as many constant segments as allowed (the segment cap).
+    {
+        Seed& s = add("huge-curve-constant");
+        s.scene().op(Op::kNewCurve).generatedCurve(16, 4080, 1.5f, 2 | 4);
+        s.startRendering().submitStyle(kConstant, 1024).submitHeld(kCurve).decompose().endRendering();
+    }
+    // A world-space c1 a million times smaller than the curve.
+    {
+        Seed& s = add("tiny-world-c1");
+        s.scene().newCurveListing1().startRendering().submitStyle(kWorld, 3e-6f).decompose().endRendering();
+    }
+    // A perspective camera inside a helix around it.
+    {
+        Seed& s = add("camera-inside-curve");
+        s.op(Op::kNewCamera).u8(1).u8(2).u8(1);
+        s.value(0).value(0).value(0).value(0).value(0).value(-1).value(0).value(1).value(0);
+        s.value(0.01f).value(100).value(-1).value(1).value(2).value(2).u8(0);
+        s.op(Op::kNewDrawContext).drawContextData().pixmap(1, 64, 64).u8(1);
+        s.op(Op::kNewView).u8(0).held().held().u8(0);
+        s.op(Op::kNewCurve).generatedCurve(4, 200, 3.0f, 2 | 4 | 8);
+        s.startRendering().submitStyle(kScreen, 0.5f);
+        s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(1).value(0).value(0).value(-300);
+        s.submitHeld(kCurve).decompose().endRendering();
+    }
+    // Style substitutions: NaN, infinity, zero, negative, too many segments.
+    {
+        Seed& s = add("style-substitutions");
+        s.op(Op::kNewStyle).u8(kConstant).special(0).special(1);
+        s.op(Op::kNewStyle).u8(kWorld).value(0).value(-1);
+        s.op(Op::kNewStyle).u8(kScreen).special(2).value(-0.25f);
+        s.op(Op::kNewStyle).u8(kConstant).value(2000).special(7);
+        s.op(Op::kStyleSetGet).held().style(kConstant, 0.5f).u8(1).u8(1);
+    }
+    {
+        Seed& s = add("style-bad-method");
+        s.op(Op::kNewStyle).u8(kBadMethod).value(1).value(1);
+        s.op(Op::kNewStyle).u8(255).u32(0x7FFFFFFF).value(1).value(1);
+        s.op(Op::kNewStyle).u8(kWorld).value(1).value(1);
+        s.op(Op::kStyleSetGet).held().u8(255).u32(0xFFFFFFFF).value(2).value(2).u8(1).u8(1);
+    }
+    // Knot edits at 0, the last index, one past it and UINT32_MAX, with good
+    // values, NaN, infinity and ones that break the knot rules.
+    {
+        Seed& s = add("knot-edits");
+        s.newCurveListing1();
+        s.op(Op::kSetKnot).held().smallIndex(0).value(-1);
+        s.op(Op::kSetKnot).held().u8(1).value(2);
+        s.op(Op::kSetKnot).held().u8(2).value(1);
+        s.op(Op::kSetKnot).held().rawIndex(0xFFFFFFFF).value(1);
+        s.op(Op::kSetKnot).held().smallIndex(3).special(0);
+        s.op(Op::kSetKnot).held().smallIndex(4).special(1);
+        s.op(Op::kSetKnot).held().smallIndex(4).value(0);
+        s.op(Op::kSetKnot).held().smallIndex(4).value(0.5f);
+        s.op(Op::kGetKnot).held().u8(2).u8(1);
+        s.op(Op::kGetKnot).held().rawIndex(0xFFFFFFFF).u8(1);
+        s.op(Op::kGetKnot).held().smallIndex(0).u8(0);
+    }
+    {
+        Seed& s = add("control-point-edits");
+        s.newCurveListing1();
+        s.op(Op::kSetControlPoint).held().smallIndex(1).value(5).value(5).value(5).value(2).u8(1);
+        s.op(Op::kSetControlPoint).held().u8(1).value(1).value(1).value(1).value(0).u8(1);
+        s.op(Op::kSetControlPoint).held().u8(2).value(1).value(1).value(1).value(1).u8(1);
+        s.op(Op::kSetControlPoint).held().smallIndex(0).special(0).value(1).value(1).value(1).u8(1);
+        s.op(Op::kSetControlPoint).held().smallIndex(0).value(1).value(1).value(1).value(-1).u8(1);
+        s.op(Op::kSetControlPoint).held().rawIndex(0xFFFFFFFF).value(1).value(1).value(1).value(1).u8(1);
+        s.op(Op::kSetControlPoint).held().smallIndex(0).value(1).value(1).value(1).value(1).u8(0);
+        s.op(Op::kGetControlPoint).held().u8(1).u8(1);
+        s.op(Op::kGetControlPoint).held().u8(2).u8(1);
+    }
+    // Whole-curve data: SetData with good and bad data, GetData, EmptyData.
+    {
+        Seed& s = add("curve-set-get-data");
+        s.newCurveListing1();
+        s.op(Op::kCurveSetData).held().generatedCurve(3, 10, 2.0f, 1).u8(1);
+        s.op(Op::kCurveSetData).held().generatedCurve(17, 10, 2.0f, 0).u8(1);
+        s.op(Op::kCurveSetData).held().generatedCurve(1, 10, 2.0f, 0).u8(1);
+        s.op(Op::kCurveSetData).held().listing1Curve({}, q3fuzz::kCurveShortCount).u8(1);
+        s.op(Op::kCurveSetData).held().listing1Curve({}, q3fuzz::kCurveHugeCount).u8(1);
+        s.op(Op::kCurveSetData).held().listing1Curve({}, q3fuzz::kCurveNullPoints).u8(1);
+        s.op(Op::kCurveSetData).held().listing1Curve({}, q3fuzz::kCurveNullKnots).u8(1);
+        s.op(Op::kCurveSetData).held().listing1Curve().u8(0);
+        s.op(Op::kCurveGetData).held().u8(1).u8(0);
+        s.op(Op::kCurveGetData).held().u8(0).u8(1);
+    }
+    // Bad knot vectors: decreasing, too long a run, NaN, empty domain.
+    {
+        Seed& s = add("bad-knot-vectors");
+        s.newCurveListing1({{1, 2.0f, 1}});
+        s.newCurveListing1({{1, 0.0f, 4}, {1, 0.0f, 5}, {1, 0.0f, 6}, {1, 0.0f, 7}});
+        s.newCurveListing1({{1, kNaN, 3}});
+        s.newCurveListing1({{1, kInf, 7}});
+        s.op(Op::kNewCurve).generatedCurve(4, 6, 1.0f, 0, {{1, 1.0f, 5}, {1, 1.0f, 6}, {1, 1.0f, 7}});
+    }
+    // Bad control points: NaN, infinity, zero and negative weights.
+    {
+        Seed& s = add("bad-control-points");
+        s.newCurveListing1({{0, kNaN, 0}});
+        s.newCurveListing1({{64, kInf, 1}});
+        s.newCurveListing1({{192, 0.0f, 2}});
+        s.newCurveListing1({{192, -1.0f, 3}});
+        s.op(Op::kNewCurve).rawCurve(2, {0, 0, 0, 1, 1, 1, 1, 1}, 0, {0, 1, 0, 0});
+        s.op(Op::kNewCurve).rawCurve(3, {0, 0, 0, 1, 1, 1, 1, 1}, 0, {0, 0, 1, 0, 0});
+    }
+    // Handles: duplicate, double dispose, use after dispose, a stray pointer
+    // and objects of the wrong class.
+    {
+        Seed& s = add("handles-lifetime");
+        s.newCurveListing1();
+        s.op(Op::kDuplicate).u8(kCurve).held();
+        s.op(Op::kGetReference).u8(kCurve).held(1);
+        s.dispose(kCurve, 0, true);
+        s.op(Op::kSetKnot).stale().smallIndex(0).value(0);
+        s.op(Op::kDispose).u8(kCurve).stale().u8(1);
+        s.op(Op::kGetKnot).stray().smallIndex(0).u8(1);
+        s.op(Op::kDispose).u8(kCurve).stray(3).u8(0);
+        s.op(Op::kDispose).u8(kCurve).null().u8(0);
+        s.op(Op::kObjectQueries).u8(kCurve).stale().u8(1);
+        s.op(Op::kObjectQueries).u8(kCurve).held().u8(7);
+    }
+    {
+        Seed& s = add("handles-wrong-class");
+        s.op(Op::kNewStyle).u8(kConstant).value(4).value(4);
+        s.newCurveListing1();
+        s.op(Op::kSetKnot).held(0).smallIndex(0).value(0);
+        s.op(Op::kSetKnot).anyHeld(0).smallIndex(0).value(0);
+        s.op(Op::kStyleSetGet).anyHeld(1).style(kWorld, 1).u8(1).u8(1);
+        s.op(Op::kNewView).u8(255);
+        s.op(Op::kSetControlPoint).anyHeld(2).smallIndex(0).value(0).value(0).value(0).value(1).u8(1);
+        s.op(Op::kViewSet).anyHeld(1).u8(0).anyHeld(0);
+        s.op(Op::kGetReference).u8(kView).anyHeld(2);
+        s.op(Op::kDuplicate).u8(kView).anyHeld(2);
+        for (std::uint8_t q = 0; q < 11; ++q)
+            s.op(Op::kObjectQueries).u8(kView).anyHeld(q % 3).u8(q);
+    }
+    // Submitting outside a loop, ending loops that never started, unbalanced
+    // pops, nested starts, and disposing a view inside its loop.
+    {
+        Seed& s = add("loops-misuse");
+        s.scene().newCurveListing1();
+        s.submitHeld(kCurve).op(Op::kPushPop).held().u8(0).endRendering().endBox();
+        s.startRendering().startRendering().startBox();
+        s.op(Op::kPushPop).held().u8(0).op(Op::kPushPop).held().u8(1).op(Op::kPushPop).held().u8(0);
+        s.op(Op::kPushPop).held().u8(0).endBox().endRendering().endRendering();
+        s.startRendering().submitHeld(kCurve).op(Op::kCancelSync).held().u8(0).dispose(kView);
+    }
+    {
+        Seed& s = add("view-cancel-sync");
+        s.scene().newCurveListing1().startRendering();
+        s.op(Op::kCancelSync).held().u8(1).submitHeld(kCurve).op(Op::kCancelSync).held().u8(0);
+        s.endRendering().op(Op::kCancelSync).held().u8(0).op(Op::kCancelSync).held().u8(1);
+        s.startBox().op(Op::kCancelSync).held().u8(1).endBox();
+    }
+    // Transforms with NaN and infinities, retained and immediate.
+    {
+        Seed& s = add("transforms-nonfinite");
+        s.scene().newCurveListing1();
+        s.op(Op::kNewTransform).u8(1).value(1).value(2).value(3).u8(1);
+        s.op(Op::kNewTransform).u8(1).special(0).value(0).value(0).u8(1);
+        s.op(Op::kNewTransform).u8(2).special(1).value(1).value(1).u8(1);
+        s.op(Op::kNewTransform).u8(3).u8(2).value(0.5f).u8(1);
+        s.op(Op::kNewTransform).u8(3).u8(3).value(0.5f).u8(1);
+        s.op(Op::kNewTransform).u8(0).u8(0x20).u8(3).u8(3).special(2).u8(1);
+        s.op(Op::kNewTransform).u8(4);
+        s.op(Op::kNewTransform).u8(5).value(0).value(0).value(0).value(0).value(0).value(0).value(1);
+        s.startRendering().submitHeld(kTransform, 0).submitHeld(kTransform, 1).submitHeld(kCurve);
+        s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(1).special(1).value(0).value(0);
+        s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(2).value(0).value(0).value(0);
+        s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(0).u8(1);
+        for (int i = 0; i < 16; ++i)
+            s.special(std::uint8_t(i == 5 ? 0 : 12));
+        s.submitHeld(kCurve).op(Op::kViewState).held().u8(1).u8(1).endRendering();
+    }
+    // Cameras with every kind of bad value.
+    {
+        Seed& s = add("cameras-bad-values");
+        auto raw = [&](std::uint8_t kind, std::vector<float> values) {
+            s.op(Op::kNewCamera).u8(1).u8(kind).u8(1);
+            for (float v : values)
+                s.value(v);
+            s.u8(0);
+        };
+        raw(0, {kNaN, 0, 10, 0, 0, 0, 0, 1, 0, 1, 100, -1, 1, 2, 2});
+        raw(1, {0, 0, 10, 0, 0, 10, 0, 1, 0, 1, 100, -1, 1, 2, 2});
+        raw(2, {0, 0, 10, 0, 0, 0, 0, 0, 1, 1, 100, -1, 1, 2, 2});
+        raw(2, {0, 0, 10, 0, 0, 0, 0, 1, 0, 0, 100, -1, 1, 2, 2});
+        raw(0, {0, 0, 10, 0, 0, 0, 0, 1, 0, 5, 1, -1, 1, 2, 2});
+        s.op(Op::kNewCamera).u8(1).u8(2).u8(0).u8(1).value(4).value(1);
+        s.op(Op::kNewCamera).u8(1).u8(2).u8(2).u8(13).value(-1).u8(0);
+        s.op(Op::kNewCamera).u8(1).u8(0).u8(0).u8(1).value(1).value(0).value(1).value(0);
+        s.op(Op::kNewCamera).u8(0).u8(0).u8(0).u8(0);
+        s.op(Op::kNewCamera).u8(1).u8(0).u8(0).u8(0);
+        for (std::uint8_t which = 0; which < 10; ++which) {
+            s.op(Op::kCameraEdit).held().u8(1).u8(2).u8(9).special(0).u8(which);
+            if (which == 9)
+                s.value(0).value(1);
+        }
+        s.op(Op::kCameraEdit).held().u8(0).u8(0).u8(2);
+    }
+    // Bad pixmaps: NULL image, pixel type and size mismatch, zero size, rows
+    // too short, wider than the renderer supports.
+    {
+        Seed& s = add("pixmaps-bad");
+        s.op(Op::kNewDrawContext).drawContextData().pixmap(1, 16, 16, 8).u8(1);
+        s.op(Op::kNewDrawContext).drawContextData().pixmap(6, 16, 16).u8(1);
+        s.op(Op::kNewDrawContext).drawContextData().pixmap(2, 16, 16, 1).u8(1);
+        s.op(Op::kNewDrawContext).drawContextData().pixmap(1, 0, 16).u8(1);
+        s.op(Op::kNewDrawContext).drawContextData().pixmap(1, 16, 16, 4).u8(1);
+        s.op(Op::kNewCamera).u8(1).u8(0).u8(0).u8(0);
+        s.op(Op::kNewDrawContext).drawContextData();
+        s.u8(2).u8(1).u16(20000).u8(1).u8(0).u8(0).u8(0).u8(1);
+        s.op(Op::kNewView).u8(0).held().held().u8(0).startRendering().endRendering();
+    }
+    {
+        Seed& s = add("pixmaps-every-type");
+        s.op(Op::kNewCamera).u8(1).u8(0).u8(0).u8(0);
+        for (std::uint8_t type = 0; type < 6; ++type)
+            s.op(Op::kNewDrawContext).drawContextData().pixmap(type, 33, 17).u8(1);
+        s.op(Op::kNewView).u8(0).held().held(3).u8(1).newCurveListing1();
+        s.startRendering().submitHeld(kCurve).endRendering();
+        s.op(Op::kViewSet).held().u8(1).held(5).startRendering().submitHeld(kCurve).endRendering();
+    }
+    // Draw context edits: panes (empty, inverted, huge, NaN), clear colours.
+    {
+        Seed& s = add("draw-context-edits");
+        s.scene().newCurveListing1();
+        s.op(Op::kDrawContextEdit).held().u8(1);
+        s.u8(1).value(1).value(1).value(0).value(0).value(10).value(10).value(50).value(40).u8(1).u8(0).u8(0);
+        s.u8(0);
+        s.op(Op::kDrawContextEdit).held().u8(1);
+        s.u8(1).special(0).value(1).value(0).value(0).value(10).value(10).value(5).value(40).u8(1).u8(0).u8(0);
+        s.u8(4);
+        s.op(Op::kDrawContextEdit).held().u8(1);
+        s.u8(1).value(1).value(1).value(0).value(0).special(6).value(0).special(5).value(40).u8(1).u8(0).u8(0);
+        s.u8(0);
+        s.op(Op::kDrawContextEdit).held().u8(1).drawContextData().u8(6).u8(2);
+        s.op(Op::kDrawContextEdit).held().u8(1).drawContextData().u8(8).u8(255).u32(7);
+        s.startRendering().submitHeld(kCurve).endRendering();
+    }
+    // Renderers: every type code, and the stored interactive settings.
+    {
+        Seed& s = add("renderers");
+        for (std::uint8_t type = 0; type < 5; ++type)
+            s.op(Op::kNewRenderer).u8(0).u8(type);
+        s.op(Op::kNewRenderer).u8(0).u8(255).u32(0x12345678);
+        for (std::uint8_t which = 0; which < 10; ++which) {
+            s.op(Op::kNewRenderer).u8(200).held(which % 2).u8(1).u32(0x88888888).u8(which);
+            if (which == 2)
+                s.u32(5).u32(6);
+            else if (which == 4)
+                s.u8(2);
+            else if (which == 6 || which == 8)
+                s.u32(7);
+        }
+        s.scene().op(Op::kViewSet).held().u8(2).held(1).op(Op::kViewGet).held().u8(1).u8(2);
+        s.op(Op::kViewGet).held().u8(1).u8(0).op(Op::kViewGet).held().u8(1).u8(1).op(Op::kViewGet).held().u8(0).u8(0);
+    }
+    // Attribute sets on curves, submitted, with colours out of range.
+    {
+        Seed& s = add("attribute-sets");
+        s.op(Op::kNewAttributeSet).u8(0).u8(3);
+        s.u8(5).value(1).value(0).value(0).value(0).value(0).value(0).value(0).value(0).u8(1).u8(0);
+        s.u8(10).value(0).value(0).value(0).value(0).value(0).value(0).value(0).value(0).u8(2).u8(1).u8(0);
+        s.u8(200).value(0).value(0).value(0).value(0).value(0).value(0).value(0).value(0).u8(1).u8(0);
+        s.u8(11).value(0).value(0).value(0).value(0).value(0).value(0).value(0).value(0).u8(1).u8(0);
+        s.op(Op::kNewCurve).listing1Curve({}, q3fuzz::kCurveAttributes);
+        s.scene().startRendering().submitHeld(kAttributeSet, 0, 2).submitHeld(kCurve).endRendering();
+        s.op(Op::kDuplicate).u8(kCurve).held();
+        s.dispose(kAttributeSet).op(Op::kNewCurve).listing1Curve({}, q3fuzz::kCurveAttributes);
+    }
+    // Points, lines and polylines next to the curves.
+    {
+        Seed& s = add("other-geometry");
+        s.op(Op::kNewOtherGeometry).u8(0).u8(0).value(1).value(1).value(1);
+        s.op(Op::kNewOtherGeometry).u8(1).u8(0).value(0).value(0).value(0).value(1).value(1).value(0);
+        s.op(Op::kNewOtherGeometry).u8(2).u8(0).u8(3).value(0).value(0).value(0).value(1).value(0).value(0);
+        s.value(1).value(1).value(0);
+        s.op(Op::kNewOtherGeometry).u8(2).u8(0).u8(1).value(0).value(0).value(0);
+        s.op(Op::kNewOtherGeometry).u8(0).u8(0).special(0).value(1).value(1);
+        s.scene().startRendering().submitHeld(kPoint).submitHeld(kLine).submitHeld(kPolyLine);
+        s.decompose(0).op(Op::kDecompose).u8(0).u8(1).held();
+        s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(4);
+        s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(5).value(1).value(2).value(0);
+        s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(6).value(0).value(0).value(0).value(1).value(1).value(1);
+        s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(7);
+        for (int i = 0; i < 12; ++i)
+            s.value(float(i % 3));
+        s.u8(2);
+        s.endRendering().startBox().submitHeld(kPolyLine).submitHeld(kPoint).endBox();
+    }
+    // Q3Exit while objects live, calls while not initialized, nesting.
+    {
+        Seed& s = add("initialize-exit");
+        s.newCurveListing1().op(Op::kInitializeExit).u8(1).op(Op::kInitializeExit).u8(0);
+        s.op(Op::kInitializeExit).u8(0).op(Op::kInitializeExit).u8(0);
+        s.op(Op::kSetKnot).held().smallIndex(0).value(0).dispose(kCurve);
+        s.op(Op::kNewStyle).u8(0).value(1).value(1).op(Op::kInitializeExit).u8(1);
+        s.op(Op::kSetKnot).held().smallIndex(0).value(0);
+    }
+    // Raw curves: every value from the input.
+    {
+        Seed& s = add("raw-curves");
+        s.op(Op::kNewCurve).rawCurve(2, {0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1}, 0, {0, 0, 1, 1, 0});
+        s.op(Op::kNewCurve).rawCurve(3, {0, 0, 0, 1, 1, 2, 0, 1, 2, 0, 0, 1}, 0, {0, 0, 1, 0, 0, 0});
+        s.scene().startRendering().submitHeld(kCurve, 0).submitHeld(kCurve, 1).endRendering();
+        s.op(Op::kNewCurve).generatedCurve(5, 40, 2.0f, 1 | 2 | 4 | 16);
+        s.startBox(1).submitHeld(kCurve, 2).endBox();
+    }
+    {
+        Seed& s = add("curve-raw-order");
+        s.op(Op::kNewCurve).u8(q3fuzz::kCurveListing1 | q3fuzz::kCurveRawOrder).u32(0xFFFFFFFF).u8(0);
+        s.op(Op::kNewCurve).u8(q3fuzz::kCurveGenerated | q3fuzz::kCurveRawOrder).u32(16).u16(100);
+        s.value(1).u8(2).u8(0);
+        s.op(Op::kNewCurve).u8(q3fuzz::kCurveGenerated | q3fuzz::kCurveRawOrder).u32(0).u16(3).value(1).u8(0).u8(0);
+    }
+    // Screen-space subdivision with c1 under a pixel on a large pane.
+    {
+        Seed& s = add("screen-space-fine");
+        s.scene(2).op(Op::kNewCurve).generatedCurve(4, 300, 1.0f, 2 | 4);
+        s.startRendering().submitStyle(kScreen, 0.01f).submitHeld(kCurve).decompose().endRendering();
+        s.startRendering().submitStyle(kConstant, 3).submitHeld(kCurve).endRendering();
+    }
+    // One retained curve drawn by two views, then edited between frames.
+    {
+        Seed& s = add("two-views-one-curve");
+        s.scene().scene(2).newCurveListing1();
+        s.op(Op::kStartRendering).held(0).op(Op::kStartRendering).held(1);
+        s.op(Op::kSubmitRetained).u8(kCurve).held().held(0).u8(0);
+        s.op(Op::kSubmitRetained).u8(kCurve).held().held(1).u8(1);
+        s.op(Op::kEndRendering).held(1).op(Op::kEndRendering).held(0);
+        s.op(Op::kSetKnot).held().smallIndex(7).value(2);
+        s.op(Op::kStartRendering).held(1).op(Op::kSubmitRetained).u8(kCurve).held().held(1).u8(0);
+        s.op(Op::kEndRendering).held(1);
+    }
+    // Immediate-mode submits of bad curve data inside a loop.
+    {
+        Seed& s = add("immediate-bad-curves");
+        s.scene().startRendering();
+        s.op(Op::kSubmitCurveImmediate).listing1Curve({{1, kNaN, 2}}).held().u8(1);
+        s.op(Op::kSubmitCurveImmediate).listing1Curve({}, q3fuzz::kCurveNullKnots).held().u8(1);
+        s.op(Op::kSubmitCurveImmediate).listing1Curve({}, q3fuzz::kCurveHugeCount).held().u8(1);
+        s.op(Op::kSubmitCurveImmediate).listing1Curve().held().u8(0);
+        s.op(Op::kSubmitCurveImmediate).listing1Curve().stray().u8(1);
+        s.endRendering();
+    }
+    return all;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: %s DIRECTORY\n", argv[0]);
+        return 2;
+    }
+    for (const auto& [name, seed] : seeds()) {
+        const std::string path = std::string(argv[1]) + "/" + name;
+        std::FILE* file = std::fopen(path.c_str(), "wb");
+        if (file == nullptr) {
+            std::perror(path.c_str());
+            return 1;
+        }
+        const std::vector<std::uint8_t>& bytes = seed.bytes();
+        const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+        if (std::fclose(file) != 0 || !ok) {
+            std::perror(path.c_str());
+            return 1;
+        }
+    }
+    return 0;
+}
