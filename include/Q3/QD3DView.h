@@ -168,9 +168,10 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_GetRenderer(TQ3ViewObject view, TQ3RendererObj
 /* ---- Rendering loop ----------------------------------------------------- */
 
 /**
- * Starts a rendering loop: clears the draw context's image (or its pane) as
- * its clear method says and begins the first traversal from the default
- * state. The view reads its camera and draw context here.
+ * Starts a rendering loop and its first traversal from the default state.
+ * The view reads its camera and draw context here and starts a frame that
+ * is cleared as the clear method says; the caller's pixmap is written (only
+ * its pane, when the pane state is on) when Q3View_EndRendering returns.
  *
  * @param view  the view; it needs a draw context, a camera and a renderer.
  * @return kQ3Success, or kQ3Failure with no loop started.
@@ -185,6 +186,12 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_GetRenderer(TQ3ViewObject view, TQ3RendererObj
  *   kQ3ErrorDrawContextNotSet  view has no draw context.
  *   kQ3ErrorCameraNotSet       view has no camera.
  *   kQ3ErrorRendererNotSet     view has no renderer.
+ *   kQ3ErrorInvalidData        the pixmap's width, height or rowBytes do not
+ *                              fit in 32 bits.
+ *   kQ3ErrorInvalidParameter   the pixmap or pane is larger than the
+ *                              rasterizer's limit (16384 pixels a side).
+ *   kQ3ErrorRenderingLoopFailed  no offscreen rasterizer (llvmpipe) could
+ *                              be created.
  *   kQ3ErrorOutOfMemory        the renderer cannot allocate its buffers.
  *
  * Ownership: no references change.
@@ -240,10 +247,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_Sync(TQ3ViewObject view);
 
 /*
  * A bounding loop needs no renderer, camera or draw context. It measures, in
- * world coordinates, what a rendering loop would draw: a NURB curve counts as
- * the line segments it is subdivided into. When the view has no camera or no
- * draw context, a screen-space subdivision style is applied as if it were
- * world-space with the same c1.
+ * world coordinates, what a rendering loop would submit. As the article
+ * says, a NURB curve is bounded by its control points projected to 3D
+ * (x/w, y/w, z/w), not by the curve itself (the box encloses the curve, since
+ * a NURB curve with positive weights lies in their convex hull). Points,
+ * lines and polylines are bounded by their vertices.
  */
 
 /**

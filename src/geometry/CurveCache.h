@@ -23,6 +23,9 @@ struct CurveCache {
     /// The last tessellation, x y z per vertex, in the curve's local space.
     std::vector<float> polyline;
     bool valid = false;
+    /// Whether building the polyline gave in to the segment cap; a reuse of
+    /// the polyline posts the same warning again.
+    bool capped = false;
     /// How many times the polyline has been (re)built; tests read it.
     std::uint64_t tessellations = 0;
 
@@ -32,6 +35,7 @@ struct CurveCache {
         key.clear();
         polyline.clear();
         valid = false;
+        capped = false;
     }
 };
 

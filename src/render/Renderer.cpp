@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #include "render/Renderer.h"
 
+#include "core/EnumValue.h"
+
 #include <string>
 
 namespace q3 {
@@ -51,9 +53,9 @@ void InteractiveRenderer::setPreferences(long vendorID, long engineID)
     markEdited();
 }
 
-void InteractiveRenderer::setDoubleBufferBypass(TQ3Boolean bypass)
+void InteractiveRenderer::setDoubleBufferBypass(const TQ3Boolean& bypass)
 {
-    m_settings.doubleBufferBypass = bypass != kQ3False ? kQ3True : kQ3False;
+    m_settings.doubleBufferBypass = enumValue(bypass) != kQ3False ? kQ3True : kQ3False;
     markEdited();
 }
 

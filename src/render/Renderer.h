@@ -67,7 +67,8 @@ public:
     const Settings& settings() const { return m_settings; }
     void setCSGEquation(TQ3CSGEquation equation);
     void setPreferences(long vendorID, long engineID);
-    void setDoubleBufferBypass(TQ3Boolean bypass);
+    /// Any nonzero value (read through enumValue) is stored as kQ3True.
+    void setDoubleBufferBypass(const TQ3Boolean& bypass);
     void setRAVEContextHints(unsigned long hints);
     void setRAVETextureFilter(unsigned long filter);
 

@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "style/SubdivisionStyle.h"
 
+#include "core/EnumValue.h"
 #include "core/ErrorManager.h"
 #include "core/ShapeVisitor.h"
 
@@ -67,7 +68,7 @@ TQ3SubdivisionStyleData defaultSubdivisionStyle()
 
 TQ3SubdivisionStyleData checkSubdivisionStyle(const TQ3SubdivisionStyleData& requested)
 {
-    const long method = static_cast<long>(requested.method);
+    const long method = enumValue(requested.method); // a C caller may store any int
     if (method < kQ3SubdivisionMethodConstant || method > kQ3SubdivisionMethodScreenSpace)
         fail(kQ3ErrorInvalidData,
              "subdivision method " + std::to_string(method) +

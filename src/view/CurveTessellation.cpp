@@ -144,33 +144,30 @@ std::mutex& lockFor(const CurveCache* cache)
     return stripes[(address / alignof(CurveCache)) % stripes.size()];
 }
 
-// Reuses or rebuilds a cache's polyline; returns the warning to post. The
-// cache's key holds the plan's key followed by one entry, 1 when the build
-// gave in to the segment cap, so that reusing it repeats the warning.
+// Reuses or rebuilds a cache's polyline; returns the warning to post (a
+// reused polyline that was capped warns again, as its first drawing did).
 std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan& plan,
                      const PolylineUser& use)
 {
     std::vector<double> key = plan.key();
-    const bool current = cache.valid && cache.key.size() == key.size() + 1 &&
-                         std::equal(key.begin(), key.end(), cache.key.begin());
     std::string report;
-    if (!current) {
+    if (!cache.valid || cache.key != key) {
         if (!cache.bezier)
             cache.bezier = std::make_shared<const nurbs::BezierForm>(curve);
         nurbs::TessellatedCurve result = subdivide(plan, *cache.bezier);
         report = substitutionReport(plan, result);
-        key.push_back(report.empty() ? 0.0 : 1.0);
         cache.polyline = std::move(result.vertices);
         cache.key = std::move(key);
+        cache.capped = !report.empty();
         cache.valid = true;
         ++cache.tessellations;
+    } else if (cache.capped) {
+        report = "the curve's " + std::string(plan.measure == Measure::kConstant ? "constant" : "adaptive") +
+                 " subdivision with c1 = " + std::to_string(plan.c1) +
+                 " would need more than kQ3SubdivisionMaxSegmentsPerCurve segments; it is drawn with fewer";
     }
     use(cache.polyline.data(), cache.polyline.size() / 3);
-    if (!report.empty() || cache.key.back() == 0.0)
-        return report;
-    return "the curve's " + std::string(plan.measure == Measure::kConstant ? "constant" : "adaptive") +
-           " subdivision with c1 = " + std::to_string(plan.c1) +
-           " would need more than kQ3SubdivisionMaxSegmentsPerCurve segments; it is drawn with fewer";
+    return report;
 }
 
 } // namespace

@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #include "view/DrawContext.h"
 
+#include "core/EnumValue.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -18,9 +20,9 @@ namespace {
 
 constexpr double kPaneLimit = double(1 << 30);
 
-TQ3Boolean normalized(TQ3Boolean value)
+TQ3Boolean normalized(const TQ3Boolean& value)
 {
-    return value != kQ3False ? kQ3True : kQ3False;
+    return enumValue(value) != kQ3False ? kQ3True : kQ3False;
 }
 
 TQ3DrawContextData normalized(const TQ3DrawContextData& data)
@@ -38,16 +40,16 @@ bool isFinite(const TQ3ColorARGB& color)
            std::isfinite(color.b);
 }
 
-bool isClearMethod(TQ3DrawContextClearImageMethod method)
+bool isClearMethod(const TQ3DrawContextClearImageMethod& method)
 {
-    const long value = static_cast<long>(method);
+    const long value = enumValue(method);
     return value == kQ3ClearMethodNone || value == kQ3ClearMethodWithColor;
 }
 
 // Bits per pixel of a TQ3PixelType, 0 for a value that is none.
-unsigned long pixelBits(TQ3PixelType type)
+unsigned long pixelBits(const TQ3PixelType& type)
 {
-    switch (static_cast<long>(type)) {
+    switch (enumValue(type)) {
     case kQ3PixelTypeRGB32:
     case kQ3PixelTypeARGB32:
         return 32;
@@ -62,9 +64,9 @@ unsigned long pixelBits(TQ3PixelType type)
     }
 }
 
-bool isEndian(TQ3Endian value)
+bool isEndian(const TQ3Endian& value)
 {
-    const long v = static_cast<long>(value);
+    const long v = enumValue(value);
     return v == kQ3EndianBig || v == kQ3EndianLittle;
 }
 
@@ -88,11 +90,11 @@ void validatePane(const TQ3Area& pane, TQ3Error code)
 void validateDrawContextData(const TQ3DrawContextData& data)
 {
     if (!isClearMethod(data.clearImageMethod))
-        fail(kQ3ErrorInvalidData, "clearImageMethod " + std::to_string(long(data.clearImageMethod)) +
+        fail(kQ3ErrorInvalidData, "clearImageMethod " + std::to_string(enumValue(data.clearImageMethod)) +
                                       " is neither kQ3ClearMethodNone nor kQ3ClearMethodWithColor");
     if (!isFinite(data.clearImageColor))
         fail(kQ3ErrorInvalidData, "a clearImageColor component is not a finite number");
-    if (data.paneState != kQ3False)
+    if (normalized(data.paneState) == kQ3True)
         validatePane(data.pane, kQ3ErrorInvalidData);
 }
 
@@ -102,7 +104,7 @@ void validatePixmap(const TQ3Pixmap& pixmap)
     const unsigned long bits = pixelBits(pixmap.pixelType);
     if (bits == 0)
         fail(kQ3ErrorInvalidData,
-             "pixelType " + std::to_string(long(pixmap.pixelType)) + " is not a TQ3PixelType value");
+             "pixelType " + std::to_string(enumValue(pixmap.pixelType)) + " is not a TQ3PixelType value");
     if (!isEndian(pixmap.byteOrder) || !isEndian(pixmap.bitOrder))
         fail(kQ3ErrorInvalidData, "byteOrder and bitOrder must be kQ3EndianBig or kQ3EndianLittle");
     if (pixmap.pixelSize != bits)
@@ -167,19 +169,19 @@ void DrawContext::setPane(const TQ3Area& pane)
     markEdited();
 }
 
-void DrawContext::setPaneState(TQ3Boolean state)
+void DrawContext::setPaneState(const TQ3Boolean& state)
 {
-    if (state != kQ3False)
+    if (normalized(state) == kQ3True)
         validatePane(m_data.pane, kQ3ErrorInvalidParameter);
     m_data.paneState = normalized(state);
     markEdited();
 }
 
-void DrawContext::setClearImageMethod(TQ3DrawContextClearImageMethod method)
+void DrawContext::setClearImageMethod(const TQ3DrawContextClearImageMethod& method)
 {
     if (!isClearMethod(method))
         fail(kQ3ErrorInvalidParameter,
-             "clear method " + std::to_string(long(method)) +
+             "clear method " + std::to_string(enumValue(method)) +
                  " is neither kQ3ClearMethodNone nor kQ3ClearMethodWithColor");
     m_data.clearImageMethod = method;
     markEdited();

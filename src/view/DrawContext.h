@@ -46,8 +46,10 @@ public:
     void setData(const TQ3DrawContextData& data);
     void setClearImageColor(const TQ3ColorARGB& color);
     void setPane(const TQ3Area& pane);
-    void setPaneState(TQ3Boolean state);
-    void setClearImageMethod(TQ3DrawContextClearImageMethod method);
+    /// Enum arguments come by reference: a C caller may pass any int, which
+    /// is checked through enumValue (core/EnumValue.h) before use.
+    void setPaneState(const TQ3Boolean& state);
+    void setClearImageMethod(const TQ3DrawContextClearImageMethod& method);
 
     /// The pixels drawn into in an image of width x height: the pane when
     /// the pane state is on, the whole image otherwise.

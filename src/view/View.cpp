@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #include "view/View.h"
 
+#include "core/EnumValue.h"
+
 #include "geometry/NURBCurve.h"
 #include "geometry/PolyLine.h"
 #include "render/OffscreenRenderer.h"
@@ -37,9 +39,9 @@ float clampUnit(float value)
     return std::clamp(value, 0.0f, 1.0f);
 }
 
-bool isComputeBounds(TQ3ComputeBounds value)
+bool isComputeBounds(const TQ3ComputeBounds& value)
 {
-    const long v = static_cast<long>(value);
+    const long v = enumValue(value);
     return v == kQ3ComputeBoundsExact || v == kQ3ComputeBoundsApproximate;
 }
 
@@ -195,11 +197,11 @@ RenderResult View::writeImage() const
     return RenderResult::success();
 }
 
-void View::startBounding(Loop loop, TQ3ComputeBounds computeBounds)
+void View::startBounding(Loop loop, const TQ3ComputeBounds& computeBounds)
 {
     requireNoLoop();
     if (!isComputeBounds(computeBounds))
-        fail(kQ3ErrorInvalidParameter, "computeBounds " + std::to_string(long(computeBounds)) +
+        fail(kQ3ErrorInvalidParameter, "computeBounds " + std::to_string(enumValue(computeBounds)) +
                                            " is neither kQ3ComputeBoundsExact nor Approximate");
     // Screen-space subdivision (for Q3Geometry_GetDecomposed) needs a window.
     std::optional<Window> window;
@@ -213,12 +215,12 @@ void View::startBounding(Loop loop, TQ3ComputeBounds computeBounds)
     m_cancelled = false;
 }
 
-void View::startBoundingBox(TQ3ComputeBounds computeBounds)
+void View::startBoundingBox(const TQ3ComputeBounds& computeBounds)
 {
     startBounding(Loop::kBoundingBox, computeBounds);
 }
 
-void View::startBoundingSphere(TQ3ComputeBounds computeBounds)
+void View::startBoundingSphere(const TQ3ComputeBounds& computeBounds)
 {
     startBounding(Loop::kBoundingSphere, computeBounds);
 }

@@ -73,9 +73,9 @@ public:
 
     /// Start a bounding loop. Throw kQ3ErrorViewIsStarted, then
     /// kQ3ErrorInvalidParameter for a computeBounds that is no
-    /// TQ3ComputeBounds value.
-    void startBoundingBox(TQ3ComputeBounds computeBounds);
-    void startBoundingSphere(TQ3ComputeBounds computeBounds);
+    /// TQ3ComputeBounds value (read through enumValue, so any int is safe).
+    void startBoundingBox(const TQ3ComputeBounds& computeBounds);
+    void startBoundingSphere(const TQ3ComputeBounds& computeBounds);
     /// End it: kQ3ViewStatusDone with the result set, or
     /// kQ3ViewStatusCancelled with it untouched. Throw
     /// kQ3ErrorBoundsNotStarted unless a loop of that kind runs.
@@ -122,7 +122,7 @@ private:
 
     void requireNoLoop() const;
     Pass& activePass();
-    void startBounding(Loop loop, TQ3ComputeBounds computeBounds);
+    void startBounding(Loop loop, const TQ3ComputeBounds& computeBounds);
     /// Closes the loop, whatever state it is in.
     void endLoop();
     RenderResult writeImage() const;

@@ -303,6 +303,71 @@ TEST_F(CameraApiTest, KindSpecificRulesAreChecked)
         Q3Object_Dispose(camera);
 }
 
+// Every field of every camera structure is a float; each one at NaN, +Inf
+// and -Inf must be refused by New and SetData.
+template <class Data>
+void forEachNonFiniteField(const Data& good, const std::function<void(const Data&, const std::string&)>& check)
+{
+    static_assert(sizeof(Data) % sizeof(float) == 0, "camera data is all floats");
+    for (std::size_t field = 0; field < sizeof(Data) / sizeof(float); ++field)
+        for (float bad : {kNaN, kInf, -kInf}) {
+            Data data = good;
+            std::memcpy(reinterpret_cast<unsigned char*>(&data) + field * sizeof(float), &bad, sizeof bad);
+            check(data, "field " + std::to_string(field) + " = " + std::to_string(bad));
+        }
+}
+
+TEST_F(CameraApiTest, EveryFloatFieldRejectsNaNAndInfinities)
+{
+    const TQ3OrthographicCameraData ortho = orthographicData();
+    const TQ3ViewPlaneCameraData plane = viewPlaneData();
+    const TQ3ViewAngleAspectCameraData angle = viewAngleData();
+    TQ3CameraObject a = Q3OrthographicCamera_New(&ortho);
+    TQ3CameraObject b = Q3ViewPlaneCamera_New(&plane);
+    TQ3CameraObject c = Q3ViewAngleAspectCamera_New(&angle);
+    forEachNonFiniteField<TQ3OrthographicCameraData>(ortho, [&](const TQ3OrthographicCameraData& d, const std::string& what) {
+        SCOPED_TRACE(what);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3OrthographicCamera_New(&d), nullptr), kQ3ErrorInvalidCameraValues);
+        EXPECT_Q3_ERROR(Q3OrthographicCamera_SetData(a, &d), kQ3ErrorInvalidCameraValues);
+    });
+    forEachNonFiniteField<TQ3ViewPlaneCameraData>(plane, [&](const TQ3ViewPlaneCameraData& d, const std::string& what) {
+        SCOPED_TRACE(what);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3ViewPlaneCamera_New(&d), nullptr), kQ3ErrorInvalidCameraValues);
+        EXPECT_Q3_ERROR(Q3ViewPlaneCamera_SetData(b, &d), kQ3ErrorInvalidCameraValues);
+    });
+    forEachNonFiniteField<TQ3ViewAngleAspectCameraData>(
+        angle, [&](const TQ3ViewAngleAspectCameraData& d, const std::string& what) {
+            SCOPED_TRACE(what);
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3ViewAngleAspectCamera_New(&d), nullptr), kQ3ErrorInvalidCameraValues);
+            EXPECT_Q3_ERROR(Q3ViewAngleAspectCamera_SetData(c, &d), kQ3ErrorInvalidCameraValues);
+        });
+    forEachNonFiniteField<TQ3CameraData>(commonData(), [&](const TQ3CameraData& d, const std::string& what) {
+        SCOPED_TRACE(what);
+        EXPECT_Q3_ERROR(Q3Camera_SetData(c, &d), kQ3ErrorInvalidCameraValues);
+    });
+    forEachNonFiniteField<TQ3CameraPlacement>(commonData().placement,
+                                              [&](const TQ3CameraPlacement& d, const std::string& what) {
+                                                  SCOPED_TRACE(what);
+                                                  EXPECT_Q3_ERROR(Q3Camera_SetPlacement(a, &d),
+                                                                  kQ3ErrorInvalidCameraValues);
+                                              });
+    forEachNonFiniteField<TQ3CameraRange>(commonData().range, [&](const TQ3CameraRange& d, const std::string& what) {
+        SCOPED_TRACE(what);
+        EXPECT_Q3_ERROR(Q3Camera_SetRange(a, &d), kQ3ErrorInvalidCameraValues);
+    });
+    forEachNonFiniteField<TQ3CameraViewPort>(commonData().viewPort,
+                                             [&](const TQ3CameraViewPort& d, const std::string& what) {
+                                                 SCOPED_TRACE(what);
+                                                 EXPECT_Q3_ERROR(Q3Camera_SetViewPort(b, &d),
+                                                                 kQ3ErrorInvalidCameraValues);
+                                             });
+    TQ3OrthographicCameraData after{};
+    Q3OrthographicCamera_GetData(a, &after);
+    EXPECT_EQ(std::memcmp(&after, &ortho, sizeof after), 0);
+    for (TQ3Object camera : {a, b, c})
+        Q3Object_Dispose(camera);
+}
+
 TEST_F(CameraApiTest, KindSpecificCallsRejectOtherKindsAndBadPointers)
 {
     const TQ3OrthographicCameraData ortho = orthographicData();

@@ -259,16 +259,26 @@ TEST_F(DrawContextApiTest, ClearColorPaneAndMethodSettersRoundTripAndValidate)
     EXPECT_EQ(method, kQ3ClearMethodNone);
 
     const Snapshot before = snapshot();
-    for (float bad : {kNaN, kInf, -kInf}) {
-        TQ3ColorARGB badColor = color;
-        badColor.a = bad;
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3DrawContext_SetClearImageColor(m_context, &badColor), kQ3Failure),
-                        kQ3ErrorInvalidParameter);
-        TQ3Area badPane = pane;
-        badPane.max.y = bad;
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3DrawContext_SetPane(m_context, &badPane), kQ3Failure),
-                        kQ3ErrorInvalidParameter);
-    }
+    for (float bad : {kNaN, kInf, -kInf})
+        for (int field = 0; field < 4; ++field) {
+            SCOPED_TRACE("field " + std::to_string(field) + " = " + std::to_string(bad));
+            TQ3ColorARGB badColor = color;
+            (&badColor.a)[field] = bad;
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3DrawContext_SetClearImageColor(m_context, &badColor), kQ3Failure),
+                            kQ3ErrorInvalidParameter);
+            TQ3Area badPane = pane;
+            (&badPane.min.x)[field] = bad;
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3DrawContext_SetPane(m_context, &badPane), kQ3Failure),
+                            kQ3ErrorInvalidParameter);
+            // The same values inside a whole TQ3DrawContextData.
+            TQ3DrawContextData data = before.data;
+            data.clearImageColor = badColor;
+            EXPECT_Q3_ERROR(Q3DrawContext_SetData(m_context, &data), kQ3ErrorInvalidData);
+            data = before.data;
+            data.pane = badPane;
+            data.paneState = kQ3True;
+            EXPECT_Q3_ERROR(Q3DrawContext_SetData(m_context, &data), kQ3ErrorInvalidData);
+        }
     const TQ3Area empty = {{4, 4}, {4, 8}};
     const TQ3Area inverted = {{4, 8}, {8, 4}};
     EXPECT_Q3_ERROR(Q3DrawContext_SetPane(m_context, &empty), kQ3ErrorInvalidParameter);

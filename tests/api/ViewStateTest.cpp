@@ -118,7 +118,7 @@ TEST_F(ViewStateTest, SubdivisionStyleStateIsTheLastSubmittedAfterSubstitution)
     EXPECT_EQ(Q3Object_Submit(styleObject, view()), kQ3Success);
     EXPECT_EQ(styleState().c1, 7.0f);
     // A style that fails (an unknown method) changes nothing.
-    const TQ3SubdivisionStyleData bad = {TQ3SubdivisionMethod(9), 5, 5};
+    const TQ3SubdivisionStyleData bad = {TQ3SubdivisionMethod(3), 5, 5};
     EXPECT_Q3_ERROR(Q3SubdivisionStyle_Submit(&bad, view()), kQ3ErrorInvalidData);
     EXPECT_EQ(styleState().method, kQ3SubdivisionMethodScreenSpace);
     EXPECT_EQ(Q3View_EndRendering(view()), kQ3ViewStatusDone);

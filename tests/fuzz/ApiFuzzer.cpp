@@ -102,6 +102,8 @@ void begin() { g_posts = Posts{}; }
 void checkPosted(const char* call, bool failed)
 {
     const TQ3Error error = Q3Error_Get(nullptr);
+    if (g_trace)
+        std::fprintf(stderr, "q3 fuzz:   %s: %s %d\n", call, failed ? "failed" : "ok", int(error));
     require(error != kQ3ErrorInternalError, call, "posted kQ3ErrorInternalError");
     if (failed) {
         require(error != kQ3ErrorNone, call, "failed without posting an error");
@@ -984,7 +986,7 @@ private:
     {
         TQ3Pixmap pixmap{};
         const std::uint8_t shape = m_in.u8();
-        static const unsigned long kSizes[] = {32, 24, 16, 16, 16, 24};
+        static const unsigned long kSizes[] = {32, 32, 16, 16, 16, 24};
         const std::int32_t type = enumValue(6);
         setRaw(pixmap.pixelType, type);
         const unsigned long bits = type >= 0 && type < 6 ? kSizes[type] : 32;

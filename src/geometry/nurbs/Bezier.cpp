@@ -160,8 +160,13 @@ void sampleDispatch(const Point4* points, const BernsteinTable& table, std::uint
 } // namespace
 
 BernsteinTable::BernsteinTable(unsigned order, std::uint32_t segments)
-    : m_order(order), m_segments(segments), m_weights((std::size_t(segments) + 1) * order, 0.0)
 {
+    if (order < kMinOrder || order > kMaxOrder || segments == 0) {
+        return;  // an empty table; the kernels write nothing with it
+    }
+    m_order = order;
+    m_segments = segments;
+    m_weights.assign((std::size_t(segments) + 1) * order, 0.0);
     const std::size_t stride = std::size_t(segments) + 1;
     double b[kMaxOrder];
     for (std::uint32_t j = 0; j <= segments; ++j) {
@@ -284,7 +289,7 @@ void BezierForm::rebuild(const CurveRef& curve)
 
 Domain BezierForm::domain() const
 {
-    return Domain{m_spans.front().start, m_spans.back().end};
+    return empty() ? Domain{} : Domain{m_spans.front().start, m_spans.back().end};
 }
 
 std::size_t BezierForm::findSpan(double t) const
@@ -305,6 +310,9 @@ std::size_t BezierForm::findSpan(double t) const
 
 Point4 BezierForm::evaluateHomogeneous(double t) const
 {
+    if (empty()) {
+        return Point4{};
+    }
     t = clampToDomain(domain(), t);
     const std::size_t s = findSpan(t);
     const Span& span = m_spans[s];

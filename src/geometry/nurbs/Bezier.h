@@ -20,7 +20,8 @@ namespace q3::nurbs {
 class BernsteinTable {
 public:
     BernsteinTable() = default;
-    /// order in 2..16, segments >= 1. Memory (segments + 1) * order doubles.
+    /// order in 2..16, segments >= 1 (otherwise the table is empty: order() == 0).
+    /// Memory (segments + 1) * order doubles.
     BernsteinTable(unsigned order, std::uint32_t segments);
 
     unsigned order() const { return m_order; }
@@ -57,7 +58,9 @@ void sampleBezier(const Point4* points, const BernsteinTable& table, std::uint32
 /// in double: what a retained curve caches and rebuilds on edit.
 /// Invariant: points().size() == spanCount() * order(); span s covers
 /// [span(s).start, span(s).end] and its Bezier points are spanPoints(s)[0 .. order-1].
-/// An invalid curve gives an empty form (spanCount() == 0).
+/// An invalid curve gives an empty form (spanCount() == 0); it evaluates to (0, 0, 0, 0)
+/// and tessellates to nothing. Ownership: copies what it needs; the CurveRef's arrays
+/// need not outlive it.
 /// Memory: spanCount * order * 32 bytes (order 16 with a million spans is 512 MB; the
 /// tessellators also accept a CurveRef and then convert one span at a time).
 class BezierForm {
@@ -78,7 +81,7 @@ public:
     /// The span holding t (clamped to the domain; the last span at its end).
     std::size_t findSpan(double t) const;
 
-    /// The curve at t, in double, through the Bezier points. Requires !empty().
+    /// The curve at t, in double, through the Bezier points (t clamped as in evaluate()).
     Point4 evaluateHomogeneous(double t) const;
     Point3 evaluate(double t) const;
 

@@ -36,7 +36,8 @@ inline Point3 project(const Point4& p)
 /// A non-owning view of a curve in QuickDraw 3D's layout (TQ3NURBCurveData without
 /// the attribute set), so callers pass their arrays without copying.
 /// Fields are public and unprefixed because this is an aggregate mirroring the C struct.
-/// Invariant expected by everything except validateCurve(): validateCurve(curve).ok().
+/// Functions taking a CurveRef require validateCurve(curve).ok() unless their comment
+/// says they check it. Ownership: the caller keeps the arrays alive during the call.
 struct CurveRef {
     unsigned order = 0;          ///< k, 2..16
     std::size_t numPoints = 0;   ///< n >= k

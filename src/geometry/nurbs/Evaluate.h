@@ -25,7 +25,7 @@ struct CurvePointDerivative {
 /// Evaluates a valid curve at t with de Boor's algorithm on the homogeneous control
 /// points, in double. t is clamped to the domain (NaN counts as its start); at a
 /// knot the span to the right is used, at the domain end the last span.
-/// Cost O(order^2), no allocation.
+/// Cost O(order^2), no allocation. Errors: none; requires a valid curve.
 CurvePoint evaluate(const CurveRef& curve, double t);
 CurvePoint evaluate(const HomogeneousCurve& curve, double t);
 

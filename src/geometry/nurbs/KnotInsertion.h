@@ -13,7 +13,8 @@ namespace q3::nurbs {
 /// Returns nullopt, leaving nothing changed, when tNew is not strictly inside the
 /// domain (knots[k-1] < tNew < knots[n]) or when it would make more than order - 1
 /// equal knots. Requires a curve whose knots and points obey the validateCurve() rules.
-/// Cost O(n + k) time and memory.
+/// Cost O(n + k) time and memory. Errors: none besides nullopt.
+/// Ownership: the result is a new, independent curve.
 std::optional<HomogeneousCurve> insertKnot(const HomogeneousCurve& curve, double tNew);
 
 } // namespace q3::nurbs

@@ -21,7 +21,7 @@ enum class CurveRule {
     kKnotRunTooLong,      ///< too many equal knots; index = first knot of the run
     kPointNotFinite,      ///< a control point component is NaN or infinite; index = point
     kWeightNotPositive,   ///< a control point has w <= 0; index = point
-    kEmptyDomain,         ///< knots[order - 1] == knots[numPoints]
+    kEmptyDomain,         ///< knots[order - 1] == knots[numPoints]; index = order - 1
 };
 
 /// Coarse grouping of CurveRule, so a caller can pick an error code without
@@ -50,6 +50,8 @@ struct CurveValidation {
 /// first knot or ends at the last.
 /// Reads order, numPoints and, when those pass, 4 * numPoints point floats and
 /// numPoints + order knots.
+/// Errors: none raised; the result names the first broken rule (problem() groups them
+/// as the C layer's error codes need). Ownership: reads the caller's arrays only.
 CurveValidation validateCurve(const CurveRef& curve);
 
 /// The parameter range [knots[k-1], knots[n]] on which the curve is defined.

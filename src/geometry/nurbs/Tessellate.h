@@ -20,8 +20,9 @@ constexpr std::size_t kMaxSegments = std::size_t{1} << 20;
 /// Most segments per span for the constant method.
 constexpr std::uint32_t kMaxSegmentsPerSpan = 1024;
 
-/// Adaptive method: the share of kMaxSegments its first placement may use; the rest
-/// is left for bisecting the chords that come out too long.
+/// Adaptive method: the share of kMaxSegments the planned count may use; the rest is
+/// headroom for the march, which follows the true length where the plan used chord sums
+/// (an underestimate).
 constexpr std::size_t kPlacementBudget = kMaxSegments - kMaxSegments / 8;
 
 /// Adaptive method: the segment count planned for a run of mapped length L is
@@ -49,6 +50,9 @@ constexpr unsigned kMaxRootIterations = 60;
 /// lengths are measured: local-to-world for world space, local-to-pixels including the
 /// perspective divide for screen space (set z to 0 there). Returns false when the point
 /// has no image, e.g. at or behind the eye; a result that is not finite counts as false.
+/// A screen-space mapping should also reject points nearer than the near plane: their
+/// images grow without bound, and the length they add would force a coarser c1 on the
+/// whole curve.
 using PointMapping = std::function<bool(const Point3& local, Point3& mapped)>;
 
 /// A polyline approximating a curve.
@@ -73,7 +77,9 @@ struct TessellatedCurve {
 /// kMaxSegmentsPerSpan by kMaxSegmentsPerSpan, and the count is lowered further so the
 /// total stays within kMaxSegments (never below 1 per span); any replacement sets
 /// `substituted`. Uses the Bezier sampling kernel.
-/// An invalid curve (see validateCurve) gives an empty result.
+/// Errors: none; an invalid curve (checked with validateCurve) gives an empty result, a
+/// replaced count is reported in the result for the caller to post as a warning.
+/// Ownership: the result owns its arrays.
 TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan);
 TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan);
 /// The same, replacing the contents of `out` and reusing its storage (for a renderer
@@ -86,13 +92,17 @@ void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, T
 /// maxSegmentLength long, with close to the fewest segments: every segment but the last
 /// of each run of mappable curve is at least (1 - kChordTolerance) * maxSegmentLength.
 /// When the planned count (kLengthPadding * length / maxSegmentLength per run) would
-/// exceed kPlacementBudget, or maxSegmentLength is not > 0, a larger length is used and
-/// `substituted` set; if even one segment per probe interval is too many, every span gets
-/// one segment and effectiveValue is infinity.
+/// exceed kPlacementBudget, or maxSegmentLength is not > 0 (NaN included), a larger
+/// length is used and `substituted` set; if one segment per run plus one per unmappable
+/// probe interval is already over kPlacementBudget (always so with that many spans),
+/// every span gets one segment and effectiveValue is infinity. +infinity is accepted and
+/// gives one segment per run.
 /// Where the mapping fails, segments are not measured: one per probe interval
 /// (probeSegmentsPerSpan), counted in unmeasuredSegments.
 /// Time and output are bounded by O(kMaxSegments * kMaxRootIterations + spans * order^2)
-/// for any finite input. An invalid curve gives an empty result.
+/// for any finite input. The mapping is called from this thread only, O(output) times.
+/// Errors: none; an invalid curve gives an empty result, substitution is reported in the
+/// result. Ownership: the mapping is only used during the call.
 TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength,
                                     const PointMapping& mapping);
 TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength,

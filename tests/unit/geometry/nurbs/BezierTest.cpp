@@ -38,6 +38,14 @@ TEST(NurbsBezier, BernsteinRowsSumToOneAndEndRowsAreExact)
     }
 }
 
+TEST(NurbsBezier, BernsteinTableRejectsOutOfRangeOrderAndZeroSegments)
+{
+    EXPECT_EQ(BernsteinTable(17, 4).order(), 0u);
+    EXPECT_EQ(BernsteinTable(1, 4).order(), 0u);
+    EXPECT_EQ(BernsteinTable(4, 0).order(), 0u);
+    EXPECT_EQ(BernsteinTable(0xFFFFFFFFu, 4).order(), 0u);
+}
+
 TEST(NurbsBezier, BernsteinRowMatchesClosedForm)
 {
     // B_{r,3}(1/4) for the cubic: 27/64, 27/64, 9/64, 1/64.
@@ -161,6 +169,8 @@ TEST(NurbsBezier, InvalidCurveGivesEmptyForm)
     const BezierForm form(curve.ref());
     EXPECT_TRUE(form.empty());
     EXPECT_EQ(form.spanCount(), 0u);
+    EXPECT_EQ(form.evaluateHomogeneous(0.5).w, 0.0);
+    EXPECT_EQ(BezierForm().spanCount(), 0u);
 }
 
 TEST(NurbsBezier, RebuildFollowsAnEditedCurve)

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace q3::nurbs {
 namespace {
 
@@ -112,6 +114,8 @@ TEST(NurbsKnotInsertion, RefusesParameterOutsideOpenDomain)
     EXPECT_FALSE(insertKnot(curve, -1.0).has_value());
     EXPECT_FALSE(insertKnot(curve, 2.0).has_value());
     EXPECT_FALSE(insertKnot(curve, std::numeric_limits<double>::quiet_NaN()).has_value());
+    EXPECT_FALSE(insertKnot(curve, std::numeric_limits<double>::infinity()).has_value());
+    EXPECT_FALSE(insertKnot(curve, -std::numeric_limits<double>::infinity()).has_value());
 }
 
 } // namespace

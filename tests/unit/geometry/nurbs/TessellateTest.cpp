@@ -157,8 +157,9 @@ double longestMappedChord(const TestCurve& curve, const TessellatedCurve& result
     return longest;
 }
 
-// A long order-k curve with n points on a wiggly path and unit-spaced clamped knots.
-TestCurve longCurve(unsigned k, std::size_t n)
+// A long order-k curve with n points on a wiggly path and clamped knots; interior knot
+// values step by one every `multiplicity` knots.
+TestCurve longCurve(unsigned k, std::size_t n, std::size_t multiplicity = 1)
 {
     TestCurve curve;
     curve.order = k;
@@ -171,7 +172,8 @@ TestCurve longCurve(unsigned k, std::size_t n)
     curve.knots.reserve(n + k);
     for (std::size_t i = 0; i < n + k; ++i) {
         const std::size_t clamped = std::min(std::max(i, std::size_t(k - 1)), n);
-        curve.knots.push_back(float(clamped));
+        const std::size_t step = (clamped - (k - 1) + multiplicity - 1) / multiplicity;
+        curve.knots.push_back(float(clamped == n ? (n - (k - 1) + multiplicity - 1) / multiplicity : step));
     }
     return curve;
 }
@@ -309,6 +311,31 @@ TEST(NurbsTessellate, HugeOrderSixteenCurveStaysBounded)
         const Point3 expected = evaluate(curve.ref(), adaptive.parameters[i]).point;
         EXPECT_LE(test::distance3(vertex(adaptive, i), expected), 1e-6 * size);
     }
+}
+
+TEST(NurbsTessellate, HugeCurveWithTinyLengthPlansWithinBudget)
+{
+    // A million order-16 points with triple interior knots: about 333 000 spans, under the
+    // placement budget, so the length is measured, substituted and marched span by span.
+    const TestCurve curve = longCurve(16, 1000000, 3);
+    ASSERT_TRUE(validateCurve(curve.ref()).ok());
+    const std::size_t spans = countNonEmptySpans(curve.ref());
+    ASSERT_LT(spans, kPlacementBudget);
+    const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+    const double c1 = 1e-6 * 1e6;  // the curve is about a million units long
+    const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+    EXPECT_TRUE(result.substituted);
+    EXPECT_GT(result.effectiveValue, c1);
+    EXPECT_LE(segmentCount(result), kMaxSegments);
+    EXPECT_GT(segmentCount(result), spans);
+    EXPECT_EQ(result.parameters.front(), curve.domainStart());
+    EXPECT_EQ(result.parameters.back(), curve.domainEnd());
+    double longest = 0.0;
+    for (std::size_t i = 1; i < result.vertexCount(); ++i) {
+        longest = std::max(longest, test::distance3(vertex(result, i - 1), vertex(result, i)));
+    }
+    // Float vertices of coordinates up to 1e6 carry rounding of about 0.06.
+    EXPECT_LE(longest, result.effectiveValue + 0.2);
 }
 
 TEST(NurbsTessellate, WorldSpaceChordsAreShortAndFewOnRandomCurves)

@@ -1,0 +1,382 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Whole frames through Q3 against the same drawing done with raw OpenGL on an
+// OSMesa context of the same size in the same process.
+//
+// Scene: 1000 retained cubic Bezier curves (one span each, control points
+// random in [-1, 1]^2 at z = 0) under constant subdivision with c1 = 64, so
+// every curve is a 65-vertex line strip.
+//
+//   Q3_Frame/N              Q3View_StartRendering, the style, 1000
+//                           Q3Geometry_Submit, Q3View_EndRendering writing
+//                           the N x N ARGB32 pixmap (B, G, R, A in memory).
+//   Raw_Frame/N             the peer: the identical polylines (taken from
+//                           Q3Geometry_GetDecomposed) in one client array,
+//                           glClear, one glDrawArrays(GL_LINE_STRIP) per curve,
+//                           glFinish, glReadPixels(GL_BGRA) into a buffer of
+//                           the pixmap's format.
+//   RawMulti_Frame/N        the same with one glMultiDrawArrays (the stricter peer).
+//   Q3_FrameEdited/N        Q3_Frame with every curve edited before the frame
+//                           (Q3NURBCurve_SetKnot to its own value), so all
+//                           1000 are tessellated again: informational.
+//   Q3_EmptyFrame/N         StartRendering, EndRendering (pixmap written).
+//   Raw_EmptyFrame/N        glClear, glFinish, glReadPixels.
+//
+// Before timing, each Q3 frame benchmark renders two frames and checks with
+// the curves' CurveCache::tessellations counters that the second one
+// tessellated nothing (counter retessellated_second_frame, which must be 0),
+// and each raw one compares its image with Q3's (pixels_differing).
+//
+// Wall time is what counts here: llvmpipe rasterizes on its own threads.
+
+#include "BenchCurves.h"
+#include "BenchView.h"
+
+#include "core/Object.h"
+#include "geometry/NURBCurve.h"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr std::size_t kCurveCount = 1000;
+constexpr std::uint32_t kSegments = 64;
+
+/// The retained curves, their polylines as Q3 draws them, and one Q3 view
+/// per image size. Built once, on first use, and kept to the end of the run.
+class Scene {
+public:
+    Scene()
+    {
+        q3bench::Random random(7);
+        const float knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+        for (std::size_t i = 0; i < kCurveCount; ++i) {
+            TQ3RationalPoint4D points[4];
+            for (TQ3RationalPoint4D& p : points)
+                p = {float(random.uniform(-1, 1)), float(random.uniform(-1, 1)), 0.0f, 1.0f};
+            const TQ3NURBCurveData data{4, 4, points, const_cast<float*>(knots), nullptr};
+            TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+            if (curve == nullptr)
+                throw std::runtime_error("Q3NURBCurve_New failed");
+            m_curves.push_back(curve);
+        }
+        collectPolylines();
+    }
+
+    ~Scene()
+    {
+        m_views.clear();
+        for (TQ3GeometryObject curve : m_curves)
+            Q3Object_Dispose(curve);
+    }
+
+    const std::vector<TQ3GeometryObject>& curves() const { return m_curves; }
+    const std::vector<float>& xyz() const { return m_xyz; }
+    const std::vector<GLint>& firsts() const { return m_firsts; }
+    const std::vector<GLsizei>& counts() const { return m_counts; }
+
+    q3bench::BenchView& view(unsigned long size)
+    {
+        std::unique_ptr<q3bench::BenchView>& view = m_views[size];
+        if (!view)
+            view = std::make_unique<q3bench::BenchView>(size, size);
+        return *view;
+    }
+
+    /// One Q3 frame of the whole scene; false if any call failed.
+    bool renderQ3(q3bench::BenchView& view) const
+    {
+        const TQ3SubdivisionStyleData style = q3bench::constantStyle(float(kSegments));
+        if (Q3View_StartRendering(view.view()) != kQ3Success)
+            return false;
+        bool ok = Q3SubdivisionStyle_Submit(&style, view.view()) == kQ3Success;
+        for (TQ3GeometryObject curve : m_curves)
+            ok = Q3Geometry_Submit(curve, view.view()) == kQ3Success && ok;
+        return Q3View_EndRendering(view.view()) == kQ3ViewStatusDone && ok;
+    }
+
+    /// Edits every curve without changing it (a knot set to its own value),
+    /// which empties its cache.
+    void editAll() const
+    {
+        for (TQ3GeometryObject curve : m_curves)
+            Q3NURBCurve_SetKnot(curve, 4, 1.0f);
+    }
+
+    /// The sum of every curve's CurveCache::tessellations.
+    std::uint64_t tessellations() const
+    {
+        std::uint64_t total = 0;
+        for (TQ3GeometryObject curve : m_curves)
+            total += q3::lookup<q3::NURBCurve>(curve, "curve").cache().tessellations;
+        return total;
+    }
+
+private:
+    // The polylines the raw peer draws: exactly the vertices Q3 draws.
+    void collectPolylines()
+    {
+        q3bench::BenchView& small = view(64);
+        const TQ3SubdivisionStyleData style = q3bench::constantStyle(float(kSegments));
+        if (Q3View_StartRendering(small.view()) != kQ3Success)
+            throw std::runtime_error("Q3View_StartRendering failed");
+        Q3SubdivisionStyle_Submit(&style, small.view());
+        for (TQ3GeometryObject curve : m_curves) {
+            TQ3GeometryObject polyLine = Q3Geometry_GetDecomposed(curve, small.view());
+            TQ3PolyLineData data{};
+            if (polyLine == nullptr || Q3PolyLine_GetData(polyLine, &data) != kQ3Success)
+                throw std::runtime_error("Q3Geometry_GetDecomposed failed");
+            m_firsts.push_back(GLint(m_xyz.size() / 3));
+            m_counts.push_back(GLsizei(data.numVertices));
+            for (unsigned long i = 0; i < data.numVertices; ++i) {
+                const TQ3Point3D& p = data.vertices[i].point;
+                m_xyz.insert(m_xyz.end(), {p.x, p.y, p.z});
+            }
+            Q3PolyLine_EmptyData(&data);
+            Q3Object_Dispose(polyLine);
+        }
+        Q3View_EndRendering(small.view());
+    }
+
+    q3bench::Q3Session m_session;
+    std::vector<TQ3GeometryObject> m_curves;
+    std::vector<float> m_xyz;
+    std::vector<GLint> m_firsts;
+    std::vector<GLsizei> m_counts;
+    std::map<unsigned long, std::unique_ptr<q3bench::BenchView>> m_views;
+};
+
+Scene& scene()
+{
+    static Scene instance;
+    return instance;
+}
+
+/// A plain OSMesa program's rendering state: an RGBA context bound to its
+/// own buffer, the camera's matrix loaded, the vertex array enabled.
+class RawGl {
+public:
+    RawGl(unsigned long size, const TQ3Matrix4x4& clip) : m_size(GLsizei(size)), m_buffer(size * size * 4),
+                                                         m_readBack(size * size * 4)
+    {
+        m_context = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
+        if (m_context == nullptr || !bind())
+            throw std::runtime_error("creating the raw OSMesa context failed");
+        glViewport(0, 0, m_size, m_size);
+        glMatrixMode(GL_PROJECTION);
+        glLoadMatrixf(&clip.value[0][0]);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glEnableClientState(GL_VERTEX_ARRAY);
+        release();
+    }
+    ~RawGl() { OSMesaDestroyContext(m_context); }
+    RawGl(const RawGl&) = delete;
+    RawGl& operator=(const RawGl&) = delete;
+
+    bool bind() { return OSMesaMakeCurrent(m_context, m_buffer.data(), GL_UNSIGNED_BYTE, m_size, m_size); }
+    void release() { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
+
+    /// Clears, draws the scene's strips (or nothing), finishes and reads back.
+    void frame(const Scene* drawn, bool multiDraw)
+    {
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (drawn != nullptr) {
+            glColor3f(1.0f, 1.0f, 1.0f);
+            glVertexPointer(3, GL_FLOAT, 0, drawn->xyz().data());
+            if (multiDraw) {
+                glMultiDrawArrays(GL_LINE_STRIP, drawn->firsts().data(), drawn->counts().data(),
+                                  GLsizei(drawn->counts().size()));
+            } else {
+                for (std::size_t i = 0; i < drawn->counts().size(); ++i)
+                    glDrawArrays(GL_LINE_STRIP, drawn->firsts()[i], drawn->counts()[i]);
+            }
+        }
+        glFinish();
+        glReadPixels(0, 0, m_size, m_size, GL_BGRA, GL_UNSIGNED_BYTE, m_readBack.data());
+    }
+
+    /// B, G, R, A per pixel, bottom row first (OpenGL's order).
+    const std::vector<std::uint8_t>& readBack() const { return m_readBack; }
+
+private:
+    GLsizei m_size;
+    std::vector<std::uint8_t> m_buffer;
+    std::vector<std::uint8_t> m_readBack;
+    OSMesaContext m_context = nullptr;
+};
+
+// The matrix Q3 hands OpenGL: world to frustum (Q3Camera_GetWorldToFrustum)
+// then z_clip = -2 z - w (view/RenderPass.h, frustumToClip), row-vector form,
+// whose memory is OpenGL's column-major layout of the same map.
+TQ3Matrix4x4 clipMatrix(TQ3CameraObject camera)
+{
+    TQ3Matrix4x4 worldToFrustum;
+    Q3Camera_GetWorldToFrustum(camera, &worldToFrustum);
+    TQ3Matrix4x4 frustumToClip;
+    Q3Matrix4x4_SetIdentity(&frustumToClip);
+    frustumToClip.value[2][2] = -2.0f;
+    frustumToClip.value[3][2] = -1.0f;
+    TQ3Matrix4x4 clip;
+    Q3Matrix4x4_Multiply(&worldToFrustum, &frustumToClip, &clip);
+    return clip;
+}
+
+RawGl& raw(unsigned long size)
+{
+    static std::map<unsigned long, std::unique_ptr<RawGl>> contexts;
+    std::unique_ptr<RawGl>& context = contexts[size];
+    if (!context) {
+        // Q3 makes the process's first OSMesa context (it pins the driver).
+        Scene& s = scene();
+        context = std::make_unique<RawGl>(size, clipMatrix(s.view(size).camera()));
+    }
+    return *context;
+}
+
+// Pixels whose B, G, R differ between Q3's pixmap (top row first) and the raw
+// read-back (bottom row first).
+double differingPixels(const std::vector<std::uint8_t>& q3, const std::vector<std::uint8_t>& gl,
+                       unsigned long size)
+{
+    std::size_t differing = 0;
+    for (unsigned long y = 0; y < size; ++y) {
+        const std::uint8_t* a = q3.data() + y * size * 4;
+        const std::uint8_t* b = gl.data() + (size - 1 - y) * size * 4;
+        for (unsigned long x = 0; x < size; ++x)
+            differing += a[4 * x] != b[4 * x] || a[4 * x + 1] != b[4 * x + 1] || a[4 * x + 2] != b[4 * x + 2];
+    }
+    return double(differing);
+}
+
+double litPixels(const std::vector<std::uint8_t>& bgra)
+{
+    std::size_t lit = 0;
+    for (std::size_t i = 0; i < bgra.size(); i += 4)
+        lit += bgra[i + 2] > 127;
+    return double(lit);
+}
+
+void Q3_Frame(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    Scene& s = scene();
+    q3bench::BenchView& view = s.view(size);
+    s.editAll();
+    const std::uint64_t before = s.tessellations();
+    const bool first = s.renderQ3(view);
+    const std::uint64_t afterFirst = s.tessellations();
+    const bool second = s.renderQ3(view);
+    const std::uint64_t retessellated = s.tessellations() - afterFirst;
+    if (!first || !second || afterFirst - before != kCurveCount || retessellated != 0) {
+        state.SkipWithError(("after an edit the first frame tessellated " + std::to_string(afterFirst - before) +
+                             " curves and an unchanged second frame " + std::to_string(retessellated) +
+                             " (or a frame failed)")
+                                .c_str());
+        return;
+    }
+    for (auto _ : state)
+        s.renderQ3(view);
+    state.counters["tessellated_first_frame"] = double(afterFirst - before);
+    state.counters["retessellated_second_frame"] = double(retessellated);
+    state.counters["lit_pixels"] = litPixels(view.pixels());
+}
+
+void Q3_FrameEdited(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    Scene& s = scene();
+    q3bench::BenchView& view = s.view(size);
+    const std::uint64_t before = s.tessellations();
+    for (auto _ : state) {
+        s.editAll();
+        s.renderQ3(view);
+    }
+    state.counters["tessellated_per_frame"] =
+        double(s.tessellations() - before) / double(std::max<benchmark::IterationCount>(state.iterations(), 1));
+}
+
+void rawFrame(benchmark::State& state, bool multiDraw)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    Scene& s = scene();
+    q3bench::BenchView& view = s.view(size);
+    if (!s.renderQ3(view)) {
+        state.SkipWithError("the Q3 reference frame failed");
+        return;
+    }
+    RawGl& gl = raw(size);
+    if (!gl.bind()) {
+        state.SkipWithError("OSMesaMakeCurrent failed");
+        return;
+    }
+    gl.frame(&s, multiDraw);
+    state.counters["pixels_differing"] = differingPixels(view.pixels(), gl.readBack(), size);
+    for (auto _ : state)
+        gl.frame(&s, multiDraw);
+    gl.release();
+}
+
+void Raw_Frame(benchmark::State& state)
+{
+    rawFrame(state, false);
+}
+
+void RawMulti_Frame(benchmark::State& state)
+{
+    rawFrame(state, true);
+}
+
+void Q3_EmptyFrame(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    q3bench::BenchView& view = scene().view(size);
+    for (auto _ : state) {
+        Q3View_StartRendering(view.view());
+        Q3View_EndRendering(view.view());
+    }
+}
+
+void Raw_EmptyFrame(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    scene().view(size);
+    RawGl& gl = raw(size);
+    if (!gl.bind()) {
+        state.SkipWithError("OSMesaMakeCurrent failed");
+        return;
+    }
+    for (auto _ : state)
+        gl.frame(nullptr, false);
+    gl.release();
+}
+
+void sizes(benchmark::internal::Benchmark* benchmark)
+{
+    benchmark->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
+BENCHMARK(Q3_Frame)->Apply(sizes);
+BENCHMARK(Raw_Frame)->Apply(sizes);
+BENCHMARK(RawMulti_Frame)->Apply(sizes);
+BENCHMARK(Q3_FrameEdited)->Apply(sizes);
+BENCHMARK(Q3_EmptyFrame)->Apply(sizes);
+BENCHMARK(Raw_EmptyFrame)->Apply(sizes);
+
+} // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Q3's curve tessellation, measured on the curves GluTessellateBench.cpp gives
+// GLU (BenchCurves.h); benchmarks/run.sh pairs the two processes' results.
+//
+//   Q3_Constant        the kernel: tessellateConstant from the control points,
+//                      64 segments per span, Bezier conversion included, the
+//                      output's storage reused (as GLU reuses its buffers).
+//   Q3_ConstantForm    the same from a prebuilt BezierForm (what a retained
+//                      curve's cache holds); informational, no GLU twin.
+//   Q3_GetDecomposed   the public call: inside a rendering loop of a 64 x 64
+//                      view, Q3NURBCurve_SetKnot (to the knot's own value)
+//                      empties the curve's cache, Q3Geometry_GetDecomposed
+//                      rebuilds it and makes a PolyLine, Q3Object_Dispose
+//                      frees that.
+//   Q3_Adaptive        tessellateAdaptive in world space (identity mapping)
+//                      and in screen space (BenchCurves.h's perspective
+//                      projection), with c1 = arc length / (16 * spans).
+//
+// Items are distinct vertices; the constant benchmarks also report the
+// largest distance of a vertex from the long-double curve at its parameter.
+
+#include "BenchCurves.h"
+#include "BenchView.h"
+
+#include "geometry/nurbs/Bezier.h"
+#include "geometry/nurbs/Tessellate.h"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+namespace {
+
+using q3bench::BenchCurve;
+using q3bench::Space;
+namespace nurbs = q3::nurbs;
+
+const BenchCurve& curveNamed(int which)
+{
+    static const BenchCurve cubic = q3bench::rationalCubic();
+    static const BenchCurve sixteen = q3bench::orderSixteen();
+    return which == 0 ? cubic : sixteen;
+}
+
+nurbs::CurveRef refOf(const BenchCurve& curve)
+{
+    nurbs::CurveRef ref;
+    ref.order = curve.order;
+    ref.numPoints = curve.numPoints();
+    ref.points = curve.points.data();
+    ref.knots = curve.knots.data();
+    return ref;
+}
+
+// Checks the vertex count and records the accuracy counters.
+bool checkConstant(benchmark::State& state, const BenchCurve& curve, const nurbs::TessellatedCurve& out)
+{
+    const std::uint32_t m = q3bench::kSegmentsPerSpan;
+    if (out.vertexCount() != curve.spanCount() * m + 1) {
+        state.SkipWithError(("Q3 gave " + std::to_string(out.vertexCount()) + " vertices").c_str());
+        return false;
+    }
+    const double error = q3bench::maxSampleError(curve, out.vertices.data(), m,
+                                                 [&](std::size_t s, std::uint32_t j) { return s * m + j; });
+    state.counters["max_error"] = error;
+    state.counters["rel_error"] = error / q3bench::curveScale(curve);
+    return true;
+}
+
+void finishItems(benchmark::State& state, double vertices)
+{
+    state.SetItemsProcessed(std::int64_t(double(state.iterations()) * vertices));
+    state.counters["vertices"] = vertices;
+}
+
+void Q3_Constant(benchmark::State& state, int which)
+{
+    const BenchCurve& curve = curveNamed(which);
+    const nurbs::CurveRef ref = refOf(curve);
+    nurbs::TessellatedCurve out;
+    nurbs::tessellateConstant(ref, q3bench::kSegmentsPerSpan, out);
+    if (!checkConstant(state, curve, out))
+        return;
+    for (auto _ : state) {
+        nurbs::tessellateConstant(ref, q3bench::kSegmentsPerSpan, out);
+        benchmark::DoNotOptimize(out.vertices.data());
+        benchmark::ClobberMemory();
+    }
+    finishItems(state, double(out.vertexCount()));
+}
+
+void Q3_ConstantForm(benchmark::State& state, int which)
+{
+    const BenchCurve& curve = curveNamed(which);
+    const nurbs::BezierForm form(refOf(curve));
+    nurbs::TessellatedCurve out;
+    nurbs::tessellateConstant(form, q3bench::kSegmentsPerSpan, out);
+    if (!checkConstant(state, curve, out))
+        return;
+    for (auto _ : state) {
+        nurbs::tessellateConstant(form, q3bench::kSegmentsPerSpan, out);
+        benchmark::DoNotOptimize(out.vertices.data());
+        benchmark::ClobberMemory();
+    }
+    finishItems(state, double(out.vertexCount()));
+}
+
+void Q3_GetDecomposed(benchmark::State& state, int which)
+{
+    const BenchCurve& curve = curveNamed(which);
+    q3bench::Q3Session session;
+    q3bench::BenchView view(64, 64);
+    const TQ3NURBCurveData data = q3bench::curveData(curve);
+    TQ3GeometryObject nurb = Q3NURBCurve_New(&data);
+    const unsigned long knotIndex = curve.knots.size() / 2;
+    const float knot = curve.knots[knotIndex];
+    const TQ3SubdivisionStyleData style = q3bench::constantStyle(float(q3bench::kSegmentsPerSpan));
+    if (nurb == nullptr || Q3View_StartRendering(view.view()) != kQ3Success) {
+        state.SkipWithError("creating the curve or starting the rendering loop failed");
+        return;
+    }
+    Q3SubdivisionStyle_Submit(&style, view.view());
+
+    // The polyline must have every vertex the kernel makes.
+    TQ3GeometryObject first = Q3Geometry_GetDecomposed(nurb, view.view());
+    TQ3PolyLineData polyLine{};
+    const bool complete = first != nullptr && Q3PolyLine_GetData(first, &polyLine) == kQ3Success &&
+                          polyLine.numVertices == curve.spanCount() * q3bench::kSegmentsPerSpan + 1;
+    if (first != nullptr) {
+        Q3PolyLine_EmptyData(&polyLine);
+        Q3Object_Dispose(first);
+    }
+    if (!complete) {
+        state.SkipWithError("Q3Geometry_GetDecomposed did not give spans * 64 + 1 vertices");
+        Q3View_EndRendering(view.view());
+        Q3Object_Dispose(nurb);
+        return;
+    }
+
+    for (auto _ : state) {
+        Q3NURBCurve_SetKnot(nurb, knotIndex, knot);
+        TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, view.view());
+        benchmark::DoNotOptimize(decomposed);
+        Q3Object_Dispose(decomposed);
+    }
+    Q3View_EndRendering(view.view());
+    Q3Object_Dispose(nurb);
+    finishItems(state, double(curve.spanCount() * q3bench::kSegmentsPerSpan + 1));
+}
+
+void Q3_Adaptive(benchmark::State& state, Space space, int which)
+{
+    const BenchCurve& curve = curveNamed(which);
+    const nurbs::CurveRef ref = refOf(curve);
+    const double length = q3bench::arcLength(curve, space);
+    const double c1 = q3bench::adaptiveLength(curve, length);
+    const q3bench::Projection projection;
+    nurbs::PointMapping mapping;
+    if (space == Space::kWorld) {
+        mapping = [](const nurbs::Point3& p, nurbs::Point3& out) {
+            out = p;
+            return true;
+        };
+    } else {
+        mapping = [&projection](const nurbs::Point3& p, nurbs::Point3& out) {
+            double pixel[3];
+            if (!projection.toPixels(p.x, p.y, p.z, pixel))
+                return false;
+            out = nurbs::Point3{pixel[0], pixel[1], pixel[2]};
+            return true;
+        };
+    }
+    nurbs::TessellatedCurve out;
+    nurbs::tessellateAdaptive(ref, c1, mapping, out);
+    if (out.vertexCount() < 2 || out.substituted || out.capped) {
+        state.SkipWithError("adaptive tessellation substituted or capped c1");
+        return;
+    }
+    const double segments = double(out.vertexCount() - 1);
+    const double longest = q3bench::longestChord(out.vertices.data(), out.vertexCount(), space);
+    for (auto _ : state) {
+        nurbs::tessellateAdaptive(ref, c1, mapping, out);
+        benchmark::DoNotOptimize(out.vertices.data());
+        benchmark::ClobberMemory();
+    }
+    finishItems(state, segments + 1.0);
+    state.counters["segments_per_ideal"] = segments / (length / c1);
+    state.counters["longest_over_c1"] = longest / c1;
+    state.counters["c1"] = c1;
+}
+
+// Names end in the curve, as in GluTessellateBench.cpp: cubic is the rational
+// cubic, order16 the order-16 curve (1000 control points each).
+BENCHMARK_CAPTURE(Q3_Constant, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_Constant, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_ConstantForm, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_ConstantForm, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_GetDecomposed, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_GetDecomposed, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_Adaptive, world_cubic, Space::kWorld, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_Adaptive, world_order16, Space::kWorld, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_Adaptive, screen_cubic, Space::kScreen, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_Adaptive, screen_order16, Space::kScreen, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+} // namespace
+
+BENCHMARK_MAIN();
