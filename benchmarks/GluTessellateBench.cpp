@@ -1,27 +1,42 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 
-// The peer of TessellateBench.cpp: the same curves tessellated by GLU's NURBS
-// tessellator (SGI's sample implementation as Mesa ships it). It runs in a
-// process of its own because libGLU links the GL dispatch library, whose gl*
-// entry points would clash with OSMesa's in one process; benchmarks/run.sh
-// reads both processes' JSON and forms the ratios.
+// Q3's tessellation kernel against GLU's NURBS tessellator (SGI's sample
+// implementation as Mesa ships it) on the curves of BenchCurves.h, paired in
+// one loop (BenchTiming.h, thread CPU time: both are single-threaded).
 //
-// No GL context exists here, and none is needed: in GLU_NURBS_TESSELLATOR mode
-// GLU evaluates the curve itself and hands vertices to callbacks. Traced with
-// LD_DEBUG=bindings, gluNurbsCurve resolves only glEnable(GL_MAP1_VERTEX_4)
-// (a no-op without a current context) once GLU_AUTO_LOAD_MATRIX is off; with
-// it on, GLU would also read the matrices and viewport with glGetFloatv and
-// glGetIntegerv. The screen-space method gets its matrices from
-// gluLoadSamplingMatrices instead.
+// This process holds libGLU, which links the GL dispatch library; its gl*
+// entry points would clash with OSMesa's, so nothing here may link OSMesa.
+// Q3's side is therefore only src/geometry/nurbs, pure math built into
+// q3_bench_nurbs (benchmarks/CMakeLists.txt) from the same sources and flags
+// as the library; everything that needs a view is in TessellateBench.cpp.
 //
-// GLU's step rule for GLU_DOMAIN_DISTANCE, measured: a span of width h gets
-// floor(h * GLU_U_STEP) + 1 segments (h * step = 64 gives 65), and each span
-// is its own line strip that repeats the joint vertex. So GLU_U_STEP =
-// 63.5 / h gives the 64 segments per span Q3 makes, with half a step of
-// margin against rounding; the setup checks the vertex count.
+// GLU without a GL context: in GLU_NURBS_TESSELLATOR mode GLU evaluates the
+// curve itself and hands vertices to callbacks. Traced with LD_DEBUG=bindings,
+// gluNurbsCurve then resolves only glEnable(GL_MAP1_VERTEX_4), a no-op without
+// a current context, once GLU_AUTO_LOAD_MATRIX is off (with it on GLU also
+// reads the matrices and viewport with glGetFloatv and glGetIntegerv). The
+// screen-space method gets its matrices from gluLoadSamplingMatrices. For
+// GL_MAP1_VERTEX_4 the vertex callback receives homogeneous x, y, z, w.
+//
+// What GLU does with each sampling property, measured on these curves:
+//   GLU_DOMAIN_DISTANCE   a span of width h gets floor(h * GLU_U_STEP) + 1
+//                         segments (h * step = 64 gives 65) and is a line strip
+//                         of its own that repeats the joint vertex; so
+//                         GLU_U_STEP = 63.5 / h gives Q3's 64 per span, half a
+//                         step away from rounding (the setup checks the count).
+//   GLU_OBJECT_PATH_LENGTH  not implemented for curves: GLU falls back to
+//                         GLU_U_STEP samples per span whatever the tolerance
+//                         (U_STEP = 1e6 gave 10^6 segments per span), 100 by
+//                         default. It is still the only object-space method
+//                         GLU offers, so it is the world-space peer.
+//   GLU_PATH_LENGTH       bounds the chord in pixels through a derivative
+//                         bound on the projected control points.
 
 #include "BenchCurves.h"
+#include "BenchTiming.h"
+
+#include "geometry/nurbs/Tessellate.h"
 
 #include <GL/glu.h>
 #include <benchmark/benchmark.h>
@@ -33,13 +48,14 @@ namespace {
 
 using q3bench::BenchCurve;
 using q3bench::Space;
+namespace nurbs = q3::nurbs;
 
 // Where GLU's callbacks write. GLU_NURBS_VERTEX carries no user pointer, so
 // the sink is global; the buffer is allocated before timing starts.
 struct VertexSink {
     std::vector<float> xyz;
-    std::size_t count = 0;   // vertices delivered
-    std::size_t strips = 0;  // GLU_NURBS_BEGIN calls
+    std::size_t count = 0;  // vertices delivered
+    std::size_t strips = 0; // GLU_NURBS_BEGIN calls
     GLenum error = 0;
 };
 VertexSink g_sink;
@@ -49,9 +65,8 @@ void GLAPIENTRY onBegin(GLenum)
     ++g_sink.strips;
 }
 
-// For GL_MAP1_VERTEX_4 GLU delivers the homogeneous x, y, z, w (what
-// glVertex4fv takes); the polyline Q3 makes is the projected point, so the
-// sink divides, in float as the GL pipeline would.
+// The polyline Q3 makes holds projected points, so the sink divides by w,
+// in float as the GL pipeline would.
 void GLAPIENTRY onVertex(GLfloat* v)
 {
     if (3 * (g_sink.count + 1) <= g_sink.xyz.size()) {
@@ -128,15 +143,35 @@ const BenchCurve& curveNamed(int which)
     return which == 0 ? cubic : sixteen;
 }
 
+nurbs::CurveRef refOf(const BenchCurve& curve)
+{
+    nurbs::CurveRef ref;
+    ref.order = curve.order;
+    ref.numPoints = curve.numPoints();
+    ref.points = curve.points.data();
+    ref.knots = curve.knots.data();
+    return ref;
+}
+
 void prepareSink(std::size_t vertices)
 {
     g_sink = VertexSink{};
     g_sink.xyz.assign(3 * vertices, 0.0f);
 }
 
-// Constant method, 64 segments per span. Items are distinct vertices
-// (spans * 64 + 1), the count Q3 produces, so the rates compare equal work.
-void GLU_Constant(benchmark::State& state, int which)
+std::string describeSink()
+{
+    return "GLU gave " + std::to_string(g_sink.count) + " vertices in " + std::to_string(g_sink.strips) +
+           " strips, error " + std::to_string(g_sink.error);
+}
+
+// Constant method, 64 segments per span: GLU from the control points against
+// tessellateConstant from the control points (Bezier conversion included,
+// the output's storage reused as GLU reuses its own). Both make the same
+// spans * 64 + 1 distinct vertices, so glu_over_q3 is the speed-up in
+// vertices per second. The errors are the largest distance of a vertex from
+// the long-double curve at the vertex's parameter.
+void Glu_Constant(benchmark::State& state, int which)
 {
     const BenchCurve& curve = curveNamed(which);
     const std::uint32_t m = q3bench::kSegmentsPerSpan;
@@ -146,29 +181,47 @@ void GLU_Constant(benchmark::State& state, int which)
     glu.constant(float((m - 0.5) / q3bench::kKnotSpacing));
     glu.run(curve);
     if (g_sink.error != 0 || g_sink.count != spans * (m + 1) || g_sink.strips != spans) {
-        state.SkipWithError(("GLU gave " + std::to_string(g_sink.count) + " vertices in " +
-                             std::to_string(g_sink.strips) + " strips, error " + std::to_string(g_sink.error))
-                                .c_str());
+        state.SkipWithError(describeSink().c_str());
         return;
     }
-    const double error = q3bench::maxSampleError(curve, g_sink.xyz.data(), m, [&](std::size_t s, std::uint32_t j) {
-        return s * (m + 1) + j;
-    });
-    for (auto _ : state) {
-        glu.run(curve);
-        benchmark::DoNotOptimize(g_sink.xyz.data());
-        benchmark::ClobberMemory();
+    const double gluError = q3bench::maxSampleError(
+        curve, g_sink.xyz.data(), m, [&](std::size_t s, std::uint32_t j) { return s * (m + 1) + j; });
+
+    const nurbs::CurveRef ref = refOf(curve);
+    nurbs::TessellatedCurve out;
+    nurbs::tessellateConstant(ref, m, out);
+    if (out.vertexCount() != spans * m + 1) {
+        state.SkipWithError(("Q3 gave " + std::to_string(out.vertexCount()) + " vertices").c_str());
+        return;
     }
-    const double vertices = double(spans * m + 1);
-    state.SetItemsProcessed(std::int64_t(state.iterations() * vertices));
-    state.counters["vertices"] = vertices;
-    state.counters["max_error"] = error;
-    state.counters["rel_error"] = error / q3bench::curveScale(curve);
+    const double q3Error = q3bench::maxSampleError(curve, out.vertices.data(), m,
+                                                   [&](std::size_t s, std::uint32_t j) { return s * m + j; });
+
+    q3bench::runPaired(state, q3bench::Clock::kThreadCpu,
+                       {{"glu",
+                         [&] {
+                             glu.run(curve);
+                             benchmark::DoNotOptimize(g_sink.xyz.data());
+                             benchmark::ClobberMemory();
+                         }},
+                        {"q3", [&] {
+                             nurbs::tessellateConstant(ref, m, out);
+                             benchmark::DoNotOptimize(out.vertices.data());
+                             benchmark::ClobberMemory();
+                         }}});
+    const double scale = q3bench::curveScale(curve);
+    state.counters["vertices"] = double(spans * m + 1);
+    state.counters["q3_rel_error"] = q3Error / scale;
+    state.counters["glu_rel_error"] = gluError / scale;
 }
 
-// World space (GLU_OBJECT_PATH_LENGTH) and screen space (GLU_PATH_LENGTH)
-// with the c1 the Q3 side uses. Items are distinct vertices.
-void GLU_Adaptive(benchmark::State& state, Space space, int which)
+// Adaptive methods with c1 = arc length / (16 * spans) in the space: Q3's
+// tessellateAdaptive (world: identity mapping; screen: BenchCurves.h's
+// projection to pixels) against GLU_OBJECT_PATH_LENGTH / GLU_PATH_LENGTH with
+// the same tolerance. They make different vertex counts, reported with how
+// close each comes to the fewest segments (segments / (L / c1)) and whether
+// it keeps the bound (longest chord / c1).
+void Glu_Adaptive(benchmark::State& state, Space space, int which)
 {
     const BenchCurve& curve = curveNamed(which);
     const double length = q3bench::arcLength(curve, space);
@@ -178,36 +231,71 @@ void GLU_Adaptive(benchmark::State& state, Space space, int which)
     glu.adaptive(space, float(c1));
     glu.run(curve);
     if (g_sink.error != 0 || 3 * g_sink.count > g_sink.xyz.size() || g_sink.strips == 0) {
-        state.SkipWithError(("GLU gave " + std::to_string(g_sink.count) + " vertices, error " +
-                             std::to_string(g_sink.error))
-                                .c_str());
+        state.SkipWithError(describeSink().c_str());
         return;
     }
     // Each strip starts with the previous one's last vertex: a zero chord, so
     // the whole stream has the same longest chord as the strips.
-    const std::size_t segments = g_sink.count - g_sink.strips;
-    const double longest = q3bench::longestChord(g_sink.xyz.data(), g_sink.count, space);
-    for (auto _ : state) {
-        glu.run(curve);
-        benchmark::DoNotOptimize(g_sink.xyz.data());
-        benchmark::ClobberMemory();
+    const std::size_t gluSegments = g_sink.count - g_sink.strips;
+    const double gluLongest = q3bench::longestChord(g_sink.xyz.data(), g_sink.count, space);
+
+    const q3bench::Projection projection;
+    nurbs::PointMapping mapping;
+    if (space == Space::kWorld) {
+        mapping = [](const nurbs::Point3& p, nurbs::Point3& image) {
+            image = p;
+            return true;
+        };
+    } else {
+        mapping = [&projection](const nurbs::Point3& p, nurbs::Point3& image) {
+            double pixel[3];
+            if (!projection.toPixels(p.x, p.y, p.z, pixel))
+                return false;
+            image = nurbs::Point3{pixel[0], pixel[1], pixel[2]};
+            return true;
+        };
     }
-    const double vertices = double(segments + 1);
-    state.SetItemsProcessed(std::int64_t(state.iterations() * vertices));
-    state.counters["vertices"] = vertices;
-    state.counters["segments_per_ideal"] = double(segments) / (length / c1);
-    state.counters["longest_over_c1"] = longest / c1;
+    const nurbs::CurveRef ref = refOf(curve);
+    nurbs::TessellatedCurve out;
+    nurbs::tessellateAdaptive(ref, c1, mapping, out);
+    if (out.vertexCount() < 2 || out.substituted || out.capped) {
+        state.SkipWithError("Q3's adaptive tessellation substituted or capped c1");
+        return;
+    }
+    const double q3Segments = double(out.vertexCount() - 1);
+    const double q3Longest = q3bench::longestChord(out.vertices.data(), out.vertexCount(), space);
+
+    q3bench::runPaired(state, q3bench::Clock::kThreadCpu,
+                       {{"glu",
+                         [&] {
+                             glu.run(curve);
+                             benchmark::DoNotOptimize(g_sink.xyz.data());
+                             benchmark::ClobberMemory();
+                         }},
+                        {"q3", [&] {
+                             nurbs::tessellateAdaptive(ref, c1, mapping, out);
+                             benchmark::DoNotOptimize(out.vertices.data());
+                             benchmark::ClobberMemory();
+                         }}});
+    const double ideal = length / c1;
     state.counters["c1"] = c1;
+    state.counters["q3_vertices"] = q3Segments + 1.0;
+    state.counters["glu_vertices"] = double(gluSegments + 1);
+    state.counters["q3_segments_per_ideal"] = q3Segments / ideal;
+    state.counters["glu_segments_per_ideal"] = double(gluSegments) / ideal;
+    state.counters["q3_longest_over_c1"] = q3Longest / c1;
+    state.counters["glu_longest_over_c1"] = gluLongest / c1;
 }
 
 // Names end in the curve: cubic is the rational cubic, order16 the order-16
-// curve (1000 control points each).
-BENCHMARK_CAPTURE(GLU_Constant, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(GLU_Constant, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(GLU_Adaptive, world_cubic, Space::kWorld, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(GLU_Adaptive, world_order16, Space::kWorld, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(GLU_Adaptive, screen_cubic, Space::kScreen, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(GLU_Adaptive, screen_order16, Space::kScreen, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+// curve (1000 control points each). The reported time covers both contenders;
+// the counters hold each one's time.
+BENCHMARK_CAPTURE(Glu_Constant, cubic, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Constant, order16, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Adaptive, world_cubic, Space::kWorld, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Adaptive, world_order16, Space::kWorld, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Adaptive, screen_cubic, Space::kScreen, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Adaptive, screen_order16, Space::kScreen, 1)->Unit(benchmark::kMillisecond);
 
 } // namespace
 

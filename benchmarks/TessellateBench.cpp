@@ -1,27 +1,23 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 
-// Q3's curve tessellation, measured on the curves GluTessellateBench.cpp gives
-// GLU (BenchCurves.h); benchmarks/run.sh pairs the two processes' results.
+// The public tessellation call against Q3's own kernel, in one process with
+// a view (OSMesa), so no GLU here: GluTessellateBench.cpp pairs the kernel
+// with GLU, and run.sh chains the two ratios. Thread CPU time throughout.
 //
-//   Q3_Constant        the kernel: tessellateConstant from the control points,
-//                      64 segments per span, Bezier conversion included, the
-//                      output's storage reused (as GLU reuses its buffers).
-//   Q3_ConstantForm    the same from a prebuilt BezierForm (what a retained
-//                      curve's cache holds); informational, no GLU twin.
-//   Q3_GetDecomposed   the public call: inside a rendering loop of a 64 x 64
-//                      view, Q3NURBCurve_SetKnot (to the knot's own value)
-//                      empties the curve's cache, Q3Geometry_GetDecomposed
-//                      rebuilds it and makes a PolyLine, Q3Object_Dispose
-//                      frees that.
-//   Q3_Adaptive        tessellateAdaptive in world space (identity mapping)
-//                      and in screen space (BenchCurves.h's perspective
-//                      projection), with c1 = arc length / (16 * spans).
-//
-// Items are distinct vertices; the constant benchmarks also report the
-// largest distance of a vertex from the long-double curve at its parameter.
+//   Q3_GetDecomposed   paired: inside a rendering loop of a 64 x 64 view,
+//                      Q3NURBCurve_SetKnot (to the knot's own value) empties
+//                      the curve's cache, Q3Geometry_GetDecomposed rebuilds it
+//                      (Bezier form, tessellation) and makes a PolyLine,
+//                      Q3Object_Dispose frees that; against the kernel,
+//                      tessellateConstant from the control points into
+//                      reused storage. Constant method, 64 segments per span.
+//   Q3_Constant        the kernel alone (informational).
+//   Q3_ConstantForm    the same from a prebuilt BezierForm, what a retained
+//                      curve's cache holds (informational).
 
 #include "BenchCurves.h"
+#include "BenchTiming.h"
 #include "BenchView.h"
 
 #include "geometry/nurbs/Bezier.h"
@@ -34,7 +30,6 @@
 namespace {
 
 using q3bench::BenchCurve;
-using q3bench::Space;
 namespace nurbs = q3::nurbs;
 
 const BenchCurve& curveNamed(int which)
@@ -139,70 +134,34 @@ void Q3_GetDecomposed(benchmark::State& state, int which)
         return;
     }
 
-    for (auto _ : state) {
-        Q3NURBCurve_SetKnot(nurb, knotIndex, knot);
-        TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, view.view());
-        benchmark::DoNotOptimize(decomposed);
-        Q3Object_Dispose(decomposed);
-    }
+    const nurbs::CurveRef ref = refOf(curve);
+    nurbs::TessellatedCurve out;
+    q3bench::runPaired(state, q3bench::Clock::kThreadCpu,
+                       {{"decomposed",
+                         [&] {
+                             Q3NURBCurve_SetKnot(nurb, knotIndex, knot);
+                             TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, view.view());
+                             benchmark::DoNotOptimize(decomposed);
+                             Q3Object_Dispose(decomposed);
+                         }},
+                        {"kernel", [&] {
+                             nurbs::tessellateConstant(ref, q3bench::kSegmentsPerSpan, out);
+                             benchmark::DoNotOptimize(out.vertices.data());
+                             benchmark::ClobberMemory();
+                         }}});
     Q3View_EndRendering(view.view());
     Q3Object_Dispose(nurb);
-    finishItems(state, double(curve.spanCount() * q3bench::kSegmentsPerSpan + 1));
-}
-
-void Q3_Adaptive(benchmark::State& state, Space space, int which)
-{
-    const BenchCurve& curve = curveNamed(which);
-    const nurbs::CurveRef ref = refOf(curve);
-    const double length = q3bench::arcLength(curve, space);
-    const double c1 = q3bench::adaptiveLength(curve, length);
-    const q3bench::Projection projection;
-    nurbs::PointMapping mapping;
-    if (space == Space::kWorld) {
-        mapping = [](const nurbs::Point3& p, nurbs::Point3& out) {
-            out = p;
-            return true;
-        };
-    } else {
-        mapping = [&projection](const nurbs::Point3& p, nurbs::Point3& out) {
-            double pixel[3];
-            if (!projection.toPixels(p.x, p.y, p.z, pixel))
-                return false;
-            out = nurbs::Point3{pixel[0], pixel[1], pixel[2]};
-            return true;
-        };
-    }
-    nurbs::TessellatedCurve out;
-    nurbs::tessellateAdaptive(ref, c1, mapping, out);
-    if (out.vertexCount() < 2 || out.substituted || out.capped) {
-        state.SkipWithError("adaptive tessellation substituted or capped c1");
-        return;
-    }
-    const double segments = double(out.vertexCount() - 1);
-    const double longest = q3bench::longestChord(out.vertices.data(), out.vertexCount(), space);
-    for (auto _ : state) {
-        nurbs::tessellateAdaptive(ref, c1, mapping, out);
-        benchmark::DoNotOptimize(out.vertices.data());
-        benchmark::ClobberMemory();
-    }
-    finishItems(state, segments + 1.0);
-    state.counters["segments_per_ideal"] = segments / (length / c1);
-    state.counters["longest_over_c1"] = longest / c1;
-    state.counters["c1"] = c1;
+    state.counters["vertices"] = double(curve.spanCount() * q3bench::kSegmentsPerSpan + 1);
 }
 
 // Names end in the curve, as in GluTessellateBench.cpp: cubic is the rational
 // cubic, order16 the order-16 curve (1000 control points each).
-BENCHMARK_CAPTURE(Q3_Constant, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_Constant, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_ConstantForm, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_ConstantForm, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_GetDecomposed, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_GetDecomposed, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_Adaptive, world_cubic, Space::kWorld, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_Adaptive, world_order16, Space::kWorld, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_Adaptive, screen_cubic, Space::kScreen, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(Q3_Adaptive, screen_order16, Space::kScreen, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_Constant, cubic, 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Q3_Constant, order16, 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Q3_ConstantForm, cubic, 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Q3_ConstantForm, order16, 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Q3_GetDecomposed, cubic, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Q3_GetDecomposed, order16, 1)->Unit(benchmark::kMillisecond);
 
 } // namespace
 

@@ -16,3 +16,32 @@ echo "== Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"
 ctest --test-dir build -j"$jobs" --output-on-failure --timeout 300
+
+# Sanitizer runtime settings shared by the stages below. Leaks are errors;
+# the only suppressed ones are Mesa's own (tests/sanitizers/lsan.supp says
+# why). Any undefined behaviour stops the test that hit it.
+lsan_options="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+ubsan_options="halt_on_error=1:print_stacktrace=1"
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=gcc -DCMAKE_CXX_COMPILER=g++ \
+  -DQ3_SANITIZE=address,undefined -DQ3_BUILD_BENCHMARKS=OFF
+cmake --build build-asan -j"$jobs"
+ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="$lsan_options" UBSAN_OPTIONS="$ubsan_options" \
+  ctest --test-dir build-asan -j"$jobs" --output-on-failure --timeout 900 -E '^Install\.'
+# The install check builds and runs a program from outside the tree with the
+# plain compiler; the sanitized libq3 it links needs the ASan runtime loaded
+# first, so it is preloaded (and leak checking is left to the tests above:
+# the build tools the check runs would report their own leaks).
+LD_PRELOAD="$(gcc -print-file-name=libasan.so)" ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS="$ubsan_options" \
+  ctest --test-dir build-asan --output-on-failure --timeout 300 -R '^Install\.'
+
+echo "== ThreadSanitizer build and thread tests"
+cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=gcc -DCMAKE_CXX_COMPILER=g++ \
+  -DQ3_SANITIZE=thread -DQ3_BUILD_BENCHMARKS=OFF -DQ3_BUILD_SAMPLES=OFF
+cmake --build build-tsan -j"$jobs" --target q3_api_tests
+TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizers/tsan.supp" \
+  ctest --test-dir build-tsan --output-on-failure --timeout 900 --no-tests=error -R '^Threads'
+
+echo "== libFuzzer: the API fuzzer for 60 seconds"
+bash tests/fuzz/run.sh 60

@@ -748,7 +748,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3Point_Submit(const TQ3PointData *pointData, TQ3View
  *   kQ3ErrorInvalidObjectType  point is not a point.
  *
  * Ownership: when pointData->pointAttributeSet is not NULL the caller owns a
- * new reference to it and releases it with Q3Object_Dispose.
+ * new reference to it and releases it with Q3Point_EmptyData (or
+ * Q3Object_Dispose).
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Point_GetData(TQ3GeometryObject point, TQ3PointData *pointData);
 
@@ -773,6 +774,25 @@ Q3_EXTERN_API_C(TQ3Status) Q3Point_GetData(TQ3GeometryObject point, TQ3PointData
  * releases the one it held; the caller keeps its own reference.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Point_SetData(TQ3GeometryObject point, const TQ3PointData *pointData);
+
+/**
+ * Releases what Q3Point_GetData handed out: the reference to the point's
+ * attribute set, which is then set to NULL.
+ *
+ * @param pointData  data filled by Q3Point_GetData.
+ * @return kQ3Success, or kQ3Failure with pointData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pointData is NULL.
+ *   kQ3ErrorInvalidObject      pointData->pointAttributeSet is not a live Q3
+ *                              object.
+ *   kQ3ErrorInvalidObjectType  pointData->pointAttributeSet is not an
+ *                              attribute set.
+ *
+ * Ownership: consumes the reference to pointData->pointAttributeSet.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Point_EmptyData(TQ3PointData *pointData);
 
 #ifdef __cplusplus
 }

@@ -663,7 +663,8 @@ static void pixel_size(const Q3FigCanvas *canvas, float *dx, float *dy)
 static TQ3AttributeSet new_color_set(TQ3ColorRGB color)
 {
     TQ3AttributeSet set = Q3AttributeSet_New();
-    if (set != NULL && Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color) != kQ3Success) {
+    if (set != NULL &&
+        Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color) != kQ3Success) {
         Q3Object_Dispose(set);
         set = NULL;
     }
@@ -786,7 +787,8 @@ static TQ3Status submit_plot_axes(const Q3Figure *figure, const Q3FigCanvas *can
             continue;
         while (i + multiplicity < count && curve->knots[i + multiplicity] == curve->knots[i])
             multiplicity++;
-        set_line(line, curve->knots[i], 0.0f, curve->knots[i], -TICK_LENGTH * (float)multiplicity * dy);
+        set_line(line, curve->knots[i], 0.0f, curve->knots[i],
+                 -TICK_LENGTH * (float)multiplicity * dy);
         status = submit_polyline(canvas->view, line, 2, kAxisGray);
     }
     return status;

@@ -47,4 +47,12 @@ TQ3Status Q3Point_SetData(TQ3GeometryObject point, const TQ3PointData* pointData
     });
 }
 
+TQ3Status Q3Point_EmptyData(TQ3PointData* pointData)
+{
+    return guardStatus(__func__, [&] {
+        requireNonNull(pointData, "pointData");
+        Point::emptyData(*pointData);
+    });
+}
+
 } // extern "C"

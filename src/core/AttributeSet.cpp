@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "core/AttributeSet.h"
 
+#include "core/EnumValue.h"
 #include "core/ShapeVisitor.h"
 
 #include <cmath>
@@ -75,7 +76,7 @@ void AttributeSet::add(TQ3AttributeType type, const void* data)
     if (type == kQ3AttributeTypeHighlightState) {
         TQ3Switch value;
         std::memcpy(&value, slot.data(), sizeof value);
-        if (value != kQ3On && value != kQ3Off)
+        if (enumValue(value) != kQ3On && enumValue(value) != kQ3Off)
             fail(kQ3ErrorInvalidParameter, "a highlight state must be kQ3On or kQ3Off");
     } else {
         float values[6];

@@ -46,6 +46,15 @@ void Point::getData(TQ3PointData& out) const
     out.pointAttributeSet = attributeSetToHandle(m_attributes);
 }
 
+void Point::emptyData(TQ3PointData& data)
+{
+    // Check the handle first so a failure changes nothing; then take back the
+    // reference GetData handed out, released on return.
+    const Ref<AttributeSet> handedOut =
+        Ref<AttributeSet>::adopt(lookupOptional<AttributeSet>(data.pointAttributeSet, "pointAttributeSet"));
+    data.pointAttributeSet = nullptr;
+}
+
 void Point::setData(const TQ3PointData& data)
 {
     validatePointData(&data);

@@ -32,6 +32,8 @@ public:
     /// Fills `out` with the position and a new reference to the attribute set.
     void getData(TQ3PointData& out) const;
     void setData(const TQ3PointData& data);
+    /// Releases the reference getData handed out and sets it to NULL.
+    static void emptyData(TQ3PointData& data);
 
     const TQ3Point3D& point() const { return m_point; }
     /// The point's attribute set, or null.

@@ -99,9 +99,14 @@ nurbs::PointMapping mappingFor(const Plan& plan)
         };
     return [m = plan.through, pane = plan.pane](const nurbs::Point3& p, nurbs::Point3& out) {
         // w is the distance in front of the eye for a perspective camera:
-        // points at or behind the eye have no image.
+        // points at or behind the eye have no image. Frustum z above 0 is
+        // nearer than the hither plane: clipped away, and for a perspective
+        // camera its image grows without bound towards the eye plane, so
+        // measuring it there would spend segments (up to the cap, with a
+        // coarser c1 for the whole curve) on nothing that is drawn
+        // (Tessellate.h, PointMapping).
         const glm::dvec4 v = transformPoint(m, glm::dvec3(p.x, p.y, p.z));
-        if (!(v.w > 0.0))
+        if (!(v.w > 0.0) || v.z > 0.0)
             return false;
         const glm::dvec2 pixel = frustumToPane(pane, v.x / v.w, v.y / v.w);
         out = nurbs::Point3{pixel.x, pixel.y, 0.0};

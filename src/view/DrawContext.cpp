@@ -18,7 +18,8 @@ const ClassInfo kPixmapDrawContextClass{kQ3DrawContextTypePixmap, &kDrawContextC
 
 namespace {
 
-constexpr double kPaneLimit = double(1 << 30);
+// Pane edges are clamped to +-2^29 pixels so that max - min still fits an int.
+constexpr double kPaneLimit = double(1 << 29);
 
 TQ3Boolean normalized(const TQ3Boolean& value)
 {

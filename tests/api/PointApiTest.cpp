@@ -90,6 +90,27 @@ TEST_F(PointApiTest, TheAttributeSetIsHeldByReferenceAndHandedOutWithANewOne)
     EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3False);
 }
 
+TEST_F(PointApiTest, EmptyDataReleasesTheReferenceGetDataHandedOut)
+{
+    TQ3AttributeSet set = own(Q3AttributeSet_New());
+    m_data.pointAttributeSet = set;
+    TQ3GeometryObject point = Q3Point_New(&m_data);
+    ASSERT_NE(point, nullptr);
+    TQ3PointData out{};
+    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
+    EXPECT_EQ(Q3Point_EmptyData(&out), kQ3Success);
+    EXPECT_EQ(out.pointAttributeSet, nullptr);
+    Q3Object_Dispose(point);
+    m_data.pointAttributeSet = nullptr;
+    EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3False); // only the test's own reference is left
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_EmptyData(nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+    TQ3PointData wrong{{0, 0, 0}, point};
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_EmptyData(&wrong), kQ3Failure), kQ3ErrorInvalidObject);
+    EXPECT_EQ(wrong.pointAttributeSet, point); // unchanged on failure
+    TQ3PointData noSet{{0, 0, 0}, nullptr};
+    EXPECT_EQ(Q3Point_EmptyData(&noSet), kQ3Success);
+}
+
 TEST_F(PointApiTest, NewRejectsNullDataAndNonFiniteCoordinates)
 {
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(nullptr), nullptr), kQ3ErrorNULLParameter);

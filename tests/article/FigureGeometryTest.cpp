@@ -106,7 +106,8 @@ protected:
             EXPECT_NEAR(std::hypot(x, y), 1.0, kCircleTolerance) << "vertex " << i;
             EXPECT_EQ(vertices[i].z, 0.0f);
             if (i > 0) {
-                double step = std::atan2(y, x) - std::atan2(double(vertices[i - 1].y), double(vertices[i - 1].x));
+                const double px = vertices[i - 1].x, py = vertices[i - 1].y;
+                double step = std::atan2(y, x) - std::atan2(py, px);
                 if (step < -kPi)
                     step += 2 * kPi;
                 EXPECT_GT(step, 0.0) << "vertex " << i << " does not go counterclockwise";
@@ -148,7 +149,8 @@ TEST_F(ArticleFigureGeometry, Figure19ArcLiesOnTheUnitCircle)
     // The construction: equilateral control triangle, inner weight cos 60.
     const double side01 = std::hypot(arc.points[1].x / arc.points[1].w - arc.points[0].x,
                                      arc.points[1].y / arc.points[1].w - arc.points[0].y);
-    const double side02 = std::hypot(arc.points[2].x - arc.points[0].x, arc.points[2].y - arc.points[0].y);
+    const double side02 =
+        std::hypot(arc.points[2].x - arc.points[0].x, arc.points[2].y - arc.points[0].y);
     EXPECT_NEAR(side01, side02, 1e-6);
     EXPECT_EQ(arc.points[1].w, 0.5f);
     expectOnUnitCircle(arc, 1, 2 * kPi / 3);
@@ -214,7 +216,8 @@ TEST_F(ArticleFigureGeometry, Figure22KnotInsertionLeavesTheCurveUnchanged)
 
     // The article's picture: the two moved points sit on the old polygon's
     // legs B1-B2 and B2-B3; the others are the old points.
-    auto cross = [](const TQ3RationalPoint4D& o, const TQ3RationalPoint4D& p, const TQ3RationalPoint4D& q) {
+    using P = TQ3RationalPoint4D;
+    auto cross = [](const P& o, const P& p, const P& q) {
         return (double(p.x) - o.x) * (double(q.y) - o.y) - (double(p.y) - o.y) * (double(q.x) - o.x);
     };
     EXPECT_NEAR(cross(before.points[1], before.points[2], after.points[2]), 0.0, 1e-5);

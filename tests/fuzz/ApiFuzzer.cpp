@@ -42,6 +42,7 @@
 #include "QD3DView.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -56,7 +57,9 @@ namespace {
 
 // Bounds on the work one input may ask for.
 constexpr unsigned long kPointBudget = 4096;    // control points over all curve data built
-constexpr int kMaxCurveDraws = 24;              // curve and polyline submits and decompositions
+constexpr int kMaxCurveDraws = 12;              // curve and polyline submits and decompositions
+constexpr double kDrawSeconds = 2.0;            // then no more of them (one may take 4 s here)
+constexpr int kMaxDuplicates = 16;              // a decomposed polyline may have 2^20 vertices
 constexpr int kMaxOperations = 400;
 constexpr int kMaxViews = 3;
 constexpr int kMaxLoops = 24;                   // rendering and bounding loops started
@@ -126,6 +129,13 @@ TQ3Object checkObject(const char* call, TQ3Object object)
     return object;
 }
 
+template <class T>
+T* checkPointer(const char* call, T* result)
+{
+    checkPosted(call, result == nullptr);
+    return result;
+}
+
 TQ3ViewStatus checkViewStatus(const char* call, TQ3ViewStatus status)
 {
     checkPosted(call, status == kQ3ViewStatusError);
@@ -146,6 +156,7 @@ T checkQuery(const char* call, T result, T fallback)
 
 #define STATUS(call) checkStatus(#call, (begin(), (call)))
 #define OBJECT(call) checkObject(#call, (begin(), (call)))
+#define POINTER(call) checkPointer(#call, (begin(), (call)))
 #define VIEWSTATUS(call) checkViewStatus(#call, (begin(), (call)))
 #define QUERY(call, fallback) checkQuery(#call, (begin(), (call)), (fallback))
 
@@ -413,13 +424,31 @@ private:
 
     unsigned long editIndex(TQ3Object object) { return QUERY(Q3Shared_GetEditIndex(object), 0UL); }
 
+    // Curve draws are where an input's time goes (up to 2^20 segments each),
+    // so they are counted and timed, with the rasterization at the end of
+    // the loop; once either budget is spent, further draws are skipped.
     bool drawAllowed()
     {
-        if (m_curveDraws >= kMaxCurveDraws)
+        if (m_curveDraws >= kMaxCurveDraws || m_drawSeconds >= kDrawSeconds)
             return false;
         ++m_curveDraws;
         return true;
     }
+
+    class DrawTimer {
+    public:
+        explicit DrawTimer(double& total) : m_total(total), m_start(std::chrono::steady_clock::now()) {}
+        ~DrawTimer()
+        {
+            m_total += std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+        }
+        DrawTimer(const DrawTimer&) = delete;
+        DrawTimer& operator=(const DrawTimer&) = delete;
+
+    private:
+        double& m_total;
+        std::chrono::steady_clock::time_point m_start;
+    };
 
     // ---- Operations --------------------------------------------------------
 
@@ -452,7 +481,12 @@ private:
         case Op::kViewSet: viewSet(); break;
         case Op::kViewGet: viewGet(); break;
         case Op::kStartRendering: startRendering(); break;
-        case Op::kEndRendering: VIEWSTATUS(Q3View_EndRendering(pick(Kind::kView))); break;
+        case Op::kEndRendering: {
+            const TQ3Object view = pick(Kind::kView);
+            const DrawTimer timer(m_drawSeconds);
+            VIEWSTATUS(Q3View_EndRendering(view));
+            break;
+        }
         case Op::kStartBounding: startBounding(); break;
         case Op::kEndBounding: endBounding(); break;
         case Op::kSubmitRetained: submitRetained(); break;
@@ -465,6 +499,8 @@ private:
         case Op::kCancelSync: cancelSync(); break;
         case Op::kObjectQueries: objectQueries(); break;
         case Op::kInitializeExit: initializeExit(); break;
+        case Op::kOtherGeometryEdit: otherGeometryEdit(); break;
+        case Op::kMath: math(); break;
         case Op::kCount: break;
         }
     }
@@ -627,6 +663,8 @@ private:
     void duplicate()
     {
         const TQ3Object original = pick(Kind(m_in.u8() % 11));
+        if (++m_duplicates > kMaxDuplicates)
+            return;
         const TQ3Object copy = OBJECT(Q3Object_Duplicate(original));
         if (copy == nullptr)
             return;
@@ -661,6 +699,11 @@ private:
         const TQ3Object object = pick(Kind(m_in.u8() % 11));
         for (int times = 1 + m_in.u8() % 2; times > 0; --times) {
             const bool held = holds(object);
+            // Disposing again after the last held reference went is a double
+            // dispose only if the object is gone; if another object still
+            // holds it, it would release a reference that is not ours.
+            if (!held && object != nullptr && m_initialized > 0 && !isDead(object))
+                break;
             const TQ3Status status = STATUS(Q3Object_Dispose(object));
             if (m_initialized == 0)
                 continue;
@@ -892,6 +935,83 @@ private:
         }
         if (geometry != nullptr)
             hold(geometry, kind);
+    }
+
+    // Get, Set and Empty of points, lines and polylines; a successful Get is
+    // always emptied, and emptying twice must succeed.
+    void otherGeometryEdit()
+    {
+        const std::uint8_t family = m_in.u8() % 3;
+        const TQ3Object geometry = pick(family == 0 ? Kind::kPoint : family == 1 ? Kind::kLine : Kind::kPolyLine);
+        const std::uint8_t action = m_in.u8() % 3;
+        const TQ3AttributeSet set = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+        const bool nullData = m_in.u8() == 0;
+        if (family == 0) {
+            TQ3PointData data{point3(), set};
+            if (action == 0) {
+                if (STATUS(Q3Point_GetData(geometry, nullData ? nullptr : &data)) == kQ3Success) {
+                    STATUS(Q3Point_EmptyData(&data));
+                    STATUS(Q3Point_EmptyData(&data));
+                }
+            } else if (action == 1) {
+                STATUS(Q3Point_SetData(geometry, nullData ? nullptr : &data));
+            } else {
+                STATUS(Q3Point_EmptyData(nullptr));
+            }
+        } else if (family == 1) {
+            TQ3LineData data{{{point3(), nullptr}, {point3(), set}}, set};
+            if (action == 0) {
+                if (STATUS(Q3Line_GetData(geometry, nullData ? nullptr : &data)) == kQ3Success) {
+                    STATUS(Q3Line_EmptyData(&data));
+                    STATUS(Q3Line_EmptyData(&data));
+                }
+            } else if (action == 1) {
+                STATUS(Q3Line_SetData(geometry, nullData ? nullptr : &data));
+            } else {
+                STATUS(Q3Line_EmptyData(nullptr));
+            }
+        } else {
+            std::vector<TQ3Vertex3D> vertices(m_in.u8() % 9);
+            for (TQ3Vertex3D& v : vertices)
+                v = TQ3Vertex3D{point3(), (m_in.u8() & 1) ? set : nullptr};
+            std::vector<TQ3AttributeSet> segmentSets(vertices.empty() ? 0 : vertices.size() - 1, set);
+            TQ3PolyLineData data{vertices.size(), vertices.empty() ? nullptr : vertices.data(),
+                                 segmentSets.empty() ? nullptr : segmentSets.data(), set};
+            if (action == 0) {
+                if (STATUS(Q3PolyLine_GetData(geometry, nullData ? nullptr : &data)) == kQ3Success) {
+                    STATUS(Q3PolyLine_EmptyData(&data));
+                    STATUS(Q3PolyLine_EmptyData(&data));
+                }
+            } else if (action == 1) {
+                if (drawAllowed())
+                    STATUS(Q3PolyLine_SetData(geometry, nullData ? nullptr : &data));
+            } else {
+                STATUS(Q3PolyLine_EmptyData(nullptr));
+            }
+        }
+    }
+
+    // The math helpers with arbitrary values, results aliasing inputs.
+    void math()
+    {
+        TQ3Matrix4x4 a = readMatrix();
+        const TQ3Matrix4x4 b = readMatrix();
+        TQ3Vector3D v1 = vector3();
+        const TQ3Vector3D v2 = vector3();
+        TQ3Point3D p = point3();
+        const bool nullArg = m_in.u8() == 0;
+        TQ3Matrix4x4 r{};
+        switch (m_in.u8() % 9) {
+        case 0: POINTER(Q3Matrix4x4_Invert(&a, nullArg ? nullptr : &r)); break;
+        case 1: POINTER(Q3Matrix4x4_Invert(&a, &a)); break;
+        case 2: POINTER(Q3Matrix4x4_Multiply(&a, nullArg ? nullptr : &b, &a)); break;
+        case 3: POINTER(Q3Matrix4x4_Transpose(&a, &a)); break;
+        case 4: POINTER(Q3Point3D_Transform(&p, nullArg ? nullptr : &a, &p)); break;
+        case 5: POINTER(Q3Vector3D_Normalize(&v1, nullArg ? nullptr : &v1)); break;
+        case 6: POINTER(Q3Vector3D_Cross(&v1, &v2, &v1)); break;
+        case 7: QUERY(Q3Vector3D_Dot(&v1, nullArg ? nullptr : &v2), 0.0f); break;
+        default: QUERY(Q3Point3D_Distance(&p, nullArg ? nullptr : &p), 0.0f); break;
+        }
     }
 
     TQ3CameraData readCameraData()
@@ -1213,6 +1333,7 @@ private:
         const Held* entry = heldEntry(object);
         if (entry != nullptr && (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine) && !drawAllowed())
             return;
+        const DrawTimer timer(m_drawSeconds);
         switch (m_in.u8() % 3) {
         case 0: STATUS(Q3Geometry_Submit(object, view)); break;
         case 1: STATUS(Q3Object_Submit(object, view)); break;
@@ -1227,6 +1348,7 @@ private:
         const TQ3Object view = pick(Kind::kView);
         if (!drawAllowed())
             return;
+        const DrawTimer timer(m_drawSeconds);
         STATUS(Q3NURBCurve_Submit(m_in.u8() == 0 ? nullptr : &c.data, view));
     }
 
@@ -1310,6 +1432,7 @@ private:
         const TQ3Object view = pick(Kind::kView);
         if (!drawAllowed())
             return;
+        const DrawTimer timer(m_drawSeconds);
         begin();
         const TQ3Object polyline = Q3Geometry_GetDecomposed(geometry, view);
         const bool posted = Q3Error_Get(nullptr) != kQ3ErrorNone;
@@ -1421,6 +1544,8 @@ private:
     std::vector<std::unique_ptr<std::vector<unsigned char>>> m_images;
     unsigned long m_pointBudget = kPointBudget;
     int m_curveDraws = 0;
+    double m_drawSeconds = 0.0;
+    int m_duplicates = 0;
     int m_views = 0;
     int m_loops = 0;
     int m_drawContexts = 0;

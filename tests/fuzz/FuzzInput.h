@@ -69,6 +69,8 @@ enum class Op : std::uint8_t {
     kCancelSync,
     kObjectQueries,
     kInitializeExit,
+    kOtherGeometryEdit,
+    kMath,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -188,7 +188,8 @@ double largestDistance(const TQ3NURBCurveData& a, const TQ3NURBCurveData& b, int
     double largest = 0.0;
     for (int j = 0; j <= n; ++j) {
         const double t = t0 + (t1 - t0) * j / n;
-        largest = std::max(largest, distance(q3test::referenceEvaluate(a, t), q3test::referenceEvaluate(b, t)));
+        const RefPoint p = q3test::referenceEvaluate(a, t), q = q3test::referenceEvaluate(b, t);
+        largest = std::max(largest, distance(p, q));
     }
     return largest;
 }
@@ -283,8 +284,8 @@ TEST_F(ArticleListing, ImmediateModeLoopDrawsWhatListing1Draws)
 TEST_F(ArticleListing, SubdivisionStyleLoopDrawsFiveSegmentsPerSpan)
 {
     TQ3NURBCurveData curve = listing1Curve();
-    const Rendered listing =
-        renderWith(kListing1Frame, [&](TQ3ViewObject view) { q3listing_subdivision_style(view, &curve); });
+    const Rendered listing = renderWith(
+        kListing1Frame, [&](TQ3ViewObject view) { q3listing_subdivision_style(view, &curve); });
 
     // The segments a five-per-span style gives: one span, so six vertices at
     // t = 0, 0.2, ..., 1. Drawn as a plain polyline they must give exactly

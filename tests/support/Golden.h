@@ -41,10 +41,11 @@ struct RgbaImage {
 
     RgbaImage() = default;
     RgbaImage(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h) * 4, 0) {}
-    unsigned char* at(int x, int y) { return &pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
-    const unsigned char* at(int x, int y) const
+    unsigned char* at(int x, int y) { return &pixels[offset(x, y)]; }
+    const unsigned char* at(int x, int y) const { return &pixels[offset(x, y)]; }
+    std::size_t offset(int x, int y) const
     {
-        return &pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+        return (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4;
     }
 };
 

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Copyright (c) 2026 The Q3 authors
+#
+# Builds the API fuzzer (clang, libFuzzer, AddressSanitizer +
+# UndefinedBehaviorSanitizer) in build-fuzz/ and runs it for SECONDS seconds
+# (default 60) starting from the seed corpus tests/fuzz/corpus/. Inputs it
+# finds interesting go to build-fuzz/corpus/, never into the repository (copy
+# one into tests/fuzz/corpus/ by hand to keep it as a seed); an input that
+# crashes, leaks or times out is saved in build-fuzz/findings/ and fails the
+# script. Further arguments go to libFuzzer, e.g. -jobs=2 or a finding's
+# file name to replay it.
+#
+# Usage: tests/fuzz/run.sh [SECONDS] [libFuzzer arguments...]
+# Environment: Q3_JOBS (build parallelism, default 2), Q3_FUZZ_BUILD_DIR.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+seconds="${1:-60}"
+shift || true
+build="${Q3_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+jobs="${Q3_JOBS:-2}"
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DQ3_BUILD_FUZZERS=ON -DQ3_BUILD_SAMPLES=OFF -DQ3_BUILD_BENCHMARKS=OFF > /dev/null
+cmake --build "$build" -j"$jobs" --target q3_fuzz_api
+
+mkdir -p "$build/corpus" "$build/findings"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+# -timeout: no input may take this long (the fuzzer bounds each input's work
+# far below it). New inputs go to the first corpus directory only.
+"$build/tests/fuzz/q3_fuzz_api" -max_total_time="$seconds" -timeout=10 -max_len=4096 \
+  -print_final_stats=1 -artifact_prefix="$build/findings/" "$@" \
+  "$build/corpus" "$root/tests/fuzz/corpus"
