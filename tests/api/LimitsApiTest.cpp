@@ -105,16 +105,23 @@ std::size_t litPixels(const Pixmap& image)
 }
 
 // 10^6 control points of order 16: 999,985 spans, just under the segment
-// cap, so one constant segment per span fits and draws without a warning,
-// while screen-space subdivision of a zigzag that crosses the image a million
-// times would need far more and gives in (one segment per span).
+// cap, so one constant segment per span fits and draws without a warning.
+// The points follow 20,000 periods of a sine across the image, so the curve
+// is about 1.8 million pixels long: screen-space subdivision to a pixel would
+// need more segments than the cap allows and gives in.
 TEST_F(LimitsApiTest, AMillionControlPointsOfOrderSixteenAreCreatedDrawnBoundedAndDecomposed)
 {
     constexpr unsigned long kPoints = 1000000;
     BigCurve big(kPoints, 16, [](unsigned long i) {
         const float x = -1.0f + 2.0f * float(i) / float(kPoints - 1);
-        return TQ3RationalPoint4D{x, i % 2 ? 0.9f : -0.9f, 0.0f, 1.0f};
+        const float y = 0.9f * float(std::sin(2.0 * 3.14159265358979 * double(i % 50) / 50.0));
+        return TQ3RationalPoint4D{x, y, 0.0f, 1.0f};
     });
+    float lowY = 0.0f, highY = 0.0f;
+    for (const TQ3RationalPoint4D& p : big.points) {
+        lowY = std::min(lowY, p.y);
+        highY = std::max(highY, p.y);
+    }
     TQ3NURBCurveData data = big.data();
     TQ3GeometryObject curve = Q3NURBCurve_New(&data);
     ASSERT_NE(curve, nullptr);
@@ -157,22 +164,28 @@ TEST_F(LimitsApiTest, AMillionControlPointsOfOrderSixteenAreCreatedDrawnBoundedA
     EXPECT_EQ(box.isEmpty, kQ3False);
     EXPECT_FLOAT_EQ(box.min.x, -1.0f);
     EXPECT_FLOAT_EQ(box.max.x, 1.0f);
-    EXPECT_FLOAT_EQ(box.min.y, -0.9f);
-    EXPECT_FLOAT_EQ(box.max.y, 0.9f);
+    EXPECT_FLOAT_EQ(box.min.y, lowY);
+    EXPECT_FLOAT_EQ(box.max.y, highY);
     TQ3BoundingSphere sphere{};
     ASSERT_EQ(Q3View_StartBoundingSphere(view.view(), kQ3ComputeBoundsApproximate), kQ3Success);
     EXPECT_EQ(Q3NURBCurve_Submit(&data, view.view()), kQ3Success);
     ASSERT_EQ(Q3View_EndBoundingSphere(view.view(), &sphere), kQ3ViewStatusDone);
-    EXPECT_GE(sphere.radius, std::hypot(1.0f, 0.9f));
+    EXPECT_GE(sphere.radius, std::hypot(1.0f, highY));
 
     Q3Object_Dispose(curve);
 }
 
-// Listing 1 is about 3.9 units long; segments of at most 3.9e-6 would take
-// a million of them (1.03 million with Q3's padding), more than the cap
-// leaves for placement, so the length is raised and the warning posted.
+// c1 a millionth of Listing 1's length: segments that short would take 1.03
+// million of them (with Q3's padding), more than the cap leaves for placing
+// them, so a longer length is used and the warning posted. The image is
+// still the curve.
 TEST_F(LimitsApiTest, AWorldSpaceC1AMillionTimesSmallerThanTheCurveIsCapped)
 {
+    double length = 0.0;
+    for (int i = 1; i <= 100000; ++i) {
+        const Point3 a = listing1At((i - 1) / 100000.0), b = listing1At(i / 100000.0);
+        length += std::hypot(b.x - a.x, b.y - a.y);
+    }
     Listing1 listing;
     TQ3NURBCurveData data = listing.data();
     TQ3GeometryObject curve = Q3NURBCurve_New(&data);
@@ -180,17 +193,18 @@ TEST_F(LimitsApiTest, AWorldSpaceC1AMillionTimesSmallerThanTheCurveIsCapped)
     Pixmap image(64, 64);
     TestView view(image.pixmap());
 
-    const TQ3SubdivisionStyleData tiny{kQ3SubdivisionMethodWorldSpace, 3.9e-6f, 3.9e-6f};
+    const float c1 = float(length / 1e6);
+    const TQ3SubdivisionStyleData tiny{kQ3SubdivisionMethodWorldSpace, c1, c1};
     render(view, curve, data, tiny, true);
+    const CurveImageReport report = checkCurveImage(image, orthographicProjection(0, 0, 64, 64), 0, 0, 64, 64);
+    EXPECT_EQ(report.strayPixels, 0u) << report.firstProblem;
+    EXPECT_EQ(report.missedSamples, 0u) << report.firstProblem;
     ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
     Q3SubdivisionStyle_Submit(&tiny, view.view());
     const unsigned long vertices = decomposedVertices(curve, view.view(), true);
     EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
     EXPECT_LE(vertices, kCap + 1);
     EXPECT_GE(vertices, kCap / 2) << "capped, but it should still come close to the cap";
-    const CurveImageReport report = checkCurveImage(image, orthographicProjection(0, 0, 64, 64), 0, 0, 64, 64);
-    EXPECT_EQ(report.strayPixels, 0u) << report.firstProblem;
-    EXPECT_EQ(report.missedSamples, 0u) << report.firstProblem;
 
     // The smallest positive c1 of all: the same, not worse.
     const TQ3SubdivisionStyleData least{kQ3SubdivisionMethodWorldSpace, std::numeric_limits<float>::denorm_min(),
@@ -203,10 +217,13 @@ TEST_F(LimitsApiTest, AWorldSpaceC1AMillionTimesSmallerThanTheCurveIsCapped)
 }
 
 // A helix of radius 2 around the eye of a perspective camera, running from
-// 5 units in front of it to 5 units behind it: part of the curve has no
-// image at all, part of it passes within a hair of the eye where a pixel
-// length becomes enormous. Screen-space subdivision to a pixel must still
-// finish with bounded output; so must a curve through the eye itself.
+// 5 units behind it to 5 units in front of it: part of the curve has no image
+// at all, and the part near the eye's plane projects to enormous pixel
+// lengths. Screen-space subdivision to a pixel still fits under the cap (no
+// warning); to a hundredth of a pixel it does not, and gives in with the
+// warning. A line through the eye itself (its midpoint, where the
+// subdivision probes it, is the eye) is seen end on: one point, nothing to
+// light, and no trouble.
 TEST_F(LimitsApiTest, APerspectiveCameraInsideTheCurveDrawsAndDecomposesIt)
 {
     BigCurve helix(400, 4, [](unsigned long i) {
@@ -216,7 +233,6 @@ TEST_F(LimitsApiTest, APerspectiveCameraInsideTheCurveDrawsAndDecomposesIt)
     TQ3NURBCurveData helixData = helix.data();
     TQ3GeometryObject helixCurve = Q3NURBCurve_New(&helixData);
     ASSERT_NE(helixCurve, nullptr);
-    // A line whose midpoint, where the subdivision probes it, is the eye.
     BigCurve through(2, 2, [](unsigned long i) {
         return i == 0 ? TQ3RationalPoint4D{-1.0f, 0.5f, 4.0f, 1.0f} : TQ3RationalPoint4D{1.0f, -0.5f, -4.0f, 1.0f};
     });
@@ -237,20 +253,27 @@ TEST_F(LimitsApiTest, APerspectiveCameraInsideTheCurveDrawsAndDecomposesIt)
     Q3Object_Dispose(camera);
 
     const TQ3SubdivisionStyleData pixel{kQ3SubdivisionMethodScreenSpace, 1.0f, 1.0f};
-    forgetPosted();
-    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
-    EXPECT_EQ(Q3SubdivisionStyle_Submit(&pixel, view.view()), kQ3Success);
-    EXPECT_EQ(Q3Geometry_Submit(helixCurve, view.view()), kQ3Success);
-    EXPECT_EQ(Q3NURBCurve_Submit(&helixData, view.view()), kQ3Success);
-    EXPECT_EQ(Q3Geometry_Submit(throughCurve, view.view()), kQ3Success);
-    EXPECT_EQ(Q3NURBCurve_Submit(&throughData, view.view()), kQ3Success);
-    EXPECT_LE(decomposedVertices(helixCurve, view.view(), false), kCap + 1);
-    EXPECT_LE(decomposedVertices(throughCurve, view.view(), false), kCap + 1);
-    EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
-    // Whether the part near the eye needed the cap is the curve's business;
-    // what matters is that nothing failed.
-    forgetPosted();
-    EXPECT_GT(litPixels(image), 0u);
+    render(view, helixCurve, helixData, pixel, false);
+    EXPECT_GT(litPixels(image), 64u);
+    render(view, throughCurve, throughData, pixel, false);
+    EXPECT_EQ(litPixels(image), 0u) << "a line through the eye is seen as a point";
+
+    const TQ3SubdivisionStyleData hundredth{kQ3SubdivisionMethodScreenSpace, 0.01f, 0.01f};
+    render(view, helixCurve, helixData, hundredth, true);
+    EXPECT_GT(litPixels(image), 64u);
+    render(view, throughCurve, throughData, hundredth, false);
+
+    for (const TQ3SubdivisionStyleData& style : {pixel, hundredth}) {
+        ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+        Q3SubdivisionStyle_Submit(&style, view.view());
+        const unsigned long helixVertices = decomposedVertices(helixCurve, view.view(), style.c1 < 1.0f);
+        EXPECT_GE(helixVertices, 2u);
+        EXPECT_LE(helixVertices, kCap + 1);
+        const unsigned long throughVertices = decomposedVertices(throughCurve, view.view(), false);
+        EXPECT_GE(throughVertices, 2u);
+        EXPECT_LE(throughVertices, kCap + 1);
+        EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
+    }
 
     Q3Object_Dispose(helixCurve);
     Q3Object_Dispose(throughCurve);

@@ -19,7 +19,9 @@
 #include "QD3DStyle.h"
 
 #include <cfloat>
+#include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 

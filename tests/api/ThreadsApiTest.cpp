@@ -55,6 +55,9 @@ private:
 /// Objects that several threads draw at once and nobody changes meanwhile.
 struct SharedScene {
     TQ3GeometryObject curve = nullptr;
+    TQ3GeometryObject polyLine = nullptr;
+    TQ3GeometryObject line = nullptr;
+    TQ3GeometryObject point = nullptr;
     TQ3StyleObject style = nullptr;
     TQ3TransformObject transform = nullptr;
     TQ3AttributeSet color = nullptr;
@@ -143,6 +146,13 @@ public:
                 count(Q3Object_Submit(shared->style, view) == kQ3Success);
                 count(Q3AttributeSet_Submit(shared->color, view) == kQ3Success);
                 count(Q3Geometry_Submit(shared->curve, view) == kQ3Success);
+                count(Q3Geometry_Submit(shared->polyLine, view) == kQ3Success);
+                count(Q3Geometry_Submit(shared->line, view) == kQ3Success);
+                count(Q3Geometry_Submit(shared->point, view) == kQ3Success);
+                TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(shared->curve, view);
+                count(decomposed != nullptr);
+                if (decomposed != nullptr)
+                    Q3Object_Dispose(decomposed);
             }
         });
         count(status == kQ3ViewStatusDone);
@@ -258,8 +268,16 @@ TEST_F(ThreadsApiTest, UnchangedRetainedObjectsMayBeDrawnByManyThreadsAtOnce)
     const TQ3SubdivisionStyleData style{kQ3SubdivisionMethodScreenSpace, 2.0f, 2.0f};
     const TQ3Vector3D offset{0.1f, -0.2f, 0.0f};
     const TQ3ColorRGB green{0.0f, 1.0f, 0.0f};
+    TQ3Vertex3D vertices[3] = {{{-0.5f, -1.0f, 0.0f}, nullptr}, {{1.5f, 2.0f, 0.0f}, nullptr},
+                               {{3.5f, -1.0f, 0.0f}, nullptr}};
+    const TQ3PolyLineData polyLine{3, vertices, nullptr, nullptr};
+    const TQ3LineData line{{{{-0.5f, 1.8f, 0.0f}, nullptr}, {{3.5f, 1.8f, 0.0f}, nullptr}}, nullptr};
+    const TQ3PointData point{{1.5f, -0.8f, 0.0f}, nullptr};
     SharedScene shared;
     shared.curve = Q3NURBCurve_New(&curve);
+    shared.polyLine = Q3PolyLine_New(&polyLine);
+    shared.line = Q3Line_New(&line);
+    shared.point = Q3Point_New(&point);
     shared.style = Q3SubdivisionStyle_New(&style);
     shared.transform = Q3TranslateTransform_New(&offset);
     shared.color = Q3AttributeSet_New();
@@ -271,6 +289,9 @@ TEST_F(ThreadsApiTest, UnchangedRetainedObjectsMayBeDrawnByManyThreadsAtOnce)
     expectSameFrames(runs);
 
     Q3Object_Dispose(shared.curve);
+    Q3Object_Dispose(shared.polyLine);
+    Q3Object_Dispose(shared.line);
+    Q3Object_Dispose(shared.point);
     Q3Object_Dispose(shared.style);
     Q3Object_Dispose(shared.transform);
     Q3Object_Dispose(shared.color);
@@ -368,6 +389,10 @@ void recordCallbackThread(TQ3Error, TQ3Error, long)
 
 TEST(ThreadsApiCallbacks, RunOnThePostingThread)
 {
+    {
+        std::lock_guard<std::mutex> lock(g_callbackMutex);
+        g_callbackThreads.clear();
+    }
     ASSERT_EQ(Q3Initialize(), kQ3Success);
     Q3Error_Register(&recordCallbackThread, 0);
     std::vector<std::thread> threads;

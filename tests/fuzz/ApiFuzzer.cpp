@@ -223,8 +223,6 @@ public:
     }
 
 private:
-    // ---- Handles -----------------------------------------------------------
-
     bool holds(TQ3Object handle) const
     {
         return std::any_of(m_held.begin(), m_held.end(), [&](const Held& h) { return h.handle == handle; });
@@ -297,8 +295,6 @@ private:
         return reinterpret_cast<TQ3Object>(neverAnObject + 8 * (which % 8));
     }
 
-    // ---- Values ------------------------------------------------------------
-
     std::int32_t enumValue(std::int32_t validCount)
     {
         const std::uint8_t tag = m_in.u8();
@@ -309,8 +305,6 @@ private:
 
     TQ3Point3D point3() { return TQ3Point3D{m_in.value(), m_in.value(), m_in.value()}; }
     TQ3Vector3D vector3() { return TQ3Vector3D{m_in.value(), m_in.value(), m_in.value()}; }
-
-    // ---- Curve data --------------------------------------------------------
 
     unsigned long takePoints(unsigned long wanted, unsigned long minimum)
     {
@@ -449,8 +443,6 @@ private:
         double& m_total;
         std::chrono::steady_clock::time_point m_start;
     };
-
-    // ---- Operations --------------------------------------------------------
 
     void step(Op op)
     {

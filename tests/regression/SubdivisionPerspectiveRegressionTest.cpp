@@ -21,8 +21,11 @@
 #include "QD3DView.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
