@@ -18,8 +18,9 @@
 //                  glReadPixels(GL_BGRA) into a buffer of the pixmap's format;
 //                  rawmulti: the same with one glMultiDrawArrays;
 //                  rawdirect: rawmulti on a BGRA context whose own buffer is
-//                  the image (top row first), so no read-back at all: the
-//                  least any OSMesa program can do (informational).
+//                  the image (top row first), so no read-back at all
+//                  (informational; llvmpipe draws lines into BGRA more slowly
+//                  than into RGBA, so this bounds empty frames only).
 //   FrameEdited/N  q3edited: every curve edited (Q3NURBCurve_SetKnot to its
 //                  own value) and the frame drawn, so all 1000 are
 //                  tessellated again; against raw (informational).
@@ -52,10 +53,10 @@
 #include <algorithm>
 #include <functional>
 #include <map>
-#include <utility>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {

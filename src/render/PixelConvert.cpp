@@ -7,6 +7,7 @@
 
 #include "render/PixelConvert.h"
 
+#include <cstring>
 #include <string>
 
 namespace q3 {
@@ -112,11 +113,27 @@ template <PixelType kType, ByteOrder kOrder>
 void writeRows(const RowJob& job)
 {
     constexpr std::uint32_t kBytes = bytesOf<kType>();
-    for (std::uint32_t y = 0; y < job.height; ++y) {
-        const std::uint8_t* s = job.from + job.fromRowBytes * y;
-        std::uint8_t* d = job.to + job.toRowBytes * y;
-        for (std::uint32_t x = 0; x < job.width; ++x, s += 4, d += kBytes)
-            store<kBytes, kOrder>(d, pack<kType>(s[0], s[1], s[2], s[3]));
+    const std::uint32_t width = job.width;
+    const std::uint32_t height = job.height;
+    for (std::uint32_t y = 0; y < height; ++y) {
+        const std::uint8_t* __restrict s = job.from + job.fromRowBytes * y;
+        std::uint8_t* __restrict d = job.to + job.toRowBytes * y;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+        if constexpr (kBytes == 4) {
+            // Whole words: R, G, B, A in memory is R | G << 8 | B << 16 | A << 24.
+            for (std::size_t x = 0; x < width; ++x) {
+                std::uint32_t v;
+                std::memcpy(&v, s + 4 * x, 4);
+                std::uint32_t w = pack<kType>(v & 255u, (v >> 8) & 255u, (v >> 16) & 255u, v >> 24);
+                if constexpr (kOrder == ByteOrder::kBig)
+                    w = __builtin_bswap32(w);
+                std::memcpy(d + 4 * x, &w, 4);
+            }
+            continue;
+        }
+#endif
+        for (std::size_t x = 0; x < width; ++x)
+            store<kBytes, kOrder>(d + kBytes * x, pack<kType>(s[4 * x], s[4 * x + 1], s[4 * x + 2], s[4 * x + 3]));
     }
 }
 

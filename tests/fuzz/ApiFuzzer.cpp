@@ -261,11 +261,15 @@ private:
     }
 
     // A handle Q3 no longer knows: disposed, and its address not reused.
+    // pick() calls this while the arguments of a checked call are being
+    // evaluated, so the error this posts is kept out of that call's count.
     bool isDead(TQ3Object handle)
     {
-        begin();
+        const Posts saved = g_posts;
         const TQ3ObjectType type = Q3Object_GetLeafType(handle);
-        return type == kQ3ObjectTypeInvalid && Q3Error_Get(nullptr) == kQ3ErrorInvalidObject;
+        const bool dead = type == kQ3ObjectTypeInvalid && Q3Error_Get(nullptr) == kQ3ErrorInvalidObject;
+        g_posts = saved;
+        return dead;
     }
 
     TQ3Object pick(Kind wanted)

@@ -88,6 +88,53 @@ void sampleFixed(const Point4* points, const BernsteinTable& table, std::uint32_
     }
     std::uint32_t j = 0;
 #if defined(__GNUC__)
+    // The control points broadcast once, so the loop multiplies by memory operands.
+    Double2 cx[K], cy[K], cz[K], cw[K];
+    for (unsigned r = 0; r < K; ++r) {
+        cx[r] = Double2{px[r], px[r]};
+        cy[r] = Double2{py[r], py[r]};
+        cz[r] = Double2{pz[r], pz[r]};
+        cw[r] = Double2{pw[r], pw[r]};
+    }
+    for (; j + 4 <= count; j += 4) {
+        Double2 x0 = {0.0, 0.0}, x1 = {0.0, 0.0};
+        Double2 y0 = {0.0, 0.0}, y1 = {0.0, 0.0};
+        Double2 z0 = {0.0, 0.0}, z1 = {0.0, 0.0};
+        Double2 w0 = {0.0, 0.0}, w1 = {0.0, 0.0};
+        for (unsigned r = 0; r < K; ++r) {
+            const Double2 b0 = load2(column[r] + j);
+            const Double2 b1 = load2(column[r] + j + 2);
+            x0 += b0 * cx[r];
+            x1 += b1 * cx[r];
+            y0 += b0 * cy[r];
+            y1 += b1 * cy[r];
+            z0 += b0 * cz[r];
+            z1 += b1 * cz[r];
+            w0 += b0 * cw[r];
+            w1 += b1 * cw[r];
+        }
+        const Double2 inv0 = 1.0 / w0;
+        const Double2 inv1 = 1.0 / w1;
+        x0 *= inv0;
+        y0 *= inv0;
+        z0 *= inv0;
+        x1 *= inv1;
+        y1 *= inv1;
+        z1 *= inv1;
+        Out* out = xyz + 3 * std::size_t(j);
+        out[0] = Out(x0[0]);
+        out[1] = Out(y0[0]);
+        out[2] = Out(z0[0]);
+        out[3] = Out(x0[1]);
+        out[4] = Out(y0[1]);
+        out[5] = Out(z0[1]);
+        out[6] = Out(x1[0]);
+        out[7] = Out(y1[0]);
+        out[8] = Out(z1[0]);
+        out[9] = Out(x1[1]);
+        out[10] = Out(y1[1]);
+        out[11] = Out(z1[1]);
+    }
     for (; j + 2 <= count; j += 2) {
         Double2 x = {0.0, 0.0};
         Double2 y = {0.0, 0.0};
@@ -219,6 +266,78 @@ void spanToBezier(const CurveRef& curve, std::size_t l, Point4* out)
     }
 }
 
+namespace {
+
+// The span's left-clamped polygon f(a^{p-m}, x_{l+1} .. x_{l+m}): de Boor's
+// triangle at a = x_l (the first triangle of spanToBezier).
+void leftClamped(const CurveRef& curve, std::size_t l, Point4* out)
+{
+    const unsigned deg = curve.order - 1;
+    const float* x = curve.knots;
+    const float* p = curve.points;
+    const double a = x[l];
+    Point4 d[kMaxOrder];
+    for (unsigned j = 0; j <= deg; ++j) {
+        const float* q = p + 4 * (l - deg + j);
+        d[j] = Point4{q[0], q[1], q[2], q[3]};
+    }
+    out[deg] = d[deg];
+    for (unsigned r = 1; r <= deg; ++r) {
+        for (unsigned j = deg; j >= r; --j) {
+            const double lo = x[l - deg + j];
+            const double hi = x[l + 1 + j - r];
+            d[j] = lerp(d[j - 1], d[j], (a - lo) / (hi - lo));
+        }
+        out[deg - r] = d[deg];
+    }
+}
+
+} // namespace
+
+void BezierSweep::convert(std::size_t l, Point4* out)
+{
+    const unsigned p = m_curve.order - 1;
+    const float* x = m_curve.knots;
+    const std::size_t knotCount = m_curve.numPoints + m_curve.order;
+    if (l != m_next)
+        leftClamped(m_curve, l, m_left);
+    for (unsigned i = 0; i <= p; ++i)
+        out[i] = m_left[i];
+    // The run of knots equal to b = x_{l+1}: indices l+1 .. e.
+    std::size_t e = l + 1;
+    while (e + 1 < knotCount && x[e + 1] == x[l + 1])
+        ++e;
+    const unsigned mult = unsigned(std::min<std::size_t>(e - l, p));
+    const unsigned r = p - mult;
+    Point4 next[kMaxOrder];
+    if (r > 0) {
+        const double a = x[l];
+        const double numer = double(x[l + 1]) - a;
+        double alphas[kMaxOrder];
+        for (unsigned j = p; j > mult; --j)
+            alphas[j - mult - 1] = numer / (double(x[l + j]) - a);
+        for (unsigned j = 1; j <= r; ++j) {
+            const unsigned save = r - j;
+            const unsigned s = mult + j;
+            for (unsigned k = p; k >= s; --k)
+                out[k] = lerp(out[k - 1], out[k], alphas[k - s]);
+            next[save] = out[p];
+        }
+    }
+    // The next span starts at knot e; its polygon's right part is original points.
+    m_next = std::size_t(-1);
+    if (e < m_curve.numPoints) {
+        const float* pts = m_curve.points;
+        for (unsigned i = r; i <= p; ++i) {
+            const float* q = pts + 4 * (e - p + i);
+            next[i] = Point4{q[0], q[1], q[2], q[3]};
+        }
+        for (unsigned i = 0; i <= p; ++i)
+            m_left[i] = next[i];
+        m_next = e;
+    }
+}
+
 Point4 evaluateBezier(const Point4* points, unsigned order, double u)
 {
     const unsigned deg = order - 1;
@@ -282,8 +401,9 @@ void BezierForm::rebuild(const CurveRef& curve)
         }
     }
     m_points.resize(m_spans.size() * m_order);
+    BezierSweep sweep(curve);
     for (std::size_t s = 0; s < m_spans.size(); ++s) {
-        spanToBezier(curve, m_spans[s].knotIndex, m_points.data() + s * m_order);
+        sweep.convert(m_spans[s].knotIndex, m_points.data() + s * m_order);
     }
 }
 

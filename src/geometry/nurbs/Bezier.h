@@ -42,6 +42,22 @@ private:
 /// The span must be non-empty and inside the domain. Cost O(order^2), no allocation.
 void spanToBezier(const CurveRef& curve, std::size_t knotIndex, Point4* out);
 
+/// Converts the non-empty spans of a valid curve one after another, each from
+/// the previous one's by-products (Piegl & Tiller A5.6 per span): the span
+/// (knot index l) must be the first span or the next non-empty span after the
+/// last one converted; otherwise it falls back to spanToBezier.
+class BezierSweep {
+public:
+    explicit BezierSweep(const CurveRef& curve) : m_curve(curve) {}
+    /// Writes the `order` Bezier points of span l to out.
+    void convert(std::size_t l, Point4* out);
+
+private:
+    CurveRef m_curve;
+    std::size_t m_next = std::size_t(-1); // knot index whose left-clamped polygon m_left holds
+    Point4 m_left[kMaxOrder];
+};
+
 /// The homogeneous point of a Bezier curve with `order` control points at local
 /// parameter u in [0, 1]. O(order), no allocation; exact control points at u = 0 and 1.
 Point4 evaluateBezier(const Point4* points, unsigned order, double u);

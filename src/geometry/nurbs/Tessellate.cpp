@@ -60,13 +60,13 @@ private:
 
 class CurveSpans {
 public:
-    explicit CurveSpans(const CurveRef& curve) : m_curve(curve), m_spans(nonEmptySpans(curve)) {}
+    explicit CurveSpans(const CurveRef& curve) : m_curve(curve), m_spans(nonEmptySpans(curve)), m_sweep(curve) {}
     std::size_t count() const { return m_spans.size(); }
     unsigned order() const { return m_curve.order; }
     const Span& span(std::size_t s) const { return m_spans[s]; }
     const Point4* points(std::size_t s)
     {
-        spanToBezier(m_curve, m_spans[s].knotIndex, m_scratch);
+        m_sweep.convert(m_spans[s].knotIndex, m_scratch);
         return m_scratch;
     }
     // The Bezier form's first point is de Boor's value at the span start (same
@@ -77,6 +77,7 @@ public:
 private:
     CurveRef m_curve;
     std::vector<Span> m_spans;
+    BezierSweep m_sweep;
     Point4 m_scratch[kMaxOrder];
 };
 
