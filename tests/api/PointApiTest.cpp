@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
-#include "Q3ApiTest.h"
+#include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
 #include "QD3DSet.h"
@@ -18,45 +18,9 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 const float kNonFinite[] = {kNaN, kInf, -kInf};
 
-class PointApiTest : public Q3ApiTest {
+class PointApiTest : public q3test::OwningApiTest {
 protected:
-    void TearDown() override
-    {
-        for (TQ3Object object : m_owned)
-            Q3Object_Dispose(object);
-        Q3ApiTest::TearDown();
-    }
-
-    /// Disposed by TearDown (before the leak check).
-    template <class T>
-    T own(T object)
-    {
-        m_owned.push_back(object);
-        return object;
-    }
-
-    TQ3ViewObject view()
-    {
-        if (m_view == nullptr)
-            m_view = own(Q3View_New());
-        return m_view;
-    }
-
-    TQ3BoundingBox boundsOf(const std::function<void(TQ3ViewObject)>& scene)
-    {
-        TQ3BoundingBox box{};
-        EXPECT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
-        do
-            scene(view());
-        while (Q3View_EndBoundingBox(view(), &box) == kQ3ViewStatusRetraverse);
-        return box;
-    }
-
     TQ3PointData m_data{{1.5f, -2, 3}, nullptr};
-
-private:
-    std::vector<TQ3Object> m_owned;
-    TQ3ViewObject m_view = nullptr;
 };
 
 TEST_F(PointApiTest, NewMakesAPointThatGetDataReturns)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
-#include "Q3ApiTest.h"
+#include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
 #include "QD3DSet.h"
@@ -34,7 +34,7 @@ TQ3ColorRGB colorOf(TQ3AttributeSet set)
     return color;
 }
 
-class PolyLineApiTest : public Q3ApiTest {
+class PolyLineApiTest : public q3test::OwningApiTest {
 protected:
     void SetUp() override
     {
@@ -43,45 +43,8 @@ protected:
         m_data = TQ3PolyLineData{3, m_vertices.data(), nullptr, nullptr};
     }
 
-    void TearDown() override
-    {
-        for (TQ3Object object : m_owned)
-            Q3Object_Dispose(object);
-        Q3ApiTest::TearDown();
-    }
-
-    /// Disposed by TearDown (before the leak check).
-    template <class T>
-    T own(T object)
-    {
-        m_owned.push_back(object);
-        return object;
-    }
-
-    TQ3ViewObject view()
-    {
-        if (m_view == nullptr)
-            m_view = own(Q3View_New());
-        return m_view;
-    }
-
-    /// The bounding box of what `scene` submits, from an exact bounding loop.
-    TQ3BoundingBox boundsOf(const std::function<void(TQ3ViewObject)>& scene)
-    {
-        TQ3BoundingBox box{};
-        EXPECT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
-        do
-            scene(view());
-        while (Q3View_EndBoundingBox(view(), &box) == kQ3ViewStatusRetraverse);
-        return box;
-    }
-
     std::vector<TQ3Vertex3D> m_vertices;
     TQ3PolyLineData m_data{};
-
-private:
-    std::vector<TQ3Object> m_owned;
-    TQ3ViewObject m_view = nullptr;
 };
 
 void expectBox(const TQ3BoundingBox& box, TQ3Point3D min, TQ3Point3D max)
