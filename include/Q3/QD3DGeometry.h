@@ -138,11 +138,11 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Geometry_GetDecomposed(TQ3GeometryObject ge
  * The rules a TQ3NURBCurveData must obey wherever one is accepted
  * (Q3NURBCurve_New, Q3NURBCurve_SetData, Q3NURBCurve_Submit), with the error
  * posted when one is broken, checked in this order:
- *   controlPoints and knots are not NULL            kQ3ErrorNULLParameter
  *   2 <= order <= kQ3NURBCurveMaxOrder              kQ3ErrorParameterOutOfRange
  *   numPoints >= order                 kQ3ErrorGeometryInsufficientNumberOfPoints
- *   numPoints + order, and the byte size of each
- *     array, fit in a size_t                        kQ3ErrorParameterOutOfRange
+ *   numPoints <= 2^28 (Q3's limit, which keeps
+ *     every size computation far from overflow)     kQ3ErrorParameterOutOfRange
+ *   controlPoints and knots are not NULL            kQ3ErrorNULLParameter
  *   every coordinate, weight and knot is finite     kQ3ErrorInvalidData
  *   every weight w is greater than 0                kQ3ErrorInvalidData
  *   the knots never decrease                        kQ3ErrorInvalidData
