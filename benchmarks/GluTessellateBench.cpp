@@ -171,8 +171,19 @@ std::string describeSink()
 // spans * 64 + 1 distinct vertices, so glu_over_q3 is the speed-up in
 // vertices per second. The errors are the largest distance of a vertex from
 // the long-double curve at the vertex's parameter.
-void Glu_Constant(benchmark::State& state, int which)
+//
+// isa: the instruction set Q3's kernels use (the library picks AVX2 at run
+// time where the CPU has it; kBaseline shows what baseline x86-64 SSE2 gives,
+// the instruction set Debian's libGLU is built for).
+void Glu_Constant(benchmark::State& state, int which, nurbs::KernelIsa isa)
 {
+    struct RestoreIsa {
+        ~RestoreIsa() { nurbs::forceKernelIsa(nurbs::supportedKernelIsa()); }
+    } restore;
+    if (!nurbs::forceKernelIsa(isa)) {
+        state.SkipWithError("this CPU does not support the requested kernel instruction set");
+        return;
+    }
     const BenchCurve& curve = curveNamed(which);
     const std::uint32_t m = q3bench::kSegmentsPerSpan;
     const std::size_t spans = curve.spanCount();
@@ -290,8 +301,10 @@ void Glu_Adaptive(benchmark::State& state, Space space, int which)
 // Names end in the curve: cubic is the rational cubic, order16 the order-16
 // curve (1000 control points each). The reported time covers both contenders;
 // the counters hold each one's time.
-BENCHMARK_CAPTURE(Glu_Constant, cubic, 0)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Glu_Constant, order16, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Constant, cubic, 0, nurbs::supportedKernelIsa())->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Constant, order16, 1, nurbs::supportedKernelIsa())->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Constant, cubic_baseline, 0, nurbs::KernelIsa::kBaseline)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Constant, order16_baseline, 1, nurbs::KernelIsa::kBaseline)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Glu_Adaptive, world_cubic, Space::kWorld, 0)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Glu_Adaptive, world_order16, Space::kWorld, 1)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Glu_Adaptive, screen_cubic, Space::kScreen, 0)->Unit(benchmark::kMillisecond);

@@ -97,6 +97,16 @@ def tessellation(runs, out):
         speedup = runs.counter(name, "glu_over_q3")
         out.append(f"| {label} | {fmt(tq)} ms | {fmt(tp)} ms | {fmt(vertices / tq / 1e3)} | "
                    f"{fmt(vertices / tp / 1e3)} | **{speedup:.2f}×** | {verdict(speedup, target, True)} |")
+    for label, curve in (("Kernel forced to baseline x86-64 (SSE2, no AVX2), cubic (info)", "cubic_baseline"),
+                         ("Kernel forced to baseline x86-64 (SSE2, no AVX2), order 16 (info)", "order16_baseline")):
+        name = f"Glu_Constant/{curve}"
+        if missing(runs, name):
+            continue
+        tq, tp = runs.counter(name, "q3_ms"), runs.counter(name, "glu_ms")
+        vertices = runs.counter(name, "vertices")
+        speedup = runs.counter(name, "glu_over_q3")
+        out.append(f"| {label} | {fmt(tq)} ms | {fmt(tp)} ms | {fmt(vertices / tq / 1e3)} | "
+                   f"{fmt(vertices / tp / 1e3)} | {speedup:.2f}× | info |")
     for label, curve, target in (("Q3Geometry_GetDecomposed, rational cubic", "cubic", 2.5),
                                  ("Q3Geometry_GetDecomposed, order 16 (info)", "order16", None)):
         kernel, public = f"Glu_Constant/{curve}", f"Q3_GetDecomposed/{curve}"

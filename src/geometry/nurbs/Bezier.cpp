@@ -14,15 +14,16 @@
 // into those points; in blossom terms it turns f(a^{k-1-m}, x_{l+1} .. x_{l+m}) into
 // f(a^{k-1-m}, b^m) with the step weight (b - a) / (x_{l+m-s+1} - a). Both triangles
 // only ever form convex combinations, so the conversion is as stable as de Boor
-// itself. Each span is converted independently (O(k^2) per span) rather than
-// sweeping the knot vector as Piegl & Tiller's algorithm A5.6 does, so a tessellator
-// can convert spans one at a time without storing the whole form.
+// itself. spanToBezier converts one span on its own (O(k^2)); BezierSweep walks the
+// spans in order as Piegl & Tiller's algorithm A5.6 does, starting each from the
+// previous one's by-products, still one span at a time, so a tessellator never needs
+// to store the whole form.
 //
 // Sampling. On a Bezier span the homogeneous point is sum_r B_{r,k-1}(u) P_r
 // (Bernstein basis). For uniform samples u_j = j/m the weights B_{r,k-1}(u_j) do not
 // depend on the span, so they are tabulated once per (order, m) and each sample is
-// k multiply-adds per coordinate plus one division by w; two samples share each
-// vector instruction. The weights are built by the de Casteljau-style recurrence
+// k multiply-adds per coordinate plus one division by w; consecutive samples share each
+// vector instruction (two with SSE2, four with AVX2; see "Vector code paths"). The weights are built by the de Casteljau-style recurrence
 // B_{r,d}(u) = (1-u) B_{r,d-1}(u) + u B_{r-1,d-1}(u), which makes the end samples exact.
 //
 // Single points at arbitrary u use the Bernstein form with Horner's rule in
@@ -31,6 +32,7 @@
 #include "geometry/nurbs/Bezier.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 
 namespace q3::nurbs {
@@ -57,53 +59,111 @@ inline Point4 lerp(const Point4& a, const Point4& b, double alpha)
                   beta * a.z + alpha * b.z, beta * a.w + alpha * b.w};
 }
 
-#if defined(__GNUC__)
-// Two samples per step in one SSE2 register pair: the weights of consecutive samples
-// are adjacent in a table column, so one load feeds both, and one division serves two w.
-typedef double Double2 __attribute__((vector_size(16)));
+// ---- Vector code paths -------------------------------------------------------------
+//
+// The hot loops are written once over a GCC/Clang vector type V of N doubles and
+// instantiated twice: with 128-bit vectors (SSE2, the x86-64 baseline, or the target's
+// own 128-bit unit) and, on x86, with 256-bit vectors inside functions compiled for
+// AVX2 and chosen at run time. Each lane does exactly the scalar arithmetic, in the
+// same order, and nothing enables FMA, so both paths give the same bits.
+//
+// The generic pieces are always_inline so that each one is compiled inside the entry
+// function that uses it, with that function's instruction set; they take vectors by
+// reference, never by value, so no function boundary depends on the vector ABI.
 
-inline Double2 load2(const double* p)
-{
-    Double2 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
+#if !defined(__GNUC__)
+#error "Q3's NURBS kernels use GCC/Clang vector extensions"
 #endif
 
-template <unsigned K, typename Out>
-void sampleFixed(const Point4* points, const BernsteinTable& table, std::uint32_t first,
-                 std::uint32_t count, Out* xyz)
+#define Q3_ALWAYS_INLINE inline __attribute__((always_inline))
+
+#if defined(__x86_64__) || defined(__i386__)
+#define Q3_KERNEL_AVX2 1
+#define Q3_TARGET_AVX2 __attribute__((target("avx2")))
+#else
+#define Q3_KERNEL_AVX2 0
+#endif
+
+typedef double Double2 __attribute__((vector_size(16)));
+typedef double Double4 __attribute__((vector_size(32)));
+
+template <typename V>
+constexpr unsigned kLanes = sizeof(V) / sizeof(double);
+
+template <typename V>
+Q3_ALWAYS_INLINE void load(V& v, const double* p)
 {
-    double px[K];
-    double py[K];
-    double pz[K];
-    double pw[K];
+    std::memcpy(&v, p, sizeof v);
+}
+
+template <typename V>
+Q3_ALWAYS_INLINE void splat(V& v, double value)
+{
+    for (unsigned i = 0; i < kLanes<V>; ++i)
+        v[i] = value;
+}
+
+// out = (1 - alpha) a + alpha b, as lerp() computes it, on 4 / N vectors.
+template <typename V>
+Q3_ALWAYS_INLINE void lerpInto(const Point4& a, const Point4& b, double alpha, Point4& out)
+{
+    static_assert(sizeof(Point4) == 4 * sizeof(double), "Point4 is four packed doubles");
+    const double beta = 1.0 - alpha;
+    const char* pa = reinterpret_cast<const char*>(&a);
+    const char* pb = reinterpret_cast<const char*>(&b);
+    char* po = reinterpret_cast<char*>(&out);
+    V va[4 / kLanes<V>];
+    V vb[4 / kLanes<V>];
+    for (unsigned h = 0; h < 4 / kLanes<V>; ++h) {
+        std::memcpy(&va[h], pa + h * sizeof(V), sizeof(V));
+        std::memcpy(&vb[h], pb + h * sizeof(V), sizeof(V));
+    }
+    for (unsigned h = 0; h < 4 / kLanes<V>; ++h) {
+        const V r = beta * va[h] + alpha * vb[h];
+        std::memcpy(po + h * sizeof(V), &r, sizeof(V));
+    }
+}
+
+// Divides N homogeneous samples by their w and writes them as N (x, y, z) triples.
+template <typename V, typename Out>
+Q3_ALWAYS_INLINE void storeProjected(const V& x, const V& y, const V& z, const V& w, Out* out)
+{
+    const V inv = 1.0 / w;
+    const V px = x * inv;
+    const V py = y * inv;
+    const V pz = z * inv;
+    for (unsigned i = 0; i < kLanes<V>; ++i) {
+        out[3 * i] = Out(px[i]);
+        out[3 * i + 1] = Out(py[i]);
+        out[3 * i + 2] = Out(pz[i]);
+    }
+}
+
+// The Bernstein sum for samples first .. first+count-1: 2N samples per step, then N,
+// then one at a time. Every lane (and the scalar tail) computes
+// ((0 + b_0 P_0) + b_1 P_1) + ... for each coordinate, then multiplies by 1 / w.
+template <unsigned K, typename Out, typename V>
+Q3_ALWAYS_INLINE void sampleLanes(const Point4* points, const BernsteinTable& table,
+                                  std::uint32_t first, std::uint32_t count, Out* xyz)
+{
+    constexpr unsigned N = kLanes<V>;
     const double* column[K];
+    // The control points broadcast once, so the loop multiplies by memory operands.
+    V cx[K], cy[K], cz[K], cw[K];
     for (unsigned r = 0; r < K; ++r) {
-        px[r] = points[r].x;
-        py[r] = points[r].y;
-        pz[r] = points[r].z;
-        pw[r] = points[r].w;
         column[r] = table.column(r) + first;
+        splat(cx[r], points[r].x);
+        splat(cy[r], points[r].y);
+        splat(cz[r], points[r].z);
+        splat(cw[r], points[r].w);
     }
     std::uint32_t j = 0;
-#if defined(__GNUC__)
-    // The control points broadcast once, so the loop multiplies by memory operands.
-    Double2 cx[K], cy[K], cz[K], cw[K];
-    for (unsigned r = 0; r < K; ++r) {
-        cx[r] = Double2{px[r], px[r]};
-        cy[r] = Double2{py[r], py[r]};
-        cz[r] = Double2{pz[r], pz[r]};
-        cw[r] = Double2{pw[r], pw[r]};
-    }
-    for (; j + 4 <= count; j += 4) {
-        Double2 x0 = {0.0, 0.0}, x1 = {0.0, 0.0};
-        Double2 y0 = {0.0, 0.0}, y1 = {0.0, 0.0};
-        Double2 z0 = {0.0, 0.0}, z1 = {0.0, 0.0};
-        Double2 w0 = {0.0, 0.0}, w1 = {0.0, 0.0};
+    for (; j + 2 * N <= count; j += 2 * N) {
+        V x0 = {}, x1 = {}, y0 = {}, y1 = {}, z0 = {}, z1 = {}, w0 = {}, w1 = {};
         for (unsigned r = 0; r < K; ++r) {
-            const Double2 b0 = load2(column[r] + j);
-            const Double2 b1 = load2(column[r] + j + 2);
+            V b0, b1;
+            load(b0, column[r] + j);
+            load(b1, column[r] + j + N);
             x0 += b0 * cx[r];
             x1 += b1 * cx[r];
             y0 += b0 * cy[r];
@@ -113,53 +173,22 @@ void sampleFixed(const Point4* points, const BernsteinTable& table, std::uint32_
             w0 += b0 * cw[r];
             w1 += b1 * cw[r];
         }
-        const Double2 inv0 = 1.0 / w0;
-        const Double2 inv1 = 1.0 / w1;
-        x0 *= inv0;
-        y0 *= inv0;
-        z0 *= inv0;
-        x1 *= inv1;
-        y1 *= inv1;
-        z1 *= inv1;
         Out* out = xyz + 3 * std::size_t(j);
-        out[0] = Out(x0[0]);
-        out[1] = Out(y0[0]);
-        out[2] = Out(z0[0]);
-        out[3] = Out(x0[1]);
-        out[4] = Out(y0[1]);
-        out[5] = Out(z0[1]);
-        out[6] = Out(x1[0]);
-        out[7] = Out(y1[0]);
-        out[8] = Out(z1[0]);
-        out[9] = Out(x1[1]);
-        out[10] = Out(y1[1]);
-        out[11] = Out(z1[1]);
+        storeProjected(x0, y0, z0, w0, out);
+        storeProjected(x1, y1, z1, w1, out + 3 * N);
     }
-    for (; j + 2 <= count; j += 2) {
-        Double2 x = {0.0, 0.0};
-        Double2 y = {0.0, 0.0};
-        Double2 z = {0.0, 0.0};
-        Double2 w = {0.0, 0.0};
+    for (; j + N <= count; j += N) {
+        V x = {}, y = {}, z = {}, w = {};
         for (unsigned r = 0; r < K; ++r) {
-            const Double2 b = load2(column[r] + j);
-            x += b * px[r];
-            y += b * py[r];
-            z += b * pz[r];
-            w += b * pw[r];
+            V b;
+            load(b, column[r] + j);
+            x += b * cx[r];
+            y += b * cy[r];
+            z += b * cz[r];
+            w += b * cw[r];
         }
-        const Double2 inv = 1.0 / w;
-        x *= inv;
-        y *= inv;
-        z *= inv;
-        Out* out = xyz + 3 * std::size_t(j);
-        out[0] = Out(x[0]);
-        out[1] = Out(y[0]);
-        out[2] = Out(z[0]);
-        out[3] = Out(x[1]);
-        out[4] = Out(y[1]);
-        out[5] = Out(z[1]);
+        storeProjected(x, y, z, w, xyz + 3 * std::size_t(j));
     }
-#endif
     for (; j < count; ++j) {
         double x = 0.0;
         double y = 0.0;
@@ -167,10 +196,10 @@ void sampleFixed(const Point4* points, const BernsteinTable& table, std::uint32_
         double w = 0.0;
         for (unsigned r = 0; r < K; ++r) {
             const double b = column[r][j];
-            x += b * px[r];
-            y += b * py[r];
-            z += b * pz[r];
-            w += b * pw[r];
+            x += b * points[r].x;
+            y += b * points[r].y;
+            z += b * points[r].z;
+            w += b * points[r].w;
         }
         const double inv = 1.0 / w;
         Out* out = xyz + 3 * std::size_t(j);
@@ -180,28 +209,163 @@ void sampleFixed(const Point4* points, const BernsteinTable& table, std::uint32_
     }
 }
 
+template <typename V, typename Out>
+Q3_ALWAYS_INLINE void sampleAnyOrder(const Point4* points, const BernsteinTable& table,
+                                     std::uint32_t first, std::uint32_t count, Out* xyz)
+{
+    switch (table.order()) {
+    case 2: sampleLanes<2, Out, V>(points, table, first, count, xyz); break;
+    case 3: sampleLanes<3, Out, V>(points, table, first, count, xyz); break;
+    case 4: sampleLanes<4, Out, V>(points, table, first, count, xyz); break;
+    case 5: sampleLanes<5, Out, V>(points, table, first, count, xyz); break;
+    case 6: sampleLanes<6, Out, V>(points, table, first, count, xyz); break;
+    case 7: sampleLanes<7, Out, V>(points, table, first, count, xyz); break;
+    case 8: sampleLanes<8, Out, V>(points, table, first, count, xyz); break;
+    case 9: sampleLanes<9, Out, V>(points, table, first, count, xyz); break;
+    case 10: sampleLanes<10, Out, V>(points, table, first, count, xyz); break;
+    case 11: sampleLanes<11, Out, V>(points, table, first, count, xyz); break;
+    case 12: sampleLanes<12, Out, V>(points, table, first, count, xyz); break;
+    case 13: sampleLanes<13, Out, V>(points, table, first, count, xyz); break;
+    case 14: sampleLanes<14, Out, V>(points, table, first, count, xyz); break;
+    case 15: sampleLanes<15, Out, V>(points, table, first, count, xyz); break;
+    case 16: sampleLanes<16, Out, V>(points, table, first, count, xyz); break;
+    default: break;
+    }
+}
+
+// The span's left-clamped polygon f(a^{p-m}, x_{l+1} .. x_{l+m}): de Boor's
+// triangle at a = x_l (the first triangle of spanToBezier).
+template <typename V>
+Q3_ALWAYS_INLINE void leftClamped(const CurveRef& curve, std::size_t l, Point4* out)
+{
+    const unsigned deg = curve.order - 1;
+    const float* x = curve.knots;
+    const float* p = curve.points;
+    const double a = x[l];
+    Point4 d[kMaxOrder];
+    for (unsigned j = 0; j <= deg; ++j) {
+        const float* q = p + 4 * (l - deg + j);
+        d[j] = Point4{q[0], q[1], q[2], q[3]};
+    }
+    out[deg] = d[deg];
+    for (unsigned r = 1; r <= deg; ++r) {
+        for (unsigned j = deg; j >= r; --j) {
+            const double lo = x[l - deg + j];
+            const double hi = x[l + 1 + j - r];
+            lerpInto<V>(d[j - 1], d[j], (a - lo) / (hi - lo), d[j]);
+        }
+        out[deg - r] = d[deg];
+    }
+}
+
+// One step of the sweep (Piegl & Tiller A5.6 for span l): `left` holds the
+// left-clamped polygon of knot index `next` when l == next.
+template <typename V>
+Q3_ALWAYS_INLINE void sweepConvert(const CurveRef& curve, std::size_t l, Point4* left,
+                                   std::size_t& next, Point4* out)
+{
+    const unsigned p = curve.order - 1;
+    const float* x = curve.knots;
+    const std::size_t knotCount = curve.numPoints + curve.order;
+    if (l != next)
+        leftClamped<V>(curve, l, left);
+    for (unsigned i = 0; i <= p; ++i)
+        out[i] = left[i];
+    // The run of knots equal to b = x_{l+1}: indices l+1 .. e.
+    std::size_t e = l + 1;
+    while (e + 1 < knotCount && x[e + 1] == x[l + 1])
+        ++e;
+    const unsigned mult = unsigned(std::min<std::size_t>(e - l, p));
+    const unsigned r = p - mult;
+    Point4 saved[kMaxOrder];
+    if (r > 0) {
+        const double a = x[l];
+        const double numer = double(x[l + 1]) - a;
+        double alphas[kMaxOrder];
+        for (unsigned j = p; j > mult; --j)
+            alphas[j - mult - 1] = numer / (double(x[l + j]) - a);
+        for (unsigned j = 1; j <= r; ++j) {
+            const unsigned save = r - j;
+            const unsigned s = mult + j;
+            for (unsigned k = p; k >= s; --k)
+                lerpInto<V>(out[k - 1], out[k], alphas[k - s], out[k]);
+            saved[save] = out[p];
+        }
+    }
+    // The next span starts at knot e; its polygon's right part is original points.
+    next = std::size_t(-1);
+    if (e < curve.numPoints) {
+        const float* pts = curve.points;
+        for (unsigned i = r; i <= p; ++i) {
+            const float* q = pts + 4 * (e - p + i);
+            saved[i] = Point4{q[0], q[1], q[2], q[3]};
+        }
+        for (unsigned i = 0; i <= p; ++i)
+            left[i] = saved[i];
+        next = e;
+    }
+}
+
+// The entry points, one per instruction set.
+template <typename Out>
+__attribute__((noinline)) void sampleBaseline(const Point4* points, const BernsteinTable& table,
+                                              std::uint32_t first, std::uint32_t count, Out* xyz)
+{
+    sampleAnyOrder<Double2>(points, table, first, count, xyz);
+}
+
+__attribute__((noinline)) void convertBaseline(const CurveRef& curve, std::size_t l, Point4* left,
+                                               std::size_t& next, Point4* out)
+{
+    sweepConvert<Double2>(curve, l, left, next, out);
+}
+
+#if Q3_KERNEL_AVX2
+template <typename Out>
+Q3_TARGET_AVX2 __attribute__((noinline)) void sampleAvx2(const Point4* points,
+                                                         const BernsteinTable& table,
+                                                         std::uint32_t first,
+                                                         std::uint32_t count, Out* xyz)
+{
+    sampleAnyOrder<Double4>(points, table, first, count, xyz);
+}
+
+Q3_TARGET_AVX2 __attribute__((noinline)) void convertAvx2(const CurveRef& curve, std::size_t l,
+                                                          Point4* left, std::size_t& next,
+                                                          Point4* out)
+{
+    sweepConvert<Double4>(curve, l, left, next, out);
+}
+#endif
+
+KernelIsa detectKernelIsa()
+{
+#if Q3_KERNEL_AVX2
+    // __builtin_cpu_supports also requires the OS to save the YMM registers.
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx2"))
+        return KernelIsa::kAvx2;
+#endif
+    return KernelIsa::kBaseline;
+}
+
+std::atomic<int>& activeIsa()
+{
+    static std::atomic<int> isa{int(supportedKernelIsa())};
+    return isa;
+}
+
 template <typename Out>
 void sampleDispatch(const Point4* points, const BernsteinTable& table, std::uint32_t first,
                     std::uint32_t count, Out* xyz)
 {
-    switch (table.order()) {
-    case 2: sampleFixed<2>(points, table, first, count, xyz); break;
-    case 3: sampleFixed<3>(points, table, first, count, xyz); break;
-    case 4: sampleFixed<4>(points, table, first, count, xyz); break;
-    case 5: sampleFixed<5>(points, table, first, count, xyz); break;
-    case 6: sampleFixed<6>(points, table, first, count, xyz); break;
-    case 7: sampleFixed<7>(points, table, first, count, xyz); break;
-    case 8: sampleFixed<8>(points, table, first, count, xyz); break;
-    case 9: sampleFixed<9>(points, table, first, count, xyz); break;
-    case 10: sampleFixed<10>(points, table, first, count, xyz); break;
-    case 11: sampleFixed<11>(points, table, first, count, xyz); break;
-    case 12: sampleFixed<12>(points, table, first, count, xyz); break;
-    case 13: sampleFixed<13>(points, table, first, count, xyz); break;
-    case 14: sampleFixed<14>(points, table, first, count, xyz); break;
-    case 15: sampleFixed<15>(points, table, first, count, xyz); break;
-    case 16: sampleFixed<16>(points, table, first, count, xyz); break;
-    default: break;
+#if Q3_KERNEL_AVX2
+    if (activeIsa().load(std::memory_order_relaxed) == int(KernelIsa::kAvx2)) {
+        sampleAvx2(points, table, first, count, xyz);
+        return;
     }
+#endif
+    sampleBaseline(points, table, first, count, xyz);
 }
 
 } // namespace
@@ -266,76 +430,34 @@ void spanToBezier(const CurveRef& curve, std::size_t l, Point4* out)
     }
 }
 
-namespace {
-
-// The span's left-clamped polygon f(a^{p-m}, x_{l+1} .. x_{l+m}): de Boor's
-// triangle at a = x_l (the first triangle of spanToBezier).
-void leftClamped(const CurveRef& curve, std::size_t l, Point4* out)
+KernelIsa supportedKernelIsa()
 {
-    const unsigned deg = curve.order - 1;
-    const float* x = curve.knots;
-    const float* p = curve.points;
-    const double a = x[l];
-    Point4 d[kMaxOrder];
-    for (unsigned j = 0; j <= deg; ++j) {
-        const float* q = p + 4 * (l - deg + j);
-        d[j] = Point4{q[0], q[1], q[2], q[3]};
-    }
-    out[deg] = d[deg];
-    for (unsigned r = 1; r <= deg; ++r) {
-        for (unsigned j = deg; j >= r; --j) {
-            const double lo = x[l - deg + j];
-            const double hi = x[l + 1 + j - r];
-            d[j] = lerp(d[j - 1], d[j], (a - lo) / (hi - lo));
-        }
-        out[deg - r] = d[deg];
-    }
+    static const KernelIsa isa = detectKernelIsa();
+    return isa;
 }
 
-} // namespace
+KernelIsa activeKernelIsa()
+{
+    return KernelIsa(activeIsa().load(std::memory_order_relaxed));
+}
+
+bool forceKernelIsa(KernelIsa isa)
+{
+    if (isa == KernelIsa::kAvx2 && supportedKernelIsa() != KernelIsa::kAvx2)
+        return false;
+    activeIsa().store(int(isa), std::memory_order_relaxed);
+    return true;
+}
 
 void BezierSweep::convert(std::size_t l, Point4* out)
 {
-    const unsigned p = m_curve.order - 1;
-    const float* x = m_curve.knots;
-    const std::size_t knotCount = m_curve.numPoints + m_curve.order;
-    if (l != m_next)
-        leftClamped(m_curve, l, m_left);
-    for (unsigned i = 0; i <= p; ++i)
-        out[i] = m_left[i];
-    // The run of knots equal to b = x_{l+1}: indices l+1 .. e.
-    std::size_t e = l + 1;
-    while (e + 1 < knotCount && x[e + 1] == x[l + 1])
-        ++e;
-    const unsigned mult = unsigned(std::min<std::size_t>(e - l, p));
-    const unsigned r = p - mult;
-    Point4 next[kMaxOrder];
-    if (r > 0) {
-        const double a = x[l];
-        const double numer = double(x[l + 1]) - a;
-        double alphas[kMaxOrder];
-        for (unsigned j = p; j > mult; --j)
-            alphas[j - mult - 1] = numer / (double(x[l + j]) - a);
-        for (unsigned j = 1; j <= r; ++j) {
-            const unsigned save = r - j;
-            const unsigned s = mult + j;
-            for (unsigned k = p; k >= s; --k)
-                out[k] = lerp(out[k - 1], out[k], alphas[k - s]);
-            next[save] = out[p];
-        }
+#if Q3_KERNEL_AVX2
+    if (activeIsa().load(std::memory_order_relaxed) == int(KernelIsa::kAvx2)) {
+        convertAvx2(m_curve, l, m_left, m_next, out);
+        return;
     }
-    // The next span starts at knot e; its polygon's right part is original points.
-    m_next = std::size_t(-1);
-    if (e < m_curve.numPoints) {
-        const float* pts = m_curve.points;
-        for (unsigned i = r; i <= p; ++i) {
-            const float* q = pts + 4 * (e - p + i);
-            next[i] = Point4{q[0], q[1], q[2], q[3]};
-        }
-        for (unsigned i = 0; i <= p; ++i)
-            m_left[i] = next[i];
-        m_next = e;
-    }
+#endif
+    convertBaseline(m_curve, l, m_left, m_next, out);
 }
 
 Point4 evaluateBezier(const Point4* points, unsigned order, double u)

@@ -58,6 +58,25 @@ private:
     Point4 m_left[kMaxOrder];
 };
 
+/// Instruction sets the two hot loops (sampleBezier and the span conversion) exist for.
+/// The library is compiled for baseline x86-64 (SSE2), like the distribution's other
+/// libraries; on a CPU with AVX2 the loops switch to 256-bit vectors at run time. The
+/// results are bit-identical: every lane performs the same multiplications and
+/// additions in the same order as the scalar code, and no path uses fused
+/// multiply-add, so a rendering never depends on the machine. Other architectures
+/// always use kBaseline (GCC/Clang 128-bit vector extensions).
+enum class KernelIsa { kBaseline, kAvx2 };
+
+/// The widest instruction set this CPU (and operating system) supports, checked once.
+KernelIsa supportedKernelIsa();
+/// The instruction set the kernels use: supportedKernelIsa() unless forceKernelIsa chose
+/// another.
+KernelIsa activeKernelIsa();
+/// Test and benchmark hook: makes the kernels use `isa`. Returns false and changes
+/// nothing when this CPU does not support it. Thread-safe (an atomic), but a kernel
+/// already running finishes with the set it started with.
+bool forceKernelIsa(KernelIsa isa);
+
 /// The homogeneous point of a Bezier curve with `order` control points at local
 /// parameter u in [0, 1]. O(order), no allocation; exact control points at u = 0 and 1.
 Point4 evaluateBezier(const Point4* points, unsigned order, double u);

@@ -3,12 +3,15 @@
 #include "geometry/nurbs/Bezier.h"
 
 #include "geometry/nurbs/Evaluate.h"
+#include "geometry/nurbs/Tessellate.h"
 
 #include "NurbsTestSupport.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 namespace q3::nurbs {
 namespace {
@@ -143,6 +146,110 @@ TEST(NurbsBezier, FormAgreesWithDeBoorForEveryOrder)
             }
         }
     }
+}
+
+// Restores the kernels' instruction set when a test that forces one ends.
+class KernelIsaScope {
+public:
+    KernelIsaScope() : m_saved(activeKernelIsa()) {}
+    ~KernelIsaScope() { forceKernelIsa(m_saved); }
+    KernelIsaScope(const KernelIsaScope&) = delete;
+    KernelIsaScope& operator=(const KernelIsaScope&) = delete;
+
+private:
+    KernelIsa m_saved;
+};
+
+// Everything the two hot loops produce for one curve: its Bezier form and samples of
+// every span over sample ranges that exercise each step width and tail of the kernel.
+struct KernelOutput {
+    std::vector<double> form;
+    std::vector<float> samplesFloat;
+    std::vector<double> samplesDouble;
+};
+
+KernelOutput runKernels(const CurveRef& ref)
+{
+    KernelOutput result;
+    const BezierForm form(ref);
+    for (std::size_t s = 0; s < form.spanCount(); ++s) {
+        for (unsigned r = 0; r < form.order(); ++r) {
+            const Point4& p = form.spanPoints(s)[r];
+            result.form.insert(result.form.end(), {p.x, p.y, p.z, p.w});
+        }
+    }
+    // The sweep from a later span (its first call converts from scratch).
+    if (form.spanCount() > 1) {
+        BezierSweep sweep(ref);
+        Point4 out[kMaxOrder];
+        sweep.convert(form.span(1).knotIndex, out);
+        for (unsigned r = 0; r < form.order(); ++r) {
+            result.form.insert(result.form.end(), {out[r].x, out[r].y, out[r].z, out[r].w});
+        }
+    }
+    for (const std::uint32_t m : {1u, 2u, 3u, 5u, 7u, 8u, 9u, 12u, 17u, 64u}) {
+        const BernsteinTable table(form.order(), m);
+        for (std::uint32_t first = 0; first <= std::min<std::uint32_t>(m, 3); ++first) {
+            const std::uint32_t count = m + 1 - first;
+            std::vector<float> f(3 * count);
+            std::vector<double> d(3 * count);
+            for (std::size_t s = 0; s < form.spanCount(); ++s) {
+                form.sampleSpan(s, table, first, count, f.data());
+                form.sampleSpan(s, table, first, count, d.data());
+                result.samplesFloat.insert(result.samplesFloat.end(), f.begin(), f.end());
+                result.samplesDouble.insert(result.samplesDouble.end(), d.begin(), d.end());
+            }
+        }
+    }
+    return result;
+}
+
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+TEST(NurbsBezier, Avx2KernelsGiveTheBaselineBitsForEveryOrder)
+{
+    // The AVX2 paths promise identical results, so renderings (and goldens) do not
+    // depend on the machine. Compared bit for bit, not within a tolerance.
+    if (supportedKernelIsa() != KernelIsa::kAvx2) {
+        GTEST_SKIP() << "this CPU has no AVX2; only the baseline kernels run here";
+    }
+    KernelIsaScope scope;
+    std::mt19937 rng(2024);
+    for (int trial = 0; trial < 120; ++trial) {
+        const unsigned k = 2 + trial % 15;
+        test::RandomCurveOptions options;
+        options.clamped = trial % 2 == 0;
+        options.repeatProbability = trial % 3 == 0 ? 0.5 : 0.1;
+        const TestCurve curve = test::randomCurve(rng, k, options);
+        ASSERT_TRUE(forceKernelIsa(KernelIsa::kBaseline));
+        const KernelOutput baseline = runKernels(curve.ref());
+        TessellatedCurve baselineCurve;
+        tessellateConstant(curve.ref(), 13, baselineCurve);
+        ASSERT_TRUE(forceKernelIsa(KernelIsa::kAvx2));
+        EXPECT_EQ(activeKernelIsa(), KernelIsa::kAvx2);
+        const KernelOutput avx2 = runKernels(curve.ref());
+        TessellatedCurve avx2Curve;
+        tessellateConstant(curve.ref(), 13, avx2Curve);
+        ASSERT_FALSE(baseline.form.empty());
+        EXPECT_TRUE(sameBits(baseline.form, avx2.form)) << "order " << k << ", trial " << trial;
+        EXPECT_TRUE(sameBits(baseline.samplesFloat, avx2.samplesFloat)) << "order " << k;
+        EXPECT_TRUE(sameBits(baseline.samplesDouble, avx2.samplesDouble)) << "order " << k;
+        EXPECT_TRUE(sameBits(baselineCurve.vertices, avx2Curve.vertices)) << "order " << k;
+    }
+}
+
+TEST(NurbsBezier, ForcingAnUnsupportedKernelIsaChangesNothing)
+{
+    KernelIsaScope scope;
+    ASSERT_TRUE(forceKernelIsa(KernelIsa::kBaseline));
+    EXPECT_EQ(activeKernelIsa(), KernelIsa::kBaseline);
+    const bool haveAvx2 = supportedKernelIsa() == KernelIsa::kAvx2;
+    EXPECT_EQ(forceKernelIsa(KernelIsa::kAvx2), haveAvx2);
+    EXPECT_EQ(activeKernelIsa(), haveAvx2 ? KernelIsa::kAvx2 : KernelIsa::kBaseline);
 }
 
 TEST(NurbsBezier, SampleRangeWritesOnlyRequestedSamples)
