@@ -145,6 +145,10 @@ const BenchCurve& curveNamed(int which)
     static const BenchCurve bezier = bezier4();
     static const BenchCurve cubic = q3bench::rationalCubic();
     static const BenchCurve sixteen = q3bench::orderSixteen();
+    if (which == 3) {
+        static const BenchCurve large = q3bench::makeCurve(16, 100000, 3);
+        return large;
+    }
     return which == 0 ? bezier : which == 1 ? cubic : sixteen;
 }
 
@@ -177,11 +181,14 @@ void disposeAll(const std::vector<TQ3GeometryObject>& curves)
 }
 
 // which: 0 a 4-point cubic Bezier (K = 1000), 1 the 1000-point rational cubic
-// and 2 the 1000-point order-16 curve (K = 10 each).
+// and 2 the 1000-point order-16 curve (K = 10 each), 3 a 100,000-point order-16
+// curve (K = 1): its Bezier form (51 MB) is over nurbs::kWholeFormLimit, so the
+// cache keeps only the polyline (c1 = 64 is lowered to the segment cap, with the
+// article's warning).
 void Q3_RetainedCurve(benchmark::State& state, int which)
 {
     const BenchCurve& curve = curveNamed(which);
-    const std::size_t count = which == 0 ? 1000 : 10;
+    const std::size_t count = which == 0 ? 1000 : which == 3 ? 1 : 10;
     q3bench::Q3Session session;
     q3bench::BenchView view(64, 64);
 
@@ -235,6 +242,7 @@ void Q3_RetainedCurve(benchmark::State& state, int which)
 BENCHMARK_CAPTURE(Q3_RetainedCurve, bezier4, 0)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Q3_RetainedCurve, cubic, 1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Q3_RetainedCurve, order16, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Q3_RetainedCurve, order16_large, 3)->Unit(benchmark::kMicrosecond);
 
 } // namespace
 

@@ -216,7 +216,8 @@ def memory(runs, out):
                "polyline | heap blocks | added by a 2nd frame |")
     out.append("|---|---|---|---|---|---|---|---|---|")
     for name, label in (("bezier4", "4-point cubic Bezier (65 vertices)"),
-                        ("cubic", "rational cubic, 1000 points"), ("order16", "order 16, 1000 points")):
+                        ("cubic", "rational cubic, 1000 points"), ("order16", "order 16, 1000 points"),
+                        ("order16_large", "order 16, 100,000 points (over the whole-form limit)")):
         key = f"Q3_RetainedCurve/{name}"
         if not runs.has(key):
             out.append(f"| {label} | {runs.errors.get(key, 'missing')} | | | | | | | |")

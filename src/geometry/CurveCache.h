@@ -16,7 +16,8 @@ class BezierForm;
 /// decides when it is stale (key: everything the tessellation depends on);
 /// the curve empties it on every edit. Immediate-mode curves have none.
 struct CurveCache {
-    /// The curve's spans in rational Bezier form, built on first use.
+    /// The curve's spans in rational Bezier form, built on first use; stays null
+    /// for a curve above nurbs::kWholeFormLimit.
     std::shared_ptr<const nurbs::BezierForm> bezier;
     /// What the polyline was made under (edit index, style, matrices, pane...).
     std::vector<double> key;

@@ -157,9 +157,12 @@ std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan
     std::vector<double> key = plan.key();
     std::string report;
     if (!cache.valid || cache.key != key) {
-        if (!cache.bezier)
+        // A large curve keeps no Bezier form: the tessellators convert it span by
+        // span, so the cache holds only the polyline (Tessellate.h, kWholeFormLimit).
+        if (!cache.bezier && nurbs::fitsWholeBezierForm(curve))
             cache.bezier = std::make_shared<const nurbs::BezierForm>(curve);
-        nurbs::TessellatedCurve result = subdivide(plan, *cache.bezier);
+        nurbs::TessellatedCurve result =
+            cache.bezier ? subdivide(plan, *cache.bezier) : subdivide(plan, curve);
         report = substitutionReport(plan, result);
         cache.polyline = std::move(result.vertices);
         cache.key = std::move(key);

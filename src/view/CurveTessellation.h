@@ -50,7 +50,8 @@ using PolylineUser = std::function<void(const float* xyz, std::size_t vertexCoun
 /// cache is empty (the curve drops it on every edit) or was built under
 /// another setting (its key: method, c1, the matrix the method measures
 /// through, and for screen space the pane size); the Bezier form is built once
-/// per edit. `tessellations` counts rebuilds. Caches are locked while in use,
+/// per edit and kept, unless it would exceed nurbs::kWholeFormLimit (then the
+/// curve is converted span by span at each rebuild and only the polyline is kept). `tessellations` counts rebuilds. Caches are locked while in use,
 /// so views on several threads may draw the same retained curve. Immediate
 /// mode (cache null) subdivides on every call.
 ///

@@ -40,10 +40,6 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// Curves small enough are converted to Bezier form once up front rather than once per
-// pass; above this many Bezier points (8 MB) spans are converted as they are visited.
-constexpr std::size_t kConvertOnceLimit = std::size_t{1} << 18;
-
 class FormSpans {
 public:
     explicit FormSpans(const BezierForm& form) : m_form(form) {}
@@ -587,6 +583,11 @@ private:
 
 } // namespace
 
+bool fitsWholeBezierForm(const CurveRef& curve)
+{
+    return countNonEmptySpans(curve) * curve.order <= kWholeFormLimit;
+}
+
 void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out)
 {
     if (!validateCurve(curve).ok()) {
@@ -610,7 +611,7 @@ void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const Po
     if (!validateCurve(curve).ok()) {
         return;
     }
-    if (countNonEmptySpans(curve) * curve.order <= kConvertOnceLimit) {
+    if (fitsWholeBezierForm(curve)) {
         tessellateAdaptive(BezierForm(curve), maxSegmentLength, mapping, out);
         return;
     }

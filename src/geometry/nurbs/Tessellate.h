@@ -17,6 +17,16 @@ namespace q3::nurbs {
 /// max(kMaxSegments, number of spans), which is linear in the input size).
 constexpr std::size_t kMaxSegments = std::size_t{1} << 20;
 
+/// Most Bezier points (spans * order, 32 bytes each: 8 MB) of a curve whose Bezier form
+/// is built whole: the adaptive method converts such a curve once up front instead of
+/// once per pass, and a retained curve keeps it between tessellations. Larger curves
+/// are converted span by span as they are visited, so memory stays O(order) beyond the
+/// curve's own data and the polyline.
+constexpr std::size_t kWholeFormLimit = std::size_t{1} << 18;
+
+/// Whether a valid curve's Bezier form fits kWholeFormLimit. O(numPoints).
+bool fitsWholeBezierForm(const CurveRef& curve);
+
 /// Most segments per span for the constant method.
 constexpr std::uint32_t kMaxSegmentsPerSpan = 1024;
 

@@ -15,10 +15,16 @@
 #include "QD3DTransform.h"
 #include "QD3DView.h"
 #include "geometry/NURBCurve.h"
+#include "geometry/nurbs/Bezier.h"
+#include "geometry/nurbs/Tessellate.h"
+#include "view/CurveTessellation.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace q3 {
@@ -246,6 +252,80 @@ TEST_F(CurveCacheTest, ImmediateModeLeavesRetainedCachesAlone)
         ASSERT_EQ(Q3NURBCurve_Submit(&data, m_view), kQ3Success);
     ASSERT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
     EXPECT_EQ(cache().tessellations, 1u);
+}
+
+// A clamped uniform curve of the given order with `spans` non-empty spans: a
+// wiggle in x-y with weights between 0.5 and 2.
+struct UniformCurve {
+    unsigned order = 0;
+    std::vector<float> points;
+    std::vector<float> knots;
+
+    UniformCurve(unsigned k, std::size_t spans) : order(k)
+    {
+        const std::size_t n = spans + k - 1;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double w = 1.25 + 0.75 * std::sin(0.7 * double(i));
+            const double x = double(i) / double(n);
+            const double y = std::sin(37.0 * x) + 0.1 * std::cos(5.0 * double(i));
+            points.insert(points.end(), {float(x * w), float(y * w), 0.0f, float(w)});
+        }
+        for (std::size_t i = 0; i < n + k; ++i)
+            knots.push_back(float(std::min(std::max<std::size_t>(i, k - 1), n) - (k - 1)));
+    }
+    nurbs::CurveRef ref() const { return nurbs::CurveRef{order, points.size() / 4, points.data(), knots.data()}; }
+};
+
+TEST(CurveCacheMemory, TheWholeFormLimitCountsBezierPoints)
+{
+    // Order 16: 2^18 / 16 spans is exactly the limit.
+    const std::size_t spans = nurbs::kWholeFormLimit / 16;
+    EXPECT_TRUE(nurbs::fitsWholeBezierForm(UniformCurve(16, spans).ref()));
+    EXPECT_FALSE(nurbs::fitsWholeBezierForm(UniformCurve(16, spans + 1).ref()));
+    EXPECT_TRUE(nurbs::fitsWholeBezierForm(UniformCurve(4, spans * 4).ref()));
+}
+
+TEST(CurveCacheMemory, ALargeRetainedCurveKeepsOnlyItsPolylineAndDrawsTheSame)
+{
+    const UniformCurve large(16, nurbs::kWholeFormLimit / 16 + 7);
+    const nurbs::CurveRef ref = large.ref();
+    CurveCache cache;
+    TessellationSetting setting;
+    setting.style = {kQ3SubdivisionMethodConstant, 3.0f, 0.0f};
+    std::vector<float> drawn;
+    const PolylineUser keep = [&](const float* xyz, std::size_t count) { drawn.assign(xyz, xyz + 3 * count); };
+    withCurvePolyline(ref, &cache, setting, keep);
+    EXPECT_EQ(cache.bezier, nullptr);
+    EXPECT_EQ(cache.tessellations, 1u);
+    EXPECT_EQ(cache.polyline, drawn);
+    // Span-by-span conversion is the same arithmetic as the whole form's.
+    EXPECT_EQ(drawn, nurbs::tessellateConstant(nurbs::BezierForm(ref), 3).vertices);
+
+    // A style change rebuilds the polyline, still without a form; c1 holds.
+    const float c1 = 0.002f;
+    setting.style = {kQ3SubdivisionMethodWorldSpace, c1, 0.0f};
+    withCurvePolyline(ref, &cache, setting, keep);
+    EXPECT_EQ(cache.bezier, nullptr);
+    EXPECT_EQ(cache.tessellations, 2u);
+    ASSERT_GT(drawn.size(), 6u);
+    double longest = 0.0;
+    for (std::size_t v = 3; v < drawn.size(); v += 3)
+        longest = std::max(longest, double(std::hypot(drawn[v] - drawn[v - 3], drawn[v + 1] - drawn[v - 2])));
+    // Chords are measured exactly in double; the float vertices (coordinates up to
+    // about 2) move each end by half an ulp.
+    EXPECT_LE(longest, c1 + 4.0 * std::numeric_limits<float>::epsilon());
+    EXPECT_GT(longest, 0.9 * c1);
+}
+
+TEST(CurveCacheMemory, ASmallRetainedCurveKeepsItsBezierForm)
+{
+    const UniformCurve small(16, 50);
+    CurveCache cache;
+    TessellationSetting setting;
+    setting.style = {kQ3SubdivisionMethodConstant, 3.0f, 0.0f};
+    withCurvePolyline(small.ref(), &cache, setting, [](const float*, std::size_t) {});
+    ASSERT_NE(cache.bezier, nullptr);
+    EXPECT_EQ(cache.bezier->spanCount(), 50u);
 }
 
 } // namespace
