@@ -315,4 +315,59 @@ TEST_F(SubdivisionPerspectiveRegressionTest, RandomCurvesAroundTheEyeStayBounded
     std::printf("[ subdivision ] curves around the eye: at most %zu vertices\n", largest);
 }
 
+// The part of every polyline segment that lies beyond the hither plane (what
+// is drawn of it) is at most c1 pixels long, also for a segment that crosses
+// the plane: the subdivision finds where the curve leaves the visible side
+// and measures up to there, so the unmeasured segment beyond starts on the
+// plane itself. Curves are random (every order, around and through the eye)
+// plus a cubic arc that crosses the plane mid-span, where the probes alone
+// would leave a long visible chord.
+TEST_F(SubdivisionPerspectiveRegressionTest, TheVisiblePieceOfEverySegmentIsAtMostC1)
+{
+    std::vector<Curve> curves;
+    Curve arc;
+    arc.order = 4;
+    arc.points = {{-2.0f, 0.6f, -1.5f, 1}, {-0.7f, -0.8f, 0.9f, 1}, {0.8f, 0.7f, 0.9f, 1}, {2.1f, -0.4f, -1.6f, 1}};
+    arc.knots = {0, 0, 0, 0, 1, 1, 1, 1};
+    curves.push_back(arc);
+    std::mt19937 rng(kSeed + 2);
+    for (int index = 0; index < 400; ++index) {
+        RandomCurveOptions options;
+        options.order = 2 + unsigned(index % 15);
+        options.clamped = index % 2 == 0;
+        options.repeatProbability = 0.3L;
+        options.extent = 4;
+        curves.push_back(randomCurve(rng, options));
+    }
+    const ScreenMap map = screen();
+    std::size_t crossing = 0;
+    for (std::size_t index = 0; index < curves.size(); ++index) {
+        const float c1 = index % 2 == 0 ? 3.0f : 12.0f;
+        const std::vector<Vec3> v = render(curves[index], c1);
+        const std::string what = "curve " + std::to_string(index) + " order " + std::to_string(curves[index].order);
+        for (std::size_t i = 1; i < v.size(); ++i) {
+            Vec3 a = v[i - 1], b = v[i];
+            const Real da = map.depth(a), db = map.depth(b);
+            if (da < kHither && db < kHither)
+                continue;
+            if (da < kHither || db < kHither) {
+                // Clip the straight segment at the hither plane.
+                ++crossing;
+                const Real t = (kHither - da) / (db - da);
+                const Vec3 onPlane = a + t * (b - a);
+                (da < kHither ? a : b) = onPlane;
+            }
+            Real ax, ay, bx, by;
+            ASSERT_TRUE(map.map(a, ax, ay) && map.map(b, bx, by)) << what;
+            // Vertices are floats: each end may move by its rounding error.
+            const Real slack = map.pixelError(a, 1e-6L * curves[index].scale()) +
+                               map.pixelError(b, 1e-6L * curves[index].scale()) + 1e-3L;
+            EXPECT_LE(std::hypot(bx - ax, by - ay), c1 + slack) << what << ", segment " << i << ", depths " << double(da) << " and " << double(db);
+        }
+        if (HasFailure())
+            break;
+    }
+    EXPECT_GT(crossing, 10u) << "the curves should cross the hither plane";
+}
+
 } // namespace

@@ -22,7 +22,10 @@
 // crossing inside that bracket with safeguarded regula falsi until the chord is within
 // 3% below c1. Every chord is thus measured exactly between its mapped end points, so
 // the bound holds by construction, and segments are normally at least 97% of c1, the
-// last of each run excepted. Parts where the mapping fails get one segment per probe interval.
+// last of each run excepted. Where the mapping fails, bisection finds the edge of the
+// mapped part inside a probe interval (or both edges of a gap the march runs into), so
+// the mapped part is measured up to its edge; the rest gets one unmeasured segment per
+// probe interval, and a gap two.
 // This is greedy chord-length parameterisation, not a formula from the article, which
 // only defines what the methods promise ("CONTROLLING SUBDIVISION").
 
@@ -217,14 +220,26 @@ struct Sample {
     bool mapped = false;
 };
 
-// A maximal stretch of probe intervals of one span that are all measurable (both
-// ends mapped) or all not.
+// Most gaps (stretches without an image between two mapped samples) one measurable
+// run's march splits out; past that, a gap costs two unmeasured segments.
+constexpr unsigned kMaxGapsPerRun = 64;
+
+constexpr std::uint32_t kNoBoundary = std::numeric_limits<std::uint32_t>::max();
+
+// A maximal stretch of one span that is all measurable (every point mapped, as far as
+// the probes tell) or all not. It runs from probe `first` to probe `last`, except that
+// an end inside a probe interval with one unmapped end is the boundary point found
+// there (headBoundary / tailBoundary index the boundary samples). Its vertices before
+// the tail are its head, then (measurable) the march's or (not measurable) the probes
+// first+1 .. last-1; the tail is the next run's head.
 struct Run {
     std::size_t span = 0;
     std::uint32_t first = 0;
     std::uint32_t last = 0;
     bool measurable = false;
     double length = 0.0;
+    std::uint32_t headBoundary = kNoBoundary;
+    std::uint32_t tailBoundary = kNoBoundary;
 };
 
 double distance(const Point3& a, const Point3& b)
@@ -307,35 +322,104 @@ private:
         return std::isfinite(length);
     }
 
+    // The mapped point nearest (in u) to where the curve loses its image between a
+    // mapped and an unmapped sample: bisection down to adjacent doubles, at most
+    // kMaxRootIterations evaluations.
+    Sample boundaryBetween(Sample mapped, Sample unmapped) const
+    {
+        for (unsigned iteration = 0; iteration < kMaxRootIterations; ++iteration) {
+            const double u = 0.5 * (mapped.u + unmapped.u);
+            if (u == mapped.u || u == unmapped.u) {
+                break;
+            }
+            const Sample sample = makeSample(u);
+            if (sample.mapped) {
+                mapped = sample;
+            } else {
+                unmapped = sample;
+            }
+        }
+        return mapped;
+    }
+
+    // Adds one probe interval's piece to the runs: from probe `first` (or boundary
+    // `head`) to probe first+1 (or boundary `tail`), measurable or not, merged into the
+    // previous run when that is of the same kind and ends where the piece starts.
+    void addPiece(std::size_t s, std::uint32_t first, bool isMeasurable, double length,
+                  std::uint32_t head, std::uint32_t tail)
+    {
+        if (!m_runs.empty()) {
+            Run& previous = m_runs.back();
+            if (previous.span == s && previous.measurable == isMeasurable && previous.last == first &&
+                previous.tailBoundary == kNoBoundary && head == kNoBoundary) {
+                previous.last = first + 1;
+                previous.length += length;
+                previous.tailBoundary = tail;
+                if (isMeasurable) {
+                    m_totalLength += length;
+                } else {
+                    ++m_unmeasurableIntervals;
+                }
+                return;
+            }
+        }
+        Run run;
+        run.span = s;
+        run.first = first;
+        run.last = first + 1;
+        run.measurable = isMeasurable;
+        run.length = length;
+        run.headBoundary = head;
+        run.tailBoundary = tail;
+        if (isMeasurable) {
+            ++m_measurableRuns;
+            m_totalLength += length;
+        } else {
+            ++m_unmeasurableIntervals;
+        }
+        m_runs.push_back(run);
+    }
+
+    // Probe intervals with both ends mapped are measurable; one with a single mapped
+    // end is split at the boundary point, so the visible side is measured up to where
+    // the image ends (the hither plane, for a screen-space mapping) and only the side
+    // without an image is an unmeasured segment.
     void collectRuns()
     {
-        double lengths[kMaxOrder + 1];
-        bool ok[kMaxOrder + 1];
         for (std::size_t s = 0; s < m_spans.count(); ++s) {
             probeSpan(s);
             for (std::uint32_t j = 0; j < m_probeSegments; ++j) {
-                lengths[j] = 0.0;
-                ok[j] = measurable(m_probes[j], m_probes[j + 1], lengths[j]);
-            }
-            for (std::uint32_t j = 0; j < m_probeSegments;) {
-                Run run;
-                run.span = s;
-                run.first = j;
-                run.measurable = ok[j];
-                while (j < m_probeSegments && ok[j] == run.measurable) {
-                    run.length += run.measurable ? lengths[j] : 0.0;
-                    ++j;
-                }
-                run.last = j;
-                if (run.measurable) {
-                    ++m_measurableRuns;
-                    m_totalLength += run.length;
+                const Sample& a = m_probes[j];
+                const Sample& b = m_probes[j + 1];
+                double length = 0.0;
+                if (measurable(a, b, length)) {
+                    addPiece(s, j, true, length, kNoBoundary, kNoBoundary);
+                } else if (a.mapped != b.mapped) {
+                    const std::uint32_t index = std::uint32_t(m_boundaries.size());
+                    m_boundaries.push_back(a.mapped ? boundaryBetween(a, b) : boundaryBetween(b, a));
+                    const Sample& edge = m_boundaries.back();
+                    if (a.mapped) {
+                        addPiece(s, j, true, distance(a.image, edge.image), kNoBoundary, index);
+                        addPiece(s, j, false, 0.0, index, kNoBoundary);
+                    } else {
+                        addPiece(s, j, false, 0.0, kNoBoundary, index);
+                        addPiece(s, j, true, distance(edge.image, b.image), index, kNoBoundary);
+                    }
                 } else {
-                    m_unmeasurableIntervals += run.last - run.first;
+                    addPiece(s, j, false, 0.0, kNoBoundary, kNoBoundary);
                 }
-                m_runs.push_back(run);
             }
         }
+    }
+
+    const Sample& head(const Run& run) const
+    {
+        return run.headBoundary == kNoBoundary ? m_probes[run.first] : m_boundaries[run.headBoundary];
+    }
+
+    const Sample& tail(const Run& run) const
+    {
+        return run.tailBoundary == kNoBoundary ? m_probes[run.last] : m_boundaries[run.tailBoundary];
     }
 
     static std::size_t segmentsFor(double length, double c)
@@ -425,9 +509,9 @@ private:
         if (2 * n > probeIntervals) {
             const std::uint32_t segments = std::uint32_t(
                 std::min<std::size_t>(std::max<std::size_t>(2 * n, probeIntervals), kMaxLengthTableSegments));
-            const double u0 = m_probes[run.first].u;
-            const double u1 = m_probes[run.last].u;
-            m_table.push_back(m_probes[run.first]);
+            const double u0 = head(run).u;
+            const double u1 = tail(run).u;
+            m_table.push_back(head(run));
             for (std::uint32_t i = 1; i < segments; ++i) {
                 m_table.push_back(makeSample(u0 + (u1 - u0) * (double(i) / double(segments))));
                 if (!m_table.back().mapped) {
@@ -436,17 +520,20 @@ private:
                 }
             }
             if (!m_table.empty()) {
-                m_table.push_back(m_probes[run.last]);
+                m_table.push_back(tail(run));
                 return;
             }
         }
-        m_table.assign(m_probes.begin() + run.first, m_probes.begin() + run.last + 1);
+        m_table.push_back(head(run));
+        m_table.insert(m_table.end(), m_probes.begin() + run.first + 1, m_probes.begin() + run.last);
+        m_table.push_back(tail(run));
     }
 
     // Searches (lo, hi) for a point whose chord from `from` is within
     // [(1 - kChordTolerance) c, c], given chord(from, lo) <= c < chord(from, hi). Returns
-    // the best lo found; sets `unmappable` instead when it meets a point with no image.
-    Sample findCrossing(const Sample& from, Sample lo, Sample hi, bool& unmappable) const
+    // the best lo found; sets `unmappable` instead when it meets a point with no image,
+    // returns that point and leaves the bracket's mapped end in `lastMapped`.
+    Sample findCrossing(const Sample& from, Sample lo, Sample hi, bool& unmappable, Sample& lastMapped) const
     {
         unmappable = false;
         double dlo = chord(from, lo);
@@ -465,6 +552,7 @@ private:
             const Sample sample = makeSample(u);
             if (!sample.mapped) {
                 unmappable = true;
+                lastMapped = lo;
                 return sample;
             }
             const double d = chord(from, sample);
@@ -485,27 +573,68 @@ private:
     void emitMeasurableRun(const Run& run)
     {
         buildTable(run, segmentsFor(run.length, m_c));
-        const std::size_t last = m_table.size() - 1;
+        std::size_t last = m_table.size() - 1;
         Sample current = m_table.front();
         std::size_t index = 0;  // largest table index with u <= current.u
+        unsigned gaps = 0;
         for (;;) {
             std::size_t j = index + 1;
-            while (j <= last && chord(current, m_table[j]) <= m_c) {
+            while (j <= last && m_table[j].mapped && chord(current, m_table[j]) <= m_c) {
                 ++j;
             }
             if (j > last) {
                 break;
             }
-            if (!haveRoom(2)) {
+            if (!haveRoom(m_table[j].mapped ? 2 : 3)) {
                 m_out.capped = true;
                 break;
             }
+            if (!m_table[j].mapped) {
+                // A gap: a chord to its near edge (within c, or current is that edge),
+                // then two unmeasured chords through the point without an image to its
+                // far edge. They run through the part that is not drawn (a chord
+                // straight from edge to edge could cut across the image).
+                emit(current);
+                if (m_table[j - 1].u > current.u) {
+                    emit(m_table[j - 1]);
+                }
+                emit(m_table[j]);
+                m_out.unmeasuredSegments += 2;
+                current = m_table[j + 1];
+                index = j + 1;
+                continue;
+            }
             const Sample lo = m_table[j - 1].u > current.u ? m_table[j - 1] : current;
             bool unmappable = false;
-            const Sample next = findCrossing(current, lo, m_table[j], unmappable);
+            Sample lastMapped;
+            const Sample next = findCrossing(current, lo, m_table[j], unmappable, lastMapped);
+            if (unmappable && gaps < kMaxGapsPerRun) {
+                // The curve loses its image between lastMapped and table sample j: put
+                // both edges of the gap and the point without an image between them in
+                // the table, so the march measures up to the near edge and resumes
+                // from the far one.
+                ++gaps;
+                Sample edges[4];
+                std::size_t count = 0;
+                if (lastMapped.u > m_table[j - 1].u) {
+                    edges[count++] = lastMapped;
+                }
+                const Sample nearEdge = boundaryBetween(lastMapped, next);
+                if (nearEdge.u > lastMapped.u) {
+                    edges[count++] = nearEdge;
+                }
+                edges[count++] = next;
+                const Sample farEdge = boundaryBetween(m_table[j], next);
+                if (farEdge.u < m_table[j].u) {
+                    edges[count++] = farEdge;
+                }
+                m_table.insert(m_table.begin() + std::ptrdiff_t(j), edges, edges + count);
+                last = m_table.size() - 1;
+                continue;
+            }
             emit(current);
             if (unmappable) {
-                // No measure between here and table sample j: two unmeasured chords.
+                // Too many gaps in this run: two unmeasured chords to table sample j.
                 emit(next);
                 m_out.unmeasuredSegments += 2;
                 current = m_table[j];
@@ -540,10 +669,11 @@ private:
                     emitMeasurableRun(run);
                 } else {
                     m_reserve -= run.last - run.first;
-                    for (std::uint32_t j = run.first; j < run.last; ++j) {
+                    emit(head(run));
+                    for (std::uint32_t j = run.first + 1; j < run.last; ++j) {
                         emit(m_probes[j]);
-                        ++m_out.unmeasuredSegments;
                     }
+                    m_out.unmeasuredSegments += run.last - run.first;
                 }
             }
         }
@@ -570,6 +700,7 @@ private:
     std::size_t m_currentSpan = 0;
 
     std::vector<Run> m_runs;
+    std::vector<Sample> m_boundaries;  // where the image ends inside a probe interval
     std::size_t m_measurableRuns = 0;
     std::size_t m_unmeasurableIntervals = 0;
     double m_totalLength = 0.0;

@@ -107,10 +107,17 @@ void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, T
 /// probe interval is already over kPlacementBudget (always so with that many spans),
 /// every span gets one segment and effectiveValue is infinity. +infinity is accepted and
 /// gives one segment per run.
-/// Where the mapping fails, segments are not measured: one per probe interval
-/// (probeSegmentsPerSpan), counted in unmeasuredSegments.
-/// Time and output are bounded by O(kMaxSegments * kMaxRootIterations + spans * order^2)
-/// for any finite input. The mapping is called from this thread only, O(output) times.
+/// Where the mapping fails, segments are not measured: the mapped part is measured up
+/// to the edge where its image ends (found by bisection to the last bit of the
+/// parameter), then one unmeasured segment per probe interval (probeSegmentsPerSpan)
+/// without an image, and two through a gap the march meets between probes; all are
+/// counted in unmeasuredSegments. So an unmeasured segment starts or ends at such an
+/// edge or at a point without an image: with the near plane as the edge, its part
+/// that is drawn has no length.
+/// For any finite input the output is O(kMaxSegments + spans * probeSegmentsPerSpan),
+/// and the curve is evaluated and mapped O(kMaxRootIterations) times per output vertex
+/// (placing a vertex, or bisecting for an edge), at O(order) per evaluation, plus
+/// O(order^2) per span for its Bezier form. The mapping is called from this thread only.
 /// Errors: none; an invalid curve gives an empty result, substitution is reported in the
 /// result. Ownership: the mapping is only used during the call.
 TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength,
