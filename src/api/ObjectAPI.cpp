@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "QD3D.h"
 #include "api/Entry.h"
+#include "render/OffscreenRenderer.h"
 #include "view/View.h"
 
 using namespace q3;
@@ -13,6 +14,8 @@ extern "C" {
 TQ3Status Q3Initialize(void)
 {
     errors::beginCall();
+    // At program start, before the application's threads use the environment.
+    pinRenderingEnvironment();
     if (!system::initialize())
         errors::postNotice(kQ3NoticeSystemAlreadyInitialized,
                            "Q3Initialize: already initialized; the call nests and needs its own Q3Exit");

@@ -102,11 +102,10 @@ std::mutex& contextMutex()
     return mutex;
 }
 
-// Called with contextMutex() held, before every context creation; only the
-// first call changes the environment. If the process created an OSMesa
-// context before (outside Q3), Mesa has already chosen its driver and the
-// GL_RENDERER check reports it.
-void pinMesaEnvironment()
+// Called with contextMutex() held; only the first call changes the environment.
+// If the process created an OSMesa context before (outside Q3), Mesa has already
+// chosen its driver and the GL_RENDERER check reports it.
+void pinMesaEnvironmentLocked()
 {
     static bool pinned = false;
     if (pinned)
@@ -293,6 +292,12 @@ private:
     std::vector<GLsizei> m_multiCounts;
 };
 
+void pinRenderingEnvironment()
+{
+    std::lock_guard<std::mutex> lock(contextMutex());
+    pinMesaEnvironmentLocked();
+}
+
 RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::uint32_t height)
 {
     destroyContext();
@@ -303,7 +308,7 @@ RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::ui
 
     {
         std::lock_guard<std::mutex> lock(contextMutex());
-        pinMesaEnvironment();
+        pinMesaEnvironmentLocked();
         const int attributes[] = {OSMESA_FORMAT,       OSMESA_RGBA, OSMESA_DEPTH_BITS,  0,
                                   OSMESA_STENCIL_BITS, 0,           OSMESA_ACCUM_BITS,  0,
                                   OSMESA_PROFILE,      OSMESA_COMPAT_PROFILE, 0};

@@ -24,6 +24,14 @@ struct RgbaColor {
     float a = 0.0f;
 };
 
+/// Sets the environment variables Mesa reads when the process's first OSMesa
+/// context is created (OffscreenRenderer.cpp says which and why). Only the first
+/// call changes the environment, with setenv/unsetenv, which the C library does not
+/// make safe against other threads using the environment at the same time: so
+/// Q3Initialize calls it, at program start as QuickDraw 3D requires, and the first
+/// context creation calls it again in case it was skipped. Thread-safe otherwise.
+void pinRenderingEnvironment();
+
 /// Draws points, lines and filled triangles into its own RGBA8 image, headless.
 /// One per QuickDraw 3D view. This header is deliberately free of OpenGL: the
 /// implementation (OffscreenRenderer.cpp) uses OSMesa with llvmpipe today and

@@ -4,6 +4,9 @@
 
 #include "QD3DSet.h"
 
+#include <cstdlib>
+#include <cstring>
+
 namespace {
 
 using q3test::Q3ApiTest;
@@ -17,6 +20,26 @@ TEST(SystemApiUninitialized, EveryCallBeforeInitializeFailsWithNotInitialized)
     EXPECT_EQ(Q3Exit(), kQ3Failure);
     EXPECT_EQ(Q3Error_Get(nullptr), kQ3ErrorNotInitialized);
     EXPECT_STRNE(Q3Error_GetMessage(), "");
+}
+
+// Q3Initialize pins Mesa's environment (docs/threads.md: it is the call made at
+// program start, before threads). Checked in a fresh process ("threadsafe" death
+// tests re-execute the test binary), since pinning happens once per process.
+TEST(SystemApiEnvironment, InitializePinsTheMesaEnvironmentBeforeAnyRendering)
+{
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_EXIT(
+        {
+            setenv("GALLIUM_DRIVER", "softpipe", 1);
+            setenv("LP_NO_RAST", "1", 1);
+            Q3Initialize();
+            const char* driver = getenv("GALLIUM_DRIVER");
+            const bool pinned = driver != nullptr && std::strcmp(driver, "llvmpipe") == 0 &&
+                                getenv("LP_NO_RAST") == nullptr;
+            Q3Exit();
+            std::exit(pinned ? 0 : 1);
+        },
+        ::testing::ExitedWithCode(0), "");
 }
 
 TEST_F(SystemApiTest, InitializeNestsAndPostsANotice)
