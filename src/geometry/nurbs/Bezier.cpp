@@ -401,25 +401,11 @@ void spanToBezier(const CurveRef& curve, std::size_t l, Point4* out)
 {
     const unsigned deg = curve.order - 1;
     const float* x = curve.knots;
-    const float* p = curve.points;
     const double a = x[l];
     const double b = x[l + 1];
 
     // First triangle: de Boor at t = a; its right edge becomes out[deg], ..., out[0].
-    Point4 d[kMaxOrder];
-    for (unsigned j = 0; j <= deg; ++j) {
-        const float* q = p + 4 * (l - deg + j);
-        d[j] = Point4{q[0], q[1], q[2], q[3]};
-    }
-    out[deg] = d[deg];
-    for (unsigned r = 1; r <= deg; ++r) {
-        for (unsigned j = deg; j >= r; --j) {
-            const double lo = x[l - deg + j];
-            const double hi = x[l + 1 + j - r];
-            d[j] = lerp(d[j - 1], d[j], (a - lo) / (hi - lo));
-        }
-        out[deg - r] = d[deg];
-    }
+    leftClamped<Double2>(curve, l, out);
 
     // Second triangle: replace the right-hand knots x_{l+1} .. x_{l+m} by b.
     for (unsigned s = 1; s <= deg; ++s) {
@@ -515,6 +501,7 @@ void BezierForm::rebuild(const CurveRef& curve)
         return;
     }
     m_order = curve.order;
+    m_spans.reserve(curve.numPoints - curve.order + 1);
     for (std::size_t i = curve.order - 1; i < curve.numPoints; ++i) {
         const double a = curve.knots[i];
         const double b = curve.knots[i + 1];

@@ -45,7 +45,8 @@ void spanToBezier(const CurveRef& curve, std::size_t knotIndex, Point4* out);
 /// Converts the non-empty spans of a valid curve one after another, each from
 /// the previous one's by-products (Piegl & Tiller A5.6 per span): the span
 /// (knot index l) must be the first span or the next non-empty span after the
-/// last one converted; otherwise it falls back to spanToBezier.
+/// last one converted; otherwise that span starts from scratch (de Boor's triangle at
+/// its start, as in spanToBezier). The same points as spanToBezier up to rounding.
 class BezierSweep {
 public:
     explicit BezierSweep(const CurveRef& curve) : m_curve(curve) {}
