@@ -7,9 +7,11 @@
 #
 # Build: CMAKE_BUILD_TYPE=Release, i.e. -O3 -DNDEBUG, and no -march: Q3 is
 # compiled for the same baseline x86-64 (SSE2) that Debian's libGLU, its peer,
-# is built for, so no ratio comes from a newer instruction set. Set
-# Q3_BENCH_CXXFLAGS (e.g. -march=x86-64-v3) to measure with one anyway; the
-# flags are printed with the results.
+# is built for. Its two hot loops pick AVX2 versions at run time where the CPU
+# has it, as the installed library does; the *_baseline rows force the SSE2
+# versions. Set Q3_BENCH_CXXFLAGS (e.g. -march=x86-64-v3) to compile
+# everything for a newer instruction set; the flags are printed with the
+# results.
 #
 # Each round runs every benchmark executable once with
 # --benchmark_repetitions=N and random interleaving of the repetitions; the
