@@ -51,6 +51,52 @@ extern "C" {
 Q3_EXTERN_API_C(TQ3ObjectType) Q3Geometry_GetType(TQ3GeometryObject geometry);
 
 /**
+ * Reads the attribute set of a geometry as a whole: the curveAttributeSet,
+ * polyLineAttributeSet, lineAttributeSet or pointAttributeSet of its data.
+ *
+ * @param geometry      the geometry to read.
+ * @param attributeSet  receives the geometry's attribute set, or NULL when it
+ *                      has none (still kQ3Success).
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject      geometry is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a geometry.
+ *
+ * Ownership: when *attributeSet is not NULL the caller owns a new reference
+ * to it and releases it with Q3Object_Dispose. The set is the geometry's own,
+ * not a copy: changing it changes the geometry's attributes.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Geometry_GetAttributeSet(TQ3GeometryObject geometry,
+                                                      TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces the attribute set of a geometry as a whole (the set Get/SetData
+ * call curveAttributeSet, polyLineAttributeSet, lineAttributeSet or
+ * pointAttributeSet), and bumps the geometry's edit index.
+ *
+ * @param geometry      the geometry to change.
+ * @param attributeSet  the new attribute set, or NULL to remove the one the
+ *                      geometry has.
+ * @return kQ3Success, or kQ3Failure with the geometry unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry is NULL.
+ *   kQ3ErrorInvalidObject      geometry or attributeSet is not a live Q3
+ *                              object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a geometry, or attributeSet is
+ *                              not an attribute set.
+ *
+ * Ownership: the geometry takes a reference to attributeSet and releases the
+ * one it held; the caller keeps its own reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Geometry_SetAttributeSet(TQ3GeometryObject geometry,
+                                                      TQ3AttributeSet attributeSet);
+
+/**
  * Submits a retained geometry to a view in a rendering or bounding loop. It
  * is drawn (or bounded) under the view's current transform, style and
  * attribute state; a NURB curve is first subdivided into line segments as
@@ -555,6 +601,152 @@ Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_GetData(TQ3GeometryObject polyLine,
  */
 Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_EmptyData(TQ3PolyLineData *polyLineData);
 
+/**
+ * Reads the position of one vertex of a retained polyline.
+ *
+ * @param polyLine  the polyline to read.
+ * @param index     which vertex, from 0 to numVertices - 1.
+ * @param position  receives the vertex's position.
+ * @return kQ3Success, or kQ3Failure with *position unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyLine or position is NULL.
+ *   kQ3ErrorInvalidObject        polyLine is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyLine is not a polyline.
+ *   kQ3ErrorParameterOutOfRange  index >= numVertices.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_GetVertexPosition(TQ3GeometryObject polyLine,
+                                                        unsigned long index,
+                                                        TQ3Point3D *position);
+
+/**
+ * Moves one vertex of a retained polyline, keeping its attribute set.
+ *
+ * @param polyLine  the polyline to change.
+ * @param index     which vertex, from 0 to numVertices - 1.
+ * @param position  the new position; its coordinates must be finite, as the
+ *                  TQ3PolyLineData rules require.
+ * @return kQ3Success, or kQ3Failure with the polyline unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyLine or position is NULL.
+ *   kQ3ErrorInvalidObject        polyLine is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyLine is not a polyline.
+ *   kQ3ErrorParameterOutOfRange  index >= numVertices.
+ *   kQ3ErrorInvalidData          a coordinate of *position is not finite (the
+ *                                code Q3PolyLine_New and _SetData post).
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_SetVertexPosition(TQ3GeometryObject polyLine,
+                                                        unsigned long index,
+                                                        const TQ3Point3D *position);
+
+/**
+ * Reads the attribute set of one vertex of a retained polyline.
+ *
+ * @param polyLine      the polyline to read.
+ * @param index         which vertex, from 0 to numVertices - 1.
+ * @param attributeSet  receives the vertex's attribute set, or NULL when it
+ *                      has none (still kQ3Success).
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyLine or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject        polyLine is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyLine is not a polyline.
+ *   kQ3ErrorParameterOutOfRange  index >= numVertices.
+ *
+ * Ownership: when *attributeSet is not NULL the caller owns a new reference
+ * to it and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_GetVertexAttributeSet(TQ3GeometryObject polyLine,
+                                                            unsigned long index,
+                                                            TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces the attribute set of one vertex of a retained polyline.
+ *
+ * @param polyLine      the polyline to change.
+ * @param index         which vertex, from 0 to numVertices - 1.
+ * @param attributeSet  the new attribute set, or NULL to remove the vertex's.
+ * @return kQ3Success, or kQ3Failure with the polyline unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyLine is NULL.
+ *   kQ3ErrorInvalidObject        polyLine or attributeSet is not a live Q3
+ *                                object.
+ *   kQ3ErrorInvalidObjectType    polyLine is not a polyline, or attributeSet
+ *                                is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  index >= numVertices.
+ *
+ * Ownership: the polyline takes a reference to attributeSet and releases the
+ * one the vertex held; the caller keeps its own reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_SetVertexAttributeSet(TQ3GeometryObject polyLine,
+                                                            unsigned long index,
+                                                            TQ3AttributeSet attributeSet);
+
+/**
+ * Reads the attribute set of one segment of a retained polyline: segment i
+ * runs from vertex i to vertex i + 1.
+ *
+ * @param polyLine      the polyline to read.
+ * @param index         which segment, from 0 to numVertices - 2.
+ * @param attributeSet  receives the segment's attribute set, or NULL when it
+ *                      has none or the polyline has no segment attribute
+ *                      sets at all (still kQ3Success).
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyLine or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject        polyLine is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyLine is not a polyline.
+ *   kQ3ErrorParameterOutOfRange  index >= numVertices - 1.
+ *
+ * Ownership: when *attributeSet is not NULL the caller owns a new reference
+ * to it and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_GetSegmentAttributeSet(TQ3GeometryObject polyLine,
+                                                             unsigned long index,
+                                                             TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces the attribute set of one segment of a retained polyline: segment
+ * i runs from vertex i to vertex i + 1. A polyline made without a segment
+ * array gains one when a segment is given a set (the other entries NULL), so
+ * Q3PolyLine_GetData then returns a segmentAttributeSet array; removing a set
+ * (NULL) from such a polyline leaves it without one.
+ *
+ * @param polyLine      the polyline to change.
+ * @param index         which segment, from 0 to numVertices - 2.
+ * @param attributeSet  the new attribute set, or NULL to remove the segment's.
+ * @return kQ3Success, or kQ3Failure with the polyline unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyLine is NULL.
+ *   kQ3ErrorInvalidObject        polyLine or attributeSet is not a live Q3
+ *                                object.
+ *   kQ3ErrorInvalidObjectType    polyLine is not a polyline, or attributeSet
+ *                                is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  index >= numVertices - 1.
+ *   kQ3ErrorOutOfMemory          the segment array cannot be allocated.
+ *
+ * Ownership: the polyline takes a reference to attributeSet and releases the
+ * one the segment held; the caller keeps its own reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PolyLine_SetSegmentAttributeSet(TQ3GeometryObject polyLine,
+                                                             unsigned long index,
+                                                             TQ3AttributeSet attributeSet);
+
 /* ---- Line --------------------------------------------------------------- */
 
 /*
@@ -672,6 +864,97 @@ Q3_EXTERN_API_C(TQ3Status) Q3Line_SetData(TQ3GeometryObject line, const TQ3LineD
  * Ownership: consumes the attribute set references held in the structure.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Line_EmptyData(TQ3LineData *lineData);
+
+/**
+ * Reads the position of one end of a retained line.
+ *
+ * @param line      the line to read.
+ * @param index     which end, 0 or 1.
+ * @param position  receives the end's position.
+ * @return kQ3Success, or kQ3Failure with *position unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        line or position is NULL.
+ *   kQ3ErrorInvalidObject        line is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    line is not a line.
+ *   kQ3ErrorParameterOutOfRange  index is neither 0 nor 1.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Line_GetVertexPosition(TQ3GeometryObject line,
+                                                    unsigned long index,
+                                                    TQ3Point3D *position);
+
+/**
+ * Moves one end of a retained line, keeping its attribute set.
+ *
+ * @param line      the line to change.
+ * @param index     which end, 0 or 1.
+ * @param position  the new position; its coordinates must be finite, as the
+ *                  TQ3LineData rules require.
+ * @return kQ3Success, or kQ3Failure with the line unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        line or position is NULL.
+ *   kQ3ErrorInvalidObject        line is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    line is not a line.
+ *   kQ3ErrorParameterOutOfRange  index is neither 0 nor 1.
+ *   kQ3ErrorInvalidData          a coordinate of *position is not finite (the
+ *                                code Q3Line_New and _SetData post).
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Line_SetVertexPosition(TQ3GeometryObject line,
+                                                    unsigned long index,
+                                                    const TQ3Point3D *position);
+
+/**
+ * Reads the attribute set of one end of a retained line.
+ *
+ * @param line          the line to read.
+ * @param index         which end, 0 or 1.
+ * @param attributeSet  receives the end's attribute set, or NULL when it has
+ *                      none (still kQ3Success).
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        line or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject        line is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    line is not a line.
+ *   kQ3ErrorParameterOutOfRange  index is neither 0 nor 1.
+ *
+ * Ownership: when *attributeSet is not NULL the caller owns a new reference
+ * to it and releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Line_GetVertexAttributeSet(TQ3GeometryObject line,
+                                                        unsigned long index,
+                                                        TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces the attribute set of one end of a retained line.
+ *
+ * @param line          the line to change.
+ * @param index         which end, 0 or 1.
+ * @param attributeSet  the new attribute set, or NULL to remove the end's.
+ * @return kQ3Success, or kQ3Failure with the line unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        line is NULL.
+ *   kQ3ErrorInvalidObject        line or attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    line is not a line, or attributeSet is not
+ *                                an attribute set.
+ *   kQ3ErrorParameterOutOfRange  index is neither 0 nor 1.
+ *
+ * Ownership: the line takes a reference to attributeSet and releases the one
+ * the end held; the caller keeps its own reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Line_SetVertexAttributeSet(TQ3GeometryObject line,
+                                                        unsigned long index,
+                                                        TQ3AttributeSet attributeSet);
 
 /* ---- Point -------------------------------------------------------------- */
 
@@ -793,6 +1076,45 @@ Q3_EXTERN_API_C(TQ3Status) Q3Point_SetData(TQ3GeometryObject point, const TQ3Poi
  * Ownership: consumes the reference to pointData->pointAttributeSet.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Point_EmptyData(TQ3PointData *pointData);
+
+/**
+ * Moves a retained point, keeping its attribute set.
+ *
+ * @param point     the point to change.
+ * @param position  the new position; its coordinates must be finite, as the
+ *                  TQ3PointData rules require.
+ * @return kQ3Success, or kQ3Failure with the point unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      point or position is NULL.
+ *   kQ3ErrorInvalidObject      point is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  point is not a point.
+ *   kQ3ErrorInvalidData        a coordinate of *position is not finite (the
+ *                              code Q3Point_New and _SetData post).
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Point_SetPosition(TQ3GeometryObject point,
+                                               const TQ3Point3D *position);
+
+/**
+ * Reads the position of a retained point.
+ *
+ * @param point     the point to read.
+ * @param position  receives the point's position.
+ * @return kQ3Success, or kQ3Failure with *position unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      point or position is NULL.
+ *   kQ3ErrorInvalidObject      point is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  point is not a point.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Point_GetPosition(TQ3GeometryObject point,
+                                               TQ3Point3D *position);
 
 #ifdef __cplusplus
 }

@@ -18,6 +18,23 @@ TQ3ObjectType Q3Geometry_GetType(TQ3GeometryObject geometry)
                  [&] { return lookup<Geometry>(geometry, "geometry").leafType(); });
 }
 
+TQ3Status Q3Geometry_GetAttributeSet(TQ3GeometryObject geometry, TQ3AttributeSet* attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        const Geometry& source = lookup<Geometry>(geometry, "geometry");
+        requireNonNull(attributeSet, "attributeSet");
+        *attributeSet = attributeSetToHandle(source.attributeSet());
+    });
+}
+
+TQ3Status Q3Geometry_SetAttributeSet(TQ3GeometryObject geometry, TQ3AttributeSet attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        Geometry& target = lookup<Geometry>(geometry, "geometry");
+        target.setAttributeSet(attributeSetFromHandle(attributeSet, "attributeSet"));
+    });
+}
+
 TQ3Status Q3Geometry_Submit(TQ3GeometryObject geometry, TQ3ViewObject view)
 {
     return guardStatus(__func__, [&] {

@@ -55,4 +55,41 @@ TQ3Status Q3Line_EmptyData(TQ3LineData* lineData)
     });
 }
 
+TQ3Status Q3Line_GetVertexPosition(TQ3GeometryObject line, unsigned long index, TQ3Point3D* position)
+{
+    return guardStatus(__func__, [&] {
+        const Line& source = lookup<Line>(line, "line");
+        requireNonNull(position, "position");
+        *position = source.vertex(index).point;
+    });
+}
+
+TQ3Status Q3Line_SetVertexPosition(TQ3GeometryObject line, unsigned long index, const TQ3Point3D* position)
+{
+    return guardStatus(__func__, [&] {
+        Line& target = lookup<Line>(line, "line");
+        requireNonNull(position, "position");
+        target.setVertexPosition(index, *position);
+    });
+}
+
+TQ3Status Q3Line_GetVertexAttributeSet(TQ3GeometryObject line, unsigned long index,
+                                       TQ3AttributeSet* attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        const Line& source = lookup<Line>(line, "line");
+        requireNonNull(attributeSet, "attributeSet");
+        *attributeSet = attributeSetToHandle(source.vertexAttributeSet(index));
+    });
+}
+
+TQ3Status Q3Line_SetVertexAttributeSet(TQ3GeometryObject line, unsigned long index,
+                                       TQ3AttributeSet attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        Line& target = lookup<Line>(line, "line");
+        target.setVertexAttributeSet(index, attributeSetFromHandle(attributeSet, "attributeSet"));
+    });
+}
+
 } // extern "C"

@@ -55,4 +55,22 @@ TQ3Status Q3Point_EmptyData(TQ3PointData* pointData)
     });
 }
 
+TQ3Status Q3Point_SetPosition(TQ3GeometryObject point, const TQ3Point3D* position)
+{
+    return guardStatus(__func__, [&] {
+        Point& target = lookup<Point>(point, "point");
+        requireNonNull(position, "position");
+        target.setPosition(*position);
+    });
+}
+
+TQ3Status Q3Point_GetPosition(TQ3GeometryObject point, TQ3Point3D* position)
+{
+    return guardStatus(__func__, [&] {
+        const Point& source = lookup<Point>(point, "point");
+        requireNonNull(position, "position");
+        *position = source.point();
+    });
+}
+
 } // extern "C"

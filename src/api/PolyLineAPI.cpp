@@ -55,4 +55,62 @@ TQ3Status Q3PolyLine_EmptyData(TQ3PolyLineData* polyLineData)
     });
 }
 
+TQ3Status Q3PolyLine_GetVertexPosition(TQ3GeometryObject polyLine, unsigned long index,
+                                       TQ3Point3D* position)
+{
+    return guardStatus(__func__, [&] {
+        const PolyLine& source = lookup<PolyLine>(polyLine, "polyLine");
+        requireNonNull(position, "position");
+        *position = source.vertex(index).point;
+    });
+}
+
+TQ3Status Q3PolyLine_SetVertexPosition(TQ3GeometryObject polyLine, unsigned long index,
+                                       const TQ3Point3D* position)
+{
+    return guardStatus(__func__, [&] {
+        PolyLine& target = lookup<PolyLine>(polyLine, "polyLine");
+        requireNonNull(position, "position");
+        target.setVertexPosition(index, *position);
+    });
+}
+
+TQ3Status Q3PolyLine_GetVertexAttributeSet(TQ3GeometryObject polyLine, unsigned long index,
+                                           TQ3AttributeSet* attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        const PolyLine& source = lookup<PolyLine>(polyLine, "polyLine");
+        requireNonNull(attributeSet, "attributeSet");
+        *attributeSet = attributeSetToHandle(source.vertexAttributeSet(index));
+    });
+}
+
+TQ3Status Q3PolyLine_SetVertexAttributeSet(TQ3GeometryObject polyLine, unsigned long index,
+                                           TQ3AttributeSet attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        PolyLine& target = lookup<PolyLine>(polyLine, "polyLine");
+        target.setVertexAttributeSet(index, attributeSetFromHandle(attributeSet, "attributeSet"));
+    });
+}
+
+TQ3Status Q3PolyLine_GetSegmentAttributeSet(TQ3GeometryObject polyLine, unsigned long index,
+                                            TQ3AttributeSet* attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        const PolyLine& source = lookup<PolyLine>(polyLine, "polyLine");
+        requireNonNull(attributeSet, "attributeSet");
+        *attributeSet = attributeSetToHandle(source.segmentAttributeSet(index));
+    });
+}
+
+TQ3Status Q3PolyLine_SetSegmentAttributeSet(TQ3GeometryObject polyLine, unsigned long index,
+                                            TQ3AttributeSet attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        PolyLine& target = lookup<PolyLine>(polyLine, "polyLine");
+        target.setSegmentAttributeSet(index, attributeSetFromHandle(attributeSet, "attributeSet"));
+    });
+}
+
 } // extern "C"

@@ -20,15 +20,22 @@ bool isFinite(const TQ3Point3D& p)
 
 const char* const kVertexSetNames[2] = {"vertices[0].attributeSet", "vertices[1].attributeSet"};
 
+// The coordinate rule of TQ3LineData for end `index`, shared by
+// validateLineData and setVertexPosition so the two paths cannot disagree.
+void validateVertexPosition(const TQ3Point3D& point, unsigned long index)
+{
+    if (!isFinite(point))
+        fail(kQ3ErrorInvalidData,
+             "vertices[" + std::to_string(index) + "].point has a coordinate that is not finite");
+}
+
 } // namespace
 
 void validateLineData(const TQ3LineData* data)
 {
     requireNonNull(data, "line data");
-    for (int i = 0; i < 2; ++i)
-        if (!isFinite(data->vertices[i].point))
-            fail(kQ3ErrorInvalidData,
-                 "vertices[" + std::to_string(i) + "].point has a coordinate that is not finite");
+    for (unsigned long i = 0; i < 2; ++i)
+        validateVertexPosition(data->vertices[i].point, i);
 }
 
 Line::Line(const TQ3LineData& data)
@@ -48,7 +55,7 @@ void Line::assign(const TQ3LineData& data)
         m_vertexSets[i] = std::move(vertexSets[i]);
         m_vertices[i] = TQ3Vertex3D{data.vertices[i].point, m_vertexSets[i].get()};
     }
-    m_attributes = std::move(attributes);
+    replaceAttributeSet(std::move(attributes));
 }
 
 Object* Line::duplicate() const
@@ -61,7 +68,7 @@ Object* Line::duplicate() const
                                     : duplicateAttributeSet(m_vertexSets[i]);
         copy->m_vertices[i] = TQ3Vertex3D{m_vertices[i].point, copy->m_vertexSets[i].get()};
     }
-    copy->m_attributes = duplicateAttributeSet(m_attributes);
+    copy->replaceAttributeSet(duplicateAttributeSet(attributeSetRef()));
     copy->registerLive();
     return copy.detach();
 }
@@ -71,30 +78,46 @@ void Line::accept(ShapeVisitor& visitor) const
     visitor.visitLine(*this);
 }
 
-void Line::checkIndex(int index)
+void Line::checkIndex(unsigned long index)
 {
-    if (index != 0 && index != 1)
+    if (index > 1)
         fail(kQ3ErrorParameterOutOfRange,
              "line vertex index " + std::to_string(index) + " is neither 0 nor 1");
 }
 
-const TQ3Vertex3D& Line::vertex(int index) const
+const TQ3Vertex3D& Line::vertex(unsigned long index) const
 {
     checkIndex(index);
     return m_vertices[index];
 }
 
-const AttributeSet* Line::vertexAttributeSet(int index) const
+const AttributeSet* Line::vertexAttributeSet(unsigned long index) const
 {
     checkIndex(index);
     return m_vertexSets[index].get();
+}
+
+void Line::setVertexPosition(unsigned long index, const TQ3Point3D& position)
+{
+    checkIndex(index);
+    validateVertexPosition(position, index);
+    m_vertices[index].point = position;
+    markEdited();
+}
+
+void Line::setVertexAttributeSet(unsigned long index, Ref<AttributeSet> attributes)
+{
+    checkIndex(index);
+    m_vertexSets[index] = std::move(attributes);
+    m_vertices[index].attributeSet = m_vertexSets[index].get();
+    markEdited();
 }
 
 void Line::getData(TQ3LineData& out) const
 {
     for (int i = 0; i < 2; ++i)
         out.vertices[i] = TQ3Vertex3D{m_vertices[i].point, attributeSetToHandle(m_vertexSets[i])};
-    out.lineAttributeSet = attributeSetToHandle(m_attributes);
+    out.lineAttributeSet = attributeSetToHandle(attributeSetRef());
 }
 
 void Line::emptyData(TQ3LineData& data)

@@ -18,9 +18,10 @@ extern const ClassInfo kLineClass;
 void validateLineData(const TQ3LineData* data);
 
 /// A retained line segment. Invariant: both end points are finite; the line
-/// holds one reference to every attribute set it names, and the attributeSet
-/// field of m_vertices[i] is the object m_vertexSets[i] holds, so vertex()
-/// hands out handles that stay valid while the line lives.
+/// holds one reference to each end's attribute set (its own is held by
+/// Geometry), and the attributeSet field of m_vertices[i] is the object
+/// m_vertexSets[i] holds, so vertex() hands out handles that stay valid while
+/// the line lives.
 class Line final : public Geometry {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3GeometryTypeLine;
@@ -41,20 +42,25 @@ public:
     static void emptyData(TQ3LineData& data);
 
     /// End point `index`, 0 or 1 (kQ3ErrorParameterOutOfRange otherwise).
-    const TQ3Vertex3D& vertex(int index) const;
+    const TQ3Vertex3D& vertex(unsigned long index) const;
     /// The attribute set of end point `index` (0 or 1), or null.
-    const AttributeSet* vertexAttributeSet(int index) const;
-    /// The line's own attribute set, or null.
-    const AttributeSet* attributeSet() const { return m_attributes.get(); }
+    const AttributeSet* vertexAttributeSet(unsigned long index) const;
+
+    /// Moves end point `index`: kQ3ErrorParameterOutOfRange unless it is 0 or
+    /// 1, then kQ3ErrorInvalidData for a coordinate that is not finite (the
+    /// TQ3LineData rule); nothing changes on failure.
+    void setVertexPosition(unsigned long index, const TQ3Point3D& position);
+    /// Replaces the attribute set of end point `index` (null removes it);
+    /// kQ3ErrorParameterOutOfRange unless index is 0 or 1.
+    void setVertexAttributeSet(unsigned long index, Ref<AttributeSet> attributes);
 
 private:
     Line() = default;
     void assign(const TQ3LineData& data);
-    static void checkIndex(int index);
+    static void checkIndex(unsigned long index);
 
     std::array<TQ3Vertex3D, 2> m_vertices{};
     std::array<Ref<AttributeSet>, 2> m_vertexSets;
-    Ref<AttributeSet> m_attributes;
 };
 
 } // namespace q3

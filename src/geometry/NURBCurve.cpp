@@ -82,7 +82,7 @@ void NURBCurve::assign(const TQ3NURBCurveData& data, Ref<AttributeSet> attribute
     m_order = data.order;
     m_points.swap(points);
     m_knots.swap(knots);
-    m_attributes = std::move(attributes);
+    replaceAttributeSet(std::move(attributes));
 }
 
 Object* NURBCurve::duplicate() const
@@ -91,14 +91,14 @@ Object* NURBCurve::duplicate() const
     copy->m_order = m_order;
     copy->m_points = m_points;
     copy->m_knots = m_knots;
-    copy->m_attributes = duplicateAttributeSet(m_attributes);
+    copy->replaceAttributeSet(duplicateAttributeSet(attributeSetRef()));
     copy->registerLive();
     return copy.detach();
 }
 
 void NURBCurve::accept(ShapeVisitor& visitor) const
 {
-    visitor.visitNURBCurve(curve(), m_attributes.get(), &m_cache);
+    visitor.visitNURBCurve(curve(), attributeSet(), &m_cache);
 }
 
 nurbs::CurveRef NURBCurve::curve() const
@@ -125,7 +125,7 @@ void NURBCurve::getData(TQ3NURBCurveData& out) const
     out.numPoints = m_points.size();
     out.controlPoints = points;
     out.knots = knots;
-    out.curveAttributeSet = attributeSetToHandle(m_attributes);
+    out.curveAttributeSet = attributeSetToHandle(attributeSetRef());
 }
 
 void NURBCurve::emptyData(TQ3NURBCurveData& data)

@@ -52,7 +52,6 @@ public:
     void setKnot(unsigned long index, float value);
 
     nurbs::CurveRef curve() const;
-    const AttributeSet* attributeSet() const { return m_attributes.get(); }
     CurveCache& cache() const { return m_cache; }
 
 protected:
@@ -65,7 +64,6 @@ private:
     unsigned long m_order = 0;
     std::vector<TQ3RationalPoint4D> m_points;
     std::vector<float> m_knots;
-    Ref<AttributeSet> m_attributes;
     mutable CurveCache m_cache;
 };
 

@@ -10,12 +10,22 @@ namespace q3 {
 
 const ClassInfo kPointClass{kQ3GeometryTypePoint, &kGeometryClass, "point"};
 
+namespace {
+
+// The coordinate rule of TQ3PointData, shared by validatePointData and
+// setPosition so the two paths cannot disagree.
+void validatePosition(const TQ3Point3D& p)
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        fail(kQ3ErrorInvalidData, "point has a coordinate that is not finite");
+}
+
+} // namespace
+
 void validatePointData(const TQ3PointData* data)
 {
     requireNonNull(data, "point data");
-    const TQ3Point3D& p = data->point;
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        fail(kQ3ErrorInvalidData, "point has a coordinate that is not finite");
+    validatePosition(data->point);
 }
 
 Point::Point(const TQ3PointData& data)
@@ -23,14 +33,14 @@ Point::Point(const TQ3PointData& data)
 {
 }
 
-Point::Point(const TQ3Point3D& point, Ref<AttributeSet> attributes)
-    : m_point(point), m_attributes(std::move(attributes))
+Point::Point(const TQ3Point3D& point, Ref<AttributeSet> attributes) : m_point(point)
 {
+    replaceAttributeSet(std::move(attributes));
 }
 
 Object* Point::duplicate() const
 {
-    Ref<Point> copy = Ref<Point>::adopt(new Point(m_point, duplicateAttributeSet(m_attributes)));
+    Ref<Point> copy = Ref<Point>::adopt(new Point(m_point, duplicateAttributeSet(attributeSetRef())));
     copy->registerLive();
     return copy.detach();
 }
@@ -43,7 +53,7 @@ void Point::accept(ShapeVisitor& visitor) const
 void Point::getData(TQ3PointData& out) const
 {
     out.point = m_point;
-    out.pointAttributeSet = attributeSetToHandle(m_attributes);
+    out.pointAttributeSet = attributeSetToHandle(attributeSetRef());
 }
 
 void Point::emptyData(TQ3PointData& data)
@@ -60,7 +70,14 @@ void Point::setData(const TQ3PointData& data)
     validatePointData(&data);
     Ref<AttributeSet> attributes = attributeSetFromHandle(data.pointAttributeSet, "pointAttributeSet");
     m_point = data.point;
-    m_attributes = std::move(attributes);
+    replaceAttributeSet(std::move(attributes));
+    markEdited();
+}
+
+void Point::setPosition(const TQ3Point3D& position)
+{
+    validatePosition(position);
+    m_point = position;
     markEdited();
 }
 

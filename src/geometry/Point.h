@@ -15,8 +15,8 @@ extern const ClassInfo kPointClass;
 /// attribute set handle is checked when the point resolves it.
 void validatePointData(const TQ3PointData* data);
 
-/// A retained point. Invariant: its position is finite and it holds one
-/// reference to its attribute set, if it has one.
+/// A retained point. Invariant: its position is finite (its attribute set is
+/// held by Geometry).
 class Point final : public Geometry {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3GeometryTypePoint;
@@ -36,14 +36,14 @@ public:
     static void emptyData(TQ3PointData& data);
 
     const TQ3Point3D& point() const { return m_point; }
-    /// The point's attribute set, or null.
-    const AttributeSet* attributeSet() const { return m_attributes.get(); }
+    /// Moves the point; kQ3ErrorInvalidData (and no change) when a coordinate
+    /// is not finite, as for TQ3PointData.
+    void setPosition(const TQ3Point3D& position);
 
 private:
     Point(const TQ3Point3D& point, Ref<AttributeSet> attributes);
 
     TQ3Point3D m_point;
-    Ref<AttributeSet> m_attributes;
 };
 
 } // namespace q3

@@ -71,6 +71,14 @@ private:
     std::map<const AttributeSet*, Ref<AttributeSet>> m_copies;
 };
 
+// The coordinate rule of TQ3PolyLineData for vertex `index`, shared by
+// validatePolyLineData and setVertexPosition so the two paths cannot disagree.
+void validateVertexPosition(const TQ3Point3D& point, std::size_t index)
+{
+    if (!isFinite(point))
+        fail(kQ3ErrorInvalidData, indexed("vertices", index) + ".point has a coordinate that is not finite");
+}
+
 } // namespace
 
 void validatePolyLineData(const TQ3PolyLineData* data)
@@ -81,8 +89,7 @@ void validatePolyLineData(const TQ3PolyLineData* data)
         fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
              "numVertices is " + std::to_string(data->numVertices) + "; a polyline needs at least 2");
     for (unsigned long i = 0; i < data->numVertices; ++i)
-        if (!isFinite(data->vertices[i].point))
-            fail(kQ3ErrorInvalidData, indexed("vertices", i) + ".point has a coordinate that is not finite");
+        validateVertexPosition(data->vertices[i].point, i);
 }
 
 PolyLine::PolyLine(const TQ3PolyLineData& data)
@@ -107,7 +114,7 @@ Ref<PolyLine> PolyLine::fromPoints(const float* xyz, std::size_t count, const At
     }
     // A reference count is bookkeeping, not part of the set's value, so a
     // const set may gain a holder.
-    polyLine->m_attributes = Ref<AttributeSet>::retain(const_cast<AttributeSet*>(attributes));
+    polyLine->replaceAttributeSet(Ref<AttributeSet>::retain(const_cast<AttributeSet*>(attributes)));
     polyLine->registerLive();
     return polyLine;
 }
@@ -134,7 +141,7 @@ void PolyLine::assign(const TQ3PolyLineData& data)
     m_vertices.swap(vertices);
     m_vertexSets.swap(vertexSets);
     m_segmentSets.swap(segmentSets);
-    m_attributes = std::move(attributes);
+    replaceAttributeSet(std::move(attributes));
 }
 
 Object* PolyLine::duplicate() const
@@ -150,7 +157,7 @@ Object* PolyLine::duplicate() const
     copy->m_segmentSets.reserve(m_segmentSets.size());
     for (const Ref<AttributeSet>& set : m_segmentSets)
         copy->m_segmentSets.push_back(copier.copy(set));
-    copy->m_attributes = copier.copy(m_attributes);
+    copy->replaceAttributeSet(copier.copy(attributeSetRef()));
     copy->registerLive();
     return copy.detach();
 }
@@ -160,22 +167,69 @@ void PolyLine::accept(ShapeVisitor& visitor) const
     visitor.visitPolyLine(*this);
 }
 
-const AttributeSet* PolyLine::vertexAttributeSet(std::size_t index) const
+void PolyLine::checkVertexIndex(std::size_t index) const
 {
-    if (index >= m_vertexSets.size())
+    if (index >= m_vertices.size())
         fail(kQ3ErrorParameterOutOfRange, "vertex index " + std::to_string(index) +
                                               " is out of range (the polyline has " +
-                                              std::to_string(m_vertexSets.size()) + ")");
+                                              std::to_string(m_vertices.size()) + ")");
+}
+
+void PolyLine::checkSegmentIndex(std::size_t index) const
+{
+    // Written without index + 1, which wraps to 0 for the largest index.
+    if (index >= m_vertices.size() - 1)
+        fail(kQ3ErrorParameterOutOfRange, "segment index " + std::to_string(index) +
+                                              " is out of range (the polyline has " +
+                                              std::to_string(m_vertices.size() - 1) + ")");
+}
+
+const TQ3Vertex3D& PolyLine::vertex(std::size_t index) const
+{
+    checkVertexIndex(index);
+    return m_vertices[index];
+}
+
+const AttributeSet* PolyLine::vertexAttributeSet(std::size_t index) const
+{
+    checkVertexIndex(index);
     return m_vertexSets[index].get();
 }
 
 const AttributeSet* PolyLine::segmentAttributeSet(std::size_t index) const
 {
-    if (index + 1 >= m_vertices.size())
-        fail(kQ3ErrorParameterOutOfRange, "segment index " + std::to_string(index) +
-                                              " is out of range (the polyline has " +
-                                              std::to_string(m_vertices.size() - 1) + ")");
+    checkSegmentIndex(index);
     return m_segmentSets.empty() ? nullptr : m_segmentSets[index].get();
+}
+
+void PolyLine::setVertexPosition(std::size_t index, const TQ3Point3D& position)
+{
+    checkVertexIndex(index);
+    validateVertexPosition(position, index);
+    m_vertices[index].point = position;
+    markEdited();
+}
+
+void PolyLine::setVertexAttributeSet(std::size_t index, Ref<AttributeSet> attributes)
+{
+    checkVertexIndex(index);
+    m_vertexSets[index] = std::move(attributes);
+    m_vertices[index].attributeSet = m_vertexSets[index].get();
+    markEdited();
+}
+
+void PolyLine::setSegmentAttributeSet(std::size_t index, Ref<AttributeSet> attributes)
+{
+    checkSegmentIndex(index);
+    if (m_segmentSets.empty() && attributes) {
+        // Allocate before changing anything, so running out of memory leaves
+        // the polyline as it was.
+        std::vector<Ref<AttributeSet>> segmentSets(m_vertices.size() - 1);
+        m_segmentSets.swap(segmentSets);
+    }
+    if (!m_segmentSets.empty())
+        m_segmentSets[index] = std::move(attributes);
+    markEdited();
 }
 
 void PolyLine::getData(TQ3PolyLineData& out) const
@@ -198,7 +252,7 @@ void PolyLine::getData(TQ3PolyLineData& out) const
     out.numVertices = static_cast<unsigned long>(m_vertices.size());
     out.vertices = vertices;
     out.segmentAttributeSet = segments;
-    out.polyLineAttributeSet = attributeSetToHandle(m_attributes);
+    out.polyLineAttributeSet = attributeSetToHandle(attributeSetRef());
 }
 
 void PolyLine::emptyData(TQ3PolyLineData& data)

@@ -22,10 +22,11 @@ void validatePolyLineData(const TQ3PolyLineData* data);
 
 /// A retained polyline. Invariant: at least two vertices, every coordinate
 /// finite; the polyline holds one reference to every attribute set it names
-/// (m_vertexSets, m_segmentSets, m_attributes), and the attributeSet field of
-/// each entry of m_vertices is the same object as the matching m_vertexSets
-/// entry, so vertices() hands out handles that stay valid while the polyline
-/// lives. m_segmentSets is empty when no segment array was given, else holds
+/// (m_vertexSets, m_segmentSets, and its own through Geometry), and the
+/// attributeSet field of each entry of m_vertices is the same object as the
+/// matching m_vertexSets entry, so vertices() hands out handles that stay
+/// valid while the polyline lives. m_segmentSets is empty when no segment
+/// array was given (nor made by setSegmentAttributeSet), else holds
 /// numVertices - 1 entries (each possibly null).
 class PolyLine final : public Geometry {
 public:
@@ -58,23 +59,36 @@ public:
     static void emptyData(TQ3PolyLineData& data);
 
     const std::vector<TQ3Vertex3D>& vertices() const { return m_vertices; }
+    /// Vertex `index` (kQ3ErrorParameterOutOfRange unless < vertices().size()).
+    const TQ3Vertex3D& vertex(std::size_t index) const;
     /// The attribute set of vertex `index` (< vertices().size()), or null.
     const AttributeSet* vertexAttributeSet(std::size_t index) const;
     bool hasSegmentAttributeSets() const { return !m_segmentSets.empty(); }
     /// The attribute set of the segment from vertex `index` to `index + 1`,
-    /// or null (also when the polyline has no segment array).
+    /// or null (also when the polyline has no segment array); throws
+    /// kQ3ErrorParameterOutOfRange unless index < vertices().size() - 1.
     const AttributeSet* segmentAttributeSet(std::size_t index) const;
-    /// The polyline's own attribute set, or null.
-    const AttributeSet* attributeSet() const { return m_attributes.get(); }
+
+    /// Moves vertex `index`: kQ3ErrorParameterOutOfRange for a bad index, then
+    /// kQ3ErrorInvalidData for a coordinate that is not finite (the
+    /// TQ3PolyLineData rule); nothing changes on failure.
+    void setVertexPosition(std::size_t index, const TQ3Point3D& position);
+    /// Replaces the attribute set of vertex `index` (null removes it).
+    void setVertexAttributeSet(std::size_t index, Ref<AttributeSet> attributes);
+    /// Replaces the attribute set of segment `index` (null removes it). A
+    /// polyline without a segment array gains one (all other entries null)
+    /// when given a set; removing a set from it changes nothing.
+    void setSegmentAttributeSet(std::size_t index, Ref<AttributeSet> attributes);
 
 private:
     PolyLine() = default;
     void assign(const TQ3PolyLineData& data);
+    void checkVertexIndex(std::size_t index) const;
+    void checkSegmentIndex(std::size_t index) const;
 
     std::vector<TQ3Vertex3D> m_vertices;
     std::vector<Ref<AttributeSet>> m_vertexSets;
     std::vector<Ref<AttributeSet>> m_segmentSets;
-    Ref<AttributeSet> m_attributes;
 };
 
 } // namespace q3

@@ -7,7 +7,9 @@
 #include "QD3DTransform.h"
 #include "QD3DView.h"
 
+#include <cstdint>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -409,6 +411,333 @@ TEST_F(PolyLineApiTest, SubmitInsideALoopChecksTheDataRules)
     EXPECT_EQ(box.isEmpty, kQ3True);
 }
 
+// ---- Per-vertex and per-segment access (QuickDraw 3D 1.6) ---------------------------
+
+// Indices every index-taking call is tried at besides the valid ones: one past
+// the end, UINT32_MAX, and the largest unsigned long (where index + 1 wraps).
+constexpr unsigned long kHugeIndices[] = {std::numeric_limits<std::uint32_t>::max(),
+                                          std::numeric_limits<unsigned long>::max()};
+
+// Everything GetData reports, copied out so that a failed call can be shown to
+// have changed nothing.
+struct PolyLineState {
+    std::vector<TQ3Point3D> points;
+    std::vector<TQ3AttributeSet> vertexSets;
+    std::vector<TQ3AttributeSet> segmentSets; // empty when there is no segment array
+    TQ3AttributeSet whole = nullptr;
+    unsigned long editIndex = 0;
+};
+
+PolyLineState stateOf(TQ3GeometryObject polyLine)
+{
+    PolyLineState state;
+    TQ3PolyLineData data{};
+    EXPECT_EQ(Q3PolyLine_GetData(polyLine, &data), kQ3Success);
+    for (unsigned long i = 0; i < data.numVertices; ++i) {
+        state.points.push_back(data.vertices[i].point);
+        state.vertexSets.push_back(data.vertices[i].attributeSet);
+    }
+    if (data.segmentAttributeSet != nullptr)
+        state.segmentSets.assign(data.segmentAttributeSet, data.segmentAttributeSet + data.numVertices - 1);
+    state.whole = data.polyLineAttributeSet;
+    EXPECT_EQ(Q3PolyLine_EmptyData(&data), kQ3Success);
+    state.editIndex = Q3Shared_GetEditIndex(polyLine);
+    return state;
+}
+
+void expectSameState(const PolyLineState& before, const PolyLineState& after)
+{
+    ASSERT_EQ(before.points.size(), after.points.size());
+    for (std::size_t i = 0; i < before.points.size(); ++i) {
+        EXPECT_EQ(before.points[i].x, after.points[i].x) << "vertex " << i;
+        EXPECT_EQ(before.points[i].y, after.points[i].y) << "vertex " << i;
+        EXPECT_EQ(before.points[i].z, after.points[i].z) << "vertex " << i;
+    }
+    EXPECT_EQ(before.vertexSets, after.vertexSets);
+    EXPECT_EQ(before.segmentSets, after.segmentSets);
+    EXPECT_EQ(before.whole, after.whole);
+    EXPECT_EQ(before.editIndex, after.editIndex);
+}
+
+TEST_F(PolyLineApiTest, GetVertexPositionReadsEveryVertexAndRejectsOtherIndices)
+{
+    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
+    ASSERT_NE(polyLine, nullptr);
+    for (unsigned long i = 0; i < 3; ++i) { // 0 and the last index among them
+        TQ3Point3D position{};
+        ASSERT_EQ(Q3PolyLine_GetVertexPosition(polyLine, i, &position), kQ3Success);
+        EXPECT_EQ(position.x, m_vertices[i].point.x);
+        EXPECT_EQ(position.y, m_vertices[i].point.y);
+        EXPECT_EQ(position.z, m_vertices[i].point.z);
+    }
+    std::vector<unsigned long> bad = {3};
+    bad.insert(bad.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
+    for (unsigned long index : bad) {
+        TQ3Point3D position{42, 42, 42};
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetVertexPosition(polyLine, index, &position), kQ3Failure),
+                        kQ3ErrorParameterOutOfRange);
+        EXPECT_EQ(position.x, 42.0f); // unchanged on failure
+    }
+}
+
+TEST_F(PolyLineApiTest, SetVertexPositionMovesOneVertexKeepsItsSetAndBumpsTheEditIndex)
+{
+    TQ3AttributeSet set = own(colorSet(1, 0, 0));
+    m_vertices[2].attributeSet = set;
+    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
+    ASSERT_NE(polyLine, nullptr);
+    for (unsigned long index : {0UL, 2UL}) {
+        const unsigned long edit = Q3Shared_GetEditIndex(polyLine);
+        const TQ3Point3D moved{10.0f + index, -20, 30};
+        EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, index, &moved), kQ3Success);
+        EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
+        TQ3Point3D position{};
+        ASSERT_EQ(Q3PolyLine_GetVertexPosition(polyLine, index, &position), kQ3Success);
+        EXPECT_EQ(position.x, moved.x);
+        EXPECT_EQ(position.y, moved.y);
+        EXPECT_EQ(position.z, moved.z);
+    }
+    const PolyLineState state = stateOf(polyLine);
+    EXPECT_EQ(state.points[1].y, -5.0f); // the vertex in between stays put
+    EXPECT_EQ(state.vertexSets[2], set);
+    EXPECT_EQ(state.vertexSets[0], nullptr);
+}
+
+TEST_F(PolyLineApiTest, SetVertexPositionRejectsBadIndicesAndNonFiniteCoordinatesAndChangesNothing)
+{
+    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
+    ASSERT_NE(polyLine, nullptr);
+    const PolyLineState before = stateOf(polyLine);
+    const TQ3Point3D fine{1, 1, 1};
+    std::vector<unsigned long> bad = {3};
+    bad.insert(bad.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
+    for (unsigned long index : bad)
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, index, &fine), kQ3Failure),
+                        kQ3ErrorParameterOutOfRange);
+    for (unsigned long index : {0UL, 2UL})
+        for (int axis = 0; axis < 3; ++axis)
+            for (float value : kNonFinite) {
+                TQ3Point3D position = fine;
+                float* coordinates[] = {&position.x, &position.y, &position.z};
+                *coordinates[axis] = value;
+                // The same code New and SetData post for the same coordinate.
+                EXPECT_Q3_ERROR(
+                    EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, index, &position), kQ3Failure),
+                    kQ3ErrorInvalidData);
+            }
+    // The index is checked before the coordinates.
+    const TQ3Point3D nan{kNaN, 0, 0};
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, 3, &nan), kQ3Failure),
+                    kQ3ErrorParameterOutOfRange);
+    expectSameState(before, stateOf(polyLine));
+}
+
+TEST_F(PolyLineApiTest, VertexAttributeSetsAreReadAndReplacedWithBalancedReferences)
+{
+    TQ3AttributeSet first = own(colorSet(1, 0, 0));
+    TQ3AttributeSet second = own(colorSet(0, 1, 0));
+    m_vertices[0].attributeSet = first;
+    TQ3GeometryObject polyLine = Q3PolyLine_New(&m_data);
+    ASSERT_NE(polyLine, nullptr);
+
+    TQ3AttributeSet got = second;
+    ASSERT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 2, &got), kQ3Success);
+    EXPECT_EQ(got, nullptr); // none is NULL, and still a success
+    ASSERT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 0, &got), kQ3Success);
+    EXPECT_EQ(got, first);
+    Q3Object_Dispose(got); // Get handed out a reference of the caller's own
+
+    unsigned long edit = Q3Shared_GetEditIndex(polyLine);
+    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, second), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
+    EXPECT_EQ(Q3Shared_IsReferenced(first), kQ3False); // the polyline let go of it
+    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 2, second), kQ3Success);
+    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 2, second), kQ3Success); // same set again
+    ASSERT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 2, &got), kQ3Success);
+    EXPECT_EQ(got, second);
+    Q3Object_Dispose(got);
+
+    const PolyLineState state = stateOf(polyLine);
+    EXPECT_EQ(state.vertexSets[0], second);
+    EXPECT_EQ(state.vertexSets[1], nullptr);
+    EXPECT_EQ(state.vertexSets[2], second);
+    EXPECT_EQ(state.points[0].x, 1.0f); // positions are left alone
+
+    edit = Q3Shared_GetEditIndex(polyLine);
+    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, nullptr), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
+    ASSERT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 0, &got), kQ3Success);
+    EXPECT_EQ(got, nullptr);
+    EXPECT_EQ(Q3Shared_IsReferenced(second), kQ3True); // vertex 2 still holds it
+    Q3Object_Dispose(polyLine);
+    EXPECT_EQ(Q3Shared_IsReferenced(second), kQ3False); // one reference per vertex, no more
+}
+
+TEST_F(PolyLineApiTest, SegmentAttributeSetsAreReadAndReplacedWithBalancedReferences)
+{
+    TQ3AttributeSet green = own(colorSet(0, 1, 0));
+    TQ3AttributeSet blue = own(colorSet(0, 0, 1));
+    TQ3AttributeSet segments[2] = {green, nullptr};
+    m_data.segmentAttributeSet = segments;
+    TQ3GeometryObject polyLine = Q3PolyLine_New(&m_data);
+    ASSERT_NE(polyLine, nullptr);
+
+    TQ3AttributeSet got = blue;
+    ASSERT_EQ(Q3PolyLine_GetSegmentAttributeSet(polyLine, 1, &got), kQ3Success); // the last segment
+    EXPECT_EQ(got, nullptr);
+    ASSERT_EQ(Q3PolyLine_GetSegmentAttributeSet(polyLine, 0, &got), kQ3Success);
+    EXPECT_EQ(got, green);
+    Q3Object_Dispose(got);
+
+    const unsigned long edit = Q3Shared_GetEditIndex(polyLine);
+    EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 1, blue), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
+    EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, blue), kQ3Success);
+    EXPECT_EQ(Q3Shared_IsReferenced(green), kQ3False);
+    const PolyLineState state = stateOf(polyLine);
+    ASSERT_EQ(state.segmentSets.size(), 2u);
+    EXPECT_EQ(state.segmentSets[0], blue);
+    EXPECT_EQ(state.segmentSets[1], blue);
+    EXPECT_EQ(state.vertexSets, std::vector<TQ3AttributeSet>(3, nullptr));
+
+    EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, nullptr), kQ3Success);
+    ASSERT_EQ(Q3PolyLine_GetSegmentAttributeSet(polyLine, 0, &got), kQ3Success);
+    EXPECT_EQ(got, nullptr);
+    EXPECT_EQ(Q3Shared_IsReferenced(blue), kQ3True); // segment 1 still holds it
+    Q3Object_Dispose(polyLine);
+    EXPECT_EQ(Q3Shared_IsReferenced(blue), kQ3False);
+}
+
+TEST_F(PolyLineApiTest, APolyLineWithoutSegmentSetsGainsAnArrayOnlyWhenGivenASet)
+{
+    TQ3AttributeSet set = own(colorSet(1, 1, 0));
+    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
+    ASSERT_NE(polyLine, nullptr);
+    for (unsigned long index : {0UL, 1UL}) {
+        TQ3AttributeSet got = set;
+        ASSERT_EQ(Q3PolyLine_GetSegmentAttributeSet(polyLine, index, &got), kQ3Success);
+        EXPECT_EQ(got, nullptr);
+    }
+    unsigned long edit = Q3Shared_GetEditIndex(polyLine);
+    EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 1, nullptr), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
+    EXPECT_TRUE(stateOf(polyLine).segmentSets.empty());
+
+    edit = Q3Shared_GetEditIndex(polyLine);
+    EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 1, set), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
+    const PolyLineState state = stateOf(polyLine);
+    ASSERT_EQ(state.segmentSets.size(), 2u);
+    EXPECT_EQ(state.segmentSets[0], nullptr);
+    EXPECT_EQ(state.segmentSets[1], set);
+}
+
+TEST_F(PolyLineApiTest, IndexedAttributeSetCallsRejectBadIndicesAndChangeNothing)
+{
+    TQ3AttributeSet set = own(colorSet(0, 1, 1));
+    TQ3AttributeSet segments[2] = {set, set};
+    m_vertices[1].attributeSet = set;
+    m_data.segmentAttributeSet = segments;
+    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
+    ASSERT_NE(polyLine, nullptr);
+    const PolyLineState before = stateOf(polyLine);
+
+    std::vector<unsigned long> badVertices = {3};
+    badVertices.insert(badVertices.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
+    for (unsigned long index : badVertices) {
+        TQ3AttributeSet got = set;
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, index, &got), kQ3Failure),
+                        kQ3ErrorParameterOutOfRange);
+        EXPECT_EQ(got, set); // unchanged on failure
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, index, nullptr), kQ3Failure),
+                        kQ3ErrorParameterOutOfRange);
+    }
+    std::vector<unsigned long> badSegments = {2}; // one past the last segment
+    badSegments.insert(badSegments.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
+    for (unsigned long index : badSegments) {
+        TQ3AttributeSet got = set;
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetSegmentAttributeSet(polyLine, index, &got), kQ3Failure),
+                        kQ3ErrorParameterOutOfRange);
+        EXPECT_EQ(got, set);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, index, set), kQ3Failure),
+                        kQ3ErrorParameterOutOfRange);
+    }
+    expectSameState(before, stateOf(polyLine));
+
+    // Without a segment array the segment count still bounds the index.
+    m_data.segmentAttributeSet = nullptr;
+    TQ3GeometryObject plain = own(Q3PolyLine_New(&m_data));
+    for (unsigned long index : badSegments) {
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(plain, index, set), kQ3Failure),
+                        kQ3ErrorParameterOutOfRange);
+    }
+    EXPECT_TRUE(stateOf(plain).segmentSets.empty());
+}
+
+TEST_F(PolyLineApiTest, PerVertexCallsRejectBadArgumentsAndChangeNothing)
+{
+    TQ3AttributeSet set = own(colorSet(1, 0, 1));
+    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
+    ASSERT_NE(polyLine, nullptr);
+    const TQ3Vector3D offset{1, 1, 1};
+    TQ3TransformObject notASet = own(Q3TranslateTransform_New(&offset));
+    const TQ3LineData lineData{{{{0, 0, 0}, nullptr}, {{1, 1, 1}, nullptr}}, nullptr};
+    TQ3GeometryObject notAPolyLine = own(Q3Line_New(&lineData));
+    int notAnObject = 0;
+    TQ3GeometryObject stray = reinterpret_cast<TQ3GeometryObject>(&notAnObject);
+    const PolyLineState before = stateOf(polyLine);
+    TQ3Point3D position{};
+    TQ3AttributeSet got = nullptr;
+
+    for (TQ3GeometryObject wrong : {static_cast<TQ3GeometryObject>(nullptr), notAPolyLine, stray}) {
+        const TQ3Error code = wrong == nullptr       ? kQ3ErrorNULLParameter
+                              : wrong == notAPolyLine ? kQ3ErrorInvalidObjectType
+                                                      : kQ3ErrorInvalidObject;
+        EXPECT_Q3_ERROR(Q3PolyLine_GetVertexPosition(wrong, 0, &position), code);
+        EXPECT_Q3_ERROR(Q3PolyLine_SetVertexPosition(wrong, 0, &position), code);
+        EXPECT_Q3_ERROR(Q3PolyLine_GetVertexAttributeSet(wrong, 0, &got), code);
+        EXPECT_Q3_ERROR(Q3PolyLine_SetVertexAttributeSet(wrong, 0, set), code);
+        EXPECT_Q3_ERROR(Q3PolyLine_GetSegmentAttributeSet(wrong, 0, &got), code);
+        EXPECT_Q3_ERROR(Q3PolyLine_SetSegmentAttributeSet(wrong, 0, set), code);
+    }
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetVertexPosition(polyLine, 0, nullptr), kQ3Failure),
+                    kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, 0, nullptr), kQ3Failure),
+                    kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 0, nullptr), kQ3Failure),
+                    kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetSegmentAttributeSet(polyLine, 0, nullptr), kQ3Failure),
+                    kQ3ErrorNULLParameter);
+    // A NULL pointer is reported before a bad index.
+    EXPECT_Q3_ERROR(Q3PolyLine_SetVertexPosition(polyLine, 99, nullptr), kQ3ErrorNULLParameter);
+    // A bad attribute set handle is reported before a bad index.
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, notASet), kQ3Failure),
+                    kQ3ErrorInvalidObjectType);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 99, notASet), kQ3Failure),
+                    kQ3ErrorInvalidObjectType);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, stray), kQ3Failure),
+                    kQ3ErrorInvalidObject);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, stray), kQ3Failure),
+                    kQ3ErrorInvalidObject);
+    expectSameState(before, stateOf(polyLine));
+}
+
+TEST_F(PolyLineApiTest, AMovedVertexIsBoundedWhereItNowIs)
+{
+    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
+    ASSERT_NE(polyLine, nullptr);
+    auto bounds = [&] {
+        return boundsOf([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(polyLine, v), kQ3Success); });
+    };
+    expectBox(bounds(), {-7, -5, 0}, {4, 8, 6});
+    const TQ3Point3D far{20, -30, 40};
+    ASSERT_EQ(Q3PolyLine_SetVertexPosition(polyLine, 1, &far), kQ3Success);
+    expectBox(bounds(), {-7, -30, 0}, {20, 8, 40});
+    const TQ3Point3D nan{kNaN, 0, 0};
+    EXPECT_Q3_ERROR(Q3PolyLine_SetVertexPosition(polyLine, 1, &nan), kQ3ErrorInvalidData);
+    expectBox(bounds(), {-7, -30, 0}, {20, 8, 40});
+}
+
 TEST(PolyLineApiUninitialized, EveryFunctionFailsWithNotInitialized)
 {
     ASSERT_EQ(Q3IsInitialized(), kQ3False);
@@ -423,6 +752,20 @@ TEST(PolyLineApiUninitialized, EveryFunctionFailsWithNotInitialized)
     EXPECT_EQ(Q3PolyLine_SetData(nullptr, &data), kQ3Failure);
     EXPECT_TRUE(failed());
     EXPECT_EQ(Q3PolyLine_EmptyData(&data), kQ3Failure);
+    EXPECT_TRUE(failed());
+    TQ3Point3D position{};
+    TQ3AttributeSet set = nullptr;
+    EXPECT_EQ(Q3PolyLine_GetVertexPosition(nullptr, 0, &position), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3PolyLine_SetVertexPosition(nullptr, 0, &position), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3PolyLine_GetVertexAttributeSet(nullptr, 0, &set), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(nullptr, 0, nullptr), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3PolyLine_GetSegmentAttributeSet(nullptr, 0, &set), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(nullptr, 0, nullptr), kQ3Failure);
     EXPECT_TRUE(failed());
 }
 
