@@ -18,6 +18,10 @@
  * A view reads its camera at Q3View_StartRendering; a camera changed during
  * a rendering loop affects the next loop.
  *
+ * Each single-value setter (Q3OrthographicCamera_SetLeft, ...) checks the
+ * camera's whole data with that value replaced, by the same rules as the
+ * kind's _SetData, and fails as _SetData would.
+ *
  * Coordinate systems (matrices act on row vectors, p' = p * M, see QD3D.h):
  *   world    the space geometry ends up in after its transforms.
  *   view     the camera's own space: the camera at the origin looking down
@@ -427,6 +431,154 @@ Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_GetData(TQ3CameraObject camera,
 Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_SetData(
     TQ3CameraObject camera, const TQ3OrthographicCameraData *cameraData);
 
+/**
+ * Moves the left edge of an orthographic camera's visible rectangle, keeping
+ * its other values.
+ *
+ * @param camera  the orthographic camera to change.
+ * @param left    the new view x of the left edge; it must be finite and
+ *                differ from the right edge.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not an orthographic camera.
+ *   kQ3ErrorInvalidCameraValues  left is not finite or equals right.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_SetLeft(TQ3CameraObject camera, float left);
+
+/**
+ * Reads the left edge of an orthographic camera's visible rectangle.
+ *
+ * @param camera  the orthographic camera to read.
+ * @param left    receives the view x of the left edge.
+ * @return kQ3Success, or kQ3Failure with *left unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or left is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not an orthographic camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_GetLeft(TQ3CameraObject camera, float *left);
+
+/**
+ * Moves the top edge of an orthographic camera's visible rectangle, keeping
+ * its other values.
+ *
+ * @param camera  the orthographic camera to change.
+ * @param top     the new view y of the top edge; it must be finite and differ
+ *                from the bottom edge.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not an orthographic camera.
+ *   kQ3ErrorInvalidCameraValues  top is not finite or equals bottom.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_SetTop(TQ3CameraObject camera, float top);
+
+/**
+ * Reads the top edge of an orthographic camera's visible rectangle.
+ *
+ * @param camera  the orthographic camera to read.
+ * @param top     receives the view y of the top edge.
+ * @return kQ3Success, or kQ3Failure with *top unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or top is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not an orthographic camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_GetTop(TQ3CameraObject camera, float *top);
+
+/**
+ * Moves the right edge of an orthographic camera's visible rectangle,
+ * keeping its other values.
+ *
+ * @param camera  the orthographic camera to change.
+ * @param right   the new view x of the right edge; it must be finite and
+ *                differ from the left edge.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not an orthographic camera.
+ *   kQ3ErrorInvalidCameraValues  right is not finite or equals left.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_SetRight(TQ3CameraObject camera, float right);
+
+/**
+ * Reads the right edge of an orthographic camera's visible rectangle.
+ *
+ * @param camera  the orthographic camera to read.
+ * @param right   receives the view x of the right edge.
+ * @return kQ3Success, or kQ3Failure with *right unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or right is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not an orthographic camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_GetRight(TQ3CameraObject camera, float *right);
+
+/**
+ * Moves the bottom edge of an orthographic camera's visible rectangle,
+ * keeping its other values.
+ *
+ * @param camera  the orthographic camera to change.
+ * @param bottom  the new view y of the bottom edge; it must be finite and
+ *                differ from the top edge.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not an orthographic camera.
+ *   kQ3ErrorInvalidCameraValues  bottom is not finite or equals top.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_SetBottom(TQ3CameraObject camera, float bottom);
+
+/**
+ * Reads the bottom edge of an orthographic camera's visible rectangle.
+ *
+ * @param camera  the orthographic camera to read.
+ * @param bottom  receives the view y of the bottom edge.
+ * @return kQ3Success, or kQ3Failure with *bottom unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or bottom is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not an orthographic camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3OrthographicCamera_GetBottom(TQ3CameraObject camera, float *bottom);
+
 /* ---- View plane camera -------------------------------------------------- */
 
 /**
@@ -484,6 +636,205 @@ Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_GetData(TQ3CameraObject camera,
  */
 Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_SetData(TQ3CameraObject camera,
                                                      const TQ3ViewPlaneCameraData *cameraData);
+
+/**
+ * Moves a view plane camera's view plane, keeping its other values (the
+ * rectangle keeps its size and centre on the moved plane, so the field of
+ * view changes).
+ *
+ * @param camera     the view plane camera to change.
+ * @param viewPlane  the new distance from the camera to the plane; it must
+ *                   be finite and greater than 0.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not a view plane camera.
+ *   kQ3ErrorInvalidCameraValues  viewPlane is not finite or not greater
+ *                                than 0.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_SetViewPlane(TQ3CameraObject camera, float viewPlane);
+
+/**
+ * Reads the distance from a view plane camera to its view plane.
+ *
+ * @param camera     the view plane camera to read.
+ * @param viewPlane  receives the distance.
+ * @return kQ3Success, or kQ3Failure with *viewPlane unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or viewPlane is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not a view plane camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_GetViewPlane(TQ3CameraObject camera, float *viewPlane);
+
+/**
+ * Changes the half-width of the rectangle a view plane camera sees on its
+ * view plane, keeping its other values.
+ *
+ * @param camera                the view plane camera to change.
+ * @param halfWidthAtViewPlane  the new half-width; it must be finite and
+ *                              greater than 0.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not a view plane camera.
+ *   kQ3ErrorInvalidCameraValues  halfWidthAtViewPlane is not finite or not
+ *                                greater than 0.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_SetHalfWidth(TQ3CameraObject camera,
+                                                          float halfWidthAtViewPlane);
+
+/**
+ * Reads the half-width of the rectangle a view plane camera sees on its view
+ * plane.
+ *
+ * @param camera                the view plane camera to read.
+ * @param halfWidthAtViewPlane  receives the half-width.
+ * @return kQ3Success, or kQ3Failure with *halfWidthAtViewPlane unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or halfWidthAtViewPlane is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not a view plane camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_GetHalfWidth(TQ3CameraObject camera,
+                                                          float *halfWidthAtViewPlane);
+
+/**
+ * Changes the half-height of the rectangle a view plane camera sees on its
+ * view plane, keeping its other values.
+ *
+ * @param camera                 the view plane camera to change.
+ * @param halfHeightAtViewPlane  the new half-height; it must be finite and
+ *                               greater than 0.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not a view plane camera.
+ *   kQ3ErrorInvalidCameraValues  halfHeightAtViewPlane is not finite or not
+ *                                greater than 0.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_SetHalfHeight(TQ3CameraObject camera,
+                                                           float halfHeightAtViewPlane);
+
+/**
+ * Reads the half-height of the rectangle a view plane camera sees on its
+ * view plane.
+ *
+ * @param camera                 the view plane camera to read.
+ * @param halfHeightAtViewPlane  receives the half-height.
+ * @return kQ3Success, or kQ3Failure with *halfHeightAtViewPlane unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or halfHeightAtViewPlane is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not a view plane camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_GetHalfHeight(TQ3CameraObject camera,
+                                                           float *halfHeightAtViewPlane);
+
+/**
+ * Moves the centre of the rectangle a view plane camera sees across its view
+ * plane (an off-axis projection when not 0), keeping its other values.
+ *
+ * @param camera              the view plane camera to change.
+ * @param centerXOnViewPlane  the new view x of the centre; it must be finite.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not a view plane camera.
+ *   kQ3ErrorInvalidCameraValues  centerXOnViewPlane is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_SetCenterX(TQ3CameraObject camera,
+                                                        float centerXOnViewPlane);
+
+/**
+ * Reads the view x of the centre of the rectangle a view plane camera sees
+ * on its view plane.
+ *
+ * @param camera              the view plane camera to read.
+ * @param centerXOnViewPlane  receives the centre's view x.
+ * @return kQ3Success, or kQ3Failure with *centerXOnViewPlane unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or centerXOnViewPlane is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not a view plane camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_GetCenterX(TQ3CameraObject camera,
+                                                        float *centerXOnViewPlane);
+
+/**
+ * Moves the centre of the rectangle a view plane camera sees up or down its
+ * view plane (an off-axis projection when not 0), keeping its other values.
+ *
+ * @param camera              the view plane camera to change.
+ * @param centerYOnViewPlane  the new view y of the centre; it must be finite.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not a view plane camera.
+ *   kQ3ErrorInvalidCameraValues  centerYOnViewPlane is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_SetCenterY(TQ3CameraObject camera,
+                                                        float centerYOnViewPlane);
+
+/**
+ * Reads the view y of the centre of the rectangle a view plane camera sees
+ * on its view plane.
+ *
+ * @param camera              the view plane camera to read.
+ * @param centerYOnViewPlane  receives the centre's view y.
+ * @return kQ3Success, or kQ3Failure with *centerYOnViewPlane unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or centerYOnViewPlane is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not a view plane camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewPlaneCamera_GetCenterY(TQ3CameraObject camera,
+                                                        float *centerYOnViewPlane);
 
 /* ---- View angle aspect camera ------------------------------------------- */
 
@@ -543,6 +894,85 @@ Q3_EXTERN_API_C(TQ3Status) Q3ViewAngleAspectCamera_GetData(
  */
 Q3_EXTERN_API_C(TQ3Status) Q3ViewAngleAspectCamera_SetData(
     TQ3CameraObject camera, const TQ3ViewAngleAspectCameraData *cameraData);
+
+/**
+ * Changes the field of view of a view angle aspect camera, keeping its other
+ * values.
+ *
+ * @param camera  the view angle aspect camera to change.
+ * @param fov     the new angle in radians across the narrower dimension (see
+ *                TQ3ViewAngleAspectCameraData); it must be finite, with
+ *                0 < fov < pi.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not a view angle aspect camera.
+ *   kQ3ErrorInvalidCameraValues  fov is not finite, or not between 0 and pi
+ *                                (both excluded).
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewAngleAspectCamera_SetFOV(TQ3CameraObject camera, float fov);
+
+/**
+ * Reads the field of view of a view angle aspect camera.
+ *
+ * @param camera  the view angle aspect camera to read.
+ * @param fov     receives the angle in radians.
+ * @return kQ3Success, or kQ3Failure with *fov unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or fov is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not a view angle aspect camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewAngleAspectCamera_GetFOV(TQ3CameraObject camera, float *fov);
+
+/**
+ * Changes the aspect ratio of a view angle aspect camera, keeping its other
+ * values.
+ *
+ * @param camera           the view angle aspect camera to change.
+ * @param aspectRatioXToY  the new width over height; it must be finite and
+ *                         greater than 0.
+ * @return kQ3Success, or kQ3Failure with the camera unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        camera is NULL.
+ *   kQ3ErrorInvalidObject        camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    camera is not a view angle aspect camera.
+ *   kQ3ErrorInvalidCameraValues  aspectRatioXToY is not finite or not
+ *                                greater than 0.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewAngleAspectCamera_SetAspectRatio(TQ3CameraObject camera,
+                                                                  float aspectRatioXToY);
+
+/**
+ * Reads the aspect ratio of a view angle aspect camera.
+ *
+ * @param camera           the view angle aspect camera to read.
+ * @param aspectRatioXToY  receives the width over height.
+ * @return kQ3Success, or kQ3Failure with *aspectRatioXToY unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      camera or aspectRatioXToY is NULL.
+ *   kQ3ErrorInvalidObject      camera is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  camera is not a view angle aspect camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewAngleAspectCamera_GetAspectRatio(TQ3CameraObject camera,
+                                                                  float *aspectRatioXToY);
 
 #ifdef __cplusplus
 }

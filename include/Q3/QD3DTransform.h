@@ -10,6 +10,10 @@
  * T applies to geometry submitted afterwards, before every transform already
  * in effect. Q3Push_Submit / Q3Pop_Submit (QD3DView.h) save and restore L.
  *
+ * A retained transform's value can be read and replaced; a replacement
+ * checks what _New checks, bumps the edit index (Q3Shared_GetEditIndex), and
+ * takes effect the next time the transform is submitted.
+ *
  * Error conventions shared by every function in this header: a call that
  * fails posts exactly one error and leaves every object and output it was
  * given unchanged. "Not a live Q3 object" means a handle that was disposed
@@ -42,6 +46,69 @@ struct TQ3RotateTransformData {
     float radians;
 };
 typedef struct TQ3RotateTransformData TQ3RotateTransformData;
+
+/* ---- Any transform ------------------------------------------------------ */
+
+/**
+ * Reports the kind of a transform.
+ *
+ * @param transform  the transform to query.
+ * @return kQ3TransformTypeMatrix, kQ3TransformTypeTranslate,
+ *         kQ3TransformTypeScale, kQ3TransformTypeRotate or
+ *         kQ3TransformTypeReset, or kQ3ObjectTypeInvalid on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a transform.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3Transform_GetType(TQ3TransformObject transform);
+
+/**
+ * Computes the matrix a transform of any kind applies when submitted
+ * (row vectors, see above); for a reset transform, the identity it puts in
+ * place.
+ *
+ * @param transform  the transform.
+ * @param matrix     receives the matrix.
+ * @return matrix, or NULL on failure with *matrix unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or matrix is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a transform.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Matrix4x4 *) Q3Transform_GetMatrix(TQ3TransformObject transform,
+                                                      TQ3Matrix4x4 *matrix);
+
+/**
+ * Submits a transform object of any kind to a view (retained mode): it
+ * multiplies the view's local-to-world transform like the kind's own
+ * immediate-mode Submit call. Q3Object_Submit does the same for any
+ * submittable object.
+ *
+ * @param transform  the transform.
+ * @param view       a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with the view state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or view is NULL.
+ *   kQ3ErrorInvalidObject      transform or view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a transform, or view is not
+ *                              a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Transform_Submit(TQ3TransformObject transform,
+                                              TQ3ViewObject view);
 
 /* ---- Matrix transform --------------------------------------------------- */
 
@@ -84,6 +151,43 @@ Q3_EXTERN_API_C(TQ3TransformObject) Q3MatrixTransform_New(const TQ3Matrix4x4 *ma
 Q3_EXTERN_API_C(TQ3Status) Q3MatrixTransform_Submit(const TQ3Matrix4x4 *matrix,
                                                     TQ3ViewObject view);
 
+/**
+ * Replaces the matrix of a matrix transform.
+ *
+ * @param transform  the matrix transform to change.
+ * @param matrix     the new matrix; every entry must be finite. It is copied.
+ * @return kQ3Success, or kQ3Failure with the transform unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or matrix is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a matrix transform.
+ *   kQ3ErrorInvalidParameter   an entry of *matrix is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3MatrixTransform_Set(TQ3TransformObject transform,
+                                                 const TQ3Matrix4x4 *matrix);
+
+/**
+ * Reads the matrix of a matrix transform.
+ *
+ * @param transform  the matrix transform to read.
+ * @param matrix     receives the matrix.
+ * @return kQ3Success, or kQ3Failure with *matrix unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or matrix is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a matrix transform.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3MatrixTransform_Get(TQ3TransformObject transform,
+                                                 TQ3Matrix4x4 *matrix);
+
 /* ---- Translate transform ------------------------------------------------ */
 
 /**
@@ -124,6 +228,44 @@ Q3_EXTERN_API_C(TQ3TransformObject) Q3TranslateTransform_New(const TQ3Vector3D *
 Q3_EXTERN_API_C(TQ3Status) Q3TranslateTransform_Submit(const TQ3Vector3D *translate,
                                                        TQ3ViewObject view);
 
+/**
+ * Replaces the offset of a translate transform.
+ *
+ * @param transform  the translate transform to change.
+ * @param translate  the new offset; its components must be finite. It is
+ *                   copied.
+ * @return kQ3Success, or kQ3Failure with the transform unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or translate is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a translate transform.
+ *   kQ3ErrorInvalidParameter   a component of *translate is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TranslateTransform_Set(TQ3TransformObject transform,
+                                                    const TQ3Vector3D *translate);
+
+/**
+ * Reads the offset of a translate transform.
+ *
+ * @param transform  the translate transform to read.
+ * @param translate  receives the offset.
+ * @return kQ3Success, or kQ3Failure with *translate unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or translate is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a translate transform.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TranslateTransform_Get(TQ3TransformObject transform,
+                                                    TQ3Vector3D *translate);
+
 /* ---- Scale transform ---------------------------------------------------- */
 
 /**
@@ -163,6 +305,43 @@ Q3_EXTERN_API_C(TQ3TransformObject) Q3ScaleTransform_New(const TQ3Vector3D *scal
  * Ownership: no references are kept after the call returns.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3ScaleTransform_Submit(const TQ3Vector3D *scale, TQ3ViewObject view);
+
+/**
+ * Replaces the factors of a scale transform (zero and negative factors
+ * allowed, as in Q3ScaleTransform_New).
+ *
+ * @param transform  the scale transform to change.
+ * @param scale      the new factors; they must be finite. They are copied.
+ * @return kQ3Success, or kQ3Failure with the transform unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or scale is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a scale transform.
+ *   kQ3ErrorInvalidParameter   a component of *scale is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ScaleTransform_Set(TQ3TransformObject transform,
+                                                const TQ3Vector3D *scale);
+
+/**
+ * Reads the factors of a scale transform.
+ *
+ * @param transform  the scale transform to read.
+ * @param scale      receives the factors.
+ * @return kQ3Success, or kQ3Failure with *scale unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or scale is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a scale transform.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ScaleTransform_Get(TQ3TransformObject transform, TQ3Vector3D *scale);
 
 /* ---- Rotate transform --------------------------------------------------- */
 
@@ -208,6 +387,116 @@ Q3_EXTERN_API_C(TQ3TransformObject) Q3RotateTransform_New(const TQ3RotateTransfo
  */
 Q3_EXTERN_API_C(TQ3Status) Q3RotateTransform_Submit(const TQ3RotateTransformData *data,
                                                     TQ3ViewObject view);
+
+/**
+ * Replaces the axis and angle of a rotate transform.
+ *
+ * @param transform  the rotate transform to change.
+ * @param data       the new axis and angle; they must obey the
+ *                   TQ3RotateTransformData rules. They are copied.
+ * @return kQ3Success, or kQ3Failure with the transform unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or data is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a rotate transform.
+ *   kQ3ErrorInvalidData        axis is not a TQ3Axis value, or radians is not
+ *                              finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3RotateTransform_SetData(TQ3TransformObject transform,
+                                                     const TQ3RotateTransformData *data);
+
+/**
+ * Reads the axis and angle of a rotate transform.
+ *
+ * @param transform  the rotate transform to read.
+ * @param data       receives the axis and angle.
+ * @return kQ3Success, or kQ3Failure with *data unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or data is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a rotate transform.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3RotateTransform_GetData(TQ3TransformObject transform,
+                                                     TQ3RotateTransformData *data);
+
+/**
+ * Replaces the axis of a rotate transform, keeping its angle.
+ *
+ * @param transform  the rotate transform to change.
+ * @param axis       the new axis: kQ3AxisX, kQ3AxisY or kQ3AxisZ.
+ * @return kQ3Success, or kQ3Failure with the transform unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a rotate transform.
+ *   kQ3ErrorInvalidData        axis is not a TQ3Axis value.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3RotateTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis);
+
+/**
+ * Reads the axis of a rotate transform.
+ *
+ * @param transform  the rotate transform to read.
+ * @param axis       receives the axis.
+ * @return kQ3Success, or kQ3Failure with *axis unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or axis is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a rotate transform.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3RotateTransform_GetAxis(TQ3TransformObject transform, TQ3Axis *axis);
+
+/**
+ * Replaces the angle of a rotate transform, keeping its axis.
+ *
+ * @param transform  the rotate transform to change.
+ * @param radians    the new angle; it must be finite.
+ * @return kQ3Success, or kQ3Failure with the transform unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a rotate transform.
+ *   kQ3ErrorInvalidData        radians is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3RotateTransform_SetAngle(TQ3TransformObject transform, float radians);
+
+/**
+ * Reads the angle of a rotate transform.
+ *
+ * @param transform  the rotate transform to read.
+ * @param radians    receives the angle.
+ * @return kQ3Success, or kQ3Failure with *radians unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      transform or radians is NULL.
+ *   kQ3ErrorInvalidObject      transform is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  transform is not a rotate transform.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3RotateTransform_GetAngle(TQ3TransformObject transform,
+                                                      float *radians);
 
 /* ---- Reset transform ---------------------------------------------------- */
 

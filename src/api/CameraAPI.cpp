@@ -8,6 +8,21 @@ using namespace q3;
 using q3::api::guard;
 using q3::api::guardStatus;
 
+namespace {
+
+// The Get half of a single-field accessor: the camera (of kind Kind), then
+// the output pointer, then the one field of the kind's data.
+template <class Kind, class Data>
+void readField(TQ3CameraObject camera, Data (Kind::*read)() const, float Data::*field, float* out,
+               const char* name)
+{
+    const Kind& source = lookup<Kind>(camera, "camera");
+    requireNonNull(out, name);
+    *out = (source.*read)().*field;
+}
+
+} // namespace
+
 extern "C" {
 
 TQ3ObjectType Q3Camera_GetType(TQ3CameraObject camera)
@@ -143,6 +158,70 @@ TQ3Status Q3OrthographicCamera_SetData(TQ3CameraObject camera,
     });
 }
 
+TQ3Status Q3OrthographicCamera_SetLeft(TQ3CameraObject camera, float left)
+{
+    return guardStatus(__func__, [&] {
+        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
+        target.setField(&TQ3OrthographicCameraData::left, left);
+    });
+}
+
+TQ3Status Q3OrthographicCamera_GetLeft(TQ3CameraObject camera, float* left)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &OrthographicCamera::orthographicData,
+                  &TQ3OrthographicCameraData::left, left, "left");
+    });
+}
+
+TQ3Status Q3OrthographicCamera_SetTop(TQ3CameraObject camera, float top)
+{
+    return guardStatus(__func__, [&] {
+        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
+        target.setField(&TQ3OrthographicCameraData::top, top);
+    });
+}
+
+TQ3Status Q3OrthographicCamera_GetTop(TQ3CameraObject camera, float* top)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &OrthographicCamera::orthographicData,
+                  &TQ3OrthographicCameraData::top, top, "top");
+    });
+}
+
+TQ3Status Q3OrthographicCamera_SetRight(TQ3CameraObject camera, float right)
+{
+    return guardStatus(__func__, [&] {
+        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
+        target.setField(&TQ3OrthographicCameraData::right, right);
+    });
+}
+
+TQ3Status Q3OrthographicCamera_GetRight(TQ3CameraObject camera, float* right)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &OrthographicCamera::orthographicData,
+                  &TQ3OrthographicCameraData::right, right, "right");
+    });
+}
+
+TQ3Status Q3OrthographicCamera_SetBottom(TQ3CameraObject camera, float bottom)
+{
+    return guardStatus(__func__, [&] {
+        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
+        target.setField(&TQ3OrthographicCameraData::bottom, bottom);
+    });
+}
+
+TQ3Status Q3OrthographicCamera_GetBottom(TQ3CameraObject camera, float* bottom)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &OrthographicCamera::orthographicData,
+                  &TQ3OrthographicCameraData::bottom, bottom, "bottom");
+    });
+}
+
 TQ3CameraObject Q3ViewPlaneCamera_New(const TQ3ViewPlaneCameraData* cameraData)
 {
     return guard(__func__, TQ3CameraObject{nullptr}, [&]() -> TQ3CameraObject {
@@ -167,6 +246,90 @@ TQ3Status Q3ViewPlaneCamera_SetData(TQ3CameraObject camera, const TQ3ViewPlaneCa
         ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
         requireNonNull(cameraData, "cameraData");
         target.setViewPlaneData(*cameraData);
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_SetViewPlane(TQ3CameraObject camera, float viewPlane)
+{
+    return guardStatus(__func__, [&] {
+        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
+        target.setField(&TQ3ViewPlaneCameraData::viewPlane, viewPlane);
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_GetViewPlane(TQ3CameraObject camera, float* viewPlane)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &ViewPlaneCamera::viewPlaneData,
+                  &TQ3ViewPlaneCameraData::viewPlane, viewPlane, "viewPlane");
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_SetHalfWidth(TQ3CameraObject camera, float halfWidthAtViewPlane)
+{
+    return guardStatus(__func__, [&] {
+        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
+        target.setField(&TQ3ViewPlaneCameraData::halfWidthAtViewPlane, halfWidthAtViewPlane);
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_GetHalfWidth(TQ3CameraObject camera, float* halfWidthAtViewPlane)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &ViewPlaneCamera::viewPlaneData,
+                  &TQ3ViewPlaneCameraData::halfWidthAtViewPlane, halfWidthAtViewPlane,
+                  "halfWidthAtViewPlane");
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_SetHalfHeight(TQ3CameraObject camera, float halfHeightAtViewPlane)
+{
+    return guardStatus(__func__, [&] {
+        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
+        target.setField(&TQ3ViewPlaneCameraData::halfHeightAtViewPlane, halfHeightAtViewPlane);
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_GetHalfHeight(TQ3CameraObject camera, float* halfHeightAtViewPlane)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &ViewPlaneCamera::viewPlaneData,
+                  &TQ3ViewPlaneCameraData::halfHeightAtViewPlane, halfHeightAtViewPlane,
+                  "halfHeightAtViewPlane");
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_SetCenterX(TQ3CameraObject camera, float centerXOnViewPlane)
+{
+    return guardStatus(__func__, [&] {
+        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
+        target.setField(&TQ3ViewPlaneCameraData::centerXOnViewPlane, centerXOnViewPlane);
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_GetCenterX(TQ3CameraObject camera, float* centerXOnViewPlane)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &ViewPlaneCamera::viewPlaneData,
+                  &TQ3ViewPlaneCameraData::centerXOnViewPlane, centerXOnViewPlane,
+                  "centerXOnViewPlane");
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_SetCenterY(TQ3CameraObject camera, float centerYOnViewPlane)
+{
+    return guardStatus(__func__, [&] {
+        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
+        target.setField(&TQ3ViewPlaneCameraData::centerYOnViewPlane, centerYOnViewPlane);
+    });
+}
+
+TQ3Status Q3ViewPlaneCamera_GetCenterY(TQ3CameraObject camera, float* centerYOnViewPlane)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &ViewPlaneCamera::viewPlaneData,
+                  &TQ3ViewPlaneCameraData::centerYOnViewPlane, centerYOnViewPlane,
+                  "centerYOnViewPlane");
     });
 }
 
@@ -196,6 +359,39 @@ TQ3Status Q3ViewAngleAspectCamera_SetData(TQ3CameraObject camera,
         ViewAngleAspectCamera& target = lookup<ViewAngleAspectCamera>(camera, "camera");
         requireNonNull(cameraData, "cameraData");
         target.setViewAngleAspectData(*cameraData);
+    });
+}
+
+TQ3Status Q3ViewAngleAspectCamera_SetFOV(TQ3CameraObject camera, float fov)
+{
+    return guardStatus(__func__, [&] {
+        ViewAngleAspectCamera& target = lookup<ViewAngleAspectCamera>(camera, "camera");
+        target.setField(&TQ3ViewAngleAspectCameraData::fov, fov);
+    });
+}
+
+TQ3Status Q3ViewAngleAspectCamera_GetFOV(TQ3CameraObject camera, float* fov)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &ViewAngleAspectCamera::viewAngleAspectData,
+                  &TQ3ViewAngleAspectCameraData::fov, fov, "fov");
+    });
+}
+
+TQ3Status Q3ViewAngleAspectCamera_SetAspectRatio(TQ3CameraObject camera, float aspectRatioXToY)
+{
+    return guardStatus(__func__, [&] {
+        ViewAngleAspectCamera& target = lookup<ViewAngleAspectCamera>(camera, "camera");
+        target.setField(&TQ3ViewAngleAspectCameraData::aspectRatioXToY, aspectRatioXToY);
+    });
+}
+
+TQ3Status Q3ViewAngleAspectCamera_GetAspectRatio(TQ3CameraObject camera, float* aspectRatioXToY)
+{
+    return guardStatus(__func__, [&] {
+        readField(camera, &ViewAngleAspectCamera::viewAngleAspectData,
+                  &TQ3ViewAngleAspectCameraData::aspectRatioXToY, aspectRatioXToY,
+                  "aspectRatioXToY");
     });
 }
 

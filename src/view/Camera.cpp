@@ -234,6 +234,13 @@ void OrthographicCamera::setOrthographicData(const TQ3OrthographicCameraData& da
     markEdited();
 }
 
+void OrthographicCamera::setField(float TQ3OrthographicCameraData::*field, float value)
+{
+    TQ3OrthographicCameraData data = orthographicData();
+    data.*field = value;
+    setOrthographicData(data);
+}
+
 Matrix OrthographicCamera::projection() const
 {
     const double width = double(m_right) - double(m_left);
@@ -292,6 +299,13 @@ void ViewPlaneCamera::setViewPlaneData(const TQ3ViewPlaneCameraData& data)
     markEdited();
 }
 
+void ViewPlaneCamera::setField(float TQ3ViewPlaneCameraData::*field, float value)
+{
+    TQ3ViewPlaneCameraData data = viewPlaneData();
+    data.*field = value;
+    setViewPlaneData(data);
+}
+
 Matrix ViewPlaneCamera::projection() const
 {
     Matrix m = perspectiveDepth(data().range);
@@ -335,6 +349,13 @@ void ViewAngleAspectCamera::setViewAngleAspectData(const TQ3ViewAngleAspectCamer
     m_fov = data.fov;
     m_aspect = data.aspectRatioXToY;
     markEdited();
+}
+
+void ViewAngleAspectCamera::setField(float TQ3ViewAngleAspectCameraData::*field, float value)
+{
+    TQ3ViewAngleAspectCameraData data = viewAngleAspectData();
+    data.*field = value;
+    setViewAngleAspectData(data);
 }
 
 Matrix ViewAngleAspectCamera::projection() const

@@ -84,6 +84,9 @@ public:
 
     TQ3OrthographicCameraData orthographicData() const;
     void setOrthographicData(const TQ3OrthographicCameraData& data);
+    /// Replaces one field through setOrthographicData, so a single-field setter
+    /// checks exactly what SetData checks and changes nothing on failure.
+    void setField(float TQ3OrthographicCameraData::*field, float value);
 
 protected:
     Matrix projection() const override;
@@ -111,6 +114,9 @@ public:
 
     TQ3ViewPlaneCameraData viewPlaneData() const;
     void setViewPlaneData(const TQ3ViewPlaneCameraData& data);
+    /// Replaces one field through setViewPlaneData, so a single-field setter
+    /// checks exactly what SetData checks and changes nothing on failure.
+    void setField(float TQ3ViewPlaneCameraData::*field, float value);
 
 protected:
     Matrix projection() const override;
@@ -139,6 +145,9 @@ public:
 
     TQ3ViewAngleAspectCameraData viewAngleAspectData() const;
     void setViewAngleAspectData(const TQ3ViewAngleAspectCameraData& data);
+    /// Replaces one field through setViewAngleAspectData, so a single-field setter
+    /// checks exactly what SetData checks and changes nothing on failure.
+    void setField(float TQ3ViewAngleAspectCameraData::*field, float value);
 
 protected:
     Matrix projection() const override;

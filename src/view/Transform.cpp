@@ -84,6 +84,13 @@ Object* MatrixTransform::duplicate() const
     return duplicateOf<MatrixTransform>(m_matrix);
 }
 
+void MatrixTransform::setMatrix(const TQ3Matrix4x4& matrix)
+{
+    validateMatrixTransform(matrix);
+    m_matrix = matrix;
+    markEdited();
+}
+
 TranslateTransform::TranslateTransform(const TQ3Vector3D& translate) : m_translate(translate)
 {
     validateTranslateTransform(translate);
@@ -92,6 +99,13 @@ TranslateTransform::TranslateTransform(const TQ3Vector3D& translate) : m_transla
 Object* TranslateTransform::duplicate() const
 {
     return duplicateOf<TranslateTransform>(m_translate);
+}
+
+void TranslateTransform::setTranslate(const TQ3Vector3D& translate)
+{
+    validateTranslateTransform(translate);
+    m_translate = translate;
+    markEdited();
 }
 
 TQ3Matrix4x4 TranslateTransform::matrix() const
@@ -109,6 +123,13 @@ Object* ScaleTransform::duplicate() const
     return duplicateOf<ScaleTransform>(m_scale);
 }
 
+void ScaleTransform::setScale(const TQ3Vector3D& scale)
+{
+    validateScaleTransform(scale);
+    m_scale = scale;
+    markEdited();
+}
+
 TQ3Matrix4x4 ScaleTransform::matrix() const
 {
     return math::scaling(m_scale.x, m_scale.y, m_scale.z);
@@ -122,6 +143,27 @@ RotateTransform::RotateTransform(const TQ3RotateTransformData& data) : m_data(da
 Object* RotateTransform::duplicate() const
 {
     return duplicateOf<RotateTransform>(m_data);
+}
+
+void RotateTransform::setData(const TQ3RotateTransformData& data)
+{
+    validateRotateTransform(data);
+    m_data = data;
+    markEdited();
+}
+
+void RotateTransform::setAxis(const TQ3Axis& axis)
+{
+    TQ3RotateTransformData data = m_data;
+    std::memcpy(&data.axis, &axis, sizeof axis);
+    setData(data);
+}
+
+void RotateTransform::setAngle(float radians)
+{
+    TQ3RotateTransformData data = m_data;
+    data.radians = radians;
+    setData(data);
 }
 
 TQ3Matrix4x4 RotateTransform::matrix() const

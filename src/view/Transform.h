@@ -15,8 +15,8 @@ extern const ClassInfo kRotateTransformClass;
 extern const ClassInfo kResetTransformClass;
 
 /// The checks QD3DTransform.h lists, one per kind of data; each is the one
-/// routine behind that transform's _New and _Submit (the constructors call
-/// it). Matrix, translate and scale throw kQ3ErrorInvalidParameter for a
+/// routine behind that transform's _New, _Submit and setters (the
+/// constructors and the set methods call it). Matrix, translate and scale throw kQ3ErrorInvalidParameter for a
 /// value that is not finite; rotate throws kQ3ErrorInvalidData for an axis
 /// that is not a TQ3Axis or an angle that is not finite. Zero and negative
 /// scale factors are accepted without a post, as in QuickDraw 3D ("when two
@@ -57,6 +57,8 @@ public:
     const ClassInfo& classInfo() const override { return kMatrixTransformClass; }
     Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override { return m_matrix; }
+    /// Throws as validateMatrixTransform and then changes nothing.
+    void setMatrix(const TQ3Matrix4x4& matrix);
 
 private:
     TQ3Matrix4x4 m_matrix;
@@ -74,6 +76,8 @@ public:
     Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
     const TQ3Vector3D& translate() const { return m_translate; }
+    /// Throws as validateTranslateTransform and then changes nothing.
+    void setTranslate(const TQ3Vector3D& translate);
 
 private:
     TQ3Vector3D m_translate;
@@ -92,6 +96,8 @@ public:
     Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
     const TQ3Vector3D& scale() const { return m_scale; }
+    /// Throws as validateScaleTransform and then changes nothing.
+    void setScale(const TQ3Vector3D& scale);
 
 private:
     TQ3Vector3D m_scale;
@@ -110,6 +116,13 @@ public:
     Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
     const TQ3RotateTransformData& data() const { return m_data; }
+    /// Each throws as validateRotateTransform (on the whole data, with the
+    /// one field replaced) and then changes nothing. The axis is taken by
+    /// reference because a C caller may pass any int: it is read as bytes
+    /// until validated (core/EnumValue.h).
+    void setData(const TQ3RotateTransformData& data);
+    void setAxis(const TQ3Axis& axis);
+    void setAngle(float radians);
 
 private:
     TQ3RotateTransformData m_data;

@@ -6,10 +6,12 @@
 // x, y in -1..1 across the view port, z from 0 at hither to -1 at yon). The
 // expected values are worked out by hand in each test.
 
-#include "Q3ApiTest.h"
+#include "RenderTestSupport.h"
 
 #include "QD3DCamera.h"
 #include "QD3DSet.h"
+#include "QD3DStyle.h"
+#include "QD3DTransform.h"
 
 #include <cmath>
 #include <cstring>
@@ -73,6 +75,57 @@ Homogeneous toFrustum(const TQ3Matrix4x4& m, double x, double y, double z)
     return {h.x / h.w, h.y / h.w, h.z / h.w, 1};
 }
 
+// One float of a kind's data, with the accessors that reach it alone.
+template <class Data>
+struct Field {
+    const char* name;
+    float Data::*member;
+    TQ3Status (*set)(TQ3CameraObject, float);
+    TQ3Status (*get)(TQ3CameraObject, float*);
+    std::vector<float> rejected; // besides NaN and the infinities
+    float accepted;              // a new value the rules allow
+};
+
+std::vector<Field<TQ3OrthographicCameraData>> orthographicFields()
+{
+    // orthographicData(): left -2, top 1, right 2, bottom -1.
+    using D = TQ3OrthographicCameraData;
+    return {
+        {"left", &D::left, Q3OrthographicCamera_SetLeft, Q3OrthographicCamera_GetLeft, {2}, -3},
+        {"top", &D::top, Q3OrthographicCamera_SetTop, Q3OrthographicCamera_GetTop, {-1}, 1.5f},
+        {"right", &D::right, Q3OrthographicCamera_SetRight, Q3OrthographicCamera_GetRight, {-2}, -2.5f},
+        {"bottom", &D::bottom, Q3OrthographicCamera_SetBottom, Q3OrthographicCamera_GetBottom, {1}, -0.5f},
+    };
+}
+
+std::vector<Field<TQ3ViewPlaneCameraData>> viewPlaneFields()
+{
+    using D = TQ3ViewPlaneCameraData;
+    return {
+        {"viewPlane", &D::viewPlane, Q3ViewPlaneCamera_SetViewPlane, Q3ViewPlaneCamera_GetViewPlane,
+         {0, -0.0f, -1}, 3},
+        {"halfWidthAtViewPlane", &D::halfWidthAtViewPlane, Q3ViewPlaneCamera_SetHalfWidth,
+         Q3ViewPlaneCamera_GetHalfWidth, {0, -2}, 1.5f},
+        {"halfHeightAtViewPlane", &D::halfHeightAtViewPlane, Q3ViewPlaneCamera_SetHalfHeight,
+         Q3ViewPlaneCamera_GetHalfHeight, {0, -0.5f}, 0.75f},
+        {"centerXOnViewPlane", &D::centerXOnViewPlane, Q3ViewPlaneCamera_SetCenterX,
+         Q3ViewPlaneCamera_GetCenterX, {}, -1},
+        {"centerYOnViewPlane", &D::centerYOnViewPlane, Q3ViewPlaneCamera_SetCenterY,
+         Q3ViewPlaneCamera_GetCenterY, {}, 0.25f},
+    };
+}
+
+std::vector<Field<TQ3ViewAngleAspectCameraData>> viewAngleFields()
+{
+    using D = TQ3ViewAngleAspectCameraData;
+    return {
+        {"fov", &D::fov, Q3ViewAngleAspectCamera_SetFOV, Q3ViewAngleAspectCamera_GetFOV,
+         {0, -0.5f, float(kPi), 4}, 1},
+        {"aspectRatioXToY", &D::aspectRatioXToY, Q3ViewAngleAspectCamera_SetAspectRatio,
+         Q3ViewAngleAspectCamera_GetAspectRatio, {0, -1}, 0.5f},
+    };
+}
+
 class CameraApiTest : public Q3ApiTest {
 protected:
     TQ3Matrix4x4 worldToView(TQ3CameraObject camera)
@@ -113,6 +166,52 @@ protected:
             cases.push_back([](TQ3CameraData& d) { d.range.hither = -1; });
         }
         return cases;
+    }
+
+    // For each field: every value SetData rejects (with only that field
+    // changed) the single-field setter rejects with the same error, leaving
+    // the data and the edit index alone; an allowed value changes that field
+    // only and bumps the edit index; the getter reads it back.
+    template <class Data>
+    void checkFields(const Data& good, TQ3CameraObject (*make)(const Data*),
+                     TQ3Status (*getData)(TQ3CameraObject, Data*),
+                     TQ3Status (*setData)(TQ3CameraObject, const Data*),
+                     const std::vector<Field<Data>>& fields)
+    {
+        for (const Field<Data>& field : fields) {
+            SCOPED_TRACE(field.name);
+            TQ3CameraObject camera = make(&good);
+            ASSERT_NE(camera, nullptr);
+            const unsigned long edit = Q3Shared_GetEditIndex(camera);
+            std::vector<float> bad = {kNaN, kInf, -kInf};
+            bad.insert(bad.end(), field.rejected.begin(), field.rejected.end());
+            for (float value : bad) {
+                SCOPED_TRACE(std::to_string(value));
+                Data viaSetData = good;
+                viaSetData.*field.member = value;
+                EXPECT_Q3_ERROR(EXPECT_EQ(setData(camera, &viaSetData), kQ3Failure),
+                                kQ3ErrorInvalidCameraValues);
+                EXPECT_Q3_ERROR(EXPECT_EQ(field.set(camera, value), kQ3Failure),
+                                kQ3ErrorInvalidCameraValues);
+            }
+            Data after{};
+            EXPECT_EQ(getData(camera, &after), kQ3Success);
+            EXPECT_EQ(std::memcmp(&after, &good, sizeof after), 0);
+            EXPECT_EQ(Q3Shared_GetEditIndex(camera), edit);
+            float out = 0;
+            EXPECT_EQ(field.get(camera, &out), kQ3Success);
+            EXPECT_EQ(out, good.*field.member);
+
+            EXPECT_EQ(field.set(camera, field.accepted), kQ3Success);
+            EXPECT_NE(Q3Shared_GetEditIndex(camera), edit);
+            EXPECT_EQ(field.get(camera, &out), kQ3Success);
+            EXPECT_EQ(out, field.accepted);
+            Data expected = good;
+            expected.*field.member = field.accepted;
+            EXPECT_EQ(getData(camera, &after), kQ3Success);
+            EXPECT_EQ(std::memcmp(&after, &expected, sizeof after), 0);
+            Q3Object_Dispose(camera);
+        }
     }
 };
 
@@ -596,6 +695,228 @@ TEST_F(CameraApiTest, DuplicateMakesAnIndependentCamera)
     EXPECT_EQ(copied.fov, data.fov);
     Q3Object_Dispose(copy);
     Q3Object_Dispose(camera);
+}
+
+// ---- Single-field accessors ---------------------------------------------------
+
+TEST_F(CameraApiTest, OrthographicFieldSettersCheckWhatSetDataChecks)
+{
+    checkFields(orthographicData(), Q3OrthographicCamera_New, Q3OrthographicCamera_GetData,
+                Q3OrthographicCamera_SetData, orthographicFields());
+}
+
+TEST_F(CameraApiTest, ViewPlaneFieldSettersCheckWhatSetDataChecks)
+{
+    checkFields(viewPlaneData(), Q3ViewPlaneCamera_New, Q3ViewPlaneCamera_GetData,
+                Q3ViewPlaneCamera_SetData, viewPlaneFields());
+}
+
+TEST_F(CameraApiTest, ViewAngleAspectFieldSettersCheckWhatSetDataChecks)
+{
+    checkFields(viewAngleData(), Q3ViewAngleAspectCamera_New, Q3ViewAngleAspectCamera_GetData,
+                Q3ViewAngleAspectCamera_SetData, viewAngleFields());
+}
+
+TEST_F(CameraApiTest, FieldAccessorsRejectBadHandlesOtherKindsAndNullPointers)
+{
+    const TQ3OrthographicCameraData ortho = orthographicData();
+    const TQ3ViewPlaneCameraData plane = viewPlaneData();
+    const TQ3ViewAngleAspectCameraData angle = viewAngleData();
+    TQ3CameraObject a = Q3OrthographicCamera_New(&ortho);
+    TQ3CameraObject b = Q3ViewPlaneCamera_New(&plane);
+    TQ3CameraObject c = Q3ViewAngleAspectCamera_New(&angle);
+    TQ3CameraObject dead = Q3OrthographicCamera_New(&ortho);
+    Q3Object_Dispose(dead);
+    const TQ3Vector3D offset{1, 2, 3};
+    TQ3TransformObject transform = Q3TranslateTransform_New(&offset);
+    struct Family {
+        TQ3CameraObject right, otherKind;
+        std::vector<std::pair<TQ3Status (*)(TQ3CameraObject, float), TQ3Status (*)(TQ3CameraObject, float*)>>
+            accessors;
+    };
+    std::vector<Family> kinds(3);
+    kinds[0] = {a, c, {}};
+    for (const auto& f : orthographicFields())
+        kinds[0].accessors.push_back({f.set, f.get});
+    kinds[1] = {b, a, {}};
+    for (const auto& f : viewPlaneFields())
+        kinds[1].accessors.push_back({f.set, f.get});
+    kinds[2] = {c, b, {}};
+    for (const auto& f : viewAngleFields())
+        kinds[2].accessors.push_back({f.set, f.get});
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+        const TQ3CameraObject right = kinds[k].right;
+        TQ3ViewAngleAspectCameraData angleBefore{};
+        Q3ViewAngleAspectCamera_GetData(c, &angleBefore);
+        const unsigned long edit = Q3Shared_GetEditIndex(right);
+        for (std::size_t i = 0; i < kinds[k].accessors.size(); ++i) {
+            SCOPED_TRACE("kind " + std::to_string(k) + " accessor " + std::to_string(i));
+            const auto set = kinds[k].accessors[i].first;
+            const auto get = kinds[k].accessors[i].second;
+            float out = 42;
+            for (TQ3Object wrong : {static_cast<TQ3Object>(kinds[k].otherKind), transform}) {
+                EXPECT_Q3_ERROR(EXPECT_EQ(set(wrong, 0.5f), kQ3Failure), kQ3ErrorInvalidObjectType);
+                EXPECT_Q3_ERROR(EXPECT_EQ(get(wrong, &out), kQ3Failure), kQ3ErrorInvalidObjectType);
+            }
+            EXPECT_Q3_ERROR(EXPECT_EQ(set(nullptr, 0.5f), kQ3Failure), kQ3ErrorNULLParameter);
+            EXPECT_Q3_ERROR(EXPECT_EQ(get(nullptr, &out), kQ3Failure), kQ3ErrorNULLParameter);
+            EXPECT_Q3_ERROR(EXPECT_EQ(set(dead, 0.5f), kQ3Failure), kQ3ErrorInvalidObject);
+            EXPECT_Q3_ERROR(EXPECT_EQ(get(dead, &out), kQ3Failure), kQ3ErrorInvalidObject);
+            EXPECT_Q3_ERROR(EXPECT_EQ(get(right, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+            EXPECT_EQ(out, 42.0f);
+        }
+        EXPECT_EQ(Q3Shared_GetEditIndex(right), edit);
+        // A setter handed another kind of camera left that camera alone too.
+        TQ3ViewAngleAspectCameraData angleAfter{};
+        Q3ViewAngleAspectCamera_GetData(c, &angleAfter);
+        EXPECT_EQ(std::memcmp(&angleAfter, &angleBefore, sizeof angleAfter), 0);
+    }
+    for (TQ3Object object : {a, b, c, transform})
+        Q3Object_Dispose(object);
+}
+
+// ---- Single-field setters take effect ------------------------------------------
+
+TEST_F(CameraApiTest, OrthographicBoundSettersMoveTheFrustum)
+{
+    const TQ3OrthographicCameraData data = orthographicData(); // x -2..2, y -1..1
+    TQ3CameraObject camera = Q3OrthographicCamera_New(&data);
+    ASSERT_EQ(Q3OrthographicCamera_SetLeft(camera, -6), kQ3Success);
+    ASSERT_EQ(Q3OrthographicCamera_SetTop(camera, 3), kQ3Success);
+    const TQ3Matrix4x4 m = viewToFrustum(camera);
+    const Homogeneous topLeft = toFrustum(m, -6, 3, -2);
+    EXPECT_NEAR(topLeft.x, -1, 1e-6);
+    EXPECT_NEAR(topLeft.y, 1, 1e-6);
+    const Homogeneous bottomRight = toFrustum(m, 2, -1, -2);
+    EXPECT_NEAR(bottomRight.x, 1, 1e-6);
+    EXPECT_NEAR(bottomRight.y, -1, 1e-6);
+    ASSERT_EQ(Q3OrthographicCamera_SetRight(camera, 10), kQ3Success);
+    ASSERT_EQ(Q3OrthographicCamera_SetBottom(camera, -5), kQ3Success);
+    const Homogeneous centre = toFrustum(viewToFrustum(camera), 2, -1, -2);
+    EXPECT_NEAR(centre.x, 0, 1e-6);
+    EXPECT_NEAR(centre.y, 0, 1e-6);
+    Q3Object_Dispose(camera);
+}
+
+TEST_F(CameraApiTest, ViewPlaneSettersMoveTheFrustum)
+{
+    const TQ3ViewPlaneCameraData data = viewPlaneData(); // plane 2, half sizes 1 x 0.5, centred
+    TQ3CameraObject camera = Q3ViewPlaneCamera_New(&data);
+    // Plane at 4 with half sizes 2 x 1, centred at (1, -0.5): the rectangle
+    // spans x -1..3 and y -1.5..0.5 on the plane z = -4.
+    ASSERT_EQ(Q3ViewPlaneCamera_SetViewPlane(camera, 4), kQ3Success);
+    ASSERT_EQ(Q3ViewPlaneCamera_SetHalfWidth(camera, 2), kQ3Success);
+    ASSERT_EQ(Q3ViewPlaneCamera_SetHalfHeight(camera, 1), kQ3Success);
+    ASSERT_EQ(Q3ViewPlaneCamera_SetCenterX(camera, 1), kQ3Success);
+    ASSERT_EQ(Q3ViewPlaneCamera_SetCenterY(camera, -0.5f), kQ3Success);
+    const TQ3Matrix4x4 m = viewToFrustum(camera);
+    const Homogeneous low = toFrustum(m, -1, -1.5, -4);
+    EXPECT_NEAR(low.x, -1, 1e-6);
+    EXPECT_NEAR(low.y, -1, 1e-6);
+    const Homogeneous high = toFrustum(m, 6, 1, -8); // the other corner's ray, twice as far
+    EXPECT_NEAR(high.x, 1, 1e-6);
+    EXPECT_NEAR(high.y, 1, 1e-6);
+    EXPECT_NEAR(toFrustum(m, 1, -0.5, -4).x, 0, 1e-6);
+    Q3Object_Dispose(camera);
+}
+
+TEST_F(CameraApiTest, SetFOVAndSetAspectRatioChangeWhatTheCameraSees)
+{
+    const TQ3ViewAngleAspectCameraData data = viewAngleData(); // fov 90 degrees, aspect 2
+    TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&data);
+    TQ3Matrix4x4 before{};
+    ASSERT_EQ(Q3Camera_GetWorldToFrustum(camera, &before), kQ3Success);
+    // 60 degrees across y: at depth 3 the top edge is 3 tan(30 degrees) up.
+    ASSERT_EQ(Q3ViewAngleAspectCamera_SetFOV(camera, float(kPi / 3)), kQ3Success);
+    const double top = 3 * std::tan(double(float(kPi / 3)) / 2);
+    TQ3Matrix4x4 m = viewToFrustum(camera);
+    EXPECT_NEAR(toFrustum(m, 0, top, -3).y, 1, 1e-6);
+    EXPECT_NEAR(toFrustum(m, 2 * top, 0, -3).x, 1, 1e-6);
+    TQ3Matrix4x4 after{};
+    ASSERT_EQ(Q3Camera_GetWorldToFrustum(camera, &after), kQ3Success);
+    EXPECT_NE(std::memcmp(&after, &before, sizeof after), 0);
+    // Aspect 4: the same height, twice the width.
+    ASSERT_EQ(Q3ViewAngleAspectCamera_SetAspectRatio(camera, 4), kQ3Success);
+    m = viewToFrustum(camera);
+    EXPECT_NEAR(toFrustum(m, 0, top, -3).y, 1, 1e-6);
+    EXPECT_NEAR(toFrustum(m, 4 * top, 0, -3).x, 1, 1e-6);
+    Q3Object_Dispose(camera);
+}
+
+TEST_F(CameraApiTest, ARetainedCurveIsSubdividedAgainWhenTheFOVChanges)
+{
+    // Listing 1 seen from 6 units away with a view angle camera; screen-space
+    // subdivision at 2 pixels, so the polyline's size follows the curve's
+    // length in pixels. Halving the field of view roughly doubles it
+    // (tan 0.5 / tan 0.25 = 2.14).
+    q3test::Pixmap image{200, 150};
+    const q3test::Point3 eye = {1.5, 0.5, 6}, target = {1.5, 0.5, 0}, up = {0, 1, 0};
+    const TQ3ViewAngleAspectCameraData data = q3test::viewAngleCamera(eye, target, up, 1.0, 200.0 / 150.0);
+    TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&data);
+    q3test::TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera);
+    q3test::Listing1 listing;
+    const TQ3NURBCurveData curveData = listing.data();
+    TQ3GeometryObject curve = Q3NURBCurve_New(&curveData);
+    const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodScreenSpace, 2, 2};
+    auto vertexCount = [&]() -> unsigned long {
+        TQ3GeometryObject polyLine = Q3Geometry_GetDecomposed(curve, view.view());
+        TQ3PolyLineData out{};
+        if (polyLine == nullptr || Q3PolyLine_GetData(polyLine, &out) != kQ3Success) {
+            ADD_FAILURE() << "no polyline";
+            if (polyLine != nullptr)
+                Q3Object_Dispose(polyLine);
+            return 0;
+        }
+        const unsigned long count = out.numVertices;
+        Q3PolyLine_EmptyData(&out);
+        Q3Object_Dispose(polyLine);
+        return count;
+    };
+    auto inALoop = [&](const std::function<void()>& body) {
+        TQ3BoundingBox box{};
+        ASSERT_EQ(Q3View_StartBoundingBox(view.view(), kQ3ComputeBoundsExact), kQ3Success);
+        Q3SubdivisionStyle_Submit(&style, view.view());
+        body();
+        EXPECT_EQ(Q3View_EndBoundingBox(view.view(), &box), kQ3ViewStatusDone);
+    };
+    unsigned long wide = 0, narrow = 0, again = 0;
+    inALoop([&] { wide = vertexCount(); });
+    ASSERT_EQ(Q3ViewAngleAspectCamera_SetFOV(camera, 0.5f), kQ3Success);
+    inALoop([&] { narrow = vertexCount(); });
+    EXPECT_GT(narrow, wide * 3 / 2);
+    EXPECT_LT(narrow, wide * 3);
+    // A loop keeps the camera it started with: a change in the middle of it
+    // shows in the next loop, not in this one.
+    inALoop([&] {
+        EXPECT_EQ(Q3ViewAngleAspectCamera_SetFOV(camera, 1.0f), kQ3Success);
+        again = vertexCount();
+    });
+    EXPECT_EQ(again, narrow);
+    inALoop([&] { again = vertexCount(); });
+    EXPECT_EQ(again, wide);
+    Q3Object_Dispose(curve);
+    Q3Object_Dispose(camera);
+}
+
+TEST(CameraApiUninitialized, FieldAccessorsFailWithNotInitialized)
+{
+    ASSERT_EQ(Q3IsInitialized(), kQ3False);
+    float out = 0;
+    std::vector<std::pair<TQ3Status (*)(TQ3CameraObject, float), TQ3Status (*)(TQ3CameraObject, float*)>>
+        accessors;
+    for (const auto& f : orthographicFields())
+        accessors.push_back({f.set, f.get});
+    for (const auto& f : viewPlaneFields())
+        accessors.push_back({f.set, f.get});
+    for (const auto& f : viewAngleFields())
+        accessors.push_back({f.set, f.get});
+    ASSERT_EQ(accessors.size(), 11u);
+    for (std::size_t i = 0; i < accessors.size(); ++i) {
+        EXPECT_EQ(accessors[i].first(nullptr, 1.0f), kQ3Failure) << i;
+        EXPECT_EQ(Q3Error_Get(nullptr), kQ3ErrorNotInitialized) << i;
+        EXPECT_EQ(accessors[i].second(nullptr, &out), kQ3Failure) << i;
+        EXPECT_EQ(Q3Error_Get(nullptr), kQ3ErrorNotInitialized) << i;
+    }
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "Q3ApiTest.h"
 
+#include "QD3DGeometry.h"
 #include "QD3DMath.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
@@ -11,6 +12,8 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -235,6 +238,34 @@ TEST(TransformApiUninitialized, EveryFunctionFailsWithNotInitialized)
     EXPECT_TRUE(failed());
     EXPECT_EQ(Q3ResetTransform_Submit(nullptr), kQ3Failure);
     EXPECT_TRUE(failed());
+    TQ3Matrix4x4 mOut{};
+    TQ3Vector3D vOut{};
+    TQ3RotateTransformData rOut{};
+    TQ3Axis axis = kQ3AxisX;
+    float radians = 0;
+    EXPECT_EQ(Q3Transform_GetType(nullptr), kQ3ObjectTypeInvalid);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(Q3Transform_GetMatrix(nullptr, &mOut), nullptr);
+    EXPECT_TRUE(failed());
+    const std::vector<std::function<TQ3Status()>> accessors = {
+        [&] { return Q3Transform_Submit(nullptr, nullptr); },
+        [&] { return Q3MatrixTransform_Set(nullptr, &m); },
+        [&] { return Q3MatrixTransform_Get(nullptr, &mOut); },
+        [&] { return Q3TranslateTransform_Set(nullptr, &v); },
+        [&] { return Q3TranslateTransform_Get(nullptr, &vOut); },
+        [&] { return Q3ScaleTransform_Set(nullptr, &v); },
+        [&] { return Q3ScaleTransform_Get(nullptr, &vOut); },
+        [&] { return Q3RotateTransform_SetData(nullptr, &r); },
+        [&] { return Q3RotateTransform_GetData(nullptr, &rOut); },
+        [&] { return Q3RotateTransform_SetAxis(nullptr, kQ3AxisY); },
+        [&] { return Q3RotateTransform_GetAxis(nullptr, &axis); },
+        [&] { return Q3RotateTransform_SetAngle(nullptr, 1.0f); },
+        [&] { return Q3RotateTransform_GetAngle(nullptr, &radians); },
+    };
+    for (std::size_t i = 0; i < accessors.size(); ++i) {
+        EXPECT_EQ(accessors[i](), kQ3Failure) << "accessor " << i;
+        EXPECT_TRUE(failed()) << "accessor " << i;
+    }
 }
 
 // ---- Submitting: argument checks -------------------------------------------
@@ -412,6 +443,379 @@ TEST_F(TransformApiTest, InvalidDataInsideALoopFailsAndLeavesTheStateAlone)
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3RotateTransform_Submit(&badRotate, v), kQ3Failure), kQ3ErrorInvalidData);
     });
     expectMatrixNear(state, translation(1, 2, 3), "after rejected submits");
+}
+
+// ---- Any transform: type and matrix -----------------------------------------
+
+TEST_F(TransformApiTest, TransformGetTypeReportsEachKind)
+{
+    const TQ3Matrix4x4 m = translation(1, 2, 3);
+    const TQ3Vector3D v{1, 2, 3};
+    const TQ3RotateTransformData r{kQ3AxisY, 0.5f};
+    const std::pair<TQ3TransformObject, TQ3ObjectType> cases[] = {
+        {Q3MatrixTransform_New(&m), kQ3TransformTypeMatrix},
+        {Q3TranslateTransform_New(&v), kQ3TransformTypeTranslate},
+        {Q3ScaleTransform_New(&v), kQ3TransformTypeScale},
+        {Q3RotateTransform_New(&r), kQ3TransformTypeRotate},
+        {Q3ResetTransform_New(), kQ3TransformTypeReset},
+    };
+    for (const auto& c : cases) {
+        EXPECT_EQ(Q3Transform_GetType(c.first), c.second);
+        Q3Object_Dispose(c.first);
+    }
+}
+
+TEST_F(TransformApiTest, TransformGetMatrixIsWhatASubmitApplies)
+{
+    TQ3Matrix4x4 m{};
+    Q3Matrix4x4_SetRotate_X(&m, 0.3f);
+    m.value[3][1] = -2;
+    const TQ3Vector3D offset{1, -2, 3}, factors{2, 0, -1};
+    const TQ3RotateTransformData r{kQ3AxisZ, 1.25f};
+    TQ3TransformObject transforms[] = {Q3MatrixTransform_New(&m), Q3TranslateTransform_New(&offset),
+                                       Q3ScaleTransform_New(&factors), Q3RotateTransform_New(&r),
+                                       Q3ResetTransform_New()};
+    const TQ3Vector3D before{7, 8, 9};
+    for (TQ3TransformObject transform : transforms) {
+        ASSERT_NE(transform, nullptr);
+        TQ3Matrix4x4 got{};
+        EXPECT_EQ(Q3Transform_GetMatrix(transform, &got), &got);
+        // What the view holds after the transform, starting from identity
+        // (a reset transform after a translation gives the identity too).
+        const TQ3Matrix4x4 state = stateAfter([&](TQ3ViewObject v) {
+            Q3TranslateTransform_Submit(&before, v);
+            Q3ResetTransform_Submit(v);
+            EXPECT_EQ(Q3Object_Submit(transform, v), kQ3Success);
+        });
+        expectMatrixNear(got, state, "Q3Transform_GetMatrix");
+        Q3Object_Dispose(transform);
+    }
+}
+
+// ---- Retained transforms: set and get ---------------------------------------
+
+TEST_F(TransformApiTest, MatrixTransformSetReplacesTheMatrixAndBumpsTheEditIndex)
+{
+    const TQ3Matrix4x4 first = translation(1, 2, 3);
+    TQ3Matrix4x4 second{};
+    Q3Matrix4x4_SetScale(&second, 2, 3, 4);
+    second.value[0][3] = 0.5f; // not affine: the matrix is kept as given
+    TQ3TransformObject transform = Q3MatrixTransform_New(&first);
+    TQ3Matrix4x4 out{};
+    EXPECT_EQ(Q3MatrixTransform_Get(transform, &out), kQ3Success);
+    EXPECT_EQ(std::memcmp(&out, &first, sizeof out), 0);
+    const unsigned long edit = Q3Shared_GetEditIndex(transform);
+    EXPECT_EQ(Q3MatrixTransform_Set(transform, &second), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(transform), edit);
+    EXPECT_EQ(Q3MatrixTransform_Get(transform, &out), kQ3Success);
+    EXPECT_EQ(std::memcmp(&out, &second, sizeof out), 0);
+    expectMatrixNear(stateAfter([&](TQ3ViewObject v) { Q3Object_Submit(transform, v); }), second,
+                     "after Set");
+    Q3Object_Dispose(transform);
+}
+
+TEST_F(TransformApiTest, MatrixTransformSetRejectsEveryNonFiniteEntryAndChangesNothing)
+{
+    const TQ3Matrix4x4 good = translation(1, 2, 3);
+    TQ3TransformObject transform = Q3MatrixTransform_New(&good);
+    const unsigned long edit = Q3Shared_GetEditIndex(transform);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            for (float bad : kNonFinite) {
+                TQ3Matrix4x4 m = identity();
+                m.value[i][j] = bad;
+                EXPECT_Q3_ERROR(EXPECT_EQ(Q3MatrixTransform_Set(transform, &m), kQ3Failure),
+                                kQ3ErrorInvalidParameter);
+            }
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3MatrixTransform_Set(transform, nullptr), kQ3Failure),
+                    kQ3ErrorNULLParameter);
+    TQ3Matrix4x4 out{};
+    Q3MatrixTransform_Get(transform, &out);
+    EXPECT_EQ(std::memcmp(&out, &good, sizeof out), 0);
+    EXPECT_EQ(Q3Shared_GetEditIndex(transform), edit);
+    Q3Object_Dispose(transform);
+}
+
+TEST_F(TransformApiTest, TranslateTransformSetMovesTheBoundsOfLaterGeometry)
+{
+    // A segment from (0,0,0) to (3,1,0) as an order-2 NURB curve, bounded
+    // after the retained translation.
+    TQ3RationalPoint4D points[2] = {{0, 0, 0, 1}, {3, 1, 0, 1}};
+    float knots[4] = {0, 0, 1, 1};
+    const TQ3NURBCurveData curve = {2, 2, points, knots, nullptr};
+    const TQ3Vector3D first{10, 20, 30}, second{-1, 0, 5};
+    TQ3TransformObject transform = Q3TranslateTransform_New(&first);
+    auto bounds = [&] {
+        TQ3BoundingBox box{};
+        EXPECT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
+        do {
+            Q3Object_Submit(transform, view());
+            Q3NURBCurve_Submit(&curve, view());
+        } while (Q3View_EndBoundingBox(view(), &box) == kQ3ViewStatusRetraverse);
+        return box;
+    };
+    TQ3BoundingBox box = bounds();
+    EXPECT_FLOAT_EQ(box.min.x, 10);
+    EXPECT_FLOAT_EQ(box.max.y, 21);
+    ASSERT_EQ(Q3TranslateTransform_Set(transform, &second), kQ3Success);
+    TQ3Vector3D out{};
+    EXPECT_EQ(Q3TranslateTransform_Get(transform, &out), kQ3Success);
+    EXPECT_EQ(std::memcmp(&out, &second, sizeof out), 0);
+    box = bounds();
+    EXPECT_EQ(box.isEmpty, kQ3False);
+    EXPECT_FLOAT_EQ(box.min.x, -1);
+    EXPECT_FLOAT_EQ(box.min.y, 0);
+    EXPECT_FLOAT_EQ(box.min.z, 5);
+    EXPECT_FLOAT_EQ(box.max.x, 2);
+    EXPECT_FLOAT_EQ(box.max.y, 1);
+    EXPECT_FLOAT_EQ(box.max.z, 5);
+    Q3Object_Dispose(transform);
+}
+
+TEST_F(TransformApiTest, TransformSubmitAppliesAnyKindAndChecksItsArguments)
+{
+    TQ3RationalPoint4D points[2] = {{0, 0, 0, 1}, {3, 1, 0, 1}};
+    float knots[4] = {0, 0, 1, 1};
+    const TQ3NURBCurveData curve = {2, 2, points, knots, nullptr};
+    const TQ3Vector3D move{10, 20, 30}, grow{2, 2, 2};
+    TQ3TransformObject translate = Q3TranslateTransform_New(&move);
+    TQ3TransformObject scale = Q3ScaleTransform_New(&grow);
+    TQ3BoundingBox box{};
+    ASSERT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
+    do {
+        EXPECT_EQ(Q3Transform_Submit(translate, view()), kQ3Success);
+        EXPECT_EQ(Q3Transform_Submit(scale, view()), kQ3Success);
+        Q3NURBCurve_Submit(&curve, view());
+    } while (Q3View_EndBoundingBox(view(), &box) == kQ3ViewStatusRetraverse);
+    // Row vectors: the later transform applies to the geometry first.
+    EXPECT_FLOAT_EQ(box.min.x, 10);
+    EXPECT_FLOAT_EQ(box.min.y, 20);
+    EXPECT_FLOAT_EQ(box.max.x, 16);
+    EXPECT_FLOAT_EQ(box.max.y, 22);
+    EXPECT_FLOAT_EQ(box.max.z, 30);
+
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_Submit(translate, view()), kQ3Failure), kQ3ErrorViewNotStarted);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_Submit(nullptr, view()), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_Submit(translate, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_Submit(view(), view()), kQ3Failure), kQ3ErrorInvalidObjectType);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_Submit(translate, scale), kQ3Failure), kQ3ErrorInvalidObjectType);
+    Q3Object_Dispose(translate);
+    Q3Object_Dispose(scale);
+}
+
+TEST_F(TransformApiTest, TranslateAndScaleSetRejectNullAndNonFiniteComponentsAndChangeNothing)
+{
+    const TQ3Vector3D good{1, 2, 3};
+    TQ3TransformObject translate = Q3TranslateTransform_New(&good);
+    TQ3TransformObject scale = Q3ScaleTransform_New(&good);
+    const unsigned long translateEdit = Q3Shared_GetEditIndex(translate);
+    const unsigned long scaleEdit = Q3Shared_GetEditIndex(scale);
+    for (float bad : kNonFinite) {
+        const TQ3Vector3D vectors[] = {{bad, 1, 1}, {1, bad, 1}, {1, 1, bad}};
+        for (const TQ3Vector3D& v : vectors) {
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3TranslateTransform_Set(translate, &v), kQ3Failure),
+                            kQ3ErrorInvalidParameter);
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3ScaleTransform_Set(scale, &v), kQ3Failure),
+                            kQ3ErrorInvalidParameter);
+        }
+    }
+    EXPECT_Q3_ERROR(Q3TranslateTransform_Set(translate, nullptr), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(Q3ScaleTransform_Set(scale, nullptr), kQ3ErrorNULLParameter);
+    TQ3Vector3D out{};
+    Q3TranslateTransform_Get(translate, &out);
+    EXPECT_EQ(std::memcmp(&out, &good, sizeof out), 0);
+    Q3ScaleTransform_Get(scale, &out);
+    EXPECT_EQ(std::memcmp(&out, &good, sizeof out), 0);
+    EXPECT_EQ(Q3Shared_GetEditIndex(translate), translateEdit);
+    EXPECT_EQ(Q3Shared_GetEditIndex(scale), scaleEdit);
+    Q3Object_Dispose(translate);
+    Q3Object_Dispose(scale);
+}
+
+TEST_F(TransformApiTest, ScaleTransformSetAcceptsZeroAndNegativeFactorsAndTakesEffect)
+{
+    const TQ3Vector3D first{2, 2, 2}, second{0, -1, 3};
+    TQ3TransformObject transform = Q3ScaleTransform_New(&first);
+    const unsigned long edit = Q3Shared_GetEditIndex(transform);
+    EXPECT_EQ(Q3ScaleTransform_Set(transform, &second), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(transform), edit);
+    TQ3Vector3D out{};
+    EXPECT_EQ(Q3ScaleTransform_Get(transform, &out), kQ3Success);
+    EXPECT_EQ(std::memcmp(&out, &second, sizeof out), 0);
+    TQ3Matrix4x4 expected{};
+    Q3Matrix4x4_SetScale(&expected, 0, -1, 3);
+    expectMatrixNear(stateAfter([&](TQ3ViewObject v) { Q3Object_Submit(transform, v); }), expected,
+                     "after Set");
+    Q3Object_Dispose(transform);
+}
+
+TEST_F(TransformApiTest, RotateTransformSettersReplaceDataAxisAndAngle)
+{
+    const TQ3RotateTransformData first{kQ3AxisX, 0.5f};
+    TQ3TransformObject transform = Q3RotateTransform_New(&first);
+    TQ3RotateTransformData data{};
+    EXPECT_EQ(Q3RotateTransform_GetData(transform, &data), kQ3Success);
+    EXPECT_EQ(data.axis, kQ3AxisX);
+    EXPECT_EQ(data.radians, 0.5f);
+
+    unsigned long edit = Q3Shared_GetEditIndex(transform);
+    const TQ3RotateTransformData second{kQ3AxisY, -2.0f};
+    EXPECT_EQ(Q3RotateTransform_SetData(transform, &second), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(transform), edit);
+    TQ3Axis axis = kQ3AxisX;
+    float radians = 0;
+    EXPECT_EQ(Q3RotateTransform_GetAxis(transform, &axis), kQ3Success);
+    EXPECT_EQ(Q3RotateTransform_GetAngle(transform, &radians), kQ3Success);
+    EXPECT_EQ(axis, kQ3AxisY);
+    EXPECT_EQ(radians, -2.0f);
+
+    edit = Q3Shared_GetEditIndex(transform);
+    EXPECT_EQ(Q3RotateTransform_SetAxis(transform, kQ3AxisZ), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(transform), edit);
+    edit = Q3Shared_GetEditIndex(transform);
+    EXPECT_EQ(Q3RotateTransform_SetAngle(transform, kQ3PiOver2), kQ3Success);
+    EXPECT_NE(Q3Shared_GetEditIndex(transform), edit);
+    EXPECT_EQ(Q3RotateTransform_GetData(transform, &data), kQ3Success);
+    EXPECT_EQ(data.axis, kQ3AxisZ);
+    EXPECT_EQ(data.radians, kQ3PiOver2);
+
+    // The view applies the new rotation: a quarter turn about z takes x to y.
+    const TQ3Matrix4x4 state =
+        stateAfter([&](TQ3ViewObject v) { EXPECT_EQ(Q3Object_Submit(transform, v), kQ3Success); });
+    const TQ3Point3D x{1, 0, 0};
+    TQ3Point3D p{};
+    Q3Point3D_Transform(&x, &state, &p);
+    EXPECT_NEAR(p.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(p.y, 1.0f, 1e-6f);
+    EXPECT_NEAR(p.z, 0.0f, 1e-6f);
+    Q3Object_Dispose(transform);
+}
+
+TEST_F(TransformApiTest, RotateTransformSettersRejectWhatNewRejectsAndChangeNothing)
+{
+    const TQ3RotateTransformData good{kQ3AxisY, 0.75f};
+    TQ3TransformObject transform = Q3RotateTransform_New(&good);
+    const unsigned long edit = Q3Shared_GetEditIndex(transform);
+    for (int axis : {-1, 3, INT_MAX, INT_MIN}) {
+        const TQ3RotateTransformData data = rotateWithRawAxis(axis, 1.0f);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RotateTransform_SetData(transform, &data), kQ3Failure),
+                        kQ3ErrorInvalidData);
+        // Converted, not loaded from memory, as ViewBoundsTest passes bad
+        // enum arguments: what a C caller's int argument becomes.
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RotateTransform_SetAxis(transform, static_cast<TQ3Axis>(axis)),
+                                  kQ3Failure),
+                        kQ3ErrorInvalidData);
+    }
+    for (float bad : kNonFinite) {
+        const TQ3RotateTransformData data{kQ3AxisZ, bad};
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RotateTransform_SetData(transform, &data), kQ3Failure),
+                        kQ3ErrorInvalidData);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RotateTransform_SetAngle(transform, bad), kQ3Failure),
+                        kQ3ErrorInvalidData);
+    }
+    EXPECT_Q3_ERROR(Q3RotateTransform_SetData(transform, nullptr), kQ3ErrorNULLParameter);
+    TQ3RotateTransformData out{};
+    Q3RotateTransform_GetData(transform, &out);
+    EXPECT_EQ(out.axis, good.axis);
+    EXPECT_EQ(out.radians, good.radians);
+    EXPECT_EQ(Q3Shared_GetEditIndex(transform), edit);
+    Q3Object_Dispose(transform);
+}
+
+TEST_F(TransformApiTest, SettingADuplicateLeavesTheOriginalAlone)
+{
+    const TQ3Vector3D first{1, 2, 3}, second{4, 5, 6};
+    TQ3TransformObject original = Q3TranslateTransform_New(&first);
+    TQ3TransformObject copy = Q3Object_Duplicate(original);
+    ASSERT_NE(copy, nullptr);
+    EXPECT_EQ(Q3TranslateTransform_Set(copy, &second), kQ3Success);
+    TQ3Vector3D out{};
+    Q3TranslateTransform_Get(original, &out);
+    EXPECT_EQ(std::memcmp(&out, &first, sizeof out), 0);
+    Q3TranslateTransform_Get(copy, &out);
+    EXPECT_EQ(std::memcmp(&out, &second, sizeof out), 0);
+    Q3Object_Dispose(copy);
+    Q3Object_Dispose(original);
+}
+
+TEST_F(TransformApiTest, AccessorsRejectBadHandlesWrongKindsAndNullPointers)
+{
+    const TQ3Matrix4x4 m = translation(1, 2, 3);
+    const TQ3Vector3D v{1, 2, 3};
+    const TQ3RotateTransformData r{kQ3AxisX, 1.0f};
+    TQ3TransformObject matrix = Q3MatrixTransform_New(&m);
+    TQ3TransformObject translate = Q3TranslateTransform_New(&v);
+    TQ3TransformObject scale = Q3ScaleTransform_New(&v);
+    TQ3TransformObject rotate = Q3RotateTransform_New(&r);
+    TQ3TransformObject reset = Q3ResetTransform_New();
+    TQ3TransformObject dead = Q3TranslateTransform_New(&v);
+    Q3Object_Dispose(dead);
+    TQ3Matrix4x4 mOut = m;
+    TQ3Vector3D vOut = v;
+    TQ3RotateTransformData rOut = r;
+    TQ3Axis axisOut = kQ3AxisX;
+    float angleOut = 1.0f;
+    struct Call {
+        const char* name;
+        TQ3TransformObject right; // a transform the call accepts
+        TQ3Object wrong;          // a live object of another kind
+        bool takesPointer;        // run(_, false) passes a NULL pointer
+        std::function<TQ3Status(TQ3Object, bool)> run;
+    };
+    const std::vector<Call> calls = {
+        {"MatrixTransform_Set", matrix, translate, true,
+         [&](TQ3Object t, bool p) { return Q3MatrixTransform_Set(t, p ? &m : nullptr); }},
+        {"MatrixTransform_Get", matrix, reset, true,
+         [&](TQ3Object t, bool p) { return Q3MatrixTransform_Get(t, p ? &mOut : nullptr); }},
+        {"TranslateTransform_Set", translate, scale, true,
+         [&](TQ3Object t, bool p) { return Q3TranslateTransform_Set(t, p ? &v : nullptr); }},
+        {"TranslateTransform_Get", translate, matrix, true,
+         [&](TQ3Object t, bool p) { return Q3TranslateTransform_Get(t, p ? &vOut : nullptr); }},
+        {"ScaleTransform_Set", scale, translate, true,
+         [&](TQ3Object t, bool p) { return Q3ScaleTransform_Set(t, p ? &v : nullptr); }},
+        {"ScaleTransform_Get", scale, rotate, true,
+         [&](TQ3Object t, bool p) { return Q3ScaleTransform_Get(t, p ? &vOut : nullptr); }},
+        {"RotateTransform_SetData", rotate, matrix, true,
+         [&](TQ3Object t, bool p) { return Q3RotateTransform_SetData(t, p ? &r : nullptr); }},
+        {"RotateTransform_GetData", rotate, scale, true,
+         [&](TQ3Object t, bool p) { return Q3RotateTransform_GetData(t, p ? &rOut : nullptr); }},
+        {"RotateTransform_SetAxis", rotate, translate, false,
+         [&](TQ3Object t, bool) { return Q3RotateTransform_SetAxis(t, kQ3AxisX); }},
+        {"RotateTransform_GetAxis", rotate, reset, true,
+         [&](TQ3Object t, bool p) { return Q3RotateTransform_GetAxis(t, p ? &axisOut : nullptr); }},
+        {"RotateTransform_SetAngle", rotate, matrix, false,
+         [&](TQ3Object t, bool) { return Q3RotateTransform_SetAngle(t, 1.0f); }},
+        {"RotateTransform_GetAngle", rotate, view(), true,
+         [&](TQ3Object t, bool p) { return Q3RotateTransform_GetAngle(t, p ? &angleOut : nullptr); }},
+    };
+    for (const Call& call : calls) {
+        SCOPED_TRACE(call.name);
+        EXPECT_Q3_ERROR(EXPECT_EQ(call.run(nullptr, true), kQ3Failure), kQ3ErrorNULLParameter);
+        EXPECT_Q3_ERROR(EXPECT_EQ(call.run(dead, true), kQ3Failure), kQ3ErrorInvalidObject);
+        EXPECT_Q3_ERROR(EXPECT_EQ(call.run(call.wrong, true), kQ3Failure), kQ3ErrorInvalidObjectType);
+        if (call.takesPointer)
+            EXPECT_Q3_ERROR(EXPECT_EQ(call.run(call.right, false), kQ3Failure), kQ3ErrorNULLParameter);
+        EXPECT_EQ(call.run(call.right, true), kQ3Success);
+    }
+    // Failed Gets left their outputs alone; the successful ones read back what was set.
+    EXPECT_EQ(std::memcmp(&mOut, &m, sizeof m), 0);
+    EXPECT_EQ(std::memcmp(&vOut, &v, sizeof v), 0);
+    EXPECT_EQ(axisOut, kQ3AxisX);
+    EXPECT_EQ(angleOut, 1.0f);
+
+    TQ3Matrix4x4 untouched = m;
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_GetMatrix(nullptr, &untouched), nullptr), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_GetMatrix(dead, &untouched), nullptr), kQ3ErrorInvalidObject);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_GetMatrix(view(), &untouched), nullptr),
+                    kQ3ErrorInvalidObjectType);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_GetMatrix(reset, nullptr), nullptr), kQ3ErrorNULLParameter);
+    EXPECT_EQ(std::memcmp(&untouched, &m, sizeof m), 0);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_GetType(nullptr), kQ3ObjectTypeInvalid), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_GetType(dead), kQ3ObjectTypeInvalid), kQ3ErrorInvalidObject);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Transform_GetType(view()), kQ3ObjectTypeInvalid),
+                    kQ3ErrorInvalidObjectType);
+    for (TQ3Object t : {matrix, translate, scale, rotate, reset})
+        Q3Object_Dispose(t);
 }
 
 } // namespace
