@@ -497,6 +497,7 @@ private:
         case Op::kInitializeExit: initializeExit(); break;
         case Op::kOtherGeometryEdit: otherGeometryEdit(); break;
         case Op::kMath: math(); break;
+        case Op::kAccessors: accessors(); break;
         case Op::kCount: break;
         }
     }
@@ -935,6 +936,150 @@ private:
 
     // Get, Set and Empty of points, lines and polylines; a successful Get is
     // always emptied, and emptying twice must succeed.
+    // Apple's single-field accessors: positions and attribute sets of points,
+    // lines and polylines by index, a geometry's own set, transform and
+    // camera fields. A successful Get of a set hands over a reference.
+    void accessors()
+    {
+        const bool nullArg = m_in.u8() == 0;
+        const bool set = m_in.u8() & 1;
+        const TQ3AttributeSet attributes = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+        TQ3AttributeSet got = nullptr;
+        TQ3AttributeSet* out = nullArg ? nullptr : &got;
+        TQ3Point3D position = point3();
+        TQ3Point3D* where = nullArg ? nullptr : &position;
+        switch (m_in.u8() % 8) {
+        case 0: {
+            const TQ3Object point = pick(Kind::kPoint);
+            set ? STATUS(Q3Point_SetPosition(point, where)) : STATUS(Q3Point_GetPosition(point, where));
+            break;
+        }
+        case 1: {
+            const TQ3Object line = pick(Kind::kLine);
+            const unsigned long index = m_in.index(2);
+            set ? STATUS(Q3Line_SetVertexPosition(line, index, where))
+                : STATUS(Q3Line_GetVertexPosition(line, index, where));
+            break;
+        }
+        case 2: {
+            const TQ3Object line = pick(Kind::kLine);
+            const unsigned long index = m_in.index(2);
+            set ? STATUS(Q3Line_SetVertexAttributeSet(line, index, attributes))
+                : STATUS(Q3Line_GetVertexAttributeSet(line, index, out));
+            break;
+        }
+        case 3: {
+            const TQ3Object polyLine = pick(Kind::kPolyLine);
+            const unsigned long index = m_in.index(8);
+            set ? STATUS(Q3PolyLine_SetVertexPosition(polyLine, index, where))
+                : STATUS(Q3PolyLine_GetVertexPosition(polyLine, index, where));
+            break;
+        }
+        case 4: {
+            const TQ3Object polyLine = pick(Kind::kPolyLine);
+            const unsigned long index = m_in.index(8);
+            if (m_in.u8() & 1)
+                set ? STATUS(Q3PolyLine_SetSegmentAttributeSet(polyLine, index, attributes))
+                    : STATUS(Q3PolyLine_GetSegmentAttributeSet(polyLine, index, out));
+            else
+                set ? STATUS(Q3PolyLine_SetVertexAttributeSet(polyLine, index, attributes))
+                    : STATUS(Q3PolyLine_GetVertexAttributeSet(polyLine, index, out));
+            break;
+        }
+        case 5: {
+            static const Kind kGeometries[] = {Kind::kCurve, Kind::kPolyLine, Kind::kLine, Kind::kPoint};
+            const TQ3Object geometry = pick(kGeometries[m_in.u8() % 4]);
+            set ? STATUS(Q3Geometry_SetAttributeSet(geometry, attributes))
+                : STATUS(Q3Geometry_GetAttributeSet(geometry, out));
+            break;
+        }
+        case 6:
+            transformField(set, nullArg);
+            break;
+        default:
+            cameraField(set, nullArg);
+            break;
+        }
+        if (got != nullptr)
+            hold(got, Kind::kAttributeSet);
+    }
+
+    void transformField(bool set, bool nullArg)
+    {
+        const TQ3Object transform = pick(Kind::kTransform);
+        TQ3Matrix4x4 matrix = readMatrix();
+        TQ3Vector3D vector = vector3();
+        TQ3RotateTransformData rotate{};
+        const std::int32_t rawAxis = enumValue(3);
+        setRaw(rotate.axis, rawAxis);
+        rotate.radians = m_in.value();
+        TQ3Axis axisOut{};
+        float radians = rotate.radians;
+        switch (m_in.u8() % 7) {
+        case 0:
+            set ? STATUS(Q3MatrixTransform_Set(transform, nullArg ? nullptr : &matrix))
+                : STATUS(Q3MatrixTransform_Get(transform, nullArg ? nullptr : &matrix));
+            break;
+        case 1:
+            set ? STATUS(Q3TranslateTransform_Set(transform, nullArg ? nullptr : &vector))
+                : STATUS(Q3TranslateTransform_Get(transform, nullArg ? nullptr : &vector));
+            break;
+        case 2:
+            set ? STATUS(Q3ScaleTransform_Set(transform, nullArg ? nullptr : &vector))
+                : STATUS(Q3ScaleTransform_Get(transform, nullArg ? nullptr : &vector));
+            break;
+        case 3:
+            set ? STATUS(Q3RotateTransform_SetData(transform, nullArg ? nullptr : &rotate))
+                : STATUS(Q3RotateTransform_GetData(transform, nullArg ? nullptr : &rotate));
+            break;
+        case 4:
+            set ? STATUS(q3fuzz_RotateTransform_SetAxis(transform, rawAxis))
+                : STATUS(Q3RotateTransform_GetAxis(transform, nullArg ? nullptr : &axisOut));
+            break;
+        case 5:
+            set ? STATUS(Q3RotateTransform_SetAngle(transform, radians))
+                : STATUS(Q3RotateTransform_GetAngle(transform, nullArg ? nullptr : &radians));
+            break;
+        default:
+            if (set)
+                QUERY(Q3Transform_GetType(transform), TQ3ObjectType{kQ3ObjectTypeInvalid});
+            else
+                POINTER(Q3Transform_GetMatrix(transform, nullArg ? nullptr : &matrix));
+            break;
+        }
+    }
+
+    void cameraField(bool set, bool nullArg)
+    {
+        using Setter = TQ3Status (*)(TQ3CameraObject, float);
+        using Getter = TQ3Status (*)(TQ3CameraObject, float*);
+        struct Field {
+            const char* name;
+            Setter setter;
+            Getter getter;
+        };
+        static const Field kFields[] = {
+            {"Q3OrthographicCamera_Left", Q3OrthographicCamera_SetLeft, Q3OrthographicCamera_GetLeft},
+            {"Q3OrthographicCamera_Top", Q3OrthographicCamera_SetTop, Q3OrthographicCamera_GetTop},
+            {"Q3OrthographicCamera_Right", Q3OrthographicCamera_SetRight, Q3OrthographicCamera_GetRight},
+            {"Q3OrthographicCamera_Bottom", Q3OrthographicCamera_SetBottom, Q3OrthographicCamera_GetBottom},
+            {"Q3ViewPlaneCamera_ViewPlane", Q3ViewPlaneCamera_SetViewPlane, Q3ViewPlaneCamera_GetViewPlane},
+            {"Q3ViewPlaneCamera_HalfWidth", Q3ViewPlaneCamera_SetHalfWidth, Q3ViewPlaneCamera_GetHalfWidth},
+            {"Q3ViewPlaneCamera_HalfHeight", Q3ViewPlaneCamera_SetHalfHeight, Q3ViewPlaneCamera_GetHalfHeight},
+            {"Q3ViewPlaneCamera_CenterX", Q3ViewPlaneCamera_SetCenterX, Q3ViewPlaneCamera_GetCenterX},
+            {"Q3ViewPlaneCamera_CenterY", Q3ViewPlaneCamera_SetCenterY, Q3ViewPlaneCamera_GetCenterY},
+            {"Q3ViewAngleAspectCamera_FOV", Q3ViewAngleAspectCamera_SetFOV, Q3ViewAngleAspectCamera_GetFOV},
+            {"Q3ViewAngleAspectCamera_AspectRatio", Q3ViewAngleAspectCamera_SetAspectRatio,
+             Q3ViewAngleAspectCamera_GetAspectRatio},
+        };
+        const Field& field = kFields[m_in.u8() % (sizeof kFields / sizeof kFields[0])];
+        const TQ3Object camera = pick(Kind::kCamera);
+        float value = m_in.value();
+        begin();
+        const TQ3Status status = set ? field.setter(camera, value) : field.getter(camera, nullArg ? nullptr : &value);
+        checkStatus(field.name, status);
+    }
+
     void otherGeometryEdit()
     {
         const std::uint8_t family = m_in.u8() % 3;

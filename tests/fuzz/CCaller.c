@@ -4,6 +4,7 @@
 
 #include "QD3DDrawContext.h"
 #include "QD3DRenderer.h"
+#include "QD3DTransform.h"
 #include "QD3DView.h"
 
 TQ3Status q3fuzz_SetPaneState(TQ3Object drawContext, int state)
@@ -29,4 +30,9 @@ TQ3Status q3fuzz_StartBoundingBox(TQ3Object view, int computeBounds)
 TQ3Status q3fuzz_StartBoundingSphere(TQ3Object view, int computeBounds)
 {
     return Q3View_StartBoundingSphere(view, (TQ3ComputeBounds)computeBounds);
+}
+
+TQ3Status q3fuzz_RotateTransform_SetAxis(TQ3Object transform, int axis)
+{
+    return Q3RotateTransform_SetAxis(transform, (TQ3Axis)axis);
 }

@@ -71,6 +71,7 @@ enum class Op : std::uint8_t {
     kInitializeExit,
     kOtherGeometryEdit,
     kMath,
+    kAccessors,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -482,6 +482,40 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.u8(2);
         s.endRendering().startBox().submitHeld(kPolyLine).submitHeld(kPoint).endBox();
     }
+    // Apple's single-field accessors on points, lines, polylines, transforms
+    // and cameras: good values, NaN, indices at the ends and beyond.
+    {
+        Seed& s = add("accessors");
+        s.op(Op::kNewOtherGeometry).u8(0).u8(0).value(1).value(1).value(1);
+        s.op(Op::kNewOtherGeometry).u8(1).u8(0).value(0).value(0).value(0).value(1).value(1).value(0);
+        s.op(Op::kNewOtherGeometry).u8(2).u8(0).u8(3).value(0).value(0).value(0).value(1).value(0).value(0);
+        s.value(1).value(1).value(0);
+        s.op(Op::kNewTransform).u8(1).value(1).value(2).value(3).u8(1);
+        s.scene(2);
+        // accessors(): null-argument byte, set/get byte, attribute-set byte, a position, the family.
+        auto call = [&s](bool set, std::uint8_t family, float x) -> Seed& {
+            return s.op(Op::kAccessors).u8(1).u8(set ? 1 : 0).u8(0).value(x).value(2).value(3).u8(family);
+        };
+        call(true, 0, 5).held();                      // Q3Point_SetPosition
+        call(false, 0, 0).held();                     // Q3Point_GetPosition
+        call(true, 1, 4).held().smallIndex(1);        // Q3Line_SetVertexPosition, last end
+        call(true, 1, 4).held().rawIndex(0xFFFFFFFFu); // out of range
+        call(false, 2, 0).held().smallIndex(0);       // Q3Line_GetVertexAttributeSet
+        call(true, 3, 7).held().smallIndex(2);        // Q3PolyLine_SetVertexPosition, last vertex
+        call(true, 3, 7).held().smallIndex(3);        // one past the end
+        s.op(Op::kAccessors).u8(1).u8(1).u8(0).special(0).value(0).value(0).u8(3).held().smallIndex(1); // NaN
+        call(false, 4, 0).held().smallIndex(1).u8(1); // Q3PolyLine_GetSegmentAttributeSet
+        call(true, 4, 0).held().rawIndex(0xFFFFFFFFu).u8(1);
+        call(false, 5, 0).u8(3).held();               // Q3Geometry_GetAttributeSet of the point
+        // transformField(): the transform, a matrix, a vector, an axis, an angle, the field.
+        call(true, 6, 0).held().u8(0).value(-1).value(0).value(4).u8(1).value(0.5f).u8(1); // Translate_Set
+        call(false, 6, 0).held().u8(0).value(0).value(0).value(0).u8(1).value(0).u8(6);    // GetMatrix
+        // cameraField(): the field, the camera, the value.
+        call(true, 7, 0).u8(9).held().value(1);       // Q3ViewAngleAspectCamera_SetFOV
+        call(true, 7, 0).u8(9).held().special(0);     // NaN
+        call(false, 7, 0).u8(10).held().value(0);     // GetAspectRatio
+        s.startRendering().submitHeld(kPoint).submitHeld(kLine).submitHeld(kPolyLine).endRendering();
+    }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {
         Seed& s = add("initialize-exit");
