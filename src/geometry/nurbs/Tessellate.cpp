@@ -220,10 +220,6 @@ struct Sample {
     bool mapped = false;
 };
 
-// Most gaps (stretches without an image between two mapped samples) one measurable
-// run's march splits out; past that, a gap costs two unmeasured segments.
-constexpr unsigned kMaxGapsPerRun = 64;
-
 constexpr std::uint32_t kNoBoundary = std::numeric_limits<std::uint32_t>::max();
 
 // A maximal stretch of one span that is all measurable (every point mapped, as far as
@@ -394,7 +390,8 @@ private:
                 double length = 0.0;
                 if (measurable(a, b, length)) {
                     addPiece(s, j, true, length, kNoBoundary, kNoBoundary);
-                } else if (a.mapped != b.mapped) {
+                } else if (a.mapped != b.mapped && m_edgeSearches < kMaxEdgeSearches) {
+                    ++m_edgeSearches;
                     const std::uint32_t index = std::uint32_t(m_boundaries.size());
                     m_boundaries.push_back(a.mapped ? boundaryBetween(a, b) : boundaryBetween(b, a));
                     const Sample& edge = m_boundaries.back();
@@ -608,7 +605,8 @@ private:
             bool unmappable = false;
             Sample lastMapped;
             const Sample next = findCrossing(current, lo, m_table[j], unmappable, lastMapped);
-            if (unmappable && gaps < kMaxGapsPerRun) {
+            if (unmappable && gaps < kMaxGapsPerRun && m_edgeSearches + 2 <= kMaxEdgeSearches) {
+                m_edgeSearches += 2;
                 // The curve loses its image between lastMapped and table sample j: put
                 // both edges of the gap and the point without an image between them in
                 // the table, so the march measures up to the near edge and resumes
@@ -634,7 +632,8 @@ private:
             }
             emit(current);
             if (unmappable) {
-                // Too many gaps in this run: two unmeasured chords to table sample j.
+                // Past kMaxGapsPerRun or kMaxEdgeSearches: two unmeasured chords to
+                // table sample j.
                 emit(next);
                 m_out.unmeasuredSegments += 2;
                 current = m_table[j];
@@ -701,6 +700,7 @@ private:
 
     std::vector<Run> m_runs;
     std::vector<Sample> m_boundaries;  // where the image ends inside a probe interval
+    std::size_t m_edgeSearches = 0;    // boundaryBetween calls so far, up to kMaxEdgeSearches
     std::size_t m_measurableRuns = 0;
     std::size_t m_unmeasurableIntervals = 0;
     double m_totalLength = 0.0;

@@ -56,6 +56,19 @@ constexpr std::uint32_t probeSegmentsPerSpan(unsigned order)
 constexpr std::uint32_t kMaxLengthTableSegments = std::uint32_t{1} << 16;
 constexpr unsigned kMaxRootIterations = 60;
 
+/// Adaptive method: most gaps (stretches without an image between two mapped samples)
+/// the march of one run splits out by finding their edges; past that, a gap costs two
+/// unmeasured segments. Each split inserts into the run's sample table, so this bounds
+/// that work by kMaxGapsPerRun times the table.
+constexpr unsigned kMaxGapsPerRun = 16;
+
+/// Adaptive method: most edge searches (bisections of kMaxRootIterations evaluations
+/// at most) one tessellation makes; past that, a probe interval with one mapped end is
+/// one unmeasured segment and a gap two, as if no edge were looked for. Bounds the time
+/// and the memory of the edges for a curve that crosses the edge of the mapping in
+/// every probe interval.
+constexpr std::size_t kMaxEdgeSearches = std::size_t{1} << 16;
+
 /// Maps a curve point (the curve's local coordinates) into the space where segment
 /// lengths are measured: local-to-world for world space, local-to-pixels including the
 /// perspective divide for screen space (set z to 0 there). Returns false when the point

@@ -444,6 +444,60 @@ TEST(NurbsTessellate, UnmappableCurveGetsProbeSegmentsPerSpan)
     expectPolylineInvariants(curve, result);
 }
 
+// A mapping that has no image right of x = edge: the curve is measured up to the
+// edge (a vertex within a few ulps of it), and beyond only unmeasured segments start.
+TEST(NurbsTessellate, ACrossingProbeIntervalIsMeasuredUpToTheEdge)
+{
+    const TestCurve curve = test::listingOneCurve();
+    const double edge = 1.3;  // inside a probe interval of the single span
+    const PointMapping leftOnly = [edge](const Point3& p, Point3& q) {
+        q = p;
+        return p.x <= edge;
+    };
+    const double c1 = 0.05;
+    const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, leftOnly);
+    expectPolylineInvariants(curve, result);
+    const std::vector<float>& v = result.vertices;
+    bool edgeFound = false;
+    for (std::size_t i = 0; i < result.vertexCount(); ++i) {
+        edgeFound = edgeFound || std::fabs(v[3 * i] - edge) < 1e-6;
+        if (i > 0 && v[3 * i] <= edge && v[3 * i - 3] <= edge) {
+            const double dx = v[3 * i] - v[3 * i - 3], dy = v[3 * i + 1] - v[3 * i - 2];
+            EXPECT_LE(std::hypot(dx, dy), c1 + 1e-6) << "segment " << i;
+        }
+    }
+    EXPECT_TRUE(edgeFound);
+    EXPECT_GT(result.unmeasuredSegments, 0u);
+}
+
+// A zigzag that crosses the edge of the mapping once in every span, with more
+// spans than kMaxEdgeSearches: the first kMaxEdgeSearches crossings get their
+// edge, the rest are unmeasured probe intervals, and the work stays bounded.
+TEST(NurbsTessellate, EdgeSearchesStopAtTheirBudget)
+{
+    const std::size_t spans = kMaxEdgeSearches + 3000;
+    TestCurve zigzag;
+    zigzag.order = 2;
+    for (std::size_t i = 0; i <= spans; ++i)
+        zigzag.points.insert(zigzag.points.end(), {float(i % 2), float(i) * 0.25f, 0.0f, 1.0f});
+    zigzag.knots.push_back(0.0f);
+    for (std::size_t i = 0; i <= spans; ++i)
+        zigzag.knots.push_back(float(i));
+    zigzag.knots.push_back(float(spans));
+    const double edge = 0.55;  // inside a probe interval of every span
+    const PointMapping leftOnly = [edge](const Point3& p, Point3& q) {
+        q = p;
+        return p.x <= edge;
+    };
+    const TessellatedCurve result = tessellateAdaptive(zigzag.ref(), 10.0, leftOnly);
+    ASSERT_GT(result.vertexCount(), spans);
+    std::size_t edges = 0;
+    for (std::size_t i = 0; i < result.vertexCount(); ++i)
+        edges += std::fabs(result.vertices[3 * i] - edge) < 1e-6 ? 1 : 0;
+    EXPECT_EQ(edges, kMaxEdgeSearches);
+    EXPECT_FALSE(result.capped);
+}
+
 TEST(NurbsTessellate, NonFiniteMappedPointCountsAsUnmappable)
 {
     const TestCurve curve = test::listingOneCurve();
