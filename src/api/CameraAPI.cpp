@@ -7,21 +7,7 @@
 using namespace q3;
 using q3::api::guard;
 using q3::api::guardStatus;
-
-namespace {
-
-// The Get half of a single-field accessor: the camera (of kind Kind), then
-// the output pointer, then the one field of the kind's data.
-template <class Kind, class Data>
-void readField(TQ3CameraObject camera, Data (Kind::*read)() const, float Data::*field, float* out,
-               const char* name)
-{
-    const Kind& source = lookup<Kind>(camera, "camera");
-    requireNonNull(out, name);
-    *out = (source.*read)().*field;
-}
-
-} // namespace
+using q3::api::readInto;
 
 extern "C" {
 
@@ -169,8 +155,8 @@ TQ3Status Q3OrthographicCamera_SetLeft(TQ3CameraObject camera, float left)
 TQ3Status Q3OrthographicCamera_GetLeft(TQ3CameraObject camera, float* left)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &OrthographicCamera::orthographicData,
-                  &TQ3OrthographicCameraData::left, left, "left");
+        readInto<OrthographicCamera>(camera, "camera", left, "left",
+                                     [](const OrthographicCamera& c) { return c.orthographicData().left; });
     });
 }
 
@@ -185,8 +171,8 @@ TQ3Status Q3OrthographicCamera_SetTop(TQ3CameraObject camera, float top)
 TQ3Status Q3OrthographicCamera_GetTop(TQ3CameraObject camera, float* top)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &OrthographicCamera::orthographicData,
-                  &TQ3OrthographicCameraData::top, top, "top");
+        readInto<OrthographicCamera>(camera, "camera", top, "top",
+                                     [](const OrthographicCamera& c) { return c.orthographicData().top; });
     });
 }
 
@@ -201,8 +187,8 @@ TQ3Status Q3OrthographicCamera_SetRight(TQ3CameraObject camera, float right)
 TQ3Status Q3OrthographicCamera_GetRight(TQ3CameraObject camera, float* right)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &OrthographicCamera::orthographicData,
-                  &TQ3OrthographicCameraData::right, right, "right");
+        readInto<OrthographicCamera>(camera, "camera", right, "right",
+                                     [](const OrthographicCamera& c) { return c.orthographicData().right; });
     });
 }
 
@@ -217,8 +203,8 @@ TQ3Status Q3OrthographicCamera_SetBottom(TQ3CameraObject camera, float bottom)
 TQ3Status Q3OrthographicCamera_GetBottom(TQ3CameraObject camera, float* bottom)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &OrthographicCamera::orthographicData,
-                  &TQ3OrthographicCameraData::bottom, bottom, "bottom");
+        readInto<OrthographicCamera>(camera, "camera", bottom, "bottom",
+                                     [](const OrthographicCamera& c) { return c.orthographicData().bottom; });
     });
 }
 
@@ -260,8 +246,8 @@ TQ3Status Q3ViewPlaneCamera_SetViewPlane(TQ3CameraObject camera, float viewPlane
 TQ3Status Q3ViewPlaneCamera_GetViewPlane(TQ3CameraObject camera, float* viewPlane)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &ViewPlaneCamera::viewPlaneData,
-                  &TQ3ViewPlaneCameraData::viewPlane, viewPlane, "viewPlane");
+        readInto<ViewPlaneCamera>(camera, "camera", viewPlane, "viewPlane",
+                                  [](const ViewPlaneCamera& c) { return c.viewPlaneData().viewPlane; });
     });
 }
 
@@ -276,9 +262,8 @@ TQ3Status Q3ViewPlaneCamera_SetHalfWidth(TQ3CameraObject camera, float halfWidth
 TQ3Status Q3ViewPlaneCamera_GetHalfWidth(TQ3CameraObject camera, float* halfWidthAtViewPlane)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &ViewPlaneCamera::viewPlaneData,
-                  &TQ3ViewPlaneCameraData::halfWidthAtViewPlane, halfWidthAtViewPlane,
-                  "halfWidthAtViewPlane");
+        readInto<ViewPlaneCamera>(camera, "camera", halfWidthAtViewPlane, "halfWidthAtViewPlane",
+            [](const ViewPlaneCamera& c) { return c.viewPlaneData().halfWidthAtViewPlane; });
     });
 }
 
@@ -293,9 +278,8 @@ TQ3Status Q3ViewPlaneCamera_SetHalfHeight(TQ3CameraObject camera, float halfHeig
 TQ3Status Q3ViewPlaneCamera_GetHalfHeight(TQ3CameraObject camera, float* halfHeightAtViewPlane)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &ViewPlaneCamera::viewPlaneData,
-                  &TQ3ViewPlaneCameraData::halfHeightAtViewPlane, halfHeightAtViewPlane,
-                  "halfHeightAtViewPlane");
+        readInto<ViewPlaneCamera>(camera, "camera", halfHeightAtViewPlane, "halfHeightAtViewPlane",
+            [](const ViewPlaneCamera& c) { return c.viewPlaneData().halfHeightAtViewPlane; });
     });
 }
 
@@ -310,9 +294,8 @@ TQ3Status Q3ViewPlaneCamera_SetCenterX(TQ3CameraObject camera, float centerXOnVi
 TQ3Status Q3ViewPlaneCamera_GetCenterX(TQ3CameraObject camera, float* centerXOnViewPlane)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &ViewPlaneCamera::viewPlaneData,
-                  &TQ3ViewPlaneCameraData::centerXOnViewPlane, centerXOnViewPlane,
-                  "centerXOnViewPlane");
+        readInto<ViewPlaneCamera>(camera, "camera", centerXOnViewPlane, "centerXOnViewPlane",
+            [](const ViewPlaneCamera& c) { return c.viewPlaneData().centerXOnViewPlane; });
     });
 }
 
@@ -327,9 +310,8 @@ TQ3Status Q3ViewPlaneCamera_SetCenterY(TQ3CameraObject camera, float centerYOnVi
 TQ3Status Q3ViewPlaneCamera_GetCenterY(TQ3CameraObject camera, float* centerYOnViewPlane)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &ViewPlaneCamera::viewPlaneData,
-                  &TQ3ViewPlaneCameraData::centerYOnViewPlane, centerYOnViewPlane,
-                  "centerYOnViewPlane");
+        readInto<ViewPlaneCamera>(camera, "camera", centerYOnViewPlane, "centerYOnViewPlane",
+            [](const ViewPlaneCamera& c) { return c.viewPlaneData().centerYOnViewPlane; });
     });
 }
 
@@ -373,8 +355,8 @@ TQ3Status Q3ViewAngleAspectCamera_SetFOV(TQ3CameraObject camera, float fov)
 TQ3Status Q3ViewAngleAspectCamera_GetFOV(TQ3CameraObject camera, float* fov)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &ViewAngleAspectCamera::viewAngleAspectData,
-                  &TQ3ViewAngleAspectCameraData::fov, fov, "fov");
+        readInto<ViewAngleAspectCamera>(camera, "camera", fov, "fov",
+            [](const ViewAngleAspectCamera& c) { return c.viewAngleAspectData().fov; });
     });
 }
 
@@ -389,9 +371,8 @@ TQ3Status Q3ViewAngleAspectCamera_SetAspectRatio(TQ3CameraObject camera, float a
 TQ3Status Q3ViewAngleAspectCamera_GetAspectRatio(TQ3CameraObject camera, float* aspectRatioXToY)
 {
     return guardStatus(__func__, [&] {
-        readField(camera, &ViewAngleAspectCamera::viewAngleAspectData,
-                  &TQ3ViewAngleAspectCameraData::aspectRatioXToY, aspectRatioXToY,
-                  "aspectRatioXToY");
+        readInto<ViewAngleAspectCamera>(camera, "camera", aspectRatioXToY, "aspectRatioXToY",
+            [](const ViewAngleAspectCamera& c) { return c.viewAngleAspectData().aspectRatioXToY; });
     });
 }
 

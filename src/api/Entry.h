@@ -48,4 +48,15 @@ TQ3Status guardStatus(const char* function, Body&& body) noexcept
     });
 }
 
+/// The Get half of a single-value accessor, in the order every Get checks:
+/// the handle (as a T, called `handleName` in errors), then the output pointer
+/// (`outName`), then *out = read(object). Nothing is written on failure.
+template <class T, class Value, class Read>
+void readInto(TQ3Object handle, const char* handleName, Value* out, const char* outName, Read read)
+{
+    const T& source = lookup<T>(handle, handleName);
+    requireNonNull(out, outName);
+    *out = read(source);
+}
+
 } // namespace q3::api

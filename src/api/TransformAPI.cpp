@@ -8,6 +8,7 @@
 using namespace q3;
 using q3::api::guard;
 using q3::api::guardStatus;
+using q3::api::readInto;
 
 namespace {
 
@@ -20,16 +21,6 @@ void submitTransient(const Data* data, const char* name, TQ3ViewObject view)
     ShapeVisitor& target = lookup<View>(view, "view").submitTarget();
     const Ref<T> transform = makeShared<T>(*data);
     target.visitTransform(*transform);
-}
-
-// The Get half of a retained transform's accessors: the handle, then the
-// output pointer, then a copy of the value.
-template <class T, class Value, class Read>
-void readInto(TQ3TransformObject transform, Value* out, const char* name, Read read)
-{
-    const T& source = lookup<T>(transform, "transform");
-    requireNonNull(out, name);
-    *out = read(source);
 }
 
 } // namespace
@@ -45,7 +36,7 @@ TQ3ObjectType Q3Transform_GetType(TQ3TransformObject transform)
 TQ3Matrix4x4* Q3Transform_GetMatrix(TQ3TransformObject transform, TQ3Matrix4x4* matrix)
 {
     return guard(__func__, static_cast<TQ3Matrix4x4*>(nullptr), [&] {
-        readInto<Transform>(transform, matrix, "matrix",
+        readInto<Transform>(transform, "transform", matrix, "matrix",
                             [](const Transform& t) { return t.matrix(); });
         return matrix;
     });
@@ -84,7 +75,7 @@ TQ3Status Q3MatrixTransform_Set(TQ3TransformObject transform, const TQ3Matrix4x4
 TQ3Status Q3MatrixTransform_Get(TQ3TransformObject transform, TQ3Matrix4x4* matrix)
 {
     return guardStatus(__func__, [&] {
-        readInto<MatrixTransform>(transform, matrix, "matrix",
+        readInto<MatrixTransform>(transform, "transform", matrix, "matrix",
                                   [](const MatrixTransform& t) { return t.matrix(); });
     });
 }
@@ -115,7 +106,7 @@ TQ3Status Q3TranslateTransform_Set(TQ3TransformObject transform, const TQ3Vector
 TQ3Status Q3TranslateTransform_Get(TQ3TransformObject transform, TQ3Vector3D* translate)
 {
     return guardStatus(__func__, [&] {
-        readInto<TranslateTransform>(transform, translate, "translate",
+        readInto<TranslateTransform>(transform, "transform", translate, "translate",
                                      [](const TranslateTransform& t) { return t.translate(); });
     });
 }
@@ -145,7 +136,7 @@ TQ3Status Q3ScaleTransform_Set(TQ3TransformObject transform, const TQ3Vector3D* 
 TQ3Status Q3ScaleTransform_Get(TQ3TransformObject transform, TQ3Vector3D* scale)
 {
     return guardStatus(__func__, [&] {
-        readInto<ScaleTransform>(transform, scale, "scale",
+        readInto<ScaleTransform>(transform, "transform", scale, "scale",
                                  [](const ScaleTransform& t) { return t.scale(); });
     });
 }
@@ -176,7 +167,7 @@ TQ3Status Q3RotateTransform_SetData(TQ3TransformObject transform,
 TQ3Status Q3RotateTransform_GetData(TQ3TransformObject transform, TQ3RotateTransformData* data)
 {
     return guardStatus(__func__, [&] {
-        readInto<RotateTransform>(transform, data, "data",
+        readInto<RotateTransform>(transform, "transform", data, "data",
                                   [](const RotateTransform& t) { return t.data(); });
     });
 }
@@ -191,7 +182,7 @@ TQ3Status Q3RotateTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
 TQ3Status Q3RotateTransform_GetAxis(TQ3TransformObject transform, TQ3Axis* axis)
 {
     return guardStatus(__func__, [&] {
-        readInto<RotateTransform>(transform, axis, "axis",
+        readInto<RotateTransform>(transform, "transform", axis, "axis",
                                   [](const RotateTransform& t) { return t.data().axis; });
     });
 }
@@ -205,7 +196,7 @@ TQ3Status Q3RotateTransform_SetAngle(TQ3TransformObject transform, float radians
 TQ3Status Q3RotateTransform_GetAngle(TQ3TransformObject transform, float* radians)
 {
     return guardStatus(__func__, [&] {
-        readInto<RotateTransform>(transform, radians, "radians",
+        readInto<RotateTransform>(transform, "transform", radians, "radians",
                                   [](const RotateTransform& t) { return t.data().radians; });
     });
 }
