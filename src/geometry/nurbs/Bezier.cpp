@@ -52,13 +52,6 @@ struct Binomials {
 };
 constexpr Binomials kBinomials;
 
-inline Point4 lerp(const Point4& a, const Point4& b, double alpha)
-{
-    const double beta = 1.0 - alpha;
-    return Point4{beta * a.x + alpha * b.x, beta * a.y + alpha * b.y,
-                  beta * a.z + alpha * b.z, beta * a.w + alpha * b.w};
-}
-
 // ---- Vector code paths -------------------------------------------------------------
 //
 // The hot loops are written once over a GCC/Clang vector type V of N doubles and
@@ -103,7 +96,8 @@ Q3_ALWAYS_INLINE void splat(V& v, double value)
         v[i] = value;
 }
 
-// out = (1 - alpha) a + alpha b, as lerp() computes it, on 4 / N vectors.
+// out = (1 - alpha) a + alpha b, per coordinate as (1 - alpha) * a + alpha * b, on
+// 4 / N vectors.
 template <typename V>
 Q3_ALWAYS_INLINE void lerpInto(const Point4& a, const Point4& b, double alpha, Point4& out)
 {
@@ -411,7 +405,7 @@ void spanToBezier(const CurveRef& curve, std::size_t l, Point4* out)
     for (unsigned s = 1; s <= deg; ++s) {
         for (unsigned m = deg; m >= s; --m) {
             const double xm = x[l + m - s + 1];
-            out[m] = lerp(out[m - 1], out[m], (b - a) / (xm - a));
+            lerpInto<Double2>(out[m - 1], out[m], (b - a) / (xm - a), out[m]);
         }
     }
 }
