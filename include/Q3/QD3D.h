@@ -28,6 +28,54 @@ extern "C" {
 #define Q3_EXTERN_API_C(_type) extern _type
 #endif
 
+/* ---- Platform ----------------------------------------------------------- */
+
+/*
+ * Apple's platform switches, as QD3D.h defines them for a Unix target (Q3
+ * runs on Linux), for legacy code that tests them with #if. QD3D_EXPORT,
+ * QD3D_CALL and QD3D_CALLBACK are empty outside Win32, as in QD3D.h.
+ */
+#define OS_MACINTOSH 0
+#define OS_WIN32 0
+#define OS_UNIX 1
+#define OS_NEXT 0
+#define WINDOW_SYSTEM_MACINTOSH 0
+#define WINDOW_SYSTEM_WIN32 0
+#define WINDOW_SYSTEM_X11 1
+#define WINDOW_SYSTEM_NEXT 0
+
+#define QD3D_EXPORT
+#define QD3D_CALL
+#define QD3D_CALLBACK
+
+/* ---- Basic types -------------------------------------------------------- */
+
+/*
+ * Apple's fixed-size names (QuickDraw 3D 1.6 declares them in QD3DIO.h, which
+ * includes QD3D.h; Q3 declares them here, where later code expects them).
+ * They are declared exactly as Apple does: TQ3Uns32 and TQ3Int32 are
+ * unsigned long and long, which is 64 bits on LP64 Linux (legacy code that
+ * passes their address where an unsigned long * is expected keeps working;
+ * Q3's file I/O reads and writes 32 bits for them). The 64-bit types are
+ * structs of two halves, high half first on big-endian machines.
+ */
+typedef unsigned char TQ3Uns8;
+typedef signed char TQ3Int8;
+typedef unsigned short TQ3Uns16;
+typedef signed short TQ3Int16;
+typedef unsigned long TQ3Uns32;
+typedef signed long TQ3Int32;
+#if defined(__BYTE_ORDER__) && defined(__ORDER_BIG_ENDIAN__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+typedef struct TQ3Uns64 { unsigned long hi; unsigned long lo; } TQ3Uns64;
+typedef struct TQ3Int64 { signed long hi; unsigned long lo; } TQ3Int64;
+#else
+typedef struct TQ3Uns64 { unsigned long lo; unsigned long hi; } TQ3Uns64;
+typedef struct TQ3Int64 { unsigned long lo; signed long hi; } TQ3Int64;
+#endif
+typedef float TQ3Float32;
+typedef double TQ3Float64;
+typedef TQ3Uns32 TQ3Size;
+
 /* ---- Objects ------------------------------------------------------------ */
 
 typedef long TQ3ObjectType;
@@ -64,9 +112,19 @@ typedef TQ3ShapeObject TQ3UnknownObject;
 typedef TQ3ShapeObject TQ3ReferenceObject;
 typedef TQ3ShapeObject TQ3StateOperatorObject;
 
+typedef TQ3ShapePartObject TQ3MeshPartObject;
+typedef TQ3MeshPartObject TQ3MeshFacePartObject;
+typedef TQ3MeshPartObject TQ3MeshEdgePartObject;
+typedef TQ3MeshPartObject TQ3MeshVertexPartObject;
+
 typedef TQ3GroupObject TQ3DisplayGroupObject;
 typedef TQ3ShaderObject TQ3SurfaceShaderObject;
 typedef TQ3ShaderObject TQ3IlluminationShaderObject;
+
+/* A position of an object in a group (QD3DGroup.h). */
+typedef struct OpaqueTQ3GroupPosition *TQ3GroupPosition;
+/* A controller's reference (QuickDraw 3D's controller API, which Q3 lacks). */
+typedef void *TQ3ControllerRef;
 
 enum { kQ3StringMaximumLength = 1024 };
 typedef char TQ3ObjectClassNameString[kQ3StringMaximumLength];

@@ -2,9 +2,10 @@
 /* Copyright (c) 2026 The Q3 authors */
 
 /*
- * Geometries: NURB curves, polylines, lines and points, in retained mode (an
- * object made by ..._New and drawn with Q3Geometry_Submit) and immediate mode
- * (a data structure drawn at once with ..._Submit).
+ * Geometries: NURB curves, polylines, lines, points, triangles, polygons and
+ * triangle meshes, in retained mode (an object made by ..._New and drawn with
+ * Q3Geometry_Submit) and immediate mode (a data structure drawn at once with
+ * ..._Submit).
  *
  * Error conventions shared by every function in this header: a call that
  * fails posts exactly one error and leaves every object and output it was
@@ -19,6 +20,31 @@
  *
  * Attribute sets inside the data structures may be NULL. Q3 does not copy
  * them: a retained geometry holds its own reference to each set it was given.
+ *
+ * Attributes are inherited as in QuickDraw 3D: a vertex's own attribute set
+ * wins over its face's (a triangle's, a polyline segment's, a TriMesh
+ * triangle's), which wins over the geometry's attribute set, which wins over
+ * the view's current attribute state (Q3AttributeSet_Submit). A geometry
+ * whose vertices carry diffuse colours is drawn with the colours interpolated
+ * along its lines and across its triangles. The wireframe renderer draws the
+ * edges of surfaces; the interactive renderer fills them, hiding what is
+ * behind (QD3DRenderer.h).
+ *
+ * The data calls every geometry type Xxx has behave alike:
+ *   Q3Xxx_New(data)             a retained geometry owning a copy of data
+ *                               (arrays copied, attribute sets referenced).
+ *   Q3Xxx_Submit(data, view)    draws or bounds data in a view's loop without
+ *                               making an object (immediate mode).
+ *   Q3Xxx_GetData(obj, data)    fills data with newly allocated copies of the
+ *                               arrays and one new reference per attribute
+ *                               set, for the caller to give back with
+ *   Q3Xxx_EmptyData(data)       which releases those references, frees the
+ *                               arrays and sets the pointers to NULL (a
+ *                               second call does nothing);
+ *   Q3Xxx_SetData(obj, data)    replaces the object's data with a copy.
+ * Each checks its data against the rules given with the data type, in their
+ * order, and posts the first that fails (the object is then unchanged). Every
+ * array count is at most kQ3GeometryMaxArrayCount.
  */
 #ifndef QD3DGEOMETRY_H
 #define QD3DGEOMETRY_H
@@ -32,13 +58,22 @@ extern "C" {
 
 /* ---- Geometry ----------------------------------------------------------- */
 
+/*
+ * Q3 extension: the largest count Q3 accepts for any array in a geometry's
+ * data (vertices, points, triangles, control points, attribute values...).
+ * A larger count is refused with kQ3ErrorParameterOutOfRange. It keeps every
+ * size computation far from overflow and is far above any real model.
+ */
+#define kQ3GeometryMaxArrayCount (1UL << 28)
+
 /**
  * Reports the kind of a geometry.
  *
  * @param geometry  the geometry to query.
  * @return its type code (kQ3GeometryTypeNURBCurve, kQ3GeometryTypePolyLine,
- *         kQ3GeometryTypeLine, kQ3GeometryTypePoint), or kQ3ObjectTypeInvalid
- *         on failure.
+ *         kQ3GeometryTypeLine, kQ3GeometryTypePoint, kQ3GeometryTypeTriangle,
+ *         kQ3GeometryTypePolygon, kQ3GeometryTypeTriMesh), or
+ *         kQ3ObjectTypeInvalid on failure.
  *
  * Errors:
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
@@ -126,25 +161,28 @@ Q3_EXTERN_API_C(TQ3Status) Q3Geometry_Submit(TQ3GeometryObject geometry, TQ3View
 
 /**
  * Q3 extension (the name and signature are Quesa's; QuickDraw 3D never had
- * this call). Returns, as a new polyline, exactly the line segments the view
- * would draw for a NURB curve if the curve were submitted now: same
- * subdivision style, same local-to-world transform, same camera and draw
- * context (for screen-space subdivision; a bounding loop without them
- * subdivides as QD3DView.h describes). The polyline's vertices are in the
- * curve's local coordinates, untransformed.
+ * this call). Returns, as a new geometry, exactly the primitives the view
+ * would draw for a geometry if it were submitted now: same subdivision
+ * style, same local-to-world transform, same camera and draw context (for
+ * screen-space subdivision; a bounding loop without them subdivides as
+ * QD3DView.h describes). Vertices are in the geometry's local coordinates,
+ * untransformed.
  *
- * The new polyline's polyLineAttributeSet is the curve's attribute set (a new
- * reference to the same set, or NULL); its vertices and segments have no
- * attribute sets.
+ * A NURB curve gives a PolyLine (a curve that subdivides to one point, a
+ * polyline of two equal vertices); a polygon gives a TriMesh of its
+ * triangulation, with the vertices' diffuse colours, transparency colours,
+ * normals and surface uvs as vertex attribute arrays (an attributeUseArray
+ * marks the vertices that have one, when not all do). The result's own
+ * attribute set (polyLineAttributeSet, triMeshAttributeSet) is a new
+ * reference to the geometry's, or NULL.
  *
- * Geometries other than NURB curves are not decomposed: for them the call
- * returns NULL and posts nothing.
+ * Primitives (points, lines, polylines, triangles and trimeshes) are drawn as
+ * they are: for them the call returns NULL and posts nothing.
  *
  * @param geometry  the geometry to decompose.
  * @param view      a view inside a rendering or bounding loop, supplying the
  *                  current state.
- * @return a new PolyLine, or NULL on failure or when geometry is not a NURB
- *         curve.
+ * @return a new PolyLine or TriMesh, or NULL on failure or for a primitive.
  *
  * Errors:
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
@@ -186,8 +224,7 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Geometry_GetDecomposed(TQ3GeometryObject ge
  * posted when one is broken, checked in this order:
  *   2 <= order <= kQ3NURBCurveMaxOrder              kQ3ErrorParameterOutOfRange
  *   numPoints >= order                 kQ3ErrorGeometryInsufficientNumberOfPoints
- *   numPoints <= 2^28 (Q3's limit, which keeps
- *     every size computation far from overflow)     kQ3ErrorParameterOutOfRange
+ *   numPoints <= kQ3GeometryMaxArrayCount           kQ3ErrorParameterOutOfRange
  *   controlPoints and knots are not NULL            kQ3ErrorNULLParameter
  *   every coordinate, weight and knot is finite     kQ3ErrorInvalidData
  *   every weight w is greater than 0                kQ3ErrorInvalidData
@@ -1115,6 +1152,546 @@ Q3_EXTERN_API_C(TQ3Status) Q3Point_SetPosition(TQ3GeometryObject point,
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Point_GetPosition(TQ3GeometryObject point,
                                                TQ3Point3D *position);
+
+/* ---- Triangle ----------------------------------------------------------- */
+
+/*
+ * A triangle: three vertices (each with an attribute set or NULL) and the
+ * triangle's attribute set or NULL. Its front is the side from which the
+ * vertices run counterclockwise.
+ *
+ * The rules a TQ3TriangleData must obey wherever one is accepted, checked in
+ * this order:
+ *   every coordinate is finite                      kQ3ErrorInvalidData
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3TriangleData {
+    TQ3Vertex3D vertices[3];
+    TQ3AttributeSet triangleAttributeSet;
+};
+typedef struct TQ3TriangleData TQ3TriangleData;
+
+/**
+ * Creates a retained triangle from a copy of triangleData (the data calls at
+ * the top of this header).
+ *
+ * @return the new triangle, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triangleData is NULL.
+ *   then the codes of the TQ3TriangleData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the triangle cannot be allocated.
+ *
+ * Ownership: the caller owns the new triangle's one reference. The triangle
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Triangle_New(const TQ3TriangleData *triangleData);
+
+/**
+ * Draws (or bounds) a triangle without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triangleData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3TriangleData rules, in their order.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Triangle_Submit(const TQ3TriangleData *triangleData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained triangle with a copy of triangleData.
+ *
+ * @return kQ3Success, or kQ3Failure with the triangle unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triangle or triangleData is NULL.
+ *   kQ3ErrorInvalidObject      triangle is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  triangle is not a triangle.
+ *   then the codes of the TQ3TriangleData rules, in their order.
+ *
+ * Ownership: the triangle references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Triangle_SetData(TQ3GeometryObject triangle,
+                                              const TQ3TriangleData *triangleData);
+
+/**
+ * Copies the data of a retained triangle into triangleData.
+ *
+ * @return kQ3Success, or kQ3Failure with *triangleData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triangle or triangleData is NULL.
+ *   kQ3ErrorInvalidObject      triangle is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  triangle is not a triangle.
+ *
+ * Ownership: the caller owns a new reference to every attribute set in the
+ * result and gives them back with Q3Triangle_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Triangle_GetData(TQ3GeometryObject triangle, TQ3TriangleData *triangleData);
+
+/**
+ * Releases the four attribute set references Q3Triangle_GetData put in
+ * triangleData and sets them to NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triangleData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes the references held in the structure.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Triangle_EmptyData(TQ3TriangleData *triangleData);
+
+/**
+ * Reads the position of vertex index (0, 1 or 2) of a retained triangle.
+ *
+ * @return kQ3Success, or kQ3Failure with *point unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triangle or point is NULL.
+ *   kQ3ErrorInvalidObject        triangle is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    triangle is not a triangle.
+ *   kQ3ErrorParameterOutOfRange  index is above 2.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Triangle_GetVertexPosition(TQ3GeometryObject triangle, unsigned long index,
+                                                        TQ3Point3D *point);
+
+/**
+ * Moves vertex index (0, 1 or 2) of a retained triangle.
+ *
+ * @return kQ3Success, or kQ3Failure with the triangle unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triangle or point is NULL.
+ *   kQ3ErrorInvalidObject        triangle is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    triangle is not a triangle.
+ *   kQ3ErrorParameterOutOfRange  index is above 2.
+ *   kQ3ErrorInvalidData          a coordinate of *point is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Triangle_SetVertexPosition(TQ3GeometryObject triangle, unsigned long index,
+                                                        const TQ3Point3D *point);
+
+/**
+ * Reads the attribute set of vertex index (0, 1 or 2) of a retained triangle
+ * (NULL when it has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triangle or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject        triangle is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    triangle is not a triangle.
+ *   kQ3ErrorParameterOutOfRange  index is above 2.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Triangle_GetVertexAttributeSet(TQ3GeometryObject triangle, unsigned long index,
+                                                            TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces the attribute set of vertex index (0, 1 or 2) of a retained
+ * triangle; NULL removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the triangle unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triangle is NULL.
+ *   kQ3ErrorInvalidObject        triangle or attributeSet is not a live Q3
+ *                                object.
+ *   kQ3ErrorInvalidObjectType    triangle is not a triangle, or attributeSet
+ *                                is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  index is above 2.
+ *
+ * Ownership: the triangle references attributeSet and releases the set the
+ * vertex held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Triangle_SetVertexAttributeSet(TQ3GeometryObject triangle, unsigned long index,
+                                                            TQ3AttributeSet attributeSet);
+
+/* ---- Polygon ------------------------------------------------------------ */
+
+/*
+ * A simple polygon: numVertices vertices in order around its outline, and
+ * its attribute set or NULL. QuickDraw 3D asks for a convex, planar polygon;
+ * Q3 also fills concave ones correctly (it triangulates the outline in the
+ * plane that fits the vertices best). Its front is the side from which the
+ * vertices run counterclockwise. The wireframe renderer draws its outline.
+ *
+ * The rules a TQ3PolygonData must obey wherever one is accepted, checked in
+ * this order:
+ *   vertices is not NULL                            kQ3ErrorNULLParameter
+ *   numVertices >= 3             kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   numVertices <= kQ3GeometryMaxArrayCount         kQ3ErrorParameterOutOfRange
+ *   every coordinate is finite                      kQ3ErrorInvalidData
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3PolygonData {
+    unsigned long numVertices;
+    TQ3Vertex3D *vertices;
+    TQ3AttributeSet polygonAttributeSet;
+};
+typedef struct TQ3PolygonData TQ3PolygonData;
+
+/**
+ * Creates a retained polygon from a copy of polygonData (the data calls at
+ * the top of this header).
+ *
+ * @return the new polygon, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polygonData is NULL.
+ *   then the codes of the TQ3PolygonData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the polygon cannot be allocated.
+ *
+ * Ownership: the caller owns the new polygon's one reference. The polygon
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Polygon_New(const TQ3PolygonData *polygonData);
+
+/**
+ * Draws (or bounds) a polygon without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polygonData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3PolygonData rules, in their order.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polygon_Submit(const TQ3PolygonData *polygonData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained polygon with a copy of polygonData.
+ *
+ * @return kQ3Success, or kQ3Failure with the polygon unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polygon or polygonData is NULL.
+ *   kQ3ErrorInvalidObject      polygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  polygon is not a polygon.
+ *   then the codes of the TQ3PolygonData rules, in their order.
+ *
+ * Ownership: the polygon references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polygon_SetData(TQ3GeometryObject polygon, const TQ3PolygonData *polygonData);
+
+/**
+ * Copies the data of a retained polygon into polygonData (a newly allocated
+ * vertex array).
+ *
+ * @return kQ3Success, or kQ3Failure with *polygonData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polygon or polygonData is NULL.
+ *   kQ3ErrorInvalidObject      polygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  polygon is not a polygon.
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the caller owns the array and a new reference to every
+ * attribute set in the result, and gives them back with Q3Polygon_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polygon_GetData(TQ3GeometryObject polygon, TQ3PolygonData *polygonData);
+
+/**
+ * Releases what Q3Polygon_GetData put in polygonData: the attribute set
+ * references and the vertex array; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polygonData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polygon_EmptyData(TQ3PolygonData *polygonData);
+
+/**
+ * Reads the position of vertex index of a retained polygon.
+ *
+ * @return kQ3Success, or kQ3Failure with *point unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polygon or point is NULL.
+ *   kQ3ErrorInvalidObject        polygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polygon is not a polygon.
+ *   kQ3ErrorParameterOutOfRange  index is not below numVertices.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polygon_GetVertexPosition(TQ3GeometryObject polygon, unsigned long index,
+                                                       TQ3Point3D *point);
+
+/**
+ * Moves vertex index of a retained polygon.
+ *
+ * @return kQ3Success, or kQ3Failure with the polygon unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polygon or point is NULL.
+ *   kQ3ErrorInvalidObject        polygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polygon is not a polygon.
+ *   kQ3ErrorParameterOutOfRange  index is not below numVertices.
+ *   kQ3ErrorInvalidData          a coordinate of *point is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polygon_SetVertexPosition(TQ3GeometryObject polygon, unsigned long index,
+                                                       const TQ3Point3D *point);
+
+/**
+ * Reads the attribute set of vertex index of a retained polygon (NULL when
+ * it has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polygon or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject        polygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polygon is not a polygon.
+ *   kQ3ErrorParameterOutOfRange  index is not below numVertices.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polygon_GetVertexAttributeSet(TQ3GeometryObject polygon, unsigned long index,
+                                                           TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces the attribute set of vertex index of a retained polygon; NULL
+ * removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the polygon unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polygon is NULL.
+ *   kQ3ErrorInvalidObject        polygon or attributeSet is not a live Q3
+ *                                object.
+ *   kQ3ErrorInvalidObjectType    polygon is not a polygon, or attributeSet is
+ *                                not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  index is not below numVertices.
+ *
+ * Ownership: the polygon references attributeSet and releases the set the
+ * vertex held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polygon_SetVertexAttributeSet(TQ3GeometryObject polygon, unsigned long index,
+                                                           TQ3AttributeSet attributeSet);
+
+/* ---- TriMesh ------------------------------------------------------------ */
+
+/*
+ * A triangle mesh: points, triangles over them, optional edges, and per
+ * triangle, per edge and per point attribute arrays.
+ *
+ *   triangles[t].pointIndices    three indices into points; the triangle's
+ *                                front is the side from which they run
+ *                                counterclockwise.
+ *   edges[e].pointIndices        the edge's two points; triangleIndices the
+ *                                (up to) two triangles it borders, or
+ *                                kQ3ArrayIndexNULL.
+ *   xxxAttributeTypes[i]         one attribute of a standard type
+ *                                (QD3DSet.h: surface uv, shading uv, normal,
+ *                                ambient coefficient, diffuse colour,
+ *                                specular colour, specular control,
+ *                                transparency colour, surface tangent,
+ *                                highlight state) for every triangle, edge
+ *                                or point: `data` holds numTriangles,
+ *                                numEdges or numPoints values of the type,
+ *                                one after another; attributeUseArray is
+ *                                NULL, or holds one char per element, 0
+ *                                where the element has no value.
+ *   bBox                         ignored by New, SetData and Submit; GetData
+ *                                returns the box of the points (isEmpty when
+ *                                there are none).
+ *
+ * Drawing: a point's values are its vertex's attributes; a triangle's apply
+ * to its three corners (a point's own still win). The wireframe renderer
+ * draws every side of every triangle, and then every edge that has a diffuse
+ * colour, in that colour.
+ *
+ * The rules a TQ3TriMeshData must obey wherever one is accepted, checked in
+ * this order:
+ *   every array whose count is not 0 is not NULL (the attribute arrays'
+ *     data too)                                     kQ3ErrorNULLParameter
+ *   every count <= kQ3GeometryMaxArrayCount         kQ3ErrorParameterOutOfRange
+ *   every attribute type is a standard type (not
+ *     a surface shader or a custom type)            kQ3ErrorAttributeInvalidType
+ *   every point index is below numPoints, every
+ *     edge's triangle index below numTriangles or
+ *     kQ3ArrayIndexNULL                             kQ3ErrorInvalidData
+ *   every point coordinate is finite                kQ3ErrorInvalidData
+ *   every attribute value in use is well formed
+ *     (finite; a highlight state kQ3On or kQ3Off)   kQ3ErrorInvalidData
+ *   triMeshAttributeSet is NULL or a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3TriMeshTriangleData {
+    unsigned long pointIndices[3];
+};
+typedef struct TQ3TriMeshTriangleData TQ3TriMeshTriangleData;
+
+struct TQ3TriMeshEdgeData {
+    unsigned long pointIndices[2];
+    unsigned long triangleIndices[2];
+};
+typedef struct TQ3TriMeshEdgeData TQ3TriMeshEdgeData;
+
+struct TQ3TriMeshAttributeData {
+    TQ3AttributeType attributeType;
+    void *data;
+    char *attributeUseArray;
+};
+typedef struct TQ3TriMeshAttributeData TQ3TriMeshAttributeData;
+
+struct TQ3TriMeshData {
+    TQ3AttributeSet triMeshAttributeSet;
+
+    unsigned long numTriangles;
+    TQ3TriMeshTriangleData *triangles;
+
+    unsigned long numTriangleAttributeTypes;
+    TQ3TriMeshAttributeData *triangleAttributeTypes;
+
+    unsigned long numEdges;
+    TQ3TriMeshEdgeData *edges;
+
+    unsigned long numEdgeAttributeTypes;
+    TQ3TriMeshAttributeData *edgeAttributeTypes;
+
+    unsigned long numPoints;
+    TQ3Point3D *points;
+
+    unsigned long numVertexAttributeTypes;
+    TQ3TriMeshAttributeData *vertexAttributeTypes;
+
+    TQ3BoundingBox bBox;
+};
+typedef struct TQ3TriMeshData TQ3TriMeshData;
+
+/**
+ * Creates a retained trimesh from a copy of triMeshData (every array and
+ * attribute data block is copied; the data calls at the top of this header).
+ *
+ * @return the new trimesh, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triMeshData is NULL.
+ *   then the codes of the TQ3TriMeshData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the trimesh cannot be allocated.
+ *
+ * Ownership: the caller owns the new trimesh's one reference. The trimesh
+ * takes its own reference to triMeshAttributeSet.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3TriMesh_New(const TQ3TriMeshData *triMeshData);
+
+/**
+ * Draws (or bounds) a trimesh without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triMeshData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3TriMeshData rules, in their order.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_Submit(const TQ3TriMeshData *triMeshData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained trimesh with a copy of triMeshData.
+ *
+ * @return kQ3Success, or kQ3Failure with the trimesh unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triMesh or triMeshData is NULL.
+ *   kQ3ErrorInvalidObject      triMesh is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  triMesh is not a trimesh.
+ *   then the codes of the TQ3TriMeshData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the trimesh references the attribute set given and releases
+ * the one it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_SetData(TQ3GeometryObject triMesh, const TQ3TriMeshData *triMeshData);
+
+/**
+ * Copies the data of a retained trimesh into triMeshData: newly allocated
+ * arrays (attribute data blocks and use arrays included), and bBox the box of
+ * the points.
+ *
+ * @return kQ3Success, or kQ3Failure with *triMeshData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triMesh or triMeshData is NULL.
+ *   kQ3ErrorInvalidObject      triMesh is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  triMesh is not a trimesh.
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the caller owns the arrays and a new reference to
+ * triMeshAttributeSet, and gives them back with Q3TriMesh_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_GetData(TQ3GeometryObject triMesh, TQ3TriMeshData *triMeshData);
+
+/**
+ * Releases what Q3TriMesh_GetData put in triMeshData: frees every array (and
+ * each attribute array's data and use array), releases the attribute set
+ * reference, and sets the pointers to NULL. The counts stay as they were.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triMeshData is NULL.
+ *   kQ3ErrorInvalidObject      triMeshAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  triMeshAttributeSet is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_EmptyData(TQ3TriMeshData *triMeshData);
 
 #ifdef __cplusplus
 }

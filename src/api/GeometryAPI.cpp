@@ -3,7 +3,6 @@
 #include "QD3DGeometry.h"
 #include "api/Entry.h"
 #include "geometry/Geometry.h"
-#include "geometry/PolyLine.h"
 #include "view/View.h"
 
 using namespace q3;

@@ -1,58 +1,37 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "QD3DGeometry.h"
-#include "api/Entry.h"
+#include "api/GeometryEntry.h"
 #include "geometry/Line.h"
-#include "view/View.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 extern "C" {
 
 TQ3GeometryObject Q3Line_New(const TQ3LineData* lineData)
 {
-    return guard(__func__, TQ3GeometryObject{nullptr}, [&]() -> TQ3GeometryObject {
-        validateLineData(lineData);
-        return makeShared<Line>(*lineData).detach();
-    });
+    return newGeometry<Line>(__func__, lineData);
 }
 
 TQ3Status Q3Line_Submit(const TQ3LineData* lineData, TQ3ViewObject view)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(lineData, "lineData");
-        ShapeVisitor& target = lookup<View>(view, "view").submitTarget();
-        validateLineData(lineData);
-        target.visitLine(*makeShared<Line>(*lineData));
-    });
+    return submitGeometry<Line>(__func__, lineData, view);
 }
 
 TQ3Status Q3Line_GetData(TQ3GeometryObject line, TQ3LineData* lineData)
 {
-    return guardStatus(__func__, [&] {
-        const Line& source = lookup<Line>(line, "line");
-        requireNonNull(lineData, "lineData");
-        source.getData(*lineData);
-    });
+    return getGeometryData<Line>(__func__, line, lineData);
 }
 
 TQ3Status Q3Line_SetData(TQ3GeometryObject line, const TQ3LineData* lineData)
 {
-    return guardStatus(__func__, [&] {
-        Line& target = lookup<Line>(line, "line");
-        requireNonNull(lineData, "lineData");
-        target.setData(*lineData);
-    });
+    return setGeometryData<Line>(__func__, line, lineData);
 }
 
 TQ3Status Q3Line_EmptyData(TQ3LineData* lineData)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(lineData, "lineData");
-        Line::emptyData(*lineData);
-    });
+    return emptyGeometryData<Line>(__func__, lineData);
 }
 
 TQ3Status Q3Line_GetVertexPosition(TQ3GeometryObject line, unsigned long index, TQ3Point3D* position)

@@ -1,60 +1,37 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "QD3DGeometry.h"
-#include "api/Entry.h"
+#include "api/GeometryEntry.h"
 #include "geometry/NURBCurve.h"
-#include "view/View.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 extern "C" {
 
 TQ3GeometryObject Q3NURBCurve_New(const TQ3NURBCurveData* curveData)
 {
-    return guard(__func__, TQ3GeometryObject{nullptr}, [&]() -> TQ3GeometryObject {
-        validateNURBCurveData(curveData);
-        return makeShared<NURBCurve>(*curveData).detach();
-    });
+    return newGeometry<NURBCurve>(__func__, curveData);
 }
 
 TQ3Status Q3NURBCurve_Submit(const TQ3NURBCurveData* curveData, TQ3ViewObject view)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        ShapeVisitor& target = lookup<View>(view, "view").submitTarget();
-        validateNURBCurveData(curveData);
-        const Ref<AttributeSet> attributes =
-            attributeSetFromHandle(curveData->curveAttributeSet, "curveAttributeSet");
-        target.visitNURBCurve(curveRefOf(*curveData), attributes.get(), nullptr);
-    });
+    return submitGeometry<NURBCurve>(__func__, curveData, view);
 }
 
 TQ3Status Q3NURBCurve_SetData(TQ3GeometryObject curve, const TQ3NURBCurveData* nurbCurveData)
 {
-    return guardStatus(__func__, [&] {
-        NURBCurve& target = lookup<NURBCurve>(curve, "curve");
-        requireNonNull(nurbCurveData, "nurbCurveData");
-        target.setData(*nurbCurveData);
-    });
+    return setGeometryData<NURBCurve>(__func__, curve, nurbCurveData);
 }
 
 TQ3Status Q3NURBCurve_GetData(TQ3GeometryObject curve, TQ3NURBCurveData* nurbCurveData)
 {
-    return guardStatus(__func__, [&] {
-        const NURBCurve& source = lookup<NURBCurve>(curve, "curve");
-        requireNonNull(nurbCurveData, "nurbCurveData");
-        source.getData(*nurbCurveData);
-    });
+    return getGeometryData<NURBCurve>(__func__, curve, nurbCurveData);
 }
 
 TQ3Status Q3NURBCurve_EmptyData(TQ3NURBCurveData* nurbCurveData)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(nurbCurveData, "nurbCurveData");
-        NURBCurve::emptyData(*nurbCurveData);
-    });
+    return emptyGeometryData<NURBCurve>(__func__, nurbCurveData);
 }
 
 TQ3Status Q3NURBCurve_SetControlPoint(TQ3GeometryObject curve, unsigned long pointIndex,

@@ -1,58 +1,37 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "QD3DGeometry.h"
-#include "api/Entry.h"
+#include "api/GeometryEntry.h"
 #include "geometry/PolyLine.h"
-#include "view/View.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 extern "C" {
 
 TQ3GeometryObject Q3PolyLine_New(const TQ3PolyLineData* polylineData)
 {
-    return guard(__func__, TQ3GeometryObject{nullptr}, [&]() -> TQ3GeometryObject {
-        validatePolyLineData(polylineData);
-        return makeShared<PolyLine>(*polylineData).detach();
-    });
+    return newGeometry<PolyLine>(__func__, polylineData);
 }
 
 TQ3Status Q3PolyLine_Submit(const TQ3PolyLineData* polyLineData, TQ3ViewObject view)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(polyLineData, "polyLineData");
-        ShapeVisitor& target = lookup<View>(view, "view").submitTarget();
-        validatePolyLineData(polyLineData);
-        target.visitPolyLine(*makeShared<PolyLine>(*polyLineData));
-    });
+    return submitGeometry<PolyLine>(__func__, polyLineData, view);
 }
 
 TQ3Status Q3PolyLine_SetData(TQ3GeometryObject polyLine, const TQ3PolyLineData* polyLineData)
 {
-    return guardStatus(__func__, [&] {
-        PolyLine& target = lookup<PolyLine>(polyLine, "polyLine");
-        requireNonNull(polyLineData, "polyLineData");
-        target.setData(*polyLineData);
-    });
+    return setGeometryData<PolyLine>(__func__, polyLine, polyLineData);
 }
 
 TQ3Status Q3PolyLine_GetData(TQ3GeometryObject polyLine, TQ3PolyLineData* polyLineData)
 {
-    return guardStatus(__func__, [&] {
-        const PolyLine& source = lookup<PolyLine>(polyLine, "polyLine");
-        requireNonNull(polyLineData, "polyLineData");
-        source.getData(*polyLineData);
-    });
+    return getGeometryData<PolyLine>(__func__, polyLine, polyLineData);
 }
 
 TQ3Status Q3PolyLine_EmptyData(TQ3PolyLineData* polyLineData)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(polyLineData, "polyLineData");
-        PolyLine::emptyData(*polyLineData);
-    });
+    return emptyGeometryData<PolyLine>(__func__, polyLineData);
 }
 
 TQ3Status Q3PolyLine_GetVertexPosition(TQ3GeometryObject polyLine, unsigned long index,

@@ -67,25 +67,33 @@ void AttributeSet::accept(ShapeVisitor& visitor) const
     visitor.visitAttributeSet(*this);
 }
 
+std::string AttributeSet::valueProblem(TQ3AttributeType type, const void* data)
+{
+    if (type == kQ3AttributeTypeHighlightState) {
+        TQ3Switch value;
+        std::memcpy(&value, data, sizeof value);
+        if (enumValue(value) != kQ3On && enumValue(value) != kQ3Off)
+            return "a highlight state must be kQ3On or kQ3Off";
+        return {};
+    }
+    float values[6];
+    std::memcpy(values, data, floatCount(type) * sizeof(float));
+    for (std::size_t i = 0; i < floatCount(type); ++i)
+        if (!std::isfinite(values[i]))
+            return "attribute " + std::to_string(type) + " component " + std::to_string(i) +
+                   " is not a finite number";
+    return {};
+}
+
 void AttributeSet::add(TQ3AttributeType type, const void* data)
 {
     const std::size_t index = slotIndex(type);
     requireNonNull(data, "data");
     Slot slot{};
     std::memcpy(slot.data(), data, dataSize(type));
-    if (type == kQ3AttributeTypeHighlightState) {
-        TQ3Switch value;
-        std::memcpy(&value, slot.data(), sizeof value);
-        if (enumValue(value) != kQ3On && enumValue(value) != kQ3Off)
-            fail(kQ3ErrorInvalidParameter, "a highlight state must be kQ3On or kQ3Off");
-    } else {
-        float values[6];
-        std::memcpy(values, slot.data(), floatCount(type) * sizeof(float));
-        for (std::size_t i = 0; i < floatCount(type); ++i)
-            if (!std::isfinite(values[i]))
-                fail(kQ3ErrorInvalidParameter, "attribute " + std::to_string(type) + " component " +
-                                                   std::to_string(i) + " is not a finite number");
-    }
+    const std::string problem = valueProblem(type, slot.data());
+    if (!problem.empty())
+        fail(kQ3ErrorInvalidParameter, problem);
     m_slots[index] = slot;
     markEdited();
 }
@@ -128,16 +136,6 @@ void AttributeSet::inheritFrom(const AttributeSet& other)
         if (other.m_slots[i])
             m_slots[i] = other.m_slots[i];
     markEdited();
-}
-
-std::optional<TQ3ColorRGB> AttributeSet::diffuseColor() const
-{
-    const auto& slot = m_slots[kQ3AttributeTypeDiffuseColor - kFirstType];
-    if (!slot)
-        return std::nullopt;
-    TQ3ColorRGB color;
-    std::memcpy(&color, slot->data(), sizeof color);
-    return color;
 }
 
 } // namespace q3

@@ -7,7 +7,9 @@
 
 #include <array>
 #include <cstddef>
+#include <cstring>
 #include <optional>
+#include <string>
 
 namespace q3 {
 
@@ -36,6 +38,10 @@ public:
     /// Bytes of data of one attribute type; throws kQ3ErrorAttributeInvalidType
     /// for a type Q3 does not store.
     static std::size_t dataSize(TQ3AttributeType type);
+    /// Why a value of that (stored) type is not well formed (a component
+    /// that is not finite, a switch that is neither kQ3On nor kQ3Off), or an
+    /// empty string when it is.
+    static std::string valueProblem(TQ3AttributeType type, const void* data);
 
     void add(TQ3AttributeType type, const void* data);
     void get(TQ3AttributeType type, void* data) const;
@@ -45,9 +51,28 @@ public:
 
     /// Copies into this set every attribute of `other` (others' values win).
     void inheritFrom(const AttributeSet& other);
-    std::optional<TQ3ColorRGB> diffuseColor() const;
+    /// The value of one attribute, or nullopt when the set has none.
+    std::optional<TQ3ColorRGB> diffuseColor() const { return find<TQ3ColorRGB>(kQ3AttributeTypeDiffuseColor); }
+    std::optional<TQ3ColorRGB> transparencyColor() const
+    {
+        return find<TQ3ColorRGB>(kQ3AttributeTypeTransparencyColor);
+    }
+    std::optional<TQ3Vector3D> normal() const { return find<TQ3Vector3D>(kQ3AttributeTypeNormal); }
+    std::optional<TQ3Param2D> surfaceUV() const { return find<TQ3Param2D>(kQ3AttributeTypeSurfaceUV); }
 
 private:
+    template <class T>
+    std::optional<T> find(TQ3AttributeType type) const
+    {
+        const auto& slot = m_slots[type - kFirstType];
+        if (!slot)
+            return std::nullopt;
+        T value;
+        static_assert(sizeof(T) <= sizeof(Slot), "attribute values fit a slot");
+        std::memcpy(&value, slot->data(), sizeof value);
+        return value;
+    }
+
     using Slot = std::array<unsigned char, 24>;
     static std::size_t slotIndex(TQ3AttributeType type);
 

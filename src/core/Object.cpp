@@ -3,9 +3,35 @@
 #include "core/Object.h"
 
 #include <mutex>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace q3 {
+
+namespace {
+
+// Every ClassInfo, by type code. Filled during static initialization (from
+// any translation unit, hence the function-local static) and read-only after.
+std::unordered_map<TQ3ObjectType, const ClassInfo*>& classRegistry()
+{
+    static auto* classes = new std::unordered_map<TQ3ObjectType, const ClassInfo*>;
+    return *classes;
+}
+
+} // namespace
+
+ClassInfo::ClassInfo(TQ3ObjectType type_, const ClassInfo* parent_, const char* name_)
+    : type(type_), parent(parent_), name(name_)
+{
+    classRegistry().emplace(type, this);
+}
+
+const ClassInfo* findClass(TQ3ObjectType type)
+{
+    const auto& classes = classRegistry();
+    const auto found = classes.find(type);
+    return found == classes.end() ? nullptr : found->second;
+}
 
 const ClassInfo kRootClass{kQ3ObjectTypeInvalid, nullptr, "object"};
 const ClassInfo kSharedClass{kQ3ObjectTypeShared, &kRootClass, "shared object"};

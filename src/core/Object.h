@@ -21,8 +21,15 @@ namespace q3 {
 
 class ShapeVisitor;
 
-/// A node of the QuickDraw 3D class tree: a type code and its parent.
+/// A node of the QuickDraw 3D class tree: a type code, its parent and a name
+/// for messages. Every ClassInfo enters the class registry when it is
+/// constructed (each class file defines its own as a global), so the set of
+/// classes is whatever is linked in: no file lists them.
 struct ClassInfo {
+    ClassInfo(TQ3ObjectType type, const ClassInfo* parent, const char* name);
+    ClassInfo(const ClassInfo&) = delete;
+    ClassInfo& operator=(const ClassInfo&) = delete;
+
     TQ3ObjectType type;
     const ClassInfo* parent;
     const char* name;
@@ -33,6 +40,9 @@ struct ClassInfo {
     /// kQ3ObjectTypeInvalid when the chain is shorter.
     TQ3ObjectType typeAtLevel(int level) const;
 };
+
+/// The registered class with this type code, or null.
+const ClassInfo* findClass(TQ3ObjectType type);
 
 /// The root of the class tree (type kQ3ObjectTypeInvalid) and its first-level
 /// classes.

@@ -4,32 +4,23 @@
 
 namespace q3 {
 
-namespace nurbs {
-struct CurveRef;
-}
 class AttributeSet;
-class PolyLine;
-class Line;
-class Point;
+class Geometry;
 class SubdivisionStyle;
 class Transform;
-struct CurveCache;
 
 /// What a view does with each kind of submitted shape. Drawable objects call
 /// the one method that fits them from accept(), which keeps geometry and
 /// styles below the view in the layering: they know this interface, not the
-/// view.
+/// view. Every geometry arrives through visitGeometry and decomposes itself,
+/// so the interface never names a geometry class.
 class ShapeVisitor {
 public:
     virtual ~ShapeVisitor() = default;
 
-    /// A NURB curve, valid by construction. attributes may be null. cache is
-    /// the retained curve's own cache, or null in immediate mode.
-    virtual void visitNURBCurve(const nurbs::CurveRef& curve, const AttributeSet* attributes,
-                                CurveCache* cache) = 0;
-    virtual void visitPolyLine(const PolyLine& polyLine) = 0;
-    virtual void visitLine(const Line& line) = 0;
-    virtual void visitPoint(const Point& point) = 0;
+    /// A geometry, valid by construction (a retained object, or an
+    /// immediate-mode one that lives for the call).
+    virtual void visitGeometry(const Geometry& geometry) = 0;
     virtual void visitAttributeSet(const AttributeSet& attributes) = 0;
     virtual void visitSubdivisionStyle(const SubdivisionStyle& style) = 0;
     virtual void visitTransform(const Transform& transform) = 0;

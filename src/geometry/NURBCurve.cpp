@@ -2,33 +2,19 @@
 // Copyright (c) 2026 The Q3 authors
 #include "geometry/NURBCurve.h"
 
-#include "core/ShapeVisitor.h"
+#include "geometry/DataGeometryImpl.h"
+#include "geometry/PolyLine.h"
 #include "geometry/nurbs/Knots.h"
 
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <string>
+#include <vector>
 
 namespace q3 {
 
 const ClassInfo kNURBCurveClass{kQ3GeometryTypeNURBCurve, &kGeometryClass, "NURB curve"};
 
 namespace {
-
-// Beyond this many control points numPoints + order could overflow the
-// arithmetic below on a 32-bit long; far above any real curve.
-constexpr unsigned long kMaxPoints = 1UL << 28;
-
-template <class T>
-T* mallocCopy(const std::vector<T>& values)
-{
-    T* copy = static_cast<T*>(std::malloc(values.size() * sizeof(T)));
-    if (copy == nullptr)
-        throw std::bad_alloc();
-    std::memcpy(copy, values.data(), values.size() * sizeof(T));
-    return copy;
-}
 
 std::string describe(unsigned long index, unsigned long count, const char* what)
 {
@@ -37,6 +23,22 @@ std::string describe(unsigned long index, unsigned long count, const char* what)
 }
 
 } // namespace
+
+namespace layout {
+template <>
+struct Describe<TQ3NURBCurveData> {
+    static auto fields()
+    {
+        using D = TQ3NURBCurveData;
+        return std::make_tuple(value("order", &D::order), value("numPoints", &D::numPoints),
+                               array("controlPoints", &D::controlPoints, countOf(&D::numPoints)),
+                               array("knots", &D::knots, countSum(&D::order, &D::numPoints)),
+                               handle<AttributeSet>("curveAttributeSet", &D::curveAttributeSet));
+    }
+};
+} // namespace layout
+
+template class DataGeometry<NURBCurve, TQ3NURBCurveData>;
 
 nurbs::CurveRef curveRefOf(const TQ3NURBCurveData& data)
 {
@@ -53,15 +55,15 @@ void validateNURBCurveData(const TQ3NURBCurveData* data)
     requireNonNull(data, "curve data");
     if (data->order < nurbs::kMinOrder || data->order > nurbs::kMaxOrder)
         fail(kQ3ErrorParameterOutOfRange,
-             "order " + std::to_string(data->order) + " is outside 2 to 16");
+             "order " + std::to_string(data->order) + " is outside 2 to " + std::to_string(nurbs::kMaxOrder));
     if (data->numPoints < data->order)
         fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
              "numPoints " + std::to_string(data->numPoints) + " is less than the order " +
                  std::to_string(data->order));
-    if (data->numPoints > kMaxPoints)
+    if (data->numPoints > limits::kMaxArrayCount)
         fail(kQ3ErrorParameterOutOfRange,
-             "numPoints " + std::to_string(data->numPoints) + " is more than Q3's limit of " +
-                 std::to_string(kMaxPoints));
+             "numPoints " + std::to_string(data->numPoints) +
+                 " is more than kQ3GeometryMaxArrayCount (" + std::to_string(limits::kMaxArrayCount) + ")");
     requireNonNull(data->controlPoints, "controlPoints");
     requireNonNull(data->knots, "knots");
     const nurbs::CurveValidation result = nurbs::validateCurve(curveRefOf(*data));
@@ -69,96 +71,66 @@ void validateNURBCurveData(const TQ3NURBCurveData* data)
         fail(kQ3ErrorInvalidData, result.message);
 }
 
-NURBCurve::NURBCurve(const TQ3NURBCurveData& data)
+void NURBCurve::decompose(const DecomposeContext& context, PrimitiveSink& sink) const
 {
-    assign(data, attributeSetFromHandle(data.curveAttributeSet, "curveAttributeSet"));
+    context.curvePolyline(curve(), borrowed() ? nullptr : &m_cache, [&](const float* xyz, std::size_t count) {
+        static const std::uint32_t kFirst = 0;
+        const Strip strip{0, static_cast<std::uint32_t>(count)};
+        MeshView mesh;
+        mesh.positions = xyz;
+        mesh.vertexCount = count;
+        // A curve that subdivides to one point is drawn as that point.
+        if (count == 1) {
+            mesh.points = &kFirst;
+            mesh.pointCount = 1;
+        } else {
+            mesh.strips = &strip;
+            mesh.stripCount = 1;
+        }
+        sink.draw(mesh, attributeSet());
+    });
 }
 
-void NURBCurve::assign(const TQ3NURBCurveData& data, Ref<AttributeSet> attributes)
+void NURBCurve::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const
 {
-    // Build the copies first so that an allocation failure changes nothing.
-    std::vector<TQ3RationalPoint4D> points(data.controlPoints, data.controlPoints + data.numPoints);
-    std::vector<float> knots(data.knots, data.knots + data.numPoints + data.order);
-    m_order = data.order;
-    m_points.swap(points);
-    m_knots.swap(knots);
-    replaceAttributeSet(std::move(attributes));
-}
-
-Object* NURBCurve::duplicate() const
-{
-    Ref<NURBCurve> copy = Ref<NURBCurve>::adopt(new NURBCurve);
-    copy->m_order = m_order;
-    copy->m_points = m_points;
-    copy->m_knots = m_knots;
-    copy->replaceAttributeSet(duplicateAttributeSet(attributeSetRef()));
-    copy->registerLive();
-    return copy.detach();
-}
-
-void NURBCurve::accept(ShapeVisitor& visitor) const
-{
-    visitor.visitNURBCurve(curve(), attributeSet(), &m_cache);
-}
-
-nurbs::CurveRef NURBCurve::curve() const
-{
-    nurbs::CurveRef ref;
-    ref.order = static_cast<unsigned>(m_order);
-    ref.numPoints = m_points.size();
-    ref.points = reinterpret_cast<const float*>(m_points.data());
-    ref.knots = m_knots.data();
-    return ref;
-}
-
-void NURBCurve::getData(TQ3NURBCurveData& out) const
-{
-    TQ3RationalPoint4D* points = mallocCopy(m_points);
-    float* knots = nullptr;
-    try {
-        knots = mallocCopy(m_knots);
-    } catch (...) {
-        std::free(points);
-        throw;
+    const nurbs::CurveRef ref = curve();
+    for (std::size_t i = 0; i < ref.numPoints; ++i) {
+        const float* p = ref.points + 4 * i;
+        points.emplace_back(double(p[0]) / p[3], double(p[1]) / p[3], double(p[2]) / p[3]);
     }
-    out.order = m_order;
-    out.numPoints = m_points.size();
-    out.controlPoints = points;
-    out.knots = knots;
-    out.curveAttributeSet = attributeSetToHandle(attributeSetRef());
 }
 
-void NURBCurve::emptyData(TQ3NURBCurveData& data)
+Ref<Geometry> NURBCurve::decomposed(const DecomposeContext& context) const
 {
-    // Check the handle before freeing anything, so a failure changes nothing;
-    // then take back the reference GetData handed out, released on return.
-    const Ref<AttributeSet> handedOut = Ref<AttributeSet>::adopt(
-        lookupOptional<AttributeSet>(data.curveAttributeSet, "curveAttributeSet"));
-    std::free(data.controlPoints);
-    std::free(data.knots);
-    data.controlPoints = nullptr;
-    data.knots = nullptr;
-    data.curveAttributeSet = nullptr;
+    Ref<PolyLine> result;
+    context.curvePolyline(curve(), &m_cache, [&](const float* xyz, std::size_t count) {
+        if (count == 1) {
+            const float twice[6] = {xyz[0], xyz[1], xyz[2], xyz[0], xyz[1], xyz[2]};
+            result = PolyLine::fromPoints(twice, 2, attributeSet());
+        } else {
+            result = PolyLine::fromPoints(xyz, count, attributeSet());
+        }
+    });
+    return result;
 }
 
-void NURBCurve::setData(const TQ3NURBCurveData& data)
+void NURBCurve::onEdited()
 {
-    validateNURBCurveData(&data);
-    assign(data, attributeSetFromHandle(data.curveAttributeSet, "curveAttributeSet"));
-    markEdited();
+    m_cache.invalidate();
+    DataGeometry::onEdited();
 }
 
 TQ3RationalPoint4D NURBCurve::controlPoint(unsigned long index) const
 {
-    if (index >= m_points.size())
-        fail(kQ3ErrorParameterOutOfRange, describe(index, m_points.size(), "control point"));
-    return m_points[index];
+    if (index >= data().numPoints)
+        fail(kQ3ErrorParameterOutOfRange, describe(index, data().numPoints, "control point"));
+    return data().controlPoints[index];
 }
 
 void NURBCurve::setControlPoint(unsigned long index, const TQ3RationalPoint4D& point)
 {
-    if (index >= m_points.size())
-        fail(kQ3ErrorParameterOutOfRange, describe(index, m_points.size(), "control point"));
+    if (index >= data().numPoints)
+        fail(kQ3ErrorParameterOutOfRange, describe(index, data().numPoints, "control point"));
     if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z) ||
         !std::isfinite(point.w))
         fail(kQ3ErrorInvalidParameter,
@@ -166,31 +138,32 @@ void NURBCurve::setControlPoint(unsigned long index, const TQ3RationalPoint4D& p
     if (!(point.w > 0.0f))
         fail(kQ3ErrorInvalidParameter, "control point " + std::to_string(index) + " has weight w = " +
                                            std::to_string(point.w) + "; weights must be positive");
-    m_points[index] = point;
+    editableData().controlPoints[index] = point;
     markEdited();
 }
 
 float NURBCurve::knot(unsigned long index) const
 {
-    if (index >= m_knots.size())
-        fail(kQ3ErrorParameterOutOfRange, describe(index, m_knots.size(), "knot"));
-    return m_knots[index];
+    const unsigned long count = data().numPoints + data().order;
+    if (index >= count)
+        fail(kQ3ErrorParameterOutOfRange, describe(index, count, "knot"));
+    return data().knots[index];
 }
 
 void NURBCurve::setKnot(unsigned long index, float value)
 {
-    if (index >= m_knots.size())
-        fail(kQ3ErrorParameterOutOfRange, describe(index, m_knots.size(), "knot"));
-    std::vector<float> knots = m_knots;
+    const unsigned long count = data().numPoints + data().order;
+    if (index >= count)
+        fail(kQ3ErrorParameterOutOfRange, describe(index, count, "knot"));
+    std::vector<float> knots(data().knots, data().knots + count);
     knots[index] = value;
     nurbs::CurveRef candidate = curve();
     candidate.knots = knots.data();
     const nurbs::CurveValidation result = nurbs::validateCurve(candidate);
     if (!result.ok())
-        fail(kQ3ErrorInvalidParameter, "setting knot " + std::to_string(index) + " to " +
-                                           std::to_string(value) + " would break a rule: " +
-                                           result.message);
-    m_knots.swap(knots);
+        fail(kQ3ErrorInvalidParameter, "setting knot " + std::to_string(index) + " to " + std::to_string(value) +
+                                           " would break a rule: " + result.message);
+    editableData().knots[index] = value;
     markEdited();
 }
 

@@ -2,82 +2,45 @@
 // Copyright (c) 2026 The Q3 authors
 #include "geometry/Point.h"
 
-#include "core/ShapeVisitor.h"
-
-#include <cmath>
+#include "geometry/DataGeometryImpl.h"
 
 namespace q3 {
 
 const ClassInfo kPointClass{kQ3GeometryTypePoint, &kGeometryClass, "point"};
 
-namespace {
+namespace layout {
+template <>
+struct Describe<TQ3PointData> {
+    static auto fields()
+    {
+        return std::make_tuple(value("point", &TQ3PointData::point),
+                               handle<AttributeSet>("pointAttributeSet", &TQ3PointData::pointAttributeSet));
+    }
+};
+} // namespace layout
 
-// The coordinate rule of TQ3PointData, shared by validatePointData and
-// setPosition so the two paths cannot disagree.
-void validatePosition(const TQ3Point3D& p)
+template class DataGeometry<Point, TQ3PointData>;
+
+void Point::check(const TQ3PointData& data)
 {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        fail(kQ3ErrorInvalidData, "point has a coordinate that is not finite");
+    requireFinite(data.point, "point");
 }
 
-} // namespace
-
-void validatePointData(const TQ3PointData* data)
+void Point::decompose(const DecomposeContext&, PrimitiveSink& sink) const
 {
-    requireNonNull(data, "point data");
-    validatePosition(data->point);
-}
-
-Point::Point(const TQ3PointData& data)
-    : Point(data.point, attributeSetFromHandle(data.pointAttributeSet, "pointAttributeSet"))
-{
-}
-
-Point::Point(const TQ3Point3D& point, Ref<AttributeSet> attributes) : m_point(point)
-{
-    replaceAttributeSet(std::move(attributes));
-}
-
-Object* Point::duplicate() const
-{
-    Ref<Point> copy = Ref<Point>::adopt(new Point(m_point, duplicateAttributeSet(attributeSetRef())));
-    copy->registerLive();
-    return copy.detach();
-}
-
-void Point::accept(ShapeVisitor& visitor) const
-{
-    visitor.visitPoint(*this);
-}
-
-void Point::getData(TQ3PointData& out) const
-{
-    out.point = m_point;
-    out.pointAttributeSet = attributeSetToHandle(attributeSetRef());
-}
-
-void Point::emptyData(TQ3PointData& data)
-{
-    // Check the handle first so a failure changes nothing; then take back the
-    // reference GetData handed out, released on return.
-    const Ref<AttributeSet> handedOut =
-        Ref<AttributeSet>::adopt(lookupOptional<AttributeSet>(data.pointAttributeSet, "pointAttributeSet"));
-    data.pointAttributeSet = nullptr;
-}
-
-void Point::setData(const TQ3PointData& data)
-{
-    validatePointData(&data);
-    Ref<AttributeSet> attributes = attributeSetFromHandle(data.pointAttributeSet, "pointAttributeSet");
-    m_point = data.point;
-    replaceAttributeSet(std::move(attributes));
-    markEdited();
+    static const std::uint32_t kFirst = 0;
+    MeshView mesh;
+    mesh.positions = &data().point.x;
+    mesh.vertexCount = 1;
+    mesh.points = &kFirst;
+    mesh.pointCount = 1;
+    sink.draw(mesh, attributeSet());
 }
 
 void Point::setPosition(const TQ3Point3D& position)
 {
-    validatePosition(position);
-    m_point = position;
+    requireFinite(position, "point");
+    editableData().point = position;
     markEdited();
 }
 

@@ -3,47 +3,34 @@
 #pragma once
 
 #include "QD3DGeometry.h"
-#include "geometry/Geometry.h"
+#include "geometry/DataGeometry.h"
 
 namespace q3 {
 
 extern const ClassInfo kPointClass;
 
-/// Checks a caller's TQ3PointData against the rules in QD3DGeometry.h:
-/// kQ3ErrorNULLParameter (data is NULL), kQ3ErrorInvalidData (a coordinate is
-/// not finite). The one routine behind Q3Point_New, _SetData and _Submit; the
-/// attribute set handle is checked when the point resolves it.
-void validatePointData(const TQ3PointData* data);
-
-/// A retained point. Invariant: its position is finite (its attribute set is
-/// held by Geometry).
-class Point final : public Geometry {
+/// A point. Invariant: its position is finite (the TQ3PointData rule).
+class Point final : public DataGeometry<Point, TQ3PointData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3GeometryTypePoint;
+    static constexpr const char* kName = "point";
+    static constexpr const char* kDataName = "pointData";
+    static constexpr TQ3AttributeSet TQ3PointData::*kOwnSet = &TQ3PointData::pointAttributeSet;
 
-    /// Copies valid data (validate first). Throws kQ3ErrorInvalidObject or
-    /// kQ3ErrorInvalidObjectType for a bad attribute set handle.
-    explicit Point(const TQ3PointData& data);
+    /// The TQ3PointData rules of QD3DGeometry.h: kQ3ErrorInvalidData for a
+    /// coordinate that is not finite.
+    static void check(const TQ3PointData& data);
+
+    using DataGeometry::DataGeometry;
 
     const ClassInfo& classInfo() const override { return kPointClass; }
-    Object* duplicate() const override;
-    void accept(ShapeVisitor& visitor) const override;
+    void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
+    bool isPrimitive() const override { return true; }
 
-    /// Fills `out` with the position and a new reference to the attribute set.
-    void getData(TQ3PointData& out) const;
-    void setData(const TQ3PointData& data);
-    /// Releases the reference getData handed out and sets it to NULL.
-    static void emptyData(TQ3PointData& data);
-
-    const TQ3Point3D& point() const { return m_point; }
+    const TQ3Point3D& point() const { return data().point; }
     /// Moves the point; kQ3ErrorInvalidData (and no change) when a coordinate
-    /// is not finite, as for TQ3PointData.
+    /// is not finite.
     void setPosition(const TQ3Point3D& position);
-
-private:
-    Point(const TQ3Point3D& point, Ref<AttributeSet> attributes);
-
-    TQ3Point3D m_point;
 };
 
 } // namespace q3

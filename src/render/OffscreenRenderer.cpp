@@ -74,8 +74,10 @@ constexpr std::uint32_t kMaxImageSize = 16384;
 constexpr int kMaxPaneOffset = 16384;
 
 // A batch is handed to OpenGL when it would grow past this many vertices
-// (24 MiB of vertex data); a typical frame of curves stays well below.
+// (24 MiB of vertex data) or indices; a typical frame of curves stays well
+// below.
 constexpr std::size_t kFlushVertexCount = std::size_t(1) << 20;
+constexpr std::size_t kFlushIndexCount = std::size_t(1) << 21;
 
 struct PinnedVariable {
     const char* name;
@@ -167,7 +169,21 @@ private:
     bool m_bound = false;
 };
 
-enum class Primitive : std::uint8_t { kPoints, kLines, kLineStrip, kTriangles };
+using Primitive = DrawMode;
+
+// One draw call's arguments, as the public calls pass them on.
+struct DrawRequest {
+    Primitive primitive = Primitive::kPoints;
+    const float* xyz = nullptr;
+    const float* rgb = nullptr; // per vertex, or null for `color`
+    std::size_t vertexCount = 0;
+    bool indexed = false; // else the vertices in order
+    const std::uint32_t* indices = nullptr;
+    std::size_t indexCount = 0;
+    RgbColor color;
+    float pointSize = 1.0f;
+    bool smooth = false;
+};
 
 GLenum glMode(Primitive primitive)
 {
@@ -239,10 +255,9 @@ public:
     ~Impl() { destroyContext(); }
 
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
-                            const PixelRect& pane);
+                            const PixelRect& pane, const FrameOptions& options);
     RenderResult setMatrix(const std::array<float, 16>& matrix);
-    RenderResult draw(Primitive primitive, const float* xyz, std::size_t count, const RgbColor& color,
-                      float pointSize);
+    RenderResult draw(const DrawRequest& request);
     RenderResult endFrame();
     void cancelFrame();
 
@@ -259,12 +274,21 @@ private:
         float r, g, b;
     };
 
+    // first and count are vertices, or for an indexed command indices.
     struct DrawCommand {
         Primitive primitive;
+        bool indexed;
+        bool smooth;
         float pointSize;
         std::uint32_t matrixIndex;
         GLint first;
         GLsizei count;
+
+        bool drawsLike(const DrawCommand& other) const
+        {
+            return primitive == other.primitive && indexed == other.indexed && smooth == other.smooth &&
+                   pointSize == other.pointSize && matrixIndex == other.matrixIndex;
+        }
     };
 
     RenderResult createContext(std::uint32_t width, std::uint32_t height);
@@ -280,16 +304,19 @@ private:
 
     PixelRect m_pane;
     RgbaColor m_clearColor;
+    FrameOptions m_options;
     bool m_clearedInGl = false;
 
     std::unique_ptr<Vertex[]> m_vertices;
     std::size_t m_vertexCount = 0;
     std::size_t m_vertexCapacity = 0;
+    std::vector<GLuint> m_indices;
     std::vector<DrawCommand> m_commands;
     std::vector<std::array<float, 16>> m_matrices;
     std::uint32_t m_currentMatrix = 0;
     std::vector<GLint> m_multiFirsts;
     std::vector<GLsizei> m_multiCounts;
+    std::vector<const void*> m_multiIndices;
 };
 
 void pinRenderingEnvironment()
@@ -309,7 +336,9 @@ RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::ui
     {
         std::lock_guard<std::mutex> lock(contextMutex());
         pinMesaEnvironmentLocked();
-        const int attributes[] = {OSMESA_FORMAT,       OSMESA_RGBA, OSMESA_DEPTH_BITS,  0,
+        // A depth buffer for FrameOptions::depthTest; frames without the test
+        // never touch it.
+        const int attributes[] = {OSMESA_FORMAT,       OSMESA_RGBA, OSMESA_DEPTH_BITS,  24,
                                   OSMESA_STENCIL_BITS, 0,           OSMESA_ACCUM_BITS,  0,
                                   OSMESA_PROFILE,      OSMESA_COMPAT_PROFILE, 0};
         m_context = OSMesaCreateContextAttribs(attributes, nullptr);
@@ -379,6 +408,11 @@ void OffscreenRenderer::Impl::initializeState()
     glLineWidth(1.0f);
     glPointSize(1.0f);
     glShadeModel(GL_FLAT);
+    // A fragment as near as the one drawn before it wins, so primitives in one
+    // plane keep their submission order under the depth test.
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    glClearDepth(1.0);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
@@ -392,7 +426,8 @@ void OffscreenRenderer::Impl::initializeState()
 }
 
 RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint32_t height,
-                                                 const RgbaColor& clearColor, const PixelRect& pane)
+                                                 const RgbaColor& clearColor, const PixelRect& pane,
+                                                 const FrameOptions& options)
 {
     if (m_inFrame)
         return RenderResult::failure(RenderStatus::kWrongState, "beginFrame called inside a frame");
@@ -420,6 +455,7 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
 
     m_pane = pane;
     m_clearColor = clearColor;
+    m_options = options;
     m_clearedInGl = false;
     resetBatch();
     m_matrices.clear();
@@ -461,61 +497,92 @@ void OffscreenRenderer::Impl::reserveVertices(std::size_t needed)
     m_vertexCapacity = capacity;
 }
 
-RenderResult OffscreenRenderer::Impl::draw(Primitive primitive, const float* xyz, std::size_t count,
-                                           const RgbColor& color, float pointSize)
+RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
 {
     if (!m_inFrame)
         return RenderResult::failure(RenderStatus::kWrongState, "draw call outside a frame");
+    const bool indexed = r.indexed;
+    const std::size_t count = indexed ? r.indexCount : r.vertexCount;
     if (count == 0)
         return RenderResult::success();
-    if (xyz == nullptr)
+    if (r.xyz == nullptr)
         return invalid("vertex pointer is NULL");
-    if (primitive == Primitive::kLines && count % 2 != 0)
-        return invalid("drawLines needs an even vertex count, got " + std::to_string(count));
-    if (primitive == Primitive::kTriangles && count % 3 != 0)
-        return invalid("drawTriangles needs a multiple of 3 vertices, got " + std::to_string(count));
-    if (count > std::size_t(std::numeric_limits<GLint>::max()))
+    if (indexed && r.indices == nullptr)
+        return invalid("index pointer is NULL");
+    if (indexed && r.primitive == Primitive::kLineStrip)
+        return invalid("a line strip cannot be drawn from indices");
+    if (r.primitive == Primitive::kLines && count % 2 != 0)
+        return invalid("lines need an even vertex count, got " + std::to_string(count));
+    if (r.primitive == Primitive::kTriangles && count % 3 != 0)
+        return invalid("triangles need a multiple of 3 vertices, got " + std::to_string(count));
+    if (count > std::size_t(std::numeric_limits<GLint>::max()) ||
+        r.vertexCount > std::size_t(std::numeric_limits<GLint>::max()))
         return invalid("too many vertices in one call");
-    const float rgb[3] = {color.r, color.g, color.b};
+    const float rgb[3] = {r.color.r, r.color.g, r.color.b};
     if (!allFinite(rgb, 3))
         return invalid("colour has a NaN or infinite channel");
-    if (primitive == Primitive::kPoints && !(pointSize > 0.0f && std::isfinite(pointSize)))
+    if (r.primitive == Primitive::kPoints && !(r.pointSize > 0.0f && std::isfinite(r.pointSize)))
         return invalid("point size must be positive and finite");
-    if (primitive == Primitive::kLineStrip && count < 2)
+    if (r.primitive == Primitive::kLineStrip && count < 2)
         return RenderResult::success();
-    if (!allFinite(xyz, count * 3))
+    if (!allFinite(r.xyz, r.vertexCount * 3))
         return invalid("a vertex coordinate is NaN or infinite");
+    if (r.rgb != nullptr && !allFinite(r.rgb, r.vertexCount * 3))
+        return invalid("a vertex colour channel is NaN or infinite");
+    if (indexed)
+        for (std::size_t i = 0; i < r.indexCount; ++i)
+            if (r.indices[i] >= r.vertexCount)
+                return invalid("index " + std::to_string(r.indices[i]) + " is not below the vertex count " +
+                               std::to_string(r.vertexCount));
 
-    if (m_vertexCount > 0 && m_vertexCount + count > kFlushVertexCount) {
+    if ((m_vertexCount > 0 && m_vertexCount + r.vertexCount > kFlushVertexCount) ||
+        (!m_indices.empty() && m_indices.size() + r.indexCount > kFlushIndexCount)) {
         RenderResult flushed = flush(false);
         if (!flushed)
             return flushed;
     }
 
     try {
-        reserveVertices(m_vertexCount + count);
+        reserveVertices(m_vertexCount + r.vertexCount);
+        if (indexed)
+            m_indices.reserve(m_indices.size() + r.indexCount);
         if (m_commands.size() == m_commands.capacity())
             m_commands.reserve(m_commands.empty() ? 256 : m_commands.size() * 2);
     } catch (const std::bad_alloc&) {
         return outOfMemory();
     }
 
-    Vertex* out = m_vertices.get() + m_vertexCount;
-    for (std::size_t i = 0; i < count; ++i, xyz += 3)
-        out[i] = Vertex{xyz[0], xyz[1], xyz[2], color.r, color.g, color.b};
+    const std::size_t base = m_vertexCount;
+    Vertex* out = m_vertices.get() + base;
+    const float* xyz = r.xyz;
+    if (r.rgb == nullptr) {
+        for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3)
+            out[i] = Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b};
+    } else {
+        const float* c = r.rgb;
+        for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3, c += 3)
+            out[i] = Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2]};
+    }
+    m_vertexCount += r.vertexCount;
 
-    const GLint first = GLint(m_vertexCount);
-    m_vertexCount += count;
-    if (primitive != Primitive::kLineStrip && !m_commands.empty()) {
+    DrawCommand command{r.primitive, indexed, r.smooth, r.pointSize, m_currentMatrix, 0, GLsizei(count)};
+    if (indexed) {
+        command.first = GLint(m_indices.size());
+        for (std::size_t i = 0; i < r.indexCount; ++i)
+            m_indices.push_back(GLuint(base + r.indices[i]));
+    } else {
+        command.first = GLint(base);
+    }
+    if (r.primitive != Primitive::kLineStrip && !m_commands.empty()) {
         DrawCommand& last = m_commands.back();
-        if (last.primitive == primitive && last.matrixIndex == m_currentMatrix &&
-            last.pointSize == pointSize && std::size_t(last.first) + std::size_t(last.count) == std::size_t(first) &&
+        if (last.drawsLike(command) &&
+            std::size_t(last.first) + std::size_t(last.count) == std::size_t(command.first) &&
             std::size_t(last.count) + count <= std::size_t(std::numeric_limits<GLsizei>::max())) {
             last.count += GLsizei(count);
             return RenderResult::success();
         }
     }
-    m_commands.push_back(DrawCommand{primitive, pointSize, m_currentMatrix, first, GLsizei(count)});
+    m_commands.push_back(command);
     return RenderResult::success();
 }
 
@@ -546,7 +613,13 @@ void OffscreenRenderer::Impl::startFrameInGl()
     else
         glScissor(GLint(x0), GLint(imageHeight - y1), GLsizei(x1 - x0), GLsizei(y1 - y0));
     glClearColor(m_clearColor.r, m_clearColor.g, m_clearColor.b, m_clearColor.a);
-    glClear(GL_COLOR_BUFFER_BIT);
+    if (m_options.depthTest) {
+        glEnable(GL_DEPTH_TEST);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    } else {
+        glDisable(GL_DEPTH_TEST);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
 }
 
 RenderResult OffscreenRenderer::Impl::flush(bool finish)
@@ -569,14 +642,13 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
 
             std::uint32_t loadedMatrix = std::numeric_limits<std::uint32_t>::max();
             float loadedPointSize = -1.0f;
+            int loadedShading = -1;
             const std::size_t commandCount = m_commands.size();
             std::size_t i = 0;
             while (i < commandCount) {
                 const DrawCommand& head = m_commands[i];
                 std::size_t end = i + 1;
-                while (end < commandCount && m_commands[end].primitive == head.primitive &&
-                       m_commands[end].matrixIndex == head.matrixIndex &&
-                       m_commands[end].pointSize == head.pointSize)
+                while (end < commandCount && m_commands[end].drawsLike(head))
                     ++end;
                 if (head.matrixIndex != loadedMatrix) {
                     glLoadMatrixf(m_matrices[head.matrixIndex].data());
@@ -586,17 +658,31 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     glPointSize(head.pointSize);
                     loadedPointSize = head.pointSize;
                 }
+                if (int(head.smooth) != loadedShading) {
+                    glShadeModel(head.smooth ? GL_SMOOTH : GL_FLAT);
+                    loadedShading = int(head.smooth);
+                }
                 if (end - i == 1) {
-                    glDrawArrays(glMode(head.primitive), head.first, head.count);
+                    if (head.indexed)
+                        glDrawElements(glMode(head.primitive), head.count, GL_UNSIGNED_INT,
+                                       m_indices.data() + head.first);
+                    else
+                        glDrawArrays(glMode(head.primitive), head.first, head.count);
                 } else {
                     m_multiFirsts.clear();
                     m_multiCounts.clear();
+                    m_multiIndices.clear();
                     for (std::size_t k = i; k < end; ++k) {
                         m_multiFirsts.push_back(m_commands[k].first);
                         m_multiCounts.push_back(m_commands[k].count);
+                        m_multiIndices.push_back(m_indices.data() + m_commands[k].first);
                     }
-                    glMultiDrawArrays(glMode(head.primitive), m_multiFirsts.data(), m_multiCounts.data(),
-                                      GLsizei(end - i));
+                    if (head.indexed)
+                        glMultiDrawElements(glMode(head.primitive), m_multiCounts.data(), GL_UNSIGNED_INT,
+                                            m_multiIndices.data(), GLsizei(end - i));
+                    else
+                        glMultiDrawArrays(glMode(head.primitive), m_multiFirsts.data(), m_multiCounts.data(),
+                                          GLsizei(end - i));
                 }
                 i = end;
             }
@@ -616,6 +702,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
 void OffscreenRenderer::Impl::resetBatch()
 {
     m_vertexCount = 0;
+    m_indices.clear();
     m_commands.clear();
     if (!m_matrices.empty()) {
         m_matrices[0] = m_matrices[m_currentMatrix];
@@ -643,10 +730,11 @@ OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>()) {}
 OffscreenRenderer::~OffscreenRenderer() = default;
 
 RenderResult OffscreenRenderer::beginFrame(std::uint32_t width, std::uint32_t height,
-                                           const RgbaColor& clearColor, const PixelRect& pane)
+                                           const RgbaColor& clearColor, const PixelRect& pane,
+                                           const FrameOptions& options)
 {
     try {
-        return m_impl->beginFrame(width, height, clearColor, pane);
+        return m_impl->beginFrame(width, height, clearColor, pane, options);
     } catch (const std::bad_alloc&) {
         return RenderResult::failure(RenderStatus::kOutOfMemory,
                                      "out of memory for a " + std::to_string(width) + " x " +
@@ -681,41 +769,71 @@ RenderResult OffscreenRenderer::setMatrix(const double m[16])
     }
 }
 
-RenderResult OffscreenRenderer::drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color)
+namespace {
+
+// A template so that the private Impl type is deduced, never named here.
+template <class Impl>
+RenderResult drawGuarded(Impl& impl, const DrawRequest& request)
 {
     try {
-        return m_impl->draw(Primitive::kLineStrip, xyz, count, color, 1.0f);
+        return impl.draw(request);
     } catch (const std::bad_alloc&) {
         return outOfMemory();
     }
 }
 
+DrawRequest arrays(Primitive primitive, const float* xyz, const float* rgb, std::size_t count,
+                   const RgbColor& color, float pointSize, bool smooth)
+{
+    DrawRequest request;
+    request.primitive = primitive;
+    request.xyz = xyz;
+    request.rgb = rgb;
+    request.vertexCount = count;
+    request.color = color;
+    request.pointSize = pointSize;
+    request.smooth = smooth;
+    return request;
+}
+
+} // namespace
+
+RenderResult OffscreenRenderer::drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color)
+{
+    return drawGuarded(*m_impl, arrays(Primitive::kLineStrip, xyz, nullptr, count, color, 1.0f, false));
+}
+
 RenderResult OffscreenRenderer::drawLines(const float* xyz, std::size_t count, const RgbColor& color)
 {
-    try {
-        return m_impl->draw(Primitive::kLines, xyz, count, color, 1.0f);
-    } catch (const std::bad_alloc&) {
-        return outOfMemory();
-    }
+    return drawGuarded(*m_impl, arrays(Primitive::kLines, xyz, nullptr, count, color, 1.0f, false));
 }
 
 RenderResult OffscreenRenderer::drawPoints(const float* xyz, std::size_t count, const RgbColor& color,
                                            float pointSize)
 {
-    try {
-        return m_impl->draw(Primitive::kPoints, xyz, count, color, pointSize);
-    } catch (const std::bad_alloc&) {
-        return outOfMemory();
-    }
+    return drawGuarded(*m_impl, arrays(Primitive::kPoints, xyz, nullptr, count, color, pointSize, false));
 }
 
 RenderResult OffscreenRenderer::drawTriangles(const float* xyz, std::size_t count, const RgbColor& color)
 {
-    try {
-        return m_impl->draw(Primitive::kTriangles, xyz, count, color, 1.0f);
-    } catch (const std::bad_alloc&) {
-        return outOfMemory();
-    }
+    return drawGuarded(*m_impl, arrays(Primitive::kTriangles, xyz, nullptr, count, color, 1.0f, false));
+}
+
+RenderResult OffscreenRenderer::drawElements(DrawMode mode, const float* xyz, const float* rgb,
+                                             std::size_t vertexCount, const std::uint32_t* indices,
+                                             std::size_t indexCount, const RgbColor& color, bool smooth)
+{
+    DrawRequest request = arrays(mode, xyz, rgb, vertexCount, color, 1.0f, smooth);
+    request.indexed = true;
+    request.indices = indices;
+    request.indexCount = indexCount;
+    return drawGuarded(*m_impl, request);
+}
+
+RenderResult OffscreenRenderer::drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count,
+                                           const RgbColor& color, bool smooth)
+{
+    return drawGuarded(*m_impl, arrays(mode, xyz, rgb, count, color, 1.0f, smooth));
 }
 
 RenderResult OffscreenRenderer::endFrame()

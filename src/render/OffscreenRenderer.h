@@ -24,6 +24,18 @@ struct RgbaColor {
     float a = 0.0f;
 };
 
+/// The primitive of a drawElements or drawArrays call.
+enum class DrawMode { kPoints, kLines, kLineStrip, kTriangles };
+
+/// What a frame is drawn with besides its size and pane.
+struct FrameOptions {
+    /// Hidden-surface removal: every primitive is depth-tested against what
+    /// was drawn before it (a fragment is kept when it is no farther, so of
+    /// two at the same depth the later wins, as without the test) and writes
+    /// its depth. Without it primitives are painted in submission order.
+    bool depthTest = false;
+};
+
 /// Sets the environment variables Mesa reads when the process's first OSMesa
 /// context is created (OffscreenRenderer.cpp says which and why). Only the first
 /// call changes the environment, with setenv/unsetenv, which the C library does not
@@ -43,8 +55,9 @@ void pinRenderingEnvironment();
 /// a few multi-draw calls at endFrame() (or when it grows past a threshold),
 /// so the cost per call is a copy, not an OpenGL round trip.
 ///
-/// Primitives are painted in submission order, later ones over earlier ones:
-/// there is no depth buffer and no blending; lines are 1 pixel wide, aliased.
+/// Primitives are painted in submission order, later ones over earlier ones,
+/// unless the frame has the depth test (FrameOptions); there is no blending;
+/// lines are 1 pixel wide, aliased.
 ///
 /// Threads: the renderer's OpenGL context is current on the calling thread
 /// only inside beginFrame() (the first time, or when the size changes),
@@ -78,7 +91,7 @@ public:
     /// kOutOfMemory; kContextFailure or kWrongRenderer if no llvmpipe context
     /// could be made (see the .cpp for the pinned Mesa settings).
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
-                            const PixelRect& pane);
+                            const PixelRect& pane, const FrameOptions& options = FrameOptions{});
 
     /// Sets the matrix for the following draw calls: it maps the caller's 3D
     /// points straight to OpenGL clip space (homogeneous, before the divide).
@@ -110,6 +123,22 @@ public:
     /// call flushed a full batch, the endFrame() errors. On error nothing of
     /// the call is drawn.
     RenderResult drawTriangles(const float* xyz, std::size_t count, const RgbColor& color);
+
+    /// Draws indexed primitives over a pool of vertexCount vertices: xyz
+    /// holds 3 floats per vertex, rgb 3 per vertex or is null (then every
+    /// vertex is `color`). Each index refers to the pool; indexCount must fit
+    /// the mode (even for lines, a multiple of 3 for triangles; a line strip
+    /// is not accepted). With smooth, colours are interpolated across each
+    /// line and triangle; without, each takes the colour of its last vertex.
+    /// Errors: those of the calls above, and kInvalidArgument for an index
+    /// not below vertexCount or a non-finite rgb value.
+    RenderResult drawElements(DrawMode mode, const float* xyz, const float* rgb, std::size_t vertexCount,
+                              const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
+                              bool smooth);
+    /// Draws count consecutive vertices as one primitive list (or one line
+    /// strip), with per-vertex colours as drawElements.
+    RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count,
+                            const RgbColor& color, bool smooth);
 
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;

@@ -3,6 +3,7 @@
 #include "style/SubdivisionStyle.h"
 
 #include "core/EnumValue.h"
+#include "core/Limits.h"
 #include "core/ErrorManager.h"
 #include "core/ShapeVisitor.h"
 
@@ -36,18 +37,18 @@ float checkParameter(TQ3SubdivisionMethod method, float value, const char* name,
     float result = value;
     const char* why = nullptr;
     if (!std::isfinite(value)) {
-        result = kQ3SubdivisionDefaultC1;
+        result = limits::kSubdivisionDefault;
         why = "is not finite";
     } else if (method == kQ3SubdivisionMethodConstant) {
         if (value < 1.0f) {
             result = 1.0f;
             why = "is less than one segment per span";
-        } else if (value > static_cast<float>(kQ3SubdivisionMaxConstantSegments)) {
-            result = static_cast<float>(kQ3SubdivisionMaxConstantSegments);
+        } else if (value > static_cast<float>(limits::kMaxConstantSegments)) {
+            result = static_cast<float>(limits::kMaxConstantSegments);
             why = "asks for more than kQ3SubdivisionMaxConstantSegments segments per span";
         }
     } else if (value <= 0.0f) {
-        result = kQ3SubdivisionDefaultC1;
+        result = limits::kSubdivisionDefault;
         why = "is not a positive length";
     }
     if (why != nullptr) {
@@ -63,7 +64,7 @@ float checkParameter(TQ3SubdivisionMethod method, float value, const char* name,
 
 TQ3SubdivisionStyleData defaultSubdivisionStyle()
 {
-    return {kQ3SubdivisionMethodScreenSpace, kQ3SubdivisionDefaultC1, kQ3SubdivisionDefaultC1};
+    return {kQ3SubdivisionMethodScreenSpace, limits::kSubdivisionDefault, limits::kSubdivisionDefault};
 }
 
 TQ3SubdivisionStyleData checkSubdivisionStyle(const TQ3SubdivisionStyleData& requested)

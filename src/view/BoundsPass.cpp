@@ -11,9 +11,7 @@
 
 #include "view/BoundsPass.h"
 
-#include "geometry/Line.h"
-#include "geometry/Point.h"
-#include "geometry/PolyLine.h"
+#include "geometry/Geometry.h"
 
 #include <glm/geometric.hpp>
 
@@ -44,36 +42,10 @@ glm::dvec3 toVec(const TQ3Point3D& p)
 
 } // namespace
 
-void BoundsPass::visitNURBCurve(const nurbs::CurveRef& curve, const AttributeSet*, CurveCache*)
+void BoundsPass::visitGeometry(const Geometry& geometry)
 {
     m_local.clear();
-    for (std::size_t i = 0; i < curve.numPoints; ++i) {
-        const float* p = curve.points + 4 * i;
-        m_local.emplace_back(double(p[0]) / p[3], double(p[1]) / p[3], double(p[2]) / p[3]);
-    }
-    addShape();
-}
-
-void BoundsPass::visitPolyLine(const PolyLine& polyLine)
-{
-    m_local.clear();
-    for (const TQ3Vertex3D& vertex : polyLine.vertices())
-        m_local.push_back(toVec(vertex.point));
-    addShape();
-}
-
-void BoundsPass::visitLine(const Line& line)
-{
-    m_local.clear();
-    m_local.push_back(toVec(line.vertex(0).point));
-    m_local.push_back(toVec(line.vertex(1).point));
-    addShape();
-}
-
-void BoundsPass::visitPoint(const Point& point)
-{
-    m_local.clear();
-    m_local.push_back(toVec(point.point()));
+    geometry.bound(*this, m_local);
     addShape();
 }
 

@@ -13,9 +13,10 @@
 namespace q3 {
 
 /// A traversal of a bounding loop: the world-space box and sphere around
-/// everything submitted with extent. A NURB curve counts as its control
-/// points projected to 3D (x/w, y/w, z/w), as the article says QuickDraw 3D
-/// bounds it; polylines, lines and points as their vertices. Exact mode
+/// everything submitted with extent. A geometry counts as the points its
+/// bound() gives: a NURB curve its control points projected to 3D (x/w, y/w,
+/// z/w), as the article says QuickDraw 3D bounds it; others the vertices they
+/// decompose into. Exact mode
 /// transforms every point to world space; approximate mode transforms the
 /// corners of the shape's local box, which is cheaper and may be larger.
 /// Invariant: the box and sphere enclose, in double precision, every world
@@ -27,11 +28,7 @@ public:
     {
     }
 
-    void visitNURBCurve(const nurbs::CurveRef& curve, const AttributeSet* attributes,
-                        CurveCache* cache) override;
-    void visitPolyLine(const PolyLine& polyLine) override;
-    void visitLine(const Line& line) override;
-    void visitPoint(const Point& point) override;
+    void visitGeometry(const Geometry& geometry) override;
 
     /// The results, rounded outwards to float; isEmpty with zero fields when
     /// nothing was added.

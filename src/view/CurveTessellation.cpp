@@ -12,6 +12,7 @@
 #include "view/CurveTessellation.h"
 
 #include "core/ErrorManager.h"
+#include "core/Limits.h"
 #include "geometry/nurbs/Tessellate.h"
 
 #include <algorithm>
@@ -126,7 +127,7 @@ nurbs::TessellatedCurve subdivide(const Plan& plan, const Source& source)
 std::string substitutionReport(const Plan& plan, const nurbs::TessellatedCurve& result)
 {
     const std::string limit = " would need more than kQ3SubdivisionMaxSegmentsPerCurve (" +
-                              std::to_string(kQ3SubdivisionMaxSegmentsPerCurve) + ") segments";
+                              std::to_string(limits::kMaxSegmentsPerCurve) + ") segments";
     if (plan.measure == Measure::kConstant && result.substituted)
         return "constant subdivision with c1 = " + std::to_string(plan.c1) + limit + "; " +
                std::to_string(result.effectiveValue) + " segments per span are used";
@@ -179,6 +180,25 @@ std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan
 }
 
 } // namespace
+
+SubdivisionMeasure measureFor(const TessellationSetting& setting)
+{
+    const Plan plan = planFor(setting);
+    SubdivisionMeasure measure;
+    measure.c1 = plan.c1;
+    measure.c2 = setting.style.c2;
+    if (plan.measure == Measure::kConstant) {
+        measure.method = kQ3SubdivisionMethodConstant;
+        measure.c2 = std::floor(measure.c2);
+    } else {
+        measure.method =
+            plan.measure == Measure::kWorld ? kQ3SubdivisionMethodWorldSpace : kQ3SubdivisionMethodScreenSpace;
+        measure.map = mappingFor(plan);
+    }
+    measure.key = plan.key();
+    measure.key.push_back(measure.c2);
+    return measure;
+}
 
 glm::dvec2 frustumToPane(const PixelRect& pane, double x, double y)
 {

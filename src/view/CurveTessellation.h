@@ -4,6 +4,7 @@
 
 #include "QD3DStyle.h"
 #include "geometry/CurveCache.h"
+#include "geometry/Decompose.h"
 #include "geometry/nurbs/Curve.h"
 #include "render/RenderResult.h"
 #include "view/Matrix.h"
@@ -35,10 +36,6 @@ struct TessellationSetting {
     std::optional<Window> window;
 };
 
-/// Receives a polyline: vertexCount vertices, x y z each, in the curve's local
-/// coordinates.
-using PolylineUser = std::function<void(const float* xyz, std::size_t vertexCount)>;
-
 /// Subdivides a valid curve as the setting says and hands the polyline to
 /// `use`. The methods are the article's ("CONTROLLING SUBDIVISION"):
 /// constant, c1 segments per non-empty knot span; world space, no segment
@@ -60,5 +57,11 @@ using PolylineUser = std::function<void(const float* xyz, std::size_t vertexCoun
 /// returns, also when the polyline comes from the cache.
 void withCurvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
                        const TessellationSetting& setting, const PolylineUser& use);
+
+/// What a setting means for surfaces (geometry/Decompose.h): the method, c1
+/// and c2 as checkSubdivisionStyle left them (constant values truncated),
+/// and for world and screen space the same local-to-measured map and cache
+/// key that curves use. Screen space without a window is world space.
+SubdivisionMeasure measureFor(const TessellationSetting& setting);
 
 } // namespace q3

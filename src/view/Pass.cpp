@@ -3,8 +3,7 @@
 #include "view/Pass.h"
 
 #include "core/AttributeSet.h"
-#include "geometry/NURBCurve.h"
-#include "geometry/PolyLine.h"
+#include "geometry/Geometry.h"
 #include "style/SubdivisionStyle.h"
 #include "view/Transform.h"
 
@@ -51,19 +50,21 @@ TessellationSetting Pass::tessellationSetting() const
     return setting;
 }
 
-Ref<PolyLine> Pass::decompose(const NURBCurve& curve) const
+void Pass::curvePolyline(const nurbs::CurveRef& curve, CurveCache* cache, const PolylineUser& use) const
 {
-    Ref<PolyLine> result;
-    withCurvePolyline(curve.curve(), &curve.cache(), tessellationSetting(),
-                      [&](const float* xyz, std::size_t count) {
-                          if (count == 1) {
-                              const float twice[6] = {xyz[0], xyz[1], xyz[2], xyz[0], xyz[1], xyz[2]};
-                              result = PolyLine::fromPoints(twice, 2, curve.attributeSet());
-                          } else {
-                              result = PolyLine::fromPoints(xyz, count, curve.attributeSet());
-                          }
-                      });
-    return result;
+    withCurvePolyline(curve, cache, tessellationSetting(), use);
+}
+
+SubdivisionMeasure Pass::subdivisionMeasure() const
+{
+    return measureFor(tessellationSetting());
+}
+
+Ref<Geometry> Pass::decomposed(const Geometry& geometry) const
+{
+    if (geometry.isPrimitive())
+        return nullptr;
+    return geometry.decomposed(*this);
 }
 
 TQ3ColorRGB Pass::colorOf(const AttributeSet* own) const

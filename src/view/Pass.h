@@ -6,6 +6,7 @@
 #include "QD3DView.h"
 #include "core/Object.h"
 #include "core/ShapeVisitor.h"
+#include "geometry/Decompose.h"
 #include "view/CurveTessellation.h"
 #include "view/Matrix.h"
 
@@ -14,8 +15,7 @@
 
 namespace q3 {
 
-class NURBCurve;
-class PolyLine;
+class Geometry;
 
 /// The graphics state of a traversal (QD3DView.h): what Q3Push_Submit saves.
 /// Of the attributes, the view keeps those its renderers use: the diffuse
@@ -29,10 +29,11 @@ struct GraphicsState {
 
 /// One traversal of a rendering or bounding loop: the graphics state with its
 /// push/pop stack, and the state-changing shapes (attribute sets, styles,
-/// transforms). Subclasses decide what geometry does. Invariant: a traversal
-/// starts from the default GraphicsState with an empty stack, and the state
-/// changes only through the visit methods, push and pop.
-class Pass : public ShapeVisitor {
+/// transforms). It is also the context geometries decompose themselves in
+/// (the current subdivision). Subclasses decide what geometry does.
+/// Invariant: a traversal starts from the default GraphicsState with an empty
+/// stack, and the state changes only through the visit methods, push and pop.
+class Pass : public ShapeVisitor, public DecomposeContext {
 public:
     /// window: the loop's camera and pane, when it has them (always for
     /// rendering; for bounding loops when the view has a camera and a draw
@@ -54,14 +55,16 @@ public:
     const GraphicsState& state() const { return m_state; }
     const std::optional<Window>& window() const { return m_window; }
 
-    /// What a NURB curve submitted now would be subdivided under.
+    /// What a geometry submitted now would be subdivided under.
     TessellationSetting tessellationSetting() const;
 
-    /// The polyline a curve submitted now would be drawn as, as a new
-    /// PolyLine in the curve's local coordinates with the curve's attribute
-    /// set (Q3Geometry_GetDecomposed). A curve that subdivides to a single
-    /// point gives a polyline of two equal vertices.
-    Ref<PolyLine> decompose(const NURBCurve& curve) const;
+    void curvePolyline(const nurbs::CurveRef& curve, CurveCache* cache, const PolylineUser& use) const override;
+    SubdivisionMeasure subdivisionMeasure() const override;
+
+    /// Q3Geometry_GetDecomposed: what the geometry submitted now would be
+    /// drawn as, as a new geometry (Geometry::decomposed), or null for a
+    /// primitive.
+    Ref<Geometry> decomposed(const Geometry& geometry) const;
 
     /// A geometry's colour: its own attribute set's diffuse colour, else the
     /// state's.

@@ -2,9 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "view/RenderPass.h"
 
-#include "geometry/Line.h"
-#include "geometry/Point.h"
-#include "geometry/PolyLine.h"
+#include "geometry/Geometry.h"
 
 #include <string>
 
@@ -15,13 +13,6 @@ namespace {
 RgbColor toRgb(const TQ3ColorRGB& color)
 {
     return RgbColor{color.r, color.g, color.b};
-}
-
-void appendPoint(std::vector<float>& xyz, const TQ3Point3D& p)
-{
-    xyz.push_back(p.x);
-    xyz.push_back(p.y);
-    xyz.push_back(p.z);
 }
 
 } // namespace
@@ -58,60 +49,92 @@ void RenderPass::loadMatrix()
     m_loaded = localToClip;
 }
 
-void RenderPass::visitNURBCurve(const nurbs::CurveRef& curve, const AttributeSet* attributes,
-                                CurveCache* cache)
+void RenderPass::visitGeometry(const Geometry& geometry)
 {
-    const RgbColor color = toRgb(colorOf(attributes));
-    loadMatrix();
-    withCurvePolyline(curve, cache, tessellationSetting(), [&](const float* xyz, std::size_t count) {
-        // A curve that subdivides to one point is drawn as that point.
-        if (count == 1)
-            throwIfFailed(m_target.drawPoints(xyz, 1, color), "drawing a NURB curve");
-        else
-            throwIfFailed(m_target.drawLineStrip(xyz, count, color), "drawing a NURB curve");
-    });
+    geometry.decompose(*this, *this);
 }
 
-void RenderPass::visitPolyLine(const PolyLine& polyLine)
+void RenderPass::drawSegments(const MeshView& mesh, const float* rgb, const std::uint32_t* pairs,
+                              std::size_t count, const RgbColor& color, const char* what)
 {
-    const TQ3ColorRGB own = colorOf(polyLine.attributeSet());
-    const std::vector<TQ3Vertex3D>& vertices = polyLine.vertices();
-    loadMatrix();
-    m_scratch.clear();
-    for (const TQ3Vertex3D& vertex : vertices)
-        appendPoint(m_scratch, vertex.point);
-    if (!polyLine.hasSegmentAttributeSets()) {
-        throwIfFailed(m_target.drawLineStrip(m_scratch.data(), vertices.size(), toRgb(own)),
-                      "drawing a polyline");
+    if (count == 0)
+        return;
+    if (rgb != nullptr) {
+        throwIfFailed(m_target.drawElements(DrawMode::kLines, mesh.positions, rgb, mesh.vertexCount, pairs,
+                                            2 * count, color, true),
+                      what);
         return;
     }
-    // A segment's own diffuse colour wins over the polyline's.
-    for (std::size_t i = 0; i + 1 < vertices.size(); ++i) {
-        TQ3ColorRGB color = own;
-        if (const AttributeSet* set = polyLine.segmentAttributeSet(i))
-            color = set->diffuseColor().value_or(own);
-        throwIfFailed(m_target.drawLines(m_scratch.data() + 3 * i, 2, toRgb(color)),
-                      "drawing a polyline segment");
+    m_scratch.clear();
+    for (std::size_t i = 0; i < 2 * count; ++i) {
+        const float* p = mesh.positions + 3 * std::size_t(pairs[i]);
+        m_scratch.insert(m_scratch.end(), p, p + 3);
     }
+    throwIfFailed(m_target.drawLines(m_scratch.data(), 2 * count, color), what);
 }
 
-void RenderPass::visitLine(const Line& line)
+void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
 {
+    const RgbColor color = toRgb(colorOf(own));
     loadMatrix();
-    m_scratch.clear();
-    appendPoint(m_scratch, line.vertex(0).point);
-    appendPoint(m_scratch, line.vertex(1).point);
-    throwIfFailed(m_target.drawLines(m_scratch.data(), 2, toRgb(colorOf(line.attributeSet()))),
-                  "drawing a line");
-}
 
-void RenderPass::visitPoint(const Point& point)
-{
-    loadMatrix();
-    m_scratch.clear();
-    appendPoint(m_scratch, point.point());
-    throwIfFailed(m_target.drawPoints(m_scratch.data(), 1, toRgb(colorOf(point.attributeSet()))),
-                  "drawing a point");
+    // Per-vertex colours, with what a vertex lacks taken from its geometry
+    // or the state.
+    const float* rgb = nullptr;
+    if (mesh.colors != nullptr) {
+        m_colors.assign(mesh.colors, mesh.colors + 3 * mesh.vertexCount);
+        for (std::size_t i = 0; i < mesh.vertexCount; ++i)
+            if (m_colors[3 * i] != m_colors[3 * i]) {
+                m_colors[3 * i] = color.r;
+                m_colors[3 * i + 1] = color.g;
+                m_colors[3 * i + 2] = color.b;
+            }
+        rgb = m_colors.data();
+    }
+
+    if (m_style.fillTriangles) {
+        if (mesh.triangleCount != 0)
+            throwIfFailed(m_target.drawElements(DrawMode::kTriangles, mesh.positions, rgb, mesh.vertexCount,
+                                                mesh.triangles, 3 * mesh.triangleCount, color, true),
+                          "drawing triangles");
+    } else {
+        if (mesh.edgeCount != 0) {
+            drawSegments(mesh, rgb, mesh.edges, mesh.edgeCount, color, "drawing edges");
+        } else if (mesh.triangleCount != 0) {
+            m_indices.clear();
+            for (std::size_t t = 0; t < mesh.triangleCount; ++t)
+                for (int k = 0; k < 3; ++k) {
+                    m_indices.push_back(mesh.triangles[3 * t + k]);
+                    m_indices.push_back(mesh.triangles[3 * t + (k + 1) % 3]);
+                }
+            drawSegments(mesh, rgb, m_indices.data(), 3 * mesh.triangleCount, color, "drawing edges");
+        }
+    }
+    drawSegments(mesh, rgb, mesh.lines, mesh.lineCount, color, "drawing lines");
+    for (std::size_t s = 0; s < mesh.stripCount; ++s) {
+        const Strip& strip = mesh.strips[s];
+        const float* xyz = mesh.positions + 3 * std::size_t(strip.first);
+        if (rgb != nullptr)
+            throwIfFailed(m_target.drawArrays(DrawMode::kLineStrip, xyz, rgb + 3 * std::size_t(strip.first),
+                                              strip.count, color, true),
+                          "drawing a line strip");
+        else
+            throwIfFailed(m_target.drawLineStrip(xyz, strip.count, color), "drawing a line strip");
+    }
+    if (mesh.pointCount != 0) {
+        if (rgb != nullptr) {
+            throwIfFailed(m_target.drawElements(DrawMode::kPoints, mesh.positions, rgb, mesh.vertexCount,
+                                                mesh.points, mesh.pointCount, color, false),
+                          "drawing points");
+        } else {
+            m_scratch.clear();
+            for (std::size_t i = 0; i < mesh.pointCount; ++i) {
+                const float* p = mesh.positions + 3 * std::size_t(mesh.points[i]);
+                m_scratch.insert(m_scratch.end(), p, p + 3);
+            }
+            throwIfFailed(m_target.drawPoints(m_scratch.data(), mesh.pointCount, color), "drawing points");
+        }
+    }
 }
 
 } // namespace q3

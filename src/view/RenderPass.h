@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
+#include "geometry/Primitives.h"
 #include "render/OffscreenRenderer.h"
 #include "view/Pass.h"
 
@@ -21,29 +22,42 @@ void throwIfFailed(const RenderResult& result, const char* what);
 /// z_clip = -2 z - w; x, y and w are unchanged.
 Matrix frustumToClip();
 
-/// A traversal of a rendering loop: every geometry becomes lines and points in
-/// the view's OffscreenRenderer frame, in its colour (its own attribute set's
-/// diffuse colour, else the state's). NURB curves are drawn as the polyline
-/// withCurvePolyline gives. The wireframe and interactive renderers draw the
-/// geometry Q3 has (curves, polylines, lines, points) identically.
-/// Invariant: the target has a frame open for as long as the pass lives.
-class RenderPass final : public Pass {
-public:
-    RenderPass(OffscreenRenderer& target, const Window& window) : Pass(window), m_target(target) {}
+/// How a renderer draws what geometries decompose into.
+struct RenderStyle {
+    /// Triangles filled (the interactive renderer) or drawn as their edges
+    /// (the wireframe renderer).
+    bool fillTriangles = false;
+};
 
-    void visitNURBCurve(const nurbs::CurveRef& curve, const AttributeSet* attributes,
-                        CurveCache* cache) override;
-    void visitPolyLine(const PolyLine& polyLine) override;
-    void visitLine(const Line& line) override;
-    void visitPoint(const Point& point) override;
+/// A traversal of a rendering loop: every geometry decomposes itself
+/// (Geometry::decompose) into this pass, which draws the primitives into the
+/// view's OffscreenRenderer frame. A vertex's colour is its own (after
+/// inheritance from its face), else its geometry's attribute set's diffuse
+/// colour, else the state's; colours given per vertex are interpolated.
+/// Invariant: the target has a frame open for as long as the pass lives.
+class RenderPass final : public Pass, private PrimitiveSink {
+public:
+    RenderPass(OffscreenRenderer& target, const Window& window, const RenderStyle& style)
+        : Pass(window), m_target(target), m_style(style)
+    {
+    }
+
+    void visitGeometry(const Geometry& geometry) override;
 
 private:
+    void draw(const MeshView& mesh, const AttributeSet* own) override;
     /// Hands the current local-to-clip matrix to the target if it changed.
     void loadMatrix();
+    /// Draws pairs of indices as lines (uniform colour, or per vertex).
+    void drawSegments(const MeshView& mesh, const float* rgb, const std::uint32_t* pairs, std::size_t count,
+                      const RgbColor& color, const char* what);
 
     OffscreenRenderer& m_target;
+    RenderStyle m_style;
     std::optional<Matrix> m_loaded;
     std::vector<float> m_scratch;
+    std::vector<float> m_colors;
+    std::vector<std::uint32_t> m_indices;
 };
 
 } // namespace q3

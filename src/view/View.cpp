@@ -4,8 +4,7 @@
 
 #include "core/EnumValue.h"
 
-#include "geometry/NURBCurve.h"
-#include "geometry/PolyLine.h"
+#include "geometry/Geometry.h"
 #include "render/OffscreenRenderer.h"
 #include "render/Renderer.h"
 #include "view/BoundsPass.h"
@@ -25,10 +24,7 @@ namespace {
 // What a cancelled loop submits to: everything is ignored until its end.
 class IgnoringVisitor final : public ShapeVisitor {
 public:
-    void visitNURBCurve(const nurbs::CurveRef&, const AttributeSet*, CurveCache*) override {}
-    void visitPolyLine(const PolyLine&) override {}
-    void visitLine(const Line&) override {}
-    void visitPoint(const Point&) override {}
+    void visitGeometry(const Geometry&) override {}
     void visitAttributeSet(const AttributeSet&) override {}
     void visitSubdivisionStyle(const SubdivisionStyle&) override {}
     void visitTransform(const Transform&) override {}
@@ -138,12 +134,20 @@ void View::startRendering()
         clear = RgbaColor{clampUnit(color.r), clampUnit(color.g), clampUnit(color.b), clampUnit(color.a)};
     }
 
+    // The interactive renderer fills surfaces and removes hidden ones with a
+    // depth buffer; the wireframe renderer draws edges in submission order.
+    const bool fills = m_renderer->fillsSurfaces();
+    RenderStyle style;
+    style.fillTriangles = fills;
+    FrameOptions options;
+    options.depthTest = fills;
+
     if (!m_offscreen)
         m_offscreen = std::make_unique<OffscreenRenderer>();
-    auto pass = std::make_unique<RenderPass>(*m_offscreen,
-                                             Window{m_camera->worldToFrustum(), destination.pane});
+    auto pass = std::make_unique<RenderPass>(*m_offscreen, Window{m_camera->worldToFrustum(), destination.pane},
+                                             style);
     throwIfFailed(m_offscreen->beginFrame(destination.layout.width, destination.layout.height, clear,
-                                          destination.pane),
+                                          destination.pane, options),
                   "starting the image");
     m_destination = destination;
     m_pass = std::move(pass);
@@ -307,12 +311,9 @@ TQ3SubdivisionStyleData View::subdivisionStyleState()
     return activePass().state().subdivision;
 }
 
-Ref<PolyLine> View::decompose(const Geometry& geometry)
+Ref<Geometry> View::decompose(const Geometry& geometry)
 {
-    const Pass& pass = activePass();
-    if (!geometry.isType(kQ3GeometryTypeNURBCurve))
-        return nullptr;
-    return pass.decompose(static_cast<const NURBCurve&>(geometry));
+    return activePass().decomposed(geometry);
 }
 
 } // namespace q3

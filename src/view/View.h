@@ -19,7 +19,6 @@ class DrawContext;
 class Geometry;
 class OffscreenRenderer;
 class Pass;
-class PolyLine;
 class Renderer;
 
 /// A QuickDraw 3D view: draw context, camera, renderer, and the loop running
@@ -103,10 +102,10 @@ public:
     TQ3Matrix4x4 localToWorldState();
     TQ3SubdivisionStyleData subdivisionStyleState();
 
-    /// Q3Geometry_GetDecomposed: the polyline a NURB curve submitted now would
-    /// be drawn as (Pass::decompose); null for any other geometry. Throws
-    /// kQ3ErrorViewNotStarted outside a loop.
-    Ref<PolyLine> decompose(const Geometry& geometry);
+    /// Q3Geometry_GetDecomposed: what the geometry submitted now would be
+    /// drawn as, as a new geometry (Geometry::decomposed); null for a
+    /// primitive. Throws kQ3ErrorViewNotStarted outside a loop.
+    Ref<Geometry> decompose(const Geometry& geometry);
 
 private:
     enum class Loop { kNone, kRendering, kBoundingBox, kBoundingSphere };

@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
+#include "core/Limits.h"
+
 #include <cstddef>
 #include <vector>
 
@@ -10,8 +12,8 @@
 namespace q3::nurbs {
 
 /// Smallest and largest curve order QuickDraw 3D accepts ("NURB CURVES IN QUICKDRAW 3D").
-constexpr unsigned kMinOrder = 2;
-constexpr unsigned kMaxOrder = 16;
+constexpr unsigned kMinOrder = limits::kMinCurveOrder;
+constexpr unsigned kMaxOrder = limits::kMaxCurveOrder;
 
 struct Point3 {
     double x = 0.0;

@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
+#include "core/Limits.h"
 #include "geometry/nurbs/Bezier.h"
 #include "geometry/nurbs/Curve.h"
 
@@ -15,7 +16,7 @@ namespace q3::nurbs {
 /// Most segments one tessellation produces, except that a curve always gets at least
 /// one segment per non-empty span (so the output never exceeds
 /// max(kMaxSegments, number of spans), which is linear in the input size).
-constexpr std::size_t kMaxSegments = std::size_t{1} << 20;
+constexpr std::size_t kMaxSegments = limits::kMaxSegmentsPerCurve;
 
 /// Most Bezier points (spans * order, 32 bytes each: 8 MB) of a curve whose Bezier form
 /// is built whole: the adaptive method converts such a curve once up front instead of
@@ -28,7 +29,7 @@ constexpr std::size_t kWholeFormLimit = std::size_t{1} << 18;
 bool fitsWholeBezierForm(const CurveRef& curve);
 
 /// Most segments per span for the constant method.
-constexpr std::uint32_t kMaxSegmentsPerSpan = 1024;
+constexpr std::uint32_t kMaxSegmentsPerSpan = limits::kMaxConstantSegments;
 
 /// Adaptive method: the share of kMaxSegments the planned count may use; the rest is
 /// headroom for the march, which follows the true length where the plan used chord sums

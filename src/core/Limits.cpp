@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// The compile-time link between core/Limits.h and the public constants that
+// document each limit: changing one without the other fails the build.
+
+#include "core/Limits.h"
+
+#include "QD3DGeometry.h"
+#include "QD3DStyle.h"
+
+namespace q3::limits {
+
+static_assert(kMaxArrayCount == kQ3GeometryMaxArrayCount, "QD3DGeometry.h documents kMaxArrayCount");
+static_assert(kMaxCurveOrder == kQ3NURBCurveMaxOrder, "QD3DGeometry.h documents kMaxCurveOrder");
+static_assert(kMaxSegmentsPerCurve == kQ3SubdivisionMaxSegmentsPerCurve,
+              "QD3DStyle.h documents kMaxSegmentsPerCurve");
+static_assert(kMaxConstantSegments == kQ3SubdivisionMaxConstantSegments,
+              "QD3DStyle.h documents kMaxConstantSegments");
+static_assert(kSubdivisionDefault == kQ3SubdivisionDefaultC1, "QD3DStyle.h documents kSubdivisionDefault");
+
+} // namespace q3::limits

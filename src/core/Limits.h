@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// Every limit Q3 imposes on what a caller may ask for, in one place. Each one
+// that a public header documents is checked at compile time against that
+// header's constant (core/Limits.cpp), so the two cannot drift apart. This
+// header includes nothing of Q3's, so the pure math in geometry/nurbs may use
+// it too.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace q3::limits {
+
+/// The most entries of any one array in a geometry's data (vertices, control
+/// points, knots, triangles, attribute values...): kQ3GeometryMaxArrayCount.
+/// Far above any real model, and it keeps every size computation (count times
+/// element size, count plus order) far from overflow.
+constexpr std::size_t kMaxArrayCount = std::size_t{1} << 28;
+
+/// Curve order (degree + 1) bounds: 2 and kQ3NURBCurveMaxOrder.
+constexpr unsigned kMinCurveOrder = 2;
+constexpr unsigned kMaxCurveOrder = 16;
+
+/// The most line segments one NURB curve is drawn with:
+/// kQ3SubdivisionMaxSegmentsPerCurve.
+constexpr std::size_t kMaxSegmentsPerCurve = std::size_t{1} << 20;
+
+/// The largest constant-method c1 or c2, in segments per knot span:
+/// kQ3SubdivisionMaxConstantSegments.
+constexpr std::uint32_t kMaxConstantSegments = 1024;
+
+/// The value substituted for an unreasonable c1 or c2: kQ3SubdivisionDefaultC1.
+constexpr float kSubdivisionDefault = 20.0f;
+
+} // namespace q3::limits

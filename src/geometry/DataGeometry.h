@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// The shape every QuickDraw 3D geometry with a data structure shares: the
+// object keeps a private deep copy of its C struct (core/DataLayout.h), and
+// New, GetData, SetData, EmptyData, Duplicate, immediate-mode Submit and the
+// geometry attribute set all come from the struct's description. A geometry
+// class adds only what is its own:
+//
+//   class Triangle final : public DataGeometry<Triangle, TQ3TriangleData> {
+//   public:
+//       static constexpr TQ3ObjectType kClassType = kQ3GeometryTypeTriangle;
+//       static constexpr const char* kName = "triangle";           // messages
+//       static constexpr const char* kDataName = "triangleData";   // messages
+//       static constexpr TQ3AttributeSet TQ3TriangleData::*kOwnSet =
+//           &TQ3TriangleData::triangleAttributeSet;
+//       static void check(const TQ3TriangleData& data);  // its data rules
+//       using DataGeometry::DataGeometry;
+//       const ClassInfo& classInfo() const override;
+//       void decompose(const DecomposeContext&, PrimitiveSink&) const override;
+//       ... Apple's per-field accessors ...
+//   };
+//
+// and, in its .cpp, the description (layout::Describe<TQ3TriangleData>) and
+// `template class DataGeometry<Triangle, TQ3TriangleData>;`, which compiles
+// the shared members there, where the description is visible.
+
+#include "geometry/Geometry.h"
+
+#include <cstddef>
+#include <string>
+
+namespace q3 {
+
+/// Constructor tags: immediate mode (the caller's data, used in place for one
+/// submit), Duplicate (a deep copy with every attribute set duplicated) and
+/// adoption (data the library built itself, already owned).
+struct BorrowData {};
+struct DuplicateData {};
+struct AdoptData {};
+
+template <class Derived, class Data>
+class DataGeometry : public Geometry {
+public:
+    using DataType = Data;
+
+    /// Everything New, SetData and Submit require of the caller's data, in
+    /// this order: data is not NULL (kQ3ErrorNULLParameter, named
+    /// Derived::kDataName); Derived::check's rules; every array the struct
+    /// describes is present and within kQ3GeometryMaxArrayCount. Attribute sets
+    /// are checked when the data is taken (the constructors and setData).
+    static void validate(const Data* data);
+
+    /// A retained geometry owning a copy of data, which passed validate():
+    /// every attribute set is checked (kQ3ErrorInvalidObject /
+    /// kQ3ErrorInvalidObjectType, naming the field) and retained.
+    explicit DataGeometry(const Data& data);
+    /// Immediate mode: data (validated) is used in place for the life of this
+    /// object, which must end before the caller's call returns; attribute sets
+    /// are checked, not retained; nothing is cached.
+    DataGeometry(BorrowData, const Data& data);
+    /// Duplicate: a deep copy of source's data with every distinct attribute
+    /// set duplicated once (shared where the original was shared).
+    DataGeometry(DuplicateData, const Data& source);
+    /// Takes over data whose arrays are malloc'ed and whose handles each hold
+    /// a reference for it (what the library builds, as decompositions);
+    /// `owned` is left holding nothing.
+    DataGeometry(AdoptData, Data& owned);
+    ~DataGeometry() override;
+
+    const Data& data() const { return m_data; }
+
+    /// Q3xxx_GetData: a deep copy, arrays malloc'ed and one new reference per
+    /// attribute set, for emptyData to give back.
+    void getData(Data& out) const;
+    /// Q3xxx_SetData: validates, takes a copy, then releases the old data;
+    /// on failure nothing changes (not even the edit index).
+    void setData(const Data& data);
+    /// Q3xxx_EmptyData: checks every attribute set handle in data (a failure
+    /// releases nothing), then releases them and frees the arrays.
+    static void emptyData(Data& data);
+
+    Object* duplicate() const override;
+    const AttributeSet* attributeSet() const override;
+    void setAttributeSet(Ref<AttributeSet> attributes) override;
+
+protected:
+    /// For Apple's per-field setters, after they have checked their argument;
+    /// they call markEdited() once they have changed it.
+    Data& editableData() { return m_data; }
+    /// True for an immediate-mode geometry (BorrowData).
+    bool borrowed() const { return m_borrowed; }
+
+private:
+    Data m_data;
+    bool m_borrowed = false;
+};
+
+/// Puts `set` (its reference is handed over; null clears) into an attribute
+/// set slot of data the library owns, releasing what the slot held. Not an
+/// edit by itself.
+void replaceHeldSet(TQ3AttributeSet& slot, Ref<AttributeSet> set);
+
+/// Apple's per-vertex calls, for data holding an array of `count` TQ3Vertex3D:
+/// vertex `index` (kQ3ErrorParameterOutOfRange unless index < count, the
+/// message naming `owner`, e.g. "the triangle"); moving it
+/// (kQ3ErrorParameterOutOfRange, then kQ3ErrorInvalidData for a coordinate
+/// that is not finite); replacing its attribute set. The setters change
+/// nothing on failure; the caller marks the edit.
+const TQ3Vertex3D& vertexAt(const TQ3Vertex3D* vertices, std::size_t count, std::size_t index, const char* owner);
+void moveVertex(TQ3Vertex3D* vertices, std::size_t count, std::size_t index, const TQ3Point3D& position,
+                const char* owner);
+void replaceVertexSet(TQ3Vertex3D* vertices, std::size_t count, std::size_t index, Ref<AttributeSet> set,
+                      const char* owner);
+
+/// For meshes built from TQ3Vertex3D arrays: the edit indices of the vertices'
+/// attribute sets (the part of a cache key they decide), and the vertices
+/// added to a mesh with their own attributes. addVertices returns the index
+/// of the first.
+void appendVertexSetKeys(std::vector<double>& key, const TQ3Vertex3D* vertices, std::size_t count);
+std::uint32_t addVertices(Mesh& mesh, const TQ3Vertex3D* vertices, std::size_t count);
+
+/// kQ3ErrorParameterOutOfRange unless index < count; `what` names the index
+/// ("vertex index") and `owner` the geometry ("the triangle") in the message.
+void checkIndex(std::size_t index, std::size_t count, const char* what, const char* owner);
+
+/// kQ3ErrorInvalidData, naming `where`, unless every coordinate is finite:
+/// the coordinate rule every geometry's data and its setters share.
+void requireFinite(const TQ3Point3D& point, const char* where, std::size_t index);
+void requireFinite(const TQ3Point3D& point, const std::string& where);
+
+} // namespace q3

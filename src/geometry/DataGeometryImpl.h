@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// The members of DataGeometry, included only by the .cpp of a geometry class,
+// which instantiates them next to its data description. TQ3Vertex3D, part of
+// many descriptions, is described here once.
+
+#include "core/DataLayout.h"
+#include "geometry/DataGeometry.h"
+
+#include <cstring>
+#include <utility>
+
+namespace q3 {
+namespace layout {
+
+template <>
+struct Describe<TQ3Vertex3D> {
+    static auto fields()
+    {
+        return std::make_tuple(value("point", &TQ3Vertex3D::point),
+                               handle<AttributeSet>("attributeSet", &TQ3Vertex3D::attributeSet));
+    }
+};
+
+} // namespace layout
+
+template <class Derived, class Data>
+void DataGeometry<Derived, Data>::validate(const Data* data)
+{
+    requireNonNull(data, Derived::kDataName);
+    Derived::check(*data);
+    layout::checkStructure(*data, layout::Path{});
+}
+
+template <class Derived, class Data>
+DataGeometry<Derived, Data>::DataGeometry(const Data& data)
+{
+    layout::copyData(m_data, data, layout::RetainChecked{});
+}
+
+template <class Derived, class Data>
+DataGeometry<Derived, Data>::DataGeometry(BorrowData, const Data& data) : m_borrowed(true)
+{
+    layout::checkHandles(data, layout::Path{});
+    std::memcpy(static_cast<void*>(&m_data), &data, sizeof(Data));
+    disableCaching();
+}
+
+template <class Derived, class Data>
+DataGeometry<Derived, Data>::DataGeometry(DuplicateData, const Data& source)
+{
+    layout::copyData(m_data, source, layout::DuplicateEach{});
+}
+
+template <class Derived, class Data>
+DataGeometry<Derived, Data>::DataGeometry(AdoptData, Data& owned)
+{
+    std::memcpy(static_cast<void*>(&m_data), &owned, sizeof(Data));
+    layout::clearOwned(owned);
+}
+
+template <class Derived, class Data>
+DataGeometry<Derived, Data>::~DataGeometry()
+{
+    if (!m_borrowed)
+        layout::release(m_data);
+}
+
+template <class Derived, class Data>
+void DataGeometry<Derived, Data>::getData(Data& out) const
+{
+    layout::copyData(out, m_data, layout::RetainTrusted{});
+}
+
+template <class Derived, class Data>
+void DataGeometry<Derived, Data>::setData(const Data& data)
+{
+    validate(&data);
+    Data fresh;
+    layout::copyData(fresh, data, layout::RetainChecked{});
+    std::swap(m_data, fresh);
+    layout::release(fresh);
+    markEdited();
+}
+
+template <class Derived, class Data>
+void DataGeometry<Derived, Data>::emptyData(Data& data)
+{
+    layout::emptyData(data);
+}
+
+template <class Derived, class Data>
+Object* DataGeometry<Derived, Data>::duplicate() const
+{
+    Ref<Derived> copy = Ref<Derived>::adopt(new Derived(DuplicateData{}, m_data));
+    copy->registerLive();
+    return copy.detach();
+}
+
+template <class Derived, class Data>
+const AttributeSet* DataGeometry<Derived, Data>::attributeSet() const
+{
+    return heldAttributeSet(m_data.*Derived::kOwnSet);
+}
+
+template <class Derived, class Data>
+void DataGeometry<Derived, Data>::setAttributeSet(Ref<AttributeSet> attributes)
+{
+    replaceHeldSet(m_data.*Derived::kOwnSet, std::move(attributes));
+    markEdited();
+}
+
+} // namespace q3

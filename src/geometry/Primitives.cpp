@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/Primitives.h"
+
+#include "core/AttributeSet.h"
+
+#include <algorithm>
+#include <cstring>
+#include <utility>
+
+namespace q3 {
+
+namespace {
+
+// Appends `count` values to a per-vertex channel, creating the channel (NaN
+// for every earlier vertex) the first time a vertex has the attribute.
+void appendChannel(std::vector<float>& channel, bool has, const float* values, std::size_t count,
+                   std::size_t earlierVertices)
+{
+    if (channel.empty()) {
+        if (!has)
+            return;
+        channel.assign(earlierVertices * count, VertexAttributes::kNone);
+    }
+    channel.insert(channel.end(), values, values + count);
+}
+
+} // namespace
+
+void VertexAttributes::inheritFrom(const AttributeSet* set)
+{
+    if (set == nullptr)
+        return;
+    if (!hasColor())
+        if (const auto value = set->diffuseColor())
+            color = *value;
+    if (!hasTransparency())
+        if (const auto value = set->transparencyColor())
+            transparency = *value;
+    if (!hasNormal())
+        if (const auto value = set->normal())
+            normal = *value;
+    if (!hasUV())
+        if (const auto value = set->surfaceUV())
+            uv = *value;
+}
+
+void VertexAttributes::inherit(TQ3AttributeType type, const void* value)
+{
+    switch (type) {
+    case kQ3AttributeTypeDiffuseColor:
+        if (!hasColor())
+            std::memcpy(&color, value, sizeof color);
+        break;
+    case kQ3AttributeTypeTransparencyColor:
+        if (!hasTransparency())
+            std::memcpy(&transparency, value, sizeof transparency);
+        break;
+    case kQ3AttributeTypeNormal:
+        if (!hasNormal())
+            std::memcpy(&normal, value, sizeof normal);
+        break;
+    case kQ3AttributeTypeSurfaceUV:
+        if (!hasUV())
+            std::memcpy(&uv, value, sizeof uv);
+        break;
+    default:
+        break;
+    }
+}
+
+std::uint32_t Mesh::addVertex(const TQ3Point3D& position, const VertexAttributes& attributes)
+{
+    const std::size_t index = vertexCount();
+    m_positions.insert(m_positions.end(), {position.x, position.y, position.z});
+    const TQ3ColorRGB& c = attributes.color;
+    const TQ3ColorRGB& t = attributes.transparency;
+    const TQ3Vector3D& n = attributes.normal;
+    const float color[3] = {c.r, c.g, c.b};
+    const float transparency[3] = {t.r, t.g, t.b};
+    const float normal[3] = {n.x, n.y, n.z};
+    const float uv[2] = {attributes.uv.u, attributes.uv.v};
+    appendChannel(m_colors, attributes.hasColor(), color, 3, index);
+    appendChannel(m_transparency, attributes.hasTransparency(), transparency, 3, index);
+    appendChannel(m_normals, attributes.hasNormal(), normal, 3, index);
+    appendChannel(m_uvs, attributes.hasUV(), uv, 2, index);
+    return static_cast<std::uint32_t>(index);
+}
+
+void Mesh::reserveVertices(std::size_t count)
+{
+    m_positions.reserve(3 * count);
+}
+
+void Mesh::addLine(std::uint32_t a, std::uint32_t b)
+{
+    m_lines.insert(m_lines.end(), {a, b});
+}
+
+void Mesh::addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c)
+{
+    m_triangles.insert(m_triangles.end(), {a, b, c});
+}
+
+void Mesh::addEdge(std::uint32_t a, std::uint32_t b)
+{
+    m_edges.insert(m_edges.end(), {a, b});
+}
+
+void Mesh::edgesFromTriangles()
+{
+    // Each side as (smaller, larger) index, sorted, duplicates dropped; the
+    // result keeps the orientation of the first triangle that had it.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> sides;
+    sides.reserve(m_triangles.size());
+    for (std::size_t t = 0; t < m_triangles.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = m_triangles[t + k];
+            const std::uint32_t b = m_triangles[t + (k + 1) % 3];
+            const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+            sides.emplace_back(key, std::uint32_t(t + k));
+        }
+    std::sort(sides.begin(), sides.end());
+    m_edges.clear();
+    for (std::size_t i = 0; i < sides.size(); ++i) {
+        if (i > 0 && sides[i].first == sides[i - 1].first)
+            continue;
+        const std::size_t corner = sides[i].second;
+        const std::size_t t = corner - corner % 3;
+        addEdge(m_triangles[corner], m_triangles[t + (corner - t + 1) % 3]);
+    }
+}
+
+MeshView Mesh::view() const
+{
+    MeshView view;
+    view.positions = m_positions.data();
+    view.vertexCount = vertexCount();
+    view.colors = m_colors.empty() ? nullptr : m_colors.data();
+    view.transparency = m_transparency.empty() ? nullptr : m_transparency.data();
+    view.normals = m_normals.empty() ? nullptr : m_normals.data();
+    view.uvs = m_uvs.empty() ? nullptr : m_uvs.data();
+    view.points = m_points.data();
+    view.pointCount = m_points.size();
+    view.lines = m_lines.data();
+    view.lineCount = m_lines.size() / 2;
+    view.strips = m_strips.data();
+    view.stripCount = m_strips.size();
+    view.triangles = m_triangles.data();
+    view.triangleCount = m_triangles.size() / 3;
+    view.edges = m_edges.data();
+    view.edgeCount = m_edges.size() / 2;
+    return view;
+}
+
+void Mesh::clear()
+{
+    *this = Mesh();
+}
+
+} // namespace q3

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// What every geometry decomposes into: points, line segments, line strips and
+// triangles over one pool of vertices, each vertex with the attributes the
+// renderers use (QD3DSet.h's diffuse colour, transparency colour, normal and
+// surface uv). Rendering, bounding and Q3Geometry_GetDecomposed all consume
+// this one form, through PrimitiveSink.
+
+#include "QD3D.h"
+#include "QD3DSet.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace q3 {
+
+class AttributeSet;
+
+/// The attributes one vertex carries after inheritance. A component that is
+/// NaN means "none here": the vertex takes that attribute from what is drawn
+/// around it (its geometry's attribute set, then the view's state).
+struct VertexAttributes {
+    static constexpr float kNone = std::numeric_limits<float>::quiet_NaN();
+
+    TQ3ColorRGB color{kNone, kNone, kNone};
+    TQ3ColorRGB transparency{kNone, kNone, kNone};
+    TQ3Vector3D normal{kNone, kNone, kNone};
+    TQ3Param2D uv{kNone, kNone};
+
+    bool hasColor() const { return color.r == color.r; }
+    bool hasTransparency() const { return transparency.r == transparency.r; }
+    bool hasNormal() const { return normal.x == normal.x; }
+    bool hasUV() const { return uv.u == uv.u; }
+
+    /// QuickDraw 3D's inheritance step: each attribute this lacks is taken
+    /// from `set` (null: nothing). Call it from the most specific set (the
+    /// vertex's) to the least (the face's, the geometry's).
+    void inheritFrom(const AttributeSet* set);
+    /// The same step for one attribute value of a standard type (as stored in
+    /// a TriMesh attribute array); types the renderers do not use are ignored.
+    void inherit(TQ3AttributeType type, const void* value);
+};
+
+/// A run of consecutive vertices drawn as one connected line strip.
+struct Strip {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+};
+
+/// A decomposition as a set of borrowed arrays. Attribute arrays are null
+/// when no vertex has that attribute; otherwise they hold one entry per
+/// vertex, NaN where a vertex has none (VertexAttributes). Indices refer to
+/// the vertex pool.
+struct MeshView {
+    const float* positions = nullptr;    ///< x y z per vertex
+    std::size_t vertexCount = 0;
+    const float* colors = nullptr;       ///< r g b per vertex, or null
+    const float* transparency = nullptr; ///< r g b per vertex, or null
+    const float* normals = nullptr;      ///< x y z per vertex, or null
+    const float* uvs = nullptr;          ///< u v per vertex, or null
+
+    const std::uint32_t* points = nullptr; ///< one index per point
+    std::size_t pointCount = 0;
+    const std::uint32_t* lines = nullptr; ///< two indices per segment
+    std::size_t lineCount = 0;
+    const Strip* strips = nullptr;
+    std::size_t stripCount = 0;
+    const std::uint32_t* triangles = nullptr; ///< three indices per triangle
+    std::size_t triangleCount = 0;
+    /// How the triangles look in a wireframe: two indices per edge (the
+    /// outline of a polygon, not the diagonals its triangulation added).
+    const std::uint32_t* edges = nullptr;
+    std::size_t edgeCount = 0;
+};
+
+/// A decomposition that owns its arrays: what retained geometries cache.
+/// Invariant: every attribute array is empty or has one entry per vertex;
+/// every index is below vertexCount().
+class Mesh {
+public:
+    std::size_t vertexCount() const { return m_positions.size() / 3; }
+
+    /// Appends a vertex and returns its index.
+    std::uint32_t addVertex(const TQ3Point3D& position, const VertexAttributes& attributes);
+    void reserveVertices(std::size_t count);
+
+    void addPoint(std::uint32_t v) { m_points.push_back(v); }
+    void addLine(std::uint32_t a, std::uint32_t b);
+    /// A strip over the vertices first .. first + count - 1.
+    void addStrip(std::uint32_t first, std::uint32_t count) { m_strips.push_back(Strip{first, count}); }
+    void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+    void addEdge(std::uint32_t a, std::uint32_t b);
+    /// Makes the edges every distinct side of every triangle (a mesh's
+    /// wireframe), replacing any edges added before.
+    void edgesFromTriangles();
+
+    const std::vector<std::uint32_t>& triangles() const { return m_triangles; }
+    const std::vector<float>& positions() const { return m_positions; }
+    MeshView view() const;
+    void clear();
+
+private:
+    std::vector<float> m_positions;
+    std::vector<float> m_colors;
+    std::vector<float> m_transparency;
+    std::vector<float> m_normals;
+    std::vector<float> m_uvs;
+    std::vector<std::uint32_t> m_points;
+    std::vector<std::uint32_t> m_lines;
+    std::vector<Strip> m_strips;
+    std::vector<std::uint32_t> m_triangles;
+    std::vector<std::uint32_t> m_edges;
+};
+
+/// Receives a geometry's decomposition. `own` is the geometry's own attribute
+/// set (or null): what its vertices lack comes from it, then from the view.
+class PrimitiveSink {
+public:
+    virtual ~PrimitiveSink() = default;
+    virtual void draw(const MeshView& mesh, const AttributeSet* own) = 0;
+};
+
+} // namespace q3

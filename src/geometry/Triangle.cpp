@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/Triangle.h"
+
+#include "geometry/DataGeometryImpl.h"
+
+namespace q3 {
+
+const ClassInfo kTriangleClass{kQ3GeometryTypeTriangle, &kGeometryClass, "triangle"};
+
+namespace layout {
+template <>
+struct Describe<TQ3TriangleData> {
+    static auto fields()
+    {
+        return std::make_tuple(
+            inlineArray("vertices", &TQ3TriangleData::vertices),
+            handle<AttributeSet>("triangleAttributeSet", &TQ3TriangleData::triangleAttributeSet));
+    }
+};
+} // namespace layout
+
+template class DataGeometry<Triangle, TQ3TriangleData>;
+
+void Triangle::check(const TQ3TriangleData& data)
+{
+    for (unsigned long i = 0; i < 3; ++i)
+        requireFinite(data.vertices[i].point, "vertices", i);
+}
+
+void Triangle::decompose(const DecomposeContext&, PrimitiveSink& sink) const
+{
+    const TQ3Vertex3D* corners = data().vertices;
+    std::vector<double> key;
+    appendVertexSetKeys(key, corners, 3);
+    withMesh(
+        std::move(key),
+        [&](Mesh& mesh) {
+            addVertices(mesh, corners, 3);
+            mesh.addTriangle(0, 1, 2);
+            mesh.edgesFromTriangles();
+        },
+        [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
+}
+
+const TQ3Vertex3D& Triangle::vertex(unsigned long index) const
+{
+    return vertexAt(data().vertices, 3, index, "the triangle");
+}
+
+void Triangle::setVertexPosition(unsigned long index, const TQ3Point3D& position)
+{
+    moveVertex(editableData().vertices, 3, index, position, "the triangle");
+    markEdited();
+}
+
+void Triangle::setVertexAttributeSet(unsigned long index, Ref<AttributeSet> attributes)
+{
+    replaceVertexSet(editableData().vertices, 3, index, std::move(attributes), "the triangle");
+    markEdited();
+}
+
+} // namespace q3
