@@ -206,6 +206,27 @@ def frames(runs, out):
     out.append("")
 
 
+def meshes(runs, out):
+    out.append("### 6. Frames: one retained TriMesh of 100,352 triangles with vertex colours "
+               "(paired, wall time, medians)\n")
+    out.append("| Image | Q3 (interactive renderer) | raw glDrawElements, same depth test and shading | "
+               "Q3 / raw | Target | raw direct into BGRA (info) | mesh rebuilt by an unchanged 2nd frame | "
+               "pixels differing (raw, direct) |")
+    out.append("|---|---|---|---|---|---|---|---|")
+    for size in (512, 1024):
+        name = f"MeshFrame/{size}"
+        problem = missing(runs, name)
+        if problem:
+            out.append(f"| {size}² | {problem} | | | | | | |")
+            continue
+        c = lambda k: runs.counter(name, k)
+        out.append(f"| {size}² | {fmt(c('q3_ms'))} ms | {fmt(c('raw_ms'))} ms | **{c('q3_over_raw'):.3f}×** | "
+                   f"{verdict(c('q3_over_raw'), 1.15, False)} | {fmt(c('rawdirect_ms'))} ms (Q3 / it "
+                   f"{c('q3_over_rawdirect'):.2f}) | {c('mesh_builds_second_frame'):.0f} | "
+                   f"{c('pixels_differing'):.0f}, {c('pixels_differing_direct'):.0f} of {size * size} |")
+    out.append("")
+
+
 def memory(runs, out):
     out.append("### 5. Memory held per retained curve (after one frame, constant c1 = 64)\n")
     out.append("| Curve | data bytes | object + copies | cache | held / data | of which Bezier form | "
@@ -232,6 +253,7 @@ def main(paths):
     adaptive(runs, out)
     frames(runs, out)
     memory(runs, out)
+    meshes(runs, out)
     counts = sorted({runs.count(n) for n in runs.runs})
     out.append(f"Repetitions pooled per benchmark: {', '.join(map(str, counts))}.")
     if runs.errors:

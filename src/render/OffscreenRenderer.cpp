@@ -675,7 +675,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     for (std::size_t k = i; k < end; ++k) {
                         m_multiFirsts.push_back(m_commands[k].first);
                         m_multiCounts.push_back(m_commands[k].count);
-                        m_multiIndices.push_back(m_indices.data() + m_commands[k].first);
+                        if (head.indexed)
+                            m_multiIndices.push_back(m_indices.data() + m_commands[k].first);
                     }
                     if (head.indexed)
                         glMultiDrawElements(glMode(head.primitive), m_multiCounts.data(), GL_UNSIGNED_INT,

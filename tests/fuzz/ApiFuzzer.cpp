@@ -48,6 +48,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <map>
 #include <memory>
 #include <vector>
@@ -175,7 +176,8 @@ bool sameBytes(const T& a, const T& b)
 }
 
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
-                  kDrawContext, kRenderer, kView };
+                  kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh };
+constexpr int kKindCount = 14;
 
 struct Held {
     TQ3Object handle;
@@ -498,6 +500,7 @@ private:
         case Op::kOtherGeometryEdit: otherGeometryEdit(); break;
         case Op::kMath: math(); break;
         case Op::kAccessors: accessors(); break;
+        case Op::kSurfaces: surfaces(); break;
         case Op::kCount: break;
         }
     }
@@ -659,7 +662,7 @@ private:
 
     void duplicate()
     {
-        const TQ3Object original = pick(Kind(m_in.u8() % 11));
+        const TQ3Object original = pick(Kind(m_in.u8() % kKindCount));
         if (++m_duplicates > kMaxDuplicates)
             return;
         const TQ3Object copy = OBJECT(Q3Object_Duplicate(original));
@@ -693,7 +696,7 @@ private:
 
     void dispose()
     {
-        const TQ3Object object = pick(Kind(m_in.u8() % 11));
+        const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
         for (int times = 1 + m_in.u8() % 2; times > 0; --times) {
             const bool held = holds(object);
             // Disposing again after the last held reference went is a double
@@ -717,7 +720,7 @@ private:
 
     void getReference()
     {
-        const TQ3Object object = pick(Kind(m_in.u8() % 11));
+        const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
         const TQ3Object reference = OBJECT(Q3Shared_GetReference(object));
         if (reference == nullptr)
             return;
@@ -987,8 +990,9 @@ private:
             break;
         }
         case 5: {
-            static const Kind kGeometries[] = {Kind::kCurve, Kind::kPolyLine, Kind::kLine, Kind::kPoint};
-            const TQ3Object geometry = pick(kGeometries[m_in.u8() % 4]);
+            static const Kind kGeometries[] = {Kind::kCurve,    Kind::kPolyLine, Kind::kLine,   Kind::kPoint,
+                                               Kind::kTriangle, Kind::kPolygon,  Kind::kTriMesh};
+            const TQ3Object geometry = pick(kGeometries[m_in.u8() % 7]);
             set ? STATUS(Q3Geometry_SetAttributeSet(geometry, attributes))
                 : STATUS(Q3Geometry_GetAttributeSet(geometry, out));
             break;
@@ -1130,6 +1134,211 @@ private:
                 STATUS(Q3PolyLine_EmptyData(nullptr));
             }
         }
+    }
+
+    // Triangles, polygons and trimeshes: New, SetData, GetData with
+    // EmptyData (twice), immediate Submit and the per-vertex calls, with data
+    // that may break any rule (non-finite coordinates and attribute values,
+    // indices out of range, unknown attribute types, NULL arrays, counts no
+    // array could hold, dead or foreign attribute sets). A failed SetData
+    // must leave the edit index alone; a successful one must read back.
+    void surfaces()
+    {
+        const std::uint8_t family = m_in.u8() % 3;
+        const std::uint8_t action = m_in.u8() % 5;
+        const Kind kind = family == 0 ? Kind::kTriangle : family == 1 ? Kind::kPolygon : Kind::kTriMesh;
+        const TQ3AttributeSet set = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+        const bool nullData = m_in.u8() == 0;
+        if (family == 0) {
+            TQ3TriangleData data{};
+            for (TQ3Vertex3D& v : data.vertices)
+                v = TQ3Vertex3D{point3(), (m_in.u8() & 1) ? set : nullptr};
+            data.triangleAttributeSet = set;
+            surfaceAction<TQ3TriangleData>(action, kind, nullData ? nullptr : &data, Q3Triangle_New, Q3Triangle_SetData,
+                                           Q3Triangle_GetData, Q3Triangle_EmptyData, Q3Triangle_Submit,
+                                           [&](const TQ3TriangleData& a, const TQ3TriangleData& b) {
+                                               for (int i = 0; i < 3; ++i)
+                                                   if (!sameBytes(a.vertices[i], b.vertices[i]))
+                                                       return false;
+                                               return a.triangleAttributeSet == b.triangleAttributeSet;
+                                           });
+            if (action == 4)
+                vertexCalls(kind, 3, set, Q3Triangle_GetVertexPosition, Q3Triangle_SetVertexPosition,
+                            Q3Triangle_GetVertexAttributeSet, Q3Triangle_SetVertexAttributeSet);
+        } else if (family == 1) {
+            std::vector<TQ3Vertex3D> vertices(m_in.u8() % 12);
+            for (TQ3Vertex3D& v : vertices)
+                v = TQ3Vertex3D{point3(), (m_in.u8() & 1) ? set : nullptr};
+            TQ3PolygonData data{vertices.size(), vertices.empty() ? nullptr : vertices.data(), set};
+            if (m_in.u8() == 0) {
+                data.numVertices = ~0UL - m_in.u8();
+                data.vertices = nullptr;
+            }
+            surfaceAction<TQ3PolygonData>(action, kind, nullData ? nullptr : &data, Q3Polygon_New, Q3Polygon_SetData,
+                                          Q3Polygon_GetData, Q3Polygon_EmptyData, Q3Polygon_Submit,
+                                          [&](const TQ3PolygonData& a, const TQ3PolygonData& b) {
+                                              if (a.numVertices != b.numVertices)
+                                                  return false;
+                                              for (unsigned long i = 0; i < a.numVertices; ++i)
+                                                  if (!sameBytes(a.vertices[i], b.vertices[i]))
+                                                      return false;
+                                              return a.polygonAttributeSet == b.polygonAttributeSet;
+                                          });
+            if (action == 4)
+                vertexCalls(kind, 12, set, Q3Polygon_GetVertexPosition, Q3Polygon_SetVertexPosition,
+                            Q3Polygon_GetVertexAttributeSet, Q3Polygon_SetVertexAttributeSet);
+        } else {
+            TriMeshBuffers mesh;
+            readTriMesh(mesh, set);
+            surfaceAction<TQ3TriMeshData>(action, kind, nullData ? nullptr : &mesh.data, Q3TriMesh_New,
+                                          Q3TriMesh_SetData, Q3TriMesh_GetData, Q3TriMesh_EmptyData,
+                                          Q3TriMesh_Submit, [&](const TQ3TriMeshData& a, const TQ3TriMeshData& b) {
+                                              return a.numPoints == b.numPoints && a.numTriangles == b.numTriangles &&
+                                                     (a.numPoints == 0 ||
+                                                      std::memcmp(a.points, b.points,
+                                                                  a.numPoints * sizeof(TQ3Point3D)) == 0) &&
+                                                     a.triMeshAttributeSet == b.triMeshAttributeSet;
+                                          });
+        }
+    }
+
+    // A TriMesh whose arrays hold what its counts claim (unless a count is
+    // one no array could hold, with the array NULL).
+    struct TriMeshBuffers {
+        std::vector<TQ3Point3D> points;
+        std::vector<TQ3TriMeshTriangleData> triangles;
+        std::vector<TQ3TriMeshEdgeData> edges;
+        std::vector<TQ3TriMeshAttributeData> vertexAttributes;
+        std::vector<TQ3TriMeshAttributeData> triangleAttributes;
+        std::deque<std::vector<float>> values; // a deque: growing it moves no array
+        std::deque<std::vector<char>> uses;
+        TQ3TriMeshData data{};
+    };
+
+    void readTriMesh(TriMeshBuffers& m, TQ3AttributeSet set)
+    {
+        m.points.resize(m_in.u8() % 10);
+        for (TQ3Point3D& p : m.points)
+            p = point3();
+        const unsigned long points = m.points.size();
+        m.triangles.resize(m_in.u8() % 10);
+        for (TQ3TriMeshTriangleData& t : m.triangles)
+            for (unsigned long& i : t.pointIndices)
+                i = m_in.index(points);
+        m.edges.resize(m_in.u8() % 4);
+        for (TQ3TriMeshEdgeData& e : m.edges) {
+            e.pointIndices[0] = m_in.index(points);
+            e.pointIndices[1] = m_in.index(points);
+            e.triangleIndices[0] = (m_in.u8() & 1) ? (unsigned long)kQ3ArrayIndexNULL : m_in.index(m.triangles.size());
+            e.triangleIndices[1] = 0xFFFFFFFFUL;
+        }
+        // Attribute arrays per vertex and per triangle: the standard types
+        // (1..10) and some that are not; values with NaN and Inf possible.
+        for (int a = m_in.u8() % 3; a > 0; --a) {
+            const bool onVertices = m_in.u8() & 1;
+            const std::size_t count = onVertices ? points : m.triangles.size();
+            const std::uint8_t raw = m_in.u8();
+            const TQ3AttributeType type = raw < 200 ? 1 + raw % 10 : TQ3AttributeType(std::int8_t(raw));
+            m.values.emplace_back(count * 6 + 1);
+            for (float& v : m.values.back())
+                v = (m_in.u8() % 8 == 0) ? m_in.value() : float(m_in.u8() % 2);
+            m.uses.emplace_back();
+            if (m_in.u8() & 1) {
+                m.uses.back().resize(count + 1);
+                for (char& u : m.uses.back())
+                    u = char(m_in.u8() & 1);
+            }
+            (onVertices ? m.vertexAttributes : m.triangleAttributes)
+                .push_back(TQ3TriMeshAttributeData{type, m.values.back().data(),
+                                                   m.uses.back().empty() ? nullptr : m.uses.back().data()});
+        }
+        TQ3TriMeshData& d = m.data;
+        d.triMeshAttributeSet = set;
+        d.numTriangles = m.triangles.size();
+        d.triangles = m.triangles.empty() ? nullptr : m.triangles.data();
+        d.numEdges = m.edges.size();
+        d.edges = m.edges.empty() ? nullptr : m.edges.data();
+        d.numPoints = points;
+        d.points = m.points.empty() ? nullptr : m.points.data();
+        d.numVertexAttributeTypes = m.vertexAttributes.size();
+        d.vertexAttributeTypes = m.vertexAttributes.empty() ? nullptr : m.vertexAttributes.data();
+        d.numTriangleAttributeTypes = m.triangleAttributes.size();
+        d.triangleAttributeTypes = m.triangleAttributes.empty() ? nullptr : m.triangleAttributes.data();
+        if (m_in.u8() == 0) {
+            d.numTriangles = ~0UL - m_in.u8();
+            d.triangles = nullptr;
+        }
+    }
+
+    template <class Data, class Same>
+    void surfaceAction(std::uint8_t action, Kind kind, Data* data, TQ3GeometryObject (*create)(const Data*),
+                       TQ3Status (*setData)(TQ3GeometryObject, const Data*),
+                       TQ3Status (*getData)(TQ3GeometryObject, Data*), TQ3Status (*emptyData)(Data*),
+                       TQ3Status (*submit)(const Data*, TQ3ViewObject), Same same)
+    {
+        switch (action) {
+        case 0: {
+            const TQ3Object geometry = OBJECT(create(data));
+            if (geometry != nullptr)
+                hold(geometry, kind);
+            break;
+        }
+        case 1: {
+            const TQ3Object geometry = pick(kind);
+            const bool ours = holdsKind(geometry, kind) && m_initialized > 0;
+            const unsigned long before = ours ? editIndex(geometry) : 0;
+            const TQ3Status status = STATUS(setData(geometry, data));
+            if (!ours)
+                break;
+            if (status != kQ3Success) {
+                require(editIndex(geometry) == before, "SetData", "a failed SetData changed the edit index");
+                break;
+            }
+            Data got{};
+            if (STATUS(getData(geometry, &got)) == kQ3Success) {
+                require(same(got, *data), "GetData", "the data read back differs from what was set");
+                STATUS(emptyData(&got));
+            }
+            break;
+        }
+        case 2: {
+            Data got{};
+            if (STATUS(getData(pick(kind), data == nullptr ? nullptr : &got)) == kQ3Success) {
+                STATUS(emptyData(&got));
+                STATUS(emptyData(&got));
+            }
+            break;
+        }
+        case 3: {
+            const TQ3Object view = pick(Kind::kView);
+            const DrawTimer timer(m_drawSeconds);
+            STATUS(submit(data, view));
+            break;
+        }
+        default:
+            break;
+        }
+    }
+
+    void vertexCalls(Kind kind, unsigned long count, TQ3AttributeSet set,
+                     TQ3Status (*getPosition)(TQ3GeometryObject, unsigned long, TQ3Point3D*),
+                     TQ3Status (*setPosition)(TQ3GeometryObject, unsigned long, const TQ3Point3D*),
+                     TQ3Status (*getSet)(TQ3GeometryObject, unsigned long, TQ3AttributeSet*),
+                     TQ3Status (*setSet)(TQ3GeometryObject, unsigned long, TQ3AttributeSet))
+    {
+        const TQ3Object geometry = pick(kind);
+        const unsigned long index = m_in.index(count);
+        const bool nullArg = m_in.u8() == 0;
+        TQ3Point3D position = point3();
+        TQ3AttributeSet got = nullptr;
+        switch (m_in.u8() % 4) {
+        case 0: STATUS(getPosition(geometry, index, nullArg ? nullptr : &position)); break;
+        case 1: STATUS(setPosition(geometry, index, nullArg ? nullptr : &position)); break;
+        case 2: STATUS(getSet(geometry, index, nullArg ? nullptr : &got)); break;
+        default: STATUS(setSet(geometry, index, set)); break;
+        }
+        if (got != nullptr)
+            hold(got, Kind::kAttributeSet);
     }
 
     // The math helpers with arbitrary values, results aliasing inputs.
@@ -1469,7 +1678,7 @@ private:
 
     void submitRetained()
     {
-        const TQ3Object object = pick(Kind(m_in.u8() % 11));
+        const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
         const TQ3Object view = pick(Kind::kView);
         const Held* entry = heldEntry(object);
         if (entry != nullptr && (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine) && !drawAllowed())
@@ -1582,9 +1791,26 @@ private:
             if (!posted) {
                 const Held* entry = heldEntry(geometry);
                 require(entry != nullptr && (entry->kind == Kind::kPolyLine || entry->kind == Kind::kLine ||
-                                             entry->kind == Kind::kPoint),
-                        "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a geometry");
+                                             entry->kind == Kind::kPoint || entry->kind == Kind::kTriangle ||
+                                             entry->kind == Kind::kTriMesh),
+                        "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
             }
+            return;
+        }
+        if (holdsKind(geometry, Kind::kPolygon)) {
+            // A polygon gives a TriMesh of at most numVertices - 2 triangles
+            // over its own vertices.
+            require(!posted && Q3Geometry_GetType(polyline) == kQ3GeometryTypeTriMesh, "Q3Geometry_GetDecomposed",
+                    "a polygon did not give a trimesh");
+            hold(polyline, Kind::kTriMesh);
+            TQ3PolygonData polygon{};
+            TQ3TriMeshData mesh{};
+            STATUS(Q3Polygon_GetData(geometry, &polygon));
+            STATUS(Q3TriMesh_GetData(polyline, &mesh));
+            require(mesh.numPoints == polygon.numVertices && mesh.numTriangles + 2 <= polygon.numVertices,
+                    "Q3Geometry_GetDecomposed", "a polygon's trimesh has the wrong size");
+            STATUS(Q3Polygon_EmptyData(&polygon));
+            STATUS(Q3TriMesh_EmptyData(&mesh));
             return;
         }
         require(!posted && holdsKind(geometry, Kind::kCurve), "Q3Geometry_GetDecomposed",
@@ -1621,7 +1847,7 @@ private:
 
     void objectQueries()
     {
-        const TQ3Object object = pick(Kind(m_in.u8() % 11));
+        const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
         constexpr TQ3ObjectType kInvalid = kQ3ObjectTypeInvalid;
         switch (m_in.u8() % 11) {
         case 0: QUERY(Q3Object_GetType(object), kInvalid); break;

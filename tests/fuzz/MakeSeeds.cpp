@@ -19,7 +19,7 @@ using q3fuzz::Op;
 
 // Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
-                           kDrawContext, kRenderer, kView };
+                           kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -515,6 +515,58 @@ std::vector<std::pair<std::string, Seed>> seeds()
         call(true, 7, 0).u8(9).held().special(0);     // NaN
         call(false, 7, 0).u8(10).held().value(0);     // GetAspectRatio
         s.startRendering().submitHeld(kPoint).submitHeld(kLine).submitHeld(kPolyLine).endRendering();
+    }
+    // Triangles, polygons and trimeshes: made, drawn filled and in
+    // wireframe, bounded, decomposed, edited at their index ends and with
+    // NaN, emptied twice.
+    {
+        Seed& s = add("surfaces");
+        auto vertex = [&s](float x, float y, float z) -> Seed& { return s.value(x).value(y).value(z).u8(0); };
+        // surfaces(): family, action, attribute-set byte, non-null byte, the data.
+        s.op(Op::kSurfaces).u8(0).u8(0).u8(0).u8(1);
+        vertex(0, 0, 0);
+        vertex(1, 0, 0);
+        vertex(0, 1, 0);
+        s.op(Op::kSurfaces).u8(1).u8(0).u8(0).u8(1).u8(5);
+        vertex(0, 0, 0);
+        vertex(2, 0, 0);
+        vertex(2, 2, 0);
+        vertex(1, 0.5f, 0); // concave
+        vertex(0, 2, 0);
+        s.u8(1);
+        // A trimesh of 4 points and 2 triangles with per-vertex diffuse colours.
+        s.op(Op::kSurfaces).u8(2).u8(0).u8(0).u8(1).u8(4);
+        for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f})
+            s.value(v);
+        s.u8(2).smallIndex(0).smallIndex(1).smallIndex(2).smallIndex(0).smallIndex(2).smallIndex(3);
+        s.u8(0).u8(1).u8(1).u8(4); // no edges; one array, on the vertices, diffuse colour
+        for (int i = 0; i < 4 * 6 + 1; ++i)
+            s.u8(1).u8(1);
+        s.u8(0).u8(1);
+        s.scene(2).startRendering().submitHeld(kTriangle).submitHeld(kPolygon).submitHeld(kTriMesh).endRendering();
+        s.startBox().submitHeld(kPolygon).submitHeld(kTriMesh).endBox();
+        // No curve is held, so the decomposition takes any held object: the
+        // triangle (NULL) and the polygon (a trimesh).
+        s.startRendering().op(Op::kDecompose).held(0).held().op(Op::kDecompose).held(1).held().endRendering();
+        // vertexCalls(): the geometry, an index, the null byte, a position, the call.
+        s.op(Op::kSurfaces).u8(0).u8(4).u8(0).u8(1);
+        vertex(0, 0, 0);
+        vertex(1, 0, 0);
+        vertex(0, 1, 0);
+        s.held().smallIndex(2).u8(1).value(5).value(5).value(5).u8(1);  // SetVertexPosition, last vertex
+        s.op(Op::kSurfaces).u8(0).u8(4).u8(0).u8(1);
+        vertex(0, 0, 0);
+        vertex(1, 0, 0);
+        vertex(0, 1, 0);
+        s.held().smallIndex(3).u8(1).special(0).value(0).value(0).u8(1); // one past the end, NaN
+        // SetData with a NaN vertex, then GetData and EmptyData twice.
+        s.op(Op::kSurfaces).u8(0).u8(1).u8(0).u8(1);
+        vertex(0, 0, 0);
+        s.special(0).value(0).value(0).u8(0);
+        vertex(0, 1, 0);
+        s.held();
+        s.op(Op::kSurfaces).u8(1).u8(2).u8(0).u8(1).u8(0).u8(1).held();
+        s.startRendering().submitHeld(kPolygon).endRendering();
     }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {

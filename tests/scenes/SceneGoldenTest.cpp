@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Every scene of samples/scenes rendered at the sample's size and compared
+// with tests/golden/scene_NAME.png (tolerance: tests/golden/README.md), and a
+// few facts about the pictures checked by reading pixels, so that a golden
+// blessed from a wrong picture would not pass.
+
+#include "Golden.h"
+
+#include "QD3D.h"
+#include "QD3DErrors.h"
+#include "scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace {
+
+class SceneTest : public ::testing::TestWithParam<unsigned long> {
+protected:
+    void SetUp() override
+    {
+        ASSERT_EQ(Q3Initialize(), kQ3Success);
+        Q3Error_Register(&onError, 0);
+        s_errors = 0;
+    }
+    void TearDown() override
+    {
+        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
+        Q3Error_Register(nullptr, 0);
+        Q3Exit();
+    }
+
+    static q3test::RgbaImage render(const Q3Scene* scene)
+    {
+        q3test::RgbaImage image(Q3SCENE_WIDTH, Q3SCENE_HEIGHT);
+        EXPECT_EQ(q3scene_render(scene, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, image.pixels.data()), 0) << scene->name;
+        return image;
+    }
+
+private:
+    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
+    static int s_errors;
+};
+
+int SceneTest::s_errors = 0;
+
+struct Pixel {
+    int r, g, b;
+};
+
+Pixel at(const q3test::RgbaImage& image, int x, int y)
+{
+    const unsigned char* p = image.at(x, y);
+    return Pixel{p[0], p[1], p[2]};
+}
+
+bool isBackground(const q3test::RgbaImage& image, int x, int y, const TQ3ColorRGB& background)
+{
+    const Pixel p = at(image, x, y);
+    auto near = [](int channel, float value) { return std::abs(channel - int(value * 255.0f + 0.5f)) <= 1; };
+    return near(p.r, background.r) && near(p.g, background.g) && near(p.b, background.b);
+}
+
+TEST_P(SceneTest, MatchesTheGolden)
+{
+    const Q3Scene* scene = q3scene_get(GetParam());
+    ASSERT_NE(scene, nullptr);
+    const q3test::RgbaImage image = render(scene);
+    EXPECT_TRUE(q3test::matchesGolden(std::string("scene_") + scene->name, image));
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, SceneTest, ::testing::Range(0UL, q3scene_count()),
+                         [](const ::testing::TestParamInfo<unsigned long>& info) {
+                             return std::string(q3scene_get(info.param)->name);
+                         });
+
+using ScenePixels = SceneTest;
+
+// The hexagon's centre vertex is near-white and its colours blend towards
+// the rim: filled, the middle of the image is lit; in wireframe it is not.
+TEST_F(ScenePixels, TheInteractiveRendererFillsWhatTheWireframeOutlines)
+{
+    const Q3Scene* filled = q3scene_find("trimesh_interactive");
+    const Q3Scene* outlined = q3scene_find("trimesh_wireframe");
+    ASSERT_TRUE(filled != nullptr && outlined != nullptr);
+    const q3test::RgbaImage a = render(filled);
+    const q3test::RgbaImage b = render(outlined);
+    int filledCount = 0, outlinedCount = 0;
+    for (int y = 0; y < Q3SCENE_HEIGHT; ++y)
+        for (int x = 0; x < Q3SCENE_WIDTH; ++x) {
+            filledCount += !isBackground(a, x, y, filled->background);
+            outlinedCount += !isBackground(b, x, y, outlined->background);
+        }
+    EXPECT_GT(filledCount, 8 * outlinedCount);
+    EXPECT_GT(outlinedCount, 300); // six rim sides and six spokes are drawn
+}
+
+// Blue (near, submitted first) wins wherever the two triangles overlap: the
+// picture has blue pixels and orange ones, and around the image centre,
+// where both triangles lie, blue.
+TEST_F(ScenePixels, TheNearerTriangleHidesTheFartherOne)
+{
+    const Q3Scene* scene = q3scene_find("hidden_triangle");
+    ASSERT_NE(scene, nullptr);
+    const q3test::RgbaImage image = render(scene);
+    const Pixel centre = at(image, Q3SCENE_WIDTH / 2, Q3SCENE_HEIGHT / 2);
+    EXPECT_GT(centre.b, 200);
+    EXPECT_LT(centre.r, 80);
+    int orange = 0;
+    for (int y = 0; y < Q3SCENE_HEIGHT; ++y)
+        for (int x = 0; x < Q3SCENE_WIDTH; ++x) {
+            const Pixel p = at(image, x, y);
+            orange += p.r > 200 && p.b < 60;
+        }
+    EXPECT_GT(orange, 1000);
+}
+
+// Along the zigzag the colour goes from red to blue: the lit pixels in the
+// leftmost tenth are reddish, those in the rightmost tenth bluish.
+TEST_F(ScenePixels, ThePolylineRunsFromRedToBlue)
+{
+    const Q3Scene* scene = q3scene_find("polyline_red_to_blue");
+    ASSERT_NE(scene, nullptr);
+    const q3test::RgbaImage image = render(scene);
+    long leftRed = 0, leftBlue = 0, rightRed = 0, rightBlue = 0;
+    for (int y = 0; y < Q3SCENE_HEIGHT; ++y)
+        for (int x = 0; x < Q3SCENE_WIDTH; ++x) {
+            if (isBackground(image, x, y, scene->background))
+                continue;
+            const Pixel p = at(image, x, y);
+            if (x < Q3SCENE_WIDTH / 4) {
+                leftRed += p.r;
+                leftBlue += p.b;
+            } else if (x > 3 * Q3SCENE_WIDTH / 4) {
+                rightRed += p.r;
+                rightBlue += p.b;
+            }
+        }
+    EXPECT_GT(leftRed, 2 * leftBlue);
+    EXPECT_GT(rightBlue, 2 * rightRed);
+}
+
+} // namespace
