@@ -48,6 +48,62 @@ struct TQ3SubdivisionStyleData {
 };
 typedef struct TQ3SubdivisionStyleData TQ3SubdivisionStyleData;
 
+/* ---- The other styles' values (QuickDraw 3D 1.6) ------------------------- */
+
+enum TQ3PickPartsMasks {
+    kQ3PickPartsObject = 0,
+    kQ3PickPartsMaskFace = 1 << 0,
+    kQ3PickPartsMaskEdge = 1 << 1,
+    kQ3PickPartsMaskVertex = 1 << 2
+};
+typedef enum TQ3PickPartsMasks TQ3PickPartsMasks;
+typedef unsigned long TQ3PickParts;
+
+enum TQ3FillStyle { kQ3FillStyleFilled = 0, kQ3FillStyleEdges = 1, kQ3FillStylePoints = 2 };
+typedef enum TQ3FillStyle TQ3FillStyle;
+
+enum TQ3BackfacingStyle { kQ3BackfacingStyleBoth = 0, kQ3BackfacingStyleRemove = 1, kQ3BackfacingStyleFlip = 2 };
+typedef enum TQ3BackfacingStyle TQ3BackfacingStyle;
+
+enum TQ3InterpolationStyle {
+    kQ3InterpolationStyleNone = 0,
+    kQ3InterpolationStyleVertex = 1,
+    kQ3InterpolationStylePixel = 2
+};
+typedef enum TQ3InterpolationStyle TQ3InterpolationStyle;
+
+enum TQ3OrientationStyle { kQ3OrientationStyleCounterClockwise = 0, kQ3OrientationStyleClockwise = 1 };
+typedef enum TQ3OrientationStyle TQ3OrientationStyle;
+
+enum TQ3AntiAliasModeMasks { kQ3AntiAliasModeMaskEdges = 1 << 0, kQ3AntiAliasModeMaskFilled = 1 << 1 };
+typedef enum TQ3AntiAliasModeMasks TQ3AntiAliasModeMasks;
+typedef unsigned long TQ3AntiAliasMode;
+
+struct TQ3AntiAliasStyleData {
+    TQ3Switch state;
+    TQ3AntiAliasMode mode;
+    float quality;
+};
+typedef struct TQ3AntiAliasStyleData TQ3AntiAliasStyleData;
+
+enum TQ3FogMode {
+    kQ3FogModeLinear = 0,
+    kQ3FogModeExponential = 1,
+    kQ3FogModeExponentialSquared = 2,
+    kQ3FogModeAlpha = 3
+};
+typedef enum TQ3FogMode TQ3FogMode;
+
+struct TQ3FogStyleData {
+    TQ3Switch state;
+    TQ3FogMode mode;
+    float fogStart;
+    float fogEnd;
+    float density;
+    TQ3ColorARGB color;
+};
+typedef struct TQ3FogStyleData TQ3FogStyleData;
+
 /*
  * Q3 extension constants (QuickDraw 3D never had these names). They bound
  * the work a subdivision style can ask for.

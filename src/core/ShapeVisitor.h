@@ -6,7 +6,8 @@ namespace q3 {
 
 class AttributeSet;
 class Geometry;
-class SubdivisionStyle;
+class Shader;
+class Style;
 class Transform;
 
 /// What a view does with each kind of submitted shape. Drawable objects call
@@ -22,7 +23,10 @@ public:
     /// immediate-mode one that lives for the call).
     virtual void visitGeometry(const Geometry& geometry) = 0;
     virtual void visitAttributeSet(const AttributeSet& attributes) = 0;
-    virtual void visitSubdivisionStyle(const SubdivisionStyle& style) = 0;
+    /// A style or shader: it sets its part of the traversal's DrawState
+    /// (Style::apply, Shader::apply).
+    virtual void visitStyle(const Style& style) = 0;
+    virtual void visitShader(const Shader& shader) = 0;
     virtual void visitTransform(const Transform& transform) = 0;
 };
 

@@ -4,7 +4,8 @@
 
 #include "core/AttributeSet.h"
 #include "geometry/Geometry.h"
-#include "style/SubdivisionStyle.h"
+#include "shader/Shader.h"
+#include "style/Style.h"
 #include "view/Transform.h"
 
 namespace q3 {
@@ -15,9 +16,14 @@ void Pass::visitAttributeSet(const AttributeSet& attributes)
         m_state.diffuseColor = *color;
 }
 
-void Pass::visitSubdivisionStyle(const SubdivisionStyle& style)
+void Pass::visitStyle(const Style& style)
 {
-    m_state.subdivision = style.data();
+    style.apply(m_state.draw);
+}
+
+void Pass::visitShader(const Shader& shader)
+{
+    shader.apply(m_state.draw);
 }
 
 void Pass::visitTransform(const Transform& transform)
@@ -44,7 +50,7 @@ void Pass::pop()
 TessellationSetting Pass::tessellationSetting() const
 {
     TessellationSetting setting;
-    setting.style = m_state.subdivision;
+    setting.style = m_state.draw.subdivision;
     setting.localToWorld = m_state.localToWorld;
     setting.window = m_window;
     return setting;

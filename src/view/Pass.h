@@ -7,6 +7,7 @@
 #include "core/Object.h"
 #include "core/ShapeVisitor.h"
 #include "geometry/Decompose.h"
+#include "style/DrawState.h"
 #include "view/CurveTessellation.h"
 #include "view/Matrix.h"
 
@@ -22,8 +23,8 @@ class Geometry;
 /// colour. Other attributes submitted are accepted and have no effect.
 struct GraphicsState {
     Matrix localToWorld{1.0};
-    TQ3SubdivisionStyleData subdivision{kQ3ViewDefaultSubdivisionMethod, kQ3ViewDefaultSubdivisionC1,
-                                        kQ3ViewDefaultSubdivisionC2};
+    /// Styles and shaders.
+    DrawState draw;
     TQ3ColorRGB diffuseColor{kQ3ViewDefaultDiffuseColor};
 };
 
@@ -43,7 +44,9 @@ public:
     /// Merges the set's attributes into the state (its diffuse colour, if any,
     /// becomes the current one).
     void visitAttributeSet(const AttributeSet& attributes) override;
-    void visitSubdivisionStyle(const SubdivisionStyle& style) override;
+    /// Styles and shaders set their part of the state.
+    void visitStyle(const Style& style) override;
+    void visitShader(const Shader& shader) override;
     /// Local-to-world becomes transform * local-to-world (row vectors), or the
     /// identity for a reset transform.
     void visitTransform(const Transform& transform) override;

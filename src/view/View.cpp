@@ -26,7 +26,8 @@ class IgnoringVisitor final : public ShapeVisitor {
 public:
     void visitGeometry(const Geometry&) override {}
     void visitAttributeSet(const AttributeSet&) override {}
-    void visitSubdivisionStyle(const SubdivisionStyle&) override {}
+    void visitStyle(const Style&) override {}
+    void visitShader(const Shader&) override {}
     void visitTransform(const Transform&) override {}
 };
 
@@ -308,7 +309,7 @@ TQ3Matrix4x4 View::localToWorldState()
 
 TQ3SubdivisionStyleData View::subdivisionStyleState()
 {
-    return activePass().state().subdivision;
+    return activePass().state().draw.subdivision;
 }
 
 Ref<Geometry> View::decompose(const Geometry& geometry)
