@@ -31,6 +31,10 @@ constexpr std::size_t kMaxSegmentsPerCurve = std::size_t{1} << 20;
 /// kQ3SubdivisionMaxConstantSegments.
 constexpr std::uint32_t kMaxConstantSegments = 1024;
 
+/// How deep display groups may nest inside each other when drawn, bounded or
+/// duplicated: kQ3GroupMaxNesting.
+constexpr std::size_t kMaxGroupNesting = 256;
+
 /// The value substituted for an unreasonable c1 or c2: kQ3SubdivisionDefaultC1.
 constexpr float kSubdivisionDefault = 20.0f;
 

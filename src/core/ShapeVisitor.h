@@ -5,6 +5,7 @@
 namespace q3 {
 
 class AttributeSet;
+class DisplayGroup;
 class Geometry;
 class Shader;
 class Style;
@@ -28,6 +29,13 @@ public:
     virtual void visitStyle(const Style& style) = 0;
     virtual void visitShader(const Shader& shader) = 0;
     virtual void visitTransform(const Transform& transform) = 0;
+    /// A display group's objects are visited between these two. beginGroup
+    /// decides whether they are visited at all (the group's state, its
+    /// bounding box) and saves the graphics state unless the group is
+    /// inline; endGroup restores it. Throws kQ3ErrorInvalidObject beyond
+    /// limits::kMaxGroupNesting.
+    virtual bool beginGroup(const DisplayGroup& group) = 0;
+    virtual void endGroup(const DisplayGroup& group) = 0;
 };
 
 } // namespace q3

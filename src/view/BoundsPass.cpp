@@ -11,6 +11,7 @@
 
 #include "view/BoundsPass.h"
 
+#include "core/EnumValue.h"
 #include "geometry/Geometry.h"
 
 #include <glm/geometric.hpp>
@@ -47,6 +48,20 @@ void BoundsPass::visitGeometry(const Geometry& geometry)
     m_local.clear();
     geometry.bound(*this, m_local);
     addShape();
+}
+
+bool BoundsPass::enterBoundedGroup(const DisplayGroup& group, const TQ3BoundingBox& box)
+{
+    if (&group == m_computing)
+        return true;
+    if (enumValue(box.isEmpty) == kQ3False) {
+        m_local.clear();
+        for (int corner = 0; corner < 8; ++corner)
+            m_local.emplace_back((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                                 (corner & 4) ? box.max.z : box.min.z);
+        addShape();
+    }
+    return false;
 }
 
 void BoundsPass::addShape()

@@ -23,10 +23,14 @@ namespace q3 {
 /// point added so far; both are empty until the first one.
 class BoundsPass final : public Pass {
 public:
-    BoundsPass(TQ3ComputeBounds mode, std::optional<Window> window)
-        : Pass(std::move(window)), m_mode(mode)
+    BoundsPass(TQ3ComputeBounds mode, std::optional<Window> window, const AttributeValues& attributes)
+        : Pass(std::move(window), attributes), m_mode(mode)
     {
     }
+
+    /// The group whose own bounding box must not stand in for its objects
+    /// (Q3DisplayGroup_CalcAndUseBoundingBox computes that box).
+    void computeBoxOf(const DisplayGroup* group) { m_computing = group; }
 
     void visitGeometry(const Geometry& geometry) override;
 
@@ -35,11 +39,16 @@ public:
     TQ3BoundingBox box() const;
     TQ3BoundingSphere sphere() const;
 
+protected:
+    /// A group's bounding box bounds it: its corners are added.
+    bool enterBoundedGroup(const DisplayGroup& group, const TQ3BoundingBox& box) override;
+
 private:
     /// Adds one shape given by its local points (m_local).
     void addShape();
 
     TQ3ComputeBounds m_mode;
+    const DisplayGroup* m_computing = nullptr;
     std::vector<glm::dvec3> m_local;
     std::vector<glm::dvec3> m_world;
     bool m_empty = true;
