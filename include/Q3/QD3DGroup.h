@@ -244,8 +244,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3DisplayGroup_Submit(TQ3GroupObject group, TQ3ViewOb
 /**
  * Gives a display group a bounding box (and turns UseBoundingBox on), reads
  * it, or removes it. Q3DisplayGroup_CalcAndUseBoundingBox computes the box
- * of the group's contents with a bounding loop in view (which must not be
- * inside a loop) and sets it.
+ * of the group's objects with a bounding loop in view (which must not be
+ * inside a loop), whatever the group's own state and box, and sets it.
  *
  * Errors (besides the shared ones): kQ3ErrorInvalidParameter for a box with
  * a non-finite corner or min above max, or a computeBounds that is no

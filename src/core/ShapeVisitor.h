@@ -29,6 +29,11 @@ public:
     virtual void visitStyle(const Style& style) = 0;
     virtual void visitShader(const Shader& shader) = 0;
     virtual void visitTransform(const Transform& transform) = 0;
+    /// A push or pop state operator (Q3Push_New, Q3Pop_New): saves or
+    /// restores the graphics state as Q3Push_Submit and Q3Pop_Submit do;
+    /// popState throws kQ3ErrorNothingToPop when nothing pushed is left.
+    virtual void pushState() = 0;
+    virtual void popState() = 0;
     /// A display group's objects are visited between these two. beginGroup
     /// decides whether they are visited at all (the group's state, its
     /// bounding box) and saves the graphics state unless the group is

@@ -2,12 +2,15 @@
 // Copyright (c) 2026 The Q3 authors
 #include "group/Group.h"
 
+#include <unordered_map>
+
 #include "core/EnumValue.h"
 #include "core/Limits.h"
 #include "core/ShapeVisitor.h"
 
 #include <cmath>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace q3 {
@@ -70,24 +73,35 @@ void Group::copyFrom(const Group& source)
 {
     // Duplicating a group duplicates its groups in turn; past the nesting
     // limit (the one drawing enforces) that recursion stops with an error.
+    // Within one duplication an object met twice (a subgroup shared by two
+    // parents, or one object at two positions) is copied once, so the copy
+    // has the original's sharing and the work stays proportional to the
+    // number of distinct objects, not to the number of paths to them.
     thread_local std::size_t depth = 0;
+    thread_local std::unordered_map<const SharedObject*, Ref<SharedObject>>* copies = nullptr;
     if (depth >= limits::kMaxGroupNesting)
         fail(kQ3ErrorInvalidObject, "groups nest deeper than kQ3GroupMaxNesting (" +
                                         std::to_string(limits::kMaxGroupNesting) + "): not duplicated");
+    std::unordered_map<const SharedObject*, Ref<SharedObject>> outermost;
+    if (depth == 0)
+        copies = &outermost;
     ++depth;
     try {
         for (const Node& node : source.m_nodes) {
-            Ref<SharedObject> object =
-                Ref<SharedObject>::adopt(static_cast<SharedObject*>(node.object->duplicate()));
-            auto it = m_nodes.emplace(m_nodes.end(), std::move(object));
+            Ref<SharedObject>& copy = (*copies)[node.object.get()];
+            if (!copy)
+                copy = Ref<SharedObject>::adopt(static_cast<SharedObject*>(node.object->duplicate()));
+            auto it = m_nodes.emplace(m_nodes.end(), copy);
             it->self = it;
             m_live.insert(&*it);
         }
     } catch (...) {
-        --depth;
+        if (--depth == 0)
+            copies = nullptr;
         throw;
     }
-    --depth;
+    if (--depth == 0)
+        copies = nullptr;
 }
 
 bool Group::accepts(const Object& object) const
@@ -162,7 +176,9 @@ TQ3GroupPosition Group::insert(std::list<Node>::iterator where, Ref<SharedObject
 TQ3GroupPosition Group::add(Ref<SharedObject> object)
 {
     check(*object);
-    return insert(insertionPoint(*object), std::move(object));
+    // Separate statements: the order arguments are evaluated in is unspecified.
+    const auto where = insertionPoint(*object);
+    return insert(where, std::move(object));
 }
 
 TQ3GroupPosition Group::addBefore(TQ3GroupPosition position, Ref<SharedObject> object)

@@ -131,11 +131,15 @@ public:
     void setBoundingBox(const TQ3BoundingBox& box);
     void removeBoundingBox();
 
+    /// Submits the objects the group draws (an I/O proxy: the first it
+    /// can), without the group's own handling (its state, its box, the
+    /// push and pop around it): what Q3DisplayGroup_CalcAndUseBoundingBox
+    /// bounds.
+    virtual void submitContents(ShapeVisitor& visitor) const;
+
 protected:
     /// Copies another display group's objects (duplicated), state and box.
     void copyDisplayGroup(const DisplayGroup& source);
-    /// Submits the objects the group draws (an I/O proxy: the first it can).
-    virtual void submitContents(ShapeVisitor& visitor) const;
 
 private:
     TQ3DisplayGroupState m_state = kQ3DisplayGroupStateMaskIsDrawn | kQ3DisplayGroupStateMaskUseBoundingBox |
@@ -170,8 +174,6 @@ public:
 
     const ClassInfo& classInfo() const override;
     Object* duplicate() const override;
-
-protected:
     void submitContents(ShapeVisitor& visitor) const override;
 };
 

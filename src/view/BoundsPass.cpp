@@ -52,8 +52,6 @@ void BoundsPass::visitGeometry(const Geometry& geometry)
 
 bool BoundsPass::enterBoundedGroup(const DisplayGroup& group, const TQ3BoundingBox& box)
 {
-    if (&group == m_computing)
-        return true;
     if (enumValue(box.isEmpty) == kQ3False) {
         m_local.clear();
         for (int corner = 0; corner < 8; ++corner)

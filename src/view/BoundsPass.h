@@ -28,10 +28,6 @@ public:
     {
     }
 
-    /// The group whose own bounding box must not stand in for its objects
-    /// (Q3DisplayGroup_CalcAndUseBoundingBox computes that box).
-    void computeBoxOf(const DisplayGroup* group) { m_computing = group; }
-
     void visitGeometry(const Geometry& geometry) override;
 
     /// The results, rounded outwards to float; isEmpty with zero fields when
@@ -48,7 +44,6 @@ private:
     void addShape();
 
     TQ3ComputeBounds m_mode;
-    const DisplayGroup* m_computing = nullptr;
     std::vector<glm::dvec3> m_local;
     std::vector<glm::dvec3> m_world;
     bool m_empty = true;

@@ -70,8 +70,11 @@ void Pass::push()
 
 void Pass::pop()
 {
-    if (m_stack.empty())
-        fail(kQ3ErrorNothingToPop, "no state pushed with Q3Push_Submit in this traversal is left to pop");
+    const std::size_t floor = m_groups.empty() ? 0 : m_groups.back().floor;
+    if (m_stack.size() <= floor)
+        fail(kQ3ErrorNothingToPop, m_groups.empty()
+                                       ? "no state pushed in this traversal is left to pop"
+                                       : "no state pushed inside this display group is left to pop");
     m_state = m_stack.back();
     m_stack.pop_back();
 }
@@ -124,15 +127,17 @@ bool Pass::beginGroup(const DisplayGroup& group)
     const bool pushes = (state & kQ3DisplayGroupStateMaskIsInline) == 0;
     if (pushes)
         push();
-    m_groups.push_back(pushes);
+    m_groups.push_back(GroupEntry{pushes, m_stack.size()});
     return true;
 }
 
 void Pass::endGroup(const DisplayGroup&)
 {
-    const bool pushed = m_groups.back();
+    const GroupEntry entry = m_groups.back();
     m_groups.pop_back();
-    if (pushed)
+    // Pushes the group's objects left unmatched end with it.
+    m_stack.resize(entry.floor);
+    if (entry.pushed)
         pop();
 }
 

@@ -67,8 +67,12 @@ public:
     void allowGroupCulling(bool allow) { m_cullGroups = allow; }
 
     void push();
-    /// Throws kQ3ErrorNothingToPop when nothing pushed is left.
+    /// Throws kQ3ErrorNothingToPop when nothing pushed is left, or nothing
+    /// pushed inside the innermost display group being traversed (a group's
+    /// objects cannot pop the state it was entered with).
     void pop();
+    void pushState() override { push(); }
+    void popState() override { pop(); }
 
     const GraphicsState& state() const { return m_state; }
     const std::optional<Window>& window() const { return m_window; }
@@ -103,8 +107,14 @@ private:
     std::optional<Window> m_window;
     GraphicsState m_state;
     std::vector<GraphicsState> m_stack;
-    /// Per group entered: whether it pushed the state.
-    std::vector<bool> m_groups;
+    /// Per group entered: whether it pushed the state, and the stack size
+    /// after that push (its objects pop no lower; endGroup drops what they
+    /// left pushed).
+    struct GroupEntry {
+        bool pushed;
+        std::size_t floor;
+    };
+    std::vector<GroupEntry> m_groups;
     bool m_cullGroups = true;
 };
 

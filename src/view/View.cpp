@@ -33,6 +33,8 @@ public:
     bool beginGroup(const DisplayGroup&) override { return false; }
     void endGroup(const DisplayGroup&) override {}
     void visitTransform(const Transform&) override {}
+    void pushState() override {}
+    void popState() override {}
 };
 
 float clampUnit(float value)
@@ -73,8 +75,12 @@ SceneLighting lightingOf(const Group* lights, const Camera& camera)
     SceneLighting lighting;
     if (lights != nullptr)
         for (const Group::Node& node : lights->nodes())
-            if (node.object->isType(kQ3ShapeTypeLight))
-                lighting.lights.push_back(static_cast<const Light&>(*node.object).source());
+            if (node.object->isType(kQ3ShapeTypeLight)) {
+                // Lights that are off take no place among the lights drawn.
+                LightSource source = static_cast<const Light&>(*node.object).source();
+                if (source.on)
+                    lighting.lights.push_back(source);
+            }
     const TQ3CameraPlacement& placement = camera.data().placement;
     lighting.eye = glm::dvec3(placement.cameraLocation.x, placement.cameraLocation.y, placement.cameraLocation.z);
     lighting.orthographic = !camera.isPerspective();
@@ -158,8 +164,8 @@ TQ3BoundingBox View::boundingBoxOf(const DisplayGroup& group, const TQ3ComputeBo
     startBoundingBox(computeBounds);
     TQ3BoundingBox box{};
     try {
-        static_cast<BoundsPass&>(*m_pass).computeBoxOf(&group);
-        submit(group);
+        // The group's objects, whatever its state and box say.
+        group.submitContents(*m_pass);
     } catch (...) {
         endLoop();
         throw;
@@ -340,6 +346,12 @@ void View::sync() const
 {
     if (m_loop == Loop::kRendering)
         fail(kQ3ErrorRenderingIsActive, "a rendering loop is running in the view");
+}
+
+void View::flush() const
+{
+    if (m_loop != Loop::kRendering)
+        fail(kQ3ErrorRenderingNotStarted, "no rendering loop is running in the view");
 }
 
 ShapeVisitor& View::submitTarget()

@@ -112,6 +112,9 @@ public:
     /// Throws kQ3ErrorRenderingIsActive inside a rendering loop; otherwise
     /// every image is already complete.
     void sync() const;
+    /// Q3View_Flush: throws kQ3ErrorRenderingNotStarted outside a rendering
+    /// loop; inside one, every shape is already drawn.
+    void flush() const;
 
     /// Where shapes go when submitted: the active pass (or, after cancel(), a
     /// visitor ignoring them). Throws kQ3ErrorViewNotStarted outside a loop.

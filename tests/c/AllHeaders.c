@@ -8,6 +8,8 @@
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
+#include "QD3DGroup.h"
+#include "QD3DLight.h"
 #include "QD3DMath.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
@@ -35,6 +37,19 @@ int main(void)
         return 2;
     if (Q3NURBCurve_New(NULL) != NULL || Q3Error_Get(NULL) != kQ3ErrorNULLParameter)
         return 3;
+    {
+        TQ3GroupObject group = Q3DisplayGroup_New();
+        TQ3StateOperatorObject push = Q3Push_New();
+        TQ3GroupPosition position = NULL;
+        unsigned long count = 0;
+        if (group == NULL || push == NULL || Q3Group_AddObject(group, push) == NULL)
+            return 4;
+        if (Q3Group_CountObjects(group, &count) != kQ3Success || count != 1 ||
+            Q3Group_GetFirstPosition(group, &position) != kQ3Success || position == NULL)
+            return 5;
+        Q3Object_Dispose(push);
+        Q3Object_Dispose(group);
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

@@ -19,7 +19,7 @@ using q3fuzz::Op;
 
 // Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
-                           kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh };
+                           kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kGroup };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -567,6 +567,39 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.held();
         s.op(Op::kSurfaces).u8(1).u8(2).u8(0).u8(1).u8(0).u8(1).held();
         s.startRendering().submitHeld(kPolygon).endRendering();
+    }
+    // Groups: a display group holding a triangle inside an ordered group,
+    // a cycle refused, both drawn, bounded by CalcAndUse, walked, removed
+    // from while walked, duplicated; a push / pop pair met in the group.
+    {
+        Seed& s = add("groups");
+        auto vertex = [&s](float x, float y, float z) -> Seed& { return s.value(x).value(y).value(z).u8(0); };
+        s.scene();
+        s.op(Op::kSurfaces).u8(0).u8(0).u8(0).u8(1);
+        vertex(0, 0, 0);
+        vertex(1, 0, 0);
+        vertex(0, 1, 0);
+        // groups(): the action, the group, then what the action reads.
+        s.op(Op::kGroups).u8(0).held().u8(1);                     // display group (group 0)
+        s.op(Op::kGroups).u8(0).held().u8(2);                     // ordered display group (group 1)
+        s.op(Op::kGroups).u8(0).held().u8(6);                     // push (group 2)
+        s.op(Op::kGroups).u8(0).held().u8(7);                     // pop (group 3)
+        s.op(Op::kGroups).u8(1).held(0).u8(kGroup).held(2).u8(0).u8(0);   // add push
+        s.op(Op::kGroups).u8(1).held(0).u8(kTriangle).held().u8(0).u8(0); // add the triangle
+        s.op(Op::kGroups).u8(1).held(0).u8(kGroup).held(3).u8(0).u8(0);   // add pop
+        s.op(Op::kGroups).u8(1).held(1).u8(kGroup).held(0).u8(0).u8(0);   // group 0 into group 1
+        s.op(Op::kGroups).u8(1).held(1).u8(kTriangle).held().u8(0).u8(1); // triangle: before group 0
+        s.op(Op::kGroups).u8(1).held(0).u8(kGroup).held(1).u8(0).u8(0);   // cycle: refused
+        s.op(Op::kGroups).u8(1).held(0).u8(kGroup).held(0).u8(0).u8(0);   // itself: refused
+        s.startRendering().op(Op::kGroups).u8(7).held(1).held().u8(1).endRendering();
+        s.op(Op::kGroups).u8(8).held(1).held().u8(0);             // CalcAndUseBoundingBox
+        s.op(Op::kGroups).u8(6).held(1).u8(1).value(0).value(0).value(0).value(0).value(0).value(0).u8(0);
+        s.op(Op::kGroups).u8(4).held(1).u8(1);                    // walk and count geometry
+        s.op(Op::kGroups).u8(9).held(0).u8(kTriangle).held().u8(1); // positions of the triangle
+        s.op(Op::kDuplicate).u8(kGroup).held(1);
+        s.op(Op::kGroups).u8(3).held(0).u8(1).u8(0);              // remove every other while walking
+        s.op(Op::kGroups).u8(2).held(1).u8(0).u8(0).u8(kGroup).held(1).u8(0); // set: itself, refused
+        s.op(Op::kGroups).u8(5).held(1).u8(1).u8(0).u8(0);        // empty all
     }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {
