@@ -1246,7 +1246,8 @@ Q3_EXTERN_API_C(TQ3Matrix4x4 *) Q3Matrix4x4_SetQuaternion(TQ3Matrix4x4 *matrix, 
 
 /**
  * Computes the determinant of a 3x3 or a 4x4 matrix, in double precision
- * and rounded once (so it may overflow to an infinity).
+ * and rounded once (so it may overflow to an infinity). An infinite entry
+ * meets zeros in the expansion, so it gives an infinity or NaN.
  *
  * @param matrix3x3, matrix4x4  the matrix.
  * @return the determinant, or 0 on failure.
