@@ -85,10 +85,7 @@ TEST_F(MathBoundsApiTest, BoxSetStoresItsFieldsAsGiven)
     EXPECT_TRUE(sameBits(b.min, min));
     EXPECT_TRUE(sameBits(b.max, max));
     EXPECT_EQ(b.isEmpty, kQ3False);
-    TQ3Boolean five;
-    const int raw = 5;
-    std::memcpy(&five, &raw, sizeof raw);
-    EXPECT_EQ(Q3BoundingBox_Set(&b, &min, &max, five), &b);
+    EXPECT_EQ(Q3BoundingBox_Set(&b, &min, &max, TQ3Boolean(5)), &b);
     EXPECT_EQ(rawIsEmpty(b), int(kQ3True)); // any nonzero value is stored as kQ3True
     TQ3BoundingBox untouched = filledWith<TQ3BoundingBox>(7);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_Set(nullptr, &min, &max, kQ3False), nullptr), kQ3ErrorNULLParameter);
@@ -259,10 +256,7 @@ TEST_F(MathBoundsApiTest, SphereCopyAndSetStoreTheirFields)
     const TQ3Point3D origin{3, -1, 0.5f};
     EXPECT_EQ(Q3BoundingSphere_Set(&dest, &origin, -2, kQ3False), &dest); // the radius is not checked
     EXPECT_TRUE(sameBits(dest, sphere(origin, -2)));
-    TQ3Boolean minusOne;
-    const int raw = -1;
-    std::memcpy(&minusOne, &raw, sizeof raw);
-    EXPECT_EQ(Q3BoundingSphere_Set(&dest, &origin, kNaN, minusOne), &dest);
+    EXPECT_EQ(Q3BoundingSphere_Set(&dest, &origin, kNaN, TQ3Boolean(2)), &dest);
     EXPECT_EQ(rawIsEmpty(dest), int(kQ3True));
     EXPECT_TRUE(std::isnan(dest.radius));
     TQ3BoundingSphere untouched = filledWith<TQ3BoundingSphere>(7);

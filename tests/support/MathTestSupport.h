@@ -34,9 +34,8 @@ T filledWith(float value)
 {
     static_assert(sizeof(T) % sizeof(float) == 0, "a struct of floats");
     T result;
-    float* f = reinterpret_cast<float*>(&result);
     for (std::size_t i = 0; i < sizeof(T) / sizeof(float); ++i)
-        f[i] = value;
+        std::memcpy(reinterpret_cast<unsigned char*>(&result) + i * sizeof(float), &value, sizeof(float));
     return result;
 }
 
