@@ -14,8 +14,10 @@
  *
  * Every function that returns a pointer returns its result argument on
  * success and NULL on failure; every function that returns a float returns 0
- * on failure. The result may point to the same storage as an input (for
- * example Q3Matrix4x4_Multiply(&m, &n, &m)). Values are not checked for
+ * on failure, Q3Quaternion_IsIdentity kQ3False and the array functions
+ * kQ3Failure. The result may point to the same storage as an input (for
+ * example Q3Matrix4x4_Multiply(&m, &n, &m)): every result is computed in
+ * full before it is stored. Values are not checked for
  * being finite: NaNs and infinities go through the IEEE arithmetic.
  *
  * Error conventions shared by every function in this header: a call that
@@ -227,8 +229,7 @@ Q3_EXTERN_API_C(TQ3SphericalPoint *) Q3SphericalPoint_Set(TQ3SphericalPoint *sph
  *   Q3Vector3D_To2D         (x, y, z)    -> (x/z, y/z)
  *
  * @param point2D, point3D, point4D, vector2D, vector3D  the value to convert.
- * @param result  receives the converted value; it may share the input's
- *                storage only if the types have the same size.
+ * @param result  receives the converted value.
  * @return result, or NULL on failure.
  *
  * Errors:
@@ -1500,9 +1501,10 @@ Q3_EXTERN_API_C(TQ3Quaternion *) Q3Quaternion_MatchReflection(const TQ3Quaternio
  * through (-x, w, -z, y), perpendicular to it, reaching -q1 at t = 1.
  *
  * Neither changes a sign: t = 0 gives q1 and t = 1 gives q2 (scaled to unit
- * length by _InterpolateFast). For the shorter way round between the same
- * rotations, call Q3Quaternion_MatchReflection(q1, q2, &q1) first. t
- * outside [0, 1] extrapolates.
+ * length by _InterpolateFast; -q1, within 1e-6 radians of q2, when
+ * _InterpolateLinear takes the perpendicular way). For the shorter way round
+ * between the same rotations, call Q3Quaternion_MatchReflection(q1, q2, &q1)
+ * first. t outside [0, 1] extrapolates.
  *
  * @param q1      the rotation at t = 0.
  * @param q2      the rotation at t = 1.

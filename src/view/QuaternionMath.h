@@ -68,7 +68,7 @@ TQ3Quaternion interpolateFast(const TQ3Quaternion& q1, const TQ3Quaternion& q2, 
 /// (Shoemake's slerp), with q1 at t = 0 and q2 at t = 1, whatever their
 /// signs. Nearly equal directions (within 1e-6 radians), a zero quaternion
 /// or NaN use the straight line instead; nearly opposite ones turn through
-/// the quaternion perpendicular to q1, (-x, w, -z, y).
+/// the quaternion perpendicular to q1, (-x, w, -z, y), to -q1 at t = 1.
 TQ3Quaternion interpolateLinear(const TQ3Quaternion& q1, const TQ3Quaternion& q2, float t);
 
 /// vector rotated by q. Throws kQ3ErrorInvalidParameter for the zero quaternion.
