@@ -25,6 +25,11 @@ int main(void)
     TQ3SubdivisionStyleData style;
     TQ3GeometryObject curve = NULL;
     unsigned long major = 0, minor = 0;
+    TQ3Quaternion quarterTurn;
+    TQ3Matrix4x4 matrix;
+    TQ3Vector3D up;
+    TQ3Point3D corners[2];
+    TQ3BoundingBox box;
 
     data.curveAttributeSet = NULL;
     style.method = kQ3SubdivisionMethodConstant;
@@ -37,16 +42,34 @@ int main(void)
         return 2;
     if (Q3NURBCurve_New(NULL) != NULL || Q3Error_Get(NULL) != kQ3ErrorNULLParameter)
         return 3;
+    /* QD3DMath.h: macros and calls, as legacy code uses them. */
+    if (Q3Quaternion_SetRotate_X(&quarterTurn, Q3Math_DegreesToRadians(90.0f)) != &quarterTurn ||
+        Q3Matrix4x4_SetQuaternion(&matrix, &quarterTurn) != &matrix)
+        return 4;
+    Q3Vector3D_Set(&up, 0.0f, 1.0f, 0.0f);
+    if (Q3Vector3D_Transform(&up, &matrix, &up) != &up || !(up.z > 1.0f - 1e-6f && up.z < 1.0f + 1e-6f))
+        return 5;
+    Q3Point3D_Set(&corners[0], -1.0f, 2.0f, kQ3RealZero);
+    Q3Point3D_Set(&corners[1], Q3Math_Max(3.0f, kQ3Pi), Q3Math_Min(-2.0f, 0.0f), kQ3PiOver2);
+    if (Q3BoundingBox_SetFromPoints3D(&box, corners, 2, sizeof(TQ3Point3D)) != &box || box.isEmpty != kQ3False ||
+        box.max.x != kQ3Pi || box.min.y != -2.0f || box.max.z != kQ3PiOver2)
+        return 6;
+    if (Q3Math_RadiansToDegrees(kQ32Pi) < 359.9f || kQ33PiOver2 <= kQ3Pi || kQ3MaxFloat <= 1e38f)
+        return 7;
+    if (Q3Point3D_To3DTransformArray(corners, &matrix, corners, -1, sizeof(TQ3Point3D), sizeof(TQ3Point3D)) !=
+            kQ3Failure ||
+        Q3Error_Get(NULL) != kQ3ErrorParameterOutOfRange)
+        return 8;
     {
         TQ3GroupObject group = Q3DisplayGroup_New();
         TQ3StateOperatorObject push = Q3Push_New();
         TQ3GroupPosition position = NULL;
         unsigned long count = 0;
         if (group == NULL || push == NULL || Q3Group_AddObject(group, push) == NULL)
-            return 4;
+            return 9;
         if (Q3Group_CountObjects(group, &count) != kQ3Success || count != 1 ||
             Q3Group_GetFirstPosition(group, &position) != kQ3Success || position == NULL)
-            return 5;
+            return 10;
         Q3Object_Dispose(push);
         Q3Object_Dispose(group);
     }

@@ -3,6 +3,7 @@
 #include "CCaller.h"
 
 #include "QD3DDrawContext.h"
+#include "QD3DMath.h"
 #include "QD3DRenderer.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
@@ -35,4 +36,16 @@ TQ3Status q3fuzz_StartBoundingSphere(TQ3Object view, int computeBounds)
 TQ3Status q3fuzz_RotateTransform_SetAxis(TQ3Object transform, int axis)
 {
     return Q3RotateTransform_SetAxis(transform, (TQ3Axis)axis);
+}
+
+TQ3BoundingBox *q3fuzz_BoundingBox_Set(TQ3BoundingBox *bBox, const TQ3Point3D *min, const TQ3Point3D *max,
+                                       int isEmpty)
+{
+    return Q3BoundingBox_Set(bBox, min, max, (TQ3Boolean)isEmpty);
+}
+
+TQ3BoundingSphere *q3fuzz_BoundingSphere_Set(TQ3BoundingSphere *bSphere, const TQ3Point3D *origin, float radius,
+                                             int isEmpty)
+{
+    return Q3BoundingSphere_Set(bSphere, origin, radius, (TQ3Boolean)isEmpty);
 }

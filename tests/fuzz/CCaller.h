@@ -22,6 +22,10 @@ TQ3Status q3fuzz_SetDoubleBufferBypass(TQ3Object renderer, int bypass);
 TQ3Status q3fuzz_StartBoundingBox(TQ3Object view, int computeBounds);
 TQ3Status q3fuzz_StartBoundingSphere(TQ3Object view, int computeBounds);
 TQ3Status q3fuzz_RotateTransform_SetAxis(TQ3Object transform, int axis);
+TQ3BoundingBox *q3fuzz_BoundingBox_Set(TQ3BoundingBox *bBox, const TQ3Point3D *min, const TQ3Point3D *max,
+                                       int isEmpty);
+TQ3BoundingSphere *q3fuzz_BoundingSphere_Set(TQ3BoundingSphere *bSphere, const TQ3Point3D *origin, float radius,
+                                             int isEmpty);
 
 #ifdef __cplusplus
 }
