@@ -13,6 +13,7 @@
 
 #include "core/EnumValue.h"
 #include "geometry/Geometry.h"
+#include "view/BoundsMath.h"
 
 #include <glm/geometric.hpp>
 
@@ -22,19 +23,10 @@
 
 namespace q3 {
 
+using math::roundDown;
+using math::roundUp;
+
 namespace {
-
-float roundDown(double value)
-{
-    const float f = static_cast<float>(value);
-    return double(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-
-float roundUp(double value)
-{
-    const float f = static_cast<float>(value);
-    return double(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
 
 glm::dvec3 toVec(const TQ3Point3D& p)
 {
