@@ -285,6 +285,14 @@ void TriMesh::decompose(const DecomposeContext&, PrimitiveSink& sink) const
         [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
 }
 
+void TriMesh::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const
+{
+    const D& d = data();
+    points.reserve(points.size() + d.numPoints);
+    for (unsigned long i = 0; i < d.numPoints; ++i)
+        points.emplace_back(d.points[i].x, d.points[i].y, d.points[i].z);
+}
+
 Ref<TriMesh> TriMesh::fromMesh(const Mesh& mesh, const AttributeSet* own)
 {
     const MeshView view = mesh.view();

@@ -881,6 +881,41 @@ TEST_F(TriMeshApiTest, ImmediateAndRetainedTriMeshesBoundTheirTransformedPoints)
     }
 }
 
+TEST_F(TriMeshApiTest, BoundsHoldEveryPointWhateverTheAttributeArrays)
+{
+    // A fifth point that no triangle uses: GetData's bBox holds it, and so
+    // must the bounds, with or without triangle attributes (which make the
+    // drawn mesh give every triangle its own vertices).
+    m_points.push_back({-5, 9, 4});
+    m_normals.push_back({0, 0, 1});
+    m_uvs.push_back({0, 0});
+    m_uvUse.push_back(1);
+    m_vertexAttributes[0].data = m_normals.data();
+    m_vertexAttributes[1].data = m_uvs.data();
+    m_vertexAttributes[1].attributeUseArray = m_uvUse.data();
+    for (const TQ3TriMeshData& data : {fullData(), plainData()}) {
+        TQ3GeometryObject triMesh = own(Q3TriMesh_New(&data));
+        ASSERT_NE(triMesh, nullptr);
+        TQ3TriMeshData out{};
+        ASSERT_EQ(Q3TriMesh_GetData(triMesh, &out), kQ3Success);
+        for (bool retained : {false, true}) {
+            const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
+                EXPECT_EQ(retained ? Q3Geometry_Submit(triMesh, v) : Q3TriMesh_Submit(&data, v), kQ3Success);
+            });
+            SCOPED_TRACE(std::string(retained ? "retained" : "immediate") +
+                         (data.numTriangleAttributeTypes != 0 ? ", triangle attributes" : ", plain"));
+            EXPECT_EQ(box.isEmpty, kQ3False);
+            EXPECT_EQ(box.min.x, -5.0f);
+            EXPECT_EQ(box.max.y, 9.0f);
+            EXPECT_EQ(box.max.z, 4.0f);
+            EXPECT_EQ(box.min.x, out.bBox.min.x);
+            EXPECT_EQ(box.min.z, out.bBox.min.z);
+            EXPECT_EQ(box.max.y, out.bBox.max.y);
+        }
+        Q3TriMesh_EmptyData(&out);
+    }
+}
+
 // ---- Q3Geometry_* on a trimesh -------------------------------------------------------
 
 TEST_F(TriMeshApiTest, TheGeometryAttributeSetIsTheTriMeshAttributeSet)
