@@ -469,6 +469,49 @@ TEST_F(RenderSurfacesTest, VertexBeatsFaceBeatsStateColorInATriangleAndAPolygon)
     expectColor(colorAt(image, 2.6, 1.5), 255, 0, 0, 0, "polygon vertex colours");
 }
 
+TEST_F(RenderSurfacesTest, ARetainedSurfaceIsRedrawnAfterItsVertexSetsOrItsDataChange)
+{
+    // The retained triangle and polygon cache their decomposition; editing a
+    // vertex's attribute set, replacing it, or moving a vertex must show.
+    TQ3AttributeSet set = color(1, 0, 0);
+    TQ3AttributeSet other = color(0, 0, 1);
+    const TQ3TriangleData triangleData{
+        {{{-0.3f, -0.8f, 0}, set}, {{1.2f, -0.8f, 0}, set}, {{0.45f, 1.5f, 0}, set}}, nullptr};
+    TQ3Vertex3D square[4] = {{{1.8f, -0.8f, 0}, set}, {{3.3f, -0.8f, 0}, set}, {{3.3f, 1.5f, 0}, set},
+                             {{1.8f, 1.5f, 0}, set}};
+    const TQ3PolygonData polygonData{4, square, nullptr};
+    TQ3GeometryObject triangle = own(Q3Triangle_New(&triangleData));
+    TQ3GeometryObject polygon = own(Q3Polygon_New(&polygonData));
+    auto draw = [&] {
+        return render(kQ3RendererTypeInteractive, [&](TQ3ViewObject view) {
+            EXPECT_EQ(Q3Geometry_Submit(triangle, view), kQ3Success);
+            EXPECT_EQ(Q3Geometry_Submit(polygon, view), kQ3Success);
+        });
+    };
+    Pixmap image = draw();
+    expectColor(colorAt(image, 0.45, 0), 255, 0, 0, 0, "triangle, red");
+    expectColor(colorAt(image, 2.5, 0), 255, 0, 0, 0, "polygon, red");
+
+    const TQ3ColorRGB green{0, 1, 0};
+    ASSERT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &green), kQ3Success);
+    image = draw();
+    expectColor(colorAt(image, 0.45, 0), 0, 255, 0, 0, "triangle, the set edited");
+    expectColor(colorAt(image, 2.5, 0), 0, 255, 0, 0, "polygon, the set edited");
+
+    for (unsigned long i = 0; i < 3; ++i)
+        ASSERT_EQ(Q3Triangle_SetVertexAttributeSet(triangle, i, other), kQ3Success);
+    for (unsigned long i = 0; i < 4; ++i)
+        ASSERT_EQ(Q3Polygon_SetVertexAttributeSet(polygon, i, other), kQ3Success);
+    image = draw();
+    expectColor(colorAt(image, 0.45, 0), 0, 0, 255, 0, "triangle, the sets replaced");
+    expectColor(colorAt(image, 2.5, 0), 0, 0, 255, 0, "polygon, the sets replaced");
+
+    const TQ3Point3D away{0.45f, 1.9f, 0};
+    ASSERT_EQ(Q3Triangle_SetVertexPosition(triangle, 0, &away), kQ3Success);
+    image = draw();
+    expectColor(colorAt(image, 0.0, -0.7), 0, 0, 0, 0, "the moved corner's old place");
+}
+
 TEST_F(RenderSurfacesTest, TriMeshEdgeColorsShowInTheWireframe)
 {
     // One triangle; its three sides listed as edges, the first two coloured
