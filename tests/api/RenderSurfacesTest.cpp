@@ -44,12 +44,13 @@ Pixel worldAt(unsigned long px, unsigned long py)
 }
 
 struct Segment {
-    double ax, ay, bx, by; // world coordinates
+    double ax, ay, bx, by; // world coordinates (pixels once inspect() has converted them)
 };
 
+// The distance in pixels from p to a segment given in pixels.
 double pixelDistance(const Pixel& p, const Segment& s)
 {
-    const Pixel a = pixelOf(s.ax, s.ay), b = pixelOf(s.bx, s.by);
+    const Pixel a{s.ax, s.ay}, b{s.bx, s.by};
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double len2 = dx * dx + dy * dy;
     const double t = len2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
@@ -94,11 +95,16 @@ RegionReport inspect(const Pixmap& image, const std::function<bool(double, doubl
                      const std::vector<Segment>& segments, double margin = 2.0)
 {
     RegionReport report;
+    std::vector<Segment> inPixels;
+    for (const Segment& s : segments) {
+        const Pixel a = pixelOf(s.ax, s.ay), b = pixelOf(s.bx, s.by);
+        inPixels.push_back({a.x, a.y, b.x, b.y});
+    }
     for (unsigned long py = 0; py < image.height(); ++py)
         for (unsigned long px = 0; px < image.width(); ++px) {
             const Pixel centre{px + 0.5, py + 0.5};
             double nearest = 1e9;
-            for (const Segment& s : segments)
+            for (const Segment& s : inPixels)
                 nearest = std::min(nearest, pixelDistance(centre, s));
             if (nearest <= margin)
                 continue;
