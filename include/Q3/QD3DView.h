@@ -251,7 +251,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_Sync(TQ3ViewObject view);
  * says, a NURB curve is bounded by its control points projected to 3D
  * (x/w, y/w, z/w), not by the curve itself (the box encloses the curve, since
  * a NURB curve with positive weights lies in their convex hull). Points,
- * lines and polylines are bounded by their vertices.
+ * lines, polylines, triangles and polygons are bounded by their vertices, a
+ * trimesh by all its points (the box its GetData reports as bBox).
  */
 
 /**
