@@ -121,7 +121,7 @@ struct TQ3SpotLightData {
 };
 typedef struct TQ3SpotLightData TQ3SpotLightData;
 
-/* ---- Every light ------------------------------------------------------------ */
+/* ---- Every light --------------------------------------------------------- */
 
 /**
  * Returns the kind of a light.
@@ -284,7 +284,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Light_GetData(TQ3LightObject light, TQ3LightData *l
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Light_SetData(TQ3LightObject light, const TQ3LightData *lightData);
 
-/* ---- Ambient light ---------------------------------------------------------- */
+/* ---- Ambient light ------------------------------------------------------- */
 
 /**
  * Creates an ambient light.
@@ -338,7 +338,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3AmbientLight_GetData(TQ3LightObject light, TQ3Light
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AmbientLight_SetData(TQ3LightObject light, const TQ3LightData *lightData);
 
-/* ---- Directional light ------------------------------------------------------ */
+/* ---- Directional light --------------------------------------------------- */
 
 /**
  * Creates a directional light.
@@ -473,7 +473,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3DirectionalLight_GetData(TQ3LightObject light,
 Q3_EXTERN_API_C(TQ3Status) Q3DirectionalLight_SetData(TQ3LightObject light,
                                                       const TQ3DirectionalLightData *directionalLightData);
 
-/* ---- Point light ------------------------------------------------------------ */
+/* ---- Point light --------------------------------------------------------- */
 
 /**
  * Creates a point light.
@@ -640,7 +640,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3PointLight_SetLocation(TQ3LightObject light, const 
 Q3_EXTERN_API_C(TQ3Status) Q3PointLight_SetData(TQ3LightObject light,
                                                 const TQ3PointLightData *pointLightData);
 
-/* ---- Spot light ------------------------------------------------------------- */
+/* ---- Spot light ---------------------------------------------------------- */
 
 /**
  * Creates a spot light.

@@ -39,7 +39,7 @@ extern "C" {
 enum TQ3ShaderUVBoundary { kQ3ShaderUVBoundaryWrap = 0, kQ3ShaderUVBoundaryClamp = 1 };
 typedef enum TQ3ShaderUVBoundary TQ3ShaderUVBoundary;
 
-/* ---- Every shader ---------------------------------------------------------- */
+/* ---- Every shader -------------------------------------------------------- */
 
 /**
  * Returns the kind of a shader.
@@ -185,7 +185,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Shader_GetUBoundary(TQ3ShaderObject shader, TQ3Shad
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Shader_GetVBoundary(TQ3ShaderObject shader, TQ3ShaderUVBoundary *vBoundary);
 
-/* ---- Illumination shaders ---------------------------------------------------- */
+/* ---- Illumination shaders ------------------------------------------------ */
 
 /**
  * Returns the illumination model of an illumination shader.

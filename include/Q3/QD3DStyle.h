@@ -47,7 +47,7 @@ extern "C" {
  */
 #define kQ3StyleTypeCastShadows Q3_OBJECT_TYPE('c', 'a', 's', 'h')
 
-/* ---- Every style ------------------------------------------------------------ */
+/* ---- Every style --------------------------------------------------------- */
 
 /**
  * Returns the kind of a style.
@@ -86,7 +86,7 @@ Q3_EXTERN_API_C(TQ3ObjectType) Q3Style_GetType(TQ3StyleObject style);
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Style_Submit(TQ3StyleObject style, TQ3ViewObject view);
 
-/* ---- Subdivision ------------------------------------------------------------ */
+/* ---- Subdivision --------------------------------------------------------- */
 
 /*
  * How a curve is subdivided; c1 (c2 for surfaces) of TQ3SubdivisionStyleData
@@ -235,7 +235,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3SubdivisionStyle_SetData(TQ3StyleObject subdiv,
 Q3_EXTERN_API_C(TQ3Status) Q3SubdivisionStyle_GetData(TQ3StyleObject subdiv,
                                                       TQ3SubdivisionStyleData *data);
 
-/* ---- Pick ID ------------------------------------------------------------------ */
+/* ---- Pick ID ------------------------------------------------------------- */
 
 /*
  * The pick ID style tags the geometry submitted after it with a number that
@@ -311,7 +311,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3PickIDStyle_Get(TQ3StyleObject pickIDObject, unsign
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3PickIDStyle_Set(TQ3StyleObject pickIDObject, unsigned long id);
-/* ---- Pick parts ---------------------------------------------------------------- */
+/* ---- Pick parts ---------------------------------------------------------- */
 
 /*
  * The pick parts style says which parts of the geometry after it picking
@@ -408,7 +408,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3PickPartsStyle_Get(TQ3StyleObject pickPartsObject, 
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3PickPartsStyle_Set(TQ3StyleObject pickPartsObject, TQ3PickParts parts);
-/* ---- Cast shadows (Q3 extension, Quesa's names) ---------------------------------- */
+/* ---- Cast shadows (Q3 extension, Quesa's names) -------------------------- */
 
 /*
  * Q3 extension (Quesa's names): QuickDraw 3D 1.6 had no cast shadows style.
@@ -488,7 +488,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3CastShadowsStyle_Get(TQ3StyleObject styleObject, TQ
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3CastShadowsStyle_Set(TQ3StyleObject styleObject, TQ3Boolean castShadows);
-/* ---- Receive shadows ------------------------------------------------------------ */
+/* ---- Receive shadows ----------------------------------------------------- */
 
 /*
  * The receive shadows style says whether the geometry after it shows the
@@ -568,7 +568,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3ReceiveShadowsStyle_Get(TQ3StyleObject styleObject,
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3ReceiveShadowsStyle_Set(TQ3StyleObject styleObject, TQ3Boolean receives);
-/* ---- Fill ---------------------------------------------------------------------- */
+/* ---- Fill ---------------------------------------------------------------- */
 
 /*
  * The fill style says how surfaces are drawn: filled, as their edges, or as
@@ -652,7 +652,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3FillStyle_Get(TQ3StyleObject styleObject, TQ3FillSt
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3FillStyle_Set(TQ3StyleObject styleObject, TQ3FillStyle fillStyle);
-/* ---- Backfacing ---------------------------------------------------------------- */
+/* ---- Backfacing ---------------------------------------------------------- */
 
 /*
  * The backfacing style says what happens to the faces that point away from
@@ -742,7 +742,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3BackfacingStyle_Get(TQ3StyleObject backfacingObject
  */
 Q3_EXTERN_API_C(TQ3Status) Q3BackfacingStyle_Set(TQ3StyleObject backfacingObject,
                                                  TQ3BackfacingStyle backfacingStyle);
-/* ---- Interpolation ------------------------------------------------------------- */
+/* ---- Interpolation ------------------------------------------------------- */
 
 /*
  * The interpolation style says how lighting varies across a face: one
@@ -843,7 +843,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3InterpolationStyle_Get(TQ3StyleObject interpolation
  */
 Q3_EXTERN_API_C(TQ3Status) Q3InterpolationStyle_Set(TQ3StyleObject interpolationObject,
                                                     TQ3InterpolationStyle interpolationStyle);
-/* ---- Highlight ----------------------------------------------------------------- */
+/* ---- Highlight ----------------------------------------------------------- */
 
 /*
  * The highlight style holds an attribute set whose attributes replace those
@@ -936,7 +936,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3HighlightStyle_Get(TQ3StyleObject highlight, TQ3Att
  */
 Q3_EXTERN_API_C(TQ3Status) Q3HighlightStyle_Set(TQ3StyleObject highlight, TQ3AttributeSet highlightAttribute);
 
-/* ---- Orientation --------------------------------------------------------------- */
+/* ---- Orientation --------------------------------------------------------- */
 
 /*
  * The orientation style says which side of a polygon is its front: the one
@@ -1032,7 +1032,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3OrientationStyle_Get(TQ3StyleObject frontFacingDire
  */
 Q3_EXTERN_API_C(TQ3Status) Q3OrientationStyle_Set(TQ3StyleObject frontFacingDirectionObject,
                                                   TQ3OrientationStyle frontFacingDirection);
-/* ---- Anti-alias ---------------------------------------------------------------- */
+/* ---- Anti-alias ---------------------------------------------------------- */
 
 /*
  * The anti-alias style asks the renderer to smooth jagged edges.
@@ -1135,7 +1135,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3AntiAliasStyle_GetData(TQ3StyleObject styleObject, 
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AntiAliasStyle_SetData(TQ3StyleObject styleObject,
                                                     const TQ3AntiAliasStyleData *data);
-/* ---- Fog ----------------------------------------------------------------------- */
+/* ---- Fog ----------------------------------------------------------------- */
 
 /*
  * The fog style blends what is drawn towards the fog colour with distance z
