@@ -311,6 +311,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3PickIDStyle_Get(TQ3StyleObject pickIDObject, unsign
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3PickIDStyle_Set(TQ3StyleObject pickIDObject, unsigned long id);
+
 /* ---- Pick parts ---------------------------------------------------------- */
 
 /*
@@ -408,6 +409,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3PickPartsStyle_Get(TQ3StyleObject pickPartsObject, 
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3PickPartsStyle_Set(TQ3StyleObject pickPartsObject, TQ3PickParts parts);
+
 /* ---- Cast shadows (Q3 extension, Quesa's names) -------------------------- */
 
 /*
@@ -419,8 +421,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3PickPartsStyle_Set(TQ3StyleObject pickPartsObject, 
 /**
  * Creates a cast shadows style object.
  *
- * @param castShadows  kQ3True if the geometry casts shadows; any nonzero
- *                     value is stored as kQ3True.
+ * @param castsShadows  kQ3True if the geometry casts shadows; any nonzero
+ *                      value is stored as kQ3True.
  * @return the new style, or NULL on failure.
  *
  * Errors:
@@ -430,7 +432,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3PickPartsStyle_Set(TQ3StyleObject pickPartsObject, 
  * Ownership: the caller owns the one reference the new style is born with and
  * releases it with Q3Object_Dispose.
  */
-Q3_EXTERN_API_C(TQ3StyleObject) Q3CastShadowsStyle_New(TQ3Boolean castShadows);
+Q3_EXTERN_API_C(TQ3StyleObject) Q3CastShadowsStyle_New(TQ3Boolean castsShadows);
 
 /**
  * Applies a cast shadows style to a view in a rendering or bounding loop
@@ -488,6 +490,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3CastShadowsStyle_Get(TQ3StyleObject styleObject, TQ
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3CastShadowsStyle_Set(TQ3StyleObject styleObject, TQ3Boolean castShadows);
+
 /* ---- Receive shadows ----------------------------------------------------- */
 
 /*
@@ -568,6 +571,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3ReceiveShadowsStyle_Get(TQ3StyleObject styleObject,
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3ReceiveShadowsStyle_Set(TQ3StyleObject styleObject, TQ3Boolean receives);
+
 /* ---- Fill ---------------------------------------------------------------- */
 
 /*
@@ -652,6 +656,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3FillStyle_Get(TQ3StyleObject styleObject, TQ3FillSt
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3FillStyle_Set(TQ3StyleObject styleObject, TQ3FillStyle fillStyle);
+
 /* ---- Backfacing ---------------------------------------------------------- */
 
 /*
@@ -742,6 +747,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3BackfacingStyle_Get(TQ3StyleObject backfacingObject
  */
 Q3_EXTERN_API_C(TQ3Status) Q3BackfacingStyle_Set(TQ3StyleObject backfacingObject,
                                                  TQ3BackfacingStyle backfacingStyle);
+
 /* ---- Interpolation ------------------------------------------------------- */
 
 /*
@@ -843,6 +849,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3InterpolationStyle_Get(TQ3StyleObject interpolation
  */
 Q3_EXTERN_API_C(TQ3Status) Q3InterpolationStyle_Set(TQ3StyleObject interpolationObject,
                                                     TQ3InterpolationStyle interpolationStyle);
+
 /* ---- Highlight ----------------------------------------------------------- */
 
 /*
@@ -1032,6 +1039,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3OrientationStyle_Get(TQ3StyleObject frontFacingDire
  */
 Q3_EXTERN_API_C(TQ3Status) Q3OrientationStyle_Set(TQ3StyleObject frontFacingDirectionObject,
                                                   TQ3OrientationStyle frontFacingDirection);
+
 /* ---- Anti-alias ---------------------------------------------------------- */
 
 /*
@@ -1135,6 +1143,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3AntiAliasStyle_GetData(TQ3StyleObject styleObject, 
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AntiAliasStyle_SetData(TQ3StyleObject styleObject,
                                                     const TQ3AntiAliasStyleData *data);
+
 /* ---- Fog ----------------------------------------------------------------- */
 
 /*
@@ -1244,6 +1253,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3FogStyle_GetData(TQ3StyleObject styleObject, TQ3Fog
  * Ownership: no references change; *data is copied.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3FogStyle_SetData(TQ3StyleObject styleObject, const TQ3FogStyleData *data);
+
 #ifdef __cplusplus
 }
 #endif

@@ -21,7 +21,8 @@ TQ3Status Q3BackfacingStyle_Submit(TQ3BackfacingStyle backfacingStyle, TQ3ViewOb
 
 TQ3Status Q3BackfacingStyle_Get(TQ3StyleObject backfacingObject, TQ3BackfacingStyle* backfacingStyle)
 {
-    return getStyle<BackfacingStyle>(__func__, backfacingObject, "backfacingObject", backfacingStyle, "backfacingStyle");
+    return getStyle<BackfacingStyle>(__func__, backfacingObject, "backfacingObject", backfacingStyle,
+                                     "backfacingStyle");
 }
 
 TQ3Status Q3BackfacingStyle_Set(TQ3StyleObject backfacingObject, TQ3BackfacingStyle backfacingStyle)

@@ -21,7 +21,8 @@ TQ3Status Q3InterpolationStyle_Submit(TQ3InterpolationStyle interpolationStyle, 
 
 TQ3Status Q3InterpolationStyle_Get(TQ3StyleObject interpolationObject, TQ3InterpolationStyle* interpolationStyle)
 {
-    return getStyle<InterpolationStyle>(__func__, interpolationObject, "interpolationObject", interpolationStyle, "interpolationStyle");
+    return getStyle<InterpolationStyle>(__func__, interpolationObject, "interpolationObject", interpolationStyle,
+                                        "interpolationStyle");
 }
 
 TQ3Status Q3InterpolationStyle_Set(TQ3StyleObject interpolationObject, TQ3InterpolationStyle interpolationStyle)

@@ -21,12 +21,14 @@ TQ3Status Q3OrientationStyle_Submit(TQ3OrientationStyle frontFacingDirection, TQ
 
 TQ3Status Q3OrientationStyle_Get(TQ3StyleObject frontFacingDirectionObject, TQ3OrientationStyle* frontFacingDirection)
 {
-    return getStyle<OrientationStyle>(__func__, frontFacingDirectionObject, "frontFacingDirectionObject", frontFacingDirection, "frontFacingDirection");
+    return getStyle<OrientationStyle>(__func__, frontFacingDirectionObject, "frontFacingDirectionObject",
+                                      frontFacingDirection, "frontFacingDirection");
 }
 
 TQ3Status Q3OrientationStyle_Set(TQ3StyleObject frontFacingDirectionObject, TQ3OrientationStyle frontFacingDirection)
 {
-    return setStyle<OrientationStyle>(__func__, frontFacingDirectionObject, "frontFacingDirectionObject", frontFacingDirection);
+    return setStyle<OrientationStyle>(__func__, frontFacingDirectionObject, "frontFacingDirectionObject",
+                                      frontFacingDirection);
 }
 
 } // extern "C"

@@ -448,7 +448,9 @@ TEST_F(StyleApiTest, HighlightStyleRejectsBadHandlesAndChangesNothing)
     const unsigned long before = Q3Shared_GetEditIndex(style);
     // Bad sets: New, Set and Submit.
     for (const auto& [handle, error] : std::vector<std::pair<TQ3Object, TQ3Error>>{
-             {disposedStyle(), kQ3ErrorInvalidObject}, {stray, kQ3ErrorInvalidObject}, {fill, kQ3ErrorInvalidObjectType}}) {
+             {disposedStyle(), kQ3ErrorInvalidObject},
+             {stray, kQ3ErrorInvalidObject},
+             {fill, kQ3ErrorInvalidObjectType}}) {
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3HighlightStyle_New(handle), nullptr), error);
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3HighlightStyle_Set(style, handle), kQ3Failure), error);
         boundsOf([&](TQ3ViewObject v) {
@@ -458,7 +460,10 @@ TEST_F(StyleApiTest, HighlightStyleRejectsBadHandlesAndChangesNothing)
     EXPECT_EQ(Q3Shared_GetEditIndex(style), before);
     // Bad styles: Get and Set.
     for (const auto& [handle, error] : std::vector<std::pair<TQ3Object, TQ3Error>>{
-             {nullptr, kQ3ErrorNULLParameter}, {disposedStyle(), kQ3ErrorInvalidObject}, {fill, kQ3ErrorInvalidObjectType}, {set, kQ3ErrorInvalidObjectType}}) {
+             {nullptr, kQ3ErrorNULLParameter},
+             {disposedStyle(), kQ3ErrorInvalidObject},
+             {fill, kQ3ErrorInvalidObjectType},
+             {set, kQ3ErrorInvalidObjectType}}) {
         TQ3AttributeSet got = set;
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3HighlightStyle_Get(handle, &got), kQ3Failure), error);
         EXPECT_EQ(got, set);
@@ -595,7 +600,9 @@ TEST_F(StyleApiTest, AntiAliasStyleCallsRejectBadHandlesAndPointers)
     EXPECT_Q3_ERROR(Q3AntiAliasStyle_SetData(style, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3AntiAliasStyle_GetData(style, nullptr), kQ3ErrorNULLParameter);
     for (const auto& [handle, error] : std::vector<std::pair<TQ3Object, TQ3Error>>{
-             {nullptr, kQ3ErrorNULLParameter}, {disposedStyle(), kQ3ErrorInvalidObject}, {fog, kQ3ErrorInvalidObjectType}}) {
+             {nullptr, kQ3ErrorNULLParameter},
+             {disposedStyle(), kQ3ErrorInvalidObject},
+             {fog, kQ3ErrorInvalidObjectType}}) {
         TQ3AntiAliasStyleData got = good;
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3AntiAliasStyle_GetData(handle, &got), kQ3Failure), error);
         EXPECT_TRUE(sameAntiAlias(got, good));
@@ -738,7 +745,9 @@ TEST_F(StyleApiTest, FogStyleCallsRejectBadHandlesAndPointers)
     EXPECT_Q3_ERROR(Q3FogStyle_SetData(style, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3FogStyle_GetData(style, nullptr), kQ3ErrorNULLParameter);
     for (const auto& [handle, error] : std::vector<std::pair<TQ3Object, TQ3Error>>{
-             {nullptr, kQ3ErrorNULLParameter}, {disposedStyle(), kQ3ErrorInvalidObject}, {other, kQ3ErrorInvalidObjectType}}) {
+             {nullptr, kQ3ErrorNULLParameter},
+             {disposedStyle(), kQ3ErrorInvalidObject},
+             {other, kQ3ErrorInvalidObjectType}}) {
         TQ3FogStyleData got = good;
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3FogStyle_GetData(handle, &got), kQ3Failure), error);
         EXPECT_TRUE(sameBytes(got, good));
@@ -773,7 +782,8 @@ TEST(StyleApiUninitialized, EveryFunctionFailsWithNotInitialized)
     TQ3AttributeSet setOut = nullptr;
     EXPECT_EQ(Q3Style_GetType(nullptr), kQ3ObjectTypeInvalid);
     EXPECT_TRUE(failed());
-    for (TQ3StyleObject style : {Q3HighlightStyle_New(nullptr), Q3AntiAliasStyle_New(&antiAlias), Q3FogStyle_New(&fog)}) {
+    for (TQ3StyleObject style :
+         {Q3HighlightStyle_New(nullptr), Q3AntiAliasStyle_New(&antiAlias), Q3FogStyle_New(&fog)}) {
         EXPECT_EQ(style, nullptr);
         EXPECT_TRUE(failed());
     }

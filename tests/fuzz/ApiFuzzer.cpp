@@ -235,7 +235,8 @@ bool lightObeysRules(const AnyLight& l)
     const bool common = allFinite({d.lightData.brightness, c.r, c.g, c.b});
     const bool direction = allFinite({d.direction.x, d.direction.y, d.direction.z}) &&
                            !(d.direction.x == 0.0f && d.direction.y == 0.0f && d.direction.z == 0.0f);
-    const bool located = l.attenuation >= 0 && l.attenuation <= 2 && allFinite({d.location.x, d.location.y, d.location.z});
+    const bool located =
+        l.attenuation >= 0 && l.attenuation <= 2 && allFinite({d.location.x, d.location.y, d.location.z});
     const bool cone = allFinite({d.hotAngle, d.outerAngle}) && d.hotAngle >= 0.0f && d.outerAngle >= 0.0f &&
                       d.hotAngle <= kQ3PiOver2 && d.outerAngle <= kQ3PiOver2 && d.outerAngle >= d.hotAngle &&
                       l.fallOff >= 0 && l.fallOff <= 3;
@@ -1578,8 +1579,8 @@ private:
             else if (which == 7)
                 obeys = (word & ~7UL) == 0, expected = bytesOf(word);
             else if (which == 8) {
-                obeys = (state == 0 || state == 1) && (antiAlias.mode & ~3UL) == 0 && std::isfinite(antiAlias.quality) &&
-                        antiAlias.quality >= 0.0f && antiAlias.quality <= 1.0f;
+                obeys = (state == 0 || state == 1) && (antiAlias.mode & ~3UL) == 0 &&
+                        std::isfinite(antiAlias.quality) && antiAlias.quality >= 0.0f && antiAlias.quality <= 1.0f;
                 expected = bytesOf(antiAlias.state);
                 for (const auto& part : {bytesOf(antiAlias.mode), bytesOf(antiAlias.quality)})
                     expected.insert(expected.end(), part.begin(), part.end());
@@ -1706,12 +1707,14 @@ private:
             } else if (call == 2) {
                 const bool v = m_in.u8() & 1;
                 const std::int32_t raw = enumValue(2);
-                edit(v ? "Q3Shader_SetVBoundary" : "Q3Shader_SetUBoundary", shader, ours ? int(raw == 0 || raw == 1) : -1,
-                     {}, [&] { return q3fuzz_SetEnumField(v ? 8 : 7, shader, raw); });
+                edit(v ? "Q3Shader_SetVBoundary" : "Q3Shader_SetUBoundary", shader,
+                     ours ? int(raw == 0 || raw == 1) : -1, {},
+                     [&] { return q3fuzz_SetEnumField(v ? 8 : 7, shader, raw); });
             } else {
                 TQ3ShaderUVBoundary out = kQ3ShaderUVBoundaryClamp;
-                const TQ3Status status = (m_in.u8() & 1) ? STATUS(Q3Shader_GetUBoundary(shader, nullArg ? nullptr : &out))
-                                                         : STATUS(Q3Shader_GetVBoundary(shader, nullArg ? nullptr : &out));
+                TQ3ShaderUVBoundary* where = nullArg ? nullptr : &out;
+                const TQ3Status status = (m_in.u8() & 1) ? STATUS(Q3Shader_GetUBoundary(shader, where))
+                                                         : STATUS(Q3Shader_GetVBoundary(shader, where));
                 if (status != kQ3Success)
                     require(out == kQ3ShaderUVBoundaryClamp, "Q3Shader_GetUBoundary", "failed but wrote its output");
             }
