@@ -13,11 +13,41 @@
 #include "QD3DMath.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
+#include "QD3DShader.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
 
 #include <stdio.h>
+
+/* A few calls of QD3DStyle.h, QD3DShader.h and QD3DLight.h, with C's enums
+ * and structures as legacy code writes them. */
+static int styleShaderAndLightCalls(void)
+{
+    TQ3FogStyleData fog = {kQ3On, kQ3FogModeLinear, 1.0f, 10.0f, 0.5f, {1.0f, 0.5f, 0.5f, 0.5f}};
+    TQ3SpotLightData spot = {{kQ3True, 0.75f, {1.0f, 1.0f, 1.0f}}, kQ3False, kQ3AttenuationTypeNone,
+                             {0.0f, 5.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.25f, 0.5f, kQ3FallOffTypeLinear};
+    TQ3FillStyle fill = kQ3FillStyleFilled;
+    TQ3ShaderUVBoundary boundary = kQ3ShaderUVBoundaryWrap;
+    float outer = 0.0f;
+    int ok = 1;
+    TQ3StyleObject fillStyle = Q3FillStyle_New(kQ3FillStyleEdges);
+    TQ3StyleObject fogStyle = Q3FogStyle_New(&fog);
+    TQ3ShaderObject phong = Q3PhongIllumination_New();
+    TQ3LightObject light = Q3SpotLight_New(&spot);
+    ok = ok && Q3FillStyle_Get(fillStyle, &fill) == kQ3Success && fill == kQ3FillStyleEdges;
+    ok = ok && Q3Style_GetType(fogStyle) == kQ3StyleTypeFog;
+    ok = ok && Q3Shader_SetUBoundary(phong, kQ3ShaderUVBoundaryClamp) == kQ3Success;
+    ok = ok && Q3Shader_GetUBoundary(phong, &boundary) == kQ3Success && boundary == kQ3ShaderUVBoundaryClamp;
+    ok = ok && Q3IlluminationShader_GetType(phong) == kQ3IlluminationTypePhong;
+    ok = ok && Q3SpotLight_GetOuterAngle(light, &outer) == kQ3Success && outer == 0.5f;
+    ok = ok && Q3Light_GetType(light) == kQ3LightTypeSpot;
+    Q3Object_Dispose(fillStyle);
+    Q3Object_Dispose(fogStyle);
+    Q3Object_Dispose(phong);
+    Q3Object_Dispose(light);
+    return ok;
+}
 
 int main(void)
 {
@@ -73,6 +103,8 @@ int main(void)
         Q3Object_Dispose(push);
         Q3Object_Dispose(group);
     }
+    if (!styleShaderAndLightCalls())
+        return 11;
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

@@ -19,6 +19,8 @@
 //     getter leaves its output unchanged; a successful edit reads back;
 //   - a subdivision style is substituted exactly as QD3DStyle.h says, with
 //     one warning when anything was replaced;
+//   - the other styles, the shaders' uv settings and the lights accept
+//     exactly the values their headers' rules allow, on every path;
 //   - a decomposed curve has at most kQ3SubdivisionMaxSegmentsPerCurve + 1
 //     vertices; a bounding box is never NaN;
 //   - after every input, once the fuzzer has disposed what it holds,
@@ -34,10 +36,12 @@
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
+#include "QD3DLight.h"
 #include "QD3DMath.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DGroup.h"
+#include "QD3DShader.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
@@ -48,8 +52,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstddef>
 #include <cstring>
 #include <deque>
+#include <initializer_list>
 #include <map>
 #include <memory>
 #include <vector>
@@ -182,8 +188,8 @@ bool sameBytes(const T& a, const T& b)
 }
 
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
-                  kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kGroup };
-constexpr int kKindCount = 15;
+                  kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup };
+constexpr int kKindCount = 18;
 
 struct Held {
     TQ3Object handle;
@@ -212,6 +218,104 @@ float expectedParameter(std::int32_t method, float value, bool& replaced)
     if (!sameBytes(result, value))
         replaced = true;
     return result;
+}
+
+// A light of any kind as the fields of a spot light (the others use a
+// subset), with its enumerations and Booleans as the ints the caller gave.
+struct AnyLight {
+    int kind = 0; // 0 ambient, 1 directional, 2 point, 3 spot
+    TQ3SpotLightData data{};
+    std::int32_t isOn = 1, castsShadows = 0, attenuation = 0, fallOff = 0;
+};
+
+bool allFinite(std::initializer_list<float> values)
+{
+    return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
+}
+
+// QD3DLight.h's rules for the light's kind, written from the header.
+bool lightObeysRules(const AnyLight& l)
+{
+    const TQ3SpotLightData& d = l.data;
+    const TQ3ColorRGB& c = d.lightData.color;
+    const bool common = allFinite({d.lightData.brightness, c.r, c.g, c.b});
+    const bool direction = allFinite({d.direction.x, d.direction.y, d.direction.z}) &&
+                           !(d.direction.x == 0.0f && d.direction.y == 0.0f && d.direction.z == 0.0f);
+    const bool located =
+        l.attenuation >= 0 && l.attenuation <= 2 && allFinite({d.location.x, d.location.y, d.location.z});
+    const bool cone = allFinite({d.hotAngle, d.outerAngle}) && d.hotAngle >= 0.0f && d.outerAngle >= 0.0f &&
+                      d.hotAngle <= kQ3PiOver2 && d.outerAngle <= kQ3PiOver2 && d.outerAngle >= d.hotAngle &&
+                      l.fallOff >= 0 && l.fallOff <= 3;
+    switch (l.kind) {
+    case 0: return common;
+    case 1: return common && direction;
+    case 2: return common && located;
+    default: return common && located && direction && cone;
+    }
+}
+
+// Each kind's data structure, filled from one AnyLight: as a caller passes
+// it (stored false: enumerations and Booleans as given) or as Q3 must store
+// it (Booleans 0 or 1). Copied as bytes: the fields may hold any int.
+struct LightStructures {
+    TQ3LightData common;
+    TQ3DirectionalLightData directional;
+    TQ3PointLightData point;
+    TQ3SpotLightData spot;
+};
+
+LightStructures lightStructures(const AnyLight& l, bool stored)
+{
+    LightStructures out{};
+    TQ3SpotLightData& s = out.spot;
+    std::memcpy(&s, &l.data, sizeof s);
+    setRaw(s.lightData.isOn, stored ? std::int32_t(l.isOn != 0) : l.isOn);
+    setRaw(s.castsShadows, stored ? std::int32_t(l.castsShadows != 0) : l.castsShadows);
+    setRaw(s.attenuation, l.attenuation);
+    setRaw(s.fallOff, l.fallOff);
+    std::memcpy(&out.common, &s.lightData, sizeof out.common);
+    std::memcpy(&out.directional.lightData, &s.lightData, sizeof s.lightData);
+    std::memcpy(&out.directional.castsShadows, &s.castsShadows, sizeof s.castsShadows);
+    out.directional.direction = s.direction;
+    static_assert(sizeof(TQ3PointLightData) == offsetof(TQ3SpotLightData, direction),
+                  "a point light's data is a spot light's first fields");
+    std::memcpy(&out.point, &s, sizeof out.point);
+    return out;
+}
+
+// The bytes Q3 must store for the light.
+std::vector<unsigned char> lightBytes(const AnyLight& l)
+{
+    const LightStructures s = lightStructures(l, true);
+    const void* kinds[] = {&s.common, &s.directional, &s.point, &s.spot};
+    const std::size_t sizes[] = {sizeof s.common, sizeof s.directional, sizeof s.point, sizeof s.spot};
+    const unsigned char* p = static_cast<const unsigned char*>(kinds[l.kind]);
+    return std::vector<unsigned char>(p, p + sizes[l.kind]);
+}
+
+// A stored light (valid values) of the given kind as an AnyLight.
+AnyLight anyLight(int kind, const LightStructures& h)
+{
+    AnyLight l;
+    l.kind = kind;
+    const TQ3LightData* commons[] = {&h.common, &h.directional.lightData, &h.point.lightData, &h.spot.lightData};
+    if (kind == 3)
+        l.data = h.spot;
+    l.data.lightData = *commons[kind];
+    l.isOn = l.data.lightData.isOn;
+    if (kind == 1) {
+        l.castsShadows = h.directional.castsShadows;
+        l.data.direction = h.directional.direction;
+    } else if (kind == 2) {
+        l.castsShadows = h.point.castsShadows;
+        l.attenuation = h.point.attenuation;
+        l.data.location = h.point.location;
+    } else if (kind == 3) {
+        l.castsShadows = h.spot.castsShadows;
+        l.attenuation = h.spot.attenuation;
+        l.fallOff = h.spot.fallOff;
+    }
+    return l;
 }
 
 class Session {
@@ -508,6 +612,7 @@ private:
         case Op::kAccessors: accessors(); break;
         case Op::kSurfaces: surfaces(); break;
         case Op::kGroups: groups(); break;
+        case Op::kStylesShadersLights: stylesShadersLights(); break;
         case Op::kCount: break;
         }
     }
@@ -1348,6 +1453,389 @@ private:
         }
         if (got != nullptr)
             hold(got, Kind::kAttributeSet);
+    }
+
+    // Styles other than subdivision, illumination shaders and lights
+    // (QD3DStyle.h, QD3DShader.h, QD3DLight.h), with values that may break
+    // any rule: New, the setters, Get, immediate and retained Submit, the
+    // shaders' uv calls, lights' single-field setters. Where the handle is a
+    // held object of the call's kind, a call must succeed exactly when the
+    // values obey the header's rules (TQ3Booleans: any int, stored as 0 or
+    // 1); a failed edit must leave the object's state and edit index alone,
+    // a successful one must change the edit index and read back.
+    void stylesShadersLights()
+    {
+        // A held style, shader or light's state through its getters, as
+        // bytes (field by field: TQ3AntiAliasStyleData has padding); empty
+        // for anything else.
+        auto snapshot = [&](TQ3Object object) {
+            std::vector<unsigned char> bytes;
+            auto add = [&](const auto& value) {
+                const auto* p = reinterpret_cast<const unsigned char*>(&value);
+                bytes.insert(bytes.end(), p, p + sizeof value);
+            };
+            const bool ours = holdsKind(object, Kind::kOtherStyle) || holdsKind(object, Kind::kShader) ||
+                              holdsKind(object, Kind::kLight);
+            if (!ours || m_initialized == 0)
+                return bytes;
+            auto read = [&](auto get, auto value) {
+                if (STATUS(get(object, &value)) != kQ3Success)
+                    die("snapshot", "a getter failed on a held object of its kind");
+                add(value);
+            };
+            switch (QUERY(Q3Object_GetLeafType(object), TQ3ObjectType{kQ3ObjectTypeInvalid})) {
+            case kQ3StyleTypePickID: read(Q3PickIDStyle_Get, 0UL); break;
+            case kQ3StyleTypePickParts: read(Q3PickPartsStyle_Get, TQ3PickParts{}); break;
+            case kQ3StyleTypeCastShadows: read(Q3CastShadowsStyle_Get, kQ3False); break;
+            case kQ3StyleTypeReceiveShadows: read(Q3ReceiveShadowsStyle_Get, kQ3False); break;
+            case kQ3StyleTypeFill: read(Q3FillStyle_Get, kQ3FillStyleFilled); break;
+            case kQ3StyleTypeBackfacing: read(Q3BackfacingStyle_Get, kQ3BackfacingStyleBoth); break;
+            case kQ3StyleTypeInterpolation: read(Q3InterpolationStyle_Get, kQ3InterpolationStyleNone); break;
+            case kQ3StyleTypeOrientation: read(Q3OrientationStyle_Get, kQ3OrientationStyleClockwise); break;
+            case kQ3StyleTypeFog: read(Q3FogStyle_GetData, TQ3FogStyleData{}); break;
+            case kQ3StyleTypeAntiAlias: {
+                TQ3AntiAliasStyleData data{};
+                STATUS(Q3AntiAliasStyle_GetData(object, &data));
+                add(data.state), add(data.mode), add(data.quality);
+                break;
+            }
+            case kQ3StyleTypeHighlight: {
+                TQ3AttributeSet set = nullptr;
+                STATUS(Q3HighlightStyle_Get(object, &set));
+                add(set);
+                if (set != nullptr)
+                    STATUS(Q3Object_Dispose(set));
+                break;
+            }
+            case kQ3LightTypeAmbient: read(Q3AmbientLight_GetData, TQ3LightData{}); break;
+            case kQ3LightTypeDirectional: read(Q3DirectionalLight_GetData, TQ3DirectionalLightData{}); break;
+            case kQ3LightTypePoint: read(Q3PointLight_GetData, TQ3PointLightData{}); break;
+            case kQ3LightTypeSpot: read(Q3SpotLight_GetData, TQ3SpotLightData{}); break;
+            default: // an illumination shader
+                read(Q3Shader_GetUVTransform, TQ3Matrix3x3{});
+                read(Q3Shader_GetUBoundary, kQ3ShaderUVBoundaryWrap);
+                read(Q3Shader_GetVBoundary, kQ3ShaderUVBoundaryWrap);
+                break;
+            }
+            return bytes;
+        };
+        // Runs one edit. `valid`: 1 or 0 when the handle is known to be of the
+        // call's kind and the values do or do not obey the rules, -1 when the
+        // outcome is not predicted. `expected`: the state a success must leave
+        // (empty: not checked).
+        auto edit = [&](const char* call, TQ3Object object, int valid, const std::vector<unsigned char>& expected,
+                        auto run) {
+            const std::vector<unsigned char> before = snapshot(object);
+            const unsigned long index = before.empty() ? 0 : editIndex(object);
+            begin();
+            const TQ3Status status = checkStatus(call, run());
+            if (valid >= 0 && m_initialized > 0)
+                require((status == kQ3Success) == (valid == 1), call, "disagrees with the header's rules");
+            if (before.empty())
+                return status;
+            if (status == kQ3Success) {
+                require(editIndex(object) != index, call, "succeeded without changing the edit index");
+                require(expected.empty() || snapshot(object) == expected, call, "does not read back");
+            } else {
+                require(editIndex(object) == index, call, "failed but changed the edit index");
+                require(snapshot(object) == before, call, "failed but changed the object");
+            }
+            return status;
+        };
+        auto bytesOf = [](const auto& value) {
+            const auto* p = reinterpret_cast<const unsigned char*>(&value);
+            return std::vector<unsigned char>(p, p + sizeof value);
+        };
+        const std::uint8_t action = m_in.u8() % 5;
+        if (action == 0) {
+            // A style: New, immediate Submit or Set, with one value.
+            static const TQ3ObjectType kTypes[] = {kQ3StyleTypeFill,        kQ3StyleTypeBackfacing,
+                                                   kQ3StyleTypeInterpolation, kQ3StyleTypeOrientation,
+                                                   kQ3StyleTypeCastShadows, kQ3StyleTypeReceiveShadows,
+                                                   kQ3StyleTypePickID,      kQ3StyleTypePickParts,
+                                                   kQ3StyleTypeAntiAlias,   kQ3StyleTypeFog,
+                                                   kQ3StyleTypeHighlight};
+            const int which = m_in.u8() % 11;
+            static const int kLast[] = {2, 2, 2, 1, 1, 1};
+            const std::int32_t raw = which < 6 ? enumValue(kLast[which] + 1) : 0;
+            const unsigned long word = which == 6 ? m_in.u32() : which == 7 ? (unsigned long)enumValue(8) : 0;
+            TQ3AntiAliasStyleData antiAlias{};
+            TQ3FogStyleData fog{};
+            std::int32_t state = enumValue(2), mode = 0;
+            if (which == 8) {
+                setRaw(antiAlias.state, state);
+                antiAlias.mode = (unsigned long)enumValue(4);
+                antiAlias.quality = m_in.value();
+            } else if (which == 9) {
+                mode = enumValue(4);
+                setRaw(fog.state, state);
+                setRaw(fog.mode, mode);
+                fog.fogStart = m_in.value();
+                fog.fogEnd = m_in.value();
+                fog.density = m_in.value();
+                fog.color = {m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+            }
+            const TQ3Object set = which == 10 ? pick(Kind::kAttributeSet) : nullptr;
+            const bool nullData = m_in.u8() == 0;
+            bool obeys = true;
+            std::vector<unsigned char> expected;
+            if (which < 4)
+                obeys = raw >= 0 && raw <= kLast[which], expected = bytesOf(raw);
+            else if (which < 6)
+                expected = bytesOf(std::int32_t(raw != 0));
+            else if (which == 6)
+                expected = bytesOf(word);
+            else if (which == 7)
+                obeys = (word & ~7UL) == 0, expected = bytesOf(word);
+            else if (which == 8) {
+                obeys = (state == 0 || state == 1) && (antiAlias.mode & ~3UL) == 0 &&
+                        std::isfinite(antiAlias.quality) && antiAlias.quality >= 0.0f && antiAlias.quality <= 1.0f;
+                expected = bytesOf(antiAlias.state);
+                for (const auto& part : {bytesOf(antiAlias.mode), bytesOf(antiAlias.quality)})
+                    expected.insert(expected.end(), part.begin(), part.end());
+            } else if (which == 9) {
+                obeys = (state == 0 || state == 1) && mode >= 0 && mode <= 3 &&
+                        allFinite({fog.fogStart, fog.fogEnd, fog.density, fog.color.a, fog.color.r, fog.color.g,
+                                   fog.color.b}) &&
+                        fog.density >= 0.0f && !(state == 1 && mode == 0 && !(fog.fogStart < fog.fogEnd));
+                expected = bytesOf(fog);
+            } else {
+                obeys = set == nullptr || holdsKind(set, Kind::kAttributeSet), expected = bytesOf(set);
+            }
+            auto create = [&]() -> TQ3Object {
+                switch (which) {
+                case 6: return Q3PickIDStyle_New(word);
+                case 7: return Q3PickPartsStyle_New(word);
+                case 8: return Q3AntiAliasStyle_New(nullData ? nullptr : &antiAlias);
+                case 9: return Q3FogStyle_New(nullData ? nullptr : &fog);
+                case 10: return Q3HighlightStyle_New(set);
+                default: return q3fuzz_EnumStyle_New(which, raw);
+                }
+            };
+            const std::uint8_t path = m_in.u8() % 3;
+            if (path == 0) {
+                begin();
+                const TQ3Object style = checkObject("a style's _New", create());
+                if (m_initialized > 0)
+                    require((style != nullptr) == (obeys && !(nullData && (which == 8 || which == 9))),
+                            "a style's _New", "disagrees with QD3DStyle.h's rules");
+                if (style == nullptr)
+                    return;
+                hold(style, Kind::kOtherStyle);
+                require(snapshot(style) == expected, "a style's _New", "does not read back");
+            } else if (path == 1) {
+                const TQ3Object view = pick(Kind::kView);
+                begin();
+                switch (which) {
+                case 6: checkStatus("Q3PickIDStyle_Submit", Q3PickIDStyle_Submit(word, view)); break;
+                case 7: checkStatus("Q3PickPartsStyle_Submit", Q3PickPartsStyle_Submit(word, view)); break;
+                case 8: checkStatus("Q3AntiAliasStyle_Submit", Q3AntiAliasStyle_Submit(&antiAlias, view)); break;
+                case 9: checkStatus("Q3FogStyle_Submit", Q3FogStyle_Submit(&fog, view)); break;
+                case 10: checkStatus("Q3HighlightStyle_Submit", Q3HighlightStyle_Submit(set, view)); break;
+                default: checkStatus("a style's _Submit", q3fuzz_EnumStyle_Submit(which, raw, view)); break;
+                }
+            } else {
+                const TQ3Object style = pick(Kind::kOtherStyle);
+                const bool sameKind = holdsKind(style, Kind::kOtherStyle) && m_initialized > 0 &&
+                                      QUERY(Q3Style_GetType(style), TQ3ObjectType{0}) == kTypes[which];
+                const int valid = sameKind ? int(obeys && !(nullData && (which == 8 || which == 9))) : -1;
+                edit("a style's _Set", style, valid, expected, [&] {
+                    switch (which) {
+                    case 6: return Q3PickIDStyle_Set(style, word);
+                    case 7: return Q3PickPartsStyle_Set(style, word);
+                    case 8: return Q3AntiAliasStyle_SetData(style, nullData ? nullptr : &antiAlias);
+                    case 9: return Q3FogStyle_SetData(style, nullData ? nullptr : &fog);
+                    case 10: return Q3HighlightStyle_Set(style, set);
+                    default: return q3fuzz_EnumStyle_Set(which, style, raw);
+                    }
+                });
+            }
+        } else if (action == 1) {
+            // Calls on any style, shader or light: types, retained submit,
+            // highlight Get, a light's single getters.
+            static const Kind kKinds[] = {Kind::kOtherStyle, Kind::kShader, Kind::kLight};
+            const TQ3Object object = pick(kKinds[m_in.u8() % 3]);
+            const TQ3Object view = pick(Kind::kView);
+            TQ3AttributeSet set = nullptr;
+            const bool nullOut = m_in.u8() == 0;
+            float value = 0.5f;
+            switch (m_in.u8() % 9) {
+            case 6: QUERY(Q3Light_GetType(object), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+            case 7:
+                if (STATUS(Q3SpotLight_GetOuterAngle(object, nullOut ? nullptr : &value)) != kQ3Success)
+                    require(value == 0.5f, "Q3SpotLight_GetOuterAngle", "failed but wrote its output");
+                break;
+            case 8:
+                if (STATUS(Q3Light_GetBrightness(object, nullOut ? nullptr : &value)) != kQ3Success)
+                    require(value == 0.5f, "Q3Light_GetBrightness", "failed but wrote its output");
+                break;
+            case 0: QUERY(Q3Style_GetType(object), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+            case 1: QUERY(Q3Shader_GetType(object), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+            case 2: QUERY(Q3IlluminationShader_GetType(object), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+            case 3: STATUS(Q3Style_Submit(object, view)); break;
+            case 4: STATUS(Q3Shader_Submit(object, view)); break;
+            default:
+                STATUS(Q3HighlightStyle_Get(object, nullOut ? nullptr : &set));
+                if (set != nullptr)
+                    hold(set, Kind::kAttributeSet);
+                break;
+            }
+        } else if (action == 2) {
+            // Illumination shaders and the uv calls every shader has.
+            const std::uint8_t call = m_in.u8() % 4;
+            if (call == 0) {
+                static TQ3ShaderObject (*const kNew[])() = {Q3PhongIllumination_New, Q3LambertIllumination_New,
+                                                            Q3NULLIllumination_New};
+                const TQ3Object shader = OBJECT(kNew[m_in.u8() % 3]());
+                if (shader != nullptr)
+                    hold(shader, Kind::kShader);
+                return;
+            }
+            const TQ3Object shader = pick(Kind::kShader);
+            const bool ours = holdsKind(shader, Kind::kShader) && m_initialized > 0;
+            const bool nullArg = m_in.u8() == 0;
+            if (call == 1) {
+                TQ3Matrix3x3 m{};
+                for (auto& row : m.value)
+                    for (float& v : row)
+                        v = (m_in.u8() & 1) ? m_in.value() : 0.0f;
+                bool finite = true;
+                for (auto& row : m.value)
+                    for (float v : row)
+                        finite = finite && std::isfinite(v);
+                std::vector<unsigned char> expected = bytesOf(m);
+                if (ours) {
+                    const std::vector<unsigned char> now = snapshot(shader);
+                    expected.insert(expected.end(), now.end() - 2 * sizeof(TQ3ShaderUVBoundary), now.end());
+                }
+                edit("Q3Shader_SetUVTransform", shader, ours ? int(finite && !nullArg) : -1, expected,
+                     [&] { return Q3Shader_SetUVTransform(shader, nullArg ? nullptr : &m); });
+                TQ3Matrix3x3 out = m;
+                if (STATUS(Q3Shader_GetUVTransform(shader, m_in.u8() == 0 ? nullptr : &out)) != kQ3Success)
+                    require(sameBytes(out, m), "Q3Shader_GetUVTransform", "failed but wrote its output");
+            } else if (call == 2) {
+                const bool v = m_in.u8() & 1;
+                const std::int32_t raw = enumValue(2);
+                edit(v ? "Q3Shader_SetVBoundary" : "Q3Shader_SetUBoundary", shader,
+                     ours ? int(raw == 0 || raw == 1) : -1, {},
+                     [&] { return q3fuzz_SetEnumField(v ? 8 : 7, shader, raw); });
+            } else {
+                TQ3ShaderUVBoundary out = kQ3ShaderUVBoundaryClamp;
+                TQ3ShaderUVBoundary* where = nullArg ? nullptr : &out;
+                const TQ3Status status = (m_in.u8() & 1) ? STATUS(Q3Shader_GetUBoundary(shader, where))
+                                                         : STATUS(Q3Shader_GetVBoundary(shader, where));
+                if (status != kQ3Success)
+                    require(out == kQ3ShaderUVBoundaryClamp, "Q3Shader_GetUBoundary", "failed but wrote its output");
+            }
+        } else {
+            // Lights: New or SetData of a kind with any values (action 3), or
+            // one value through its own setter (action 4).
+            AnyLight l;
+            l.kind = m_in.u8() % 4;
+            TQ3SpotLightData& d = l.data;
+            l.isOn = enumValue(1);
+            d.lightData.brightness = m_in.value();
+            d.lightData.color = {m_in.value(), m_in.value(), m_in.value()};
+            l.castsShadows = enumValue(1);
+            l.attenuation = enumValue(3);
+            d.location = point3();
+            d.direction = vector3();
+            d.hotAngle = m_in.value();
+            d.outerAngle = m_in.value();
+            l.fallOff = enumValue(4);
+            const bool nullData = m_in.u8() == 0;
+            const LightStructures given = lightStructures(l, false);
+            static const TQ3ObjectType kKinds[] = {kQ3LightTypeAmbient, kQ3LightTypeDirectional, kQ3LightTypePoint,
+                                                   kQ3LightTypeSpot};
+            const TQ3Object light = pick(Kind::kLight);
+            const bool ours = holdsKind(light, Kind::kLight) && m_initialized > 0;
+            // The held light's current values.
+            AnyLight now;
+            if (ours) {
+                const TQ3ObjectType type = QUERY(Q3Light_GetType(light), TQ3ObjectType{0});
+                now.kind = int(std::find(kKinds, kKinds + 4, type) - kKinds);
+                const std::vector<unsigned char> bytes = snapshot(light);
+                LightStructures held{};
+                void* into[] = {&held.common, &held.directional, &held.point, &held.spot};
+                std::memcpy(into[now.kind], bytes.data(), bytes.size());
+                now = anyLight(now.kind, held);
+            }
+            if (action == 3 && (m_in.u8() & 1)) {
+                begin();
+                TQ3Object created = nullptr;
+                switch (l.kind) {
+                case 0: created = Q3AmbientLight_New(nullData ? nullptr : &given.common); break;
+                case 1: created = Q3DirectionalLight_New(nullData ? nullptr : &given.directional); break;
+                case 2: created = Q3PointLight_New(nullData ? nullptr : &given.point); break;
+                default: created = Q3SpotLight_New(nullData ? nullptr : &given.spot); break;
+                }
+                checkObject("a light's _New", created);
+                if (m_initialized > 0)
+                    require((created != nullptr) == (!nullData && lightObeysRules(l)), "a light's _New",
+                            "disagrees with QD3DLight.h's rules");
+                if (created != nullptr) {
+                    hold(created, Kind::kLight);
+                    require(snapshot(created) == lightBytes(l), "a light's _New", "does not read back");
+                }
+            } else if (action == 3) {
+                const int valid = ours && now.kind == l.kind ? int(!nullData && lightObeysRules(l)) : -1;
+                edit("a light's _SetData", light, valid, lightBytes(l), [&] {
+                    switch (l.kind) {
+                    case 0: return Q3AmbientLight_SetData(light, nullData ? nullptr : &given.common);
+                    case 1: return Q3DirectionalLight_SetData(light, nullData ? nullptr : &given.directional);
+                    case 2: return Q3PointLight_SetData(light, nullData ? nullptr : &given.point);
+                    default: return Q3SpotLight_SetData(light, nullData ? nullptr : &given.spot);
+                    }
+                });
+            } else {
+                // One setter, the kind it takes (-1: any light), and what it
+                // does to the light's values.
+                const int call = m_in.u8() % 16;
+                static const int kTakes[] = {-1, -1, -1, -1, 1, 1, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3};
+                static const bool kPointer[] = {false, false, true, true, false, true, false, false,
+                                                true,  false, false, true, true, false, false, false};
+                AnyLight next = now;
+                switch (call) {
+                case 0: next.isOn = l.isOn; break;
+                case 1: next.data.lightData.brightness = d.lightData.brightness; break;
+                case 2: next.data.lightData.color = d.lightData.color; break;
+                case 3: next.data.lightData = d.lightData, next.isOn = l.isOn; break;
+                case 4: case 6: case 9: next.castsShadows = l.castsShadows; break;
+                case 5: case 12: next.data.direction = d.direction; break;
+                case 7: case 10: next.attenuation = l.attenuation; break;
+                case 8: case 11: next.data.location = d.location; break;
+                case 13: next.data.hotAngle = d.hotAngle; break;
+                case 14: next.data.outerAngle = d.outerAngle; break;
+                default: next.fallOff = l.fallOff; break;
+                }
+                const bool nullArg = nullData && kPointer[call];
+                const bool fits = ours && (kTakes[call] < 0 || kTakes[call] == now.kind);
+                edit("a light's setter", light, fits ? int(!nullArg && lightObeysRules(next)) : -1,
+                     fits ? lightBytes(next) : std::vector<unsigned char>{}, [&] {
+                         const TQ3ColorRGB* color = nullArg ? nullptr : &d.lightData.color;
+                         const TQ3Vector3D* direction = nullArg ? nullptr : &d.direction;
+                         const TQ3Point3D* location = nullArg ? nullptr : &d.location;
+                         switch (call) {
+                         case 0: return q3fuzz_SetEnumField(0, light, l.isOn);
+                         case 1: return Q3Light_SetBrightness(light, d.lightData.brightness);
+                         case 2: return Q3Light_SetColor(light, color);
+                         case 3: return Q3Light_SetData(light, nullArg ? nullptr : &given.common);
+                         case 4: return q3fuzz_SetEnumField(1, light, l.castsShadows);
+                         case 5: return Q3DirectionalLight_SetDirection(light, direction);
+                         case 6: return q3fuzz_SetEnumField(2, light, l.castsShadows);
+                         case 7: return q3fuzz_SetEnumField(3, light, l.attenuation);
+                         case 8: return Q3PointLight_SetLocation(light, location);
+                         case 9: return q3fuzz_SetEnumField(4, light, l.castsShadows);
+                         case 10: return q3fuzz_SetEnumField(5, light, l.attenuation);
+                         case 11: return Q3SpotLight_SetLocation(light, location);
+                         case 12: return Q3SpotLight_SetDirection(light, direction);
+                         case 13: return Q3SpotLight_SetHotAngle(light, d.hotAngle);
+                         case 14: return Q3SpotLight_SetOuterAngle(light, d.outerAngle);
+                         default: return q3fuzz_SetEnumField(6, light, l.fallOff);
+                         }
+                     });
+            }
+        }
     }
 
     // The math helpers with arbitrary values, results aliasing inputs. Cases

@@ -73,6 +73,7 @@ enum class Op : std::uint8_t {
     kMath,
     kAccessors,
     kSurfaces,
+    kStylesShadersLights,
     kGroups,
     kCount
 };

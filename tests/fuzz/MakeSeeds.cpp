@@ -19,7 +19,8 @@ using q3fuzz::Op;
 
 // Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
-                           kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kGroup };
+                           kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
+                           kLight, kGroup };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -600,6 +601,101 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kGroups).u8(3).held(0).u8(1).u8(0);              // remove every other while walking
         s.op(Op::kGroups).u8(2).held(1).u8(0).u8(0).u8(kGroup).held(1).u8(0); // set: itself, refused
         s.op(Op::kGroups).u8(5).held(1).u8(1).u8(0).u8(0);        // empty all
+    }
+    // Every style, the illumination shaders and every light kind: made,
+    // edited with good and bad values, submitted in a rendering loop.
+    // stylesShadersLights(): action 0 style (which, value, state byte, data,
+    // null byte, path: New / Submit to a view / Set on a held style), 1 type
+    // and submit calls, 2 shaders, 3 light New or SetData, 4 light setter.
+    {
+        Seed& s = add("styles-shaders-lights");
+        auto style = [&s](std::uint8_t which) -> Seed& { return s.op(Op::kStylesShadersLights).u8(0).u8(which); };
+        auto tail = [&s](std::uint8_t path) -> Seed& {
+            s.u8(1).u8(path);
+            return path == 0 ? s : s.held();
+        };
+        // New: fill edges, backfacing remove, interpolation pixel,
+        // orientation clockwise, cast shadows 5 (true), receive shadows 0.
+        const std::uint8_t values[] = {1, 1, 2, 1, 2, 0};
+        for (std::uint8_t which = 0; which < 6; ++which) {
+            style(which).u8(values[which]).u8(0);
+            tail(0);
+        }
+        style(6).u32(42).u8(0);
+        tail(0);
+        style(7).u8(5).u8(0); // pick parts face | vertex
+        tail(0);
+        style(8).u8(1).u8(3).value(0.5f); // anti-alias on, edges | filled
+        tail(0);
+        style(9).u8(1).u8(0).value(1).value(10).value(0.25f).value(1).value(1).value(0).value(0); // linear fog
+        tail(0);
+        style(10).u8(0).null(); // highlight without a set
+        tail(0);
+        // Bad values: fill 3, orientation -1, pick parts 8, quality NaN,
+        // linear fog with start == end, a highlight set that is a style.
+        style(0).u8(3).u8(0);
+        tail(0);
+        style(3).u8(224).u32(0xFFFFFFFF).u8(0);
+        tail(0);
+        style(7).u8(8).u8(0);
+        tail(0);
+        style(8).u8(1).u8(1).special(0);
+        tail(0);
+        style(9).u8(1).u8(0).value(5).value(5).value(1).value(1).value(1).value(1).value(1);
+        tail(0);
+        style(10).u8(0).held(0);
+        tail(0);
+        // Set on the first held style (the fill style): valid, then bad.
+        style(0).u8(2).u8(0);
+        tail(2);
+        style(0).u8(224).u32(1000000).u8(0);
+        tail(2);
+        style(1).u8(1).u8(0); // a backfacing value to the fill style: wrong kind
+        tail(2);
+        // Shaders: Phong, Lambert, NULL; a uv transform, a NaN one, a bad boundary.
+        for (std::uint8_t kind = 0; kind < 3; ++kind)
+            s.op(Op::kStylesShadersLights).u8(2).u8(0).u8(kind);
+        s.op(Op::kStylesShadersLights).u8(2).u8(1).held().u8(1);
+        for (int i = 0; i < 9; ++i)
+            s.u8(1).value(i % 4 == 0 ? 2.0f : 0.0f);
+        s.u8(1);
+        s.op(Op::kStylesShadersLights).u8(2).u8(1).held(1).u8(1);
+        for (int i = 0; i < 9; ++i)
+            (i == 4 ? s.u8(1).special(1) : s.u8(0));
+        s.u8(1);
+        s.op(Op::kStylesShadersLights).u8(2).u8(2).held().u8(1).u8(1).u8(1);  // v clamp
+        s.op(Op::kStylesShadersLights).u8(2).u8(2).held().u8(1).u8(0).u8(2);  // u 2: bad
+        s.op(Op::kStylesShadersLights).u8(2).u8(3).held().u8(1).u8(1);
+        // Lights: each kind made with good values (a spot light with hot
+        // 0.25 and outer 0.5), then one made with a zero direction. light()
+        // writes the values up to the null byte; then come the light handle
+        // and New / SetData (action 3) or the setter (action 4).
+        auto light = [&s](std::uint8_t action, std::uint8_t kind, float hot, float outer, float dy) -> Seed& {
+            s.op(Op::kStylesShadersLights).u8(action).u8(kind);
+            s.u8(1).value(0.75f).value(1).value(0.5f).value(0.25f).u8(0).u8(1);
+            s.value(0).value(5).value(0).value(0).value(dy).value(0).value(hot).value(outer).u8(3);
+            return s.u8(1);
+        };
+        for (std::uint8_t kind = 0; kind < 4; ++kind)
+            light(3, kind, 0.25f, 0.5f, -1).held().u8(1);
+        light(3, 1, 0.25f, 0.5f, 0).held().u8(1);
+        // SetData of the spot light with outer below hot; then its hot angle
+        // set above its outer angle, the outer angle widened to 1.5, and a
+        // NaN outer angle.
+        light(3, 3, 0.5f, 0.25f, -1).held(3).u8(0);
+        light(4, 3, 1, 1, -1).held(3).u8(13);
+        light(4, 3, 1, 1.5f, -1).held(3).u8(14);
+        light(4, 3, 1, kNaN, -1).held(3).u8(14);
+        // Everything submitted in a rendering loop.
+        s.scene().startRendering();
+        s.op(Op::kStylesShadersLights).u8(1).u8(0).held().held().u8(1).u8(3);  // Q3Style_Submit
+        s.op(Op::kStylesShadersLights).u8(1).u8(1).held().held().u8(1).u8(4);  // Q3Shader_Submit
+        style(2).u8(0).u8(0);
+        tail(1);
+        style(9).u8(1).u8(2).value(0).value(0).value(0.5f).value(0).value(0).value(0).value(1);
+        tail(1);
+        s.submitHeld(kOtherStyle, 1, 1).submitHeld(kLight, 0, 1).endRendering();
+        s.op(Op::kDuplicate).u8(kOtherStyle).held(10).op(Op::kDuplicate).u8(kLight).held(3);
     }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {
