@@ -63,7 +63,7 @@ extern "C" {
  *   whose message gives the estimated error.
  */
 #define kQ3NURBCurveToolsMaxPoints 268435456UL
-#define kQ3NURBCurveToolsMaxBisections 65536UL
+#define kQ3NURBCurveToolsMaxBisections 4096UL
 
 /*
  * Q3 extension. How a fitted curve's parameters follow the points: the
