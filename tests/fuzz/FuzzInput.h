@@ -72,6 +72,7 @@ enum class Op : std::uint8_t {
     kOtherGeometryEdit,
     kMath,
     kAccessors,
+    kCurveTools,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);
