@@ -1,5 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
+//
+// Banded least squares by Givens rotations. Each new row is rotated against the
+// triangle's rows from its first nonzero column on: the rotation that zeroes the
+// row's leading entry against the diagonal (c = r_cc / h, s = a_c / h with
+// h = hypot(r_cc, a_c)) is orthogonal, so the residual's norm is kept and the
+// method is backward stable (Lawson & Hanson, "Solving Least Squares Problems";
+// Golub & Van Loan, "Matrix Computations", section 5.1.8). A row that meets an
+// empty triangle row takes its place. Back substitution solves R X = Q^T B.
+// The basis functions are Piegl & Tiller's algorithm A2.2: the Cox-de Boor
+// triangle kept to the degree + 1 functions that are nonzero on the span, with
+// the left and right differences u - x_{l+1-j} and x_{l+j} - u reused.
 #include "geometry/nurbs/BandedLeastSquares.h"
 
 #include "geometry/nurbs/Curve.h"

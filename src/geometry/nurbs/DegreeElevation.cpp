@@ -6,7 +6,8 @@
 // A piecewise polynomial of degree p that is C^{p-m} at a knot of multiplicity m is
 // also a piecewise polynomial of degree p + t that is C^{p-m} there, i.e. a B-spline
 // of order k + t on the knot vector in which every interior knot occurs m + t times
-// (the spline spaces are nested; de Boor, "A Practical Guide to Splines", ch. IX).
+// (the spline spaces are nested: the Curry-Schoenberg theorem, de Boor, "A
+// Practical Guide to Splines").
 // So the elevated control points are those of the one spline in that space that
 // agrees with the curve at as many points as it has control points. The points are
 // the Greville abscissae of the new knot vector, tau_j = (y_{j+1} + ... + y_{j+p+t})
