@@ -267,7 +267,7 @@ ToolResult<double> parameterAtLength(const CurveRef& curve, double t0, double le
         const double partPerUnit = 0.25 * tolerance / (spanEnd - spanStart);
         double lo = spanStart;
         double hi = spanEnd;
-        double t = spanStart + (spanEnd - spanStart) * (wanted / spanLength);
+        double t = std::min(spanEnd, spanStart + (spanEnd - spanStart) * (wanted / spanLength));
         bool converged = false;
         for (int step = 0; step < kMaxNewtonSteps && !converged; ++step) {
             const double excess = integrator.integrate(spanStart, t, partPerUnit) - wanted;
