@@ -382,8 +382,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_GetData(TQ3GeometryObject curve,
  * arrays, disposes the attribute set reference, and sets controlPoints,
  * knots and curveAttributeSet to NULL (order and numPoints are left alone).
  * Calling it again on the emptied structure does nothing and succeeds.
- * Use it only on data filled by Q3NURBCurve_GetData: arrays the caller
- * allocated itself must be freed by the caller.
+ * Use it only on data filled by Q3NURBCurve_GetData or by a curve tool of
+ * Q3NURBCurveTools.h: arrays the caller allocated itself must be freed by the
+ * caller.
  *
  * @param nurbCurveData  the structure to empty.
  * @return kQ3Success, or kQ3Failure with nothing released.

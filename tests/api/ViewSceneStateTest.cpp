@@ -104,9 +104,11 @@ TEST_F(ViewSceneStateTest, StyleStatesStartAtQuickDraw3DsDefaults)
 
 TEST_F(ViewSceneStateTest, StateCallsFailOutsideALoopAndWithNullOutputs)
 {
-    TQ3FillStyle fill = TQ3FillStyle(42);
+    // A sentinel that is a valid TQ3FillStyle (an out-of-range enum value would be
+    // undefined behaviour to read back) and not the default, kQ3FillStyleFilled.
+    TQ3FillStyle fill = kQ3FillStylePoints;
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3View_GetFillStyleState(view(), &fill), kQ3Failure), kQ3ErrorViewNotStarted);
-    EXPECT_EQ(fill, TQ3FillStyle(42));
+    EXPECT_EQ(fill, kQ3FillStylePoints);
     TQ3Matrix4x4 m{};
     m.value[0][0] = 42;
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3View_GetWorldToFrustumMatrixState(view(), &m), kQ3Failure),

@@ -17,6 +17,7 @@
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
+#include "Q3NURBCurveTools.h"
 
 #include <stdio.h>
 
@@ -105,6 +106,22 @@ int main(void)
     }
     if (!styleShaderAndLightCalls())
         return 11;
+    {
+        /* A curve tool from C: Listing 1's cubic, evaluated at its middle. */
+        static TQ3RationalPoint4D points[4] = {{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}};
+        static float knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+        TQ3NURBCurveData listing1;
+        TQ3Point3D middle;
+        TQ3NURBCurveParameterization how = kQ3NURBCurveParameterizationCentripetal;
+        listing1.order = 4;
+        listing1.numPoints = 4;
+        listing1.controlPoints = points;
+        listing1.knots = knots;
+        listing1.curveAttributeSet = NULL;
+        (void)how;
+        if (Q3NURBCurveData_Evaluate(&listing1, 0.5f, &middle) != kQ3Success || middle.x != 1.5f)
+            return 12;
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

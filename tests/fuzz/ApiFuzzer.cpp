@@ -31,6 +31,7 @@
 #include "CCaller.h"
 #include "FuzzInput.h"
 
+#include "Q3NURBCurveTools.h"
 #include "QD3D.h"
 #include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
@@ -613,6 +614,7 @@ private:
         case Op::kSurfaces: surfaces(); break;
         case Op::kGroups: groups(); break;
         case Op::kStylesShadersLights: stylesShadersLights(); break;
+        case Op::kCurveTools: curveTools(); break;
         case Op::kCount: break;
         }
     }
@@ -2344,6 +2346,106 @@ private:
         }
     }
     static constexpr unsigned long kLongMax = static_cast<unsigned long>(std::numeric_limits<long>::max());
+
+    // The curve tools of Q3NURBCurveTools.h, in the object form on a picked handle
+    // or the data form on curve data from the input: parameters, tolerances,
+    // indices and counts from the input (NaN, infinities, the ends and beyond), a
+    // NULL output now and then. A success hands out curves that Q3NURBCurve_New
+    // accepts (then released); a failure writes nothing; a retained curve keeps its
+    // edit index. Measuring, inversion and fitting share the curve-draw budget.
+    void curveTools()
+    {
+        const bool object = m_in.u8() & 1;
+        const TQ3Object curve = object ? pick(Kind::kCurve) : nullptr;
+        CurveBuffers c;
+        if (!object)
+            readCurve(c);
+        const TQ3NURBCurveData* data = m_in.u8() == 0 ? nullptr : &c.data;
+        const bool nullOut = m_in.u8() == 0;
+        const float a = m_in.value();
+        const float b = m_in.value();
+        const float tolerance = m_in.value();
+        const unsigned long index = m_in.index(object ? knotCount(curve) : c.knots.size());
+        const unsigned long times = m_in.index(16);
+        const std::uint8_t which = m_in.u8() % 17;
+        // Up to 31 knots or 63 points, claimed as they are or as a count past the
+        // limit (which Q3 must refuse before reading).
+        std::vector<float> knots(m_in.u8() % 32);
+        for (float& k : knots)
+            k = m_in.value();
+        std::vector<TQ3Point3D> points(std::min<std::size_t>(m_in.u8() % 64, m_in.remaining() / 3 + 1));
+        for (TQ3Point3D& p : points)
+            p = point3();
+        const bool hugeCount = m_in.u8() == 0;
+        const unsigned long claimedKnots = hugeCount ? kQ3NURBCurveToolsMaxPoints + 1 : knots.size();
+        const unsigned long claimedPoints = hugeCount ? ~0UL : points.size();
+        const unsigned long order = 1 + m_in.u8() % 17;
+        const TQ3NURBCurveParameterization how = (m_in.u8() & 1) ? kQ3NURBCurveParameterizationCentripetal
+                                                                   : kQ3NURBCurveParameterizationChordLength;
+        const TQ3Point3D target = point3();
+        if (which >= 12 && !drawAllowed())
+            return;
+        const DrawTimer timer(m_drawSeconds);
+        const bool held = object && holdsKind(curve, Kind::kCurve) && m_initialized > 0;
+        const unsigned long before = held ? editIndex(curve) : 0;
+
+        struct Outputs {
+            float f[2];
+            TQ3Point3D p;
+            TQ3Vector3D v[2];
+            TQ3NURBCurveData curves[2];
+            unsigned long n;
+        } out, untouched;
+        std::memset(&out, 0x5A, sizeof out);
+        untouched = out;
+        float* f0 = nullOut ? nullptr : &out.f[0];
+        TQ3NURBCurveData* c0 = nullOut ? nullptr : &out.curves[0];
+        TQ3NURBCurveData* c1 = (m_in.u8() & 7) == 0 ? c0 : &out.curves[1];
+#define Q3_FUZZ_TOOL(name, ...)                                                                     \
+    (object ? STATUS(Q3NURBCurve_##name(curve, __VA_ARGS__)) : STATUS(Q3NURBCurveData_##name(data, __VA_ARGS__)))
+        TQ3Status status = kQ3Failure;
+        switch (which) {
+        case 0: status = Q3_FUZZ_TOOL(GetDomain, f0, &out.f[1]); break;
+        case 1: status = Q3_FUZZ_TOOL(Evaluate, a, nullOut ? nullptr : &out.p); break;
+        case 2: status = Q3_FUZZ_TOOL(EvaluateDerivatives, a, &out.p, nullOut ? nullptr : &out.v[0], &out.v[1]); break;
+        case 3: status = Q3_FUZZ_TOOL(GetTangent, a, nullOut ? nullptr : &out.v[0]); break;
+        case 4: status = Q3_FUZZ_TOOL(GetCurvature, a, f0); break;
+        case 5: status = Q3_FUZZ_TOOL(InsertKnot, a, times, c0); break;
+        case 6: status = Q3_FUZZ_TOOL(RefineKnots, claimedKnots, knots.empty() ? nullptr : knots.data(), c0); break;
+        case 7: status = Q3_FUZZ_TOOL(RemoveKnot, index, times, tolerance, c0, &out.n); break;
+        case 8: status = Q3_FUZZ_TOOL(ElevateDegree, times, c0); break;
+        case 9: status = Q3_FUZZ_TOOL(CountBezierPieces, nullOut ? nullptr : &out.n); break;
+        case 10: status = Q3_FUZZ_TOOL(GetBezierPiece, index, c0); break;
+        case 11: status = Q3_FUZZ_TOOL(Split, a, c0, c1); break;
+        case 12: status = Q3_FUZZ_TOOL(GetArcLength, a, b, tolerance, f0); break;
+        case 13: status = Q3_FUZZ_TOOL(GetParameterAtLength, a, b, tolerance, f0); break;
+        case 14: status = Q3_FUZZ_TOOL(GetClosestPoint, &target, f0, &out.p); break;
+        case 15:
+            status = STATUS(Q3NURBCurveData_Interpolate(order, claimedPoints, points.empty() ? nullptr : points.data(),
+                                                         how, c0));
+            break;
+        default:
+            status = STATUS(Q3NURBCurveData_Approximate(order, claimedPoints, points.empty() ? nullptr : points.data(),
+                                                         times, how, c0));
+            break;
+        }
+#undef Q3_FUZZ_TOOL
+        if (status == kQ3Failure) {
+            require(sameBytes(out, untouched), "a curve tool", "failed but wrote its output");
+        } else {
+            for (TQ3NURBCurveData& made : out.curves) {
+                if (sameBytes(made, untouched.curves[0]))
+                    continue;
+                require(made.curveAttributeSet == nullptr, "a curve tool", "handed out an attribute set");
+                const TQ3Object check = OBJECT(Q3NURBCurve_New(&made));
+                require(check != nullptr, "a curve tool", "handed out a curve Q3NURBCurve_New rejects");
+                STATUS(Q3Object_Dispose(check));
+                STATUS(Q3NURBCurve_EmptyData(&made));
+            }
+        }
+        if (held)
+            require(editIndex(curve) == before, "a curve tool", "changed the retained curve's edit index");
+    }
 
     TQ3CameraData readCameraData()
     {

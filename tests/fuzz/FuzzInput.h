@@ -75,6 +75,7 @@ enum class Op : std::uint8_t {
     kSurfaces,
     kStylesShadersLights,
     kGroups,
+    kCurveTools,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -64,6 +64,26 @@ public:
         return curveTail(flags);
     }
 
+    // curveTools(): the form (object: the first held curve; data: Listing 1), then
+    // the arguments in the order ApiFuzzer.cpp reads them; xyz are the points to fit.
+    Seed& curveTool(bool object, std::uint8_t which, float a, float b, float tolerance, std::uint8_t index,
+                    std::uint8_t times, const std::vector<float>& knots = {}, const std::vector<float>& xyz = {})
+    {
+        op(Op::kCurveTools).u8(object ? 1 : 0);
+        if (object)
+            held();
+        else
+            listing1Curve();
+        u8(1).u8(1).value(a).value(b).value(tolerance).smallIndex(index).smallIndex(times).u8(which);
+        u8(std::uint8_t(knots.size()));
+        for (float k : knots)
+            value(k);
+        u8(std::uint8_t(xyz.size() / 3));
+        for (float v : xyz)
+            value(v);
+        return u8(1).u8(3).u8(0).value(1).value(2).value(0).u8(1);  // order 4, chord length, target, two halves
+    }
+
     Seed& newCurveListing1(const std::vector<Patch>& patches = {})
     {
         op(Op::kNewCurve);
@@ -751,6 +771,26 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kSubmitCurveImmediate).listing1Curve().held().u8(0);
         s.op(Op::kSubmitCurveImmediate).listing1Curve().stray().u8(1);
         s.endRendering();
+    }
+    // The curve tools (Q3NURBCurveTools.h) on a retained curve and on data: every
+    // call once with good arguments, then NaN, a parameter outside the domain, an
+    // index past the end and a count past the limit.
+    {
+        Seed& s = add("curve-tools");
+        s.newCurveListing1();
+        s.curveTool(true, 0, 0, 0, 0, 0, 0).curveTool(true, 1, 0.5f, 0, 0, 0, 0);
+        s.curveTool(true, 2, 0.25f, 0, 0, 0, 0).curveTool(true, 3, 0.75f, 0, 0, 0, 0);
+        s.curveTool(true, 4, 0.5f, 0, 0, 0, 0).curveTool(true, 5, 0.5f, 0, 0, 0, 2);
+        s.curveTool(true, 6, 0, 0, 0, 0, 0, {0.25f, 0.75f, 0.5f}).curveTool(true, 7, 0, 0, 0.01f, 4, 1);
+        s.curveTool(true, 8, 0, 0, 0, 0, 3).curveTool(true, 9, 0, 0, 0, 0, 0);
+        s.curveTool(true, 10, 0, 0, 0, 0, 0).curveTool(true, 11, 0.5f, 0, 0, 0, 0);
+        s.curveTool(true, 12, 0, 1, 0.001f, 0, 0).curveTool(true, 13, 0, 1.5f, 0.001f, 0, 0);
+        s.curveTool(true, 14, 0, 0, 0, 0, 0);
+        const std::vector<float> zigzag{0, 0, 0, 1, 2, 0, 2, 0, 0, 3, 2, 0, 4, 0, 1, 5, 2, 0};
+        s.curveTool(false, 15, 0, 0, 0, 0, 0, {}, zigzag).curveTool(false, 16, 0, 0, 0, 0, 5, {}, zigzag);
+        s.curveTool(false, 1, kNaN, 0, 0, 0, 0).curveTool(false, 5, 1.0f, 0, 0, 0, 1);
+        s.curveTool(false, 10, 0, 0, 0, 9, 0).curveTool(false, 12, 0, 1, -1.0f, 0, 0);
+        s.curveTool(false, 8, 0, 0, 0, 0, 13).curveTool(false, 12, 0, 0.9f, 1e-30f, 0, 0);
     }
     return all;
 }
