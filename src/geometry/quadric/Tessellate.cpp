@@ -1,0 +1,854 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Rows, stitched (Tessellate.h gives the scheme). Why each step:
+//   - Rows along u at fixed v suit every patch of Shapes.h: u is the angle
+//     around (or a straight direction), v runs between the patch's boundary
+//     curves, which are the rows a linked patch shares.
+//   - A row's points are uniform in u, not marched: uniform rows with every
+//     other one offset by half a step stagger, so the triangles between two
+//     rows of similar length are close to equilateral, the shape with the
+//     most area for a bounded edge (an equilateral triangle of side c1 has
+//     area sqrt(3)/4 c1^2, the lower bound the tests measure against).
+//   - Greedy shorter-diagonal stitching (Fuchs, Kedem, Uselton, "Optimal
+//     surface reconstruction from planar contours", CACM 1977, its greedy
+//     variant) never crosses itself and, as two rows draw together, its new
+//     edges tend to the rows' own chords, all below kRowChord c1; so halving
+//     a strip with a long edge ends, and the edge guarantee holds.
+
+#include "geometry/quadric/Tessellate.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+namespace q3::quadric {
+
+namespace {
+
+/// Thrown when an attempt would exceed maxTriangles; tessellate() retries
+/// coarser.
+struct OverBudget {};
+
+bool isFinite(const Vec3& p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+/// A local point and its image in the measured space.
+struct Image {
+    Vec3 local{0.0};
+    Vec3 mapped{0.0};
+    bool has = false;
+};
+
+/// Lengths as drawn: through the mapping (measured), or in local space
+/// (constant, where only the stitching's shorter diagonal uses them).
+class Measure {
+public:
+    explicit Measure(const Mapping* map) : m_map(map) {}
+
+    Image image(const Vec3& local) const
+    {
+        Image result;
+        result.local = local;
+        if (m_map == nullptr) {
+            result.mapped = local;
+            result.has = true;
+        } else {
+            result.has = (*m_map)(local, result.mapped) && isFinite(result.mapped);
+        }
+        return result;
+    }
+
+    /// The drawn length of the straight edge a-b (Tessellate.h).
+    double length(const Image& a, const Image& b) const
+    {
+        if (a.has && b.has)
+            return glm::distance(a.mapped, b.mapped);
+        if (!a.has && !b.has)
+            return 0.0;
+        const Image& in = a.has ? a : b;
+        const Image& out = a.has ? b : a;
+        // The points with an image form a half-space, so along the edge
+        // they are an interval starting at `in`.
+        double lo = 0.0, hi = 1.0;
+        Vec3 reached = in.mapped;
+        for (int i = 0; i < 48 && hi - lo > 1e-12; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            const Image probe = image(in.local + mid * (out.local - in.local));
+            if (probe.has) {
+                lo = mid;
+                reached = probe.mapped;
+            } else {
+                hi = mid;
+            }
+        }
+        return glm::distance(in.mapped, reached);
+    }
+
+private:
+    const Mapping* m_map;
+};
+
+/// How a measured patch's rows get their points (Tessellate.h): each row on
+/// its own, uniform, alternate rows offset by half a step (best where
+/// neighbouring rows are alike: cylinders, spheres, cones); or each row
+/// derived from its neighbour (best where rows grow fast: disks, caps, tori).
+enum class Strategy { kUniform, kDerived };
+
+/// What an attempt works with.
+struct Setting {
+    Method method = Method::kConstant;
+    double c1 = 1.0, c2 = 1.0; ///< constant counts, or c1 the edge bound
+    std::size_t maxTriangles = 0;
+    Measure measure{nullptr};
+
+    double rowChord() const { return kRowChord * c1; }
+    double rowSpacing(Strategy strategy) const
+    {
+        return (strategy == Strategy::kDerived ? kDerivedRowSpacing : kRowSpacing) * c1;
+    }
+};
+
+unsigned constantCount(const ConstantRule& rule, const Setting& s)
+{
+    if (rule.which == 0)
+        return std::max(1u, rule.minimum);
+    const double c = rule.which == 1 ? s.c1 : s.c2;
+    const double wanted = std::ceil(c * rule.span - 1e-9);
+    return unsigned(std::clamp(wanted, double(rule.minimum), 1e9));
+}
+
+/// A patch's rows once tessellated, for the patches linked to it.
+struct PatchRows {
+    std::vector<double> values; ///< every row's v, increasing
+    std::vector<double> first;  ///< the u parameters of the v0 row
+    std::vector<double> last;   ///< and of the v1 row
+};
+
+struct Row {
+    double v = 0.0;
+    bool collapsed = false;
+    int phase = 0;                    ///< uniform rows: 1 when offset by half a step
+    std::vector<double> u;            ///< empty when collapsed
+    std::vector<Image> images;        ///< one per u (one when collapsed)
+    std::vector<std::uint32_t> index; ///< output vertices (none when collapsed)
+};
+
+/// One triangle corner before it is committed: a row's point, or the
+/// collapsed row's point at parameter apexU (its own vertex).
+struct Corner {
+    const Row* row;
+    std::size_t j;
+    double apexU;
+};
+
+/// Uniform parameters across [u0, u1]: n segments, or with phase 1 the same
+/// steps offset by half (two half steps at the ends).
+std::vector<double> uniform(double u0, double u1, unsigned n, int phase = 0)
+{
+    std::vector<double> u;
+    const double step = (u1 - u0) / n;
+    if (phase == 0) {
+        for (unsigned i = 0; i <= n; ++i)
+            u.push_back(i == n ? u1 : u0 + i * step);
+        return u;
+    }
+    u.push_back(u0);
+    for (unsigned i = 0; i < n; ++i)
+        u.push_back(u0 + (i + 0.5) * step);
+    u.push_back(u1);
+    return u;
+}
+
+class PatchBuilder {
+public:
+    PatchBuilder(const Patch& patch, const Setting& setting, Strategy strategy, std::size_t budget, Tessellation& out,
+                 const std::vector<PatchRows>& done)
+        : m_patch(patch), m_s(setting), m_strategy(strategy), m_budget(budget), m_out(out), m_done(done)
+    {
+        m_flip = reversed();
+    }
+
+    PatchRows build()
+    {
+        const std::vector<double> values = rowValues();
+        const std::size_t last = values.size() - 1;
+        // Rows are derived from a neighbour, starting from the shortest and
+        // growing towards the longest (the pivot) from both ends: growing
+        // rows only split segments, which keeps the stagger.
+        std::size_t pivot = last;
+        if (m_s.method == Method::kMeasured && m_strategy == Strategy::kDerived) {
+            double longest = -1.0;
+            for (std::size_t k = 0; k <= last; ++k) {
+                const double length = rowLength(values[k]);
+                if (length > longest) {
+                    longest = length;
+                    pivot = k;
+                }
+            }
+        }
+        std::deque<Row> rows(last + 1);
+        auto build = [&](std::size_t k, const Row* from) {
+            const bool collapsed = (k == 0 && m_patch.collapsedV0) || (k == last && m_patch.collapsedV1);
+            const RowSource* source = k == 0 ? &m_patch.link.first : k == last ? &m_patch.link.last : nullptr;
+            rows[k] = makeRow(values[k], collapsed, source, from, int(k % 2));
+        };
+        for (std::size_t k = 0; k <= pivot; ++k)
+            build(k, k > 0 ? &rows[k - 1] : nullptr);
+        for (std::size_t k = last; k > pivot; --k)
+            build(k, k < last ? &rows[k + 1] : nullptr);
+        for (std::size_t k = 0; k < last; ++k)
+            stitch(rows[k], rows[k + 1], 0);
+
+        PatchRows result;
+        for (const Row& row : rows)
+            result.values.push_back(row.v);
+        for (const Row& row : m_inserted)
+            result.values.push_back(row.v);
+        std::sort(result.values.begin(), result.values.end());
+        result.first = rows.front().u;
+        result.last = rows.back().u;
+        return result;
+    }
+
+private:
+    // ---- Orientation -------------------------------------------------------
+
+    /// True when counterclockwise in (u, v) faces inwards: the parameter
+    /// cross product at the patch's centre against its normal there.
+    bool reversed() const
+    {
+        const Patch& p = m_patch;
+        const double u = 0.5 * (p.u0 + p.u1), v = 0.5 * (p.v0 + p.v1);
+        const double du = 1e-4 * (p.u1 - p.u0), dv = 1e-4 * (p.v1 - p.v0);
+        const Vec3 pu = p.point(u + du, v) - p.point(u - du, v);
+        const Vec3 pv = p.point(u, v + dv) - p.point(u, v - dv);
+        return glm::dot(glm::cross(pu, pv), p.normal(u, v)) < 0.0;
+    }
+
+    // ---- Rows --------------------------------------------------------------
+
+    unsigned minimumAlongU() const { return m_patch.closedU ? 3u : 1u; }
+    unsigned minimumAlongV() const
+    {
+        if (m_patch.closedV)
+            return 3;
+        return m_patch.collapsedV0 && m_patch.collapsedV1 ? 2u : 1u;
+    }
+
+    std::vector<double> rowValues()
+    {
+        const Patch& p = m_patch;
+        if (p.link.rows >= 0)
+            return m_done[std::size_t(p.link.rows)].values;
+        unsigned n = 0;
+        if (m_s.method == Method::kConstant) {
+            n = std::max(constantCount(p.constantV, m_s), minimumAlongV());
+        } else {
+            std::vector<double> marched = march();
+            if (marched.size() - 1 >= minimumAlongV())
+                return marched;
+            n = minimumAlongV();
+        }
+        return uniform(p.v0, p.v1, n);
+    }
+
+    std::vector<Image> probeRow(double v) const
+    {
+        std::vector<Image> images;
+        for (int j = 0; j <= kProbes; ++j)
+            images.push_back(image(m_patch.u0 + (m_patch.u1 - m_patch.u0) * j / kProbes, v));
+        return images;
+    }
+
+    Image image(double u, double v) const { return m_s.measure.image(m_patch.point(u, v)); }
+
+    /// v values from v0 to v1, each step as long as keeps the drawn distance
+    /// between the rows at the probes within [0.9, 1] kRowSpacing c1.
+    std::vector<double> march() const
+    {
+        const Patch& p = m_patch;
+        const double h = m_s.rowSpacing(m_strategy);
+        std::vector<double> values{p.v0};
+        std::vector<Image> from = probeRow(p.v0);
+        double v = p.v0;
+        double guess = (p.v1 - p.v0) / 8;
+        while (v < p.v1) {
+            const double remaining = p.v1 - v;
+            double step = std::min(guess, remaining);
+            double lo = 0.0, hi = 0.0; // largest step known to fit, smallest known not to
+            std::vector<Image> loRow;
+            for (int iteration = 0; iteration < 40; ++iteration) {
+                std::vector<Image> to = probeRow(v + step);
+                double widest = 0.0;
+                for (int j = 0; j <= kProbes; ++j)
+                    widest = std::max(widest, m_s.measure.length(from[std::size_t(j)], to[std::size_t(j)]));
+                if (widest <= h) {
+                    lo = step;
+                    loRow = std::move(to);
+                    if (step >= remaining || widest >= 0.9 * h)
+                        break;
+                    step = hi > 0.0 ? 0.5 * (lo + hi)
+                                    : std::min(remaining, step * std::min(4.0, widest > 0.0 ? 0.95 * h / widest : 4.0));
+                } else {
+                    hi = step;
+                    step = lo > 0.0 ? 0.5 * (lo + hi) : step * std::clamp(0.95 * h / widest, 0.05, 0.9);
+                }
+            }
+            if (lo == 0.0) {
+                // No step fitted (a mapping too steep to resolve here): take
+                // the last one tried; the strip check refines around it.
+                lo = step;
+                loRow = probeRow(v + step);
+            }
+            v = lo >= remaining ? p.v1 : v + lo;
+            values.push_back(v);
+            from = std::move(loRow);
+            guess = lo;
+            if (values.size() > m_s.maxTriangles)
+                throw OverBudget{};
+        }
+        return values;
+    }
+
+    const std::vector<double>* sourced(const RowSource* source) const
+    {
+        if (source == nullptr || source->patch < 0)
+            return nullptr;
+        const PatchRows& rows = m_done[std::size_t(source->patch)];
+        switch (source->what) {
+        case RowSource::kFirstRow:
+            return &rows.first;
+        case RowSource::kLastRow:
+            return &rows.last;
+        case RowSource::kRowValues:
+            return &rows.values;
+        }
+        return nullptr;
+    }
+
+    /// The drawn length of the row at v, over the probes.
+    double rowLength(double v) const
+    {
+        const std::vector<Image> probes = probeRow(v);
+        double length = 0.0;
+        for (int j = 0; j < kProbes; ++j)
+            length += m_s.measure.length(probes[std::size_t(j)], probes[std::size_t(j) + 1]);
+        return length;
+    }
+
+    /// A row at v: one point when collapsed; the u parameters a linked
+    /// patch gives; uniform (constant method); derived from the neighbouring
+    /// row `from`; or, with none, uniform as sparse as the chord bound
+    /// allows.
+    Row makeRow(double v, bool collapsed, const RowSource* source, const Row* from, int phase)
+    {
+        Row row;
+        row.v = v;
+        row.collapsed = collapsed;
+        row.phase = phase;
+        if (collapsed) {
+            row.images.push_back(image(0.5 * (m_patch.u0 + m_patch.u1), v));
+            return row;
+        }
+        if (const std::vector<double>* given = sourced(source)) {
+            row.u = *given;
+            for (double u : row.u)
+                row.images.push_back(image(u, v));
+        } else if (m_s.method == Method::kConstant) {
+            row.u = uniform(m_patch.u0, m_patch.u1, std::max(constantCount(m_patch.constantU, m_s), minimumAlongU()));
+            for (double u : row.u)
+                row.images.push_back(image(u, v));
+        } else if (m_strategy == Strategy::kDerived && from != nullptr && !from->collapsed) {
+            derivedRow(row, *from);
+        } else {
+            freshRow(row);
+        }
+        m_used += row.u.size();
+        if (m_used > 2 * m_budget + 64)
+            throw OverBudget{};
+        for (std::size_t j = 0; j < row.u.size(); ++j)
+            row.index.push_back(emit(row.u[j], v, row.images[j].local));
+        return row;
+    }
+
+    /// The fewest uniform points that keep every chord of the row within
+    /// kRowChord c1.
+    void freshRow(Row& row) const
+    {
+        const Patch& p = m_patch;
+        const double w = m_s.rowChord();
+        const std::vector<Image> probes = probeRow(row.v);
+        double widest = 0.0;
+        for (int j = 0; j < kProbes; ++j)
+            widest = std::max(widest, m_s.measure.length(probes[std::size_t(j)], probes[std::size_t(j) + 1]));
+        double estimate = std::ceil(widest * kProbes / w);
+        for (int iteration = 0;; ++iteration) {
+            if (!(estimate <= double(m_s.maxTriangles)))
+                throw OverBudget{};
+            const unsigned n = std::max(unsigned(estimate), minimumAlongU());
+            row.u = uniform(p.u0, p.u1, n, row.phase);
+            row.images.clear();
+            for (double u : row.u)
+                row.images.push_back(image(u, row.v));
+            double longest = 0.0;
+            for (std::size_t j = 0; j + 1 < row.images.size(); ++j)
+                longest = std::max(longest, m_s.measure.length(row.images[j], row.images[j + 1]));
+            if (longest <= w || iteration >= 60)
+                return;
+            estimate = std::max(double(n) + 1.0, std::ceil(n * longest / w * 1.02));
+        }
+    }
+
+    /// The row staggered against `from`: a point above the middle of each of
+    /// its segments (and the ends); then every chord longer than kRowChord c1
+    /// split in the middle, and the longest chords split (or, where the row
+    /// contracts, the points with the shortest chords around them dropped)
+    /// until the average chord is about kRowAverage kRowChord c1. Choosing
+    /// the longest spreads the new points over the rows as the row grows,
+    /// where splitting only what must be split would split every chord of a
+    /// uniformly growing row at once and halve them all.
+    void derivedRow(Row& row, const Row& from) const
+    {
+        const double w = m_s.rowChord();
+        std::vector<double> u{m_patch.u0};
+        for (std::size_t j = 0; j + 1 < from.u.size(); ++j)
+            u.push_back(0.5 * (from.u[j] + from.u[j + 1]));
+        u.push_back(m_patch.u1);
+        std::vector<Image> images;
+        for (double t : u)
+            images.push_back(image(t, row.v));
+        std::vector<double> chords;
+        for (std::size_t j = 0; j + 1 < u.size(); ++j)
+            chords.push_back(m_s.measure.length(images[j], images[j + 1]));
+        double total = 0.0;
+        for (double c : chords)
+            total += c;
+        const double target = std::max(double(minimumAlongU()), std::ceil(total / (kRowAverage * w)));
+        if (!(target <= double(m_s.maxTriangles)))
+            throw OverBudget{};
+
+        // Splits: every chord above w, then the longest (ties broken by a
+        // scrambled position, so that equal chords split evenly along the
+        // row) while the row is short of the target.
+        std::vector<bool> split(chords.size(), false);
+        std::size_t count = chords.size();
+        for (std::size_t j = 0; j < chords.size(); ++j)
+            if (chords[j] > w) {
+                split[j] = true;
+                ++count;
+            }
+        if (double(count) < target) {
+            std::vector<std::pair<double, std::size_t>> order;
+            for (std::size_t j = 0; j < chords.size(); ++j)
+                if (!split[j])
+                    order.emplace_back(chords[j] * (1.0 + 1e-9 * scramble(j)), j);
+            std::sort(order.begin(), order.end(), std::greater<>());
+            for (std::size_t k = 0; k < order.size() && double(count) < target; ++k) {
+                split[order[k].second] = true;
+                ++count;
+            }
+        }
+        std::vector<double> splitU{u[0]};
+        std::vector<Image> splitImages{images[0]};
+        for (std::size_t j = 0; j + 1 < u.size(); ++j) {
+            if (split[j])
+                splitInto(splitU, splitImages, u[j], images[j], u[j + 1], images[j + 1], row.v, 0);
+            splitU.push_back(u[j + 1]);
+            splitImages.push_back(images[j + 1]);
+        }
+        if (splitU.size() > m_s.maxTriangles)
+            throw OverBudget{};
+
+        // Drops, where the row has contracted well below the target: the
+        // points whose two chords together are shortest (and at most w),
+        // never two neighbours.
+        const std::size_t n = splitU.size();
+        const double tooMany = std::ceil(total / (kRowSparsest * w)) + 1.0;
+        std::vector<bool> drop(n, false);
+        if (double(n - 1) > tooMany && n > 2) {
+            std::vector<std::pair<double, std::size_t>> order;
+            for (std::size_t j = 1; j + 1 < n; ++j) {
+                const double merged = m_s.measure.length(splitImages[j - 1], splitImages[j + 1]);
+                if (merged <= w)
+                    order.emplace_back(merged * (1.0 + 1e-9 * scramble(j)), j);
+            }
+            std::sort(order.begin(), order.end());
+            std::size_t segments = n - 1;
+            for (const auto& [merged, j] : order) {
+                if (double(segments) <= target || segments <= minimumAlongU())
+                    break;
+                if (drop[j - 1] || drop[j + 1])
+                    continue;
+                drop[j] = true;
+                --segments;
+            }
+        }
+        row.u.clear();
+        row.images.clear();
+        for (std::size_t j = 0; j < n; ++j)
+            if (!drop[j]) {
+                row.u.push_back(splitU[j]);
+                row.images.push_back(splitImages[j]);
+            }
+    }
+
+    /// Appends the points splitting the chord a-b (parameters ua, ub) in the
+    /// middle, recursively while a half is longer than kRowChord c1.
+    void splitInto(std::vector<double>& u, std::vector<Image>& images, double ua, const Image& a, double ub,
+                   const Image& b, double v, int depth) const
+    {
+        const double mid = 0.5 * (ua + ub);
+        const Image m = image(mid, v);
+        const double w = m_s.rowChord();
+        const bool deeper = depth < 48 && u.size() < m_s.maxTriangles;
+        if (deeper && m_s.measure.length(a, m) > w)
+            splitInto(u, images, ua, a, mid, m, v, depth + 1);
+        u.push_back(mid);
+        images.push_back(m);
+        if (deeper && m_s.measure.length(m, b) > w)
+            splitInto(u, images, mid, m, ub, b, v, depth + 1);
+    }
+
+    /// A fixed scrambling of indices into [0, 1) (the golden ratio's
+    /// fractional multiples): equal chords are taken in an order spread
+    /// along the row.
+    static double scramble(std::size_t j)
+    {
+        const double x = double(j) * 0.6180339887498949;
+        return x - std::floor(x);
+    }
+
+    std::uint32_t emit(double u, double v, const Vec3& point)
+    {
+        m_out.positions.push_back(point);
+        m_out.normals.push_back(m_patch.normal(u, v));
+        m_out.uvs.push_back(m_patch.uv(u, v));
+        m_out.parts.push_back(m_patch.part);
+        return std::uint32_t(m_out.positions.size() - 1);
+    }
+
+    // ---- Strips ------------------------------------------------------------
+
+    const Image& imageOf(const Corner& c) const { return c.row->collapsed ? c.row->images[0] : c.row->images[c.j]; }
+
+    double length(const Corner& a, const Corner& b) const { return m_s.measure.length(imageOf(a), imageOf(b)); }
+
+    /// Stitches rows a (lower v) and b; halves the strip while an edge is
+    /// longer than c1 (measured method).
+    void stitch(const Row& a, const Row& b, int depth)
+    {
+        if (a.collapsed && b.collapsed)
+            return;
+        std::vector<Corner> corners;
+        auto triangle = [&](const Corner& x, const Corner& y, const Corner& z) {
+            corners.insert(corners.end(), {x, y, z});
+        };
+        auto at = [](const Row& row, std::size_t j) { return Corner{&row, j, 0.0}; };
+        auto apex = [](const Row& row, const Row& other, std::size_t j) {
+            return Corner{&row, 0, 0.5 * (other.u[j] + other.u[j + 1])};
+        };
+        if (a.collapsed) {
+            for (std::size_t j = 0; j + 1 < b.u.size(); ++j)
+                triangle(apex(a, b, j), at(b, j + 1), at(b, j));
+        } else if (b.collapsed) {
+            for (std::size_t j = 0; j + 1 < a.u.size(); ++j)
+                triangle(at(a, j), at(a, j + 1), apex(b, a, j));
+        } else {
+            const std::size_t p = a.u.size() - 1, q = b.u.size() - 1;
+            std::size_t i = 0, j = 0;
+            while (i < p || j < q) {
+                bool advanceA = j == q;
+                if (i < p && j < q) {
+                    const double viaA = length(at(a, i + 1), at(b, j));
+                    const double viaB = length(at(a, i), at(b, j + 1));
+                    advanceA = viaA < viaB || (viaA == viaB && a.u[i + 1] <= b.u[j + 1]);
+                }
+                if (advanceA) {
+                    triangle(at(a, i), at(a, i + 1), at(b, j));
+                    ++i;
+                } else {
+                    triangle(at(a, i), at(b, j + 1), at(b, j));
+                    ++j;
+                }
+            }
+        }
+
+        if (m_s.method == Method::kMeasured && tooLong(corners)) {
+            if (depth < kMaxRefinement) {
+                const Row& middle = m_inserted.emplace_back(
+                    makeRow(0.5 * (a.v + b.v), false, nullptr, a.collapsed ? &b : &a, 1 - a.phase));
+                stitch(a, middle, depth + 1);
+                stitch(middle, b, depth + 1);
+                return;
+            }
+            ++m_out.unresolved;
+        }
+        commit(corners);
+    }
+
+    bool tooLong(const std::vector<Corner>& corners) const
+    {
+        for (std::size_t t = 0; t < corners.size(); t += 3)
+            for (int k = 0; k < 3; ++k)
+                if (length(corners[t + std::size_t(k)], corners[t + std::size_t(k + 1) % 3]) > m_s.c1)
+                    return true;
+        return false;
+    }
+
+    void commit(const std::vector<Corner>& corners)
+    {
+        if (m_out.triangleCount() + corners.size() / 3 > m_budget)
+            throw OverBudget{};
+        for (std::size_t t = 0; t < corners.size(); t += 3) {
+            std::uint32_t index[3];
+            for (int k = 0; k < 3; ++k) {
+                const Corner& c = corners[t + std::size_t(k)];
+                index[k] =
+                    c.row->collapsed ? emit(c.apexU, c.row->v, m_patch.point(c.apexU, c.row->v)) : c.row->index[c.j];
+            }
+            if (m_flip)
+                std::swap(index[1], index[2]);
+            m_out.triangles.insert(m_out.triangles.end(), {index[0], index[1], index[2]});
+        }
+    }
+
+    const Patch& m_patch;
+    const Setting& m_s;
+    Strategy m_strategy;
+    std::size_t m_budget; // the most triangles this patch may have
+    Tessellation& m_out;
+    const std::vector<PatchRows>& m_done;
+    std::size_t m_used = 0;     // row points made
+    std::deque<Row> m_inserted; // rows added by halving strips (stable addresses)
+    bool m_flip = false;
+};
+
+/// Appends `part` to `out`.
+void append(Tessellation& out, const Tessellation& part)
+{
+    const std::uint32_t base = std::uint32_t(out.positions.size());
+    out.positions.insert(out.positions.end(), part.positions.begin(), part.positions.end());
+    out.normals.insert(out.normals.end(), part.normals.begin(), part.normals.end());
+    out.uvs.insert(out.uvs.end(), part.uvs.begin(), part.uvs.end());
+    out.parts.insert(out.parts.end(), part.parts.begin(), part.parts.end());
+    for (std::uint32_t index : part.triangles)
+        out.triangles.push_back(base + index);
+    out.unresolved += part.unresolved;
+}
+
+/// One attempt at the whole shape; throws OverBudget. The measured method
+/// builds each patch with both strategies and keeps the one with fewer
+/// triangles.
+void attempt(const Patches& patches, const Setting& setting, Tessellation& out)
+{
+    std::vector<PatchRows> done;
+    for (const auto& patch : patches) {
+        const std::size_t budget = setting.maxTriangles - std::min(setting.maxTriangles, out.triangleCount());
+        Tessellation best;
+        PatchRows bestRows;
+        bool found = false;
+        const bool both = setting.method == Method::kMeasured;
+        for (const Strategy strategy : {Strategy::kUniform, Strategy::kDerived}) {
+            if (strategy == Strategy::kDerived && !both)
+                break;
+            Tessellation part;
+            try {
+                PatchRows rows = PatchBuilder(*patch, setting, strategy, budget, part, done).build();
+                if (!found || part.triangleCount() < best.triangleCount()) {
+                    best = std::move(part);
+                    bestRows = std::move(rows);
+                    found = true;
+                }
+            } catch (const OverBudget&) {
+            }
+        }
+        if (!found)
+            throw OverBudget{};
+        append(out, best);
+        done.push_back(std::move(bestRows));
+    }
+}
+
+/// The measured method's triangle count estimated from a 9 x 9 grid of each
+/// patch: drawn area over the area of a triangle between staggered rows.
+double estimateTriangles(const Patches& patches, const Setting& s)
+{
+    constexpr int kGrid = 8;
+    double area = 0.0;
+    for (const auto& patch : patches) {
+        std::vector<Image> grid;
+        for (int i = 0; i <= kGrid; ++i)
+            for (int j = 0; j <= kGrid; ++j)
+                grid.push_back(s.measure.image(patch->point(patch->u0 + (patch->u1 - patch->u0) * j / kGrid,
+                                                            patch->v0 + (patch->v1 - patch->v0) * i / kGrid)));
+        auto at = [&](int i, int j) -> const Image& { return grid[std::size_t(i * (kGrid + 1) + j)]; };
+        auto triangleArea = [](const Image& a, const Image& b, const Image& c) {
+            if (!a.has || !b.has || !c.has)
+                return 0.0;
+            return 0.5 * glm::length(glm::cross(b.mapped - a.mapped, c.mapped - a.mapped));
+        };
+        for (int i = 0; i < kGrid; ++i)
+            for (int j = 0; j < kGrid; ++j)
+                area += triangleArea(at(i, j), at(i, j + 1), at(i + 1, j + 1)) +
+                        triangleArea(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+    }
+    return area / (0.5 * s.rowChord() * s.rowSpacing(Strategy::kUniform));
+}
+
+} // namespace
+
+Tessellation tessellate(const Patches& patches, const Subdivision& subdivision)
+{
+    Setting s;
+    s.method = subdivision.method;
+    s.c1 = subdivision.c1;
+    s.c2 = subdivision.c2;
+    s.maxTriangles = std::max<std::size_t>(subdivision.maxTriangles, 1);
+    if (s.method == Method::kMeasured) {
+        s.measure = Measure(&subdivision.map);
+        if (!(s.c1 > 0.0))
+            s.c1 = std::numeric_limits<double>::infinity();
+    } else {
+        s.c1 = std::max(1.0, std::floor(s.c1));
+        s.c2 = std::max(1.0, std::floor(s.c2));
+    }
+    bool reduced = false;
+    if (s.method == Method::kConstant) {
+        // Every patch's grid, linked rows aside: scale both counts down at
+        // once rather than through retries.
+        double total = 0.0;
+        for (const auto& patch : patches)
+            total += 2.0 * constantCount(patch->constantU, s) * constantCount(patch->constantV, s);
+        if (total > double(s.maxTriangles)) {
+            const double f = std::sqrt(double(s.maxTriangles) / total);
+            s.c1 = std::max(1.0, std::floor(s.c1 * f));
+            s.c2 = std::max(1.0, std::floor(s.c2 * f));
+            reduced = true;
+        }
+    }
+    if (s.method == Method::kMeasured && std::isfinite(s.c1)) {
+        const double estimate = estimateTriangles(patches, s);
+        const double budget = 0.7 * double(s.maxTriangles);
+        if (estimate > budget) {
+            s.c1 *= std::sqrt(estimate / budget);
+            reduced = true;
+        }
+    }
+    for (int tries = 0;; ++tries) {
+        Tessellation out;
+        try {
+            attempt(patches, s, out);
+            out.reduced = reduced;
+            out.effectiveC1 = s.c1;
+            out.effectiveC2 = s.c2;
+            return out;
+        } catch (const OverBudget&) {
+            reduced = true;
+            if (s.method == Method::kMeasured) {
+                s.c1 = std::isfinite(s.c1) && tries < 60 ? 2.0 * s.c1 : std::numeric_limits<double>::infinity();
+            } else {
+                s.c1 = std::max(1.0, std::floor(0.7 * s.c1));
+                s.c2 = std::max(1.0, std::floor(0.7 * s.c2));
+            }
+        }
+    }
+}
+
+Polyline tessellateCurve(const std::function<Vec3(double)>& curve, double t0, double t1, bool closed,
+                         const Subdivision& subdivision, std::size_t maxSegments)
+{
+    Polyline out;
+    const std::size_t minimum = closed ? 3 : 1;
+    maxSegments = std::max(maxSegments, minimum);
+    if (subdivision.method == Method::kConstant) {
+        const double wanted =
+            std::max(double(minimum), std::ceil(std::max(1.0, std::floor(subdivision.c1)) * (t1 - t0) - 1e-9));
+        std::size_t n = std::size_t(std::min(wanted, 1e18));
+        if (n > maxSegments) {
+            n = maxSegments;
+            out.reduced = true;
+        }
+        for (std::size_t i = 0; i <= n; ++i)
+            out.points.push_back(curve(i == n ? t1 : t0 + (t1 - t0) * double(i) / double(n)));
+        out.effective = double(n) / (t1 - t0);
+        return out;
+    }
+
+    const Measure measure(&subdivision.map);
+    auto image = [&](double t) { return measure.image(curve(t)); };
+    double c1 = subdivision.c1 > 0.0 ? subdivision.c1 : std::numeric_limits<double>::infinity();
+    const double probe = (t1 - t0) / 256;
+    const double longestStep = (t1 - t0) / double(minimum);
+    {
+        // The drawn length over probes (an underestimate): a c1 that would
+        // need more than maxSegments is raised at once.
+        double length = 0.0;
+        Image previous = image(t0);
+        for (int i = 1; i <= 256; ++i) {
+            const Image next = image(t0 + probe * i);
+            length += measure.length(previous, next);
+            previous = next;
+        }
+        if (std::isfinite(c1) && length / c1 > 0.9 * double(maxSegments)) {
+            c1 = length / (0.9 * double(maxSegments));
+            out.reduced = true;
+        }
+    }
+    for (int tries = 0;; ++tries) {
+        std::vector<double> ts{t0};
+        Image from = image(t0);
+        bool over = false;
+        while (ts.back() < t1) {
+            const double t = ts.back();
+            const double limit = std::min(t1, t + longestStep);
+            // Walk probes until one is farther than c1, then bisect the last
+            // probe interval for the farthest point within c1.
+            double inside = t, outside = -1.0;
+            for (double next = std::min(limit, t + probe);; next = std::min(limit, next + probe)) {
+                if (measure.length(from, image(next)) > c1) {
+                    outside = next;
+                    break;
+                }
+                inside = next;
+                if (next >= limit)
+                    break;
+            }
+            double chosen = inside;
+            if (outside > 0.0) {
+                for (int i = 0; i < 60 && outside - inside > 1e-15; ++i) {
+                    const double mid = 0.5 * (inside + outside);
+                    const double drawn = measure.length(from, image(mid));
+                    if (drawn > c1)
+                        outside = mid;
+                    else
+                        inside = mid;
+                    if (drawn <= c1 && drawn >= (1.0 - kCurveTolerance) * c1)
+                        break;
+                }
+                chosen = inside > t ? inside : outside; // a step too steep to resolve
+            }
+            ts.push_back(chosen >= t1 ? t1 : chosen);
+            from = image(ts.back());
+            if (ts.size() > maxSegments + 1) {
+                over = true;
+                break;
+            }
+        }
+        if (!over) {
+            for (double t : ts)
+                out.points.push_back(curve(t));
+            out.effective = c1;
+            return out;
+        }
+        out.reduced = true;
+        c1 = std::isfinite(c1) && tries < 60 ? 2.0 * c1 : std::numeric_limits<double>::infinity();
+    }
+}
+
+} // namespace q3::quadric
