@@ -316,6 +316,8 @@ Patches revolvedPatches(const RevolvedShape& shape, Profile profile)
     side.collapsedV0 = pointAtV0;
     side.collapsedV1 = pointAtV1;
     side.closedU = fullU;
+    side.turnsU = shape.u.length();
+    side.turnsV = profile == Profile::kEllipsoid ? 0.5 * shape.v.length() : 0.0;
     side.constantU = around;
     side.constantV = ConstantRule{2, shape.v.length(), side.collapsedV0 && side.collapsedV1 ? 2u : 1u};
 
@@ -328,6 +330,7 @@ Patches revolvedPatches(const RevolvedShape& shape, Profile profile)
         setDomain(disk, shape.u, radial);
         disk.collapsedV0 = true;
         disk.closedU = fullU;
+        disk.turnsU = shape.u.length();
         disk.constantU = around;
         disk.part = part;
         disk.link.last = RowSource{0, lastRowOfSide ? RowSource::kLastRow : RowSource::kFirstRow};
@@ -348,6 +351,7 @@ Patches revolvedPatches(const RevolvedShape& shape, Profile profile)
             setDomain(face, radial, shape.v);
             face.collapsedV0 = side.collapsedV0;
             face.collapsedV1 = side.collapsedV1;
+            face.turnsV = side.turnsV;
             face.constantV = side.constantV;
             face.part = kPartInterior;
             face.link.rows = 0;
@@ -434,6 +438,7 @@ Patches diskPatches(const DiskShape& disk)
     setDomain(face, disk.u, disk.v);
     face.collapsedV0 = disk.v.min == 0.0;
     face.closedU = disk.u.full();
+    face.turnsU = disk.u.length();
     face.constantU = aroundRule(disk.u);
     face.constantV = ConstantRule{2, disk.v.length(), 1};
     return patches;
@@ -456,6 +461,8 @@ Patches torusPatches(const TorusShape& torus)
     skin.orient();
     skin.closedU = fullU;
     skin.closedV = fullV;
+    skin.turnsU = torus.u.length();
+    skin.turnsV = torus.v.length();
     skin.constantU = aroundRule(torus.u);
     skin.constantV = ConstantRule{2, torus.v.length(), fullV ? 3u : 1u};
     if (!(torus.caps & kCapInterior))
@@ -468,6 +475,7 @@ Patches torusPatches(const TorusShape& torus)
             setDomain(section, torus.v, radial);
             section.collapsedV0 = true;
             section.closedU = fullV;
+            section.turnsU = skin.turnsV;
             section.constantU = skin.constantV;
             section.part = kPartInterior;
             section.link.last = RowSource{0, RowSource::kRowValues};
@@ -480,6 +488,7 @@ Patches torusPatches(const TorusShape& torus)
             setDomain(wall, torus.u, radial);
             wall.orient();
             wall.closedU = fullU;
+            wall.turnsU = skin.turnsU;
             wall.constantU = skin.constantU;
             wall.part = kPartInterior;
             // The two walls share the tube's centre line.

@@ -106,6 +106,11 @@ public:
     bool collapsedV0 = false, collapsedV1 = false;
     bool closedU = false; ///< a full turn in u (at least 3 segments)
     bool closedV = false; ///< a full turn in v (at least 3 segments)
+    /// How many turns u and v sweep where they are angles (0 where they are
+    /// straight): the measured method gives at least one segment per
+    /// quarter turn, so that no triangle spans more than a right angle of a
+    /// curved surface however large c1 is.
+    double turnsU = 0.0, turnsV = 0.0;
     ConstantRule constantU, constantV;
     int part = kPartFace;
     Link link;

@@ -97,8 +97,13 @@ private:
 /// How a measured patch's rows get their points (Tessellate.h): each row on
 /// its own, uniform, alternate rows offset by half a step (best where
 /// neighbouring rows are alike: cylinders, spheres, cones); or each row
-/// derived from its neighbour (best where rows grow fast: disks, caps, tori).
-enum class Strategy { kUniform, kDerived };
+/// derived from its neighbour (best where rows grow fast: disks, tori); or,
+/// for a disk-like patch closing a curved edge (a cap, a torus's
+/// cross-section: collapsed at v0, its v1 row given), every row on the rays
+/// of the given one (every other ray where the row has shrunk enough): rows
+/// on shared rays nest, so no triangle can fold however coarse the given row
+/// is where the view squeezes it.
+enum class Strategy { kUniform, kDerived, kAligned };
 
 /// What an attempt works with.
 struct Setting {
@@ -182,7 +187,9 @@ public:
         // growing towards the longest (the pivot) from both ends: growing
         // rows only split segments, which keeps the stagger.
         std::size_t pivot = last;
-        if (m_s.method == Method::kMeasured && m_strategy == Strategy::kDerived) {
+        if (m_strategy == Strategy::kAligned) {
+            pivot = 0;
+        } else if (m_s.method == Method::kMeasured && m_strategy == Strategy::kDerived) {
             double longest = -1.0;
             for (std::size_t k = 0; k <= last; ++k) {
                 const double length = rowLength(values[k]);
@@ -233,12 +240,20 @@ private:
 
     // ---- Rows --------------------------------------------------------------
 
-    unsigned minimumAlongU() const { return m_patch.closedU ? 3u : 1u; }
+    /// The fewest segments a row (along u) and the rows (along v) may have:
+    /// 3 around a full turn, and with the measured method one per quarter
+    /// turn (Patch::turnsU); the constant method's counts are the user's.
+    unsigned minimumAlongU() const { return minimum(m_patch.closedU ? 3u : 1u, m_patch.turnsU); }
     unsigned minimumAlongV() const
     {
-        if (m_patch.closedV)
-            return 3;
-        return m_patch.collapsedV0 && m_patch.collapsedV1 ? 2u : 1u;
+        const unsigned base = m_patch.closedV ? 3u : m_patch.collapsedV0 && m_patch.collapsedV1 ? 2u : 1u;
+        return minimum(base, m_patch.turnsV);
+    }
+    unsigned minimum(unsigned base, double turns) const
+    {
+        if (m_s.method == Method::kConstant)
+            return base;
+        return std::max(base, unsigned(std::ceil(4.0 * turns - 1e-9)));
     }
 
     std::vector<double> rowValues()
@@ -278,16 +293,15 @@ private:
         std::vector<Image> from = probeRow(p.v0);
         double v = p.v0;
         double guess = (p.v1 - p.v0) / 8;
+        const double longestStep = (p.v1 - p.v0) / minimumAlongV();
         while (v < p.v1) {
-            const double remaining = p.v1 - v;
+            const double remaining = std::min(p.v1 - v, longestStep);
             double step = std::min(guess, remaining);
             double lo = 0.0, hi = 0.0; // largest step known to fit, smallest known not to
             std::vector<Image> loRow;
             for (int iteration = 0; iteration < 40; ++iteration) {
                 std::vector<Image> to = probeRow(v + step);
-                double widest = 0.0;
-                for (int j = 0; j <= kProbes; ++j)
-                    widest = std::max(widest, m_s.measure.length(from[std::size_t(j)], to[std::size_t(j)]));
+                const double widest = spacing(from, to);
                 if (widest <= h) {
                     lo = step;
                     loRow = std::move(to);
@@ -306,7 +320,7 @@ private:
                 lo = step;
                 loRow = probeRow(v + step);
             }
-            v = lo >= remaining ? p.v1 : v + lo;
+            v = lo >= p.v1 - v ? p.v1 : v + lo;
             values.push_back(v);
             from = std::move(loRow);
             guess = lo;
@@ -314,6 +328,30 @@ private:
                 throw OverBudget{};
         }
         return values;
+    }
+
+    /// The largest distance between two probed rows: at each probe, the
+    /// part of the step between them across the first row's direction there
+    /// (a row's points slide along it when they are staggered, so a skewed
+    /// parameterisation does not bring rows closer than they need be).
+    double spacing(const std::vector<Image>& from, const std::vector<Image>& to) const
+    {
+        double widest = 0.0;
+        for (std::size_t j = 0; j < from.size(); ++j) {
+            double d = m_s.measure.length(from[j], to[j]);
+            const std::size_t before = j == 0 ? 0 : j - 1, after = std::min(j + 1, from.size() - 1);
+            if (d > 0.0 && from[j].has && to[j].has && from[before].has && from[after].has) {
+                const Vec3 along = from[after].mapped - from[before].mapped;
+                const double length = glm::length(along);
+                if (length > 0.0) {
+                    const Vec3 step = to[j].mapped - from[j].mapped;
+                    const Vec3 across = step - (glm::dot(step, along) / (length * length)) * along;
+                    d = glm::length(across);
+                }
+            }
+            widest = std::max(widest, d);
+        }
+        return widest;
     }
 
     const std::vector<double>* sourced(const RowSource* source) const
@@ -364,8 +402,12 @@ private:
             row.u = uniform(m_patch.u0, m_patch.u1, std::max(constantCount(m_patch.constantU, m_s), minimumAlongU()));
             for (double u : row.u)
                 row.images.push_back(image(u, v));
+        } else if (m_strategy == Strategy::kAligned && from != nullptr && !from->collapsed) {
+            alignedRow(row, *from);
         } else if (m_strategy == Strategy::kDerived && from != nullptr && !from->collapsed) {
             derivedRow(row, *from);
+        } else if (m_strategy == Strategy::kDerived) {
+            marchedRow(row);
         } else {
             freshRow(row);
         }
@@ -405,6 +447,80 @@ private:
         }
     }
 
+    /// The rays of `from` (the next row outwards), every other one dropped
+    /// where this row's chords and spans still allow it. A row on a subset of
+    /// the rays of the row outside it lies inside it (each chord a scaled
+    /// copy of one inside the outer row), so no triangle between them folds.
+    void alignedRow(Row& row, const Row& from) const
+    {
+        const double w = m_s.rowChord();
+        const double widest = (m_patch.u1 - m_patch.u0) / minimumAlongU();
+        std::vector<Image> images;
+        for (double u : from.u)
+            images.push_back(image(u, row.v));
+        const std::size_t n = from.u.size();
+        bool halve = n > 2 && (n - 1) % 2 == 0 && (n - 1) / 2 >= minimumAlongU();
+        for (std::size_t j = 0; halve && j + 2 < n; j += 2)
+            halve = m_s.measure.length(images[j], images[j + 2]) <= w && from.u[j + 2] - from.u[j] <= widest;
+        row.u.clear();
+        row.images.clear();
+        for (std::size_t j = 0; j < n; j += halve ? 2 : 1) {
+            row.u.push_back(from.u[j]);
+            row.images.push_back(images[j]);
+        }
+    }
+
+    /// A row marched along u: each point as far from the last as keeps the
+    /// chord within kRowChord c1 (probes of 1/kProbes of a segment's
+    /// longest allowed span, then bisection), so that a row whose speed
+    /// varies gets its points where they are needed.
+    void marchedRow(Row& row) const
+    {
+        const Patch& p = m_patch;
+        const double w = m_s.rowChord();
+        const double widest = (p.u1 - p.u0) / minimumAlongU();
+        const double probe = widest / kProbes;
+        row.u.assign(1, p.u0);
+        row.images.assign(1, image(p.u0, row.v));
+        while (row.u.back() < p.u1) {
+            const double start = row.u.back();
+            const double limit = std::min(p.u1, start + widest);
+            double inside = start, outside = -1.0;
+            Image insideImage = row.images.back();
+            for (double next = std::min(limit, start + probe);; next = std::min(limit, next + probe)) {
+                const Image at = image(next, row.v);
+                if (m_s.measure.length(row.images.back(), at) > w) {
+                    outside = next;
+                    break;
+                }
+                inside = next;
+                insideImage = at;
+                if (next >= limit)
+                    break;
+            }
+            if (outside > 0.0) {
+                for (int i = 0; i < 30; ++i) {
+                    const double mid = 0.5 * (inside + outside);
+                    const Image at = image(mid, row.v);
+                    if (m_s.measure.length(row.images.back(), at) > w) {
+                        outside = mid;
+                    } else {
+                        inside = mid;
+                        insideImage = at;
+                    }
+                }
+                if (inside <= start) {
+                    inside = outside;
+                    insideImage = image(inside, row.v);
+                }
+            }
+            row.u.push_back(inside >= p.u1 ? p.u1 : inside);
+            row.images.push_back(inside >= p.u1 ? image(p.u1, row.v) : insideImage);
+            if (row.u.size() > m_budget + 1)
+                throw OverBudget{};
+        }
+    }
+
     /// The row staggered against `from`: a point above the middle of each of
     /// its segments (and the ends); then every chord longer than kRowChord c1
     /// split in the middle, and the longest chords split (or, where the row
@@ -417,12 +533,14 @@ private:
     {
         const double w = m_s.rowChord();
         std::vector<double> u{m_patch.u0};
-        for (std::size_t j = 0; j + 1 < from.u.size(); ++j)
+        std::vector<Image> images{image(m_patch.u0, row.v)};
+        for (std::size_t j = 0; j + 1 < from.u.size(); ++j) {
             u.push_back(0.5 * (from.u[j] + from.u[j + 1]));
+            images.push_back(image(u.back(), row.v));
+            apex(from, j, row.v, u.back(), images.back());
+        }
         u.push_back(m_patch.u1);
-        std::vector<Image> images;
-        for (double t : u)
-            images.push_back(image(t, row.v));
+        images.push_back(image(m_patch.u1, row.v));
         std::vector<double> chords;
         for (std::size_t j = 0; j + 1 < u.size(); ++j)
             chords.push_back(m_s.measure.length(images[j], images[j + 1]));
@@ -438,8 +556,9 @@ private:
         // row) while the row is short of the target.
         std::vector<bool> split(chords.size(), false);
         std::size_t count = chords.size();
+        const double widest = (m_patch.u1 - m_patch.u0) / minimumAlongU();
         for (std::size_t j = 0; j < chords.size(); ++j)
-            if (chords[j] > w) {
+            if (chords[j] > w || u[j + 1] - u[j] > widest) {
                 split[j] = true;
                 ++count;
             }
@@ -465,23 +584,32 @@ private:
         if (splitU.size() > m_s.maxTriangles)
             throw OverBudget{};
 
-        // Drops, where the row has contracted well below the target: the
-        // points whose two chords together are shortest (and at most w),
-        // never two neighbours.
+        // Drops, where the row is locally much denser than it needs be (its
+        // metric shrank, or a neighbour's split left short chords): the
+        // points whose two chords together are shortest and at most
+        // kRowDrop w, never two neighbours nor a point just split in.
         const std::size_t n = splitU.size();
-        const double tooMany = std::ceil(total / (kRowSparsest * w)) + 1.0;
         std::vector<bool> drop(n, false);
-        if (double(n - 1) > tooMany && n > 2) {
+        std::vector<bool> fresh(n, false);
+        for (std::size_t j = 1, k = 1; j < n && k < u.size(); ++j) {
+            if (splitU[j] == u[k])
+                ++k;
+            else
+                fresh[j] = true;
+        }
+        {
             std::vector<std::pair<double, std::size_t>> order;
             for (std::size_t j = 1; j + 1 < n; ++j) {
+                if (fresh[j])
+                    continue;
                 const double merged = m_s.measure.length(splitImages[j - 1], splitImages[j + 1]);
-                if (merged <= w)
+                if (merged <= kRowDrop * w && splitU[j + 1] - splitU[j - 1] <= widest)
                     order.emplace_back(merged * (1.0 + 1e-9 * scramble(j)), j);
             }
             std::sort(order.begin(), order.end());
             std::size_t segments = n - 1;
             for (const auto& [merged, j] : order) {
-                if (double(segments) <= target || segments <= minimumAlongU())
+                if (segments <= minimumAlongU())
                     break;
                 if (drop[j - 1] || drop[j + 1])
                     continue;
@@ -498,6 +626,51 @@ private:
             }
     }
 
+    /// Moves the point (u, image) above segment j of row `from` along its
+    /// row to where it is as far from both ends of the segment (regula
+    /// falsi on the difference of the squared distances, within the
+    /// segment): the triangle on the segment is isosceles even where the
+    /// parameterisation is skewed.
+    void apex(const Row& from, std::size_t j, double v, double& u, Image& at) const
+    {
+        const Image& left = from.images[j];
+        const Image& right = from.images[j + 1];
+        if (!left.has || !right.has || !at.has)
+            return;
+        auto balance = [&](const Image& p) {
+            const Vec3 a = p.mapped - left.mapped, b = p.mapped - right.mapped;
+            return glm::dot(a, a) - glm::dot(b, b);
+        };
+        // Within the middle half of the segment, so the row stays spread out
+        // even where the metric is strongly anisotropic.
+        const double quarter = 0.25 * (from.u[j + 1] - from.u[j]);
+        double lo = from.u[j] + quarter, hi = from.u[j + 1] - quarter;
+        Image loImage = image(lo, v), hiImage = image(hi, v);
+        if (!loImage.has || !hiImage.has)
+            return;
+        double fLo = balance(loImage), fHi = balance(hiImage);
+        if (!(fLo < 0.0 && fHi > 0.0))
+            return;
+        for (int iteration = 0; iteration < 8; ++iteration) {
+            const double t = lo + (hi - lo) * fLo / (fLo - fHi);
+            const Image probe = image(t, v);
+            if (!probe.has)
+                return;
+            const double f = balance(probe);
+            u = t;
+            at = probe;
+            if (std::fabs(f) <= 1e-6 * (std::fabs(fLo) + std::fabs(fHi)))
+                return;
+            if (f < 0.0) {
+                lo = t;
+                fLo = f;
+            } else {
+                hi = t;
+                fHi = f;
+            }
+        }
+    }
+
     /// Appends the points splitting the chord a-b (parameters ua, ub) in the
     /// middle, recursively while a half is longer than kRowChord c1.
     void splitInto(std::vector<double>& u, std::vector<Image>& images, double ua, const Image& a, double ub,
@@ -506,12 +679,13 @@ private:
         const double mid = 0.5 * (ua + ub);
         const Image m = image(mid, v);
         const double w = m_s.rowChord();
+        const double widest = (m_patch.u1 - m_patch.u0) / minimumAlongU();
         const bool deeper = depth < 48 && u.size() < m_s.maxTriangles;
-        if (deeper && m_s.measure.length(a, m) > w)
+        if (deeper && (m_s.measure.length(a, m) > w || mid - ua > widest))
             splitInto(u, images, ua, a, mid, m, v, depth + 1);
         u.push_back(mid);
         images.push_back(m);
-        if (deeper && m_s.measure.length(m, b) > w)
+        if (deeper && (m_s.measure.length(m, b) > w || ub - mid > widest))
             splitInto(u, images, mid, m, ub, b, v, depth + 1);
     }
 
@@ -565,9 +739,30 @@ private:
             while (i < p || j < q) {
                 bool advanceA = j == q;
                 if (i < p && j < q) {
-                    const double viaA = length(at(a, i + 1), at(b, j));
-                    const double viaB = length(at(a, i), at(b, j + 1));
-                    advanceA = viaA < viaB || (viaA == viaB && a.u[i + 1] <= b.u[j + 1]);
+                    // In parameter order, so that no triangle reaches across
+                    // its neighbours (a shorter diagonal in a foreshortened
+                    // view can be a fold); where the next points are within
+                    // a third of a segment of each other, the shorter
+                    // diagonal.
+                    const double gap = a.u[i + 1] - b.u[j + 1];
+                    const double near = 0.35 * std::min(a.u[i + 1] - a.u[i], b.u[j + 1] - b.u[j]);
+                    advanceA = gap <= 0.0;
+                    if (std::fabs(gap) <= near) {
+                        const double viaA = length(at(a, i + 1), at(b, j));
+                        const double viaB = length(at(a, i), at(b, j + 1));
+                        advanceA = viaA < viaB || (viaA == viaB && gap <= 0.0);
+                    }
+                }
+                if (i < p && j < q) {
+                    // Never a fold where the other choice is none (a sparse
+                    // row against a dense one in a strongly curved or
+                    // anisotropic part).
+                    const bool foldA = folds(at(a, i), at(a, i + 1), at(b, j));
+                    const bool foldB = folds(at(a, i), at(b, j + 1), at(b, j));
+                    if (advanceA && foldA && !foldB)
+                        advanceA = false;
+                    else if (!advanceA && foldB && !foldA)
+                        advanceA = true;
                 }
                 if (advanceA) {
                     triangle(at(a, i), at(a, i + 1), at(b, j));
@@ -581,8 +776,9 @@ private:
 
         if (m_s.method == Method::kMeasured && tooLong(corners)) {
             if (depth < kMaxRefinement) {
-                const Row& middle = m_inserted.emplace_back(
-                    makeRow(0.5 * (a.v + b.v), false, nullptr, a.collapsed ? &b : &a, 1 - a.phase));
+                const Row* from = a.collapsed || m_strategy == Strategy::kAligned ? &b : &a;
+                const Row& middle =
+                    m_inserted.emplace_back(makeRow(0.5 * (a.v + b.v), false, nullptr, from, 1 - a.phase));
                 stitch(a, middle, depth + 1);
                 stitch(middle, b, depth + 1);
                 return;
@@ -590,6 +786,20 @@ private:
             ++m_out.unresolved;
         }
         commit(corners);
+    }
+
+    /// True when the triangle x y z (counterclockwise in parameters) faces
+    /// against the patch's outward normal at its centre.
+    bool folds(const Corner& x, const Corner& y, const Corner& z) const
+    {
+        const Vec3& px = imageOf(x).local;
+        const Vec3& py = imageOf(y).local;
+        const Vec3& pz = imageOf(z).local;
+        auto param = [](const Corner& c) { return c.row->collapsed ? c.apexU : c.row->u[c.j]; };
+        const double u = (param(x) + param(y) + param(z)) / 3.0;
+        const double v = (x.row->v + y.row->v + z.row->v) / 3.0;
+        const double facing = glm::dot(glm::cross(py - px, pz - px), m_patch.normal(u, v));
+        return m_flip ? facing > 0.0 : facing < 0.0;
     }
 
     bool tooLong(const std::vector<Corner>& corners) const
@@ -653,10 +863,14 @@ void attempt(const Patches& patches, const Setting& setting, Tessellation& out)
         Tessellation best;
         PatchRows bestRows;
         bool found = false;
-        const bool both = setting.method == Method::kMeasured;
-        for (const Strategy strategy : {Strategy::kUniform, Strategy::kDerived}) {
-            if (strategy == Strategy::kDerived && !both)
-                break;
+        std::vector<Strategy> strategies{Strategy::kUniform};
+        if (setting.method == Method::kMeasured) {
+            if (patch->collapsedV0 && patch->link.last.patch >= 0)
+                strategies = {Strategy::kAligned};
+            else
+                strategies.push_back(Strategy::kDerived);
+        }
+        for (const Strategy strategy : strategies) {
             Tessellation part;
             try {
                 PatchRows rows = PatchBuilder(*patch, setting, strategy, budget, part, done).build();

@@ -73,10 +73,10 @@ constexpr double kRowSpacing = 0.8;
 constexpr double kDerivedRowSpacing = 0.9;
 constexpr double kRowChord = 0.95;
 /// Measured method: the average chord a row derived from its neighbour aims
-/// at (as a fraction of kRowChord c1), and how short its average chord may
-/// become (a contracting row) before points are dropped.
+/// at, and the longest two neighbouring chords may be together before the
+/// point between them is dropped (fractions of kRowChord c1).
 constexpr double kRowAverage = 0.92;
-constexpr double kRowSparsest = 0.7;
+constexpr double kRowDrop = 0.8;
 /// Probes across a row (for the row spacing and a row's first estimate).
 constexpr int kProbes = 24;
 /// How many times a strip may be halved before it is taken as it is.
