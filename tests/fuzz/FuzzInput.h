@@ -73,6 +73,7 @@ enum class Op : std::uint8_t {
     kMath,
     kAccessors,
     kSurfaces,
+    kQuadrics,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);
