@@ -3143,7 +3143,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_Submit(const TQ3EllipseData *ellipseData, T
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipse or ellipseData is NULL.
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipse is not a ellipse.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *   then the codes of the TQ3EllipseData rules, in their order.
  *
  * Ownership: the ellipse references the attribute sets given and releases
@@ -3160,7 +3160,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_SetData(TQ3GeometryObject ellipse, const TQ
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipse or ellipseData is NULL.
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipse is not a ellipse.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *
  * Ownership: the caller owns a new reference to every attribute set in the
  * result and gives them back with Q3Ellipse_EmptyData.
@@ -3193,7 +3193,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_EmptyData(TQ3EllipseData *ellipseData);
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipse or origin is NULL.
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipse is not a ellipse.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *   kQ3ErrorInvalidData        a coordinate is not finite, or the ellipse
  *                              would leave float's range.
  *
@@ -3210,7 +3210,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_SetOrigin(TQ3GeometryObject ellipse, const 
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipse or origin is NULL.
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipse is not a ellipse.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *
  * Ownership: no references change.
  */
@@ -3225,7 +3225,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetOrigin(TQ3GeometryObject ellipse, TQ3Poi
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipse or majorRadius is NULL.
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipse is not a ellipse.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipse
  *                              would leave float's range.
  *   kQ3ErrorDegenerateGeometry the ellipse's vectors would not be
@@ -3244,7 +3244,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_SetMajorRadius(TQ3GeometryObject ellipse, c
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipse or majorRadius is NULL.
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipse is not a ellipse.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *
  * Ownership: no references change.
  */
@@ -3259,7 +3259,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetMajorRadius(TQ3GeometryObject ellipse, T
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipse or minorRadius is NULL.
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipse is not a ellipse.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipse
  *                              would leave float's range.
  *   kQ3ErrorDegenerateGeometry the ellipse's vectors would not be
@@ -3278,7 +3278,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_SetMinorRadius(TQ3GeometryObject ellipse, c
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipse or minorRadius is NULL.
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipse is not a ellipse.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *
  * Ownership: no references change.
  */
@@ -3371,7 +3371,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_Submit(const TQ3EllipsoidData *ellipsoidD
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or ellipsoidData is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   then the codes of the TQ3EllipsoidData rules, in their order.
  *
  * Ownership: the ellipsoid references the attribute sets given and releases
@@ -3388,7 +3388,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetData(TQ3GeometryObject ellipsoid, cons
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or ellipsoidData is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *
  * Ownership: the caller owns a new reference to every attribute set in the
  * result and gives them back with Q3Ellipsoid_EmptyData.
@@ -3421,7 +3421,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_EmptyData(TQ3EllipsoidData *ellipsoidData
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or origin is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   kQ3ErrorInvalidData        a coordinate is not finite, or the ellipsoid
  *                              would leave float's range.
  *
@@ -3438,7 +3438,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetOrigin(TQ3GeometryObject ellipsoid, co
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or origin is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *
  * Ownership: no references change.
  */
@@ -3454,7 +3454,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetOrigin(TQ3GeometryObject ellipsoid, TQ
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or orientation is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
  *                              would leave float's range.
  *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
@@ -3474,7 +3474,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetOrientation(TQ3GeometryObject ellipsoi
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or orientation is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *
  * Ownership: no references change.
  */
@@ -3489,7 +3489,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetOrientation(TQ3GeometryObject ellipsoi
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or majorRadius is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
  *                              would leave float's range.
  *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
@@ -3508,7 +3508,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetMajorRadius(TQ3GeometryObject ellipsoi
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or majorRadius is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *
  * Ownership: no references change.
  */
@@ -3523,7 +3523,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetMajorRadius(TQ3GeometryObject ellipsoi
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or minorRadius is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
  *                              would leave float's range.
  *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
@@ -3542,7 +3542,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetMinorRadius(TQ3GeometryObject ellipsoi
  *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter      ellipsoid or minorRadius is NULL.
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  ellipsoid is not a ellipsoid.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *
  * Ownership: no references change.
  */
