@@ -5,16 +5,20 @@
 //   - Rows along u at fixed v suit every patch of Shapes.h: u is the angle
 //     around (or a straight direction), v runs between the patch's boundary
 //     curves, which are the rows a linked patch shares.
-//   - A row's points are uniform in u, not marched: uniform rows with every
-//     other one offset by half a step stagger, so the triangles between two
-//     rows of similar length are close to equilateral, the shape with the
-//     most area for a bounded edge (an equilateral triangle of side c1 has
-//     area sqrt(3)/4 c1^2, the lower bound the tests measure against).
-//   - Greedy shorter-diagonal stitching (Fuchs, Kedem, Uselton, "Optimal
-//     surface reconstruction from planar contours", CACM 1977, its greedy
-//     variant) never crosses itself and, as two rows draw together, its new
-//     edges tend to the rows' own chords, all below kRowChord c1; so halving
-//     a strip with a long edge ends, and the edge guarantee holds.
+//   - A row's points are uniform in u or derived from its neighbour's, not
+//     marched point by point: rows staggered by half a step give triangles
+//     close to equilateral, the shape with the most area for a bounded edge
+//     (an equilateral triangle of side c1 has area sqrt(3)/4 c1^2, the lower
+//     bound the tests measure against). Uniform rows suit rows of similar
+//     length; derived rows keep the stagger where rows grow fast.
+//   - Stitching in parameter order (the shorter diagonal only between
+//     nearly aligned points; a variant of the greedy rule of Fuchs, Kedem,
+//     Uselton, "Optimal surface reconstruction from planar contours", CACM
+//     1977) never crosses itself, also where a view foreshortens the
+//     surface so much that the shorter drawn diagonal would reach across
+//     its neighbours; as two rows draw together, its new edges tend to the
+//     rows' own chords, all below kRowChord c1, so halving a strip with a
+//     long edge ends, and the edge guarantee holds.
 
 #include "geometry/quadric/Tessellate.h"
 
@@ -964,7 +968,12 @@ Tessellation tessellate(const Patches& patches, const Subdivision& subdivision)
             return out;
         } catch (const OverBudget&) {
             reduced = true;
-            if (s.method == Method::kMeasured) {
+            const bool coarsest = s.method == Method::kMeasured ? !std::isfinite(s.c1) : s.c1 == 1.0 && s.c2 == 1.0;
+            if (coarsest) {
+                // A cap below the coarsest tessellation (the fewest segments
+                // per turn): that one, whatever it costs.
+                s.maxTriangles = std::numeric_limits<std::size_t>::max();
+            } else if (s.method == Method::kMeasured) {
                 s.c1 = std::isfinite(s.c1) && tries < 60 ? 2.0 * s.c1 : std::numeric_limits<double>::infinity();
             } else {
                 s.c1 = std::max(1.0, std::floor(0.7 * s.c1));

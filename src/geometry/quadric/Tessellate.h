@@ -16,24 +16,46 @@
 // ends; for an edge with one end without an image (nearer than the hither
 // plane), the length of its part that has one (found by bisection: the
 // points with an image form a half-space); nothing for an edge with neither.
-// The tessellation is built in rows:
+// Each patch is built in rows along u at fixed v:
 //   1. rows at v values marched so that the drawn distance between
 //      consecutive rows, probed at kProbes + 1 values of u, is close to
-//      kRowSpacing c1;
-//   2. each row's points at uniform u, as few as keep every chord at most
-//      kRowChord c1 (checked on the actual chords), alternate rows offset by
-//      half a step so that triangles between them are close to equilateral;
-//   3. consecutive rows stitched by the greedy shorter-diagonal rule;
+//      kRowSpacing c1 (kDerivedRowSpacing c1 for derived rows), with at
+//      least one segment per quarter turn where v is an angle;
+//   2. each row's points by one of three strategies, the patch built with
+//      each that applies and the one with fewer triangles kept:
+//        uniform  points at uniform u, as few as keep every chord at most
+//                 kRowChord c1, alternate rows offset by half a step so
+//                 that the triangles between them are close to equilateral;
+//        derived  each row from its neighbour, from the longest row out:
+//                 the neighbour's midpoints (the stagger) with a segment
+//                 split where its chord is too long (or, kRowAverage, where
+//                 the row's chords would average too long) and a point
+//                 dropped where two chords together are short (kRowDrop);
+//                 best where rows grow fast along v (disks, tori);
+//        aligned  for a disk-like patch closing a curved edge (a cap, a
+//                 torus's cross-section: collapsed at v0, its v1 row given
+//                 by the patch it closes): every row on the rays of the
+//                 given row (every other ray once the row has shrunk
+//                 enough), so rows nest and no triangle folds however the
+//                 view squeezes the given row;
+//      at least one segment per quarter turn of u;
+//   3. consecutive rows stitched in parameter order, with the shorter
+//      drawn diagonal where the next points of the two rows are within
+//      0.35 of a segment of each other, and never a triangle that faces
+//      against the surface's normal where the other choice does not;
 //   4. every edge of a stitched strip measured: a strip with one longer than
-//      c1 gets a row halfway between its rows and is stitched again (the
-//      guarantee holds by construction, not by the estimates of 1 and 2).
+//      c1 gets a row halfway between its rows and is stitched again, up to
+//      kMaxRefinement times (the guarantee holds by this check, not by the
+//      estimates of 1 and 2; `unresolved` counts strips left as they are).
 // Patches linked to earlier ones (Shapes.h, Link) take their rows from them,
 // so shared curved edges have the same vertices.
 //
 // Both methods keep the triangle count at most `maxTriangles`: the constant
-// counts are scaled down, the measured method's c1 scaled up (then `reduced`
-// is set and `effective` says what was used), as curves do with their
-// segment cap.
+// counts are scaled down, the measured method's c1 scaled up (first from an
+// estimate of the drawn area, then doubled while an attempt runs over); then
+// `reduced` is set and `effectiveC1` / `effectiveC2` say what was used, as
+// curves do with their segment cap. A cap below the coarsest tessellation
+// (one segment per quarter turn, the constant minimums) gives the coarsest.
 
 #include "core/Limits.h"
 #include "geometry/quadric/Shapes.h"

@@ -162,6 +162,15 @@ TEST(QuadricTessellate, TheTriangleCapCoarsensAndSaysSo)
     EXPECT_LE(c.triangleCount(), 1000u);
     EXPECT_LT(c.effectiveC1, 1024.0);
 
+    // A cap below the coarsest tessellation gives the coarsest.
+    for (Subdivision tiny : {measured(1e-3), constant(64, 64)}) {
+        tiny.maxTriangles = 2;
+        const Tessellation coarsest = tessellate(ellipsoidPatches(unitSphere()), tiny);
+        EXPECT_TRUE(coarsest.reduced);
+        EXPECT_GT(coarsest.triangleCount(), 2u);
+        EXPECT_LE(coarsest.triangleCount(), 24u);
+    }
+
     const Tessellation plain = tessellate(ellipsoidPatches(unitSphere()), constant(16, 8));
     EXPECT_FALSE(plain.reduced);
     EXPECT_EQ(plain.effectiveC1, 16.0);
