@@ -121,6 +121,13 @@ typedef struct TQ3SubdivisionStyleData TQ3SubdivisionStyleData;
  *   The most line segments one NURB curve is ever drawn with, whatever the
  *   style. A curve whose style asks for more is drawn with at most this
  *   many, and its submit posts kQ3WarningParameterOutOfRange.
+ * kQ3SubdivisionMaxTrianglesPerSurface
+ *   The most triangles one box, cone, cylinder, disk, ellipsoid or torus is
+ *   ever drawn with, whatever the style. One whose style asks for more is
+ *   drawn with fewer (constant counts scaled down, or longer world- or
+ *   screen-space edges), and its submit posts
+ *   kQ3WarningParameterOutOfRange. (An ellipse is a curve: it is bounded by
+ *   kQ3SubdivisionMaxSegmentsPerCurve.)
  * kQ3SubdivisionMaxConstantSegments
  *   The largest c1 or c2 accepted for kQ3SubdivisionMethodConstant
  *   (segments per knot span); larger values are replaced by this one.
@@ -131,6 +138,7 @@ typedef struct TQ3SubdivisionStyleData TQ3SubdivisionStyleData;
  *   screen-space subdivision with c1 = c2 = 20).
  */
 #define kQ3SubdivisionMaxSegmentsPerCurve (1 << 20)
+#define kQ3SubdivisionMaxTrianglesPerSurface (1 << 20)
 #define kQ3SubdivisionMaxConstantSegments 1024
 #define kQ3SubdivisionDefaultC1 20.0f
 

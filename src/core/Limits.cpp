@@ -16,6 +16,8 @@ static_assert(kMaxArrayCount == kQ3GeometryMaxArrayCount, "QD3DGeometry.h docume
 static_assert(kMaxCurveOrder == kQ3NURBCurveMaxOrder, "QD3DGeometry.h documents kMaxCurveOrder");
 static_assert(kMaxSegmentsPerCurve == kQ3SubdivisionMaxSegmentsPerCurve,
               "QD3DStyle.h documents kMaxSegmentsPerCurve");
+static_assert(kMaxTrianglesPerSurface == kQ3SubdivisionMaxTrianglesPerSurface,
+              "QD3DStyle.h documents kMaxTrianglesPerSurface");
 static_assert(kMaxConstantSegments == kQ3SubdivisionMaxConstantSegments,
               "QD3DStyle.h documents kMaxConstantSegments");
 static_assert(kMaxGroupNesting == kQ3GroupMaxNesting, "QD3DGroup.h documents kMaxGroupNesting");

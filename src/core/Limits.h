@@ -27,6 +27,10 @@ constexpr unsigned kMaxCurveOrder = 16;
 /// kQ3SubdivisionMaxSegmentsPerCurve.
 constexpr std::size_t kMaxSegmentsPerCurve = std::size_t{1} << 20;
 
+/// The most triangles one quadric or solid (box, cone, cylinder, disk,
+/// ellipsoid, torus) is drawn with: kQ3SubdivisionMaxTrianglesPerSurface.
+constexpr std::size_t kMaxTrianglesPerSurface = std::size_t{1} << 20;
+
 /// The largest constant-method c1 or c2, in segments per knot span:
 /// kQ3SubdivisionMaxConstantSegments.
 constexpr std::uint32_t kMaxConstantSegments = 1024;

@@ -20,6 +20,7 @@
 #include "Q3NURBCurveTools.h"
 
 #include <stdio.h>
+#include <string.h>
 
 /* A few calls of QD3DStyle.h, QD3DShader.h and QD3DLight.h, with C's enums
  * and structures as legacy code writes them. */
@@ -121,6 +122,30 @@ int main(void)
         (void)how;
         if (Q3NURBCurveData_Evaluate(&listing1, 0.5f, &middle) != kQ3Success || middle.x != 1.5f)
             return 12;
+    }
+    {
+        /* The quadrics and solids' data structures and calls, from C. */
+        TQ3BoxData box;
+        TQ3ConeData cone;
+        TQ3CylinderData cylinder;
+        TQ3DiskData disk;
+        TQ3EllipseData ellipse;
+        TQ3EllipsoidData ellipsoid;
+        TQ3TorusData torus;
+        memset(&box, 0, sizeof box);
+        memset(&cone, 0, sizeof cone);
+        memset(&cylinder, 0, sizeof cylinder);
+        memset(&disk, 0, sizeof disk);
+        memset(&ellipse, 0, sizeof ellipse);
+        memset(&ellipsoid, 0, sizeof ellipsoid);
+        memset(&torus, 0, sizeof torus);
+        if (Q3Box_New(&box) != NULL || Q3Error_Get(NULL) != kQ3ErrorDegenerateGeometry ||
+            Q3Cone_New(&cone) != NULL || Q3Cylinder_New(&cylinder) != NULL || Q3Disk_New(&disk) != NULL ||
+            Q3Ellipse_New(&ellipse) != NULL || Q3Ellipsoid_New(&ellipsoid) != NULL ||
+            Q3Torus_New(&torus) != NULL || Q3Torus_SetRatio(NULL, 1.0f) != kQ3Failure ||
+            Q3Box_GetFaceAttributeSet(NULL, 0, NULL) != kQ3Failure ||
+            kQ3SubdivisionMaxTrianglesPerSurface < 1)
+            return 13;
     }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,

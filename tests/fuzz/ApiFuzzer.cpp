@@ -22,7 +22,9 @@
 //   - the other styles, the shaders' uv settings and the lights accept
 //     exactly the values their headers' rules allow, on every path;
 //   - a decomposed curve has at most kQ3SubdivisionMaxSegmentsPerCurve + 1
-//     vertices; a bounding box is never NaN;
+//     vertices, a decomposed quadric or solid at most
+//     kQ3SubdivisionMaxTrianglesPerSurface triangles, all finite; a bounding
+//     box is never NaN;
 //   - after every input, once the fuzzer has disposed what it holds,
 //     Q3Memory_CountLiveObjects() is 0 and the last Q3Exit warns of nothing.
 // Work per input is bounded (control points, curve draws, loops, views) so
@@ -189,8 +191,10 @@ bool sameBytes(const T& a, const T& b)
 }
 
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
-                  kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup };
-constexpr int kKindCount = 18;
+                  kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup,
+                  kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus };
+constexpr int kKindCount = 25;
+constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
 
 struct Held {
     TQ3Object handle;
@@ -615,6 +619,7 @@ private:
         case Op::kGroups: groups(); break;
         case Op::kStylesShadersLights: stylesShadersLights(); break;
         case Op::kCurveTools: curveTools(); break;
+        case Op::kQuadrics: quadrics(); break;
         case Op::kCount: break;
         }
     }
@@ -1840,6 +1845,317 @@ private:
         }
     }
 
+    // Boxes, cones, cylinders, disks, ellipses, ellipsoids and tori: New,
+    // SetData, GetData with EmptyData (twice), immediate Submit, every
+    // per-field call and the decomposition. The data starts as a valid shape
+    // whose floats an input may overwrite with anything (NaN, infinities,
+    // zero or parallel axes, ranges outside [0, 1], a ratio <= 0), with any
+    // caps bits and attribute sets (dead, foreign, a box's six face sets).
+    struct QuadricFields {
+        float* floats; // origin, then the vectors, the torus's ratio, the ranges
+        int floatCount;
+        TQ3EndCap* caps;       // NULL if the type has none
+        TQ3AttributeSet* sets; // the part sets and then the geometry's, consecutive
+        int setCount;
+    };
+    static QuadricFields fieldsOf(TQ3BoxData& d) { return {&d.origin.x, 12, nullptr, &d.boxAttributeSet, 1}; }
+    static QuadricFields fieldsOf(TQ3ConeData& d) { return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 4}; }
+    static QuadricFields fieldsOf(TQ3CylinderData& d) { return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 5}; }
+    static QuadricFields fieldsOf(TQ3DiskData& d) { return {&d.origin.x, 13, nullptr, &d.diskAttributeSet, 1}; }
+    static QuadricFields fieldsOf(TQ3EllipseData& d) { return {&d.origin.x, 11, nullptr, &d.ellipseAttributeSet, 1}; }
+    static QuadricFields fieldsOf(TQ3EllipsoidData& d)
+    {
+        return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 2};
+    }
+    static QuadricFields fieldsOf(TQ3TorusData& d) { return {&d.origin.x, 17, &d.caps, &d.interiorAttributeSet, 2}; }
+
+    template <class Data>
+    static bool sameQuadric(const Data& a, const Data& b)
+    {
+        const QuadricFields x = fieldsOf(const_cast<Data&>(a));
+        const QuadricFields y = fieldsOf(const_cast<Data&>(b));
+        return std::memcmp(x.floats, y.floats, std::size_t(x.floatCount) * sizeof(float)) == 0 &&
+               (x.caps == nullptr || *x.caps == *y.caps) &&
+               std::memcmp(x.sets, y.sets, std::size_t(x.setCount) * sizeof(TQ3AttributeSet)) == 0;
+    }
+    static bool sameQuadric(const TQ3BoxData& a, const TQ3BoxData& b)
+    {
+        const bool faces = a.faceAttributeSet == nullptr || b.faceAttributeSet == nullptr
+                               ? a.faceAttributeSet == b.faceAttributeSet
+                               : std::memcmp(a.faceAttributeSet, b.faceAttributeSet, 6 * sizeof(TQ3AttributeSet)) == 0;
+        return faces && sameQuadric<TQ3BoxData>(a, b);
+    }
+
+    template <class Data>
+    void quadricData(std::uint8_t action, Kind kind, Data& data, bool nullData,
+                     TQ3GeometryObject (*create)(const Data*),
+                     TQ3Status (*setData)(TQ3GeometryObject, const Data*),
+                     TQ3Status (*getData)(TQ3GeometryObject, Data*), TQ3Status (*emptyData)(Data*),
+                     TQ3Status (*submit)(const Data*, TQ3ViewObject))
+    {
+        // A valid shape: unit axes along y, z and x (a torus's tube half as
+        // thick), full ranges; disks and ellipses take the last two axes.
+        static const float kShape[] = {0, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, 1};
+        static const float kTorus[] = {0, 0, 0, 0, 0.5f, 0, 0, 0, 1, 1, 0, 0, 0.5f, 0, 1, 0, 1};
+        const QuadricFields f = fieldsOf(data);
+        if (f.floatCount == 17)
+            std::copy(kTorus, kTorus + 17, f.floats);
+        else if (f.floatCount == 12 || f.floatCount == 16)
+            std::copy(kShape, kShape + f.floatCount, f.floats);
+        else
+            std::copy(kShape + 6, kShape + 3 + f.floatCount, f.floats + 3);
+        for (int n = m_in.u8() % 4; n > 0; --n)
+            f.floats[m_in.u8() % f.floatCount] = m_in.value();
+        if (f.caps != nullptr)
+            *f.caps = TQ3EndCap(enumValue(7));
+        const std::uint8_t withSets = m_in.u8();
+        for (int i = 0; i < f.setCount; ++i)
+            if (withSets & (1 << i))
+                f.sets[i] = pick(Kind::kAttributeSet);
+        if (action == 3 && !drawAllowed())
+            return;
+        surfaceAction<Data>(action, kind, nullData ? nullptr : &data, create, setData, getData, emptyData, submit,
+                            [](const Data& a, const Data& b) { return sameQuadric(a, b); });
+    }
+
+    void quadrics()
+    {
+        const std::uint8_t type = m_in.u8() % 7;
+        const std::uint8_t action = m_in.u8() % 6;
+        const Kind kind = Kind(int(Kind::kBox) + type);
+        const bool nullData = m_in.u8() == 0;
+        if (action == 4)
+            return quadricField(type, kind);
+        if (action == 5)
+            return quadricDecompose(kind);
+        switch (type) {
+        case 0: {
+            TQ3BoxData data{};
+            TQ3AttributeSet faces[6] = {};
+            if (m_in.u8() & 1) {
+                for (TQ3AttributeSet& face : faces)
+                    face = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+                data.faceAttributeSet = faces;
+            }
+            quadricData(action, kind, data, nullData, Q3Box_New, Q3Box_SetData, Q3Box_GetData, Q3Box_EmptyData,
+                        Q3Box_Submit);
+            break;
+        }
+        case 1: {
+            TQ3ConeData data{};
+            quadricData(action, kind, data, nullData, Q3Cone_New, Q3Cone_SetData, Q3Cone_GetData,
+                        Q3Cone_EmptyData, Q3Cone_Submit);
+            break;
+        }
+        case 2: {
+            TQ3CylinderData data{};
+            quadricData(action, kind, data, nullData, Q3Cylinder_New, Q3Cylinder_SetData, Q3Cylinder_GetData,
+                        Q3Cylinder_EmptyData, Q3Cylinder_Submit);
+            break;
+        }
+        case 3: {
+            TQ3DiskData data{};
+            quadricData(action, kind, data, nullData, Q3Disk_New, Q3Disk_SetData, Q3Disk_GetData,
+                        Q3Disk_EmptyData, Q3Disk_Submit);
+            break;
+        }
+        case 4: {
+            TQ3EllipseData data{};
+            quadricData(action, kind, data, nullData, Q3Ellipse_New, Q3Ellipse_SetData, Q3Ellipse_GetData,
+                        Q3Ellipse_EmptyData, Q3Ellipse_Submit);
+            break;
+        }
+        case 5: {
+            TQ3EllipsoidData data{};
+            quadricData(action, kind, data, nullData, Q3Ellipsoid_New, Q3Ellipsoid_SetData, Q3Ellipsoid_GetData,
+                        Q3Ellipsoid_EmptyData, Q3Ellipsoid_Submit);
+            break;
+        }
+        default: {
+            TQ3TorusData data{};
+            quadricData(action, kind, data, nullData, Q3Torus_New, Q3Torus_SetData, Q3Torus_GetData,
+                        Q3Torus_EmptyData, Q3Torus_Submit);
+            break;
+        }
+        }
+    }
+
+    // Apple's per-field calls of each type: the vectors are orientation
+    // (or none), major and minor; the sets are the part sets by name; the
+    // scalar is the caps (cones, cylinders) or the ratio (tori).
+    struct QuadricCalls {
+        TQ3Status (*setOrigin)(TQ3GeometryObject, const TQ3Point3D*);
+        TQ3Status (*getOrigin)(TQ3GeometryObject, TQ3Point3D*);
+        TQ3Status (*setVector[3])(TQ3GeometryObject, const TQ3Vector3D*);
+        TQ3Status (*getVector[3])(TQ3GeometryObject, TQ3Vector3D*);
+        TQ3Status (*setSet[3])(TQ3GeometryObject, TQ3AttributeSet);
+        TQ3Status (*getSet[3])(TQ3GeometryObject, TQ3AttributeSet*);
+        TQ3Status (*setCaps)(TQ3GeometryObject, TQ3EndCap);
+        TQ3Status (*getCaps)(TQ3GeometryObject, TQ3EndCap*);
+    };
+
+    void quadricField(std::uint8_t type, Kind kind)
+    {
+        static const QuadricCalls kCalls[] = {
+            {Q3Box_SetOrigin, Q3Box_GetOrigin, {Q3Box_SetOrientation, Q3Box_SetMajorAxis, Q3Box_SetMinorAxis},
+             {Q3Box_GetOrientation, Q3Box_GetMajorAxis, Q3Box_GetMinorAxis}, {}, {}, nullptr, nullptr},
+            {Q3Cone_SetOrigin, Q3Cone_GetOrigin, {Q3Cone_SetOrientation, Q3Cone_SetMajorRadius, Q3Cone_SetMinorRadius},
+             {Q3Cone_GetOrientation, Q3Cone_GetMajorRadius, Q3Cone_GetMinorRadius},
+             {Q3Cone_SetBottomAttributeSet, Q3Cone_SetFaceAttributeSet},
+             {Q3Cone_GetBottomAttributeSet, Q3Cone_GetFaceAttributeSet}, Q3Cone_SetCaps, Q3Cone_GetCaps},
+            {Q3Cylinder_SetOrigin, Q3Cylinder_GetOrigin,
+             {Q3Cylinder_SetOrientation, Q3Cylinder_SetMajorRadius, Q3Cylinder_SetMinorRadius},
+             {Q3Cylinder_GetOrientation, Q3Cylinder_GetMajorRadius, Q3Cylinder_GetMinorRadius},
+             {Q3Cylinder_SetTopAttributeSet, Q3Cylinder_SetBottomAttributeSet, Q3Cylinder_SetFaceAttributeSet},
+             {Q3Cylinder_GetTopAttributeSet, Q3Cylinder_GetBottomAttributeSet, Q3Cylinder_GetFaceAttributeSet},
+             Q3Cylinder_SetCaps, Q3Cylinder_GetCaps},
+            {Q3Disk_SetOrigin, Q3Disk_GetOrigin, {nullptr, Q3Disk_SetMajorRadius, Q3Disk_SetMinorRadius},
+             {nullptr, Q3Disk_GetMajorRadius, Q3Disk_GetMinorRadius}, {}, {}, nullptr, nullptr},
+            {Q3Ellipse_SetOrigin, Q3Ellipse_GetOrigin, {nullptr, Q3Ellipse_SetMajorRadius, Q3Ellipse_SetMinorRadius},
+             {nullptr, Q3Ellipse_GetMajorRadius, Q3Ellipse_GetMinorRadius}, {}, {}, nullptr, nullptr},
+            {Q3Ellipsoid_SetOrigin, Q3Ellipsoid_GetOrigin,
+             {Q3Ellipsoid_SetOrientation, Q3Ellipsoid_SetMajorRadius, Q3Ellipsoid_SetMinorRadius},
+             {Q3Ellipsoid_GetOrientation, Q3Ellipsoid_GetMajorRadius, Q3Ellipsoid_GetMinorRadius}, {}, {}, nullptr,
+             nullptr},
+            {Q3Torus_SetOrigin, Q3Torus_GetOrigin,
+             {Q3Torus_SetOrientation, Q3Torus_SetMajorRadius, Q3Torus_SetMinorRadius},
+             {Q3Torus_GetOrientation, Q3Torus_GetMajorRadius, Q3Torus_GetMinorRadius}, {}, {}, nullptr, nullptr},
+        };
+        const QuadricCalls& c = kCalls[type];
+        const TQ3Object geometry = pick(kind);
+        const bool ours = holdsKind(geometry, kind) && m_initialized > 0;
+        const bool nullArg = m_in.u8() == 0;
+        const bool set = m_in.u8() & 1;
+        const std::uint8_t field = m_in.u8();
+        const std::uint8_t slot = m_in.u8() % 3;
+        const TQ3Point3D point = point3();
+        const TQ3Vector3D vector{point.x, point.y, point.z};
+        const float ratio = m_in.value();
+        const TQ3EndCap caps = TQ3EndCap(enumValue(7));
+        const TQ3AttributeSet attributes = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+        const unsigned long face = m_in.index(6);
+        // A Set: a success reads back with its Get, a failure changes
+        // neither the field nor the edit index.
+        auto edit = [&](const char* name, auto get, auto wanted, auto call) {
+            decltype(wanted) old{}, now{};
+            const unsigned long before = ours ? editIndex(geometry) : 0;
+            if (ours)
+                STATUS(get(geometry, &old));
+            const TQ3Status status = STATUS(call());
+            require(status == kQ3Failure || ours, name, "succeeded on something that is not a held shape");
+            if (!ours)
+                return;
+            STATUS(get(geometry, &now));
+            if (status == kQ3Success)
+                require(sameBytes(now, wanted), name, "does not read back");
+            else
+                require(sameBytes(now, old) && editIndex(geometry) == before, name, "failed but changed the shape");
+        };
+        TQ3Point3D pointOut{};
+        TQ3Vector3D vectorOut{};
+        TQ3AttributeSet got = nullptr;
+        switch (field % 5) {
+        case 0:
+            if (set)
+                edit("SetOrigin", c.getOrigin, point,
+                     [&] { return c.setOrigin(geometry, nullArg ? nullptr : &point); });
+            else
+                STATUS(c.getOrigin(geometry, nullArg ? nullptr : &pointOut));
+            break;
+        case 1:
+            if (c.setVector[slot] == nullptr)
+                break;
+            if (set)
+                edit("SetVector", c.getVector[slot], vector,
+                     [&] { return c.setVector[slot](geometry, nullArg ? nullptr : &vector); });
+            else
+                STATUS(c.getVector[slot](geometry, nullArg ? nullptr : &vectorOut));
+            break;
+        case 2:
+            if (type == 0) {
+                const unsigned long before = ours ? editIndex(geometry) : 0;
+                if (!set)
+                    STATUS(Q3Box_GetFaceAttributeSet(geometry, face, nullArg ? nullptr : &got));
+                else if (STATUS(Q3Box_SetFaceAttributeSet(geometry, face, attributes)) == kQ3Failure && ours)
+                    require(editIndex(geometry) == before, "Q3Box_SetFaceAttributeSet", "failed but changed the box");
+            } else if (c.setSet[slot] != nullptr) {
+                const unsigned long before = ours ? editIndex(geometry) : 0;
+                if (!set)
+                    STATUS(c.getSet[slot](geometry, nullArg ? nullptr : &got));
+                else if (STATUS(c.setSet[slot](geometry, attributes)) == kQ3Failure && ours)
+                    require(editIndex(geometry) == before, "SetAttributeSet", "failed but changed the shape");
+            }
+            break;
+        case 3:
+            if (type == 6) {
+                float out = 0.0f;
+                if (set)
+                    edit("Q3Torus_SetRatio", Q3Torus_GetRatio, ratio,
+                         [&] { return Q3Torus_SetRatio(geometry, ratio); });
+                else
+                    STATUS(Q3Torus_GetRatio(geometry, nullArg ? nullptr : &out));
+            } else if (c.setCaps != nullptr) {
+                TQ3EndCap out = 0;
+                if (set)
+                    edit("SetCaps", c.getCaps, caps, [&] { return c.setCaps(geometry, caps); });
+                else
+                    STATUS(c.getCaps(geometry, nullArg ? nullptr : &out));
+            }
+            break;
+        default:
+            QUERY(Q3Geometry_GetType(geometry), TQ3ObjectType{kQ3ObjectTypeInvalid});
+            break;
+        }
+        if (got != nullptr)
+            hold(got, Kind::kAttributeSet);
+    }
+
+    void quadricDecompose(Kind kind)
+    {
+        const TQ3Object geometry = pick(kind);
+        const TQ3Object view = pick(Kind::kView);
+        if (!drawAllowed())
+            return;
+        const DrawTimer timer(m_drawSeconds);
+        const TQ3Object result = OBJECT(Q3Geometry_GetDecomposed(geometry, view));
+        if (result == nullptr)
+            return;
+        const Held* entry = heldEntry(geometry);
+        require(entry != nullptr, "Q3Geometry_GetDecomposed", "decomposed something nobody holds");
+        if (isQuadric(entry->kind))
+            checkQuadricDecomposed(entry->kind, result);
+        else // another geometry, picked when no shape of this kind is held
+            hold(result, Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh ? Kind::kTriMesh : Kind::kPolyLine);
+    }
+
+    // A shape gives a trimesh within kQ3SubdivisionMaxTrianglesPerSurface,
+    // an ellipse a closed or open polyline within the curve cap; finite.
+    void checkQuadricDecomposed(Kind kind, TQ3Object result)
+    {
+        const char* call = "Q3Geometry_GetDecomposed";
+        if (kind == Kind::kEllipse) {
+            require(Q3Geometry_GetType(result) == kQ3GeometryTypePolyLine, call, "an ellipse gave no polyline");
+            hold(result, Kind::kPolyLine);
+            TQ3PolyLineData line{};
+            STATUS(Q3PolyLine_GetData(result, &line));
+            require(line.numVertices >= 2 && line.numVertices <= (unsigned long)kQ3SubdivisionMaxSegmentsPerCurve + 1,
+                    call, "an ellipse's polyline has the wrong size");
+            STATUS(Q3PolyLine_EmptyData(&line));
+            return;
+        }
+        require(Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh, call, "a shape gave no trimesh");
+        hold(result, Kind::kTriMesh);
+        TQ3TriMeshData mesh{};
+        STATUS(Q3TriMesh_GetData(result, &mesh));
+        require(mesh.numTriangles >= 1 && mesh.numTriangles <= (unsigned long)kQ3SubdivisionMaxTrianglesPerSurface,
+                call, "a shape's trimesh has no triangles or more than the cap");
+        for (unsigned long i = 0; i < mesh.numPoints; ++i)
+            require(std::isfinite(mesh.points[i].x) && std::isfinite(mesh.points[i].y) &&
+                        std::isfinite(mesh.points[i].z),
+                    call, "a shape's trimesh has a point that is not finite");
+        STATUS(Q3TriMesh_EmptyData(&mesh));
+    }
+
     // The math helpers with arbitrary values, results aliasing inputs. Cases
     // 9 and up are QuickDraw 3D 1.6's other QD3DMath.h calls, by family.
     void math()
@@ -2764,7 +3080,9 @@ private:
         const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
         const TQ3Object view = pick(Kind::kView);
         const Held* entry = heldEntry(object);
-        if (entry != nullptr && (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine) && !drawAllowed())
+        if (entry != nullptr &&
+            (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine || isQuadric(entry->kind)) &&
+            !drawAllowed())
             return;
         if (entry != nullptr && entry->kind == Kind::kGroup && (!drawAllowed() || !groupIsSmall(object)))
             return;
@@ -2880,6 +3198,12 @@ private:
                                              entry->kind == Kind::kTriMesh),
                         "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
             }
+            return;
+        }
+        const Held* entry = heldEntry(geometry);
+        if (entry != nullptr && isQuadric(entry->kind)) {
+            require(!posted, "Q3Geometry_GetDecomposed", "posted an error but decomposed");
+            checkQuadricDecomposed(entry->kind, polyline);
             return;
         }
         if (holdsKind(geometry, Kind::kPolygon)) {

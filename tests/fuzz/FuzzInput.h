@@ -76,6 +76,7 @@ enum class Op : std::uint8_t {
     kStylesShadersLights,
     kGroups,
     kCurveTools,
+    kQuadrics,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

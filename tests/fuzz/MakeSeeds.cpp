@@ -20,7 +20,7 @@ using q3fuzz::Op;
 // Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                            kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
-                           kLight, kGroup };
+                           kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -716,6 +716,64 @@ std::vector<std::pair<std::string, Seed>> seeds()
         tail(1);
         s.submitHeld(kOtherStyle, 1, 1).submitHeld(kLight, 0, 1).endRendering();
         s.op(Op::kDuplicate).u8(kOtherStyle).held(10).op(Op::kDuplicate).u8(kLight).held(3);
+    // Every quadric and solid: made (a box with face sets), drawn, bounded,
+    // decomposed under each subdivision method, edited field by field at the
+    // edges (box face 5, 6 and ULONG_MAX, a NaN ratio, unknown caps bits),
+    // and SetData with a NaN; three inputs, as each may draw 12 times.
+    auto newQuadrics = [](Seed& s) -> Seed& {
+        // quadrics(): type, action, non-null byte; New and SetData read the
+        // box's face byte, the patches, the caps, the sets byte.
+        for (std::uint8_t type = 0; type < 7; ++type) {
+            s.op(Op::kQuadrics).u8(type).u8(0).u8(1);
+            if (type == 0)
+                s.u8(1).u8(0).u8(0).u8(0).u8(0).u8(0).u8(0);
+            s.u8(0);
+            if (type == 1 || type == 2 || type == 5 || type == 6)
+                s.u8(7);
+            s.u8(0);
+        }
+        return s;
+    };
+    {
+        Seed& s = newQuadrics(add("quadrics-draw")).scene(2).startRendering();
+        for (std::uint8_t kind = kBox; kind <= kTorus; ++kind)
+            s.submitHeld(Kind(kind));
+        s.endRendering().startBox();
+        for (std::uint8_t kind = kBox; kind <= kEllipse; ++kind)
+            s.submitHeld(Kind(kind));
+        s.endBox();
+    }
+    {
+        Seed& s = newQuadrics(add("quadrics-decompose")).scene(2);
+        s.startRendering().submitStyle(kWorld, 0.2f);
+        for (std::uint8_t type = 0; type < 7; ++type)
+            s.op(Op::kQuadrics).u8(type).u8(5).u8(1).held().held();
+        s.endRendering().startRendering().submitStyle(kScreen, 8.0f);
+        for (std::uint8_t type = 1; type < 6; ++type)
+            s.op(Op::kQuadrics).u8(type).u8(5).u8(1).held().held();
+        s.endRendering();
+    }
+    {
+        Seed& s = newQuadrics(add("quadrics-edits"));
+        // quadricField(): the shape, null byte, set byte, field, slot, a
+        // point, a ratio, caps, the set byte, a face index.
+        auto field = [&s](std::uint8_t type, std::uint8_t which, std::uint8_t slot) -> Seed& {
+            return s.op(Op::kQuadrics).u8(type).u8(4).u8(1).held().u8(1).u8(1).u8(which).u8(slot);
+        };
+        field(0, 2, 0).value(0).value(0).value(0).value(1).u8(0).u8(0).smallIndex(5);
+        field(0, 2, 0).value(0).value(0).value(0).value(1).u8(0).u8(0).smallIndex(6);
+        field(0, 2, 0).value(0).value(0).value(0).value(1).u8(0).u8(0).rawIndex(0xFFFFFFFFu);
+        field(0, 1, 1).value(0).value(2).value(0).value(1).u8(0).u8(0).smallIndex(0);  // major = orientation
+        field(1, 0, 0).special(0).value(0).value(0).value(1).u8(0).u8(0).smallIndex(0); // NaN origin
+        field(1, 3, 0).value(0).value(0).value(0).value(1).u8(224).u32(0x100).u8(0).smallIndex(0);
+        field(2, 3, 0).value(0).value(0).value(0).value(1).u8(3).u8(0).smallIndex(0);
+        field(6, 3, 0).value(0).value(0).value(0).special(0).u8(0).u8(0).smallIndex(0);
+        field(6, 3, 0).value(0).value(0).value(0).value(0.25f).u8(0).u8(0).smallIndex(0);
+        field(3, 1, 2).value(0).value(0).value(3).value(1).u8(0).u8(0).smallIndex(0);
+        // Cone SetData with a NaN vMax (float 15), then a partial torus.
+        s.op(Op::kQuadrics).u8(1).u8(1).u8(1).u8(1).u8(15).special(0).u8(7).u8(0).held();
+        s.op(Op::kQuadrics).u8(6).u8(1).u8(1).u8(1).u8(14).value(0.75f).u8(7).u8(0).held();
+        s.scene(2).startRendering().submitHeld(kTorus).submitHeld(kCone).endRendering();
     }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {
