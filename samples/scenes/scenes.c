@@ -582,8 +582,8 @@ const Q3Scene *q3scene_find(const char *name)
 
 /* ---- Rendering ----------------------------------------------------------- */
 
-static TQ3ViewObject new_view(const Q3Scene *scene, unsigned long width, unsigned long height,
-                              unsigned char *argb)
+static TQ3ViewObject new_view(const Q3Scene *scene, TQ3GroupObject lights, unsigned long width,
+                              unsigned long height, unsigned char *argb)
 {
     TQ3PixmapDrawContextData contextData;
     TQ3ViewAngleAspectCameraData cameraData;
@@ -626,7 +626,8 @@ static TQ3ViewObject new_view(const Q3Scene *scene, unsigned long width, unsigne
 
     if (failed || context == NULL || camera == NULL || Q3View_SetDrawContext(view, context) != kQ3Success ||
         Q3View_SetCamera(view, camera) != kQ3Success ||
-        Q3View_SetRendererByType(view, scene->renderer) != kQ3Success)
+        Q3View_SetRendererByType(view, scene->renderer) != kQ3Success ||
+        (lights != NULL && Q3View_SetLightGroup(view, lights) != kQ3Success))
         failed = 1;
     dispose(context);
     dispose(camera);
@@ -639,6 +640,12 @@ static TQ3ViewObject new_view(const Q3Scene *scene, unsigned long width, unsigne
 
 int q3scene_render(const Q3Scene *scene, unsigned long width, unsigned long height, unsigned char *rgba)
 {
+    return q3scene_render_lit(scene, NULL, width, height, rgba);
+}
+
+int q3scene_render_lit(const Q3Scene *scene, TQ3GroupObject lights, unsigned long width, unsigned long height,
+                       unsigned char *rgba)
+{
     unsigned char *argb;
     TQ3ViewObject view;
     TQ3ViewStatus status;
@@ -649,7 +656,7 @@ int q3scene_render(const Q3Scene *scene, unsigned long width, unsigned long heig
     argb = calloc(width * height, 4);
     if (argb == NULL)
         return 1;
-    view = new_view(scene, width, height, argb);
+    view = new_view(scene, lights, width, height, argb);
     if (view == NULL) {
         free(argb);
         return 1;
