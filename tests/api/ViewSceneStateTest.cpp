@@ -102,6 +102,73 @@ TEST_F(ViewSceneStateTest, StyleStatesStartAtQuickDraw3DsDefaults)
     }
 }
 
+// Each style submitted (immediately, or as an object) becomes the state its
+// Get*StyleState reads; a pop brings back what the push saved.
+TEST_F(ViewSceneStateTest, StyleStatesFollowSubmittedStylesAndPopBack)
+{
+    ASSERT_EQ(Q3View_StartRendering(view()), kQ3Success);
+    ASSERT_EQ(Q3Push_Submit(view()), kQ3Success);
+    TQ3AttributeSet highlightSet = Q3AttributeSet_New();
+    ASSERT_NE(highlightSet, nullptr);
+    EXPECT_EQ(Q3BackfacingStyle_Submit(kQ3BackfacingStyleFlip, view()), kQ3Success);
+    EXPECT_EQ(Q3InterpolationStyle_Submit(kQ3InterpolationStyleNone, view()), kQ3Success);
+    TQ3StyleObject fillObject = Q3FillStyle_New(kQ3FillStyleEdges);
+    ASSERT_NE(fillObject, nullptr);
+    EXPECT_EQ(Q3Style_Submit(fillObject, view()), kQ3Success);
+    Q3Object_Dispose(fillObject);
+    EXPECT_EQ(Q3OrientationStyle_Submit(kQ3OrientationStyleClockwise, view()), kQ3Success);
+    EXPECT_EQ(Q3ReceiveShadowsStyle_Submit(kQ3False, view()), kQ3Success);
+    EXPECT_EQ(Q3PickIDStyle_Submit(77, view()), kQ3Success);
+    EXPECT_EQ(Q3PickPartsStyle_Submit(kQ3PickPartsMaskFace | kQ3PickPartsMaskEdge, view()), kQ3Success);
+    const TQ3AntiAliasStyleData smooth{kQ3On, kQ3AntiAliasModeMaskEdges, 0.5f};
+    EXPECT_EQ(Q3AntiAliasStyle_Submit(&smooth, view()), kQ3Success);
+    EXPECT_EQ(Q3HighlightStyle_Submit(highlightSet, view()), kQ3Success);
+
+    TQ3BackfacingStyle backfacing = kQ3BackfacingStyleBoth;
+    TQ3InterpolationStyle interpolation = kQ3InterpolationStyleVertex;
+    TQ3FillStyle fill = kQ3FillStyleFilled;
+    TQ3OrientationStyle orientation = kQ3OrientationStyleCounterClockwise;
+    TQ3Boolean receives = kQ3True;
+    unsigned long pickID = 0;
+    TQ3PickParts parts = 0;
+    TQ3AntiAliasStyleData antiAlias{};
+    TQ3AttributeSet highlight = nullptr;
+    EXPECT_EQ(Q3View_GetBackfacingStyleState(view(), &backfacing), kQ3Success);
+    EXPECT_EQ(Q3View_GetInterpolationStyleState(view(), &interpolation), kQ3Success);
+    EXPECT_EQ(Q3View_GetFillStyleState(view(), &fill), kQ3Success);
+    EXPECT_EQ(Q3View_GetOrientationStyleState(view(), &orientation), kQ3Success);
+    EXPECT_EQ(Q3View_GetReceiveShadowsStyleState(view(), &receives), kQ3Success);
+    EXPECT_EQ(Q3View_GetPickIDStyleState(view(), &pickID), kQ3Success);
+    EXPECT_EQ(Q3View_GetPickPartsStyleState(view(), &parts), kQ3Success);
+    EXPECT_EQ(Q3View_GetAntiAliasStyleState(view(), &antiAlias), kQ3Success);
+    EXPECT_EQ(Q3View_GetHighlightStyleState(view(), &highlight), kQ3Success);
+    EXPECT_EQ(backfacing, kQ3BackfacingStyleFlip);
+    EXPECT_EQ(interpolation, kQ3InterpolationStyleNone);
+    EXPECT_EQ(fill, kQ3FillStyleEdges);
+    EXPECT_EQ(orientation, kQ3OrientationStyleClockwise);
+    EXPECT_EQ(receives, kQ3False);
+    EXPECT_EQ(pickID, 77u);
+    EXPECT_EQ(parts, TQ3PickParts(kQ3PickPartsMaskFace | kQ3PickPartsMaskEdge));
+    EXPECT_EQ(antiAlias.state, kQ3On);
+    EXPECT_EQ(antiAlias.mode, TQ3AntiAliasMode(kQ3AntiAliasModeMaskEdges));
+    EXPECT_EQ(antiAlias.quality, 0.5f);
+    EXPECT_EQ(highlight, highlightSet);
+    if (highlight != nullptr)
+        Q3Object_Dispose(highlight); // the state call's reference
+
+    ASSERT_EQ(Q3Pop_Submit(view()), kQ3Success);
+    EXPECT_EQ(Q3View_GetBackfacingStyleState(view(), &backfacing), kQ3Success);
+    EXPECT_EQ(Q3View_GetFillStyleState(view(), &fill), kQ3Success);
+    EXPECT_EQ(Q3View_GetPickIDStyleState(view(), &pickID), kQ3Success);
+    EXPECT_EQ(Q3View_GetHighlightStyleState(view(), &highlight), kQ3Success);
+    EXPECT_EQ(backfacing, kQ3BackfacingStyleBoth);
+    EXPECT_EQ(fill, kQ3FillStyleFilled);
+    EXPECT_EQ(pickID, 0u);
+    EXPECT_EQ(highlight, nullptr);
+    EXPECT_EQ(Q3View_EndRendering(view()), kQ3ViewStatusDone);
+    Q3Object_Dispose(highlightSet);
+}
+
 TEST_F(ViewSceneStateTest, StateCallsFailOutsideALoopAndWithNullOutputs)
 {
     // A sentinel that is a valid TQ3FillStyle (an out-of-range enum value would be
