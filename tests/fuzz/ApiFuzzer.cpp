@@ -3523,12 +3523,13 @@ private:
         }
         case 8: {
             const TQ3Object view = pick(Kind::kView);
-            TQ3ComputeBounds bounds{};
-            setRaw(bounds, enumValue(2));
+            // Through C: any int, a value outside TQ3ComputeBounds included
+            // (which C++ may not even hold in the enum).
+            const int bounds = enumValue(2);
             if (!groupIsSmall(group) || !drawAllowed())
                 return;
             const DrawTimer timer(m_drawSeconds);
-            STATUS(Q3DisplayGroup_CalcAndUseBoundingBox(group, bounds, view));
+            STATUS(q3fuzz_CalcAndUseBoundingBox(group, bounds, view));
             break;
         }
         default: {

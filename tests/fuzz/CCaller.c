@@ -3,6 +3,7 @@
 #include "CCaller.h"
 
 #include "QD3DDrawContext.h"
+#include "QD3DGroup.h"
 #include "QD3DMath.h"
 #include "QD3DLight.h"
 #include "QD3DRenderer.h"
@@ -34,6 +35,11 @@ TQ3Status q3fuzz_StartBoundingBox(TQ3Object view, int computeBounds)
 TQ3Status q3fuzz_StartBoundingSphere(TQ3Object view, int computeBounds)
 {
     return Q3View_StartBoundingSphere(view, (TQ3ComputeBounds)computeBounds);
+}
+
+TQ3Status q3fuzz_CalcAndUseBoundingBox(TQ3Object group, int computeBounds, TQ3Object view)
+{
+    return Q3DisplayGroup_CalcAndUseBoundingBox(group, (TQ3ComputeBounds)computeBounds, view);
 }
 
 TQ3Status q3fuzz_RotateTransform_SetAxis(TQ3Object transform, int axis)

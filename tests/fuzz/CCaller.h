@@ -21,6 +21,7 @@ TQ3Status q3fuzz_SetClearImageMethod(TQ3Object drawContext, int method);
 TQ3Status q3fuzz_SetDoubleBufferBypass(TQ3Object renderer, int bypass);
 TQ3Status q3fuzz_StartBoundingBox(TQ3Object view, int computeBounds);
 TQ3Status q3fuzz_StartBoundingSphere(TQ3Object view, int computeBounds);
+TQ3Status q3fuzz_CalcAndUseBoundingBox(TQ3Object group, int computeBounds, TQ3Object view);
 TQ3Status q3fuzz_RotateTransform_SetAxis(TQ3Object transform, int axis);
 TQ3BoundingBox *q3fuzz_BoundingBox_Set(TQ3BoundingBox *bBox, const TQ3Point3D *min, const TQ3Point3D *max,
                                        int isEmpty);

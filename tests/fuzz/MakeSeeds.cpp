@@ -716,6 +716,7 @@ std::vector<std::pair<std::string, Seed>> seeds()
         tail(1);
         s.submitHeld(kOtherStyle, 1, 1).submitHeld(kLight, 0, 1).endRendering();
         s.op(Op::kDuplicate).u8(kOtherStyle).held(10).op(Op::kDuplicate).u8(kLight).held(3);
+    }
     // Every quadric and solid: made (a box with face sets), drawn, bounded,
     // decomposed under each subdivision method, edited field by field at the
     // edges (box face 5, 6 and ULONG_MAX, a NaN ratio, unknown caps bits),
