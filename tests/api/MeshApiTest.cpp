@@ -1055,6 +1055,32 @@ TEST_F(MeshFillTest, CornerSetsWinOverVertexSetsWhichWinOverFaceSets)
     }
 }
 
+TEST_F(MeshFillTest, TheMeshsOwnSetAndAnEmptyMeshDecomposeAsTriMeshes)
+{
+    TQ3GeometryObject mesh = newMesh();
+    const Triangles none = decompose(mesh);
+    EXPECT_TRUE(none.points.empty());
+    EXPECT_TRUE(none.indices.empty());
+    TQ3AttributeSet red = colorSet(1, 0, 0);
+    EXPECT_EQ(Q3Geometry_SetAttributeSet(mesh, red), kQ3Success);
+    TQ3AttributeSet got = nullptr;
+    EXPECT_EQ(Q3Geometry_GetAttributeSet(mesh, &got), kQ3Success);
+    EXPECT_EQ(got, red);
+    Q3Object_Dispose(got);
+    face(mesh, {vertex(mesh, 0, 0, 0), vertex(mesh, 1, 0, 0), vertex(mesh, 1, 1, 0), vertex(mesh, 0, 1, 0)});
+    EXPECT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
+    TQ3GeometryObject tri = own(Q3Geometry_GetDecomposed(mesh, view()));
+    TQ3BoundingBox box;
+    EXPECT_EQ(Q3View_EndBoundingBox(view(), &box), kQ3ViewStatusDone);
+    ASSERT_NE(tri, nullptr);
+    TQ3TriMeshData data{};
+    ASSERT_EQ(Q3TriMesh_GetData(tri, &data), kQ3Success);
+    EXPECT_EQ(data.numTriangles, 2u);
+    EXPECT_EQ(data.numPoints, 4u);
+    EXPECT_EQ(data.triMeshAttributeSet, red);
+    EXPECT_EQ(Q3TriMesh_EmptyData(&data), kQ3Success);
+}
+
 TEST(MeshApiUninitialized, EveryFunctionFailsWithNotInitialized)
 {
     ASSERT_EQ(Q3IsInitialized(), kQ3False);
