@@ -15,7 +15,11 @@
 #include "QD3DView.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
+#include <map>
+#include <random>
 #include <cstdint>
 #include <limits>
 #include <set>
@@ -683,6 +687,93 @@ TEST_F(MeshApiTest, DelayAndResumeUpdatesChangeNoResult)
     EXPECT_EQ(count(Q3Mesh_GetNumEdges, mesh), 3u);
     EXPECT_EQ(Q3Mesh_ResumeUpdates(mesh), kQ3Success);
     EXPECT_EQ(count(Q3Mesh_GetNumComponents, mesh), 1u);
+}
+
+// A grid of quads with faces deleted at random (fixed seeds): the counts,
+// boundaries and components agree with a model of the grid kept here (edge
+// sets and a union-find over the remaining quads).
+TEST_F(MeshApiTest, RandomlyHoledGridsAgreeWithAnIndependentModel)
+{
+    constexpr int kN = 7;
+    for (unsigned seed = 1; seed <= 12; ++seed) {
+        std::mt19937 random(seed);
+        TQ3GeometryObject mesh = newMesh();
+        std::vector<TQ3MeshVertex> v;
+        for (int y = 0; y <= kN; ++y)
+            for (int x = 0; x <= kN; ++x)
+                v.push_back(vertex(mesh, float(x), float(y), float((x * y) % 3) * 0.1f));
+        auto at = [&](int x, int y) { return y * (kN + 1) + x; };
+        std::vector<std::array<int, 4>> quads;
+        std::vector<TQ3MeshFace> faces;
+        for (int y = 0; y < kN; ++y)
+            for (int x = 0; x < kN; ++x) {
+                quads.push_back({at(x, y), at(x + 1, y), at(x + 1, y + 1), at(x, y + 1)});
+                faces.push_back(face(mesh, {v[at(x, y)], v[at(x + 1, y)], v[at(x + 1, y + 1)], v[at(x, y + 1)]}));
+            }
+        std::vector<bool> alive(quads.size(), true);
+        for (std::size_t i = 0; i < quads.size(); ++i)
+            if (random() % 3 == 0) {
+                ASSERT_EQ(Q3Mesh_FaceDelete(mesh, faces[i]), kQ3Success);
+                alive[i] = false;
+            }
+        // The model.
+        std::map<std::pair<int, int>, int> uses;
+        std::vector<int> parent(v.size());
+        for (std::size_t i = 0; i < parent.size(); ++i)
+            parent[i] = int(i);
+        std::function<int(int)> find = [&](int a) { return parent[a] == a ? a : parent[a] = find(parent[a]); };
+        std::set<int> used;
+        std::size_t liveFaces = 0;
+        for (std::size_t i = 0; i < quads.size(); ++i) {
+            if (!alive[i])
+                continue;
+            ++liveFaces;
+            for (int k = 0; k < 4; ++k) {
+                const int a = quads[i][k], b = quads[i][(k + 1) % 4];
+                ++uses[{std::min(a, b), std::max(a, b)}];
+                parent[find(a)] = find(b);
+                used.insert(a);
+            }
+        }
+        std::set<int> roots, onBoundary;
+        for (int a : used)
+            roots.insert(find(a));
+        for (const auto& u : uses)
+            if (u.second == 1) {
+                onBoundary.insert(u.first.first);
+                onBoundary.insert(u.first.second);
+            }
+        EXPECT_EQ(count(Q3Mesh_GetNumFaces, mesh), liveFaces) << seed;
+        EXPECT_EQ(count(Q3Mesh_GetNumEdges, mesh), uses.size()) << seed;
+        EXPECT_EQ(count(Q3Mesh_GetNumComponents, mesh), roots.size()) << seed;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            TQ3Boolean boundary = kQ3False;
+            ASSERT_EQ(Q3Mesh_GetVertexOnBoundary(mesh, v[i], &boundary), kQ3Success);
+            EXPECT_EQ(boundary == kQ3True, onBoundary.count(int(i)) == 1) << seed << " vertex " << i;
+        }
+        // Every component's vertices, summed, are the vertices in faces;
+        // each vertex's component is the one that walks over it.
+        TQ3MeshIterator it, inner;
+        TQ3MeshComponent c;
+        std::size_t inComponents = 0;
+        Q3ForEachMeshComponent(mesh, c, &it)
+        {
+            unsigned long n = 0;
+            ASSERT_EQ(Q3Mesh_GetComponentNumVertices(mesh, c, &n), kQ3Success);
+            inComponents += n;
+            TQ3MeshVertex w;
+            Q3ForEachComponentVertex(c, w, &inner)
+            {
+                TQ3MeshComponent own = nullptr;
+                ASSERT_EQ(Q3Mesh_GetVertexComponent(mesh, w, &own), kQ3Success);
+                EXPECT_EQ(own, c);
+            }
+            TQ3Boolean orientable = kQ3False;
+            ASSERT_EQ(Q3Mesh_GetComponentOrientable(mesh, c, &orientable), kQ3Success);
+            EXPECT_EQ(orientable, kQ3True);
+        }
+        EXPECT_EQ(inComponents, used.size()) << seed;
+    }
 }
 
 // ---- Iterators -----------------------------------------------------------
