@@ -32,10 +32,21 @@ namespace {
 
 using Serial = MeshGeometry::Serial;
 
+// Parts name their mesh by the mesh's own serial, and live meshes are found
+// by it, so a part serial that outlived its mesh (or was issued by an edit
+// that then failed) leads nowhere rather than to freed memory.
 struct HandleTable {
     std::mutex mutex;
-    std::unordered_map<Serial, std::pair<MeshGeometry*, MeshPart>> parts;
+    std::unordered_map<Serial, std::pair<Serial, MeshPart>> parts;
+    std::unordered_map<Serial, MeshGeometry*> meshes;
     Serial next = 1;
+
+    Serial issue()
+    {
+        if (next > (std::numeric_limits<std::uintptr_t>::max() >> 3))
+            fail(kQ3ErrorOutOfMemory, "every mesh part handle has been used");
+        return next++;
+    }
 };
 
 HandleTable& table()
@@ -73,7 +84,10 @@ std::pair<MeshGeometry*, Serial> findPart(const void* handle, MeshPart kind)
     const auto it = t.parts.find(serial);
     if (it == t.parts.end() || it->second.second != stored)
         return {nullptr, 0};
-    return {it->second.first, serial};
+    const auto mesh = t.meshes.find(it->second.first);
+    if (mesh == t.meshes.end())
+        return {nullptr, 0};
+    return {mesh->second, serial};
 }
 
 [[noreturn]] void badPart(const char* name, MeshPart kind)
@@ -118,10 +132,19 @@ private:
 
 } // namespace
 
+MeshGeometry::MeshGeometry()
+{
+    HandleTable& t = table();
+    std::lock_guard<std::mutex> lock(t.mutex);
+    m_id = t.issue();
+    t.meshes.emplace(m_id, this);
+}
+
 MeshGeometry::~MeshGeometry()
 {
     HandleTable& t = table();
     std::lock_guard<std::mutex> lock(t.mutex);
+    t.meshes.erase(m_id);
     for (const auto& v : m_vertices)
         t.parts.erase(v.first);
     for (const auto& f : m_faces)
@@ -155,7 +178,7 @@ Serial MeshGeometry::part(const void* handle, MeshPart kind, const char* name) c
     if (handle == nullptr)
         fail(kQ3ErrorNULLParameter, std::string(name) + " is NULL");
     const auto found = findPart(handle, kind);
-    if (found.first != this)
+    if (found.first != this || !holds(found.second, kind))
         badPart(name, kind);
     if (kind == MeshPart::Component && vertexComponent(found.second) != found.second)
         fail(kQ3ErrorInvalidParameter,
@@ -167,12 +190,21 @@ MeshGeometry::Serial MeshGeometry::newSerial(MeshPart kind)
 {
     HandleTable& t = table();
     std::lock_guard<std::mutex> lock(t.mutex);
-    if (t.next > (std::numeric_limits<std::uintptr_t>::max() >> kKindBits))
-        fail(kQ3ErrorOutOfMemory, "every mesh part handle has been used");
-    const Serial serial = t.next;
-    t.parts.emplace(serial, std::make_pair(this, kind));
-    ++t.next;
+    const Serial serial = t.issue();
+    t.parts.emplace(serial, std::make_pair(m_id, kind));
     return serial;
+}
+
+bool MeshGeometry::holds(Serial serial, MeshPart kind) const
+{
+    switch (kind) {
+    case MeshPart::Vertex:
+    case MeshPart::Component: return m_vertices.count(serial) != 0;
+    case MeshPart::Face: return m_faces.count(serial) != 0;
+    case MeshPart::Edge: return m_edges.count(serial) != 0;
+    case MeshPart::Contour: return m_contours.count(serial) != 0;
+    }
+    return false;
 }
 
 void MeshGeometry::topologyEdited()

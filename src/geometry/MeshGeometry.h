@@ -37,7 +37,7 @@ public:
     static constexpr TQ3ObjectType kClassType = kQ3GeometryTypeMesh;
     using Serial = std::uint64_t;
 
-    MeshGeometry() = default;
+    MeshGeometry();
     ~MeshGeometry() override;
 
     const ClassInfo& classInfo() const override { return kMeshClass; }
@@ -160,6 +160,7 @@ private:
     };
 
     Serial newSerial(MeshPart kind);
+    bool holds(Serial serial, MeshPart kind) const;
     Serial edgeBetween(Serial a, Serial b) const;
     void addContourEdges(const std::vector<Serial>& ring);
     void removeContourEdges(const std::vector<Serial>& ring);
@@ -176,6 +177,7 @@ private:
     std::map<std::pair<Serial, Serial>, Serial> m_edgeByEnds;
     Ref<AttributeSet> m_set;
     bool m_delayed = false;
+    Serial m_id = 0; // this mesh's own serial in the handle table
 
     mutable std::mutex m_derivedMutex;
     mutable Derived m_derived;
