@@ -2123,9 +2123,21 @@ private:
         if (!drawAllowed())
             return;
         const DrawTimer timer(m_drawSeconds);
-        const TQ3Object result = OBJECT(Q3Geometry_GetDecomposed(geometry, view));
-        if (result == nullptr)
+        begin();
+        const TQ3Object result = Q3Geometry_GetDecomposed(geometry, view);
+        const bool posted = Q3Error_Get(nullptr) != kQ3ErrorNone;
+        checkPosted("Q3Geometry_GetDecomposed", posted);
+        if (result == nullptr) {
+            // Another geometry, picked when no shape of this kind is held:
+            // a primitive gives NULL without an error.
+            const Held* other = heldEntry(geometry);
+            require(posted || (other != nullptr && (other->kind == Kind::kPolyLine || other->kind == Kind::kLine ||
+                                                    other->kind == Kind::kPoint || other->kind == Kind::kTriangle ||
+                                                    other->kind == Kind::kTriMesh)),
+                    "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
             return;
+        }
+        require(!posted, "Q3Geometry_GetDecomposed", "posted an error but decomposed");
         const Held* entry = heldEntry(geometry);
         require(entry != nullptr, "Q3Geometry_GetDecomposed", "decomposed something nobody holds");
         if (isQuadric(entry->kind))
