@@ -7,7 +7,11 @@
 #include "geometry/DataGeometry.h"
 #include "geometry/MeshGeometry.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <string>
+#include <vector>
 
 using namespace q3;
 using q3::api::guard;
@@ -210,8 +214,11 @@ TQ3MeshFace Q3Mesh_FaceNew(TQ3GeometryObject mesh, unsigned long numVertices, co
             fail(kQ3ErrorParameterOutOfRange, "numVertices is above kQ3GeometryMaxArrayCount");
         std::vector<S> ring(numVertices);
         for (unsigned long i = 0; i < numVertices; ++i) {
-            const std::string name = "vertices[" + std::to_string(i) + "]";
-            ring[i] = m.part(vertices[i], MeshPart::Vertex, name.c_str());
+            try {
+                ring[i] = m.part(vertices[i], MeshPart::Vertex, "the vertex");
+            } catch (const Error& error) {
+                fail(error.code(), "vertices[" + std::to_string(i) + "]: " + error.what());
+            }
         }
         std::vector<S> sorted = ring;
         std::sort(sorted.begin(), sorted.end());
