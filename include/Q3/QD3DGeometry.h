@@ -4492,11 +4492,13 @@ Q3_EXTERN_API_C(TQ3Status) Q3Mesh_SetCornerAttributeSet(TQ3GeometryObject mesh, 
  * it walks still exists: a mesh disposed (kQ3ErrorInvalidObject) or a part
  * deleted (kQ3ErrorInvalidParameter) ends the walk with that error.
  *
- * Editing during a walk never crashes. Walks over a mesh's or a
- * component's vertices, faces or edges go on after the last part given,
- * in the order parts were made: deleting the part just given (or any
- * other) is safe, and parts made meanwhile are met. The other walks list
- * the parts around their part afresh at each step and go on by position.
+ * Editing during a walk never crashes. Walks over a mesh's components,
+ * vertices, faces or edges go on after the last part given, in the order
+ * parts were made: deleting the part just given (or any other) is safe,
+ * and parts made meanwhile are met. A component's walks do the same while
+ * the component keeps its handle (see Handles above). The other walks
+ * list the parts around their part afresh at each step and go on by
+ * position.
  *
  * What each walk gives, each part once:
  *   MeshComponent  the mesh's components.      ComponentVertex/Edge  a component's vertices/edges.
