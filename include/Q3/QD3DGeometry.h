@@ -3856,6 +3856,780 @@ Q3_EXTERN_API_C(TQ3Status) Q3Torus_SetRatio(TQ3GeometryObject torus, float ratio
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetRatio(TQ3GeometryObject torus, float *ratio);
 
+/* ---- Mesh --------------------------------------------------------------- */
+
+/*
+ * A mesh is a retained polyhedral surface built and edited call by call: it
+ * has no data structure and no Submit (QuickDraw 3D 1.6 declares none); draw
+ * it with Q3Geometry_Submit or Q3Object_Submit.
+ *
+ * Parts. Vertices (a point and an attribute set) are added with
+ * Q3Mesh_VertexNew. A face is a list of contours, each a closed loop of at
+ * least 3 distinct vertices: Q3Mesh_FaceNew makes a face of one contour,
+ * Q3Mesh_FaceToContour moves another face's contours into it. A face covers
+ * what lies inside an odd number of its contours, measured in the plane of
+ * its first contour (the even-odd rule: a contour inside another is a hole,
+ * whichever way it runs). An edge joins two vertices that follow each other
+ * in some contour; faces that run along the same two vertices share it. A
+ * corner is a vertex of a face; it may have its own attribute set. A
+ * component is a maximal set of faces connected through shared vertices,
+ * with their vertices and edges; a vertex in no face belongs to none.
+ *
+ * Attributes. A triangle corner takes each attribute from its corner's set,
+ * then its vertex's, then its face's, then the mesh's (Q3Geometry_
+ * SetAttributeSet), then the view's state. An edge's diffuse colour is the
+ * colour of its line in the wireframe.
+ *
+ * Handles. TQ3MeshVertex, TQ3MeshFace, TQ3MeshEdge, TQ3MeshContour and
+ * TQ3MeshComponent are opaque values, never pointers Q3 dereferences: each
+ * names one part of one mesh and is never reused. A handle of a deleted
+ * part, of another mesh, of another kind, or any other value is refused
+ * with kQ3ErrorInvalidParameter (NULL with kQ3ErrorNULLParameter); nothing
+ * is changed and nothing is read through it. An edge lives while some
+ * contour runs along it (its attribute set goes with it). A component
+ * handle names its component by the component's first vertex (the earliest
+ * made); once an edit gives the component another first vertex (merging
+ * it into an earlier one, splitting it, deleting that vertex) the handle is
+ * refused.
+ *
+ * Order. Vertices, faces and edges are counted, indexed and iterated in the
+ * order they were made, components in the order of their first vertices.
+ * A vertex's or face's index is its place in that order (0 first), so
+ * deleting one renumbers those after it.
+ *
+ * Q3Object_Duplicate copies the whole mesh (its parts get new handles;
+ * every distinct attribute set is duplicated once). Counts are bounded: at
+ * most kQ3GeometryMaxArrayCount vertices, faces, and vertices per face
+ * (kQ3ErrorParameterOutOfRange beyond).
+ *
+ * Every function below checks, in order: Q3 is initialized; a mesh handle
+ * is not NULL (kQ3ErrorNULLParameter), a live Q3 object
+ * (kQ3ErrorInvalidObject), a mesh (kQ3ErrorInvalidObjectType); each part
+ * handle as above; each pointer is not NULL; then the function's own
+ * conditions. These common errors are not repeated below.
+ */
+
+typedef struct OpaqueTQ3MeshComponent *TQ3MeshComponent;
+typedef struct OpaqueTQ3MeshVertex *TQ3MeshVertex;
+typedef struct OpaqueTQ3MeshFace *TQ3MeshFace;
+typedef struct OpaqueTQ3MeshEdge *TQ3MeshEdge;
+typedef struct OpaqueTQ3MeshContour *TQ3MeshContour;
+
+/**
+ * Creates an empty mesh: no vertices, faces or edges.
+ *
+ * @return the new mesh, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorOutOfMemory        the mesh could not be allocated.
+ *
+ * Ownership: the caller owns the one reference to the new mesh.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Mesh_New(void);
+
+/**
+ * Adds a vertex at vertex->point with the attribute set
+ * vertex->attributeSet (NULL for none). It belongs to no face yet.
+ *
+ * @return the new vertex, or NULL on failure (the mesh unchanged).
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorInvalidData        a coordinate of vertex->point is not finite.
+ *   kQ3ErrorInvalidObject      vertex->attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  vertex->attributeSet is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange the mesh has kQ3GeometryMaxArrayCount vertices.
+ *
+ * Ownership: the mesh takes its own reference to vertex->attributeSet.
+ */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_VertexNew(TQ3GeometryObject mesh, const TQ3Vertex3D *vertex);
+
+/**
+ * Adds a face of one contour running through vertices[0 .. numVertices-1]
+ * (closed from the last back to the first), with the attribute set
+ * attributeSet (NULL for none). Edges are made where the face runs between
+ * two vertices no contour joined before.
+ *
+ * @return the new face, or NULL on failure (the mesh unchanged).
+ *
+ * Errors (besides the common ones; vertices is checked for NULL first):
+ *   kQ3ErrorGeometryInsufficientNumberOfPoints numVertices < 3.
+ *   kQ3ErrorParameterOutOfRange numVertices > kQ3GeometryMaxArrayCount, or
+ *                              the mesh has kQ3GeometryMaxArrayCount faces.
+ *   kQ3ErrorNULLParameter      an entry of vertices is NULL.
+ *   kQ3ErrorInvalidParameter   an entry is not a vertex of this mesh, or a
+ *                              vertex appears twice.
+ *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
+ *
+ * Ownership: the mesh takes its own reference to attributeSet.
+ */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_FaceNew(TQ3GeometryObject mesh, unsigned long numVertices,
+                                            const TQ3MeshVertex *vertices, TQ3AttributeSet attributeSet);
+
+/**
+ * Deletes a vertex and every face that has it as a corner (with those
+ * faces' contours, corners and the edges no other contour runs along).
+ *
+ * @return kQ3Success, or kQ3Failure with the mesh unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: the references the mesh held for what it deletes are released.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_VertexDelete(TQ3GeometryObject mesh, TQ3MeshVertex vertex);
+
+/**
+ * Deletes a face with its contours and corners, and the edges no other
+ * contour runs along. Its vertices stay.
+ *
+ * @return kQ3Success, or kQ3Failure with the mesh unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: the references the mesh held for what it deletes are released.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_FaceDelete(TQ3GeometryObject mesh, TQ3MeshFace face);
+
+/**
+ * QuickDraw 3D let a program suspend the mesh's bookkeeping during long
+ * edits. Q3 works out components, indices and orientation only when they
+ * are asked for, so every result is the same with or without it; the call
+ * marks the mesh as delayed until Q3Mesh_ResumeUpdates.
+ *
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_DelayUpdates(TQ3GeometryObject mesh);
+
+/**
+ * Ends Q3Mesh_DelayUpdates (a mesh that is not delayed stays as it is).
+ *
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_ResumeUpdates(TQ3GeometryObject mesh);
+
+/**
+ * Moves every contour of face to the end of containerFace's contours (a
+ * hole, or an island in a hole, by the even-odd rule) and deletes face with
+ * its attribute set; its corners' attribute sets move with the contours
+ * where containerFace has no corner set for that vertex.
+ *
+ * @return the contour that was face's first, or NULL on failure (the mesh
+ *         unchanged).
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorInvalidParameter   face is containerFace, or containerFace
+ *                              would pass kQ3GeometryMaxArrayCount vertices.
+ *
+ * Ownership: face's attribute set reference is released.
+ */
+Q3_EXTERN_API_C(TQ3MeshContour) Q3Mesh_FaceToContour(TQ3GeometryObject mesh, TQ3MeshFace containerFace,
+                                                     TQ3MeshFace face);
+
+/**
+ * Takes contour out of its face and makes it a face of its own, with no
+ * attribute set; the corner sets of its vertices are copied to the new
+ * face. A contour that is its face's only one is already a face: that face
+ * is returned and nothing changes.
+ *
+ * @return the face, or NULL on failure (the mesh unchanged).
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorParameterOutOfRange the mesh has kQ3GeometryMaxArrayCount faces.
+ *
+ * Ownership: no references are handed to the caller.
+ */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_ContourToFace(TQ3GeometryObject mesh, TQ3MeshContour contour);
+
+/**
+ * The number of components (connected sets of faces) of the mesh.
+ *
+ * @return kQ3Success, or kQ3Failure with *numComponents unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetNumComponents(TQ3GeometryObject mesh, unsigned long *numComponents);
+
+/**
+ * The number of edges of the mesh.
+ *
+ * @return kQ3Success, or kQ3Failure with *numEdges unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetNumEdges(TQ3GeometryObject mesh, unsigned long *numEdges);
+
+/**
+ * The number of vertices of the mesh, in faces or not.
+ *
+ * @return kQ3Success, or kQ3Failure with *numVertices unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetNumVertices(TQ3GeometryObject mesh, unsigned long *numVertices);
+
+/**
+ * The number of faces of the mesh.
+ *
+ * @return kQ3Success, or kQ3Failure with *numFaces unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetNumFaces(TQ3GeometryObject mesh, unsigned long *numFaces);
+
+/**
+ * The number of corners that have an attribute set of their own
+ * (Q3Mesh_SetCornerAttributeSet): the corners a 3DMF file lists.
+ *
+ * @return kQ3Success, or kQ3Failure with *numCorners unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetNumCorners(TQ3GeometryObject mesh, unsigned long *numCorners);
+
+/**
+ * Whether every component is orientable: its faces can each be given a
+ * direction so that every edge two face sides run along is run in opposite
+ * directions by them. An edge that more than two sides run along makes its
+ * component not orientable. A mesh with no faces is orientable.
+ *
+ * @return kQ3Success, or kQ3Failure with *orientable unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetOrientable(TQ3GeometryObject mesh, TQ3Boolean *orientable);
+
+/**
+ * The number of vertices of a component.
+ *
+ * @return kQ3Success, or kQ3Failure with *numVertices unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetComponentNumVertices(TQ3GeometryObject mesh, TQ3MeshComponent component,
+                                                          unsigned long *numVertices);
+
+/**
+ * The number of edges of a component.
+ *
+ * @return kQ3Success, or kQ3Failure with *numEdges unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetComponentNumEdges(TQ3GeometryObject mesh, TQ3MeshComponent component,
+                                                       unsigned long *numEdges);
+
+/**
+ * The smallest axis-aligned box holding a component's vertices (isEmpty is
+ * kQ3False).
+ *
+ * @return kQ3Success, or kQ3Failure with *boundingBox unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetComponentBoundingBox(TQ3GeometryObject mesh, TQ3MeshComponent component,
+                                                          TQ3BoundingBox *boundingBox);
+
+/**
+ * Whether a component is orientable (Q3Mesh_GetOrientable's rule).
+ *
+ * @return kQ3Success, or kQ3Failure with *orientable unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetComponentOrientable(TQ3GeometryObject mesh, TQ3MeshComponent component,
+                                                         TQ3Boolean *orientable);
+
+/**
+ * A vertex's coordinates.
+ *
+ * @return kQ3Success, or kQ3Failure with *coordinates unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetVertexCoordinates(TQ3GeometryObject mesh, TQ3MeshVertex vertex,
+                                                       TQ3Point3D *coordinates);
+
+/**
+ * A vertex's index: its place among the mesh's vertices in the order they
+ * were made, 0 first.
+ *
+ * @return kQ3Success, or kQ3Failure with *index unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetVertexIndex(TQ3GeometryObject mesh, TQ3MeshVertex vertex, unsigned long *index);
+
+/**
+ * Whether a vertex is an end of a boundary edge (Q3Mesh_GetEdgeOnBoundary);
+ * a vertex in no face is not.
+ *
+ * @return kQ3Success, or kQ3Failure with *onBoundary unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetVertexOnBoundary(TQ3GeometryObject mesh, TQ3MeshVertex vertex,
+                                                      TQ3Boolean *onBoundary);
+
+/**
+ * The component a vertex belongs to. A vertex in no face belongs to none:
+ * *component is then NULL and the notice kQ3NoticeMeshVertexHasNoComponent
+ * is posted (the call succeeds).
+ *
+ * @return kQ3Success, or kQ3Failure with *component unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetVertexComponent(TQ3GeometryObject mesh, TQ3MeshVertex vertex,
+                                                     TQ3MeshComponent *component);
+
+/**
+ * A vertex's attribute set.
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: *attributeSet is a new reference for the caller, or NULL.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetVertexAttributeSet(TQ3GeometryObject mesh, TQ3MeshVertex vertex,
+                                                        TQ3AttributeSet *attributeSet);
+
+/**
+ * Moves a vertex.
+ *
+ * @return kQ3Success, or kQ3Failure with the mesh unchanged.
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorInvalidData        a coordinate is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_SetVertexCoordinates(TQ3GeometryObject mesh, TQ3MeshVertex vertex,
+                                                       const TQ3Point3D *coordinates);
+
+/**
+ * Replaces a vertex's attribute set (NULL removes it).
+ *
+ * @return kQ3Success, or kQ3Failure with the mesh unchanged.
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
+ *
+ * Ownership: the mesh takes its own reference to attributeSet and releases
+ * the old one.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_SetVertexAttributeSet(TQ3GeometryObject mesh, TQ3MeshVertex vertex,
+                                                        TQ3AttributeSet attributeSet);
+
+/**
+ * The number of corners of a face: its contours' vertices, each vertex
+ * counted once.
+ *
+ * @return kQ3Success, or kQ3Failure with *numVertices unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetFaceNumVertices(TQ3GeometryObject mesh, TQ3MeshFace face,
+                                                     unsigned long *numVertices);
+
+/**
+ * The plane of a face's first contour: a unit normal (the direction from
+ * which the contour runs counterclockwise, by Newell's method) and the
+ * constant d of normal . p + d = 0 at the contour's centroid.
+ *
+ * @return kQ3Success, or kQ3Failure with *planeEquation unchanged.
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorDegenerateGeometry the first contour encloses no area.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetFacePlaneEquation(TQ3GeometryObject mesh, TQ3MeshFace face,
+                                                       TQ3PlaneEquation *planeEquation);
+
+/**
+ * The number of contours of a face (1 for a face made by Q3Mesh_FaceNew).
+ *
+ * @return kQ3Success, or kQ3Failure with *numContours unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetFaceNumContours(TQ3GeometryObject mesh, TQ3MeshFace face,
+                                                     unsigned long *numContours);
+
+/**
+ * A face's index: its place among the mesh's faces in the order they were
+ * made, 0 first.
+ *
+ * @return kQ3Success, or kQ3Failure with *index unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetFaceIndex(TQ3GeometryObject mesh, TQ3MeshFace face, unsigned long *index);
+
+/**
+ * The component a face belongs to.
+ *
+ * @return kQ3Success, or kQ3Failure with *component unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetFaceComponent(TQ3GeometryObject mesh, TQ3MeshFace face,
+                                                   TQ3MeshComponent *component);
+
+/**
+ * A face's attribute set.
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: *attributeSet is a new reference for the caller, or NULL.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetFaceAttributeSet(TQ3GeometryObject mesh, TQ3MeshFace face,
+                                                      TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces a face's attribute set (NULL removes it).
+ *
+ * @return kQ3Success, or kQ3Failure with the mesh unchanged.
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
+ *
+ * Ownership: the mesh takes its own reference to attributeSet and releases
+ * the old one.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_SetFaceAttributeSet(TQ3GeometryObject mesh, TQ3MeshFace face,
+                                                      TQ3AttributeSet attributeSet);
+
+/**
+ * An edge's two vertices, in the direction of the contour that made it.
+ *
+ * @return kQ3Success, or kQ3Failure with *vertex1 and *vertex2 unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetEdgeVertices(TQ3GeometryObject mesh, TQ3MeshEdge edge, TQ3MeshVertex *vertex1,
+                                                  TQ3MeshVertex *vertex2);
+
+/**
+ * The faces on either side of an edge: the first two (in the order faces
+ * were made) whose contours run along it; *face2 is NULL on a boundary
+ * edge.
+ *
+ * @return kQ3Success, or kQ3Failure with *face1 and *face2 unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetEdgeFaces(TQ3GeometryObject mesh, TQ3MeshEdge edge, TQ3MeshFace *face1,
+                                               TQ3MeshFace *face2);
+
+/**
+ * Whether an edge is on the mesh's boundary: exactly one contour side runs
+ * along it.
+ *
+ * @return kQ3Success, or kQ3Failure with *onBoundary unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetEdgeOnBoundary(TQ3GeometryObject mesh, TQ3MeshEdge edge,
+                                                    TQ3Boolean *onBoundary);
+
+/**
+ * The component an edge belongs to.
+ *
+ * @return kQ3Success, or kQ3Failure with *component unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetEdgeComponent(TQ3GeometryObject mesh, TQ3MeshEdge edge,
+                                                   TQ3MeshComponent *component);
+
+/**
+ * An edge's attribute set.
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: *attributeSet is a new reference for the caller, or NULL.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetEdgeAttributeSet(TQ3GeometryObject mesh, TQ3MeshEdge edge,
+                                                      TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces an edge's attribute set (NULL removes it).
+ *
+ * @return kQ3Success, or kQ3Failure with the mesh unchanged.
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
+ *
+ * Ownership: the mesh takes its own reference to attributeSet and releases
+ * the old one.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_SetEdgeAttributeSet(TQ3GeometryObject mesh, TQ3MeshEdge edge,
+                                                      TQ3AttributeSet attributeSet);
+
+/**
+ * The face a contour belongs to.
+ *
+ * @return kQ3Success, or kQ3Failure with *face unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetContourFace(TQ3GeometryObject mesh, TQ3MeshContour contour, TQ3MeshFace *face);
+
+/**
+ * The number of vertices of a contour.
+ *
+ * @return kQ3Success, or kQ3Failure with *numVertices unchanged.
+ *
+ * Errors: the common ones only.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetContourNumVertices(TQ3GeometryObject mesh, TQ3MeshContour contour,
+                                                        unsigned long *numVertices);
+
+/**
+ * The attribute set of the corner of face at vertex, or NULL when it has
+ * none.
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorInvalidParameter   vertex is not a corner of face.
+ *
+ * Ownership: *attributeSet is a new reference for the caller, or NULL.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_GetCornerAttributeSet(TQ3GeometryObject mesh, TQ3MeshVertex vertex,
+                                                        TQ3MeshFace face, TQ3AttributeSet *attributeSet);
+
+/**
+ * Gives the corner of face at vertex its own attribute set (NULL removes
+ * it): in that face the vertex takes its attributes from it first.
+ *
+ * @return kQ3Success, or kQ3Failure with the mesh unchanged.
+ *
+ * Errors (besides the common ones):
+ *   kQ3ErrorInvalidParameter   vertex is not a corner of face.
+ *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
+ *
+ * Ownership: the mesh takes its own reference to attributeSet and releases
+ * the old one.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Mesh_SetCornerAttributeSet(TQ3GeometryObject mesh, TQ3MeshVertex vertex,
+                                                        TQ3MeshFace face, TQ3AttributeSet attributeSet);
+
+/*
+ * Iterators. Each Q3Mesh_FirstXxx fills *iterator and returns the first
+ * part (NULL when there is none); Q3Mesh_NextXxx returns the next one, and
+ * NULL once all were given (or after a failure). The caller owns the
+ * iterator; its fields are Q3's (they hold handles and positions, never
+ * pointers into the mesh). A Next call checks that the iterator was filled
+ * by the matching First (kQ3ErrorInvalidParameter otherwise) and that what
+ * it walks still exists: a mesh disposed (kQ3ErrorInvalidObject) or a part
+ * deleted (kQ3ErrorInvalidParameter) ends the walk with that error.
+ *
+ * Editing during a walk never crashes. Walks over a mesh's components,
+ * vertices, faces or edges go on after the last part given, in the order
+ * parts were made: deleting the part just given (or any other) is safe,
+ * and parts made meanwhile are met. A component's walks do the same while
+ * the component keeps its handle (see Handles above). The other walks
+ * list the parts around their part afresh at each step and go on by
+ * position.
+ *
+ * What each walk gives, each part once:
+ *   MeshComponent  the mesh's components.      ComponentVertex/Edge  a component's vertices/edges.
+ *   MeshVertex/Face/Edge  the mesh's parts.
+ *   VertexEdge     the edges ending at the vertex.
+ *   VertexVertex   the vertices joined to it by an edge.
+ *   VertexFace     the faces it is a corner of.
+ *   FaceEdge       the edges its contours run along, contour by contour.
+ *   FaceVertex     its corners, contour by contour.
+ *   FaceFace       the other faces sharing an edge with it.
+ *   FaceContour    its contours, the first one first.
+ *   ContourEdge/Vertex  the contour's edges/vertices in its order.
+ *   ContourFace    the faces, other than its own, sharing an edge with it.
+ *
+ * Errors of every First call: kQ3ErrorNotInitialized; kQ3ErrorNULLParameter
+ * (the mesh or part, or iterator, is NULL); for a mesh kQ3ErrorInvalidObject
+ * and kQ3ErrorInvalidObjectType; for a part kQ3ErrorInvalidParameter.
+ * Every Next call: kQ3ErrorNotInitialized, kQ3ErrorNULLParameter (iterator),
+ * and the errors above. On failure NULL is returned and *iterator is left
+ * ended. No references change.
+ */
+struct TQ3MeshIterator {
+    void *var1;
+    void *var2;
+    void *var3;
+    struct {
+        void *field1;
+        char field2[4];
+    } var4;
+};
+typedef struct TQ3MeshIterator TQ3MeshIterator;
+
+/** The first component of mesh (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshComponent) Q3Mesh_FirstMeshComponent(TQ3GeometryObject mesh, TQ3MeshIterator *iterator);
+/** The next component (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshComponent) Q3Mesh_NextMeshComponent(TQ3MeshIterator *iterator);
+/** The first vertex of component (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_FirstComponentVertex(TQ3MeshComponent component, TQ3MeshIterator *iterator);
+/** The next vertex of the component (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_NextComponentVertex(TQ3MeshIterator *iterator);
+/** The first edge of component (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_FirstComponentEdge(TQ3MeshComponent component, TQ3MeshIterator *iterator);
+/** The next edge of the component (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_NextComponentEdge(TQ3MeshIterator *iterator);
+/** The first vertex of mesh (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_FirstMeshVertex(TQ3GeometryObject mesh, TQ3MeshIterator *iterator);
+/** The next vertex of the mesh (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_NextMeshVertex(TQ3MeshIterator *iterator);
+/** The first face of mesh (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_FirstMeshFace(TQ3GeometryObject mesh, TQ3MeshIterator *iterator);
+/** The next face of the mesh (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_NextMeshFace(TQ3MeshIterator *iterator);
+/** The first edge of mesh (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_FirstMeshEdge(TQ3GeometryObject mesh, TQ3MeshIterator *iterator);
+/** The next edge of the mesh (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_NextMeshEdge(TQ3MeshIterator *iterator);
+/** The first edge ending at vertex (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_FirstVertexEdge(TQ3MeshVertex vertex, TQ3MeshIterator *iterator);
+/** The next edge ending at the vertex (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_NextVertexEdge(TQ3MeshIterator *iterator);
+/** The first vertex joined to vertex by an edge (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_FirstVertexVertex(TQ3MeshVertex vertex, TQ3MeshIterator *iterator);
+/** The next vertex joined to the vertex (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_NextVertexVertex(TQ3MeshIterator *iterator);
+/** The first face vertex is a corner of (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_FirstVertexFace(TQ3MeshVertex vertex, TQ3MeshIterator *iterator);
+/** The next face the vertex is a corner of (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_NextVertexFace(TQ3MeshIterator *iterator);
+/** The first edge of face (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_FirstFaceEdge(TQ3MeshFace face, TQ3MeshIterator *iterator);
+/** The next edge of the face (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_NextFaceEdge(TQ3MeshIterator *iterator);
+/** The first corner of face (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_FirstFaceVertex(TQ3MeshFace face, TQ3MeshIterator *iterator);
+/** The next corner of the face (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_NextFaceVertex(TQ3MeshIterator *iterator);
+/** The first face sharing an edge with face (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_FirstFaceFace(TQ3MeshFace face, TQ3MeshIterator *iterator);
+/** The next face sharing an edge with the face (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_NextFaceFace(TQ3MeshIterator *iterator);
+/** The first contour of face (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshContour) Q3Mesh_FirstFaceContour(TQ3MeshFace face, TQ3MeshIterator *iterator);
+/** The next contour of the face (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshContour) Q3Mesh_NextFaceContour(TQ3MeshIterator *iterator);
+/** The first edge of contour (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_FirstContourEdge(TQ3MeshContour contour, TQ3MeshIterator *iterator);
+/** The next edge of the contour (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshEdge) Q3Mesh_NextContourEdge(TQ3MeshIterator *iterator);
+/** The first vertex of contour (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_FirstContourVertex(TQ3MeshContour contour, TQ3MeshIterator *iterator);
+/** The next vertex of the contour (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_NextContourVertex(TQ3MeshIterator *iterator);
+/** The first face sharing an edge with contour (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_FirstContourFace(TQ3MeshContour contour, TQ3MeshIterator *iterator);
+/** The next face sharing an edge with the contour (see Iterators above). */
+Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_NextContourFace(TQ3MeshIterator *iterator);
+
+/* QuickDraw 3D's loops over the iterators, as `for` statements. */
+#define Q3ForEachMeshComponent(m, c, i) \
+    for ((c) = Q3Mesh_FirstMeshComponent((m), (i)); (c); (c) = Q3Mesh_NextMeshComponent((i)))
+#define Q3ForEachComponentVertex(c, v, i) \
+    for ((v) = Q3Mesh_FirstComponentVertex((c), (i)); (v); (v) = Q3Mesh_NextComponentVertex((i)))
+#define Q3ForEachComponentEdge(c, e, i) \
+    for ((e) = Q3Mesh_FirstComponentEdge((c), (i)); (e); (e) = Q3Mesh_NextComponentEdge((i)))
+#define Q3ForEachMeshVertex(m, v, i) \
+    for ((v) = Q3Mesh_FirstMeshVertex((m), (i)); (v); (v) = Q3Mesh_NextMeshVertex((i)))
+#define Q3ForEachMeshFace(m, f, i) \
+    for ((f) = Q3Mesh_FirstMeshFace((m), (i)); (f); (f) = Q3Mesh_NextMeshFace((i)))
+#define Q3ForEachMeshEdge(m, e, i) \
+    for ((e) = Q3Mesh_FirstMeshEdge((m), (i)); (e); (e) = Q3Mesh_NextMeshEdge((i)))
+#define Q3ForEachVertexEdge(v, e, i) \
+    for ((e) = Q3Mesh_FirstVertexEdge((v), (i)); (e); (e) = Q3Mesh_NextVertexEdge((i)))
+#define Q3ForEachVertexVertex(v, n, i) \
+    for ((n) = Q3Mesh_FirstVertexVertex((v), (i)); (n); (n) = Q3Mesh_NextVertexVertex((i)))
+#define Q3ForEachVertexFace(v, f, i) \
+    for ((f) = Q3Mesh_FirstVertexFace((v), (i)); (f); (f) = Q3Mesh_NextVertexFace((i)))
+#define Q3ForEachFaceEdge(f, e, i) \
+    for ((e) = Q3Mesh_FirstFaceEdge((f), (i)); (e); (e) = Q3Mesh_NextFaceEdge((i)))
+#define Q3ForEachFaceVertex(f, v, i) \
+    for ((v) = Q3Mesh_FirstFaceVertex((f), (i)); (v); (v) = Q3Mesh_NextFaceVertex((i)))
+#define Q3ForEachFaceFace(f, n, i) \
+    for ((n) = Q3Mesh_FirstFaceFace((f), (i)); (n); (n) = Q3Mesh_NextFaceFace((i)))
+#define Q3ForEachFaceContour(f, h, i) \
+    for ((h) = Q3Mesh_FirstFaceContour((f), (i)); (h); (h) = Q3Mesh_NextFaceContour((i)))
+#define Q3ForEachContourEdge(h, e, i) \
+    for ((e) = Q3Mesh_FirstContourEdge((h), (i)); (e); (e) = Q3Mesh_NextContourEdge((i)))
+#define Q3ForEachContourVertex(h, v, i) \
+    for ((v) = Q3Mesh_FirstContourVertex((h), (i)); (v); (v) = Q3Mesh_NextContourVertex((i)))
+#define Q3ForEachContourFace(h, f, i) \
+    for ((f) = Q3Mesh_FirstContourFace((h), (i)); (f); (f) = Q3Mesh_NextContourFace((i)))
+
 #ifdef __cplusplus
 }
 #endif

@@ -530,6 +530,82 @@ static TQ3Status submit_all_quadrics(TQ3ViewObject view)
     return status;
 }
 
+/* ---- A Mesh: a holed face and a folded neighbour ------------------------ */
+
+static TQ3MeshVertex mesh_vertex(TQ3GeometryObject mesh, float x, float y, float z, TQ3AttributeSet set)
+{
+    TQ3Vertex3D vertex;
+    vertex.point = point3(x, y, z);
+    vertex.attributeSet = set;
+    return Q3Mesh_VertexNew(mesh, &vertex);
+}
+
+/*
+ * An orange square with a square hole (a second contour, so the background
+ * shows through it), and beside it, sharing the square's right edge, a
+ * quad folded back whose vertices are red, green and blue; the shared top
+ * corner is yellow as a vertex, but magenta in the folded face (a corner
+ * set). The shared edge is white in the wireframe (an edge set).
+ */
+static TQ3Status submit_mesh(TQ3ViewObject view)
+{
+    TQ3GeometryObject mesh = Q3Mesh_New();
+    TQ3AttributeSet orange = color_set(rgb(0.95f, 0.55f, 0.15f));
+    TQ3AttributeSet red = color_set(rgb(0.90f, 0.15f, 0.15f));
+    TQ3AttributeSet green = color_set(rgb(0.20f, 0.85f, 0.30f));
+    TQ3AttributeSet blue = color_set(rgb(0.20f, 0.35f, 0.95f));
+    TQ3AttributeSet yellow = color_set(rgb(0.95f, 0.90f, 0.20f));
+    TQ3AttributeSet magenta = color_set(rgb(0.90f, 0.25f, 0.85f));
+    TQ3AttributeSet white = color_set(rgb(1.0f, 1.0f, 1.0f));
+    TQ3MeshVertex square[4], hole[4], fold[4];
+    TQ3MeshFace outer, inner, side;
+    TQ3MeshIterator iterator;
+    TQ3MeshEdge edge;
+    TQ3Status status = kQ3Failure;
+
+    if (mesh != NULL) {
+        Q3Mesh_DelayUpdates(mesh);
+        square[0] = mesh_vertex(mesh, -2.2f, -1.5f, 0.0f, NULL);
+        square[1] = mesh_vertex(mesh, 0.2f, -1.5f, 0.0f, NULL);
+        square[2] = mesh_vertex(mesh, 0.2f, 1.5f, 0.0f, yellow);
+        square[3] = mesh_vertex(mesh, -2.2f, 1.5f, 0.0f, NULL);
+        hole[0] = mesh_vertex(mesh, -1.5f, -0.6f, 0.0f, NULL);
+        hole[1] = mesh_vertex(mesh, -0.5f, -0.6f, 0.0f, NULL);
+        hole[2] = mesh_vertex(mesh, -0.5f, 0.6f, 0.0f, NULL);
+        hole[3] = mesh_vertex(mesh, -1.5f, 0.6f, 0.0f, NULL);
+        fold[0] = square[1];
+        fold[1] = mesh_vertex(mesh, 2.0f, -1.2f, -1.0f, red);
+        fold[2] = mesh_vertex(mesh, 2.0f, 1.2f, -1.0f, green);
+        fold[3] = square[2];
+        outer = Q3Mesh_FaceNew(mesh, 4, square, orange);
+        inner = Q3Mesh_FaceNew(mesh, 4, hole, NULL);
+        side = Q3Mesh_FaceNew(mesh, 4, fold, NULL);
+        Q3Mesh_SetVertexAttributeSet(mesh, square[1], blue);
+        if (outer != NULL && inner != NULL && side != NULL && Q3Mesh_FaceToContour(mesh, outer, inner) != NULL &&
+            Q3Mesh_SetCornerAttributeSet(mesh, square[2], side, magenta) == kQ3Success &&
+            Q3Mesh_SetCornerAttributeSet(mesh, square[1], outer, orange) == kQ3Success &&
+            Q3Mesh_SetCornerAttributeSet(mesh, square[2], outer, orange) == kQ3Success) {
+            Q3ForEachFaceEdge(side, edge, &iterator)
+            {
+                TQ3MeshFace face1, face2;
+                if (Q3Mesh_GetEdgeFaces(mesh, edge, &face1, &face2) == kQ3Success && face2 != NULL)
+                    Q3Mesh_SetEdgeAttributeSet(mesh, edge, white);
+            }
+            Q3Mesh_ResumeUpdates(mesh);
+            status = Q3Geometry_Submit(mesh, view);
+        }
+    }
+    dispose(mesh);
+    dispose(orange);
+    dispose(red);
+    dispose(green);
+    dispose(blue);
+    dispose(yellow);
+    dispose(magenta);
+    dispose(white);
+    return status;
+}
+
 /* ---- The scenes ---------------------------------------------------------- */
 
 static const Q3Scene kScenes[] = {
@@ -559,6 +635,10 @@ static const Q3Scene kScenes[] = {
      kQ3RendererTypeInteractive, {0.0f, 3.2f, 4.2f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_tori},
     {"quadrics_wireframe", "Box, cone, cylinder, disk; ellipse, ellipsoid, torus in wireframe, 12-pixel subdivision",
      kQ3RendererTypeWireFrame, {1.2f, 1.6f, 7.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_all_quadrics},
+    {"mesh_interactive", "A Mesh: an orange face with a hole, a folded face in vertex colours and a magenta corner",
+     kQ3RendererTypeInteractive, {0.0f, 0.0f, 6.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_mesh},
+    {"mesh_wireframe", "The same Mesh outlined: both contours of the holed face, the shared edge in white",
+     kQ3RendererTypeWireFrame, {0.0f, 0.0f, 6.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_mesh},
 };
 
 unsigned long q3scene_count(void)

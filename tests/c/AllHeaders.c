@@ -147,6 +147,30 @@ int main(void)
             kQ3SubdivisionMaxTrianglesPerSurface < 1)
             return 13;
     }
+    {
+        /* A mesh from C: a triangle, walked with Apple's macros. */
+        TQ3GeometryObject mesh = Q3Mesh_New();
+        TQ3Vertex3D corner = {{0, 0, 0}, NULL};
+        TQ3MeshVertex vertices[3];
+        TQ3MeshVertex vertex;
+        TQ3MeshIterator iterator;
+        unsigned long numVertices = 0, walked = 0;
+        int i;
+        if (mesh == NULL)
+            return 14;
+        for (i = 0; i < 3; i++) {
+            corner.point.x = (float)(i == 1);
+            corner.point.y = (float)(i == 2);
+            vertices[i] = Q3Mesh_VertexNew(mesh, &corner);
+        }
+        if (Q3Mesh_FaceNew(mesh, 3, vertices, NULL) == NULL ||
+            Q3Mesh_GetNumVertices(mesh, &numVertices) != kQ3Success || numVertices != 3)
+            return 14;
+        Q3ForEachMeshVertex(mesh, vertex, &iterator) walked++;
+        if (walked != 3)
+            return 14;
+        Q3Object_Dispose(mesh);
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

@@ -61,6 +61,7 @@
 #include <initializer_list>
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace q3fuzz {
@@ -76,6 +77,10 @@ constexpr int kMaxViews = 3;
 constexpr int kMaxLoops = 24;                   // rendering and bounding loops started
 constexpr int kMaxDrawContexts = 6;
 constexpr std::size_t kMaxStale = 64;
+// Meshes: how many one input may make, their vertices, the part handles kept.
+constexpr int kMaxMeshes = 8;
+constexpr unsigned long kMaxMeshVertices = 4096;
+constexpr std::size_t kMaxMeshParts = 256;
 // Groups may share subgroups, so what one submit or duplicate meets can grow
 // exponentially with depth: those calls run only on groups that meet at
 // most this many objects, and groups take objects only up to kMaxGroupSize.
@@ -192,8 +197,8 @@ bool sameBytes(const T& a, const T& b)
 
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                   kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup,
-                  kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus };
-constexpr int kKindCount = 25;
+                  kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh };
+constexpr int kKindCount = 26;
 constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
 
 struct Held {
@@ -620,6 +625,7 @@ private:
         case Op::kStylesShadersLights: stylesShadersLights(); break;
         case Op::kCurveTools: curveTools(); break;
         case Op::kQuadrics: quadrics(); break;
+        case Op::kMeshes: meshes(); break;
         case Op::kCount: break;
         }
     }
@@ -2117,9 +2123,21 @@ private:
         if (!drawAllowed())
             return;
         const DrawTimer timer(m_drawSeconds);
-        const TQ3Object result = OBJECT(Q3Geometry_GetDecomposed(geometry, view));
-        if (result == nullptr)
+        begin();
+        const TQ3Object result = Q3Geometry_GetDecomposed(geometry, view);
+        const bool posted = Q3Error_Get(nullptr) != kQ3ErrorNone;
+        checkPosted("Q3Geometry_GetDecomposed", posted);
+        if (result == nullptr) {
+            // Another geometry, picked when no shape of this kind is held:
+            // a primitive gives NULL without an error.
+            const Held* other = heldEntry(geometry);
+            require(posted || (other != nullptr && (other->kind == Kind::kPolyLine || other->kind == Kind::kLine ||
+                                                    other->kind == Kind::kPoint || other->kind == Kind::kTriangle ||
+                                                    other->kind == Kind::kTriMesh)),
+                    "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
             return;
+        }
+        require(!posted, "Q3Geometry_GetDecomposed", "posted an error but decomposed");
         const Held* entry = heldEntry(geometry);
         require(entry != nullptr, "Q3Geometry_GetDecomposed", "decomposed something nobody holds");
         if (isQuadric(entry->kind))
@@ -3222,6 +3240,13 @@ private:
             STATUS(Q3TriMesh_EmptyData(&mesh));
             return;
         }
+        if (holdsKind(geometry, Kind::kMesh)) {
+            // A mesh gives a TriMesh (empty for a mesh without faces).
+            require(!posted && Q3Geometry_GetType(polyline) == kQ3GeometryTypeTriMesh, "Q3Geometry_GetDecomposed",
+                    "a mesh did not give a trimesh");
+            hold(polyline, Kind::kTriMesh);
+            return;
+        }
         require(!posted && holdsKind(geometry, Kind::kCurve), "Q3Geometry_GetDecomposed",
                 "decomposed something that is not a curve");
         hold(polyline, Kind::kPolyLine);
@@ -3574,10 +3599,286 @@ private:
         }
     }
 
+    // ---- Meshes ------------------------------------------------------------
+    //
+    // Builds, edits and walks meshes with parts of this mesh, of other
+    // meshes, deleted ones and made-up handle values. Besides the error
+    // contract: a failed edit changes neither the counts nor the edit index;
+    // a successful one changes the counts as QD3DGeometry.h says; the mesh
+    // walks give each part once and as many as the counts; the components'
+    // vertices never outnumber the mesh's.
+
+    struct MeshCounts {
+        unsigned long vertices = 0, faces = 0, edges = 0, components = 0, corners = 0;
+        bool operator==(const MeshCounts& o) const
+        {
+            return vertices == o.vertices && faces == o.faces && edges == o.edges && components == o.components &&
+                   corners == o.corners;
+        }
+    };
+
+    bool meshCounts(TQ3Object mesh, MeshCounts& c)
+    {
+        return STATUS(Q3Mesh_GetNumVertices(mesh, &c.vertices)) == kQ3Success &&
+               STATUS(Q3Mesh_GetNumFaces(mesh, &c.faces)) == kQ3Success &&
+               STATUS(Q3Mesh_GetNumEdges(mesh, &c.edges)) == kQ3Success &&
+               STATUS(Q3Mesh_GetNumComponents(mesh, &c.components)) == kQ3Success &&
+               STATUS(Q3Mesh_GetNumCorners(mesh, &c.corners)) == kQ3Success;
+    }
+
+    // A part handle: one this fuzzer saw (maybe deleted since, maybe of
+    // another mesh), or a made-up value.
+    void* meshPart()
+    {
+        const std::uint8_t how = m_in.u8();
+        if (how < 200 && !m_meshParts.empty())
+            return m_meshParts[m_in.u8() % m_meshParts.size()];
+        if (how < 220)
+            return nullptr;
+        return reinterpret_cast<void*>(static_cast<std::uintptr_t>(m_in.u32()));
+    }
+
+    void rememberPart(void* part)
+    {
+        if (part == nullptr)
+            return;
+        if (m_meshParts.size() < kMaxMeshParts)
+            m_meshParts.push_back(part);
+        else
+            m_meshParts[m_in.u8() % kMaxMeshParts] = part;
+    }
+
+    // Every part of the mesh of one kind through its walk: each once, as
+    // many as counted.
+    template <class Handle>
+    void checkMeshWalk(TQ3Object mesh, Handle (*first)(TQ3GeometryObject, TQ3MeshIterator*),
+                       Handle (*next)(TQ3MeshIterator*), unsigned long expected, const char* call)
+    {
+        std::set<Handle> seen;
+        TQ3MeshIterator it;
+        for (Handle h = QUERY(first(mesh, &it), Handle(nullptr)); h != nullptr; h = QUERY(next(&it), Handle(nullptr))) {
+            require(seen.insert(h).second, call, "gave a part twice");
+            require(seen.size() <= expected, call, "gave more parts than the mesh has");
+            rememberPart(h);
+        }
+        require(seen.size() == expected, call, "gave fewer parts than the mesh has");
+    }
+
+    void meshes()
+    {
+        const std::uint8_t action = m_in.u8() % 8;
+        if (action == 0) {
+            if (m_meshes < kMaxMeshes) {
+                ++m_meshes;
+                if (const TQ3Object mesh = OBJECT(Q3Mesh_New()))
+                    hold(mesh, Kind::kMesh);
+            }
+            return;
+        }
+        const TQ3Object mesh = pick(Kind::kMesh);
+        const bool ours = holdsKind(mesh, Kind::kMesh) && m_initialized > 0;
+        MeshCounts before;
+        const bool counted = ours && meshCounts(mesh, before);
+        const unsigned long edit = ours ? editIndex(mesh) : 0;
+        bool failed = true;
+        const char* call = "Q3Mesh edit";
+        switch (action) {
+        case 1: {
+            call = "Q3Mesh_VertexNew";
+            TQ3Vertex3D v{{m_in.value(), m_in.value(), m_in.value()}, nullptr};
+            if (m_in.u8() & 1)
+                v.attributeSet = pick(Kind::kAttributeSet);
+            const bool vertexNull = m_in.u8() == 0;
+            if (before.vertices >= kMaxMeshVertices)
+                return;
+            void* made = POINTER(Q3Mesh_VertexNew(mesh, vertexNull ? nullptr : &v));
+            failed = made == nullptr;
+            rememberPart(made);
+            if (!failed) {
+                before.vertices++;
+                require(std::isfinite(v.point.x) && std::isfinite(v.point.y) && std::isfinite(v.point.z), call,
+                        "accepted a point that is not finite");
+            }
+            break;
+        }
+        case 2: {
+            call = "Q3Mesh_FaceNew";
+            std::vector<TQ3MeshVertex> ring(3 + m_in.u8() % 6);
+            const std::uint8_t source = m_in.u8();
+            // Mostly the mesh's own vertices, walked; else remembered parts.
+            std::vector<TQ3MeshVertex> own;
+            if (ours) {
+                TQ3MeshIterator it;
+                for (TQ3MeshVertex v = QUERY(Q3Mesh_FirstMeshVertex(mesh, &it), TQ3MeshVertex(nullptr));
+                     v != nullptr && own.size() < 64; v = QUERY(Q3Mesh_NextMeshVertex(&it), TQ3MeshVertex(nullptr)))
+                    own.push_back(v);
+            }
+            for (TQ3MeshVertex& v : ring)
+                v = source < 200 && !own.empty() ? own[m_in.u8() % own.size()]
+                                                 : static_cast<TQ3MeshVertex>(meshPart());
+            const unsigned long claimed = (m_in.u8() == 0) ? 2 : static_cast<unsigned long>(ring.size());
+            TQ3AttributeSet set = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+            void* made = POINTER(Q3Mesh_FaceNew(mesh, claimed, ring.data(), set));
+            failed = made == nullptr;
+            rememberPart(made);
+            if (!failed) {
+                before.faces++;
+                std::set<TQ3MeshVertex> distinct(ring.begin(), ring.end());
+                require(claimed >= 3 && distinct.size() == ring.size(), call, "accepted a bad vertex list");
+            }
+            break;
+        }
+        case 3: {
+            void* part = meshPart();
+            if (m_in.u8() & 1) {
+                call = "Q3Mesh_VertexDelete";
+                failed = STATUS(Q3Mesh_VertexDelete(mesh, static_cast<TQ3MeshVertex>(part))) == kQ3Failure;
+            } else {
+                call = "Q3Mesh_FaceDelete";
+                failed = STATUS(Q3Mesh_FaceDelete(mesh, static_cast<TQ3MeshFace>(part))) == kQ3Failure;
+                if (!failed)
+                    before.faces--;
+            }
+            break;
+        }
+        case 4: {
+            void* a = meshPart();
+            void* b = meshPart();
+            void* made = nullptr;
+            if (m_in.u8() & 1) {
+                call = "Q3Mesh_FaceToContour";
+                made = POINTER(Q3Mesh_FaceToContour(mesh, static_cast<TQ3MeshFace>(a), static_cast<TQ3MeshFace>(b)));
+                if (made != nullptr) {
+                    require(a != b, call, "made a face a contour of itself");
+                    before.faces--;
+                }
+            } else {
+                call = "Q3Mesh_ContourToFace";
+                made = POINTER(Q3Mesh_ContourToFace(mesh, static_cast<TQ3MeshContour>(a)));
+            }
+            failed = made == nullptr;
+            rememberPart(made);
+            break;
+        }
+        case 5: {
+            void* part = meshPart();
+            TQ3AttributeSet set = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+            switch (m_in.u8() % 5) {
+            case 0:
+                call = "Q3Mesh_SetVertexAttributeSet";
+                failed = STATUS(Q3Mesh_SetVertexAttributeSet(mesh, static_cast<TQ3MeshVertex>(part), set)) ==
+                         kQ3Failure;
+                break;
+            case 1:
+                call = "Q3Mesh_SetFaceAttributeSet";
+                failed = STATUS(Q3Mesh_SetFaceAttributeSet(mesh, static_cast<TQ3MeshFace>(part), set)) == kQ3Failure;
+                break;
+            case 2:
+                call = "Q3Mesh_SetEdgeAttributeSet";
+                failed = STATUS(Q3Mesh_SetEdgeAttributeSet(mesh, static_cast<TQ3MeshEdge>(part), set)) == kQ3Failure;
+                break;
+            case 3: {
+                call = "Q3Mesh_SetCornerAttributeSet";
+                void* face = meshPart();
+                failed = STATUS(Q3Mesh_SetCornerAttributeSet(mesh, static_cast<TQ3MeshVertex>(part),
+                                                             static_cast<TQ3MeshFace>(face), set)) == kQ3Failure;
+                break;
+            }
+            default: {
+                call = "Q3Mesh_SetVertexCoordinates";
+                const TQ3Point3D p{m_in.value(), m_in.value(), m_in.value()};
+                failed = STATUS(Q3Mesh_SetVertexCoordinates(mesh, static_cast<TQ3MeshVertex>(part), &p)) ==
+                         kQ3Failure;
+                if (!failed)
+                    require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), call,
+                            "accepted a point that is not finite");
+            }
+            }
+            break;
+        }
+        case 6: {
+            // A walk around a part, bounded: each Next obeys the contract.
+            void* part = meshPart();
+            TQ3MeshIterator it;
+            void* h = nullptr;
+            const std::uint8_t which = m_in.u8() % 13;
+            switch (which) {
+            case 0: h = QUERY(Q3Mesh_FirstComponentVertex(static_cast<TQ3MeshComponent>(part), &it), TQ3MeshVertex(nullptr)); break;
+            case 1: h = QUERY(Q3Mesh_FirstComponentEdge(static_cast<TQ3MeshComponent>(part), &it), TQ3MeshEdge(nullptr)); break;
+            case 2: h = QUERY(Q3Mesh_FirstVertexEdge(static_cast<TQ3MeshVertex>(part), &it), TQ3MeshEdge(nullptr)); break;
+            case 3: h = QUERY(Q3Mesh_FirstVertexVertex(static_cast<TQ3MeshVertex>(part), &it), TQ3MeshVertex(nullptr)); break;
+            case 4: h = QUERY(Q3Mesh_FirstVertexFace(static_cast<TQ3MeshVertex>(part), &it), TQ3MeshFace(nullptr)); break;
+            case 5: h = QUERY(Q3Mesh_FirstFaceEdge(static_cast<TQ3MeshFace>(part), &it), TQ3MeshEdge(nullptr)); break;
+            case 6: h = QUERY(Q3Mesh_FirstFaceVertex(static_cast<TQ3MeshFace>(part), &it), TQ3MeshVertex(nullptr)); break;
+            case 7: h = QUERY(Q3Mesh_FirstFaceFace(static_cast<TQ3MeshFace>(part), &it), TQ3MeshFace(nullptr)); break;
+            case 8: h = QUERY(Q3Mesh_FirstFaceContour(static_cast<TQ3MeshFace>(part), &it), TQ3MeshContour(nullptr)); break;
+            case 9: h = QUERY(Q3Mesh_FirstContourEdge(static_cast<TQ3MeshContour>(part), &it), TQ3MeshEdge(nullptr)); break;
+            case 10: h = QUERY(Q3Mesh_FirstContourVertex(static_cast<TQ3MeshContour>(part), &it), TQ3MeshVertex(nullptr)); break;
+            case 11: h = QUERY(Q3Mesh_FirstContourFace(static_cast<TQ3MeshContour>(part), &it), TQ3MeshFace(nullptr)); break;
+            default: h = QUERY(Q3Mesh_FirstMeshComponent(mesh, &it), TQ3MeshComponent(nullptr)); break;
+            }
+            for (int step = 0; h != nullptr && step < 4096; ++step) {
+                rememberPart(h);
+                switch (which) {
+                case 0: h = QUERY(Q3Mesh_NextComponentVertex(&it), TQ3MeshVertex(nullptr)); break;
+                case 1: h = QUERY(Q3Mesh_NextComponentEdge(&it), TQ3MeshEdge(nullptr)); break;
+                case 2: h = QUERY(Q3Mesh_NextVertexEdge(&it), TQ3MeshEdge(nullptr)); break;
+                case 3: h = QUERY(Q3Mesh_NextVertexVertex(&it), TQ3MeshVertex(nullptr)); break;
+                case 4: h = QUERY(Q3Mesh_NextVertexFace(&it), TQ3MeshFace(nullptr)); break;
+                case 5: h = QUERY(Q3Mesh_NextFaceEdge(&it), TQ3MeshEdge(nullptr)); break;
+                case 6: h = QUERY(Q3Mesh_NextFaceVertex(&it), TQ3MeshVertex(nullptr)); break;
+                case 7: h = QUERY(Q3Mesh_NextFaceFace(&it), TQ3MeshFace(nullptr)); break;
+                case 8: h = QUERY(Q3Mesh_NextFaceContour(&it), TQ3MeshContour(nullptr)); break;
+                case 9: h = QUERY(Q3Mesh_NextContourEdge(&it), TQ3MeshEdge(nullptr)); break;
+                case 10: h = QUERY(Q3Mesh_NextContourVertex(&it), TQ3MeshVertex(nullptr)); break;
+                case 11: h = QUERY(Q3Mesh_NextContourFace(&it), TQ3MeshFace(nullptr)); break;
+                default: h = QUERY(Q3Mesh_NextMeshComponent(&it), TQ3MeshComponent(nullptr)); break;
+                }
+            }
+            return;
+        }
+        default: {
+            // The walks against the counts; the components' vertices.
+            if (!counted)
+                return;
+            checkMeshWalk(mesh, Q3Mesh_FirstMeshVertex, Q3Mesh_NextMeshVertex, before.vertices, "Q3Mesh_NextMeshVertex");
+            checkMeshWalk(mesh, Q3Mesh_FirstMeshFace, Q3Mesh_NextMeshFace, before.faces, "Q3Mesh_NextMeshFace");
+            checkMeshWalk(mesh, Q3Mesh_FirstMeshEdge, Q3Mesh_NextMeshEdge, before.edges, "Q3Mesh_NextMeshEdge");
+            checkMeshWalk(mesh, Q3Mesh_FirstMeshComponent, Q3Mesh_NextMeshComponent, before.components,
+                          "Q3Mesh_NextMeshComponent");
+            unsigned long inComponents = 0;
+            TQ3MeshIterator it;
+            for (TQ3MeshComponent c = QUERY(Q3Mesh_FirstMeshComponent(mesh, &it), TQ3MeshComponent(nullptr));
+                 c != nullptr; c = QUERY(Q3Mesh_NextMeshComponent(&it), TQ3MeshComponent(nullptr))) {
+                unsigned long n = 0;
+                STATUS(Q3Mesh_GetComponentNumVertices(mesh, c, &n));
+                inComponents += n;
+            }
+            require(inComponents <= before.vertices, "Q3Mesh_GetComponentNumVertices",
+                    "components hold more vertices than the mesh");
+            return;
+        }
+        }
+        if (!counted)
+            return;
+        MeshCounts after;
+        require(meshCounts(mesh, after), call, "a mesh's counts could not be read");
+        if (failed) {
+            require(after == before && editIndex(mesh) == edit, call, "failed but changed the mesh");
+        } else if (action == 1 || action == 2) {
+            require(after.vertices == before.vertices && after.faces == before.faces, call,
+                    "did not add exactly one part");
+        } else if (action == 3 || action == 4) {
+            require(after.faces <= before.faces + 1, call, "deleted or moved but gained faces");
+        }
+    }
+
     Reader& m_in;
     int m_initialized = 0;
     std::vector<Held> m_held;
     std::vector<TQ3Object> m_stale;
+    std::vector<void*> m_meshParts;
+    int m_meshes = 0;
     std::vector<TQ3GroupPosition> m_positions;
     std::map<TQ3Object, CurveShape> m_curves;
     std::vector<std::unique_ptr<std::vector<unsigned char>>> m_images;

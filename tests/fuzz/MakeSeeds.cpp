@@ -20,7 +20,7 @@ using q3fuzz::Op;
 // Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                            kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
-                           kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus };
+                           kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -775,6 +775,38 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kQuadrics).u8(1).u8(1).u8(1).u8(1).u8(15).special(0).u8(7).u8(0).held();
         s.op(Op::kQuadrics).u8(6).u8(1).u8(1).u8(1).u8(14).value(0.75f).u8(7).u8(0).held();
         s.scene(2).startRendering().submitHeld(kTorus).submitHeld(kCone).endRendering();
+    }
+    // A mesh: a square with a square hole (FaceToContour) and a triangle on
+    // its right edge, walked, checked against its counts, drawn, bounded,
+    // decomposed, edited with a deleted face, a made-up handle and a NaN
+    // point, taken apart, and duplicated.
+    {
+        Seed& s = add("meshes");
+        s.op(Op::kMeshes).u8(0);
+        const float xy[9][2] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {6, 2}};
+        for (const auto& p : xy)
+            s.op(Op::kMeshes).u8(1).held().value(p[0] / 4).value(p[1] / 4).value(0).u8(0).u8(1);
+        // meshes() FaceNew: size - 3, source, vertex picks (the mesh's own, in
+        // order), the count byte, the set byte. Parts: vertices 0-8.
+        s.op(Op::kMeshes).u8(2).held().u8(1).u8(0).u8(0).u8(1).u8(2).u8(3).u8(1).u8(0);     // part 9
+        s.op(Op::kMeshes).u8(2).held().u8(1).u8(0).u8(4).u8(5).u8(6).u8(7).u8(1).u8(0);     // part 10
+        s.op(Op::kMeshes).u8(2).held().u8(0).u8(0).u8(1).u8(8).u8(2).u8(1).u8(0);           // part 11
+        s.op(Op::kMeshes).u8(4).held().u8(0).u8(9).u8(0).u8(10).u8(1);                      // hole: part 12
+        for (std::uint8_t walk = 0; walk < 13; ++walk)
+            s.op(Op::kMeshes).u8(6).held().u8(0).u8(walk < 2 ? 0 : walk < 5 ? 1 : walk < 9 ? 9 : 12).u8(walk);
+        s.op(Op::kMeshes).u8(7).held();
+        s.op(Op::kMeshes).u8(5).held().u8(0).u8(2).u8(0).u8(3).u8(0).u8(9);                 // a corner set
+        s.scene(2).startRendering().submitHeld(kMesh).endRendering().startBox().submitHeld(kMesh).endBox();
+        s.decompose();
+        s.op(Op::kMeshes).u8(3).held().u8(0).u8(11).u8(0);                                  // delete the triangle
+        s.op(Op::kMeshes).u8(3).held().u8(0).u8(11).u8(0);                                  // and again
+        s.op(Op::kMeshes).u8(5).held().u8(230).u32(0x12345679).u8(0).u8(0);                // a made-up vertex
+        s.op(Op::kMeshes).u8(5).held().u8(0).u8(3).u8(0).u8(4).special(0).value(0).value(0); // a NaN point
+        s.op(Op::kMeshes).u8(4).held().u8(0).u8(12).u8(0);                                  // the hole back out
+        s.op(Op::kMeshes).u8(7).held();
+        s.op(Op::kDuplicate).u8(kMesh).held();
+        s.op(Op::kMeshes).u8(3).held().u8(0).u8(2).u8(1);                                   // delete vertex 2
+        s.op(Op::kMeshes).u8(7).held();
     }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {

@@ -181,4 +181,25 @@ TEST_F(ScenePixels, TheConesShowTheirBottomsAndTheCut)
     EXPECT_GT(countNear(image, 64, 204, 77), 800);
 }
 
+// The holed face: orange around a hole that shows the background, filled
+// and outlined alike; the folded face's shared corner magenta (its corner
+// set), not the vertex's yellow; the shared edge white in the wireframe.
+TEST_F(ScenePixels, TheMeshShowsItsHoleCornerAndSharedEdge)
+{
+    const Q3Scene* filled = q3scene_find("mesh_interactive");
+    const Q3Scene* outlined = q3scene_find("mesh_wireframe");
+    ASSERT_TRUE(filled != nullptr && outlined != nullptr);
+    const q3test::RgbaImage a = render(filled);
+    const q3test::RgbaImage b = render(outlined);
+    EXPECT_TRUE(isBackground(a, 109, 120, filled->background));
+    EXPECT_TRUE(isBackground(b, 109, 120, outlined->background));
+    EXPECT_GT(countNear(a, 242, 140, 38), 12000);
+    const Pixel corner = at(a, 176, 50);
+    EXPECT_GT(corner.r, 180);
+    EXPECT_GT(corner.b, 150);
+    EXPECT_LT(corner.g, 120);
+    EXPECT_GT(countNear(b, 255, 255, 255), 100);
+    EXPECT_EQ(countNear(a, 255, 255, 255), 0);
+}
+
 } // namespace
