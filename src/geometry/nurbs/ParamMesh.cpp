@@ -176,28 +176,35 @@ void ParamMesh::build(const std::vector<std::array<std::uint32_t, 3>>& corners)
         triangles.push_back(tri);
     }
     m_alive = triangles.size();
-    // Directed edges sorted by their undirected key: the two halves of an
-    // interior edge end up next to each other.
+    // The two halves of an interior edge are found in the bucket of the
+    // edge's smaller vertex (buckets hold a vertex's few edges).
+    const std::size_t n = vertices.size();
+    std::vector<std::uint32_t> start(n + 1, 0);
+    for (const Triangle& tri : triangles)
+        for (int e = 0; e < 3; ++e)
+            ++start[std::min(tri.v[next3(e)], tri.v[prev3(e)]) + 1];
+    for (std::size_t i = 0; i < n; ++i)
+        start[i + 1] += start[i];
     struct Half {
-        std::uint64_t key;
+        std::uint32_t other;
         std::uint32_t t;
         int e;
     };
-    std::vector<Half> halves;
-    halves.reserve(3 * triangles.size());
+    std::vector<Half> halves(3 * triangles.size());
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::uint32_t t = 0; t < triangles.size(); ++t)
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t a = triangles[t].v[next3(e)];
             const std::uint32_t b = triangles[t].v[prev3(e)];
-            halves.push_back(Half{(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), t, e});
+            halves[fill[std::min(a, b)]++] = Half{std::max(a, b), t, e};
         }
-    std::sort(halves.begin(), halves.end(), [](const Half& x, const Half& y) { return x.key < y.key; });
-    for (std::size_t i = 0; i + 1 < halves.size(); ++i)
-        if (halves[i].key == halves[i + 1].key) {
-            triangles[halves[i].t].neighbour[halves[i].e] = halves[i + 1].t;
-            triangles[halves[i + 1].t].neighbour[halves[i + 1].e] = halves[i].t;
-            ++i;
-        }
+    for (std::size_t v = 0; v < n; ++v)
+        for (std::uint32_t i = start[v]; i < start[v + 1]; ++i)
+            for (std::uint32_t j = i + 1; j < start[v + 1]; ++j)
+                if (halves[i].other == halves[j].other) {
+                    triangles[halves[i].t].neighbour[halves[i].e] = halves[j].t;
+                    triangles[halves[j].t].neighbour[halves[j].e] = halves[i].t;
+                }
     for (std::uint32_t t = 0; t < triangles.size(); ++t)
         touchVertices(t);
 }
@@ -380,46 +387,14 @@ bool ParamMesh::findEdge(std::uint32_t a, std::uint32_t b, std::uint32_t& triang
 {
     bool found = false;
     forEachAround(a, [&](std::uint32_t t, int corner) {
-        if (!found && triangles[t].v[next3(corner)] == b) {
-            triangle = t;
-            edge = prev3(corner);
-            found = true;
-        }
+        if (triangles[t].v[next3(corner)] != b)
+            return true;
+        triangle = t;
+        edge = prev3(corner);
+        found = true;
+        return false;
     });
     return found;
-}
-
-void ParamMesh::forEachAround(std::uint32_t a, const std::function<void(std::uint32_t, int)>& f) const
-{
-    const std::uint32_t start = vertices[a].triangle;
-    if (start == kNone || start >= triangles.size() || !triangles[start].alive)
-        return;
-    auto cornerOf = [&](std::uint32_t t) {
-        const Triangle& tri = triangles[t];
-        return tri.v[0] == a ? 0 : tri.v[1] == a ? 1 : 2;
-    };
-    // Counterclockwise first (across the edge from a's corner - 1 to a, i.e.
-    // the edge opposite corner + 1), then clockwise from the start if the
-    // fan is open.
-    std::uint32_t t = start;
-    std::size_t guard = 0;
-    do {
-        const int c = cornerOf(t);
-        f(t, c);
-        t = triangles[t].neighbour[next3(c)];
-        if (++guard > triangles.size())
-            return;
-    } while (t != kNone && t != start);
-    if (t == start)
-        return;
-    t = triangles[start].neighbour[prev3(cornerOf(start))];
-    while (t != kNone && t != start) {
-        const int c = cornerOf(t);
-        f(t, c);
-        t = triangles[t].neighbour[prev3(c)];
-        if (++guard > triangles.size())
-            return;
-    }
 }
 
 bool ParamMesh::flip(std::uint32_t t, int e)
@@ -532,6 +507,7 @@ bool ParamMesh::removeVertex(std::uint32_t a)
             blocked = true;
         fan.push_back(t);
         linkEdges.emplace_back(tri.v[next3(c)], tri.v[prev3(c)]);
+        return true;
     });
     if (blocked || fan.size() < 2)
         return false;
@@ -591,7 +567,7 @@ bool ParamMesh::firstCrossing(std::uint32_t a, std::uint32_t b, std::uint32_t& t
     bool stop = false;
     forEachAround(a, [&](std::uint32_t tri, int c) {
         if (stop)
-            return;
+            return false;
         const std::uint32_t x = triangles[tri].v[next3(c)];
         const std::uint32_t y = triangles[tri].v[prev3(c)];
         const std::int64_t ox = orient(a, b, x);
@@ -608,6 +584,7 @@ bool ParamMesh::firstCrossing(std::uint32_t a, std::uint32_t b, std::uint32_t& t
             q = y;
             stop = true;
         }
+        return !stop;
     });
     if (through != kNone)
         return true;

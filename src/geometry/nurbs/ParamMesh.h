@@ -93,8 +93,10 @@ public:
     /// index in it; false when there is none.
     bool findEdge(std::uint32_t a, std::uint32_t b, std::uint32_t& triangle, int& edge) const;
 
-    /// Calls f(triangle, corner) for every alive triangle around vertex a.
-    void forEachAround(std::uint32_t a, const std::function<void(std::uint32_t, int)>& f) const;
+    /// Calls f(triangle, corner) for every alive triangle around vertex a,
+    /// counterclockwise, until f returns false.
+    template <class F>
+    void forEachAround(std::uint32_t a, F&& f) const;
 
     /// Flips edge `edge` of `triangle` when the quadrilateral of its two
     /// triangles is strictly convex; false (nothing changed) otherwise.
@@ -162,5 +164,41 @@ private:
     mutable std::uint64_t m_random = 0x9E3779B97F4A7C15ull;
     std::vector<std::uint32_t> m_free;
 };
+
+template <class F>
+void ParamMesh::forEachAround(std::uint32_t a, F&& f) const
+{
+    const std::uint32_t start = vertices[a].triangle;
+    if (start == kNone || start >= triangles.size() || !triangles[start].alive)
+        return;
+    auto cornerOf = [&](std::uint32_t t) {
+        const Triangle& tri = triangles[t];
+        return tri.v[0] == a ? 0 : tri.v[1] == a ? 1 : 2;
+    };
+    // Counterclockwise first (across the edge opposite corner + 1), then,
+    // if the fan is open, clockwise from the start (opposite corner + 2).
+    std::uint32_t t = start;
+    std::size_t guard = 0;
+    do {
+        const int c = cornerOf(t);
+        if (!f(t, c))
+            return;
+        t = triangles[t].neighbour[c == 2 ? 0 : c + 1];
+        if (++guard > triangles.size())
+            return;
+    } while (t != kNone && t != start);
+    if (t == start)
+        return;
+    const int c0 = cornerOf(start);
+    t = triangles[start].neighbour[c0 == 0 ? 2 : c0 - 1];
+    while (t != kNone && t != start) {
+        const int c = cornerOf(t);
+        if (!f(t, c))
+            return;
+        t = triangles[t].neighbour[c == 0 ? 2 : c - 1];
+        if (++guard > triangles.size())
+            return;
+    }
+}
 
 } // namespace q3::nurbs

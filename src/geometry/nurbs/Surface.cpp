@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace q3::nurbs {
 
@@ -148,31 +149,33 @@ Homogeneous sum(const SurfaceRef& surface, double u, double v, bool derivatives)
     return h;
 }
 
-Point3 quotientDerivative(const Point3& s, const Point4& d, double w)
+Point3 quotientDerivative(const Point3& s, const Point4& d, double inverseW)
 {
-    return Point3{(d.x - s.x * d.w) / w, (d.y - s.y * d.w) / w, (d.z - s.z * d.w) / w};
-}
-
-Point3 cross(const Point3& a, const Point3& b)
-{
-    return Point3{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-
-double norm(const Point3& a)
-{
-    return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+    return Point3{(d.x - s.x * d.w) * inverseW, (d.y - s.y * d.w) * inverseW, (d.z - s.z * d.w) * inverseW};
 }
 
 // The unit normal from the partials, or false when it is not well defined:
 // |du x dv| is zero, or below 1e-10 |du| |dv| (lost to rounding).
 bool unitNormal(const Point3& du, const Point3& dv, Point3& normal)
 {
-    const Point3 n = cross(du, dv);
-    const double length = norm(n);
-    if (!(length > 1e-10 * norm(du) * norm(dv)) || !std::isfinite(length))
+    const Point3 n{du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x};
+    const double n2 = n.x * n.x + n.y * n.y + n.z * n.z;
+    const double du2 = du.x * du.x + du.y * du.y + du.z * du.z;
+    const double dv2 = dv.x * dv.x + dv.y * dv.y + dv.z * dv.z;
+    if (!(n2 > 1e-20 * du2 * dv2) || !(n2 < std::numeric_limits<double>::infinity()))
         return false;
-    normal = Point3{n.x / length, n.y / length, n.z / length};
+    const double inverse = 1.0 / std::sqrt(n2);
+    normal = Point3{n.x * inverse, n.y * inverse, n.z * inverse};
     return true;
+}
+
+// The rational point and partials from the homogeneous ones.
+void finish(const Point4& h, const Point4& hu, const Point4& hv, SurfacePoint& out)
+{
+    const double inverseW = 1.0 / h.w;
+    out.point = Point3{h.x * inverseW, h.y * inverseW, h.z * inverseW};
+    out.du = quotientDerivative(out.point, hu, inverseW);
+    out.dv = quotientDerivative(out.point, hv, inverseW);
 }
 
 } // namespace
@@ -199,53 +202,58 @@ std::size_t findKnotSpan(const float* knots, std::size_t numPoints, unsigned ord
 void basisWithDerivative(const float* knots, std::size_t span, unsigned order, double t, double* value,
                          double* derivative)
 {
-    // level[j] holds N_{span-m+1+j, m}(t) for the current order m; the
-    // functions of order m - 1 are kept for the derivative.
-    double level[kMaxOrder + 1] = {1.0};
-    double lower[kMaxOrder + 1] = {};
+    // Two buffers take turns: `lower` holds N_{span-m+2+j, m-1}(t), the
+    // functions of the order below, `level` receives N_{span-m+1+j, m}(t).
+    double a[kMaxOrder + 1];
+    double b[kMaxOrder + 1];
+    double* lower = a;
+    double* level = b;
+    lower[0] = 1.0;
     for (unsigned m = 2; m <= order; ++m) {
-        for (unsigned j = 0; j + 1 < m; ++j)
-            lower[j] = level[j];
         for (unsigned j = 0; j < m; ++j) {
             const std::size_t i = span + 1 + j - m; // N_{i,m}
             double sum = 0.0;
             if (j > 0) {
                 // (t - x_i) / (x_{i+m-1} - x_i) N_{i,m-1}
-                const double a = knots[i], b = knots[i + m - 1];
-                if (b > a)
-                    sum += (t - a) / (b - a) * lower[j - 1];
+                const double x0 = knots[i], x1 = knots[i + m - 1];
+                if (x1 > x0)
+                    sum += (t - x0) / (x1 - x0) * lower[j - 1];
             }
             if (j + 1 < m) {
                 // (x_{i+m} - t) / (x_{i+m} - x_{i+1}) N_{i+1,m-1}
-                const double a = knots[i + 1], b = knots[i + m];
-                if (b > a)
-                    sum += (b - t) / (b - a) * lower[j];
+                const double x0 = knots[i + 1], x1 = knots[i + m];
+                if (x1 > x0)
+                    sum += (x1 - t) / (x1 - x0) * lower[j];
             }
             level[j] = sum;
         }
+        if (m < order)
+            std::swap(lower, level);
+    }
+    if (order < 2) {
+        value[0] = 1.0;
+        if (derivative != nullptr)
+            derivative[0] = 0.0;
+        return;
     }
     for (unsigned j = 0; j < order; ++j)
         value[j] = level[j];
     if (derivative == nullptr)
         return;
-    if (order == 1) {
-        derivative[0] = 0.0;
-        return;
-    }
-    // The order - 1 functions are in `lower` (N_{span-order+2+j, order-1}).
+    // The order - 1 functions are still in `lower` (N_{span-order+2+j, order-1}).
     const double k1 = double(order - 1);
     for (unsigned j = 0; j < order; ++j) {
         const std::size_t i = span + 1 + j - order;
         double d = 0.0;
         if (j > 0) {
-            const double a = knots[i], b = knots[i + order - 1];
-            if (b > a)
-                d += lower[j - 1] / (b - a);
+            const double x0 = knots[i], x1 = knots[i + order - 1];
+            if (x1 > x0)
+                d += lower[j - 1] / (x1 - x0);
         }
         if (j + 1 < order) {
-            const double a = knots[i + 1], b = knots[i + order];
-            if (b > a)
-                d -= lower[j] / (b - a);
+            const double x0 = knots[i + 1], x1 = knots[i + order];
+            if (x1 > x0)
+                d -= lower[j] / (x1 - x0);
         }
         derivative[j] = k1 * d;
     }
@@ -263,9 +271,7 @@ SurfacePoint evaluateWithNormal(const SurfaceRef& surface, double u, double v)
     v = clampTo(v, d.v0, d.v1);
     const Homogeneous h = sum(surface, u, v, true);
     SurfacePoint result;
-    result.point = project(h.s);
-    result.du = quotientDerivative(result.point, h.du, h.s.w);
-    result.dv = quotientDerivative(result.point, h.dv, h.s.w);
+    finish(h.s, h.du, h.dv, result);
     if (unitNormal(result.du, result.dv, result.normal))
         return result;
     // Towards the centre of the domain, farther and farther.
@@ -275,12 +281,100 @@ SurfacePoint evaluateWithNormal(const SurfaceRef& surface, double u, double v)
         const double nu = u + (u < cu ? step : u > cu ? -step : 0.0) * width;
         const double nv = v + (v < cv ? step : v > cv ? -step : 0.0) * height;
         const Homogeneous near = sum(surface, nu, nv, true);
-        const Point3 p = project(near.s);
-        if (unitNormal(quotientDerivative(p, near.du, near.s.w), quotientDerivative(p, near.dv, near.s.w),
-                       result.normal))
+        SurfacePoint nearby;
+        finish(near.s, near.du, near.dv, nearby);
+        if (unitNormal(nearby.du, nearby.dv, result.normal))
             return result;
     }
     result.normal = Point3{};
+    return result;
+}
+
+SurfaceRowEvaluator::SurfaceRowEvaluator(const SurfaceRef& surface)
+    : m_s(surface), m_domain(surfaceDomain(surface)), m_columns(surface.numColumns),
+      m_derivatives(surface.numColumns)
+{
+}
+
+void SurfaceRowEvaluator::setV(double v, bool derivatives)
+{
+    v = clampTo(v, m_domain.v0, m_domain.v1);
+    m_v = v;
+    const std::size_t span = findKnotSpan(m_s.vKnots, m_s.numRows, m_s.vOrder, v);
+    double n[kMaxPatchOrder], dn[kMaxPatchOrder];
+    basisWithDerivative(m_s.vKnots, span, m_s.vOrder, v, n, derivatives ? dn : nullptr);
+    const std::size_t firstRow = span + 1 - m_s.vOrder;
+    const std::size_t columns = m_s.numColumns;
+    for (std::size_t c = 0; c < columns; ++c) {
+        Point4 q, dq;
+        for (unsigned r = 0; r < m_s.vOrder; ++r) {
+            const float* p = m_s.points + 4 * ((firstRow + r) * columns + c);
+            q.x += n[r] * p[0];
+            q.y += n[r] * p[1];
+            q.z += n[r] * p[2];
+            q.w += n[r] * p[3];
+            if (derivatives) {
+                dq.x += dn[r] * p[0];
+                dq.y += dn[r] * p[1];
+                dq.z += dn[r] * p[2];
+                dq.w += dn[r] * p[3];
+            }
+        }
+        m_columns[c] = q;
+        m_derivatives[c] = dq;
+    }
+}
+
+Point3 SurfaceRowEvaluator::point(double u) const
+{
+    u = clampTo(u, m_domain.u0, m_domain.u1);
+    const std::size_t span = findKnotSpan(m_s.uKnots, m_s.numColumns, m_s.uOrder, u);
+    double n[kMaxPatchOrder];
+    basisWithDerivative(m_s.uKnots, span, m_s.uOrder, u, n, nullptr);
+    Point4 h;
+    const Point4* q = m_columns.data() + (span + 1 - m_s.uOrder);
+    for (unsigned j = 0; j < m_s.uOrder; ++j) {
+        h.x += n[j] * q[j].x;
+        h.y += n[j] * q[j].y;
+        h.z += n[j] * q[j].z;
+        h.w += n[j] * q[j].w;
+    }
+    return project(h);
+}
+
+SurfacePoint SurfaceRowEvaluator::pointWithNormal(double u) const
+{
+    u = clampTo(u, m_domain.u0, m_domain.u1);
+    const std::size_t span = findKnotSpan(m_s.uKnots, m_s.numColumns, m_s.uOrder, u);
+    double n[kMaxPatchOrder], dn[kMaxPatchOrder];
+    basisWithDerivative(m_s.uKnots, span, m_s.uOrder, u, n, dn);
+    return pointWithNormal(u, span, n, dn);
+}
+
+SurfacePoint SurfaceRowEvaluator::pointWithNormal(double u, std::size_t span, const double* n, const double* dn) const
+{
+    Point4 h, hu, hv;
+    const std::size_t first = span + 1 - m_s.uOrder;
+    const Point4* q = m_columns.data() + first;
+    const Point4* dq = m_derivatives.data() + first;
+    for (unsigned j = 0; j < m_s.uOrder; ++j) {
+        h.x += n[j] * q[j].x;
+        h.y += n[j] * q[j].y;
+        h.z += n[j] * q[j].z;
+        h.w += n[j] * q[j].w;
+        hu.x += dn[j] * q[j].x;
+        hu.y += dn[j] * q[j].y;
+        hu.z += dn[j] * q[j].z;
+        hu.w += dn[j] * q[j].w;
+        hv.x += n[j] * dq[j].x;
+        hv.y += n[j] * dq[j].y;
+        hv.z += n[j] * dq[j].z;
+        hv.w += n[j] * dq[j].w;
+    }
+    SurfacePoint result;
+    finish(h, hu, hv, result);
+    if (!unitNormal(result.du, result.dv, result.normal))
+        result.normal = evaluateWithNormal(m_s, u, m_v).normal;
     return result;
 }
 

@@ -91,6 +91,39 @@ Point3 evaluateSurface(const SurfaceRef& surface, double u, double v);
 /// neighbours' normals; if every step fails too the normal is (0, 0, 0).
 SurfacePoint evaluateWithNormal(const SurfaceRef& surface, double u, double v);
 
+/// The surface along one line of constant v: the columns' homogeneous
+/// control points collapsed at v (and their v derivatives), so that each
+/// point along the line costs one curve sum of uOrder terms instead of a
+/// tensor sum. Tessellation evaluates rows of vertices this way.
+/// Invariant: after setV, columns() holds numColumns points (and
+/// columnDerivatives() too when derivatives were asked for).
+class SurfaceRowEvaluator {
+public:
+    explicit SurfaceRowEvaluator(const SurfaceRef& surface);
+
+    /// Collapses the columns at v (clamped to the domain). O(numColumns * vOrder).
+    void setV(double v, bool derivatives);
+    double v() const { return m_v; }
+
+    /// The surface at (u, v), u clamped to the domain. O(uOrder^2).
+    Point3 point(double u) const;
+    /// The same with partials and unit normal, as evaluateWithNormal gives
+    /// them (requires setV with derivatives).
+    SurfacePoint pointWithNormal(double u) const;
+    /// The same from the basis functions of u already computed: span is the
+    /// knot span, n and dn the uOrder values and derivatives.
+    SurfacePoint pointWithNormal(double u, std::size_t span, const double* n, const double* dn) const;
+
+    const SurfaceRef& surface() const { return m_s; }
+
+private:
+    SurfaceRef m_s;
+    SurfaceDomain m_domain;
+    double m_v = 0.0;
+    std::vector<Point4> m_columns;
+    std::vector<Point4> m_derivatives;
+};
+
 /// The values and first derivatives of the order-k B-spline basis functions
 /// that are not zero on span `span` (knots[span] <= t < knots[span + 1]):
 /// value[j] = N_{span-k+1+j,k}(t) and derivative[j] its derivative, for

@@ -74,57 +74,6 @@ double distance(const Point3& a, const Point3& b)
     return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-// The surface along one row v = constant: its columns' homogeneous points
-// collapsed at v, so each point along the row costs one curve sum.
-class IsoRow {
-public:
-    explicit IsoRow(const SurfaceRef& s) : m_s(s), m_columns(s.numColumns) {}
-
-    void setV(double v)
-    {
-        const SurfaceDomain d = surfaceDomain(m_s);
-        v = std::min(std::max(v, d.v0), d.v1);
-        const std::size_t span = findKnotSpan(m_s.vKnots, m_s.numRows, m_s.vOrder, v);
-        double n[kMaxPatchOrder];
-        basisWithDerivative(m_s.vKnots, span, m_s.vOrder, v, n, nullptr);
-        const std::size_t firstRow = span + 1 - m_s.vOrder;
-        for (std::size_t c = 0; c < m_s.numColumns; ++c) {
-            Point4 q;
-            for (unsigned r = 0; r < m_s.vOrder; ++r) {
-                const float* p = m_s.points + 4 * ((firstRow + r) * m_s.numColumns + c);
-                q.x += n[r] * p[0];
-                q.y += n[r] * p[1];
-                q.z += n[r] * p[2];
-                q.w += n[r] * p[3];
-            }
-            m_columns[c] = q;
-        }
-    }
-
-    Point3 at(double u) const
-    {
-        const SurfaceDomain d = surfaceDomain(m_s);
-        u = std::min(std::max(u, d.u0), d.u1);
-        const std::size_t span = findKnotSpan(m_s.uKnots, m_s.numColumns, m_s.uOrder, u);
-        double n[kMaxPatchOrder];
-        basisWithDerivative(m_s.uKnots, span, m_s.uOrder, u, n, nullptr);
-        Point4 h;
-        const std::size_t first = span + 1 - m_s.uOrder;
-        for (unsigned j = 0; j < m_s.uOrder; ++j) {
-            const Point4& q = m_columns[first + j];
-            h.x += n[j] * q.x;
-            h.y += n[j] * q.y;
-            h.z += n[j] * q.z;
-            h.w += n[j] * q.w;
-        }
-        return project(h);
-    }
-
-private:
-    SurfaceRef m_s;
-    std::vector<Point4> m_columns;
-};
-
 struct RowPoint {
     double u = 0.0;
     Point3 local;
@@ -177,6 +126,11 @@ public:
             planAdaptive(rows);
         } else {
             planConstant(rows);
+            if (m_loops.empty() || std::all_of(m_loops.begin(), m_loops.end(),
+                                               [](const std::vector<TrimVertex>& l) { return l.empty(); })) {
+                emitGrid();
+                return;
+            }
         }
         buildRows(rows);
         rows.clear();
@@ -215,7 +169,7 @@ private:
     {
         RowPoint p;
         p.u = u;
-        p.local = m_iso.at(u);
+        p.local = m_iso.point(u);
         p.mapped = mapPoint(p.local, p.image);
         return p;
     }
@@ -225,9 +179,10 @@ private:
     // Greedy march along the row at the current IsoRow v, bound s.
     Row marchRow(double v, double s)
     {
-        m_iso.setV(v);
+        m_iso.setV(v, false);
         Row row;
         row.v = v;
+        row.points.reserve(m_lastRowSize + m_lastRowSize / 4 + 8);
         RowPoint first = sample(m_uSpans.front().start);
         first.knot = true;
         row.points.push_back(first);
@@ -237,6 +192,9 @@ private:
             for (unsigned j = 1; j <= probes; ++j)
                 table[j] = sample(j == probes ? span.end : span.start + (span.end - span.start) * j / probes);
             unsigned j = 1;
+            // The last step's length in u: the next one is tried at the same
+            // length first (neighbouring steps are alike on a smooth row).
+            double step = 0.0;
             for (;;) {
                 const RowPoint cur = row.points.back();
                 while (j <= probes && table[j].u <= cur.u)
@@ -258,9 +216,10 @@ private:
                     continue;
                 }
                 const RowPoint lo = (k > j && table[k - 1].u > cur.u) ? table[k - 1] : cur;
-                RowPoint next = closeIn(cur, lo, table[k], s);
+                RowPoint next = closeIn(cur, lo, table[k], s, cur.u + step);
                 if (!(next.u > cur.u) || next.u >= span.end)
                     break;
+                step = next.u - cur.u;
                 push(row, next);
             }
             RowPoint end = table[probes];
@@ -270,6 +229,7 @@ private:
             else
                 row.points.back().knot = true;
         }
+        m_lastRowSize = row.points.size();
         return row;
     }
 
@@ -282,12 +242,23 @@ private:
 
     // Safeguarded regula falsi for the point between lo and hi whose chord
     // from `from` lies in [(1 - tol) s, s]; chord(from, lo) <= s < chord(from, hi).
-    RowPoint closeIn(const RowPoint& from, RowPoint lo, RowPoint hi, double s) const
+    RowPoint closeIn(const RowPoint& from, RowPoint lo, RowPoint hi, double s, double guess) const
     {
         double dlo = lo.u > from.u ? chord(from, lo) : 0.0;
         double dhi = chord(from, hi);
         const double accept = (1.0 - kStepTolerance) * s;
         const double target = (1.0 - 0.5 * kStepTolerance) * s;
+        if (lo.u < guess && guess < hi.u && dlo < accept) {
+            const RowPoint p = sample(guess);
+            const double d = chord(from, p);
+            if (d <= s) {
+                lo = p;
+                dlo = d;
+            } else {
+                hi = p;
+                dhi = d;
+            }
+        }
         for (unsigned iteration = 0; iteration < kMaxIterations && dlo < accept; ++iteration) {
             double f = 0.5;
             if (iteration % 3 != 2 && std::isfinite(dhi))
@@ -314,7 +285,7 @@ private:
     // surface at v'; `unmapped` when a probe has no image at either end.
     double rowDistance(const std::vector<const RowPoint*>& probes, double v, bool& unmapped)
     {
-        m_iso.setV(v);
+        m_iso.setV(v, false);
         unmapped = false;
         double worst = 0.0;
         for (const RowPoint* p : probes) {
@@ -323,7 +294,7 @@ private:
                 continue;
             }
             Point3 image;
-            if (!mapPoint(m_iso.at(p->u), image)) {
+            if (!mapPoint(m_iso.point(p->u), image)) {
                 unmapped = true;
                 continue;
             }
@@ -343,6 +314,7 @@ private:
         const unsigned probes = std::max(m_s.vOrder, 8u);
         const double height = m_domain.v1 - m_domain.v0;
         std::vector<const RowPoint*> probePoints;
+        double rowStep = 0.0;
         for (const Span& span : m_vSpans) {
             for (;;) {
                 const Row& cur = rows.back();
@@ -361,6 +333,16 @@ private:
                 double dlo = 0.0;
                 double next = span.end;
                 bool found = false;
+                // Try the last strip's height first.
+                if (rowStep > 0.0 && cur.v + rowStep < span.end) {
+                    bool unmapped = false;
+                    const double guess = cur.v + rowStep;
+                    const double d = rowDistance(probePoints, guess, unmapped);
+                    if (!unmapped && d <= h && d >= (1.0 - kStepTolerance) * h) {
+                        rows.push_back(marchRow(guess, s));
+                        continue;
+                    }
+                }
                 for (unsigned i = 1; i <= probes; ++i) {
                     const double vi = i == probes ? span.end : span.start + (span.end - span.start) * i / probes;
                     if (!(vi > cur.v))
@@ -386,6 +368,7 @@ private:
                     next = std::min(span.end, cur.v + height / double(ParamMesh::kGrid) * 2.0);
                 if (!(next > cur.v))
                     next = span.end;
+                rowStep = next - cur.v;
                 rows.push_back(marchRow(next, s));
             }
         }
@@ -509,14 +492,14 @@ private:
         us.push_back(m_uSpans.back().end);
         uKnot.push_back(1);
         auto addRow = [&](double v) {
-            m_iso.setV(v);
+            m_iso.setV(v, false);
             Row row;
             row.v = v;
             row.points.resize(us.size());
             for (std::size_t i = 0; i < us.size(); ++i) {
                 RowPoint& p = row.points[i];
                 p.u = us[i];
-                p.local = m_iso.at(us[i]);
+                p.local = m_iso.point(us[i]);
                 p.knot = uKnot[i] != 0;
             }
             rows.push_back(std::move(row));
@@ -556,17 +539,93 @@ private:
             lowered = true;
         }
         m_uSegments = m;
+        m_vSegments = n;
         m_out.uSegments = m;
         m_out.vSegments = n;
         m_out.substituted = lowered;
         m_out.effectiveValue = double(m) * double(n);
-        layoutGrid(rows, m, n);
         m_loops.clear();
         for (std::size_t l = 0; l < m_patch.loops.size(); ++l) {
             m_loops.emplace_back();
             for (std::size_t c = 0; c < m_patch.loops[l].size(); ++c)
                 subdivideTrim(l, c, m_loops.back());
         }
+        if (!m_patch.loops.empty())
+            layoutGrid(rows, m, n);
+    }
+
+    // The untrimmed constant method straight to the output: the basis
+    // functions of every u sample are computed once and shared by all rows,
+    // each row collapses the columns once (SurfaceRowEvaluator), and each
+    // quadrilateral is cut along its shorter diagonal.
+    void emitGrid()
+    {
+        const std::uint32_t m = m_uSegments, n = m_vSegments;
+        const unsigned ku = m_s.uOrder;
+        std::vector<double> us, vs;
+        for (const Span& span : m_uSpans)
+            for (std::uint32_t j = 0; j < m; ++j)
+                us.push_back(span.start + (span.end - span.start) * double(j) / double(m));
+        us.push_back(m_uSpans.back().end);
+        for (const Span& span : m_vSpans)
+            for (std::uint32_t j = 0; j < n; ++j)
+                vs.push_back(span.start + (span.end - span.start) * double(j) / double(n));
+        vs.push_back(m_vSpans.back().end);
+        const std::size_t columns = us.size(), rowCount = vs.size();
+        std::vector<std::size_t> spanOf(columns);
+        std::vector<double> basis(2 * ku * columns);
+        for (std::size_t i = 0; i < columns; ++i) {
+            spanOf[i] = findKnotSpan(m_s.uKnots, m_s.numColumns, ku, us[i]);
+            basisWithDerivative(m_s.uKnots, spanOf[i], ku, us[i], &basis[2 * ku * i], &basis[2 * ku * i + ku]);
+        }
+        const std::size_t count = columns * rowCount;
+        m_out.positions.resize(3 * count);
+        m_out.normals.resize(3 * count);
+        m_out.uvs.resize(2 * count);
+        m_out.parameters.resize(2 * count);
+        SurfaceRowEvaluator row(m_s);
+        for (std::size_t r = 0; r < rowCount; ++r) {
+            row.setV(vs[r], true);
+            for (std::size_t i = 0; i < columns; ++i) {
+                const std::size_t k = r * columns + i;
+                const SurfacePoint p = row.pointWithNormal(us[i], spanOf[i], &basis[2 * ku * i], &basis[2 * ku * i + ku]);
+                writeVertex(k, p, us[i], vs[r]);
+            }
+        }
+        m_out.triangles.resize(6 * (columns - 1) * (rowCount - 1));
+        std::uint32_t* out = m_out.triangles.data();
+        const float* p = m_out.positions.data();
+        auto squared = [p](std::uint32_t x, std::uint32_t y) {
+            const float dx = p[3 * y] - p[3 * x], dy = p[3 * y + 1] - p[3 * x + 1], dz = p[3 * y + 2] - p[3 * x + 2];
+            return dx * dx + dy * dy + dz * dz;
+        };
+        for (std::size_t r = 0; r + 1 < rowCount; ++r)
+            for (std::size_t i = 0; i + 1 < columns; ++i) {
+                const std::uint32_t a = std::uint32_t(r * columns + i), b = a + 1;
+                const std::uint32_t d = std::uint32_t((r + 1) * columns + i), c = d + 1;
+                const bool ac = squared(a, c) <= squared(b, d);
+                out[0] = a;
+                out[1] = b;
+                out[2] = ac ? c : d;
+                out[3] = ac ? a : b;
+                out[4] = c;
+                out[5] = d;
+                out += 6;
+            }
+    }
+
+    void writeVertex(std::size_t i, const SurfacePoint& p, double u, double v)
+    {
+        m_out.positions[3 * i] = float(p.point.x);
+        m_out.positions[3 * i + 1] = float(p.point.y);
+        m_out.positions[3 * i + 2] = float(p.point.z);
+        m_out.normals[3 * i] = float(p.normal.x);
+        m_out.normals[3 * i + 1] = float(p.normal.y);
+        m_out.normals[3 * i + 2] = float(p.normal.z);
+        m_out.uvs[2 * i] = float(u);
+        m_out.uvs[2 * i + 1] = float(v);
+        m_out.parameters[2 * i] = u;
+        m_out.parameters[2 * i + 1] = v;
     }
 
     // ---- The mesh -----------------------------------------------------------
@@ -946,15 +1005,23 @@ private:
     void improve()
     {
         std::vector<std::pair<std::uint32_t, std::uint32_t>> stack;
-        for (std::uint32_t t = 0; t < m_mesh.triangles.size(); ++t) {
-            const ParamMesh::Triangle& tri = m_mesh.triangles[t];
-            if (!tri.alive)
-                continue;
-            for (int e = 0; e < 3; ++e)
-                if (tri.neighbour[e] != kNone && tri.neighbour[e] > t && flippable(t, e))
-                    stack.emplace_back(tri.v[(e + 1) % 3], tri.v[(e + 2) % 3]);
-        }
-        std::size_t budget = 16 * stack.size() + 1024;
+        // A first pass straight over the triangles; what a flip disturbs
+        // goes on the stack.
+        for (std::uint32_t t = 0; t < m_mesh.triangles.size(); ++t)
+            for (int e = 0; e < 3; ++e) {
+                const ParamMesh::Triangle& tri = m_mesh.triangles[t];
+                if (!tri.alive || tri.neighbour[e] == kNone || tri.neighbour[e] < t || !flippable(t, e))
+                    continue;
+                const std::uint32_t a = tri.v[(e + 1) % 3], b = tri.v[(e + 2) % 3];
+                const std::uint32_t r = tri.v[e], s = opposite(t, e);
+                if (s == kNone || !(metric(r, s) < metric(a, b) * (1.0 - 1e-12)) || !m_mesh.flip(t, e))
+                    continue;
+                stack.emplace_back(r, a);
+                stack.emplace_back(a, s);
+                stack.emplace_back(s, b);
+                stack.emplace_back(b, r);
+            }
+        std::size_t budget = 16 * stack.size() + 16 * m_mesh.triangles.size() + 1024;
         while (!stack.empty() && budget-- > 0) {
             const auto edge = stack.back();
             stack.pop_back();
@@ -1081,6 +1148,7 @@ private:
                 const ParamMesh::Triangle& around = m_mesh.triangles[tri];
                 consider(m, around.v[(corner + 1) % 3]);
                 consider(around.v[(corner + 1) % 3], around.v[(corner + 2) % 3]);
+                return true;
             });
         }
     }
@@ -1107,19 +1175,28 @@ private:
         m_out.normals.resize(3 * n);
         m_out.uvs.resize(2 * n);
         m_out.parameters.resize(2 * n);
-        for (std::size_t i = 0; i < n; ++i) {
-            const ParamMesh::Vertex& vertex = m_mesh.vertices[order[i]];
-            const SurfacePoint sp = evaluateWithNormal(m_s, vertex.u, vertex.v);
-            m_out.positions[3 * i] = float(sp.point.x);
-            m_out.positions[3 * i + 1] = float(sp.point.y);
-            m_out.positions[3 * i + 2] = float(sp.point.z);
-            m_out.normals[3 * i] = float(sp.normal.x);
-            m_out.normals[3 * i + 1] = float(sp.normal.y);
-            m_out.normals[3 * i + 2] = float(sp.normal.z);
-            m_out.uvs[2 * i] = float(vertex.u);
-            m_out.uvs[2 * i + 1] = float(vertex.v);
-            m_out.parameters[2 * i] = vertex.u;
-            m_out.parameters[2 * i + 1] = vertex.v;
+        // Vertices on one row share its collapsed columns.
+        std::vector<std::pair<double, std::uint32_t>> keyed(n);
+        for (std::uint32_t i = 0; i < n; ++i)
+            keyed[i] = {m_mesh.vertices[order[i]].v, i};
+        std::sort(keyed.begin(), keyed.end());
+        std::vector<std::uint32_t> byV(n);
+        for (std::uint32_t i = 0; i < n; ++i)
+            byV[i] = keyed[i].second;
+        SurfaceRowEvaluator row(m_s);
+        for (std::size_t i = 0; i < n;) {
+            const double v = m_mesh.vertices[order[byV[i]]].v;
+            std::size_t j = i;
+            while (j < n && m_mesh.vertices[order[byV[j]]].v == v)
+                ++j;
+            const bool shared = j - i >= 8;
+            if (shared)
+                row.setV(v, true);
+            for (; i < j; ++i) {
+                const ParamMesh::Vertex& vertex = m_mesh.vertices[order[byV[i]]];
+                const SurfacePoint p = shared ? row.pointWithNormal(vertex.u) : evaluateWithNormal(m_s, vertex.u, v);
+                writeVertex(byV[i], p, vertex.u, v);
+            }
         }
     }
 
@@ -1130,14 +1207,16 @@ private:
     SurfaceDomain m_domain;
     std::vector<Span> m_uSpans;
     std::vector<Span> m_vSpans;
-    IsoRow m_iso;
+    SurfaceRowEvaluator m_iso;
 
     bool m_adaptive = false;
     double m_c = kInfinity;
     std::uint32_t m_uSegments = 1;
+    std::uint32_t m_vSegments = 1;
     bool m_gridRows = false;
     std::size_t m_vertexBudget = std::numeric_limits<std::size_t>::max();
     std::size_t m_layoutVertices = 0;
+    std::size_t m_lastRowSize = 0;
     double m_vProgress = 0.0;
 
     std::vector<std::vector<TrimVertex>> m_loops;
@@ -1153,9 +1232,20 @@ private:
 
 } // namespace
 
-TessellatedSurface tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how)
+void tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how, TessellatedSurface& out)
 {
-    TessellatedSurface out;
+    out.positions.clear();
+    out.normals.clear();
+    out.uvs.clear();
+    out.parameters.clear();
+    out.triangles.clear();
+    out.substituted = false;
+    out.effectiveValue = 0.0;
+    out.uSegments = out.vSegments = 0;
+    out.capped = false;
+    out.crossing = false;
+    out.crossingLoop = out.crossingOther = 0;
+    out.crossingU = out.crossingV = 0.0;
     Tessellator(patch, how, out).run();
     if (out.crossing) {
         out.positions.clear();
@@ -1164,6 +1254,12 @@ TessellatedSurface tessellateSurface(const PatchRef& patch, const SurfaceSubdivi
         out.parameters.clear();
         out.triangles.clear();
     }
+}
+
+TessellatedSurface tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how)
+{
+    TessellatedSurface out;
+    tessellateSurface(patch, how, out);
     return out;
 }
 

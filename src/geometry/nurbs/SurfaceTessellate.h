@@ -92,5 +92,8 @@ struct TessellatedSurface {
 /// is bounded by kMaxTriangles and the input's size, whatever the values.
 /// Errors: none; crossing loops and substitutions are reported in the result.
 TessellatedSurface tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how);
+/// The same, replacing the contents of `out` and reusing its storage (for a
+/// caller that tessellates again and again).
+void tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how, TessellatedSurface& out);
 
 } // namespace q3::nurbs
