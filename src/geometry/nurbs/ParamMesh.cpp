@@ -165,6 +165,15 @@ void ParamMesh::kill(std::uint32_t t)
     --m_alive;
 }
 
+void ParamMesh::refreshVertexTriangles()
+{
+    for (Vertex& vertex : vertices)
+        vertex.triangle = kNone;
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+        if (triangles[t].alive)
+            touchVertices(t);
+}
+
 void ParamMesh::build(const std::vector<std::array<std::uint32_t, 3>>& corners)
 {
     triangles.clear();
@@ -551,6 +560,89 @@ bool ParamMesh::removeVertex(std::uint32_t a)
     return true;
 }
 
+bool ParamMesh::collapsible(std::uint32_t v, std::uint32_t w, std::vector<std::uint32_t>& link) const
+{
+    link.clear();
+    bool blocked = false, touchesW = false, boundary = false;
+    std::uint32_t boundaryOther = kNone;
+    std::size_t fan = 0;
+    forEachAround(v, [&](std::uint32_t t, int c) {
+        const Triangle& tri = triangles[t];
+        const int ex = prev3(c), ey = next3(c); // edges v -> x (opposite y) and y -> v (opposite x)
+        if (((tri.constrained | tri.fixed) >> ex) & 1u || ((tri.constrained | tri.fixed) >> ey) & 1u)
+            blocked = true;
+        const std::uint32_t x = tri.v[next3(c)], y = tri.v[prev3(c)];
+        if (tri.neighbour[ex] == kNone) {
+            boundary = true;
+            if (x != w)
+                boundaryOther = x;
+        }
+        if (tri.neighbour[ey] == kNone) {
+            boundary = true;
+            if (y != w)
+                boundaryOther = y;
+        }
+        if (x == w || y == w) {
+            touchesW = true;
+        } else if (orient(w, x, y) <= 0) {
+            blocked = true;
+        }
+        for (std::uint32_t z : {x, y})
+            if (z != w && std::find(link.begin(), link.end(), z) == link.end())
+                link.push_back(z);
+        ++fan;
+        return !blocked;
+    });
+    if (blocked || !touchesW || fan < 2)
+        return false;
+    if (boundary) {
+        // w must be a boundary neighbour, in line with v and the other one.
+        std::uint32_t t;
+        int e;
+        const bool vw = findEdge(v, w, t, e), wv = findEdge(w, v, t, e);
+        if (vw == wv || boundaryOther == kNone || orient(w, v, boundaryOther) != 0)
+            return false;
+    }
+    // Link condition: the only neighbours v and w share are the third
+    // vertices of the triangles on edge (v, w) (else an edge would double).
+    std::vector<std::uint32_t> wings;
+    forEachAround(v, [&](std::uint32_t t, int c) {
+        const Triangle& tri = triangles[t];
+        const std::uint32_t x = tri.v[next3(c)], y = tri.v[prev3(c)];
+        if (x == w)
+            wings.push_back(y);
+        if (y == w)
+            wings.push_back(x);
+        return true;
+    });
+    bool doubled = false;
+    forEachAround(w, [&](std::uint32_t t, int c) {
+        const Triangle& tri = triangles[t];
+        for (std::uint32_t z : {tri.v[next3(c)], tri.v[prev3(c)]})
+            if (z != v && std::find(link.begin(), link.end(), z) != link.end() &&
+                std::find(wings.begin(), wings.end(), z) == wings.end())
+                doubled = true;
+        return !doubled;
+    });
+    return !doubled;
+}
+
+void ParamMesh::collapse(std::uint32_t v, std::uint32_t w)
+{
+    std::vector<std::uint32_t> fan;
+    std::vector<std::array<std::uint32_t, 3>> fresh;
+    forEachAround(v, [&](std::uint32_t t, int c) {
+        const Triangle& tri = triangles[t];
+        fan.push_back(t);
+        const std::uint32_t x = tri.v[next3(c)], y = tri.v[prev3(c)];
+        if (x != w && y != w)
+            fresh.push_back({w, x, y});
+        return true;
+    });
+    replace(fan.data(), fan.size(), fresh.data(), fresh.size(), nullptr, 0);
+    vertices[v].triangle = kNone;
+}
+
 bool ParamMesh::firstCrossing(std::uint32_t a, std::uint32_t b, std::uint32_t& through,
                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& crossed, bool& hitsConstraint)
 {
@@ -711,6 +803,49 @@ ParamMesh::SegmentResult ParamMesh::insertSegment(std::uint32_t a, std::uint32_t
         start = end;
     }
     return SegmentResult::kInserted;
+}
+
+std::string ParamMesh::check() const
+{
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+        const Triangle& tri = triangles[t];
+        if (!tri.alive)
+            continue;
+        if (orient(tri.v[0], tri.v[1], tri.v[2]) <= 0)
+            return "triangle " + std::to_string(t) + " not ccw";
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t n = tri.neighbour[e];
+            if (n == kNone)
+                continue;
+            if (!triangles[n].alive)
+                return "triangle " + std::to_string(t) + " links a dead one";
+            const std::uint32_t a = tri.v[next3(e)], b = tri.v[prev3(e)];
+            bool back = false;
+            for (int f = 0; f < 3; ++f)
+                if (triangles[n].neighbour[f] == t && triangles[n].v[next3(f)] == b && triangles[n].v[prev3(f)] == a)
+                    back = true;
+            if (!back)
+                return "triangle " + std::to_string(t) + " edge " + std::to_string(e) + " not linked back";
+        }
+        for (std::uint32_t v : tri.v) {
+            const std::uint32_t vt = vertices[v].triangle;
+            if (vt == kNone || !triangles[vt].alive)
+                return "vertex " + std::to_string(v) + " has no alive triangle but triangle " + std::to_string(t) +
+                       " uses it";
+            const Triangle& o = triangles[vt];
+            if (o.v[0] != v && o.v[1] != v && o.v[2] != v)
+                return "vertex " + std::to_string(v) + " points at triangle " + std::to_string(vt) +
+                       " which does not hold it";
+            bool found = false;
+            forEachAround(v, [&](std::uint32_t u, int) {
+                found = found || u == t;
+                return !found;
+            });
+            if (!found)
+                return "vertex " + std::to_string(v) + "'s fan misses triangle " + std::to_string(t);
+        }
+    }
+    return {};
 }
 
 } // namespace q3::nurbs

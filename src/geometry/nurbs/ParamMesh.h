@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 // A triangulation of a rectangle of parameters (a patch's (u, v) domain) that
@@ -113,6 +114,17 @@ public:
     /// neighbours). False, nothing changed, when that is impossible.
     bool removeVertex(std::uint32_t a);
 
+    /// Whether vertex v can be merged into its neighbour w (edge collapse):
+    /// v is on no constrained or fixed edge; on the boundary, w is a boundary
+    /// neighbour in line with v and v's other boundary neighbour (so the
+    /// boundary keeps its shape); every triangle that replaces one of v's is
+    /// strictly counterclockwise; no edge would be doubled. `link` receives
+    /// the vertices the new edges from w go to.
+    bool collapsible(std::uint32_t v, std::uint32_t w, std::vector<std::uint32_t>& link) const;
+    /// Merges v into w (collapsible(v, w) must hold): v's triangles become
+    /// w's, those on edge (v, w) go.
+    void collapse(std::uint32_t v, std::uint32_t w);
+
     /// What insertSegment met.
     enum class SegmentResult {
         kInserted,
@@ -140,8 +152,14 @@ public:
 
     /// Kills triangles and unlinks them from their neighbours.
     void kill(std::uint32_t triangle);
+    /// Points every vertex at an alive triangle using it, or kNone when none
+    /// does (after killing triangles in bulk).
+    void refreshVertexTriangles();
 
     std::size_t aliveCount() const { return m_alive; }
+    /// Debug: the first inconsistency found (neighbour links, orientation,
+    /// vertex triangles), or an empty string.
+    std::string check() const;
 
 private:
     /// Swaps the alive triangles `old` for `fresh` covering the same region:
@@ -171,6 +189,11 @@ void ParamMesh::forEachAround(std::uint32_t a, F&& f) const
     const std::uint32_t start = vertices[a].triangle;
     if (start == kNone || start >= triangles.size() || !triangles[start].alive)
         return;
+    {
+        const Triangle& first = triangles[start];
+        if (first.v[0] != a && first.v[1] != a && first.v[2] != a)
+            return;
+    }
     auto cornerOf = [&](std::uint32_t t) {
         const Triangle& tri = triangles[t];
         return tri.v[0] == a ? 0 : tri.v[1] == a ? 1 : 2;

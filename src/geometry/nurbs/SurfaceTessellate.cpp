@@ -3,50 +3,56 @@
 //
 // Subdividing a NURB patch into triangles under the article's three methods
 // ("CONTROLLING SUBDIVISION"), the surface counterpart of Tessellate.cpp.
+// Every vertex is the surface evaluated in double at its (u, v) (Surface.cpp);
+// the bound is measured between the images of an edge's two vertices, as the
+// curve methods measure a segment.
 //
 // 1. Rows. The domain is cut by rows of constant v, each a polyline of
 //    vertices along u; every knot of a non-empty span is a row (in v) and a
-//    vertex of every row (in u), so knot lines are mesh lines and creases are
-//    never cut across. Constant method: c2 rows per v span, c1 segments per u
-//    span, at even parameters. Adaptive methods: along a row the vertices
-//    march as Tessellate.cpp's curves do, each step ending where the mapped
-//    chord lies in [97 %, 100 %] of s = kRowSpacing * c1 (probes per span
-//    bracket the crossing, safeguarded regula falsi closes in); between rows
-//    the next row is placed where the largest mapped distance between
-//    S(u, v) and S(u, v') over the current row's vertices u lies in the same
-//    window of h = kRowSpacing * c1. With s and h below c1 / sqrt(2), the
-//    diagonal of each cell of two rows stays within c1 where the surface is
-//    locally flat and its parameter lines roughly orthogonal.
-// 2. Strips. Two neighbouring rows are joined span by span: the constant
-//    method cuts each quadrilateral along its shorter diagonal; the adaptive
-//    methods zip the two polylines, each time taking the shorter of the two
-//    possible diagonals (measured where lengths are measured).
+//    vertex of every row (in u). Constant method: c2 rows per v span and c1
+//    segments per u span at even parameters, every quadrilateral cut along
+//    its shorter diagonal (untrimmed patches go straight to the output from
+//    here). Adaptive methods: along a row the vertices march as the curves'
+//    do, each step ending where the mapped chord lies in [97 %, 100 %] of
+//    s = kAlongRows * c1 (probes per span bracket the crossing, a
+//    safeguarded regula falsi closes in), except that a step first tries the
+//    parameter halfway between two vertices of the row before, so that
+//    neighbouring rows alternate; the next row is placed where the largest
+//    mapped distance between S(u, v) and S(u, v') over the current row's
+//    vertices lies in the same window of h = kAcrossRows * c1.
+// 2. Strips. Two neighbouring rows are joined span by span (constant: cell
+//    by cell; adaptive: zipping the two polylines, each time taking the
+//    shorter of the two possible diagonals). With alternating rows the
+//    triangles come out close to equilateral.
 // 3. Trims. Each trim curve is subdivided as a NURB curve whose chords are
 //    measured on the surface (Tessellate.cpp, with the map
 //    (u, v) -> S(u, v) -> measured space), so its chords obey the same bound;
-//    each loop's polyline is inserted into the mesh (ParamMesh: its vertices,
-//    then its segments as constraints). A constraint that meets another
-//    means the loops cross or touch: the patch is refused. Triangles are then
-//    classified by a flood fill that stops at constraints, seeded on the
-//    inside of every loop with the loop's own orientation (the trim rule of
-//    QD3DGeometry.h: inside a counterclockwise loop is kept, inside a
-//    clockwise one is not); what no seed reaches is outside every loop, kept
-//    when no outermost loop is counterclockwise. Dropped triangles go.
-// 4. Improvement and refinement (adaptive methods). Edges are flipped where
-//    the other diagonal of their quadrilateral is shorter; then every edge
-//    still longer than c1 is split at its parameter midpoint, longest first
-//    (conforming: both triangles of the edge are split), with flips around
-//    the new vertex. This is what makes the bound hold where the rows'
-//    assumptions do not (curved, sheared or folded parameterisations, the
-//    cells cut by trims). An edge with one end without an image (nearer than
-//    the hither plane) is measured by the part of it that is drawn: from its
-//    visible end to where the chord crosses into the part without an image.
-// 5. Output: each vertex evaluated with its exact partial derivatives
-//    (Surface.cpp) for its unit normal.
+//    each loop's polyline goes into the mesh as constraints (ParamMesh:
+//    vertices, then segments by Sloan's flips). A constraint that meets
+//    another means the loops cross or touch: the patch is refused. Triangles
+//    are then classified by a flood fill that stops at constraints, seeded
+//    on the inside of every loop with the loop's own orientation (QD3DGeometry.h:
+//    inside a counterclockwise loop is kept, inside a clockwise one not); what
+//    no seed reaches is outside every loop, kept when no outermost loop runs
+//    counterclockwise. Dropped triangles go.
+// 4. Adaptive methods: edges are flipped where the other diagonal of their
+//    quadrilateral is shorter; every edge still longer than c1 is split at
+//    its parameter midpoint, longest first, with flips around the new vertex
+//    (this makes the bound hold where the rows' assumptions do not: curved,
+//    sheared or folded parameterisations, cells cut by trims); then vertices
+//    are merged into neighbours, shortest edges first, wherever every edge
+//    stays within c1 (edge collapse), which takes out what the layout's
+//    margins and the span ends left. Knot lines stay edges of the mesh only
+//    where the surface has a crease (a knot repeated order - 1 times).
+//    An edge with one end without an image (nearer than the hither plane) is
+//    measured by the part of it that is drawn: from its visible end to where
+//    the chord crosses into the half-space without an image.
+// 5. Output: each vertex evaluated with its exact partial derivatives for
+//    its unit normal, vertices of one row sharing the row's collapsed columns.
 //
 // The triangle cap (kMaxTriangles) is respected by planning: an adaptive
 // layout that would pass 7/8 of it is abandoned early and redone with a
-// larger c1 (a constant one with fewer segments per span), the rest is room
+// larger c1 (a constant one with fewer segments per span); the rest is room
 // for the refinement, which stops at the cap.
 
 #include "geometry/nurbs/SurfaceTessellate.h"
@@ -139,6 +145,8 @@ public:
         if (m_adaptive) {
             improve();
             refine();
+            coarsen();
+            improve();
         } else if (m_trimmed) {
             improve();
         }
@@ -176,9 +184,18 @@ private:
 
     // ---- Rows -------------------------------------------------------------
 
-    // Greedy march along the row at the current IsoRow v, bound s.
-    Row marchRow(double v, double s)
+    // Greedy march along the row at v, bound s. With a guide (the row
+    // before), a step first tries the parameters halfway between the guide's
+    // vertices, so that the two rows' vertices alternate and the triangles
+    // between them come out near equilateral; a step where no halfway point
+    // lies in [0.4 s, s] is placed by the plain march.
+    Row marchRow(double v, double s, const Row* guide = nullptr)
     {
+        m_halfway.clear();
+        if (guide != nullptr)
+            for (std::size_t i = 0; i + 1 < guide->points.size(); ++i)
+                m_halfway.push_back(0.5 * (guide->points[i].u + guide->points[i + 1].u));
+        std::size_t h = 0;
         m_iso.setV(v, false);
         Row row;
         row.v = v;
@@ -215,8 +232,31 @@ private:
                         break;
                     continue;
                 }
-                const RowPoint lo = (k > j && table[k - 1].u > cur.u) ? table[k - 1] : cur;
-                RowPoint next = closeIn(cur, lo, table[k], s, cur.u + step);
+                RowPoint lo = (k > j && table[k - 1].u > cur.u) ? table[k - 1] : cur;
+                RowPoint hi = table[k];
+                while (h < m_halfway.size() && m_halfway[h] <= cur.u)
+                    ++h;
+                bool placed = false;
+                for (std::size_t g = h; g < m_halfway.size() && m_halfway[g] < hi.u; ++g) {
+                    const RowPoint p = sample(m_halfway[g]);
+                    const double d = chord(cur, p);
+                    if (!p.mapped || d > s) {
+                        if (p.mapped && p.u > lo.u)
+                            hi = p;
+                        break;
+                    }
+                    if (d >= 0.4 * s) {
+                        step = p.u - cur.u;
+                        push(row, p);
+                        placed = true;
+                        break;
+                    }
+                    if (p.u > lo.u)
+                        lo = p;
+                }
+                if (placed)
+                    continue;
+                RowPoint next = closeIn(cur, lo, hi, s, cur.u + step);
                 if (!(next.u > cur.u) || next.u >= span.end)
                     break;
                 step = next.u - cur.u;
@@ -305,8 +345,8 @@ private:
 
     void layoutAdaptive(std::vector<Row>& rows)
     {
-        const double s = kRowSpacing * m_c;
-        const double h = kRowSpacing * m_c;
+        const double s = kAlongRows * m_c;
+        const double h = kAcrossRows * m_c;
         m_layoutVertices = 0;
         m_vProgress = 0.0;
         rows.clear();
@@ -339,7 +379,7 @@ private:
                     const double guess = cur.v + rowStep;
                     const double d = rowDistance(probePoints, guess, unmapped);
                     if (!unmapped && d <= h && d >= (1.0 - kStepTolerance) * h) {
-                        rows.push_back(marchRow(guess, s));
+                        rows.push_back(marchRow(guess, s, &cur));
                         continue;
                     }
                 }
@@ -369,7 +409,7 @@ private:
                 if (!(next > cur.v))
                     next = span.end;
                 rowStep = next - cur.v;
-                rows.push_back(marchRow(next, s));
+                rows.push_back(marchRow(next, s, &cur));
             }
         }
     }
@@ -705,18 +745,26 @@ private:
         }
         m_mesh.build(corners);
         // Knot lines: along every row that lies on a v knot and across every
-        // strip at every u knot.
+        // strip at every u knot; the adaptive methods keep only creases
+        // (the others may be flipped and collapsed like any edge).
+        auto crease = [&](const float* knotVector, std::size_t count, unsigned order, double value) {
+            if (!m_adaptive)
+                return true;
+            const std::size_t multiplicity = std::size_t(std::count(knotVector, knotVector + count, float(value)));
+            return multiplicity + 1 >= order;
+        };
+        const std::size_t uKnotCount = m_s.numColumns + m_s.uOrder, vKnotCount = m_s.numRows + m_s.vOrder;
         for (std::size_t k = 0; k < kept.size(); ++k) {
             const std::size_t r = kept[k];
-            const bool onKnot = k == 0 || k + 1 == kept.size() ||
-                                std::any_of(m_vSpans.begin(), m_vSpans.end(),
+            const bool onKnot = std::any_of(m_vSpans.begin(), m_vSpans.end(),
                                             [&](const Span& span) { return span.start == rows[r].v; });
-            if (onKnot)
+            if (onKnot && k > 0 && crease(m_s.vKnots, vKnotCount, m_s.vOrder, rows[r].v))
                 for (std::size_t i = 0; i + 1 < ids[r].size(); ++i)
                     m_mesh.markFixed(ids[r][i], ids[r][i + 1]);
             if (k + 1 < kept.size() && knots[r].size() == knots[kept[k + 1]].size())
-                for (std::size_t j = 0; j < knots[r].size(); ++j)
-                    m_mesh.markFixed(ids[r][knots[r][j]], ids[kept[k + 1]][knots[kept[k + 1]][j]]);
+                for (std::size_t j = 1; j + 1 < knots[r].size(); ++j)
+                    if (j - 1 < m_uSpans.size() && crease(m_s.uKnots, uKnotCount, m_s.uOrder, m_uSpans[j - 1].end))
+                        m_mesh.markFixed(ids[r][knots[r][j]], ids[kept[k + 1]][knots[kept[k + 1]][j]]);
         }
     }
 
@@ -960,6 +1008,7 @@ private:
             if (!kept)
                 m_mesh.kill(t);
         }
+        m_mesh.refreshVertexTriangles();
     }
 
     // ---- Improvement and refinement ----------------------------------------
@@ -1153,6 +1202,79 @@ private:
         }
     }
 
+    // Merges vertices into neighbours while every edge stays within the
+    // bound, shortest edges first: the layout's rows are conservative (their
+    // spacing keeps a right-angled cell's diagonal within c1, and the rows
+    // follow the worst place along them), so most of the mesh has room.
+    void coarsen()
+    {
+        if (!std::isfinite(m_c))
+            return;
+
+        struct Candidate {
+            double length;
+            std::uint32_t v;
+            bool operator<(const Candidate& o) const { return length > o.length; }
+        };
+        std::priority_queue<Candidate> heap;
+        auto shortest = [&](std::uint32_t v) {
+            double best = kInfinity;
+            m_mesh.forEachAround(v, [&](std::uint32_t t, int c) {
+                best = std::min(best, drawnLength(v, m_mesh.triangles[t].v[(c + 1) % 3]));
+                return true;
+            });
+            return best;
+        };
+        auto alive = [&](std::uint32_t v) {
+            const std::uint32_t t = m_mesh.vertices[v].triangle;
+            return t != kNone && m_mesh.triangles[t].alive && m_mesh.vertices[v].loop < 0;
+        };
+        for (std::uint32_t v = 0; v < m_mesh.vertices.size(); ++v)
+            if (alive(v))
+                heap.push(Candidate{shortest(v), v});
+        std::vector<std::uint32_t> link;
+        std::vector<std::pair<double, std::uint32_t>> neighbours;
+        while (!heap.empty()) {
+            const Candidate top = heap.top();
+            heap.pop();
+            const std::uint32_t v = top.v;
+            if (!alive(v))
+                continue;
+            const double now = shortest(v);
+            if (now != top.length) {
+                heap.push(Candidate{now, v});
+                continue;
+            }
+            neighbours.clear();
+            m_mesh.forEachAround(v, [&](std::uint32_t t, int c) {
+                const std::uint32_t w = m_mesh.triangles[t].v[(c + 1) % 3];
+                neighbours.emplace_back(drawnLength(v, w), w);
+                return true;
+            });
+            std::sort(neighbours.begin(), neighbours.end());
+            for (const auto& candidate : neighbours) {
+                const std::uint32_t w = candidate.second;
+                if (!m_mesh.collapsible(v, w, link))
+                    continue;
+                bool fits = true;
+                for (std::uint32_t x : link)
+                    if (drawnLength(w, x) > m_c) {
+                        fits = false;
+                        break;
+                    }
+                if (!fits)
+                    continue;
+                m_mesh.collapse(v, w);
+                if (alive(w))
+                    heap.push(Candidate{shortest(w), w});
+                for (std::uint32_t x : link)
+                    if (alive(x))
+                        heap.push(Candidate{shortest(x), x});
+                break;
+            }
+        }
+    }
+
     // ---- Output -----------------------------------------------------------
 
     void emit()
@@ -1217,6 +1339,7 @@ private:
     std::size_t m_vertexBudget = std::numeric_limits<std::size_t>::max();
     std::size_t m_layoutVertices = 0;
     std::size_t m_lastRowSize = 0;
+    std::vector<double> m_halfway;
     double m_vProgress = 0.0;
 
     std::vector<std::vector<TrimVertex>> m_loops;

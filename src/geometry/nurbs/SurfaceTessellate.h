@@ -24,12 +24,15 @@ struct PatchRef {
 /// gets at least two (kQ3SubdivisionMaxTrianglesPerPatch).
 constexpr std::size_t kMaxTriangles = limits::kMaxTrianglesPerPatch;
 
-/// Adaptive method: a row of vertices (along u) is spaced at most
-/// kRowSpacing * maxEdge, and rows are at most kRowSpacing * maxEdge apart
-/// (measured along v at the row's vertices), so that the diagonal of the
-/// rectangle they make, whichever way a triangle cuts it, stays within
-/// maxEdge: kRowSpacing^2 * 2 < 1.
-constexpr double kRowSpacing = 0.7;
+/// Adaptive method: vertices along a row (constant v) are at most
+/// kAlongRows * maxEdge apart, rows at most kAcrossRows * maxEdge apart
+/// (measured along v at the row's vertices). With each row's vertices halfway
+/// between the previous row's, the edges between rows are then about
+/// sqrt(kAcrossRows^2 + kAlongRows^2 / 4) = 0.89 maxEdge, and stay within it
+/// while the two rows' vertices are up to a sixth of a step out of phase
+/// (where they are not, the refinement splits what is too long).
+constexpr double kAlongRows = 0.95;
+constexpr double kAcrossRows = 0.75;
 
 /// Adaptive method: each step of a row or between rows ends where the
 /// measured length lies in [(1 - kStepTolerance) * bound, bound].
