@@ -3,7 +3,8 @@
 
 /*
  * render_scenes OUTDIR: renders every scene of samples/scenes (surfaces filled and
- * in wireframe, per-vertex colours, hidden surfaces) to OUTDIR/NAME.png and
+ * in wireframe, per-vertex colours, hidden surfaces) and samples/lighting (lights,
+ * illumination shaders, fill, backfacing and interpolation styles, groups) to OUTDIR/NAME.png and
  * lists them with their captions in OUTDIR/index.md.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -11,6 +12,7 @@
 #include "QD3D.h"
 #include "QD3DErrors.h"
 #include "q3png.h"
+#include "lit_scenes.h"
 #include "scenes.h"
 
 #include <errno.h>
@@ -24,6 +26,26 @@ static void print_error(TQ3Error firstError, TQ3Error lastError, long reference)
     (void)firstError;
     (void)reference;
     fprintf(stderr, "render_scenes: Q3 error %d: %s\n", (int)lastError, Q3Error_GetMessage());
+}
+
+/* Writes a rendered scene to OUTDIR/NAME.png and lists it in the index;
+ * returns the number of failures (0 or 1). */
+static int write_scene(const char *outdir, FILE *index, const Q3Scene *scene, int rendered, const unsigned char *rgba)
+{
+    char path[4096];
+    int written;
+    if (rendered != 0) {
+        fprintf(stderr, "render_scenes: %s could not be rendered\n", scene->name);
+        return 1;
+    }
+    snprintf(path, sizeof path, "%s/%s.png", outdir, scene->name);
+    written = q3png_write_rgba8(path, rgba, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, Q3SCENE_WIDTH * 4);
+    if (written != Q3PNG_OK) {
+        fprintf(stderr, "render_scenes: %s: %s\n", path, q3png_error_string(written));
+        return 1;
+    }
+    fprintf(index, "\n## %s\n\n%s.\n\n![%s](%s.png)\n", scene->name, scene->caption, scene->name, scene->name);
+    return 0;
 }
 
 int main(int argc, char **argv)
@@ -56,20 +78,13 @@ int main(int argc, char **argv)
     fprintf(index, "# Scenes\n\nRendered by Q3 through its public C API (samples/scenes).\n");
     for (i = 0; i < q3scene_count(); i++) {
         const Q3Scene *scene = q3scene_get(i);
-        int written;
-        if (q3scene_render(scene, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, rgba) != 0) {
-            fprintf(stderr, "render_scenes: %s could not be rendered\n", scene->name);
-            failures++;
-            continue;
-        }
-        snprintf(path, sizeof path, "%s/%s.png", argv[1], scene->name);
-        written = q3png_write_rgba8(path, rgba, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, Q3SCENE_WIDTH * 4);
-        if (written != Q3PNG_OK) {
-            fprintf(stderr, "render_scenes: %s: %s\n", path, q3png_error_string(written));
-            failures++;
-            continue;
-        }
-        fprintf(index, "\n## %s\n\n%s.\n\n![%s](%s.png)\n", scene->name, scene->caption, scene->name, scene->name);
+        failures += write_scene(argv[1], index, scene, q3scene_render(scene, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, rgba),
+                                rgba);
+    }
+    for (i = 0; i < q3litscene_count(); i++) {
+        const Q3LitScene *lit = q3litscene_get(i);
+        failures += write_scene(argv[1], index, &lit->scene,
+                                q3litscene_render(lit, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, rgba), rgba);
     }
     fclose(index);
     free(rgba);

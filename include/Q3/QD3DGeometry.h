@@ -2,8 +2,9 @@
 /* Copyright (c) 2026 The Q3 authors */
 
 /*
- * Geometries: NURB curves, polylines, lines, points, triangles, polygons and
- * triangle meshes, in retained mode (an object made by ..._New and drawn with
+ * Geometries: NURB curves, polylines, lines, points, triangles, polygons,
+ * triangle meshes, and the quadrics and solids (boxes, cones, cylinders,
+ * disks, ellipses, ellipsoids, tori), in retained mode (an object made by ..._New and drawn with
  * Q3Geometry_Submit) and immediate mode (a data structure drawn at once with
  * ..._Submit).
  *
@@ -72,7 +73,10 @@ extern "C" {
  * @param geometry  the geometry to query.
  * @return its type code (kQ3GeometryTypeNURBCurve, kQ3GeometryTypePolyLine,
  *         kQ3GeometryTypeLine, kQ3GeometryTypePoint, kQ3GeometryTypeTriangle,
- *         kQ3GeometryTypePolygon, kQ3GeometryTypeTriMesh), or
+ *         kQ3GeometryTypePolygon, kQ3GeometryTypeTriMesh, kQ3GeometryTypeBox,
+ *         kQ3GeometryTypeCone, kQ3GeometryTypeCylinder, kQ3GeometryTypeDisk,
+ *         kQ3GeometryTypeEllipse, kQ3GeometryTypeEllipsoid,
+ *         kQ3GeometryTypeTorus), or
  *         kQ3ObjectTypeInvalid on failure.
  *
  * Errors:
@@ -382,8 +386,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_GetData(TQ3GeometryObject curve,
  * arrays, disposes the attribute set reference, and sets controlPoints,
  * knots and curveAttributeSet to NULL (order and numPoints are left alone).
  * Calling it again on the emptied structure does nothing and succeeds.
- * Use it only on data filled by Q3NURBCurve_GetData: arrays the caller
- * allocated itself must be freed by the caller.
+ * Use it only on data filled by Q3NURBCurve_GetData or by a curve tool of
+ * Q3NURBCurveTools.h: arrays the caller allocated itself must be freed by the
+ * caller.
  *
  * @param nurbCurveData  the structure to empty.
  * @return kQ3Success, or kQ3Failure with nothing released.
@@ -2108,6 +2113,2164 @@ Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_GetData(TQ3GeometryObject triMesh, TQ3TriMe
  * Ownership: consumes what the structure holds.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_EmptyData(TQ3TriMeshData *triMeshData);
+
+/* ---- Quadrics and solids ------------------------------------------------ */
+
+/*
+ * Boxes, cones, cylinders, disks, ellipses, ellipsoids and tori, as
+ * QuickDraw 3D 1.6 defines them: an origin and vectors span each shape
+ * (described with its type), and uMin..uMax, vMin..vMax keep a part of it.
+ * u runs around, in turns: u = 0 is the direction of majorRadius, u = 1/4
+ * that of minorRadius (counterclockwise seen from the end of orientation
+ * when majorRadius, minorRadius and orientation are right-handed).
+ *
+ * The rules their data share (each type lists those that apply, in the
+ * order they are checked). Apple's documents leave these open; Q3 decides:
+ *   - Every coordinate and parameter is finite, and the shape stays within
+ *     float's range (the origin's largest coordinate plus the vectors'
+ *     lengths is at most FLT_MAX): kQ3ErrorInvalidData.
+ *   - uMin, uMax, vMin, vMax lie in [0, 1] (the QD3D book asks for that);
+ *     where v is not an angle (cone, cylinder, disk, ellipsoid),
+ *     vMin <= vMax: kQ3ErrorInvalidData. A u range (and a torus's v range)
+ *     is an angle and wraps through 0 when min > max, as Quesa draws it:
+ *     uMin = 0.75, uMax = 0.25 is the half turn through u = 0.
+ *   - caps holds only kQ3EndCapMaskTop, kQ3EndCapMaskBottom and
+ *     kQ3EndCapMaskInterior: kQ3ErrorInvalidData.
+ *   - The vectors are independent: none is zero and the three (the two of a
+ *     disk or an ellipse) do not lie in one plane (on one line), tested as
+ *     |x . (y x z)| > 1e-6 |x| |y| |z| (|x x y| > 1e-6 |x| |y|):
+ *     kQ3ErrorDegenerateGeometry. Such a shape has no volume (no area) and
+ *     no normal; Quesa accepts it and posts this error each time it is
+ *     drawn. Q3 refuses it where it is given, so drawing never fails.
+ *   - The ranges are not empty: uMin != uMax (and not uMin = 1 with
+ *     uMax = 0), vMin != vMax: kQ3ErrorDegenerateGeometry.
+ *   - Every attribute set given is a live attribute set:
+ *     kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType.
+ * Apple's per-field setters (Q3Cone_SetOrigin, Q3Torus_SetRatio, ...) check
+ * the data as it would be with that one field changed, by the same rules:
+ * a setter never accepts what SetData refuses. Change related fields
+ * together (turn a frame, say) with SetData.
+ *
+ * Drawing. Each shape is triangles (an ellipse a polyline), every vertex
+ * with a unit normal pointing out of the shape and a surface uv
+ * (kQ3AttributeTypeSurfaceUV): (u, v) on a curved surface (u above 1 where
+ * the range wraps through 0); on a disk and a cap, the point's place in the
+ * unit square around the disk, (0.5 + 0.5 r cos 2 pi u, 0.5 + 0.5 r sin 2 pi u)
+ * at the fraction r of the radius; on a box face, u and v from 0 to 1 with u
+ * to the right and v up seen from outside; on the face of a cut, (s, v) with
+ * s from the axis (0) to the surface (1). Triangles are counterclockwise
+ * seen from outside, whatever the handedness of the vectors. A vertex takes
+ * the attributes of its part's set (face, top, bottom, interior), then the
+ * shape's own set, then the view's state. Parts that close a shape share
+ * their edges' vertices with it: the shapes are watertight.
+ *
+ * Subdivision (QD3DStyle.h).
+ *   Constant: c1 segments per full turn of u (a part of a turn in
+ *   proportion, rounded up; at least 3 for a full turn) and c2 segments
+ *   over v from 0 to 1 (likewise in proportion). Flat parts (caps, the faces
+ *   of cuts, box faces) take the count of the edge they share with the
+ *   curved surface and are not divided across.
+ *   World space and screen space: no triangle edge is longer than c1,
+ *   measured between the images of its ends in world units (after the
+ *   local-to-world transform) or in pane pixels (after the camera's
+ *   projection, perspective divide included); for an edge of which only a
+ *   part has an image (it crosses the hither plane), the length of that
+ *   part. c2 is not used. The triangles are close to the fewest this
+ *   allows: rows along u staggered by half a step, so that triangles are
+ *   nearly equilateral (Q3's tests measure the count against the lower bound
+ *   drawn area / (sqrt(3)/4 c1^2)).
+ *   A shape is drawn with at most kQ3SubdivisionMaxTrianglesPerSurface
+ *   triangles (an ellipse with kQ3SubdivisionMaxSegmentsPerCurve segments):
+ *   beyond it the constant counts are lowered, or edges longer than c1 are
+ *   allowed, and the submit posts kQ3WarningParameterOutOfRange.
+ *   A bounding loop bounds the whole shape analytically (a partial shape by
+ *   its whole shape's box). Q3Geometry_GetDecomposed gives a TriMesh (for an
+ *   ellipse a PolyLine) with the normals, uvs and part attributes as vertex
+ *   attribute arrays.
+ */
+
+/*
+ * A box: the parallelepiped with a corner at origin and the edges
+ * orientation, majorAxis and minorAxis from it (a rectangular box when they
+ * are orthogonal). faceAttributeSet is NULL or an array of six attribute
+ * sets (each may be NULL), one per face in Apple's order: left, right,
+ * front, back, top, bottom. Apple's documents disagree on which face is
+ * which (the 3DMF reference numbers them top, bottom, front, ...); Q3 uses
+ * the header's names with Quesa's geometry: left is the face at origin
+ * spanned by majorAxis and orientation (minorAxis points away from it),
+ * right the face opposite; front the face at the end of majorAxis, back the
+ * one at origin; top the face at the end of orientation, bottom the one at
+ * origin. A face's set wins over boxAttributeSet. The constant subdivision
+ * method draws each face as two triangles (a face is flat).
+ *
+ * The rules a TQ3BoxData must obey wherever one is accepted, checked in
+ * this order:
+ *   every coordinate is finite; the box within float's
+ *     range                                         kQ3ErrorInvalidData
+ *   orientation, majorAxis and minorAxis are
+ *     independent                                   kQ3ErrorDegenerateGeometry
+ *   faceAttributeSet is NULL or six attribute sets, each NULL or live, and
+ *     boxAttributeSet NULL or live
+ *                           kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3BoxData {
+    TQ3Point3D origin;
+    TQ3Vector3D orientation;
+    TQ3Vector3D majorAxis;
+    TQ3Vector3D minorAxis;
+    TQ3AttributeSet *faceAttributeSet; /* left, right, front, back, top, bottom */
+    TQ3AttributeSet boxAttributeSet;
+};
+typedef struct TQ3BoxData TQ3BoxData;
+
+/**
+ * Creates a retained box from a copy of boxData (the data calls at the top
+ * of this header).
+ *
+ * @return the new box, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      boxData is NULL.
+ *   then the codes of the TQ3BoxData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the box cannot be allocated.
+ *
+ * Ownership: the caller owns the new box's one reference. The box
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Box_New(const TQ3BoxData *boxData);
+
+/**
+ * Draws (or bounds) a box without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      boxData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3BoxData rules, in their order.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
+ *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
+ *                              (QD3DStyle.h); fewer are drawn.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_Submit(const TQ3BoxData *boxData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained box with a copy of boxData.
+ *
+ * @return kQ3Success, or kQ3Failure with the box unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or boxData is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *   then the codes of the TQ3BoxData rules, in their order.
+ *
+ * Ownership: the box references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_SetData(TQ3GeometryObject box, const TQ3BoxData *boxData);
+
+/**
+ * Copies the data of a retained box into boxData.
+ *
+ * @return kQ3Success, or kQ3Failure with *boxData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or boxData is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *   kQ3ErrorOutOfMemory        the face attribute set array cannot be allocated.
+ *
+ * Ownership: the caller owns a new reference to every attribute set in the
+ * result, and the array of six (when the box has one) and gives them back with Q3Box_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_GetData(TQ3GeometryObject box, TQ3BoxData *boxData);
+
+/**
+ * Releases what Q3Box_GetData put in boxData: the attribute set
+ * references and the face attribute set array; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      boxData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_EmptyData(TQ3BoxData *boxData);
+
+/**
+ * Sets the origin (a corner) of a retained box; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the box unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or origin is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *   kQ3ErrorInvalidData        a coordinate is not finite, or the box
+ *                              would leave float's range.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_SetOrigin(TQ3GeometryObject box, const TQ3Point3D *origin);
+
+/**
+ * Reads the origin (a corner) of a retained box.
+ *
+ * @return kQ3Success, or kQ3Failure with *origin unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or origin is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_GetOrigin(TQ3GeometryObject box, TQ3Point3D *origin);
+
+/**
+ * Sets the orientation (an edge from the origin) of a retained box; the rest
+ * of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the box unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or orientation is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *   kQ3ErrorInvalidData        a component is not finite, or the box
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the box's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_SetOrientation(TQ3GeometryObject box, const TQ3Vector3D *orientation);
+
+/**
+ * Reads the orientation (an edge from the origin) of a retained box.
+ *
+ * @return kQ3Success, or kQ3Failure with *orientation unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or orientation is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_GetOrientation(TQ3GeometryObject box, TQ3Vector3D *orientation);
+
+/**
+ * Sets the major axis (an edge from the origin) of a retained box; the rest
+ * of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the box unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or majorAxis is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *   kQ3ErrorInvalidData        a component is not finite, or the box
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the box's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_SetMajorAxis(TQ3GeometryObject box, const TQ3Vector3D *majorAxis);
+
+/**
+ * Reads the major axis (an edge from the origin) of a retained box.
+ *
+ * @return kQ3Success, or kQ3Failure with *majorAxis unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or majorAxis is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_GetMajorAxis(TQ3GeometryObject box, TQ3Vector3D *majorAxis);
+
+/**
+ * Sets the minor axis (an edge from the origin) of a retained box; the rest
+ * of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the box unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or minorAxis is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *   kQ3ErrorInvalidData        a component is not finite, or the box
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the box's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_SetMinorAxis(TQ3GeometryObject box, const TQ3Vector3D *minorAxis);
+
+/**
+ * Reads the minor axis (an edge from the origin) of a retained box.
+ *
+ * @return kQ3Success, or kQ3Failure with *minorAxis unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      box or minorAxis is NULL.
+ *   kQ3ErrorInvalidObject      box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  box is not a box.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_GetMinorAxis(TQ3GeometryObject box, TQ3Vector3D *minorAxis);
+
+/**
+ * Reads the attribute set of face faceIndex (0 left, 1 right, 2 front, 3 back,
+ * 4 top, 5 bottom) of a retained box: NULL when the face has none.
+ *
+ * @return kQ3Success, or kQ3Failure with *faceAttributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        box or faceAttributeSet is NULL.
+ *   kQ3ErrorInvalidObject        box is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    box is not a box.
+ *   kQ3ErrorParameterOutOfRange  faceIndex is above 5.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_GetFaceAttributeSet(TQ3GeometryObject box,
+                                                     unsigned long faceIndex,
+                                                     TQ3AttributeSet *faceAttributeSet);
+
+/**
+ * Replaces the attribute set of face faceIndex (0 left, 1 right, 2 front,
+ * 3 back, 4 top, 5 bottom) of a retained box; NULL removes it. A box without
+ * face sets gets an array of six, the others NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with the box unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        box is NULL.
+ *   kQ3ErrorInvalidObject        box or faceAttributeSet is not a live Q3
+ *                                object.
+ *   kQ3ErrorInvalidObjectType    box is not a box, or faceAttributeSet is
+ *                                not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  faceIndex is above 5.
+ *   kQ3ErrorOutOfMemory          the array of six cannot be allocated.
+ *
+ * Ownership: the box references faceAttributeSet and releases the set the
+ * face held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Box_SetFaceAttributeSet(TQ3GeometryObject box,
+                                                     unsigned long faceIndex,
+                                                     TQ3AttributeSet faceAttributeSet);
+
+/*
+ * A cone: its base the ellipse origin + cos(2 pi u) majorRadius +
+ * sin(2 pi u) minorRadius, its apex origin + orientation:
+ *   P(u, v) = origin + v orientation
+ *             + (1 - v) (cos(2 pi u) majorRadius + sin(2 pi u) minorRadius).
+ * uMin..uMax keeps a wedge, vMin..vMax a band (vMin > 0 cuts off the bottom,
+ * vMax < 1 the tip). faceAttributeSet is the side's set. Caps:
+ * kQ3EndCapMaskBottom closes the bottom (at vMin) with bottomAttributeSet;
+ * kQ3EndCapMaskInterior closes the cuts with interiorAttributeSet: the top
+ * at vMax when vMax < 1 and the faces at uMin and uMax (from the axis to the
+ * surface) when u is not a full turn; kQ3EndCapMaskTop is ignored (QD3D
+ * book). The book does not say what closes a truncated top; Q3 follows
+ * Quesa. Constant subdivision: c1 around, c2 along v.
+ *
+ * The rules a TQ3ConeData must obey wherever one is accepted, checked in
+ * this order:
+ *   every coordinate and parameter is finite; the
+ *     cone within float's range                     kQ3ErrorInvalidData
+ *   uMin, uMax, vMin, vMax in [0, 1]; vMin <= vMax  kQ3ErrorInvalidData
+ *   caps holds only end cap masks                   kQ3ErrorInvalidData
+ *   orientation, majorRadius and minorRadius are
+ *     independent                                   kQ3ErrorDegenerateGeometry
+ *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3ConeData {
+    TQ3Point3D origin;
+    TQ3Vector3D orientation;
+    TQ3Vector3D majorRadius;
+    TQ3Vector3D minorRadius;
+    float uMin;
+    float uMax;
+    float vMin;
+    float vMax;
+    TQ3EndCap caps;
+    TQ3AttributeSet interiorAttributeSet;
+    TQ3AttributeSet faceAttributeSet;
+    TQ3AttributeSet bottomAttributeSet;
+    TQ3AttributeSet coneAttributeSet;
+};
+typedef struct TQ3ConeData TQ3ConeData;
+
+/**
+ * Creates a retained cone from a copy of coneData (the data calls at the top
+ * of this header).
+ *
+ * @return the new cone, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      coneData is NULL.
+ *   then the codes of the TQ3ConeData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the cone cannot be allocated.
+ *
+ * Ownership: the caller owns the new cone's one reference. The cone
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Cone_New(const TQ3ConeData *coneData);
+
+/**
+ * Draws (or bounds) a cone without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      coneData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3ConeData rules, in their order.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
+ *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
+ *                              (QD3DStyle.h); fewer are drawn.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_Submit(const TQ3ConeData *coneData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained cone with a copy of coneData.
+ *
+ * @return kQ3Success, or kQ3Failure with the cone unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or coneData is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *   then the codes of the TQ3ConeData rules, in their order.
+ *
+ * Ownership: the cone references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_SetData(TQ3GeometryObject cone, const TQ3ConeData *coneData);
+
+/**
+ * Copies the data of a retained cone into coneData.
+ *
+ * @return kQ3Success, or kQ3Failure with *coneData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or coneData is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *
+ * Ownership: the caller owns a new reference to every attribute set in the
+ * result and gives them back with Q3Cone_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetData(TQ3GeometryObject cone, TQ3ConeData *coneData);
+
+/**
+ * Releases what Q3Cone_GetData put in coneData: the attribute set
+ * references; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      coneData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_EmptyData(TQ3ConeData *coneData);
+
+/**
+ * Sets the origin (the centre of the base) of a retained cone; the rest of
+ * its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the cone unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or origin is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *   kQ3ErrorInvalidData        a coordinate is not finite, or the cone
+ *                              would leave float's range.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_SetOrigin(TQ3GeometryObject cone, const TQ3Point3D *origin);
+
+/**
+ * Reads the origin (the centre of the base) of a retained cone.
+ *
+ * @return kQ3Success, or kQ3Failure with *origin unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or origin is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetOrigin(TQ3GeometryObject cone, TQ3Point3D *origin);
+
+/**
+ * Sets the orientation (from the base's centre to the apex) of a retained
+ * cone; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the cone unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or orientation is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *   kQ3ErrorInvalidData        a component is not finite, or the cone
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the cone's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_SetOrientation(TQ3GeometryObject cone, const TQ3Vector3D *orientation);
+
+/**
+ * Reads the orientation (from the base's centre to the apex) of a retained
+ * cone.
+ *
+ * @return kQ3Success, or kQ3Failure with *orientation unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or orientation is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetOrientation(TQ3GeometryObject cone, TQ3Vector3D *orientation);
+
+/**
+ * Sets the major radius of a retained cone; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the cone unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *   kQ3ErrorInvalidData        a component is not finite, or the cone
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the cone's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_SetMajorRadius(TQ3GeometryObject cone, const TQ3Vector3D *majorRadius);
+
+/**
+ * Reads the major radius of a retained cone.
+ *
+ * @return kQ3Success, or kQ3Failure with *majorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetMajorRadius(TQ3GeometryObject cone, TQ3Vector3D *majorRadius);
+
+/**
+ * Sets the minor radius of a retained cone; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the cone unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *   kQ3ErrorInvalidData        a component is not finite, or the cone
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the cone's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_SetMinorRadius(TQ3GeometryObject cone, const TQ3Vector3D *minorRadius);
+
+/**
+ * Reads the minor radius of a retained cone.
+ *
+ * @return kQ3Success, or kQ3Failure with *minorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetMinorRadius(TQ3GeometryObject cone, TQ3Vector3D *minorRadius);
+
+/**
+ * Sets which end caps a retained cone has (TQ3EndCapMasks combined;
+ * kQ3EndCapMaskTop is ignored).
+ *
+ * @return kQ3Success, or kQ3Failure with the cone unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *   kQ3ErrorInvalidData        caps has a bit that is not an end cap mask.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_SetCaps(TQ3GeometryObject cone, TQ3EndCap caps);
+
+/**
+ * Reads which end caps a retained cone has.
+ *
+ * @return kQ3Success, or kQ3Failure with *caps unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or caps is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetCaps(TQ3GeometryObject cone, TQ3EndCap *caps);
+
+/**
+ * Replaces the attribute set of the bottom cap of a retained cone; NULL
+ * removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the cone unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone is NULL.
+ *   kQ3ErrorInvalidObject      cone or bottomAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone, or bottomAttributeSet is not an
+ *                              attribute set.
+ *
+ * Ownership: the cone references bottomAttributeSet and releases the set it held;
+ * the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_SetBottomAttributeSet(TQ3GeometryObject cone,
+                                                        TQ3AttributeSet bottomAttributeSet);
+
+/**
+ * Reads the attribute set of the bottom cap of a retained cone (NULL when it
+ * has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *bottomAttributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or bottomAttributeSet is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetBottomAttributeSet(TQ3GeometryObject cone,
+                                                        TQ3AttributeSet *bottomAttributeSet);
+
+/**
+ * Replaces the attribute set of the side of a retained cone; NULL
+ * removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the cone unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone is NULL.
+ *   kQ3ErrorInvalidObject      cone or faceAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone, or faceAttributeSet is not an
+ *                              attribute set.
+ *
+ * Ownership: the cone references faceAttributeSet and releases the set it held;
+ * the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_SetFaceAttributeSet(TQ3GeometryObject cone, TQ3AttributeSet faceAttributeSet);
+
+/**
+ * Reads the attribute set of the side of a retained cone (NULL when it
+ * has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *faceAttributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cone or faceAttributeSet is NULL.
+ *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cone is not a cone.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetFaceAttributeSet(TQ3GeometryObject cone, TQ3AttributeSet *faceAttributeSet);
+
+/*
+ * A cylinder: the ellipse origin + cos(2 pi u) majorRadius + sin(2 pi u)
+ * minorRadius swept along orientation:
+ *   P(u, v) = origin + v orientation + cos(2 pi u) majorRadius
+ *             + sin(2 pi u) minorRadius.
+ * uMin..uMax keeps a wedge, vMin..vMax a band. faceAttributeSet is the
+ * side's set. Caps: kQ3EndCapMaskBottom closes the bottom (at vMin) with
+ * bottomAttributeSet, kQ3EndCapMaskTop the top (at vMax) with
+ * topAttributeSet, kQ3EndCapMaskInterior the faces at uMin and uMax (from
+ * the axis to the surface) when u is not a full turn, with
+ * interiorAttributeSet. Constant subdivision: c1 around, c2 along v.
+ *
+ * The rules a TQ3CylinderData must obey wherever one is accepted, checked in
+ * this order:
+ *   every coordinate and parameter is finite; the
+ *     cylinder within float's range                 kQ3ErrorInvalidData
+ *   uMin, uMax, vMin, vMax in [0, 1]; vMin <= vMax  kQ3ErrorInvalidData
+ *   caps holds only end cap masks                   kQ3ErrorInvalidData
+ *   orientation, majorRadius and minorRadius are
+ *     independent                                   kQ3ErrorDegenerateGeometry
+ *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3CylinderData {
+    TQ3Point3D origin;
+    TQ3Vector3D orientation;
+    TQ3Vector3D majorRadius;
+    TQ3Vector3D minorRadius;
+    float uMin;
+    float uMax;
+    float vMin;
+    float vMax;
+    TQ3EndCap caps;
+    TQ3AttributeSet interiorAttributeSet;
+    TQ3AttributeSet topAttributeSet;
+    TQ3AttributeSet faceAttributeSet;
+    TQ3AttributeSet bottomAttributeSet;
+    TQ3AttributeSet cylinderAttributeSet;
+};
+typedef struct TQ3CylinderData TQ3CylinderData;
+
+/**
+ * Creates a retained cylinder from a copy of cylinderData (the data calls at the top
+ * of this header).
+ *
+ * @return the new cylinder, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinderData is NULL.
+ *   then the codes of the TQ3CylinderData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the cylinder cannot be allocated.
+ *
+ * Ownership: the caller owns the new cylinder's one reference. The cylinder
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Cylinder_New(const TQ3CylinderData *cylinderData);
+
+/**
+ * Draws (or bounds) a cylinder without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinderData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3CylinderData rules, in their order.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
+ *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
+ *                              (QD3DStyle.h); fewer are drawn.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_Submit(const TQ3CylinderData *cylinderData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained cylinder with a copy of cylinderData.
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or cylinderData is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *   then the codes of the TQ3CylinderData rules, in their order.
+ *
+ * Ownership: the cylinder references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetData(TQ3GeometryObject cylinder, const TQ3CylinderData *cylinderData);
+
+/**
+ * Copies the data of a retained cylinder into cylinderData.
+ *
+ * @return kQ3Success, or kQ3Failure with *cylinderData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or cylinderData is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: the caller owns a new reference to every attribute set in the
+ * result and gives them back with Q3Cylinder_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetData(TQ3GeometryObject cylinder, TQ3CylinderData *cylinderData);
+
+/**
+ * Releases what Q3Cylinder_GetData put in cylinderData: the attribute set
+ * references; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinderData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_EmptyData(TQ3CylinderData *cylinderData);
+
+/**
+ * Sets the origin (the centre of the bottom) of a retained cylinder; the
+ * rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or origin is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *   kQ3ErrorInvalidData        a coordinate is not finite, or the cylinder
+ *                              would leave float's range.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetOrigin(TQ3GeometryObject cylinder, const TQ3Point3D *origin);
+
+/**
+ * Reads the origin (the centre of the bottom) of a retained cylinder.
+ *
+ * @return kQ3Success, or kQ3Failure with *origin unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or origin is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetOrigin(TQ3GeometryObject cylinder, TQ3Point3D *origin);
+
+/**
+ * Sets the orientation (from the bottom's centre to the top's) of a retained
+ * cylinder; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or orientation is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *   kQ3ErrorInvalidData        a component is not finite, or the cylinder
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the cylinder's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetOrientation(TQ3GeometryObject cylinder, const TQ3Vector3D *orientation);
+
+/**
+ * Reads the orientation (from the bottom's centre to the top's) of a
+ * retained cylinder.
+ *
+ * @return kQ3Success, or kQ3Failure with *orientation unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or orientation is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetOrientation(TQ3GeometryObject cylinder, TQ3Vector3D *orientation);
+
+/**
+ * Sets the major radius of a retained cylinder; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *   kQ3ErrorInvalidData        a component is not finite, or the cylinder
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the cylinder's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetMajorRadius(TQ3GeometryObject cylinder, const TQ3Vector3D *majorRadius);
+
+/**
+ * Reads the major radius of a retained cylinder.
+ *
+ * @return kQ3Success, or kQ3Failure with *majorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetMajorRadius(TQ3GeometryObject cylinder, TQ3Vector3D *majorRadius);
+
+/**
+ * Sets the minor radius of a retained cylinder; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *   kQ3ErrorInvalidData        a component is not finite, or the cylinder
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the cylinder's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetMinorRadius(TQ3GeometryObject cylinder, const TQ3Vector3D *minorRadius);
+
+/**
+ * Reads the minor radius of a retained cylinder.
+ *
+ * @return kQ3Success, or kQ3Failure with *minorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetMinorRadius(TQ3GeometryObject cylinder, TQ3Vector3D *minorRadius);
+
+/**
+ * Sets which end caps a retained cylinder has (TQ3EndCapMasks combined; top,
+ * bottom and interior).
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *   kQ3ErrorInvalidData        caps has a bit that is not an end cap mask.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetCaps(TQ3GeometryObject cylinder, TQ3EndCap caps);
+
+/**
+ * Reads which end caps a retained cylinder has.
+ *
+ * @return kQ3Success, or kQ3Failure with *caps unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or caps is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetCaps(TQ3GeometryObject cylinder, TQ3EndCap *caps);
+
+/**
+ * Replaces the attribute set of the top cap of a retained cylinder; NULL
+ * removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder is NULL.
+ *   kQ3ErrorInvalidObject      cylinder or topAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder, or topAttributeSet is not an
+ *                              attribute set.
+ *
+ * Ownership: the cylinder references topAttributeSet and releases the set it held;
+ * the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetTopAttributeSet(TQ3GeometryObject cylinder,
+                                                         TQ3AttributeSet topAttributeSet);
+
+/**
+ * Reads the attribute set of the top cap of a retained cylinder (NULL when it
+ * has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *topAttributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or topAttributeSet is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetTopAttributeSet(TQ3GeometryObject cylinder,
+                                                         TQ3AttributeSet *topAttributeSet);
+
+/**
+ * Replaces the attribute set of the bottom cap of a retained cylinder; NULL
+ * removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder is NULL.
+ *   kQ3ErrorInvalidObject      cylinder or bottomAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder, or bottomAttributeSet is not an
+ *                              attribute set.
+ *
+ * Ownership: the cylinder references bottomAttributeSet and releases the set it held;
+ * the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetBottomAttributeSet(TQ3GeometryObject cylinder,
+                                                            TQ3AttributeSet bottomAttributeSet);
+
+/**
+ * Reads the attribute set of the bottom cap of a retained cylinder (NULL when it
+ * has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *bottomAttributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or bottomAttributeSet is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetBottomAttributeSet(TQ3GeometryObject cylinder,
+                                                            TQ3AttributeSet *bottomAttributeSet);
+
+/**
+ * Replaces the attribute set of the side of a retained cylinder; NULL
+ * removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the cylinder unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder is NULL.
+ *   kQ3ErrorInvalidObject      cylinder or faceAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder, or faceAttributeSet is not an
+ *                              attribute set.
+ *
+ * Ownership: the cylinder references faceAttributeSet and releases the set it held;
+ * the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_SetFaceAttributeSet(TQ3GeometryObject cylinder,
+                                                          TQ3AttributeSet faceAttributeSet);
+
+/**
+ * Reads the attribute set of the side of a retained cylinder (NULL when it
+ * has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *faceAttributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      cylinder or faceAttributeSet is NULL.
+ *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetFaceAttributeSet(TQ3GeometryObject cylinder,
+                                                          TQ3AttributeSet *faceAttributeSet);
+
+/*
+ * A disk: the region of the ellipse origin + cos(2 pi u) majorRadius +
+ * sin(2 pi u) minorRadius,
+ *   P(u, v) = origin + v (cos(2 pi u) majorRadius + sin(2 pi u) minorRadius),
+ * v = 0 the centre, v = 1 the rim: uMin..uMax keeps a sector, vMin > 0
+ * cuts a hole. Its front is the side from which u runs counterclockwise
+ * (majorRadius x minorRadius points out of it). Constant subdivision: c1
+ * around, c2 across v.
+ *
+ * The rules a TQ3DiskData must obey wherever one is accepted, checked in
+ * this order:
+ *   every coordinate and parameter is finite; the
+ *     disk within float's range                     kQ3ErrorInvalidData
+ *   uMin, uMax, vMin, vMax in [0, 1]; vMin <= vMax  kQ3ErrorInvalidData
+ *   majorRadius and minorRadius are independent     kQ3ErrorDegenerateGeometry
+ *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
+ *   diskAttributeSet is NULL or a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3DiskData {
+    TQ3Point3D origin;
+    TQ3Vector3D majorRadius;
+    TQ3Vector3D minorRadius;
+    float uMin;
+    float uMax;
+    float vMin;
+    float vMax;
+    TQ3AttributeSet diskAttributeSet;
+};
+typedef struct TQ3DiskData TQ3DiskData;
+
+/**
+ * Creates a retained disk from a copy of diskData (the data calls at the top
+ * of this header).
+ *
+ * @return the new disk, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      diskData is NULL.
+ *   then the codes of the TQ3DiskData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the disk cannot be allocated.
+ *
+ * Ownership: the caller owns the new disk's one reference. The disk
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Disk_New(const TQ3DiskData *diskData);
+
+/**
+ * Draws (or bounds) a disk without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      diskData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3DiskData rules, in their order.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
+ *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
+ *                              (QD3DStyle.h); fewer are drawn.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_Submit(const TQ3DiskData *diskData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained disk with a copy of diskData.
+ *
+ * @return kQ3Success, or kQ3Failure with the disk unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      disk or diskData is NULL.
+ *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  disk is not a disk.
+ *   then the codes of the TQ3DiskData rules, in their order.
+ *
+ * Ownership: the disk references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_SetData(TQ3GeometryObject disk, const TQ3DiskData *diskData);
+
+/**
+ * Copies the data of a retained disk into diskData.
+ *
+ * @return kQ3Success, or kQ3Failure with *diskData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      disk or diskData is NULL.
+ *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  disk is not a disk.
+ *
+ * Ownership: the caller owns a new reference to every attribute set in the
+ * result and gives them back with Q3Disk_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_GetData(TQ3GeometryObject disk, TQ3DiskData *diskData);
+
+/**
+ * Releases what Q3Disk_GetData put in diskData: the attribute set
+ * references; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      diskData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_EmptyData(TQ3DiskData *diskData);
+
+/**
+ * Sets the origin (the centre) of a retained disk; the rest of its data
+ * stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the disk unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      disk or origin is NULL.
+ *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  disk is not a disk.
+ *   kQ3ErrorInvalidData        a coordinate is not finite, or the disk
+ *                              would leave float's range.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_SetOrigin(TQ3GeometryObject disk, const TQ3Point3D *origin);
+
+/**
+ * Reads the origin (the centre) of a retained disk.
+ *
+ * @return kQ3Success, or kQ3Failure with *origin unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      disk or origin is NULL.
+ *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  disk is not a disk.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_GetOrigin(TQ3GeometryObject disk, TQ3Point3D *origin);
+
+/**
+ * Sets the major radius of a retained disk; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the disk unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      disk or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  disk is not a disk.
+ *   kQ3ErrorInvalidData        a component is not finite, or the disk
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the disk's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_SetMajorRadius(TQ3GeometryObject disk, const TQ3Vector3D *majorRadius);
+
+/**
+ * Reads the major radius of a retained disk.
+ *
+ * @return kQ3Success, or kQ3Failure with *majorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      disk or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  disk is not a disk.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_GetMajorRadius(TQ3GeometryObject disk, TQ3Vector3D *majorRadius);
+
+/**
+ * Sets the minor radius of a retained disk; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the disk unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      disk or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  disk is not a disk.
+ *   kQ3ErrorInvalidData        a component is not finite, or the disk
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the disk's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_SetMinorRadius(TQ3GeometryObject disk, const TQ3Vector3D *minorRadius);
+
+/**
+ * Reads the minor radius of a retained disk.
+ *
+ * @return kQ3Success, or kQ3Failure with *minorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      disk or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  disk is not a disk.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Disk_GetMinorRadius(TQ3GeometryObject disk, TQ3Vector3D *minorRadius);
+
+/*
+ * An ellipse (a curve):
+ *   P(u) = origin + cos(2 pi u) majorRadius + sin(2 pi u) minorRadius,
+ * drawn from uMin to uMax. It is drawn as a polyline and subdivided as a
+ * curve: constant, c1 segments per full turn (in proportion for a part,
+ * rounded up; at least 3 for a full turn); world and screen space, segments
+ * whose drawn length is at most c1 and, but for the last, at least 0.98 c1.
+ *
+ * The rules a TQ3EllipseData must obey wherever one is accepted, checked in
+ * this order:
+ *   every coordinate and parameter is finite; the
+ *     ellipse within float's range                  kQ3ErrorInvalidData
+ *   uMin and uMax in [0, 1]                         kQ3ErrorInvalidData
+ *   majorRadius and minorRadius are independent     kQ3ErrorDegenerateGeometry
+ *   the u range is not empty                        kQ3ErrorDegenerateGeometry
+ *   ellipseAttributeSet is NULL or a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3EllipseData {
+    TQ3Point3D origin;
+    TQ3Vector3D majorRadius;
+    TQ3Vector3D minorRadius;
+    float uMin;
+    float uMax;
+    TQ3AttributeSet ellipseAttributeSet;
+};
+typedef struct TQ3EllipseData TQ3EllipseData;
+
+/**
+ * Creates a retained ellipse from a copy of ellipseData (the data calls at the top
+ * of this header).
+ *
+ * @return the new ellipse, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipseData is NULL.
+ *   then the codes of the TQ3EllipseData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the ellipse cannot be allocated.
+ *
+ * Ownership: the caller owns the new ellipse's one reference. The ellipse
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Ellipse_New(const TQ3EllipseData *ellipseData);
+
+/**
+ * Draws (or bounds) an ellipse without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipseData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3EllipseData rules, in their order.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
+ *                              kQ3SubdivisionMaxSegmentsPerCurve segments
+ *                              (QD3DStyle.h); fewer are drawn.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_Submit(const TQ3EllipseData *ellipseData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained ellipse with a copy of ellipseData.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipse unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipse or ellipseData is NULL.
+ *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
+ *   then the codes of the TQ3EllipseData rules, in their order.
+ *
+ * Ownership: the ellipse references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_SetData(TQ3GeometryObject ellipse, const TQ3EllipseData *ellipseData);
+
+/**
+ * Copies the data of a retained ellipse into ellipseData.
+ *
+ * @return kQ3Success, or kQ3Failure with *ellipseData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipse or ellipseData is NULL.
+ *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
+ *
+ * Ownership: the caller owns a new reference to every attribute set in the
+ * result and gives them back with Q3Ellipse_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetData(TQ3GeometryObject ellipse, TQ3EllipseData *ellipseData);
+
+/**
+ * Releases what Q3Ellipse_GetData put in ellipseData: the attribute set
+ * references; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipseData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_EmptyData(TQ3EllipseData *ellipseData);
+
+/**
+ * Sets the origin (the centre) of a retained ellipse; the rest of its data
+ * stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipse unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipse or origin is NULL.
+ *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
+ *   kQ3ErrorInvalidData        a coordinate is not finite, or the ellipse
+ *                              would leave float's range.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_SetOrigin(TQ3GeometryObject ellipse, const TQ3Point3D *origin);
+
+/**
+ * Reads the origin (the centre) of a retained ellipse.
+ *
+ * @return kQ3Success, or kQ3Failure with *origin unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipse or origin is NULL.
+ *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetOrigin(TQ3GeometryObject ellipse, TQ3Point3D *origin);
+
+/**
+ * Sets the major radius of a retained ellipse; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipse unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipse or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
+ *   kQ3ErrorInvalidData        a component is not finite, or the ellipse
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the ellipse's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_SetMajorRadius(TQ3GeometryObject ellipse, const TQ3Vector3D *majorRadius);
+
+/**
+ * Reads the major radius of a retained ellipse.
+ *
+ * @return kQ3Success, or kQ3Failure with *majorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipse or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetMajorRadius(TQ3GeometryObject ellipse, TQ3Vector3D *majorRadius);
+
+/**
+ * Sets the minor radius of a retained ellipse; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipse unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipse or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
+ *   kQ3ErrorInvalidData        a component is not finite, or the ellipse
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the ellipse's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_SetMinorRadius(TQ3GeometryObject ellipse, const TQ3Vector3D *minorRadius);
+
+/**
+ * Reads the minor radius of a retained ellipse.
+ *
+ * @return kQ3Success, or kQ3Failure with *minorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipse or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetMinorRadius(TQ3GeometryObject ellipse, TQ3Vector3D *minorRadius);
+
+/*
+ * An ellipsoid:
+ *   P(u, v) = origin - cos(pi v) orientation
+ *             + sin(pi v) (cos(2 pi u) majorRadius + sin(2 pi u) minorRadius),
+ * v = 0 the pole at origin - orientation, v = 1 the pole at origin +
+ * orientation: uMin..uMax keeps a wedge, vMin..vMax a band. Caps, all with
+ * interiorAttributeSet (the data has no other part set):
+ * kQ3EndCapMaskBottom and kQ3EndCapMaskTop close the cuts at vMin > 0 and
+ * vMax < 1 with flat ellipses, kQ3EndCapMaskInterior the faces at uMin and
+ * uMax (from the axis to the surface) when u is not a full turn. Apple's
+ * header has no Q3Ellipsoid_SetCaps: caps are set with the data. Constant
+ * subdivision: c1 around, c2 from pole to pole.
+ *
+ * The rules a TQ3EllipsoidData must obey wherever one is accepted, checked in
+ * this order:
+ *   every coordinate and parameter is finite; the
+ *     ellipsoid within float's range                kQ3ErrorInvalidData
+ *   uMin, uMax, vMin, vMax in [0, 1]; vMin <= vMax  kQ3ErrorInvalidData
+ *   caps holds only end cap masks                   kQ3ErrorInvalidData
+ *   orientation, majorRadius and minorRadius are
+ *     independent                                   kQ3ErrorDegenerateGeometry
+ *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3EllipsoidData {
+    TQ3Point3D origin;
+    TQ3Vector3D orientation;
+    TQ3Vector3D majorRadius;
+    TQ3Vector3D minorRadius;
+    float uMin;
+    float uMax;
+    float vMin;
+    float vMax;
+    TQ3EndCap caps;
+    TQ3AttributeSet interiorAttributeSet;
+    TQ3AttributeSet ellipsoidAttributeSet;
+};
+typedef struct TQ3EllipsoidData TQ3EllipsoidData;
+
+/**
+ * Creates a retained ellipsoid from a copy of ellipsoidData (the data calls at the top
+ * of this header).
+ *
+ * @return the new ellipsoid, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoidData is NULL.
+ *   then the codes of the TQ3EllipsoidData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the ellipsoid cannot be allocated.
+ *
+ * Ownership: the caller owns the new ellipsoid's one reference. The ellipsoid
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Ellipsoid_New(const TQ3EllipsoidData *ellipsoidData);
+
+/**
+ * Draws (or bounds) a ellipsoid without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoidData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3EllipsoidData rules, in their order.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
+ *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
+ *                              (QD3DStyle.h); fewer are drawn.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_Submit(const TQ3EllipsoidData *ellipsoidData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained ellipsoid with a copy of ellipsoidData.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipsoid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or ellipsoidData is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *   then the codes of the TQ3EllipsoidData rules, in their order.
+ *
+ * Ownership: the ellipsoid references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetData(TQ3GeometryObject ellipsoid, const TQ3EllipsoidData *ellipsoidData);
+
+/**
+ * Copies the data of a retained ellipsoid into ellipsoidData.
+ *
+ * @return kQ3Success, or kQ3Failure with *ellipsoidData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or ellipsoidData is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *
+ * Ownership: the caller owns a new reference to every attribute set in the
+ * result and gives them back with Q3Ellipsoid_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetData(TQ3GeometryObject ellipsoid, TQ3EllipsoidData *ellipsoidData);
+
+/**
+ * Releases what Q3Ellipsoid_GetData put in ellipsoidData: the attribute set
+ * references; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoidData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_EmptyData(TQ3EllipsoidData *ellipsoidData);
+
+/**
+ * Sets the origin (the centre) of a retained ellipsoid; the rest of its data
+ * stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipsoid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or origin is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *   kQ3ErrorInvalidData        a coordinate is not finite, or the ellipsoid
+ *                              would leave float's range.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetOrigin(TQ3GeometryObject ellipsoid, const TQ3Point3D *origin);
+
+/**
+ * Reads the origin (the centre) of a retained ellipsoid.
+ *
+ * @return kQ3Success, or kQ3Failure with *origin unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or origin is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetOrigin(TQ3GeometryObject ellipsoid, TQ3Point3D *origin);
+
+/**
+ * Sets the orientation (from the centre to the pole at v = 1) of a retained
+ * ellipsoid; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipsoid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or orientation is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetOrientation(TQ3GeometryObject ellipsoid, const TQ3Vector3D *orientation);
+
+/**
+ * Reads the orientation (from the centre to the pole at v = 1) of a retained
+ * ellipsoid.
+ *
+ * @return kQ3Success, or kQ3Failure with *orientation unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or orientation is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetOrientation(TQ3GeometryObject ellipsoid, TQ3Vector3D *orientation);
+
+/**
+ * Sets the major radius of a retained ellipsoid; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipsoid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetMajorRadius(TQ3GeometryObject ellipsoid, const TQ3Vector3D *majorRadius);
+
+/**
+ * Reads the major radius of a retained ellipsoid.
+ *
+ * @return kQ3Success, or kQ3Failure with *majorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetMajorRadius(TQ3GeometryObject ellipsoid, TQ3Vector3D *majorRadius);
+
+/**
+ * Sets the minor radius of a retained ellipsoid; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the ellipsoid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_SetMinorRadius(TQ3GeometryObject ellipsoid, const TQ3Vector3D *minorRadius);
+
+/**
+ * Reads the minor radius of a retained ellipsoid.
+ *
+ * @return kQ3Success, or kQ3Failure with *minorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      ellipsoid or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetMinorRadius(TQ3GeometryObject ellipsoid, TQ3Vector3D *minorRadius);
+
+/*
+ * A torus: a ring, the ellipse a(u) = cos(2 pi u) majorRadius +
+ * sin(2 pi u) minorRadius around origin, and a tube around it whose cross
+ * section is an ellipse of half-axes |orientation| along orientation and
+ * ratio |orientation| along the ring's radius (3DMF reference: ratio is
+ * the length of the rotated ellipse's major radius over the orientation's):
+ *   P(u, v) = origin + a(u) - sin(2 pi v) orientation
+ *             - cos(2 pi v) ratio |orientation| a(u) / |a(u)|.
+ * v = 0 is the inner equator (nearest the ring's centre) and v = 1/4 the
+ * bottom, as Quesa draws it to match QuickDraw 3D's texture mapping. Both u
+ * and v are angles: either range may wrap through 0. Apple asks for
+ * orientation orthogonal to the radii; Q3 draws other independent frames by
+ * the same formula (a sheared torus). Caps: kQ3EndCapMaskInterior closes the
+ * cuts with interiorAttributeSet: the tube's cross-sections at uMin and uMax
+ * when u is not a full turn (between the tube's centre line and the
+ * surface) and, when v is not a full turn, the walls from the centre line
+ * to the edges at vMin and vMax; top and bottom mean nothing for a torus and
+ * are ignored. Apple's header has no Q3Torus_SetCaps. Constant
+ * subdivision: c1 around the ring, c2 around the tube.
+ *
+ * The rules a TQ3TorusData must obey wherever one is accepted, checked in
+ * this order:
+ *   every coordinate and parameter is finite; the
+ *     torus within float's range                    kQ3ErrorInvalidData
+ *   uMin, uMax, vMin, vMax in [0, 1]                kQ3ErrorInvalidData
+ *   ratio > 0                                       kQ3ErrorInvalidData
+ *   caps holds only end cap masks                   kQ3ErrorInvalidData
+ *   orientation, majorRadius and minorRadius are
+ *     independent                                   kQ3ErrorDegenerateGeometry
+ *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3TorusData {
+    TQ3Point3D origin;
+    TQ3Vector3D orientation;
+    TQ3Vector3D majorRadius;
+    TQ3Vector3D minorRadius;
+    float ratio;
+    float uMin;
+    float uMax;
+    float vMin;
+    float vMax;
+    TQ3EndCap caps;
+    TQ3AttributeSet interiorAttributeSet;
+    TQ3AttributeSet torusAttributeSet;
+};
+typedef struct TQ3TorusData TQ3TorusData;
+
+/**
+ * Creates a retained torus from a copy of torusData (the data calls at the top
+ * of this header).
+ *
+ * @return the new torus, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torusData is NULL.
+ *   then the codes of the TQ3TorusData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the torus cannot be allocated.
+ *
+ * Ownership: the caller owns the new torus's one reference. The torus
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Torus_New(const TQ3TorusData *torusData);
+
+/**
+ * Draws (or bounds) a torus without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torusData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3TorusData rules, in their order.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
+ *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
+ *                              (QD3DStyle.h); fewer are drawn.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_Submit(const TQ3TorusData *torusData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained torus with a copy of torusData.
+ *
+ * @return kQ3Success, or kQ3Failure with the torus unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or torusData is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *   then the codes of the TQ3TorusData rules, in their order.
+ *
+ * Ownership: the torus references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_SetData(TQ3GeometryObject torus, const TQ3TorusData *torusData);
+
+/**
+ * Copies the data of a retained torus into torusData.
+ *
+ * @return kQ3Success, or kQ3Failure with *torusData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or torusData is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *
+ * Ownership: the caller owns a new reference to every attribute set in the
+ * result and gives them back with Q3Torus_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetData(TQ3GeometryObject torus, TQ3TorusData *torusData);
+
+/**
+ * Releases what Q3Torus_GetData put in torusData: the attribute set
+ * references; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torusData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_EmptyData(TQ3TorusData *torusData);
+
+/**
+ * Sets the origin (the centre of the ring) of a retained torus; the rest of
+ * its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the torus unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or origin is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *   kQ3ErrorInvalidData        a coordinate is not finite, or the torus
+ *                              would leave float's range.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_SetOrigin(TQ3GeometryObject torus, const TQ3Point3D *origin);
+
+/**
+ * Reads the origin (the centre of the ring) of a retained torus.
+ *
+ * @return kQ3Success, or kQ3Failure with *origin unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or origin is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetOrigin(TQ3GeometryObject torus, TQ3Point3D *origin);
+
+/**
+ * Sets the orientation (the tube's half-thickness along the ring's axis) of
+ * a retained torus; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the torus unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or orientation is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *   kQ3ErrorInvalidData        a component is not finite, or the torus
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the torus's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_SetOrientation(TQ3GeometryObject torus, const TQ3Vector3D *orientation);
+
+/**
+ * Reads the orientation (the tube's half-thickness along the ring's axis) of
+ * a retained torus.
+ *
+ * @return kQ3Success, or kQ3Failure with *orientation unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or orientation is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetOrientation(TQ3GeometryObject torus, TQ3Vector3D *orientation);
+
+/**
+ * Sets the major radius of a retained torus; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the torus unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *   kQ3ErrorInvalidData        a component is not finite, or the torus
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the torus's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_SetMajorRadius(TQ3GeometryObject torus, const TQ3Vector3D *majorRadius);
+
+/**
+ * Reads the major radius of a retained torus.
+ *
+ * @return kQ3Success, or kQ3Failure with *majorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or majorRadius is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetMajorRadius(TQ3GeometryObject torus, TQ3Vector3D *majorRadius);
+
+/**
+ * Sets the minor radius of a retained torus; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the torus unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *   kQ3ErrorInvalidData        a component is not finite, or the torus
+ *                              would leave float's range.
+ *   kQ3ErrorDegenerateGeometry the torus's vectors would not be
+ *                              independent.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_SetMinorRadius(TQ3GeometryObject torus, const TQ3Vector3D *minorRadius);
+
+/**
+ * Reads the minor radius of a retained torus.
+ *
+ * @return kQ3Success, or kQ3Failure with *minorRadius unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or minorRadius is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetMinorRadius(TQ3GeometryObject torus, TQ3Vector3D *minorRadius);
+
+/**
+ * Sets the ratio (of the tube's radial half-axis to |orientation|) of a
+ * retained torus; the rest of its data stays.
+ *
+ * @return kQ3Success, or kQ3Failure with the torus unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *   kQ3ErrorInvalidData        ratio is not finite or not above 0, or the
+ *                              torus would leave float's range.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_SetRatio(TQ3GeometryObject torus, float ratio);
+
+/**
+ * Reads the ratio (of the tube's radial half-axis to |orientation|) of a
+ * retained torus.
+ *
+ * @return kQ3Success, or kQ3Failure with *ratio unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      torus or ratio is NULL.
+ *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  torus is not a torus.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetRatio(TQ3GeometryObject torus, float *ratio);
 
 #ifdef __cplusplus
 }

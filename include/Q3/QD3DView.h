@@ -251,7 +251,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_Sync(TQ3ViewObject view);
  * says, a NURB curve is bounded by its control points projected to 3D
  * (x/w, y/w, z/w), not by the curve itself (the box encloses the curve, since
  * a NURB curve with positive weights lies in their convex hull). Points,
- * lines and polylines are bounded by their vertices.
+ * lines, polylines, triangles and polygons are bounded by their vertices, a
+ * trimesh by all its points (the box its GetData reports as bBox).
  */
 
 /**
@@ -428,6 +429,170 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_GetDrawContext(TQ3ViewObject view,
 
 /* ---- Graphics state (inside a loop only) -------------------------------- */
 
+/* ---- Lights -------------------------------------------------------------- */
+
+/**
+ * Sets the lights the view's rendering loops are lit by: the lights in a
+ * light group (Q3LightGroup_New), read at the start of each rendering loop,
+ * so later edits of the group or its lights show in the next loop. Lights
+ * that are off light nothing; of those that are on, the first 32 in the
+ * group's order light the scene (Q3 draws at most 32 lights). Surfaces are
+ * lit only under an illumination shader (QD3DShader.h); without one they
+ * are drawn in their diffuse colours.
+ *
+ * @param view        a view outside any loop.
+ * @param lightGroup  a light group, or NULL for no lights.
+ * @return kQ3Success, or kQ3Failure with the view unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view is NULL.
+ *   kQ3ErrorInvalidObject      view or lightGroup is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view, or lightGroup is not a
+ *                              light group.
+ *   kQ3ErrorViewIsStarted      view is inside a rendering or bounding loop.
+ *
+ * Ownership: the view takes a new reference to the group and releases the
+ * one it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_SetLightGroup(TQ3ViewObject view, TQ3GroupObject lightGroup);
+
+/**
+ * Reads the view's light group.
+ *
+ * @param view        a view.
+ * @param lightGroup  receives a new reference to the group, or NULL when
+ *                    the view has none.
+ * @return kQ3Success, or kQ3Failure with *lightGroup unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view or lightGroup is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *
+ * Ownership: the caller owns the reference it receives.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetLightGroup(TQ3ViewObject view, TQ3GroupObject *lightGroup);
+
+/* ---- Rendering loop --------------------------------------------------------
+ */
+
+/**
+ * Asks the renderer to draw what has been submitted so far. Q3's renderers
+ * draw each shape as it is submitted and finish the image in
+ * Q3View_EndRendering, so inside a rendering loop this succeeds and changes
+ * nothing.
+ *
+ * @param view  a view inside a rendering loop.
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        view is NULL.
+ *   kQ3ErrorInvalidObject        view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    view is not a view.
+ *   kQ3ErrorRenderingNotStarted  no rendering loop is running in the view.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_Flush(TQ3ViewObject view);
+
+/* ---- Graphics state -------------------------------------------------------
+ */
+
+/*
+ * The graphics state calls below share these rules. The view must be inside
+ * a rendering or bounding loop; the value read is the one in force at the
+ * call: the last one submitted in this traversal and not undone by a pop or
+ * the end of a group, else QuickDraw 3D's default (given with each call).
+ *
+ * Errors, besides those each call lists:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view or the output pointer is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ * On failure the output is unchanged. Ownership: no references change unless
+ * the call says so.
+ */
+
+/**
+ * Reads the camera's world-to-frustum matrix for the running loop: world
+ * points (row vectors, p' = p * M) to the frustum, where x and y run from -1
+ * to 1 across the view and z from 0 (hither) to -1 (yon).
+ *
+ * @param view    a view inside a rendering loop, or a bounding loop of a view
+ *                with a camera and a draw context.
+ * @param matrix  receives the matrix.
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors (besides the shared ones):
+ *   kQ3ErrorCameraNotSet  a bounding loop of a view with no camera or no
+ *                         draw context has no frustum.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetWorldToFrustumMatrixState(TQ3ViewObject view,
+                                                               TQ3Matrix4x4 *matrix);
+
+/**
+ * Reads the frustum-to-window matrix for the running loop: frustum x and y
+ * (-1..1) to pixels of the draw context's pane (or whole image), x to the
+ * right and y down from the top-left corner; z is kept.
+ *
+ * @param view    as for Q3View_GetWorldToFrustumMatrixState.
+ * @param matrix  receives the matrix.
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors (besides the shared ones):
+ *   kQ3ErrorCameraNotSet  as for Q3View_GetWorldToFrustumMatrixState.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetFrustumToWindowMatrixState(TQ3ViewObject view,
+                                                                TQ3Matrix4x4 *matrix);
+
+/**
+ * Reads the backfacing style in force (default kQ3BackfacingStyleBoth).
+ *
+ * @param view             a view inside a loop.
+ * @param backfacingStyle  receives the style.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetBackfacingStyleState(TQ3ViewObject view,
+                                                          TQ3BackfacingStyle *backfacingStyle);
+
+/**
+ * Reads the interpolation style in force (default
+ * kQ3InterpolationStyleVertex).
+ *
+ * @param view               a view inside a loop.
+ * @param interpolationType  receives the style.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetInterpolationStyleState(
+    TQ3ViewObject view, TQ3InterpolationStyle *interpolationType);
+
+/**
+ * Reads the fill style in force (default kQ3FillStyleFilled).
+ *
+ * @param view       a view inside a loop.
+ * @param fillStyle  receives the style.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetFillStyleState(TQ3ViewObject view, TQ3FillStyle *fillStyle);
+
+/**
+ * Reads the highlight style in force: the attribute set drawn over
+ * geometries whose highlight state attribute is kQ3On (default: none).
+ *
+ * @param view            a view inside a loop.
+ * @param highlightStyle  receives a new reference to the style's attribute
+ *                        set, or NULL when no highlight style is in force.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ *
+ * Ownership: the caller owns the reference it receives.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetHighlightStyleState(TQ3ViewObject view,
+                                                         TQ3AttributeSet *highlightStyle);
+
 /**
  * Reads the view's current local-to-world matrix: the product of the
  * transforms submitted so far in this traversal (identity at its start).
@@ -470,6 +635,187 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_GetLocalToWorldMatrixState(TQ3ViewObject view,
 Q3_EXTERN_API_C(TQ3Status) Q3View_GetSubdivisionStyleState(
     TQ3ViewObject view, TQ3SubdivisionStyleData *subdivisionStyle);
 
+/**
+ * Reads the orientation style in force: which winding faces front (default
+ * kQ3OrientationStyleCounterClockwise).
+ *
+ * @param view                      a view inside a loop.
+ * @param fontFacingDirectionStyle  receives the style.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetOrientationStyleState(
+    TQ3ViewObject view, TQ3OrientationStyle *fontFacingDirectionStyle);
+
+/**
+ * Reads the receive-shadows style in force (default kQ3True). Q3 draws no
+ * shadows; the value is kept for applications and files.
+ *
+ * @param view      a view inside a loop.
+ * @param receives  receives the value.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetReceiveShadowsStyleState(TQ3ViewObject view,
+                                                              TQ3Boolean *receives);
+
+/**
+ * Reads the pick ID style in force (default 0).
+ *
+ * @param view         a view inside a loop.
+ * @param pickIDStyle  receives the ID.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetPickIDStyleState(TQ3ViewObject view,
+                                                      unsigned long *pickIDStyle);
+
+/**
+ * Reads the pick parts style in force (default kQ3PickPartsObject).
+ *
+ * @param view            a view inside a loop.
+ * @param pickPartsStyle  receives the parts mask.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetPickPartsStyleState(TQ3ViewObject view,
+                                                         TQ3PickParts *pickPartsStyle);
+
+/**
+ * Reads the anti-alias style in force (default: kQ3Off,
+ * kQ3AntiAliasModeMaskEdges, quality 1). Q3 keeps the value but draws
+ * without anti-aliasing, so images stay identical from machine to machine.
+ *
+ * @param view           a view inside a loop.
+ * @param antiAliasData  receives the style's data.
+ * @return kQ3Success, or kQ3Failure (the shared errors).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetAntiAliasStyleState(TQ3ViewObject view,
+                                                         TQ3AntiAliasStyleData *antiAliasData);
+
+/* ---- Attributes ------------------------------------------------------------
+ */
+
+/**
+ * Reads the attribute set every traversal of the view starts with.
+ *
+ * @param view          a view.
+ * @param attributeSet  receives a new reference to the set given to
+ *                      Q3View_SetDefaultAttributeSet, or, when none was, a
+ *                      new set holding QuickDraw 3D's defaults
+ *                      (kQ3ViewDefault*: ambient coefficient, diffuse,
+ *                      specular and transparency colours, specular control,
+ *                      highlight state).
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorOutOfMemory        the set cannot be made.
+ *
+ * Ownership: the caller owns the reference it receives.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetDefaultAttributeSet(TQ3ViewObject view,
+                                                         TQ3AttributeSet *attributeSet);
+
+/**
+ * Sets the attributes every traversal of the view starts with: the set's
+ * attributes over QuickDraw 3D's defaults (an attribute the set lacks keeps
+ * its default). The set is read at the start of each loop.
+ *
+ * @param view          a view outside any loop.
+ * @param attributeSet  an attribute set, or NULL for the defaults alone.
+ * @return kQ3Success, or kQ3Failure with the view unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view is NULL.
+ *   kQ3ErrorInvalidObject      view or attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view, or attributeSet is not an
+ *                              attribute set.
+ *   kQ3ErrorViewIsStarted      view is inside a rendering or bounding loop.
+ *
+ * Ownership: the view takes a new reference to the set and releases the one
+ * it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_SetDefaultAttributeSet(TQ3ViewObject view,
+                                                         TQ3AttributeSet attributeSet);
+
+/**
+ * Reads every attribute in force: the defaults overlaid by each attribute set
+ * submitted in this traversal and not undone by a pop or a group's end.
+ *
+ * @param view          a view inside a loop.
+ * @param attributeSet  receives a new attribute set holding them.
+ * @return kQ3Success, or kQ3Failure (the shared errors, or
+ *         kQ3ErrorOutOfMemory).
+ *
+ * Ownership: the caller owns the new set.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetAttributeSetState(TQ3ViewObject view,
+                                                       TQ3AttributeSet *attributeSet);
+
+/**
+ * Reads one attribute in force, as Q3View_GetAttributeSetState's set holds it.
+ *
+ * @param view           a view inside a loop.
+ * @param attributeType  the attribute's type (kQ3AttributeType...).
+ * @param data           receives the value: as many bytes as the type's data
+ *                       (a TQ3ColorRGB for a colour, a float for the ambient
+ *                       coefficient, and so on).
+ * @return kQ3Success, or kQ3Failure with *data unchanged.
+ *
+ * Errors (besides the shared ones):
+ *   kQ3ErrorAttributeInvalidType  attributeType is not an attribute type Q3
+ *                                 stores.
+ *   kQ3ErrorAttributeNotContained no attribute of that type is in force (the
+ *                                 defaults hold only the kQ3ViewDefault*
+ *                                 attributes).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_GetAttributeState(TQ3ViewObject view,
+                                                    TQ3AttributeType attributeType, void *data);
+
+/* ---- Culling ----------------------------------------------------------------
+ */
+
+/**
+ * Whether a box may be seen: false when, carried by the local-to-world
+ * matrix in force and the camera into the frustum, all eight of its corners
+ * lie beyond one of the frustum's six planes, and for a box whose isEmpty is
+ * kQ3True; true otherwise. Only boxes the view cannot see are reported
+ * invisible: a box beside a corner of the frustum may be called visible.
+ *
+ * @param view  a view inside a loop.
+ * @param bbox  the box, in the current local coordinates.
+ * @return kQ3True or kQ3False; kQ3False on failure.
+ *
+ * Errors: the shared ones, with bbox as the output pointer.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3View_IsBoundingBoxVisible(TQ3ViewObject view,
+                                                        const TQ3BoundingBox *bbox);
+
+/**
+ * Lets the view treat display groups that use their bounding box
+ * (kQ3DisplayGroupStateMaskUseBoundingBox and a box set by
+ * Q3DisplayGroup_SetAndUseBoundingBox or CalcAndUseBoundingBox) by the box:
+ * rendering skips a group whose box cannot be seen, and bounding loops take
+ * the box for the group's objects. On by default; off, every group is
+ * traversed in full.
+ *
+ * @param view          a view.
+ * @param allowCulling  kQ3True or kQ3False.
+ * @return kQ3Success, or kQ3Failure with the view unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorInvalidParameter   allowCulling is neither kQ3True nor kQ3False.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_AllowAllGroupCulling(TQ3ViewObject view,
+                                                       TQ3Boolean allowCulling);
+
 /* ---- Push / pop --------------------------------------------------------- */
 
 /**
@@ -510,6 +856,58 @@ Q3_EXTERN_API_C(TQ3Status) Q3Push_Submit(TQ3ViewObject view);
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Pop_Submit(TQ3ViewObject view);
+
+/**
+ * Creates a push state operator: a shape that, submitted with
+ * Q3StateOperator_Submit or met in a group, does what Q3Push_Submit does.
+ *
+ * @return the new operator, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorOutOfMemory     the object cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference.
+ */
+Q3_EXTERN_API_C(TQ3StateOperatorObject) Q3Push_New(void);
+
+/**
+ * Creates a pop state operator: a shape that, submitted or met in a group,
+ * does what Q3Pop_Submit does. Met in a display group, it cannot pop a state
+ * pushed before the group (kQ3ErrorNothingToPop, and the rest of the group
+ * is not drawn); states the group's objects push and do not pop are dropped
+ * at the group's end.
+ *
+ * @return the new operator, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorOutOfMemory     the object cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference.
+ */
+Q3_EXTERN_API_C(TQ3StateOperatorObject) Q3Pop_New(void);
+
+/**
+ * Submits a push or pop state operator to a view.
+ *
+ * @param stateOperator  a push or pop operator.
+ * @param view           a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with the view state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      stateOperator or view is NULL.
+ *   kQ3ErrorInvalidObject      either is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  stateOperator is not a state operator, or
+ *                              view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   kQ3ErrorNothingToPop       a pop with nothing pushed left to restore.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3StateOperator_Submit(TQ3StateOperatorObject stateOperator,
+                                                  TQ3ViewObject view);
 
 #ifdef __cplusplus
 }

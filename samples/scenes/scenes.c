@@ -7,6 +7,7 @@
 #include "QD3DGeometry.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
+#include "QD3DStyle.h"
 #include "QD3DView.h"
 
 #include <math.h>
@@ -205,6 +206,330 @@ static TQ3Status submit_hidden_triangle(TQ3ViewObject view)
     return status;
 }
 
+/* ---- Quadrics and solids ------------------------------------------------- */
+
+static TQ3Point3D point3(float x, float y, float z)
+{
+    TQ3Point3D p;
+    p.x = x;
+    p.y = y;
+    p.z = z;
+    return p;
+}
+
+static TQ3Vector3D vector3(float x, float y, float z)
+{
+    TQ3Vector3D v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+
+/* Submits a geometry made by New (NULL counts as a failure) and disposes it. */
+static TQ3Status submit_new(TQ3GeometryObject geometry, TQ3ViewObject view)
+{
+    TQ3Status status;
+    if (geometry == NULL)
+        return kQ3Failure;
+    status = Q3Geometry_Submit(geometry, view);
+    Q3Object_Dispose(geometry);
+    return status;
+}
+
+/* The box faces' colours, in Apple's order: left, right, front, back, top, bottom. */
+static void box_face_sets(TQ3AttributeSet faces[6])
+{
+    faces[0] = color_set(rgb(0.90f, 0.20f, 0.20f));
+    faces[1] = color_set(rgb(0.20f, 0.80f, 0.30f));
+    faces[2] = color_set(rgb(0.20f, 0.40f, 0.95f));
+    faces[3] = color_set(rgb(0.95f, 0.85f, 0.20f));
+    faces[4] = color_set(rgb(0.20f, 0.85f, 0.90f));
+    faces[5] = color_set(rgb(0.85f, 0.30f, 0.85f));
+}
+
+/* A unit box at origin, spanned by x (minor), y (orientation) and z (major),
+ * scaled by `side` and point-reflected when `turned`. */
+static void set_box(TQ3BoxData *data, TQ3Point3D origin, float side, int turned)
+{
+    const float s = turned ? -side : side;
+    memset(data, 0, sizeof *data);
+    data->origin = origin;
+    data->orientation = vector3(0, s, 0);
+    data->majorAxis = vector3(0, 0, s);
+    data->minorAxis = vector3(s, 0, 0);
+}
+
+static TQ3Status submit_boxes(TQ3ViewObject view)
+{
+    TQ3AttributeSet faces[6];
+    TQ3BoxData data;
+    TQ3Status status = kQ3Success;
+    int i;
+
+    box_face_sets(faces);
+    /* Seen from above, in front and to the right: the left box shows its
+     * right, front and top faces; the right one, point-reflected through its
+     * centre, its left, back and bottom faces. */
+    set_box(&data, point3(-1.9f, -0.6f, -0.6f), 1.2f, 0);
+    data.faceAttributeSet = faces;
+    if (submit_new(Q3Box_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    set_box(&data, point3(1.9f, 0.6f, 0.6f), 1.2f, 1);
+    data.faceAttributeSet = faces;
+    if (submit_new(Q3Box_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    for (i = 0; i < 6; i++)
+        dispose(faces[i]);
+    return status;
+}
+
+/* A quadric's frame: origin, orientation along y, majorRadius along z,
+ * minorRadius along x, so u = 0 faces a camera on +z and u = 1/4 the +x side. */
+#define SET_FRAME(data, ox, oy, oz, height, radius)                                                           \
+    do {                                                                                                        \
+        memset(&(data), 0, sizeof(data));                                                                       \
+        (data).origin = point3(ox, oy, oz);                                                                     \
+        (data).orientation = vector3(0, height, 0);                                                             \
+        (data).majorRadius = vector3(0, 0, radius);                                                             \
+        (data).minorRadius = vector3(radius, 0, 0);                                                             \
+        (data).uMax = (data).vMax = 1.0f;                                                                       \
+    } while (0)
+
+static TQ3Status submit_cones(TQ3ViewObject view)
+{
+    TQ3ConeData data;
+    TQ3Status status = kQ3Success;
+    TQ3AttributeSet side = color_set(rgb(0.95f, 0.55f, 0.15f));
+    TQ3AttributeSet bottom = color_set(rgb(0.20f, 0.40f, 0.95f));
+    TQ3AttributeSet interior = color_set(rgb(0.25f, 0.80f, 0.30f));
+
+    /* Seen from below: a whole cone with its bottom closed, and one with the
+     * quarter from u = 0 to 1/4 (facing the camera) cut away and closed. */
+    SET_FRAME(data, -1.3f, -0.6f, 0.0f, 1.7f, 0.9f);
+    data.caps = kQ3EndCapMaskBottom;
+    data.faceAttributeSet = side;
+    data.bottomAttributeSet = bottom;
+    data.interiorAttributeSet = interior;
+    if (submit_new(Q3Cone_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    data.origin.x = 1.3f;
+    data.uMin = 0.25f;
+    data.caps = kQ3EndCapMaskBottom | kQ3EndCapMaskInterior;
+    if (submit_new(Q3Cone_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(side);
+    dispose(bottom);
+    dispose(interior);
+    return status;
+}
+
+static TQ3Status submit_cylinders(TQ3ViewObject view)
+{
+    TQ3CylinderData data;
+    TQ3Status status = kQ3Success;
+    TQ3AttributeSet side = color_set(rgb(0.15f, 0.65f, 0.65f));
+    TQ3AttributeSet top = color_set(rgb(0.95f, 0.85f, 0.20f));
+    TQ3AttributeSet bottom = color_set(rgb(0.85f, 0.30f, 0.85f));
+    TQ3AttributeSet interior = color_set(rgb(0.90f, 0.20f, 0.20f));
+
+    /* Seen from above: a closed cylinder, and its back half (u from 1/4 to
+     * 3/4) with the cut face turned to the camera. */
+    SET_FRAME(data, -1.3f, -0.8f, 0.0f, 1.5f, 0.8f);
+    data.caps = kQ3EndCapMaskTop | kQ3EndCapMaskBottom;
+    data.faceAttributeSet = side;
+    data.topAttributeSet = top;
+    data.bottomAttributeSet = bottom;
+    data.interiorAttributeSet = interior;
+    if (submit_new(Q3Cylinder_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    data.origin.x = 1.3f;
+    data.uMin = 0.25f;
+    data.uMax = 0.75f;
+    data.caps = kQ3EndCapMaskTop | kQ3EndCapMaskBottom | kQ3EndCapMaskInterior;
+    if (submit_new(Q3Cylinder_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(side);
+    dispose(top);
+    dispose(bottom);
+    dispose(interior);
+    return status;
+}
+
+static TQ3Status submit_disks(TQ3ViewObject view)
+{
+    TQ3DiskData data;
+    TQ3Status status = kQ3Success;
+
+    /* In the x-y plane, facing the camera: a whole disk, and three quarters
+     * of a ring (u from 0 to 3/4, v from 0.4 to 1). */
+    memset(&data, 0, sizeof data);
+    data.origin = point3(-1.2f, 0.0f, 0.0f);
+    data.majorRadius = vector3(1.0f, 0.0f, 0.0f);
+    data.minorRadius = vector3(0.0f, 0.8f, 0.0f);
+    data.uMax = data.vMax = 1.0f;
+    data.diskAttributeSet = color_set(rgb(0.60f, 0.35f, 0.90f));
+    if (submit_new(Q3Disk_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(data.diskAttributeSet);
+    data.origin.x = 1.2f;
+    data.minorRadius.y = 1.0f;
+    data.uMax = 0.75f;
+    data.vMin = 0.4f;
+    data.diskAttributeSet = color_set(rgb(0.95f, 0.55f, 0.15f));
+    if (submit_new(Q3Disk_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(data.diskAttributeSet);
+    return status;
+}
+
+static TQ3Status submit_ellipses(TQ3ViewObject view)
+{
+    TQ3EllipseData data;
+    TQ3Status status = kQ3Success;
+
+    /* A whole ellipse, and a circle's arc open to the right (u from 1/8 to 7/8). */
+    memset(&data, 0, sizeof data);
+    data.origin = point3(-1.1f, 0.0f, 0.0f);
+    data.majorRadius = vector3(0.9f, 0.0f, 0.0f);
+    data.minorRadius = vector3(0.0f, 0.55f, 0.0f);
+    data.uMax = 1.0f;
+    data.ellipseAttributeSet = color_set(rgb(0.10f, 0.25f, 0.90f));
+    if (submit_new(Q3Ellipse_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(data.ellipseAttributeSet);
+    data.origin.x = 1.1f;
+    data.majorRadius.x = 0.8f;
+    data.minorRadius.y = 0.8f;
+    data.uMin = 0.125f;
+    data.uMax = 0.875f;
+    data.ellipseAttributeSet = color_set(rgb(0.90f, 0.10f, 0.10f));
+    if (submit_new(Q3Ellipse_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(data.ellipseAttributeSet);
+    return status;
+}
+
+static TQ3Status submit_ellipsoids(TQ3ViewObject view)
+{
+    TQ3EllipsoidData data;
+    TQ3Status status = kQ3Success;
+    TQ3AttributeSet surface = color_set(rgb(0.90f, 0.25f, 0.25f));
+    TQ3AttributeSet interior = color_set(rgb(0.95f, 0.85f, 0.20f));
+
+    /* A sphere with the quarter facing the camera (u from 0 to 1/4) cut away,
+     * and a flattened ellipsoid with its top cut off at v = 3/4 and closed. */
+    SET_FRAME(data, -1.2f, 0.0f, 0.0f, 0.9f, 0.9f);
+    data.uMin = 0.25f;
+    data.caps = kQ3EndCapMaskInterior;
+    data.ellipsoidAttributeSet = surface;
+    data.interiorAttributeSet = interior;
+    if (submit_new(Q3Ellipsoid_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    SET_FRAME(data, 1.3f, 0.0f, 0.0f, 0.6f, 0.8f);
+    data.minorRadius.x = 0.6f;
+    data.vMax = 0.75f;
+    data.caps = kQ3EndCapMaskTop;
+    data.ellipsoidAttributeSet = surface;
+    data.interiorAttributeSet = interior;
+    if (submit_new(Q3Ellipsoid_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(surface);
+    dispose(interior);
+    return status;
+}
+
+static TQ3Status submit_tori(TQ3ViewObject view)
+{
+    TQ3TorusData data;
+    TQ3Status status = kQ3Success;
+    TQ3AttributeSet interior = color_set(rgb(0.25f, 0.80f, 0.30f));
+
+    /* Lying flat, seen from above: a whole torus, and one with the quarter
+     * facing the camera (u from 0 to 1/4) cut away, its cross-sections closed. */
+    SET_FRAME(data, -1.3f, 0.0f, 0.0f, 0.3f, 0.8f);
+    data.ratio = 1.0f;
+    data.torusAttributeSet = color_set(rgb(0.95f, 0.55f, 0.15f));
+    if (submit_new(Q3Torus_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(data.torusAttributeSet);
+    data.origin.x = 1.3f;
+    data.uMin = 0.25f;
+    data.caps = kQ3EndCapMaskInterior;
+    data.interiorAttributeSet = interior;
+    data.torusAttributeSet = color_set(rgb(0.20f, 0.40f, 0.95f));
+    if (submit_new(Q3Torus_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(data.torusAttributeSet);
+    dispose(interior);
+    return status;
+}
+
+/* All seven, small, in two rows, each in its own colour: the wireframe
+ * renderer shows their triangles under a screen-space subdivision of 12
+ * pixels. */
+static TQ3Status submit_all_quadrics(TQ3ViewObject view)
+{
+    TQ3SubdivisionStyleData style;
+    TQ3AttributeSet colors[7];
+    TQ3BoxData box;
+    TQ3ConeData cone;
+    TQ3CylinderData cylinder;
+    TQ3DiskData disk;
+    TQ3EllipseData ellipse;
+    TQ3EllipsoidData ellipsoid;
+    TQ3TorusData torus;
+    TQ3Status status = kQ3Success;
+    int i;
+
+    colors[0] = color_set(rgb(0.95f, 0.35f, 0.35f));
+    colors[1] = color_set(rgb(0.95f, 0.65f, 0.25f));
+    colors[2] = color_set(rgb(0.95f, 0.90f, 0.30f));
+    colors[3] = color_set(rgb(0.40f, 0.90f, 0.40f));
+    colors[4] = color_set(rgb(0.35f, 0.85f, 0.95f));
+    colors[5] = color_set(rgb(0.50f, 0.60f, 1.00f));
+    colors[6] = color_set(rgb(0.90f, 0.50f, 0.95f));
+    set_box(&box, point3(-2.75f, 0.4f, -0.35f), 0.7f, 0);
+    box.boxAttributeSet = colors[0];
+    SET_FRAME(cone, -0.9f, 0.4f, 0.0f, 1.0f, 0.45f);
+    cone.caps = kQ3EndCapMaskBottom;
+    cone.coneAttributeSet = colors[1];
+    SET_FRAME(cylinder, 0.7f, 0.4f, 0.0f, 0.8f, 0.4f);
+    cylinder.caps = kQ3EndCapMaskTop | kQ3EndCapMaskBottom;
+    cylinder.cylinderAttributeSet = colors[2];
+    memset(&disk, 0, sizeof disk);
+    disk.origin = point3(2.4f, 0.8f, 0.0f);
+    disk.majorRadius = vector3(0.5f, 0.0f, 0.0f);
+    disk.minorRadius = vector3(0.0f, 0.35f, 0.35f);
+    disk.uMax = disk.vMax = 1.0f;
+    disk.diskAttributeSet = colors[3];
+    memset(&ellipse, 0, sizeof ellipse);
+    ellipse.origin = point3(-1.8f, -1.2f, 0.0f);
+    ellipse.majorRadius = vector3(0.6f, 0.0f, 0.0f);
+    ellipse.minorRadius = vector3(0.0f, 0.4f, 0.0f);
+    ellipse.uMax = 1.0f;
+    ellipse.ellipseAttributeSet = colors[4];
+    SET_FRAME(ellipsoid, 0.0f, -1.2f, 0.0f, 0.5f, 0.5f);
+    ellipsoid.ellipsoidAttributeSet = colors[5];
+    SET_FRAME(torus, 1.8f, -1.2f, 0.0f, 0.18f, 0.45f);
+    torus.ratio = 1.0f;
+    torus.torusAttributeSet = colors[6];
+
+    style.method = kQ3SubdivisionMethodScreenSpace;
+    style.c1 = style.c2 = 12.0f;
+    if (Q3SubdivisionStyle_Submit(&style, view) != kQ3Success || submit_new(Q3Box_New(&box), view) != kQ3Success ||
+        submit_new(Q3Cone_New(&cone), view) != kQ3Success ||
+        submit_new(Q3Cylinder_New(&cylinder), view) != kQ3Success ||
+        submit_new(Q3Disk_New(&disk), view) != kQ3Success ||
+        submit_new(Q3Ellipse_New(&ellipse), view) != kQ3Success ||
+        submit_new(Q3Ellipsoid_New(&ellipsoid), view) != kQ3Success ||
+        submit_new(Q3Torus_New(&torus), view) != kQ3Success)
+        status = kQ3Failure;
+    for (i = 0; i < 7; i++)
+        dispose(colors[i]);
+    return status;
+}
+
 /* ---- The scenes ---------------------------------------------------------- */
 
 static const Q3Scene kScenes[] = {
@@ -218,6 +543,22 @@ static const Q3Scene kScenes[] = {
      {0.0f, 0.0f, 5.0f}, 0.75f, {0.95f, 0.95f, 0.95f}, submit_red_to_blue},
     {"hidden_triangle", "A nearer blue triangle, submitted first, hides a farther orange one",
      kQ3RendererTypeInteractive, {0.0f, 0.0f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_hidden_triangle},
+    {"box_faces", "Two Boxes in their six face colours: right, front, top; and turned, left, back, bottom",
+     kQ3RendererTypeInteractive, {2.6f, 2.4f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_boxes},
+    {"cone_bottom", "Cones seen from below: orange sides, blue bottoms, a green cut where a quarter is missing",
+     kQ3RendererTypeInteractive, {0.8f, -2.6f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_cones},
+    {"cylinder_caps", "A Cylinder with a yellow top, and its back half with the red cut face",
+     kQ3RendererTypeInteractive, {0.8f, 2.8f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_cylinders},
+    {"disk_sector", "A purple elliptic Disk and an orange ring sector (u 0 to 3/4, v 0.4 to 1)",
+     kQ3RendererTypeInteractive, {0.0f, 1.0f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_disks},
+    {"ellipse_arcs", "A blue Ellipse and a red arc of a circle (u 1/8 to 7/8)", kQ3RendererTypeInteractive,
+     {0.0f, 0.0f, 5.0f}, 0.75f, {0.95f, 0.95f, 0.95f}, submit_ellipses},
+    {"ellipsoid_cutaway", "A red sphere with a yellow-faced quarter cut, an ellipsoid with its top capped",
+     kQ3RendererTypeInteractive, {1.6f, 2.2f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_ellipsoids},
+    {"torus_cutaway", "An orange Torus, and a blue one with a quarter cut and green cross-sections",
+     kQ3RendererTypeInteractive, {0.0f, 3.2f, 4.2f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_tori},
+    {"quadrics_wireframe", "Box, cone, cylinder, disk; ellipse, ellipsoid, torus in wireframe, 12-pixel subdivision",
+     kQ3RendererTypeWireFrame, {1.2f, 1.6f, 7.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_all_quadrics},
 };
 
 unsigned long q3scene_count(void)
@@ -241,8 +582,8 @@ const Q3Scene *q3scene_find(const char *name)
 
 /* ---- Rendering ----------------------------------------------------------- */
 
-static TQ3ViewObject new_view(const Q3Scene *scene, unsigned long width, unsigned long height,
-                              unsigned char *argb)
+static TQ3ViewObject new_view(const Q3Scene *scene, TQ3GroupObject lights, unsigned long width,
+                              unsigned long height, unsigned char *argb)
 {
     TQ3PixmapDrawContextData contextData;
     TQ3ViewAngleAspectCameraData cameraData;
@@ -285,7 +626,8 @@ static TQ3ViewObject new_view(const Q3Scene *scene, unsigned long width, unsigne
 
     if (failed || context == NULL || camera == NULL || Q3View_SetDrawContext(view, context) != kQ3Success ||
         Q3View_SetCamera(view, camera) != kQ3Success ||
-        Q3View_SetRendererByType(view, scene->renderer) != kQ3Success)
+        Q3View_SetRendererByType(view, scene->renderer) != kQ3Success ||
+        (lights != NULL && Q3View_SetLightGroup(view, lights) != kQ3Success))
         failed = 1;
     dispose(context);
     dispose(camera);
@@ -298,6 +640,12 @@ static TQ3ViewObject new_view(const Q3Scene *scene, unsigned long width, unsigne
 
 int q3scene_render(const Q3Scene *scene, unsigned long width, unsigned long height, unsigned char *rgba)
 {
+    return q3scene_render_lit(scene, NULL, width, height, rgba);
+}
+
+int q3scene_render_lit(const Q3Scene *scene, TQ3GroupObject lights, unsigned long width, unsigned long height,
+                       unsigned char *rgba)
+{
     unsigned char *argb;
     TQ3ViewObject view;
     TQ3ViewStatus status;
@@ -308,7 +656,7 @@ int q3scene_render(const Q3Scene *scene, unsigned long width, unsigned long heig
     argb = calloc(width * height, 4);
     if (argb == NULL)
         return 1;
-    view = new_view(scene, width, height, argb);
+    view = new_view(scene, lights, width, height, argb);
     if (view == NULL) {
         free(argb);
         return 1;

@@ -48,6 +48,9 @@ const Q3Scene *q3scene_find(const char *name);
  * width * height * 4 bytes, top row first). Q3 must be initialized.
  */
 int q3scene_render(const Q3Scene *scene, unsigned long width, unsigned long height, unsigned char *rgba);
+/* The same, lit by the light group lights (NULL: none; see Q3View_SetLightGroup). */
+int q3scene_render_lit(const Q3Scene *scene, TQ3GroupObject lights, unsigned long width, unsigned long height,
+                       unsigned char *rgba);
 
 #ifdef __cplusplus
 }

@@ -25,7 +25,7 @@ TQ3Status Q3SubdivisionStyle_Submit(const TQ3SubdivisionStyleData* data, TQ3View
         requireNonNull(data, "data");
         ShapeVisitor& target = lookup<View>(view, "view").submitTarget();
         const Ref<SubdivisionStyle> style = makeShared<SubdivisionStyle>(*data);
-        target.visitSubdivisionStyle(*style);
+        target.visitStyle(*style);
     });
 }
 

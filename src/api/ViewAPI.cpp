@@ -2,9 +2,14 @@
 // Copyright (c) 2026 The Q3 authors
 #include "QD3DView.h"
 #include "api/Entry.h"
+#include "core/AttributeSet.h"
+#include "core/EnumValue.h"
+#include "group/Group.h"
 #include "render/Renderer.h"
 #include "view/Camera.h"
 #include "view/DrawContext.h"
+#include "view/Pass.h"
+#include "view/StateOperator.h"
 #include "view/View.h"
 
 using namespace q3;
@@ -18,6 +23,18 @@ template <class T>
 TQ3Object handOut(const Ref<T>& held)
 {
     return Ref<T>(held).detach();
+}
+
+// The graphics state Get calls: the view (which must run a loop), then the
+// output pointer, then *out = read(state). Nothing is written on failure.
+template <class Value, class Read>
+TQ3Status readState(const char* function, TQ3ViewObject view, Value* out, const char* outName, Read read)
+{
+    return guardStatus(function, [&] {
+        View& source = lookup<View>(view, "view");
+        requireNonNull(out, outName);
+        *out = read(source.graphicsState());
+    });
 }
 
 } // namespace
@@ -163,6 +180,177 @@ TQ3Status Q3Push_Submit(TQ3ViewObject view)
 TQ3Status Q3Pop_Submit(TQ3ViewObject view)
 {
     return guardStatus(__func__, [&] { lookup<View>(view, "view").pop(); });
+}
+
+TQ3Status Q3View_SetLightGroup(TQ3ViewObject view, TQ3GroupObject lightGroup)
+{
+    return guardStatus(__func__, [&] {
+        View& target = lookup<View>(view, "view");
+        target.setLightGroup(Ref<Group>::retain(lookupOptional<Group>(lightGroup, "lightGroup")));
+    });
+}
+
+TQ3Status Q3View_GetLightGroup(TQ3ViewObject view, TQ3GroupObject* lightGroup)
+{
+    return guardStatus(__func__, [&] {
+        const View& source = lookup<View>(view, "view");
+        requireNonNull(lightGroup, "lightGroup");
+        *lightGroup = handOut(source.lightGroup());
+    });
+}
+
+TQ3Status Q3View_Flush(TQ3ViewObject view)
+{
+    return guardStatus(__func__, [&] { lookup<View>(view, "view").flush(); });
+}
+
+TQ3Status Q3View_GetWorldToFrustumMatrixState(TQ3ViewObject view, TQ3Matrix4x4* matrix)
+{
+    return guardStatus(__func__, [&] {
+        View& source = lookup<View>(view, "view");
+        requireNonNull(matrix, "matrix");
+        *matrix = source.worldToFrustumState();
+    });
+}
+
+TQ3Status Q3View_GetFrustumToWindowMatrixState(TQ3ViewObject view, TQ3Matrix4x4* matrix)
+{
+    return guardStatus(__func__, [&] {
+        View& source = lookup<View>(view, "view");
+        requireNonNull(matrix, "matrix");
+        *matrix = source.frustumToWindowState();
+    });
+}
+
+TQ3Status Q3View_GetBackfacingStyleState(TQ3ViewObject view, TQ3BackfacingStyle* backfacingStyle)
+{
+    return readState(__func__, view, backfacingStyle, "backfacingStyle",
+                     [](const GraphicsState& state) { return state.draw.backfacing; });
+}
+
+TQ3Status Q3View_GetInterpolationStyleState(TQ3ViewObject view, TQ3InterpolationStyle* interpolationType)
+{
+    return readState(__func__, view, interpolationType, "interpolationType",
+                     [](const GraphicsState& state) { return state.draw.interpolation; });
+}
+
+TQ3Status Q3View_GetFillStyleState(TQ3ViewObject view, TQ3FillStyle* fillStyle)
+{
+    return readState(__func__, view, fillStyle, "fillStyle",
+                     [](const GraphicsState& state) { return state.draw.fill; });
+}
+
+TQ3Status Q3View_GetHighlightStyleState(TQ3ViewObject view, TQ3AttributeSet* highlightStyle)
+{
+    return readState(__func__, view, highlightStyle, "highlightStyle", [](const GraphicsState& state) {
+        return static_cast<TQ3AttributeSet>(handOut(state.draw.highlight));
+    });
+}
+
+TQ3Status Q3View_GetOrientationStyleState(TQ3ViewObject view, TQ3OrientationStyle* fontFacingDirectionStyle)
+{
+    return readState(__func__, view, fontFacingDirectionStyle, "fontFacingDirectionStyle",
+                     [](const GraphicsState& state) { return state.draw.orientation; });
+}
+
+TQ3Status Q3View_GetReceiveShadowsStyleState(TQ3ViewObject view, TQ3Boolean* receives)
+{
+    return readState(__func__, view, receives, "receives",
+                     [](const GraphicsState& state) { return state.draw.receiveShadows; });
+}
+
+TQ3Status Q3View_GetPickIDStyleState(TQ3ViewObject view, unsigned long* pickIDStyle)
+{
+    return readState(__func__, view, pickIDStyle, "pickIDStyle",
+                     [](const GraphicsState& state) { return state.draw.pickID; });
+}
+
+TQ3Status Q3View_GetPickPartsStyleState(TQ3ViewObject view, TQ3PickParts* pickPartsStyle)
+{
+    return readState(__func__, view, pickPartsStyle, "pickPartsStyle",
+                     [](const GraphicsState& state) { return state.draw.pickParts; });
+}
+
+TQ3Status Q3View_GetAntiAliasStyleState(TQ3ViewObject view, TQ3AntiAliasStyleData* antiAliasData)
+{
+    return readState(__func__, view, antiAliasData, "antiAliasData",
+                     [](const GraphicsState& state) { return state.draw.antiAlias; });
+}
+
+TQ3Status Q3View_GetDefaultAttributeSet(TQ3ViewObject view, TQ3AttributeSet* attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        const View& source = lookup<View>(view, "view");
+        requireNonNull(attributeSet, "attributeSet");
+        *attributeSet = source.defaultAttributeSet().detach();
+    });
+}
+
+TQ3Status Q3View_SetDefaultAttributeSet(TQ3ViewObject view, TQ3AttributeSet attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        View& target = lookup<View>(view, "view");
+        target.setDefaultAttributeSet(
+            Ref<AttributeSet>::retain(lookupOptional<AttributeSet>(attributeSet, "attributeSet")));
+    });
+}
+
+TQ3Status Q3View_GetAttributeSetState(TQ3ViewObject view, TQ3AttributeSet* attributeSet)
+{
+    return readState(__func__, view, attributeSet, "attributeSet", [](const GraphicsState& state) {
+        return static_cast<TQ3AttributeSet>(AttributeSet::fromValues(state.attributes).detach());
+    });
+}
+
+TQ3Status Q3View_GetAttributeState(TQ3ViewObject view, TQ3AttributeType attributeType, void* data)
+{
+    return guardStatus(__func__, [&] {
+        View& source = lookup<View>(view, "view");
+        requireNonNull(data, "data");
+        const GraphicsState& state = source.graphicsState();
+        AttributeSet::fromValues(state.attributes)->get(attributeType, data);
+    });
+}
+
+TQ3Boolean Q3View_IsBoundingBoxVisible(TQ3ViewObject view, const TQ3BoundingBox* bbox)
+{
+    return guard(__func__, kQ3False, [&] {
+        View& source = lookup<View>(view, "view");
+        requireNonNull(bbox, "bbox");
+        return source.isBoundingBoxVisible(*bbox) ? kQ3True : kQ3False;
+    });
+}
+
+TQ3Status Q3View_AllowAllGroupCulling(TQ3ViewObject view, TQ3Boolean allowCulling)
+{
+    return guardStatus(__func__, [&] {
+        View& target = lookup<View>(view, "view");
+        const long allow = enumValue(allowCulling);
+        if (allow != kQ3True && allow != kQ3False)
+            fail(kQ3ErrorInvalidParameter,
+                 "allowCulling " + std::to_string(allow) + " is neither kQ3True nor kQ3False");
+        target.allowGroupCulling(allow == kQ3True);
+    });
+}
+
+TQ3StateOperatorObject Q3Push_New(void)
+{
+    return guard(__func__, TQ3StateOperatorObject{nullptr},
+                 []() -> TQ3StateOperatorObject { return makeShared<StateOperator>(true).detach(); });
+}
+
+TQ3StateOperatorObject Q3Pop_New(void)
+{
+    return guard(__func__, TQ3StateOperatorObject{nullptr},
+                 []() -> TQ3StateOperatorObject { return makeShared<StateOperator>(false).detach(); });
+}
+
+TQ3Status Q3StateOperator_Submit(TQ3StateOperatorObject stateOperator, TQ3ViewObject view)
+{
+    return guardStatus(__func__, [&] {
+        const StateOperator& op = lookup<StateOperator>(stateOperator, "stateOperator");
+        lookup<View>(view, "view").submit(op);
+    });
 }
 
 } // extern "C"

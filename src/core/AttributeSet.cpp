@@ -55,11 +55,32 @@ std::size_t AttributeSet::dataSize(TQ3AttributeType type)
     return floatCount(type) * sizeof(float);
 }
 
+bool AttributeValues::copy(TQ3AttributeType type, void* data, std::size_t size) const
+{
+    const auto& slot = m_slots[type - kFirstType];
+    if (!slot)
+        return false;
+    std::memcpy(data, slot->data(), size);
+    return true;
+}
+
+void AttributeValues::overlay(const AttributeValues& other)
+{
+    for (std::size_t i = 0; i < m_slots.size(); ++i)
+        if (other.m_slots[i])
+            m_slots[i] = other.m_slots[i];
+}
+
 Object* AttributeSet::duplicate() const
 {
-    Ref<AttributeSet> copy = makeShared<AttributeSet>();
-    copy->m_slots = m_slots;
-    return copy.detach();
+    return fromValues(m_values).detach();
+}
+
+Ref<AttributeSet> AttributeSet::fromValues(const AttributeValues& values)
+{
+    Ref<AttributeSet> set = makeShared<AttributeSet>();
+    set->m_values = values;
+    return set;
 }
 
 void AttributeSet::accept(ShapeVisitor& visitor) const
@@ -89,52 +110,49 @@ void AttributeSet::add(TQ3AttributeType type, const void* data)
 {
     const std::size_t index = slotIndex(type);
     requireNonNull(data, "data");
-    Slot slot{};
+    AttributeValues::Slot slot{};
     std::memcpy(slot.data(), data, dataSize(type));
     const std::string problem = valueProblem(type, slot.data());
     if (!problem.empty())
         fail(kQ3ErrorInvalidParameter, problem);
-    m_slots[index] = slot;
+    m_values.m_slots[index] = slot;
     markEdited();
 }
 
 void AttributeSet::get(TQ3AttributeType type, void* data) const
 {
-    const std::size_t index = slotIndex(type);
+    slotIndex(type);
     requireNonNull(data, "data");
-    if (!m_slots[index])
+    if (!m_values.copy(type, data, dataSize(type)))
         fail(kQ3ErrorAttributeNotContained,
              "the set holds no attribute of type " + std::to_string(type));
-    std::memcpy(data, m_slots[index]->data(), dataSize(type));
 }
 
 bool AttributeSet::contains(TQ3AttributeType type) const
 {
-    return m_slots[slotIndex(type)].has_value();
+    slotIndex(type);
+    return m_values.contains(type);
 }
 
 void AttributeSet::clear(TQ3AttributeType type)
 {
     const std::size_t index = slotIndex(type);
-    if (!m_slots[index])
+    if (!m_values.m_slots[index])
         fail(kQ3ErrorAttributeNotContained,
              "the set holds no attribute of type " + std::to_string(type));
-    m_slots[index].reset();
+    m_values.m_slots[index].reset();
     markEdited();
 }
 
 void AttributeSet::empty()
 {
-    for (auto& slot : m_slots)
-        slot.reset();
+    m_values = AttributeValues();
     markEdited();
 }
 
 void AttributeSet::inheritFrom(const AttributeSet& other)
 {
-    for (std::size_t i = 0; i < m_slots.size(); ++i)
-        if (other.m_slots[i])
-            m_slots[i] = other.m_slots[i];
+    m_values.overlay(other.m_values);
     markEdited();
 }
 

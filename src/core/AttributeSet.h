@@ -16,6 +16,52 @@ namespace q3 {
 extern const ClassInfo kSetClass;
 extern const ClassInfo kAttributeSetClass;
 
+/// The attributes Q3 stores (the plain-data standard types, surface UV to
+/// highlight state), at most one of each, as values: what an attribute set
+/// holds, and what a traversal's graphics state holds after attribute sets
+/// were submitted. Invariant: every stored value is well formed.
+class AttributeValues {
+public:
+    static constexpr TQ3AttributeType kFirstType = kQ3AttributeTypeSurfaceUV;
+    static constexpr TQ3AttributeType kLastType = kQ3AttributeTypeHighlightState;
+
+    bool contains(TQ3AttributeType type) const { return m_slots[type - kFirstType].has_value(); }
+    /// Copies the value out (data holds AttributeSet::dataSize(type) bytes);
+    /// false when there is none.
+    bool copy(TQ3AttributeType type, void* data, std::size_t size) const;
+    /// Every attribute `other` has replaces this one's.
+    void overlay(const AttributeValues& other);
+
+    template <class T>
+    std::optional<T> find(TQ3AttributeType type) const
+    {
+        const auto& slot = m_slots[type - kFirstType];
+        if (!slot)
+            return std::nullopt;
+        T value;
+        static_assert(sizeof(T) <= sizeof(Slot), "attribute values fit a slot");
+        std::memcpy(&value, slot->data(), sizeof value);
+        return value;
+    }
+
+    std::optional<TQ3ColorRGB> diffuseColor() const { return find<TQ3ColorRGB>(kQ3AttributeTypeDiffuseColor); }
+    std::optional<TQ3ColorRGB> specularColor() const { return find<TQ3ColorRGB>(kQ3AttributeTypeSpecularColor); }
+    std::optional<TQ3ColorRGB> transparencyColor() const
+    {
+        return find<TQ3ColorRGB>(kQ3AttributeTypeTransparencyColor);
+    }
+    std::optional<float> ambientCoefficient() const { return find<float>(kQ3AttributeTypeAmbientCoefficient); }
+    std::optional<float> specularControl() const { return find<float>(kQ3AttributeTypeSpecularControl); }
+    std::optional<TQ3Vector3D> normal() const { return find<TQ3Vector3D>(kQ3AttributeTypeNormal); }
+    std::optional<TQ3Param2D> surfaceUV() const { return find<TQ3Param2D>(kQ3AttributeTypeSurfaceUV); }
+    std::optional<TQ3Switch> highlightState() const { return find<TQ3Switch>(kQ3AttributeTypeHighlightState); }
+
+private:
+    friend class AttributeSet;
+    using Slot = std::array<unsigned char, 24>;
+    std::array<std::optional<Slot>, kLastType - kFirstType + 1> m_slots;
+};
+
 /// A set of QuickDraw 3D attributes (colors, normals, UVs, ...), at most one
 /// of each type. Invariant: every stored value is well formed (finite floats,
 /// a switch that is kQ3On or kQ3Off); add() checks before it stores.
@@ -25,8 +71,8 @@ public:
 
     /// The first and last attribute types Q3 stores: the plain-data types
     /// (surface shaders, type 11, are objects Q3 does not have).
-    static constexpr TQ3AttributeType kFirstType = kQ3AttributeTypeSurfaceUV;
-    static constexpr TQ3AttributeType kLastType = kQ3AttributeTypeHighlightState;
+    static constexpr TQ3AttributeType kFirstType = AttributeValues::kFirstType;
+    static constexpr TQ3AttributeType kLastType = AttributeValues::kLastType;
 
     AttributeSet() = default;
 
@@ -51,32 +97,20 @@ public:
 
     /// Copies into this set every attribute of `other` (others' values win).
     void inheritFrom(const AttributeSet& other);
+    /// A new set holding these values.
+    static Ref<AttributeSet> fromValues(const AttributeValues& values);
+
+    const AttributeValues& values() const { return m_values; }
     /// The value of one attribute, or nullopt when the set has none.
-    std::optional<TQ3ColorRGB> diffuseColor() const { return find<TQ3ColorRGB>(kQ3AttributeTypeDiffuseColor); }
-    std::optional<TQ3ColorRGB> transparencyColor() const
-    {
-        return find<TQ3ColorRGB>(kQ3AttributeTypeTransparencyColor);
-    }
-    std::optional<TQ3Vector3D> normal() const { return find<TQ3Vector3D>(kQ3AttributeTypeNormal); }
-    std::optional<TQ3Param2D> surfaceUV() const { return find<TQ3Param2D>(kQ3AttributeTypeSurfaceUV); }
+    std::optional<TQ3ColorRGB> diffuseColor() const { return m_values.diffuseColor(); }
+    std::optional<TQ3ColorRGB> transparencyColor() const { return m_values.transparencyColor(); }
+    std::optional<TQ3Vector3D> normal() const { return m_values.normal(); }
+    std::optional<TQ3Param2D> surfaceUV() const { return m_values.surfaceUV(); }
 
 private:
-    template <class T>
-    std::optional<T> find(TQ3AttributeType type) const
-    {
-        const auto& slot = m_slots[type - kFirstType];
-        if (!slot)
-            return std::nullopt;
-        T value;
-        static_assert(sizeof(T) <= sizeof(Slot), "attribute values fit a slot");
-        std::memcpy(&value, slot->data(), sizeof value);
-        return value;
-    }
-
-    using Slot = std::array<unsigned char, 24>;
     static std::size_t slotIndex(TQ3AttributeType type);
 
-    std::array<std::optional<Slot>, kLastType> m_slots;
+    AttributeValues m_values;
 };
 
 } // namespace q3

@@ -7,6 +7,7 @@
 #include "core/Limits.h"
 
 #include "QD3DGeometry.h"
+#include "QD3DGroup.h"
 #include "QD3DStyle.h"
 
 namespace q3::limits {
@@ -18,8 +19,11 @@ static_assert(kMaxTrianglesPerPatch == kQ3SubdivisionMaxTrianglesPerPatch,
               "QD3DStyle.h documents kMaxTrianglesPerPatch");
 static_assert(kMaxSegmentsPerCurve == kQ3SubdivisionMaxSegmentsPerCurve,
               "QD3DStyle.h documents kMaxSegmentsPerCurve");
+static_assert(kMaxTrianglesPerSurface == kQ3SubdivisionMaxTrianglesPerSurface,
+              "QD3DStyle.h documents kMaxTrianglesPerSurface");
 static_assert(kMaxConstantSegments == kQ3SubdivisionMaxConstantSegments,
               "QD3DStyle.h documents kMaxConstantSegments");
+static_assert(kMaxGroupNesting == kQ3GroupMaxNesting, "QD3DGroup.h documents kMaxGroupNesting");
 static_assert(kSubdivisionDefault == kQ3SubdivisionDefaultC1, "QD3DStyle.h documents kSubdivisionDefault");
 
 } // namespace q3::limits

@@ -35,9 +35,17 @@ constexpr std::size_t kMaxTrianglesPerPatch = std::size_t{1} << 20;
 /// kQ3SubdivisionMaxSegmentsPerCurve.
 constexpr std::size_t kMaxSegmentsPerCurve = std::size_t{1} << 20;
 
+/// The most triangles one quadric or solid (box, cone, cylinder, disk,
+/// ellipsoid, torus) is drawn with: kQ3SubdivisionMaxTrianglesPerSurface.
+constexpr std::size_t kMaxTrianglesPerSurface = std::size_t{1} << 20;
+
 /// The largest constant-method c1 or c2, in segments per knot span:
 /// kQ3SubdivisionMaxConstantSegments.
 constexpr std::uint32_t kMaxConstantSegments = 1024;
+
+/// How deep display groups may nest inside each other when drawn, bounded or
+/// duplicated: kQ3GroupMaxNesting.
+constexpr std::size_t kMaxGroupNesting = 256;
 
 /// The value substituted for an unreasonable c1 or c2: kQ3SubdivisionDefaultC1.
 constexpr float kSubdivisionDefault = 20.0f;

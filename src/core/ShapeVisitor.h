@@ -5,8 +5,10 @@
 namespace q3 {
 
 class AttributeSet;
+class DisplayGroup;
 class Geometry;
-class SubdivisionStyle;
+class Shader;
+class Style;
 class Transform;
 
 /// What a view does with each kind of submitted shape. Drawable objects call
@@ -22,8 +24,23 @@ public:
     /// immediate-mode one that lives for the call).
     virtual void visitGeometry(const Geometry& geometry) = 0;
     virtual void visitAttributeSet(const AttributeSet& attributes) = 0;
-    virtual void visitSubdivisionStyle(const SubdivisionStyle& style) = 0;
+    /// A style or shader: it sets its part of the traversal's DrawState
+    /// (Style::apply, Shader::apply).
+    virtual void visitStyle(const Style& style) = 0;
+    virtual void visitShader(const Shader& shader) = 0;
     virtual void visitTransform(const Transform& transform) = 0;
+    /// A push or pop state operator (Q3Push_New, Q3Pop_New): saves or
+    /// restores the graphics state as Q3Push_Submit and Q3Pop_Submit do;
+    /// popState throws kQ3ErrorNothingToPop when nothing pushed is left.
+    virtual void pushState() = 0;
+    virtual void popState() = 0;
+    /// A display group's objects are visited between these two. beginGroup
+    /// decides whether they are visited at all (the group's state, its
+    /// bounding box) and saves the graphics state unless the group is
+    /// inline; endGroup restores it. Throws kQ3ErrorInvalidObject beyond
+    /// limits::kMaxGroupNesting.
+    virtual bool beginGroup(const DisplayGroup& group) = 0;
+    virtual void endGroup(const DisplayGroup& group) = 0;
 };
 
 } // namespace q3

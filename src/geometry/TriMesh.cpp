@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace q3 {
 
@@ -126,6 +128,26 @@ void checkValues(const TQ3TriMeshAttributeData* entries, std::size_t types, std:
         });
 }
 
+// Rule 1 for one array: present unless its count is 0.
+void requirePresent(const void* array, unsigned long count, const char* name)
+{
+    if (array == nullptr && count != 0)
+        fail(kQ3ErrorNULLParameter,
+             std::string(name) + " is NULL but should hold " + std::to_string(count) + " entries");
+}
+
+// Rule 1 for the data blocks of an attribute array's entries. The entries are
+// read only when their count is within the limit; rule 2 reports the others.
+void requireValuesPresent(const TQ3TriMeshAttributeData* entries, unsigned long types, unsigned long count,
+                          const char* name)
+{
+    if (entries == nullptr || count == 0 || types > limits::kMaxArrayCount)
+        return;
+    for (unsigned long i = 0; i < types; ++i)
+        if (entries[i].data == nullptr)
+            fail(kQ3ErrorNULLParameter, std::string(name) + "[" + std::to_string(i) + "].data is NULL");
+}
+
 void checkIndexValue(unsigned long value, unsigned long count, const std::string& where, const char* countName)
 {
     if (value >= count)
@@ -160,7 +182,28 @@ template class DataGeometry<TriMesh, TQ3TriMeshData>;
 
 void TriMesh::check(const TQ3TriMeshData& data)
 {
-    // The arrays first, so that the index checks below may read them.
+    // Rules 1 and 2 hold across the whole structure: every NULL array is
+    // reported before any count above the limit. Then the per-field walk of
+    // the description (rule 3, attribute types), so that the index checks
+    // below may read the arrays.
+    requirePresent(data.triangles, data.numTriangles, "triangles");
+    requirePresent(data.triangleAttributeTypes, data.numTriangleAttributeTypes, "triangleAttributeTypes");
+    requirePresent(data.edges, data.numEdges, "edges");
+    requirePresent(data.edgeAttributeTypes, data.numEdgeAttributeTypes, "edgeAttributeTypes");
+    requirePresent(data.points, data.numPoints, "points");
+    requirePresent(data.vertexAttributeTypes, data.numVertexAttributeTypes, "vertexAttributeTypes");
+    requireValuesPresent(data.triangleAttributeTypes, data.numTriangleAttributeTypes, data.numTriangles,
+                         "triangleAttributeTypes");
+    requireValuesPresent(data.edgeAttributeTypes, data.numEdgeAttributeTypes, data.numEdges, "edgeAttributeTypes");
+    requireValuesPresent(data.vertexAttributeTypes, data.numVertexAttributeTypes, data.numPoints,
+                         "vertexAttributeTypes");
+    for (const auto& [count, name] : {std::pair{data.numTriangles, "triangles"},
+                                      std::pair{data.numTriangleAttributeTypes, "triangleAttributeTypes"},
+                                      std::pair{data.numEdges, "edges"},
+                                      std::pair{data.numEdgeAttributeTypes, "edgeAttributeTypes"},
+                                      std::pair{data.numPoints, "points"},
+                                      std::pair{data.numVertexAttributeTypes, "vertexAttributeTypes"}})
+        layout::checkCount(count, layout::Path{nullptr, name});
     layout::checkStructure(data, layout::Path{});
     for (unsigned long t = 0; t < data.numTriangles; ++t)
         for (int k = 0; k < 3; ++k)
@@ -240,6 +283,14 @@ void TriMesh::decompose(const DecomposeContext&, PrimitiveSink& sink) const
             }
         },
         [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
+}
+
+void TriMesh::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const
+{
+    const D& d = data();
+    points.reserve(points.size() + d.numPoints);
+    for (unsigned long i = 0; i < d.numPoints; ++i)
+        points.emplace_back(d.points[i].x, d.points[i].y, d.points[i].z);
 }
 
 Ref<TriMesh> TriMesh::fromMesh(const Mesh& mesh, const AttributeSet* own)

@@ -38,6 +38,10 @@ public:
     /// array that has a colour, in that colour.
     void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
     bool isPrimitive() const override { return true; }
+    /// Every point, used by a triangle or not: the box GetData reports as
+    /// bBox (the default, the drawn vertices, would leave out the unused
+    /// points only when the mesh has triangle attributes).
+    void bound(const DecomposeContext& context, std::vector<glm::dvec3>& points) const override;
 
     /// As DataGeometry::getData, with bBox the box of the points (the
     /// caller's bBox is not kept: Q3 computes it).

@@ -48,6 +48,8 @@
 
 #include "render/OffscreenRenderer.h"
 
+#include "render/LitProgram.h"
+
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -176,6 +178,8 @@ struct DrawRequest {
     Primitive primitive = Primitive::kPoints;
     const float* xyz = nullptr;
     const float* rgb = nullptr; // per vertex, or null for `color`
+    const float* normals = nullptr; // lit triangles: per vertex
+    const SurfaceShading* shading = nullptr; // lit triangles
     std::size_t vertexCount = 0;
     bool indexed = false; // else the vertices in order
     const std::uint32_t* indices = nullptr;
@@ -258,6 +262,8 @@ public:
                             const PixelRect& pane, const FrameOptions& options);
     RenderResult setMatrix(const std::array<float, 16>& matrix);
     RenderResult draw(const DrawRequest& request);
+    RenderResult setLighting(const LightingSetup& lighting);
+    RenderResult setFaceOptions(const FaceOptions& faces);
     RenderResult endFrame();
     void cancelFrame();
 
@@ -267,27 +273,34 @@ public:
     std::vector<std::uint8_t> m_image;
 
 private:
-    // Interleaved for glVertexPointer/glColorPointer with one stride. No
-    // member initializers: storage is allocated uninitialized.
+    // Interleaved for glVertexPointer/glColorPointer/glNormalPointer with
+    // one stride. No member initializers: storage is allocated uninitialized.
     struct Vertex {
         float x, y, z;
         float r, g, b;
+        float nx, ny, nz;
     };
 
+    static constexpr std::uint32_t kUnlit = std::numeric_limits<std::uint32_t>::max();
+
     // first and count are vertices, or for an indexed command indices.
+    // shading indexes m_shadings (kUnlit: drawn with the colours as they are).
     struct DrawCommand {
         Primitive primitive;
         bool indexed;
         bool smooth;
         float pointSize;
         std::uint32_t matrixIndex;
+        std::uint32_t shading;
+        FaceOptions faces;
         GLint first;
         GLsizei count;
 
         bool drawsLike(const DrawCommand& other) const
         {
             return primitive == other.primitive && indexed == other.indexed && smooth == other.smooth &&
-                   pointSize == other.pointSize && matrixIndex == other.matrixIndex;
+                   pointSize == other.pointSize && matrixIndex == other.matrixIndex && shading == other.shading &&
+                   faces == other.faces;
         }
     };
 
@@ -317,6 +330,11 @@ private:
     std::vector<GLint> m_multiFirsts;
     std::vector<GLsizei> m_multiCounts;
     std::vector<const void*> m_multiIndices;
+
+    LightingSetup m_lighting;
+    std::vector<SurfaceShading> m_shadings;
+    FaceOptions m_faces;
+    LitProgram m_program;
 };
 
 void pinRenderingEnvironment()
@@ -390,6 +408,7 @@ void OffscreenRenderer::Impl::destroyContext()
     std::lock_guard<std::mutex> lock(contextMutex());
     OSMesaDestroyContext(m_context);
     m_context = nullptr;
+    m_program.forget();
 }
 
 // Every value here is OpenGL's default except the shade model; they are set
@@ -423,6 +442,11 @@ void OffscreenRenderer::Impl::initializeState()
 
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    // The lit program gives back faces their own colour (flipped normals).
+    glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
 }
 
 RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint32_t height,
@@ -457,6 +481,8 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
     m_clearColor = clearColor;
     m_options = options;
     m_clearedInGl = false;
+    m_lighting = LightingSetup{};
+    m_faces = FaceOptions{};
     resetBatch();
     m_matrices.clear();
     m_matrices.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
@@ -529,6 +555,17 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         return invalid("a vertex coordinate is NaN or infinite");
     if (r.rgb != nullptr && !allFinite(r.rgb, r.vertexCount * 3))
         return invalid("a vertex colour channel is NaN or infinite");
+    if (r.shading != nullptr) {
+        if (r.normals == nullptr)
+            return invalid("lit triangles need normals");
+        if (!allFinite(r.normals, r.vertexCount * 3))
+            return invalid("a vertex normal is NaN or infinite");
+        const SurfaceShading& s = *r.shading;
+        const float values[5] = {s.ambientCoefficient, s.specularColor[0], s.specularColor[1], s.specularColor[2],
+                                 s.specularControl};
+        if (!allFinite(s.localToWorld, 16) || !allFinite(values, 5))
+            return invalid("a shading value is NaN or infinite");
+    }
     if (indexed)
         for (std::size_t i = 0; i < r.indexCount; ++i)
             if (r.indices[i] >= r.vertexCount)
@@ -546,6 +583,8 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         reserveVertices(m_vertexCount + r.vertexCount);
         if (indexed)
             m_indices.reserve(m_indices.size() + r.indexCount);
+        if (r.shading != nullptr)
+            m_shadings.reserve(m_shadings.size() + 1);
         if (m_commands.size() == m_commands.capacity())
             m_commands.reserve(m_commands.empty() ? 256 : m_commands.size() * 2);
     } catch (const std::bad_alloc&) {
@@ -555,17 +594,23 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
     const std::size_t base = m_vertexCount;
     Vertex* out = m_vertices.get() + base;
     const float* xyz = r.xyz;
-    if (r.rgb == nullptr) {
-        for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3)
-            out[i] = Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b};
-    } else {
-        const float* c = r.rgb;
-        for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3, c += 3)
-            out[i] = Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2]};
+    static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
+    for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3) {
+        const float* c = r.rgb != nullptr ? r.rgb + 3 * i : nullptr;
+        const float* n = r.normals != nullptr ? r.normals + 3 * i : kNoNormal;
+        out[i] = c != nullptr ? Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2], n[0], n[1], n[2]}
+                              : Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b, n[0], n[1], n[2]};
     }
     m_vertexCount += r.vertexCount;
 
-    DrawCommand command{r.primitive, indexed, r.smooth, r.pointSize, m_currentMatrix, 0, GLsizei(count)};
+    std::uint32_t shading = kUnlit;
+    if (r.shading != nullptr) {
+        m_shadings.push_back(*r.shading);
+        shading = std::uint32_t(m_shadings.size() - 1);
+    }
+    const FaceOptions faces = r.primitive == Primitive::kTriangles ? m_faces : FaceOptions{};
+    DrawCommand command{r.primitive, indexed, r.smooth, r.pointSize, m_currentMatrix, shading, faces, 0,
+                        GLsizei(count)};
     if (indexed) {
         command.first = GLint(m_indices.size());
         for (std::size_t i = 0; i < r.indexCount; ++i)
@@ -639,10 +684,16 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             const Vertex* vertices = m_vertices.get();
             glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
             glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
+            glNormalPointer(GL_FLOAT, sizeof(Vertex), &vertices->nx);
 
             std::uint32_t loadedMatrix = std::numeric_limits<std::uint32_t>::max();
             float loadedPointSize = -1.0f;
             int loadedShading = -1;
+            std::uint32_t loadedSurface = kUnlit;
+            bool lightsLoaded = false;
+            FaceOptions loadedFaces;
+            glDisable(GL_CULL_FACE);
+            glFrontFace(GL_CCW);
             const std::size_t commandCount = m_commands.size();
             std::size_t i = 0;
             while (i < commandCount) {
@@ -661,6 +712,34 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 if (int(head.smooth) != loadedShading) {
                     glShadeModel(head.smooth ? GL_SMOOTH : GL_FLAT);
                     loadedShading = int(head.smooth);
+                }
+                if (!(head.faces == loadedFaces)) {
+                    if (head.faces.cullBack)
+                        glEnable(GL_CULL_FACE);
+                    else
+                        glDisable(GL_CULL_FACE);
+                    glFrontFace(head.faces.clockwiseFront ? GL_CW : GL_CCW);
+                    loadedFaces = head.faces;
+                }
+                if (head.shading != loadedSurface) {
+                    if (head.shading == kUnlit) {
+                        glUseProgram(0);
+                    } else {
+                        if (!m_program.built()) {
+                            std::string error;
+                            if (!m_program.build(error)) {
+                                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+                                break;
+                            }
+                        }
+                        m_program.use();
+                        if (!lightsLoaded) {
+                            m_program.setLighting(m_lighting);
+                            lightsLoaded = true;
+                        }
+                        m_program.setShading(m_shadings[head.shading]);
+                    }
+                    loadedSurface = head.shading;
                 }
                 if (end - i == 1) {
                     if (head.indexed)
@@ -688,11 +767,14 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 i = end;
             }
         }
+        glUseProgram(0);
+        glDisable(GL_CULL_FACE);
+        glFrontFace(GL_CCW);
         // glFinish makes OSMesa copy the framebuffer into m_image.
         if (finish)
             glFinish();
         const GLenum error = takeGlError();
-        if (error != GL_NO_ERROR)
+        if (error != GL_NO_ERROR && result)
             result = RenderResult::failure(RenderStatus::kGraphicsError,
                                            std::string("OpenGL reported ") + glErrorName(error));
     }
@@ -705,6 +787,7 @@ void OffscreenRenderer::Impl::resetBatch()
     m_vertexCount = 0;
     m_indices.clear();
     m_commands.clear();
+    m_shadings.clear();
     if (!m_matrices.empty()) {
         m_matrices[0] = m_matrices[m_currentMatrix];
         m_matrices.resize(1);
@@ -718,6 +801,39 @@ RenderResult OffscreenRenderer::Impl::endFrame()
         return RenderResult::failure(RenderStatus::kWrongState, "endFrame called outside a frame");
     m_inFrame = false;
     return flush(true);
+}
+
+RenderResult OffscreenRenderer::Impl::setLighting(const LightingSetup& lighting)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "setLighting called outside a frame");
+    if (lighting.lights.size() > kMaxLights)
+        return invalid("more than " + std::to_string(kMaxLights) + " lights");
+    for (const RenderLight& light : lighting.lights) {
+        const float values[11] = {light.color[0],     light.color[1],     light.color[2],    light.position[0],
+                                  light.position[1],  light.position[2],  light.direction[0], light.direction[1],
+                                  light.direction[2], light.hotAngle,     light.outerAngle};
+        if (!allFinite(values, 11))
+            return invalid("a light has a NaN or infinite value");
+    }
+    if (!allFinite(lighting.eye, 3) || !allFinite(lighting.viewDirection, 3))
+        return invalid("the eye has a NaN or infinite value");
+    // Draws already batched were made under the old lights.
+    if (m_vertexCount > 0) {
+        RenderResult flushed = flush(false);
+        if (!flushed)
+            return flushed;
+    }
+    m_lighting = lighting;
+    return RenderResult::success();
+}
+
+RenderResult OffscreenRenderer::Impl::setFaceOptions(const FaceOptions& faces)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "setFaceOptions called outside a frame");
+    m_faces = faces;
+    return RenderResult::success();
 }
 
 void OffscreenRenderer::Impl::cancelFrame()
@@ -835,6 +951,34 @@ RenderResult OffscreenRenderer::drawArrays(DrawMode mode, const float* xyz, cons
                                            const RgbColor& color, bool smooth)
 {
     return drawGuarded(*m_impl, arrays(mode, xyz, rgb, count, color, 1.0f, smooth));
+}
+
+RenderResult OffscreenRenderer::drawLitTriangles(const float* xyz, const float* normals, const float* rgb,
+                                                 std::size_t vertexCount, const std::uint32_t* indices,
+                                                 std::size_t indexCount, const RgbColor& color,
+                                                 const SurfaceShading& shading)
+{
+    DrawRequest request = arrays(Primitive::kTriangles, xyz, rgb, vertexCount, color, 1.0f, shading.interpolation != 0);
+    request.indexed = true;
+    request.indices = indices;
+    request.indexCount = indexCount;
+    request.normals = normals;
+    request.shading = &shading;
+    return drawGuarded(*m_impl, request);
+}
+
+RenderResult OffscreenRenderer::setLighting(const LightingSetup& lighting)
+{
+    try {
+        return m_impl->setLighting(lighting);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::setFaceOptions(const FaceOptions& faces)
+{
+    return m_impl->setFaceOptions(faces);
 }
 
 RenderResult OffscreenRenderer::endFrame()

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace q3 {
 
@@ -34,6 +35,62 @@ struct FrameOptions {
     /// two at the same depth the later wins, as without the test) and writes
     /// its depth. Without it primitives are painted in submission order.
     bool depthTest = false;
+};
+
+/// The most lights a frame is lit by (kQ3ViewMaxLights).
+constexpr std::size_t kMaxLights = 32;
+
+/// A light for lit drawing, in world coordinates.
+struct RenderLight {
+    enum class Kind { kAmbient, kDirectional, kPoint, kSpot };
+    Kind kind = Kind::kAmbient;
+    float color[3] = {0.0f, 0.0f, 0.0f}; ///< colour times brightness; zero for a light that is off
+    float position[3] = {0.0f, 0.0f, 0.0f};  ///< point and spot
+    float direction[3] = {0.0f, 0.0f, -1.0f}; ///< directional and spot: unit, the way the light travels
+    int attenuation = 0;                     ///< 0 none, 1 by 1/d, 2 by 1/d^2 (point and spot)
+    float hotAngle = 0.0f;                   ///< spot: half-angles, radians
+    float outerAngle = 0.0f;
+    int fallOff = 0; ///< spot, between the angles: 0 none, 1 linear, 2 exponential, 3 cosine
+};
+
+/// The lights of a frame and where the eye is, in world coordinates.
+struct LightingSetup {
+    std::vector<RenderLight> lights; ///< at most kMaxLights
+    float eye[3] = {0.0f, 0.0f, 0.0f};
+    bool orthographic = false;
+    float viewDirection[3] = {0.0f, 0.0f, -1.0f}; ///< unit, the way the camera looks
+};
+
+/// How the triangles of one lit draw are shaded (QuickDraw 3D's illumination
+/// shaders, QD3DShader.h): for a point p with unit normal N and diffuse
+/// colour Od, ambient light Ia and lights Ii (each attenuated by f),
+///   Lambert: ka Ia Od + sum_i f Ii Od (N . Li)          (N . Li > 0)
+///   Phong:   Lambert + sum_i f Ii Os (Ri . V)^n         (N . Li > 0)
+/// with Li the unit vector towards light i, Ri its reflection about N, V the
+/// unit vector towards the eye, ka the ambient coefficient, Os the specular
+/// colour and n the specular control.
+struct SurfaceShading {
+    float localToWorld[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; ///< as setMatrix's layout
+    int illumination = 1; ///< 1 Lambert, 2 Phong
+    float ambientCoefficient = 1.0f;
+    float specularColor[3] = {0.5f, 0.5f, 0.5f};
+    float specularControl = 4.0f;
+    /// 0: one colour per triangle (its last vertex's); 1: lit at the vertices
+    /// and interpolated; 2: lit at every pixel from interpolated normals.
+    int interpolation = 1;
+    /// Back faces are lit with their normal reversed.
+    bool flipBackFaces = false;
+};
+
+/// How triangles are rasterized: back faces dropped or not, and which
+/// winding is the front.
+struct FaceOptions {
+    bool cullBack = false;
+    bool clockwiseFront = false;
+    bool operator==(const FaceOptions& other) const
+    {
+        return cullBack == other.cullBack && clockwiseFront == other.clockwiseFront;
+    }
 };
 
 /// Sets the environment variables Mesa reads when the process's first OSMesa
@@ -139,6 +196,20 @@ public:
     /// strip), with per-vertex colours as drawElements.
     RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count,
                             const RgbColor& color, bool smooth);
+
+    /// The lights for the frame's lit draws (kWrongState outside a frame;
+    /// kInvalidArgument for more than kMaxLights or a non-finite value).
+    RenderResult setLighting(const LightingSetup& lighting);
+    /// How the following triangles are rasterized (kWrongState outside a
+    /// frame).
+    RenderResult setFaceOptions(const FaceOptions& faces);
+    /// Draws indexed triangles lit by the frame's lights as `shading` says:
+    /// normals holds a unit normal per vertex (3 floats, local coordinates),
+    /// rgb the diffuse colours (or null: `color`). Errors as drawElements,
+    /// and kInvalidArgument for a non-finite normal or shading value.
+    RenderResult drawLitTriangles(const float* xyz, const float* normals, const float* rgb, std::size_t vertexCount,
+                                  const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
+                                  const SurfaceShading& shading);
 
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;

@@ -12,7 +12,6 @@
 
 namespace q3 {
 
-const ClassInfo kStyleClass{kQ3ShapeTypeStyle, &kShapeClass, "style"};
 const ClassInfo kSubdivisionStyleClass{kQ3StyleTypeSubdivision, &kStyleClass, "subdivision style"};
 
 namespace {
@@ -91,11 +90,6 @@ SubdivisionStyle::SubdivisionStyle(const TQ3SubdivisionStyleData& data)
 Object* SubdivisionStyle::duplicate() const
 {
     return makeShared<SubdivisionStyle>(m_data).detach();
-}
-
-void SubdivisionStyle::accept(ShapeVisitor& visitor) const
-{
-    visitor.visitSubdivisionStyle(*this);
 }
 
 void SubdivisionStyle::setData(const TQ3SubdivisionStyleData& data)

@@ -3,11 +3,10 @@
 #pragma once
 
 #include "QD3DStyle.h"
-#include "core/Object.h"
+#include "style/Style.h"
 
 namespace q3 {
 
-extern const ClassInfo kStyleClass;
 extern const ClassInfo kSubdivisionStyleClass;
 
 /// The view's subdivision style when none has been submitted: QuickDraw 3D's
@@ -25,7 +24,7 @@ TQ3SubdivisionStyleData checkSubdivisionStyle(const TQ3SubdivisionStyleData& req
 
 /// A retained subdivision style. Invariant: its data has passed
 /// checkSubdivisionStyle, so it is always reasonable.
-class SubdivisionStyle final : public SharedObject {
+class SubdivisionStyle final : public Style {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3StyleTypeSubdivision;
 
@@ -33,8 +32,7 @@ public:
 
     const ClassInfo& classInfo() const override { return kSubdivisionStyleClass; }
     Object* duplicate() const override;
-    bool isDrawable() const override { return true; }
-    void accept(ShapeVisitor& visitor) const override;
+    void apply(DrawState& state) const override { state.subdivision = m_data; }
 
     const TQ3SubdivisionStyleData& data() const { return m_data; }
     void setData(const TQ3SubdivisionStyleData& data);

@@ -11,7 +11,9 @@
 
 #include "view/BoundsPass.h"
 
+#include "core/EnumValue.h"
 #include "geometry/Geometry.h"
+#include "view/BoundsMath.h"
 
 #include <glm/geometric.hpp>
 
@@ -21,19 +23,10 @@
 
 namespace q3 {
 
+using math::roundDown;
+using math::roundUp;
+
 namespace {
-
-float roundDown(double value)
-{
-    const float f = static_cast<float>(value);
-    return double(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-
-float roundUp(double value)
-{
-    const float f = static_cast<float>(value);
-    return double(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
 
 glm::dvec3 toVec(const TQ3Point3D& p)
 {
@@ -47,6 +40,18 @@ void BoundsPass::visitGeometry(const Geometry& geometry)
     m_local.clear();
     geometry.bound(*this, m_local);
     addShape();
+}
+
+bool BoundsPass::enterBoundedGroup(const DisplayGroup& group, const TQ3BoundingBox& box)
+{
+    if (enumValue(box.isEmpty) == kQ3False) {
+        m_local.clear();
+        for (int corner = 0; corner < 8; ++corner)
+            m_local.emplace_back((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                                 (corner & 4) ? box.max.z : box.min.z);
+        addShape();
+    }
+    return false;
 }
 
 void BoundsPass::addShape()

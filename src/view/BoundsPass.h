@@ -23,8 +23,8 @@ namespace q3 {
 /// point added so far; both are empty until the first one.
 class BoundsPass final : public Pass {
 public:
-    BoundsPass(TQ3ComputeBounds mode, std::optional<Window> window)
-        : Pass(std::move(window)), m_mode(mode)
+    BoundsPass(TQ3ComputeBounds mode, std::optional<Window> window, const AttributeValues& attributes)
+        : Pass(std::move(window), attributes), m_mode(mode)
     {
     }
 
@@ -34,6 +34,10 @@ public:
     /// nothing was added.
     TQ3BoundingBox box() const;
     TQ3BoundingSphere sphere() const;
+
+protected:
+    /// A group's bounding box bounds it: its corners are added.
+    bool enterBoundedGroup(const DisplayGroup& group, const TQ3BoundingBox& box) override;
 
 private:
     /// Adds one shape given by its local points (m_local).

@@ -7,6 +7,7 @@
 #include "core/Object.h"
 #include "core/ShapeVisitor.h"
 #include "geometry/Decompose.h"
+#include "style/DrawState.h"
 #include "view/CurveTessellation.h"
 #include "view/Matrix.h"
 
@@ -15,16 +16,22 @@
 
 namespace q3 {
 
+class DisplayGroup;
 class Geometry;
 
+/// The attributes a traversal starts with: QuickDraw 3D's view defaults
+/// (QD3DView.h: ambient coefficient 1, diffuse colour white, specular colour
+/// 0.5 grey, specular control 4, transparency colour white (opaque),
+/// highlight off), overlaid by the view's default attribute set if it has one.
+AttributeValues defaultAttributes(const AttributeSet* viewDefaults);
+
 /// The graphics state of a traversal (QD3DView.h): what Q3Push_Submit saves.
-/// Of the attributes, the view keeps those its renderers use: the diffuse
-/// colour. Other attributes submitted are accepted and have no effect.
 struct GraphicsState {
     Matrix localToWorld{1.0};
-    TQ3SubdivisionStyleData subdivision{kQ3ViewDefaultSubdivisionMethod, kQ3ViewDefaultSubdivisionC1,
-                                        kQ3ViewDefaultSubdivisionC2};
-    TQ3ColorRGB diffuseColor{kQ3ViewDefaultDiffuseColor};
+    /// Styles and shaders.
+    DrawState draw;
+    /// Every attribute submitted so far over the defaults.
+    AttributeValues attributes;
 };
 
 /// One traversal of a rendering or bounding loop: the graphics state with its
@@ -38,19 +45,34 @@ public:
     /// window: the loop's camera and pane, when it has them (always for
     /// rendering; for bounding loops when the view has a camera and a draw
     /// context).
-    explicit Pass(std::optional<Window> window) : m_window(std::move(window)) {}
+    /// attributes: what the traversal starts with (defaultAttributes).
+    Pass(std::optional<Window> window, const AttributeValues& attributes);
 
-    /// Merges the set's attributes into the state (its diffuse colour, if any,
-    /// becomes the current one).
+    /// Merges the set's attributes into the state.
     void visitAttributeSet(const AttributeSet& attributes) override;
-    void visitSubdivisionStyle(const SubdivisionStyle& style) override;
+    /// Styles and shaders set their part of the state.
+    void visitStyle(const Style& style) override;
+    void visitShader(const Shader& shader) override;
     /// Local-to-world becomes transform * local-to-world (row vectors), or the
     /// identity for a reset transform.
     void visitTransform(const Transform& transform) override;
 
+    /// A display group: nothing when it is not drawn; past
+    /// limits::kMaxGroupNesting, kQ3ErrorInvalidObject; a group with a
+    /// bounding box it uses goes through enterBoundedGroup; otherwise the
+    /// state is pushed (unless the group is inline) and its objects follow.
+    bool beginGroup(const DisplayGroup& group) override;
+    void endGroup(const DisplayGroup& group) override;
+    /// Whether groups with a bounding box may be handled by their box.
+    void allowGroupCulling(bool allow) { m_cullGroups = allow; }
+
     void push();
-    /// Throws kQ3ErrorNothingToPop when nothing pushed is left.
+    /// Throws kQ3ErrorNothingToPop when nothing pushed is left, or nothing
+    /// pushed inside the innermost display group being traversed (a group's
+    /// objects cannot pop the state it was entered with).
     void pop();
+    void pushState() override { push(); }
+    void popState() override { pop(); }
 
     const GraphicsState& state() const { return m_state; }
     const std::optional<Window>& window() const { return m_window; }
@@ -70,10 +92,30 @@ public:
     /// state's.
     TQ3ColorRGB colorOf(const AttributeSet* own) const;
 
+    /// Whether a box in the current local coordinates may be seen: false only
+    /// when all its corners are outside one plane of the view's frustum (true
+    /// without a window).
+    bool boxVisible(const TQ3BoundingBox& box) const;
+
+protected:
+    /// A group that uses its bounding box: whether to traverse its objects.
+    /// Rendering skips a group whose box cannot be seen; bounding takes the
+    /// box instead of the objects.
+    virtual bool enterBoundedGroup(const DisplayGroup& group, const TQ3BoundingBox& box);
+
 private:
     std::optional<Window> m_window;
     GraphicsState m_state;
     std::vector<GraphicsState> m_stack;
+    /// Per group entered: whether it pushed the state, and the stack size
+    /// after that push (its objects pop no lower; endGroup drops what they
+    /// left pushed).
+    struct GroupEntry {
+        bool pushed;
+        std::size_t floor;
+    };
+    std::vector<GroupEntry> m_groups;
+    bool m_cullGroups = true;
 };
 
 } // namespace q3

@@ -3,7 +3,11 @@
 #include "view/RenderPass.h"
 
 #include "geometry/Geometry.h"
+#include "shader/Shader.h"
 
+#include <glm/geometric.hpp>
+
+#include <cmath>
 #include <string>
 
 namespace q3 {
@@ -73,15 +77,61 @@ void RenderPass::drawSegments(const MeshView& mesh, const float* rgb, const std:
     throwIfFailed(m_target.drawLines(m_scratch.data(), 2 * count, color), what);
 }
 
+void RenderPass::loadFaces()
+{
+    const DrawState& styles = state().draw;
+    FaceOptions faces;
+    faces.cullBack = styles.backfacing == kQ3BackfacingStyleRemove;
+    faces.clockwiseFront = styles.orientation == kQ3OrientationStyleClockwise;
+    if (m_loadedFaces && *m_loadedFaces == faces)
+        return;
+    throwIfFailed(m_target.setFaceOptions(faces), "setting the face options");
+    m_loadedFaces = faces;
+}
+
+void RenderPass::drawVertices(const MeshView& mesh, const float* rgb, const RgbColor& color)
+{
+    m_indices.resize(mesh.vertexCount);
+    for (std::size_t i = 0; i < mesh.vertexCount; ++i)
+        m_indices[i] = std::uint32_t(i);
+    throwIfFailed(m_target.drawElements(DrawMode::kPoints, mesh.positions, rgb, mesh.vertexCount, m_indices.data(),
+                                        m_indices.size(), color, false),
+                  "drawing points");
+}
+
+void RenderPass::drawTriangleEdges(const MeshView& mesh, const float* rgb, const RgbColor& color)
+{
+    if (mesh.edgeCount != 0) {
+        drawSegments(mesh, rgb, mesh.edges, mesh.edgeCount, color, "drawing edges");
+        return;
+    }
+    m_indices.clear();
+    for (std::size_t t = 0; t < mesh.triangleCount; ++t)
+        for (int k = 0; k < 3; ++k) {
+            m_indices.push_back(mesh.triangles[3 * t + k]);
+            m_indices.push_back(mesh.triangles[3 * t + (k + 1) % 3]);
+        }
+    drawSegments(mesh, rgb, m_indices.data(), 3 * mesh.triangleCount, color, "drawing edges");
+}
+
 void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
 {
-    const RgbColor color = toRgb(colorOf(own));
+    const DrawState& styles = state().draw;
+    // The attributes in force: the geometry's own over the state's, and the
+    // highlight style's over both where the highlight state is on.
+    AttributeValues attributes = state().attributes;
+    if (own != nullptr)
+        attributes.overlay(own->values());
+    const bool highlighted = styles.highlight && attributes.highlightState().value_or(kQ3Off) == kQ3On;
+    if (highlighted)
+        attributes.overlay(styles.highlight->values());
+    const RgbColor color = toRgb(attributes.diffuseColor().value_or(TQ3ColorRGB{1.0f, 1.0f, 1.0f}));
     loadMatrix();
 
     // Per-vertex colours, with what a vertex lacks taken from its geometry
-    // or the state.
+    // or the state (a highlight colours the whole geometry).
     const float* rgb = nullptr;
-    if (mesh.colors != nullptr) {
+    if (mesh.colors != nullptr && !(highlighted && styles.highlight->diffuseColor())) {
         m_colors.assign(mesh.colors, mesh.colors + 3 * mesh.vertexCount);
         for (std::size_t i = 0; i < mesh.vertexCount; ++i)
             if (m_colors[3 * i] != m_colors[3 * i]) {
@@ -92,23 +142,28 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
         rgb = m_colors.data();
     }
 
-    if (m_style.fillTriangles) {
-        if (mesh.triangleCount != 0)
-            throwIfFailed(m_target.drawElements(DrawMode::kTriangles, mesh.positions, rgb, mesh.vertexCount,
-                                                mesh.triangles, 3 * mesh.triangleCount, color, true),
-                          "drawing triangles");
-    } else {
-        if (mesh.edgeCount != 0) {
-            drawSegments(mesh, rgb, mesh.edges, mesh.edgeCount, color, "drawing edges");
-        } else if (mesh.triangleCount != 0) {
-            m_indices.clear();
-            for (std::size_t t = 0; t < mesh.triangleCount; ++t)
-                for (int k = 0; k < 3; ++k) {
-                    m_indices.push_back(mesh.triangles[3 * t + k]);
-                    m_indices.push_back(mesh.triangles[3 * t + (k + 1) % 3]);
-                }
-            drawSegments(mesh, rgb, m_indices.data(), 3 * mesh.triangleCount, color, "drawing edges");
+    if (mesh.triangleCount != 0) {
+        // The wireframe renderer draws edges (or points, under the points
+        // fill style); the interactive renderer as the fill style says.
+        TQ3FillStyle fill = styles.fill;
+        if (!m_style.fillTriangles && fill == kQ3FillStyleFilled)
+            fill = kQ3FillStyleEdges;
+        if (fill == kQ3FillStylePoints) {
+            drawVertices(mesh, rgb, color);
+        } else if (fill == kQ3FillStyleEdges) {
+            drawTriangleEdges(mesh, rgb, color);
+        } else {
+            loadFaces();
+            if (styles.illumination == kQ3IlluminationTypeLambert || styles.illumination == kQ3IlluminationTypePhong)
+                drawLit(mesh, rgb, color, attributes);
+            else
+                throwIfFailed(m_target.drawElements(DrawMode::kTriangles, mesh.positions, rgb, mesh.vertexCount,
+                                                    mesh.triangles, 3 * mesh.triangleCount, color,
+                                                    styles.interpolation != kQ3InterpolationStyleNone),
+                              "drawing triangles");
         }
+    } else if (!m_style.fillTriangles && mesh.edgeCount != 0) {
+        drawSegments(mesh, rgb, mesh.edges, mesh.edgeCount, color, "drawing edges");
     }
     drawSegments(mesh, rgb, mesh.lines, mesh.lineCount, color, "drawing lines");
     for (std::size_t s = 0; s < mesh.stripCount; ++s) {
@@ -135,6 +190,156 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
             throwIfFailed(m_target.drawPoints(m_scratch.data(), mesh.pointCount, color), "drawing points");
         }
     }
+}
+
+namespace {
+
+glm::vec3 at(const float* values, std::size_t i)
+{
+    return glm::vec3(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
+}
+
+// A unit vector, or +z for one that has no direction.
+glm::vec3 unit(const glm::vec3& v)
+{
+    const float length = glm::length(v);
+    return length > 0.0f && std::isfinite(length) ? v / length : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+
+RenderLight toRenderLight(const LightSource& source)
+{
+    RenderLight light;
+    switch (source.type) {
+    case kQ3LightTypeDirectional:
+        light.kind = RenderLight::Kind::kDirectional;
+        break;
+    case kQ3LightTypePoint:
+        light.kind = RenderLight::Kind::kPoint;
+        break;
+    case kQ3LightTypeSpot:
+        light.kind = RenderLight::Kind::kSpot;
+        break;
+    default:
+        light.kind = RenderLight::Kind::kAmbient;
+        break;
+    }
+    const float scale = source.on ? source.brightness : 0.0f;
+    light.color[0] = source.color.r * scale;
+    light.color[1] = source.color.g * scale;
+    light.color[2] = source.color.b * scale;
+    light.position[0] = source.location.x;
+    light.position[1] = source.location.y;
+    light.position[2] = source.location.z;
+    const glm::vec3 direction = unit(glm::vec3(source.direction.x, source.direction.y, source.direction.z));
+    light.direction[0] = direction.x;
+    light.direction[1] = direction.y;
+    light.direction[2] = direction.z;
+    light.attenuation = int(source.attenuation);
+    light.hotAngle = source.hotAngle;
+    light.outerAngle = source.outerAngle;
+    light.fallOff = int(source.fallOff);
+    return light;
+}
+
+} // namespace
+
+void RenderPass::drawLit(const MeshView& mesh, const float* rgb, const RgbColor& color,
+                         const AttributeValues& attributes)
+{
+    const DrawState& styles = state().draw;
+    if (!m_lightsLoaded) {
+        LightingSetup setup;
+        for (const LightSource& source : m_style.lighting.lights) {
+            if (setup.lights.size() == kMaxLights)
+                break;
+            setup.lights.push_back(toRenderLight(source));
+        }
+        const SceneLighting& scene = m_style.lighting;
+        const glm::vec3 look = unit(glm::vec3(scene.viewDirection));
+        for (int k = 0; k < 3; ++k) {
+            setup.eye[k] = float(scene.eye[k]);
+            setup.viewDirection[k] = look[k];
+        }
+        setup.orthographic = scene.orthographic;
+        throwIfFailed(m_target.setLighting(setup), "setting the lights");
+        m_lightsLoaded = true;
+    }
+
+    SurfaceShading shading;
+    const Matrix& toWorld = state().localToWorld;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            shading.localToWorld[4 * i + j] = float(toWorld[i][j]);
+    shading.illumination = styles.illumination == kQ3IlluminationTypePhong ? 2 : 1;
+    shading.ambientCoefficient = attributes.ambientCoefficient().value_or(1.0f);
+    const TQ3ColorRGB specular = attributes.specularColor().value_or(TQ3ColorRGB{0.5f, 0.5f, 0.5f});
+    shading.specularColor[0] = specular.r;
+    shading.specularColor[1] = specular.g;
+    shading.specularColor[2] = specular.b;
+    shading.specularControl = attributes.specularControl().value_or(4.0f);
+    shading.interpolation = styles.interpolation == kQ3InterpolationStyleNone    ? 0
+                            : styles.interpolation == kQ3InterpolationStylePixel ? 2
+                                                                                 : 1;
+    shading.flipBackFaces = styles.backfacing == kQ3BackfacingStyleFlip;
+
+    // Normals: the vertices' own where every vertex has one and the
+    // interpolation uses them; otherwise each triangle gets its own three
+    // vertices, with its face normal where a vertex has none (and always
+    // for flat shading), turned to the front the orientation style names.
+    const float sign = styles.orientation == kQ3OrientationStyleClockwise ? -1.0f : 1.0f;
+    bool shared = shading.interpolation != 0 && mesh.normals != nullptr;
+    for (std::size_t i = 0; shared && i < mesh.vertexCount; ++i)
+        shared = mesh.normals[3 * i] == mesh.normals[3 * i];
+    if (shared) {
+        m_normals.resize(3 * mesh.vertexCount);
+        for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
+            const glm::vec3 n = unit(at(mesh.normals, i));
+            m_normals[3 * i] = n.x;
+            m_normals[3 * i + 1] = n.y;
+            m_normals[3 * i + 2] = n.z;
+        }
+        throwIfFailed(m_target.drawLitTriangles(mesh.positions, m_normals.data(), rgb, mesh.vertexCount, mesh.triangles,
+                                                3 * mesh.triangleCount, color, shading),
+                      "drawing lit triangles");
+        return;
+    }
+    const std::size_t corners = 3 * mesh.triangleCount;
+    m_litPositions.resize(3 * corners);
+    m_normals.resize(3 * corners);
+    m_litColors.resize(rgb != nullptr ? 3 * corners : 0);
+    m_indices.resize(corners);
+    for (std::size_t t = 0; t < mesh.triangleCount; ++t) {
+        const std::uint32_t* v = mesh.triangles + 3 * t;
+        const glm::vec3 a = at(mesh.positions, v[0]), b = at(mesh.positions, v[1]), c = at(mesh.positions, v[2]);
+        glm::vec3 face = unit(sign * glm::cross(b - a, c - a));
+        if (shading.interpolation == 0 && mesh.normals != nullptr) {
+            // A flat face keeps the side its vertices' normals point to.
+            glm::vec3 sum(0.0f);
+            for (int k = 0; k < 3; ++k)
+                if (mesh.normals[3 * v[k]] == mesh.normals[3 * v[k]])
+                    sum += at(mesh.normals, v[k]);
+            if (glm::dot(sum, face) < 0.0f)
+                face = -face;
+        }
+        for (int k = 0; k < 3; ++k) {
+            const std::size_t corner = 3 * t + k;
+            glm::vec3 n = face;
+            if (shading.interpolation != 0 && mesh.normals != nullptr &&
+                mesh.normals[3 * v[k]] == mesh.normals[3 * v[k]])
+                n = unit(at(mesh.normals, v[k]));
+            for (int d = 0; d < 3; ++d) {
+                m_litPositions[3 * corner + d] = mesh.positions[3 * v[k] + d];
+                m_normals[3 * corner + d] = n[d];
+                if (rgb != nullptr)
+                    m_litColors[3 * corner + d] = rgb[3 * v[k] + d];
+            }
+            m_indices[corner] = std::uint32_t(corner);
+        }
+    }
+    throwIfFailed(m_target.drawLitTriangles(m_litPositions.data(), m_normals.data(),
+                                            rgb != nullptr ? m_litColors.data() : nullptr, corners, m_indices.data(),
+                                            corners, color, shading),
+                  "drawing lit triangles");
 }
 
 } // namespace q3

@@ -5,6 +5,8 @@
 #include "core/EnumValue.h"
 
 #include "geometry/Geometry.h"
+#include "group/Group.h"
+#include "light/Light.h"
 #include "render/OffscreenRenderer.h"
 #include "render/Renderer.h"
 #include "view/BoundsPass.h"
@@ -26,8 +28,13 @@ class IgnoringVisitor final : public ShapeVisitor {
 public:
     void visitGeometry(const Geometry&) override {}
     void visitAttributeSet(const AttributeSet&) override {}
-    void visitSubdivisionStyle(const SubdivisionStyle&) override {}
+    void visitStyle(const Style&) override {}
+    void visitShader(const Shader&) override {}
+    bool beginGroup(const DisplayGroup&) override { return false; }
+    void endGroup(const DisplayGroup&) override {}
     void visitTransform(const Transform&) override {}
+    void pushState() override {}
+    void popState() override {}
 };
 
 float clampUnit(float value)
@@ -60,6 +67,27 @@ PixmapDrawContext& pixmapContext(DrawContext& context)
         fail(kQ3ErrorInvalidObjectType, std::string("the view's draw context is a ") +
                                             context.classInfo().name + ", which Q3 cannot render into");
     return static_cast<PixmapDrawContext&>(context);
+}
+
+// The lights of a light group and the camera's eye, in world coordinates.
+SceneLighting lightingOf(const Group* lights, const Camera& camera)
+{
+    SceneLighting lighting;
+    if (lights != nullptr)
+        for (const Group::Node& node : lights->nodes())
+            if (node.object->isType(kQ3ShapeTypeLight)) {
+                // Lights that are off take no place among the lights drawn.
+                LightSource source = static_cast<const Light&>(*node.object).source();
+                if (source.on)
+                    lighting.lights.push_back(source);
+            }
+    const TQ3CameraPlacement& placement = camera.data().placement;
+    lighting.eye = glm::dvec3(placement.cameraLocation.x, placement.cameraLocation.y, placement.cameraLocation.z);
+    lighting.orthographic = !camera.isPerspective();
+    lighting.viewDirection = glm::dvec3(placement.pointOfInterest.x, placement.pointOfInterest.y,
+                                        placement.pointOfInterest.z) -
+                             lighting.eye;
+    return lighting;
 }
 
 } // namespace
@@ -109,6 +137,48 @@ void View::setDrawContext(Ref<DrawContext> drawContext)
     m_drawContext = std::move(drawContext);
 }
 
+void View::setLightGroup(Ref<Group> lights)
+{
+    requireNoLoop();
+    if (lights && !lights->isType(kQ3GroupTypeLight))
+        fail(kQ3ErrorInvalidObjectType, std::string("the group is a ") + lights->classInfo().name +
+                                            ", not a light group (Q3LightGroup_New)");
+    m_lightGroup = std::move(lights);
+}
+
+void View::setDefaultAttributeSet(Ref<AttributeSet> attributes)
+{
+    requireNoLoop();
+    m_defaultAttributes = std::move(attributes);
+}
+
+Ref<AttributeSet> View::defaultAttributeSet() const
+{
+    if (m_defaultAttributes)
+        return m_defaultAttributes;
+    return AttributeSet::fromValues(defaultAttributes(nullptr));
+}
+
+TQ3BoundingBox View::boundingBoxOf(const DisplayGroup& group, const TQ3ComputeBounds& computeBounds)
+{
+    startBoundingBox(computeBounds);
+    TQ3BoundingBox box{};
+    try {
+        // The group's objects, whatever its state and box say.
+        group.submitContents(*m_pass);
+    } catch (...) {
+        endLoop();
+        throw;
+    }
+    endBoundingBox(box);
+    return box;
+}
+
+bool View::isBoundingBoxVisible(const TQ3BoundingBox& box)
+{
+    return activePass().boxVisible(box);
+}
+
 void View::startRendering()
 {
     requireNoLoop();
@@ -144,8 +214,10 @@ void View::startRendering()
 
     if (!m_offscreen)
         m_offscreen = std::make_unique<OffscreenRenderer>();
+    style.lighting = lightingOf(m_lightGroup.get(), *m_camera);
     auto pass = std::make_unique<RenderPass>(*m_offscreen, Window{m_camera->worldToFrustum(), destination.pane},
-                                             style);
+                                             defaultAttributes(m_defaultAttributes.get()), style);
+    pass->allowGroupCulling(m_cullGroups);
     throwIfFailed(m_offscreen->beginFrame(destination.layout.width, destination.layout.height, clear,
                                           destination.pane, options),
                   "starting the image");
@@ -214,7 +286,9 @@ void View::startBounding(Loop loop, const TQ3ComputeBounds& computeBounds)
         const PixmapLayout layout = layoutOf(pixmap);
         window = Window{m_camera->worldToFrustum(), m_drawContext->drawRect(layout.width, layout.height)};
     }
-    m_pass = std::make_unique<BoundsPass>(computeBounds, window);
+    auto pass = std::make_unique<BoundsPass>(computeBounds, window, defaultAttributes(m_defaultAttributes.get()));
+    pass->allowGroupCulling(m_cullGroups);
+    m_pass = std::move(pass);
     m_loop = loop;
     m_cancelled = false;
 }
@@ -274,6 +348,12 @@ void View::sync() const
         fail(kQ3ErrorRenderingIsActive, "a rendering loop is running in the view");
 }
 
+void View::flush() const
+{
+    if (m_loop != Loop::kRendering)
+        fail(kQ3ErrorRenderingNotStarted, "no rendering loop is running in the view");
+}
+
 ShapeVisitor& View::submitTarget()
 {
     static IgnoringVisitor ignoring;
@@ -308,7 +388,35 @@ TQ3Matrix4x4 View::localToWorldState()
 
 TQ3SubdivisionStyleData View::subdivisionStyleState()
 {
-    return activePass().state().subdivision;
+    return activePass().state().draw.subdivision;
+}
+
+const GraphicsState& View::graphicsState()
+{
+    return activePass().state();
+}
+
+TQ3Matrix4x4 View::worldToFrustumState()
+{
+    const Pass& pass = activePass();
+    if (!pass.window())
+        fail(kQ3ErrorCameraNotSet, "the bounding loop has no camera and draw context, so no frustum");
+    return toQ3(pass.window()->worldToFrustum);
+}
+
+TQ3Matrix4x4 View::frustumToWindowState()
+{
+    const Pass& pass = activePass();
+    if (!pass.window())
+        fail(kQ3ErrorCameraNotSet, "the bounding loop has no camera and draw context, so no window");
+    // Frustum x, y in -1..1 to the pane's pixels (y down); z kept.
+    const PixelRect& pane = pass.window()->pane;
+    Matrix m(1.0);
+    m[0][0] = 0.5 * pane.width;
+    m[1][1] = -0.5 * pane.height;
+    m[3][0] = pane.x + 0.5 * pane.width;
+    m[3][1] = pane.y + 0.5 * pane.height;
+    return toQ3(m);
 }
 
 Ref<Geometry> View::decompose(const Geometry& geometry)

@@ -14,9 +14,13 @@ namespace q3 {
 
 extern const ClassInfo kViewClass;
 
+class AttributeSet;
 class Camera;
+class DisplayGroup;
 class DrawContext;
 class Geometry;
+class Group;
+struct GraphicsState;
 class OffscreenRenderer;
 class Pass;
 class Renderer;
@@ -58,6 +62,27 @@ public:
     const Ref<Camera>& camera() const { return m_camera; }
     const Ref<DrawContext>& drawContext() const { return m_drawContext; }
 
+    /// The lights the view is lit by: a light group (kQ3ErrorInvalidObjectType
+    /// for any other group) or null. Read at the start of each rendering
+    /// loop. Not allowed inside a loop (kQ3ErrorViewIsStarted).
+    void setLightGroup(Ref<Group> lights);
+    const Ref<Group>& lightGroup() const { return m_lightGroup; }
+    /// The attributes every traversal starts with, over QuickDraw 3D's view
+    /// defaults (null: the defaults alone). Not allowed inside a loop.
+    void setDefaultAttributeSet(Ref<AttributeSet> attributes);
+    /// The set in use: the one given, or a new set holding the defaults.
+    Ref<AttributeSet> defaultAttributeSet() const;
+    /// Whether display groups with a bounding box may be culled or bounded
+    /// by it (Q3View_AllowAllGroupCulling); on by default.
+    void allowGroupCulling(bool allow) { m_cullGroups = allow; }
+
+    /// Q3DisplayGroup_CalcAndUseBoundingBox: the box of the group's objects
+    /// from a bounding loop of this view (which must not be in a loop).
+    TQ3BoundingBox boundingBoxOf(const DisplayGroup& group, const TQ3ComputeBounds& computeBounds);
+    /// Q3View_IsBoundingBoxVisible: whether a box in the current local
+    /// coordinates may be seen (kQ3ErrorViewNotStarted outside a loop).
+    bool isBoundingBoxVisible(const TQ3BoundingBox& box);
+
     /// Starts a rendering loop. Throws kQ3ErrorViewIsStarted,
     /// kQ3ErrorDrawContextNotSet, kQ3ErrorCameraNotSet,
     /// kQ3ErrorRendererNotSet (in that order), or what the renderer's frame
@@ -87,6 +112,9 @@ public:
     /// Throws kQ3ErrorRenderingIsActive inside a rendering loop; otherwise
     /// every image is already complete.
     void sync() const;
+    /// Q3View_Flush: throws kQ3ErrorRenderingNotStarted outside a rendering
+    /// loop; inside one, every shape is already drawn.
+    void flush() const;
 
     /// Where shapes go when submitted: the active pass (or, after cancel(), a
     /// visitor ignoring them). Throws kQ3ErrorViewNotStarted outside a loop.
@@ -101,6 +129,13 @@ public:
     void pop();
     TQ3Matrix4x4 localToWorldState();
     TQ3SubdivisionStyleData subdivisionStyleState();
+    /// The whole graphics state of the running loop (kQ3ErrorViewNotStarted
+    /// outside one).
+    const GraphicsState& graphicsState();
+    /// The camera's world-to-frustum matrix, and the frustum-to-window matrix
+    /// of the pane, for the running loop.
+    TQ3Matrix4x4 worldToFrustumState();
+    TQ3Matrix4x4 frustumToWindowState();
 
     /// Q3Geometry_GetDecomposed: what the geometry submitted now would be
     /// drawn as, as a new geometry (Geometry::decomposed); null for a
@@ -129,6 +164,9 @@ private:
     Ref<Renderer> m_renderer;
     Ref<Camera> m_camera;
     Ref<DrawContext> m_drawContext;
+    Ref<Group> m_lightGroup;
+    Ref<AttributeSet> m_defaultAttributes;
+    bool m_cullGroups = true;
 
     Loop m_loop = Loop::kNone;
     bool m_cancelled = false;

@@ -8,14 +8,48 @@
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
+#include "QD3DGroup.h"
+#include "QD3DLight.h"
 #include "QD3DMath.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
+#include "QD3DShader.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
+#include "Q3NURBCurveTools.h"
 
 #include <stdio.h>
+#include <string.h>
+
+/* A few calls of QD3DStyle.h, QD3DShader.h and QD3DLight.h, with C's enums
+ * and structures as legacy code writes them. */
+static int styleShaderAndLightCalls(void)
+{
+    TQ3FogStyleData fog = {kQ3On, kQ3FogModeLinear, 1.0f, 10.0f, 0.5f, {1.0f, 0.5f, 0.5f, 0.5f}};
+    TQ3SpotLightData spot = {{kQ3True, 0.75f, {1.0f, 1.0f, 1.0f}}, kQ3False, kQ3AttenuationTypeNone,
+                             {0.0f, 5.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.25f, 0.5f, kQ3FallOffTypeLinear};
+    TQ3FillStyle fill = kQ3FillStyleFilled;
+    TQ3ShaderUVBoundary boundary = kQ3ShaderUVBoundaryWrap;
+    float outer = 0.0f;
+    int ok = 1;
+    TQ3StyleObject fillStyle = Q3FillStyle_New(kQ3FillStyleEdges);
+    TQ3StyleObject fogStyle = Q3FogStyle_New(&fog);
+    TQ3ShaderObject phong = Q3PhongIllumination_New();
+    TQ3LightObject light = Q3SpotLight_New(&spot);
+    ok = ok && Q3FillStyle_Get(fillStyle, &fill) == kQ3Success && fill == kQ3FillStyleEdges;
+    ok = ok && Q3Style_GetType(fogStyle) == kQ3StyleTypeFog;
+    ok = ok && Q3Shader_SetUBoundary(phong, kQ3ShaderUVBoundaryClamp) == kQ3Success;
+    ok = ok && Q3Shader_GetUBoundary(phong, &boundary) == kQ3Success && boundary == kQ3ShaderUVBoundaryClamp;
+    ok = ok && Q3IlluminationShader_GetType(phong) == kQ3IlluminationTypePhong;
+    ok = ok && Q3SpotLight_GetOuterAngle(light, &outer) == kQ3Success && outer == 0.5f;
+    ok = ok && Q3Light_GetType(light) == kQ3LightTypeSpot;
+    Q3Object_Dispose(fillStyle);
+    Q3Object_Dispose(fogStyle);
+    Q3Object_Dispose(phong);
+    Q3Object_Dispose(light);
+    return ok;
+}
 
 int main(void)
 {
@@ -23,6 +57,11 @@ int main(void)
     TQ3SubdivisionStyleData style;
     TQ3GeometryObject curve = NULL;
     unsigned long major = 0, minor = 0;
+    TQ3Quaternion quarterTurn;
+    TQ3Matrix4x4 matrix;
+    TQ3Vector3D up;
+    TQ3Point3D corners[2];
+    TQ3BoundingBox box;
 
     data.curveAttributeSet = NULL;
     style.method = kQ3SubdivisionMethodConstant;
@@ -35,6 +74,79 @@ int main(void)
         return 2;
     if (Q3NURBCurve_New(NULL) != NULL || Q3Error_Get(NULL) != kQ3ErrorNULLParameter)
         return 3;
+    /* QD3DMath.h: macros and calls, as legacy code uses them. */
+    if (Q3Quaternion_SetRotate_X(&quarterTurn, Q3Math_DegreesToRadians(90.0f)) != &quarterTurn ||
+        Q3Matrix4x4_SetQuaternion(&matrix, &quarterTurn) != &matrix)
+        return 4;
+    Q3Vector3D_Set(&up, 0.0f, 1.0f, 0.0f);
+    if (Q3Vector3D_Transform(&up, &matrix, &up) != &up || !(up.z > 1.0f - 1e-6f && up.z < 1.0f + 1e-6f))
+        return 5;
+    Q3Point3D_Set(&corners[0], -1.0f, 2.0f, kQ3RealZero);
+    Q3Point3D_Set(&corners[1], Q3Math_Max(3.0f, kQ3Pi), Q3Math_Min(-2.0f, 0.0f), kQ3PiOver2);
+    if (Q3BoundingBox_SetFromPoints3D(&box, corners, 2, sizeof(TQ3Point3D)) != &box || box.isEmpty != kQ3False ||
+        box.max.x != kQ3Pi || box.min.y != -2.0f || box.max.z != kQ3PiOver2)
+        return 6;
+    if (Q3Math_RadiansToDegrees(kQ32Pi) < 359.9f || kQ33PiOver2 <= kQ3Pi || kQ3MaxFloat <= 1e38f)
+        return 7;
+    if (Q3Point3D_To3DTransformArray(corners, &matrix, corners, -1, sizeof(TQ3Point3D), sizeof(TQ3Point3D)) !=
+            kQ3Failure ||
+        Q3Error_Get(NULL) != kQ3ErrorParameterOutOfRange)
+        return 8;
+    {
+        TQ3GroupObject group = Q3DisplayGroup_New();
+        TQ3StateOperatorObject push = Q3Push_New();
+        TQ3GroupPosition position = NULL;
+        unsigned long count = 0;
+        if (group == NULL || push == NULL || Q3Group_AddObject(group, push) == NULL)
+            return 9;
+        if (Q3Group_CountObjects(group, &count) != kQ3Success || count != 1 ||
+            Q3Group_GetFirstPosition(group, &position) != kQ3Success || position == NULL)
+            return 10;
+        Q3Object_Dispose(push);
+        Q3Object_Dispose(group);
+    }
+    if (!styleShaderAndLightCalls())
+        return 11;
+    {
+        /* A curve tool from C: Listing 1's cubic, evaluated at its middle. */
+        static TQ3RationalPoint4D points[4] = {{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}};
+        static float knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+        TQ3NURBCurveData listing1;
+        TQ3Point3D middle;
+        TQ3NURBCurveParameterization how = kQ3NURBCurveParameterizationCentripetal;
+        listing1.order = 4;
+        listing1.numPoints = 4;
+        listing1.controlPoints = points;
+        listing1.knots = knots;
+        listing1.curveAttributeSet = NULL;
+        (void)how;
+        if (Q3NURBCurveData_Evaluate(&listing1, 0.5f, &middle) != kQ3Success || middle.x != 1.5f)
+            return 12;
+    }
+    {
+        /* The quadrics and solids' data structures and calls, from C. */
+        TQ3BoxData box;
+        TQ3ConeData cone;
+        TQ3CylinderData cylinder;
+        TQ3DiskData disk;
+        TQ3EllipseData ellipse;
+        TQ3EllipsoidData ellipsoid;
+        TQ3TorusData torus;
+        memset(&box, 0, sizeof box);
+        memset(&cone, 0, sizeof cone);
+        memset(&cylinder, 0, sizeof cylinder);
+        memset(&disk, 0, sizeof disk);
+        memset(&ellipse, 0, sizeof ellipse);
+        memset(&ellipsoid, 0, sizeof ellipsoid);
+        memset(&torus, 0, sizeof torus);
+        if (Q3Box_New(&box) != NULL || Q3Error_Get(NULL) != kQ3ErrorDegenerateGeometry ||
+            Q3Cone_New(&cone) != NULL || Q3Cylinder_New(&cylinder) != NULL || Q3Disk_New(&disk) != NULL ||
+            Q3Ellipse_New(&ellipse) != NULL || Q3Ellipsoid_New(&ellipsoid) != NULL ||
+            Q3Torus_New(&torus) != NULL || Q3Torus_SetRatio(NULL, 1.0f) != kQ3Failure ||
+            Q3Box_GetFaceAttributeSet(NULL, 0, NULL) != kQ3Failure ||
+            kQ3SubdivisionMaxTrianglesPerSurface < 1)
+            return 13;
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

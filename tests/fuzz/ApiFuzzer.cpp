@@ -19,8 +19,12 @@
 //     getter leaves its output unchanged; a successful edit reads back;
 //   - a subdivision style is substituted exactly as QD3DStyle.h says, with
 //     one warning when anything was replaced;
+//   - the other styles, the shaders' uv settings and the lights accept
+//     exactly the values their headers' rules allow, on every path;
 //   - a decomposed curve has at most kQ3SubdivisionMaxSegmentsPerCurve + 1
-//     vertices; a bounding box is never NaN;
+//     vertices, a decomposed quadric or solid at most
+//     kQ3SubdivisionMaxTrianglesPerSurface triangles, all finite; a bounding
+//     box is never NaN;
 //   - after every input, once the fuzzer has disposed what it holds,
 //     Q3Memory_CountLiveObjects() is 0 and the last Q3Exit warns of nothing.
 // Work per input is bounded (control points, curve draws, loops, views) so
@@ -29,14 +33,18 @@
 #include "CCaller.h"
 #include "FuzzInput.h"
 
+#include "Q3NURBCurveTools.h"
 #include "QD3D.h"
 #include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
+#include "QD3DLight.h"
 #include "QD3DMath.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
+#include "QD3DGroup.h"
+#include "QD3DShader.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
@@ -47,8 +55,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstddef>
 #include <cstring>
 #include <deque>
+#include <initializer_list>
 #include <map>
 #include <memory>
 #include <vector>
@@ -66,6 +76,11 @@ constexpr int kMaxViews = 3;
 constexpr int kMaxLoops = 24;                   // rendering and bounding loops started
 constexpr int kMaxDrawContexts = 6;
 constexpr std::size_t kMaxStale = 64;
+// Groups may share subgroups, so what one submit or duplicate meets can grow
+// exponentially with depth: those calls run only on groups that meet at
+// most this many objects, and groups take objects only up to kMaxGroupSize.
+constexpr unsigned long kMaxGroupReach = 2000;
+constexpr unsigned long kMaxGroupSize = 64;
 
 // What the callbacks saw during the current call.
 struct Posts {
@@ -176,8 +191,10 @@ bool sameBytes(const T& a, const T& b)
 }
 
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
-                  kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh };
-constexpr int kKindCount = 14;
+                  kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup,
+                  kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus };
+constexpr int kKindCount = 25;
+constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
 
 struct Held {
     TQ3Object handle;
@@ -206,6 +223,104 @@ float expectedParameter(std::int32_t method, float value, bool& replaced)
     if (!sameBytes(result, value))
         replaced = true;
     return result;
+}
+
+// A light of any kind as the fields of a spot light (the others use a
+// subset), with its enumerations and Booleans as the ints the caller gave.
+struct AnyLight {
+    int kind = 0; // 0 ambient, 1 directional, 2 point, 3 spot
+    TQ3SpotLightData data{};
+    std::int32_t isOn = 1, castsShadows = 0, attenuation = 0, fallOff = 0;
+};
+
+bool allFinite(std::initializer_list<float> values)
+{
+    return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
+}
+
+// QD3DLight.h's rules for the light's kind, written from the header.
+bool lightObeysRules(const AnyLight& l)
+{
+    const TQ3SpotLightData& d = l.data;
+    const TQ3ColorRGB& c = d.lightData.color;
+    const bool common = allFinite({d.lightData.brightness, c.r, c.g, c.b});
+    const bool direction = allFinite({d.direction.x, d.direction.y, d.direction.z}) &&
+                           !(d.direction.x == 0.0f && d.direction.y == 0.0f && d.direction.z == 0.0f);
+    const bool located =
+        l.attenuation >= 0 && l.attenuation <= 2 && allFinite({d.location.x, d.location.y, d.location.z});
+    const bool cone = allFinite({d.hotAngle, d.outerAngle}) && d.hotAngle >= 0.0f && d.outerAngle >= 0.0f &&
+                      d.hotAngle <= kQ3PiOver2 && d.outerAngle <= kQ3PiOver2 && d.outerAngle >= d.hotAngle &&
+                      l.fallOff >= 0 && l.fallOff <= 3;
+    switch (l.kind) {
+    case 0: return common;
+    case 1: return common && direction;
+    case 2: return common && located;
+    default: return common && located && direction && cone;
+    }
+}
+
+// Each kind's data structure, filled from one AnyLight: as a caller passes
+// it (stored false: enumerations and Booleans as given) or as Q3 must store
+// it (Booleans 0 or 1). Copied as bytes: the fields may hold any int.
+struct LightStructures {
+    TQ3LightData common;
+    TQ3DirectionalLightData directional;
+    TQ3PointLightData point;
+    TQ3SpotLightData spot;
+};
+
+LightStructures lightStructures(const AnyLight& l, bool stored)
+{
+    LightStructures out{};
+    TQ3SpotLightData& s = out.spot;
+    std::memcpy(&s, &l.data, sizeof s);
+    setRaw(s.lightData.isOn, stored ? std::int32_t(l.isOn != 0) : l.isOn);
+    setRaw(s.castsShadows, stored ? std::int32_t(l.castsShadows != 0) : l.castsShadows);
+    setRaw(s.attenuation, l.attenuation);
+    setRaw(s.fallOff, l.fallOff);
+    std::memcpy(&out.common, &s.lightData, sizeof out.common);
+    std::memcpy(&out.directional.lightData, &s.lightData, sizeof s.lightData);
+    std::memcpy(&out.directional.castsShadows, &s.castsShadows, sizeof s.castsShadows);
+    out.directional.direction = s.direction;
+    static_assert(sizeof(TQ3PointLightData) == offsetof(TQ3SpotLightData, direction),
+                  "a point light's data is a spot light's first fields");
+    std::memcpy(&out.point, &s, sizeof out.point);
+    return out;
+}
+
+// The bytes Q3 must store for the light.
+std::vector<unsigned char> lightBytes(const AnyLight& l)
+{
+    const LightStructures s = lightStructures(l, true);
+    const void* kinds[] = {&s.common, &s.directional, &s.point, &s.spot};
+    const std::size_t sizes[] = {sizeof s.common, sizeof s.directional, sizeof s.point, sizeof s.spot};
+    const unsigned char* p = static_cast<const unsigned char*>(kinds[l.kind]);
+    return std::vector<unsigned char>(p, p + sizes[l.kind]);
+}
+
+// A stored light (valid values) of the given kind as an AnyLight.
+AnyLight anyLight(int kind, const LightStructures& h)
+{
+    AnyLight l;
+    l.kind = kind;
+    const TQ3LightData* commons[] = {&h.common, &h.directional.lightData, &h.point.lightData, &h.spot.lightData};
+    if (kind == 3)
+        l.data = h.spot;
+    l.data.lightData = *commons[kind];
+    l.isOn = l.data.lightData.isOn;
+    if (kind == 1) {
+        l.castsShadows = h.directional.castsShadows;
+        l.data.direction = h.directional.direction;
+    } else if (kind == 2) {
+        l.castsShadows = h.point.castsShadows;
+        l.attenuation = h.point.attenuation;
+        l.data.location = h.point.location;
+    } else if (kind == 3) {
+        l.castsShadows = h.spot.castsShadows;
+        l.attenuation = h.spot.attenuation;
+        l.fallOff = h.spot.fallOff;
+    }
+    return l;
 }
 
 class Session {
@@ -501,6 +616,10 @@ private:
         case Op::kMath: math(); break;
         case Op::kAccessors: accessors(); break;
         case Op::kSurfaces: surfaces(); break;
+        case Op::kGroups: groups(); break;
+        case Op::kStylesShadersLights: stylesShadersLights(); break;
+        case Op::kCurveTools: curveTools(); break;
+        case Op::kQuadrics: quadrics(); break;
         case Op::kCount: break;
         }
     }
@@ -664,6 +783,8 @@ private:
     {
         const TQ3Object original = pick(Kind(m_in.u8() % kKindCount));
         if (++m_duplicates > kMaxDuplicates)
+            return;
+        if (holdsKind(original, Kind::kGroup) && !groupIsSmall(original))
             return;
         const TQ3Object copy = OBJECT(Q3Object_Duplicate(original));
         if (copy == nullptr)
@@ -1341,7 +1462,702 @@ private:
             hold(got, Kind::kAttributeSet);
     }
 
-    // The math helpers with arbitrary values, results aliasing inputs.
+    // Styles other than subdivision, illumination shaders and lights
+    // (QD3DStyle.h, QD3DShader.h, QD3DLight.h), with values that may break
+    // any rule: New, the setters, Get, immediate and retained Submit, the
+    // shaders' uv calls, lights' single-field setters. Where the handle is a
+    // held object of the call's kind, a call must succeed exactly when the
+    // values obey the header's rules (TQ3Booleans: any int, stored as 0 or
+    // 1); a failed edit must leave the object's state and edit index alone,
+    // a successful one must change the edit index and read back.
+    void stylesShadersLights()
+    {
+        // A held style, shader or light's state through its getters, as
+        // bytes (field by field: TQ3AntiAliasStyleData has padding); empty
+        // for anything else.
+        auto snapshot = [&](TQ3Object object) {
+            std::vector<unsigned char> bytes;
+            auto add = [&](const auto& value) {
+                const auto* p = reinterpret_cast<const unsigned char*>(&value);
+                bytes.insert(bytes.end(), p, p + sizeof value);
+            };
+            const bool ours = holdsKind(object, Kind::kOtherStyle) || holdsKind(object, Kind::kShader) ||
+                              holdsKind(object, Kind::kLight);
+            if (!ours || m_initialized == 0)
+                return bytes;
+            auto read = [&](auto get, auto value) {
+                if (STATUS(get(object, &value)) != kQ3Success)
+                    die("snapshot", "a getter failed on a held object of its kind");
+                add(value);
+            };
+            switch (QUERY(Q3Object_GetLeafType(object), TQ3ObjectType{kQ3ObjectTypeInvalid})) {
+            case kQ3StyleTypePickID: read(Q3PickIDStyle_Get, 0UL); break;
+            case kQ3StyleTypePickParts: read(Q3PickPartsStyle_Get, TQ3PickParts{}); break;
+            case kQ3StyleTypeCastShadows: read(Q3CastShadowsStyle_Get, kQ3False); break;
+            case kQ3StyleTypeReceiveShadows: read(Q3ReceiveShadowsStyle_Get, kQ3False); break;
+            case kQ3StyleTypeFill: read(Q3FillStyle_Get, kQ3FillStyleFilled); break;
+            case kQ3StyleTypeBackfacing: read(Q3BackfacingStyle_Get, kQ3BackfacingStyleBoth); break;
+            case kQ3StyleTypeInterpolation: read(Q3InterpolationStyle_Get, kQ3InterpolationStyleNone); break;
+            case kQ3StyleTypeOrientation: read(Q3OrientationStyle_Get, kQ3OrientationStyleClockwise); break;
+            case kQ3StyleTypeFog: read(Q3FogStyle_GetData, TQ3FogStyleData{}); break;
+            case kQ3StyleTypeAntiAlias: {
+                TQ3AntiAliasStyleData data{};
+                STATUS(Q3AntiAliasStyle_GetData(object, &data));
+                add(data.state), add(data.mode), add(data.quality);
+                break;
+            }
+            case kQ3StyleTypeHighlight: {
+                TQ3AttributeSet set = nullptr;
+                STATUS(Q3HighlightStyle_Get(object, &set));
+                add(set);
+                if (set != nullptr)
+                    STATUS(Q3Object_Dispose(set));
+                break;
+            }
+            case kQ3LightTypeAmbient: read(Q3AmbientLight_GetData, TQ3LightData{}); break;
+            case kQ3LightTypeDirectional: read(Q3DirectionalLight_GetData, TQ3DirectionalLightData{}); break;
+            case kQ3LightTypePoint: read(Q3PointLight_GetData, TQ3PointLightData{}); break;
+            case kQ3LightTypeSpot: read(Q3SpotLight_GetData, TQ3SpotLightData{}); break;
+            default: // an illumination shader
+                read(Q3Shader_GetUVTransform, TQ3Matrix3x3{});
+                read(Q3Shader_GetUBoundary, kQ3ShaderUVBoundaryWrap);
+                read(Q3Shader_GetVBoundary, kQ3ShaderUVBoundaryWrap);
+                break;
+            }
+            return bytes;
+        };
+        // Runs one edit. `valid`: 1 or 0 when the handle is known to be of the
+        // call's kind and the values do or do not obey the rules, -1 when the
+        // outcome is not predicted. `expected`: the state a success must leave
+        // (empty: not checked).
+        auto edit = [&](const char* call, TQ3Object object, int valid, const std::vector<unsigned char>& expected,
+                        auto run) {
+            const std::vector<unsigned char> before = snapshot(object);
+            const unsigned long index = before.empty() ? 0 : editIndex(object);
+            begin();
+            const TQ3Status status = checkStatus(call, run());
+            if (valid >= 0 && m_initialized > 0)
+                require((status == kQ3Success) == (valid == 1), call, "disagrees with the header's rules");
+            if (before.empty())
+                return status;
+            if (status == kQ3Success) {
+                require(editIndex(object) != index, call, "succeeded without changing the edit index");
+                require(expected.empty() || snapshot(object) == expected, call, "does not read back");
+            } else {
+                require(editIndex(object) == index, call, "failed but changed the edit index");
+                require(snapshot(object) == before, call, "failed but changed the object");
+            }
+            return status;
+        };
+        auto bytesOf = [](const auto& value) {
+            const auto* p = reinterpret_cast<const unsigned char*>(&value);
+            return std::vector<unsigned char>(p, p + sizeof value);
+        };
+        const std::uint8_t action = m_in.u8() % 5;
+        if (action == 0) {
+            // A style: New, immediate Submit or Set, with one value.
+            static const TQ3ObjectType kTypes[] = {kQ3StyleTypeFill,        kQ3StyleTypeBackfacing,
+                                                   kQ3StyleTypeInterpolation, kQ3StyleTypeOrientation,
+                                                   kQ3StyleTypeCastShadows, kQ3StyleTypeReceiveShadows,
+                                                   kQ3StyleTypePickID,      kQ3StyleTypePickParts,
+                                                   kQ3StyleTypeAntiAlias,   kQ3StyleTypeFog,
+                                                   kQ3StyleTypeHighlight};
+            const int which = m_in.u8() % 11;
+            static const int kLast[] = {2, 2, 2, 1, 1, 1};
+            const std::int32_t raw = which < 6 ? enumValue(kLast[which] + 1) : 0;
+            const unsigned long word = which == 6 ? m_in.u32() : which == 7 ? (unsigned long)enumValue(8) : 0;
+            TQ3AntiAliasStyleData antiAlias{};
+            TQ3FogStyleData fog{};
+            std::int32_t state = enumValue(2), mode = 0;
+            if (which == 8) {
+                setRaw(antiAlias.state, state);
+                antiAlias.mode = (unsigned long)enumValue(4);
+                antiAlias.quality = m_in.value();
+            } else if (which == 9) {
+                mode = enumValue(4);
+                setRaw(fog.state, state);
+                setRaw(fog.mode, mode);
+                fog.fogStart = m_in.value();
+                fog.fogEnd = m_in.value();
+                fog.density = m_in.value();
+                fog.color = {m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+            }
+            const TQ3Object set = which == 10 ? pick(Kind::kAttributeSet) : nullptr;
+            const bool nullData = m_in.u8() == 0;
+            bool obeys = true;
+            std::vector<unsigned char> expected;
+            if (which < 4)
+                obeys = raw >= 0 && raw <= kLast[which], expected = bytesOf(raw);
+            else if (which < 6)
+                expected = bytesOf(std::int32_t(raw != 0));
+            else if (which == 6)
+                expected = bytesOf(word);
+            else if (which == 7)
+                obeys = (word & ~7UL) == 0, expected = bytesOf(word);
+            else if (which == 8) {
+                obeys = (state == 0 || state == 1) && (antiAlias.mode & ~3UL) == 0 &&
+                        std::isfinite(antiAlias.quality) && antiAlias.quality >= 0.0f && antiAlias.quality <= 1.0f;
+                expected = bytesOf(antiAlias.state);
+                for (const auto& part : {bytesOf(antiAlias.mode), bytesOf(antiAlias.quality)})
+                    expected.insert(expected.end(), part.begin(), part.end());
+            } else if (which == 9) {
+                obeys = (state == 0 || state == 1) && mode >= 0 && mode <= 3 &&
+                        allFinite({fog.fogStart, fog.fogEnd, fog.density, fog.color.a, fog.color.r, fog.color.g,
+                                   fog.color.b}) &&
+                        fog.density >= 0.0f && !(state == 1 && mode == 0 && !(fog.fogStart < fog.fogEnd));
+                expected = bytesOf(fog);
+            } else {
+                obeys = set == nullptr || holdsKind(set, Kind::kAttributeSet), expected = bytesOf(set);
+            }
+            auto create = [&]() -> TQ3Object {
+                switch (which) {
+                case 6: return Q3PickIDStyle_New(word);
+                case 7: return Q3PickPartsStyle_New(word);
+                case 8: return Q3AntiAliasStyle_New(nullData ? nullptr : &antiAlias);
+                case 9: return Q3FogStyle_New(nullData ? nullptr : &fog);
+                case 10: return Q3HighlightStyle_New(set);
+                default: return q3fuzz_EnumStyle_New(which, raw);
+                }
+            };
+            const std::uint8_t path = m_in.u8() % 3;
+            if (path == 0) {
+                begin();
+                const TQ3Object style = checkObject("a style's _New", create());
+                if (m_initialized > 0)
+                    require((style != nullptr) == (obeys && !(nullData && (which == 8 || which == 9))),
+                            "a style's _New", "disagrees with QD3DStyle.h's rules");
+                if (style == nullptr)
+                    return;
+                hold(style, Kind::kOtherStyle);
+                require(snapshot(style) == expected, "a style's _New", "does not read back");
+            } else if (path == 1) {
+                const TQ3Object view = pick(Kind::kView);
+                begin();
+                switch (which) {
+                case 6: checkStatus("Q3PickIDStyle_Submit", Q3PickIDStyle_Submit(word, view)); break;
+                case 7: checkStatus("Q3PickPartsStyle_Submit", Q3PickPartsStyle_Submit(word, view)); break;
+                case 8: checkStatus("Q3AntiAliasStyle_Submit", Q3AntiAliasStyle_Submit(&antiAlias, view)); break;
+                case 9: checkStatus("Q3FogStyle_Submit", Q3FogStyle_Submit(&fog, view)); break;
+                case 10: checkStatus("Q3HighlightStyle_Submit", Q3HighlightStyle_Submit(set, view)); break;
+                default: checkStatus("a style's _Submit", q3fuzz_EnumStyle_Submit(which, raw, view)); break;
+                }
+            } else {
+                const TQ3Object style = pick(Kind::kOtherStyle);
+                const bool sameKind = holdsKind(style, Kind::kOtherStyle) && m_initialized > 0 &&
+                                      QUERY(Q3Style_GetType(style), TQ3ObjectType{0}) == kTypes[which];
+                const int valid = sameKind ? int(obeys && !(nullData && (which == 8 || which == 9))) : -1;
+                edit("a style's _Set", style, valid, expected, [&] {
+                    switch (which) {
+                    case 6: return Q3PickIDStyle_Set(style, word);
+                    case 7: return Q3PickPartsStyle_Set(style, word);
+                    case 8: return Q3AntiAliasStyle_SetData(style, nullData ? nullptr : &antiAlias);
+                    case 9: return Q3FogStyle_SetData(style, nullData ? nullptr : &fog);
+                    case 10: return Q3HighlightStyle_Set(style, set);
+                    default: return q3fuzz_EnumStyle_Set(which, style, raw);
+                    }
+                });
+            }
+        } else if (action == 1) {
+            // Calls on any style, shader or light: types, retained submit,
+            // highlight Get, a light's single getters.
+            static const Kind kKinds[] = {Kind::kOtherStyle, Kind::kShader, Kind::kLight};
+            const TQ3Object object = pick(kKinds[m_in.u8() % 3]);
+            const TQ3Object view = pick(Kind::kView);
+            TQ3AttributeSet set = nullptr;
+            const bool nullOut = m_in.u8() == 0;
+            float value = 0.5f;
+            switch (m_in.u8() % 9) {
+            case 6: QUERY(Q3Light_GetType(object), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+            case 7:
+                if (STATUS(Q3SpotLight_GetOuterAngle(object, nullOut ? nullptr : &value)) != kQ3Success)
+                    require(value == 0.5f, "Q3SpotLight_GetOuterAngle", "failed but wrote its output");
+                break;
+            case 8:
+                if (STATUS(Q3Light_GetBrightness(object, nullOut ? nullptr : &value)) != kQ3Success)
+                    require(value == 0.5f, "Q3Light_GetBrightness", "failed but wrote its output");
+                break;
+            case 0: QUERY(Q3Style_GetType(object), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+            case 1: QUERY(Q3Shader_GetType(object), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+            case 2: QUERY(Q3IlluminationShader_GetType(object), TQ3ObjectType{kQ3ObjectTypeInvalid}); break;
+            case 3: STATUS(Q3Style_Submit(object, view)); break;
+            case 4: STATUS(Q3Shader_Submit(object, view)); break;
+            default:
+                STATUS(Q3HighlightStyle_Get(object, nullOut ? nullptr : &set));
+                if (set != nullptr)
+                    hold(set, Kind::kAttributeSet);
+                break;
+            }
+        } else if (action == 2) {
+            // Illumination shaders and the uv calls every shader has.
+            const std::uint8_t call = m_in.u8() % 4;
+            if (call == 0) {
+                static TQ3ShaderObject (*const kNew[])() = {Q3PhongIllumination_New, Q3LambertIllumination_New,
+                                                            Q3NULLIllumination_New};
+                const TQ3Object shader = OBJECT(kNew[m_in.u8() % 3]());
+                if (shader != nullptr)
+                    hold(shader, Kind::kShader);
+                return;
+            }
+            const TQ3Object shader = pick(Kind::kShader);
+            const bool ours = holdsKind(shader, Kind::kShader) && m_initialized > 0;
+            const bool nullArg = m_in.u8() == 0;
+            if (call == 1) {
+                TQ3Matrix3x3 m{};
+                for (auto& row : m.value)
+                    for (float& v : row)
+                        v = (m_in.u8() & 1) ? m_in.value() : 0.0f;
+                bool finite = true;
+                for (auto& row : m.value)
+                    for (float v : row)
+                        finite = finite && std::isfinite(v);
+                std::vector<unsigned char> expected = bytesOf(m);
+                if (ours) {
+                    const std::vector<unsigned char> now = snapshot(shader);
+                    expected.insert(expected.end(), now.end() - 2 * sizeof(TQ3ShaderUVBoundary), now.end());
+                }
+                edit("Q3Shader_SetUVTransform", shader, ours ? int(finite && !nullArg) : -1, expected,
+                     [&] { return Q3Shader_SetUVTransform(shader, nullArg ? nullptr : &m); });
+                TQ3Matrix3x3 out = m;
+                if (STATUS(Q3Shader_GetUVTransform(shader, m_in.u8() == 0 ? nullptr : &out)) != kQ3Success)
+                    require(sameBytes(out, m), "Q3Shader_GetUVTransform", "failed but wrote its output");
+            } else if (call == 2) {
+                const bool v = m_in.u8() & 1;
+                const std::int32_t raw = enumValue(2);
+                edit(v ? "Q3Shader_SetVBoundary" : "Q3Shader_SetUBoundary", shader,
+                     ours ? int(raw == 0 || raw == 1) : -1, {},
+                     [&] { return q3fuzz_SetEnumField(v ? 8 : 7, shader, raw); });
+            } else {
+                TQ3ShaderUVBoundary out = kQ3ShaderUVBoundaryClamp;
+                TQ3ShaderUVBoundary* where = nullArg ? nullptr : &out;
+                const TQ3Status status = (m_in.u8() & 1) ? STATUS(Q3Shader_GetUBoundary(shader, where))
+                                                         : STATUS(Q3Shader_GetVBoundary(shader, where));
+                if (status != kQ3Success)
+                    require(out == kQ3ShaderUVBoundaryClamp, "Q3Shader_GetUBoundary", "failed but wrote its output");
+            }
+        } else {
+            // Lights: New or SetData of a kind with any values (action 3), or
+            // one value through its own setter (action 4).
+            AnyLight l;
+            l.kind = m_in.u8() % 4;
+            TQ3SpotLightData& d = l.data;
+            l.isOn = enumValue(1);
+            d.lightData.brightness = m_in.value();
+            d.lightData.color = {m_in.value(), m_in.value(), m_in.value()};
+            l.castsShadows = enumValue(1);
+            l.attenuation = enumValue(3);
+            d.location = point3();
+            d.direction = vector3();
+            d.hotAngle = m_in.value();
+            d.outerAngle = m_in.value();
+            l.fallOff = enumValue(4);
+            const bool nullData = m_in.u8() == 0;
+            const LightStructures given = lightStructures(l, false);
+            static const TQ3ObjectType kKinds[] = {kQ3LightTypeAmbient, kQ3LightTypeDirectional, kQ3LightTypePoint,
+                                                   kQ3LightTypeSpot};
+            const TQ3Object light = pick(Kind::kLight);
+            const bool ours = holdsKind(light, Kind::kLight) && m_initialized > 0;
+            // The held light's current values.
+            AnyLight now;
+            if (ours) {
+                const TQ3ObjectType type = QUERY(Q3Light_GetType(light), TQ3ObjectType{0});
+                now.kind = int(std::find(kKinds, kKinds + 4, type) - kKinds);
+                const std::vector<unsigned char> bytes = snapshot(light);
+                LightStructures held{};
+                void* into[] = {&held.common, &held.directional, &held.point, &held.spot};
+                std::memcpy(into[now.kind], bytes.data(), bytes.size());
+                now = anyLight(now.kind, held);
+            }
+            if (action == 3 && (m_in.u8() & 1)) {
+                begin();
+                TQ3Object created = nullptr;
+                switch (l.kind) {
+                case 0: created = Q3AmbientLight_New(nullData ? nullptr : &given.common); break;
+                case 1: created = Q3DirectionalLight_New(nullData ? nullptr : &given.directional); break;
+                case 2: created = Q3PointLight_New(nullData ? nullptr : &given.point); break;
+                default: created = Q3SpotLight_New(nullData ? nullptr : &given.spot); break;
+                }
+                checkObject("a light's _New", created);
+                if (m_initialized > 0)
+                    require((created != nullptr) == (!nullData && lightObeysRules(l)), "a light's _New",
+                            "disagrees with QD3DLight.h's rules");
+                if (created != nullptr) {
+                    hold(created, Kind::kLight);
+                    require(snapshot(created) == lightBytes(l), "a light's _New", "does not read back");
+                }
+            } else if (action == 3) {
+                const int valid = ours && now.kind == l.kind ? int(!nullData && lightObeysRules(l)) : -1;
+                edit("a light's _SetData", light, valid, lightBytes(l), [&] {
+                    switch (l.kind) {
+                    case 0: return Q3AmbientLight_SetData(light, nullData ? nullptr : &given.common);
+                    case 1: return Q3DirectionalLight_SetData(light, nullData ? nullptr : &given.directional);
+                    case 2: return Q3PointLight_SetData(light, nullData ? nullptr : &given.point);
+                    default: return Q3SpotLight_SetData(light, nullData ? nullptr : &given.spot);
+                    }
+                });
+            } else {
+                // One setter, the kind it takes (-1: any light), and what it
+                // does to the light's values.
+                const int call = m_in.u8() % 16;
+                static const int kTakes[] = {-1, -1, -1, -1, 1, 1, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3};
+                static const bool kPointer[] = {false, false, true, true, false, true, false, false,
+                                                true,  false, false, true, true, false, false, false};
+                AnyLight next = now;
+                switch (call) {
+                case 0: next.isOn = l.isOn; break;
+                case 1: next.data.lightData.brightness = d.lightData.brightness; break;
+                case 2: next.data.lightData.color = d.lightData.color; break;
+                case 3: next.data.lightData = d.lightData, next.isOn = l.isOn; break;
+                case 4: case 6: case 9: next.castsShadows = l.castsShadows; break;
+                case 5: case 12: next.data.direction = d.direction; break;
+                case 7: case 10: next.attenuation = l.attenuation; break;
+                case 8: case 11: next.data.location = d.location; break;
+                case 13: next.data.hotAngle = d.hotAngle; break;
+                case 14: next.data.outerAngle = d.outerAngle; break;
+                default: next.fallOff = l.fallOff; break;
+                }
+                const bool nullArg = nullData && kPointer[call];
+                const bool fits = ours && (kTakes[call] < 0 || kTakes[call] == now.kind);
+                edit("a light's setter", light, fits ? int(!nullArg && lightObeysRules(next)) : -1,
+                     fits ? lightBytes(next) : std::vector<unsigned char>{}, [&] {
+                         const TQ3ColorRGB* color = nullArg ? nullptr : &d.lightData.color;
+                         const TQ3Vector3D* direction = nullArg ? nullptr : &d.direction;
+                         const TQ3Point3D* location = nullArg ? nullptr : &d.location;
+                         switch (call) {
+                         case 0: return q3fuzz_SetEnumField(0, light, l.isOn);
+                         case 1: return Q3Light_SetBrightness(light, d.lightData.brightness);
+                         case 2: return Q3Light_SetColor(light, color);
+                         case 3: return Q3Light_SetData(light, nullArg ? nullptr : &given.common);
+                         case 4: return q3fuzz_SetEnumField(1, light, l.castsShadows);
+                         case 5: return Q3DirectionalLight_SetDirection(light, direction);
+                         case 6: return q3fuzz_SetEnumField(2, light, l.castsShadows);
+                         case 7: return q3fuzz_SetEnumField(3, light, l.attenuation);
+                         case 8: return Q3PointLight_SetLocation(light, location);
+                         case 9: return q3fuzz_SetEnumField(4, light, l.castsShadows);
+                         case 10: return q3fuzz_SetEnumField(5, light, l.attenuation);
+                         case 11: return Q3SpotLight_SetLocation(light, location);
+                         case 12: return Q3SpotLight_SetDirection(light, direction);
+                         case 13: return Q3SpotLight_SetHotAngle(light, d.hotAngle);
+                         case 14: return Q3SpotLight_SetOuterAngle(light, d.outerAngle);
+                         default: return q3fuzz_SetEnumField(6, light, l.fallOff);
+                         }
+                     });
+            }
+        }
+    }
+
+    // Boxes, cones, cylinders, disks, ellipses, ellipsoids and tori: New,
+    // SetData, GetData with EmptyData (twice), immediate Submit, every
+    // per-field call and the decomposition. The data starts as a valid shape
+    // whose floats an input may overwrite with anything (NaN, infinities,
+    // zero or parallel axes, ranges outside [0, 1], a ratio <= 0), with any
+    // caps bits and attribute sets (dead, foreign, a box's six face sets).
+    struct QuadricFields {
+        float* floats; // origin, then the vectors, the torus's ratio, the ranges
+        int floatCount;
+        TQ3EndCap* caps;       // NULL if the type has none
+        TQ3AttributeSet* sets; // the part sets and then the geometry's, consecutive
+        int setCount;
+    };
+    static QuadricFields fieldsOf(TQ3BoxData& d) { return {&d.origin.x, 12, nullptr, &d.boxAttributeSet, 1}; }
+    static QuadricFields fieldsOf(TQ3ConeData& d) { return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 4}; }
+    static QuadricFields fieldsOf(TQ3CylinderData& d) { return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 5}; }
+    static QuadricFields fieldsOf(TQ3DiskData& d) { return {&d.origin.x, 13, nullptr, &d.diskAttributeSet, 1}; }
+    static QuadricFields fieldsOf(TQ3EllipseData& d) { return {&d.origin.x, 11, nullptr, &d.ellipseAttributeSet, 1}; }
+    static QuadricFields fieldsOf(TQ3EllipsoidData& d)
+    {
+        return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 2};
+    }
+    static QuadricFields fieldsOf(TQ3TorusData& d) { return {&d.origin.x, 17, &d.caps, &d.interiorAttributeSet, 2}; }
+
+    template <class Data>
+    static bool sameQuadric(const Data& a, const Data& b)
+    {
+        const QuadricFields x = fieldsOf(const_cast<Data&>(a));
+        const QuadricFields y = fieldsOf(const_cast<Data&>(b));
+        return std::memcmp(x.floats, y.floats, std::size_t(x.floatCount) * sizeof(float)) == 0 &&
+               (x.caps == nullptr || *x.caps == *y.caps) &&
+               std::memcmp(x.sets, y.sets, std::size_t(x.setCount) * sizeof(TQ3AttributeSet)) == 0;
+    }
+    static bool sameQuadric(const TQ3BoxData& a, const TQ3BoxData& b)
+    {
+        const bool faces = a.faceAttributeSet == nullptr || b.faceAttributeSet == nullptr
+                               ? a.faceAttributeSet == b.faceAttributeSet
+                               : std::memcmp(a.faceAttributeSet, b.faceAttributeSet, 6 * sizeof(TQ3AttributeSet)) == 0;
+        return faces && sameQuadric<TQ3BoxData>(a, b);
+    }
+
+    template <class Data>
+    void quadricData(std::uint8_t action, Kind kind, Data& data, bool nullData,
+                     TQ3GeometryObject (*create)(const Data*),
+                     TQ3Status (*setData)(TQ3GeometryObject, const Data*),
+                     TQ3Status (*getData)(TQ3GeometryObject, Data*), TQ3Status (*emptyData)(Data*),
+                     TQ3Status (*submit)(const Data*, TQ3ViewObject))
+    {
+        // A valid shape: unit axes along y, z and x (a torus's tube half as
+        // thick), full ranges; disks and ellipses take the last two axes.
+        static const float kShape[] = {0, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, 1};
+        static const float kTorus[] = {0, 0, 0, 0, 0.5f, 0, 0, 0, 1, 1, 0, 0, 0.5f, 0, 1, 0, 1};
+        const QuadricFields f = fieldsOf(data);
+        if (f.floatCount == 17)
+            std::copy(kTorus, kTorus + 17, f.floats);
+        else if (f.floatCount == 12 || f.floatCount == 16)
+            std::copy(kShape, kShape + f.floatCount, f.floats);
+        else
+            std::copy(kShape + 6, kShape + 3 + f.floatCount, f.floats + 3);
+        for (int n = m_in.u8() % 4; n > 0; --n)
+            f.floats[m_in.u8() % f.floatCount] = m_in.value();
+        if (f.caps != nullptr)
+            *f.caps = TQ3EndCap(enumValue(7));
+        const std::uint8_t withSets = m_in.u8();
+        for (int i = 0; i < f.setCount; ++i)
+            if (withSets & (1 << i))
+                f.sets[i] = pick(Kind::kAttributeSet);
+        if (action == 3 && !drawAllowed())
+            return;
+        surfaceAction<Data>(action, kind, nullData ? nullptr : &data, create, setData, getData, emptyData, submit,
+                            [](const Data& a, const Data& b) { return sameQuadric(a, b); });
+    }
+
+    void quadrics()
+    {
+        const std::uint8_t type = m_in.u8() % 7;
+        const std::uint8_t action = m_in.u8() % 6;
+        const Kind kind = Kind(int(Kind::kBox) + type);
+        const bool nullData = m_in.u8() == 0;
+        if (action == 4)
+            return quadricField(type, kind);
+        if (action == 5)
+            return quadricDecompose(kind);
+        switch (type) {
+        case 0: {
+            TQ3BoxData data{};
+            TQ3AttributeSet faces[6] = {};
+            if (m_in.u8() & 1) {
+                for (TQ3AttributeSet& face : faces)
+                    face = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+                data.faceAttributeSet = faces;
+            }
+            quadricData(action, kind, data, nullData, Q3Box_New, Q3Box_SetData, Q3Box_GetData, Q3Box_EmptyData,
+                        Q3Box_Submit);
+            break;
+        }
+        case 1: {
+            TQ3ConeData data{};
+            quadricData(action, kind, data, nullData, Q3Cone_New, Q3Cone_SetData, Q3Cone_GetData,
+                        Q3Cone_EmptyData, Q3Cone_Submit);
+            break;
+        }
+        case 2: {
+            TQ3CylinderData data{};
+            quadricData(action, kind, data, nullData, Q3Cylinder_New, Q3Cylinder_SetData, Q3Cylinder_GetData,
+                        Q3Cylinder_EmptyData, Q3Cylinder_Submit);
+            break;
+        }
+        case 3: {
+            TQ3DiskData data{};
+            quadricData(action, kind, data, nullData, Q3Disk_New, Q3Disk_SetData, Q3Disk_GetData,
+                        Q3Disk_EmptyData, Q3Disk_Submit);
+            break;
+        }
+        case 4: {
+            TQ3EllipseData data{};
+            quadricData(action, kind, data, nullData, Q3Ellipse_New, Q3Ellipse_SetData, Q3Ellipse_GetData,
+                        Q3Ellipse_EmptyData, Q3Ellipse_Submit);
+            break;
+        }
+        case 5: {
+            TQ3EllipsoidData data{};
+            quadricData(action, kind, data, nullData, Q3Ellipsoid_New, Q3Ellipsoid_SetData, Q3Ellipsoid_GetData,
+                        Q3Ellipsoid_EmptyData, Q3Ellipsoid_Submit);
+            break;
+        }
+        default: {
+            TQ3TorusData data{};
+            quadricData(action, kind, data, nullData, Q3Torus_New, Q3Torus_SetData, Q3Torus_GetData,
+                        Q3Torus_EmptyData, Q3Torus_Submit);
+            break;
+        }
+        }
+    }
+
+    // Apple's per-field calls of each type: the vectors are orientation
+    // (or none), major and minor; the sets are the part sets by name; the
+    // scalar is the caps (cones, cylinders) or the ratio (tori).
+    struct QuadricCalls {
+        TQ3Status (*setOrigin)(TQ3GeometryObject, const TQ3Point3D*);
+        TQ3Status (*getOrigin)(TQ3GeometryObject, TQ3Point3D*);
+        TQ3Status (*setVector[3])(TQ3GeometryObject, const TQ3Vector3D*);
+        TQ3Status (*getVector[3])(TQ3GeometryObject, TQ3Vector3D*);
+        TQ3Status (*setSet[3])(TQ3GeometryObject, TQ3AttributeSet);
+        TQ3Status (*getSet[3])(TQ3GeometryObject, TQ3AttributeSet*);
+        TQ3Status (*setCaps)(TQ3GeometryObject, TQ3EndCap);
+        TQ3Status (*getCaps)(TQ3GeometryObject, TQ3EndCap*);
+    };
+
+    void quadricField(std::uint8_t type, Kind kind)
+    {
+        static const QuadricCalls kCalls[] = {
+            {Q3Box_SetOrigin, Q3Box_GetOrigin, {Q3Box_SetOrientation, Q3Box_SetMajorAxis, Q3Box_SetMinorAxis},
+             {Q3Box_GetOrientation, Q3Box_GetMajorAxis, Q3Box_GetMinorAxis}, {}, {}, nullptr, nullptr},
+            {Q3Cone_SetOrigin, Q3Cone_GetOrigin, {Q3Cone_SetOrientation, Q3Cone_SetMajorRadius, Q3Cone_SetMinorRadius},
+             {Q3Cone_GetOrientation, Q3Cone_GetMajorRadius, Q3Cone_GetMinorRadius},
+             {Q3Cone_SetBottomAttributeSet, Q3Cone_SetFaceAttributeSet},
+             {Q3Cone_GetBottomAttributeSet, Q3Cone_GetFaceAttributeSet}, Q3Cone_SetCaps, Q3Cone_GetCaps},
+            {Q3Cylinder_SetOrigin, Q3Cylinder_GetOrigin,
+             {Q3Cylinder_SetOrientation, Q3Cylinder_SetMajorRadius, Q3Cylinder_SetMinorRadius},
+             {Q3Cylinder_GetOrientation, Q3Cylinder_GetMajorRadius, Q3Cylinder_GetMinorRadius},
+             {Q3Cylinder_SetTopAttributeSet, Q3Cylinder_SetBottomAttributeSet, Q3Cylinder_SetFaceAttributeSet},
+             {Q3Cylinder_GetTopAttributeSet, Q3Cylinder_GetBottomAttributeSet, Q3Cylinder_GetFaceAttributeSet},
+             Q3Cylinder_SetCaps, Q3Cylinder_GetCaps},
+            {Q3Disk_SetOrigin, Q3Disk_GetOrigin, {nullptr, Q3Disk_SetMajorRadius, Q3Disk_SetMinorRadius},
+             {nullptr, Q3Disk_GetMajorRadius, Q3Disk_GetMinorRadius}, {}, {}, nullptr, nullptr},
+            {Q3Ellipse_SetOrigin, Q3Ellipse_GetOrigin, {nullptr, Q3Ellipse_SetMajorRadius, Q3Ellipse_SetMinorRadius},
+             {nullptr, Q3Ellipse_GetMajorRadius, Q3Ellipse_GetMinorRadius}, {}, {}, nullptr, nullptr},
+            {Q3Ellipsoid_SetOrigin, Q3Ellipsoid_GetOrigin,
+             {Q3Ellipsoid_SetOrientation, Q3Ellipsoid_SetMajorRadius, Q3Ellipsoid_SetMinorRadius},
+             {Q3Ellipsoid_GetOrientation, Q3Ellipsoid_GetMajorRadius, Q3Ellipsoid_GetMinorRadius}, {}, {}, nullptr,
+             nullptr},
+            {Q3Torus_SetOrigin, Q3Torus_GetOrigin,
+             {Q3Torus_SetOrientation, Q3Torus_SetMajorRadius, Q3Torus_SetMinorRadius},
+             {Q3Torus_GetOrientation, Q3Torus_GetMajorRadius, Q3Torus_GetMinorRadius}, {}, {}, nullptr, nullptr},
+        };
+        const QuadricCalls& c = kCalls[type];
+        const TQ3Object geometry = pick(kind);
+        const bool ours = holdsKind(geometry, kind) && m_initialized > 0;
+        const bool nullArg = m_in.u8() == 0;
+        const bool set = m_in.u8() & 1;
+        const std::uint8_t field = m_in.u8();
+        const std::uint8_t slot = m_in.u8() % 3;
+        const TQ3Point3D point = point3();
+        const TQ3Vector3D vector{point.x, point.y, point.z};
+        const float ratio = m_in.value();
+        const TQ3EndCap caps = TQ3EndCap(enumValue(7));
+        const TQ3AttributeSet attributes = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+        const unsigned long face = m_in.index(6);
+        // A Set: a success reads back with its Get, a failure changes
+        // neither the field nor the edit index.
+        auto edit = [&](const char* name, auto get, auto wanted, auto call) {
+            decltype(wanted) old{}, now{};
+            const unsigned long before = ours ? editIndex(geometry) : 0;
+            if (ours)
+                STATUS(get(geometry, &old));
+            const TQ3Status status = STATUS(call());
+            require(status == kQ3Failure || ours, name, "succeeded on something that is not a held shape");
+            if (!ours)
+                return;
+            STATUS(get(geometry, &now));
+            if (status == kQ3Success)
+                require(sameBytes(now, wanted), name, "does not read back");
+            else
+                require(sameBytes(now, old) && editIndex(geometry) == before, name, "failed but changed the shape");
+        };
+        TQ3Point3D pointOut{};
+        TQ3Vector3D vectorOut{};
+        TQ3AttributeSet got = nullptr;
+        switch (field % 5) {
+        case 0:
+            if (set)
+                edit("SetOrigin", c.getOrigin, point,
+                     [&] { return c.setOrigin(geometry, nullArg ? nullptr : &point); });
+            else
+                STATUS(c.getOrigin(geometry, nullArg ? nullptr : &pointOut));
+            break;
+        case 1:
+            if (c.setVector[slot] == nullptr)
+                break;
+            if (set)
+                edit("SetVector", c.getVector[slot], vector,
+                     [&] { return c.setVector[slot](geometry, nullArg ? nullptr : &vector); });
+            else
+                STATUS(c.getVector[slot](geometry, nullArg ? nullptr : &vectorOut));
+            break;
+        case 2:
+            if (type == 0) {
+                const unsigned long before = ours ? editIndex(geometry) : 0;
+                if (!set)
+                    STATUS(Q3Box_GetFaceAttributeSet(geometry, face, nullArg ? nullptr : &got));
+                else if (STATUS(Q3Box_SetFaceAttributeSet(geometry, face, attributes)) == kQ3Failure && ours)
+                    require(editIndex(geometry) == before, "Q3Box_SetFaceAttributeSet", "failed but changed the box");
+            } else if (c.setSet[slot] != nullptr) {
+                const unsigned long before = ours ? editIndex(geometry) : 0;
+                if (!set)
+                    STATUS(c.getSet[slot](geometry, nullArg ? nullptr : &got));
+                else if (STATUS(c.setSet[slot](geometry, attributes)) == kQ3Failure && ours)
+                    require(editIndex(geometry) == before, "SetAttributeSet", "failed but changed the shape");
+            }
+            break;
+        case 3:
+            if (type == 6) {
+                float out = 0.0f;
+                if (set)
+                    edit("Q3Torus_SetRatio", Q3Torus_GetRatio, ratio,
+                         [&] { return Q3Torus_SetRatio(geometry, ratio); });
+                else
+                    STATUS(Q3Torus_GetRatio(geometry, nullArg ? nullptr : &out));
+            } else if (c.setCaps != nullptr) {
+                TQ3EndCap out = 0;
+                if (set)
+                    edit("SetCaps", c.getCaps, caps, [&] { return c.setCaps(geometry, caps); });
+                else
+                    STATUS(c.getCaps(geometry, nullArg ? nullptr : &out));
+            }
+            break;
+        default:
+            QUERY(Q3Geometry_GetType(geometry), TQ3ObjectType{kQ3ObjectTypeInvalid});
+            break;
+        }
+        if (got != nullptr)
+            hold(got, Kind::kAttributeSet);
+    }
+
+    void quadricDecompose(Kind kind)
+    {
+        const TQ3Object geometry = pick(kind);
+        const TQ3Object view = pick(Kind::kView);
+        if (!drawAllowed())
+            return;
+        const DrawTimer timer(m_drawSeconds);
+        const TQ3Object result = OBJECT(Q3Geometry_GetDecomposed(geometry, view));
+        if (result == nullptr)
+            return;
+        const Held* entry = heldEntry(geometry);
+        require(entry != nullptr, "Q3Geometry_GetDecomposed", "decomposed something nobody holds");
+        if (isQuadric(entry->kind))
+            checkQuadricDecomposed(entry->kind, result);
+        else // another geometry, picked when no shape of this kind is held
+            hold(result, Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh ? Kind::kTriMesh : Kind::kPolyLine);
+    }
+
+    // A shape gives a trimesh within kQ3SubdivisionMaxTrianglesPerSurface,
+    // an ellipse a closed or open polyline within the curve cap; finite.
+    void checkQuadricDecomposed(Kind kind, TQ3Object result)
+    {
+        const char* call = "Q3Geometry_GetDecomposed";
+        if (kind == Kind::kEllipse) {
+            require(Q3Geometry_GetType(result) == kQ3GeometryTypePolyLine, call, "an ellipse gave no polyline");
+            hold(result, Kind::kPolyLine);
+            TQ3PolyLineData line{};
+            STATUS(Q3PolyLine_GetData(result, &line));
+            require(line.numVertices >= 2 && line.numVertices <= (unsigned long)kQ3SubdivisionMaxSegmentsPerCurve + 1,
+                    call, "an ellipse's polyline has the wrong size");
+            STATUS(Q3PolyLine_EmptyData(&line));
+            return;
+        }
+        require(Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh, call, "a shape gave no trimesh");
+        hold(result, Kind::kTriMesh);
+        TQ3TriMeshData mesh{};
+        STATUS(Q3TriMesh_GetData(result, &mesh));
+        require(mesh.numTriangles >= 1 && mesh.numTriangles <= (unsigned long)kQ3SubdivisionMaxTrianglesPerSurface,
+                call, "a shape's trimesh has no triangles or more than the cap");
+        for (unsigned long i = 0; i < mesh.numPoints; ++i)
+            require(std::isfinite(mesh.points[i].x) && std::isfinite(mesh.points[i].y) &&
+                        std::isfinite(mesh.points[i].z),
+                    call, "a shape's trimesh has a point that is not finite");
+        STATUS(Q3TriMesh_EmptyData(&mesh));
+    }
+
+    // The math helpers with arbitrary values, results aliasing inputs. Cases
+    // 9 and up are QuickDraw 3D 1.6's other QD3DMath.h calls, by family.
     void math()
     {
         TQ3Matrix4x4 a = readMatrix();
@@ -1351,7 +2167,7 @@ private:
         TQ3Point3D p = point3();
         const bool nullArg = m_in.u8() == 0;
         TQ3Matrix4x4 r{};
-        switch (m_in.u8() % 9) {
+        switch (m_in.u8() % 15) {
         case 0: POINTER(Q3Matrix4x4_Invert(&a, nullArg ? nullptr : &r)); break;
         case 1: POINTER(Q3Matrix4x4_Invert(&a, &a)); break;
         case 2: POINTER(Q3Matrix4x4_Multiply(&a, nullArg ? nullptr : &b, &a)); break;
@@ -1360,8 +2176,591 @@ private:
         case 5: POINTER(Q3Vector3D_Normalize(&v1, nullArg ? nullptr : &v1)); break;
         case 6: POINTER(Q3Vector3D_Cross(&v1, &v2, &v1)); break;
         case 7: QUERY(Q3Vector3D_Dot(&v1, nullArg ? nullptr : &v2), 0.0f); break;
+        case 9: mathPoints(nullArg); break;
+        case 10: mathVectors(a, nullArg); break;
+        case 11: mathMatrices(a, b, v1, v2, p, nullArg); break;
+        case 12: mathQuaternions(a, v1, v2, p, nullArg); break;
+        case 13: mathBounds(nullArg); break;
+        case 14: mathArrays(a, nullArg); break;
         default: QUERY(Q3Point3D_Distance(&p, nullArg ? nullptr : &p), 0.0f); break;
         }
+    }
+
+    // A QD3DMath.h call that writes *out: it returns out on success; on
+    // failure (exactly one error, as POINTER checks) *out is as it was.
+    // Tells whether the call succeeded.
+    template <class T, class Call>
+    bool mathInto(const char* call, T* out, Call&& compute)
+    {
+        T before{};
+        if (out != nullptr)
+            before = *out;
+        T* const result = checkPointer(call, (begin(), compute()));
+        if (out != nullptr && result == nullptr)
+            require(sameBytes(*out, before), call, "failed but changed its result");
+        if (result != nullptr)
+            require(result == out, call, "returned a pointer other than its result");
+        return result != nullptr;
+    }
+#define MATH_INTO(out, call) mathInto(#call, (out), [&] { return (call); })
+
+    TQ3Point2D point2() { return TQ3Point2D{m_in.value(), m_in.value()}; }
+    TQ3Vector2D vector2() { return TQ3Vector2D{m_in.value(), m_in.value()}; }
+    TQ3RationalPoint4D point4() { return TQ3RationalPoint4D{m_in.value(), m_in.value(), m_in.value(), m_in.value()}; }
+    TQ3Quaternion quaternion() { return TQ3Quaternion{m_in.value(), m_in.value(), m_in.value(), m_in.value()}; }
+
+    TQ3Matrix3x3 readMatrix3x3()
+    {
+        TQ3Matrix3x3 m{};
+        const std::uint8_t mode = m_in.u8();
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                m.value[i][j] = (mode & 1) ? m_in.value() : (i == j ? 1.0f : 0.0f);
+        if (!(mode & 1))
+            for (int n = mode >> 5; n > 0; --n)
+                m.value[m_in.u8() % 3][m_in.u8() % 3] = m_in.value();
+        return m;
+    }
+
+    void mathPoints(bool nullArg)
+    {
+        TQ3Point2D p2 = point2();
+        const TQ3Point2D q2 = point2();
+        TQ3Param2D u{m_in.value(), m_in.value()};
+        TQ3Point3D p3 = point3();
+        const TQ3Point3D q3 = point3();
+        TQ3RationalPoint3D r3{m_in.value(), m_in.value(), m_in.value()};
+        TQ3RationalPoint4D r4 = point4();
+        const TQ3RationalPoint4D s4 = point4();
+        const TQ3Vector2D v2 = vector2();
+        const TQ3Vector3D v3 = vector3();
+        const float r1 = m_in.value(), rr2 = m_in.value();
+        TQ3PolarPoint polar{m_in.value(), m_in.value()};
+        TQ3SphericalPoint sphere{m_in.value(), m_in.value(), m_in.value()};
+        const TQ3Matrix3x3 m = readMatrix3x3();
+        TQ3Vector2D ov2{};
+        TQ3Vector3D ov3{};
+        switch (m_in.u8() % 24) {
+        case 0: MATH_INTO(&p2, Q3Point2D_Set(nullArg ? nullptr : &p2, r1, rr2)); break;
+        case 1: MATH_INTO(&r3, Q3RationalPoint3D_Set(&r3, r1, rr2, q2.x)); break;
+        case 2: MATH_INTO(&sphere, Q3SphericalPoint_Set(&sphere, r1, rr2, q2.y)); break;
+        case 3: MATH_INTO(&p3, Q3Point2D_To3D(nullArg ? nullptr : &p2, &p3)); break;
+        case 4: MATH_INTO(&p2, Q3RationalPoint3D_To2D(&r3, &p2)); break;
+        case 5: MATH_INTO(&p3, Q3RationalPoint4D_To3D(&r4, &p3)); break;
+        case 6: MATH_INTO(&ov2, Q3Param2D_Subtract(&u, nullArg ? nullptr : &u, &ov2)); break;
+        case 7: MATH_INTO(&ov3, Q3Point3D_Subtract(&p3, &q3, &ov3)); break;
+        case 8: QUERY(Q3RationalPoint3D_Distance(&r3, nullArg ? nullptr : &r3), 0.0f); break;
+        case 9: QUERY(Q3RationalPoint4D_DistanceSquared(&r4, &s4), 0.0f); break;
+        case 10: QUERY(Q3Point2D_Distance(&p2, &q2), 0.0f); break;
+        case 11: MATH_INTO(&p2, Q3Point2D_RRatio(&p2, &q2, r1, rr2, &p2)); break;
+        case 12: MATH_INTO(&r4, Q3RationalPoint4D_RRatio(&s4, &r4, r1, rr2, nullArg ? nullptr : &r4)); break;
+        case 13: MATH_INTO(&u, Q3Param2D_RRatio(&u, &u, r1, rr2, &u)); break;
+        case 14: MATH_INTO(&p3, Q3Point3D_Vector3D_Add(&p3, nullArg ? nullptr : &v3, &p3)); break;
+        case 15: MATH_INTO(&u, Q3Param2D_Vector2D_Subtract(&u, &v2, &u)); break;
+        case 16: MATH_INTO(&ov3, Q3Point3D_CrossProductTri(&p3, &q3, &p3, &ov3)); break;
+        case 17: MATH_INTO(&p2, Q3Point2D_Transform(&p2, nullArg ? nullptr : &m, &p2)); break;
+        case 18: MATH_INTO(&u, Q3Param2D_Transform(&u, &m, &u)); break;
+        case 19: MATH_INTO(&polar, Q3Point2D_ToPolar(&p2, &polar)); break;
+        case 20: MATH_INTO(&p2, Q3PolarPoint_ToPoint2D(&polar, nullArg ? nullptr : &p2)); break;
+        case 21: MATH_INTO(&sphere, Q3Point3D_ToSpherical(&p3, &sphere)); break;
+        case 22: MATH_INTO(&p3, Q3SphericalPoint_ToPoint3D(&sphere, &p3)); break;
+        default: MATH_INTO(&r4, Q3Point3D_To4D(&p3, &r4)); break;
+        }
+    }
+
+    void mathVectors(const TQ3Matrix4x4& m4, bool nullArg)
+    {
+        TQ3Vector2D a = vector2();
+        const TQ3Vector2D b = vector2();
+        TQ3Vector3D c = vector3();
+        const TQ3Vector3D d = vector3();
+        const float scalar = m_in.value();
+        const TQ3Matrix3x3 m3 = readMatrix3x3();
+        switch (m_in.u8() % 14) {
+        case 0: MATH_INTO(&a, Q3Vector2D_Set(&a, scalar, b.y)); break;
+        case 1: MATH_INTO(&c, Q3Vector2D_To3D(nullArg ? nullptr : &a, &c)); break;
+        case 2: MATH_INTO(&a, Q3Vector3D_To2D(&c, &a)); break;
+        case 3: MATH_INTO(&a, Q3Vector2D_Scale(&a, scalar, nullArg ? nullptr : &a)); break;
+        case 4: MATH_INTO(&c, Q3Vector3D_Scale(&c, scalar, &c)); break;
+        case 5: QUERY(Q3Vector2D_Length(nullArg ? nullptr : &a), 0.0f); break;
+        case 6: MATH_INTO(&a, Q3Vector2D_Normalize(&a, &a)); break;
+        case 7: MATH_INTO(&a, Q3Vector2D_Add(&a, nullArg ? nullptr : &b, &a)); break;
+        case 8: MATH_INTO(&c, Q3Vector3D_Subtract(&d, &c, &c)); break;
+        case 9: QUERY(Q3Vector2D_Cross(&a, nullArg ? nullptr : &b), 0.0f); break;
+        case 10: QUERY(Q3Vector2D_Dot(&a, &b), 0.0f); break;
+        case 11: MATH_INTO(&a, Q3Vector2D_Transform(&a, nullArg ? nullptr : &m3, &a)); break;
+        case 12: MATH_INTO(&c, Q3Vector3D_Transform(&c, &m4, &c)); break;
+        default: MATH_INTO(&c, Q3Vector3D_Negate(nullArg ? nullptr : &d, &c)); break;
+        }
+    }
+
+    void mathMatrices(TQ3Matrix4x4& a, const TQ3Matrix4x4& b, const TQ3Vector3D& v1, const TQ3Vector3D& v2,
+                      const TQ3Point3D& p, bool nullArg)
+    {
+        TQ3Matrix3x3 m = readMatrix3x3();
+        const TQ3Matrix3x3 n = readMatrix3x3();
+        const TQ3Point2D origin = point2();
+        const TQ3Quaternion q = quaternion();
+        const float x = m_in.value(), y = m_in.value(), z = m_in.value();
+        switch (m_in.u8() % 16) {
+        case 0: MATH_INTO(&m, Q3Matrix3x3_Copy(&n, nullArg ? nullptr : &m)); break;
+        case 1: MATH_INTO(&m, Q3Matrix3x3_SetIdentity(&m)); break;
+        case 2: MATH_INTO(&m, Q3Matrix3x3_Transpose(&m, &m)); break;
+        case 3: MATH_INTO(&m, Q3Matrix3x3_Invert(&m, nullArg ? nullptr : &m)); break;
+        case 4: MATH_INTO(&m, Q3Matrix3x3_Adjoint(&m, &m)); break;
+        case 5: MATH_INTO(&m, Q3Matrix3x3_Multiply(&m, nullArg ? nullptr : &n, &m)); break;
+        case 6: MATH_INTO(&m, Q3Matrix3x3_SetTranslate(&m, x, y)); break;
+        case 7: MATH_INTO(&m, Q3Matrix3x3_SetScale(nullArg ? nullptr : &m, x, y)); break;
+        case 8: MATH_INTO(&m, Q3Matrix3x3_SetRotateAboutPoint(&m, nullArg ? nullptr : &origin, x)); break;
+        case 9: MATH_INTO(&a, Q3Matrix4x4_SetRotateAboutPoint(&a, nullArg ? nullptr : &p, x, y, z)); break;
+        case 10: MATH_INTO(&a, Q3Matrix4x4_SetRotate_XYZ(&a, x, y, z)); break;
+        case 11: MATH_INTO(&a, Q3Matrix4x4_SetRotateVectorToVector(&a, &v1, nullArg ? nullptr : &v2)); break;
+        case 12: MATH_INTO(&a, Q3Matrix4x4_SetQuaternion(&a, nullArg ? nullptr : &q)); break;
+        case 13: QUERY(Q3Matrix3x3_Determinant(nullArg ? nullptr : &m), 0.0f); break;
+        case 14: QUERY(Q3Matrix4x4_Determinant(&b), 0.0f); break;
+        default: MATH_INTO(&a, Q3Matrix4x4_Copy(&b, &a)); break;
+        }
+    }
+
+    void mathQuaternions(const TQ3Matrix4x4& m, const TQ3Vector3D& v1, const TQ3Vector3D& v2, TQ3Point3D& p,
+                         bool nullArg)
+    {
+        TQ3Quaternion q1 = quaternion();
+        const TQ3Quaternion q2 = quaternion();
+        TQ3Vector3D v = v1;
+        const float t = m_in.value(), x = m_in.value(), y = m_in.value(), z = m_in.value();
+        switch (m_in.u8() % 20) {
+        case 0: MATH_INTO(&q1, Q3Quaternion_Set(&q1, t, x, y, z)); break;
+        case 1: MATH_INTO(&q1, Q3Quaternion_SetIdentity(nullArg ? nullptr : &q1)); break;
+        case 2: MATH_INTO(&q1, Q3Quaternion_Copy(&q2, &q1)); break;
+        case 3: QUERY(Q3Quaternion_IsIdentity(nullArg ? nullptr : &q1), kQ3False); break;
+        case 4: MATH_INTO(&q1, Q3Quaternion_Invert(&q1, &q1)); break;
+        case 5: MATH_INTO(&q1, Q3Quaternion_Normalize(&q1, nullArg ? nullptr : &q1)); break;
+        case 6: QUERY(Q3Quaternion_Dot(&q1, nullArg ? nullptr : &q2), 0.0f); break;
+        case 7: MATH_INTO(&q1, Q3Quaternion_Multiply(&q1, &q2, &q1)); break;
+        case 8: MATH_INTO(&q1, Q3Quaternion_SetRotateAboutAxis(&q1, nullArg ? nullptr : &v2, t)); break;
+        case 9: MATH_INTO(&q1, Q3Quaternion_SetRotate_XYZ(&q1, x, y, z)); break;
+        case 10: MATH_INTO(&q1, Q3Quaternion_SetRotate_X(&q1, t)); break;
+        case 11: MATH_INTO(&q1, Q3Quaternion_SetRotate_Z(&q1, t)); break;
+        case 12: MATH_INTO(&q1, Q3Quaternion_SetMatrix(&q1, nullArg ? nullptr : &m)); break;
+        case 13: MATH_INTO(&q1, Q3Quaternion_SetRotateVectorToVector(&q1, &v1, &v2)); break;
+        case 14: MATH_INTO(&q1, Q3Quaternion_MatchReflection(&q1, &q2, &q1)); break;
+        case 15: MATH_INTO(&q1, Q3Quaternion_InterpolateFast(&q1, &q2, t, nullArg ? nullptr : &q1)); break;
+        case 16: MATH_INTO(&q1, Q3Quaternion_InterpolateLinear(&q2, &q1, t, &q1)); break;
+        case 17: MATH_INTO(&v, Q3Vector3D_TransformQuaternion(&v, nullArg ? nullptr : &q1, &v)); break;
+        case 18: MATH_INTO(&p, Q3Point3D_TransformQuaternion(&p, &q2, &p)); break;
+        default: MATH_INTO(&q1, Q3Quaternion_SetRotate_Y(&q1, t)); break;
+        }
+    }
+
+    struct Exact {
+        double x, y, z;
+    };
+
+    // The point a point stands for, exactly (in double).
+    static Exact exactPoint(const TQ3Point3D& p) { return Exact{p.x, p.y, p.z}; }
+    static Exact exactPoint(const TQ3RationalPoint4D& p)
+    {
+        const double w = p.w == 0.0f ? 1.0 : p.w;
+        return Exact{p.x / w, p.y / w, p.z / w};
+    }
+
+    static bool finite(const Exact& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+    static std::int32_t enumInt(const TQ3Boolean& value)
+    {
+        std::int32_t raw;
+        std::memcpy(&raw, &value, sizeof raw);
+        return raw;
+    }
+
+    // A bound made of points holds each of them exactly (QD3DMath.h rounds
+    // outwards); checked where the bound and the point are finite.
+    void requireHolds(const char* call, const TQ3BoundingBox& box, const Exact& p)
+    {
+        const Exact low = exactPoint(box.min), high = exactPoint(box.max);
+        if (finite(low) && finite(high) && finite(p))
+            require(low.x <= p.x && p.x <= high.x && low.y <= p.y && p.y <= high.y && low.z <= p.z && p.z <= high.z,
+                    call, "the box does not hold a point it was made of");
+    }
+
+    // The distance is measured in double here and there; a few double ulps
+    // of slack keep a point exactly on a float radius from failing.
+    void requireHolds(const char* call, const TQ3BoundingSphere& sphere, const Exact& p)
+    {
+        const double dx = p.x - sphere.origin.x, dy = p.y - sphere.origin.y, dz = p.z - sphere.origin.z;
+        const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+        if (std::isfinite(d) && std::isfinite(sphere.radius))
+            require(d <= double(sphere.radius) * (1.0 + 1e-12), call,
+                    "the sphere does not hold a point it was made of");
+    }
+
+    // isEmpty 0, 1 or any int a C caller may store.
+    template <class Bound>
+    void setIsEmpty(Bound& bound)
+    {
+        const std::uint8_t mode = m_in.u8();
+        setRaw(bound.isEmpty, mode < 160 ? 0 : mode < 230 ? 1 : static_cast<std::int32_t>(m_in.u32()));
+    }
+
+    void mathBounds(bool nullArg)
+    {
+        TQ3BoundingBox box1{point3(), point3(), kQ3False}, box2{point3(), point3(), kQ3False};
+        TQ3BoundingSphere s1{point3(), m_in.value(), kQ3False}, s2{point3(), m_in.value(), kQ3False};
+        setIsEmpty(box1);
+        setIsEmpty(box2);
+        setIsEmpty(s1);
+        setIsEmpty(s2);
+        const TQ3Point3D point = point3();
+        const TQ3RationalPoint4D point4D = point4();
+        // Passed from C (CCaller.c): C++ cannot hold an int outside the enum.
+        const int isEmpty = m_in.u8() % 4 == 0 ? static_cast<int>(m_in.u32()) : m_in.u8() % 2;
+        const bool box1Empty = enumInt(box1.isEmpty) != 0;
+        // A sphere with a negative radius holds nothing the union could keep.
+        const bool s1Sane = enumInt(s1.isEmpty) != 0 || s1.radius >= 0.0f;
+        const TQ3BoundingBox box1Before = box1;
+        switch (m_in.u8() % 12) {
+        case 0: MATH_INTO(&box2, Q3BoundingBox_Copy(&box1, nullArg ? nullptr : &box2)); break;
+        case 1: MATH_INTO(&box1, Q3BoundingBox_Union(&box1, nullArg ? nullptr : &box2, &box1)); break;
+        case 2: MATH_INTO(&box1, q3fuzz_BoundingBox_Set(&box1, &point, nullArg ? nullptr : &point, isEmpty)); break;
+        case 3:
+            if (MATH_INTO(&box1, Q3BoundingBox_UnionPoint3D(&box1, &point, &box1)))
+                requireHolds("Q3BoundingBox_UnionPoint3D", box1, exactPoint(point));
+            break;
+        case 4:
+            if (MATH_INTO(&box1, Q3BoundingBox_UnionRationalPoint4D(&box1, &point4D, &box1)))
+                requireHolds("Q3BoundingBox_UnionRationalPoint4D", box1, exactPoint(point4D));
+            break;
+        case 5: MATH_INTO(&s2, Q3BoundingSphere_Copy(&s1, &s2)); break;
+        case 6: MATH_INTO(&s1, Q3BoundingSphere_Union(&s1, nullArg ? nullptr : &s2, &s1)); break;
+        case 7:
+            MATH_INTO(&s1, q3fuzz_BoundingSphere_Set(&s1, nullArg ? nullptr : &point, m_in.value(), isEmpty));
+            break;
+        case 8:
+            if (MATH_INTO(&s1, Q3BoundingSphere_UnionPoint3D(&s1, &point, nullArg ? nullptr : &s1)) && s1Sane)
+                requireHolds("Q3BoundingSphere_UnionPoint3D", s1, exactPoint(point));
+            break;
+        case 9:
+            if (MATH_INTO(&s1, Q3BoundingSphere_UnionRationalPoint4D(&s1, &point4D, &s1)) && s1Sane)
+                requireHolds("Q3BoundingSphere_UnionRationalPoint4D", s1, exactPoint(point4D));
+            break;
+        case 10:
+            // A box that is not empty (nor inside out) still holds its
+            // corners after a union.
+            if (MATH_INTO(&box2, Q3BoundingBox_Union(&box2, &box1, &box2)) && !box1Empty &&
+                box1Before.min.x <= box1Before.max.x && box1Before.min.y <= box1Before.max.y &&
+                box1Before.min.z <= box1Before.max.z) {
+                requireHolds("Q3BoundingBox_Union", box2, exactPoint(box1Before.min));
+                requireHolds("Q3BoundingBox_Union", box2, exactPoint(box1Before.max));
+            }
+            break;
+        default: MATH_INTO(&box2, Q3BoundingBox_Copy(&box2, &box2)); break;
+        }
+    }
+
+    // An array of count elements of T at a stride, in bytes that hold all
+    // of them (one spare byte in front puts them off alignment); or a count
+    // or a stride Q3 must reject before reading; or NULL.
+    template <class T>
+    struct MathArray {
+        std::vector<unsigned char> bytes;
+        unsigned long count = 0;
+        unsigned long stride = sizeof(T);
+        bool null = false;
+        bool badStride = false;
+        bool badCount = false;
+        T* data() { return null ? nullptr : reinterpret_cast<T*>(bytes.data() + 1); }
+        T at(unsigned long i) const
+        {
+            T value;
+            std::memcpy(&value, bytes.data() + 1 + i * stride, sizeof value);
+            return value;
+        }
+        // Room for n elements at this stride.
+        void reserveFor(unsigned long n)
+        {
+            const std::size_t need = 1 + n * stride + sizeof(T);
+            if (bytes.size() < need)
+                bytes.resize(need, 0);
+        }
+    };
+
+    template <class T, class Fill>
+    MathArray<T> readMathArray(Fill fill)
+    {
+        MathArray<T> array;
+        const std::uint8_t shape = m_in.u8();
+        array.count = m_in.u8() % 9;
+        array.stride = sizeof(T) + ((shape & 1) ? m_in.u8() % 9 : 0);
+        if ((shape >> 1) % 8 == 0) {
+            array.stride = m_in.u8() % sizeof(T); // smaller than an element
+            array.badStride = true;
+        }
+        array.reserveFor(array.count);
+        for (unsigned long i = 0; i < array.count; ++i) {
+            const T value = fill();
+            std::memcpy(array.bytes.data() + 1 + i * array.stride, &value, sizeof value);
+        }
+        if ((shape >> 4) % 8 == 0) {
+            // More than any array could hold at a stride of 12 bytes or more.
+            array.count = kLongMax - m_in.u8();
+            array.badCount = true;
+        }
+        array.null = (shape & 0x80) && m_in.u8() % 4 == 0;
+        return array;
+    }
+
+    // A transform-array call: on failure the output bytes are unchanged, on
+    // success each output element is the single-point call's result.
+    template <class In, class Out, class Call, class Single>
+    void transformArray(const char* call, const MathArray<In>& in, MathArray<Out>& out, long count, Call&& compute,
+                        Single single)
+    {
+        const std::vector<unsigned char> before = out.bytes;
+        const MathArray<In> input = in; // the output may be the input
+        const TQ3Status status = checkStatus(call, (begin(), compute()));
+        if (status == kQ3Failure) {
+            require(out.bytes == before, call, "failed but wrote its output array");
+            return;
+        }
+        require(m_initialized > 0 && count >= 0 && !input.badCount && !input.badStride && !out.badStride &&
+                    !(count > 0 && (input.null || out.null)),
+                call, "accepted a bad count, stride or array");
+        for (long i = 0; i < count; ++i)
+            require(sameBytes(out.at(static_cast<unsigned long>(i)), single(input.at(static_cast<unsigned long>(i)))),
+                    call, "an element differs from the single-point call");
+    }
+
+    // A bound of a point array succeeds exactly when nothing it was given
+    // is bad; then it is empty for no points and holds every point.
+    template <class Bound, class T>
+    void boundOfArray(const char* call, Bound* out, MathArray<T>& in,
+                      Bound* (*function)(Bound*, const T*, unsigned long, unsigned long))
+    {
+        Bound before{};
+        if (out != nullptr)
+            before = *out;
+        Bound* const result = checkPointer(call, (begin(), function(out, in.data(), in.count, in.stride)));
+        const bool bad = m_initialized == 0 || out == nullptr || in.badStride || in.badCount ||
+                         (in.null && in.count != 0);
+        require((result == nullptr) == bad, call, bad ? "accepted a bad argument" : "failed on good arguments");
+        if (result == nullptr) {
+            if (out != nullptr)
+                require(sameBytes(*out, before), call, "failed but changed its result");
+            return;
+        }
+        require(enumInt(out->isEmpty) == (in.count == 0 ? 1 : 0), call, "isEmpty does not match the count");
+        for (unsigned long i = 0; i < in.count; ++i)
+            requireHolds(call, *out, exactPoint(in.at(i)));
+    }
+
+    TQ3Point3D transformedOnce(const TQ3Point3D& p, const TQ3Matrix4x4& m)
+    {
+        TQ3Point3D r{};
+        POINTER(Q3Point3D_Transform(&p, &m, &r));
+        return r;
+    }
+
+    TQ3RationalPoint4D transformedOnce(const TQ3RationalPoint4D& p, const TQ3Matrix4x4& m)
+    {
+        TQ3RationalPoint4D r{};
+        POINTER(Q3RationalPoint4D_Transform(&p, &m, &r));
+        return r;
+    }
+
+    void mathArrays(const TQ3Matrix4x4& m, bool nullArg)
+    {
+        const std::uint8_t which = m_in.u8() % 9;
+        MathArray<TQ3Point3D> in3 = readMathArray<TQ3Point3D>([&] { return point3(); });
+        MathArray<TQ3RationalPoint4D> in4 = readMathArray<TQ3RationalPoint4D>([&] { return point4(); });
+        MathArray<TQ3Point3D> out3 = readMathArray<TQ3Point3D>([&] { return point3(); });
+        MathArray<TQ3RationalPoint4D> out4 = readMathArray<TQ3RationalPoint4D>([&] { return point4(); });
+        // The outputs hold as many elements as the inputs claim (a claim
+        // no array could hold is rejected before anything is written).
+        for (const unsigned long n : {in3.badCount ? 0 : in3.count, in4.badCount ? 0 : in4.count}) {
+            out3.reserveFor(n);
+            out4.reserveFor(n);
+        }
+        out3.count = out4.count = 0;
+        const bool negative = m_in.u8() == 255;
+        auto countOf = [&](const auto& in) {
+            return negative ? -1 - long(m_in.u8()) : long(std::min(in.count, kLongMax));
+        };
+        const TQ3Matrix4x4* matrix = nullArg ? nullptr : &m;
+        auto transformOf = [&](const auto& p) { return transformedOnce(p, m); };
+        auto rationalOf = [&](const TQ3Point3D& p) {
+            const TQ3RationalPoint4D r{p.x, p.y, p.z, 1.0f};
+            return transformedOnce(r, m);
+        };
+        TQ3BoundingBox box{};
+        TQ3BoundingSphere sphere{};
+        switch (which) {
+        case 0: {
+            const long count = countOf(in3);
+            transformArray("Q3Point3D_To3DTransformArray", in3, out3, count, [&] {
+                return Q3Point3D_To3DTransformArray(in3.data(), matrix, out3.data(), count, in3.stride, out3.stride);
+            }, transformOf);
+            break;
+        }
+        case 1: {
+            const long count = countOf(in3);
+            transformArray("Q3Point3D_To4DTransformArray", in3, out4, count, [&] {
+                return Q3Point3D_To4DTransformArray(in3.data(), matrix, out4.data(), count, in3.stride, out4.stride);
+            }, rationalOf);
+            break;
+        }
+        case 2: {
+            const long count = countOf(in4);
+            transformArray("Q3RationalPoint4D_To4DTransformArray", in4, out4, count, [&] {
+                return Q3RationalPoint4D_To4DTransformArray(in4.data(), matrix, out4.data(), count, in4.stride,
+                                                            out4.stride);
+            }, transformOf);
+            break;
+        }
+        case 3: {
+            // In place: the input array is the output array.
+            const long count = countOf(in3);
+            transformArray("Q3Point3D_To3DTransformArray", in3, in3, count, [&] {
+                return Q3Point3D_To3DTransformArray(in3.data(), matrix, in3.data(), count, in3.stride, in3.stride);
+            }, transformOf);
+            break;
+        }
+        case 4:
+            boundOfArray("Q3BoundingBox_SetFromPoints3D", nullArg ? nullptr : &box, in3,
+                         &Q3BoundingBox_SetFromPoints3D);
+            break;
+        case 5:
+            boundOfArray("Q3BoundingBox_SetFromRationalPoints4D", nullArg ? nullptr : &box, in4,
+                         &Q3BoundingBox_SetFromRationalPoints4D);
+            break;
+        case 6:
+            boundOfArray("Q3BoundingSphere_SetFromPoints3D", nullArg ? nullptr : &sphere, in3,
+                         &Q3BoundingSphere_SetFromPoints3D);
+            break;
+        case 7:
+            boundOfArray("Q3BoundingSphere_SetFromRationalPoints4D", nullArg ? nullptr : &sphere, in4,
+                         &Q3BoundingSphere_SetFromRationalPoints4D);
+            break;
+        default: {
+            // Contiguous points and weights, as many as claimed, or a count
+            // no array could hold.
+            std::vector<TQ3Point3D> points(m_in.u8() % 6);
+            std::vector<float> weights(points.size());
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                points[i] = point3();
+                weights[i] = m_in.value();
+            }
+            unsigned long n = points.size();
+            if (m_in.u8() == 255)
+                n = std::numeric_limits<unsigned long>::max() - m_in.u8();
+            TQ3Point3D result = point3();
+            MATH_INTO(&result, Q3Point3D_AffineComb(points.empty() ? nullptr : points.data(),
+                                                    weights.empty() ? nullptr : weights.data(), n,
+                                                    nullArg ? nullptr : &result));
+            break;
+        }
+        }
+    }
+    static constexpr unsigned long kLongMax = static_cast<unsigned long>(std::numeric_limits<long>::max());
+
+    // The curve tools of Q3NURBCurveTools.h, in the object form on a picked handle
+    // or the data form on curve data from the input: parameters, tolerances,
+    // indices and counts from the input (NaN, infinities, the ends and beyond), a
+    // NULL output now and then. A success hands out curves that Q3NURBCurve_New
+    // accepts (then released); a failure writes nothing; a retained curve keeps its
+    // edit index. Measuring, inversion and fitting share the curve-draw budget.
+    void curveTools()
+    {
+        const bool object = m_in.u8() & 1;
+        const TQ3Object curve = object ? pick(Kind::kCurve) : nullptr;
+        CurveBuffers c;
+        if (!object)
+            readCurve(c);
+        const TQ3NURBCurveData* data = m_in.u8() == 0 ? nullptr : &c.data;
+        const bool nullOut = m_in.u8() == 0;
+        const float a = m_in.value();
+        const float b = m_in.value();
+        const float tolerance = m_in.value();
+        const unsigned long index = m_in.index(object ? knotCount(curve) : c.knots.size());
+        const unsigned long times = m_in.index(16);
+        const std::uint8_t which = m_in.u8() % 17;
+        // Up to 31 knots or 63 points, claimed as they are or as a count past the
+        // limit (which Q3 must refuse before reading).
+        std::vector<float> knots(m_in.u8() % 32);
+        for (float& k : knots)
+            k = m_in.value();
+        std::vector<TQ3Point3D> points(std::min<std::size_t>(m_in.u8() % 64, m_in.remaining() / 3 + 1));
+        for (TQ3Point3D& p : points)
+            p = point3();
+        const bool hugeCount = m_in.u8() == 0;
+        const unsigned long claimedKnots = hugeCount ? kQ3NURBCurveToolsMaxPoints + 1 : knots.size();
+        const unsigned long claimedPoints = hugeCount ? ~0UL : points.size();
+        const unsigned long order = 1 + m_in.u8() % 17;
+        const TQ3NURBCurveParameterization how = (m_in.u8() & 1) ? kQ3NURBCurveParameterizationCentripetal
+                                                                   : kQ3NURBCurveParameterizationChordLength;
+        const TQ3Point3D target = point3();
+        if (which >= 12 && !drawAllowed())
+            return;
+        const DrawTimer timer(m_drawSeconds);
+        const bool held = object && holdsKind(curve, Kind::kCurve) && m_initialized > 0;
+        const unsigned long before = held ? editIndex(curve) : 0;
+
+        struct Outputs {
+            float f[2];
+            TQ3Point3D p;
+            TQ3Vector3D v[2];
+            TQ3NURBCurveData curves[2];
+            unsigned long n;
+        } out, untouched;
+        std::memset(&out, 0x5A, sizeof out);
+        untouched = out;
+        float* f0 = nullOut ? nullptr : &out.f[0];
+        TQ3NURBCurveData* c0 = nullOut ? nullptr : &out.curves[0];
+        TQ3NURBCurveData* c1 = (m_in.u8() & 7) == 0 ? c0 : &out.curves[1];
+#define Q3_FUZZ_TOOL(name, ...)                                                                     \
+    (object ? STATUS(Q3NURBCurve_##name(curve, __VA_ARGS__)) : STATUS(Q3NURBCurveData_##name(data, __VA_ARGS__)))
+        TQ3Status status = kQ3Failure;
+        switch (which) {
+        case 0: status = Q3_FUZZ_TOOL(GetDomain, f0, &out.f[1]); break;
+        case 1: status = Q3_FUZZ_TOOL(Evaluate, a, nullOut ? nullptr : &out.p); break;
+        case 2: status = Q3_FUZZ_TOOL(EvaluateDerivatives, a, &out.p, nullOut ? nullptr : &out.v[0], &out.v[1]); break;
+        case 3: status = Q3_FUZZ_TOOL(GetTangent, a, nullOut ? nullptr : &out.v[0]); break;
+        case 4: status = Q3_FUZZ_TOOL(GetCurvature, a, f0); break;
+        case 5: status = Q3_FUZZ_TOOL(InsertKnot, a, times, c0); break;
+        case 6: status = Q3_FUZZ_TOOL(RefineKnots, claimedKnots, knots.empty() ? nullptr : knots.data(), c0); break;
+        case 7: status = Q3_FUZZ_TOOL(RemoveKnot, index, times, tolerance, c0, &out.n); break;
+        case 8: status = Q3_FUZZ_TOOL(ElevateDegree, times, c0); break;
+        case 9: status = Q3_FUZZ_TOOL(CountBezierPieces, nullOut ? nullptr : &out.n); break;
+        case 10: status = Q3_FUZZ_TOOL(GetBezierPiece, index, c0); break;
+        case 11: status = Q3_FUZZ_TOOL(Split, a, c0, c1); break;
+        case 12: status = Q3_FUZZ_TOOL(GetArcLength, a, b, tolerance, f0); break;
+        case 13: status = Q3_FUZZ_TOOL(GetParameterAtLength, a, b, tolerance, f0); break;
+        case 14: status = Q3_FUZZ_TOOL(GetClosestPoint, &target, f0, &out.p); break;
+        case 15:
+            status = STATUS(Q3NURBCurveData_Interpolate(order, claimedPoints, points.empty() ? nullptr : points.data(),
+                                                         how, c0));
+            break;
+        default:
+            status = STATUS(Q3NURBCurveData_Approximate(order, claimedPoints, points.empty() ? nullptr : points.data(),
+                                                         times, how, c0));
+            break;
+        }
+#undef Q3_FUZZ_TOOL
+        if (status == kQ3Failure) {
+            require(sameBytes(out, untouched), "a curve tool", "failed but wrote its output");
+        } else {
+            for (TQ3NURBCurveData& made : out.curves) {
+                if (sameBytes(made, untouched.curves[0]))
+                    continue;
+                require(made.curveAttributeSet == nullptr, "a curve tool", "handed out an attribute set");
+                const TQ3Object check = OBJECT(Q3NURBCurve_New(&made));
+                require(check != nullptr, "a curve tool", "handed out a curve Q3NURBCurve_New rejects");
+                STATUS(Q3Object_Dispose(check));
+                STATUS(Q3NURBCurve_EmptyData(&made));
+            }
+        }
+        if (held)
+            require(editIndex(curve) == before, "a curve tool", "changed the retained curve's edit index");
     }
 
     TQ3CameraData readCameraData()
@@ -1681,7 +3080,11 @@ private:
         const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
         const TQ3Object view = pick(Kind::kView);
         const Held* entry = heldEntry(object);
-        if (entry != nullptr && (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine) && !drawAllowed())
+        if (entry != nullptr &&
+            (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine || isQuadric(entry->kind)) &&
+            !drawAllowed())
+            return;
+        if (entry != nullptr && entry->kind == Kind::kGroup && (!drawAllowed() || !groupIsSmall(object)))
             return;
         const DrawTimer timer(m_drawSeconds);
         switch (m_in.u8() % 3) {
@@ -1797,6 +3200,12 @@ private:
             }
             return;
         }
+        const Held* entry = heldEntry(geometry);
+        if (entry != nullptr && isQuadric(entry->kind)) {
+            require(!posted, "Q3Geometry_GetDecomposed", "posted an error but decomposed");
+            checkQuadricDecomposed(entry->kind, polyline);
+            return;
+        }
         if (holdsKind(geometry, Kind::kPolygon)) {
             // A polygon gives a TriMesh of at most numVertices - 2 triangles
             // over its own vertices.
@@ -1882,6 +3291,267 @@ private:
             --m_initialized;
     }
 
+    // ---- Groups -----------------------------------------------------------
+
+    // Reads a group without the checking macros (for the fuzzer's own
+    // bookkeeping); the posts it causes are forgotten.
+    std::vector<TQ3Object> objectsOf(TQ3Object group)
+    {
+        const Posts saved = g_posts;
+        std::vector<TQ3Object> objects;
+        TQ3GroupPosition position = nullptr;
+        if (Q3Object_IsType(group, kQ3ShapeTypeGroup) == kQ3True)
+            Q3Group_GetFirstPosition(group, &position);
+        while (position != nullptr && objects.size() <= kMaxGroupReach) {
+            TQ3Object object = nullptr;
+            if (Q3Group_GetPositionObject(group, position, &object) != kQ3Success)
+                break;
+            objects.push_back(object);
+            Q3Object_Dispose(object);
+            if (Q3Group_GetNextPosition(group, &position) != kQ3Success)
+                break;
+        }
+        g_posts = saved;
+        return objects;
+    }
+
+    // Whether a traversal of the group meets at most kMaxGroupReach objects,
+    // and at most one curve or polyline (each may draw 2^20 segments).
+    bool groupIsSmall(TQ3Object group)
+    {
+        unsigned long met = 0, lines = 0;
+        std::vector<TQ3Object> pending{group};
+        while (!pending.empty()) {
+            const TQ3Object current = pending.back();
+            pending.pop_back();
+            for (TQ3Object object : objectsOf(current)) {
+                if (++met > kMaxGroupReach)
+                    return false;
+                const Posts saved = g_posts;
+                if (Q3Object_IsType(object, kQ3ShapeTypeGroup) == kQ3True)
+                    pending.push_back(object);
+                else if (Q3Object_IsType(object, kQ3GeometryTypeNURBCurve) == kQ3True ||
+                         Q3Object_IsType(object, kQ3GeometryTypePolyLine) == kQ3True)
+                    ++lines;
+                g_posts = saved;
+                if (lines > 1)
+                    return false;
+            }
+        }
+        return true;
+    }
+
+    // A position of the group (one of its own, walked to), or a bad one.
+    TQ3GroupPosition positionIn(TQ3Object group)
+    {
+        const std::uint8_t how = m_in.u8();
+        if (how < 200 && holdsKind(group, Kind::kGroup)) {
+            TQ3GroupPosition position = nullptr;
+            const Posts saved = g_posts;
+            Q3Group_GetFirstPosition(group, &position);
+            for (int steps = m_in.u8() % 16; steps > 0 && position != nullptr; --steps) {
+                TQ3GroupPosition next = position;
+                Q3Group_GetNextPosition(group, &next);
+                if (next == nullptr)
+                    break;
+                position = next;
+            }
+            g_posts = saved;
+            if (position != nullptr && m_positions.size() < 64)
+                m_positions.push_back(position);
+            return position;
+        }
+        if (how < 230 && !m_positions.empty())
+            return m_positions[m_in.u8() % m_positions.size()]; // perhaps removed, perhaps another group's
+        if (how < 245)
+            return nullptr;
+        static unsigned char neverAPosition[32];
+        return reinterpret_cast<TQ3GroupPosition>(neverAPosition + 8 * (m_in.u8() % 4));
+    }
+
+    TQ3ObjectType typeToCount()
+    {
+        static const TQ3ObjectType kTypes[] = {kQ3ObjectTypeInvalid,  kQ3ShapeTypeGeometry,    kQ3GeometryTypePoint,
+                                               kQ3ShapeTypeTransform, kQ3ShapeTypeStyle,       kQ3SetTypeAttribute,
+                                               kQ3ShapeTypeGroup,     kQ3GroupTypeDisplay,     kQ3SharedTypeShape,
+                                               kQ3ShapeTypeLight,     kQ3ShapeTypeStateOperator};
+        const std::uint8_t which = m_in.u8();
+        return which < 250 ? kTypes[which % 11] : TQ3ObjectType(m_in.u32());
+    }
+
+    // The group's invariants seen through the API: walking forwards and
+    // backwards meets the same objects, as many as Q3Group_CountObjects says.
+    void checkGroup(TQ3Object group)
+    {
+        if (!holdsKind(group, Kind::kGroup) || Q3Object_IsType(group, kQ3ShapeTypeGroup) != kQ3True)
+            return;
+        const std::vector<TQ3Object> forward = objectsOf(group);
+        if (forward.size() > kMaxGroupReach)
+            return;
+        std::vector<TQ3Object> backward;
+        TQ3GroupPosition position = nullptr;
+        STATUS(Q3Group_GetLastPosition(group, &position));
+        while (position != nullptr) {
+            TQ3Object object = nullptr;
+            STATUS(Q3Group_GetPositionObject(group, position, &object));
+            backward.insert(backward.begin(), object);
+            STATUS(Q3Object_Dispose(object));
+            STATUS(Q3Group_GetPreviousPosition(group, &position));
+        }
+        unsigned long count = 0;
+        STATUS(Q3Group_CountObjects(group, &count));
+        require(forward == backward && count == forward.size(), "Q3Group_GetNextPosition",
+                "walking forwards and backwards and counting disagree");
+        const TQ3ObjectType type = typeToCount();
+        unsigned long ofType = 0, walked = 0;
+        if (STATUS(Q3Group_CountObjectsOfType(group, type, &ofType)) == kQ3Success) {
+            STATUS(Q3Group_GetFirstPositionOfType(group, type, &position));
+            while (position != nullptr && walked <= count) {
+                ++walked;
+                STATUS(Q3Group_GetNextPositionOfType(group, type, &position));
+            }
+            require(walked == ofType, "Q3Group_CountObjectsOfType", "disagrees with walking that type");
+        }
+    }
+
+    void groups()
+    {
+        const std::uint8_t action = m_in.u8() % 10;
+        const TQ3Object group = pick(Kind::kGroup);
+        switch (action) {
+        case 0: {
+            TQ3Object made = nullptr;
+            switch (m_in.u8() % 8) {
+            case 0: made = OBJECT(Q3Group_New()); break;
+            case 1: made = OBJECT(Q3DisplayGroup_New()); break;
+            case 2: made = OBJECT(Q3OrderedDisplayGroup_New()); break;
+            case 3: made = OBJECT(Q3IOProxyDisplayGroup_New()); break;
+            case 4: made = OBJECT(Q3LightGroup_New()); break;
+            case 5: made = OBJECT(Q3InfoGroup_New()); break;
+            case 6: made = OBJECT(Q3Push_New()); break;
+            default: made = OBJECT(Q3Pop_New()); break;
+            }
+            if (made != nullptr)
+                hold(made, Kind::kGroup);
+            break;
+        }
+        case 1: {
+            const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
+            const std::uint8_t where = m_in.u8() % 3;
+            const TQ3GroupPosition position = where == 0 ? nullptr : positionIn(group);
+            if (holdsKind(group, Kind::kGroup) && objectsOf(group).size() >= kMaxGroupSize)
+                return;
+            TQ3GroupPosition added = nullptr;
+            if (where == 0)
+                added = POINTER(Q3Group_AddObject(group, object));
+            else if (where == 1)
+                added = POINTER(Q3Group_AddObjectBefore(group, position, object));
+            else
+                added = POINTER(Q3Group_AddObjectAfter(group, position, object));
+            require(added == nullptr || object != group, "Q3Group_AddObject", "a group took itself");
+            checkGroup(group);
+            break;
+        }
+        case 2: {
+            const TQ3GroupPosition position = positionIn(group);
+            const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
+            const TQ3Status status = STATUS(Q3Group_SetPositionObject(group, position, object));
+            require(status == kQ3Failure || object != group, "Q3Group_SetPositionObject", "a group took itself");
+            checkGroup(group);
+            break;
+        }
+        case 3: {
+            // Remove positions while walking: every `stride`-th, taking the
+            // next position first (as the header says to).
+            const unsigned stride = 1 + m_in.u8() % 4;
+            if (!holdsKind(group, Kind::kGroup)) {
+                const TQ3Object removed = OBJECT(Q3Group_RemovePosition(group, positionIn(group)));
+                if (removed != nullptr)
+                    STATUS(Q3Object_Dispose(removed));
+            }
+            TQ3GroupPosition position = nullptr;
+            if (holdsKind(group, Kind::kGroup) && STATUS(Q3Group_GetFirstPosition(group, &position)) == kQ3Success)
+                for (unsigned index = 0; position != nullptr; ++index) {
+                    TQ3GroupPosition next = position;
+                    STATUS(Q3Group_GetNextPosition(group, &next));
+                    if (index % stride == 0) {
+                        const TQ3Object removed = OBJECT(Q3Group_RemovePosition(group, position));
+                        if (removed != nullptr)
+                            STATUS(Q3Object_Dispose(removed));
+                    }
+                    position = next;
+                }
+            checkGroup(group);
+            break;
+        }
+        case 4: checkGroup(group); break;
+        case 5: {
+            const TQ3ObjectType type = typeToCount();
+            if (m_in.u8() & 1)
+                STATUS(Q3Group_EmptyObjectsOfType(group, type));
+            else
+                STATUS(Q3Group_EmptyObjects(group));
+            checkGroup(group);
+            break;
+        }
+        case 6: {
+            TQ3DisplayGroupState state = 0;
+            const std::uint8_t which = m_in.u8() % 5;
+            TQ3BoundingBox box{point3(), point3(), (m_in.u8() & 1) ? kQ3True : kQ3False};
+            if (which == 0)
+                STATUS(Q3DisplayGroup_SetState(group, m_in.u8()));
+            else if (which == 1)
+                STATUS(Q3DisplayGroup_GetState(group, &state));
+            else if (which == 2)
+                STATUS(Q3DisplayGroup_SetAndUseBoundingBox(group, &box));
+            else if (which == 3)
+                STATUS(Q3DisplayGroup_GetBoundingBox(group, &box));
+            else
+                STATUS(Q3DisplayGroup_RemoveBoundingBox(group));
+            break;
+        }
+        case 7: {
+            const TQ3Object view = pick(Kind::kView);
+            if (!groupIsSmall(group) || !drawAllowed())
+                return;
+            const DrawTimer timer(m_drawSeconds);
+            if (m_in.u8() & 1)
+                STATUS(Q3DisplayGroup_Submit(group, view));
+            else
+                STATUS(Q3StateOperator_Submit(group, view));
+            break;
+        }
+        case 8: {
+            const TQ3Object view = pick(Kind::kView);
+            TQ3ComputeBounds bounds{};
+            setRaw(bounds, enumValue(2));
+            if (!groupIsSmall(group) || !drawAllowed())
+                return;
+            const DrawTimer timer(m_drawSeconds);
+            STATUS(Q3DisplayGroup_CalcAndUseBoundingBox(group, bounds, view));
+            break;
+        }
+        default: {
+            // Every position of one object, forwards or backwards.
+            const TQ3Object object = pick(Kind(m_in.u8() % kKindCount));
+            const bool forwards = m_in.u8() & 1;
+            TQ3GroupPosition position = nullptr;
+            TQ3Status status = forwards ? STATUS(Q3Group_GetFirstObjectPosition(group, object, &position))
+                                        : STATUS(Q3Group_GetLastObjectPosition(group, object, &position));
+            for (unsigned long n = 0; status == kQ3Success && position != nullptr; ++n) {
+                require(n <= kMaxGroupReach, "Q3Group_GetNextObjectPosition", "walked more positions than objects");
+                TQ3Object there = nullptr;
+                STATUS(Q3Group_GetPositionObject(group, position, &there));
+                require(there == object, "Q3Group_GetFirstObjectPosition", "a position of another object");
+                STATUS(Q3Object_Dispose(there));
+                status = forwards ? STATUS(Q3Group_GetNextObjectPosition(group, object, &position))
+                                  : STATUS(Q3Group_GetPreviousObjectPosition(group, object, &position));
+            }
+            break;
+        }
+        }
+    }
+
     void finish()
     {
         while (m_initialized == 0) {
@@ -1907,6 +3577,7 @@ private:
     int m_initialized = 0;
     std::vector<Held> m_held;
     std::vector<TQ3Object> m_stale;
+    std::vector<TQ3GroupPosition> m_positions;
     std::map<TQ3Object, CurveShape> m_curves;
     std::vector<std::unique_ptr<std::vector<unsigned char>>> m_images;
     unsigned long m_pointBudget = kPointBudget;

@@ -73,6 +73,10 @@ enum class Op : std::uint8_t {
     kMath,
     kAccessors,
     kSurfaces,
+    kStylesShadersLights,
+    kGroups,
+    kCurveTools,
+    kQuadrics,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -19,7 +19,8 @@ using q3fuzz::Op;
 
 // Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
-                           kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh };
+                           kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
+                           kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -61,6 +62,26 @@ public:
         for (std::uint8_t s : steps)
             u8(s);
         return curveTail(flags);
+    }
+
+    // curveTools(): the form (object: the first held curve; data: Listing 1), then
+    // the arguments in the order ApiFuzzer.cpp reads them; xyz are the points to fit.
+    Seed& curveTool(bool object, std::uint8_t which, float a, float b, float tolerance, std::uint8_t index,
+                    std::uint8_t times, const std::vector<float>& knots = {}, const std::vector<float>& xyz = {})
+    {
+        op(Op::kCurveTools).u8(object ? 1 : 0);
+        if (object)
+            held();
+        else
+            listing1Curve();
+        u8(1).u8(1).value(a).value(b).value(tolerance).smallIndex(index).smallIndex(times).u8(which);
+        u8(std::uint8_t(knots.size()));
+        for (float k : knots)
+            value(k);
+        u8(std::uint8_t(xyz.size() / 3));
+        for (float v : xyz)
+            value(v);
+        return u8(1).u8(3).u8(0).value(1).value(2).value(0).u8(1);  // order 4, chord length, target, two halves
     }
 
     Seed& newCurveListing1(const std::vector<Patch>& patches = {})
@@ -568,6 +589,192 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kSurfaces).u8(1).u8(2).u8(0).u8(1).u8(0).u8(1).held();
         s.startRendering().submitHeld(kPolygon).endRendering();
     }
+    // Groups: a display group holding a triangle inside an ordered group,
+    // a cycle refused, both drawn, bounded by CalcAndUse, walked, removed
+    // from while walked, duplicated; a push / pop pair met in the group.
+    {
+        Seed& s = add("groups");
+        auto vertex = [&s](float x, float y, float z) -> Seed& { return s.value(x).value(y).value(z).u8(0); };
+        s.scene();
+        s.op(Op::kSurfaces).u8(0).u8(0).u8(0).u8(1);
+        vertex(0, 0, 0);
+        vertex(1, 0, 0);
+        vertex(0, 1, 0);
+        // groups(): the action, the group, then what the action reads.
+        s.op(Op::kGroups).u8(0).held().u8(1);                     // display group (group 0)
+        s.op(Op::kGroups).u8(0).held().u8(2);                     // ordered display group (group 1)
+        s.op(Op::kGroups).u8(0).held().u8(6);                     // push (group 2)
+        s.op(Op::kGroups).u8(0).held().u8(7);                     // pop (group 3)
+        s.op(Op::kGroups).u8(1).held(0).u8(kGroup).held(2).u8(0).u8(0);   // add push
+        s.op(Op::kGroups).u8(1).held(0).u8(kTriangle).held().u8(0).u8(0); // add the triangle
+        s.op(Op::kGroups).u8(1).held(0).u8(kGroup).held(3).u8(0).u8(0);   // add pop
+        s.op(Op::kGroups).u8(1).held(1).u8(kGroup).held(0).u8(0).u8(0);   // group 0 into group 1
+        s.op(Op::kGroups).u8(1).held(1).u8(kTriangle).held().u8(0).u8(1); // triangle: before group 0
+        s.op(Op::kGroups).u8(1).held(0).u8(kGroup).held(1).u8(0).u8(0);   // cycle: refused
+        s.op(Op::kGroups).u8(1).held(0).u8(kGroup).held(0).u8(0).u8(0);   // itself: refused
+        s.startRendering().op(Op::kGroups).u8(7).held(1).held().u8(1).endRendering();
+        s.op(Op::kGroups).u8(8).held(1).held().u8(0);             // CalcAndUseBoundingBox
+        s.op(Op::kGroups).u8(6).held(1).u8(1).value(0).value(0).value(0).value(0).value(0).value(0).u8(0);
+        s.op(Op::kGroups).u8(4).held(1).u8(1);                    // walk and count geometry
+        s.op(Op::kGroups).u8(9).held(0).u8(kTriangle).held().u8(1); // positions of the triangle
+        s.op(Op::kDuplicate).u8(kGroup).held(1);
+        s.op(Op::kGroups).u8(3).held(0).u8(1).u8(0);              // remove every other while walking
+        s.op(Op::kGroups).u8(2).held(1).u8(0).u8(0).u8(kGroup).held(1).u8(0); // set: itself, refused
+        s.op(Op::kGroups).u8(5).held(1).u8(1).u8(0).u8(0);        // empty all
+    }
+    // Every style, the illumination shaders and every light kind: made,
+    // edited with good and bad values, submitted in a rendering loop.
+    // stylesShadersLights(): action 0 style (which, value, state byte, data,
+    // null byte, path: New / Submit to a view / Set on a held style), 1 type
+    // and submit calls, 2 shaders, 3 light New or SetData, 4 light setter.
+    {
+        Seed& s = add("styles-shaders-lights");
+        auto style = [&s](std::uint8_t which) -> Seed& { return s.op(Op::kStylesShadersLights).u8(0).u8(which); };
+        auto tail = [&s](std::uint8_t path) -> Seed& {
+            s.u8(1).u8(path);
+            return path == 0 ? s : s.held();
+        };
+        // New: fill edges, backfacing remove, interpolation pixel,
+        // orientation clockwise, cast shadows 5 (true), receive shadows 0.
+        const std::uint8_t values[] = {1, 1, 2, 1, 2, 0};
+        for (std::uint8_t which = 0; which < 6; ++which) {
+            style(which).u8(values[which]).u8(0);
+            tail(0);
+        }
+        style(6).u32(42).u8(0);
+        tail(0);
+        style(7).u8(5).u8(0); // pick parts face | vertex
+        tail(0);
+        style(8).u8(1).u8(3).value(0.5f); // anti-alias on, edges | filled
+        tail(0);
+        style(9).u8(1).u8(0).value(1).value(10).value(0.25f).value(1).value(1).value(0).value(0); // linear fog
+        tail(0);
+        style(10).u8(0).null(); // highlight without a set
+        tail(0);
+        // Bad values: fill 3, orientation -1, pick parts 8, quality NaN,
+        // linear fog with start == end, a highlight set that is a style.
+        style(0).u8(3).u8(0);
+        tail(0);
+        style(3).u8(224).u32(0xFFFFFFFF).u8(0);
+        tail(0);
+        style(7).u8(8).u8(0);
+        tail(0);
+        style(8).u8(1).u8(1).special(0);
+        tail(0);
+        style(9).u8(1).u8(0).value(5).value(5).value(1).value(1).value(1).value(1).value(1);
+        tail(0);
+        style(10).u8(0).held(0);
+        tail(0);
+        // Set on the first held style (the fill style): valid, then bad.
+        style(0).u8(2).u8(0);
+        tail(2);
+        style(0).u8(224).u32(1000000).u8(0);
+        tail(2);
+        style(1).u8(1).u8(0); // a backfacing value to the fill style: wrong kind
+        tail(2);
+        // Shaders: Phong, Lambert, NULL; a uv transform, a NaN one, a bad boundary.
+        for (std::uint8_t kind = 0; kind < 3; ++kind)
+            s.op(Op::kStylesShadersLights).u8(2).u8(0).u8(kind);
+        s.op(Op::kStylesShadersLights).u8(2).u8(1).held().u8(1);
+        for (int i = 0; i < 9; ++i)
+            s.u8(1).value(i % 4 == 0 ? 2.0f : 0.0f);
+        s.u8(1);
+        s.op(Op::kStylesShadersLights).u8(2).u8(1).held(1).u8(1);
+        for (int i = 0; i < 9; ++i)
+            (i == 4 ? s.u8(1).special(1) : s.u8(0));
+        s.u8(1);
+        s.op(Op::kStylesShadersLights).u8(2).u8(2).held().u8(1).u8(1).u8(1);  // v clamp
+        s.op(Op::kStylesShadersLights).u8(2).u8(2).held().u8(1).u8(0).u8(2);  // u 2: bad
+        s.op(Op::kStylesShadersLights).u8(2).u8(3).held().u8(1).u8(1);
+        // Lights: each kind made with good values (a spot light with hot
+        // 0.25 and outer 0.5), then one made with a zero direction. light()
+        // writes the values up to the null byte; then come the light handle
+        // and New / SetData (action 3) or the setter (action 4).
+        auto light = [&s](std::uint8_t action, std::uint8_t kind, float hot, float outer, float dy) -> Seed& {
+            s.op(Op::kStylesShadersLights).u8(action).u8(kind);
+            s.u8(1).value(0.75f).value(1).value(0.5f).value(0.25f).u8(0).u8(1);
+            s.value(0).value(5).value(0).value(0).value(dy).value(0).value(hot).value(outer).u8(3);
+            return s.u8(1);
+        };
+        for (std::uint8_t kind = 0; kind < 4; ++kind)
+            light(3, kind, 0.25f, 0.5f, -1).held().u8(1);
+        light(3, 1, 0.25f, 0.5f, 0).held().u8(1);
+        // SetData of the spot light with outer below hot; then its hot angle
+        // set above its outer angle, the outer angle widened to 1.5, and a
+        // NaN outer angle.
+        light(3, 3, 0.5f, 0.25f, -1).held(3).u8(0);
+        light(4, 3, 1, 1, -1).held(3).u8(13);
+        light(4, 3, 1, 1.5f, -1).held(3).u8(14);
+        light(4, 3, 1, kNaN, -1).held(3).u8(14);
+        // Everything submitted in a rendering loop.
+        s.scene().startRendering();
+        s.op(Op::kStylesShadersLights).u8(1).u8(0).held().held().u8(1).u8(3);  // Q3Style_Submit
+        s.op(Op::kStylesShadersLights).u8(1).u8(1).held().held().u8(1).u8(4);  // Q3Shader_Submit
+        style(2).u8(0).u8(0);
+        tail(1);
+        style(9).u8(1).u8(2).value(0).value(0).value(0.5f).value(0).value(0).value(0).value(1);
+        tail(1);
+        s.submitHeld(kOtherStyle, 1, 1).submitHeld(kLight, 0, 1).endRendering();
+        s.op(Op::kDuplicate).u8(kOtherStyle).held(10).op(Op::kDuplicate).u8(kLight).held(3);
+    // Every quadric and solid: made (a box with face sets), drawn, bounded,
+    // decomposed under each subdivision method, edited field by field at the
+    // edges (box face 5, 6 and ULONG_MAX, a NaN ratio, unknown caps bits),
+    // and SetData with a NaN; three inputs, as each may draw 12 times.
+    auto newQuadrics = [](Seed& s) -> Seed& {
+        // quadrics(): type, action, non-null byte; New and SetData read the
+        // box's face byte, the patches, the caps, the sets byte.
+        for (std::uint8_t type = 0; type < 7; ++type) {
+            s.op(Op::kQuadrics).u8(type).u8(0).u8(1);
+            if (type == 0)
+                s.u8(1).u8(0).u8(0).u8(0).u8(0).u8(0).u8(0);
+            s.u8(0);
+            if (type == 1 || type == 2 || type == 5 || type == 6)
+                s.u8(7);
+            s.u8(0);
+        }
+        return s;
+    };
+    {
+        Seed& s = newQuadrics(add("quadrics-draw")).scene(2).startRendering();
+        for (std::uint8_t kind = kBox; kind <= kTorus; ++kind)
+            s.submitHeld(Kind(kind));
+        s.endRendering().startBox();
+        for (std::uint8_t kind = kBox; kind <= kEllipse; ++kind)
+            s.submitHeld(Kind(kind));
+        s.endBox();
+    }
+    {
+        Seed& s = newQuadrics(add("quadrics-decompose")).scene(2);
+        s.startRendering().submitStyle(kWorld, 0.2f);
+        for (std::uint8_t type = 0; type < 7; ++type)
+            s.op(Op::kQuadrics).u8(type).u8(5).u8(1).held().held();
+        s.endRendering().startRendering().submitStyle(kScreen, 8.0f);
+        for (std::uint8_t type = 1; type < 6; ++type)
+            s.op(Op::kQuadrics).u8(type).u8(5).u8(1).held().held();
+        s.endRendering();
+    }
+    {
+        Seed& s = newQuadrics(add("quadrics-edits"));
+        // quadricField(): the shape, null byte, set byte, field, slot, a
+        // point, a ratio, caps, the set byte, a face index.
+        auto field = [&s](std::uint8_t type, std::uint8_t which, std::uint8_t slot) -> Seed& {
+            return s.op(Op::kQuadrics).u8(type).u8(4).u8(1).held().u8(1).u8(1).u8(which).u8(slot);
+        };
+        field(0, 2, 0).value(0).value(0).value(0).value(1).u8(0).u8(0).smallIndex(5);
+        field(0, 2, 0).value(0).value(0).value(0).value(1).u8(0).u8(0).smallIndex(6);
+        field(0, 2, 0).value(0).value(0).value(0).value(1).u8(0).u8(0).rawIndex(0xFFFFFFFFu);
+        field(0, 1, 1).value(0).value(2).value(0).value(1).u8(0).u8(0).smallIndex(0);  // major = orientation
+        field(1, 0, 0).special(0).value(0).value(0).value(1).u8(0).u8(0).smallIndex(0); // NaN origin
+        field(1, 3, 0).value(0).value(0).value(0).value(1).u8(224).u32(0x100).u8(0).smallIndex(0);
+        field(2, 3, 0).value(0).value(0).value(0).value(1).u8(3).u8(0).smallIndex(0);
+        field(6, 3, 0).value(0).value(0).value(0).special(0).u8(0).u8(0).smallIndex(0);
+        field(6, 3, 0).value(0).value(0).value(0).value(0.25f).u8(0).u8(0).smallIndex(0);
+        field(3, 1, 2).value(0).value(0).value(3).value(1).u8(0).u8(0).smallIndex(0);
+        // Cone SetData with a NaN vMax (float 15), then a partial torus.
+        s.op(Op::kQuadrics).u8(1).u8(1).u8(1).u8(1).u8(15).special(0).u8(7).u8(0).held();
+        s.op(Op::kQuadrics).u8(6).u8(1).u8(1).u8(1).u8(14).value(0.75f).u8(7).u8(0).held();
+        s.scene(2).startRendering().submitHeld(kTorus).submitHeld(kCone).endRendering();
+    }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {
         Seed& s = add("initialize-exit");
@@ -622,6 +829,26 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kSubmitCurveImmediate).listing1Curve().held().u8(0);
         s.op(Op::kSubmitCurveImmediate).listing1Curve().stray().u8(1);
         s.endRendering();
+    }
+    // The curve tools (Q3NURBCurveTools.h) on a retained curve and on data: every
+    // call once with good arguments, then NaN, a parameter outside the domain, an
+    // index past the end and a count past the limit.
+    {
+        Seed& s = add("curve-tools");
+        s.newCurveListing1();
+        s.curveTool(true, 0, 0, 0, 0, 0, 0).curveTool(true, 1, 0.5f, 0, 0, 0, 0);
+        s.curveTool(true, 2, 0.25f, 0, 0, 0, 0).curveTool(true, 3, 0.75f, 0, 0, 0, 0);
+        s.curveTool(true, 4, 0.5f, 0, 0, 0, 0).curveTool(true, 5, 0.5f, 0, 0, 0, 2);
+        s.curveTool(true, 6, 0, 0, 0, 0, 0, {0.25f, 0.75f, 0.5f}).curveTool(true, 7, 0, 0, 0.01f, 4, 1);
+        s.curveTool(true, 8, 0, 0, 0, 0, 3).curveTool(true, 9, 0, 0, 0, 0, 0);
+        s.curveTool(true, 10, 0, 0, 0, 0, 0).curveTool(true, 11, 0.5f, 0, 0, 0, 0);
+        s.curveTool(true, 12, 0, 1, 0.001f, 0, 0).curveTool(true, 13, 0, 1.5f, 0.001f, 0, 0);
+        s.curveTool(true, 14, 0, 0, 0, 0, 0);
+        const std::vector<float> zigzag{0, 0, 0, 1, 2, 0, 2, 0, 0, 3, 2, 0, 4, 0, 1, 5, 2, 0};
+        s.curveTool(false, 15, 0, 0, 0, 0, 0, {}, zigzag).curveTool(false, 16, 0, 0, 0, 0, 5, {}, zigzag);
+        s.curveTool(false, 1, kNaN, 0, 0, 0, 0).curveTool(false, 5, 1.0f, 0, 0, 0, 1);
+        s.curveTool(false, 10, 0, 0, 0, 9, 0).curveTool(false, 12, 0, 1, -1.0f, 0, 0);
+        s.curveTool(false, 8, 0, 0, 0, 0, 13).curveTool(false, 12, 0, 0.9f, 1e-30f, 0, 0);
     }
     return all;
 }

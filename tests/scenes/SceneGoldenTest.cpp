@@ -145,4 +145,40 @@ TEST_F(ScenePixels, ThePolylineRunsFromRedToBlue)
     EXPECT_GT(rightBlue, 2 * rightRed);
 }
 
+int countNear(const q3test::RgbaImage& image, int r, int g, int b)
+{
+    int count = 0;
+    for (int y = 0; y < Q3SCENE_HEIGHT; ++y)
+        for (int x = 0; x < Q3SCENE_WIDTH; ++x) {
+            const Pixel p = at(image, x, y);
+            count += std::abs(p.r - r) <= 8 && std::abs(p.g - g) <= 8 && std::abs(p.b - b) <= 8;
+        }
+    return count;
+}
+
+// The two boxes between them show all six face colours, each on a sizeable
+// face (the colours of scenes.c's box_face_sets, in 0..255).
+TEST_F(ScenePixels, TheBoxesShowAllSixFaceColours)
+{
+    const Q3Scene* scene = q3scene_find("box_faces");
+    ASSERT_NE(scene, nullptr);
+    const q3test::RgbaImage image = render(scene);
+    const int faces[6][3] = {{230, 51, 51},  {51, 204, 77},  {51, 102, 242},
+                             {242, 217, 51}, {51, 217, 230}, {217, 77, 217}};
+    for (const auto& face : faces)
+        EXPECT_GT(countNear(image, face[0], face[1], face[2]), 400) << face[0] << " " << face[1] << " " << face[2];
+}
+
+// Seen from below, the cones' bottoms (blue) and the cut's faces (green)
+// show besides their sides (orange).
+TEST_F(ScenePixels, TheConesShowTheirBottomsAndTheCut)
+{
+    const Q3Scene* scene = q3scene_find("cone_bottom");
+    ASSERT_NE(scene, nullptr);
+    const q3test::RgbaImage image = render(scene);
+    EXPECT_GT(countNear(image, 242, 140, 38), 2000);
+    EXPECT_GT(countNear(image, 51, 102, 242), 2000);
+    EXPECT_GT(countNear(image, 64, 204, 77), 800);
+}
+
 } // namespace

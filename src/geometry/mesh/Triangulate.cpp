@@ -15,13 +15,15 @@
 //     nearest edge hit, its endpoint with the larger x, unless a reflex
 //     vertex inside the triangle M, hit point, P sees M at a smaller angle).
 //     Holes are bridged from the rightmost one leftwards, so every bridge
-//     is made into the outline as it already is.
+//     is made into the outline as it already is; when P is the end of an
+//     earlier bridge (and so in the list twice), the copy whose wedge faces
+//     M is used.
 //  4. The outline, now one simple counterclockwise polygon, is clipped ear
 //     by ear: a convex vertex whose triangle holds no reflex vertex (only
 //     reflex vertices can lie inside an ear of a simple polygon) is cut off.
 //     Reflex vertices sit in a uniform grid, so an ear test looks at the
-//     few near the ear. A vertex on a straight run is dropped without a
-//     triangle. If a whole lap finds no ear (the input was not simple), the
+//     few near the ear. Vertices on straight runs and spike tips are
+//     dropped without a triangle, all of them before the first ear. If a whole lap finds no ear (the input was not simple), the
 //     first convex vertex is cut anyway, so the loop always ends.
 
 #include "geometry/mesh/Triangulate.h"
@@ -102,7 +104,7 @@ public:
                 m = i;
         }
         const glm::dvec2 pm = at(hole[m]);
-        const std::uint32_t visible = visibleVertex(outline, pm);
+        const std::uint32_t visible = copyFacing(outline, visibleVertex(outline, pm), pm);
         if (visible == kNone)
             return; // not inside the outline after all: the hole is dropped
 
@@ -130,6 +132,24 @@ public:
             ++remaining;
             node = m_nodes[node].next;
         } while (node != start);
+        // Straight runs and spikes (vertices where the outline turns by 0
+        // or 180 degrees) go before any ear is cut: a spike's tip left in
+        // place can become the corner of an ear outside the polygon.
+        for (std::size_t unchanged = 0; remaining > 3 && unchanged < remaining;) {
+            const Node& v = m_nodes[node];
+            if (cross(at(m_nodes[v.prev].point), at(v.point), at(m_nodes[v.next].point)) != 0.0) {
+                node = v.next;
+                ++unchanged;
+                continue;
+            }
+            const std::uint32_t prev = v.prev;
+            if (node == start)
+                start = prev;
+            removeNode(node);
+            --remaining;
+            node = prev;
+            unchanged = 0;
+        }
         for (std::uint32_t i = start;; i = m_nodes[i].next) {
             updateReflex(i);
             if (m_nodes[i].next == start)
@@ -263,6 +283,38 @@ private:
     }
     int cellX(double x) const { return cell(x, m_low.x, m_scale.x); }
     int cellY(double y) const { return cell(y, m_low.y, m_scale.y); }
+
+    // Whether the segment from node i towards p starts inside the polygon:
+    // p lies in the interior wedge between i's two sides (the left of both
+    // at a convex vertex, of either at a reflex one).
+    bool locallyInside(std::uint32_t i, const glm::dvec2& p) const
+    {
+        const glm::dvec2& a = at(m_nodes[m_nodes[i].prev].point);
+        const glm::dvec2& v = at(m_nodes[i].point);
+        const glm::dvec2& b = at(m_nodes[m_nodes[i].next].point);
+        if (cross(a, v, b) >= 0.0)
+            return cross(v, b, p) > 0.0 && cross(a, v, p) > 0.0;
+        return cross(v, b, p) > 0.0 || cross(a, v, p) > 0.0;
+    }
+
+    // A vertex an earlier bridge ended at appears more than once in the
+    // list, each copy owning one wedge of the angle there; a new bridge to
+    // it must start from the copy whose wedge faces the hole, or it would
+    // cross the earlier bridge. Returns that copy of
+    // `visible` (itself when it is the only one, or when none faces p).
+    std::uint32_t copyFacing(std::uint32_t outline, std::uint32_t visible, const glm::dvec2& p) const
+    {
+        if (visible == kNone || locallyInside(visible, p))
+            return visible;
+        const glm::dvec2 point = at(m_nodes[visible].point);
+        for (std::uint32_t i = outline;; i = m_nodes[i].next) {
+            if (i != visible && at(m_nodes[i].point) == point && locallyInside(i, p))
+                return i;
+            if (m_nodes[i].next == outline)
+                break;
+        }
+        return visible;
+    }
 
     // The outline vertex that the hole vertex at pm is joined to, or kNone.
     std::uint32_t visibleVertex(std::uint32_t outline, const glm::dvec2& pm) const

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "QD3DStyle.h"
+#include "api/Entry.h"
+#include "style/Style.h"
+#include "view/View.h"
+
+using namespace q3;
+using q3::api::guard;
+using q3::api::guardStatus;
+
+extern "C" {
+
+TQ3ObjectType Q3Style_GetType(TQ3StyleObject style)
+{
+    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
+                 [&] { return lookup<Style>(style, "style").leafType(); });
+}
+
+TQ3Status Q3Style_Submit(TQ3StyleObject style, TQ3ViewObject view)
+{
+    return guardStatus(__func__, [&] {
+        const Style& source = lookup<Style>(style, "style");
+        lookup<View>(view, "view").submit(source);
+    });
+}
+
+} // extern "C"

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/Disk.h"
+
+#include "geometry/DataGeometryImpl.h"
+
+namespace q3 {
+
+const ClassInfo kDiskClass{kQ3GeometryTypeDisk, &kGeometryClass, "disk"};
+
+namespace layout {
+template <> struct Describe<TQ3DiskData> {
+    static auto fields()
+    {
+        using D = TQ3DiskData;
+        return std::make_tuple(value("origin", &D::origin), value("majorRadius", &D::majorRadius),
+                               value("minorRadius", &D::minorRadius), value("uMin", &D::uMin), value("uMax", &D::uMax),
+                               value("vMin", &D::vMin), value("vMax", &D::vMax),
+                               handle<AttributeSet>("diskAttributeSet", &D::diskAttributeSet));
+    }
+};
+} // namespace layout
+
+template class DataGeometry<Disk, TQ3DiskData>;
+
+void Disk::check(const TQ3DiskData& d)
+{
+    requireFiniteField(d.origin, "origin");
+    requireFiniteField(d.majorRadius, "majorRadius");
+    requireFiniteField(d.minorRadius, "minorRadius");
+    requireFiniteField(d.uMin, "uMin");
+    requireFiniteField(d.uMax, "uMax");
+    requireFiniteField(d.vMin, "vMin");
+    requireFiniteField(d.vMax, "vMax");
+    requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius});
+    requireUnitParameter(d.uMin, "uMin");
+    requireUnitParameter(d.uMax, "uMax");
+    requireUnitParameter(d.vMin, "vMin");
+    requireUnitParameter(d.vMax, "vMax");
+    requireOrdered(d.vMin, d.vMax, "vMin", "vMax");
+    requireIndependent(d.majorRadius, d.minorRadius, "majorRadius and minorRadius");
+    requireNonEmptyAngle(d.uMin, d.uMax, "uMin", "uMax");
+    requireNonEmpty(d.vMin, d.vMax, "vMin", "vMax");
+}
+
+quadric::Patches Disk::patches(const TQ3DiskData& d)
+{
+    return quadric::diskPatches(quadric::DiskShape{toVec3(d.origin), toVec3(d.majorRadius), toVec3(d.minorRadius),
+                                                   quadric::angularRange(d.uMin, d.uMax),
+                                                   quadric::Range{d.vMin, d.vMax}});
+}
+
+void Disk::boundPoints(const TQ3DiskData& d, std::vector<glm::dvec3>& points)
+{
+    ellipseBoxCorners(toVec3(d.origin), toVec3(d.majorRadius), toVec3(d.minorRadius), points);
+}
+
+} // namespace q3

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/Ellipse.h"
+
+#include "geometry/DataGeometryImpl.h"
+
+namespace q3 {
+
+const ClassInfo kEllipseClass{kQ3GeometryTypeEllipse, &kGeometryClass, "ellipse"};
+
+namespace layout {
+template <> struct Describe<TQ3EllipseData> {
+    static auto fields()
+    {
+        using D = TQ3EllipseData;
+        return std::make_tuple(value("origin", &D::origin), value("majorRadius", &D::majorRadius),
+                               value("minorRadius", &D::minorRadius), value("uMin", &D::uMin), value("uMax", &D::uMax),
+                               handle<AttributeSet>("ellipseAttributeSet", &D::ellipseAttributeSet));
+    }
+};
+} // namespace layout
+
+template class DataGeometry<Ellipse, TQ3EllipseData>;
+
+void Ellipse::check(const TQ3EllipseData& d)
+{
+    requireFiniteField(d.origin, "origin");
+    requireFiniteField(d.majorRadius, "majorRadius");
+    requireFiniteField(d.minorRadius, "minorRadius");
+    requireFiniteField(d.uMin, "uMin");
+    requireFiniteField(d.uMax, "uMax");
+    requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius});
+    requireUnitParameter(d.uMin, "uMin");
+    requireUnitParameter(d.uMax, "uMax");
+    requireIndependent(d.majorRadius, d.minorRadius, "majorRadius and minorRadius");
+    requireNonEmptyAngle(d.uMin, d.uMax, "uMin", "uMax");
+}
+
+void Ellipse::decompose(const DecomposeContext& context, PrimitiveSink& sink) const
+{
+    const SubdivisionMeasure measure = context.subdivisionMeasure();
+    std::string report;
+    withMesh(
+        measure.key,
+        [&](Mesh& mesh) {
+            const TQ3EllipseData& d = data();
+            const quadric::EllipseShape shape{toVec3(d.origin), toVec3(d.majorRadius), toVec3(d.minorRadius),
+                                              quadric::angularRange(d.uMin, d.uMax)};
+            const quadric::Polyline line = quadric::tessellateCurve(
+                [&](double u) { return quadric::ellipsePoint(shape, u); }, shape.u.min, shape.u.max, shape.u.full(),
+                subdivisionFor(measure, 0), limits::kMaxSegmentsPerCurve);
+            for (const quadric::Vec3& p : line.points)
+                mesh.addVertex(TQ3Point3D{float(p.x), float(p.y), float(p.z)}, VertexAttributes{});
+            mesh.addStrip(0, std::uint32_t(line.points.size()));
+            m_report.clear();
+            if (line.reduced)
+                m_report = "the ellipse's subdivision with c1 = " + std::to_string(measure.c1) +
+                           " would need more than kQ3SubdivisionMaxSegmentsPerCurve (" +
+                           std::to_string(limits::kMaxSegmentsPerCurve) + ") segments; " +
+                           (measure.method == kQ3SubdivisionMethodConstant
+                                ? "fewer are used"
+                                : "segments up to " + std::to_string(line.effective) + " long are used");
+        },
+        [&](const Mesh& mesh) {
+            report = m_report;
+            sink.draw(mesh.view(), attributeSet());
+        });
+    if (!report.empty())
+        errors::postWarning(kQ3WarningParameterOutOfRange, report);
+}
+
+void Ellipse::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const
+{
+    ellipseBoxCorners(toVec3(data().origin), toVec3(data().majorRadius), toVec3(data().minorRadius), points);
+}
+
+} // namespace q3

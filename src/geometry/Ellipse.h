@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3DGeometry.h"
+#include "geometry/Quadric.h"
+
+namespace q3 {
+
+extern const ClassInfo kEllipseClass;
+
+/// An ellipse (a curve), possibly partial in u. Invariant: its data obeys
+/// the TQ3EllipseData rules of QD3DGeometry.h.
+class Ellipse final : public FieldGeometry<Ellipse, TQ3EllipseData> {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3GeometryTypeEllipse;
+    static constexpr const char* kName = "ellipse";
+    static constexpr const char* kDataName = "ellipseData";
+    static constexpr TQ3AttributeSet TQ3EllipseData::*kOwnSet = &TQ3EllipseData::ellipseAttributeSet;
+
+    /// The TQ3EllipseData rules of QD3DGeometry.h, in their order.
+    static void check(const TQ3EllipseData& data);
+
+    using FieldGeometry::FieldGeometry;
+
+    const ClassInfo& classInfo() const override { return kEllipseClass; }
+    /// One line strip from uMin to uMax under the view's subdivision, as a
+    /// curve (quadric::tessellateCurve): constant c1 segments per turn, or
+    /// segments of at most c1 world units or pixels; at most
+    /// kQ3SubdivisionMaxSegmentsPerCurve (then kQ3WarningParameterOutOfRange).
+    void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
+    /// The box of the whole ellipse.
+    void bound(const DecomposeContext& context, std::vector<glm::dvec3>& points) const override;
+
+private:
+    mutable std::string m_report; // under the mesh lock, as QuadricGeometry's
+};
+
+} // namespace q3

@@ -1,0 +1,293 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Lighting in GLSL 1.20 (the compatibility profile's built-in attributes:
+// gl_Vertex local position, gl_Normal local normal, gl_Color diffuse
+// colour; gl_ModelViewProjectionMatrix local to clip). The equations are
+// the QD3D Book's ("Illumination Models"), written once in shade():
+//
+//   Lambert:  I = ka Ia Od + sum_i f_i Ii Od (N . Li)
+//   Phong:    I = Lambert + sum_i f_i Ii Os (Ri . V)^n
+//
+// with Ia the sum of the ambient lights, Ii a light's colour times its
+// brightness, f_i its attenuation (1, 1/d or 1/d^2) times, for a spot light,
+// its fall-off between the hot angle (full) and the outer angle (none):
+// linear 1 - t, exponential (e^(1-t) - 1) / (e - 1), cosine cos(t pi/2),
+// with t the angle's place between the two (none: full up to the outer
+// angle). Lights behind the surface (N . Li <= 0) add nothing. Vertex
+// interpolation evaluates shade() per vertex, pixel interpolation per
+// fragment from interpolated normals; back faces use the reversed normal
+// when asked (the backfacing style kQ3BackfacingStyleFlip).
+
+#include "render/LitProgram.h"
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace q3 {
+
+namespace {
+
+constexpr const char* kShade = R"(
+#version 120
+#define MAX_LIGHTS 32
+uniform int lightCount;
+uniform int lightKind[MAX_LIGHTS];
+uniform vec3 lightColor[MAX_LIGHTS];
+uniform vec3 lightPosition[MAX_LIGHTS];
+uniform vec3 lightDirection[MAX_LIGHTS];
+uniform int lightAttenuation[MAX_LIGHTS];
+uniform float lightHot[MAX_LIGHTS];
+uniform float lightOuter[MAX_LIGHTS];
+uniform int lightFallOff[MAX_LIGHTS];
+uniform vec3 ambientLight;
+uniform vec3 eye;
+uniform int orthographic;
+uniform vec3 viewDirection;
+uniform int illumination;
+uniform float ambientCoefficient;
+uniform vec3 specularColor;
+uniform float specularControl;
+uniform mat4 localToWorld;
+uniform mat3 normalToWorld;
+uniform int perPixel;
+uniform int flipBack;
+varying vec3 worldPosition;
+varying vec3 worldNormal;
+
+vec3 shade(vec3 p, vec3 n, vec3 od)
+{
+    vec3 result = ambientCoefficient * ambientLight * od;
+    vec3 toEye = orthographic == 1 ? -viewDirection : normalize(eye - p);
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= lightCount)
+            break;
+        vec3 l;
+        float f = 1.0;
+        if (lightKind[i] == 1) {
+            l = -lightDirection[i];
+        } else {
+            vec3 d = lightPosition[i] - p;
+            float distance = length(d);
+            if (distance <= 0.0)
+                continue;
+            l = d / distance;
+            if (lightAttenuation[i] == 1)
+                f = 1.0 / distance;
+            else if (lightAttenuation[i] == 2)
+                f = 1.0 / (distance * distance);
+            if (lightKind[i] == 3) {
+                float angle = acos(clamp(dot(-l, lightDirection[i]), -1.0, 1.0));
+                if (angle > lightOuter[i])
+                    continue;
+                if (angle > lightHot[i]) {
+                    float t = (angle - lightHot[i]) / (lightOuter[i] - lightHot[i]);
+                    if (lightFallOff[i] == 1)
+                        f *= 1.0 - t;
+                    else if (lightFallOff[i] == 2)
+                        f *= (exp(1.0 - t) - 1.0) / (exp(1.0) - 1.0);
+                    else if (lightFallOff[i] == 3)
+                        f *= cos(t * 1.5707963267948966);
+                }
+            }
+        }
+        float nl = dot(n, l);
+        if (nl <= 0.0)
+            continue;
+        result += f * nl * lightColor[i] * od;
+        if (illumination == 2) {
+            vec3 r = 2.0 * nl * n - l;
+            float rv = dot(r, toEye);
+            if (rv > 0.0)
+                result += f * lightColor[i] * specularColor * pow(rv, specularControl);
+        }
+    }
+    return result;
+}
+)";
+
+constexpr const char* kVertex = R"(
+void main()
+{
+    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+    vec4 w = localToWorld * gl_Vertex;
+    worldPosition = w.xyz / w.w;
+    worldNormal = normalToWorld * gl_Normal;
+    if (perPixel == 1) {
+        gl_FrontColor = gl_Color;
+        gl_BackColor = gl_Color;
+    } else {
+        vec3 n = normalize(worldNormal);
+        gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+        gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
+    }
+}
+)";
+
+constexpr const char* kFragment = R"(
+void main()
+{
+    if (perPixel == 1) {
+        vec3 n = normalize(worldNormal);
+        if (flipBack == 1 && !gl_FrontFacing)
+            n = -n;
+        gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+    } else {
+        gl_FragColor = gl_Color;
+    }
+}
+)";
+
+GLuint compile(GLenum kind, const char* body, std::string& error)
+{
+    const GLuint shader = glCreateShader(kind);
+    const char* sources[2] = {kShade, body};
+    glShaderSource(shader, 2, sources, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        char log[2048] = {0};
+        glGetShaderInfoLog(shader, sizeof log - 1, nullptr, log);
+        error = std::string("compiling the lighting shader failed: ") + log;
+        glDeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
+} // namespace
+
+bool LitProgram::build(std::string& error)
+{
+    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertex, error);
+    if (vertex == 0)
+        return false;
+    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragment, error);
+    if (fragment == 0) {
+        glDeleteShader(vertex);
+        return false;
+    }
+    m_program = glCreateProgram();
+    glAttachShader(m_program, vertex);
+    glAttachShader(m_program, fragment);
+    glLinkProgram(m_program);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(m_program, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        char log[2048] = {0};
+        glGetProgramInfoLog(m_program, sizeof log - 1, nullptr, log);
+        error = std::string("linking the lighting shader failed: ") + log;
+        release();
+        return false;
+    }
+    const auto at = [this](const char* name) { return glGetUniformLocation(m_program, name); };
+    m_lightCount = at("lightCount");
+    m_lightKind = at("lightKind");
+    m_lightColor = at("lightColor");
+    m_lightPosition = at("lightPosition");
+    m_lightDirection = at("lightDirection");
+    m_lightAttenuation = at("lightAttenuation");
+    m_lightHot = at("lightHot");
+    m_lightOuter = at("lightOuter");
+    m_lightFallOff = at("lightFallOff");
+    m_ambientLight = at("ambientLight");
+    m_eye = at("eye");
+    m_orthographic = at("orthographic");
+    m_viewDirection = at("viewDirection");
+    m_illumination = at("illumination");
+    m_ambientCoefficient = at("ambientCoefficient");
+    m_specularColor = at("specularColor");
+    m_specularControl = at("specularControl");
+    m_localToWorld = at("localToWorld");
+    m_normalToWorld = at("normalToWorld");
+    m_perPixel = at("perPixel");
+    m_flipBack = at("flipBack");
+    return true;
+}
+
+void LitProgram::release()
+{
+    if (m_program != 0)
+        glDeleteProgram(m_program);
+    m_program = 0;
+}
+
+void LitProgram::use() const
+{
+    glUseProgram(m_program);
+}
+
+void LitProgram::setLighting(const LightingSetup& lighting) const
+{
+    // Ambient lights add up into one term; the others are listed.
+    float ambient[3] = {0.0f, 0.0f, 0.0f};
+    std::vector<GLint> kind, attenuation, fallOff;
+    std::vector<float> color, position, direction, hot, outer;
+    for (const RenderLight& light : lighting.lights) {
+        if (light.kind == RenderLight::Kind::kAmbient) {
+            for (int k = 0; k < 3; ++k)
+                ambient[k] += light.color[k];
+            continue;
+        }
+        kind.push_back(light.kind == RenderLight::Kind::kDirectional ? 1
+                       : light.kind == RenderLight::Kind::kPoint     ? 2
+                                                                     : 3);
+        color.insert(color.end(), light.color, light.color + 3);
+        position.insert(position.end(), light.position, light.position + 3);
+        direction.insert(direction.end(), light.direction, light.direction + 3);
+        attenuation.push_back(light.attenuation);
+        hot.push_back(light.hotAngle);
+        outer.push_back(light.outerAngle);
+        fallOff.push_back(light.fallOff);
+    }
+    const GLsizei count = GLsizei(kind.size());
+    glUniform1i(m_lightCount, count);
+    if (count > 0) {
+        glUniform1iv(m_lightKind, count, kind.data());
+        glUniform3fv(m_lightColor, count, color.data());
+        glUniform3fv(m_lightPosition, count, position.data());
+        glUniform3fv(m_lightDirection, count, direction.data());
+        glUniform1iv(m_lightAttenuation, count, attenuation.data());
+        glUniform1fv(m_lightHot, count, hot.data());
+        glUniform1fv(m_lightOuter, count, outer.data());
+        glUniform1iv(m_lightFallOff, count, fallOff.data());
+    }
+    glUniform3fv(m_ambientLight, 1, ambient);
+    glUniform3fv(m_eye, 1, lighting.eye);
+    glUniform1i(m_orthographic, lighting.orthographic ? 1 : 0);
+    glUniform3fv(m_viewDirection, 1, lighting.viewDirection);
+}
+
+void LitProgram::setShading(const SurfaceShading& shading) const
+{
+    // localToWorld is in QuickDraw 3D's row-vector layout, which is the
+    // column-major layout of the column-vector matrix GLSL multiplies with.
+    glUniformMatrix4fv(m_localToWorld, 1, GL_FALSE, shading.localToWorld);
+    glm::dmat3 linear;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            linear[i][j] = shading.localToWorld[4 * i + j];
+    // Normals go by the inverse transpose; a singular transform (a zero
+    // scale) keeps them as they are rather than producing infinities.
+    const double determinant = glm::determinant(linear);
+    const glm::dmat3 normals =
+        determinant != 0.0 && std::isfinite(determinant) ? glm::transpose(glm::inverse(linear)) : linear;
+    float normalMatrix[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            normalMatrix[3 * i + j] = float(normals[i][j]);
+    glUniformMatrix3fv(m_normalToWorld, 1, GL_FALSE, normalMatrix);
+    glUniform1i(m_illumination, shading.illumination);
+    glUniform1f(m_ambientCoefficient, shading.ambientCoefficient);
+    glUniform3fv(m_specularColor, 1, shading.specularColor);
+    glUniform1f(m_specularControl, shading.specularControl);
+    glUniform1i(m_perPixel, shading.interpolation == 2 ? 1 : 0);
+    glUniform1i(m_flipBack, shading.flipBackFaces ? 1 : 0);
+}
+
+} // namespace q3

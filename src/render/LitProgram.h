@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// The GLSL program that lights triangles as QuickDraw 3D's illumination
+// shaders do (OffscreenRenderer.h, SurfaceShading). Internal to the OSMesa
+// backend: it needs a current OpenGL context.
+
+#include "render/OffscreenRenderer.h"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <string>
+
+namespace q3 {
+
+class LitProgram {
+public:
+    /// Compiles and links in the current context; false (with the log in
+    /// error) if the driver refuses it.
+    bool build(std::string& error);
+    /// Deletes the program in the current context (when it is destroyed with
+    /// its context, forgets it).
+    void release();
+    void forget() { m_program = 0; }
+    bool built() const { return m_program != 0; }
+
+    void use() const;
+    void setLighting(const LightingSetup& lighting) const;
+    void setShading(const SurfaceShading& shading) const;
+
+private:
+    GLuint m_program = 0;
+    GLint m_lightCount = -1, m_lightKind = -1, m_lightColor = -1, m_lightPosition = -1, m_lightDirection = -1;
+    GLint m_lightAttenuation = -1, m_lightHot = -1, m_lightOuter = -1, m_lightFallOff = -1;
+    GLint m_ambientLight = -1, m_eye = -1, m_orthographic = -1, m_viewDirection = -1;
+    GLint m_illumination = -1, m_ambientCoefficient = -1, m_specularColor = -1, m_specularControl = -1;
+    GLint m_localToWorld = -1, m_normalToWorld = -1, m_perPixel = -1, m_flipBack = -1;
+};
+
+} // namespace q3

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3DStyle.h"
+#include "core/AttributeSet.h"
+#include "core/Limits.h"
+#include "core/Ref.h"
+
+namespace q3 {
+
+/// What styles and shaders set in a traversal (QD3DStyle.h, QD3DShader.h):
+/// the part of the view's graphics state that Push saves and Pop restores
+/// besides the transform and the attributes. A style or shader submitted to
+/// a view changes its own field and nothing else (Style::apply,
+/// Shader::apply). Defaults are QuickDraw 3D's view defaults.
+struct DrawState {
+    TQ3SubdivisionStyleData subdivision{kQ3SubdivisionMethodScreenSpace, limits::kSubdivisionDefault,
+                                        limits::kSubdivisionDefault};
+    TQ3BackfacingStyle backfacing = kQ3BackfacingStyleBoth;
+    TQ3InterpolationStyle interpolation = kQ3InterpolationStyleVertex;
+    TQ3FillStyle fill = kQ3FillStyleFilled;
+    TQ3OrientationStyle orientation = kQ3OrientationStyleCounterClockwise;
+    /// The highlight style's attribute set (null: none submitted): drawn over
+    /// the attributes of geometries whose highlight state attribute is on.
+    Ref<AttributeSet> highlight;
+    TQ3AntiAliasStyleData antiAlias{kQ3Off, kQ3AntiAliasModeMaskEdges, 1.0f};
+    TQ3FogStyleData fog{kQ3Off, kQ3FogModeLinear, 1.0f, 1000.0f, 1.0f, {1.0f, 1.0f, 1.0f, 1.0f}};
+    TQ3Boolean receiveShadows = kQ3True;
+    TQ3Boolean castShadows = kQ3True;
+    unsigned long pickID = 0;
+    TQ3PickParts pickParts = kQ3PickPartsObject;
+    /// The illumination shader's type (kQ3IlluminationTypePhong, Lambert,
+    /// NULL); kQ3ObjectTypeInvalid until one is submitted, which draws
+    /// surfaces unlit in their diffuse colours, as QuickDraw 3D does.
+    TQ3ObjectType illumination = 0;
+};
+
+} // namespace q3
