@@ -64,6 +64,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <set>
 
 namespace q3::nurbs {
 namespace {
@@ -1030,6 +1031,42 @@ private:
         return kNone;
     }
 
+    // Whether diagonal (r, s) should replace (a, b): it is shorter where
+    // lengths are measured; in the adaptive methods, where a corner has no
+    // image, by the part that is drawn, so that no flip can lengthen what is
+    // drawn.
+    bool shorterDiagonal(std::uint32_t r, std::uint32_t s, std::uint32_t a, std::uint32_t b) const
+    {
+        // The triangles (r, a, s) and (r, s, b) the flip makes must not be
+        // slivers in (u, v): a vertex within a key cell or so of the opposite
+        // side leaves an edge that no point of the key grid can split.
+        if (!roomy(r, a, s) || !roomy(r, s, b))
+            return false;
+        if (m_adaptive && !(m_mapped[r] && m_mapped[s] && m_mapped[a] && m_mapped[b])) {
+            const double now = drawnLength(a, b);
+            return now > 0.0 && drawnLength(r, s) < now * (1.0 - 1e-12);
+        }
+        return metric(r, s) < metric(a, b) * (1.0 - 1e-12);
+    }
+
+    // Whether triangle (a, b, c), counterclockwise on the keys, is at least
+    // 1/10,000 of its longest side (and eight key cells) high over it: a flip
+    // may not make anything thinner.
+    bool roomy(std::uint32_t a, std::uint32_t b, std::uint32_t c) const
+    {
+        const std::int64_t twice = m_mesh.orient(a, b, c);
+        if (twice <= 0)
+            return false;
+        const ParamMesh::Vertex& p = m_mesh.vertices[a];
+        const ParamMesh::Vertex& q = m_mesh.vertices[b];
+        const ParamMesh::Vertex& w = m_mesh.vertices[c];
+        auto length = [](const ParamMesh::Vertex& x, const ParamMesh::Vertex& y) {
+            return std::hypot(double(x.x - y.x), double(x.y - y.y));
+        };
+        const double longest = std::max({length(p, q), length(q, w), length(w, p)});
+        return double(twice) >= longest * std::max(8.0, 1e-4 * longest);
+    }
+
     // Flips edge (a, b) when the other diagonal is shorter; the four outer
     // edges go on the stack.
     bool tryFlip(std::uint32_t a, std::uint32_t b, std::vector<std::pair<std::uint32_t, std::uint32_t>>& stack)
@@ -1040,7 +1077,7 @@ private:
             return false;
         const std::uint32_t r = m_mesh.triangles[t].v[e];
         const std::uint32_t s = opposite(t, e);
-        if (s == kNone || !(metric(r, s) < metric(a, b) * (1.0 - 1e-12)))
+        if (s == kNone || !shorterDiagonal(r, s, a, b))
             return false;
         if (!m_mesh.flip(t, e))
             return false;
@@ -1063,7 +1100,7 @@ private:
                     continue;
                 const std::uint32_t a = tri.v[(e + 1) % 3], b = tri.v[(e + 2) % 3];
                 const std::uint32_t r = tri.v[e], s = opposite(t, e);
-                if (s == kNone || !(metric(r, s) < metric(a, b) * (1.0 - 1e-12)) || !m_mesh.flip(t, e))
+                if (s == kNone || !shorterDiagonal(r, s, a, b) || !m_mesh.flip(t, e))
                     continue;
                 stack.emplace_back(r, a);
                 stack.emplace_back(a, s);
@@ -1110,6 +1147,29 @@ private:
         return distance(m_image[seen], last);
     }
 
+    // Flips the edges facing vertex m while the other diagonal is shorter
+    // (Lawson's flips, with length in place of the empty-circle test).
+    void lawson(std::uint32_t m, std::vector<std::pair<std::uint32_t, std::uint32_t>>& stack)
+    {
+        stack.clear();
+        m_mesh.forEachAround(m, [&](std::uint32_t tri, int corner) {
+            const ParamMesh::Triangle& around = m_mesh.triangles[tri];
+            stack.emplace_back(around.v[(corner + 1) % 3], around.v[(corner + 2) % 3]);
+            return true;
+        });
+        std::size_t budget = 64;
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> outer;
+        while (!stack.empty() && budget-- > 0) {
+            const auto link = stack.back();
+            stack.pop_back();
+            outer.clear();
+            if (tryFlip(link.first, link.second, outer))
+                for (const auto& o : outer)
+                    if (o.first != m && o.second != m)
+                        stack.push_back(o);
+        }
+    }
+
     void refine()
     {
         if (!std::isfinite(m_c))
@@ -1120,7 +1180,11 @@ private:
             bool operator<(const Long& o) const { return length < o.length; }
         };
         std::priority_queue<Long> heap;
+        // Edges that could not be split: not tried again.
+        std::set<std::pair<std::uint32_t, std::uint32_t>> failed;
         auto consider = [&](std::uint32_t a, std::uint32_t b) {
+            if (failed.count({std::min(a, b), std::max(a, b)}) != 0)
+                return;
             const double length = drawnLength(a, b);
             if (length > m_c)
                 heap.push(Long{length, a, b});
@@ -1141,6 +1205,8 @@ private:
             heap.pop();
             std::uint32_t t;
             int e;
+            if (failed.count({std::min(edge.a, edge.b), std::max(edge.a, edge.b)}) != 0)
+                continue;
             if (!m_mesh.findEdge(edge.a, edge.b, t, e) && !m_mesh.findEdge(edge.b, edge.a, t, e))
                 continue;
             if ((m_mesh.triangles[t].constrained >> e) & 1u) {
@@ -1153,9 +1219,36 @@ private:
             }
             const ParamMesh::Vertex& va = m_mesh.vertices[edge.a];
             const ParamMesh::Vertex& vb = m_mesh.vertices[edge.b];
-            const double u = 0.5 * (va.u + vb.u), v = 0.5 * (va.v + vb.v);
+            double u = 0.5 * (va.u + vb.u), v = 0.5 * (va.v + vb.v);
+            if (m_mapped[edge.a] != m_mapped[edge.b]) {
+                // An edge into the part without an image is split where the
+                // surface loses its image (its last point with one, found by
+                // bisection on the parameters), as curves are: the piece
+                // beyond is then drawn with no length, and the piece before
+                // is measured as a whole. Halving at the midpoint instead
+                // would crowd ever thinner triangles against that edge.
+                const ParamMesh::Vertex& seen = m_mapped[edge.a] ? va : vb;
+                const ParamMesh::Vertex& hidden = m_mapped[edge.a] ? vb : va;
+                double lo = 0.0, hi = 1.0;
+                for (unsigned i = 0; i < kMaxIterations; ++i) {
+                    const double mid = 0.5 * (lo + hi);
+                    if (!(lo < mid && mid < hi))
+                        break;
+                    Point3 image;
+                    const Point3 local = evaluateSurface(m_s, seen.u + mid * (hidden.u - seen.u),
+                                                         seen.v + mid * (hidden.v - seen.v));
+                    (mapPoint(local, image) ? lo : hi) = mid;
+                }
+                const double bu = seen.u + lo * (hidden.u - seen.u), bv = seen.v + lo * (hidden.v - seen.v);
+                const std::int64_t bx = m_mesh.keyX(bu), by = m_mesh.keyY(bv);
+                if (!((bx == va.x && by == va.y) || (bx == vb.x && by == vb.y))) {
+                    u = bu;
+                    v = bv;
+                }
+            }
             const std::int64_t x = m_mesh.keyX(u), y = m_mesh.keyY(v);
             if ((x == va.x && y == va.y) || (x == vb.x && y == vb.y)) {
+                failed.insert({std::min(edge.a, edge.b), std::max(edge.a, edge.b)});
                 m_out.capped = true;
                 continue;
             }
@@ -1163,39 +1256,56 @@ private:
             const std::uint32_t n = m_mesh.triangles[t].neighbour[e];
             const std::uint32_t d = n == kNone ? kNone : opposite(t, e);
             const std::uint32_t m = addMeshVertex(u, v, x, y, evaluateSurface(m_s, u, v));
-            if (!m_mesh.splitEdge(t, e, m)) {
+            const bool splitOk = m_mesh.splitEdge(t, e, m);
+            if (!splitOk) {
+                // The midpoint (on the key grid) falls outside the edge's two
+                // triangles: one of them is a sliver in (u, v), thinner than
+                // a key cell. Flipping the edge to its third vertex splits
+                // the edge there (only to a shorter diagonal, so flips cannot
+                // go round in circles); otherwise the midpoint goes in
+                // wherever it lies, and the flips around it take the edge out.
+                const std::uint32_t q = m_mesh.triangles[t].v[(e + 1) % 3], r = m_mesh.triangles[t].v[(e + 2) % 3];
                 m_mesh.vertices.pop_back();
-                m_out.capped = true;
+                if (d != kNone && !((m_mesh.triangles[t].fixed >> e) & 1u) && drawnLength(c, d) < edge.length &&
+                    roomy(c, q, d) && roomy(c, d, r) && m_mesh.flip(t, e)) {
+                    consider(c, d);
+                    consider(edge.a, c);
+                    consider(c, edge.b);
+                    consider(edge.b, d);
+                    consider(d, edge.a);
+                    continue;
+                }
+                bool existed = false;
+                const ParamMesh::Location where = m_mesh.locate(x, y, t);
+                const bool blocked = where.kind == ParamMesh::Location::kOnEdge &&
+                                     ((m_mesh.triangles[where.triangle].constrained >> where.index) & 1u);
+                const std::uint32_t inserted =
+                    blocked ? kNone : m_mesh.insertVertex(u, v, x, y, where.triangle, existed);
+                if (inserted == kNone || existed) {
+                    failed.insert({std::min(edge.a, edge.b), std::max(edge.a, edge.b)});
+                    m_out.capped = true;
+                    continue;
+                }
+                setVertexData(inserted, evaluateSurface(m_s, u, v));
+                lawson(inserted, stack);
+                m_mesh.forEachAround(inserted, [&](std::uint32_t tri, int corner) {
+                    const ParamMesh::Triangle& around = m_mesh.triangles[tri];
+                    consider(inserted, around.v[(corner + 1) % 3]);
+                    consider(inserted, around.v[(corner + 2) % 3]);
+                    consider(around.v[(corner + 1) % 3], around.v[(corner + 2) % 3]);
+                    return true;
+                });
+                consider(edge.a, edge.b);
                 continue;
             }
             // Flips around the new vertex, then whatever is still too long.
-            stack.clear();
-            stack.emplace_back(edge.a, c);
-            stack.emplace_back(c, edge.b);
-            if (d != kNone) {
-                stack.emplace_back(edge.b, d);
-                stack.emplace_back(d, edge.a);
-            }
-            std::size_t budget = 64;
-            while (!stack.empty() && budget-- > 0) {
-                const auto link = stack.back();
-                stack.pop_back();
-                std::uint32_t lt;
-                int le;
-                if (!m_mesh.findEdge(link.first, link.second, lt, le) &&
-                    !m_mesh.findEdge(link.second, link.first, lt, le))
-                    continue;
-                if (m_mesh.triangles[lt].neighbour[le] == kNone)
-                    continue;
-                std::vector<std::pair<std::uint32_t, std::uint32_t>> outer;
-                if (tryFlip(m_mesh.triangles[lt].v[(le + 1) % 3], m_mesh.triangles[lt].v[(le + 2) % 3], outer))
-                    for (const auto& o : outer)
-                        if (o.first != m && o.second != m)
-                            stack.push_back(o);
-            }
+            lawson(m, stack);
+            // Both other corners of every triangle around m: on the boundary
+            // the last neighbour appears only as the second.
             m_mesh.forEachAround(m, [&](std::uint32_t tri, int corner) {
                 const ParamMesh::Triangle& around = m_mesh.triangles[tri];
                 consider(m, around.v[(corner + 1) % 3]);
+                consider(m, around.v[(corner + 2) % 3]);
                 consider(around.v[(corner + 1) % 3], around.v[(corner + 2) % 3]);
                 return true;
             });
@@ -1220,14 +1330,25 @@ private:
         auto shortest = [&](std::uint32_t v) {
             double best = kInfinity;
             m_mesh.forEachAround(v, [&](std::uint32_t t, int c) {
-                best = std::min(best, drawnLength(v, m_mesh.triangles[t].v[(c + 1) % 3]));
+                best = std::min({best, drawnLength(v, m_mesh.triangles[t].v[(c + 1) % 3]),
+                                 drawnLength(v, m_mesh.triangles[t].v[(c + 2) % 3])});
                 return true;
             });
             return best;
         };
+        // Vertices next to a point without an image stay: edges there are
+        // measured by their drawn part, which a merge would have to bisect
+        // for again and again (and they are few).
         auto alive = [&](std::uint32_t v) {
             const std::uint32_t t = m_mesh.vertices[v].triangle;
-            return t != kNone && m_mesh.triangles[t].alive && m_mesh.vertices[v].loop < 0;
+            if (t == kNone || !m_mesh.triangles[t].alive || m_mesh.vertices[v].loop >= 0 || !m_mapped[v])
+                return false;
+            bool seen = true;
+            m_mesh.forEachAround(v, [&](std::uint32_t u, int c) {
+                seen = m_mapped[m_mesh.triangles[u].v[(c + 1) % 3]] != 0;
+                return seen;
+            });
+            return seen;
         };
         for (std::uint32_t v = 0; v < m_mesh.vertices.size(); ++v)
             if (alive(v))
@@ -1247,11 +1368,14 @@ private:
             }
             neighbours.clear();
             m_mesh.forEachAround(v, [&](std::uint32_t t, int c) {
-                const std::uint32_t w = m_mesh.triangles[t].v[(c + 1) % 3];
-                neighbours.emplace_back(drawnLength(v, w), w);
+                for (int k = 1; k <= 2; ++k) {
+                    const std::uint32_t w = m_mesh.triangles[t].v[(c + k) % 3];
+                    neighbours.emplace_back(drawnLength(v, w), w);
+                }
                 return true;
             });
             std::sort(neighbours.begin(), neighbours.end());
+            neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
             for (const auto& candidate : neighbours) {
                 const std::uint32_t w = candidate.second;
                 if (!m_mesh.collapsible(v, w, link))
