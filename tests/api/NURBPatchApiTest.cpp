@@ -693,6 +693,56 @@ TEST_F(NURBPatchApiTest, DecomposingGivesATriMeshWithNormalsAndSurfaceUV)
     Q3Object_Dispose(patch);
 }
 
+// A rational patch that is exactly half the unit cylinder around the z axis
+// (two rational quadratic quarter circles in u, a line in v): every vertex
+// of its TriMesh is on the cylinder to float rounding, and every normal is
+// the radial direction, under each method.
+TEST_F(NURBPatchApiTest, ARationalHalfCylinderDecomposesOntoTheCylinder)
+{
+    static float uKnots[8] = {0, 0, 0, 1, 1, 2, 2, 2};
+    static float vKnots[4] = {0, 0, 1, 1};
+    const float s = 0.70710678f;
+    const float arc[5][3] = {{1, 0, 1}, {1, 1, s}, {0, 1, 1}, {-1, 1, s}, {-1, 0, 1}};
+    TQ3RationalPoint4D points[10];
+    for (int row = 0; row < 2; ++row)
+        for (int column = 0; column < 5; ++column) {
+            const float w = arc[column][2], z = row == 0 ? -2.0f : 2.0f;
+            points[row * 5 + column] = {arc[column][0] * w, arc[column][1] * w, z * w, w};
+        }
+    TQ3NURBPatchData data{};
+    data.uOrder = 3;
+    data.vOrder = 2;
+    data.numColumns = 5;
+    data.numRows = 2;
+    data.controlPoints = points;
+    data.uKnots = uKnots;
+    data.vKnots = vKnots;
+    TQ3GeometryObject patch = Q3NURBPatch_New(&data);
+    ASSERT_NE(patch, nullptr);
+    const TQ3SubdivisionStyleData styles[] = {{kQ3SubdivisionMethodConstant, 7, 3},
+                                              {kQ3SubdivisionMethodWorldSpace, 0.05f, 0.05f}};
+    for (const TQ3SubdivisionStyleData& style : styles) {
+        TQ3TriMeshData mesh = decompose(patch, &style);
+        ASSERT_GT(mesh.numTriangles, 10u);
+        const TQ3Vector3D* normals = nullptr;
+        for (unsigned long i = 0; i < mesh.numVertexAttributeTypes; ++i)
+            if (mesh.vertexAttributeTypes[i].attributeType == kQ3AttributeTypeNormal)
+                normals = static_cast<const TQ3Vector3D*>(mesh.vertexAttributeTypes[i].data);
+        ASSERT_NE(normals, nullptr);
+        for (unsigned long v = 0; v < mesh.numPoints; ++v) {
+            const TQ3Point3D& p = mesh.points[v];
+            const double radius = std::hypot(double(p.x), double(p.y));
+            EXPECT_NEAR(radius, 1.0, 4e-7) << "vertex " << v;
+            EXPECT_GE(p.y, -1e-7f);
+            EXPECT_NEAR(normals[v].x, p.x / radius, 1e-5);
+            EXPECT_NEAR(normals[v].y, p.y / radius, 1e-5);
+            EXPECT_NEAR(normals[v].z, 0.0, 1e-5);
+        }
+        Q3TriMesh_EmptyData(&mesh);
+    }
+    Q3Object_Dispose(patch);
+}
+
 TEST_F(NURBPatchApiTest, RetainedAndImmediatePatchesDrawAlike)
 {
     PatchArrays arrays = trimmed();
