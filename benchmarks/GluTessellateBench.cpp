@@ -226,6 +226,27 @@ void Glu_Constant(benchmark::State& state, int which, nurbs::KernelIsa isa)
     state.counters["glu_rel_error"] = gluError / scale;
 }
 
+// GLU alone in wall time, every vertex delivered into the program's buffer
+// (the callback writes it there): the peer of Q3_PublicPath in
+// TessellateBench.cpp, which runs in the other process of the same run.
+void Glu_WallPeer(benchmark::State& state, int which)
+{
+    const BenchCurve& curve = curveNamed(which);
+    const std::uint32_t m = q3bench::kSegmentsPerSpan;
+    const std::size_t spans = curve.spanCount();
+    prepareSink(spans * (m + 1));
+    GluTessellator glu;
+    glu.constant(float((m - 0.5) / q3bench::kKnotSpacing));
+    for (auto _ : state) {
+        glu.run(curve);
+        benchmark::DoNotOptimize(g_sink.xyz.data());
+        benchmark::ClobberMemory();
+    }
+    if (g_sink.error != 0 || g_sink.count != spans * (m + 1))
+        state.SkipWithError(describeSink().c_str());
+    state.counters["vertices"] = double(g_sink.count);
+}
+
 // Adaptive methods with c1 = arc length / (16 * spans) in the space: Q3's
 // tessellateAdaptive (world: identity mapping; screen: BenchCurves.h's
 // projection to pixels) against GLU_OBJECT_PATH_LENGTH / GLU_PATH_LENGTH with
@@ -305,6 +326,7 @@ BENCHMARK_CAPTURE(Glu_Constant, cubic, 0, nurbs::supportedKernelIsa())->Unit(ben
 BENCHMARK_CAPTURE(Glu_Constant, order16, 1, nurbs::supportedKernelIsa())->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Glu_Constant, cubic_baseline, 0, nurbs::KernelIsa::kBaseline)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Glu_Constant, order16_baseline, 1, nurbs::KernelIsa::kBaseline)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_WallPeer, cubic, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(Glu_Adaptive, world_cubic, Space::kWorld, 0)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Glu_Adaptive, world_order16, Space::kWorld, 1)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Glu_Adaptive, screen_cubic, Space::kScreen, 0)->Unit(benchmark::kMillisecond);

@@ -154,6 +154,54 @@ void Q3_GetDecomposed(benchmark::State& state, int which)
     state.counters["vertices"] = double(curve.spanCount() * q3bench::kSegmentsPerSpan + 1);
 }
 
+// The whole sequence a program runs to get a curve's vertices out, in wall
+// time (system time included: page faults, memory returned to the kernel):
+// an edit so that nothing is reused, Q3Geometry_GetDecomposed,
+// Q3PolyLine_GetData, every vertex read, Q3PolyLine_EmptyData,
+// Q3Object_Dispose. Its peer is Glu_WallPeer in GluTessellateBench.cpp (GLU's
+// tessellation with every vertex delivered into the program's buffer).
+void Q3_PublicPath(benchmark::State& state, int which)
+{
+    const BenchCurve& curve = curveNamed(which);
+    q3bench::Q3Session session;
+    q3bench::BenchView view(64, 64);
+    const TQ3NURBCurveData data = q3bench::curveData(curve);
+    TQ3GeometryObject nurb = Q3NURBCurve_New(&data);
+    const unsigned long knotIndex = curve.knots.size() / 2;
+    const float knot = curve.knots[knotIndex];
+    const TQ3SubdivisionStyleData style = q3bench::constantStyle(float(q3bench::kSegmentsPerSpan));
+    if (nurb == nullptr || Q3View_StartRendering(view.view()) != kQ3Success) {
+        state.SkipWithError("creating the curve or starting the rendering loop failed");
+        return;
+    }
+    Q3SubdivisionStyle_Submit(&style, view.view());
+    std::vector<float> user(3 * (curve.spanCount() * q3bench::kSegmentsPerSpan + 1));
+    std::size_t delivered = 0;
+    for (auto _ : state) {
+        Q3NURBCurve_SetKnot(nurb, knotIndex, knot);
+        TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, view.view());
+        TQ3PolyLineData polyLine{};
+        if (decomposed != nullptr && Q3PolyLine_GetData(decomposed, &polyLine) == kQ3Success) {
+            delivered = std::min<std::size_t>(polyLine.numVertices, user.size() / 3);
+            for (std::size_t i = 0; i < delivered; ++i) {
+                user[3 * i] = polyLine.vertices[i].point.x;
+                user[3 * i + 1] = polyLine.vertices[i].point.y;
+                user[3 * i + 2] = polyLine.vertices[i].point.z;
+            }
+            Q3PolyLine_EmptyData(&polyLine);
+        }
+        if (decomposed != nullptr)
+            Q3Object_Dispose(decomposed);
+        benchmark::DoNotOptimize(user.data());
+        benchmark::ClobberMemory();
+    }
+    Q3View_EndRendering(view.view());
+    Q3Object_Dispose(nurb);
+    if (delivered != curve.spanCount() * q3bench::kSegmentsPerSpan + 1)
+        state.SkipWithError("the public path did not deliver spans * 64 + 1 vertices");
+    state.counters["vertices"] = double(delivered);
+}
+
 // Names end in the curve, as in GluTessellateBench.cpp: cubic is the rational
 // cubic, order16 the order-16 curve (1000 control points each).
 BENCHMARK_CAPTURE(Q3_Constant, cubic, 0)->Unit(benchmark::kMicrosecond);
@@ -162,6 +210,7 @@ BENCHMARK_CAPTURE(Q3_ConstantForm, cubic, 0)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Q3_ConstantForm, order16, 1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(Q3_GetDecomposed, cubic, 0)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Q3_GetDecomposed, order16, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Q3_PublicPath, cubic, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
 

@@ -118,6 +118,21 @@ def tessellation(runs, out):
         out.append(f"| {label} | {fmt(tq)} ms | {fmt(tp)} ms | {fmt(vertices / tq / 1e3)} | "
                    f"{fmt(vertices / tp / 1e3)} | **{speedup:.2f}×** (public call = {slowdown:.2f}× the kernel's "
                    f"time; cross-process {tp / tq:.2f}×) | {goal} |")
+    # The whole public sequence in wall time (issue: system time counts too):
+    # Q3_PublicPath (TessellateBench.cpp) against Glu_WallPeer, medians of
+    # the two processes of the same run.
+    peer, public = "Glu_WallPeer/cubic", "Q3_PublicPath/cubic"
+    problem = missing(runs, peer, public)
+    label = "Public path in wall time (GetDecomposed, GetData, vertices read, EmptyData, Dispose), rational cubic"
+    if problem:
+        out.append(f"| {label} | {problem} | | | | | |")
+    else:
+        tq, tp = 1e3 * runs.time(public, "real_time"), 1e3 * runs.time(peer, "real_time")
+        vertices = runs.counter(public, "vertices")
+        speedup = tp / tq
+        out.append(f"| {label} | {fmt(tq)} ms | {fmt(tp)} ms | {fmt(vertices / tq / 1e3)} | "
+                   f"{fmt(runs.counter(peer, 'vertices') / tp / 1e3)} | **{speedup:.2f}×** | "
+                   f"{verdict(speedup, 2.0, True)} |")
     for label, curve in (("From a cached Bezier form, cubic (info)", "cubic"),
                          ("From a cached Bezier form, order 16 (info)", "order16")):
         kernel, form, fromCurve = f"Glu_Constant/{curve}", f"Q3_ConstantForm/{curve}", f"Q3_Constant/{curve}"

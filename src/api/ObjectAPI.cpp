@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "QD3D.h"
 #include "api/Entry.h"
+#include "core/LargeBlocks.h"
 #include "render/OffscreenRenderer.h"
 #include "view/View.h"
 
@@ -26,6 +27,8 @@ TQ3Status Q3Exit(void)
 {
     return guardStatus(__func__, [] {
         system::exit();
+        if (!system::isInitialized())
+            memory::releaseKept();
         const unsigned long live = liveObjectCount();
         if (!system::isInitialized() && live != 0)
             errors::postWarning(kQ3WarningPossibleMemoryLeak,

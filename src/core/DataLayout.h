@@ -36,6 +36,7 @@
 
 #include "QD3D.h"
 #include "core/Error.h"
+#include "core/LargeBlocks.h"
 #include "core/Limits.h"
 #include "core/Object.h"
 
@@ -180,16 +181,17 @@ inline void checkCount(std::size_t count, const Path& where)
                                               std::to_string(limits::kMaxArrayCount) + ")");
 }
 
-/// malloc for count elements (nullptr for none); throws std::bad_alloc.
+/// malloc for count elements (nullptr for none), large blocks recycled
+/// (core/LargeBlocks.h); throws std::bad_alloc.
 template <class E>
 E* allocate(std::size_t count)
 {
     if (count == 0)
         return nullptr;
-    void* memory = std::malloc(count * sizeof(E));
-    if (memory == nullptr)
+    void* block = memory::allocate(count * sizeof(E));
+    if (block == nullptr)
         throw std::bad_alloc();
-    return static_cast<E*>(memory);
+    return static_cast<E*>(block);
 }
 
 // ---- The walks over a described struct ---------------------------------
@@ -275,7 +277,7 @@ E* copyElements(const E* src, std::size_t count, Policy& policy, const Path& pat
         } catch (...) {
             for (std::size_t i = 0; i < count; ++i)
                 release(dst[i]);
-            std::free(dst);
+            memory::release(dst);
             throw;
         }
     }
@@ -290,7 +292,7 @@ void releaseElements(E* elements, std::size_t count)
     if constexpr (IsDescribed<E>::value)
         for (std::size_t i = 0; i < count; ++i)
             release(elements[i]);
-    std::free(elements);
+    memory::release(elements);
 }
 
 // ---- Field kinds ---------------------------------------------------------
@@ -495,7 +497,7 @@ struct HandleArrayField {
         for (std::size_t i = 0; i < n; ++i)
             if (handles[i] != nullptr)
                 heldObject(handles[i])->releaseReference();
-        std::free(handles);
+        memory::release(handles);
     }
     void checkHandles(const S& s, const Path& path) const
     {

@@ -92,10 +92,10 @@ struct AttributeArraysField {
         if (entries == nullptr)
             return;
         for (std::size_t i = 0; i < s.*typeCount; ++i) {
-            std::free(entries[i].data);
-            std::free(entries[i].attributeUseArray);
+            memory::release(entries[i].data);
+            memory::release(entries[i].attributeUseArray);
         }
-        std::free(entries);
+        memory::release(entries);
     }
     void checkHandles(const D&, const layout::Path&) const {}
     template <class F>

@@ -116,11 +116,20 @@ nurbs::PointMapping mappingFor(const Plan& plan)
 }
 
 template <class Source>
-nurbs::TessellatedCurve subdivide(const Plan& plan, const Source& source)
+void subdivide(const Plan& plan, const Source& source, nurbs::TessellatedCurve& out)
 {
     if (plan.measure == Measure::kConstant)
-        return nurbs::tessellateConstant(source, static_cast<std::uint32_t>(plan.c1));
-    return nurbs::tessellateAdaptive(source, plan.c1, mappingFor(plan));
+        nurbs::tessellateConstant(source, static_cast<std::uint32_t>(plan.c1), out);
+    else
+        nurbs::tessellateAdaptive(source, plan.c1, mappingFor(plan), out);
+}
+
+template <class Source>
+nurbs::TessellatedCurve subdivide(const Plan& plan, const Source& source)
+{
+    nurbs::TessellatedCurve out;
+    subdivide(plan, source, out);
+    return out;
 }
 
 // Why the subdivision gave in, for the warning; empty when it did not.
@@ -162,10 +171,20 @@ std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan
         // span, so the cache holds only the polyline (Tessellate.h, kWholeFormLimit).
         if (!cache.bezier && nurbs::fitsWholeBezierForm(curve))
             cache.bezier = std::make_shared<const nurbs::BezierForm>(curve);
-        nurbs::TessellatedCurve result =
-            cache.bezier ? subdivide(plan, *cache.bezier) : subdivide(plan, curve);
+        // Into the cache's polyline (invalidate keeps its capacity) and this
+        // thread's parameter scratch: re-tessellating a curve at a similar
+        // size allocates nothing and faults no new pages in.
+        thread_local std::vector<double> parameterScratch;
+        nurbs::TessellatedCurve result;
+        result.vertices.swap(cache.polyline);
+        result.parameters.swap(parameterScratch);
+        if (cache.bezier)
+            subdivide(plan, *cache.bezier, result);
+        else
+            subdivide(plan, curve, result);
         report = substitutionReport(plan, result);
-        cache.polyline = std::move(result.vertices);
+        cache.polyline.swap(result.vertices);
+        parameterScratch.swap(result.parameters);
         cache.key = std::move(key);
         cache.capped = !report.empty();
         cache.valid = true;
