@@ -494,6 +494,422 @@ Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_GetKnot(TQ3GeometryObject curve,
                                                unsigned long knotIndex,
                                                float *knotValue);
 
+/* ---- NURB patch --------------------------------------------------------- */
+
+/* The highest order a NURB patch may have in u or in v (order = degree + 1). */
+#define kQ3NURBPatchMaxOrder 11
+
+/*
+ * A non-uniform rational B-spline surface, optionally trimmed by loops of
+ * two-dimensional NURB curves in its parameter domain.
+ *
+ * Layout (Q3's reading where Apple's documents disagree: the one Apple's
+ * declarations and files in the wild follow). The control points form
+ * numRows rows of numColumns points:
+ *   controlPoints[row * numColumns + column]
+ * u runs along a row (from column to column), v across the rows (from row to
+ * row). So numColumns counts the points in u and numRows those in v:
+ *   uKnots  uOrder + numColumns knots;
+ *   vKnots  vOrder + numRows knots.
+ * Each control point is homogeneous and pre-multiplied, as for curves: its
+ * position is (x/w, y/w, z/w) and w is its weight. The surface is defined on
+ * the domain [uKnots[uOrder - 1], uKnots[numColumns]] x
+ * [vKnots[vOrder - 1], vKnots[numRows]].
+ *
+ * A trim curve is a NURB curve in that (u, v) domain: its control points are
+ * TQ3RationalPoint3D (x, y, w), homogeneous like the patch's, the point
+ * (x/w, y/w) being (u, v); it has numPoints + order knots. A trim loop is one
+ * or more trim curves joined end to end: each curve ends where the next one
+ * starts, and the last ends where the first starts.
+ *
+ * The trim rule (GLU's, since no Apple document defines an orientation):
+ * the region to the left of a loop is kept. A counterclockwise loop (in the
+ * (u, v) plane, u to the right and v up) keeps its inside; a clockwise loop
+ * cuts a hole. Precisely: a point of the domain is drawn when the innermost
+ * loop around it runs counterclockwise; a point that no loop surrounds is
+ * drawn when no outermost loop runs counterclockwise (so a lone clockwise
+ * loop cuts a hole in the whole patch, and a lone counterclockwise loop
+ * keeps only its inside). With no trim loops the whole domain is drawn.
+ * Loops may touch the edges of the domain but must not cross or touch each
+ * other or themselves (see "Crossing loops" below).
+ *
+ * The rules a TQ3NURBPatchData must obey wherever one is accepted
+ * (Q3NURBPatch_New, Q3NURBPatch_SetData, Q3NURBPatch_Submit), with the error
+ * posted when one is broken, checked in this order. The message names the
+ * rule, where (e.g. "trimLoops[1].trimCurves[0].knots[5]") and the values.
+ *   2 <= uOrder, vOrder <= kQ3NURBPatchMaxOrder     kQ3ErrorParameterOutOfRange
+ *   numColumns >= uOrder, numRows >= vOrder
+ *                                  kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   numRows * numColumns, uOrder + numColumns, vOrder + numRows and
+ *     numTrimLoops <= kQ3GeometryMaxArrayCount      kQ3ErrorParameterOutOfRange
+ *   controlPoints, uKnots and vKnots are not NULL,
+ *     nor trimLoops when numTrimLoops > 0           kQ3ErrorNULLParameter
+ *   every knot is finite; the knots never decrease; no knot value occurs
+ *     more than order times at the start or at the end of its vector or
+ *     more than order - 1 times anywhere else; the domain is not empty
+ *     (uKnots first, then vKnots)                   kQ3ErrorInvalidData
+ *   every coordinate and weight is finite, and every weight is greater
+ *     than 0                                        kQ3ErrorInvalidData
+ *   then each trim loop in turn, and in it each trim curve in turn:
+ *   numTrimCurves >= 1                              kQ3ErrorInvalidData
+ *   numTrimCurves <= kQ3GeometryMaxArrayCount       kQ3ErrorParameterOutOfRange
+ *   trimCurves is not NULL                          kQ3ErrorNULLParameter
+ *   2 <= order <= kQ3NURBCurveMaxOrder              kQ3ErrorParameterOutOfRange
+ *   numPoints >= order                 kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   numPoints <= kQ3GeometryMaxArrayCount           kQ3ErrorParameterOutOfRange
+ *   controlPoints and knots are not NULL            kQ3ErrorNULLParameter
+ *   the knot rules above, for the curve's one knot vector
+ *                                                   kQ3ErrorInvalidData
+ *   every coordinate and weight finite, every weight greater than 0
+ *                                                   kQ3ErrorInvalidData
+ *   every control point (x/w, y/w) lies in the patch's domain, within the
+ *     tolerance below (so the whole curve does)     kQ3ErrorInvalidData
+ *   after the loop's curves: each curve ends within the tolerance of where
+ *     the next one starts, the last of where the first starts
+ *                                                   kQ3ErrorInvalidData
+ *   patchAttributeSet is NULL or a live attribute set
+ *                           kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ * The tolerance is 1e-5 times the largest of the domain's width, its height
+ * and the magnitudes of its four end knots. A curve's start and end are its
+ * points at the ends of its domain (its first and last control points when
+ * its end knots repeat order times). Where a curve ends and the next starts
+ * a little apart, the loop is drawn through the next curve's start.
+ *
+ * Crossing loops. Whether loops cross or touch each other or themselves is
+ * not checked by New, SetData or Submit (an exact test would mean
+ * intersecting the curves). It is found when the patch is subdivided, on the
+ * polylines the loops are drawn with: Q3Geometry_Submit, Q3NURBPatch_Submit
+ * and Q3Geometry_GetDecomposed then fail with kQ3ErrorInvalidData, naming
+ * the loops and where in (u, v), and nothing of the patch is drawn. Because
+ * the polylines depend on the subdivision style, loops that only come very
+ * close may be refused under a coarse style and drawn under a fine one.
+ *
+ * Subdivision (QD3DStyle.h; docs/subdivision.md, "Surfaces"):
+ *   kQ3SubdivisionMethodConstant  c1 segments across every non-empty knot
+ *     span in u and c2 across every one in v (whole numbers; a fraction is
+ *     dropped), at evenly spaced parameters: each pair of spans is a c1 x c2
+ *     grid of quadrilaterals, each cut into two triangles along its shorter
+ *     diagonal. Trim curves get c1 segments per span. Apple's book reads c1
+ *     and c2 as counts for the whole mesh; Q3 counts them per span, as the
+ *     develop article does for curves ("CONTROLLING SUBDIVISION") and as Q3's
+ *     curves do, because then (1) an edge of the patch is subdivided exactly
+ *     like the NURB curve with the same control points and knots under the
+ *     same style, so curves drawn along a patch's edge meet it, and (2)
+ *     every knot line is a line of the mesh, so a crease where knots repeat
+ *     is never cut across.
+ *   kQ3SubdivisionMethodWorldSpace  no triangle edge is longer than c1 world
+ *     units, measured between its two vertices after the local-to-world
+ *     transform.
+ *   kQ3SubdivisionMethodScreenSpace  no triangle edge is longer than c1
+ *     pixels, measured after the full transform to the pane, perspective
+ *     divide included; for an edge that reaches nearer than the camera's
+ *     hither plane, the part that is drawn.
+ *   Trim curves are subdivided to the same bound, measured on the surface.
+ *   c2 is not used by world and screen space.
+ * Every vertex is a point of the surface: the surface evaluated in double
+ * precision at a parameter (u, v) and rounded to float once; every vertex on
+ * the edge of a trimmed region is a point of a trim curve. Each vertex has
+ * the unit normal of the surface there, from its exact partial derivatives
+ * (pointing to the side from which increasing u turns towards increasing v
+ * counterclockwise; at a point where the derivatives vanish, such as a pole,
+ * the normal a short step inside the domain), and its surface uv, the (u, v)
+ * of the domain. The front of every triangle is the side its normal points
+ * to. No patch is drawn with more than kQ3SubdivisionMaxTrianglesPerPatch
+ * triangles (QD3DStyle.h), except that every pair of spans gets at least
+ * two: a patch that would need more is drawn with longer edges (or fewer
+ * segments per span) and posts kQ3WarningParameterOutOfRange.
+ *
+ * Bounds: a bounding loop bounds the control points (x/w, y/w, z/w), which
+ * the surface never leaves, as for NURB curves.
+ *
+ * Q3Geometry_GetDecomposed gives a TriMesh of the triangles with the normals
+ * and surface uvs as vertex attribute arrays.
+ */
+struct TQ3NURBPatchTrimCurveData {
+    unsigned long order;
+    unsigned long numPoints;
+    TQ3RationalPoint3D *controlPoints;
+    float *knots;
+};
+typedef struct TQ3NURBPatchTrimCurveData TQ3NURBPatchTrimCurveData;
+
+struct TQ3NURBPatchTrimLoopData {
+    unsigned long numTrimCurves;
+    TQ3NURBPatchTrimCurveData *trimCurves;
+};
+typedef struct TQ3NURBPatchTrimLoopData TQ3NURBPatchTrimLoopData;
+
+struct TQ3NURBPatchData {
+    unsigned long uOrder;
+    unsigned long vOrder;
+    unsigned long numRows;
+    unsigned long numColumns;
+    TQ3RationalPoint4D *controlPoints;
+    float *uKnots;
+    float *vKnots;
+    unsigned long numTrimLoops;
+    TQ3NURBPatchTrimLoopData *trimLoops;
+    TQ3AttributeSet patchAttributeSet;
+};
+typedef struct TQ3NURBPatchData TQ3NURBPatchData;
+
+/**
+ * Creates a retained NURB patch from a copy of the caller's description
+ * (every array, trim loops and trim curves included).
+ *
+ * @param nurbPatchData  the patch; it must obey the TQ3NURBPatchData rules
+ *                       above.
+ * @return the new patch, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      nurbPatchData is NULL.
+ *   then the codes of the TQ3NURBPatchData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the patch cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new patch is born with
+ * and releases it with Q3Object_Dispose. The patch takes its own reference
+ * to patchAttributeSet; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3NURBPatch_New(const TQ3NURBPatchData *nurbPatchData);
+
+/**
+ * Draws (or bounds) a NURB patch described by a data structure without
+ * creating an object (immediate mode), exactly as Q3Geometry_Submit draws a
+ * retained patch made from the same data.
+ *
+ * @param nurbPatchData  the patch; it must obey the TQ3NURBPatchData rules.
+ * @param view           a view inside a rendering or bounding loop.
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      nurbPatchData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding
+ *                              loop.
+ *   then the codes of the TQ3NURBPatchData rules, in their order;
+ *   kQ3ErrorInvalidData        the trim loops cross or touch (see "Crossing
+ *                              loops" above).
+ *   kQ3ErrorOutOfMemory        the triangles cannot be allocated.
+ * Warnings:
+ *   kQ3WarningParameterOutOfRange  the patch would need more than
+ *                              kQ3SubdivisionMaxTrianglesPerPatch triangles
+ *                              and is drawn with fewer, longer-edged ones.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_Submit(const TQ3NURBPatchData *nurbPatchData, TQ3ViewObject view);
+
+/**
+ * Replaces the whole description of a retained NURB patch; the only way to
+ * change its orders, its numbers of control points or its trim loops.
+ *
+ * @param nurbPatch      the patch to change.
+ * @param nurbPatchData  the new patch; it must obey the TQ3NURBPatchData
+ *                       rules. Every array is copied.
+ * @return kQ3Success, or kQ3Failure with the patch and its edit index
+ *         unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      nurbPatch or nurbPatchData is NULL.
+ *   kQ3ErrorInvalidObject      nurbPatch is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  nurbPatch is not a NURB patch.
+ *   then the codes of the TQ3NURBPatchData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the patch takes a reference to the new patchAttributeSet and
+ * releases the one it held; the caller keeps its own references.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_SetData(TQ3GeometryObject nurbPatch,
+                                               const TQ3NURBPatchData *nurbPatchData);
+
+/**
+ * Copies the whole description of a retained NURB patch into caller memory
+ * allocated by Q3: the control points, both knot vectors and every trim
+ * loop with its trim curves and their arrays. Release it with
+ * Q3NURBPatch_EmptyData.
+ *
+ * @param nurbPatch      the patch to read.
+ * @param nurbPatchData  receives the description.
+ * @return kQ3Success, or kQ3Failure with *nurbPatchData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      nurbPatch or nurbPatchData is NULL.
+ *   kQ3ErrorInvalidObject      nurbPatch is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  nurbPatch is not a NURB patch.
+ *   kQ3ErrorOutOfMemory        the arrays cannot be allocated.
+ *
+ * Ownership: the caller owns every array and one new reference to the
+ * attribute set, and gives them all back with Q3NURBPatch_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_GetData(TQ3GeometryObject nurbPatch, TQ3NURBPatchData *nurbPatchData);
+
+/**
+ * Replaces the control point in row rowIndex and column columnIndex of a
+ * retained NURB patch (controlPoints[rowIndex * numColumns + columnIndex]).
+ *
+ * @param nurbPatch    the patch to change.
+ * @param rowIndex     the row, from 0 to numRows - 1.
+ * @param columnIndex  the column, from 0 to numColumns - 1.
+ * @param point4D      the new homogeneous control point; its coordinates
+ *                     must be finite and its weight w greater than 0.
+ * @return kQ3Success, or kQ3Failure with the patch and its edit index
+ *         unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        nurbPatch or point4D is NULL.
+ *   kQ3ErrorInvalidObject        nurbPatch is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    nurbPatch is not a NURB patch.
+ *   kQ3ErrorParameterOutOfRange  rowIndex >= numRows or
+ *                                columnIndex >= numColumns.
+ *   kQ3ErrorInvalidParameter     a coordinate of *point4D is not finite, or
+ *                                its w is not greater than 0.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_SetControlPoint(TQ3GeometryObject nurbPatch, unsigned long rowIndex,
+                                                       unsigned long columnIndex, const TQ3RationalPoint4D *point4D);
+
+/**
+ * Reads the control point in row rowIndex and column columnIndex of a
+ * retained NURB patch.
+ *
+ * @param nurbPatch    the patch to read.
+ * @param rowIndex     the row, from 0 to numRows - 1.
+ * @param columnIndex  the column, from 0 to numColumns - 1.
+ * @param point4D      receives the homogeneous control point.
+ * @return kQ3Success, or kQ3Failure with *point4D unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        nurbPatch or point4D is NULL.
+ *   kQ3ErrorInvalidObject        nurbPatch is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    nurbPatch is not a NURB patch.
+ *   kQ3ErrorParameterOutOfRange  rowIndex >= numRows or
+ *                                columnIndex >= numColumns.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_GetControlPoint(TQ3GeometryObject nurbPatch, unsigned long rowIndex,
+                                                       unsigned long columnIndex, TQ3RationalPoint4D *point4D);
+
+/**
+ * Replaces one knot of the u knot vector of a retained NURB patch. The patch
+ * that results must still obey every TQ3NURBPatchData rule that involves the
+ * u knots: finite, never decreasing, no value repeated too often, a
+ * non-empty domain, and every trim curve inside the domain.
+ *
+ * @param nurbPatch  the patch to change.
+ * @param knotIndex  which knot, from 0 to uOrder + numColumns - 1.
+ * @param knotValue  the new value.
+ * @return kQ3Success, or kQ3Failure with the patch and its edit index
+ *         unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        nurbPatch is NULL.
+ *   kQ3ErrorInvalidObject        nurbPatch is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    nurbPatch is not a NURB patch.
+ *   kQ3ErrorParameterOutOfRange  knotIndex >= uOrder + numColumns.
+ *   kQ3ErrorInvalidParameter     the new value breaks one of those rules (the
+ *                                message says which).
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_SetUKnot(TQ3GeometryObject nurbPatch, unsigned long knotIndex,
+                                                float knotValue);
+
+/**
+ * Replaces one knot of the v knot vector of a retained NURB patch, under the
+ * same conditions as Q3NURBPatch_SetUKnot.
+ *
+ * @param nurbPatch  the patch to change.
+ * @param knotIndex  which knot, from 0 to vOrder + numRows - 1.
+ * @param knotValue  the new value.
+ * @return kQ3Success, or kQ3Failure with the patch and its edit index
+ *         unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        nurbPatch is NULL.
+ *   kQ3ErrorInvalidObject        nurbPatch is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    nurbPatch is not a NURB patch.
+ *   kQ3ErrorParameterOutOfRange  knotIndex >= vOrder + numRows.
+ *   kQ3ErrorInvalidParameter     the new value breaks a rule (the message
+ *                                says which).
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_SetVKnot(TQ3GeometryObject nurbPatch, unsigned long knotIndex,
+                                                float knotValue);
+
+/**
+ * Reads one knot of the u knot vector of a retained NURB patch.
+ *
+ * @param nurbPatch  the patch to read.
+ * @param knotIndex  which knot, from 0 to uOrder + numColumns - 1.
+ * @param knotValue  receives the knot value.
+ * @return kQ3Success, or kQ3Failure with *knotValue unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        nurbPatch or knotValue is NULL.
+ *   kQ3ErrorInvalidObject        nurbPatch is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    nurbPatch is not a NURB patch.
+ *   kQ3ErrorParameterOutOfRange  knotIndex >= uOrder + numColumns.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_GetUKnot(TQ3GeometryObject nurbPatch, unsigned long knotIndex,
+                                                float *knotValue);
+
+/**
+ * Reads one knot of the v knot vector of a retained NURB patch.
+ *
+ * @param nurbPatch  the patch to read.
+ * @param knotIndex  which knot, from 0 to vOrder + numRows - 1.
+ * @param knotValue  receives the knot value.
+ * @return kQ3Success, or kQ3Failure with *knotValue unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        nurbPatch or knotValue is NULL.
+ *   kQ3ErrorInvalidObject        nurbPatch is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    nurbPatch is not a NURB patch.
+ *   kQ3ErrorParameterOutOfRange  knotIndex >= vOrder + numRows.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_GetVKnot(TQ3GeometryObject nurbPatch, unsigned long knotIndex,
+                                                float *knotValue);
+
+/**
+ * Releases what Q3NURBPatch_GetData put in a TQ3NURBPatchData: frees the
+ * control points, both knot vectors and every trim loop with its curves'
+ * arrays, disposes the attribute set reference, and sets the pointers to
+ * NULL (the counts are left alone). Calling it again on the emptied
+ * structure does nothing and succeeds. Use it only on data filled by
+ * Q3NURBPatch_GetData: arrays the caller allocated itself must be freed by
+ * the caller.
+ *
+ * @param nurbPatchData  the structure to empty.
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      nurbPatchData is NULL.
+ *   kQ3ErrorInvalidObject      patchAttributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  patchAttributeSet is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NURBPatch_EmptyData(TQ3NURBPatchData *nurbPatchData);
+
 /* ---- PolyLine ----------------------------------------------------------- */
 
 /*

@@ -121,6 +121,12 @@ typedef struct TQ3SubdivisionStyleData TQ3SubdivisionStyleData;
  *   The most line segments one NURB curve is ever drawn with, whatever the
  *   style. A curve whose style asks for more is drawn with at most this
  *   many, and its submit posts kQ3WarningParameterOutOfRange.
+ * kQ3SubdivisionMaxTrianglesPerPatch
+ *   The most triangles one NURB patch is ever drawn with, whatever the
+ *   style, except that every pair of knot spans gets at least two. A patch
+ *   whose style asks for more is drawn with at most this many (longer
+ *   edges, or fewer segments per span), and its submit posts
+ *   kQ3WarningParameterOutOfRange.
  * kQ3SubdivisionMaxTrianglesPerSurface
  *   The most triangles one box, cone, cylinder, disk, ellipsoid or torus is
  *   ever drawn with, whatever the style. One whose style asks for more is
@@ -138,6 +144,7 @@ typedef struct TQ3SubdivisionStyleData TQ3SubdivisionStyleData;
  *   screen-space subdivision with c1 = c2 = 20).
  */
 #define kQ3SubdivisionMaxSegmentsPerCurve (1 << 20)
+#define kQ3SubdivisionMaxTrianglesPerPatch (1 << 20)
 #define kQ3SubdivisionMaxTrianglesPerSurface (1 << 20)
 #define kQ3SubdivisionMaxConstantSegments 1024
 #define kQ3SubdivisionDefaultC1 20.0f

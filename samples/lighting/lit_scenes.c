@@ -445,6 +445,33 @@ static TQ3Status submit_group_ordered(TQ3ViewObject view)
     return submit_group(view, Q3OrderedDisplayGroup_New());
 }
 
+/* The NURB patches of samples/scenes, Phong-lit, with 16-pixel subdivision. */
+static TQ3Status submit_lit_patch(TQ3ViewObject view, TQ3Status (*submit)(TQ3ViewObject, TQ3AttributeSet, float),
+                                  TQ3ColorRGB color)
+{
+    TQ3AttributeSet set = surface_set(color);
+    TQ3Status status = kQ3Failure;
+    if (set != NULL && submit_new(Q3PhongIllumination_New(), view) == kQ3Success)
+        status = submit(view, set, 16.0f);
+    dispose(set);
+    return status;
+}
+
+static TQ3Status submit_patch_plain(TQ3ViewObject view)
+{
+    return submit_lit_patch(view, q3scene_submit_plain_patch, rgb(0.95f, 0.7f, 0.25f));
+}
+
+static TQ3Status submit_patch_trimmed(TQ3ViewObject view)
+{
+    return submit_lit_patch(view, q3scene_submit_trimmed_patch, rgb(0.35f, 0.8f, 0.4f));
+}
+
+static TQ3Status submit_patch_cylinder(TQ3ViewObject view)
+{
+    return submit_lit_patch(view, q3scene_submit_cylinder_patch, rgb(0.4f, 0.6f, 0.95f));
+}
+
 #define INTERACTIVE kQ3RendererTypeInteractive
 #define DARK {0.1f, 0.1f, 0.13f}
 
@@ -503,6 +530,15 @@ static const Q3LitScene kLitScenes[] = {
     {{"group_ordered", "Ordered display group, same objects: the move and the colour come first and reach both",
       INTERACTIVE, {0.0f, 2.0f, 6.0f}, 0.7f, DARK, submit_group_ordered},
      lights_viewer},
+    {{"patch_plain", "A bicubic NURB patch, Phong-lit: normals from the exact derivatives", INTERACTIVE,
+      {0.0f, 3.8f, 5.4f}, 0.75f, DARK, submit_patch_plain},
+     lights_highlights},
+    {{"patch_trimmed", "The patch trimmed: a circular hole with a square island in it, lit", INTERACTIVE,
+      {0.0f, 3.8f, 5.4f}, 0.75f, DARK, submit_patch_trimmed},
+     lights_highlights},
+    {{"patch_cylinder", "A rational patch that is exactly half a cylinder, lit", INTERACTIVE,
+      {4.2f, 3.0f, 1.8f}, 0.75f, DARK, submit_patch_cylinder},
+     lights_highlights},
 };
 
 unsigned long q3litscene_count(void)

@@ -606,6 +606,169 @@ static TQ3Status submit_mesh(TQ3ViewObject view)
     return status;
 }
 
+/* ---- NURB patches --------------------------------------------------------- */
+
+/* A rational point (x, y, z) of weight w, pre-multiplied. */
+static TQ3RationalPoint4D patch_point(float x, float y, float z, float w)
+{
+    TQ3RationalPoint4D p;
+    p.x = x * w;
+    p.y = y * w;
+    p.z = z * w;
+    p.w = w;
+    return p;
+}
+
+static TQ3RationalPoint3D trim_point(float u, float v, float w)
+{
+    TQ3RationalPoint3D p;
+    p.x = u * w;
+    p.y = v * w;
+    p.w = w;
+    return p;
+}
+
+/* Submits the style, then a retained patch made from data (then disposed). */
+static TQ3Status submit_patch_data(TQ3ViewObject view, const TQ3NURBPatchData *data, float pixels)
+{
+    TQ3SubdivisionStyleData style;
+    style.method = kQ3SubdivisionMethodScreenSpace;
+    style.c1 = pixels;
+    style.c2 = pixels;
+    if (Q3SubdivisionStyle_Submit(&style, view) != kQ3Success)
+        return kQ3Failure;
+    return submit_new(Q3NURBPatch_New(data), view);
+}
+
+/* A bicubic patch of 5 x 5 control points over x, z in [-1.6, 1.6], a hill
+ * in its middle and a dip at one corner, its knots clamped and uniform. */
+static void plain_patch(TQ3NURBPatchData *data, TQ3RationalPoint4D points[25], float knots[9])
+{
+    static const float heights[5][5] = {{0.0f, 0.1f, 0.2f, 0.1f, 0.0f},
+                                        {0.1f, 0.5f, 0.7f, 0.4f, 0.0f},
+                                        {0.2f, 0.7f, 1.3f, 0.6f, -0.1f},
+                                        {0.1f, 0.4f, 0.6f, 0.2f, -0.4f},
+                                        {0.0f, 0.0f, -0.1f, -0.4f, -0.8f}};
+    static const float clamped[9] = {0, 0, 0, 0, 1, 2, 2, 2, 2};
+    int row, column;
+    for (row = 0; row < 5; row++)
+        for (column = 0; column < 5; column++)
+            points[row * 5 + column] =
+                patch_point(-1.6f + 0.8f * (float)column, heights[row][column] - 0.3f, 1.6f - 0.8f * (float)row, 1.0f);
+    memcpy(knots, clamped, sizeof clamped);
+    memset(data, 0, sizeof *data);
+    data->uOrder = 4;
+    data->vOrder = 4;
+    data->numRows = 5;
+    data->numColumns = 5;
+    data->controlPoints = points;
+    data->uKnots = knots;
+    data->vKnots = knots;
+}
+
+TQ3Status q3scene_submit_plain_patch(TQ3ViewObject view, TQ3AttributeSet set, float pixels)
+{
+    TQ3NURBPatchData data;
+    TQ3RationalPoint4D points[25];
+    float knots[9];
+    plain_patch(&data, points, knots);
+    data.patchAttributeSet = set;
+    return submit_patch_data(view, &data, pixels);
+}
+
+TQ3Status q3scene_submit_trimmed_patch(TQ3ViewObject view, TQ3AttributeSet set, float pixels)
+{
+    /* The hole: a circle of radius 0.7 around the middle of the domain
+     * [0, 2] x [0, 2], running clockwise (exactly: a rational quadratic in
+     * four quarters); the island: a square inside it, counterclockwise. */
+    static const float circleKnots[12] = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
+    static const float squareKnots[7] = {0, 0, 1, 2, 3, 4, 4};
+    const float r = 0.7f, s = 0.70710678f, h = 0.3f;
+    static const float offsets[9][2] = {{1, 0}, {1, -1}, {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}, {1, 1}, {1, 0}};
+    TQ3NURBPatchData data;
+    TQ3RationalPoint4D points[25];
+    float knots[9];
+    TQ3RationalPoint3D circle[9], square[5];
+    TQ3NURBPatchTrimCurveData curves[2];
+    TQ3NURBPatchTrimLoopData loops[2];
+    int i;
+    for (i = 0; i < 9; i++)
+        circle[i] = trim_point(1.0f + r * offsets[i][0], 1.0f + r * offsets[i][1], i % 2 ? s : 1.0f);
+    square[0] = trim_point(1.0f - h, 1.0f - h, 1.0f);
+    square[1] = trim_point(1.0f + h, 1.0f - h, 1.0f);
+    square[2] = trim_point(1.0f + h, 1.0f + h, 1.0f);
+    square[3] = trim_point(1.0f - h, 1.0f + h, 1.0f);
+    square[4] = square[0];
+    curves[0].order = 3;
+    curves[0].numPoints = 9;
+    curves[0].controlPoints = circle;
+    curves[0].knots = (float *)circleKnots;
+    curves[1].order = 2;
+    curves[1].numPoints = 5;
+    curves[1].controlPoints = square;
+    curves[1].knots = (float *)squareKnots;
+    loops[0].numTrimCurves = 1;
+    loops[0].trimCurves = &curves[0];
+    loops[1].numTrimCurves = 1;
+    loops[1].trimCurves = &curves[1];
+    plain_patch(&data, points, knots);
+    data.numTrimLoops = 2;
+    data.trimLoops = loops;
+    data.patchAttributeSet = set;
+    return submit_patch_data(view, &data, pixels);
+}
+
+TQ3Status q3scene_submit_cylinder_patch(TQ3ViewObject view, TQ3AttributeSet set, float pixels)
+{
+    /* Half a cylinder of radius 1 around the line x = 0, y = -0.5, from
+     * z = -1.4 to 1.4, on the side y >= -0.5 (its normals outwards): in u two rational quadratic quarter circles
+     * (weights 1, sqrt(2)/2, 1), in v a straight line (order 2). */
+    static const float uKnots[8] = {0, 0, 0, 1, 1, 2, 2, 2};
+    static const float vKnots[4] = {0, 0, 1, 1};
+    static const float arc[5][3] = {{1, 0, 1}, {1, 1, 0.70710678f}, {0, 1, 1}, {-1, 1, 0.70710678f}, {-1, 0, 1}};
+    TQ3NURBPatchData data;
+    TQ3RationalPoint4D points[10];
+    int row, column;
+    for (row = 0; row < 2; row++)
+        for (column = 0; column < 5; column++)
+            points[row * 5 + column] =
+                patch_point(arc[column][0], arc[column][1] - 0.5f, row == 0 ? -1.4f : 1.4f, arc[column][2]);
+    memset(&data, 0, sizeof data);
+    data.uOrder = 3;
+    data.vOrder = 2;
+    data.numColumns = 5;
+    data.numRows = 2;
+    data.controlPoints = points;
+    data.uKnots = (float *)uKnots;
+    data.vKnots = (float *)vKnots;
+    data.patchAttributeSet = set;
+    return submit_patch_data(view, &data, pixels);
+}
+
+static TQ3Status submit_patch_wireframe(TQ3ViewObject view, TQ3Status (*submit)(TQ3ViewObject, TQ3AttributeSet, float),
+                                        TQ3ColorRGB color)
+{
+    TQ3AttributeSet set = color_set(color);
+    TQ3Status status = set == NULL ? kQ3Failure : submit(view, set, 16.0f);
+    dispose(set);
+    return status;
+}
+
+static TQ3Status submit_plain_patch_wireframe(TQ3ViewObject view)
+{
+    return submit_patch_wireframe(view, q3scene_submit_plain_patch, rgb(0.95f, 0.75f, 0.25f));
+}
+
+static TQ3Status submit_trimmed_patch_wireframe(TQ3ViewObject view)
+{
+    return submit_patch_wireframe(view, q3scene_submit_trimmed_patch, rgb(0.35f, 0.85f, 0.45f));
+}
+
+static TQ3Status submit_cylinder_patch_wireframe(TQ3ViewObject view)
+{
+    return submit_patch_wireframe(view, q3scene_submit_cylinder_patch, rgb(0.45f, 0.65f, 1.0f));
+}
+
 /* ---- The scenes ---------------------------------------------------------- */
 
 static const Q3Scene kScenes[] = {
@@ -639,6 +802,12 @@ static const Q3Scene kScenes[] = {
      kQ3RendererTypeInteractive, {0.0f, 0.0f, 6.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_mesh},
     {"mesh_wireframe", "The same Mesh outlined: both contours of the holed face, the shared edge in white",
      kQ3RendererTypeWireFrame, {0.0f, 0.0f, 6.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_mesh},
+    {"patch_plain_wireframe", "A bicubic NURB patch, a hill and a dipping corner, 16-pixel subdivision",
+     kQ3RendererTypeWireFrame, {0.0f, 3.8f, 5.4f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_plain_patch_wireframe},
+    {"patch_trimmed_wireframe", "The same patch trimmed: a circular hole with a square island in it",
+     kQ3RendererTypeWireFrame, {0.0f, 3.8f, 5.4f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_trimmed_patch_wireframe},
+    {"patch_cylinder_wireframe", "A rational patch that is exactly half a cylinder, 16-pixel subdivision",
+     kQ3RendererTypeWireFrame, {4.2f, 3.0f, 1.8f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_cylinder_patch_wireframe},
 };
 
 unsigned long q3scene_count(void)

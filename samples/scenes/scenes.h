@@ -52,6 +52,20 @@ int q3scene_render(const Q3Scene *scene, unsigned long width, unsigned long heig
 int q3scene_render_lit(const Q3Scene *scene, TQ3GroupObject lights, unsigned long width, unsigned long height,
                        unsigned char *rgba);
 
+/*
+ * The NURB patches of the patch scenes, also drawn lit by samples/lighting:
+ * each submits a screen-space subdivision style of `pixels` and then its
+ * patch in the attribute set `set` (may be NULL). Plain: a bicubic hill over
+ * x, z in [-1.6, 1.6]. Trimmed: the same patch with a clockwise circular hole
+ * of radius 0.7 in the middle of its domain [0, 2] x [0, 2] and a
+ * counterclockwise square island of half-side 0.3 in the hole. Cylinder:
+ * half of the cylinder x^2 + (y + 0.5)^2 = 1 with y >= -0.5, z in
+ * [-1.4, 1.4], as rational quadratic quarter circles.
+ */
+TQ3Status q3scene_submit_plain_patch(TQ3ViewObject view, TQ3AttributeSet set, float pixels);
+TQ3Status q3scene_submit_trimmed_patch(TQ3ViewObject view, TQ3AttributeSet set, float pixels);
+TQ3Status q3scene_submit_cylinder_patch(TQ3ViewObject view, TQ3AttributeSet set, float pixels);
+
 #ifdef __cplusplus
 }
 #endif

@@ -14,6 +14,9 @@ namespace q3::limits {
 
 static_assert(kMaxArrayCount == kQ3GeometryMaxArrayCount, "QD3DGeometry.h documents kMaxArrayCount");
 static_assert(kMaxCurveOrder == kQ3NURBCurveMaxOrder, "QD3DGeometry.h documents kMaxCurveOrder");
+static_assert(kMaxPatchOrder == kQ3NURBPatchMaxOrder, "QD3DGeometry.h documents kMaxPatchOrder");
+static_assert(kMaxTrianglesPerPatch == kQ3SubdivisionMaxTrianglesPerPatch,
+              "QD3DStyle.h documents kMaxTrianglesPerPatch");
 static_assert(kMaxSegmentsPerCurve == kQ3SubdivisionMaxSegmentsPerCurve,
               "QD3DStyle.h documents kMaxSegmentsPerCurve");
 static_assert(kMaxTrianglesPerSurface == kQ3SubdivisionMaxTrianglesPerSurface,

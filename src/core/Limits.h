@@ -23,6 +23,14 @@ constexpr std::size_t kMaxArrayCount = std::size_t{1} << 28;
 constexpr unsigned kMinCurveOrder = 2;
 constexpr unsigned kMaxCurveOrder = 16;
 
+/// NURB patch order bounds, in u and in v: 2 and kQ3NURBPatchMaxOrder.
+constexpr unsigned kMinPatchOrder = 2;
+constexpr unsigned kMaxPatchOrder = 11;
+
+/// The most triangles one NURB patch is drawn with (every pair of knot spans
+/// still gets two): kQ3SubdivisionMaxTrianglesPerPatch.
+constexpr std::size_t kMaxTrianglesPerPatch = std::size_t{1} << 20;
+
 /// The most line segments one NURB curve is drawn with:
 /// kQ3SubdivisionMaxSegmentsPerCurve.
 constexpr std::size_t kMaxSegmentsPerCurve = std::size_t{1} << 20;

@@ -171,6 +171,54 @@ int main(void)
             return 14;
         Q3Object_Dispose(mesh);
     }
+    {
+        /* The NURB patch's data structures and calls, from C: a bilinear
+         * patch with one trim loop, made, read and edited. */
+        static TQ3RationalPoint4D points[4] = {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, 1, 0, 1}, {1, 1, 0, 1}};
+        static float knots[4] = {0, 0, 1, 1};
+        static TQ3RationalPoint3D square[5] = {{0.25f, 0.25f, 1}, {0.75f, 0.25f, 1}, {0.75f, 0.75f, 1},
+                                               {0.25f, 0.75f, 1}, {0.25f, 0.25f, 1}};
+        static float squareKnots[7] = {0, 0, 1, 2, 3, 4, 4};
+        TQ3NURBPatchTrimCurveData curve;
+        TQ3NURBPatchTrimLoopData loop;
+        TQ3NURBPatchData patchData, copy;
+        TQ3GeometryObject patch;
+        TQ3RationalPoint4D point;
+        float knot = 0.0f;
+        int patchOk;
+        curve.order = 2;
+        curve.numPoints = 5;
+        curve.controlPoints = square;
+        curve.knots = squareKnots;
+        loop.numTrimCurves = 1;
+        loop.trimCurves = &curve;
+        patchData.uOrder = 2;
+        patchData.vOrder = 2;
+        patchData.numRows = 2;
+        patchData.numColumns = 2;
+        patchData.controlPoints = points;
+        patchData.uKnots = knots;
+        patchData.vKnots = knots;
+        patchData.numTrimLoops = 1;
+        patchData.trimLoops = &loop;
+        patchData.patchAttributeSet = NULL;
+        patch = Q3NURBPatch_New(&patchData);
+        patchOk = patch != NULL && Q3NURBPatch_GetControlPoint(patch, 1, 0, &point) == kQ3Success &&
+                  point.y == 1.0f && Q3NURBPatch_SetControlPoint(patch, 1, 0, &point) == kQ3Success &&
+                  Q3NURBPatch_SetUKnot(patch, 0, -1.0f) == kQ3Success &&
+                  Q3NURBPatch_GetUKnot(patch, 0, &knot) == kQ3Success && knot == -1.0f &&
+                  Q3NURBPatch_SetVKnot(patch, 3, 2.0f) == kQ3Success &&
+                  Q3NURBPatch_GetVKnot(patch, 3, &knot) == kQ3Success && knot == 2.0f &&
+                  Q3NURBPatch_GetData(patch, &copy) == kQ3Success && copy.numTrimLoops == 1 &&
+                  Q3NURBPatch_EmptyData(&copy) == kQ3Success &&
+                  Q3NURBPatch_SetData(patch, &patchData) == kQ3Success &&
+                  Q3NURBPatch_Submit(&patchData, NULL) == kQ3Failure && kQ3NURBPatchMaxOrder == 11 &&
+                  kQ3SubdivisionMaxTrianglesPerPatch > 0;
+        if (patch != NULL)
+            Q3Object_Dispose(patch);
+        if (!patchOk)
+            return 15;
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

@@ -197,8 +197,8 @@ bool sameBytes(const T& a, const T& b)
 
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                   kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup,
-                  kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh };
-constexpr int kKindCount = 26;
+                  kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch };
+constexpr int kKindCount = 27;
 constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
 
 struct Held {
@@ -626,6 +626,7 @@ private:
         case Op::kCurveTools: curveTools(); break;
         case Op::kQuadrics: quadrics(); break;
         case Op::kMeshes: meshes(); break;
+        case Op::kPatches: patches(); break;
         case Op::kCount: break;
         }
     }
@@ -2116,6 +2117,304 @@ private:
             hold(got, Kind::kAttributeSet);
     }
 
+    // ---- NURB patches ------------------------------------------------------
+
+    // A TQ3NURBPatchData and every array it points at. As for curves, the
+    // arrays hold at least what the counts claim, unless a count claims more
+    // than kQ3GeometryMaxArrayCount (which Q3 must reject before reading).
+    struct PatchBuffers {
+        std::vector<TQ3RationalPoint4D> points;
+        std::vector<float> uKnots, vKnots;
+        std::vector<std::vector<TQ3RationalPoint3D>> trimPoints;
+        std::vector<std::vector<float>> trimKnots;
+        std::vector<std::vector<TQ3NURBPatchTrimCurveData>> curves;
+        std::vector<TQ3NURBPatchTrimLoopData> loops;
+        TQ3NURBPatchData data{};
+    };
+
+    // Clamped uniform knots for `count` points of order `order` (ends
+    // repeated order times, interior steps of 1); with `repeat`, one interior
+    // knot doubled.
+    static std::vector<float> clampedKnots(unsigned long count, unsigned long order, bool repeat)
+    {
+        std::vector<float> knots(count + order);
+        const unsigned long interior = count - order;
+        for (unsigned long i = 0; i < knots.size(); ++i)
+            knots[i] = float(std::min(std::max(i, order - 1) - (order - 1), interior + 1));
+        if (repeat && interior >= 2)
+            knots[order + 1] = knots[order];
+        return knots;
+    }
+
+    // The patch flag byte: bit 0 raw uOrder, bit 1 raw vOrder, bit 2 a huge
+    // numTrimLoops, bit 3 a huge numRows, bit 4 a huge numColumns, bit 5 an
+    // attribute set, bit 6 NULL control points, bit 7 NULL knots. Then a
+    // shape byte, the scale, value overwrites, the trim loops.
+    void readPatch(PatchBuffers& p)
+    {
+        const std::uint8_t flags = m_in.u8();
+        const unsigned long uOrder = (flags & 1) ? m_in.u32() : 1 + m_in.u8() % 12;
+        const unsigned long vOrder = (flags & 2) ? m_in.u32() : 1 + m_in.u8() % 12;
+        // Arrays are sized with orders Q3 accepts, whatever the fields say.
+        const unsigned long au = std::clamp<unsigned long>(uOrder, 2, kQ3NURBPatchMaxOrder);
+        const unsigned long av = std::clamp<unsigned long>(vOrder, 2, kQ3NURBPatchMaxOrder);
+        const unsigned long columns = au + m_in.u8() % 6, rows = av + m_in.u8() % 6;
+        takePoints(rows * columns, rows * columns);
+        const std::uint8_t shape = m_in.u8();
+        const float scale = m_in.value();
+        p.points.resize(rows * columns);
+        for (unsigned long r = 0; r < rows; ++r)
+            for (unsigned long c = 0; c < columns; ++c) {
+                const float w = (shape & 1) ? 1.0f + float((r + c) % 3) : 1.0f;
+                const float x = float(c) / float(columns - 1) * scale, y = float(r) / float(rows - 1) * scale;
+                const float z = (shape & 2) ? std::sin(float(r + 2 * c)) * scale : 0.25f * float((r + c) % 2);
+                p.points[r * columns + c] = TQ3RationalPoint4D{x * w, y * w, z * w, w};
+            }
+        p.uKnots = clampedKnots(columns, au, shape & 4);
+        p.vKnots = clampedKnots(rows, av, shape & 8);
+        for (int n = m_in.u8() % 8; n > 0; --n) {
+            const std::uint8_t target = m_in.u8();
+            const float v = m_in.value();
+            if ((target & 3) == 1)
+                p.uKnots[m_in.u16() % p.uKnots.size()] = v;
+            else if ((target & 3) == 2)
+                p.vKnots[m_in.u16() % p.vKnots.size()] = v;
+            else
+                (&p.points[m_in.u16() % p.points.size()].x)[target >> 6] = v;
+        }
+        // Trim loops: each a circle (or, reversed, a hole) around a point of
+        // the domain, cut into curves that join end to end; optionally left
+        // open, or with values overwritten.
+        const float width = float(columns - au + 1), height = float(rows - av + 1);
+        const unsigned long loopCount = m_in.u8() % 5;
+        p.trimPoints.clear();
+        p.curves.resize(loopCount);
+        for (unsigned long l = 0; l < loopCount; ++l) {
+            const std::uint8_t loopFlags = m_in.u8();
+            const unsigned long curveCount = m_in.u8() % 4;
+            const float cu = float(m_in.u8()) / 255.0f * width, cv = float(m_in.u8()) / 255.0f * height;
+            const float radius = float(1 + m_in.u8()) / 512.0f * std::min(width, height);
+            const float turn = (loopFlags & 1) ? -1.0f : 1.0f;
+            for (unsigned long k = 0; k < curveCount; ++k) {
+                const unsigned long order = (loopFlags & 2) ? m_in.u32() : 1 + m_in.u8() % 6;
+                const unsigned long arrayOrder = std::clamp<unsigned long>(order, 2, 16);
+                const unsigned long count = arrayOrder + m_in.u8() % 4;
+                takePoints(count, count);
+                std::vector<TQ3RationalPoint3D> points(count);
+                for (unsigned long i = 0; i < count; ++i) {
+                    const float a = 6.2831853f * turn * (float(k) + float(i) / float(count - 1)) / float(curveCount);
+                    const float w = (loopFlags & 4) ? 1.0f + 0.5f * float(i % 2) : 1.0f;
+                    points[i] = {(cu + radius * std::cos(a)) * w, (cv + radius * std::sin(a)) * w, w};
+                }
+                if (k + 1 == curveCount) // exactly where the first curve starts
+                    points[count - 1] = {cu + radius, cv, 1.0f};
+                p.trimPoints.push_back(std::move(points));
+                p.trimKnots.push_back(clampedKnots(count, arrayOrder, loopFlags & 8));
+                TQ3NURBPatchTrimCurveData curve{};
+                curve.order = order;
+                curve.numPoints = count;
+                p.curves[l].push_back(curve);
+            }
+            if ((loopFlags & 16) && curveCount > 0) // open
+                p.trimPoints.back().back().x += 0.25f * radius;
+            if (loopFlags & 32)
+                for (int n = m_in.u8() % 4; n > 0; --n) {
+                    const float v = m_in.value();
+                    if (p.trimPoints.empty())
+                        break;
+                    std::vector<TQ3RationalPoint3D>& points = p.trimPoints[m_in.u8() % p.trimPoints.size()];
+                    (&points[m_in.u8() % points.size()].x)[m_in.u8() % 3] = v;
+                }
+            if ((loopFlags & 64) && !p.trimKnots.empty())
+                p.trimKnots.back()[m_in.u8() % p.trimKnots.back().size()] = m_in.value();
+        }
+        // Pointers, once every array is in place.
+        std::size_t next = 0;
+        p.loops.resize(loopCount);
+        for (unsigned long l = 0; l < loopCount; ++l) {
+            for (TQ3NURBPatchTrimCurveData& curve : p.curves[l]) {
+                curve.controlPoints = p.trimPoints[next].data();
+                curve.knots = p.trimKnots[next].data();
+                ++next;
+            }
+            p.loops[l].numTrimCurves = p.curves[l].size();
+            p.loops[l].trimCurves = p.curves[l].empty() ? nullptr : p.curves[l].data();
+            if (m_in.u8() == 0xFF)
+                p.loops[l].numTrimCurves = ~0UL - m_in.u8();
+        }
+        p.data.uOrder = uOrder;
+        p.data.vOrder = vOrder;
+        p.data.numRows = (flags & 8) ? ~0UL - m_in.u8() : rows;
+        p.data.numColumns = (flags & 16) ? (m_in.u8() & 1 ? ~0UL : 1UL << 32) : columns;
+        p.data.controlPoints = (flags & 64) ? nullptr : p.points.data();
+        p.data.uKnots = (flags & 128) ? nullptr : p.uKnots.data();
+        p.data.vKnots = (flags & 128) ? nullptr : p.vKnots.data();
+        p.data.numTrimLoops = (flags & 4) ? ~0UL - m_in.u8() : loopCount;
+        p.data.trimLoops = p.loops.empty() ? nullptr : p.loops.data();
+        p.data.patchAttributeSet = (flags & 32) ? pick(Kind::kAttributeSet) : nullptr;
+    }
+
+    // Whether two valid descriptions are the same, value for value.
+    static bool samePatch(const TQ3NURBPatchData& a, const TQ3NURBPatchData& b)
+    {
+        if (a.uOrder != b.uOrder || a.vOrder != b.vOrder || a.numRows != b.numRows ||
+            a.numColumns != b.numColumns || a.numTrimLoops != b.numTrimLoops ||
+            a.patchAttributeSet != b.patchAttributeSet)
+            return false;
+        if (std::memcmp(a.controlPoints, b.controlPoints, a.numRows * a.numColumns * sizeof *a.controlPoints) != 0 ||
+            std::memcmp(a.uKnots, b.uKnots, (a.uOrder + a.numColumns) * sizeof(float)) != 0 ||
+            std::memcmp(a.vKnots, b.vKnots, (a.vOrder + a.numRows) * sizeof(float)) != 0)
+            return false;
+        for (unsigned long l = 0; l < a.numTrimLoops; ++l) {
+            const TQ3NURBPatchTrimLoopData &la = a.trimLoops[l], &lb = b.trimLoops[l];
+            if (la.numTrimCurves != lb.numTrimCurves)
+                return false;
+            for (unsigned long k = 0; k < la.numTrimCurves; ++k) {
+                const TQ3NURBPatchTrimCurveData &ca = la.trimCurves[k], &cb = lb.trimCurves[k];
+                if (ca.order != cb.order || ca.numPoints != cb.numPoints ||
+                    std::memcmp(ca.controlPoints, cb.controlPoints, ca.numPoints * sizeof *ca.controlPoints) != 0 ||
+                    std::memcmp(ca.knots, cb.knots, (ca.order + ca.numPoints) * sizeof(float)) != 0)
+                    return false;
+            }
+        }
+        return true;
+    }
+
+    // patches(): the action byte, then what it reads. 0 New, 1 SetData,
+    // 2 GetData and EmptyData (twice), 3 immediate Submit (0-3 share
+    // surfaceAction with the quadrics), 4 one control point or knot Set or
+    // Get, 5 decomposition, 6 retained submit (bounds and the generic ops
+    // reach patches through Kind::kPatch).
+    void patches()
+    {
+        const std::uint8_t action = m_in.u8() % 7;
+        if (action <= 3) {
+            PatchBuffers p;
+            readPatch(p);
+            const bool nullData = m_in.u8() == 0;
+            if (action == 3 && !drawAllowed())
+                return;
+            surfaceAction<TQ3NURBPatchData>(action, Kind::kPatch, nullData ? nullptr : &p.data, Q3NURBPatch_New,
+                                            Q3NURBPatch_SetData, Q3NURBPatch_GetData, Q3NURBPatch_EmptyData,
+                                            Q3NURBPatch_Submit, samePatch);
+            return;
+        }
+        if (action == 4)
+            return patchField();
+        const TQ3Object patch = pick(Kind::kPatch);
+        const TQ3Object view = pick(Kind::kView);
+        if (!drawAllowed())
+            return;
+        const DrawTimer timer(m_drawSeconds);
+        if (action == 5) {
+            const TQ3Object result = OBJECT(Q3Geometry_GetDecomposed(patch, view));
+            if (result == nullptr)
+                return;
+            const Held* entry = heldEntry(patch);
+            require(entry != nullptr, "Q3Geometry_GetDecomposed", "decomposed something nobody holds");
+            if (entry->kind == Kind::kPatch)
+                checkPatchDecomposed(patch, result);
+            else // another geometry, picked when no patch is held
+                hold(result, Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh ? Kind::kTriMesh : Kind::kPolyLine);
+        } else {
+            STATUS(Q3Geometry_Submit(patch, view));
+        }
+    }
+
+    // One per-field call: Set or Get of a control point (row, column), a u
+    // knot or a v knot, at an index biased to the edges, NULL or not. A Set
+    // that fails changes nothing; one that succeeds reads back.
+    void patchField()
+    {
+        const TQ3Object patch = pick(Kind::kPatch);
+        const bool ours = holdsKind(patch, Kind::kPatch) && m_initialized > 0;
+        TQ3NURBPatchData shape{};
+        if (ours && STATUS(Q3NURBPatch_GetData(patch, &shape)) != kQ3Success)
+            die("Q3NURBPatch_GetData", "failed on a live patch");
+        const std::uint8_t field = m_in.u8();
+        const bool set = field & 1, nullArg = m_in.u8() == 0;
+        const unsigned long row = m_in.index(shape.numRows), column = m_in.index(shape.numColumns);
+        const unsigned long uKnot = m_in.index(shape.uOrder + shape.numColumns);
+        const unsigned long vKnot = m_in.index(shape.vOrder + shape.numRows);
+        const TQ3RationalPoint4D point{m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+        const float knot = m_in.value();
+        const unsigned long before = ours ? editIndex(patch) : 0;
+        TQ3Status status = kQ3Failure;
+        switch ((field >> 1) % 3) {
+        case 0:
+            if (set) {
+                status = STATUS(Q3NURBPatch_SetControlPoint(patch, row, column, nullArg ? nullptr : &point));
+                TQ3RationalPoint4D got{};
+                if (status == kQ3Success && ours &&
+                    STATUS(Q3NURBPatch_GetControlPoint(patch, row, column, &got)) == kQ3Success)
+                    require(sameBytes(got, point), "Q3NURBPatch_SetControlPoint", "does not read back");
+            } else {
+                TQ3RationalPoint4D got{};
+                status = STATUS(Q3NURBPatch_GetControlPoint(patch, row, column, nullArg ? nullptr : &got));
+                if (ours && !nullArg && row < shape.numRows && column < shape.numColumns)
+                    require(status == kQ3Success && sameBytes(got, shape.controlPoints[row * shape.numColumns + column]),
+                            "Q3NURBPatch_GetControlPoint", "failed or differs from GetData on a valid index");
+            }
+            break;
+        case 1:
+        case 2: {
+            const bool inU = (field >> 1) % 3 == 1;
+            const unsigned long index = inU ? uKnot : vKnot;
+            auto setKnot = inU ? Q3NURBPatch_SetUKnot : Q3NURBPatch_SetVKnot;
+            auto getKnot = inU ? Q3NURBPatch_GetUKnot : Q3NURBPatch_GetVKnot;
+            const unsigned long count = inU ? shape.uOrder + shape.numColumns : shape.vOrder + shape.numRows;
+            float got = 0.0f;
+            if (set) {
+                status = STATUS(setKnot(patch, index, knot));
+                if (status == kQ3Success && ours && STATUS(getKnot(patch, index, &got)) == kQ3Success)
+                    require(sameBytes(got, knot), "Q3NURBPatch_SetKnot", "does not read back");
+            } else {
+                status = STATUS(getKnot(patch, index, nullArg ? nullptr : &got));
+                if (ours && !nullArg && index < count)
+                    require(status == kQ3Success && sameBytes(got, (inU ? shape.uKnots : shape.vKnots)[index]),
+                            "Q3NURBPatch_GetKnot", "failed or differs from GetData on a valid index");
+            }
+            break;
+        }
+        }
+        require(status == kQ3Failure || ours, "Q3NURBPatch_*", "succeeded on something that is not a patch");
+        if (ours) {
+            if (set && status == kQ3Failure) {
+                TQ3NURBPatchData now{};
+                STATUS(Q3NURBPatch_GetData(patch, &now));
+                require(editIndex(patch) == before && samePatch(now, shape), "Q3NURBPatch_Set",
+                        "failed but changed the patch");
+                STATUS(Q3NURBPatch_EmptyData(&now));
+            }
+            STATUS(Q3NURBPatch_EmptyData(&shape));
+        }
+    }
+
+    // A patch gives a TriMesh of finite points within the triangle cap (or
+    // two per pair of spans, when that is more), with indices in range.
+    void checkPatchDecomposed(TQ3Object patch, TQ3Object result)
+    {
+        const char* call = "Q3Geometry_GetDecomposed";
+        require(Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh, call, "a patch gave no trimesh");
+        hold(result, Kind::kTriMesh);
+        TQ3NURBPatchData data{};
+        STATUS(Q3NURBPatch_GetData(patch, &data));
+        const unsigned long spans = (data.numColumns - data.uOrder + 1) * (data.numRows - data.vOrder + 1);
+        STATUS(Q3NURBPatch_EmptyData(&data));
+        TQ3TriMeshData mesh{};
+        STATUS(Q3TriMesh_GetData(result, &mesh));
+        require(mesh.numTriangles <= std::max<unsigned long>(kQ3SubdivisionMaxTrianglesPerPatch, 2 * spans), call,
+                "a patch's trimesh has more triangles than the cap");
+        for (unsigned long i = 0; i < mesh.numPoints; ++i)
+            require(std::isfinite(mesh.points[i].x) && std::isfinite(mesh.points[i].y) &&
+                        std::isfinite(mesh.points[i].z),
+                    call, "a patch's trimesh has a point that is not finite");
+        for (unsigned long t = 0; t < mesh.numTriangles; ++t)
+            for (unsigned long k : mesh.triangles[t].pointIndices)
+                require(k < mesh.numPoints, call, "a patch's trimesh has an index out of range");
+        STATUS(Q3TriMesh_EmptyData(&mesh));
+    }
+
     void quadricDecompose(Kind kind)
     {
         const TQ3Object geometry = pick(kind);
@@ -3099,7 +3398,8 @@ private:
         const TQ3Object view = pick(Kind::kView);
         const Held* entry = heldEntry(object);
         if (entry != nullptr &&
-            (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine || isQuadric(entry->kind)) &&
+            (entry->kind == Kind::kCurve || entry->kind == Kind::kPolyLine || isQuadric(entry->kind) ||
+             entry->kind == Kind::kPatch) &&
             !drawAllowed())
             return;
         if (entry != nullptr && entry->kind == Kind::kGroup && (!drawAllowed() || !groupIsSmall(object)))
@@ -3222,6 +3522,11 @@ private:
         if (entry != nullptr && isQuadric(entry->kind)) {
             require(!posted, "Q3Geometry_GetDecomposed", "posted an error but decomposed");
             checkQuadricDecomposed(entry->kind, polyline);
+            return;
+        }
+        if (entry != nullptr && entry->kind == Kind::kPatch) {
+            require(!posted, "Q3Geometry_GetDecomposed", "posted an error but decomposed");
+            checkPatchDecomposed(geometry, polyline);
             return;
         }
         if (holdsKind(geometry, Kind::kPolygon)) {

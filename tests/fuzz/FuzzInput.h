@@ -78,6 +78,7 @@ enum class Op : std::uint8_t {
     kCurveTools,
     kQuadrics,
     kMeshes,
+    kPatches,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -20,7 +20,7 @@ using q3fuzz::Op;
 // Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                            kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
-                           kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh };
+                           kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -807,6 +807,100 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kDuplicate).u8(kMesh).held();
         s.op(Op::kMeshes).u8(3).held().u8(0).u8(2).u8(1);                                   // delete vertex 2
         s.op(Op::kMeshes).u8(7).held();
+    // NURB patches (patches(): the action byte, then readPatch()'s bytes:
+    // flags, orders, extra columns and rows, shape, scale, overwrites, trim
+    // loops, the huge-curve-count byte of each loop, the non-null byte).
+    struct Loop {
+        std::uint8_t flags, curves, u, v, radius, order;
+    };
+    auto newPatch = [](Seed& s, std::uint8_t flags, std::uint8_t uOrder, std::uint8_t vOrder, std::uint8_t shape,
+                       const std::vector<Loop>& loops) -> Seed& {
+        s.op(Op::kPatches).u8(0).u8(flags);
+        if (flags & 1)
+            s.u32(uOrder == 0 ? 0xFFFFFFFFu : uOrder);
+        else
+            s.u8(std::uint8_t(uOrder - 1));
+        if (flags & 2)
+            s.u32(vOrder == 0 ? 0xFFFFFFFFu : vOrder);
+        else
+            s.u8(std::uint8_t(vOrder - 1));
+        s.u8(2).u8(3).u8(shape).value(2.0f).u8(0).u8(std::uint8_t(loops.size()));
+        for (const Loop& l : loops) {
+            s.u8(l.flags).u8(l.curves).u8(l.u).u8(l.v).u8(l.radius);
+            for (std::uint8_t k = 0; k < l.curves; ++k) {
+                if (l.flags & 2)
+                    s.u32(l.order == 0 ? 0xFFFFFFFFu : l.order);
+                else
+                    s.u8(std::uint8_t(l.order - 1));
+                s.u8(1);
+            }
+        }
+        for (std::size_t l = 0; l < loops.size(); ++l)
+            s.u8(0);
+        if (flags & 8)
+            s.u8(0);
+        if (flags & 16)
+            s.u8(1);
+        if (flags & 4)
+            s.u8(0);
+        if (flags & 32)
+            s.held();
+        return s.u8(1);
+    };
+    // A plain rational bicubic; a quadratic-by-quartic one with an outer
+    // loop of two curves, a hole and an island in it; both drawn, bounded
+    // and decomposed under each method.
+    auto twoPatches = [&](Seed& s) -> Seed& {
+        newPatch(s, 0, 4, 4, 1, {});
+        return newPatch(s, 0, 3, 5, 2 | 4, {{0, 2, 128, 128, 250, 3}, {1, 1, 128, 128, 120, 4}, {0, 1, 128, 128, 50, 2}});
+    };
+    {
+        Seed& s = twoPatches(add("patches-draw")).scene(2);
+        s.startRendering().submitHeld(kPatch, 0).submitHeld(kPatch, 1).endRendering();
+        s.startBox().submitHeld(kPatch, 1).endBox();
+        s.startRendering().submitStyle(kWorld, 0.3f);
+        s.op(Op::kPatches).u8(5).held(0).held().op(Op::kPatches).u8(5).held(1).held();
+        s.endRendering().startRendering().submitStyle(kScreen, 6.0f);
+        s.op(Op::kPatches).u8(5).held(1).held().op(Op::kPatches).u8(6).held(0).held();
+        s.endRendering().startRendering().submitStyle(kConstant, 3.0f).decompose(0).endRendering();
+    }
+    // Bad data: an order of ULONG_MAX, huge counts, NULL arrays, an open
+    // loop, a loop with no curves, a NaN weight, then SetData of the same.
+    {
+        Seed& s = twoPatches(add("patches-bad"));
+        newPatch(s, 1, 0, 4, 0, {});
+        newPatch(s, 8 | 16, 4, 4, 0, {});
+        newPatch(s, 4, 2, 2, 0, {{0, 1, 128, 128, 100, 3}});
+        newPatch(s, 64 | 128, 4, 4, 0, {});
+        newPatch(s, 0, 4, 4, 0, {{16, 2, 100, 100, 100, 3}});
+        newPatch(s, 0, 4, 4, 0, {{0, 0, 100, 100, 100, 3}});
+        newPatch(s, 0, 4, 4, 0, {{2, 1, 100, 100, 100, 0}});
+        // A NaN weight (component 3 of point 5), then a decreasing knot.
+        s.op(Op::kPatches).u8(0).u8(0).u8(3).u8(3).u8(0).u8(0).u8(0).value(1.0f).u8(2);
+        s.u8(0xC0).special(0).u16(5).u8(1).value(-5.0f).u16(6).u8(0).u8(1);
+        s.op(Op::kPatches).u8(1).u8(0).u8(3).u8(3).u8(0).u8(0).u8(0).value(1.0f).u8(1);
+        s.u8(0xC0).special(0).u16(5).u8(0).u8(1).held();
+        s.scene().startRendering().submitHeld(kPatch, 1).endRendering();
+    }
+    // Every per-field call at the edges of its indices (patchField(): the
+    // patch, field byte, null byte, row, column, u knot and v knot indices,
+    // a point, a knot).
+    {
+        Seed& s = twoPatches(add("patches-edits"));
+        auto field = [&s](std::uint8_t which, std::uint8_t row, std::uint8_t knot) -> Seed& {
+            s.op(Op::kPatches).u8(4).held(1).u8(which).u8(1).smallIndex(row).smallIndex(1).smallIndex(knot);
+            return s.smallIndex(knot).value(0.5f).value(0.5f).value(0.5f).value(1.0f).value(0.5f);
+        };
+        for (std::uint8_t which = 0; which < 6; ++which) {
+            field(which, 0, 0);
+            field(which, 6, 12);
+            field(which, 7, 13);
+        }
+        s.op(Op::kPatches).u8(4).held(1).u8(1).u8(1).rawIndex(0xFFFFFFFFu).smallIndex(0).smallIndex(0);
+        s.smallIndex(0).special(0).value(0).value(0).value(1).value(0);
+        s.op(Op::kPatches).u8(2).u8(0).u8(3).u8(3).u8(0).u8(0).u8(0).value(1).u8(0).u8(0).u8(0);
+        s.op(Op::kDuplicate).u8(kPatch).held(1);
+        s.scene(2).startRendering().submitHeld(kPatch, 2).endRendering().dispose(kPatch, 1);
     }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {

@@ -291,4 +291,40 @@ TEST_F(LitSceneTest, TheBoxSampleDrawsAnOrangeBoxThatTurns)
     EXPECT_NE(first.pixels, second.pixels);
 }
 
+// The trimmed patch: down the middle column the plain patch is one run of
+// drawn pixels, the trimmed one is cut by the hole; at the middle row of the
+// run beyond the hole (the island), the hole's background lies on both
+// sides, and the patch again beyond it.
+TEST_F(LitSceneTest, TheTrimmedPatchHasAHoleWithAnIslandInIt)
+{
+    const q3test::RgbaImage plain = render("patch_plain");
+    const q3test::RgbaImage trimmed = render("patch_trimmed");
+    auto runs = [](const q3test::RgbaImage& image, int x) {
+        std::vector<std::pair<int, int>> found;
+        for (int y = 0; y < kHeight; ++y)
+            if (!isBackground(at(image, x, y))) {
+                if (found.empty() || found.back().second != y - 1)
+                    found.push_back({y, y});
+                else
+                    found.back().second = y;
+            }
+        return found;
+    };
+    const int middle = kWidth / 2;
+    ASSERT_EQ(runs(plain, middle).size(), 1u);
+    const auto cut = runs(trimmed, middle);
+    ASSERT_GE(cut.size(), 2u);
+    const int y = (cut[0].first + cut[0].second) / 2;
+    for (int step : {-1, 1}) {
+        int x = middle;
+        while (x > 0 && x < kWidth - 1 && !isBackground(at(trimmed, x, y)))
+            x += step;
+        const int island = std::abs(x - middle);
+        while (x > 0 && x < kWidth - 1 && isBackground(at(trimmed, x, y)))
+            x += step;
+        EXPECT_GT(island, 5) << "the island";
+        EXPECT_TRUE(x > 0 && x < kWidth - 1) << "no patch beyond the hole at row " << y;
+    }
+}
+
 } // namespace

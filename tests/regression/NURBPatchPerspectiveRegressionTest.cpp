@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Screen-space subdivision of patches that reach the eye of a perspective
+// camera (behind it, through it, across its hither plane), the surface
+// version of SubdivisionPerspectiveRegressionTest.cpp: the part of every
+// triangle edge that is drawn (beyond the hither plane) is at most c1 pixels
+// long, and the work stays bounded (never more than the triangle cap).
+// (Vertices on the surface are checked by NURBPatchPropertyRegressionTest.) Checked with PatchReference.h's evaluator and
+// SubdivisionReference.h's projection.
+
+#include "PatchReference.h"
+#include "Q3ApiTest.h"
+
+#include "QD3DCamera.h"
+#include "QD3DDrawContext.h"
+#include "QD3DGeometry.h"
+#include "QD3DRenderer.h"
+#include "QD3DSet.h"
+#include "QD3DStyle.h"
+#include "QD3DView.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace q3test::patches;
+using q3test::subdivision::ScreenMap;
+
+constexpr unsigned long kWidth = 128;
+constexpr unsigned long kHeight = 96;
+constexpr float kHither = 0.5f;
+constexpr unsigned kSeed = 20261202u;
+constexpr int kPatches = 12;
+
+class NURBPatchPerspectiveRegressionTest : public q3test::Q3ApiTest {
+protected:
+    void SetUp() override
+    {
+        Q3ApiTest::SetUp();
+        m_memory.assign(kWidth * kHeight * 4, 0);
+        TQ3PixmapDrawContextData data{};
+        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
+        data.drawContextData.clearImageColor = {1, 0, 0, 0};
+        data.pixmap = {m_memory.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
+                       kQ3EndianBig};
+        m_context = Q3PixmapDrawContext_New(&data);
+        // The eye at the origin looking down -z.
+        m_camera.cameraData.placement = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}};
+        m_camera.cameraData.range = {kHither, 100.0f};
+        m_camera.cameraData.viewPort = {{-1, 1}, 2, 2};
+        m_camera.fov = 1.2f;
+        m_camera.aspectRatioXToY = float(kWidth) / float(kHeight);
+        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&m_camera);
+        m_view = Q3View_New();
+        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
+        ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
+        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
+        Q3Object_Dispose(camera);
+    }
+
+    void TearDown() override
+    {
+        Q3Object_Dispose(m_view);
+        Q3Object_Dispose(m_context);
+        Q3ApiTest::TearDown();
+    }
+
+    // Draws the patch (retained and immediate) and decomposes it, in one
+    // rendering loop under screen-space subdivision with c1; returns the
+    // TriMesh's points and triangles.
+    void render(Patch& patch, float c1, std::vector<Vec3>& points, std::vector<std::array<unsigned long, 3>>& triangles,
+                bool& capped)
+    {
+        const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodScreenSpace, c1, c1};
+        TQ3NURBPatchData data = patch.data();
+        TQ3GeometryObject object = Q3NURBPatch_New(&data);
+        ASSERT_NE(object, nullptr);
+        EXPECT_EQ(Q3View_StartRendering(m_view), kQ3Success);
+        EXPECT_EQ(Q3SubdivisionStyle_Submit(&style, m_view), kQ3Success);
+        EXPECT_EQ(Q3Geometry_Submit(object, m_view), kQ3Success);
+        EXPECT_EQ(Q3NURBPatch_Submit(&data, m_view), kQ3Success);
+        TQ3GeometryObject mesh = Q3Geometry_GetDecomposed(object, m_view);
+        capped = Q3Warning_Get(nullptr) == kQ3WarningParameterOutOfRange;
+        EXPECT_NE(mesh, nullptr);
+        if (mesh != nullptr) {
+            TQ3TriMeshData out{};
+            EXPECT_EQ(Q3TriMesh_GetData(mesh, &out), kQ3Success);
+            for (unsigned long i = 0; i < out.numPoints; ++i)
+                points.push_back(q3test::subdivision::toVec(out.points[i]));
+            for (unsigned long t = 0; t < out.numTriangles; ++t)
+                triangles.push_back({out.triangles[t].pointIndices[0], out.triangles[t].pointIndices[1],
+                                     out.triangles[t].pointIndices[2]});
+            Q3TriMesh_EmptyData(&out);
+            Q3Object_Dispose(mesh);
+        }
+        EXPECT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
+        Q3Object_Dispose(object);
+    }
+
+    std::vector<unsigned char> m_memory;
+    TQ3DrawContextObject m_context = nullptr;
+    TQ3ViewObject m_view = nullptr;
+    TQ3ViewAngleAspectCameraData m_camera{};
+};
+
+TEST_F(NURBPatchPerspectiveRegressionTest, TheDrawnPieceOfEveryEdgeIsAtMostC1)
+{
+    std::mt19937 rng(kSeed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const ScreenMap map(m_camera, {{0, 0}, {float(kWidth), float(kHeight)}});
+    std::size_t crossing = 0, largest = 0, cappedPatches = 0;
+    for (int index = 0; index < kPatches && !HasFatalFailure(); ++index) {
+        PatchOptions options;
+        options.uOrder = 2 + unsigned(index % 6);
+        options.vOrder = 2 + unsigned((index + 2) % 6);
+        options.repeatProbability = 0.3L;
+        options.extraPoints = 3;
+        Patch p = randomPatch(rng, options);
+        // Around the eye: x, y over [-1.5, 1.5], z from about 1 (behind) to -3.
+        const float sx = float(3.0 / double(p.numColumns - 1)), sy = float(3.0 / double(p.numRows - 1));
+        const float dz = float(2.0 * unit(rng) - 1.0);
+        for (unsigned long r = 0; r < p.numRows; ++r)
+            for (unsigned long c = 0; c < p.numColumns; ++c) {
+                TQ3RationalPoint4D& q = p.points[r * p.numColumns + c];
+                const float x = -1.5f + sx * float(c), y = -1.5f + sy * float(r);
+                const float z = q.z / q.w * 2.0f - 1.0f + dz - 1.5f * float(r) / float(p.numRows);
+                q = {x * q.w, y * q.w, z * q.w, q.w};
+            }
+        if (index % 3 == 1)
+            addRandomTrims(rng, p, 1 + index % 3);
+        const float c1 = index % 2 == 0 ? 16.0f : 32.0f;
+        std::vector<Vec3> points;
+        std::vector<std::array<unsigned long, 3>> triangles;
+        bool capped = false;
+        render(p, c1, points, triangles, capped);
+        forgetPosted();
+        if (capped) {
+            // Gave in to the cap (posting kQ3WarningParameterOutOfRange, as
+            // QD3DGeometry.h says): its edges may be longer than c1.
+            ++cappedPatches;
+            continue;
+        }
+        largest = std::max(largest, triangles.size());
+        EXPECT_LE(triangles.size(), std::size_t(kQ3SubdivisionMaxTrianglesPerPatch));
+        const std::string what = "patch " + std::to_string(index);
+        const Real size = p.size();
+        for (const auto& t : triangles)
+            for (int k = 0; k < 3; ++k) {
+                Vec3 a = points[t[k]], b = points[t[(k + 1) % 3]];
+                const Real da = map.depth(a), db = map.depth(b);
+                if (da < kHither && db < kHither)
+                    continue;
+                if (da < kHither || db < kHither) {
+                    ++crossing;
+                    const Real s = (kHither - da) / (db - da);
+                    const Vec3 onPlane = a + s * (b - a);
+                    (da < kHither ? a : b) = onPlane;
+                }
+                Real ax, ay, bx, by;
+                ASSERT_TRUE(map.map(a, ax, ay) && map.map(b, bx, by)) << what;
+                const Real slack = map.pixelError(a, 1e-6L * size) + map.pixelError(b, 1e-6L * size) + 1e-3L;
+                EXPECT_LE(std::hypot(bx - ax, by - ay), c1 + slack)
+                    << what << ", depths " << double(da) << " and " << double(db);
+            }
+        if (HasFailure()) {
+            std::printf("[ patches ] first failing patch around the eye: %s\n", what.c_str());
+            break;
+        }
+    }
+    std::printf("[ patches ] around the eye: %zu edges cross the hither plane; at most %zu triangles; %zu of %d "
+                "patches gave in to the triangle cap\n",
+                crossing, largest, cappedPatches, kPatches);
+    // A known limit: where an edge cannot be split finely enough next to
+    // the hither plane (its midpoint too close to an end on the parameter
+    // key grid), the patch is drawn with longer edges there and warns. Today
+    // that is 5 of these 12 patches; the rest keep the bound. (Some patches
+    // of this family take seconds to reach the cap, so the count is small.)
+    EXPECT_LE(cappedPatches, std::size_t(kPatches / 2));
+    EXPECT_GT(crossing, 20u) << "the patches should cross the hither plane";
+}
+
+} // namespace
