@@ -60,9 +60,21 @@ TQ3ObjectType typeOfName(const std::string& name)
 const Node* Parts::find(TQ3ObjectType type) const
 {
     for (const Node* node : subobjects) {
-        if (node->type == type)
+        const Node* target = node;
+        if (node->type == kTypeReference && file != nullptr) {
+            // A reference stands for its target; the caller reads the
+            // reference, so every reference gives the one object.
+            DataReader in(*file, *node);
+            if (in.atEnd())
+                continue;
+            const auto found = file->references.find(in.u32());
+            if (found == file->references.end())
+                return node; // reading it reports the dangling reference
+            target = found->second;
+        }
+        if (target->type == type)
             return node;
-        if (node->type == kTypeContainer && !node->children.empty() && node->children.front().type == type)
+        if (target->type == kTypeContainer && !target->children.empty() && target->children.front().type == type)
             return node;
     }
     return nullptr;
@@ -158,7 +170,7 @@ Ref<SharedObject> ReadContext::build(const Node& node)
         if (root.type == kTypeContainer || root.type == kTypeReference || root.type == kTypeBeginGroup)
             fail(kQ3ErrorInvalidMetafileObject, "a container whose first object is a " +
                                                     (root.name.empty() ? typeName(root.type) : root.name));
-        Parts parts{root, {}};
+        Parts parts{root, {}, &m_file};
         for (std::size_t i = 1; i < node.children.size(); ++i)
             parts.subobjects.push_back(&node.children[i]);
         const ClassIO* entry = classOfType(root.type);
@@ -169,7 +181,7 @@ Ref<SharedObject> ReadContext::build(const Node& node)
     const ClassIO* entry = classOfType(node.type);
     if (entry == nullptr)
         return unknownFrom(m_file, node);
-    return entry->read(*this, Parts{node, {}});
+    return entry->read(*this, Parts{node, {}, &m_file});
 }
 
 Ref<AttributeSet> ReadContext::attributeSet(const Parts& parts)

@@ -31,6 +31,7 @@ class WriteContext;
 struct Parts {
     const Node& root;
     std::vector<const Node*> subobjects;
+    const Metafile* file = nullptr; ///< to look through references
 
     /// The first subobject of that type (looking through containers), or null.
     const Node* find(TQ3ObjectType type) const;

@@ -747,8 +747,13 @@ void Encoder::u64(std::uint64_t value)
 void Encoder::f32(float value)
 {
     if (m_encoding == Encoding::kText) {
+        // The shortest form that reads back as the same float.
         char text[32];
-        std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+        for (int digits = 6; digits <= 9; ++digits) {
+            std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(value));
+            if (std::strtof(text, nullptr) == value)
+                break;
+        }
         word(text);
     } else {
         bytes(&value, 4, true);
