@@ -29,8 +29,24 @@
  *
  * An object written twice into one file (a shared attribute set, a geometry
  * in two groups) is written once and referred to the second time, through
- * the table of contents, in Normal and Database mode; Stream mode writes it
- * again. Reading gives back one object for every reference to it.
+ * the table of contents, in Normal and Database mode (Q3 writes Database
+ * files as Normal ones, with the Database mode in the header); Stream mode
+ * writes it again. Groups are written again each time. Reading gives back one
+ * object for every reference to it.
+ *
+ * What Q3 reads and writes: the geometries Point, Line, PolyLine, Triangle,
+ * Polygon, TriMesh (without attribute arrays), NURBCurve, Box, Cone,
+ * Cylinder, Disk, Ellipse, Ellipsoid and Torus, with their own attribute set,
+ * their vertices' sets (VertexAttributeSetList) and the solids' Caps;
+ * attribute sets (surface and shading UV, normal, ambient coefficient,
+ * diffuse, specular and transparency colour, specular control, surface
+ * tangent, highlight state); groups (Group, DisplayGroup,
+ * OrderedDisplayGroup, IOProxyDisplayGroup, LightGroup, InfoGroup) through
+ * BeginGroup and EndGroup; the subdivision, backfacing, interpolation, fill,
+ * orientation, pick ID, pick parts and shadow styles; the Phong, Lambert and
+ * NULL illumination shaders; ambient, directional, point and spot lights;
+ * matrix, translate, scale, rotate and reset transforms. Anything else in a
+ * file is read as an unknown object.
  *
  * Objects of a type Q3 does not know are read as unknown objects
  * (Q3Unknown_GetType) and written back unchanged.
@@ -151,8 +167,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_StartWriting(TQ3ViewObject view, TQ3FileObject
 
 /*
  * Q3View_EndWriting: ends the loop: kQ3ViewStatusDone (Q3 never asks for a
- * retraversal), kQ3ViewStatusCancelled after Q3View_Cancel (nothing written
- * in the loop is kept), kQ3ViewStatusError on failure.
+ * retraversal), kQ3ViewStatusCancelled after Q3View_Cancel (objects
+ * submitted after the cancel were not written), kQ3ViewStatusError on
+ * failure. The file is complete when it is closed.
  * Errors: kQ3ErrorWriteStateInactive outside a writing loop.
  */
 Q3_EXTERN_API_C(TQ3ViewStatus) Q3View_EndWriting(TQ3ViewObject view);
