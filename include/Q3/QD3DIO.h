@@ -35,7 +35,7 @@
  * object for every reference to it.
  *
  * What Q3 reads and writes: the geometries Point, Line, PolyLine, Triangle,
- * Polygon, TriMesh (without attribute arrays), NURBCurve, Box, Cone,
+ * Polygon, TriMesh (with its attribute arrays), NURBCurve, Box, Cone,
  * Cylinder, Disk, Ellipse, Ellipsoid and Torus, with their own attribute set,
  * their vertices' sets (VertexAttributeSetList) and the solids' Caps;
  * attribute sets (surface and shading UV, normal, ambient coefficient,

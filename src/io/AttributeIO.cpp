@@ -174,6 +174,7 @@ void addAttributeClasses(std::vector<ClassIO>& table)
     // geometry.
     table.push_back({Q3_OBJECT_TYPE('v', 'a', 's', 'l'), "VertexAttributeSetList", refuseElement, writeNothing});
     table.push_back({Q3_OBJECT_TYPE('c', 'a', 'p', 's'), "Caps", refuseElement, writeNothing});
+    table.push_back({Q3_OBJECT_TYPE('a', 't', 'a', 'r'), "AttributeArray", refuseElement, writeNothing});
 }
 
 } // namespace q3::io

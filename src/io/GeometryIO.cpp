@@ -24,6 +24,7 @@
 #include "geometry/TriMesh.h"
 #include "geometry/Triangle.h"
 
+#include <cstring>
 #include <vector>
 
 namespace q3::io {
@@ -301,6 +302,130 @@ void writeIndex(Encoder& out, std::size_t bytes, std::uint32_t index)
         out.u8(static_cast<std::uint8_t>(index));
 }
 
+// ---- TriMesh attribute arrays ---------------------------------------------------
+//
+// One AttributeArray subobject per array: the attribute type, 0, which array
+// (0 triangles, 1 edges, 2 vertices), its index among that kind's arrays,
+// whether a use array follows, then one value per element and the use flags
+// (3D Metafile Reference, TriMesh; Quesa reads and writes the same).
+
+constexpr TQ3ObjectType kTypeAttributeArray = Q3_OBJECT_TYPE('a', 't', 'a', 'r');
+
+// Words (floats, or one 32-bit switch) of one value of an attribute type.
+std::size_t wordsOf(TQ3AttributeType type)
+{
+    switch (type) {
+    case kQ3AttributeTypeSurfaceUV:
+    case kQ3AttributeTypeShadingUV:
+        return 2;
+    case kQ3AttributeTypeNormal:
+    case kQ3AttributeTypeDiffuseColor:
+    case kQ3AttributeTypeSpecularColor:
+    case kQ3AttributeTypeTransparencyColor:
+        return 3;
+    case kQ3AttributeTypeAmbientCoefficient:
+    case kQ3AttributeTypeSpecularControl:
+    case kQ3AttributeTypeHighlightState:
+        return 1;
+    case kQ3AttributeTypeSurfaceTangent:
+        return 6;
+    default:
+        fail(kQ3ErrorInvalidMetafileObject,
+             "a TriMesh attribute array of type " + std::to_string(type) + ", which Q3 does not store");
+    }
+}
+
+struct ArrayStore {
+    std::vector<TQ3TriMeshAttributeData> entries;
+    std::vector<std::vector<unsigned char>> values;
+    std::vector<std::vector<char>> uses;
+};
+
+void readAttributeArrays(ReadContext& context, const Parts& parts, const std::uint32_t counts[3],
+                         const std::uint32_t elements[3], ArrayStore stores[3])
+{
+    for (int kind = 0; kind < 3; ++kind) {
+        stores[kind].entries.assign(counts[kind], TQ3TriMeshAttributeData{kQ3AttributeTypeNone, nullptr, nullptr});
+        stores[kind].values.resize(counts[kind]);
+        stores[kind].uses.resize(counts[kind]);
+    }
+    for (const Node* node : parts.subobjects) {
+        if (node->type != kTypeAttributeArray)
+            continue;
+        DataReader in = context.reader(*node);
+        const auto type = static_cast<TQ3AttributeType>(in.i32());
+        in.u32();
+        const std::uint32_t kind = in.u32();
+        const std::uint32_t index = in.u32();
+        const bool useFlags = in.u32() != 0;
+        if (kind > 2 || index >= counts[kind])
+            fail(kQ3ErrorInvalidMetafileSubObject, "a TriMesh attribute array at " + std::to_string(kind) + "/" +
+                                                       std::to_string(index) + ", which the TriMesh does not have");
+        ArrayStore& store = stores[kind];
+        if (store.entries[index].attributeType != kQ3AttributeTypeNone)
+            fail(kQ3ErrorInvalidMetafileSubObject, "two TriMesh attribute arrays at one place");
+        const std::size_t words = wordsOf(type);
+        const std::uint32_t n = elements[kind];
+        in.requireRoom(n, 4 * words, words, "attribute values");
+        std::vector<unsigned char> values(std::size_t{n} * words * 4);
+        for (std::size_t w = 0; w < std::size_t{n} * words; ++w) {
+            if (type == kQ3AttributeTypeHighlightState) {
+                const auto s = static_cast<TQ3Switch>(in.u32());
+                std::memcpy(values.data() + 4 * w, &s, 4);
+            } else {
+                const float f = in.f32();
+                std::memcpy(values.data() + 4 * w, &f, 4);
+            }
+        }
+        std::vector<char> use;
+        if (useFlags) {
+            in.requireRoom(n, 1, 1, "use flags");
+            use.resize(n);
+            for (char& flag : use)
+                flag = static_cast<char>(in.u8());
+        }
+        store.values[index] = std::move(values);
+        store.uses[index] = std::move(use);
+        store.entries[index] = TQ3TriMeshAttributeData{type, store.values[index].data(),
+                                                       useFlags ? store.uses[index].data() : nullptr};
+    }
+    for (int kind = 0; kind < 3; ++kind)
+        for (const auto& entry : stores[kind].entries)
+            if (entry.attributeType == kQ3AttributeTypeNone)
+                fail(kQ3ErrorInvalidMetafileSubObject, "a TriMesh announces an attribute array it does not hold");
+}
+
+void writeAttributeArrays(Encoder& out, std::uint32_t kind, const TQ3TriMeshAttributeData* entries,
+                          unsigned long count, unsigned long elements)
+{
+    for (unsigned long i = 0; i < count; ++i) {
+        const TQ3TriMeshAttributeData& entry = entries[i];
+        const std::size_t words = wordsOf(entry.attributeType);
+        out.begin(kTypeAttributeArray, "AttributeArray");
+        out.i32(static_cast<std::int32_t>(entry.attributeType));
+        out.u32(0);
+        out.u32(kind);
+        out.u32(static_cast<std::uint32_t>(i));
+        out.u32(entry.attributeUseArray != nullptr ? 1 : 0);
+        const auto* bytes = static_cast<const unsigned char*>(entry.data);
+        for (std::size_t w = 0; w < elements * words; ++w) {
+            if (entry.attributeType == kQ3AttributeTypeHighlightState) {
+                TQ3Switch s;
+                std::memcpy(&s, bytes + 4 * w, 4);
+                out.u32(static_cast<std::uint32_t>(s));
+            } else {
+                float f;
+                std::memcpy(&f, bytes + 4 * w, 4);
+                out.f32(f);
+            }
+        }
+        if (entry.attributeUseArray != nullptr)
+            for (unsigned long e = 0; e < elements; ++e)
+                out.u8(static_cast<std::uint8_t>(entry.attributeUseArray[e]));
+        out.end();
+    }
+}
+
 Ref<SharedObject> readTriMesh(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
@@ -311,9 +436,8 @@ Ref<SharedObject> readTriMesh(ReadContext& context, const Parts& parts)
     const std::uint32_t numEdgeTypes = in.u32();
     const std::uint32_t numPoints = in.u32();
     const std::uint32_t numVertexTypes = in.u32();
-    (void)numTriangleTypes;
-    (void)numEdgeTypes;
-    (void)numVertexTypes;
+    if (numTriangleTypes > 64 || numEdgeTypes > 64 || numVertexTypes > 64)
+        fail(kQ3ErrorInvalidMetafileObject, "a TriMesh announces more attribute arrays than it could hold");
     const std::size_t pointBytes = indexBytes(numPoints);
     const std::size_t triangleBytes = indexBytes(numTriangles);
     in.requireRoom(numTriangles, 3 * pointBytes, 3, "triangles");
@@ -338,8 +462,18 @@ Ref<SharedObject> readTriMesh(ReadContext& context, const Parts& parts)
     box.max = in.point3D();
     box.isEmpty = in.u32() != 0 ? kQ3True : kQ3False;
     Ref<AttributeSet> own = context.attributeSet(parts);
+    const std::uint32_t counts[3] = {numTriangleTypes, numEdgeTypes, numVertexTypes};
+    const std::uint32_t elements[3] = {numTriangles, numEdges, numPoints};
+    ArrayStore stores[3];
+    readAttributeArrays(context, parts, counts, elements, stores);
     TQ3TriMeshData data{};
     data.triMeshAttributeSet = own.get();
+    data.numTriangleAttributeTypes = numTriangleTypes;
+    data.triangleAttributeTypes = numTriangleTypes ? stores[0].entries.data() : nullptr;
+    data.numEdgeAttributeTypes = numEdgeTypes;
+    data.edgeAttributeTypes = numEdgeTypes ? stores[1].entries.data() : nullptr;
+    data.numVertexAttributeTypes = numVertexTypes;
+    data.vertexAttributeTypes = numVertexTypes ? stores[2].entries.data() : nullptr;
     data.numTriangles = numTriangles;
     data.triangles = triangles.data();
     data.numEdges = numEdges;
@@ -354,15 +488,16 @@ void writeTriMesh(WriteContext& context, const Object& object)
 {
     const TQ3TriMeshData& data = dataOf<TriMesh>(object);
     const AttributeSet* own = setOf(data.triMeshAttributeSet);
-    maybeContainer(context, WriteContext::hasAttributes(own), [&] {
+    const bool arrays = data.numTriangleAttributeTypes + data.numEdgeAttributeTypes + data.numVertexAttributeTypes > 0;
+    maybeContainer(context, WriteContext::hasAttributes(own) || arrays, [&] {
         Encoder& out = context.out();
         out.begin(kQ3GeometryTypeTriMesh, "TriMesh");
         out.u32(static_cast<std::uint32_t>(data.numTriangles));
-        out.u32(0);
+        out.u32(static_cast<std::uint32_t>(data.numTriangleAttributeTypes));
         out.u32(static_cast<std::uint32_t>(data.numEdges));
-        out.u32(0);
+        out.u32(static_cast<std::uint32_t>(data.numEdgeAttributeTypes));
         out.u32(static_cast<std::uint32_t>(data.numPoints));
-        out.u32(0);
+        out.u32(static_cast<std::uint32_t>(data.numVertexAttributeTypes));
         const std::size_t pointBytes = indexBytes(static_cast<std::uint32_t>(data.numPoints));
         const std::size_t triangleBytes = indexBytes(static_cast<std::uint32_t>(data.numTriangles));
         for (unsigned long i = 0; i < data.numTriangles; ++i)
@@ -380,6 +515,9 @@ void writeTriMesh(WriteContext& context, const Object& object)
         out.point3D(data.bBox.max);
         out.u32(data.bBox.isEmpty != kQ3False ? 1 : 0);
         out.end();
+        writeAttributeArrays(out, 0, data.triangleAttributeTypes, data.numTriangleAttributeTypes, data.numTriangles);
+        writeAttributeArrays(out, 1, data.edgeAttributeTypes, data.numEdgeAttributeTypes, data.numEdges);
+        writeAttributeArrays(out, 2, data.vertexAttributeTypes, data.numVertexAttributeTypes, data.numPoints);
         context.attributeSet(own);
     });
 }

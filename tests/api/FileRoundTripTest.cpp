@@ -173,7 +173,17 @@ std::vector<Case> cases()
                        TQ3TriMeshTriangleData t[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
                        TQ3TriMeshEdgeData e[1] = {{{0, 2}, {0, 1}}};
                        TQ3AttributeSet set = colorSet(0.9f, 0.6f, 0.1f);
+                       static TQ3ColorRGB faceColors[2] = {{1, 0, 0}, {0, 0, 1}};
+                       static char faceUse[2] = {1, 0};
+                       static TQ3Vector3D normals[4] = {{0, 0, 1}, {0, 0, 1}, {0, 0.5f, 1}, {0, 0, 1}};
+                       static TQ3TriMeshAttributeData faces[1] = {
+                           {kQ3AttributeTypeDiffuseColor, faceColors, faceUse}};
+                       static TQ3TriMeshAttributeData vertices[1] = {{kQ3AttributeTypeNormal, normals, nullptr}};
                        TQ3TriMeshData d{};
+                       d.numTriangleAttributeTypes = 1;
+                       d.triangleAttributeTypes = faces;
+                       d.numVertexAttributeTypes = 1;
+                       d.vertexAttributeTypes = vertices;
                        d.triMeshAttributeSet = set;
                        d.numTriangles = 2;
                        d.triangles = t;
@@ -188,6 +198,24 @@ std::vector<Case> cases()
                    },
                    byData<TQ3TriMeshData>(Q3TriMesh_GetData, Q3TriMesh_EmptyData, [](auto& a, auto& b) {
                        if (a.numTriangles != b.numTriangles || a.numPoints != b.numPoints || a.numEdges != b.numEdges)
+                           return false;
+                       if (a.numTriangleAttributeTypes != b.numTriangleAttributeTypes ||
+                           a.numVertexAttributeTypes != b.numVertexAttributeTypes ||
+                           a.numEdgeAttributeTypes != b.numEdgeAttributeTypes)
+                           return false;
+                       if (a.numTriangleAttributeTypes == 1 &&
+                           (a.triangleAttributeTypes[0].attributeType != b.triangleAttributeTypes[0].attributeType ||
+                            std::memcmp(a.triangleAttributeTypes[0].data, b.triangleAttributeTypes[0].data,
+                                        2 * sizeof(TQ3ColorRGB)) != 0 ||
+                            b.triangleAttributeTypes[0].attributeUseArray == nullptr ||
+                            std::memcmp(a.triangleAttributeTypes[0].attributeUseArray,
+                                        b.triangleAttributeTypes[0].attributeUseArray, 2) != 0))
+                           return false;
+                       if (a.numVertexAttributeTypes == 1 &&
+                           (a.vertexAttributeTypes[0].attributeType != b.vertexAttributeTypes[0].attributeType ||
+                            std::memcmp(a.vertexAttributeTypes[0].data, b.vertexAttributeTypes[0].data,
+                                        4 * sizeof(TQ3Vector3D)) != 0 ||
+                            b.vertexAttributeTypes[0].attributeUseArray != nullptr))
                            return false;
                        for (unsigned long i = 0; i < a.numTriangles; ++i)
                            for (int k = 0; k < 3; ++k)
