@@ -12,13 +12,71 @@
 #include "group/Group.h"
 #include "io/Unknown.h"
 
+#include <type_traits>
+
 namespace q3::io {
 namespace {
 
-template <class G>
-Ref<SharedObject> readGroup(ReadContext&, const Parts&)
+// A display group's state, when not the default, is a DisplayGroupState
+// subobject whose flags say what differs from the default: Inline, DontDraw,
+// NoBoundingBox, NoBoundingSphere, DontPick.
+constexpr TQ3ObjectType kTypeGroupState = Q3_OBJECT_TYPE('d', 'g', 's', 't');
+const std::vector<std::pair<const char*, std::uint32_t>> kStateFlags = {
+    {"None", 0}, {"Inline", 1}, {"DontDraw", 2}, {"NoBoundingBox", 4}, {"NoBoundingSphere", 8}, {"DontPick", 16}};
+
+constexpr TQ3DisplayGroupState kDefaultState = kQ3DisplayGroupStateMaskIsDrawn |
+                                               kQ3DisplayGroupStateMaskUseBoundingBox |
+                                               kQ3DisplayGroupStateMaskUseBoundingSphere |
+                                               kQ3DisplayGroupStateMaskIsPicked | kQ3DisplayGroupStateMaskIsWritten;
+
+std::uint32_t fileFlags(TQ3DisplayGroupState state)
 {
-    return Ref<SharedObject>(makeShared<G>());
+    std::uint32_t flags = 0;
+    if (state & kQ3DisplayGroupStateMaskIsInline)
+        flags |= 1;
+    if (!(state & kQ3DisplayGroupStateMaskIsDrawn))
+        flags |= 2;
+    if (!(state & kQ3DisplayGroupStateMaskUseBoundingBox))
+        flags |= 4;
+    if (!(state & kQ3DisplayGroupStateMaskUseBoundingSphere))
+        flags |= 8;
+    if (!(state & kQ3DisplayGroupStateMaskIsPicked))
+        flags |= 16;
+    return flags;
+}
+
+TQ3DisplayGroupState stateOf(std::uint32_t flags)
+{
+    TQ3DisplayGroupState state = kDefaultState;
+    if (flags & 1)
+        state |= kQ3DisplayGroupStateMaskIsInline;
+    if (flags & 2)
+        state &= ~kQ3DisplayGroupStateMaskIsDrawn;
+    if (flags & 4)
+        state &= ~kQ3DisplayGroupStateMaskUseBoundingBox;
+    if (flags & 8)
+        state &= ~kQ3DisplayGroupStateMaskUseBoundingSphere;
+    if (flags & 16)
+        state &= ~kQ3DisplayGroupStateMaskIsPicked;
+    return state;
+}
+
+template <class G>
+Ref<SharedObject> readGroup(ReadContext& context, const Parts& parts)
+{
+    Ref<G> group = makeShared<G>();
+    if constexpr (std::is_base_of_v<DisplayGroup, G>) {
+        if (const Node* node = parts.find(kTypeGroupState); node != nullptr && node->type == kTypeGroupState) {
+            DataReader in = context.reader(*node);
+            group->setState(stateOf(in.flags(kStateFlags)));
+        }
+    }
+    return Ref<SharedObject>(std::move(group));
+}
+
+Ref<SharedObject> refuseState(ReadContext&, const Parts&)
+{
+    fail(kQ3ErrorInvalidMetafileObject, "DisplayGroupState outside a display group");
 }
 
 void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type, const char* name)
@@ -26,8 +84,18 @@ void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type,
     const auto& group = static_cast<const Group&>(object);
     Encoder& out = context.out();
     out.begin(kTypeBeginGroup, "BeginGroup");
-    out.begin(type, name);
-    out.end();
+    std::uint32_t flags = 0;
+    if (group.isType(kQ3GroupTypeDisplay))
+        flags = fileFlags(static_cast<const DisplayGroup&>(group).state());
+    maybeContainer(context, flags != 0, [&] {
+        out.begin(type, name);
+        out.end();
+        if (flags != 0) {
+            out.begin(kTypeGroupState, "DisplayGroupState");
+            out.flags(kStateFlags, flags);
+            out.end();
+        }
+    });
     out.end();
     for (const Group::Node& node : group.nodes())
         context.object(*node.object);
@@ -108,6 +176,7 @@ void addGroupClasses(std::vector<ClassIO>& table)
                       writeIOProxyGroup},
                      {kQ3GroupTypeLight, "LightGroup", readGroup<LightGroup>, writeLightGroup},
                      {kQ3GroupTypeInfo, "InfoGroup", readGroup<InfoGroup>, writeInfoGroup},
+                     {kTypeGroupState, "DisplayGroupState", refuseState, [](WriteContext&, const Object&) {}},
                      {kQ3UnknownTypeText, "UnknownText", readUnknownTag, writeUnknownText},
                      {kQ3UnknownTypeBinary, "UnknownBinary", readUnknownTag, writeUnknownBinary},
                  });

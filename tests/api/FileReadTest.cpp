@@ -406,3 +406,26 @@ TEST_F(FileReadTest, AFailedObjectIsSkippedAndTheNextOneRead)
     Q3File_Close(file);
     Q3Object_Dispose(file);
 }
+
+TEST_F(FileReadTest, DisplayGroupStatesRoundTrip)
+{
+    TQ3GroupObject group = Q3DisplayGroup_New();
+    const TQ3DisplayGroupState state = kQ3DisplayGroupStateMaskIsInline | kQ3DisplayGroupStateMaskIsDrawn |
+                                       kQ3DisplayGroupStateMaskUseBoundingSphere | kQ3DisplayGroupStateMaskIsWritten;
+    ASSERT_EQ(Q3DisplayGroup_SetState(group, state), kQ3Success);
+    for (TQ3FileMode mode : {TQ3FileMode(kQ3FileModeNormal), TQ3FileMode(kQ3FileModeText)}) {
+        const auto bytes = writeObjects({group}, mode);
+        if (mode & kQ3FileModeText) {
+            const std::string text(bytes.begin(), bytes.end());
+            EXPECT_NE(text.find("DisplayGroupState ( Inline | NoBoundingBox | DontPick )"), std::string::npos)
+                << text;
+        }
+        const auto objects = readAll(bytes);
+        ASSERT_EQ(objects.size(), 1u);
+        TQ3DisplayGroupState back = 0;
+        ASSERT_EQ(Q3DisplayGroup_GetState(objects[0], &back), kQ3Success);
+        EXPECT_EQ(back, state);
+        disposeAll(objects);
+    }
+    Q3Object_Dispose(group);
+}
