@@ -42,8 +42,9 @@
  * diffuse, specular and transparency colour, specular control, surface
  * tangent, highlight state); groups (Group, DisplayGroup,
  * OrderedDisplayGroup, IOProxyDisplayGroup, LightGroup, InfoGroup) through
- * BeginGroup and EndGroup; the subdivision, backfacing, interpolation, fill,
- * orientation, pick ID, pick parts and shadow styles; the Phong, Lambert and
+ * BeginGroup and EndGroup, with display group states; the subdivision,
+ * anti-alias, fog, highlight, backfacing, interpolation, fill, orientation,
+ * pick ID, pick parts and shadow styles; the Phong, Lambert and
  * NULL illumination shaders; ambient, directional, point and spot lights;
  * matrix, translate, scale, rotate and reset transforms. Anything else in a
  * file is read as an unknown object.

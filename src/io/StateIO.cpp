@@ -15,6 +15,7 @@
 #include "light/PointLight.h"
 #include "light/SpotLight.h"
 #include "shader/IlluminationShaders.h"
+#include "style/HighlightStyle.h"
 #include "style/SubdivisionStyle.h"
 #include "style/ValueStyles.h"
 #include "view/Transform.h"
@@ -132,6 +133,83 @@ void writeSubdivision(WriteContext& context, const Object& object)
         out.f32(data.c1);
     }
     out.end();
+}
+
+const Names kSwitch = {{"Off", kQ3Off}, {"On", kQ3On}};
+const Names kAntiAliasMode = {{"Edges", kQ3AntiAliasModeMaskEdges}, {"Filled", kQ3AntiAliasModeMaskFilled}};
+const Names kFogMode = {{"Linear", kQ3FogModeLinear},
+                        {"Exponential", kQ3FogModeExponential},
+                        {"ExponentialSquared", kQ3FogModeExponentialSquared},
+                        {"Alpha", kQ3FogModeAlpha}};
+
+Ref<SharedObject> readAntiAlias(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3AntiAliasStyleData data{};
+    data.state = static_cast<TQ3Switch>(in.choice(kSwitch));
+    data.mode = in.flags(kAntiAliasMode);
+    data.quality = in.f32();
+    return build<AntiAliasStyle>("anti-alias style", data);
+}
+
+void writeAntiAlias(WriteContext& context, const Object& object)
+{
+    const TQ3AntiAliasStyleData& data = static_cast<const AntiAliasStyle&>(object).value();
+    Encoder& out = context.out();
+    out.begin(kQ3StyleTypeAntiAlias, "AntiAliasStyle");
+    out.choice(kSwitch, static_cast<std::uint32_t>(data.state));
+    out.flags(kAntiAliasMode, static_cast<std::uint32_t>(data.mode));
+    out.f32(data.quality);
+    out.end();
+}
+
+Ref<SharedObject> readFog(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3FogStyleData data{};
+    data.state = static_cast<TQ3Switch>(in.choice(kSwitch));
+    data.mode = static_cast<TQ3FogMode>(in.choice(kFogMode));
+    data.fogStart = in.f32();
+    data.fogEnd = in.f32();
+    data.density = in.f32();
+    data.color.a = in.f32();
+    data.color.r = in.f32();
+    data.color.g = in.f32();
+    data.color.b = in.f32();
+    return build<FogStyle>("fog style", data);
+}
+
+void writeFog(WriteContext& context, const Object& object)
+{
+    const TQ3FogStyleData& data = static_cast<const FogStyle&>(object).value();
+    Encoder& out = context.out();
+    out.begin(kQ3StyleTypeFog, "FogStyle");
+    out.choice(kSwitch, static_cast<std::uint32_t>(data.state));
+    out.choice(kFogMode, static_cast<std::uint32_t>(data.mode));
+    out.f32(data.fogStart);
+    out.f32(data.fogEnd);
+    out.f32(data.density);
+    out.f32(data.color.a);
+    out.f32(data.color.r);
+    out.f32(data.color.g);
+    out.f32(data.color.b);
+    out.end();
+}
+
+// The highlight style: its attribute set as a subobject.
+Ref<SharedObject> readHighlight(ReadContext& context, const Parts& parts)
+{
+    return build<HighlightStyle>("highlight style", context.attributeSet(parts));
+}
+
+void writeHighlight(WriteContext& context, const Object& object)
+{
+    const Ref<AttributeSet>& set = static_cast<const HighlightStyle&>(object).attributes();
+    maybeContainer(context, WriteContext::hasAttributes(set.get()), [&] {
+        context.out().begin(kQ3StyleTypeHighlight, "HighlightStyle");
+        context.out().end();
+        context.attributeSet(set.get());
+    });
 }
 
 // ---- illumination shaders ------------------------------------------------------
@@ -353,6 +431,9 @@ void addStateClasses(std::vector<ClassIO>& table)
         table.end(),
         {
             {kQ3StyleTypeSubdivision, "SubdivisionStyle", readSubdivision, writeSubdivision},
+            {kQ3StyleTypeAntiAlias, "AntiAliasStyle", readAntiAlias, writeAntiAlias},
+            {kQ3StyleTypeFog, "FogStyle", readFog, writeFog},
+            {kQ3StyleTypeHighlight, "HighlightStyle", readHighlight, writeHighlight},
             Q3_VALUE_STYLE(BackfacingStyle, &kBackfacing, false, kQ3StyleTypeBackfacing, "BackfacingStyle"),
             Q3_VALUE_STYLE(InterpolationStyle, &kInterpolation, false, kQ3StyleTypeInterpolation,
                            "InterpolationStyle"),

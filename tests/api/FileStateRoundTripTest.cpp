@@ -10,6 +10,7 @@
 
 #include "QD3DGroup.h"
 #include "QD3DLight.h"
+#include "QD3DSet.h"
 #include "QD3DShader.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
@@ -63,6 +64,42 @@ std::vector<StateCase> stateCases()
                        return Q3SubdivisionStyle_New(&d);
                    },
                    sameBy<TQ3SubdivisionStyleData>(Q3SubdivisionStyle_GetData)});
+    all.push_back({"AntiAlias",
+                   [] {
+                       TQ3AntiAliasStyleData d = {kQ3On, kQ3AntiAliasModeMaskEdges | kQ3AntiAliasModeMaskFilled, 0.5f};
+                       return Q3AntiAliasStyle_New(&d);
+                   },
+                   sameBy<TQ3AntiAliasStyleData>(Q3AntiAliasStyle_GetData)});
+    all.push_back({"Fog",
+                   [] {
+                       TQ3FogStyleData d = {kQ3On, kQ3FogModeExponential, 1, 10, 0.25f, {1, 0.5f, 0.25f, 0.75f}};
+                       return Q3FogStyle_New(&d);
+                   },
+                   sameBy<TQ3FogStyleData>(Q3FogStyle_GetData)});
+    all.push_back({"Highlight",
+                   [] {
+                       TQ3AttributeSet set = Q3AttributeSet_New();
+                       const TQ3ColorRGB yellow = {1, 1, 0};
+                       Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &yellow);
+                       TQ3Object style = Q3HighlightStyle_New(set);
+                       Q3Object_Dispose(set);
+                       return style;
+                   },
+                   [](TQ3Object a, TQ3Object b) {
+                       TQ3AttributeSet sa = nullptr, sb = nullptr;
+                       Q3HighlightStyle_Get(a, &sa);
+                       Q3HighlightStyle_Get(b, &sb);
+                       TQ3ColorRGB ca = {}, cb = {};
+                       const bool same = sa != nullptr && sb != nullptr &&
+                                         Q3AttributeSet_Get(sa, kQ3AttributeTypeDiffuseColor, &ca) == kQ3Success &&
+                                         Q3AttributeSet_Get(sb, kQ3AttributeTypeDiffuseColor, &cb) == kQ3Success &&
+                                         std::memcmp(&ca, &cb, sizeof ca) == 0;
+                       if (sa != nullptr)
+                           Q3Object_Dispose(sa);
+                       if (sb != nullptr)
+                           Q3Object_Dispose(sb);
+                       return same;
+                   }});
     all.push_back({"Backfacing", [] { return Q3BackfacingStyle_New(kQ3BackfacingStyleFlip); },
                    sameBy<TQ3BackfacingStyle>(Q3BackfacingStyle_Get)});
     all.push_back({"Interpolation", [] { return Q3InterpolationStyle_New(kQ3InterpolationStylePixel); },
@@ -156,7 +193,7 @@ TEST_P(FileStateRoundTripTest, WrittenAndReadBackInEveryModeIsTheSame)
     Q3Object_Dispose(original);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryClass, FileStateRoundTripTest, ::testing::Range<std::size_t>(0, 22),
+INSTANTIATE_TEST_SUITE_P(EveryClass, FileStateRoundTripTest, ::testing::Range<std::size_t>(0, 25),
                          [](const ::testing::TestParamInfo<std::size_t>& info) {
                              return stateCases()[info.param].name;
                          });
