@@ -8,9 +8,10 @@
  *
  * The camera looks at the centre of the model's bounding box from the front,
  * a little above and to the right, far enough for the whole box to fit its
- * 40-degree field of view. The model is lit as QuickDraw 3D's viewer lit
- * models that bring no lights: a dim white ambient light and a white
- * directional light shining from over the viewer's shoulder. Defaults: 400x300,
+ * 40-degree field of view. The model is lit by the first light group in the
+ * file, or, as QuickDraw 3D's viewer lit models that bring no lights, by a
+ * dim white ambient light and a white directional light shining from over
+ * the viewer's shoulder. Defaults: 400x300,
  * interactive, constant subdivision 16 x 16, a white background. Exit status:
  * 0 done, 1 bad arguments, 2 the model cannot be read, 3 it cannot be drawn or
  * the image cannot be written. */
@@ -160,9 +161,13 @@ int main(int argc, char **argv)
         float radius = 1.0f, distance;
         const float fov = 0.6981317f; /* 40 degrees */
         TQ3ViewStatus done;
-        for (i = 0; i < count; ++i)
+        TQ3GroupObject fileLights = NULL;
+        for (i = 0; i < count; ++i) {
             if (Q3Object_IsDrawable(objects[i]))
                 Q3Group_AddObject(model, objects[i]);
+            else if (fileLights == NULL && Q3Object_GetLeafType(objects[i]) == kQ3GroupTypeLight)
+                fileLights = objects[i];
+        }
         memset(&contextData, 0, sizeof contextData);
         contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
         contextData.drawContextData.clearImageColor = background;
@@ -210,7 +215,7 @@ int main(int argc, char **argv)
         viewDirection.x = -toEye.x;
         viewDirection.y = -toEye.y;
         viewDirection.z = -toEye.z;
-        lights = defaultLights(&viewDirection);
+        lights = fileLights != NULL ? Q3Shared_GetReference(fileLights) : defaultLights(&viewDirection);
 
         if (argb == NULL || rgba == NULL || context == NULL || camera == NULL ||
             Q3View_SetDrawContext(view, context) != kQ3Success || Q3View_SetCamera(view, camera) != kQ3Success ||

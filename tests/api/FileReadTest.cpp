@@ -429,3 +429,38 @@ TEST_F(FileReadTest, DisplayGroupStatesRoundTrip)
     }
     Q3Object_Dispose(group);
 }
+
+TEST_F(FileReadTest, LightsStylesTransformsAndTriMeshArraysFromAHandWrittenFile)
+{
+    const auto objects = readAll(dataFile("lights_styles.3dmf"));
+    ASSERT_EQ(objects.size(), 2u);
+    EXPECT_EQ(Q3Object_GetLeafType(objects[0]), kQ3GroupTypeLight);
+    unsigned long n = 0;
+    Q3Group_CountObjectsOfType(objects[0], kQ3ShapeTypeLight, &n);
+    EXPECT_EQ(n, 2u);
+    EXPECT_EQ(Q3Object_GetLeafType(objects[1]), kQ3GroupTypeDisplay);
+    TQ3DisplayGroupState state = 0;
+    Q3DisplayGroup_GetState(objects[1], &state);
+    EXPECT_EQ(state & kQ3DisplayGroupStateMaskUseBoundingBox, 0u);
+    EXPECT_NE(state & kQ3DisplayGroupStateMaskIsDrawn, 0u);
+    Q3Group_CountObjects(objects[1], &n);
+    EXPECT_EQ(n, 8u);
+    Q3Group_CountObjectsOfType(objects[1], kQ3ShapeTypeTransform, &n);
+    EXPECT_EQ(n, 3u);
+    TQ3GroupPosition position = nullptr;
+    Q3Group_GetFirstPositionOfType(objects[1], kQ3GeometryTypeTriMesh, &position);
+    TQ3Object mesh = nullptr;
+    Q3Group_GetPositionObject(objects[1], position, &mesh);
+    TQ3TriMeshData data;
+    ASSERT_EQ(Q3TriMesh_GetData(mesh, &data), kQ3Success);
+    ASSERT_EQ(data.numTriangleAttributeTypes, 1u);
+    EXPECT_EQ(data.triangleAttributeTypes[0].attributeType, kQ3AttributeTypeDiffuseColor);
+    EXPECT_EQ(static_cast<const TQ3ColorRGB*>(data.triangleAttributeTypes[0].data)[1].b, 1.0f);
+    ASSERT_NE(data.triangleAttributeTypes[0].attributeUseArray, nullptr);
+    EXPECT_EQ(data.triangleAttributeTypes[0].attributeUseArray[1], 0);
+    ASSERT_EQ(data.numVertexAttributeTypes, 1u);
+    EXPECT_EQ(static_cast<const TQ3Vector3D*>(data.vertexAttributeTypes[0].data)[2].z, 0.8f);
+    Q3TriMesh_EmptyData(&data);
+    Q3Object_Dispose(mesh);
+    disposeAll(objects);
+}
