@@ -97,8 +97,10 @@ void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type,
         }
     });
     out.end();
+    out.enterGroup();
     for (const Group::Node& node : group.nodes())
         context.object(*node.object);
+    out.leaveGroup();
     out.begin(kTypeEndGroup, "EndGroup");
     out.end();
 }

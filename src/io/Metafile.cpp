@@ -668,7 +668,7 @@ void Encoder::begin(TQ3ObjectType type, const char* name)
         if (!m_text.empty() && m_text.back() != '\n')
             m_text += '\n';
         m_open.push_back({m_text.size(), false});
-        m_text.append(2 * (m_open.size() - 1), ' ');
+        m_text.append(2 * (m_open.size() - 1 + m_groupDepth), ' ');
         m_text += name;
         m_text += " (";
         return;
@@ -687,7 +687,7 @@ void Encoder::end()
     if (m_encoding == Encoding::kText) {
         if (open.hadChild) {
             m_text += '\n';
-            m_text.append(2 * m_open.size(), ' ');
+            m_text.append(2 * (m_open.size() + m_groupDepth), ' ');
             m_text += ")";
         } else {
             m_text += " )";

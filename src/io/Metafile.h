@@ -131,6 +131,10 @@ public:
     Encoding encoding() const { return m_encoding; }
     void begin(TQ3ObjectType type, const char* name);
     void end();
+    /// Text: the objects between a BeginGroup and its EndGroup are indented
+    /// one more step.
+    void enterGroup() { ++m_groupDepth; }
+    void leaveGroup() { --m_groupDepth; }
 
     void u32(std::uint32_t value);
     void i32(std::int32_t value);
@@ -171,6 +175,7 @@ private:
     };
     std::vector<Open> m_open;
     std::vector<std::pair<std::size_t, std::string>> m_labels;
+    std::size_t m_groupDepth = 0;
 };
 
 /// The four characters of a type, for messages ('trng').
