@@ -209,6 +209,31 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_SkipObject(TQ3FileObject theFile);
  * file that is not open for reading. */
 Q3_EXTERN_API_C(TQ3Boolean) Q3File_IsEndOfFile(TQ3FileObject theFile);
 
+enum TQ3FileReadGroupStateMasks {
+    kQ3FileReadWholeGroup = 0,
+    kQ3FileReadObjectsInGroup = 1 << 0,
+    kQ3FileCurrentlyInsideGroup = 1 << 1
+};
+typedef enum TQ3FileReadGroupStateMasks TQ3FileReadGroupStateMasks;
+typedef unsigned long TQ3FileReadGroupState;
+
+/*
+ * Q3File_SetReadInGroup: how Q3File_ReadObject reads groups from now on:
+ * kQ3FileReadWholeGroup (the default: one call reads a group and everything
+ * in it) or kQ3FileReadObjectsInGroup (a call reads the group itself, empty;
+ * each later call one object of it; the last one returns an object of type
+ * kQ3SharedTypeEndGroup). Groups already being read one object at a time
+ * finish that way.
+ * Errors: kQ3ErrorInvalidParameter for any other value.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_SetReadInGroup(TQ3FileObject theFile, TQ3FileReadGroupState readGroupState);
+
+/*
+ * Q3File_GetReadInGroup: the mode, with kQ3FileCurrentlyInsideGroup added
+ * while a group read one object at a time has not reached its end.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_GetReadInGroup(TQ3FileObject theFile, TQ3FileReadGroupState *readGroupState);
+
 /*
  * Q3Unknown_GetType: kQ3UnknownTypeText or kQ3UnknownTypeBinary.
  */

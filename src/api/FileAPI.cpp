@@ -121,3 +121,16 @@ TQ3Boolean Q3File_IsEndOfFile(TQ3FileObject theFile)
     return guard(__func__, kQ3False,
                  [&] { return lookup<File>(theFile, "theFile").isEndOfFile() ? kQ3True : kQ3False; });
 }
+
+TQ3Status Q3File_SetReadInGroup(TQ3FileObject theFile, TQ3FileReadGroupState readGroupState)
+{
+    return guardStatus(__func__, [&] { lookup<File>(theFile, "theFile").setReadInGroup(readGroupState); });
+}
+
+TQ3Status Q3File_GetReadInGroup(TQ3FileObject theFile, TQ3FileReadGroupState* readGroupState)
+{
+    return guardStatus(__func__, [&] {
+        readInto<File>(theFile, "theFile", readGroupState, "readGroupState",
+                       [](const File& file) { return file.readInGroup(); });
+    });
+}

@@ -207,10 +207,8 @@ Ref<SharedObject> ReadContext::sequenceItem(const std::vector<Node>& nodes, std:
     }
     const std::size_t first = index + 1;
     index = end;
-    if (node.children.size() != 1)
-        fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup holds " + std::to_string(node.children.size()) +
-                                                " objects, not one group");
-    Ref<Group> group = objectAs<Group>(node.children.front(), "the object a BeginGroup holds");
+    Ref<SharedObject> opened = groupOf(node);
+    Ref<Group> group = Ref<Group>::adopt(static_cast<Group*>(opened.detach()));
     for (std::size_t i = first; i + 1 < end;) {
         Ref<SharedObject> member = sequenceItem(nodes, i);
         if (!group->accepts(*member)) {
@@ -222,6 +220,14 @@ Ref<SharedObject> ReadContext::sequenceItem(const std::vector<Node>& nodes, std:
         group->add(std::move(member));
     }
     return Ref<SharedObject>(std::move(group));
+}
+
+Ref<SharedObject> ReadContext::groupOf(const Node& beginGroup)
+{
+    if (beginGroup.children.size() != 1)
+        fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup holds " + std::to_string(beginGroup.children.size()) +
+                                                " objects, not one group");
+    return Ref<SharedObject>(objectAs<Group>(beginGroup.children.front(), "the object a BeginGroup holds"));
 }
 
 bool WriteContext::hasAttributes(const AttributeSet* set)

@@ -93,6 +93,8 @@ public:
     /// children) from `index`: one object, or a BeginGroup up to its
     /// EndGroup as one group. Advances index past what it read.
     Ref<SharedObject> sequenceItem(const std::vector<Node>& nodes, std::size_t& index);
+    /// The (empty) group a BeginGroup node opens.
+    Ref<SharedObject> groupOf(const Node& beginGroup);
 
 private:
     Ref<SharedObject> build(const Node& node);

@@ -11,6 +11,7 @@
 namespace q3 {
 
 const ClassInfo kFileClass{kQ3SharedTypeFile, &kSharedClass, "file"};
+const ClassInfo kEndGroupClass{kQ3SharedTypeEndGroup, &kSharedClass, "end of group"};
 
 namespace {
 
@@ -114,6 +115,7 @@ void File::release()
     if (m_state != State::kClosed && m_storage)
         m_storage->releaseUse();
     m_state = State::kClosed;
+    m_openGroups = 0;
     m_reader.reset();
     m_file.reset();
     m_writer.reset();
@@ -194,6 +196,18 @@ Ref<SharedObject> File::readObject()
     requireReading();
     if (isEndOfFile())
         fail(kQ3ErrorEndOfFile, "no object is left in the file");
+    const io::Node& node = m_file->objects[m_next];
+    if (node.type == io::kTypeEndGroup && m_openGroups > 0) {
+        ++m_next;
+        --m_openGroups;
+        return Ref<SharedObject>(makeShared<EndGroup>());
+    }
+    if (node.type == io::kTypeBeginGroup && m_readGroup == kQ3FileReadObjectsInGroup) {
+        ++m_next; // a failure leaves the group's objects to be read one by one
+        Ref<SharedObject> group = m_reader->groupOf(node);
+        ++m_openGroups;
+        return group;
+    }
     // On failure the item is skipped, so the next call reads the one after.
     std::size_t index = m_next;
     try {
@@ -222,6 +236,19 @@ void File::skipObject()
         ++i;
     } while (open > 0 && i < m_file->objects.size());
     m_next = i;
+}
+
+void File::setReadInGroup(TQ3FileReadGroupState state)
+{
+    if (state != kQ3FileReadWholeGroup && state != kQ3FileReadObjectsInGroup)
+        fail(kQ3ErrorInvalidParameter, "readGroupState " + std::to_string(state) +
+                                           " is neither kQ3FileReadWholeGroup nor kQ3FileReadObjectsInGroup");
+    m_readGroup = state;
+}
+
+TQ3FileReadGroupState File::readInGroup() const
+{
+    return m_readGroup | (m_openGroups > 0 ? kQ3FileCurrentlyInsideGroup : 0);
 }
 
 std::shared_ptr<WriteTarget> File::writeTarget()

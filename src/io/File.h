@@ -14,6 +14,16 @@
 namespace q3 {
 
 extern const ClassInfo kFileClass;
+extern const ClassInfo kEndGroupClass;
+
+/// What Q3File_ReadObject returns at the end of a group read object by
+/// object (kQ3FileReadObjectsInGroup).
+class EndGroup final : public SharedObject {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3SharedTypeEndGroup;
+    const ClassInfo& classInfo() const override { return kEndGroupClass; }
+    Object* duplicate() const override { return makeShared<EndGroup>().detach(); }
+};
 
 /// A QuickDraw 3D file object (QD3DIO.h): a storage and, while open, either
 /// the parsed file being read or the objects being written. Invariant: open
@@ -57,6 +67,13 @@ public:
     /// writing).
     std::shared_ptr<WriteTarget> writeTarget();
 
+    /// Q3File_SetReadInGroup: kQ3FileReadWholeGroup or
+    /// kQ3FileReadObjectsInGroup (kQ3ErrorInvalidParameter otherwise).
+    void setReadInGroup(TQ3FileReadGroupState state);
+    /// The mode, with kQ3FileCurrentlyInsideGroup while a group read object
+    /// by object is not finished.
+    TQ3FileReadGroupState readInGroup() const;
+
 private:
     enum class State { kClosed, kReading, kWriting };
     void requireReading() const;
@@ -68,6 +85,8 @@ private:
     std::unique_ptr<io::Metafile> m_file;
     std::unique_ptr<io::ReadContext> m_reader;
     std::size_t m_next = 0;
+    TQ3FileReadGroupState m_readGroup = kQ3FileReadWholeGroup;
+    std::size_t m_openGroups = 0; ///< groups being read object by object
     std::shared_ptr<io::WriteContext> m_writer;
 };
 

@@ -879,10 +879,9 @@ std::vector<unsigned char> Encoder::finish(TQ3FileMode mode,
         if (!toc.empty()) {
             out += "toc: TableOfContents ( 0 " + std::to_string(toc.size() + 1) + " 0 0 0 " +
                    std::to_string(toc.size());
-            for (const auto& [id, where] : toc) {
-                (void)where;
-                out += "\n  " + std::to_string(id) + " ref" + std::to_string(id) + ">";
-            }
+            // Text entries name the object's label; its position is the label's.
+            for (const auto& entry : toc)
+                out += "\n  " + std::to_string(entry.first) + " ref" + std::to_string(entry.first) + ">";
             out += "\n)\n";
         }
         return std::vector<unsigned char>(out.begin(), out.end());

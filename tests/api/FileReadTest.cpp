@@ -464,3 +464,45 @@ TEST_F(FileReadTest, LightsStylesTransformsAndTriMeshArraysFromAHandWrittenFile)
     Q3Object_Dispose(mesh);
     disposeAll(objects);
 }
+
+TEST_F(FileReadTest, GroupsReadObjectByObjectEndWithAnEndGroupObject)
+{
+    const auto bytes = dataFile("groups.3dmf");
+    TQ3FileObject file = openBytes(bytes);
+    ASSERT_NE(file, nullptr);
+    TQ3FileReadGroupState state = 99;
+    ASSERT_EQ(Q3File_GetReadInGroup(file, &state), kQ3Success);
+    EXPECT_EQ(state, static_cast<TQ3FileReadGroupState>(kQ3FileReadWholeGroup));
+    EXPECT_Q3_ERROR(Q3File_SetReadInGroup(file, 7), kQ3ErrorInvalidParameter);
+    ASSERT_EQ(Q3File_SetReadInGroup(file, kQ3FileReadObjectsInGroup), kQ3Success);
+    std::vector<TQ3ObjectType> types;
+    while (Q3File_IsEndOfFile(file) == kQ3False) {
+        TQ3Object object = nullptr;
+        if (Q3File_GetNextObjectType(file) == kQ3GroupTypeLight)
+            Q3File_SetReadInGroup(file, kQ3FileReadWholeGroup);
+        if (Q3File_GetNextObjectType(file) == kQ3GroupTypeLight)
+            EXPECT_Q3_WARNING(object = Q3File_ReadObject(file), kQ3WarningInvalidObjectInGroupMetafile);
+        else
+            object = Q3File_ReadObject(file);
+        ASSERT_NE(object, nullptr);
+        types.push_back(Q3Object_GetLeafType(object));
+        if (types.size() == 1) {
+            unsigned long n = 99;
+            Q3Group_CountObjects(object, &n);
+            EXPECT_EQ(n, 0u);
+            Q3File_GetReadInGroup(file, &state);
+            EXPECT_EQ(state, static_cast<TQ3FileReadGroupState>(kQ3FileReadObjectsInGroup |
+                                                                 kQ3FileCurrentlyInsideGroup));
+        }
+        Q3Object_Dispose(object);
+    }
+    const std::vector<TQ3ObjectType> expected = {
+        kQ3DisplayGroupTypeOrdered, kQ3GeometryTypeTriangle, kQ3GroupTypeDisplay, kQ3GeometryTypePoint,
+        kQ3GeometryTypeLine,        kQ3SharedTypeEndGroup,   kQ3GeometryTypePolygon, kQ3SharedTypeEndGroup,
+        kQ3GroupTypeLight};
+    EXPECT_EQ(types, expected);
+    Q3File_GetReadInGroup(file, &state);
+    EXPECT_EQ(state, static_cast<TQ3FileReadGroupState>(kQ3FileReadWholeGroup));
+    Q3File_Close(file);
+    Q3Object_Dispose(file);
+}

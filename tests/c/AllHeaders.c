@@ -164,6 +164,7 @@ int main(void)
                  Q3View_StartWriting(writer, file) == kQ3Success && Q3Object_Submit(point, writer) == kQ3Success &&
                  Q3View_EndWriting(writer) == kQ3ViewStatusDone && Q3File_Close(file) == kQ3Success &&
                  Q3File_OpenRead(file, &mode) == kQ3Success && (mode & kQ3FileModeText) != 0 &&
+                 Q3File_SetReadInGroup(file, kQ3FileReadObjectsInGroup) == kQ3Success &&
                  Q3File_GetNextObjectType(file) == kQ3GeometryTypePoint;
         if (ok) {
             back = Q3File_ReadObject(file);

@@ -41,6 +41,9 @@ std::vector<TQ3Object> readAll(const unsigned char* data, std::size_t size)
     require(Q3File_SetStorage(file, storage) == kQ3Success, "SetStorage failed");
     TQ3FileMode mode = 0;
     if (Q3File_OpenRead(file, &mode) == kQ3Success) {
+        // Half the inputs read groups one object at a time.
+        if (size % 2 == 1)
+            require(Q3File_SetReadInGroup(file, kQ3FileReadObjectsInGroup) == kQ3Success, "SetReadInGroup failed");
         std::size_t attempts = 0;
         while (Q3File_IsEndOfFile(file) == kQ3False && attempts++ < kMaxObjects) {
             Q3File_GetNextObjectType(file);
