@@ -256,6 +256,7 @@ void WriteContext::object(const Object& object)
             if (first.id == 0) {
                 first.id = m_nextId++;
                 m_out.label(first.position, "ref" + std::to_string(first.id));
+                m_labelled.push_back(&object);
             }
             m_out.begin(kTypeReference, "Reference");
             m_out.u32(first.id);
@@ -270,12 +271,37 @@ void WriteContext::object(const Object& object)
                                 "; it is left out of the file");
         return;
     }
-    if (!m_stream && !isGroup && object.isType(kQ3ObjectTypeShared)) {
+    const bool remember = !m_stream && !isGroup && object.isType(kQ3ObjectTypeShared);
+    if (remember) {
         m_written[&object] = Written{m_out.position()};
+        m_added.push_back(&object);
         m_keep.push_back(Ref<SharedObject>::retain(
             const_cast<SharedObject*>(static_cast<const SharedObject*>(&object))));
     }
-    entry->write(*this, object);
+    if (m_depth > 1) {
+        entry->write(*this, object);
+        return;
+    }
+    // A submitted object is written whole or not at all: a failure inside
+    // (a group nested past the limit) leaves the file as it was.
+    const Encoder::Mark before = m_out.mark();
+    const std::size_t kept = m_keep.size() - (remember ? 1 : 0);
+    const std::uint32_t nextId = m_nextId;
+    m_added.assign(remember ? 1 : 0, &object);
+    m_labelled.clear();
+    try {
+        entry->write(*this, object);
+    } catch (...) {
+        m_out.rollback(before);
+        for (const Object* added : m_added)
+            m_written.erase(added);
+        for (const Object* labelled : m_labelled)
+            if (auto found = m_written.find(labelled); found != m_written.end())
+                found->second.id = 0;
+        m_keep.resize(kept);
+        m_nextId = nextId;
+        throw;
+    }
 }
 
 void WriteContext::temporary(const Object& object)

@@ -137,6 +137,9 @@ private:
     std::vector<Ref<SharedObject>> m_keep;
     std::uint32_t m_nextId = 1;
     std::size_t m_depth = 0;
+    /// What the submitted object being written added, to undo on failure.
+    std::vector<const Object*> m_added;
+    std::vector<const Object*> m_labelled;
 };
 
 /// Runs `body` inside a Container when `container` is true.

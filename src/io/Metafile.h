@@ -152,6 +152,21 @@ public:
     /// Data copied as it is (an unknown object's).
     void raw(const std::string& data);
 
+    /// A point to come back to: rollback(mark()) forgets everything written
+    /// since (what a failed write leaves behind).
+    struct Mark {
+        std::size_t body, text, open, labels, groupDepth;
+    };
+    Mark mark() const { return {m_body.size(), m_text.size(), m_open.size(), m_labels.size(), m_groupDepth}; }
+    void rollback(const Mark& at)
+    {
+        m_body.resize(at.body);
+        m_text.resize(at.text);
+        m_open.resize(at.open);
+        m_labels.resize(at.labels);
+        m_groupDepth = at.groupDepth;
+    }
+
     /// Where the next object starts (binary: its byte offset in the body).
     std::size_t position() const;
     /// Text: gives the object starting at `position` a label (inserted at

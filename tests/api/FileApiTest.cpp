@@ -152,3 +152,41 @@ TEST_F(FileApiTest, TrianglesWithAttributeSetsRoundTripInEveryMode)
     Q3Object_Dispose(corner);
     Q3Object_Dispose(own);
 }
+
+TEST_F(FileApiTest, AGroupNestedPastTheLimitIsNotWrittenAndLeavesTheFileWhole)
+{
+    // 300 display groups, each inside the next: deeper than a file may nest.
+    TQ3GroupObject inner = Q3DisplayGroup_New();
+    TQ3PointData pointData = {{1, 2, 3}, nullptr};
+    TQ3GeometryObject point = Q3Point_New(&pointData);
+    Q3Group_AddObject(inner, point);
+    for (int i = 0; i < 300; ++i) {
+        TQ3GroupObject outer = Q3DisplayGroup_New();
+        Q3Group_AddObject(outer, inner);
+        Q3Object_Dispose(inner);
+        inner = outer;
+    }
+    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
+    TQ3FileObject file = Q3File_New();
+    TQ3ViewObject view = Q3View_New();
+    Q3File_SetStorage(file, storage);
+    Q3File_OpenWrite(file, kQ3FileModeNormal);
+    Q3View_StartWriting(view, file);
+    ASSERT_EQ(Q3Object_Submit(point, view), kQ3Success);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Object_Submit(inner, view), kQ3Failure), kQ3ErrorInvalidMetafile);
+    ASSERT_EQ(Q3Object_Submit(point, view), kQ3Success); // a reference to the first
+    EXPECT_EQ(Q3View_EndWriting(view), kQ3ViewStatusDone);
+    ASSERT_EQ(Q3File_Close(file), kQ3Success);
+    unsigned char* buffer = nullptr;
+    unsigned long size = 0;
+    Q3MemoryStorage_GetBuffer(storage, &buffer, &size, nullptr);
+    const auto objects = readAll(std::vector<unsigned char>(buffer, buffer + size));
+    ASSERT_EQ(objects.size(), 2u);
+    EXPECT_EQ(objects[0], objects[1]); // the reference gives the same point
+    disposeAll(objects);
+    Q3Object_Dispose(view);
+    Q3Object_Dispose(file);
+    Q3Object_Dispose(storage);
+    Q3Object_Dispose(inner);
+    Q3Object_Dispose(point);
+}
