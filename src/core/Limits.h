@@ -47,6 +47,15 @@ constexpr std::uint32_t kMaxConstantSegments = 1024;
 /// duplicated: kQ3GroupMaxNesting.
 constexpr std::size_t kMaxGroupNesting = 256;
 
+/// The most bytes a memory storage grows to, and a metafile Q3 reads or
+/// writes (2 GiB - 1): past it a storage refuses to grow and a reader refuses
+/// the file, so a corrupt size never allocates without bound.
+constexpr std::size_t kMaxStorageBytes = (std::size_t{1} << 31) - 1;
+
+/// How deep containers and groups may nest in a metafile:
+/// kMaxGroupNesting, the limit a group drawn from it meets anyway.
+constexpr std::size_t kMaxMetafileNesting = kMaxGroupNesting;
+
 /// The value substituted for an unreasonable c1 or c2: kQ3SubdivisionDefaultC1.
 constexpr float kSubdivisionDefault = 20.0f;
 

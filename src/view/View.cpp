@@ -108,7 +108,7 @@ void View::requireNoLoop() const
 
 Pass& View::activePass()
 {
-    if (m_loop == Loop::kNone)
+    if (m_loop == Loop::kNone || !m_pass)
         fail(kQ3ErrorViewNotStarted, "the view is not inside a rendering or bounding loop");
     return *m_pass;
 }
@@ -329,9 +329,27 @@ TQ3ViewStatus View::endBoundingSphere(TQ3BoundingSphere& result)
     return kQ3ViewStatusDone;
 }
 
+void View::startWriting(std::shared_ptr<WriteTarget> target)
+{
+    requireNoLoop();
+    m_writeTarget = std::move(target);
+    m_loop = Loop::kWriting;
+    m_cancelled = false;
+}
+
+TQ3ViewStatus View::endWriting()
+{
+    if (m_loop != Loop::kWriting)
+        fail(kQ3ErrorWriteStateInactive, "no writing loop is running in the view");
+    const bool cancelled = m_cancelled;
+    endLoop();
+    return cancelled ? kQ3ViewStatusCancelled : kQ3ViewStatusDone;
+}
+
 void View::endLoop()
 {
     m_pass.reset();
+    m_writeTarget.reset();
     m_loop = Loop::kNone;
     m_cancelled = false;
 }
@@ -357,6 +375,8 @@ void View::flush() const
 ShapeVisitor& View::submitTarget()
 {
     static IgnoringVisitor ignoring;
+    if (m_loop == Loop::kWriting)
+        return m_cancelled ? static_cast<ShapeVisitor&>(ignoring) : *m_writeTarget;
     Pass& pass = activePass();
     if (m_cancelled)
         return ignoring;
@@ -365,6 +385,16 @@ ShapeVisitor& View::submitTarget()
 
 void View::submit(const Object& object)
 {
+    if (m_loop == Loop::kWriting) {
+        // Writing takes every shared object: lights, light groups and
+        // unknown objects too, which drawing has no use for.
+        if (!object.isType(kQ3ObjectTypeShared))
+            fail(kQ3ErrorInvalidObjectType,
+                 std::string("object is a ") + object.classInfo().name + ", which cannot be written");
+        if (!m_cancelled)
+            m_writeTarget->write(object);
+        return;
+    }
     if (!object.isDrawable())
         fail(kQ3ErrorInvalidObjectType,
              std::string("object is a ") + object.classInfo().name + ", which cannot be submitted");

@@ -25,6 +25,15 @@ class OffscreenRenderer;
 class Pass;
 class Renderer;
 
+/// What a writing loop (Q3View_StartWriting) sends objects to; io/File
+/// implements it, so the view does not depend on the file format. Retained
+/// objects arrive through write(), immediate-mode shapes through the
+/// ShapeVisitor calls.
+class WriteTarget : public ShapeVisitor {
+public:
+    virtual void write(const Object& object) = 0;
+};
+
 /// A QuickDraw 3D view: draw context, camera, renderer, and the loop running
 /// in it. A loop is a Pass (RenderPass or BoundsPass) that receives every
 /// submitted shape and owns the graphics state and its push/pop stack.
@@ -106,6 +115,13 @@ public:
     TQ3ViewStatus endBoundingBox(TQ3BoundingBox& result);
     TQ3ViewStatus endBoundingSphere(TQ3BoundingSphere& result);
 
+    /// Starts a writing loop into `target` (kQ3ErrorViewIsStarted inside a
+    /// loop).
+    void startWriting(std::shared_ptr<WriteTarget> target);
+    /// Ends it: kQ3ViewStatusDone, or kQ3ViewStatusCancelled after cancel().
+    /// Throws kQ3ErrorWriteStateInactive outside a writing loop.
+    TQ3ViewStatus endWriting();
+
     /// Makes the running loop's end report kQ3ViewStatusCancelled; until then
     /// submitted shapes are ignored. Does nothing outside a loop.
     void cancel();
@@ -143,7 +159,7 @@ public:
     Ref<Geometry> decompose(const Geometry& geometry);
 
 private:
-    enum class Loop { kNone, kRendering, kBoundingBox, kBoundingSphere };
+    enum class Loop { kNone, kRendering, kBoundingBox, kBoundingSphere, kWriting };
 
     /// The rendering loop's destination, read from the draw context at its
     /// start (changes to the draw context affect the next loop).
@@ -171,6 +187,7 @@ private:
     Loop m_loop = Loop::kNone;
     bool m_cancelled = false;
     std::unique_ptr<Pass> m_pass;
+    std::shared_ptr<WriteTarget> m_writeTarget;
     std::unique_ptr<OffscreenRenderer> m_offscreen;
     Destination m_destination;
 };

@@ -9,11 +9,13 @@
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
+#include "QD3DIO.h"
 #include "QD3DLight.h"
 #include "QD3DMath.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DShader.h"
+#include "QD3DStorage.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
@@ -218,6 +220,37 @@ int main(void)
             Q3Object_Dispose(patch);
         if (!patchOk)
             return 15;
+    }
+    {
+        /* A point written to a text 3DMF file in memory and read back, from C. */
+        TQ3PointData pointData = {{1.0f, 2.0f, 3.0f}, NULL};
+        TQ3GeometryObject point = Q3Point_New(&pointData);
+        TQ3StorageObject storage = Q3MemoryStorage_New(NULL, 0);
+        TQ3FileObject file = Q3File_New();
+        TQ3ViewObject writer = Q3View_New();
+        TQ3FileMode mode = kQ3FileModeNormal;
+        TQ3Object back = NULL;
+        TQ3PointData backData;
+        int ok = point != NULL && Q3File_SetStorage(file, storage) == kQ3Success &&
+                 Q3File_OpenWrite(file, kQ3FileModeText) == kQ3Success &&
+                 Q3View_StartWriting(writer, file) == kQ3Success && Q3Object_Submit(point, writer) == kQ3Success &&
+                 Q3View_EndWriting(writer) == kQ3ViewStatusDone && Q3File_Close(file) == kQ3Success &&
+                 Q3File_OpenRead(file, &mode) == kQ3Success && (mode & kQ3FileModeText) != 0 &&
+                 Q3File_SetReadInGroup(file, kQ3FileReadObjectsInGroup) == kQ3Success &&
+                 Q3File_GetNextObjectType(file) == kQ3GeometryTypePoint;
+        if (ok) {
+            back = Q3File_ReadObject(file);
+            ok = back != NULL && Q3Point_GetData(back, &backData) == kQ3Success && backData.point.z == 3.0f &&
+                 Q3File_IsEndOfFile(file) == kQ3True && Q3File_Close(file) == kQ3Success;
+        }
+        if (back != NULL)
+            Q3Object_Dispose(back);
+        Q3Object_Dispose(writer);
+        Q3Object_Dispose(file);
+        Q3Object_Dispose(storage);
+        Q3Object_Dispose(point);
+        if (!ok)
+            return 16;
     }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,

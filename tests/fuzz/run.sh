@@ -4,7 +4,9 @@
 #
 # Builds the API fuzzer (clang, libFuzzer, AddressSanitizer +
 # UndefinedBehaviorSanitizer) in build-fuzz/ and runs it for SECONDS seconds
-# (default 60) starting from the seed corpus tests/fuzz/corpus/. Inputs it
+# (default 60) starting from the seed corpus tests/fuzz/corpus/; then the 3DMF
+# reader's fuzzer for Q3_FUZZ_3DMF_SECONDS (default 20) from
+# tests/fuzz/corpus-3dmf/. Inputs it
 # finds interesting go to build-fuzz/corpus/, never into the repository (copy
 # one into tests/fuzz/corpus/ by hand to keep it as a seed); an input that
 # crashes, leaks or times out is saved in build-fuzz/findings/ and fails the
@@ -23,9 +25,9 @@ jobs="${Q3_JOBS:-2}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DQ3_BUILD_FUZZERS=ON -DQ3_BUILD_SAMPLES=OFF -DQ3_BUILD_BENCHMARKS=OFF > /dev/null
-cmake --build "$build" -j"$jobs" --target q3_fuzz_api
+cmake --build "$build" -j"$jobs" --target q3_fuzz_api q3_fuzz_3dmf
 
-mkdir -p "$build/corpus" "$build/findings"
+mkdir -p "$build/corpus" "$build/corpus-3dmf" "$build/findings"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
@@ -34,3 +36,8 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 "$build/tests/fuzz/q3_fuzz_api" -max_total_time="$seconds" -timeout=10 -max_len=4096 \
   -print_final_stats=1 -artifact_prefix="$build/findings/" "$@" \
   "$build/corpus" "$root/tests/fuzz/corpus"
+
+# The 3DMF reader, over files: a short run keeps CI's total fuzz time modest.
+"$build/tests/fuzz/q3_fuzz_3dmf" -max_total_time="${Q3_FUZZ_3DMF_SECONDS:-20}" -timeout=10 -max_len=65536 \
+  -print_final_stats=1 -artifact_prefix="$build/findings/" \
+  "$build/corpus-3dmf" "$root/tests/fuzz/corpus-3dmf"

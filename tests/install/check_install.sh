@@ -14,6 +14,12 @@ trap 'rm -rf "$prefix"' EXIT
 cmake --install "$build_dir" --prefix "$prefix" > /dev/null
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig:$prefix/lib/x86_64-linux-gnu/pkgconfig"
 test -f "$prefix/include/Q3/QD3DGeometry.h"
+test -f "$prefix/include/Q3/QD3DIO.h"
+
+# The tools run from the prefix (they find the library through their rpath).
+"$prefix/bin/q3convert" "$source_dir/tests/data/scene.3dmf" "$prefix/scene.bin.3dmf" --binary
+"$prefix/bin/q3render" "$prefix/scene.bin.3dmf" -o "$prefix/scene.png" --size 80x60
+test -s "$prefix/scene.png"
 
 cc -std=c99 -Wall -Werror "$source_dir/tests/install/outside.c" -o "$prefix/outside" \
    $(pkg-config --cflags --libs q3)

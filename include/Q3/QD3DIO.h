@@ -1,0 +1,288 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+#ifndef QD3DIO_H
+#define QD3DIO_H
+
+/*
+ * File objects: reading and writing QuickDraw 3D metafiles (3DMF 1.6), text
+ * and binary.
+ *
+ * Reading:
+ *     TQ3FileObject file = Q3File_New();
+ *     Q3File_SetStorage(file, Q3UnixPathStorage_New("model.3dmf"));
+ *     TQ3FileMode mode;
+ *     Q3File_OpenRead(file, &mode);
+ *     while (!Q3File_IsEndOfFile(file)) {
+ *         TQ3Object object = Q3File_ReadObject(file);   (NULL: see Q3Error_Get)
+ *         ...
+ *     }
+ *     Q3File_Close(file);
+ *
+ * Writing: Q3File_OpenWrite(file, mode), then a writing loop
+ *     Q3View_StartWriting(view, file);
+ *     do { Q3Object_Submit(object, view); ... }
+ *     while (Q3View_EndWriting(view) == kQ3ViewStatusRetraverse);
+ * then Q3File_Close(file), which puts the bytes into the storage. A file is
+ * binary and big-endian (as Mac QuickDraw 3D wrote it) unless the mode
+ * includes kQ3FileModeText. Reading takes both encodings and both byte
+ * orders.
+ *
+ * An object written twice into one file (a shared attribute set, a geometry
+ * in two groups) is written once and referred to the second time, through
+ * the table of contents, in Normal and Database mode (Q3 writes Database
+ * files as Normal ones, with the Database mode in the header); Stream mode
+ * writes it again. Groups are written again each time. Reading gives back one
+ * object for every reference to it.
+ *
+ * What Q3 reads and writes: the geometries Point, Line, PolyLine, Triangle,
+ * Polygon, TriMesh (with its attribute arrays), NURBCurve, Box, Cone,
+ * Cylinder, Disk, Ellipse, Ellipsoid and Torus, with their own attribute set,
+ * their vertices' sets (VertexAttributeSetList) and the solids' Caps;
+ * attribute sets (surface and shading UV, normal, ambient coefficient,
+ * diffuse, specular and transparency colour, specular control, surface
+ * tangent, highlight state); groups (Group, DisplayGroup,
+ * OrderedDisplayGroup, IOProxyDisplayGroup, LightGroup, InfoGroup) through
+ * BeginGroup and EndGroup, with display group states; the subdivision,
+ * anti-alias, fog, highlight, backfacing, interpolation, fill, orientation,
+ * pick ID, pick parts and shadow styles; the Phong, Lambert and
+ * NULL illumination shaders; ambient, directional, point and spot lights;
+ * matrix, translate, scale, rotate and reset transforms. Anything else in a
+ * file is read as an unknown object.
+ *
+ * Objects of a type Q3 does not know are read as unknown objects
+ * (Q3Unknown_GetType) and written back unchanged.
+ *
+ * A malformed file never crashes Q3 and never makes it allocate more than
+ * the file's size justifies: a truncated object, a size that overruns its
+ * container, a count its data cannot hold, a reference to nothing or to
+ * itself, a bad type or label, or a malformed number makes the call fail with
+ * the error saying which (kQ3ErrorInvalidMetafile, ...Primitive, ...Label,
+ * ...Object, ...SubObject), with the object's position in the message.
+ *
+ * Errors every function below shares, checked first, in this order:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      a handle or pointer argument is NULL.
+ *   kQ3ErrorInvalidObject      a handle is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  a handle is not of the kind the call takes.
+ * A function that fails changes nothing, leaves outputs unchanged and
+ * returns kQ3Failure (NULL, kQ3False, kQ3ObjectTypeInvalid).
+ */
+
+#include "QD3D.h"
+#include "QD3DView.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum TQ3FileModeMasks {
+    kQ3FileModeNormal = 0,
+    kQ3FileModeStream = 1 << 0,
+    kQ3FileModeDatabase = 1 << 1,
+    kQ3FileModeText = 1 << 2
+};
+typedef enum TQ3FileModeMasks TQ3FileModeMasks;
+typedef unsigned long TQ3FileMode;
+
+#define Q3FileVersion(majorVersion, minorVersion)                                                  \
+    (TQ3FileVersion)((((TQ3Uns32)(majorVersion)&0xFFFF) << 16) | ((TQ3Uns32)(minorVersion)&0xFFFF))
+typedef unsigned long TQ3FileVersion;
+#define kQ3FileVersionCurrent Q3FileVersion(1, 6)
+
+/*
+ * Q3File_New: a file object with no storage, closed.
+ * Ownership: the caller holds the new file's one reference.
+ */
+Q3_EXTERN_API_C(TQ3FileObject) Q3File_New(void);
+
+/*
+ * Q3File_GetStorage: the file's storage, or NULL when it has none.
+ * Ownership: a non-NULL *storage is a new reference for the caller.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_GetStorage(TQ3FileObject theFile, TQ3StorageObject *storage);
+
+/*
+ * Q3File_SetStorage: the storage the file reads and writes (NULL: none).
+ * Errors: kQ3ErrorFileIsOpen while the file is open.
+ * Ownership: the file keeps its own reference to the storage.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_SetStorage(TQ3FileObject theFile, TQ3StorageObject storage);
+
+/*
+ * Q3File_OpenRead: reads the storage's header and opens the file for
+ * reading; *mode (may be NULL) is the file's mode, with kQ3FileModeText for a
+ * text file.
+ * Errors: kQ3ErrorFileAlreadyOpen; kQ3ErrorNoStorageSetForFile;
+ * kQ3ErrorInvalidMetafile and the other metafile errors for a file that is
+ * not a 3DMF 1.x file (the file stays closed).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_OpenRead(TQ3FileObject theFile, TQ3FileMode *mode);
+
+/*
+ * Q3File_OpenWrite: opens the file for writing in `mode` (Normal, Stream or
+ * Database, optionally with kQ3FileModeText). The storage is written when the
+ * file is closed.
+ * Errors: kQ3ErrorFileAlreadyOpen; kQ3ErrorNoStorageSetForFile;
+ * kQ3ErrorInvalidParameter for a mode with other bits or both Stream and
+ * Database.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_OpenWrite(TQ3FileObject theFile, TQ3FileMode mode);
+
+/* Q3File_IsOpen: *isOpen is kQ3True while the file is open. */
+Q3_EXTERN_API_C(TQ3Status) Q3File_IsOpen(TQ3FileObject theFile, TQ3Boolean *isOpen);
+
+/*
+ * Q3File_GetMode: the open file's mode (as OpenRead gave it, or as given to
+ * OpenWrite). Errors: kQ3ErrorFileNotOpen.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_GetMode(TQ3FileObject theFile, TQ3FileMode *mode);
+
+/*
+ * Q3File_GetVersion: the open file's version (kQ3FileVersionCurrent for a
+ * file being written). Errors: kQ3ErrorFileNotOpen.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_GetVersion(TQ3FileObject theFile, TQ3FileVersion *version);
+
+/*
+ * Q3File_Close: closes the file; a file open for writing puts what was
+ * written into its storage first.
+ * Errors: kQ3ErrorFileNotOpen; kQ3ErrorFileNotOpen or kQ3ErrorOutOfMemory
+ * when the storage cannot take the bytes (the file is closed all the same).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_Close(TQ3FileObject theFile);
+
+/*
+ * Q3File_Cancel: closes the file without writing anything to its storage.
+ * Errors: kQ3ErrorFileNotOpen.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_Cancel(TQ3FileObject theFile);
+
+/*
+ * Q3View_StartWriting: starts a writing loop: every object submitted to the
+ * view until Q3View_EndWriting is written to the file, retained objects and
+ * immediate-mode geometries alike.
+ * Errors: kQ3ErrorViewIsStarted inside another loop; kQ3ErrorFileNotOpen
+ * unless the file is open for writing.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_StartWriting(TQ3ViewObject view, TQ3FileObject theFile);
+
+/*
+ * Q3View_EndWriting: ends the loop: kQ3ViewStatusDone (Q3 never asks for a
+ * retraversal), kQ3ViewStatusCancelled after Q3View_Cancel (objects
+ * submitted after the cancel were not written), kQ3ViewStatusError on
+ * failure. The file is complete when it is closed.
+ * Errors: kQ3ErrorWriteStateInactive outside a writing loop.
+ */
+Q3_EXTERN_API_C(TQ3ViewStatus) Q3View_EndWriting(TQ3ViewObject view);
+
+/*
+ * Q3File_GetNextObjectType: the type of the object Q3File_ReadObject would
+ * read next: a class's type (kQ3GeometryTypeTriangle, ...),
+ * kQ3SharedTypeEndGroup, kQ3ShapeTypeUnknown for a type Q3 does not know,
+ * kQ3ObjectTypeInvalid at the end of the file.
+ * Errors: kQ3ErrorFileNotOpen unless open for reading.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3File_GetNextObjectType(TQ3FileObject theFile);
+
+/* Q3File_IsNextObjectOfType: whether the next object is of that type (or a
+ * subclass of it). Errors: as Q3File_GetNextObjectType. */
+Q3_EXTERN_API_C(TQ3Boolean) Q3File_IsNextObjectOfType(TQ3FileObject theFile, TQ3ObjectType ofType);
+
+/*
+ * Q3File_ReadObject: reads the next object; a BeginGroup reads the whole
+ * group. An object Q3 cannot read is skipped: the call fails with the error
+ * saying why and the next call reads the object after it.
+ * Errors: kQ3ErrorFileNotOpen unless open for reading; kQ3ErrorEndOfFile at
+ * the end; the metafile errors for a malformed object; the object's own
+ * data errors (kQ3ErrorInvalidMetafileObject, naming the rule broken).
+ * Ownership: the caller holds one reference to the object.
+ */
+Q3_EXTERN_API_C(TQ3Object) Q3File_ReadObject(TQ3FileObject theFile);
+
+/*
+ * Q3File_SkipObject: passes over the next object (a BeginGroup: the whole
+ * group). Errors: as Q3File_ReadObject, kQ3ErrorEndOfFile at the end.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_SkipObject(TQ3FileObject theFile);
+
+/* Q3File_IsEndOfFile: kQ3True when no object is left to read, and for a
+ * file that is not open for reading. */
+Q3_EXTERN_API_C(TQ3Boolean) Q3File_IsEndOfFile(TQ3FileObject theFile);
+
+enum TQ3FileReadGroupStateMasks {
+    kQ3FileReadWholeGroup = 0,
+    kQ3FileReadObjectsInGroup = 1 << 0,
+    kQ3FileCurrentlyInsideGroup = 1 << 1
+};
+typedef enum TQ3FileReadGroupStateMasks TQ3FileReadGroupStateMasks;
+typedef unsigned long TQ3FileReadGroupState;
+
+/*
+ * Q3File_SetReadInGroup: how Q3File_ReadObject reads groups from now on:
+ * kQ3FileReadWholeGroup (the default: one call reads a group and everything
+ * in it) or kQ3FileReadObjectsInGroup (a call reads the group itself, empty;
+ * each later call one object of it; the last one returns an object of type
+ * kQ3SharedTypeEndGroup). Groups already being read one object at a time
+ * finish that way.
+ * Errors: kQ3ErrorInvalidParameter for any other value.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_SetReadInGroup(TQ3FileObject theFile, TQ3FileReadGroupState readGroupState);
+
+/*
+ * Q3File_GetReadInGroup: the mode, with kQ3FileCurrentlyInsideGroup added
+ * while a group read one object at a time has not reached its end.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_GetReadInGroup(TQ3FileObject theFile, TQ3FileReadGroupState *readGroupState);
+
+/*
+ * Q3Unknown_GetType: kQ3UnknownTypeText or kQ3UnknownTypeBinary.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3Unknown_GetType(TQ3UnknownObject unknownObject);
+
+/*
+ * Q3Unknown_GetDirtyState / Q3Unknown_SetDirtyState: a flag the application
+ * keeps on the object (kQ3False when read).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Unknown_GetDirtyState(TQ3UnknownObject unknownObject, TQ3Boolean *isDirty);
+Q3_EXTERN_API_C(TQ3Status) Q3Unknown_SetDirtyState(TQ3UnknownObject unknownObject, TQ3Boolean isDirty);
+
+typedef struct TQ3UnknownTextData {
+    char *objectName; /* '\0' terminated */
+    char *contents;   /* '\0' terminated */
+} TQ3UnknownTextData;
+
+/*
+ * Q3UnknownText_GetData: copies of an unknown text object's name and
+ * contents (the tokens between its parentheses, separated by spaces).
+ * Errors: kQ3ErrorInvalidObjectType for an unknown binary object.
+ * Ownership: release the copies with Q3UnknownText_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3UnknownText_GetData(TQ3UnknownObject unknownObject, TQ3UnknownTextData *unknownTextData);
+
+/* Q3UnknownText_EmptyData: frees what GetData copied, and NULLs the fields. */
+Q3_EXTERN_API_C(TQ3Status) Q3UnknownText_EmptyData(TQ3UnknownTextData *unknownTextData);
+
+typedef struct TQ3UnknownBinaryData {
+    TQ3ObjectType objectType;
+    unsigned long size;
+    TQ3Endian byteOrder;
+    char *contents;
+} TQ3UnknownBinaryData;
+
+/*
+ * Q3UnknownBinary_GetData: an unknown binary object's type, size, the byte
+ * order of the file it came from and a copy of its data (NULL when size is
+ * 0). Errors: kQ3ErrorInvalidObjectType for an unknown text object.
+ * Ownership: release the copy with Q3UnknownBinary_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_GetData(TQ3UnknownObject unknownObject,
+                                                   TQ3UnknownBinaryData *unknownBinaryData);
+
+/* Q3UnknownBinary_EmptyData: frees what GetData copied, and NULLs contents. */
+Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_EmptyData(TQ3UnknownBinaryData *unknownBinaryData);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* QD3DIO_H */

@@ -1,0 +1,328 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "io/ClassIO.h"
+
+#include "core/ErrorManager.h"
+#include "core/Limits.h"
+#include "group/Group.h"
+#include "io/Unknown.h"
+
+#include <cctype>
+#include <cstring>
+
+namespace q3::io {
+
+const std::vector<ClassIO>& classes()
+{
+    static const std::vector<ClassIO> table = [] {
+        std::vector<ClassIO> all;
+        addGeometryClasses(all);
+        addAttributeClasses(all);
+        addGroupClasses(all);
+        addStateClasses(all);
+        return all;
+    }();
+    return table;
+}
+
+const ClassIO* classOfType(TQ3ObjectType type)
+{
+    for (const ClassIO& entry : classes())
+        if (entry.type == type)
+            return &entry;
+    return nullptr;
+}
+
+const ClassIO* classOfObject(const Object& object)
+{
+    for (const ClassInfo* info = &object.classInfo(); info != nullptr; info = info->parent)
+        if (const ClassIO* entry = classOfType(info->type))
+            return entry;
+    return nullptr;
+}
+
+TQ3ObjectType typeOfName(const std::string& name)
+{
+    for (const ClassIO& entry : classes()) {
+        const std::size_t n = std::strlen(entry.name);
+        if (n != name.size())
+            continue;
+        bool same = true;
+        for (std::size_t i = 0; i < n && same; ++i)
+            same = std::tolower(static_cast<unsigned char>(name[i])) ==
+                   std::tolower(static_cast<unsigned char>(entry.name[i]));
+        if (same)
+            return entry.type;
+    }
+    return 0;
+}
+
+const Node* Parts::find(TQ3ObjectType type) const
+{
+    for (const Node* node : subobjects) {
+        const Node* target = node;
+        if (node->type == kTypeReference && file != nullptr) {
+            // A reference stands for its target; the caller reads the
+            // reference, so every reference gives the one object.
+            DataReader in(*file, *node);
+            if (in.atEnd())
+                continue;
+            const auto found = file->references.find(in.u32());
+            if (found == file->references.end())
+                return node; // reading it reports the dangling reference
+            target = found->second;
+        }
+        if (target->type == type)
+            return node;
+        if (target->type == kTypeContainer && !target->children.empty() && target->children.front().type == type)
+            return node;
+    }
+    return nullptr;
+}
+
+namespace {
+
+struct DepthGuard {
+    explicit DepthGuard(std::size_t& depth) : m_depth(depth)
+    {
+        if (++m_depth > limits::kMaxMetafileNesting) {
+            --m_depth;
+            fail(kQ3ErrorInvalidMetafile,
+                 "objects nest deeper than " + std::to_string(limits::kMaxMetafileNesting) + " levels");
+        }
+    }
+    ~DepthGuard() { --m_depth; }
+    std::size_t& m_depth;
+};
+
+Ref<SharedObject> unknownFrom(const Metafile& file, const Node& node)
+{
+    if (file.encoding == Encoding::kText) {
+        std::string contents(reinterpret_cast<const char*>(file.bytes.data()) + node.dataBegin,
+                             node.dataEnd - node.dataBegin);
+        const std::size_t first = contents.find_first_not_of(" \t\r\n");
+        const std::size_t last = contents.find_last_not_of(" \t\r\n");
+        contents = first == std::string::npos ? std::string() : contents.substr(first, last - first + 1);
+        return makeShared<UnknownText>(node.name, std::move(contents));
+    }
+    std::string contents(reinterpret_cast<const char*>(file.bytes.data()) + node.dataBegin,
+                         node.dataEnd - node.dataBegin);
+    return makeShared<UnknownBinary>(node.type, std::move(contents),
+                                     file.encoding == Encoding::kBinaryLittle ? kQ3EndianLittle : kQ3EndianBig);
+}
+
+// Where the item starting at `index` ends: past its EndGroup for a BeginGroup.
+std::size_t itemEnd(const std::vector<Node>& nodes, std::size_t index)
+{
+    if (nodes[index].type != kTypeBeginGroup)
+        return index + 1;
+    std::size_t open = 0;
+    for (std::size_t i = index; i < nodes.size(); ++i) {
+        if (nodes[i].type == kTypeBeginGroup)
+            ++open;
+        else if (nodes[i].type == kTypeEndGroup && --open == 0)
+            return i + 1;
+    }
+    return nodes.size();
+}
+
+} // namespace
+
+Ref<SharedObject> ReadContext::object(const Node& node)
+{
+    DepthGuard guard(m_depth);
+    if (node.type == kTypeReference) {
+        const std::uint32_t id = reader(node).u32();
+        const auto found = m_file.references.find(id);
+        if (found == m_file.references.end())
+            fail(kQ3ErrorInvalidMetafileObject,
+                 "reference " + std::to_string(id) + " is in no table of contents: it refers to nothing");
+        return object(*found->second);
+    }
+    if (const auto done = m_done.find(&node); done != m_done.end())
+        return done->second;
+    if (m_reading.count(&node) != 0)
+        fail(kQ3ErrorInvalidMetafileObject, "a reference refers to an object that contains it (a cycle)");
+    m_reading.insert(&node);
+    Ref<SharedObject> result;
+    try {
+        result = build(node);
+    } catch (...) {
+        m_reading.erase(&node);
+        throw;
+    }
+    m_reading.erase(&node);
+    m_done.emplace(&node, result);
+    return result;
+}
+
+Ref<SharedObject> ReadContext::build(const Node& node)
+{
+    if (node.type == kTypeBeginGroup) {
+        fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup where a single object must be");
+    }
+    if (node.type == kTypeEndGroup)
+        fail(kQ3ErrorInvalidMetafileObject, "an EndGroup without its BeginGroup");
+    if (node.type == kTypeContainer) {
+        if (node.children.empty())
+            fail(kQ3ErrorInvalidMetafileObject, "an empty container");
+        const Node& root = node.children.front();
+        if (root.type == kTypeContainer || root.type == kTypeReference || root.type == kTypeBeginGroup)
+            fail(kQ3ErrorInvalidMetafileObject, "a container whose first object is a " +
+                                                    (root.name.empty() ? typeName(root.type) : root.name));
+        Parts parts{root, {}, &m_file};
+        for (std::size_t i = 1; i < node.children.size(); ++i)
+            parts.subobjects.push_back(&node.children[i]);
+        const ClassIO* entry = classOfType(root.type);
+        if (entry == nullptr)
+            return unknownFrom(m_file, root);
+        return entry->read(*this, parts);
+    }
+    const ClassIO* entry = classOfType(node.type);
+    if (entry == nullptr)
+        return unknownFrom(m_file, node);
+    return entry->read(*this, Parts{node, {}, &m_file});
+}
+
+Ref<AttributeSet> ReadContext::attributeSet(const Parts& parts)
+{
+    const Node* node = parts.find(kQ3SetTypeAttribute);
+    if (node == nullptr)
+        return {};
+    return objectAs<AttributeSet>(*node, "the attribute set");
+}
+
+Ref<SharedObject> ReadContext::sequenceItem(const std::vector<Node>& nodes, std::size_t& index)
+{
+    DepthGuard guard(m_depth);
+    const std::size_t end = itemEnd(nodes, index);
+    const Node& node = nodes[index];
+    if (node.type != kTypeBeginGroup) {
+        index = end;
+        return object(node);
+    }
+    if (end == nodes.size() && (end == index + 1 || nodes[end - 1].type != kTypeEndGroup)) {
+        index = end;
+        fail(kQ3ErrorInvalidMetafile, "a BeginGroup without its EndGroup");
+    }
+    const std::size_t first = index + 1;
+    index = end;
+    Ref<SharedObject> opened = groupOf(node);
+    Ref<Group> group = Ref<Group>::adopt(static_cast<Group*>(opened.detach()));
+    for (std::size_t i = first; i + 1 < end;) {
+        Ref<SharedObject> member = sequenceItem(nodes, i);
+        if (!group->accepts(*member)) {
+            errors::postWarning(kQ3WarningInvalidObjectInGroupMetafile,
+                                std::string("a ") + group->classInfo().name + " cannot hold the " +
+                                    member->classInfo().name + " the file puts in it; it is left out");
+            continue;
+        }
+        group->add(std::move(member));
+    }
+    return Ref<SharedObject>(std::move(group));
+}
+
+Ref<SharedObject> ReadContext::groupOf(const Node& beginGroup)
+{
+    if (beginGroup.children.size() != 1)
+        fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup holds " + std::to_string(beginGroup.children.size()) +
+                                                " objects, not one group");
+    return Ref<SharedObject>(objectAs<Group>(beginGroup.children.front(), "the object a BeginGroup holds"));
+}
+
+bool WriteContext::hasAttributes(const AttributeSet* set)
+{
+    if (set == nullptr)
+        return false;
+    for (TQ3AttributeType type = AttributeSet::kFirstType; type <= AttributeSet::kLastType; ++type)
+        if (set->contains(type))
+            return true;
+    return false;
+}
+
+void WriteContext::attributeSet(const AttributeSet* set)
+{
+    if (hasAttributes(set))
+        object(*set);
+}
+
+void WriteContext::object(const Object& object)
+{
+    DepthGuard guard(m_depth);
+    const bool isGroup = object.isType(kQ3ShapeTypeGroup);
+    if (!m_stream && !isGroup) {
+        if (auto found = m_written.find(&object); found != m_written.end()) {
+            Written& first = found->second;
+            if (first.id == 0) {
+                first.id = m_nextId++;
+                m_out.label(first.position, "ref" + std::to_string(first.id));
+                m_labelled.push_back(&object);
+            }
+            m_out.begin(kTypeReference, "Reference");
+            m_out.u32(first.id);
+            m_out.end();
+            return;
+        }
+    }
+    const ClassIO* entry = classOfObject(object);
+    if (entry == nullptr) {
+        errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,
+                            std::string("Q3 has no 3DMF form for a ") + object.classInfo().name +
+                                "; it is left out of the file");
+        return;
+    }
+    const bool remember = !m_stream && !isGroup && object.isType(kQ3ObjectTypeShared);
+    if (remember) {
+        m_written[&object] = Written{m_out.position()};
+        m_added.push_back(&object);
+        m_keep.push_back(Ref<SharedObject>::retain(
+            const_cast<SharedObject*>(static_cast<const SharedObject*>(&object))));
+    }
+    if (m_depth > 1) {
+        entry->write(*this, object);
+        return;
+    }
+    // A submitted object is written whole or not at all: a failure inside
+    // (a group nested past the limit) leaves the file as it was.
+    const Encoder::Mark before = m_out.mark();
+    const std::size_t kept = m_keep.size() - (remember ? 1 : 0);
+    const std::uint32_t nextId = m_nextId;
+    m_added.assign(remember ? 1 : 0, &object);
+    m_labelled.clear();
+    try {
+        entry->write(*this, object);
+    } catch (...) {
+        m_out.rollback(before);
+        for (const Object* added : m_added)
+            m_written.erase(added);
+        for (const Object* labelled : m_labelled)
+            if (auto found = m_written.find(labelled); found != m_written.end())
+                found->second.id = 0;
+        m_keep.resize(kept);
+        m_nextId = nextId;
+        throw;
+    }
+}
+
+void WriteContext::temporary(const Object& object)
+{
+    const ClassIO* entry = classOfObject(object);
+    if (entry == nullptr) {
+        errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,
+                            std::string("Q3 has no 3DMF form for a ") + object.classInfo().name);
+        return;
+    }
+    entry->write(*this, object);
+}
+
+std::vector<unsigned char> WriteContext::finish(TQ3FileMode mode)
+{
+    std::vector<std::pair<std::uint32_t, std::size_t>> toc;
+    for (const auto& [object, written] : m_written)
+        if (written.id != 0)
+            toc.emplace_back(written.id, written.position);
+    std::sort(toc.begin(), toc.end());
+    return m_out.finish(mode, toc);
+}
+
+} // namespace q3::io

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// One reader and one writer per class, found by the class's 3DMF type and
+// text name. A class's 3DMF layout is its own (optional fields, attribute
+// sets as child objects), so each class has a small pair of functions in its
+// family's file (GeometryIO.cpp, AttributeIO.cpp, GroupIO.cpp, ...), listed
+// there in one table; classes() gathers the tables. Adding a class is one
+// read function, one write function and one table row.
+
+#include "core/AttributeSet.h"
+#include "core/Object.h"
+#include "core/Ref.h"
+#include "io/Metafile.h"
+
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace q3::io {
+
+class ReadContext;
+class WriteContext;
+
+/// An object's parts as the file holds them: the object itself and, when it
+/// is the root of a container, the objects after it (attribute sets, vertex
+/// attribute set lists, caps...).
+struct Parts {
+    const Node& root;
+    std::vector<const Node*> subobjects;
+    const Metafile* file = nullptr; ///< to look through references
+
+    /// The first subobject of that type (looking through containers), or null.
+    const Node* find(TQ3ObjectType type) const;
+};
+
+struct ClassIO {
+    TQ3ObjectType type;
+    const char* name; ///< the text name
+    Ref<SharedObject> (*read)(ReadContext& context, const Parts& parts);
+    /// Writes the object (and its subobjects, in a container when it has
+    /// any). `object` is of class `type`.
+    void (*write)(WriteContext& context, const Object& object);
+};
+
+/// Every class Q3 reads and writes.
+const std::vector<ClassIO>& classes();
+const ClassIO* classOfType(TQ3ObjectType type);
+/// The most derived class with an entry for the object (its class or the
+/// nearest parent that has one), or null.
+const ClassIO* classOfObject(const Object& object);
+/// For the parser: the type a text name stands for, 0 for none.
+TQ3ObjectType typeOfName(const std::string& name);
+
+/// The family tables (one per file).
+void addGeometryClasses(std::vector<ClassIO>& table);
+void addAttributeClasses(std::vector<ClassIO>& table);
+void addGroupClasses(std::vector<ClassIO>& table);
+void addStateClasses(std::vector<ClassIO>& table);
+
+/// Reading one file: builds objects from nodes, resolving references once
+/// each (so two references give one object) and refusing cycles.
+class ReadContext {
+public:
+    explicit ReadContext(const Metafile& file) : m_file(file) {}
+
+    const Metafile& file() const { return m_file; }
+    DataReader reader(const Node& node) const { return DataReader(m_file, node); }
+
+    /// The object a node stands for: a container's root with its
+    /// subobjects, a reference's target, an unknown object for a type no
+    /// class has. Throws kQ3ErrorInvalidMetafileObject for a reference to
+    /// nothing or to an object being read (a cycle), and past
+    /// limits::kMaxMetafileNesting.
+    Ref<SharedObject> object(const Node& node);
+    /// As object(), checking the class: kQ3ErrorInvalidMetafileSubObject
+    /// when it is not a T (`what` names it).
+    template <class T>
+    Ref<T> objectAs(const Node& node, const char* what)
+    {
+        Ref<SharedObject> any = object(node);
+        if (!any->isType(T::kClassType))
+            fail(kQ3ErrorInvalidMetafileSubObject, std::string(what) + " is a " + any->classInfo().name);
+        return Ref<T>::adopt(static_cast<T*>(any.detach()));
+    }
+    /// The attribute set among the subobjects, or null.
+    Ref<AttributeSet> attributeSet(const Parts& parts);
+
+    /// Reads the objects of a sequence (a file's top level, a container's
+    /// children) from `index`: one object, or a BeginGroup up to its
+    /// EndGroup as one group. Advances index past what it read.
+    Ref<SharedObject> sequenceItem(const std::vector<Node>& nodes, std::size_t& index);
+    /// The (empty) group a BeginGroup node opens.
+    Ref<SharedObject> groupOf(const Node& beginGroup);
+
+private:
+    Ref<SharedObject> build(const Node& node);
+
+    const Metafile& m_file;
+    std::map<const Node*, Ref<SharedObject>> m_done;
+    std::set<const Node*> m_reading;
+    std::size_t m_depth = 0;
+};
+
+/// Writing one file. Objects written twice are written once and referred to
+/// (unless `stream`).
+class WriteContext {
+public:
+    WriteContext(Encoding encoding, bool stream) : m_out(encoding), m_stream(stream) {}
+
+    Encoder& out() { return m_out; }
+    /// Writes any object Q3 has a class for (references for repeats); an
+    /// object of no such class posts kQ3WarningNoObjectSupportForWriteMethod
+    /// and is left out.
+    void object(const Object& object);
+    /// Writes an object that lives only for this call (an immediate-mode
+    /// geometry): never referred to.
+    void temporary(const Object& object);
+    /// Writes a non-empty attribute set (nothing for null or empty).
+    void attributeSet(const AttributeSet* set);
+    /// Whether a set would be written.
+    static bool hasAttributes(const AttributeSet* set);
+
+    std::vector<unsigned char> finish(TQ3FileMode mode);
+
+private:
+    struct Written {
+        std::size_t position;
+        std::uint32_t id = 0;
+    };
+    Encoder m_out;
+    bool m_stream;
+    std::map<const Object*, Written> m_written;
+    std::vector<Ref<SharedObject>> m_keep;
+    std::uint32_t m_nextId = 1;
+    std::size_t m_depth = 0;
+    /// What the submitted object being written added, to undo on failure.
+    std::vector<const Object*> m_added;
+    std::vector<const Object*> m_labelled;
+};
+
+/// Runs `body` inside a Container when `container` is true.
+template <class Body>
+void maybeContainer(WriteContext& context, bool container, Body&& body)
+{
+    if (container)
+        context.out().begin(kTypeContainer, "Container");
+    body();
+    if (container)
+        context.out().end();
+}
+
+} // namespace q3::io

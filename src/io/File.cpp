@@ -1,0 +1,261 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "io/File.h"
+
+#include "core/ErrorManager.h"
+#include "geometry/Geometry.h"
+#include "shader/Shader.h"
+#include "style/Style.h"
+#include "view/Transform.h"
+
+namespace q3 {
+
+const ClassInfo kFileClass{kQ3SharedTypeFile, &kSharedClass, "file"};
+const ClassInfo kEndGroupClass{kQ3SharedTypeEndGroup, &kSharedClass, "end of group"};
+
+namespace {
+
+/// The writing loop's target: retained objects through write(), immediate
+/// mode shapes through the ShapeVisitor calls.
+class FileWriteTarget final : public WriteTarget {
+public:
+    explicit FileWriteTarget(std::shared_ptr<io::WriteContext> context) : m_context(std::move(context)) {}
+
+    void write(const Object& object) override { m_context->object(object); }
+    void visitGeometry(const Geometry& geometry) override { m_context->temporary(geometry); }
+    void visitAttributeSet(const AttributeSet& attributes) override { m_context->temporary(attributes); }
+    void visitStyle(const Style& style) override { m_context->temporary(style); }
+    void visitShader(const Shader& shader) override { m_context->temporary(shader); }
+    void visitTransform(const Transform& transform) override
+    {
+        m_context->temporary(transform);
+    }
+    void pushState() override {}
+    void popState() override {}
+    bool beginGroup(const DisplayGroup&) override { return false; }
+    void endGroup(const DisplayGroup&) override {}
+
+private:
+    std::shared_ptr<io::WriteContext> m_context;
+};
+
+} // namespace
+
+File::~File()
+{
+    release();
+}
+
+Object* File::duplicate() const
+{
+    fail(kQ3ErrorInvalidObjectType, "a file object cannot be duplicated");
+}
+
+void File::setStorage(Ref<Storage> storage)
+{
+    if (isOpen())
+        fail(kQ3ErrorFileIsOpen, "the file is open");
+    m_storage = std::move(storage);
+}
+
+TQ3FileMode File::openRead()
+{
+    if (isOpen())
+        fail(kQ3ErrorFileAlreadyOpen, "the file is already open");
+    if (!m_storage)
+        fail(kQ3ErrorNoStorageSetForFile, "the file has no storage (Q3File_SetStorage)");
+    const std::size_t size = m_storage->size();
+    if (size > limits::kMaxStorageBytes)
+        fail(kQ3ErrorInvalidMetafile, "the storage holds " + std::to_string(size) + " bytes, more than Q3 reads");
+    auto parsed = io::parse(m_storage->readAll(), &io::typeOfName);
+    m_mode = parsed->mode | (parsed->encoding == io::Encoding::kText ? kQ3FileModeText : 0);
+    m_file = std::move(parsed);
+    m_reader = std::make_unique<io::ReadContext>(*m_file);
+    m_next = 0;
+    m_state = State::kReading;
+    m_storage->acquire();
+    return m_mode;
+}
+
+void File::openWrite(TQ3FileMode mode)
+{
+    if (isOpen())
+        fail(kQ3ErrorFileAlreadyOpen, "the file is already open");
+    if (!m_storage)
+        fail(kQ3ErrorNoStorageSetForFile, "the file has no storage (Q3File_SetStorage)");
+    const TQ3FileMode known = kQ3FileModeStream | kQ3FileModeDatabase | kQ3FileModeText;
+    if ((mode & ~known) != 0 || ((mode & kQ3FileModeStream) && (mode & kQ3FileModeDatabase)))
+        fail(kQ3ErrorInvalidParameter, "mode " + std::to_string(mode) +
+                                           " is not Normal, Stream or Database, with or without Text");
+    m_writer = std::make_shared<io::WriteContext>(
+        (mode & kQ3FileModeText) ? io::Encoding::kText : io::Encoding::kBinaryBig, (mode & kQ3FileModeStream) != 0);
+    m_mode = mode;
+    m_state = State::kWriting;
+    m_storage->acquire();
+}
+
+TQ3FileMode File::mode() const
+{
+    if (!isOpen())
+        fail(kQ3ErrorFileNotOpen, "the file is not open");
+    return m_mode;
+}
+
+TQ3FileVersion File::version() const
+{
+    if (!isOpen())
+        fail(kQ3ErrorFileNotOpen, "the file is not open");
+    if (m_state == State::kWriting)
+        return kQ3FileVersionCurrent;
+    return Q3FileVersion(m_file->major, m_file->minor);
+}
+
+void File::release()
+{
+    if (m_state != State::kClosed && m_storage)
+        m_storage->releaseUse();
+    m_state = State::kClosed;
+    m_openGroups = 0;
+    m_reader.reset();
+    m_file.reset();
+    m_writer.reset();
+}
+
+void File::close()
+{
+    if (!isOpen())
+        fail(kQ3ErrorFileNotOpen, "the file is not open");
+    if (m_state == State::kWriting) {
+        std::shared_ptr<io::WriteContext> writer = m_writer;
+        Ref<Storage> storage = m_storage;
+        const TQ3FileMode mode = m_mode & (kQ3FileModeStream | kQ3FileModeDatabase);
+        release();
+        storage->replaceAll(writer->finish(mode));
+        return;
+    }
+    release();
+}
+
+void File::cancel()
+{
+    if (!isOpen())
+        fail(kQ3ErrorFileNotOpen, "the file is not open");
+    release();
+}
+
+void File::requireReading() const
+{
+    if (m_state != State::kReading)
+        fail(kQ3ErrorFileNotOpen, "the file is not open for reading");
+}
+
+bool File::isEndOfFile() const
+{
+    return m_state != State::kReading || m_next >= m_file->objects.size();
+}
+
+TQ3ObjectType File::nextObjectType() const
+{
+    requireReading();
+    if (isEndOfFile())
+        return kQ3ObjectTypeInvalid;
+    const io::Node* node = &m_file->objects[m_next];
+    for (int hops = 0; hops < 4; ++hops) {
+        if (node->type == io::kTypeEndGroup)
+            return kQ3SharedTypeEndGroup;
+        if (node->type == io::kTypeReference) {
+            io::DataReader reader(*m_file, *node);
+            if (reader.atEnd())
+                break;
+            const std::uint32_t id = reader.u32();
+            const auto found = m_file->references.find(id);
+            if (found == m_file->references.end())
+                break;
+            node = found->second;
+        } else if ((node->type == io::kTypeContainer || node->type == io::kTypeBeginGroup) &&
+                   !node->children.empty()) {
+            node = &node->children.front();
+        } else {
+            break;
+        }
+    }
+    return io::classOfType(node->type) != nullptr ? node->type : kQ3ShapeTypeUnknown;
+}
+
+bool File::isNextObjectOfType(TQ3ObjectType type) const
+{
+    const TQ3ObjectType next = nextObjectType();
+    if (next == type)
+        return true;
+    const ClassInfo* info = findClass(next);
+    return info != nullptr && info->isA(type);
+}
+
+Ref<SharedObject> File::readObject()
+{
+    requireReading();
+    if (isEndOfFile())
+        fail(kQ3ErrorEndOfFile, "no object is left in the file");
+    const io::Node& node = m_file->objects[m_next];
+    if (node.type == io::kTypeEndGroup && m_openGroups > 0) {
+        ++m_next;
+        --m_openGroups;
+        return Ref<SharedObject>(makeShared<EndGroup>());
+    }
+    if (node.type == io::kTypeBeginGroup && m_readGroup == kQ3FileReadObjectsInGroup) {
+        ++m_next; // a failure leaves the group's objects to be read one by one
+        Ref<SharedObject> group = m_reader->groupOf(node);
+        ++m_openGroups;
+        return group;
+    }
+    // On failure the item is skipped, so the next call reads the one after.
+    std::size_t index = m_next;
+    try {
+        Ref<SharedObject> object = m_reader->sequenceItem(m_file->objects, index);
+        m_next = index;
+        return object;
+    } catch (...) {
+        m_next = std::max(index, m_next + 1);
+        throw;
+    }
+}
+
+void File::skipObject()
+{
+    requireReading();
+    if (isEndOfFile())
+        fail(kQ3ErrorEndOfFile, "no object is left in the file");
+    std::size_t open = 0;
+    std::size_t i = m_next;
+    do {
+        const TQ3ObjectType type = m_file->objects[i].type;
+        if (type == io::kTypeBeginGroup)
+            ++open;
+        else if (type == io::kTypeEndGroup && open > 0)
+            --open;
+        ++i;
+    } while (open > 0 && i < m_file->objects.size());
+    m_next = i;
+}
+
+void File::setReadInGroup(TQ3FileReadGroupState state)
+{
+    if (state != kQ3FileReadWholeGroup && state != kQ3FileReadObjectsInGroup)
+        fail(kQ3ErrorInvalidParameter, "readGroupState " + std::to_string(state) +
+                                           " is neither kQ3FileReadWholeGroup nor kQ3FileReadObjectsInGroup");
+    m_readGroup = state;
+}
+
+TQ3FileReadGroupState File::readInGroup() const
+{
+    return m_readGroup | (m_openGroups > 0 ? kQ3FileCurrentlyInsideGroup : 0);
+}
+
+std::shared_ptr<WriteTarget> File::writeTarget()
+{
+    if (m_state != State::kWriting)
+        fail(kQ3ErrorFileNotOpen, "the file is not open for writing");
+    return std::make_shared<FileWriteTarget>(m_writer);
+}
+
+} // namespace q3

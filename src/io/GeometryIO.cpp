@@ -1,0 +1,816 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+//
+// The geometries' 3DMF layouts (3D Metafile Reference, "Geometry objects"):
+// each class's data in the reference's field order, its own attribute set
+// and its vertices' attribute sets (a VertexAttributeSetList) as subobjects.
+// A geometry read from a file goes through the class's own validation, so a
+// file can never create a geometry the API would refuse.
+
+#include "io/ClassIO.h"
+
+#include "geometry/Box.h"
+#include "geometry/Cone.h"
+#include "geometry/Cylinder.h"
+#include "geometry/Disk.h"
+#include "geometry/Ellipse.h"
+#include "geometry/Ellipsoid.h"
+#include "geometry/Line.h"
+#include "geometry/NURBCurve.h"
+#include "geometry/Point.h"
+#include "geometry/PolyLine.h"
+#include "geometry/Polygon.h"
+#include "geometry/Torus.h"
+#include "geometry/TriMesh.h"
+#include "geometry/Triangle.h"
+
+#include <cstring>
+#include <vector>
+
+namespace q3::io {
+namespace {
+
+constexpr TQ3ObjectType kTypeVertexSets = Q3_OBJECT_TYPE('v', 'a', 's', 'l');
+constexpr TQ3ObjectType kTypeCaps = Q3_OBJECT_TYPE('c', 'a', 'p', 's');
+
+const std::vector<std::pair<const char*, std::uint32_t>> kPacking = {{"Include", 0}, {"Exclude", 1}};
+const std::vector<std::pair<const char*, std::uint32_t>> kCaps = {
+    {"None", kQ3EndCapNone}, {"Top", kQ3EndCapMaskTop}, {"Bottom", kQ3EndCapMaskBottom},
+    {"Interior", kQ3EndCapMaskInterior}};
+
+const AttributeSet* setOf(TQ3AttributeSet handle)
+{
+    return handle == nullptr ? nullptr : static_cast<const AttributeSet*>(static_cast<const Object*>(handle));
+}
+
+// Builds a geometry from data read from a file, through the class's rules.
+template <class T>
+Ref<SharedObject> make(const typename T::DataType& data)
+{
+    try {
+        T::validate(&data);
+    } catch (const Error& error) {
+        fail(kQ3ErrorInvalidMetafileObject, std::string("the file's ") + T::kName + " breaks a rule: " + error.what());
+    }
+    return Ref<SharedObject>(makeShared<T>(data));
+}
+
+template <class T>
+const typename T::DataType& dataOf(const Object& object)
+{
+    return static_cast<const T&>(object).data();
+}
+
+// ---- vertex attribute sets -------------------------------------------------
+
+bool anyVertexSet(const TQ3Vertex3D* vertices, unsigned long n)
+{
+    for (unsigned long i = 0; i < n; ++i)
+        if (WriteContext::hasAttributes(setOf(vertices[i].attributeSet)))
+            return true;
+    return false;
+}
+
+void writeVertexSets(WriteContext& context, const TQ3Vertex3D* vertices, unsigned long n)
+{
+    if (!anyVertexSet(vertices, n))
+        return;
+    Encoder& out = context.out();
+    out.begin(kTypeContainer, "Container");
+    out.begin(kTypeVertexSets, "VertexAttributeSetList");
+    out.u32(static_cast<std::uint32_t>(n));
+    out.choice(kPacking, 1);
+    std::vector<std::uint32_t> without;
+    for (unsigned long i = 0; i < n; ++i)
+        if (!WriteContext::hasAttributes(setOf(vertices[i].attributeSet)))
+            without.push_back(static_cast<std::uint32_t>(i));
+    out.u32(static_cast<std::uint32_t>(without.size()));
+    for (std::uint32_t index : without)
+        out.u32(index);
+    out.end();
+    for (unsigned long i = 0; i < n; ++i)
+        context.attributeSet(setOf(vertices[i].attributeSet));
+    out.end();
+}
+
+// The vertices' sets, one per vertex (null where none).
+std::vector<Ref<AttributeSet>> readVertexSets(ReadContext& context, const Parts& parts, unsigned long n)
+{
+    std::vector<Ref<AttributeSet>> sets(n);
+    const Node* node = parts.find(kTypeVertexSets);
+    if (node == nullptr)
+        return sets;
+    if (node->type != kTypeContainer)
+        fail(kQ3ErrorInvalidMetafileSubObject, "a VertexAttributeSetList without its attribute sets");
+    DataReader in = context.reader(node->children.front());
+    const std::uint32_t count = in.u32();
+    if (count != n)
+        fail(kQ3ErrorInvalidMetafileSubObject, "a VertexAttributeSetList for " + std::to_string(count) +
+                                                   " vertices on a geometry with " + std::to_string(n));
+    const bool exclude = in.choice(kPacking) == 1;
+    const std::uint32_t listed = in.count(4, 1, "indices");
+    std::vector<bool> has(n, exclude);
+    for (std::uint32_t i = 0; i < listed; ++i) {
+        const std::uint32_t index = in.u32();
+        if (index >= n)
+            fail(kQ3ErrorInvalidMetafileSubObject, "a VertexAttributeSetList names vertex " + std::to_string(index) +
+                                                       " of " + std::to_string(n));
+        has[index] = !exclude;
+    }
+    std::size_t next = 1;
+    for (unsigned long i = 0; i < n; ++i) {
+        if (!has[i])
+            continue;
+        if (next >= node->children.size())
+            fail(kQ3ErrorInvalidMetafileSubObject, "a VertexAttributeSetList has fewer attribute sets than it lists");
+        sets[i] = context.objectAs<AttributeSet>(node->children[next++], "a vertex's attribute set");
+    }
+    return sets;
+}
+
+// Writes `body` (the object itself) with the geometry's own set and its
+// vertices' sets, in a container when there are any.
+template <class Body>
+void writeWithSets(WriteContext& context, const AttributeSet* own, const TQ3Vertex3D* vertices, unsigned long n,
+                   Body&& body)
+{
+    const bool container = WriteContext::hasAttributes(own) || anyVertexSet(vertices, n);
+    maybeContainer(context, container, [&] {
+        body();
+        context.attributeSet(own);
+        writeVertexSets(context, vertices, n);
+    });
+}
+
+std::vector<TQ3Vertex3D> readPoints(DataReader& in, std::uint32_t n)
+{
+    std::vector<TQ3Vertex3D> vertices(n);
+    for (auto& vertex : vertices) {
+        vertex.point = in.point3D();
+        vertex.attributeSet = nullptr;
+    }
+    return vertices;
+}
+
+void attachSets(std::vector<TQ3Vertex3D>& vertices, const std::vector<Ref<AttributeSet>>& sets)
+{
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        vertices[i].attributeSet = sets[i].get();
+}
+
+// ---- the classes ---------------------------------------------------------------
+
+Ref<SharedObject> readPoint(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3PointData data{in.point3D(), nullptr};
+    Ref<AttributeSet> set = context.attributeSet(parts);
+    data.pointAttributeSet = set.get();
+    return make<Point>(data);
+}
+
+void writePoint(WriteContext& context, const Object& object)
+{
+    const TQ3PointData& data = dataOf<Point>(object);
+    writeWithSets(context, setOf(data.pointAttributeSet), nullptr, 0, [&] {
+        context.out().begin(kQ3GeometryTypePoint, "Point");
+        context.out().point3D(data.point);
+        context.out().end();
+    });
+}
+
+Ref<SharedObject> readLine(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    std::vector<TQ3Vertex3D> vertices = readPoints(in, 2);
+    const auto sets = readVertexSets(context, parts, 2);
+    attachSets(vertices, sets);
+    Ref<AttributeSet> own = context.attributeSet(parts);
+    TQ3LineData data{{vertices[0], vertices[1]}, own.get()};
+    return make<Line>(data);
+}
+
+void writeLine(WriteContext& context, const Object& object)
+{
+    const TQ3LineData& data = dataOf<Line>(object);
+    writeWithSets(context, setOf(data.lineAttributeSet), data.vertices, 2, [&] {
+        context.out().begin(kQ3GeometryTypeLine, "Line");
+        context.out().point3D(data.vertices[0].point);
+        context.out().point3D(data.vertices[1].point);
+        context.out().end();
+    });
+}
+
+Ref<SharedObject> readTriangle(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    std::vector<TQ3Vertex3D> vertices = readPoints(in, 3);
+    const auto sets = readVertexSets(context, parts, 3);
+    attachSets(vertices, sets);
+    Ref<AttributeSet> own = context.attributeSet(parts);
+    TQ3TriangleData data{{vertices[0], vertices[1], vertices[2]}, own.get()};
+    return make<Triangle>(data);
+}
+
+void writeTriangle(WriteContext& context, const Object& object)
+{
+    const TQ3TriangleData& data = dataOf<Triangle>(object);
+    writeWithSets(context, setOf(data.triangleAttributeSet), data.vertices, 3, [&] {
+        context.out().begin(kQ3GeometryTypeTriangle, "Triangle");
+        for (const TQ3Vertex3D& vertex : data.vertices)
+            context.out().point3D(vertex.point);
+        context.out().end();
+    });
+}
+
+template <class T, class Data>
+Ref<SharedObject> readVertexList(ReadContext& context, const Parts& parts, Data data, TQ3AttributeSet Data::*own)
+{
+    DataReader in = context.reader(parts.root);
+    const std::uint32_t n = in.count(12, 3, "vertices");
+    std::vector<TQ3Vertex3D> vertices = readPoints(in, n);
+    const auto sets = readVertexSets(context, parts, n);
+    attachSets(vertices, sets);
+    Ref<AttributeSet> set = context.attributeSet(parts);
+    data.numVertices = n;
+    data.vertices = vertices.data();
+    data.*own = set.get();
+    return make<T>(data);
+}
+
+Ref<SharedObject> readPolyLine(ReadContext& context, const Parts& parts)
+{
+    return readVertexList<PolyLine>(context, parts, TQ3PolyLineData{0, nullptr, nullptr, nullptr},
+                                    &TQ3PolyLineData::polyLineAttributeSet);
+}
+
+Ref<SharedObject> readPolygon(ReadContext& context, const Parts& parts)
+{
+    return readVertexList<Polygon>(context, parts, TQ3PolygonData{0, nullptr, nullptr},
+                                   &TQ3PolygonData::polygonAttributeSet);
+}
+
+void writeVertexListObject(WriteContext& context, TQ3ObjectType type, const char* name, const TQ3Vertex3D* vertices,
+                           unsigned long n, const AttributeSet* own)
+{
+    writeWithSets(context, own, vertices, n, [&] {
+        context.out().begin(type, name);
+        context.out().u32(static_cast<std::uint32_t>(n));
+        for (unsigned long i = 0; i < n; ++i)
+            context.out().point3D(vertices[i].point);
+        context.out().end();
+    });
+}
+
+void writePolyLine(WriteContext& context, const Object& object)
+{
+    const TQ3PolyLineData& data = dataOf<PolyLine>(object);
+    writeVertexListObject(context, kQ3GeometryTypePolyLine, "PolyLine", data.vertices, data.numVertices,
+                          setOf(data.polyLineAttributeSet));
+}
+
+void writePolygon(WriteContext& context, const Object& object)
+{
+    const TQ3PolygonData& data = dataOf<Polygon>(object);
+    writeVertexListObject(context, kQ3GeometryTypePolygon, "Polygon", data.vertices, data.numVertices,
+                          setOf(data.polygonAttributeSet));
+}
+
+// TriMesh indices are 8, 16 or 32 bits in binary files, the narrowest that
+// holds every index below the count (3D Metafile Reference, TriMesh).
+std::size_t indexBytes(std::uint32_t count)
+{
+    return count <= 0xFE ? 1 : count <= 0xFFFE ? 2 : 4;
+}
+
+std::uint32_t readIndex(DataReader& in, bool text, std::size_t bytes, std::uint32_t bound, const char* what)
+{
+    const std::uint32_t index = text || bytes == 4 ? in.u32() : bytes == 2 ? in.u16() : in.u8();
+    if (index >= bound)
+        fail(kQ3ErrorInvalidMetafileObject, std::string("a TriMesh ") + what + " index " + std::to_string(index) +
+                                                " is past the end (" + std::to_string(bound) + ")");
+    return index;
+}
+
+void writeIndex(Encoder& out, std::size_t bytes, std::uint32_t index)
+{
+    if (out.encoding() == Encoding::kText || bytes == 4)
+        out.u32(index);
+    else if (bytes == 2)
+        out.u16(static_cast<std::uint16_t>(index));
+    else
+        out.u8(static_cast<std::uint8_t>(index));
+}
+
+// ---- TriMesh attribute arrays ---------------------------------------------------
+//
+// One AttributeArray subobject per array: the attribute type, 0, which array
+// (0 triangles, 1 edges, 2 vertices), its index among that kind's arrays,
+// whether a use array follows, then one value per element and the use flags
+// (3D Metafile Reference, TriMesh; Quesa reads and writes the same).
+
+constexpr TQ3ObjectType kTypeAttributeArray = Q3_OBJECT_TYPE('a', 't', 'a', 'r');
+
+// Words (floats, or one 32-bit switch) of one value of an attribute type.
+std::size_t wordsOf(TQ3AttributeType type)
+{
+    switch (type) {
+    case kQ3AttributeTypeSurfaceUV:
+    case kQ3AttributeTypeShadingUV:
+        return 2;
+    case kQ3AttributeTypeNormal:
+    case kQ3AttributeTypeDiffuseColor:
+    case kQ3AttributeTypeSpecularColor:
+    case kQ3AttributeTypeTransparencyColor:
+        return 3;
+    case kQ3AttributeTypeAmbientCoefficient:
+    case kQ3AttributeTypeSpecularControl:
+    case kQ3AttributeTypeHighlightState:
+        return 1;
+    case kQ3AttributeTypeSurfaceTangent:
+        return 6;
+    default:
+        fail(kQ3ErrorInvalidMetafileObject,
+             "a TriMesh attribute array of type " + std::to_string(type) + ", which Q3 does not store");
+    }
+}
+
+struct ArrayStore {
+    std::vector<TQ3TriMeshAttributeData> entries;
+    std::vector<std::vector<unsigned char>> values;
+    std::vector<std::vector<char>> uses;
+};
+
+void readAttributeArrays(ReadContext& context, const Parts& parts, const std::uint32_t counts[3],
+                         const std::uint32_t elements[3], ArrayStore stores[3])
+{
+    for (int kind = 0; kind < 3; ++kind) {
+        stores[kind].entries.assign(counts[kind], TQ3TriMeshAttributeData{kQ3AttributeTypeNone, nullptr, nullptr});
+        stores[kind].values.resize(counts[kind]);
+        stores[kind].uses.resize(counts[kind]);
+    }
+    for (const Node* node : parts.subobjects) {
+        if (node->type != kTypeAttributeArray)
+            continue;
+        DataReader in = context.reader(*node);
+        const auto type = static_cast<TQ3AttributeType>(in.i32());
+        in.u32();
+        const std::uint32_t kind = in.u32();
+        const std::uint32_t index = in.u32();
+        const bool useFlags = in.u32() != 0;
+        if (kind > 2 || index >= counts[kind])
+            fail(kQ3ErrorInvalidMetafileSubObject, "a TriMesh attribute array at " + std::to_string(kind) + "/" +
+                                                       std::to_string(index) + ", which the TriMesh does not have");
+        ArrayStore& store = stores[kind];
+        if (store.entries[index].attributeType != kQ3AttributeTypeNone)
+            fail(kQ3ErrorInvalidMetafileSubObject, "two TriMesh attribute arrays at one place");
+        const std::size_t words = wordsOf(type);
+        const std::uint32_t n = elements[kind];
+        in.requireRoom(n, 4 * words, words, "attribute values");
+        std::vector<unsigned char> values(std::size_t{n} * words * 4);
+        for (std::size_t w = 0; w < std::size_t{n} * words; ++w) {
+            if (type == kQ3AttributeTypeHighlightState) {
+                const auto s = static_cast<TQ3Switch>(in.u32());
+                std::memcpy(values.data() + 4 * w, &s, 4);
+            } else {
+                const float f = in.f32();
+                std::memcpy(values.data() + 4 * w, &f, 4);
+            }
+        }
+        std::vector<char> use;
+        if (useFlags) {
+            in.requireRoom(n, 1, 1, "use flags");
+            use.resize(n);
+            for (char& flag : use)
+                flag = static_cast<char>(in.u8());
+        }
+        store.values[index] = std::move(values);
+        store.uses[index] = std::move(use);
+        store.entries[index] = TQ3TriMeshAttributeData{type, store.values[index].data(),
+                                                       useFlags ? store.uses[index].data() : nullptr};
+    }
+    for (int kind = 0; kind < 3; ++kind)
+        for (const auto& entry : stores[kind].entries)
+            if (entry.attributeType == kQ3AttributeTypeNone)
+                fail(kQ3ErrorInvalidMetafileSubObject, "a TriMesh announces an attribute array it does not hold");
+}
+
+void writeAttributeArrays(Encoder& out, std::uint32_t kind, const TQ3TriMeshAttributeData* entries,
+                          unsigned long count, unsigned long elements)
+{
+    for (unsigned long i = 0; i < count; ++i) {
+        const TQ3TriMeshAttributeData& entry = entries[i];
+        const std::size_t words = wordsOf(entry.attributeType);
+        out.begin(kTypeAttributeArray, "AttributeArray");
+        out.i32(static_cast<std::int32_t>(entry.attributeType));
+        out.u32(0);
+        out.u32(kind);
+        out.u32(static_cast<std::uint32_t>(i));
+        out.u32(entry.attributeUseArray != nullptr ? 1 : 0);
+        const auto* bytes = static_cast<const unsigned char*>(entry.data);
+        for (std::size_t w = 0; w < elements * words; ++w) {
+            if (entry.attributeType == kQ3AttributeTypeHighlightState) {
+                TQ3Switch s;
+                std::memcpy(&s, bytes + 4 * w, 4);
+                out.u32(static_cast<std::uint32_t>(s));
+            } else {
+                float f;
+                std::memcpy(&f, bytes + 4 * w, 4);
+                out.f32(f);
+            }
+        }
+        if (entry.attributeUseArray != nullptr)
+            for (unsigned long e = 0; e < elements; ++e)
+                out.u8(static_cast<std::uint8_t>(entry.attributeUseArray[e]));
+        out.end();
+    }
+}
+
+Ref<SharedObject> readTriMesh(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    const bool text = context.file().encoding == Encoding::kText;
+    const std::uint32_t numTriangles = in.u32();
+    const std::uint32_t numTriangleTypes = in.u32();
+    const std::uint32_t numEdges = in.u32();
+    const std::uint32_t numEdgeTypes = in.u32();
+    const std::uint32_t numPoints = in.u32();
+    const std::uint32_t numVertexTypes = in.u32();
+    if (numTriangleTypes > 64 || numEdgeTypes > 64 || numVertexTypes > 64)
+        fail(kQ3ErrorInvalidMetafileObject, "a TriMesh announces more attribute arrays than it could hold");
+    const std::size_t pointBytes = indexBytes(numPoints);
+    const std::size_t triangleBytes = indexBytes(numTriangles);
+    in.requireRoom(numTriangles, 3 * pointBytes, 3, "triangles");
+    std::vector<TQ3TriMeshTriangleData> triangles(numTriangles);
+    for (auto& triangle : triangles)
+        for (auto& index : triangle.pointIndices)
+            index = readIndex(in, text, pointBytes, numPoints, "point");
+    in.requireRoom(numEdges, 2 * pointBytes + 2 * triangleBytes, 4, "edges");
+    std::vector<TQ3TriMeshEdgeData> edges(numEdges);
+    for (auto& edge : edges) {
+        for (auto& index : edge.pointIndices)
+            index = readIndex(in, text, pointBytes, numPoints, "point");
+        for (auto& index : edge.triangleIndices)
+            index = readIndex(in, text, triangleBytes, numTriangles, "triangle");
+    }
+    in.requireRoom(numPoints, 12, 3, "points");
+    std::vector<TQ3Point3D> points(numPoints);
+    for (auto& point : points)
+        point = in.point3D();
+    TQ3BoundingBox box;
+    box.min = in.point3D();
+    box.max = in.point3D();
+    box.isEmpty = in.u32() != 0 ? kQ3True : kQ3False;
+    Ref<AttributeSet> own = context.attributeSet(parts);
+    const std::uint32_t counts[3] = {numTriangleTypes, numEdgeTypes, numVertexTypes};
+    const std::uint32_t elements[3] = {numTriangles, numEdges, numPoints};
+    ArrayStore stores[3];
+    readAttributeArrays(context, parts, counts, elements, stores);
+    TQ3TriMeshData data{};
+    data.triMeshAttributeSet = own.get();
+    data.numTriangleAttributeTypes = numTriangleTypes;
+    data.triangleAttributeTypes = numTriangleTypes ? stores[0].entries.data() : nullptr;
+    data.numEdgeAttributeTypes = numEdgeTypes;
+    data.edgeAttributeTypes = numEdgeTypes ? stores[1].entries.data() : nullptr;
+    data.numVertexAttributeTypes = numVertexTypes;
+    data.vertexAttributeTypes = numVertexTypes ? stores[2].entries.data() : nullptr;
+    data.numTriangles = numTriangles;
+    data.triangles = triangles.data();
+    data.numEdges = numEdges;
+    data.edges = edges.empty() ? nullptr : edges.data();
+    data.numPoints = numPoints;
+    data.points = points.data();
+    data.bBox = box;
+    return make<TriMesh>(data);
+}
+
+void writeTriMesh(WriteContext& context, const Object& object)
+{
+    const TQ3TriMeshData& data = dataOf<TriMesh>(object);
+    const AttributeSet* own = setOf(data.triMeshAttributeSet);
+    const bool arrays = data.numTriangleAttributeTypes + data.numEdgeAttributeTypes + data.numVertexAttributeTypes > 0;
+    maybeContainer(context, WriteContext::hasAttributes(own) || arrays, [&] {
+        Encoder& out = context.out();
+        out.begin(kQ3GeometryTypeTriMesh, "TriMesh");
+        out.u32(static_cast<std::uint32_t>(data.numTriangles));
+        out.u32(static_cast<std::uint32_t>(data.numTriangleAttributeTypes));
+        out.u32(static_cast<std::uint32_t>(data.numEdges));
+        out.u32(static_cast<std::uint32_t>(data.numEdgeAttributeTypes));
+        out.u32(static_cast<std::uint32_t>(data.numPoints));
+        out.u32(static_cast<std::uint32_t>(data.numVertexAttributeTypes));
+        const std::size_t pointBytes = indexBytes(static_cast<std::uint32_t>(data.numPoints));
+        const std::size_t triangleBytes = indexBytes(static_cast<std::uint32_t>(data.numTriangles));
+        for (unsigned long i = 0; i < data.numTriangles; ++i)
+            for (unsigned long index : data.triangles[i].pointIndices)
+                writeIndex(out, pointBytes, static_cast<std::uint32_t>(index));
+        for (unsigned long i = 0; i < data.numEdges; ++i) {
+            for (unsigned long index : data.edges[i].pointIndices)
+                writeIndex(out, pointBytes, static_cast<std::uint32_t>(index));
+            for (unsigned long index : data.edges[i].triangleIndices)
+                writeIndex(out, triangleBytes, static_cast<std::uint32_t>(index));
+        }
+        for (unsigned long i = 0; i < data.numPoints; ++i)
+            out.point3D(data.points[i]);
+        out.point3D(data.bBox.min);
+        out.point3D(data.bBox.max);
+        out.u32(data.bBox.isEmpty != kQ3False ? 1 : 0);
+        out.end();
+        writeAttributeArrays(out, 0, data.triangleAttributeTypes, data.numTriangleAttributeTypes, data.numTriangles);
+        writeAttributeArrays(out, 1, data.edgeAttributeTypes, data.numEdgeAttributeTypes, data.numEdges);
+        writeAttributeArrays(out, 2, data.vertexAttributeTypes, data.numVertexAttributeTypes, data.numPoints);
+        context.attributeSet(own);
+    });
+}
+
+Ref<SharedObject> readNURBCurve(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    const std::uint32_t order = in.u32();
+    const std::uint32_t numPoints = in.count(16, 4, "control points");
+    std::vector<TQ3RationalPoint4D> points(numPoints);
+    for (auto& point : points)
+        point = in.point4D();
+    const std::uint64_t numKnots = std::uint64_t{order} + numPoints;
+    in.requireRoom(numKnots, 4, 1, "knots");
+    std::vector<float> knots(static_cast<std::size_t>(numKnots));
+    for (float& knot : knots)
+        knot = in.f32();
+    Ref<AttributeSet> own = context.attributeSet(parts);
+    TQ3NURBCurveData data{order, numPoints, points.data(), knots.data(), own.get()};
+    return make<NURBCurve>(data);
+}
+
+void writeNURBCurve(WriteContext& context, const Object& object)
+{
+    const TQ3NURBCurveData& data = dataOf<NURBCurve>(object);
+    const AttributeSet* own = setOf(data.curveAttributeSet);
+    maybeContainer(context, WriteContext::hasAttributes(own), [&] {
+        Encoder& out = context.out();
+        out.begin(kQ3GeometryTypeNURBCurve, "NURBCurve");
+        out.u32(static_cast<std::uint32_t>(data.order));
+        out.u32(static_cast<std::uint32_t>(data.numPoints));
+        for (unsigned long i = 0; i < data.numPoints; ++i)
+            out.point4D(data.controlPoints[i]);
+        for (unsigned long i = 0; i < data.order + data.numPoints; ++i)
+            out.f32(data.knots[i]);
+        out.end();
+        context.attributeSet(own);
+    });
+}
+
+Ref<SharedObject> readBox(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3BoxData data{};
+    // An empty Box ( ) is the unit box at the origin.
+    data.orientation = {1, 0, 0};
+    data.majorAxis = {0, 1, 0};
+    data.minorAxis = {0, 0, 1};
+    data.origin = {0, 0, 0};
+    if (!in.atEnd()) {
+        data.orientation = in.vector3D();
+        data.majorAxis = in.vector3D();
+        data.minorAxis = in.vector3D();
+        data.origin = in.point3D();
+    }
+    Ref<AttributeSet> own = context.attributeSet(parts);
+    data.boxAttributeSet = own.get();
+    return make<Box>(data);
+}
+
+void writeBox(WriteContext& context, const Object& object)
+{
+    const TQ3BoxData& data = dataOf<Box>(object);
+    const AttributeSet* own = setOf(data.boxAttributeSet);
+    maybeContainer(context, WriteContext::hasAttributes(own), [&] {
+        Encoder& out = context.out();
+        out.begin(kQ3GeometryTypeBox, "Box");
+        out.vector3D(data.orientation);
+        out.vector3D(data.majorAxis);
+        out.vector3D(data.minorAxis);
+        out.point3D(data.origin);
+        out.end();
+        context.attributeSet(own);
+    });
+}
+
+// The u and v ranges, written only when they are not the whole surface.
+struct Ranges {
+    float uMin = 0, uMax = 1, vMin = 0, vMax = 1;
+};
+
+void readRanges(DataReader& in, Ranges& r, bool withV)
+{
+    if (in.atEnd())
+        return;
+    r.uMin = in.f32();
+    r.uMax = in.f32();
+    if (withV) {
+        r.vMin = in.f32();
+        r.vMax = in.f32();
+    }
+}
+
+void writeRanges(Encoder& out, const Ranges& r, bool withV)
+{
+    const bool whole = r.uMin == 0 && r.uMax == 1 && (!withV || (r.vMin == 0 && r.vMax == 1));
+    if (whole)
+        return;
+    out.f32(r.uMin);
+    out.f32(r.uMax);
+    if (withV) {
+        out.f32(r.vMin);
+        out.f32(r.vMax);
+    }
+}
+
+TQ3EndCap readCaps(ReadContext& context, const Parts& parts)
+{
+    const Node* node = parts.find(kTypeCaps);
+    if (node == nullptr)
+        return kQ3EndCapNone;
+    DataReader in = context.reader(*node);
+    return static_cast<TQ3EndCap>(in.flags(kCaps));
+}
+
+void writeCaps(Encoder& out, TQ3EndCap caps)
+{
+    if (caps == kQ3EndCapNone)
+        return;
+    out.begin(kTypeCaps, "Caps");
+    out.flags(kCaps, static_cast<std::uint32_t>(caps));
+    out.end();
+}
+
+// Cone, cylinder, ellipsoid and torus: orientation, major and minor radius,
+// origin (the torus then its ratio), the optional ranges; caps and the
+// attribute set as subobjects.
+template <class T, class Data>
+Ref<SharedObject> readSolid(ReadContext& context, const Parts& parts, Data data, TQ3AttributeSet Data::*own,
+                            float Data::*ratio)
+{
+    DataReader in = context.reader(parts.root);
+    data.orientation = in.vector3D();
+    data.majorRadius = in.vector3D();
+    data.minorRadius = in.vector3D();
+    data.origin = in.point3D();
+    if (ratio != nullptr)
+        data.*ratio = in.f32();
+    Ranges r;
+    readRanges(in, r, true);
+    data.uMin = r.uMin;
+    data.uMax = r.uMax;
+    data.vMin = r.vMin;
+    data.vMax = r.vMax;
+    data.caps = readCaps(context, parts);
+    Ref<AttributeSet> set = context.attributeSet(parts);
+    data.*own = set.get();
+    return make<T>(data);
+}
+
+template <class T, class Data>
+void writeSolid(WriteContext& context, const Object& object, TQ3ObjectType type, const char* name,
+                TQ3AttributeSet Data::*own, float Data::*ratio)
+{
+    const Data& data = dataOf<T>(object);
+    const AttributeSet* set = setOf(data.*own);
+    maybeContainer(context, WriteContext::hasAttributes(set) || data.caps != kQ3EndCapNone, [&] {
+        Encoder& out = context.out();
+        out.begin(type, name);
+        out.vector3D(data.orientation);
+        out.vector3D(data.majorRadius);
+        out.vector3D(data.minorRadius);
+        out.point3D(data.origin);
+        if (ratio != nullptr)
+            out.f32(data.*ratio);
+        writeRanges(out, Ranges{data.uMin, data.uMax, data.vMin, data.vMax}, true);
+        out.end();
+        writeCaps(out, data.caps);
+        context.attributeSet(set);
+    });
+}
+
+Ref<SharedObject> readCone(ReadContext& c, const Parts& p)
+{
+    return readSolid<Cone>(c, p, TQ3ConeData{}, &TQ3ConeData::coneAttributeSet, static_cast<float TQ3ConeData::*>(nullptr));
+}
+void writeCone(WriteContext& c, const Object& o)
+{
+    writeSolid<Cone>(c, o, kQ3GeometryTypeCone, "Cone", &TQ3ConeData::coneAttributeSet, static_cast<float TQ3ConeData::*>(nullptr));
+}
+Ref<SharedObject> readCylinder(ReadContext& c, const Parts& p)
+{
+    return readSolid<Cylinder>(c, p, TQ3CylinderData{}, &TQ3CylinderData::cylinderAttributeSet, static_cast<float TQ3CylinderData::*>(nullptr));
+}
+void writeCylinder(WriteContext& c, const Object& o)
+{
+    writeSolid<Cylinder>(c, o, kQ3GeometryTypeCylinder, "Cylinder", &TQ3CylinderData::cylinderAttributeSet, static_cast<float TQ3CylinderData::*>(nullptr));
+}
+Ref<SharedObject> readEllipsoid(ReadContext& c, const Parts& p)
+{
+    return readSolid<Ellipsoid>(c, p, TQ3EllipsoidData{}, &TQ3EllipsoidData::ellipsoidAttributeSet,
+                                 static_cast<float TQ3EllipsoidData::*>(nullptr));
+}
+void writeEllipsoid(WriteContext& c, const Object& o)
+{
+    writeSolid<Ellipsoid>(c, o, kQ3GeometryTypeEllipsoid, "Ellipsoid", &TQ3EllipsoidData::ellipsoidAttributeSet,
+                          static_cast<float TQ3EllipsoidData::*>(nullptr));
+}
+Ref<SharedObject> readTorus(ReadContext& c, const Parts& p)
+{
+    return readSolid<Torus>(c, p, TQ3TorusData{}, &TQ3TorusData::torusAttributeSet, &TQ3TorusData::ratio);
+}
+void writeTorus(WriteContext& c, const Object& o)
+{
+    writeSolid<Torus>(c, o, kQ3GeometryTypeTorus, "Torus", &TQ3TorusData::torusAttributeSet, &TQ3TorusData::ratio);
+}
+
+Ref<SharedObject> readDisk(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3DiskData data{};
+    data.majorRadius = in.vector3D();
+    data.minorRadius = in.vector3D();
+    data.origin = in.point3D();
+    Ranges r;
+    readRanges(in, r, true);
+    data.uMin = r.uMin;
+    data.uMax = r.uMax;
+    data.vMin = r.vMin;
+    data.vMax = r.vMax;
+    Ref<AttributeSet> own = context.attributeSet(parts);
+    data.diskAttributeSet = own.get();
+    return make<Disk>(data);
+}
+
+void writeDisk(WriteContext& context, const Object& object)
+{
+    const TQ3DiskData& data = dataOf<Disk>(object);
+    const AttributeSet* own = setOf(data.diskAttributeSet);
+    maybeContainer(context, WriteContext::hasAttributes(own), [&] {
+        Encoder& out = context.out();
+        out.begin(kQ3GeometryTypeDisk, "Disk");
+        out.vector3D(data.majorRadius);
+        out.vector3D(data.minorRadius);
+        out.point3D(data.origin);
+        writeRanges(out, Ranges{data.uMin, data.uMax, data.vMin, data.vMax}, true);
+        out.end();
+        context.attributeSet(own);
+    });
+}
+
+Ref<SharedObject> readEllipse(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3EllipseData data{};
+    data.majorRadius = in.vector3D();
+    data.minorRadius = in.vector3D();
+    data.origin = in.point3D();
+    Ranges r;
+    readRanges(in, r, false);
+    data.uMin = r.uMin;
+    data.uMax = r.uMax;
+    Ref<AttributeSet> own = context.attributeSet(parts);
+    data.ellipseAttributeSet = own.get();
+    return make<Ellipse>(data);
+}
+
+void writeEllipse(WriteContext& context, const Object& object)
+{
+    const TQ3EllipseData& data = dataOf<Ellipse>(object);
+    const AttributeSet* own = setOf(data.ellipseAttributeSet);
+    maybeContainer(context, WriteContext::hasAttributes(own), [&] {
+        Encoder& out = context.out();
+        out.begin(kQ3GeometryTypeEllipse, "Ellipse");
+        out.vector3D(data.majorRadius);
+        out.vector3D(data.minorRadius);
+        out.point3D(data.origin);
+        writeRanges(out, Ranges{data.uMin, data.uMax, 0, 1}, false);
+        out.end();
+        context.attributeSet(own);
+    });
+}
+
+} // namespace
+
+void addGeometryClasses(std::vector<ClassIO>& table)
+{
+    table.insert(table.end(), {
+                                  {kQ3GeometryTypePoint, "Point", readPoint, writePoint},
+                                  {kQ3GeometryTypeLine, "Line", readLine, writeLine},
+                                  {kQ3GeometryTypePolyLine, "PolyLine", readPolyLine, writePolyLine},
+                                  {kQ3GeometryTypeTriangle, "Triangle", readTriangle, writeTriangle},
+                                  {kQ3GeometryTypePolygon, "Polygon", readPolygon, writePolygon},
+                                  {kQ3GeometryTypeTriMesh, "TriMesh", readTriMesh, writeTriMesh},
+                                  {kQ3GeometryTypeNURBCurve, "NURBCurve", readNURBCurve, writeNURBCurve},
+                                  {kQ3GeometryTypeBox, "Box", readBox, writeBox},
+                                  {kQ3GeometryTypeCone, "Cone", readCone, writeCone},
+                                  {kQ3GeometryTypeCylinder, "Cylinder", readCylinder, writeCylinder},
+                                  {kQ3GeometryTypeDisk, "Disk", readDisk, writeDisk},
+                                  {kQ3GeometryTypeEllipse, "Ellipse", readEllipse, writeEllipse},
+                                  {kQ3GeometryTypeEllipsoid, "Ellipsoid", readEllipsoid, writeEllipsoid},
+                                  {kQ3GeometryTypeTorus, "Torus", readTorus, writeTorus},
+                              });
+}
+
+} // namespace q3::io

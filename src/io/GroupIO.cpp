@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+//
+// Groups: `BeginGroup ( DisplayGroup ( ) )`, the group's objects, then
+// `EndGroup ( )` (3D Metafile Reference, "Group objects"). The objects are
+// collected by ReadContext::sequenceItem; here is only the group itself.
+// Also the unknown objects, written back as they were read.
+
+#include "io/ClassIO.h"
+
+#include "core/ErrorManager.h"
+#include "group/Group.h"
+#include "io/Unknown.h"
+
+#include <type_traits>
+
+namespace q3::io {
+namespace {
+
+// A display group's state, when not the default, is a DisplayGroupState
+// subobject whose flags say what differs from the default: Inline, DontDraw,
+// NoBoundingBox, NoBoundingSphere, DontPick.
+constexpr TQ3ObjectType kTypeGroupState = Q3_OBJECT_TYPE('d', 'g', 's', 't');
+const std::vector<std::pair<const char*, std::uint32_t>> kStateFlags = {
+    {"None", 0}, {"Inline", 1}, {"DontDraw", 2}, {"NoBoundingBox", 4}, {"NoBoundingSphere", 8}, {"DontPick", 16}};
+
+constexpr TQ3DisplayGroupState kDefaultState = kQ3DisplayGroupStateMaskIsDrawn |
+                                               kQ3DisplayGroupStateMaskUseBoundingBox |
+                                               kQ3DisplayGroupStateMaskUseBoundingSphere |
+                                               kQ3DisplayGroupStateMaskIsPicked | kQ3DisplayGroupStateMaskIsWritten;
+
+std::uint32_t fileFlags(TQ3DisplayGroupState state)
+{
+    std::uint32_t flags = 0;
+    if (state & kQ3DisplayGroupStateMaskIsInline)
+        flags |= 1;
+    if (!(state & kQ3DisplayGroupStateMaskIsDrawn))
+        flags |= 2;
+    if (!(state & kQ3DisplayGroupStateMaskUseBoundingBox))
+        flags |= 4;
+    if (!(state & kQ3DisplayGroupStateMaskUseBoundingSphere))
+        flags |= 8;
+    if (!(state & kQ3DisplayGroupStateMaskIsPicked))
+        flags |= 16;
+    return flags;
+}
+
+TQ3DisplayGroupState stateOf(std::uint32_t flags)
+{
+    TQ3DisplayGroupState state = kDefaultState;
+    if (flags & 1)
+        state |= kQ3DisplayGroupStateMaskIsInline;
+    if (flags & 2)
+        state &= ~kQ3DisplayGroupStateMaskIsDrawn;
+    if (flags & 4)
+        state &= ~kQ3DisplayGroupStateMaskUseBoundingBox;
+    if (flags & 8)
+        state &= ~kQ3DisplayGroupStateMaskUseBoundingSphere;
+    if (flags & 16)
+        state &= ~kQ3DisplayGroupStateMaskIsPicked;
+    return state;
+}
+
+template <class G>
+Ref<SharedObject> readGroup(ReadContext& context, const Parts& parts)
+{
+    Ref<G> group = makeShared<G>();
+    if constexpr (std::is_base_of_v<DisplayGroup, G>) {
+        if (const Node* node = parts.find(kTypeGroupState); node != nullptr && node->type == kTypeGroupState) {
+            DataReader in = context.reader(*node);
+            group->setState(stateOf(in.flags(kStateFlags)));
+        }
+    }
+    return Ref<SharedObject>(std::move(group));
+}
+
+Ref<SharedObject> refuseState(ReadContext&, const Parts&)
+{
+    fail(kQ3ErrorInvalidMetafileObject, "DisplayGroupState outside a display group");
+}
+
+void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type, const char* name)
+{
+    const auto& group = static_cast<const Group&>(object);
+    Encoder& out = context.out();
+    out.begin(kTypeBeginGroup, "BeginGroup");
+    std::uint32_t flags = 0;
+    if (group.isType(kQ3GroupTypeDisplay))
+        flags = fileFlags(static_cast<const DisplayGroup&>(group).state());
+    maybeContainer(context, flags != 0, [&] {
+        out.begin(type, name);
+        out.end();
+        if (flags != 0) {
+            out.begin(kTypeGroupState, "DisplayGroupState");
+            out.flags(kStateFlags, flags);
+            out.end();
+        }
+    });
+    out.end();
+    out.enterGroup();
+    for (const Group::Node& node : group.nodes())
+        context.object(*node.object);
+    out.leaveGroup();
+    out.begin(kTypeEndGroup, "EndGroup");
+    out.end();
+}
+
+void writePlainGroup(WriteContext& c, const Object& o)
+{
+    writeGroup(c, o, kQ3ShapeTypeGroup, "Group");
+}
+void writeDisplayGroup(WriteContext& c, const Object& o)
+{
+    writeGroup(c, o, kQ3GroupTypeDisplay, "DisplayGroup");
+}
+void writeOrderedGroup(WriteContext& c, const Object& o)
+{
+    writeGroup(c, o, kQ3DisplayGroupTypeOrdered, "OrderedDisplayGroup");
+}
+void writeIOProxyGroup(WriteContext& c, const Object& o)
+{
+    writeGroup(c, o, kQ3DisplayGroupTypeIOProxy, "IOProxyDisplayGroup");
+}
+void writeLightGroup(WriteContext& c, const Object& o)
+{
+    writeGroup(c, o, kQ3GroupTypeLight, "LightGroup");
+}
+void writeInfoGroup(WriteContext& c, const Object& o)
+{
+    writeGroup(c, o, kQ3GroupTypeInfo, "InfoGroup");
+}
+
+Ref<SharedObject> readUnknownTag(ReadContext&, const Parts& parts)
+{
+    fail(kQ3ErrorInvalidMetafileObject, "an object typed as an unknown object (" + typeName(parts.root.type) + ")");
+}
+
+void writeUnknownText(WriteContext& context, const Object& object)
+{
+    const auto& unknown = static_cast<const UnknownText&>(object);
+    Encoder& out = context.out();
+    if (out.encoding() != Encoding::kText) {
+        errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,
+                            "an unknown text object (" + unknown.name() + ") has no binary form; it is left out");
+        return;
+    }
+    out.begin(0, unknown.name().c_str());
+    out.raw(unknown.contents());
+    out.end();
+}
+
+void writeUnknownBinary(WriteContext& context, const Object& object)
+{
+    const auto& unknown = static_cast<const UnknownBinary&>(object);
+    Encoder& out = context.out();
+    if (out.encoding() == Encoding::kText) {
+        errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,
+                            "an unknown binary object (" + typeName(unknown.type()) +
+                                ") has no text form; it is left out");
+        return;
+    }
+    out.begin(unknown.type(), "");
+    out.raw(unknown.contents());
+    out.end();
+}
+
+} // namespace
+
+void addGroupClasses(std::vector<ClassIO>& table)
+{
+    table.insert(table.end(),
+                 {
+                     {kQ3ShapeTypeGroup, "Group", readGroup<Group>, writePlainGroup},
+                     {kQ3GroupTypeDisplay, "DisplayGroup", readGroup<DisplayGroup>, writeDisplayGroup},
+                     {kQ3DisplayGroupTypeOrdered, "OrderedDisplayGroup", readGroup<OrderedDisplayGroup>,
+                      writeOrderedGroup},
+                     {kQ3DisplayGroupTypeIOProxy, "IOProxyDisplayGroup", readGroup<IOProxyDisplayGroup>,
+                      writeIOProxyGroup},
+                     {kQ3GroupTypeLight, "LightGroup", readGroup<LightGroup>, writeLightGroup},
+                     {kQ3GroupTypeInfo, "InfoGroup", readGroup<InfoGroup>, writeInfoGroup},
+                     {kTypeGroupState, "DisplayGroupState", refuseState, [](WriteContext&, const Object&) {}},
+                     {kQ3UnknownTypeText, "UnknownText", readUnknownTag, writeUnknownText},
+                     {kQ3UnknownTypeBinary, "UnknownBinary", readUnknownTag, writeUnknownBinary},
+                 });
+}
+
+} // namespace q3::io

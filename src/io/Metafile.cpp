@@ -1,0 +1,920 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "io/Metafile.h"
+
+#include "core/Error.h"
+#include "core/Limits.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+
+namespace q3::io {
+
+std::string typeName(TQ3ObjectType type)
+{
+    std::string name = "'";
+    for (int shift = 24; shift >= 0; shift -= 8) {
+        const char c = static_cast<char>((static_cast<std::uint32_t>(type) >> shift) & 0xFF);
+        name += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    }
+    return name + "'";
+}
+
+namespace {
+
+bool sameName(const std::string& a, const char* b)
+{
+    const std::size_t n = std::strlen(b);
+    if (a.size() != n)
+        return false;
+    for (std::size_t i = 0; i < n; ++i)
+        if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
+            return false;
+    return true;
+}
+
+[[noreturn]] void invalid(const std::string& why)
+{
+    fail(kQ3ErrorInvalidMetafile, why);
+}
+
+// ---- binary ----------------------------------------------------------------
+
+class BinaryParser {
+public:
+    BinaryParser(Metafile& file) : m_file(file), m_little(file.encoding == Encoding::kBinaryLittle) {}
+
+    std::uint32_t u32At(std::size_t at) const
+    {
+        const unsigned char* p = m_file.bytes.data() + at;
+        return m_little ? (std::uint32_t{p[3]} << 24 | std::uint32_t{p[2]} << 16 | std::uint32_t{p[1]} << 8 | p[0])
+                        : (std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | p[3]);
+    }
+
+    void parseSequence(std::size_t begin, std::size_t end, std::size_t depth, std::vector<Node>& out)
+    {
+        if (depth > limits::kMaxMetafileNesting)
+            invalid("containers nest deeper than " + std::to_string(limits::kMaxMetafileNesting) + " levels");
+        std::size_t at = begin;
+        while (at < end) {
+            if (end - at < 8)
+                invalid("the object at byte " + std::to_string(at) + " is truncated: " +
+                        std::to_string(end - at) + " bytes left, a type and a size need 8");
+            Node node;
+            node.type = static_cast<TQ3ObjectType>(u32At(at));
+            const std::uint32_t size = u32At(at + 4);
+            if (size > end - at - 8)
+                invalid("the size " + std::to_string(size) + " of the " + typeName(node.type) +
+                        " object at byte " + std::to_string(at) + " overruns its container (" +
+                        std::to_string(end - at - 8) + " bytes left)");
+            node.offset = at;
+            node.dataBegin = at + 8;
+            node.dataEnd = at + 8 + size;
+            if (node.type == kTypeContainer || node.type == kTypeBeginGroup)
+                parseSequence(node.dataBegin, node.dataEnd, depth + 1, node.children);
+            out.push_back(std::move(node));
+            at += 8 + std::size_t{size};
+        }
+    }
+
+private:
+    Metafile& m_file;
+    bool m_little;
+};
+
+// ---- text ------------------------------------------------------------------
+
+struct Token {
+    std::string text;
+    std::size_t line;
+    std::size_t begin; // byte offsets in the file
+};
+
+std::vector<Token> tokenize(const std::vector<unsigned char>& bytes)
+{
+    std::vector<Token> tokens;
+    std::size_t line = 1;
+    std::size_t i = 0;
+    const std::size_t n = bytes.size();
+    while (i < n) {
+        const char c = static_cast<char>(bytes[i]);
+        if (c == '\n') {
+            ++line;
+            ++i;
+        } else if (std::isspace(static_cast<unsigned char>(c))) {
+            ++i;
+        } else if (c == '#') {
+            while (i < n && bytes[i] != '\n')
+                ++i;
+        } else if (c == '(' || c == ')' || c == '|') {
+            tokens.push_back({std::string(1, c), line, i});
+            ++i;
+        } else if (c == '"') {
+            std::string text = "\"";
+            const std::size_t begin = i;
+            ++i;
+            while (i < n && bytes[i] != '"') {
+                if (bytes[i] == '\\' && i + 1 < n)
+                    ++i;
+                if (bytes[i] == '\n')
+                    ++line;
+                text += static_cast<char>(bytes[i]);
+                ++i;
+            }
+            if (i >= n)
+                fail(kQ3ErrorInvalidMetafilePrimitive, "line " + std::to_string(line) + ": a string is not closed");
+            ++i;
+            tokens.push_back({text + "\"", line, begin});
+        } else {
+            std::string text;
+            const std::size_t begin = i;
+            while (i < n && !std::isspace(bytes[i]) && bytes[i] != '(' && bytes[i] != ')' && bytes[i] != '|' &&
+                   bytes[i] != '#' && bytes[i] != '"')
+                text += static_cast<char>(bytes[i++]);
+            tokens.push_back({text, line, begin});
+        }
+    }
+    return tokens;
+}
+
+bool isName(const std::string& token)
+{
+    return (!token.empty() && std::isalpha(static_cast<unsigned char>(token[0]))) || token == "3DMetafile";
+}
+
+class TextParser {
+public:
+    TextParser(std::vector<Token> tokens, NameLookup names) : m_tokens(std::move(tokens)), m_names(names) {}
+
+    bool done() const { return m_at >= m_tokens.size(); }
+
+    // Parses `[label:] Name ( ... )` at the current token.
+    Node object(std::size_t depth)
+    {
+        if (depth > limits::kMaxMetafileNesting)
+            invalid("objects nest deeper than " + std::to_string(limits::kMaxMetafileNesting) + " levels");
+        Node node;
+        std::string first = next("an object");
+        if (first.size() > 1 && first.back() == ':') {
+            node.label = first.substr(0, first.size() - 1);
+            first = next("an object after the label " + node.label);
+        }
+        if (!isName(first))
+            fail(kQ3ErrorInvalidMetafilePrimitive,
+                 "line " + std::to_string(line()) + ": expected an object name, found '" + first + "'");
+        node.name = first;
+        node.type = lookup(first);
+        node.offset = line();
+        if (next("'('") != "(")
+            fail(kQ3ErrorInvalidMetafilePrimitive,
+                 "line " + std::to_string(line()) + ": expected '(' after " + first);
+        node.dataBegin = m_tokens[m_at - 1].begin + 1;
+        for (;;) {
+            if (done())
+                invalid("the file ends inside " + first + " (a ')' is missing)");
+            const std::string& token = m_tokens[m_at].text;
+            if (token == ")") {
+                node.dataEnd = m_tokens[m_at].begin;
+                ++m_at;
+                break;
+            }
+            const bool labelled = token.size() > 1 && token.back() == ':';
+            const bool named = isName(token) && m_at + 1 < m_tokens.size() && m_tokens[m_at + 1].text == "(";
+            if (labelled || named)
+                node.children.push_back(object(depth + 1));
+            else {
+                if (token == "(")
+                    fail(kQ3ErrorInvalidMetafilePrimitive,
+                         "line " + std::to_string(line()) + ": '(' without an object name");
+                node.tokens.push_back(token);
+                ++m_at;
+            }
+        }
+        return node;
+    }
+
+private:
+    TQ3ObjectType lookup(const std::string& name) const
+    {
+        if (sameName(name, "Container"))
+            return kTypeContainer;
+        if (sameName(name, "BeginGroup"))
+            return kTypeBeginGroup;
+        if (sameName(name, "EndGroup"))
+            return kTypeEndGroup;
+        if (sameName(name, "Reference"))
+            return kTypeReference;
+        if (sameName(name, "TableOfContents"))
+            return kTypeTableOfContents;
+        if (sameName(name, "3DMetafile"))
+            return kTypeHeader;
+        return m_names(name);
+    }
+    std::size_t line() const { return m_tokens[std::min(m_at, m_tokens.size() - 1)].line; }
+    std::string next(const std::string& what)
+    {
+        if (done())
+            invalid("the file ends where " + what + " should be");
+        return m_tokens[m_at++].text;
+    }
+
+    std::vector<Token> m_tokens;
+    NameLookup m_names;
+    std::size_t m_at = 0;
+};
+
+std::uint32_t parseUnsigned(const std::string& token, std::uint64_t max)
+{
+    if (token.empty() || token[0] == '-' || token[0] == '+')
+        fail(kQ3ErrorInvalidMetafilePrimitive, "'" + token + "' is not an unsigned integer");
+    errno = 0;
+    char* end = nullptr;
+    const unsigned long long value = std::strtoull(token.c_str(), &end, 0);
+    if (errno != 0 || end == token.c_str() || *end != '\0' || value > max)
+        fail(kQ3ErrorInvalidMetafilePrimitive, "'" + token + "' is not an unsigned integer in range");
+    return static_cast<std::uint32_t>(value);
+}
+
+const Node* findLabel(const std::vector<Node>& nodes, const std::string& label)
+{
+    for (const Node& node : nodes) {
+        if (node.label == label)
+            return &node;
+        if (const Node* inside = findLabel(node.children, label))
+            return inside;
+    }
+    return nullptr;
+}
+
+const Node* findOffset(const std::vector<Node>& nodes, std::size_t offset)
+{
+    for (const Node& node : nodes) {
+        if (node.offset == offset)
+            return &node;
+        if (offset > node.offset && offset < node.dataEnd)
+            if (const Node* inside = findOffset(node.children, offset))
+                return inside;
+    }
+    return nullptr;
+}
+
+void parseBinary(Metafile& file)
+{
+    BinaryParser parser(file);
+    const std::size_t size = file.bytes.size();
+    if (size < 24)
+        invalid("the file is too short for a 3DMF header (" + std::to_string(size) + " bytes)");
+    if (parser.u32At(4) != 16)
+        invalid("the 3DMF header's size is " + std::to_string(parser.u32At(4)) + ", not 16");
+    const std::uint32_t version = parser.u32At(8);
+    file.major = file.encoding == Encoding::kBinaryLittle ? version & 0xFFFF : version >> 16;
+    file.minor = file.encoding == Encoding::kBinaryLittle ? version >> 16 : version & 0xFFFF;
+    file.mode = parser.u32At(12);
+    const std::uint64_t tocOffset = file.encoding == Encoding::kBinaryLittle
+                                        ? (std::uint64_t{parser.u32At(20)} << 32 | parser.u32At(16))
+                                        : (std::uint64_t{parser.u32At(16)} << 32 | parser.u32At(20));
+    std::vector<Node> all;
+    parser.parseSequence(24, size, 0, all);
+    const Node* toc = nullptr;
+    for (Node& node : all)
+        if (node.type != kTypeTableOfContents)
+            file.objects.push_back(std::move(node));
+        else if (node.offset == tocOffset)
+            toc = &node;
+    if (tocOffset != 0 && toc == nullptr)
+        invalid("the header's table of contents offset " + std::to_string(tocOffset) + " is no table of contents");
+    if (toc == nullptr)
+        return;
+    DataReader reader(file, *toc);
+    reader.u64(); // the next table of contents: Q3 reads one
+    reader.u32(); // reference seed
+    reader.i32(); // type seed
+    const std::uint32_t entryType = reader.u32();
+    reader.u32(); // entry size
+    if (entryType > 1)
+        fail(kQ3ErrorInvalidMetafileObject, "the table of contents' entry type is " + std::to_string(entryType));
+    const std::uint32_t entries = reader.count(entryType == 1 ? 16 : 12, entryType == 1 ? 3 : 2, "table of contents entries");
+    for (std::uint32_t i = 0; i < entries; ++i) {
+        const std::uint32_t id = reader.u32();
+        const std::uint64_t location = reader.u64();
+        if (entryType == 1)
+            reader.u32();
+        const Node* target = findOffset(file.objects, static_cast<std::size_t>(location));
+        if (target == nullptr)
+            fail(kQ3ErrorInvalidMetafileLabel, "table of contents entry " + std::to_string(id) +
+                                                   " points at byte " + std::to_string(location) +
+                                                   ", where no object starts");
+        file.references[id] = target;
+    }
+}
+
+void parseText(Metafile& file, NameLookup names)
+{
+    TextParser parser(tokenize(file.bytes), names);
+    if (parser.done())
+        invalid("the file is empty");
+    Node header = parser.object(0);
+    if (header.type != kTypeHeader)
+        invalid("a text 3DMF file starts with 3DMetafile, not " + header.name);
+    if (header.tokens.size() < 3)
+        invalid("the 3DMetafile header needs a version and a mode");
+    file.major = parseUnsigned(header.tokens[0], 0xFFFF);
+    file.minor = parseUnsigned(header.tokens[1], 0xFFFF);
+    const std::string& mode = header.tokens[2];
+    if (sameName(mode, "Normal"))
+        file.mode = kQ3FileModeNormal;
+    else if (sameName(mode, "Stream"))
+        file.mode = kQ3FileModeStream;
+    else if (sameName(mode, "Database"))
+        file.mode = kQ3FileModeDatabase;
+    else
+        fail(kQ3ErrorInvalidMetafilePrimitive, "the file mode '" + mode + "' is none of Normal, Stream, Database");
+    std::vector<Node> tocs;
+    while (!parser.done()) {
+        Node node = parser.object(0);
+        if (node.type == kTypeTableOfContents)
+            tocs.push_back(std::move(node));
+        else
+            file.objects.push_back(std::move(node));
+    }
+    for (const Node& toc : tocs) {
+        DataReader reader(file, toc);
+        reader.u32(); // the next table of contents (a label reference in text)
+        reader.u32(); // reference seed
+        reader.i32(); // type seed
+        const std::uint32_t entryType = reader.u32();
+        reader.u32(); // entry size
+        const std::uint32_t entries = reader.count(0, entryType == 1 ? 3 : 2, "table of contents entries");
+        for (std::uint32_t i = 0; i < entries; ++i) {
+            const std::uint32_t id = reader.u32();
+            std::string label = reader.word();
+            if (label.size() < 2 || label.back() != '>')
+                fail(kQ3ErrorInvalidMetafileLabel, "table of contents entry " + std::to_string(id) + " names '" +
+                                                       label + "', not a label ('name>')");
+            label.pop_back();
+            if (entryType == 1)
+                reader.u32();
+            const Node* target = findLabel(file.objects, label);
+            if (target == nullptr)
+                fail(kQ3ErrorInvalidMetafileLabel, "table of contents entry " + std::to_string(id) +
+                                                       " names the label " + label + ", which no object has");
+            file.references[id] = target;
+        }
+    }
+}
+
+} // namespace
+
+std::unique_ptr<Metafile> parse(std::vector<unsigned char> bytes, NameLookup names)
+{
+    if (bytes.size() > limits::kMaxStorageBytes)
+        invalid("the file is larger than " + std::to_string(limits::kMaxStorageBytes) + " bytes");
+    auto file = std::make_unique<Metafile>();
+    file->bytes = std::move(bytes);
+    const auto& b = file->bytes;
+    if (b.size() >= 4 && std::memcmp(b.data(), "3DMF", 4) == 0)
+        file->encoding = Encoding::kBinaryBig;
+    else if (b.size() >= 4 && std::memcmp(b.data(), "FMD3", 4) == 0)
+        file->encoding = Encoding::kBinaryLittle;
+    else
+        file->encoding = Encoding::kText;
+    if (file->encoding == Encoding::kText) {
+        std::size_t i = 0;
+        while (i < b.size() && (std::isspace(b[i]) || b[i] == '#')) {
+            if (b[i] == '#')
+                while (i < b.size() && b[i] != '\n')
+                    ++i;
+            else
+                ++i;
+        }
+        static const char kMagic[] = "3DMetafile";
+        if (b.size() - i < sizeof kMagic - 1 || std::memcmp(b.data() + i, kMagic, sizeof kMagic - 1) != 0)
+            invalid("the file starts with neither the binary '3DMF' tag nor the text 3DMetafile header");
+        parseText(*file, names);
+    } else {
+        parseBinary(*file);
+    }
+    if (file->major != 1)
+        invalid("the file is version " + std::to_string(file->major) + "." + std::to_string(file->minor) +
+                "; Q3 reads version 1 files");
+    if (file->mode > kQ3FileModeDatabase)
+        invalid("the file's mode " + std::to_string(file->mode) + " is none of Normal, Stream, Database");
+    return file;
+}
+
+// ---- DataReader --------------------------------------------------------------
+
+DataReader::DataReader(const Metafile& file, const Node& node)
+    : m_file(file), m_node(node), m_position(file.encoding == Encoding::kText ? 0 : node.dataBegin)
+{
+}
+
+bool DataReader::atEnd() const
+{
+    return m_file.encoding == Encoding::kText ? m_position >= m_node.tokens.size() : m_position >= m_node.dataEnd;
+}
+
+const unsigned char* DataReader::take(std::size_t n)
+{
+    if (m_node.dataEnd - m_position < n)
+        fail(kQ3ErrorInvalidMetafilePrimitive,
+             "the " + typeName(m_node.type) + " object's data end before all its fields were read");
+    const unsigned char* p = m_file.bytes.data() + m_position;
+    m_position += n;
+    return p;
+}
+
+const std::string& DataReader::token()
+{
+    if (m_position >= m_node.tokens.size())
+        fail(kQ3ErrorInvalidMetafilePrimitive, m_node.name + " ( ... ) ends before all its fields were read");
+    return m_node.tokens[m_position++];
+}
+
+std::uint32_t DataReader::u32()
+{
+    if (m_file.encoding == Encoding::kText) {
+        const std::string& t = token();
+        if (!t.empty() && t.back() == '>')
+            return 0; // a label reference (the header's and toc's next-toc field)
+        return parseUnsigned(t, 0xFFFFFFFFull);
+    }
+    const unsigned char* p = take(4);
+    return m_file.encoding == Encoding::kBinaryLittle
+               ? (std::uint32_t{p[3]} << 24 | std::uint32_t{p[2]} << 16 | std::uint32_t{p[1]} << 8 | p[0])
+               : (std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | p[3]);
+}
+
+std::int32_t DataReader::i32()
+{
+    if (m_file.encoding == Encoding::kText) {
+        const std::string& t = token();
+        errno = 0;
+        char* end = nullptr;
+        const long long value = std::strtoll(t.c_str(), &end, 0);
+        if (errno != 0 || end == t.c_str() || *end != '\0' || value < INT32_MIN || value > INT32_MAX)
+            fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t + "' is not a 32-bit integer");
+        return static_cast<std::int32_t>(value);
+    }
+    return static_cast<std::int32_t>(u32());
+}
+
+std::uint16_t DataReader::u16()
+{
+    if (m_file.encoding == Encoding::kText)
+        return static_cast<std::uint16_t>(parseUnsigned(token(), 0xFFFF));
+    const unsigned char* p = take(2);
+    return m_file.encoding == Encoding::kBinaryLittle ? static_cast<std::uint16_t>(p[1] << 8 | p[0])
+                                                      : static_cast<std::uint16_t>(p[0] << 8 | p[1]);
+}
+
+std::uint8_t DataReader::u8()
+{
+    if (m_file.encoding == Encoding::kText)
+        return static_cast<std::uint8_t>(parseUnsigned(token(), 0xFF));
+    return *take(1);
+}
+
+std::uint64_t DataReader::u64()
+{
+    if (m_file.encoding == Encoding::kText) {
+        const std::string& t = token();
+        if (!t.empty() && t.back() == '>')
+            return 0;
+        return parseUnsigned(t, 0xFFFFFFFFull);
+    }
+    const std::uint64_t first = u32();
+    const std::uint64_t second = u32();
+    return m_file.encoding == Encoding::kBinaryLittle ? (second << 32 | first) : (first << 32 | second);
+}
+
+float DataReader::f32()
+{
+    if (m_file.encoding == Encoding::kText) {
+        const std::string& t = token();
+        errno = 0;
+        char* end = nullptr;
+        const float value = std::strtof(t.c_str(), &end);
+        if (end == t.c_str() || *end != '\0' || !std::isfinite(value))
+            fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t + "' is not a finite number");
+        return value;
+    }
+    const std::uint32_t bits = u32();
+    float value;
+    std::memcpy(&value, &bits, sizeof value);
+    if (!std::isfinite(value))
+        fail(kQ3ErrorInvalidMetafilePrimitive,
+             "the " + typeName(m_node.type) + " object holds a number that is not finite");
+    return value;
+}
+
+TQ3Point3D DataReader::point3D()
+{
+    TQ3Point3D p;
+    p.x = f32();
+    p.y = f32();
+    p.z = f32();
+    return p;
+}
+
+TQ3Vector3D DataReader::vector3D()
+{
+    TQ3Vector3D v;
+    v.x = f32();
+    v.y = f32();
+    v.z = f32();
+    return v;
+}
+
+TQ3ColorRGB DataReader::color()
+{
+    TQ3ColorRGB c;
+    c.r = f32();
+    c.g = f32();
+    c.b = f32();
+    return c;
+}
+
+TQ3Param2D DataReader::param2D()
+{
+    TQ3Param2D p;
+    p.u = f32();
+    p.v = f32();
+    return p;
+}
+
+TQ3RationalPoint4D DataReader::point4D()
+{
+    TQ3RationalPoint4D p;
+    p.x = f32();
+    p.y = f32();
+    p.z = f32();
+    p.w = f32();
+    return p;
+}
+
+std::uint32_t DataReader::choice(const std::vector<std::pair<const char*, std::uint32_t>>& names)
+{
+    if (m_file.encoding != Encoding::kText) {
+        const std::uint32_t value = u32();
+        for (const auto& [name, v] : names)
+            if (v == value)
+                return value;
+        fail(kQ3ErrorInvalidMetafilePrimitive,
+             "the " + typeName(m_node.type) + " object holds " + std::to_string(value) + ", which is none of its values");
+    }
+    const std::string& t = token();
+    for (const auto& [name, v] : names)
+        if (sameName(t, name))
+            return v;
+    fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t + "' is none of " + m_node.name + "'s values");
+}
+
+std::uint32_t DataReader::flags(const std::vector<std::pair<const char*, std::uint32_t>>& names)
+{
+    if (m_file.encoding != Encoding::kText)
+        return u32();
+    std::uint32_t value = 0;
+    for (;;) {
+        const std::string& t = token();
+        bool found = false;
+        for (const auto& [name, v] : names)
+            if (sameName(t, name)) {
+                value |= v;
+                found = true;
+            }
+        if (!found)
+            fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t + "' is none of " + m_node.name + "'s flags");
+        if (atEnd() || m_node.tokens[m_position] != "|")
+            return value;
+        ++m_position;
+    }
+}
+
+std::uint32_t DataReader::count(std::size_t bytesPerItem, std::size_t tokensPerItem, const char* what)
+{
+    const std::uint32_t n = u32();
+    requireRoom(n, bytesPerItem, tokensPerItem, what);
+    return n;
+}
+
+void DataReader::requireRoom(std::uint64_t n, std::size_t bytesPerItem, std::size_t tokensPerItem,
+                             const char* what) const
+{
+    const std::size_t left = m_file.encoding == Encoding::kText ? m_node.tokens.size() - m_position
+                                                                 : m_node.dataEnd - m_position;
+    const std::size_t per = m_file.encoding == Encoding::kText ? tokensPerItem : bytesPerItem;
+    if (n > limits::kMaxArrayCount || (per > 0 && n > left / per))
+        fail(kQ3ErrorInvalidMetafileObject, "the " + typeName(m_node.type) + " object claims " + std::to_string(n) +
+                                                " " + what + ", more than its data can hold");
+}
+
+std::string DataReader::word()
+{
+    if (m_file.encoding != Encoding::kText)
+        fail(kQ3ErrorInvalidMetafilePrimitive, "a word in a binary object");
+    return token();
+}
+
+std::string DataReader::rest()
+{
+    std::string out;
+    if (m_file.encoding == Encoding::kText) {
+        for (; m_position < m_node.tokens.size(); ++m_position) {
+            if (!out.empty())
+                out += ' ';
+            out += m_node.tokens[m_position];
+        }
+    } else {
+        out.assign(reinterpret_cast<const char*>(m_file.bytes.data() + m_position), m_node.dataEnd - m_position);
+        m_position = m_node.dataEnd;
+    }
+    return out;
+}
+
+// ---- Encoder -----------------------------------------------------------------
+
+Encoder::Encoder(Encoding encoding) : m_encoding(encoding) {}
+
+void Encoder::bytes(const void* data, std::size_t n, bool swap)
+{
+    const auto* p = static_cast<const unsigned char*>(data);
+    // `data` is in the host's order (little-endian on every platform Q3
+    // builds for, checked in finish()); big-endian files reverse it.
+    if (swap && m_encoding == Encoding::kBinaryBig)
+        for (std::size_t i = n; i-- > 0;)
+            m_body.push_back(p[i]);
+    else
+        m_body.insert(m_body.end(), p, p + n);
+}
+
+void Encoder::word(const std::string& text)
+{
+    m_text += ' ';
+    m_text += text;
+}
+
+void Encoder::begin(TQ3ObjectType type, const char* name)
+{
+    if (m_encoding == Encoding::kText) {
+        if (!m_open.empty())
+            m_open.back().hadChild = true;
+        if (!m_text.empty() && m_text.back() != '\n')
+            m_text += '\n';
+        m_open.push_back({m_text.size(), false});
+        m_text.append(2 * (m_open.size() - 1 + m_groupDepth), ' ');
+        m_text += name;
+        m_text += " (";
+        return;
+    }
+    m_open.push_back({m_body.size(), false});
+    const std::uint32_t t = static_cast<std::uint32_t>(type);
+    bytes(&t, 4, true);
+    const std::uint32_t placeholder = 0;
+    bytes(&placeholder, 4, true);
+}
+
+void Encoder::end()
+{
+    const Open open = m_open.back();
+    m_open.pop_back();
+    if (m_encoding == Encoding::kText) {
+        if (open.hadChild) {
+            m_text += '\n';
+            m_text.append(2 * (m_open.size() + m_groupDepth), ' ');
+            m_text += ")";
+        } else {
+            m_text += " )";
+        }
+        if (m_open.empty())
+            m_text += '\n';
+        return;
+    }
+    const std::uint32_t size = static_cast<std::uint32_t>(m_body.size() - open.start - 8);
+    unsigned char* p = m_body.data() + open.start + 4;
+    for (int i = 0; i < 4; ++i) {
+        const int shift = m_encoding == Encoding::kBinaryBig ? 24 - 8 * i : 8 * i;
+        p[i] = static_cast<unsigned char>(size >> shift);
+    }
+}
+
+void Encoder::u32(std::uint32_t value)
+{
+    if (m_encoding == Encoding::kText)
+        word(std::to_string(value));
+    else
+        bytes(&value, 4, true);
+}
+
+void Encoder::i32(std::int32_t value)
+{
+    if (m_encoding == Encoding::kText)
+        word(std::to_string(value));
+    else
+        bytes(&value, 4, true);
+}
+
+void Encoder::u16(std::uint16_t value)
+{
+    if (m_encoding == Encoding::kText)
+        word(std::to_string(value));
+    else
+        bytes(&value, 2, true);
+}
+
+void Encoder::u8(std::uint8_t value)
+{
+    if (m_encoding == Encoding::kText)
+        word(std::to_string(value));
+    else
+        bytes(&value, 1, false);
+}
+
+void Encoder::u64(std::uint64_t value)
+{
+    if (m_encoding == Encoding::kText)
+        word(std::to_string(value));
+    else
+        bytes(&value, 8, true);
+}
+
+void Encoder::f32(float value)
+{
+    if (m_encoding == Encoding::kText) {
+        // The shortest form that reads back as the same float.
+        char text[32];
+        for (int digits = 6; digits <= 9; ++digits) {
+            std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(value));
+            if (std::strtof(text, nullptr) == value)
+                break;
+        }
+        word(text);
+    } else {
+        bytes(&value, 4, true);
+    }
+}
+
+void Encoder::point3D(const TQ3Point3D& p)
+{
+    f32(p.x);
+    f32(p.y);
+    f32(p.z);
+}
+
+void Encoder::vector3D(const TQ3Vector3D& v)
+{
+    f32(v.x);
+    f32(v.y);
+    f32(v.z);
+}
+
+void Encoder::color(const TQ3ColorRGB& c)
+{
+    f32(c.r);
+    f32(c.g);
+    f32(c.b);
+}
+
+void Encoder::param2D(const TQ3Param2D& p)
+{
+    f32(p.u);
+    f32(p.v);
+}
+
+void Encoder::point4D(const TQ3RationalPoint4D& p)
+{
+    f32(p.x);
+    f32(p.y);
+    f32(p.z);
+    f32(p.w);
+}
+
+void Encoder::choice(const std::vector<std::pair<const char*, std::uint32_t>>& names, std::uint32_t value)
+{
+    if (m_encoding != Encoding::kText) {
+        u32(value);
+        return;
+    }
+    for (const auto& [name, v] : names)
+        if (v == value) {
+            word(name);
+            return;
+        }
+    u32(value);
+}
+
+void Encoder::flags(const std::vector<std::pair<const char*, std::uint32_t>>& names, std::uint32_t value)
+{
+    if (m_encoding != Encoding::kText) {
+        u32(value);
+        return;
+    }
+    std::string text;
+    std::uint32_t left = value;
+    for (const auto& [name, v] : names) {
+        if (v != 0 && (left & v) == v) {
+            text += (text.empty() ? "" : " | ") + std::string(name);
+            left &= ~v;
+        }
+    }
+    if (text.empty())
+        for (const auto& [name, v] : names)
+            if (v == 0)
+                text = name;
+    word(text);
+}
+
+void Encoder::raw(const std::string& data)
+{
+    if (m_encoding == Encoding::kText) {
+        if (!data.empty())
+            word(data);
+    } else {
+        m_body.insert(m_body.end(), data.begin(), data.end());
+    }
+}
+
+std::size_t Encoder::position() const
+{
+    if (m_encoding == Encoding::kText)
+        return m_text.size() + (!m_text.empty() && m_text.back() != '\n' ? 1 : 0);
+    return m_body.size();
+}
+
+void Encoder::label(std::size_t position, const std::string& name)
+{
+    if (m_encoding == Encoding::kText)
+        m_labels.emplace_back(position, name);
+}
+
+std::vector<unsigned char> Encoder::finish(TQ3FileMode mode,
+                                           const std::vector<std::pair<std::uint32_t, std::size_t>>& toc)
+{
+    static_assert(sizeof(float) == 4, "3DMF floats are IEEE single precision");
+    const std::uint16_t probe = 1;
+    unsigned char first;
+    std::memcpy(&first, &probe, 1);
+    if (first != 1)
+        fail(kQ3ErrorInternalError, "Q3 writes binary 3DMF on little-endian hosts only");
+
+    static const char* kModes[] = {"Normal", "Stream", "Database"};
+    if (m_encoding == Encoding::kText) {
+        std::sort(m_labels.begin(), m_labels.end());
+        std::string text = m_text;
+        for (auto it = m_labels.rbegin(); it != m_labels.rend(); ++it) {
+            // Labels go after the object's indentation.
+            std::size_t at = it->first;
+            while (at < text.size() && text[at] == ' ')
+                ++at;
+            text.insert(at, it->second + ": ");
+        }
+        std::string out = "3DMetafile ( 1 6 " + std::string(kModes[mode & 3]) + (toc.empty() ? "" : " toc>") + " )\n";
+        out += text;
+        if (!toc.empty()) {
+            out += "toc: TableOfContents ( 0 " + std::to_string(toc.size() + 1) + " 0 0 0 " +
+                   std::to_string(toc.size());
+            // Text entries name the object's label; its position is the label's.
+            for (const auto& entry : toc)
+                out += "\n  " + std::to_string(entry.first) + " ref" + std::to_string(entry.first) + ">";
+            out += "\n)\n";
+        }
+        return std::vector<unsigned char>(out.begin(), out.end());
+    }
+
+    Encoder head(m_encoding);
+    const std::uint32_t tag = static_cast<std::uint32_t>(kTypeHeader);
+    head.bytes(&tag, 4, true);
+    head.u32(16);
+    const std::uint32_t version = m_encoding == Encoding::kBinaryBig ? (1u << 16 | 6u) : (6u << 16 | 1u);
+    head.u32(version);
+    head.u32(mode & 3);
+    const std::uint64_t tocOffset = toc.empty() ? 0 : 24 + m_body.size();
+    head.u64(tocOffset);
+    std::vector<unsigned char> out = std::move(head.m_body);
+    out.insert(out.end(), m_body.begin(), m_body.end());
+    if (!toc.empty()) {
+        Encoder table(m_encoding);
+        table.begin(kTypeTableOfContents, "TableOfContents");
+        table.u64(0);
+        table.u32(static_cast<std::uint32_t>(toc.size() + 1));
+        table.i32(0);
+        table.u32(0);
+        table.u32(12);
+        table.u32(static_cast<std::uint32_t>(toc.size()));
+        for (const auto& [id, where] : toc) {
+            table.u32(id);
+            table.u64(24 + where);
+        }
+        table.end();
+        out.insert(out.end(), table.m_body.begin(), table.m_body.end());
+    }
+    return out;
+}
+
+} // namespace q3::io

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3D.h"
+#include "core/Object.h"
+
+#include <string>
+
+namespace q3 {
+
+extern const ClassInfo kUnknownClass;
+extern const ClassInfo kUnknownTextClass;
+extern const ClassInfo kUnknownBinaryClass;
+
+/// An object of a type Q3 does not know, read from a file and kept so that
+/// it is written back unchanged (QD3DIO.h). Drawing it does nothing.
+/// Invariant: its contents never change after it is read.
+class UnknownObject : public SharedObject {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3ShapeTypeUnknown;
+
+    bool isDrawable() const override { return true; }
+    void accept(ShapeVisitor&) const override {}
+
+    bool dirty() const { return m_dirty; }
+    void setDirty(bool dirty) { m_dirty = dirty; }
+
+private:
+    bool m_dirty = false;
+};
+
+/// From a text file: the object's name and the text between its parentheses.
+class UnknownText final : public UnknownObject {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3UnknownTypeText;
+
+    UnknownText(std::string name, std::string contents) : m_name(std::move(name)), m_contents(std::move(contents)) {}
+
+    const ClassInfo& classInfo() const override { return kUnknownTextClass; }
+    Object* duplicate() const override;
+
+    const std::string& name() const { return m_name; }
+    const std::string& contents() const { return m_contents; }
+
+private:
+    std::string m_name;
+    std::string m_contents;
+};
+
+/// From a binary file: the type, the data as they were, and the file's byte
+/// order.
+class UnknownBinary final : public UnknownObject {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3UnknownTypeBinary;
+
+    UnknownBinary(TQ3ObjectType type, std::string contents, TQ3Endian order)
+        : m_type(type), m_contents(std::move(contents)), m_order(order)
+    {
+    }
+
+    const ClassInfo& classInfo() const override { return kUnknownBinaryClass; }
+    Object* duplicate() const override;
+
+    TQ3ObjectType type() const { return m_type; }
+    const std::string& contents() const { return m_contents; }
+    TQ3Endian byteOrder() const { return m_order; }
+
+private:
+    TQ3ObjectType m_type;
+    std::string m_contents;
+    TQ3Endian m_order;
+};
+
+} // namespace q3

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+//
+// libFuzzer target over the 3DMF reader: the input is a file. It is opened,
+// every object read (a failed read must post an error and the reading goes
+// on), each object read written back in text and binary and read again, and
+// everything disposed. Aborts when a call breaks the error contract (a NULL
+// object or kQ3Failure with no error posted) or when objects are left alive
+// at the end: the sanitizers catch the rest (overflows, leaks, undefined
+// behaviour). Seeds: tests/fuzz/corpus-3dmf (the files of tests/data).
+
+#include "QD3D.h"
+#include "QD3DErrors.h"
+#include "QD3DIO.h"
+#include "QD3DStorage.h"
+#include "QD3DView.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+namespace {
+
+void require(bool condition, const char* what)
+{
+    if (!condition) {
+        std::fprintf(stderr, "3DMF fuzzer: %s\n", what);
+        std::abort();
+    }
+}
+
+// Every object of the bytes; reading stops after kMaxObjects.
+std::vector<TQ3Object> readAll(const unsigned char* data, std::size_t size)
+{
+    constexpr std::size_t kMaxObjects = 256;
+    std::vector<TQ3Object> objects;
+    TQ3StorageObject storage = Q3MemoryStorage_New(data, static_cast<unsigned long>(size));
+    TQ3FileObject file = Q3File_New();
+    require(storage != nullptr && file != nullptr, "cannot make a storage and a file");
+    require(Q3File_SetStorage(file, storage) == kQ3Success, "SetStorage failed");
+    TQ3FileMode mode = 0;
+    if (Q3File_OpenRead(file, &mode) == kQ3Success) {
+        // Half the inputs read groups one object at a time.
+        if (size % 2 == 1)
+            require(Q3File_SetReadInGroup(file, kQ3FileReadObjectsInGroup) == kQ3Success, "SetReadInGroup failed");
+        std::size_t attempts = 0;
+        while (Q3File_IsEndOfFile(file) == kQ3False && attempts++ < kMaxObjects) {
+            Q3File_GetNextObjectType(file);
+            TQ3Object object = Q3File_ReadObject(file);
+            if (object == nullptr)
+                require(Q3Error_Get(nullptr) != kQ3ErrorNone, "ReadObject returned NULL and posted no error");
+            else
+                objects.push_back(object);
+        }
+        require(Q3File_Close(file) == kQ3Success, "Close after reading failed");
+    } else {
+        require(Q3Error_Get(nullptr) != kQ3ErrorNone, "OpenRead failed and posted no error");
+    }
+    Q3Object_Dispose(file);
+    Q3Object_Dispose(storage);
+    return objects;
+}
+
+std::vector<unsigned char> writeAll(const std::vector<TQ3Object>& objects, TQ3FileMode mode)
+{
+    std::vector<unsigned char> bytes;
+    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
+    TQ3FileObject file = Q3File_New();
+    TQ3ViewObject view = Q3View_New();
+    Q3File_SetStorage(file, storage);
+    require(Q3File_OpenWrite(file, mode) == kQ3Success, "OpenWrite failed");
+    require(Q3View_StartWriting(view, file) == kQ3Success, "StartWriting failed");
+    for (TQ3Object object : objects)
+        require(Q3Object_Submit(object, view) == kQ3Success, "a read object cannot be written");
+    require(Q3View_EndWriting(view) == kQ3ViewStatusDone, "EndWriting failed");
+    require(Q3File_Close(file) == kQ3Success, "Close after writing failed");
+    unsigned char* buffer = nullptr;
+    unsigned long size = 0;
+    Q3MemoryStorage_GetBuffer(storage, &buffer, &size, nullptr);
+    if (buffer != nullptr)
+        bytes.assign(buffer, buffer + size);
+    Q3Object_Dispose(view);
+    Q3Object_Dispose(file);
+    Q3Object_Dispose(storage);
+    return bytes;
+}
+
+void disposeAll(const std::vector<TQ3Object>& objects)
+{
+    for (TQ3Object object : objects)
+        Q3Object_Dispose(object);
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    static const bool initialized = Q3Initialize() == kQ3Success;
+    require(initialized, "Q3Initialize failed");
+    const unsigned long liveAtStart = Q3Memory_CountLiveObjects();
+    {
+        const std::vector<TQ3Object> objects = readAll(data, size);
+        if (!objects.empty()) {
+            for (TQ3FileMode mode : {TQ3FileMode(kQ3FileModeNormal), TQ3FileMode(kQ3FileModeText)}) {
+                const std::vector<unsigned char> again = writeAll(objects, mode);
+                // What Q3 wrote it must read back: every object, no failure.
+                const std::vector<TQ3Object> back = readAll(again.data(), again.size());
+                disposeAll(back);
+            }
+        }
+        disposeAll(objects);
+    }
+    require(Q3Memory_CountLiveObjects() == liveAtStart, "objects left alive after everything was disposed");
+    return 0;
+}

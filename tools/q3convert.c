@@ -1,0 +1,88 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+
+/* q3convert: rewrites a 3DMF file, text or binary.
+ *
+ *   q3convert in.3dmf out.3dmf [--text | --binary] [--normal | --stream | --database]
+ *
+ * Every object is read and written back (unknown objects unchanged). The
+ * default is a binary Normal file, as Mac QuickDraw 3D wrote them. Exit
+ * status: 0 done, 1 bad arguments, 2 the input cannot be read, 3 the output
+ * cannot be written. */
+
+#include "q3load.h"
+
+#include "QD3DView.h"
+
+#include <string.h>
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: q3convert in.3dmf out.3dmf [--text | --binary] [--normal | --stream | --database]\n");
+    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL;
+    TQ3FileMode encoding = 0, mode = kQ3FileModeNormal;
+    TQ3Object *objects = NULL;
+    long count, i;
+    int status = 0;
+    int arg;
+    for (arg = 1; arg < argc; ++arg) {
+        if (strcmp(argv[arg], "--text") == 0)
+            encoding = kQ3FileModeText;
+        else if (strcmp(argv[arg], "--binary") == 0)
+            encoding = 0;
+        else if (strcmp(argv[arg], "--normal") == 0)
+            mode = kQ3FileModeNormal;
+        else if (strcmp(argv[arg], "--stream") == 0)
+            mode = kQ3FileModeStream;
+        else if (strcmp(argv[arg], "--database") == 0)
+            mode = kQ3FileModeDatabase;
+        else if (argv[arg][0] == '-')
+            return usage();
+        else if (in == NULL)
+            in = argv[arg];
+        else if (out == NULL)
+            out = argv[arg];
+        else
+            return usage();
+    }
+    if (in == NULL || out == NULL)
+        return usage();
+    if (Q3Initialize() != kQ3Success)
+        return 3;
+    count = q3load_read(in, &objects);
+    if (count < 0) {
+        Q3Exit();
+        return 2;
+    }
+    {
+        TQ3StorageObject storage = Q3UnixPathStorage_New(out);
+        TQ3FileObject file = Q3File_New();
+        TQ3ViewObject view = Q3View_New();
+        TQ3ViewStatus done = kQ3ViewStatusError;
+        if (Q3File_SetStorage(file, storage) == kQ3Success && Q3File_OpenWrite(file, mode | encoding) == kQ3Success &&
+            Q3View_StartWriting(view, file) == kQ3Success) {
+            do {
+                for (i = 0; i < count; ++i)
+                    Q3Object_Submit(objects[i], view);
+                done = Q3View_EndWriting(view);
+            } while (done == kQ3ViewStatusRetraverse);
+            if (Q3File_Close(file) != kQ3Success)
+                done = kQ3ViewStatusError;
+        }
+        if (done != kQ3ViewStatusDone) {
+            fprintf(stderr, "cannot write %s: %s\n", out, Q3Error_GetMessage());
+            status = 3;
+        }
+        Q3Object_Dispose(view);
+        Q3Object_Dispose(file);
+        Q3Object_Dispose(storage);
+    }
+    q3load_free(objects, count);
+    Q3Exit();
+    return status;
+}

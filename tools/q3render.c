@@ -1,0 +1,263 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+
+/* q3render: renders a 3DMF model to a PNG image.
+ *
+ *   q3render model.3dmf -o image.png [--size WIDTHxHEIGHT] [--renderer interactive | wireframe]
+ *            [--subdivision constant:C1,C2 | world:LENGTH | screen:PIXELS] [--background R,G,B]
+ *
+ * The camera looks at the centre of the model's bounding box from the front,
+ * a little above and to the right, far enough for the whole box to fit its
+ * 40-degree field of view. The model is lit by the first light group in the
+ * file, or, as QuickDraw 3D's viewer lit models that bring no lights, by a
+ * dim white ambient light and a white directional light shining from over
+ * the viewer's shoulder. Defaults: 400x300,
+ * interactive, constant subdivision 16 x 16, a white background. Exit status:
+ * 0 done, 1 bad arguments, 2 the model cannot be read, 3 it cannot be drawn or
+ * the image cannot be written. */
+
+#include "q3load.h"
+#include "q3png.h"
+
+#include "QD3DCamera.h"
+#include "QD3DDrawContext.h"
+#include "QD3DGroup.h"
+#include "QD3DLight.h"
+#include "QD3DMath.h"
+#include "QD3DRenderer.h"
+#include "QD3DStyle.h"
+#include "QD3DView.h"
+
+#include <math.h>
+#include <string.h>
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: q3render model.3dmf -o image.png [--size WIDTHxHEIGHT]\n"
+                    "                [--renderer interactive | wireframe]\n"
+                    "                [--subdivision constant:C1,C2 | world:LENGTH | screen:PIXELS]\n"
+                    "                [--background R,G,B]\n");
+    return 1;
+}
+
+static int parseSubdivision(const char *text, TQ3SubdivisionStyleData *style)
+{
+    if (strncmp(text, "constant:", 9) == 0) {
+        style->method = kQ3SubdivisionMethodConstant;
+        return sscanf(text + 9, "%f,%f", &style->c1, &style->c2) == 2;
+    }
+    if (strncmp(text, "world:", 6) == 0) {
+        style->method = kQ3SubdivisionMethodWorldSpace;
+        style->c2 = 0;
+        return sscanf(text + 6, "%f", &style->c1) == 1;
+    }
+    if (strncmp(text, "screen:", 7) == 0) {
+        style->method = kQ3SubdivisionMethodScreenSpace;
+        style->c2 = 0;
+        return sscanf(text + 7, "%f", &style->c1) == 1;
+    }
+    return 0;
+}
+
+static TQ3GroupObject defaultLights(const TQ3Vector3D *viewDirection)
+{
+    TQ3GroupObject lights = Q3LightGroup_New();
+    TQ3LightData ambient = {kQ3True, 0.3f, {1.0f, 1.0f, 1.0f}};
+    TQ3DirectionalLightData directional = {{kQ3True, 1.0f, {1.0f, 1.0f, 1.0f}}, kQ3False, {0, 0, 0}};
+    TQ3LightObject a, d;
+    /* From over the viewer's right shoulder: the view direction, tilted down. */
+    directional.direction.x = viewDirection->x - 0.3f;
+    directional.direction.y = viewDirection->y - 0.5f;
+    directional.direction.z = viewDirection->z;
+    Q3Vector3D_Normalize(&directional.direction, &directional.direction);
+    a = Q3AmbientLight_New(&ambient);
+    d = Q3DirectionalLight_New(&directional);
+    Q3Group_AddObject(lights, a);
+    Q3Group_AddObject(lights, d);
+    Q3Object_Dispose(a);
+    Q3Object_Dispose(d);
+    return lights;
+}
+
+static int boundsOf(TQ3ViewObject view, TQ3GroupObject model, TQ3BoundingBox *box)
+{
+    TQ3ViewStatus status;
+    if (Q3View_StartBoundingBox(view, kQ3ComputeBoundsExact) != kQ3Success)
+        return 0;
+    do {
+        Q3Object_Submit(model, view);
+        status = Q3View_EndBoundingBox(view, box);
+    } while (status == kQ3ViewStatusRetraverse);
+    return status == kQ3ViewStatusDone;
+}
+
+int main(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL;
+    unsigned long width = 400, height = 300;
+    TQ3ObjectType renderer = kQ3RendererTypeInteractive;
+    TQ3SubdivisionStyleData subdivision = {kQ3SubdivisionMethodConstant, 16.0f, 16.0f};
+    TQ3ColorARGB background = {1.0f, 1.0f, 1.0f, 1.0f};
+    TQ3Object *objects = NULL;
+    long count, i;
+    int status = 0;
+    int arg;
+    for (arg = 1; arg < argc; ++arg) {
+        const char *a = argv[arg];
+        const char *value = arg + 1 < argc ? argv[arg + 1] : NULL;
+        if (strcmp(a, "-o") == 0 && value != NULL) {
+            out = value;
+            ++arg;
+        } else if (strcmp(a, "--size") == 0 && value != NULL) {
+            if (sscanf(value, "%lux%lu", &width, &height) != 2 || width < 1 || height < 1 || width > 8192 ||
+                height > 8192)
+                return usage();
+            ++arg;
+        } else if (strcmp(a, "--renderer") == 0 && value != NULL) {
+            if (strcmp(value, "interactive") == 0)
+                renderer = kQ3RendererTypeInteractive;
+            else if (strcmp(value, "wireframe") == 0)
+                renderer = kQ3RendererTypeWireFrame;
+            else
+                return usage();
+            ++arg;
+        } else if (strcmp(a, "--subdivision") == 0 && value != NULL) {
+            if (!parseSubdivision(value, &subdivision))
+                return usage();
+            ++arg;
+        } else if (strcmp(a, "--background") == 0 && value != NULL) {
+            if (sscanf(value, "%f,%f,%f", &background.r, &background.g, &background.b) != 3)
+                return usage();
+            ++arg;
+        } else if (a[0] == '-' || in != NULL) {
+            return usage();
+        } else {
+            in = a;
+        }
+    }
+    if (in == NULL || out == NULL)
+        return usage();
+    if (Q3Initialize() != kQ3Success)
+        return 3;
+    count = q3load_read(in, &objects);
+    if (count < 0) {
+        Q3Exit();
+        return 2;
+    }
+    {
+        TQ3GroupObject model = Q3DisplayGroup_New();
+        TQ3ViewObject view = Q3View_New();
+        TQ3StyleObject style = Q3SubdivisionStyle_New(&subdivision);
+        unsigned char *argb = (unsigned char *)calloc(width * height, 4);
+        unsigned char *rgba = (unsigned char *)calloc(width * height, 4);
+        TQ3PixmapDrawContextData contextData;
+        TQ3DrawContextObject context;
+        TQ3ViewAngleAspectCameraData cameraData;
+        TQ3CameraObject camera;
+        TQ3GroupObject lights;
+        TQ3BoundingBox box;
+        TQ3Point3D centre = {0, 0, 0};
+        TQ3Vector3D toEye = {0.35f, 0.3f, 1.0f}, viewDirection;
+        float radius = 1.0f, distance;
+        const float fov = 0.6981317f; /* 40 degrees */
+        TQ3ViewStatus done;
+        TQ3GroupObject fileLights = NULL;
+        for (i = 0; i < count; ++i) {
+            if (Q3Object_IsDrawable(objects[i]))
+                Q3Group_AddObject(model, objects[i]);
+            else if (fileLights == NULL && Q3Object_GetLeafType(objects[i]) == kQ3GroupTypeLight)
+                fileLights = objects[i];
+        }
+        memset(&contextData, 0, sizeof contextData);
+        contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
+        contextData.drawContextData.clearImageColor = background;
+        contextData.drawContextData.paneState = kQ3False;
+        contextData.drawContextData.maskState = kQ3False;
+        contextData.drawContextData.doubleBufferState = kQ3False;
+        contextData.pixmap.image = argb;
+        contextData.pixmap.width = width;
+        contextData.pixmap.height = height;
+        contextData.pixmap.rowBytes = width * 4;
+        contextData.pixmap.pixelSize = 32;
+        contextData.pixmap.pixelType = kQ3PixelTypeARGB32;
+        contextData.pixmap.bitOrder = kQ3EndianBig;
+        contextData.pixmap.byteOrder = kQ3EndianBig;
+        context = Q3PixmapDrawContext_New(&contextData);
+
+        if (boundsOf(view, model, &box) && box.isEmpty == kQ3False) {
+            TQ3Vector3D diagonal;
+            centre.x = (box.min.x + box.max.x) / 2;
+            centre.y = (box.min.y + box.max.y) / 2;
+            centre.z = (box.min.z + box.max.z) / 2;
+            Q3Point3D_Subtract(&box.max, &box.min, &diagonal);
+            radius = Q3Vector3D_Length(&diagonal) / 2;
+            if (!(radius > 1e-6f))
+                radius = 1.0f;
+        }
+        Q3Vector3D_Normalize(&toEye, &toEye);
+        distance = radius / sinf(fov / 2) * 1.05f;
+        memset(&cameraData, 0, sizeof cameraData);
+        cameraData.cameraData.placement.cameraLocation.x = centre.x + toEye.x * distance;
+        cameraData.cameraData.placement.cameraLocation.y = centre.y + toEye.y * distance;
+        cameraData.cameraData.placement.cameraLocation.z = centre.z + toEye.z * distance;
+        cameraData.cameraData.placement.pointOfInterest = centre;
+        cameraData.cameraData.placement.upVector.y = 1.0f;
+        cameraData.cameraData.range.hither = distance - radius * 1.5f > distance * 0.01f ? distance - radius * 1.5f
+                                                                                          : distance * 0.01f;
+        cameraData.cameraData.range.yon = distance + radius * 1.5f;
+        cameraData.cameraData.viewPort.origin.x = -1.0f;
+        cameraData.cameraData.viewPort.origin.y = 1.0f;
+        cameraData.cameraData.viewPort.width = 2.0f;
+        cameraData.cameraData.viewPort.height = 2.0f;
+        cameraData.fov = fov;
+        cameraData.aspectRatioXToY = (float)width / (float)height;
+        camera = Q3ViewAngleAspectCamera_New(&cameraData);
+        viewDirection.x = -toEye.x;
+        viewDirection.y = -toEye.y;
+        viewDirection.z = -toEye.z;
+        lights = fileLights != NULL ? Q3Shared_GetReference(fileLights) : defaultLights(&viewDirection);
+
+        if (argb == NULL || rgba == NULL || context == NULL || camera == NULL ||
+            Q3View_SetDrawContext(view, context) != kQ3Success || Q3View_SetCamera(view, camera) != kQ3Success ||
+            Q3View_SetRendererByType(view, renderer) != kQ3Success ||
+            Q3View_SetLightGroup(view, lights) != kQ3Success || Q3View_StartRendering(view) != kQ3Success) {
+            fprintf(stderr, "cannot draw %s: %s\n", in, Q3Error_GetMessage());
+            status = 3;
+        } else {
+            do {
+                Q3Object_Submit(style, view);
+                Q3Object_Submit(model, view);
+                done = Q3View_EndRendering(view);
+            } while (done == kQ3ViewStatusRetraverse);
+            if (done != kQ3ViewStatusDone) {
+                fprintf(stderr, "cannot draw %s: %s\n", in, Q3Error_GetMessage());
+                status = 3;
+            } else {
+                unsigned long p;
+                for (p = 0; p < width * height; ++p) {
+                    rgba[4 * p + 0] = argb[4 * p + 1];
+                    rgba[4 * p + 1] = argb[4 * p + 2];
+                    rgba[4 * p + 2] = argb[4 * p + 3];
+                    rgba[4 * p + 3] = 255;
+                }
+                if (q3png_write_rgba8(out, rgba, (int)width, (int)height, (int)width * 4) != 0) {
+                    fprintf(stderr, "cannot write %s\n", out);
+                    status = 3;
+                }
+            }
+        }
+        free(argb);
+        free(rgba);
+        Q3Object_Dispose(lights);
+        if (camera != NULL)
+            Q3Object_Dispose(camera);
+        if (context != NULL)
+            Q3Object_Dispose(context);
+        Q3Object_Dispose(style);
+        Q3Object_Dispose(view);
+        Q3Object_Dispose(model);
+    }
+    q3load_free(objects, count);
+    Q3Exit();
+    return status;
+}
