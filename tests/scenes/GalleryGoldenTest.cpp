@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// samples/geometries.c's pictures: every geometry type Q3 implements, in the
+// wireframe and in the lit interactive renderer, compared with
+// tests/golden/geometry_NAME_{wireframe,lit}.png (tolerance:
+// tests/golden/README.md); and facts that a wrongly blessed golden would not
+// pass: the gallery holds one geometry of each type, each picture shows it,
+// and the lit interactive picture of a surface fills more than its wireframe.
+
+#include "Golden.h"
+
+#include "QD3D.h"
+#include "QD3DErrors.h"
+#include "QD3DGeometry.h"
+#include "gallery.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <set>
+#include <string>
+#include <tuple>
+
+namespace {
+
+class GalleryTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        ASSERT_EQ(Q3Initialize(), kQ3Success);
+        Q3Error_Register(&onError, 0);
+        s_errors = 0;
+    }
+    void TearDown() override
+    {
+        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while drawing";
+        Q3Error_Register(nullptr, 0);
+        Q3Exit();
+    }
+
+    static q3test::RgbaImage render(unsigned long index, bool lit)
+    {
+        q3test::RgbaImage image(Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT);
+        EXPECT_EQ(q3gallery_render(index, lit ? 1 : 0, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT, image.pixels.data()), 0)
+            << q3gallery_name(index);
+        return image;
+    }
+
+    // Whether a pixel is other than the background (samples/geometries/
+    // gallery.c's 0.12, 0.12, 0.16).
+    static bool isDrawn(const q3test::RgbaImage& image, int x, int y)
+    {
+        const unsigned char* p = image.at(x, y);
+        return std::abs(p[0] - 31) > 1 || std::abs(p[1] - 31) > 1 || std::abs(p[2] - 41) > 1;
+    }
+    static int drawn(const q3test::RgbaImage& image)
+    {
+        int n = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                n += isDrawn(image, x, y) ? 1 : 0;
+        return n;
+    }
+
+private:
+    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
+    static int s_errors;
+};
+
+int GalleryTest::s_errors = 0;
+
+class GalleryGolden : public GalleryTest, public ::testing::WithParamInterface<std::tuple<unsigned long, bool>> {};
+
+TEST_P(GalleryGolden, MatchesTheGolden)
+{
+    const auto [index, lit] = GetParam();
+    const q3test::RgbaImage image = render(index, lit);
+    EXPECT_TRUE(q3test::matchesGolden(std::string("geometry_") + q3gallery_name(index) + (lit ? "_lit" : "_wireframe"),
+                                      image));
+}
+
+INSTANTIATE_TEST_SUITE_P(Geometries, GalleryGolden,
+                         ::testing::Combine(::testing::Range(0UL, q3gallery_count()), ::testing::Bool()),
+                         [](const ::testing::TestParamInfo<std::tuple<unsigned long, bool>>& info) {
+                             return std::string(q3gallery_name(std::get<0>(info.param))) +
+                                    (std::get<1>(info.param) ? "_lit" : "_wireframe");
+                         });
+
+// One of every type, and none twice.
+TEST_F(GalleryTest, TheGalleryHoldsEveryGeometryTypeOnce)
+{
+    const std::set<TQ3ObjectType> expected{
+        kQ3GeometryTypePoint,     kQ3GeometryTypeLine,      kQ3GeometryTypePolyLine,  kQ3GeometryTypeTriangle,
+        kQ3GeometryTypePolygon,   kQ3GeometryTypeTriMesh,   kQ3GeometryTypeMesh,      kQ3GeometryTypeNURBCurve,
+        kQ3GeometryTypeNURBPatch, kQ3GeometryTypeBox,       kQ3GeometryTypeCone,      kQ3GeometryTypeCylinder,
+        kQ3GeometryTypeDisk,      kQ3GeometryTypeEllipse,   kQ3GeometryTypeEllipsoid, kQ3GeometryTypeTorus};
+    std::set<TQ3ObjectType> found;
+    for (unsigned long i = 0; i < q3gallery_count(); ++i) {
+        TQ3GeometryObject geometry = q3gallery_new(i);
+        ASSERT_NE(geometry, nullptr) << q3gallery_name(i);
+        EXPECT_TRUE(found.insert(Q3Geometry_GetType(geometry)).second) << q3gallery_name(i);
+        Q3Object_Dispose(geometry);
+    }
+    EXPECT_EQ(found, expected);
+}
+
+// Every picture shows its geometry; a surface's lit picture fills pixels
+// between the lines of its wireframe, a curve's does not.
+TEST_F(GalleryTest, EveryPictureShowsItsGeometryAndSurfacesFill)
+{
+    const std::set<std::string> notSurfaces{"point", "line", "polyline", "nurb_curve", "ellipse"};
+    for (unsigned long i = 0; i < q3gallery_count(); ++i) {
+        const std::string name = q3gallery_name(i);
+        const q3test::RgbaImage wire = render(i, false);
+        const q3test::RgbaImage lit = render(i, true);
+        int filledOnly = 0;
+        for (int y = 0; y < lit.height; ++y)
+            for (int x = 0; x < lit.width; ++x)
+                filledOnly += isDrawn(lit, x, y) && !isDrawn(wire, x, y) ? 1 : 0;
+        EXPECT_GT(drawn(wire), 0) << name;
+        EXPECT_GT(drawn(lit), 0) << name;
+        if (notSurfaces.count(name) == 0)
+            EXPECT_GT(filledOnly, 800) << name;
+        else
+            EXPECT_LT(filledOnly, 100) << name;
+    }
+}
+
+} // namespace
