@@ -181,7 +181,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Geometry_Submit(TQ3GeometryObject geometry, TQ3View
  * attribute set (polyLineAttributeSet, triMeshAttributeSet) is a new
  * reference to the geometry's, or NULL.
  *
- * Primitives (points, lines, polylines, triangles and trimeshes) are drawn as
+ * Primitives (points, lines, polylines, triangles, trimeshes and markers) are drawn as
  * they are: for them the call returns NULL and posts nothing.
  *
  * @param geometry  the geometry to decompose.
@@ -3894,13 +3894,15 @@ typedef struct TQ3GeneralPolygonContourData TQ3GeneralPolygonContourData;
  * checked in this order:
  *   contours is not NULL                            kQ3ErrorNULLParameter
  *   numContours >= 1             kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   numContours <= kQ3GeometryMaxArrayCount         kQ3ErrorParameterOutOfRange
  *   shapeHint is one of the enumeration's values    kQ3ErrorInvalidData
  *   then for each contour in order:
  *     vertices is not NULL                          kQ3ErrorNULLParameter
  *     numVertices >= 3           kQ3ErrorGeometryInsufficientNumberOfPoints
+ *     numVertices, and the number of vertices of
+ *       this and the contours before it,
+ *       <= kQ3GeometryMaxArrayCount                 kQ3ErrorParameterOutOfRange
  *     every coordinate is finite                    kQ3ErrorInvalidData
- *   numContours, each numVertices and their sum
- *     <= kQ3GeometryMaxArrayCount                   kQ3ErrorParameterOutOfRange
  *   every attribute set given is a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
  */

@@ -511,10 +511,11 @@ struct HandleArrayField {
     }
     void release(S& s) const
     {
+        // Counted first: a count may depend on whether the array is there.
+        const std::size_t n = count(s);
         TQ3Object* handles = std::exchange(s.*member, nullptr);
         if (handles == nullptr)
             return;
-        const std::size_t n = count(s);
         for (std::size_t i = 0; i < n; ++i)
             if (handles[i] != nullptr)
                 heldObject(handles[i])->releaseReference();

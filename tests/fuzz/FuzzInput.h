@@ -77,6 +77,7 @@ enum class Op : std::uint8_t {
     kGroups,
     kCurveTools,
     kQuadrics,
+    kPolygons2,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);
