@@ -2012,7 +2012,12 @@ private:
         for (int n = m_in.u8() % 3; n > 0; --n)
             vertices[m_in.u8() % vertices.size()].point.z = m_in.value();
         const unsigned long count = static_cast<unsigned long>(vertices.size());
+        // Now and then a count no array could hold, which must be refused
+        // before any array is read (a smaller lie would make the fuzzer, not
+        // Q3, read past its own arrays).
         const bool rawCount = m_in.u8() % 16 == 0;
+        const unsigned long hugeCount =
+            !rawCount ? 0 : m_in.u8() % 2 ? ~0UL : static_cast<unsigned long>(kQ3GeometryMaxArrayCount) + 1 + m_in.u8();
         switch (type) {
         case 0: {
             std::vector<TQ3GeneralPolygonContourData> contours;
@@ -2025,7 +2030,7 @@ private:
                                        kQ3GeneralPolygonShapeHintComplex, nullptr};
             setRaw(data.shapeHint, enumValue(3));
             if (rawCount)
-                data.numContours = m_in.u32();
+                data.numContours = hugeCount;
             surfaceAction<TQ3GeneralPolygonData>(
                 action, kind, nullData ? nullptr : &data, Q3GeneralPolygon_New, Q3GeneralPolygon_SetData,
                 Q3GeneralPolygon_GetData, Q3GeneralPolygon_EmptyData, Q3GeneralPolygon_Submit,
@@ -2060,7 +2065,7 @@ private:
                                    edges.empty() ? nullptr : edges.data(),
                                    static_cast<unsigned long>(triangles.size()), triangles.data(), nullptr};
             if (rawCount)
-                data.numTriangles = m_in.u32();
+                data.numTriangles = hugeCount;
             surfaceAction<TQ3PolyhedronData>(
                 action, kind, nullData ? nullptr : &data, Q3Polyhedron_New, Q3Polyhedron_SetData,
                 Q3Polyhedron_GetData, Q3Polyhedron_EmptyData, Q3Polyhedron_Submit,
@@ -2078,7 +2083,7 @@ private:
                 f = (m_in.u8() % 8 == 0) ? pick(Kind::kAttributeSet) : nullptr;
             TQ3TriGridData data{rows, columns, vertices.data(), (m_in.u8() & 1) ? facets.data() : nullptr, nullptr};
             if (rawCount)
-                data.numRows = m_in.u32();
+                data.numRows = hugeCount;
             surfaceAction<TQ3TriGridData>(action, kind, nullData ? nullptr : &data, Q3TriGrid_New, Q3TriGrid_SetData,
                                           Q3TriGrid_GetData, Q3TriGrid_EmptyData, Q3TriGrid_Submit,
                                           [](const TQ3TriGridData& a, const TQ3TriGridData& b) {
@@ -2101,7 +2106,7 @@ private:
             data.bitmap.width = m_in.u8() % 20;
             setRaw(data.bitmap.bitOrder, enumValue(2));
             if (rawCount)
-                data.bitmap.height = m_in.u32();
+                data.bitmap.height = hugeCount;
             surfaceAction<TQ3MarkerData>(action, kind, nullData ? nullptr : &data, Q3Marker_New, Q3Marker_SetData,
                                          Q3Marker_GetData, Q3Marker_EmptyData, Q3Marker_Submit,
                                          [](const TQ3MarkerData& a, const TQ3MarkerData& b) {
@@ -2243,7 +2248,7 @@ private:
                 break;
             }
             case 6: {
-                unsigned char bits[4] = {static_cast<unsigned char>(i), static_cast<unsigned char>(j), 0xFF, 0x81};
+                unsigned char bits[8] = {static_cast<unsigned char>(i), static_cast<unsigned char>(j), 0xFF, 0x81, 0x18};
                 TQ3Bitmap bitmap{bits, j % 20, 1 + i % 4, 1 + i % 2, kQ3EndianBig};
                 setRaw(bitmap.bitOrder, std::int32_t(j % 3));
                 edit = true;
@@ -2400,16 +2405,7 @@ private:
         const TQ3Object view = pick(Kind::kView);
         if (!drawAllowed())
             return;
-        const DrawTimer timer(m_drawSeconds);
-        const TQ3Object result = OBJECT(Q3Geometry_GetDecomposed(geometry, view));
-        if (result == nullptr)
-            return;
-        const Held* entry = heldEntry(geometry);
-        require(entry != nullptr, "Q3Geometry_GetDecomposed", "decomposed something nobody holds");
-        if (isQuadric(entry->kind))
-            checkQuadricDecomposed(entry->kind, result);
-        else // another geometry, picked when no shape of this kind is held
-            hold(result, Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh ? Kind::kTriMesh : Kind::kPolyLine);
+        checkDecomposition(geometry, view);
     }
 
     // A shape gives a trimesh within kQ3SubdivisionMaxTrianglesPerSurface,
@@ -3469,6 +3465,14 @@ private:
         const TQ3Object view = pick(Kind::kView);
         if (!drawAllowed())
             return;
+        checkDecomposition(geometry, view);
+    }
+
+    // Q3Geometry_GetDecomposed of any held object (or a bad handle): NULL
+    // with an error, NULL silently for a primitive, or the right geometry of
+    // the right size for each type.
+    void checkDecomposition(TQ3Object geometry, TQ3Object view)
+    {
         const DrawTimer timer(m_drawSeconds);
         begin();
         const TQ3Object polyline = Q3Geometry_GetDecomposed(geometry, view);
@@ -3479,7 +3483,7 @@ private:
                 const Held* entry = heldEntry(geometry);
                 require(entry != nullptr && (entry->kind == Kind::kPolyLine || entry->kind == Kind::kLine ||
                                              entry->kind == Kind::kPoint || entry->kind == Kind::kTriangle ||
-                                             entry->kind == Kind::kTriMesh),
+                                             entry->kind == Kind::kTriMesh || entry->kind == Kind::kMarker),
                         "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
             }
             return;
@@ -3506,6 +3510,11 @@ private:
             STATUS(Q3TriMesh_EmptyData(&mesh));
             return;
         }
+        if (entry != nullptr && (entry->kind == Kind::kGeneralPolygon || entry->kind == Kind::kPolyhedron ||
+                                 entry->kind == Kind::kTriGrid)) {
+            checkPolygons2Decomposed(geometry, entry->kind, posted, polyline);
+            return;
+        }
         require(!posted && holdsKind(geometry, Kind::kCurve), "Q3Geometry_GetDecomposed",
                 "decomposed something that is not a curve");
         hold(polyline, Kind::kPolyLine);
@@ -3514,6 +3523,43 @@ private:
         require(data.numVertices >= 2 && data.numVertices <= (unsigned long)kQ3SubdivisionMaxSegmentsPerCurve + 1,
                 "Q3Geometry_GetDecomposed", "the polyline's vertex count is outside 2 .. cap + 1");
         STATUS(Q3PolyLine_EmptyData(&data));
+    }
+
+    // A general polygon gives a trimesh over its own vertices with at most
+    // vertices + 2 contours - 2 triangles; a grid one of three vertices per
+    // facet; a polyhedron three per triangle and two per listed edge.
+    void checkPolygons2Decomposed(TQ3Object geometry, Kind kind, bool posted, TQ3Object result)
+    {
+        const char* call = "Q3Geometry_GetDecomposed";
+        require(!posted && Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh, call, "gave no trimesh");
+        hold(result, Kind::kTriMesh);
+        TQ3TriMeshData mesh{};
+        STATUS(Q3TriMesh_GetData(result, &mesh));
+        if (kind == Kind::kGeneralPolygon) {
+            TQ3GeneralPolygonData data{};
+            STATUS(Q3GeneralPolygon_GetData(geometry, &data));
+            unsigned long total = 0;
+            for (unsigned long c = 0; c < data.numContours; ++c)
+                total += data.contours[c].numVertices;
+            require(mesh.numPoints == total && mesh.numTriangles + 2 <= total + 2 * data.numContours, call,
+                    "a general polygon's trimesh has the wrong size");
+            STATUS(Q3GeneralPolygon_EmptyData(&data));
+        } else if (kind == Kind::kTriGrid) {
+            TQ3TriGridData data{};
+            STATUS(Q3TriGrid_GetData(geometry, &data));
+            const unsigned long facets = 2 * (data.numRows - 1) * (data.numColumns - 1);
+            require(mesh.numTriangles == facets && mesh.numPoints == 3 * facets, call,
+                    "a grid's trimesh has the wrong size");
+            STATUS(Q3TriGrid_EmptyData(&data));
+        } else {
+            TQ3PolyhedronData data{};
+            STATUS(Q3Polyhedron_GetData(geometry, &data));
+            require(mesh.numTriangles == data.numTriangles &&
+                        mesh.numPoints == 3 * data.numTriangles + 2 * data.numEdges,
+                    call, "a polyhedron's trimesh has the wrong size");
+            STATUS(Q3Polyhedron_EmptyData(&data));
+        }
+        STATUS(Q3TriMesh_EmptyData(&mesh));
     }
 
     void viewState()
