@@ -478,6 +478,24 @@ Q3_EXTERN_API_C(TQ3Status) Q3Shared_Edited(TQ3SharedObject sharedObject);
  * kQ3ErrorInvalidObjectType (then kQ3ObjectTypeInvalid). */
 Q3_EXTERN_API_C(TQ3ObjectType) Q3Shape_GetType(TQ3ShapeObject shape);
 
+/* ---- Bitmaps ------------------------------------------------------------- */
+
+/*
+ * Q3Bitmap_Empty: frees the bits of a bitmap Q3 filled (Q3Marker_GetBitmap,
+ * Q3Marker_GetData) and sets image to NULL; a bitmap whose image is already
+ * NULL is left alone. Errors: kQ3ErrorNULLParameter (bitmap is NULL).
+ * Ownership: consumes the bits.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Bitmap_Empty(TQ3Bitmap *bitmap);
+
+/*
+ * Q3Bitmap_GetImageSize: the bytes a bitmap of width x height pixels needs
+ * with rows packed to whole bytes: ((width + 7) / 8) * height (0 when that
+ * does not fit an unsigned long). Errors: none besides kQ3ErrorNotInitialized
+ * (then 0).
+ */
+Q3_EXTERN_API_C(unsigned long) Q3Bitmap_GetImageSize(unsigned long width, unsigned long height);
+
 #ifdef __cplusplus
 }
 #endif

@@ -3,8 +3,9 @@
 
 /*
  * Geometries: NURB curves, polylines, lines, points, triangles, polygons,
- * triangle meshes, and the quadrics and solids (boxes, cones, cylinders,
- * disks, ellipses, ellipsoids, tori), in retained mode (an object made by ..._New and drawn with
+ * general polygons, polyhedra, triangle grids, triangle meshes, markers,
+ * and the quadrics and solids (boxes, cones, cylinders, disks, ellipses,
+ * ellipsoids, tori), in retained mode (an object made by ..._New and drawn with
  * Q3Geometry_Submit) and immediate mode (a data structure drawn at once with
  * ..._Submit).
  *
@@ -180,7 +181,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3Geometry_Submit(TQ3GeometryObject geometry, TQ3View
  * attribute set (polyLineAttributeSet, triMeshAttributeSet) is a new
  * reference to the geometry's, or NULL.
  *
- * Primitives (points, lines, polylines, triangles and trimeshes) are drawn as
+ * Primitives (points, lines, polylines, triangles, trimeshes and markers) are drawn as
  * they are: for them the call returns NULL and posts nothing.
  *
  * @param geometry  the geometry to decompose.
@@ -5045,6 +5046,1088 @@ Q3_EXTERN_API_C(TQ3MeshFace) Q3Mesh_NextContourFace(TQ3MeshIterator *iterator);
     for ((v) = Q3Mesh_FirstContourVertex((h), (i)); (v); (v) = Q3Mesh_NextContourVertex((i)))
 #define Q3ForEachContourFace(h, f, i) \
     for ((f) = Q3Mesh_FirstContourFace((h), (i)); (f); (f) = Q3Mesh_NextContourFace((i)))
+
+/* ---- General polygon ---------------------------------------------------- */
+
+/*
+ * The hint a general polygon carries about its shape. Q3 draws every general
+ * polygon the same way whatever its hint (a wrong hint never draws it
+ * wrongly); the hint is kept and returned.
+ */
+enum TQ3GeneralPolygonShapeHint {
+    kQ3GeneralPolygonShapeHintComplex = 0,
+    kQ3GeneralPolygonShapeHintConcave = 1,
+    kQ3GeneralPolygonShapeHintConvex = 2
+};
+typedef enum TQ3GeneralPolygonShapeHint TQ3GeneralPolygonShapeHint;
+
+/* One closed outline of a general polygon: numVertices vertices in order. */
+struct TQ3GeneralPolygonContourData {
+    unsigned long numVertices;
+    TQ3Vertex3D *vertices;
+};
+typedef struct TQ3GeneralPolygonContourData TQ3GeneralPolygonContourData;
+
+/*
+ * A general polygon: numContours closed contours in one plane, its shape
+ * hint, and its attribute set or NULL. The area drawn is QuickDraw 3D's
+ * even-odd fill: a point is inside when a ray from it crosses the contours an
+ * odd number of times, so a contour inside another cuts a hole and one inside
+ * a hole is an island. Contours may be concave. Q3 triangulates them in the
+ * plane that fits all the vertices best; contours that cross each other or
+ * themselves are drawn, but may then cover some area twice or miss some.
+ * Each vertex keeps its own attributes. Its front is the side from which the
+ * first contour runs counterclockwise. The wireframe renderer draws every
+ * contour's outline.
+ *
+ * The rules a TQ3GeneralPolygonData must obey wherever one is accepted,
+ * checked in this order:
+ *   contours is not NULL                            kQ3ErrorNULLParameter
+ *   numContours >= 1             kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   numContours <= kQ3GeometryMaxArrayCount         kQ3ErrorParameterOutOfRange
+ *   shapeHint is one of the enumeration's values    kQ3ErrorInvalidData
+ *   then for each contour in order:
+ *     vertices is not NULL                          kQ3ErrorNULLParameter
+ *     numVertices >= 3           kQ3ErrorGeometryInsufficientNumberOfPoints
+ *     numVertices, and the number of vertices of
+ *       this and the contours before it,
+ *       <= kQ3GeometryMaxArrayCount                 kQ3ErrorParameterOutOfRange
+ *     every coordinate is finite                    kQ3ErrorInvalidData
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3GeneralPolygonData {
+    unsigned long numContours;
+    TQ3GeneralPolygonContourData *contours;
+    TQ3GeneralPolygonShapeHint shapeHint;
+    TQ3AttributeSet generalPolygonAttributeSet;
+};
+typedef struct TQ3GeneralPolygonData TQ3GeneralPolygonData;
+
+/**
+ * Creates a retained general polygon from a copy of generalPolygonData (the
+ * data calls at the top of this header).
+ *
+ * @return the new general polygon, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      generalPolygonData is NULL.
+ *   then the codes of the TQ3GeneralPolygonData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the general polygon cannot be allocated.
+ *
+ * Ownership: the caller owns the new general polygon's one reference. It
+ * takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3GeneralPolygon_New(const TQ3GeneralPolygonData *generalPolygonData);
+
+/**
+ * Draws (or bounds) a general polygon without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      generalPolygonData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3GeneralPolygonData rules, in their order.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_Submit(const TQ3GeneralPolygonData *generalPolygonData,
+                                                   TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained general polygon with a copy of
+ * generalPolygonData.
+ *
+ * @return kQ3Success, or kQ3Failure with the general polygon unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      generalPolygon or generalPolygonData is NULL.
+ *   kQ3ErrorInvalidObject      generalPolygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  generalPolygon is not a general polygon.
+ *   then the codes of the TQ3GeneralPolygonData rules, in their order.
+ *
+ * Ownership: the general polygon references the attribute sets given and
+ * releases those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_SetData(TQ3GeometryObject generalPolygon,
+                                                    const TQ3GeneralPolygonData *generalPolygonData);
+
+/**
+ * Copies the data of a retained general polygon into generalPolygonData
+ * (newly allocated contour and vertex arrays).
+ *
+ * @return kQ3Success, or kQ3Failure with *generalPolygonData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polygon or generalPolygonData is NULL.
+ *   kQ3ErrorInvalidObject      polygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  polygon is not a general polygon.
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the caller owns the arrays and a new reference to every
+ * attribute set in the result, and gives them back with
+ * Q3GeneralPolygon_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_GetData(TQ3GeometryObject polygon,
+                                                    TQ3GeneralPolygonData *generalPolygonData);
+
+/**
+ * Releases what Q3GeneralPolygon_GetData put in generalPolygonData: the
+ * attribute set references, the vertex arrays and the contour array; the
+ * pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      generalPolygonData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_EmptyData(TQ3GeneralPolygonData *generalPolygonData);
+
+/**
+ * Reads the position of vertex pointIndex of contour contourIndex of a
+ * retained general polygon.
+ *
+ * @return kQ3Success, or kQ3Failure with *position unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        generalPolygon or position is NULL.
+ *   kQ3ErrorInvalidObject        generalPolygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    generalPolygon is not a general polygon.
+ *   kQ3ErrorParameterOutOfRange  contourIndex is not below numContours, or
+ *                                pointIndex not below that contour's
+ *                                numVertices.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_GetVertexPosition(TQ3GeometryObject generalPolygon,
+                                                              unsigned long contourIndex, unsigned long pointIndex,
+                                                              TQ3Point3D *position);
+
+/**
+ * Moves vertex pointIndex of contour contourIndex of a retained general
+ * polygon.
+ *
+ * @return kQ3Success, or kQ3Failure with the general polygon unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        generalPolygon or position is NULL.
+ *   kQ3ErrorInvalidObject        generalPolygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    generalPolygon is not a general polygon.
+ *   kQ3ErrorParameterOutOfRange  contourIndex or pointIndex is out of range.
+ *   kQ3ErrorInvalidData          a coordinate of *position is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_SetVertexPosition(TQ3GeometryObject generalPolygon,
+                                                              unsigned long contourIndex, unsigned long pointIndex,
+                                                              const TQ3Point3D *position);
+
+/**
+ * Reads the attribute set of vertex pointIndex of contour contourIndex of a
+ * retained general polygon (NULL when it has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        generalPolygon or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject        generalPolygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    generalPolygon is not a general polygon.
+ *   kQ3ErrorParameterOutOfRange  contourIndex or pointIndex is out of range.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_GetVertexAttributeSet(TQ3GeometryObject generalPolygon,
+                                                                  unsigned long contourIndex,
+                                                                  unsigned long pointIndex,
+                                                                  TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces the attribute set of vertex pointIndex of contour contourIndex of
+ * a retained general polygon; NULL removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the general polygon unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        generalPolygon is NULL.
+ *   kQ3ErrorInvalidObject        generalPolygon or attributeSet is not a live
+ *                                Q3 object.
+ *   kQ3ErrorInvalidObjectType    generalPolygon is not a general polygon, or
+ *                                attributeSet is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  contourIndex or pointIndex is out of range.
+ *
+ * Ownership: the general polygon references attributeSet and releases the
+ * set the vertex held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_SetVertexAttributeSet(TQ3GeometryObject generalPolygon,
+                                                                  unsigned long contourIndex,
+                                                                  unsigned long pointIndex,
+                                                                  TQ3AttributeSet attributeSet);
+
+/**
+ * Replaces the shape hint of a retained general polygon.
+ *
+ * @return kQ3Success, or kQ3Failure with the general polygon unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      generalPolygon is NULL.
+ *   kQ3ErrorInvalidObject      generalPolygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  generalPolygon is not a general polygon.
+ *   kQ3ErrorInvalidParameter   shapeHint is none of the enumeration's values.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_SetShapeHint(TQ3GeometryObject generalPolygon,
+                                                         TQ3GeneralPolygonShapeHint shapeHint);
+
+/**
+ * Reads the shape hint of a retained general polygon.
+ *
+ * @return kQ3Success, or kQ3Failure with *shapeHint unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      generalPolygon or shapeHint is NULL.
+ *   kQ3ErrorInvalidObject      generalPolygon is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  generalPolygon is not a general polygon.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GeneralPolygon_GetShapeHint(TQ3GeometryObject generalPolygon,
+                                                         TQ3GeneralPolygonShapeHint *shapeHint);
+
+/* ---- Polyhedron --------------------------------------------------------- */
+
+/* Which sides of a polyhedron triangle the wireframe draws (edgeFlag). */
+enum TQ3PolyhedronEdgeMasks {
+    kQ3PolyhedronEdgeNone = 0,
+    kQ3PolyhedronEdge01 = 1 << 0,
+    kQ3PolyhedronEdge12 = 1 << 1,
+    kQ3PolyhedronEdge20 = 1 << 2,
+    kQ3PolyhedronEdgeAll = kQ3PolyhedronEdge01 | kQ3PolyhedronEdge12 | kQ3PolyhedronEdge20
+};
+typedef enum TQ3PolyhedronEdgeMasks TQ3PolyhedronEdgeMasks;
+
+typedef unsigned long TQ3PolyhedronEdge;
+
+/*
+ * An edge of a polyhedron, between two of its vertices, with the triangles
+ * on either side (kQ3ArrayIndexNULL where there is none) and its attribute
+ * set or NULL.
+ */
+struct TQ3PolyhedronEdgeData {
+    unsigned long vertexIndices[2];
+    unsigned long triangleIndices[2];
+    TQ3AttributeSet edgeAttributeSet;
+};
+typedef struct TQ3PolyhedronEdgeData TQ3PolyhedronEdgeData;
+
+/*
+ * A triangle of a polyhedron: three vertex indices (its front is the side
+ * from which they run counterclockwise), the mask of the sides the wireframe
+ * draws, and its attribute set or NULL.
+ */
+struct TQ3PolyhedronTriangleData {
+    unsigned long vertexIndices[3];
+    TQ3PolyhedronEdge edgeFlag;
+    TQ3AttributeSet triangleAttributeSet;
+};
+typedef struct TQ3PolyhedronTriangleData TQ3PolyhedronTriangleData;
+
+/*
+ * A polyhedron: vertices shared by triangles, optional edges, and its
+ * attribute set or NULL. A vertex's attributes win over its triangle's. The
+ * interactive renderer fills the triangles; the wireframe renderer draws
+ * the sides each triangle's edgeFlag names and every edge in edges, an
+ * edge's attribute set colouring it where its vertices have no colour.
+ *
+ * The rules a TQ3PolyhedronData must obey wherever one is accepted, checked
+ * in this order:
+ *   vertices and triangles are not NULL; edges is
+ *     not NULL when numEdges > 0                    kQ3ErrorNULLParameter
+ *   numVertices >= 3 and numTriangles >= 1
+ *                                kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   numVertices, numEdges, numTriangles
+ *     <= kQ3GeometryMaxArrayCount                   kQ3ErrorParameterOutOfRange
+ *   every coordinate is finite                      kQ3ErrorInvalidData
+ *   every triangle's vertex indices are below
+ *     numVertices, its edgeFlag within
+ *     kQ3PolyhedronEdgeAll                          kQ3ErrorInvalidData
+ *   every edge's vertex indices are below
+ *     numVertices, its triangle indices below
+ *     numTriangles or kQ3ArrayIndexNULL             kQ3ErrorInvalidData
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3PolyhedronData {
+    unsigned long numVertices;
+    TQ3Vertex3D *vertices;
+    unsigned long numEdges;
+    TQ3PolyhedronEdgeData *edges;
+    unsigned long numTriangles;
+    TQ3PolyhedronTriangleData *triangles;
+    TQ3AttributeSet polyhedronAttributeSet;
+};
+typedef struct TQ3PolyhedronData TQ3PolyhedronData;
+
+/**
+ * Creates a retained polyhedron from a copy of polyhedronData (the data
+ * calls at the top of this header).
+ *
+ * @return the new polyhedron, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polyhedronData is NULL.
+ *   then the codes of the TQ3PolyhedronData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the polyhedron cannot be allocated.
+ *
+ * Ownership: the caller owns the new polyhedron's one reference. The
+ * polyhedron takes its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Polyhedron_New(const TQ3PolyhedronData *polyhedronData);
+
+/**
+ * Draws (or bounds) a polyhedron without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polyhedronData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3PolyhedronData rules, in their order.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_Submit(const TQ3PolyhedronData *polyhedronData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained polyhedron with a copy of polyhedronData.
+ *
+ * @return kQ3Success, or kQ3Failure with the polyhedron unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polyhedron or polyhedronData is NULL.
+ *   kQ3ErrorInvalidObject      polyhedron is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  polyhedron is not a polyhedron.
+ *   then the codes of the TQ3PolyhedronData rules, in their order.
+ *
+ * Ownership: the polyhedron references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_SetData(TQ3GeometryObject polyhedron,
+                                                const TQ3PolyhedronData *polyhedronData);
+
+/**
+ * Copies the data of a retained polyhedron into polyhedronData (newly
+ * allocated arrays).
+ *
+ * @return kQ3Success, or kQ3Failure with *polyhedronData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polyhedron or polyhedronData is NULL.
+ *   kQ3ErrorInvalidObject      polyhedron is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  polyhedron is not a polyhedron.
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the caller owns the arrays and a new reference to every
+ * attribute set in the result, and gives them back with
+ * Q3Polyhedron_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_GetData(TQ3GeometryObject polyhedron, TQ3PolyhedronData *polyhedronData);
+
+/**
+ * Releases what Q3Polyhedron_GetData put in polyhedronData: the attribute
+ * set references and the arrays; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      polyhedronData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_EmptyData(TQ3PolyhedronData *polyhedronData);
+
+/**
+ * Moves vertex index of a retained polyhedron.
+ *
+ * @return kQ3Success, or kQ3Failure with the polyhedron unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyhedron or point is NULL.
+ *   kQ3ErrorInvalidObject        polyhedron is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyhedron is not a polyhedron.
+ *   kQ3ErrorParameterOutOfRange  index is not below numVertices.
+ *   kQ3ErrorInvalidData          a coordinate of *point is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_SetVertexPosition(TQ3GeometryObject polyhedron, unsigned long index,
+                                                          const TQ3Point3D *point);
+
+/**
+ * Reads the position of vertex index of a retained polyhedron.
+ *
+ * @return kQ3Success, or kQ3Failure with *point unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyhedron or point is NULL.
+ *   kQ3ErrorInvalidObject        polyhedron is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyhedron is not a polyhedron.
+ *   kQ3ErrorParameterOutOfRange  index is not below numVertices.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_GetVertexPosition(TQ3GeometryObject polyhedron, unsigned long index,
+                                                          TQ3Point3D *point);
+
+/**
+ * Replaces the attribute set of vertex index of a retained polyhedron; NULL
+ * removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the polyhedron unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyhedron is NULL.
+ *   kQ3ErrorInvalidObject        polyhedron or attributeSet is not a live Q3
+ *                                object.
+ *   kQ3ErrorInvalidObjectType    polyhedron is not a polyhedron, or
+ *                                attributeSet is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  index is not below numVertices.
+ *
+ * Ownership: the polyhedron references attributeSet and releases the set the
+ * vertex held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_SetVertexAttributeSet(TQ3GeometryObject polyhedron, unsigned long index,
+                                                              TQ3AttributeSet attributeSet);
+
+/**
+ * Reads the attribute set of vertex index of a retained polyhedron (NULL
+ * when it has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyhedron or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject        polyhedron is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyhedron is not a polyhedron.
+ *   kQ3ErrorParameterOutOfRange  index is not below numVertices.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_GetVertexAttributeSet(TQ3GeometryObject polyhedron, unsigned long index,
+                                                              TQ3AttributeSet *attributeSet);
+
+/**
+ * Copies triangle triangleIndex of a retained polyhedron into triangleData.
+ *
+ * @return kQ3Success, or kQ3Failure with *triangleData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyhedron or triangleData is NULL.
+ *   kQ3ErrorInvalidObject        polyhedron is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyhedron is not a polyhedron.
+ *   kQ3ErrorParameterOutOfRange  triangleIndex is not below numTriangles.
+ *
+ * Ownership: the triangle's attribute set, if any, is a new reference for
+ * the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_GetTriangleData(TQ3GeometryObject polyhedron, unsigned long triangleIndex,
+                                                        TQ3PolyhedronTriangleData *triangleData);
+
+/**
+ * Replaces triangle triangleIndex of a retained polyhedron with a copy of
+ * triangleData, which must obey the triangle rules of TQ3PolyhedronData.
+ *
+ * @return kQ3Success, or kQ3Failure with the polyhedron unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyhedron or triangleData is NULL.
+ *   kQ3ErrorInvalidObject        polyhedron, or the triangle's attribute
+ *                                set, is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyhedron is not a polyhedron, or the
+ *                                triangle's set is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  triangleIndex is not below numTriangles.
+ *   kQ3ErrorInvalidData          a vertex index is not below numVertices, or
+ *                                edgeFlag has bits outside
+ *                                kQ3PolyhedronEdgeAll.
+ *
+ * Ownership: the polyhedron references the triangle's set and releases the
+ * one the triangle held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_SetTriangleData(TQ3GeometryObject polyhedron, unsigned long triangleIndex,
+                                                        const TQ3PolyhedronTriangleData *triangleData);
+
+/**
+ * Copies edge edgeIndex of a retained polyhedron into edgeData.
+ *
+ * @return kQ3Success, or kQ3Failure with *edgeData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyhedron or edgeData is NULL.
+ *   kQ3ErrorInvalidObject        polyhedron is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyhedron is not a polyhedron.
+ *   kQ3ErrorParameterOutOfRange  edgeIndex is not below numEdges.
+ *
+ * Ownership: the edge's attribute set, if any, is a new reference for the
+ * caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_GetEdgeData(TQ3GeometryObject polyhedron, unsigned long edgeIndex,
+                                                    TQ3PolyhedronEdgeData *edgeData);
+
+/**
+ * Replaces edge edgeIndex of a retained polyhedron with a copy of edgeData,
+ * which must obey the edge rules of TQ3PolyhedronData.
+ *
+ * @return kQ3Success, or kQ3Failure with the polyhedron unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        polyhedron or edgeData is NULL.
+ *   kQ3ErrorInvalidObject        polyhedron, or the edge's attribute set, is
+ *                                not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    polyhedron is not a polyhedron, or the
+ *                                edge's set is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  edgeIndex is not below numEdges.
+ *   kQ3ErrorInvalidData          a vertex index is not below numVertices, or
+ *                                a triangle index neither below numTriangles
+ *                                nor kQ3ArrayIndexNULL.
+ *
+ * Ownership: the polyhedron references the edge's set and releases the one
+ * the edge held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Polyhedron_SetEdgeData(TQ3GeometryObject polyhedron, unsigned long edgeIndex,
+                                                    const TQ3PolyhedronEdgeData *edgeData);
+
+/* ---- TriGrid ------------------------------------------------------------ */
+
+/*
+ * A triangle grid: numRows x numColumns vertices, row after row
+ * (vertices[row * numColumns + column]), each cell of four neighbours cut
+ * into two triangles, the facets. The cut alternates from column to column,
+ * as in QuickDraw 3D: in even columns the diagonal runs from (row, column + 1)
+ * to (row + 1, column), in odd columns from (row, column) to
+ * (row + 1, column + 1). Cell (row, column) has facets 2k and 2k + 1 with
+ * k = row * (numColumns - 1) + column: in even columns
+ *   (row, c) (row, c + 1) (row + 1, c) and (row + 1, c) (row, c + 1) (row + 1, c + 1),
+ * in odd columns
+ *   (row, c) (row + 1, c + 1) (row + 1, c) and (row, c) (row, c + 1) (row + 1, c + 1).
+ * facetAttributeSet is NULL or 2 (numRows - 1) (numColumns - 1) sets (each
+ * may be NULL); a vertex's attributes win over its facet's. The wireframe
+ * renderer draws every side of every facet.
+ *
+ * The rules a TQ3TriGridData must obey wherever one is accepted, checked in
+ * this order:
+ *   vertices is not NULL                            kQ3ErrorNULLParameter
+ *   numRows >= 2 and numColumns >= 2
+ *                                kQ3ErrorGeometryInsufficientNumberOfPoints
+ *   numRows x numColumns <= kQ3GeometryMaxArrayCount
+ *                                                   kQ3ErrorParameterOutOfRange
+ *   every coordinate is finite                      kQ3ErrorInvalidData
+ *   every attribute set given is a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3TriGridData {
+    unsigned long numRows;
+    unsigned long numColumns;
+    TQ3Vertex3D *vertices;
+    TQ3AttributeSet *facetAttributeSet;
+    TQ3AttributeSet triGridAttributeSet;
+};
+typedef struct TQ3TriGridData TQ3TriGridData;
+
+/**
+ * Creates a retained triangle grid from a copy of triGridData (the data
+ * calls at the top of this header).
+ *
+ * @return the new grid, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triGridData is NULL.
+ *   then the codes of the TQ3TriGridData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the grid cannot be allocated.
+ *
+ * Ownership: the caller owns the new grid's one reference. The grid takes
+ * its own reference to every attribute set given.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3TriGrid_New(const TQ3TriGridData *triGridData);
+
+/**
+ * Draws (or bounds) a triangle grid without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triGridData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3TriGridData rules, in their order.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_Submit(const TQ3TriGridData *triGridData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained triangle grid with a copy of triGridData.
+ *
+ * @return kQ3Success, or kQ3Failure with the grid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triGrid or triGridData is NULL.
+ *   kQ3ErrorInvalidObject      triGrid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  triGrid is not a triangle grid.
+ *   then the codes of the TQ3TriGridData rules, in their order.
+ *
+ * Ownership: the grid references the attribute sets given and releases
+ * those it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_SetData(TQ3GeometryObject triGrid, const TQ3TriGridData *triGridData);
+
+/**
+ * Copies the data of a retained triangle grid into triGridData (newly
+ * allocated arrays).
+ *
+ * @return kQ3Success, or kQ3Failure with *triGridData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triGrid or triGridData is NULL.
+ *   kQ3ErrorInvalidObject      triGrid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  triGrid is not a triangle grid.
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the caller owns the arrays and a new reference to every
+ * attribute set in the result, and gives them back with Q3TriGrid_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_GetData(TQ3GeometryObject triGrid, TQ3TriGridData *triGridData);
+
+/**
+ * Releases what Q3TriGrid_GetData put in triGridData: the attribute set
+ * references and the arrays; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      triGridData is NULL.
+ *   kQ3ErrorInvalidObject      an attribute set in it is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  an attribute set in it is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_EmptyData(TQ3TriGridData *triGridData);
+
+/**
+ * Reads the position of the vertex at rowIndex, columnIndex of a retained
+ * triangle grid.
+ *
+ * @return kQ3Success, or kQ3Failure with *position unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triGrid or position is NULL.
+ *   kQ3ErrorInvalidObject        triGrid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    triGrid is not a triangle grid.
+ *   kQ3ErrorParameterOutOfRange  rowIndex is not below numRows, or
+ *                                columnIndex not below numColumns.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_GetVertexPosition(TQ3GeometryObject triGrid, unsigned long rowIndex,
+                                                       unsigned long columnIndex, TQ3Point3D *position);
+
+/**
+ * Moves the vertex at rowIndex, columnIndex of a retained triangle grid.
+ *
+ * @return kQ3Success, or kQ3Failure with the grid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triGrid or position is NULL.
+ *   kQ3ErrorInvalidObject        triGrid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    triGrid is not a triangle grid.
+ *   kQ3ErrorParameterOutOfRange  rowIndex or columnIndex is out of range.
+ *   kQ3ErrorInvalidData          a coordinate of *position is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_SetVertexPosition(TQ3GeometryObject triGrid, unsigned long rowIndex,
+                                                       unsigned long columnIndex, const TQ3Point3D *position);
+
+/**
+ * Reads the attribute set of the vertex at rowIndex, columnIndex of a
+ * retained triangle grid (NULL when it has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *attributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triGrid or attributeSet is NULL.
+ *   kQ3ErrorInvalidObject        triGrid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    triGrid is not a triangle grid.
+ *   kQ3ErrorParameterOutOfRange  rowIndex or columnIndex is out of range.
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_GetVertexAttributeSet(TQ3GeometryObject triGrid, unsigned long rowIndex,
+                                                           unsigned long columnIndex, TQ3AttributeSet *attributeSet);
+
+/**
+ * Replaces the attribute set of the vertex at rowIndex, columnIndex of a
+ * retained triangle grid; NULL removes it.
+ *
+ * @return kQ3Success, or kQ3Failure with the grid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triGrid is NULL.
+ *   kQ3ErrorInvalidObject        triGrid or attributeSet is not a live Q3
+ *                                object.
+ *   kQ3ErrorInvalidObjectType    triGrid is not a triangle grid, or
+ *                                attributeSet is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  rowIndex or columnIndex is out of range.
+ *
+ * Ownership: the grid references attributeSet and releases the set the
+ * vertex held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_SetVertexAttributeSet(TQ3GeometryObject triGrid, unsigned long rowIndex,
+                                                           unsigned long columnIndex, TQ3AttributeSet attributeSet);
+
+/**
+ * Reads the attribute set of facet faceIndex of a retained triangle grid
+ * (NULL when it has none).
+ *
+ * @return kQ3Success, or kQ3Failure with *facetAttributeSet unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triGrid or facetAttributeSet is NULL.
+ *   kQ3ErrorInvalidObject        triGrid is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    triGrid is not a triangle grid.
+ *   kQ3ErrorParameterOutOfRange  faceIndex is not below
+ *                                2 (numRows - 1) (numColumns - 1).
+ *
+ * Ownership: a set returned is a new reference for the caller to dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_GetFacetAttributeSet(TQ3GeometryObject triGrid, unsigned long faceIndex,
+                                                          TQ3AttributeSet *facetAttributeSet);
+
+/**
+ * Replaces the attribute set of facet faceIndex of a retained triangle grid;
+ * NULL removes it. A grid without facet sets gets an array of them, the
+ * others NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with the grid unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        triGrid is NULL.
+ *   kQ3ErrorInvalidObject        triGrid or facetAttributeSet is not a live
+ *                                Q3 object.
+ *   kQ3ErrorInvalidObjectType    triGrid is not a triangle grid, or
+ *                                facetAttributeSet is not an attribute set.
+ *   kQ3ErrorParameterOutOfRange  faceIndex is not below
+ *                                2 (numRows - 1) (numColumns - 1).
+ *   kQ3ErrorOutOfMemory          the array of facet sets cannot be allocated.
+ *
+ * Ownership: the grid references facetAttributeSet and releases the set the
+ * facet held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_SetFacetAttributeSet(TQ3GeometryObject triGrid, unsigned long faceIndex,
+                                                          TQ3AttributeSet facetAttributeSet);
+
+/* ---- Marker ------------------------------------------------------------- */
+
+/*
+ * A marker: a bitmap drawn in screen space, its pixels parallel to the
+ * pane's whatever the camera, at the image of location. The bitmap's top
+ * left pixel lies xOffset pixels to the right of and yOffset pixels below
+ * the pixel location projects to (negative offsets go left and up). Each set
+ * bit is drawn in the marker's diffuse colour (its attribute set's, else the
+ * view's state); clear bits leave the image alone. The interactive renderer
+ * depth-tests the whole bitmap at location's depth. A marker whose location
+ * is behind the camera or outside its hither and yon planes is not drawn;
+ * its bound is location.
+ *
+ * bitmap.image holds height rows of rowBytes bytes, top row first; within a
+ * row, pixel x is bit x % 8 of byte x / 8, counted from the most
+ * significant bit when bitOrder is kQ3EndianBig and from the least
+ * significant when it is kQ3EndianLittle.
+ *
+ * The rules a TQ3MarkerData must obey wherever one is accepted, checked in
+ * this order:
+ *   bitmap.image is not NULL                        kQ3ErrorNULLParameter
+ *   location's coordinates are finite               kQ3ErrorInvalidData
+ *   bitmap.width and bitmap.height are above 0, and
+ *     bitmap.rowBytes * 8 >= bitmap.width           kQ3ErrorInvalidData
+ *   bitmap.bitOrder is kQ3EndianBig or
+ *     kQ3EndianLittle                               kQ3ErrorInvalidData
+ *   bitmap.rowBytes * bitmap.height
+ *     <= kQ3GeometryMaxArrayCount                   kQ3ErrorParameterOutOfRange
+ *   markerAttributeSet is NULL or a live attribute
+ *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3MarkerData {
+    TQ3Point3D location;
+    long xOffset;
+    long yOffset;
+    TQ3Bitmap bitmap;
+    TQ3AttributeSet markerAttributeSet;
+};
+typedef struct TQ3MarkerData TQ3MarkerData;
+
+/**
+ * Creates a retained marker from a copy of markerData, its bitmap bits
+ * included (the data calls at the top of this header).
+ *
+ * @return the new marker, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      markerData is NULL.
+ *   then the codes of the TQ3MarkerData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the marker cannot be allocated.
+ *
+ * Ownership: the caller owns the new marker's one reference. The marker
+ * takes its own reference to its attribute set.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3Marker_New(const TQ3MarkerData *markerData);
+
+/**
+ * Draws (or bounds) a marker without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      markerData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3MarkerData rules, in their order.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_Submit(const TQ3MarkerData *markerData, TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained marker with a copy of markerData.
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry or markerData is NULL.
+ *   kQ3ErrorInvalidObject      geometry is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a marker.
+ *   then the codes of the TQ3MarkerData rules, in their order.
+ *
+ * Ownership: the marker references the attribute set given and releases the
+ * one it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_SetData(TQ3GeometryObject geometry, const TQ3MarkerData *markerData);
+
+/**
+ * Copies the data of a retained marker into markerData (a newly allocated
+ * copy of the bitmap's bits).
+ *
+ * @return kQ3Success, or kQ3Failure with *markerData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry or markerData is NULL.
+ *   kQ3ErrorInvalidObject      geometry is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a marker.
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the caller owns the bits and a new reference to the attribute
+ * set, and gives them back with Q3Marker_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_GetData(TQ3GeometryObject geometry, TQ3MarkerData *markerData);
+
+/**
+ * Releases what Q3Marker_GetData put in markerData: the attribute set
+ * reference and the bitmap's bits; the pointers become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      markerData is NULL.
+ *   kQ3ErrorInvalidObject      its attribute set is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  its attribute set is not an attribute set.
+ *
+ * Ownership: consumes what the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_EmptyData(TQ3MarkerData *markerData);
+
+/**
+ * Reads the location of a retained marker.
+ *
+ * @return kQ3Success, or kQ3Failure with *location unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      marker or location is NULL.
+ *   kQ3ErrorInvalidObject      marker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  marker is not a marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_GetPosition(TQ3GeometryObject marker, TQ3Point3D *location);
+
+/**
+ * Moves a retained marker's location.
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      marker or location is NULL.
+ *   kQ3ErrorInvalidObject      marker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  marker is not a marker.
+ *   kQ3ErrorInvalidData        a coordinate of *location is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_SetPosition(TQ3GeometryObject marker, const TQ3Point3D *location);
+
+/**
+ * Reads the horizontal offset, in pixels, of a retained marker's bitmap.
+ *
+ * @return kQ3Success, or kQ3Failure with *xOffset unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      marker or xOffset is NULL.
+ *   kQ3ErrorInvalidObject      marker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  marker is not a marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_GetXOffset(TQ3GeometryObject marker, long *xOffset);
+
+/**
+ * Replaces the horizontal offset, in pixels, of a retained marker's bitmap
+ * (any value).
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      marker is NULL.
+ *   kQ3ErrorInvalidObject      marker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  marker is not a marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_SetXOffset(TQ3GeometryObject marker, long xOffset);
+
+/**
+ * Reads the vertical offset, in pixels (positive down), of a retained
+ * marker's bitmap.
+ *
+ * @return kQ3Success, or kQ3Failure with *yOffset unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      marker or yOffset is NULL.
+ *   kQ3ErrorInvalidObject      marker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  marker is not a marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_GetYOffset(TQ3GeometryObject marker, long *yOffset);
+
+/**
+ * Replaces the vertical offset, in pixels (positive down), of a retained
+ * marker's bitmap (any value).
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      marker is NULL.
+ *   kQ3ErrorInvalidObject      marker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  marker is not a marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_SetYOffset(TQ3GeometryObject marker, long yOffset);
+
+/**
+ * Copies a retained marker's bitmap into bitmap (a newly allocated copy of
+ * its bits).
+ *
+ * @return kQ3Success, or kQ3Failure with *bitmap unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      marker or bitmap is NULL.
+ *   kQ3ErrorInvalidObject      marker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  marker is not a marker.
+ *   kQ3ErrorOutOfMemory        the copy cannot be allocated.
+ *
+ * Ownership: the caller owns the bits and gives them back with
+ * Q3Bitmap_Empty (QD3D.h).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_GetBitmap(TQ3GeometryObject marker, TQ3Bitmap *bitmap);
+
+/**
+ * Replaces a retained marker's bitmap with a copy of bitmap, which must obey
+ * the bitmap rules of TQ3MarkerData.
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized       Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter        marker, bitmap or bitmap->image is NULL.
+ *   kQ3ErrorInvalidObject        marker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType    marker is not a marker.
+ *   kQ3ErrorInvalidData          the sizes or bitOrder break the rules.
+ *   kQ3ErrorParameterOutOfRange  rowBytes * height is above
+ *                                kQ3GeometryMaxArrayCount.
+ *   kQ3ErrorOutOfMemory          the copy cannot be allocated.
+ *
+ * Ownership: the marker keeps its own copy of the bits.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Marker_SetBitmap(TQ3GeometryObject marker, const TQ3Bitmap *bitmap);
 
 #ifdef __cplusplus
 }

@@ -8,6 +8,7 @@
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DStyle.h"
+#include "QD3DTransform.h"
 #include "QD3DView.h"
 
 #include <math.h>
@@ -769,6 +770,279 @@ static TQ3Status submit_cylinder_patch_wireframe(TQ3ViewObject view)
     return submit_patch_wireframe(view, q3scene_submit_cylinder_patch, rgb(0.45f, 0.65f, 1.0f));
 }
 
+/* ---- General polygons, polyhedra, triangle grids, markers ---------------- */
+
+/* Square contour of half-size h around (cx, cy) in the plane z = 0,
+ * counterclockwise, into v[0..3]. */
+static void set_square(TQ3Vertex3D *v, float cx, float cy, float h)
+{
+    memset(v, 0, 4 * sizeof *v);
+    v[0].point = point3(cx - h, cy - h, 0.0f);
+    v[1].point = point3(cx + h, cy - h, 0.0f);
+    v[2].point = point3(cx + h, cy + h, 0.0f);
+    v[3].point = point3(cx - h, cy + h, 0.0f);
+}
+
+/* Left: an orange square with a square hole holding a small island (three
+ * nested contours, even-odd). Right: a concave star-like outline whose
+ * vertices run from red to blue, with a triangular hole. */
+static TQ3Status submit_general_polygons_into(TQ3ViewObject view)
+{
+    TQ3Vertex3D outer[4], hole[4], island[4], star[8], notch[3];
+    TQ3GeneralPolygonContourData left[3], right[2];
+    TQ3GeneralPolygonData data;
+    TQ3AttributeSet orange = color_set(rgb(0.95f, 0.55f, 0.15f));
+    TQ3AttributeSet corner[8];
+    TQ3Status status = kQ3Success;
+    int i;
+
+    set_square(outer, -1.3f, 0.0f, 1.0f);
+    set_square(hole, -1.3f, 0.0f, 0.6f);
+    set_square(island, -1.3f, 0.0f, 0.25f);
+    left[0].numVertices = 4;
+    left[0].vertices = outer;
+    left[1].numVertices = 4;
+    left[1].vertices = hole;
+    left[2].numVertices = 4;
+    left[2].vertices = island;
+    memset(&data, 0, sizeof data);
+    data.numContours = 3;
+    data.contours = left;
+    data.shapeHint = kQ3GeneralPolygonShapeHintComplex;
+    data.generalPolygonAttributeSet = orange;
+    if (submit_new(Q3GeneralPolygon_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+
+    memset(star, 0, sizeof star);
+    for (i = 0; i < 8; i++) {
+        const float angle = 3.14159265f * 2.0f * (float)i / 8.0f;
+        const float radius = (i % 2 == 0) ? 1.05f : 0.55f;
+        star[i].point = point3(1.4f + radius * cosf(angle), radius * sinf(angle), 0.0f);
+        corner[i] = color_set(rgb(1.0f - (float)i / 7.0f, 0.2f, (float)i / 7.0f));
+        star[i].attributeSet = corner[i];
+    }
+    memset(notch, 0, sizeof notch);
+    notch[0].point = point3(1.25f, -0.2f, 0.0f);
+    notch[1].point = point3(1.6f, -0.2f, 0.0f);
+    notch[2].point = point3(1.4f, 0.2f, 0.0f);
+    right[0].numVertices = 8;
+    right[0].vertices = star;
+    right[1].numVertices = 3;
+    right[1].vertices = notch;
+    data.numContours = 2;
+    data.contours = right;
+    data.shapeHint = kQ3GeneralPolygonShapeHintConcave;
+    data.generalPolygonAttributeSet = NULL;
+    if (Q3GeneralPolygon_Submit(&data, view) != kQ3Success)
+        status = kQ3Failure;
+    for (i = 0; i < 8; i++)
+        dispose(corner[i]);
+    dispose(orange);
+    return status;
+}
+
+static TQ3Status submit_general_polygons(TQ3ViewObject view)
+{
+    return submit_general_polygons_into(view);
+}
+
+/* A square pyramid whose four sides are red, green, blue and yellow, its
+ * base purple; the wireframe draws the outline of each face (the base's
+ * diagonal is left out by the edge flags) and its apex edges are white. */
+static TQ3Status submit_pyramid(TQ3ViewObject view, float x, float y)
+{
+    TQ3Vertex3D vertices[5];
+    TQ3PolyhedronTriangleData triangles[6];
+    TQ3PolyhedronEdgeData edges[4];
+    TQ3PolyhedronData data;
+    TQ3AttributeSet sides[5];
+    TQ3AttributeSet white = color_set(rgb(1.0f, 1.0f, 1.0f));
+    static const unsigned long kFaces[6][3] = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 3, 2}, {0, 2, 1}};
+    static const TQ3PolyhedronEdge kFlags[6] = {kQ3PolyhedronEdge01, kQ3PolyhedronEdge01, kQ3PolyhedronEdge01,
+                                                kQ3PolyhedronEdge01, kQ3PolyhedronEdge01 | kQ3PolyhedronEdge12,
+                                                kQ3PolyhedronEdge20 | kQ3PolyhedronEdge12};
+    TQ3Status status;
+    int i, k;
+
+    memset(vertices, 0, sizeof vertices);
+    vertices[0].point = point3(x - 0.8f, y - 0.7f, 0.8f);
+    vertices[1].point = point3(x + 0.8f, y - 0.7f, 0.8f);
+    vertices[2].point = point3(x + 0.8f, y - 0.7f, -0.8f);
+    vertices[3].point = point3(x - 0.8f, y - 0.7f, -0.8f);
+    vertices[4].point = point3(x, y + 0.9f, 0.0f);
+    sides[0] = color_set(rgb(0.90f, 0.25f, 0.25f));
+    sides[1] = color_set(rgb(0.25f, 0.80f, 0.30f));
+    sides[2] = color_set(rgb(0.25f, 0.45f, 0.95f));
+    sides[3] = color_set(rgb(0.95f, 0.85f, 0.25f));
+    sides[4] = color_set(rgb(0.70f, 0.35f, 0.85f));
+    for (i = 0; i < 6; i++) {
+        for (k = 0; k < 3; k++)
+            triangles[i].vertexIndices[k] = kFaces[i][k];
+        triangles[i].edgeFlag = kFlags[i];
+        triangles[i].triangleAttributeSet = sides[i < 4 ? i : 4];
+    }
+    for (i = 0; i < 4; i++) {
+        edges[i].vertexIndices[0] = (unsigned long)i;
+        edges[i].vertexIndices[1] = 4;
+        edges[i].triangleIndices[0] = (unsigned long)i;
+        edges[i].triangleIndices[1] = (unsigned long)((i + 3) % 4);
+        edges[i].edgeAttributeSet = white;
+    }
+    memset(&data, 0, sizeof data);
+    data.numVertices = 5;
+    data.vertices = vertices;
+    data.numEdges = 4;
+    data.edges = edges;
+    data.numTriangles = 6;
+    data.triangles = triangles;
+    status = submit_new(Q3Polyhedron_New(&data), view);
+    for (i = 0; i < 5; i++)
+        dispose(sides[i]);
+    dispose(white);
+    return status;
+}
+
+/* A 4 x 6 grid over a gentle wave, its facets alternately cyan and pink,
+ * one corner vertex yellow. */
+static TQ3Status submit_wave_grid(TQ3ViewObject view, float x, float y)
+{
+    enum { ROWS = 4, COLUMNS = 6, FACETS = 2 * (ROWS - 1) * (COLUMNS - 1) };
+    TQ3Vertex3D vertices[ROWS * COLUMNS];
+    TQ3AttributeSet facets[FACETS];
+    TQ3AttributeSet cyan = color_set(rgb(0.30f, 0.85f, 0.90f));
+    TQ3AttributeSet pink = color_set(rgb(0.95f, 0.45f, 0.70f));
+    TQ3AttributeSet yellow = color_set(rgb(1.0f, 0.95f, 0.2f));
+    TQ3TriGridData data;
+    TQ3Status status;
+    int row, column, i;
+
+    memset(vertices, 0, sizeof vertices);
+    for (row = 0; row < ROWS; row++)
+        for (column = 0; column < COLUMNS; column++)
+            vertices[row * COLUMNS + column].point =
+                point3(x + 0.4f * (float)column - 1.0f, y - 0.45f * (float)row + 0.7f,
+                       0.25f * sinf(1.3f * (float)column) * cosf(0.9f * (float)row));
+    vertices[0].attributeSet = yellow;
+    for (i = 0; i < FACETS; i++)
+        facets[i] = (i % 2 == 0) ? cyan : pink;
+    memset(&data, 0, sizeof data);
+    data.numRows = ROWS;
+    data.numColumns = COLUMNS;
+    data.vertices = vertices;
+    data.facetAttributeSet = facets;
+    status = submit_new(Q3TriGrid_New(&data), view);
+    dispose(cyan);
+    dispose(pink);
+    dispose(yellow);
+    return status;
+}
+
+static TQ3Status submit_polyhedron_and_grid(TQ3ViewObject view)
+{
+    TQ3Status status = submit_pyramid(view, -1.3f, 0.0f);
+    if (submit_wave_grid(view, 1.4f, 0.0f) != kQ3Success)
+        status = kQ3Failure;
+    return status;
+}
+
+/* An 8 x 8 cross-hair bitmap (most significant bit first). */
+static const unsigned char kCross[8] = {0x18, 0x18, 0x18, 0xFF, 0xFF, 0x18, 0x18, 0x18};
+/* A 12 x 3 bar (two bytes a row, least significant bit first). */
+static const unsigned char kBar[6] = {0xFF, 0x0F, 0xFF, 0x0F, 0xFF, 0x0F};
+
+static void set_marker(TQ3MarkerData *data, TQ3Point3D at, long x, long y, const unsigned char *bits,
+                       unsigned long width, unsigned long height, unsigned long rowBytes, TQ3Endian order)
+{
+    memset(data, 0, sizeof *data);
+    data->location = at;
+    data->xOffset = x;
+    data->yOffset = y;
+    data->bitmap.image = (unsigned char *)bits;
+    data->bitmap.width = width;
+    data->bitmap.height = height;
+    data->bitmap.rowBytes = rowBytes;
+    data->bitmap.bitOrder = order;
+}
+
+/* Markers at the corners of a grey triangle: a red cross centred on the
+ * left corner, a green cross above and right of the top corner, a blue bar
+ * under the right corner, and a white cross on the nearer side of the
+ * triangle (drawn over it) and a yellow one behind it (hidden by it in the
+ * interactive renderer). */
+static TQ3Status submit_markers(TQ3ViewObject view)
+{
+    TQ3TriangleData triangle;
+    TQ3MarkerData data;
+    TQ3AttributeSet grey = color_set(rgb(0.5f, 0.5f, 0.55f));
+    TQ3AttributeSet red = color_set(rgb(0.95f, 0.2f, 0.2f));
+    TQ3AttributeSet green = color_set(rgb(0.2f, 0.9f, 0.3f));
+    TQ3AttributeSet blue = color_set(rgb(0.3f, 0.5f, 1.0f));
+    TQ3AttributeSet white = color_set(rgb(1.0f, 1.0f, 1.0f));
+    TQ3AttributeSet yellow = color_set(rgb(1.0f, 0.9f, 0.2f));
+    TQ3Status status = kQ3Success;
+
+    memset(&triangle, 0, sizeof triangle);
+    triangle.vertices[0].point = point3(-1.5f, -1.0f, 0.0f);
+    triangle.vertices[1].point = point3(1.5f, -1.0f, 0.0f);
+    triangle.vertices[2].point = point3(0.0f, 1.2f, 0.0f);
+    triangle.triangleAttributeSet = grey;
+    if (Q3Triangle_Submit(&triangle, view) != kQ3Success)
+        status = kQ3Failure;
+
+    set_marker(&data, triangle.vertices[0].point, -4, -4, kCross, 8, 8, 1, kQ3EndianBig);
+    data.markerAttributeSet = red;
+    if (submit_new(Q3Marker_New(&data), view) != kQ3Success)
+        status = kQ3Failure;
+    set_marker(&data, triangle.vertices[2].point, 6, -14, kCross, 8, 8, 1, kQ3EndianBig);
+    data.markerAttributeSet = green;
+    if (Q3Marker_Submit(&data, view) != kQ3Success)
+        status = kQ3Failure;
+    set_marker(&data, triangle.vertices[1].point, -6, 6, kBar, 12, 3, 2, kQ3EndianLittle);
+    data.markerAttributeSet = blue;
+    if (Q3Marker_Submit(&data, view) != kQ3Success)
+        status = kQ3Failure;
+    set_marker(&data, point3(-0.3f, 0.0f, 0.5f), -4, -4, kCross, 8, 8, 1, kQ3EndianBig);
+    data.markerAttributeSet = white;
+    if (Q3Marker_Submit(&data, view) != kQ3Success)
+        status = kQ3Failure;
+    set_marker(&data, point3(0.3f, 0.0f, -0.5f), -4, -4, kCross, 8, 8, 1, kQ3EndianBig);
+    data.markerAttributeSet = yellow;
+    if (Q3Marker_Submit(&data, view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(grey);
+    dispose(red);
+    dispose(green);
+    dispose(blue);
+    dispose(white);
+    dispose(yellow);
+    return status;
+}
+
+/* Everything above in one wireframe picture. */
+static TQ3Status submit_polygons_wireframe(TQ3ViewObject view)
+{
+    TQ3Status status = kQ3Success;
+    TQ3TransformObject shift;
+    TQ3Vector3D up = {0.0f, 1.4f, 0.0f};
+    TQ3Vector3D down = {0.0f, -2.8f, 0.0f};
+
+    if (Q3Push_Submit(view) != kQ3Success)
+        return kQ3Failure;
+    shift = Q3TranslateTransform_New(&up);
+    if (shift == NULL || Q3Object_Submit(shift, view) != kQ3Success ||
+        submit_general_polygons_into(view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(shift);
+    shift = Q3TranslateTransform_New(&down);
+    if (shift == NULL || Q3Object_Submit(shift, view) != kQ3Success ||
+        submit_polyhedron_and_grid(view) != kQ3Success)
+        status = kQ3Failure;
+    dispose(shift);
+    if (Q3Pop_Submit(view) != kQ3Success)
+        status = kQ3Failure;
+    return status;
+}
+
 /* ---- The scenes ---------------------------------------------------------- */
 
 static const Q3Scene kScenes[] = {
@@ -808,6 +1082,14 @@ static const Q3Scene kScenes[] = {
      kQ3RendererTypeWireFrame, {0.0f, 3.8f, 5.4f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_trimmed_patch_wireframe},
     {"patch_cylinder_wireframe", "A rational patch that is exactly half a cylinder, 16-pixel subdivision",
      kQ3RendererTypeWireFrame, {4.2f, 3.0f, 1.8f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_cylinder_patch_wireframe},
+    {"general_polygons", "GeneralPolygons: a square with a hole and an island; a concave star, red to blue, with a hole of white corners",
+     kQ3RendererTypeInteractive, {0.0f, 0.0f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_general_polygons},
+    {"polyhedron_trigrid", "A Polyhedron pyramid in its triangles' colours and a TriGrid wave in its facets' colours",
+     kQ3RendererTypeInteractive, {0.6f, 1.8f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_polyhedron_and_grid},
+    {"polygons_wireframe", "The general polygons, the polyhedron (edge flags, white edges) and the grid in wireframe",
+     kQ3RendererTypeWireFrame, {0.6f, 1.0f, 7.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_polygons_wireframe},
+    {"markers", "Markers in screen space at a triangle's corners; a white one in front of it, a yellow one hidden",
+     kQ3RendererTypeInteractive, {0.0f, 0.0f, 5.0f}, 0.75f, {0.12f, 0.12f, 0.16f}, submit_markers},
 };
 
 unsigned long q3scene_count(void)

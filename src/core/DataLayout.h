@@ -14,6 +14,7 @@
 //                                            a malloc'ed array and the
 //                                            expression that counts it
 //   optionalArray(...)                       the same, NULL allowed
+//   nested("bitmap", &S::bitmap)             a described struct inside S
 //   any type with the FieldKind members      (e.g. TriMesh's attribute arrays)
 //
 // Elements of arrays are either plain (trivially copyable, copied with
@@ -454,6 +455,28 @@ struct ArrayField {
     }
 };
 
+/// A struct inside the struct, described itself (a marker's TQ3Bitmap).
+template <class S, class E>
+struct NestedField {
+    const char* name;
+    E S::*member;
+
+    void check(const S& s, const Path& path) const { checkElement(s.*member, path.child(name)); }
+    void clear(S& s) const { clearElement(s.*member); }
+    template <class Policy>
+    void fill(S& dst, const S& src, Policy& policy, const Path& path) const
+    {
+        fillElement(dst.*member, src.*member, policy, path.child(name));
+    }
+    void release(S& s) const { releaseElement(s.*member); }
+    void checkHandles(const S& s, const Path& path) const { checkElementHandles(s.*member, path.child(name)); }
+    template <class F>
+    void forEachHandle(const S& s, F& f) const
+    {
+        forEachElementHandle(s.*member, f);
+    }
+};
+
 /// An array of object handles, each holding one reference (NULL entries
 /// allowed).
 template <class S, class C, class Count>
@@ -490,10 +513,11 @@ struct HandleArrayField {
     }
     void release(S& s) const
     {
+        // Counted first: a count may depend on whether the array is there.
+        const std::size_t n = count(s);
         TQ3Object* handles = std::exchange(s.*member, nullptr);
         if (handles == nullptr)
             return;
-        const std::size_t n = count(s);
         for (std::size_t i = 0; i < n; ++i)
             if (handles[i] != nullptr)
                 heldObject(handles[i])->releaseReference();
@@ -556,6 +580,12 @@ template <class S, class E, class Count>
 ArrayField<S, E, Count> optionalArray(const char* name, E* S::*member, Count count)
 {
     return {name, member, count, true};
+}
+
+template <class S, class E>
+NestedField<S, E> nested(const char* name, E S::*member)
+{
+    return {name, member};
 }
 
 template <class C, class S, class Count>

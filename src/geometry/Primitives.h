@@ -51,6 +51,22 @@ struct Strip {
     std::uint32_t count = 0;
 };
 
+/// A bitmap drawn in screen space at the image of one vertex (a marker):
+/// `height` rows of `rowBytes` bytes, top row first; pixel x of a row is bit
+/// x % 8 of byte x / 8, from the most significant bit unless lsbFirst. Its
+/// top left pixel is xOffset pixels right of and yOffset pixels below the
+/// pixel the vertex projects to. Set bits are drawn in the vertex's colour.
+struct ScreenBitmap {
+    std::uint32_t vertex = 0;
+    long xOffset = 0;
+    long yOffset = 0;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::size_t rowBytes = 0;
+    const unsigned char* bits = nullptr;
+    bool lsbFirst = false;
+};
+
 /// A decomposition as a set of borrowed arrays. Attribute arrays are null
 /// when no vertex has that attribute; otherwise they hold one entry per
 /// vertex, NaN where a vertex has none (VertexAttributes). Indices refer to
@@ -75,6 +91,9 @@ struct MeshView {
     /// outline of a polygon, not the diagonals its triangulation added).
     const std::uint32_t* edges = nullptr;
     std::size_t edgeCount = 0;
+    /// Bitmaps drawn in screen space (ScreenBitmap).
+    const ScreenBitmap* bitmaps = nullptr;
+    std::size_t bitmapCount = 0;
 };
 
 /// A decomposition that owns its arrays: what retained geometries cache.

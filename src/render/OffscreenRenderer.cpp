@@ -262,6 +262,7 @@ public:
                             const PixelRect& pane, const FrameOptions& options);
     RenderResult setMatrix(const std::array<float, 16>& matrix);
     RenderResult draw(const DrawRequest& request);
+    RenderResult drawBitmap(const float* anchor, const BitmapImage& image, const RgbColor& color);
     RenderResult setLighting(const LightingSetup& lighting);
     RenderResult setFaceOptions(const FaceOptions& faces);
     RenderResult endFrame();
@@ -631,6 +632,78 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
     return RenderResult::success();
 }
 
+RenderResult OffscreenRenderer::Impl::drawBitmap(const float* anchor, const BitmapImage& image,
+                                                 const RgbColor& color)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "drawBitmap called outside a frame");
+    if (anchor == nullptr)
+        return invalid("anchor pointer is NULL");
+    if (image.width == 0 || image.height == 0)
+        return RenderResult::success();
+    if (image.bits == nullptr)
+        return invalid("bitmap bits are NULL");
+    if (image.rowBytes < image.width / 8 + (image.width % 8 != 0 ? 1 : 0))
+        return invalid("bitmap rowBytes cannot hold its width");
+    const float rgb[3] = {color.r, color.g, color.b};
+    if (!allFinite(anchor, 3) || !allFinite(rgb, 3))
+        return invalid("bitmap anchor or colour has a NaN or infinite value");
+
+    // The anchor in clip space (row vector times the current matrix), then
+    // in pane pixels measured from the top left.
+    const std::array<float, 16> matrix = m_matrices[m_currentMatrix];
+    double clip[4];
+    for (int j = 0; j < 4; ++j)
+        clip[j] = double(anchor[0]) * matrix[j] + double(anchor[1]) * matrix[4 + j] +
+                  double(anchor[2]) * matrix[8 + j] + matrix[12 + j];
+    if (!(clip[3] > 0.0) || !(clip[2] >= -clip[3] && clip[2] <= clip[3]))
+        return RenderResult::success();
+    const double depth = clip[2] / clip[3];
+    const double px = (clip[0] / clip[3] + 1.0) * 0.5 * m_pane.width;
+    const double py = (1.0 - clip[1] / clip[3]) * 0.5 * m_pane.height;
+    constexpr double kFar = 1e12; // well past any pane, yet exact in an int64
+    if (!(std::fabs(px) < kFar && std::fabs(py) < kFar))
+        return RenderResult::success();
+    const std::int64_t left = std::int64_t(std::floor(px)) + image.xOffset;
+    const std::int64_t top = std::int64_t(std::floor(py)) + image.yOffset;
+    // Only the rows and columns that land in the pane.
+    const std::int64_t c0 = std::max<std::int64_t>(0, -left);
+    const std::int64_t c1 = std::min<std::int64_t>(image.width, std::int64_t(m_pane.width) - left);
+    const std::int64_t r0 = std::max<std::int64_t>(0, -top);
+    const std::int64_t r1 = std::min<std::int64_t>(image.height, std::int64_t(m_pane.height) - top);
+    if (c0 >= c1 || r0 >= r1)
+        return RenderResult::success();
+
+    std::vector<float> points;
+    for (std::int64_t r = r0; r < r1; ++r) {
+        const unsigned char* row = image.bits + std::size_t(r) * image.rowBytes;
+        for (std::int64_t c = c0; c < c1; ++c) {
+            const unsigned bit = unsigned(c % 8);
+            const unsigned mask = image.lsbFirst ? (1u << bit) : (0x80u >> bit);
+            if ((row[c / 8] & mask) == 0)
+                continue;
+            const double x = double(left + c) + 0.5, y = double(top + r) + 0.5;
+            points.push_back(float(x / m_pane.width * 2.0 - 1.0));
+            points.push_back(float(1.0 - y / m_pane.height * 2.0));
+            points.push_back(float(depth));
+        }
+    }
+    if (points.empty())
+        return RenderResult::success();
+    static const std::array<float, 16> kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    RenderResult result = setMatrix(kIdentity);
+    if (!result)
+        return result;
+    DrawRequest request;
+    request.primitive = Primitive::kPoints;
+    request.xyz = points.data();
+    request.vertexCount = points.size() / 3;
+    request.color = color;
+    result = draw(request);
+    const RenderResult restored = setMatrix(matrix);
+    return result ? restored : result;
+}
+
 void OffscreenRenderer::Impl::startFrameInGl()
 {
     const std::int64_t imageWidth = m_width;
@@ -934,6 +1007,15 @@ RenderResult OffscreenRenderer::drawPoints(const float* xyz, std::size_t count, 
 RenderResult OffscreenRenderer::drawTriangles(const float* xyz, std::size_t count, const RgbColor& color)
 {
     return drawGuarded(*m_impl, arrays(Primitive::kTriangles, xyz, nullptr, count, color, 1.0f, false));
+}
+
+RenderResult OffscreenRenderer::drawBitmap(const float* anchor, const BitmapImage& image, const RgbColor& color)
+{
+    try {
+        return m_impl->drawBitmap(anchor, image, color);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
 }
 
 RenderResult OffscreenRenderer::drawElements(DrawMode mode, const float* xyz, const float* rgb,

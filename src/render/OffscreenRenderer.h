@@ -37,6 +37,21 @@ struct FrameOptions {
     bool depthTest = false;
 };
 
+/// A 1-bit image drawn in screen space (a QuickDraw 3D marker): `height`
+/// rows of `rowBytes` bytes, top row first; pixel x of a row is bit x % 8 of
+/// byte x / 8, counted from the most significant bit unless lsbFirst. Its
+/// top left pixel lies xOffset pixels right of and yOffset pixels below the
+/// pixel its anchor projects to.
+struct BitmapImage {
+    const unsigned char* bits = nullptr;
+    std::size_t rowBytes = 0;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    bool lsbFirst = false;
+    long xOffset = 0;
+    long yOffset = 0;
+};
+
 /// The most lights a frame is lit by (kQ3ViewMaxLights).
 constexpr std::size_t kMaxLights = 32;
 
@@ -196,6 +211,16 @@ public:
     /// strip), with per-vertex colours as drawElements.
     RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count,
                             const RgbColor& color, bool smooth);
+
+    /// Draws the set bits of `image` as pixels of `color`, parallel to the
+    /// pane, placed by the image of `anchor` (3 floats) under the current
+    /// matrix and depth-tested (when the frame is) at its depth. Nothing is
+    /// drawn when the anchor is behind the eye or outside the depth range;
+    /// bits outside the pane are skipped, so the work is at most the pane's
+    /// pixels. Errors: kWrongState outside a frame; kInvalidArgument for a
+    /// NULL anchor, NULL bits with a non-empty image, rowBytes too small for
+    /// the width, or a non-finite anchor or colour; kOutOfMemory.
+    RenderResult drawBitmap(const float* anchor, const BitmapImage& image, const RgbColor& color);
 
     /// The lights for the frame's lit draws (kWrongState outside a frame;
     /// kInvalidArgument for more than kMaxLights or a non-finite value).

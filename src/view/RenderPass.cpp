@@ -190,6 +190,21 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
             throwIfFailed(m_target.drawPoints(m_scratch.data(), mesh.pointCount, color), "drawing points");
         }
     }
+    for (std::size_t b = 0; b < mesh.bitmapCount; ++b) {
+        const ScreenBitmap& bitmap = mesh.bitmaps[b];
+        BitmapImage image;
+        image.bits = bitmap.bits;
+        image.rowBytes = bitmap.rowBytes;
+        image.width = bitmap.width;
+        image.height = bitmap.height;
+        image.lsbFirst = bitmap.lsbFirst;
+        image.xOffset = bitmap.xOffset;
+        image.yOffset = bitmap.yOffset;
+        const float* own = rgb != nullptr ? rgb + 3 * std::size_t(bitmap.vertex) : nullptr;
+        const RgbColor ink = own != nullptr ? RgbColor{own[0], own[1], own[2]} : color;
+        throwIfFailed(m_target.drawBitmap(mesh.positions + 3 * std::size_t(bitmap.vertex), image, ink),
+                      "drawing a marker");
+    }
 }
 
 namespace {

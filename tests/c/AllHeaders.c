@@ -252,6 +252,35 @@ int main(void)
         if (!ok)
             return 16;
     }
+    {
+        /* General polygons, polyhedra, triangle grids and markers from C. */
+        TQ3GeneralPolygonData general;
+        TQ3GeneralPolygonContourData contour;
+        TQ3PolyhedronData polyhedron;
+        TQ3PolyhedronTriangleData triangle;
+        TQ3PolyhedronEdgeData edge;
+        TQ3TriGridData grid;
+        TQ3MarkerData marker;
+        TQ3GeneralPolygonShapeHint hint = kQ3GeneralPolygonShapeHintConvex;
+        TQ3PolyhedronEdge flag = kQ3PolyhedronEdgeAll;
+        memset(&general, 0, sizeof general);
+        memset(&contour, 0, sizeof contour);
+        memset(&polyhedron, 0, sizeof polyhedron);
+        memset(&triangle, 0, sizeof triangle);
+        memset(&edge, 0, sizeof edge);
+        memset(&grid, 0, sizeof grid);
+        memset(&marker, 0, sizeof marker);
+        general.contours = &contour;
+        if (Q3GeneralPolygon_New(&general) != NULL ||
+            Q3Error_Get(NULL) != kQ3ErrorGeometryInsufficientNumberOfPoints ||
+            Q3GeneralPolygon_GetShapeHint(NULL, &hint) != kQ3Failure || Q3Polyhedron_New(&polyhedron) != NULL ||
+            Q3Polyhedron_GetEdgeData(NULL, 0, &edge) != kQ3Failure ||
+            Q3Polyhedron_SetTriangleData(NULL, 0, &triangle) != kQ3Failure || Q3TriGrid_New(&grid) != NULL ||
+            Q3TriGrid_GetFacetAttributeSet(NULL, 0, NULL) != kQ3Failure || Q3Marker_New(&marker) != NULL ||
+            Q3Marker_SetXOffset(NULL, 1) != kQ3Failure || Q3Bitmap_GetImageSize(9, 2) != 4 ||
+            Q3Bitmap_Empty(&marker.bitmap) != kQ3Success || flag != 7)
+            return 17;
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

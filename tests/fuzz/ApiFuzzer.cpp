@@ -197,8 +197,9 @@ bool sameBytes(const T& a, const T& b)
 
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                   kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup,
-                  kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch };
-constexpr int kKindCount = 27;
+                  kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch, kGeneralPolygon,
+                  kPolyhedron, kTriGrid, kMarker };
+constexpr int kKindCount = 31;
 constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
 
 struct Held {
@@ -627,6 +628,7 @@ private:
         case Op::kQuadrics: quadrics(); break;
         case Op::kMeshes: meshes(); break;
         case Op::kPatches: patches(); break;
+        case Op::kPolygons2: polygons2(); break;
         case Op::kCount: break;
         }
     }
@@ -1987,6 +1989,293 @@ private:
         }
     }
 
+    // General polygons, polyhedra, triangle grids and markers: data with
+    // a few vertices (coordinates from the input, NaN and infinities
+    // included), raw counts and indices now and then, and every per-field
+    // call, each edit checked as surfaceAction checks SetData.
+    static bool samePoints(const TQ3Vertex3D* a, const TQ3Vertex3D* b, unsigned long n)
+    {
+        for (unsigned long i = 0; i < n; ++i)
+            if (!sameBytes(a[i].point, b[i].point) || a[i].attributeSet != b[i].attributeSet)
+                return false;
+        return true;
+    }
+
+    void polygons2()
+    {
+        const std::uint8_t type = m_in.u8() % 4;
+        const std::uint8_t action = m_in.u8() % 5;
+        const Kind kind = Kind(int(Kind::kGeneralPolygon) + type);
+        const bool nullData = m_in.u8() == 0;
+        if (action == 4)
+            return polygons2Field(type, kind);
+        if (action == 3 && !drawAllowed())
+            return;
+        std::vector<TQ3Vertex3D> vertices(2 + m_in.u8() % 10);
+        for (TQ3Vertex3D& v : vertices) {
+            v.point = TQ3Point3D{float(m_in.u8() % 7), float(m_in.u8() % 7), 0.0f};
+            v.attributeSet = (m_in.u8() % 8 == 0) ? pick(Kind::kAttributeSet) : nullptr;
+        }
+        for (int n = m_in.u8() % 3; n > 0; --n)
+            vertices[m_in.u8() % vertices.size()].point.z = m_in.value();
+        const unsigned long count = static_cast<unsigned long>(vertices.size());
+        // Now and then a count no array could hold, which must be refused
+        // before any array is read (a smaller lie would make the fuzzer, not
+        // Q3, read past its own arrays).
+        const bool rawCount = m_in.u8() % 16 == 0;
+        const unsigned long hugeCount =
+            !rawCount ? 0 : m_in.u8() % 2 ? ~0UL : static_cast<unsigned long>(kQ3GeometryMaxArrayCount) + 1 + m_in.u8();
+        switch (type) {
+        case 0: {
+            std::vector<TQ3GeneralPolygonContourData> contours;
+            for (unsigned long first = 0; first < count;) {
+                const unsigned long n = std::min<unsigned long>(count - first, 1 + m_in.u8() % 6);
+                contours.push_back({n, vertices.data() + first});
+                first += n;
+            }
+            TQ3GeneralPolygonData data{static_cast<unsigned long>(contours.size()), contours.data(),
+                                       kQ3GeneralPolygonShapeHintComplex, nullptr};
+            setRaw(data.shapeHint, enumValue(3));
+            if (rawCount)
+                data.numContours = hugeCount;
+            surfaceAction<TQ3GeneralPolygonData>(
+                action, kind, nullData ? nullptr : &data, Q3GeneralPolygon_New, Q3GeneralPolygon_SetData,
+                Q3GeneralPolygon_GetData, Q3GeneralPolygon_EmptyData, Q3GeneralPolygon_Submit,
+                [](const TQ3GeneralPolygonData& a, const TQ3GeneralPolygonData& b) {
+                    if (a.numContours != b.numContours || a.shapeHint != b.shapeHint)
+                        return false;
+                    for (unsigned long c = 0; c < a.numContours; ++c)
+                        if (a.contours[c].numVertices != b.contours[c].numVertices ||
+                            !samePoints(a.contours[c].vertices, b.contours[c].vertices, a.contours[c].numVertices))
+                            return false;
+                    return true;
+                });
+            break;
+        }
+        case 1: {
+            std::vector<TQ3PolyhedronTriangleData> triangles(1 + m_in.u8() % 6);
+            for (TQ3PolyhedronTriangleData& t : triangles) {
+                for (unsigned long& index : t.vertexIndices)
+                    index = m_in.u8() % 32 == 0 ? m_in.u32() : m_in.index(count);
+                t.edgeFlag = m_in.u8() % 9;
+                t.triangleAttributeSet = (m_in.u8() % 4 == 0) ? pick(Kind::kAttributeSet) : nullptr;
+            }
+            std::vector<TQ3PolyhedronEdgeData> edges(m_in.u8() % 4);
+            for (TQ3PolyhedronEdgeData& e : edges) {
+                e.vertexIndices[0] = m_in.index(count + 1);
+                e.vertexIndices[1] = m_in.index(count);
+                e.triangleIndices[0] = m_in.index(triangles.size() + 1);
+                e.triangleIndices[1] = m_in.u8() % 2 ? ~0UL : m_in.index(triangles.size());
+                e.edgeAttributeSet = (m_in.u8() % 4 == 0) ? pick(Kind::kAttributeSet) : nullptr;
+            }
+            TQ3PolyhedronData data{count, vertices.data(), static_cast<unsigned long>(edges.size()),
+                                   edges.empty() ? nullptr : edges.data(),
+                                   static_cast<unsigned long>(triangles.size()), triangles.data(), nullptr};
+            if (rawCount)
+                data.numTriangles = hugeCount;
+            surfaceAction<TQ3PolyhedronData>(
+                action, kind, nullData ? nullptr : &data, Q3Polyhedron_New, Q3Polyhedron_SetData,
+                Q3Polyhedron_GetData, Q3Polyhedron_EmptyData, Q3Polyhedron_Submit,
+                [](const TQ3PolyhedronData& a, const TQ3PolyhedronData& b) {
+                    return a.numVertices == b.numVertices && a.numEdges == b.numEdges &&
+                           a.numTriangles == b.numTriangles && samePoints(a.vertices, b.vertices, a.numVertices);
+                });
+            break;
+        }
+        case 2: {
+            const unsigned long columns = 1 + m_in.u8() % 4;
+            const unsigned long rows = count / columns;
+            std::vector<TQ3AttributeSet> facets(2 * count, nullptr);
+            for (TQ3AttributeSet& f : facets)
+                f = (m_in.u8() % 8 == 0) ? pick(Kind::kAttributeSet) : nullptr;
+            TQ3TriGridData data{rows, columns, vertices.data(), (m_in.u8() & 1) ? facets.data() : nullptr, nullptr};
+            if (rawCount)
+                data.numRows = hugeCount;
+            surfaceAction<TQ3TriGridData>(action, kind, nullData ? nullptr : &data, Q3TriGrid_New, Q3TriGrid_SetData,
+                                          Q3TriGrid_GetData, Q3TriGrid_EmptyData, Q3TriGrid_Submit,
+                                          [](const TQ3TriGridData& a, const TQ3TriGridData& b) {
+                                              return a.numRows == b.numRows && a.numColumns == b.numColumns &&
+                                                     samePoints(a.vertices, b.vertices, a.numRows * a.numColumns);
+                                          });
+            break;
+        }
+        default: {
+            std::vector<unsigned char> bits(1 + m_in.u8() % 16);
+            for (unsigned char& b : bits)
+                b = m_in.u8();
+            TQ3MarkerData data{};
+            data.location = TQ3Point3D{vertices[0].point.z, 0.0f, 0.0f};
+            data.xOffset = static_cast<long>(static_cast<std::int32_t>(m_in.u32()));
+            data.yOffset = static_cast<long>(static_cast<std::int8_t>(m_in.u8()));
+            data.bitmap.image = bits.data();
+            data.bitmap.rowBytes = 1 + m_in.u8() % 2;
+            data.bitmap.height = bits.size() / data.bitmap.rowBytes;
+            data.bitmap.width = m_in.u8() % 20;
+            setRaw(data.bitmap.bitOrder, enumValue(2));
+            if (rawCount)
+                data.bitmap.height = hugeCount;
+            surfaceAction<TQ3MarkerData>(action, kind, nullData ? nullptr : &data, Q3Marker_New, Q3Marker_SetData,
+                                         Q3Marker_GetData, Q3Marker_EmptyData, Q3Marker_Submit,
+                                         [](const TQ3MarkerData& a, const TQ3MarkerData& b) {
+                                             return sameBytes(a.location, b.location) && a.xOffset == b.xOffset &&
+                                                    a.yOffset == b.yOffset && a.bitmap.width == b.bitmap.width &&
+                                                    a.bitmap.height == b.bitmap.height &&
+                                                    std::memcmp(a.bitmap.image, b.bitmap.image,
+                                                                a.bitmap.rowBytes * a.bitmap.height) == 0;
+                                         });
+            break;
+        }
+        }
+    }
+
+    void polygons2Field(std::uint8_t type, Kind kind)
+    {
+        const TQ3Object geometry = pick(kind);
+        const bool ours = holdsKind(geometry, kind) && m_initialized > 0;
+        const bool nullArg = m_in.u8() == 0;
+        const std::uint8_t call = m_in.u8();
+        const unsigned long i = m_in.u8() % 8 == 0 ? m_in.u32() : m_in.u8() % 8;
+        const unsigned long j = m_in.u8() % 8 == 0 ? m_in.u32() : m_in.u8() % 8;
+        const TQ3Point3D point = point3();
+        const TQ3AttributeSet attributes = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+        const unsigned long before = ours ? editIndex(geometry) : 0;
+        TQ3Point3D pointOut{};
+        TQ3AttributeSet got = nullptr;
+        TQ3Status status = kQ3Success;
+        bool edit = false;
+        switch (type) {
+        case 0:
+            switch (call % 6) {
+            case 0: STATUS(Q3GeneralPolygon_GetVertexPosition(geometry, i, j, nullArg ? nullptr : &pointOut)); break;
+            case 1:
+                edit = true;
+                status = STATUS(Q3GeneralPolygon_SetVertexPosition(geometry, i, j, nullArg ? nullptr : &point));
+                break;
+            case 2: STATUS(Q3GeneralPolygon_GetVertexAttributeSet(geometry, i, j, nullArg ? nullptr : &got)); break;
+            case 3:
+                edit = true;
+                status = STATUS(Q3GeneralPolygon_SetVertexAttributeSet(geometry, i, j, attributes));
+                break;
+            case 4: {
+                TQ3GeneralPolygonShapeHint hint{};
+                STATUS(Q3GeneralPolygon_GetShapeHint(geometry, nullArg ? nullptr : &hint));
+                break;
+            }
+            default: {
+                TQ3GeneralPolygonShapeHint hint = kQ3GeneralPolygonShapeHintComplex;
+                setRaw(hint, enumValue(3));
+                edit = true;
+                status = STATUS(Q3GeneralPolygon_SetShapeHint(geometry, hint));
+                break;
+            }
+            }
+            break;
+        case 1:
+            switch (call % 8) {
+            case 0: STATUS(Q3Polyhedron_GetVertexPosition(geometry, i, nullArg ? nullptr : &pointOut)); break;
+            case 1:
+                edit = true;
+                status = STATUS(Q3Polyhedron_SetVertexPosition(geometry, i, nullArg ? nullptr : &point));
+                break;
+            case 2: STATUS(Q3Polyhedron_GetVertexAttributeSet(geometry, i, nullArg ? nullptr : &got)); break;
+            case 3:
+                edit = true;
+                status = STATUS(Q3Polyhedron_SetVertexAttributeSet(geometry, i, attributes));
+                break;
+            case 4: {
+                TQ3PolyhedronTriangleData t{};
+                if (STATUS(Q3Polyhedron_GetTriangleData(geometry, i, nullArg ? nullptr : &t)) == kQ3Success)
+                    got = t.triangleAttributeSet;
+                break;
+            }
+            case 5: {
+                const TQ3PolyhedronTriangleData t{{j, j % 4, i % 4}, j % 9, attributes};
+                edit = true;
+                status = STATUS(Q3Polyhedron_SetTriangleData(geometry, i, nullArg ? nullptr : &t));
+                break;
+            }
+            case 6: {
+                TQ3PolyhedronEdgeData e{};
+                if (STATUS(Q3Polyhedron_GetEdgeData(geometry, i, nullArg ? nullptr : &e)) == kQ3Success)
+                    got = e.edgeAttributeSet;
+                break;
+            }
+            default: {
+                const TQ3PolyhedronEdgeData e{{j % 4, j}, {i % 2, ~0UL}, attributes};
+                edit = true;
+                status = STATUS(Q3Polyhedron_SetEdgeData(geometry, i, nullArg ? nullptr : &e));
+                break;
+            }
+            }
+            break;
+        case 2:
+            switch (call % 6) {
+            case 0: STATUS(Q3TriGrid_GetVertexPosition(geometry, i, j, nullArg ? nullptr : &pointOut)); break;
+            case 1:
+                edit = true;
+                status = STATUS(Q3TriGrid_SetVertexPosition(geometry, i, j, nullArg ? nullptr : &point));
+                break;
+            case 2: STATUS(Q3TriGrid_GetVertexAttributeSet(geometry, i, j, nullArg ? nullptr : &got)); break;
+            case 3:
+                edit = true;
+                status = STATUS(Q3TriGrid_SetVertexAttributeSet(geometry, i, j, attributes));
+                break;
+            case 4: STATUS(Q3TriGrid_GetFacetAttributeSet(geometry, i, nullArg ? nullptr : &got)); break;
+            default:
+                edit = true;
+                status = STATUS(Q3TriGrid_SetFacetAttributeSet(geometry, i, attributes));
+                break;
+            }
+            break;
+        default:
+            switch (call % 8) {
+            case 0: STATUS(Q3Marker_GetPosition(geometry, nullArg ? nullptr : &pointOut)); break;
+            case 1:
+                edit = true;
+                status = STATUS(Q3Marker_SetPosition(geometry, nullArg ? nullptr : &point));
+                break;
+            case 2: {
+                long offset = 0;
+                STATUS(Q3Marker_GetXOffset(geometry, nullArg ? nullptr : &offset));
+                STATUS(Q3Marker_GetYOffset(geometry, nullArg ? nullptr : &offset));
+                break;
+            }
+            case 3:
+                edit = true;
+                status = STATUS(Q3Marker_SetXOffset(geometry, static_cast<long>(j)));
+                break;
+            case 4:
+                edit = true;
+                status = STATUS(Q3Marker_SetYOffset(geometry, -static_cast<long>(i)));
+                break;
+            case 5: {
+                TQ3Bitmap bitmap{};
+                if (STATUS(Q3Marker_GetBitmap(geometry, nullArg ? nullptr : &bitmap)) == kQ3Success)
+                    STATUS(Q3Bitmap_Empty(&bitmap));
+                break;
+            }
+            case 6: {
+                unsigned char bits[8] = {static_cast<unsigned char>(i), static_cast<unsigned char>(j), 0xFF, 0x81, 0x18};
+                TQ3Bitmap bitmap{bits, j % 20, 1 + i % 4, 1 + i % 2, kQ3EndianBig};
+                setRaw(bitmap.bitOrder, std::int32_t(j % 3));
+                edit = true;
+                status = STATUS(Q3Marker_SetBitmap(geometry, nullArg ? nullptr : &bitmap));
+                break;
+            }
+            default:
+                QUERY(Q3Bitmap_GetImageSize(i, j), 0UL);
+                break;
+            }
+            break;
+        }
+        if (edit && ours && status != kQ3Success)
+            require(editIndex(geometry) == before, "polygons2", "a failed edit changed the edit index");
+        if (edit)
+            require(status == kQ3Failure || ours, "polygons2", "an edit succeeded on something not held");
+        if (got != nullptr)
+            hold(got, Kind::kAttributeSet);
+    }
+
     // Apple's per-field calls of each type: the vectors are orientation
     // (or none), major and minor; the sets are the part sets by name; the
     // scalar is the caps (cones, cylinders) or the ratio (tori).
@@ -2421,28 +2710,7 @@ private:
         const TQ3Object view = pick(Kind::kView);
         if (!drawAllowed())
             return;
-        const DrawTimer timer(m_drawSeconds);
-        begin();
-        const TQ3Object result = Q3Geometry_GetDecomposed(geometry, view);
-        const bool posted = Q3Error_Get(nullptr) != kQ3ErrorNone;
-        checkPosted("Q3Geometry_GetDecomposed", posted);
-        if (result == nullptr) {
-            // Another geometry, picked when no shape of this kind is held:
-            // a primitive gives NULL without an error.
-            const Held* other = heldEntry(geometry);
-            require(posted || (other != nullptr && (other->kind == Kind::kPolyLine || other->kind == Kind::kLine ||
-                                                    other->kind == Kind::kPoint || other->kind == Kind::kTriangle ||
-                                                    other->kind == Kind::kTriMesh)),
-                    "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
-            return;
-        }
-        require(!posted, "Q3Geometry_GetDecomposed", "posted an error but decomposed");
-        const Held* entry = heldEntry(geometry);
-        require(entry != nullptr, "Q3Geometry_GetDecomposed", "decomposed something nobody holds");
-        if (isQuadric(entry->kind))
-            checkQuadricDecomposed(entry->kind, result);
-        else // another geometry, picked when no shape of this kind is held
-            hold(result, Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh ? Kind::kTriMesh : Kind::kPolyLine);
+        checkDecomposition(geometry, view);
     }
 
     // A shape gives a trimesh within kQ3SubdivisionMaxTrianglesPerSurface,
@@ -3503,6 +3771,14 @@ private:
         const TQ3Object view = pick(Kind::kView);
         if (!drawAllowed())
             return;
+        checkDecomposition(geometry, view);
+    }
+
+    // Q3Geometry_GetDecomposed of any held object (or a bad handle): NULL
+    // with an error, NULL silently for a primitive, or the right geometry of
+    // the right size for each type.
+    void checkDecomposition(TQ3Object geometry, TQ3Object view)
+    {
         const DrawTimer timer(m_drawSeconds);
         begin();
         const TQ3Object polyline = Q3Geometry_GetDecomposed(geometry, view);
@@ -3513,7 +3789,7 @@ private:
                 const Held* entry = heldEntry(geometry);
                 require(entry != nullptr && (entry->kind == Kind::kPolyLine || entry->kind == Kind::kLine ||
                                              entry->kind == Kind::kPoint || entry->kind == Kind::kTriangle ||
-                                             entry->kind == Kind::kTriMesh),
+                                             entry->kind == Kind::kTriMesh || entry->kind == Kind::kMarker),
                         "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
             }
             return;
@@ -3552,6 +3828,11 @@ private:
             hold(polyline, Kind::kTriMesh);
             return;
         }
+        if (entry != nullptr && (entry->kind == Kind::kGeneralPolygon || entry->kind == Kind::kPolyhedron ||
+                                 entry->kind == Kind::kTriGrid)) {
+            checkPolygons2Decomposed(geometry, entry->kind, posted, polyline);
+            return;
+        }
         require(!posted && holdsKind(geometry, Kind::kCurve), "Q3Geometry_GetDecomposed",
                 "decomposed something that is not a curve");
         hold(polyline, Kind::kPolyLine);
@@ -3560,6 +3841,43 @@ private:
         require(data.numVertices >= 2 && data.numVertices <= (unsigned long)kQ3SubdivisionMaxSegmentsPerCurve + 1,
                 "Q3Geometry_GetDecomposed", "the polyline's vertex count is outside 2 .. cap + 1");
         STATUS(Q3PolyLine_EmptyData(&data));
+    }
+
+    // A general polygon gives a trimesh over its own vertices with at most
+    // vertices + 2 contours - 2 triangles; a grid one of three vertices per
+    // facet; a polyhedron three per triangle and two per listed edge.
+    void checkPolygons2Decomposed(TQ3Object geometry, Kind kind, bool posted, TQ3Object result)
+    {
+        const char* call = "Q3Geometry_GetDecomposed";
+        require(!posted && Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh, call, "gave no trimesh");
+        hold(result, Kind::kTriMesh);
+        TQ3TriMeshData mesh{};
+        STATUS(Q3TriMesh_GetData(result, &mesh));
+        if (kind == Kind::kGeneralPolygon) {
+            TQ3GeneralPolygonData data{};
+            STATUS(Q3GeneralPolygon_GetData(geometry, &data));
+            unsigned long total = 0;
+            for (unsigned long c = 0; c < data.numContours; ++c)
+                total += data.contours[c].numVertices;
+            require(mesh.numPoints == total && mesh.numTriangles + 2 <= total + 2 * data.numContours, call,
+                    "a general polygon's trimesh has the wrong size");
+            STATUS(Q3GeneralPolygon_EmptyData(&data));
+        } else if (kind == Kind::kTriGrid) {
+            TQ3TriGridData data{};
+            STATUS(Q3TriGrid_GetData(geometry, &data));
+            const unsigned long facets = 2 * (data.numRows - 1) * (data.numColumns - 1);
+            require(mesh.numTriangles == facets && mesh.numPoints == 3 * facets, call,
+                    "a grid's trimesh has the wrong size");
+            STATUS(Q3TriGrid_EmptyData(&data));
+        } else {
+            TQ3PolyhedronData data{};
+            STATUS(Q3Polyhedron_GetData(geometry, &data));
+            require(mesh.numTriangles == data.numTriangles &&
+                        mesh.numPoints == 3 * data.numTriangles + 2 * data.numEdges,
+                    call, "a polyhedron's trimesh has the wrong size");
+            STATUS(Q3Polyhedron_EmptyData(&data));
+        }
+        STATUS(Q3TriMesh_EmptyData(&mesh));
     }
 
     void viewState()

@@ -79,6 +79,7 @@ enum class Op : std::uint8_t {
     kQuadrics,
     kMeshes,
     kPatches,
+    kPolygons2,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

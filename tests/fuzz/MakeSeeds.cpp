@@ -20,7 +20,8 @@ using q3fuzz::Op;
 // Kinds, in the fuzzer's order (for the kind byte of kDuplicate and others).
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                            kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
-                           kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch };
+                           kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch,
+                           kGeneralPolygon, kPolyhedron, kTriGrid, kMarker };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -901,6 +902,61 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kPatches).u8(2).u8(0).u8(3).u8(3).u8(0).u8(0).u8(0).value(1).u8(0).u8(0).u8(0);
         s.op(Op::kDuplicate).u8(kPatch).held(1);
         s.scene(2).startRendering().submitHeld(kPatch, 2).endRendering().dispose(kPatch, 1);
+    // polygons2(): one general polygon (a square with a square hole), a
+    // polyhedron (two triangles), a 2 x 3 triangle grid and a marker (an
+    // 8 x 8 frame), made with New, drawn, bounded and edited.
+    {
+        Seed& s = add("polygons2");
+        auto vertex = [&s](std::uint8_t x, std::uint8_t y) { s.u8(x).u8(y).u8(1); };
+        // type, action (New), not null, the vertex count byte.
+        s.op(Op::kPolygons2).u8(0).u8(0).u8(1).u8(6);
+        for (const auto& p : {std::pair<int, int>{0, 0}, {6, 0}, {6, 6}, {0, 6}, {2, 2}, {4, 2}, {4, 4}, {2, 4}})
+            vertex(std::uint8_t(p.first), std::uint8_t(p.second));
+        s.u8(0).u8(1).u8(3).u8(3).u8(1); // no z, no raw count, contours of 4 and 4, concave
+        s.op(Op::kPolygons2).u8(1).u8(0).u8(1).u8(2);
+        for (const auto& p : {std::pair<int, int>{0, 0}, {6, 0}, {0, 6}, {3, 3}})
+            vertex(std::uint8_t(p.first), std::uint8_t(p.second));
+        s.u8(0).u8(1).u8(1); // no z, no raw count, two triangles
+        for (const auto& t : {std::pair<int, int>{0, 1}, {1, 3}}) {
+            for (int k : {t.first, t.second, 2})
+                s.u8(1).u8(3).u8(std::uint8_t(k));
+            s.u8(7).u8(1); // all edges, no set
+        }
+        s.u8(0); // no edges
+        s.op(Op::kPolygons2).u8(2).u8(0).u8(1).u8(4);
+        for (const auto& p : {std::pair<int, int>{0, 0}, {3, 0}, {6, 0}, {0, 3}, {3, 3}, {6, 3}})
+            vertex(std::uint8_t(p.first), std::uint8_t(p.second));
+        s.u8(0).u8(1).u8(2); // no z, no raw count, three columns
+        for (int f = 0; f < 12; ++f)
+            s.u8(1);
+        s.u8(0); // no facet sets
+        s.op(Op::kPolygons2).u8(3).u8(0).u8(1).u8(0);
+        vertex(0, 0);
+        vertex(1, 1);
+        s.u8(0).u8(1).u8(7); // no z, no raw count, 8 bytes of bits
+        for (std::uint8_t b : {0xFF, 0x81, 0x81, 0x81, 0x81, 0x81, 0x81, 0xFF})
+            s.u8(b);
+        s.u8(0xFC).u8(0xFF).u8(0xFF).u8(0xFF).u8(0xFC).u8(0).u8(8).u8(0); // x -4, y -4, rowBytes 1, width 8, big
+        s.scene(2).startRendering();
+        for (Kind kind : {kGeneralPolygon, kPolyhedron, kTriGrid, kMarker})
+            s.submitHeld(kind);
+        s.endRendering().startBox();
+        for (Kind kind : {kGeneralPolygon, kPolyhedron, kTriGrid, kMarker})
+            s.submitHeld(kind);
+        s.endBox();
+        // Per-field edits: a vertex moved, a facet set at the last index,
+        // a marker offset; then a shape hint read.
+        // polygons2Field(): the shape, null byte, call, i and j (a selector
+        // byte and a byte each), a point, the set byte.
+        auto field = [&s](std::uint8_t type, std::uint8_t call, std::uint8_t i, std::uint8_t j) -> Seed& {
+            return s.op(Op::kPolygons2).u8(type).u8(4).u8(1).held().u8(1).u8(call).u8(1).u8(i).u8(1).u8(j);
+        };
+        field(0, 1, 1, 2).value(1).value(1).value(0).u8(0);
+        field(2, 5, 3, 0).value(0).value(0).value(0).u8(1);
+        field(3, 3, 0, 5).value(0).value(0).value(0).u8(0);
+        field(1, 5, 1, 3).value(0).value(0).value(0).u8(0);
+        field(0, 4, 0, 0).value(0).value(0).value(0).u8(0);
+        s.scene(2).startRendering().submitHeld(kMarker).submitHeld(kGeneralPolygon).endRendering();
     }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {

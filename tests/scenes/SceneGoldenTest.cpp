@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -200,6 +201,64 @@ TEST_F(ScenePixels, TheMeshShowsItsHoleCornerAndSharedEdge)
     EXPECT_LT(corner.g, 120);
     EXPECT_GT(countNear(b, 255, 255, 255), 100);
     EXPECT_EQ(countNear(a, 255, 255, 255), 0);
+}
+
+// The camera of the flat scenes (eye on +z at 5, 0.75 rad along y): the
+// pixel column and row a point of the plane z = 0 projects to.
+int columnOf(float x)
+{
+    const double halfHeight = 5.0 * std::tan(0.375);
+    return int(std::floor(Q3SCENE_WIDTH / 2.0 + x / (halfHeight * Q3SCENE_WIDTH / Q3SCENE_HEIGHT) * Q3SCENE_WIDTH / 2.0));
+}
+int rowOf(float y)
+{
+    const double halfHeight = 5.0 * std::tan(0.375);
+    return int(std::floor(Q3SCENE_HEIGHT / 2.0 - y / halfHeight * Q3SCENE_HEIGHT / 2.0));
+}
+
+// Even-odd: the square's ring and the island inside its hole are orange, the
+// hole between them is the background; the star's triangular hole too.
+TEST_F(ScenePixels, TheGeneralPolygonsFillOnlyInsideAnOddNumberOfContours)
+{
+    const Q3Scene* scene = q3scene_find("general_polygons");
+    ASSERT_NE(scene, nullptr);
+    const q3test::RgbaImage image = render(scene);
+    auto orange = [&](float x, float y) {
+        const Pixel p = at(image, columnOf(x), rowOf(y));
+        return p.r > 200 && p.g > 100 && p.g < 180 && p.b < 80;
+    };
+    EXPECT_TRUE(orange(-1.3f, 0.0f));           // the island
+    EXPECT_TRUE(orange(-1.3f + 0.8f, 0.0f));    // the ring, right
+    EXPECT_TRUE(orange(-1.3f, -0.8f));          // the ring, below
+    for (const float d : {0.42f, -0.42f}) {     // the hole, either side
+        EXPECT_TRUE(isBackground(image, columnOf(-1.3f + d), rowOf(0.0f), scene->background));
+        EXPECT_TRUE(isBackground(image, columnOf(-1.3f), rowOf(d), scene->background));
+    }
+    EXPECT_TRUE(isBackground(image, columnOf(1.42f), rowOf(-0.08f), scene->background)); // the star's hole
+    EXPECT_FALSE(isBackground(image, columnOf(1.4f), rowOf(0.4f), scene->background));  // the star
+}
+
+// Every set bit of each visible marker is one pixel of its colour: the
+// crosses have 28 set bits, the bar 36; the yellow cross behind the
+// triangle is hidden.
+TEST_F(ScenePixels, MarkersDrawTheirBitsInScreenSpace)
+{
+    const Q3Scene* scene = q3scene_find("markers");
+    ASSERT_NE(scene, nullptr);
+    const q3test::RgbaImage image = render(scene);
+    EXPECT_EQ(countNear(image, 242, 51, 51), 28);   // red
+    EXPECT_EQ(countNear(image, 51, 230, 77), 28);   // green
+    EXPECT_EQ(countNear(image, 77, 128, 255), 36);  // blue
+    EXPECT_EQ(countNear(image, 255, 255, 255), 28); // white
+    EXPECT_EQ(countNear(image, 255, 230, 51), 0);   // yellow, hidden
+    // The red cross is centred on the triangle's left corner: its middle
+    // rows span columns corner - 4 to corner + 3.
+    const int x = columnOf(-1.5f), y = rowOf(-1.0f);
+    const Pixel left = at(image, x - 4, y - 1), right = at(image, x + 3, y);
+    EXPECT_GT(left.r, 200);
+    EXPECT_LT(left.g, 80);
+    EXPECT_GT(right.r, 200);
+    EXPECT_LT(right.g, 80);
 }
 
 } // namespace

@@ -463,5 +463,68 @@ TEST(RenderOffscreen, BadDrawArgumentsAreRejectedAndDrawNothing)
     expectImage(renderer, PixelRect{0, 0, 16, 16}, kClearPixel, kOutside);
 }
 
+// A bitmap lands pixel for pixel: its top left at the anchor's pixel plus
+// the offsets, most significant bit first (or least), clipped at the pane's
+// edge, whatever the matrix does to lengths; a later draw still uses the
+// caller's matrix.
+TEST(RenderOffscreen, DrawBitmapPlacesEachSetBitOnOnePixel)
+{
+    OffscreenRenderer renderer;
+    ASSERT_TRUE(renderer.beginFrame(24, 16, kClear, PixelRect{0, 0, 24, 16}));
+    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(24, 16).data()));
+    const unsigned char bits[] = {0xA0, 0x00, 0x40, 0x01}; // 9 x 2, two bytes a row
+    BitmapImage image;
+    image.bits = bits;
+    image.rowBytes = 2;
+    image.width = 9;
+    image.height = 2;
+    image.xOffset = -1;
+    image.yOffset = 2;
+    const float anchor[] = {5.5f, 3.5f, 0.0f}; // pixel (5, 3)
+    ASSERT_TRUE(renderer.drawBitmap(anchor, image, kWhite));
+    image.lsbFirst = true;
+    const float corner[] = {17.5f, 0.5f, 0.0f}; // pixel (17, 0): columns past 23 are clipped
+    image.xOffset = 0;
+    image.yOffset = 0;
+    ASSERT_TRUE(renderer.drawBitmap(corner, image, kWhite));
+    const float line[] = {0.5f, 12.5f, 0.0f, 3.5f, 12.5f, 0.0f};
+    ASSERT_TRUE(renderer.drawLineStrip(line, 2, kWhite));
+    ASSERT_TRUE(renderer.endFrame());
+    expectImage(renderer, PixelRect{0, 0, 24, 16}, kClearPixel, kOutside,
+                {{{4, 5}, kWhitePixel}, {{6, 5}, kWhitePixel}, {{5, 6}, kWhitePixel}, // 0xA0; 0x40 (0x01: past 9)
+                 {{22, 0}, kWhitePixel}, {{23, 1}, kWhitePixel}, // lsb first: 5 (7 clipped); 6 (8 clipped)
+                 {{0, 12}, kWhitePixel}, {{1, 12}, kWhitePixel}, {{2, 12}, kWhitePixel}}); // the line
+}
+
+TEST(RenderOffscreen, DrawBitmapChecksItsArgumentsAndSkipsAnchorsOutsideTheDepthRange)
+{
+    OffscreenRenderer renderer;
+    const unsigned char bits[] = {0xFF};
+    BitmapImage image;
+    image.bits = bits;
+    image.rowBytes = 1;
+    image.width = 8;
+    image.height = 1;
+    const float anchor[] = {4.5f, 4.5f, 0.0f};
+    EXPECT_EQ(renderer.drawBitmap(anchor, image, kWhite).status, RenderStatus::kWrongState);
+    ASSERT_TRUE(renderer.beginFrame(16, 16, kClear, PixelRect{0, 0, 16, 16}));
+    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(16, 16).data()));
+    EXPECT_EQ(renderer.drawBitmap(nullptr, image, kWhite).status, RenderStatus::kInvalidArgument);
+    image.width = 9;
+    EXPECT_EQ(renderer.drawBitmap(anchor, image, kWhite).status, RenderStatus::kInvalidArgument);
+    image.width = 8;
+    image.bits = nullptr;
+    EXPECT_EQ(renderer.drawBitmap(anchor, image, kWhite).status, RenderStatus::kInvalidArgument);
+    image.bits = bits;
+    const float nan[] = {std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
+    EXPECT_EQ(renderer.drawBitmap(nan, image, kWhite).status, RenderStatus::kInvalidArgument);
+    const float far[] = {4.5f, 4.5f, 2.0f}; // clip z 2 > w 1
+    EXPECT_TRUE(renderer.drawBitmap(far, image, kWhite));
+    image.xOffset = 1L << 30; // wholly off the pane
+    EXPECT_TRUE(renderer.drawBitmap(anchor, image, kWhite));
+    ASSERT_TRUE(renderer.endFrame());
+    expectImage(renderer, PixelRect{0, 0, 16, 16}, kClearPixel, kOutside);
+}
+
 } // namespace
 } // namespace q3

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "QD3DGeometry.h"
+#include "api/GeometryEntry.h"
+#include "geometry/GeneralPolygon.h"
+
+using namespace q3;
+using namespace q3::api;
+
+extern "C" {
+
+TQ3GeometryObject Q3GeneralPolygon_New(const TQ3GeneralPolygonData* generalPolygonData)
+{
+    return newGeometry<GeneralPolygon>(__func__, generalPolygonData);
+}
+
+TQ3Status Q3GeneralPolygon_Submit(const TQ3GeneralPolygonData* generalPolygonData, TQ3ViewObject view)
+{
+    return submitGeometry<GeneralPolygon>(__func__, generalPolygonData, view);
+}
+
+TQ3Status Q3GeneralPolygon_SetData(TQ3GeometryObject generalPolygon, const TQ3GeneralPolygonData* generalPolygonData)
+{
+    return setGeometryData<GeneralPolygon>(__func__, generalPolygon, generalPolygonData);
+}
+
+TQ3Status Q3GeneralPolygon_GetData(TQ3GeometryObject polygon, TQ3GeneralPolygonData* generalPolygonData)
+{
+    return getGeometryData<GeneralPolygon>(__func__, polygon, generalPolygonData);
+}
+
+TQ3Status Q3GeneralPolygon_EmptyData(TQ3GeneralPolygonData* generalPolygonData)
+{
+    return emptyGeometryData<GeneralPolygon>(__func__, generalPolygonData);
+}
+
+TQ3Status Q3GeneralPolygon_GetVertexPosition(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
+                                             unsigned long pointIndex, TQ3Point3D* position)
+{
+    return guardStatus(__func__, [&] {
+        readInto<GeneralPolygon>(generalPolygon, "generalPolygon", position, "position",
+                                 [&](const GeneralPolygon& p) { return p.vertex(contourIndex, pointIndex).point; });
+    });
+}
+
+TQ3Status Q3GeneralPolygon_SetVertexPosition(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
+                                             unsigned long pointIndex, const TQ3Point3D* position)
+{
+    return guardStatus(__func__, [&] {
+        GeneralPolygon& target = lookup<GeneralPolygon>(generalPolygon, "generalPolygon");
+        requireNonNull(position, "position");
+        target.setVertexPosition(contourIndex, pointIndex, *position);
+    });
+}
+
+TQ3Status Q3GeneralPolygon_GetVertexAttributeSet(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
+                                                 unsigned long pointIndex, TQ3AttributeSet* attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        readInto<GeneralPolygon>(generalPolygon, "generalPolygon", attributeSet, "attributeSet",
+                                 [&](const GeneralPolygon& p) {
+                                     return attributeSetToHandle(
+                                         heldAttributeSet(p.vertex(contourIndex, pointIndex).attributeSet));
+                                 });
+    });
+}
+
+TQ3Status Q3GeneralPolygon_SetVertexAttributeSet(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
+                                                 unsigned long pointIndex, TQ3AttributeSet attributeSet)
+{
+    return guardStatus(__func__, [&] {
+        GeneralPolygon& target = lookup<GeneralPolygon>(generalPolygon, "generalPolygon");
+        target.setVertexAttributeSet(contourIndex, pointIndex, attributeSetFromHandle(attributeSet, "attributeSet"));
+    });
+}
+
+TQ3Status Q3GeneralPolygon_SetShapeHint(TQ3GeometryObject generalPolygon, TQ3GeneralPolygonShapeHint shapeHint)
+{
+    return guardStatus(__func__, [&] {
+        lookup<GeneralPolygon>(generalPolygon, "generalPolygon").setShapeHint(shapeHint);
+    });
+}
+
+TQ3Status Q3GeneralPolygon_GetShapeHint(TQ3GeometryObject generalPolygon, TQ3GeneralPolygonShapeHint* shapeHint)
+{
+    return guardStatus(__func__, [&] {
+        readInto<GeneralPolygon>(generalPolygon, "generalPolygon", shapeHint, "shapeHint",
+                                 [](const GeneralPolygon& p) { return p.shapeHint(); });
+    });
+}
+
+} // extern "C"

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "geometry/GeneralPolygon.h"
+
+#include "core/EnumValue.h"
+#include "geometry/DataGeometryImpl.h"
+#include "geometry/mesh/Triangulate.h"
+
+namespace q3 {
+
+const ClassInfo kGeneralPolygonClass{kQ3GeometryTypeGeneralPolygon, &kGeometryClass, "general polygon"};
+
+namespace layout {
+template <>
+struct Describe<TQ3GeneralPolygonContourData> {
+    static auto fields()
+    {
+        using C = TQ3GeneralPolygonContourData;
+        return std::make_tuple(value("numVertices", &C::numVertices),
+                               array("vertices", &C::vertices, countOf(&C::numVertices)));
+    }
+};
+
+template <>
+struct Describe<TQ3GeneralPolygonData> {
+    static auto fields()
+    {
+        using D = TQ3GeneralPolygonData;
+        return std::make_tuple(value("numContours", &D::numContours),
+                               array("contours", &D::contours, countOf(&D::numContours)),
+                               value("shapeHint", &D::shapeHint),
+                               handle<AttributeSet>("generalPolygonAttributeSet", &D::generalPolygonAttributeSet));
+    }
+};
+} // namespace layout
+
+template class DataGeometry<GeneralPolygon, TQ3GeneralPolygonData>;
+
+void GeneralPolygon::checkShapeHint(const TQ3GeneralPolygonShapeHint& hint, TQ3Error code)
+{
+    const long value = enumValue(hint);
+    if (value < kQ3GeneralPolygonShapeHintComplex || value > kQ3GeneralPolygonShapeHintConvex)
+        fail(code, "shapeHint " + std::to_string(value) + " is not a TQ3GeneralPolygonShapeHint");
+}
+
+void GeneralPolygon::check(const TQ3GeneralPolygonData& data)
+{
+    requireNonNull(data.contours, "contours");
+    if (data.numContours < 1)
+        fail(kQ3ErrorGeometryInsufficientNumberOfPoints, "numContours is 0; a general polygon needs a contour");
+    layout::checkCount(data.numContours, layout::Path{nullptr, "contours"});
+    checkShapeHint(data.shapeHint, kQ3ErrorInvalidData);
+    std::size_t total = 0;
+    for (unsigned long c = 0; c < data.numContours; ++c) {
+        const TQ3GeneralPolygonContourData& contour = data.contours[c];
+        const std::string where = "contours[" + std::to_string(c) + "]";
+        if (contour.vertices == nullptr)
+            fail(kQ3ErrorNULLParameter, where + ".vertices is NULL");
+        if (contour.numVertices < 3)
+            fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
+                 where + ".numVertices is " + std::to_string(contour.numVertices) + "; a contour needs at least 3");
+        layout::checkCount(contour.numVertices, layout::Path{nullptr, "contour vertices"});
+        total += contour.numVertices;
+        layout::checkCount(total, layout::Path{nullptr, "the vertices of all contours"});
+        for (unsigned long i = 0; i < contour.numVertices; ++i)
+            requireFinite(contour.vertices[i].point, where + ".vertices[" + std::to_string(i) + "].point");
+    }
+}
+
+void GeneralPolygon::decompose(const DecomposeContext&, PrimitiveSink& sink) const
+{
+    const TQ3GeneralPolygonData& d = data();
+    std::vector<double> key;
+    for (unsigned long c = 0; c < d.numContours; ++c)
+        appendVertexSetKeys(key, d.contours[c].vertices, d.contours[c].numVertices);
+    withMesh(
+        std::move(key),
+        [&](Mesh& mesh) {
+            std::vector<glm::dvec3> points;
+            std::vector<std::size_t> starts;
+            for (unsigned long c = 0; c < d.numContours; ++c) {
+                const TQ3GeneralPolygonContourData& contour = d.contours[c];
+                const std::uint32_t first = addVertices(mesh, contour.vertices, contour.numVertices);
+                starts.push_back(first);
+                for (unsigned long i = 0; i < contour.numVertices; ++i) {
+                    const TQ3Point3D& p = contour.vertices[i].point;
+                    points.emplace_back(p.x, p.y, p.z);
+                    mesh.addEdge(first + std::uint32_t(i), first + std::uint32_t((i + 1) % contour.numVertices));
+                }
+            }
+            // The plane: Newell's normal of the first contour, else of all of
+            // them (a first contour that encloses no area).
+            glm::dvec3 normal = mesh::newellNormal(points.data(), d.contours[0].numVertices);
+            if (normal == glm::dvec3(0.0))
+                normal = mesh::newellNormal(points.data(), points.size());
+            if (normal == glm::dvec3(0.0))
+                return;
+            const std::vector<std::uint32_t> triangles =
+                mesh::triangulate(mesh::projectToPlane(points.data(), points.size(), normal), starts);
+            for (std::size_t t = 0; t < triangles.size(); t += 3)
+                mesh.addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
+        },
+        [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
+}
+
+const TQ3GeneralPolygonContourData& GeneralPolygon::contour(unsigned long index) const
+{
+    checkIndex(index, data().numContours, "contour index", "the general polygon");
+    return data().contours[index];
+}
+
+const TQ3Vertex3D& GeneralPolygon::vertex(unsigned long contourIndex, unsigned long index) const
+{
+    const TQ3GeneralPolygonContourData& c = contour(contourIndex);
+    return vertexAt(c.vertices, c.numVertices, index, "the contour");
+}
+
+void GeneralPolygon::setVertexPosition(unsigned long contourIndex, unsigned long index, const TQ3Point3D& position)
+{
+    const TQ3GeneralPolygonContourData& c = contour(contourIndex);
+    moveVertex(c.vertices, c.numVertices, index, position, "the contour");
+    markEdited();
+}
+
+void GeneralPolygon::setVertexAttributeSet(unsigned long contourIndex, unsigned long index,
+                                           Ref<AttributeSet> attributes)
+{
+    const TQ3GeneralPolygonContourData& c = contour(contourIndex);
+    replaceVertexSet(c.vertices, c.numVertices, index, std::move(attributes), "the contour");
+    markEdited();
+}
+
+void GeneralPolygon::setShapeHint(const TQ3GeneralPolygonShapeHint& hint)
+{
+    checkShapeHint(hint, kQ3ErrorInvalidParameter);
+    editableData().shapeHint = hint;
+    markEdited();
+}
+
+} // namespace q3

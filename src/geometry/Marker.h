@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+#include "QD3DGeometry.h"
+#include "geometry/DataGeometry.h"
+
+namespace q3 {
+
+extern const ClassInfo kMarkerClass;
+
+/// A marker: a bitmap drawn in screen space at the image of its location.
+/// Invariant: its data obeys the TQ3MarkerData rules of QD3DGeometry.h (a
+/// finite location, a non-empty bitmap whose rows hold its width, of at most
+/// kQ3GeometryMaxArrayCount bytes, a bit order of the enumeration).
+class Marker final : public DataGeometry<Marker, TQ3MarkerData> {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3GeometryTypeMarker;
+    static constexpr const char* kName = "marker";
+    static constexpr const char* kDataName = "markerData";
+    static constexpr TQ3AttributeSet TQ3MarkerData::*kOwnSet = &TQ3MarkerData::markerAttributeSet;
+
+    /// The TQ3MarkerData rules of QD3DGeometry.h, in their order.
+    static void check(const TQ3MarkerData& data);
+    /// The bitmap rules alone (Q3Marker_SetBitmap), in the same order.
+    static void checkBitmap(const TQ3Bitmap& bitmap);
+
+    using DataGeometry::DataGeometry;
+
+    const ClassInfo& classInfo() const override { return kMarkerClass; }
+    /// One vertex at the location and the bitmap anchored at it.
+    void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
+    bool isPrimitive() const override { return true; }
+
+    void setPosition(const TQ3Point3D& location);
+    void setXOffset(long xOffset);
+    void setYOffset(long yOffset);
+    /// A malloc'ed copy of the bitmap's bits in `out` (the other fields as
+    /// they are), for Q3Bitmap_Empty to free.
+    void copyBitmap(TQ3Bitmap& out) const;
+    /// Checks bitmap, copies its bits, then frees the old ones.
+    void setBitmap(const TQ3Bitmap& bitmap);
+};
+
+} // namespace q3
