@@ -409,6 +409,125 @@ static TQ3GeometryObject new_mesh(void)
     return mesh;
 }
 
+/* A square with a square hole and an island in the hole (even-odd). */
+static TQ3GeometryObject new_general_polygon(void)
+{
+    const float sizes[3] = {1.3f, 0.8f, 0.35f};
+    TQ3Vertex3D v[3][4];
+    TQ3GeneralPolygonContourData contours[3];
+    TQ3GeneralPolygonData data;
+    TQ3GeometryObject g;
+    int c;
+    for (c = 0; c < 3; c++) {
+        const float h = sizes[c];
+        v[c][0] = vertex(-h, -h, 0, NULL);
+        v[c][1] = vertex(h, -h, 0, NULL);
+        v[c][2] = vertex(h, h, 0, NULL);
+        v[c][3] = vertex(-h, h, 0, NULL);
+        contours[c].numVertices = 4;
+        contours[c].vertices = v[c];
+    }
+    data.numContours = 3;
+    data.contours = contours;
+    data.shapeHint = kQ3GeneralPolygonShapeHintComplex;
+    data.generalPolygonAttributeSet = colour(0.95f, 0.75f, 0.2f);
+    g = Q3GeneralPolygon_New(&data);
+    dispose(data.generalPolygonAttributeSet);
+    return g;
+}
+
+/* A square pyramid of four side triangles in their own colours, its base
+ * edges listed. */
+static TQ3GeometryObject new_polyhedron(void)
+{
+    TQ3Vertex3D v[5];
+    TQ3PolyhedronTriangleData triangles[4];
+    TQ3PolyhedronEdgeData edges[4];
+    TQ3PolyhedronData data;
+    TQ3AttributeSet sides[4];
+    TQ3GeometryObject g;
+    const float c[4][3] = {{0.9f, 0.25f, 0.25f}, {0.25f, 0.8f, 0.35f}, {0.25f, 0.45f, 0.95f}, {0.95f, 0.85f, 0.25f}};
+    int i;
+    v[0] = vertex(-1, -0.8f, 1, NULL);
+    v[1] = vertex(1, -0.8f, 1, NULL);
+    v[2] = vertex(1, -0.8f, -1, NULL);
+    v[3] = vertex(-1, -0.8f, -1, NULL);
+    v[4] = vertex(0, 1.0f, 0, NULL);
+    for (i = 0; i < 4; i++) {
+        sides[i] = colour(c[i][0], c[i][1], c[i][2]);
+        triangles[i].vertexIndices[0] = (unsigned long)i;
+        triangles[i].vertexIndices[1] = (unsigned long)((i + 1) % 4);
+        triangles[i].vertexIndices[2] = 4;
+        triangles[i].edgeFlag = kQ3PolyhedronEdgeAll;
+        triangles[i].triangleAttributeSet = sides[i];
+        edges[i].vertexIndices[0] = (unsigned long)i;
+        edges[i].vertexIndices[1] = (unsigned long)((i + 1) % 4);
+        edges[i].triangleIndices[0] = (unsigned long)i;
+        edges[i].triangleIndices[1] = kQ3ArrayIndexNULL;
+        edges[i].edgeAttributeSet = NULL;
+    }
+    data.numVertices = 5;
+    data.vertices = v;
+    data.numEdges = 4;
+    data.edges = edges;
+    data.numTriangles = 4;
+    data.triangles = triangles;
+    data.polyhedronAttributeSet = NULL;
+    g = Q3Polyhedron_New(&data);
+    for (i = 0; i < 4; i++)
+        dispose(sides[i]);
+    return g;
+}
+
+/* A 4 x 6 grid over a wave. */
+static TQ3GeometryObject new_trigrid(void)
+{
+    TQ3Vertex3D v[24];
+    TQ3TriGridData data;
+    TQ3GeometryObject g;
+    int r, c;
+    for (r = 0; r < 4; r++)
+        for (c = 0; c < 6; c++)
+            v[6 * r + c] = vertex(-1.5f + 0.6f * (float)c, -1.0f + 0.66f * (float)r,
+                                  0.35f * (float)sin(1.3 * c + 0.8 * r), NULL);
+    data.numRows = 4;
+    data.numColumns = 6;
+    data.vertices = v;
+    data.facetAttributeSet = NULL;
+    data.triGridAttributeSet = colour(0.3f, 0.8f, 0.85f);
+    g = Q3TriGrid_New(&data);
+    dispose(data.triGridAttributeSet);
+    return g;
+}
+
+/* A 16 x 16 bitmap of a ring, drawn centred on the origin. */
+static TQ3GeometryObject new_marker(void)
+{
+    static unsigned char bits[16 * 2];
+    TQ3MarkerData data;
+    TQ3GeometryObject g;
+    int x, y;
+    memset(bits, 0, sizeof bits);
+    for (y = 0; y < 16; y++)
+        for (x = 0; x < 16; x++) {
+            const double d = hypot(x - 7.5, y - 7.5);
+            if (d > 4.5 && d < 7.5)
+                bits[2 * y + x / 8] |= (unsigned char)(0x80 >> (x % 8));
+        }
+    data.location = point3(0, 0, 0);
+    data.xOffset = -8;
+    data.yOffset = -8;
+    data.bitmap.image = bits;
+    data.bitmap.width = 16;
+    data.bitmap.height = 16;
+    data.bitmap.rowBytes = 2;
+    data.bitmap.bitOrder = kQ3EndianBig;
+    data.markerAttributeSet = colour(1.0f, 0.4f, 0.7f);
+    g = Q3Marker_New(&data);
+    dispose(data.markerAttributeSet);
+    return g;
+}
+
 typedef struct Entry {
     const char *name;
     TQ3GeometryObject (*make)(void);
@@ -417,7 +536,9 @@ typedef struct Entry {
 static const Entry kEntries[] = {
     {"point", new_point},         {"line", new_line},         {"polyline", new_polyline},
     {"triangle", new_triangle},   {"polygon", new_polygon},   {"trimesh", new_trimesh},
-    {"mesh", new_mesh},           {"nurb_curve", new_nurb_curve}, {"nurb_patch", new_nurb_patch},
+    {"mesh", new_mesh},           {"general_polygon", new_general_polygon}, {"polyhedron", new_polyhedron},
+    {"trigrid", new_trigrid},     {"marker", new_marker},     {"nurb_curve", new_nurb_curve},
+    {"nurb_patch", new_nurb_patch},
     {"box", new_box},             {"cone", new_cone},         {"cylinder", new_cylinder},
     {"disk", new_disk},           {"ellipse", new_ellipse},   {"ellipsoid", new_ellipsoid},
     {"torus", new_torus},
