@@ -808,6 +808,7 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kDuplicate).u8(kMesh).held();
         s.op(Op::kMeshes).u8(3).held().u8(0).u8(2).u8(1);                                   // delete vertex 2
         s.op(Op::kMeshes).u8(7).held();
+    }
     // NURB patches (patches(): the action byte, then readPatch()'s bytes:
     // flags, orders, extra columns and rows, shape, scale, overwrites, trim
     // loops, the huge-curve-count byte of each loop, the non-null byte).
@@ -902,6 +903,7 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kPatches).u8(2).u8(0).u8(3).u8(3).u8(0).u8(0).u8(0).value(1).u8(0).u8(0).u8(0);
         s.op(Op::kDuplicate).u8(kPatch).held(1);
         s.scene(2).startRendering().submitHeld(kPatch, 2).endRendering().dispose(kPatch, 1);
+    }
     // polygons2(): one general polygon (a square with a square hole), a
     // polyhedron (two triangles), a 2 x 3 triangle grid and a marker (an
     // 8 x 8 frame), made with New, drawn, bounded and edited.

@@ -25,7 +25,7 @@ jobs="${Q3_JOBS:-2}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DQ3_BUILD_FUZZERS=ON -DQ3_BUILD_SAMPLES=OFF -DQ3_BUILD_BENCHMARKS=OFF > /dev/null
-cmake --build "$build" -j"$jobs" --target q3_fuzz_api q3_fuzz_3dmf
+cmake --build "$build" -j"$jobs" --target q3_fuzz_api q3_fuzz_3dmf q3_fuzz_seeds
 
 mkdir -p "$build/corpus" "$build/corpus-3dmf" "$build/findings"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
