@@ -2,6 +2,8 @@
 /* Copyright (c) 2026 The Q3 authors */
 #include "gallery.h"
 
+#include "lit_scenes.h"
+#include "scene_util.h"
 #include "scenes.h"
 
 #include "QD3DGeometry.h"
@@ -20,49 +22,10 @@
 
 /* ---- Helpers ------------------------------------------------------------- */
 
-static TQ3ColorRGB rgb(float r, float g, float b)
-{
-    TQ3ColorRGB color;
-    color.r = r;
-    color.g = g;
-    color.b = b;
-    return color;
-}
-
-static TQ3Point3D point3(float x, float y, float z)
-{
-    TQ3Point3D p;
-    p.x = x;
-    p.y = y;
-    p.z = z;
-    return p;
-}
-
-static TQ3Vector3D vector3(float x, float y, float z)
-{
-    TQ3Vector3D v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
-}
-
-static void dispose(TQ3Object object)
-{
-    if (object != NULL)
-        Q3Object_Dispose(object);
-}
-
 /* A new attribute set with a diffuse colour (the caller disposes it). */
 static TQ3AttributeSet colour(float r, float g, float b)
 {
-    TQ3AttributeSet set = Q3AttributeSet_New();
-    TQ3ColorRGB c = rgb(r, g, b);
-    if (set != NULL && Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &c) != kQ3Success) {
-        Q3Object_Dispose(set);
-        set = NULL;
-    }
-    return set;
+    return color_set(rgb(r, g, b));
 }
 
 static TQ3Vertex3D vertex(float x, float y, float z, TQ3AttributeSet set)
@@ -583,35 +546,6 @@ static TQ3Status submit_entry(TQ3ViewObject view)
     return Q3Geometry_Submit(s_geometry, view);
 }
 
-/* An ambient light and a directional light from the upper left, behind the
- * viewer. */
-static TQ3GroupObject new_lights(void)
-{
-    TQ3GroupObject group = Q3LightGroup_New();
-    TQ3LightData ambient;
-    TQ3DirectionalLightData directional;
-    TQ3LightObject a, d;
-    int ok;
-    ambient.isOn = kQ3True;
-    ambient.brightness = 0.3f;
-    ambient.color = rgb(1, 1, 1);
-    directional.lightData = ambient;
-    directional.lightData.brightness = 0.9f;
-    directional.castsShadows = kQ3False;
-    directional.direction = vector3(0.6f, -0.6f, -0.8f);
-    a = Q3AmbientLight_New(&ambient);
-    d = Q3DirectionalLight_New(&directional);
-    ok = group != NULL && a != NULL && d != NULL && Q3Group_AddObject(group, a) != NULL &&
-         Q3Group_AddObject(group, d) != NULL;
-    dispose(a);
-    dispose(d);
-    if (!ok) {
-        dispose(group);
-        return NULL;
-    }
-    return group;
-}
-
 int q3gallery_render(unsigned long index, int lit, unsigned long width, unsigned long height, unsigned char *rgba)
 {
     Q3Scene scene;
@@ -630,7 +564,7 @@ int q3gallery_render(unsigned long index, int lit, unsigned long width, unsigned
     scene.submit = submit_entry;
     s_geometry = kEntries[index].make();
     s_lit = lit;
-    if (s_geometry == NULL || (lit && (lights = new_lights()) == NULL)) {
+    if (s_geometry == NULL || (lit && (lights = q3litscene_new_lights(0.3f, 0.9f, vector3(0.6f, -0.6f, -0.8f))) == NULL)) {
         dispose(s_geometry);
         return 1;
     }

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Copyright (c) 2026 The Q3 authors */
 #include "lit_scenes.h"
+#include "scene_util.h"
 
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
@@ -17,50 +18,6 @@
 #include <string.h>
 
 /* ---- Helpers ------------------------------------------------------------- */
-
-static TQ3ColorRGB rgb(float r, float g, float b)
-{
-    TQ3ColorRGB color;
-    color.r = r;
-    color.g = g;
-    color.b = b;
-    return color;
-}
-
-static TQ3Point3D point3(float x, float y, float z)
-{
-    TQ3Point3D p;
-    p.x = x;
-    p.y = y;
-    p.z = z;
-    return p;
-}
-
-static TQ3Vector3D vector3(float x, float y, float z)
-{
-    TQ3Vector3D v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
-}
-
-static void dispose(TQ3Object object)
-{
-    if (object != NULL)
-        Q3Object_Dispose(object);
-}
-
-/* Submits a new object and disposes of it; a NULL object is a failure. */
-static TQ3Status submit_new(TQ3Object object, TQ3ViewObject view)
-{
-    TQ3Status status;
-    if (object == NULL)
-        return kQ3Failure;
-    status = Q3Object_Submit(object, view);
-    Q3Object_Dispose(object);
-    return status;
-}
 
 /* A diffuse colour, and a specular colour and control for Phong. */
 static TQ3AttributeSet surface_set(TQ3ColorRGB diffuse)
@@ -175,13 +132,18 @@ static TQ3GroupObject finish(TQ3GroupObject group, int ok)
     return group;
 }
 
+TQ3GroupObject q3litscene_new_lights(float ambient, float directional, TQ3Vector3D direction)
+{
+    TQ3GroupObject group = Q3LightGroup_New();
+    return finish(group, group != NULL && add_ambient(group, ambient) &&
+                             add_directional(group, directional, direction));
+}
+
 /* What QuickDraw 3D viewers lit a model with: a dim ambient light and a
  * directional light from the upper left, behind the viewer. */
 static TQ3GroupObject lights_viewer(void)
 {
-    TQ3GroupObject group = Q3LightGroup_New();
-    return finish(group, group != NULL && add_ambient(group, 0.25f) &&
-                             add_directional(group, 0.9f, vector3(0.6f, -0.5f, -0.6f)));
+    return q3litscene_new_lights(0.25f, 0.9f, vector3(0.6f, -0.5f, -0.6f));
 }
 
 static TQ3GroupObject lights_ambient(void)
@@ -192,9 +154,7 @@ static TQ3GroupObject lights_ambient(void)
 
 static TQ3GroupObject lights_directional(void)
 {
-    TQ3GroupObject group = Q3LightGroup_New();
-    return finish(group, group != NULL && add_ambient(group, 0.15f) &&
-                             add_directional(group, 1.0f, vector3(1.0f, -1.0f, -0.4f)));
+    return q3litscene_new_lights(0.15f, 1.0f, vector3(1.0f, -1.0f, -0.4f));
 }
 
 /* A warm point light above the front of the stage, fading with distance. */

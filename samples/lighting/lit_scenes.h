@@ -29,6 +29,11 @@ unsigned long q3litscene_count(void);
 const Q3LitScene *q3litscene_get(unsigned long index);
 const Q3LitScene *q3litscene_find(const char *name);
 
+/* A new light group of a white ambient light and a white directional light
+ * shining along direction, at the brightnesses given (the caller disposes
+ * it), or NULL. */
+TQ3GroupObject q3litscene_new_lights(float ambient, float directional, TQ3Vector3D direction);
+
 /* Renders a lit scene as q3scene_render does (0 on success). */
 int q3litscene_render(const Q3LitScene *scene, unsigned long width, unsigned long height, unsigned char *rgba);
 

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Copyright (c) 2026 The Q3 authors */
 #include "scenes.h"
+#include "scene_util.h"
 
 #include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
@@ -14,33 +15,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* ---- Helpers ------------------------------------------------------------- */
-
-static TQ3ColorRGB rgb(float r, float g, float b)
-{
-    TQ3ColorRGB color;
-    color.r = r;
-    color.g = g;
-    color.b = b;
-    return color;
-}
-
-static TQ3AttributeSet color_set(TQ3ColorRGB color)
-{
-    TQ3AttributeSet set = Q3AttributeSet_New();
-    if (set != NULL && Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color) != kQ3Success) {
-        Q3Object_Dispose(set);
-        set = NULL;
-    }
-    return set;
-}
-
-static void dispose(TQ3Object object)
-{
-    if (object != NULL)
-        Q3Object_Dispose(object);
-}
 
 /* ---- A hexagon of colours as a TriMesh ---------------------------------- */
 
@@ -208,35 +182,6 @@ static TQ3Status submit_hidden_triangle(TQ3ViewObject view)
 }
 
 /* ---- Quadrics and solids ------------------------------------------------- */
-
-static TQ3Point3D point3(float x, float y, float z)
-{
-    TQ3Point3D p;
-    p.x = x;
-    p.y = y;
-    p.z = z;
-    return p;
-}
-
-static TQ3Vector3D vector3(float x, float y, float z)
-{
-    TQ3Vector3D v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
-}
-
-/* Submits a geometry made by New (NULL counts as a failure) and disposes it. */
-static TQ3Status submit_new(TQ3GeometryObject geometry, TQ3ViewObject view)
-{
-    TQ3Status status;
-    if (geometry == NULL)
-        return kQ3Failure;
-    status = Q3Geometry_Submit(geometry, view);
-    Q3Object_Dispose(geometry);
-    return status;
-}
 
 /* The box faces' colours, in Apple's order: left, right, front, back, top, bottom. */
 static void box_face_sets(TQ3AttributeSet faces[6])
