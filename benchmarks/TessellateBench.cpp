@@ -102,24 +102,58 @@ void Q3_ConstantForm(benchmark::State& state, int which)
     finishItems(state, double(out.vertexCount()));
 }
 
+// A retained curve inside a rendering loop under the constant style at
+// kSegmentsPerSpan, for the benchmarks of the public decomposition path;
+// edit() changes nothing but the curve's edit index, so nothing is reused.
+class DecomposingCurve {
+public:
+    explicit DecomposingCurve(const BenchCurve& curve)
+        : m_view(64, 64), m_knotIndex(curve.knots.size() / 2), m_knot(curve.knots[m_knotIndex])
+    {
+        const TQ3NURBCurveData data = q3bench::curveData(curve);
+        m_nurb = Q3NURBCurve_New(&data);
+        m_rendering = m_nurb != nullptr && Q3View_StartRendering(m_view.view()) == kQ3Success;
+        if (m_rendering) {
+            const TQ3SubdivisionStyleData style = q3bench::constantStyle(float(q3bench::kSegmentsPerSpan));
+            Q3SubdivisionStyle_Submit(&style, m_view.view());
+        }
+    }
+    ~DecomposingCurve()
+    {
+        if (m_rendering)
+            Q3View_EndRendering(m_view.view());
+        if (m_nurb != nullptr)
+            Q3Object_Dispose(m_nurb);
+    }
+    DecomposingCurve(const DecomposingCurve&) = delete;
+    DecomposingCurve& operator=(const DecomposingCurve&) = delete;
+
+    bool ready() const { return m_rendering; }
+    TQ3GeometryObject nurb() const { return m_nurb; }
+    TQ3ViewObject view() const { return m_view.view(); }
+    void edit() const { Q3NURBCurve_SetKnot(m_nurb, m_knotIndex, m_knot); }
+
+private:
+    q3bench::BenchView m_view;
+    unsigned long m_knotIndex;
+    float m_knot;
+    TQ3GeometryObject m_nurb = nullptr;
+    bool m_rendering = false;
+};
+
 void Q3_GetDecomposed(benchmark::State& state, int which)
 {
     const BenchCurve& curve = curveNamed(which);
     q3bench::Q3Session session;
-    q3bench::BenchView view(64, 64);
-    const TQ3NURBCurveData data = q3bench::curveData(curve);
-    TQ3GeometryObject nurb = Q3NURBCurve_New(&data);
-    const unsigned long knotIndex = curve.knots.size() / 2;
-    const float knot = curve.knots[knotIndex];
-    const TQ3SubdivisionStyleData style = q3bench::constantStyle(float(q3bench::kSegmentsPerSpan));
-    if (nurb == nullptr || Q3View_StartRendering(view.view()) != kQ3Success) {
+    const DecomposingCurve subject(curve);
+    if (!subject.ready()) {
         state.SkipWithError("creating the curve or starting the rendering loop failed");
         return;
     }
-    Q3SubdivisionStyle_Submit(&style, view.view());
+    TQ3GeometryObject nurb = subject.nurb();
 
     // The polyline must have every vertex the kernel makes.
-    TQ3GeometryObject first = Q3Geometry_GetDecomposed(nurb, view.view());
+    TQ3GeometryObject first = Q3Geometry_GetDecomposed(nurb, subject.view());
     TQ3PolyLineData polyLine{};
     const bool complete = first != nullptr && Q3PolyLine_GetData(first, &polyLine) == kQ3Success &&
                           polyLine.numVertices == curve.spanCount() * q3bench::kSegmentsPerSpan + 1;
@@ -129,8 +163,6 @@ void Q3_GetDecomposed(benchmark::State& state, int which)
     }
     if (!complete) {
         state.SkipWithError("Q3Geometry_GetDecomposed did not give spans * 64 + 1 vertices");
-        Q3View_EndRendering(view.view());
-        Q3Object_Dispose(nurb);
         return;
     }
 
@@ -139,8 +171,8 @@ void Q3_GetDecomposed(benchmark::State& state, int which)
     q3bench::runPaired(state, q3bench::Clock::kThreadCpu,
                        {{"decomposed",
                          [&] {
-                             Q3NURBCurve_SetKnot(nurb, knotIndex, knot);
-                             TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, view.view());
+                             subject.edit();
+                             TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, subject.view());
                              benchmark::DoNotOptimize(decomposed);
                              Q3Object_Dispose(decomposed);
                          }},
@@ -149,8 +181,6 @@ void Q3_GetDecomposed(benchmark::State& state, int which)
                              benchmark::DoNotOptimize(out.vertices.data());
                              benchmark::ClobberMemory();
                          }}});
-    Q3View_EndRendering(view.view());
-    Q3Object_Dispose(nurb);
     state.counters["vertices"] = double(curve.spanCount() * q3bench::kSegmentsPerSpan + 1);
 }
 
@@ -164,22 +194,17 @@ void Q3_PublicPath(benchmark::State& state, int which)
 {
     const BenchCurve& curve = curveNamed(which);
     q3bench::Q3Session session;
-    q3bench::BenchView view(64, 64);
-    const TQ3NURBCurveData data = q3bench::curveData(curve);
-    TQ3GeometryObject nurb = Q3NURBCurve_New(&data);
-    const unsigned long knotIndex = curve.knots.size() / 2;
-    const float knot = curve.knots[knotIndex];
-    const TQ3SubdivisionStyleData style = q3bench::constantStyle(float(q3bench::kSegmentsPerSpan));
-    if (nurb == nullptr || Q3View_StartRendering(view.view()) != kQ3Success) {
+    const DecomposingCurve subject(curve);
+    if (!subject.ready()) {
         state.SkipWithError("creating the curve or starting the rendering loop failed");
         return;
     }
-    Q3SubdivisionStyle_Submit(&style, view.view());
+    TQ3GeometryObject nurb = subject.nurb();
     std::vector<float> user(3 * (curve.spanCount() * q3bench::kSegmentsPerSpan + 1));
     std::size_t delivered = 0;
     for (auto _ : state) {
-        Q3NURBCurve_SetKnot(nurb, knotIndex, knot);
-        TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, view.view());
+        subject.edit();
+        TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, subject.view());
         TQ3PolyLineData polyLine{};
         if (decomposed != nullptr && Q3PolyLine_GetData(decomposed, &polyLine) == kQ3Success) {
             delivered = std::min<std::size_t>(polyLine.numVertices, user.size() / 3);
@@ -195,8 +220,6 @@ void Q3_PublicPath(benchmark::State& state, int which)
         benchmark::DoNotOptimize(user.data());
         benchmark::ClobberMemory();
     }
-    Q3View_EndRendering(view.view());
-    Q3Object_Dispose(nurb);
     if (delivered != curve.spanCount() * q3bench::kSegmentsPerSpan + 1)
         state.SkipWithError("the public path did not deliver spans * 64 + 1 vertices");
     state.counters["vertices"] = double(delivered);
