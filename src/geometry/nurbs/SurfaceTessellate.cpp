@@ -59,6 +59,7 @@
 
 #include "geometry/nurbs/Evaluate.h"
 #include "geometry/nurbs/ParamMesh.h"
+#include "geometry/nurbs/SurfaceGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -121,8 +122,10 @@ public:
 
     void run()
     {
-        if (m_uSpans.empty() || m_vSpans.empty())
+        if (m_uSpans.empty() || m_vSpans.empty()) {
+            clearArrays();
             return;
+        }
         m_adaptive = m_how.adaptive;
         std::vector<Row> rows;
         if (m_adaptive) {
@@ -139,6 +142,7 @@ public:
                 return;
             }
         }
+        clearArrays();
         buildRows(rows);
         rows.clear();
         if (!insertTrims())
@@ -155,6 +159,17 @@ public:
     }
 
 private:
+    // The caller's storage emptied (its capacity kept); emitGrid overwrites it
+    // without this.
+    void clearArrays()
+    {
+        m_out.positions.clear();
+        m_out.normals.clear();
+        m_out.uvs.clear();
+        m_out.parameters.clear();
+        m_out.triangles.clear();
+    }
+
     // ---- Measuring ---------------------------------------------------------
 
     bool mapPoint(const Point3& local, Point3& image) const
@@ -595,15 +610,16 @@ private:
             layoutGrid(rows, m, n);
     }
 
-    // The untrimmed constant method straight to the output: the basis
-    // functions of every u sample are computed once and shared by all rows,
-    // each row collapses the columns once (SurfaceRowEvaluator), and each
-    // quadrilateral is cut along its shorter diagonal.
+    // The untrimmed constant method straight to the output: the grid of
+    // vertices by evaluateGrid (the basis of every distinct u and v computed
+    // once, rows through the contraction several at a time), and each
+    // quadrilateral cut along its shorter diagonal.
     void emitGrid()
     {
         const std::uint32_t m = m_uSegments, n = m_vSegments;
-        const unsigned ku = m_s.uOrder;
         std::vector<double> us, vs;
+        us.reserve(m_uSpans.size() * m + 1);
+        vs.reserve(m_vSpans.size() * n + 1);
         for (const Span& span : m_uSpans)
             for (std::uint32_t j = 0; j < m; ++j)
                 us.push_back(span.start + (span.end - span.start) * double(j) / double(m));
@@ -613,26 +629,25 @@ private:
                 vs.push_back(span.start + (span.end - span.start) * double(j) / double(n));
         vs.push_back(m_vSpans.back().end);
         const std::size_t columns = us.size(), rowCount = vs.size();
-        std::vector<std::size_t> spanOf(columns);
-        std::vector<double> basis(2 * ku * columns);
-        for (std::size_t i = 0; i < columns; ++i) {
-            spanOf[i] = findKnotSpan(m_s.uKnots, m_s.numColumns, ku, us[i]);
-            basisWithDerivative(m_s.uKnots, spanOf[i], ku, us[i], &basis[2 * ku * i], &basis[2 * ku * i + ku]);
-        }
         const std::size_t count = columns * rowCount;
+        // Storage is reused from the caller's last call: resize without clearing
+        // first, so that nothing is written twice.
         m_out.positions.resize(3 * count);
         m_out.normals.resize(3 * count);
         m_out.uvs.resize(2 * count);
         m_out.parameters.resize(2 * count);
-        SurfaceRowEvaluator row(m_s);
-        for (std::size_t r = 0; r < rowCount; ++r) {
-            row.setV(vs[r], true);
+        evaluateGrid(m_s, us.data(), columns, vs.data(), rowCount, m_out.positions.data(), m_out.normals.data());
+        float* uv = m_out.uvs.data();
+        double* parameter = m_out.parameters.data();
+        for (std::size_t r = 0; r < rowCount; ++r)
             for (std::size_t i = 0; i < columns; ++i) {
-                const std::size_t k = r * columns + i;
-                const SurfacePoint p = row.pointWithNormal(us[i], spanOf[i], &basis[2 * ku * i], &basis[2 * ku * i + ku]);
-                writeVertex(k, p, us[i], vs[r]);
+                uv[0] = float(us[i]);
+                uv[1] = float(vs[r]);
+                parameter[0] = us[i];
+                parameter[1] = vs[r];
+                uv += 2;
+                parameter += 2;
             }
-        }
         m_out.triangles.resize(6 * (columns - 1) * (rowCount - 1));
         std::uint32_t* out = m_out.triangles.data();
         const float* p = m_out.positions.data();
@@ -1481,11 +1496,7 @@ private:
 
 void tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how, TessellatedSurface& out)
 {
-    out.positions.clear();
-    out.normals.clear();
-    out.uvs.clear();
-    out.parameters.clear();
-    out.triangles.clear();
+    // The arrays are replaced by Tessellator::run (emptied, or overwritten in place).
     out.substituted = false;
     out.effectiveValue = 0.0;
     out.uSegments = out.vSegments = 0;
