@@ -60,10 +60,12 @@
 #include "geometry/nurbs/Evaluate.h"
 #include "geometry/nurbs/ParamMesh.h"
 #include "geometry/nurbs/SurfaceGrid.h"
+#include "geometry/nurbs/SurfaceHull.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <set>
 
@@ -118,6 +120,8 @@ public:
           m_uSpans(uSpans(m_s)), m_vSpans(vSpans(m_s)), m_iso(m_s)
     {
         m_mesh.setDomain(m_domain.u0, m_domain.u1, m_domain.v0, m_domain.v1);
+        if (how.adaptive && how.hasClip)
+            m_hull.emplace(m_s, how.clip);
     }
 
     void run()
@@ -152,6 +156,10 @@ public:
             refine();
             coarsen();
             improve();
+            // Flips can hand a long edge of a hidden triangle to one that is
+            // seen; split what that left too long.
+            if (m_hull)
+                refine();
         } else if (m_trimmed) {
             improve();
         }
@@ -1185,6 +1193,46 @@ private:
         }
     }
 
+    // Screen space: whether triangle t cannot be seen. Cheap first: its
+    // three vertices outside one plane of the view volume; then the convex
+    // hull of the surface over its (u, v) bounding box outside that plane
+    // (SurfaceHull), which covers the flat triangle too.
+    bool hiddenTriangle(std::uint32_t t) const
+    {
+        const ParamMesh::Triangle& tri = m_mesh.triangles[t];
+        unsigned common = 31u;
+        double u0 = kInfinity, u1 = -kInfinity, v0 = kInfinity, v1 = -kInfinity;
+        for (int k = 0; k < 3; ++k) {
+            const Point3& p = m_local[tri.v[k]];
+            double values[5];
+            m_hull->planes(p.x, p.y, p.z, values);
+            for (unsigned plane = 0; plane < 5; ++plane)
+                if (!(values[plane] < 0.0))
+                    common &= ~(1u << plane);
+            const ParamMesh::Vertex& vertex = m_mesh.vertices[tri.v[k]];
+            u0 = std::min(u0, vertex.u);
+            u1 = std::max(u1, vertex.u);
+            v0 = std::min(v0, vertex.v);
+            v1 = std::max(v1, vertex.v);
+        }
+        return common != 0 && m_hull->outside(u0, u1, v0, v1);
+    }
+
+    // Whether no triangle on edge (a, b) can be seen (never without a clip).
+    bool hiddenEdge(std::uint32_t a, std::uint32_t b) const
+    {
+        if (!m_hull)
+            return false;
+        std::uint32_t t;
+        int e;
+        if (!m_mesh.findEdge(a, b, t, e) && !m_mesh.findEdge(b, a, t, e))
+            return false;
+        if (!hiddenTriangle(t))
+            return false;
+        const std::uint32_t n = m_mesh.triangles[t].neighbour[e];
+        return n == kNone || hiddenTriangle(n);
+    }
+
     void refine()
     {
         if (!std::isfinite(m_c))
@@ -1201,7 +1249,7 @@ private:
             if (failed.count({std::min(a, b), std::max(a, b)}) != 0)
                 return;
             const double length = drawnLength(a, b);
-            if (length > m_c)
+            if (length > m_c && !hiddenEdge(a, b))
                 heap.push(Long{length, a, b});
         };
         for (std::uint32_t t = 0; t < m_mesh.triangles.size(); ++t) {
@@ -1223,6 +1271,8 @@ private:
             if (failed.count({std::min(edge.a, edge.b), std::max(edge.a, edge.b)}) != 0)
                 continue;
             if (!m_mesh.findEdge(edge.a, edge.b, t, e) && !m_mesh.findEdge(edge.b, edge.a, t, e))
+                continue;
+            if (hiddenEdge(edge.a, edge.b))
                 continue;
             if ((m_mesh.triangles[t].constrained >> e) & 1u) {
                 m_out.capped = true;
@@ -1486,6 +1536,7 @@ private:
     std::vector<Constraint> m_constraints;
     bool m_trimmed = false;
 
+    std::optional<SurfaceHull> m_hull;
     ParamMesh m_mesh;
     std::vector<Point3> m_local;
     std::vector<Point3> m_image;

@@ -11,10 +11,12 @@
 #include "geometry/nurbs/SurfaceGrid.h"
 
 #include "geometry/nurbs/Bezier.h"
+#include "geometry/nurbs/SurfaceHull.h"
 #include "geometry/nurbs/SurfaceTessellate.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -51,9 +53,9 @@ std::vector<float> randomKnots(std::mt19937& rng, std::size_t count, unsigned or
     return knots;
 }
 
-RandomPatch randomPatch(std::mt19937& rng, bool collapseFirstRow)
+RandomPatch randomPatch(std::mt19937& rng, bool collapseFirstRow, unsigned maxOrder = 11)
 {
-    std::uniform_int_distribution<unsigned> order(2, 11);
+    std::uniform_int_distribution<unsigned> order(2, maxOrder);
     std::uniform_real_distribution<float> coordinate(-2.0f, 2.0f), weight(0.3f, 3.0f);
     RandomPatch p;
     p.uOrder = order(rng);
@@ -190,6 +192,61 @@ TEST(SurfaceGrid, AReusedResultEqualsAFreshOne)
     EXPECT_EQ(reused.triangles, fresh.triangles);
     EXPECT_EQ(reused.uSegments, 2u);
     EXPECT_EQ(reused.vSegments, 3u);
+}
+
+// SurfaceHull never calls a piece outside the view volume when a point of it
+// (the recursive sum above, on a 6 x 6 grid over the rectangle) is inside
+// the plane: on random patches, random projective maps and random
+// rectangles; and it does call some pieces outside.
+TEST(SurfaceHull, APieceCalledOutsideHasEveryPointOutsideOnePlane)
+{
+    std::mt19937 rng(424242);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), entry(-1.0, 1.0);
+    std::size_t outsideCount = 0, total = 0;
+    for (int trial = 0; trial < 30; ++trial) {
+        // Orders up to 6: the recursive sum costs 2^order per basis function.
+        const RandomPatch p = randomPatch(rng, false, 6);
+        std::array<double, 16> clip;
+        for (double& value : clip)
+            value = entry(rng);
+        clip[15] += 2.0;
+        const SurfaceHull hull(p.ref(), clip);
+        const double uLo = p.uKnots[p.uOrder - 1], uHi = p.uKnots[p.columns];
+        const double vLo = p.vKnots[p.vOrder - 1], vHi = p.vKnots[p.rows];
+        for (int r = 0; r < 30; ++r) {
+            double u0 = uLo + (uHi - uLo) * unit(rng), u1 = uLo + (uHi - uLo) * unit(rng);
+            double v0 = vLo + (vHi - vLo) * unit(rng), v1 = vLo + (vHi - vLo) * unit(rng);
+            if (r % 2 == 0) { // small rectangles too
+                u1 = u0 + (u1 - u0) * 0.05;
+                v1 = v0 + (v1 - v0) * 0.05;
+            }
+            if (u1 < u0)
+                std::swap(u0, u1);
+            if (v1 < v0)
+                std::swap(v0, v1);
+            ++total;
+            if (!hull.outside(u0, u1, v0, v1))
+                continue;
+            ++outsideCount;
+            unsigned common = 31u;
+            for (int i = 0; i <= 5; ++i)
+                for (int j = 0; j <= 5; ++j) {
+                    double point[3];
+                    referencePoint(p, u0 + (u1 - u0) * i / 5.0, v0 + (v1 - v0) * j / 5.0, point);
+                    double f[4];
+                    for (int k = 0; k < 4; ++k)
+                        f[k] = clip[4 * k] * point[0] + clip[4 * k + 1] * point[1] + clip[4 * k + 2] * point[2] +
+                               clip[4 * k + 3];
+                    const double values[5] = {f[3] + f[0], f[3] - f[0], f[3] + f[1], f[3] - f[1], -f[2]};
+                    for (unsigned plane = 0; plane < 5; ++plane)
+                        if (!(values[plane] < 0.0))
+                            common &= ~(1u << plane);
+                }
+            EXPECT_NE(common, 0u) << "trial " << trial << " rectangle " << r;
+        }
+    }
+    EXPECT_GT(outsideCount, total / 20);
+    EXPECT_LT(outsideCount, total);
 }
 
 } // namespace
