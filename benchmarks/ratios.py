@@ -261,6 +261,25 @@ def memory(runs, out):
     out.append("")
 
 
+def patches(runs, out):
+    out.append("### 7. NURB patch (torus, rational biquadratic) against gluNurbsSurface, same triangles "
+               "(paired, wall time, medians)\n")
+    out.append("| m (triangles) | Q3 | GLU | GLU time / Q3 time | Target | Q3 max error | GLU max error |")
+    out.append("|---|---|---|---|---|---|---|")
+    for m in (16, 64):
+        name = f"Glu_Surface/torus_m{m}"
+        problem = missing(runs, name)
+        if problem:
+            out.append(f"| {m} | {problem} | | | | | |")
+            continue
+        c = lambda k: runs.counter(name, k)
+        speedup = 1.0 / c("q3_over_glu")
+        out.append(f"| {m} ({c('triangles'):.0f}) | {fmt(c('q3_ms'))} ms | {fmt(c('glu_ms'))} ms | "
+                   f"**{speedup:.2f}×** | {verdict(speedup, 3.0, True)} | {fmt(c('q3_max_error'))} | "
+                   f"{fmt(c('glu_max_error'))} |")
+    out.append("")
+
+
 def main(paths):
     runs = Runs(paths)
     out = []
@@ -269,6 +288,7 @@ def main(paths):
     frames(runs, out)
     memory(runs, out)
     meshes(runs, out)
+    patches(runs, out)
     counts = sorted({runs.count(n) for n in runs.runs})
     out.append(f"Repetitions pooled per benchmark: {', '.join(map(str, counts))}.")
     if runs.errors:

@@ -11,6 +11,7 @@
 #include "geometry/nurbs/Curve.h"
 #include "geometry/nurbs/Tessellate.h"
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -34,6 +35,11 @@ struct SubdivisionMeasure {
     double c1 = 0.0;
     double c2 = 0.0;
     nurbs::PointMapping map;
+    /// Screen space with a window: local -> frustum coordinates, row-major
+    /// (nurbs::SurfaceHull), so that parts outside the view volume can be
+    /// left coarse. Its values are in `key` already (as the map's).
+    bool hasClip = false;
+    std::array<double, 16> clip{};
     std::vector<double> key;
 };
 

@@ -335,6 +335,8 @@ void NURBPatch::decompose(const DecomposeContext& context, PrimitiveSink& sink) 
                 how.adaptive = true;
                 how.maxEdge = measure.c1;
                 how.mapping = measure.map;
+                how.hasClip = measure.hasClip;
+                how.clip = measure.clip;
             }
             const nurbs::TessellatedSurface result = nurbs::tessellateSurface(patchRefOf(data()), how);
             if (result.crossing) {

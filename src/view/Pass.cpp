@@ -95,7 +95,16 @@ void Pass::curvePolyline(const nurbs::CurveRef& curve, CurveCache* cache, const 
 
 SubdivisionMeasure Pass::subdivisionMeasure() const
 {
-    return measureFor(tessellationSetting());
+    const TessellationSetting setting = tessellationSetting();
+    SubdivisionMeasure measure = measureFor(setting);
+    if (measure.method == kQ3SubdivisionMethodScreenSpace && setting.window) {
+        const Matrix m = then(setting.localToWorld, setting.window->worldToFrustum);
+        measure.hasClip = true;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                measure.clip[4 * i + j] = m[j][i];
+    }
+    return measure;
 }
 
 Ref<Geometry> Pass::decomposed(const Geometry& geometry) const

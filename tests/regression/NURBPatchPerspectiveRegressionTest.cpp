@@ -5,7 +5,10 @@
 // camera (behind it, through it, across its hither plane), the surface
 // version of SubdivisionPerspectiveRegressionTest.cpp: the part of every
 // triangle edge that is drawn (beyond the hither plane) is at most c1 pixels
-// long, and the work stays bounded (never more than the triangle cap).
+// long on every triangle that can be seen (not all three vertices outside one
+// plane of the view volume, computed here from the camera), triangles that
+// cannot be seen are not held to it, and the work stays bounded (never more
+// than the triangle cap).
 // (Vertices on the surface are checked by NURBPatchPropertyRegressionTest.) Checked with PatchReference.h's evaluator and
 // SubdivisionReference.h's projection.
 
@@ -36,7 +39,7 @@ constexpr unsigned long kWidth = 128;
 constexpr unsigned long kHeight = 96;
 constexpr float kHither = 0.5f;
 constexpr unsigned kSeed = 20261202u;
-constexpr int kPatches = 12;
+constexpr int kPatches = 24;
 
 class NURBPatchPerspectiveRegressionTest : public q3test::Q3ApiTest {
 protected:
@@ -103,6 +106,35 @@ protected:
         Q3Object_Dispose(object);
     }
 
+    // The view volume of m_camera (eye at the origin looking down -z, y up,
+    // view port [-1, 1]^2) as five plane values, each >= 0 inside: beyond
+    // the hither plane, and within the four sides of the pyramid.
+    void planeValues(const Vec3& p, Real out[5]) const
+    {
+        const Real across = 1 / std::tan(Real(m_camera.fov) / 2);
+        const Real aspect = m_camera.aspectRatioXToY;
+        const Real fx = aspect >= 1 ? across / aspect : across;
+        const Real fy = aspect >= 1 ? across : across * aspect;
+        const Real depth = -p.z;
+        out[0] = depth - kHither;
+        out[1] = depth - fx * p.x;
+        out[2] = depth + fx * p.x;
+        out[3] = depth - fy * p.y;
+        out[4] = depth + fy * p.y;
+    }
+
+    bool outsideOnePlane(const Vec3& a, const Vec3& b, const Vec3& c) const
+    {
+        Real va[5], vb[5], vc[5];
+        planeValues(a, va);
+        planeValues(b, vb);
+        planeValues(c, vc);
+        for (int k = 0; k < 5; ++k)
+            if (va[k] < 0 && vb[k] < 0 && vc[k] < 0)
+                return true;
+        return false;
+    }
+
     std::vector<unsigned char> m_memory;
     TQ3DrawContextObject m_context = nullptr;
     TQ3ViewObject m_view = nullptr;
@@ -114,7 +146,7 @@ TEST_F(NURBPatchPerspectiveRegressionTest, TheDrawnPieceOfEveryEdgeIsAtMostC1)
     std::mt19937 rng(kSeed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const ScreenMap map(m_camera, {{0, 0}, {float(kWidth), float(kHeight)}});
-    std::size_t crossing = 0, largest = 0, cappedPatches = 0;
+    std::size_t crossing = 0, largest = 0, cappedPatches = 0, hidden = 0;
     for (int index = 0; index < kPatches && !HasFatalFailure(); ++index) {
         PatchOptions options;
         options.uOrder = 2 + unsigned(index % 6);
@@ -141,8 +173,8 @@ TEST_F(NURBPatchPerspectiveRegressionTest, TheDrawnPieceOfEveryEdgeIsAtMostC1)
         render(p, c1, points, triangles, capped);
         forgetPosted();
         if (capped) {
-            // Gave in to the cap (posting kQ3WarningParameterOutOfRange, as
-            // QD3DGeometry.h says): its edges may be longer than c1.
+            // Gave in (posting kQ3WarningParameterOutOfRange): see the count below.
+            std::printf("[ patches ] patch %d gave in\n", index);
             ++cappedPatches;
             continue;
         }
@@ -150,7 +182,13 @@ TEST_F(NURBPatchPerspectiveRegressionTest, TheDrawnPieceOfEveryEdgeIsAtMostC1)
         EXPECT_LE(triangles.size(), std::size_t(kQ3SubdivisionMaxTrianglesPerPatch));
         const std::string what = "patch " + std::to_string(index);
         const Real size = p.size();
-        for (const auto& t : triangles)
+        for (const auto& t : triangles) {
+            // A triangle whose three vertices are outside one plane of the
+            // view volume cannot be seen: it need not keep the bound.
+            if (outsideOnePlane(points[t[0]], points[t[1]], points[t[2]])) {
+                ++hidden;
+                continue;
+            }
             for (int k = 0; k < 3; ++k) {
                 Vec3 a = points[t[k]], b = points[t[(k + 1) % 3]];
                 const Real da = map.depth(a), db = map.depth(b);
@@ -168,21 +206,24 @@ TEST_F(NURBPatchPerspectiveRegressionTest, TheDrawnPieceOfEveryEdgeIsAtMostC1)
                 EXPECT_LE(std::hypot(bx - ax, by - ay), c1 + slack)
                     << what << ", depths " << double(da) << " and " << double(db);
             }
+        }
         if (HasFailure()) {
             std::printf("[ patches ] first failing patch around the eye: %s\n", what.c_str());
             break;
         }
     }
-    std::printf("[ patches ] around the eye: %zu edges cross the hither plane; at most %zu triangles; %zu of %d "
-                "patches gave in to the triangle cap\n",
-                crossing, largest, cappedPatches, kPatches);
-    // A known limit: where an edge cannot be split finely enough next to
-    // the hither plane (its midpoint too close to an end on the parameter
-    // key grid), the patch is drawn with longer edges there and warns. Today
-    // that is 5 of these 12 patches; the rest keep the bound. (Some patches
-    // of this family take seconds to reach the cap, so the count is small.)
-    EXPECT_LE(cappedPatches, std::size_t(kPatches / 2));
+    std::printf("[ patches ] around the eye: %zu edges cross the hither plane; at most %zu triangles; %zu hidden "
+                "triangles; %zu of %d patches gave in to the triangle cap\n",
+                crossing, largest, hidden, cappedPatches, kPatches);
+    // A known limit: next to the hither plane an edge can still be left too
+    // long where its midpoint falls, on the mesh's parameter key grid, on a
+    // vertex that is not one of its triangles' (nearly collinear vertices
+    // along the hither plane); the patch then warns. 3 of these 24 patches
+    // do (before the view-volume test, 5 of the first 12 did, some taking
+    // seconds); every other patch keeps the bound on every visible triangle.
+    EXPECT_LE(cappedPatches, std::size_t(kPatches / 8));
     EXPECT_GT(crossing, 20u) << "the patches should cross the hither plane";
+    EXPECT_GT(hidden, 0u) << "some triangles should be out of view";
 }
 
 } // namespace

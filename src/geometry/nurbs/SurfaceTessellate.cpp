@@ -59,10 +59,13 @@
 
 #include "geometry/nurbs/Evaluate.h"
 #include "geometry/nurbs/ParamMesh.h"
+#include "geometry/nurbs/SurfaceGrid.h"
+#include "geometry/nurbs/SurfaceHull.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <set>
 
@@ -117,12 +120,16 @@ public:
           m_uSpans(uSpans(m_s)), m_vSpans(vSpans(m_s)), m_iso(m_s)
     {
         m_mesh.setDomain(m_domain.u0, m_domain.u1, m_domain.v0, m_domain.v1);
+        if (how.adaptive && how.hasClip)
+            m_hull.emplace(m_s, how.clip);
     }
 
     void run()
     {
-        if (m_uSpans.empty() || m_vSpans.empty())
+        if (m_uSpans.empty() || m_vSpans.empty()) {
+            clearArrays();
             return;
+        }
         m_adaptive = m_how.adaptive;
         std::vector<Row> rows;
         if (m_adaptive) {
@@ -139,6 +146,7 @@ public:
                 return;
             }
         }
+        clearArrays();
         buildRows(rows);
         rows.clear();
         if (!insertTrims())
@@ -148,6 +156,10 @@ public:
             refine();
             coarsen();
             improve();
+            // Flips can hand a long edge of a hidden triangle to one that is
+            // seen; split what that left too long.
+            if (m_hull)
+                refine();
         } else if (m_trimmed) {
             improve();
         }
@@ -155,6 +167,17 @@ public:
     }
 
 private:
+    // The caller's storage emptied (its capacity kept); emitGrid overwrites it
+    // without this.
+    void clearArrays()
+    {
+        m_out.positions.clear();
+        m_out.normals.clear();
+        m_out.uvs.clear();
+        m_out.parameters.clear();
+        m_out.triangles.clear();
+    }
+
     // ---- Measuring ---------------------------------------------------------
 
     bool mapPoint(const Point3& local, Point3& image) const
@@ -595,15 +618,16 @@ private:
             layoutGrid(rows, m, n);
     }
 
-    // The untrimmed constant method straight to the output: the basis
-    // functions of every u sample are computed once and shared by all rows,
-    // each row collapses the columns once (SurfaceRowEvaluator), and each
-    // quadrilateral is cut along its shorter diagonal.
+    // The untrimmed constant method straight to the output: the grid of
+    // vertices by evaluateGrid (the basis of every distinct u and v computed
+    // once, rows through the contraction several at a time), and each
+    // quadrilateral cut along its shorter diagonal.
     void emitGrid()
     {
         const std::uint32_t m = m_uSegments, n = m_vSegments;
-        const unsigned ku = m_s.uOrder;
         std::vector<double> us, vs;
+        us.reserve(m_uSpans.size() * m + 1);
+        vs.reserve(m_vSpans.size() * n + 1);
         for (const Span& span : m_uSpans)
             for (std::uint32_t j = 0; j < m; ++j)
                 us.push_back(span.start + (span.end - span.start) * double(j) / double(m));
@@ -613,26 +637,25 @@ private:
                 vs.push_back(span.start + (span.end - span.start) * double(j) / double(n));
         vs.push_back(m_vSpans.back().end);
         const std::size_t columns = us.size(), rowCount = vs.size();
-        std::vector<std::size_t> spanOf(columns);
-        std::vector<double> basis(2 * ku * columns);
-        for (std::size_t i = 0; i < columns; ++i) {
-            spanOf[i] = findKnotSpan(m_s.uKnots, m_s.numColumns, ku, us[i]);
-            basisWithDerivative(m_s.uKnots, spanOf[i], ku, us[i], &basis[2 * ku * i], &basis[2 * ku * i + ku]);
-        }
         const std::size_t count = columns * rowCount;
+        // Storage is reused from the caller's last call: resize without clearing
+        // first, so that nothing is written twice.
         m_out.positions.resize(3 * count);
         m_out.normals.resize(3 * count);
         m_out.uvs.resize(2 * count);
         m_out.parameters.resize(2 * count);
-        SurfaceRowEvaluator row(m_s);
-        for (std::size_t r = 0; r < rowCount; ++r) {
-            row.setV(vs[r], true);
+        evaluateGrid(m_s, us.data(), columns, vs.data(), rowCount, m_out.positions.data(), m_out.normals.data());
+        float* uv = m_out.uvs.data();
+        double* parameter = m_out.parameters.data();
+        for (std::size_t r = 0; r < rowCount; ++r)
             for (std::size_t i = 0; i < columns; ++i) {
-                const std::size_t k = r * columns + i;
-                const SurfacePoint p = row.pointWithNormal(us[i], spanOf[i], &basis[2 * ku * i], &basis[2 * ku * i + ku]);
-                writeVertex(k, p, us[i], vs[r]);
+                uv[0] = float(us[i]);
+                uv[1] = float(vs[r]);
+                parameter[0] = us[i];
+                parameter[1] = vs[r];
+                uv += 2;
+                parameter += 2;
             }
-        }
         m_out.triangles.resize(6 * (columns - 1) * (rowCount - 1));
         std::uint32_t* out = m_out.triangles.data();
         const float* p = m_out.positions.data();
@@ -1170,6 +1193,46 @@ private:
         }
     }
 
+    // Screen space: whether triangle t cannot be seen. Cheap first: its
+    // three vertices outside one plane of the view volume; then the convex
+    // hull of the surface over its (u, v) bounding box outside that plane
+    // (SurfaceHull), which covers the flat triangle too.
+    bool hiddenTriangle(std::uint32_t t) const
+    {
+        const ParamMesh::Triangle& tri = m_mesh.triangles[t];
+        unsigned common = 31u;
+        double u0 = kInfinity, u1 = -kInfinity, v0 = kInfinity, v1 = -kInfinity;
+        for (int k = 0; k < 3; ++k) {
+            const Point3& p = m_local[tri.v[k]];
+            double values[5];
+            m_hull->planes(p.x, p.y, p.z, values);
+            for (unsigned plane = 0; plane < 5; ++plane)
+                if (!(values[plane] < 0.0))
+                    common &= ~(1u << plane);
+            const ParamMesh::Vertex& vertex = m_mesh.vertices[tri.v[k]];
+            u0 = std::min(u0, vertex.u);
+            u1 = std::max(u1, vertex.u);
+            v0 = std::min(v0, vertex.v);
+            v1 = std::max(v1, vertex.v);
+        }
+        return common != 0 && m_hull->outside(u0, u1, v0, v1);
+    }
+
+    // Whether no triangle on edge (a, b) can be seen (never without a clip).
+    bool hiddenEdge(std::uint32_t a, std::uint32_t b) const
+    {
+        if (!m_hull)
+            return false;
+        std::uint32_t t;
+        int e;
+        if (!m_mesh.findEdge(a, b, t, e) && !m_mesh.findEdge(b, a, t, e))
+            return false;
+        if (!hiddenTriangle(t))
+            return false;
+        const std::uint32_t n = m_mesh.triangles[t].neighbour[e];
+        return n == kNone || hiddenTriangle(n);
+    }
+
     void refine()
     {
         if (!std::isfinite(m_c))
@@ -1186,7 +1249,7 @@ private:
             if (failed.count({std::min(a, b), std::max(a, b)}) != 0)
                 return;
             const double length = drawnLength(a, b);
-            if (length > m_c)
+            if (length > m_c && !hiddenEdge(a, b))
                 heap.push(Long{length, a, b});
         };
         for (std::uint32_t t = 0; t < m_mesh.triangles.size(); ++t) {
@@ -1208,6 +1271,8 @@ private:
             if (failed.count({std::min(edge.a, edge.b), std::max(edge.a, edge.b)}) != 0)
                 continue;
             if (!m_mesh.findEdge(edge.a, edge.b, t, e) && !m_mesh.findEdge(edge.b, edge.a, t, e))
+                continue;
+            if (hiddenEdge(edge.a, edge.b))
                 continue;
             if ((m_mesh.triangles[t].constrained >> e) & 1u) {
                 m_out.capped = true;
@@ -1471,6 +1536,7 @@ private:
     std::vector<Constraint> m_constraints;
     bool m_trimmed = false;
 
+    std::optional<SurfaceHull> m_hull;
     ParamMesh m_mesh;
     std::vector<Point3> m_local;
     std::vector<Point3> m_image;
@@ -1481,11 +1547,7 @@ private:
 
 void tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how, TessellatedSurface& out)
 {
-    out.positions.clear();
-    out.normals.clear();
-    out.uvs.clear();
-    out.parameters.clear();
-    out.triangles.clear();
+    // The arrays are replaced by Tessellator::run (emptied, or overwritten in place).
     out.substituted = false;
     out.effectiveValue = 0.0;
     out.uSegments = out.vSegments = 0;

@@ -6,6 +6,7 @@
 #include "geometry/nurbs/Surface.h"
 #include "geometry/nurbs/Tessellate.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -50,6 +51,13 @@ struct SurfaceSubdivision {
     /// PointMapping: false for a point without an image).
     double maxEdge = 0.0;
     PointMapping mapping;
+    /// Screen space: the map from local points to the view's frustum
+    /// coordinates (SurfaceHull.h), when `hasClip`. Triangles whose piece of
+    /// the surface lies outside the view volume (shown by the convex hull of
+    /// its Bezier control points) cannot be seen and are not held to
+    /// maxEdge; every other triangle is.
+    bool hasClip = false;
+    std::array<double, 16> clip{};
 };
 
 /// A tessellated patch: triangles over vertices, each vertex a point of the
