@@ -24,8 +24,9 @@
  *     while (Q3View_EndWriting(view) == kQ3ViewStatusRetraverse);
  * then Q3File_Close(file), which puts the bytes into the storage. A file is
  * binary and big-endian (as Mac QuickDraw 3D wrote it) unless the mode
- * includes kQ3FileModeText. Reading takes both encodings and both byte
- * orders.
+ * includes kQ3FileModeText, or kQ3FileModeSwap for a little-endian binary
+ * file (whose header's tag reads "FMD3"). Reading takes both encodings and
+ * both byte orders.
  *
  * An object written twice into one file (a shared attribute set, a geometry
  * in two groups) is written once and referred to the second time, through
@@ -79,7 +80,10 @@ enum TQ3FileModeMasks {
     kQ3FileModeNormal = 0,
     kQ3FileModeStream = 1 << 0,
     kQ3FileModeDatabase = 1 << 1,
-    kQ3FileModeText = 1 << 2
+    kQ3FileModeText = 1 << 2,
+    /* Q3 extension (Quesa's name and value): a binary file in little-endian
+     * byte order. OpenWrite writes one; OpenRead reports it for one. */
+    kQ3FileModeSwap = 1 << 3
 };
 typedef enum TQ3FileModeMasks TQ3FileModeMasks;
 typedef unsigned long TQ3FileMode;
@@ -111,7 +115,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_SetStorage(TQ3FileObject theFile, TQ3StorageOb
 /*
  * Q3File_OpenRead: reads the storage's header and opens the file for
  * reading; *mode (may be NULL) is the file's mode, with kQ3FileModeText for a
- * text file.
+ * text file and kQ3FileModeSwap for a little-endian binary one.
  * Errors: kQ3ErrorFileAlreadyOpen; kQ3ErrorNoStorageSetForFile;
  * kQ3ErrorInvalidMetafile and the other metafile errors for a file that is
  * not a 3DMF 1.x file (the file stays closed).
@@ -120,11 +124,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_OpenRead(TQ3FileObject theFile, TQ3FileMode *m
 
 /*
  * Q3File_OpenWrite: opens the file for writing in `mode` (Normal, Stream or
- * Database, optionally with kQ3FileModeText). The storage is written when the
- * file is closed.
+ * Database, optionally with kQ3FileModeText or kQ3FileModeSwap). The storage
+ * is written when the file is closed.
  * Errors: kQ3ErrorFileAlreadyOpen; kQ3ErrorNoStorageSetForFile;
- * kQ3ErrorInvalidParameter for a mode with other bits or both Stream and
- * Database.
+ * kQ3ErrorInvalidParameter for a mode with other bits, both Stream and
+ * Database, or both Text and Swap.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3File_OpenWrite(TQ3FileObject theFile, TQ3FileMode mode);
 

@@ -90,7 +90,9 @@ TQ3FileMode File::openRead()
     if (size > limits::kMaxStorageBytes)
         fail(kQ3ErrorInvalidMetafile, "the storage holds " + std::to_string(size) + " bytes, more than Q3 reads");
     auto parsed = io::parse(m_storage->readAll(), &io::typeOfName);
-    m_mode = parsed->mode | (parsed->encoding == io::Encoding::kText ? kQ3FileModeText : 0);
+    m_mode = parsed->mode | (parsed->encoding == io::Encoding::kText           ? kQ3FileModeText
+                             : parsed->encoding == io::Encoding::kBinaryLittle ? kQ3FileModeSwap
+                                                                               : 0);
     m_file = std::move(parsed);
     m_reader = std::make_unique<io::ReadContext>(*m_file);
     m_next = 0;
@@ -105,12 +107,15 @@ void File::openWrite(TQ3FileMode mode)
         fail(kQ3ErrorFileAlreadyOpen, "the file is already open");
     if (!m_storage)
         fail(kQ3ErrorNoStorageSetForFile, "the file has no storage (Q3File_SetStorage)");
-    const TQ3FileMode known = kQ3FileModeStream | kQ3FileModeDatabase | kQ3FileModeText;
-    if ((mode & ~known) != 0 || ((mode & kQ3FileModeStream) && (mode & kQ3FileModeDatabase)))
+    const TQ3FileMode known = kQ3FileModeStream | kQ3FileModeDatabase | kQ3FileModeText | kQ3FileModeSwap;
+    if ((mode & ~known) != 0 || ((mode & kQ3FileModeStream) && (mode & kQ3FileModeDatabase)) ||
+        ((mode & kQ3FileModeText) && (mode & kQ3FileModeSwap)))
         fail(kQ3ErrorInvalidParameter, "mode " + std::to_string(mode) +
-                                           " is not Normal, Stream or Database, with or without Text");
-    m_writer = std::make_shared<io::WriteContext>(
-        (mode & kQ3FileModeText) ? io::Encoding::kText : io::Encoding::kBinaryBig, (mode & kQ3FileModeStream) != 0);
+                                           " is not Normal, Stream or Database, with Text, Swap or neither");
+    const io::Encoding encoding = (mode & kQ3FileModeText)   ? io::Encoding::kText
+                                  : (mode & kQ3FileModeSwap) ? io::Encoding::kBinaryLittle
+                                                             : io::Encoding::kBinaryBig;
+    m_writer = std::make_shared<io::WriteContext>(encoding, (mode & kQ3FileModeStream) != 0);
     m_mode = mode;
     m_state = State::kWriting;
     m_storage->acquire();
