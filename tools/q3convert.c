@@ -3,10 +3,14 @@
 
 /* q3convert: rewrites a 3DMF file, text or binary.
  *
- *   q3convert in.3dmf out.3dmf [--text | --binary] [--normal | --stream | --database]
+ *   q3convert in.3dmf out.3dmf [--text | --binary | --little-endian]
+ *             [--normal | --stream | --database]
  *
  * Every object is read and written back (unknown objects unchanged). The
- * default is a binary Normal file, as Mac QuickDraw 3D wrote them. Exit
+ * default is a binary Normal file, big-endian as Mac QuickDraw 3D wrote them;
+ * --little-endian writes a binary file in little-endian byte order
+ * (kQ3FileModeSwap), where unknown objects of a big-endian input are left
+ * out, since their data cannot be swapped. Exit
  * status: 0 done, 1 bad arguments, 2 the input cannot be read, 3 the output
  * cannot be written. */
 
@@ -18,7 +22,8 @@
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: q3convert in.3dmf out.3dmf [--text | --binary] [--normal | --stream | --database]\n");
+    fprintf(stderr, "usage: q3convert in.3dmf out.3dmf [--text | --binary | --little-endian] "
+                    "[--normal | --stream | --database]\n");
     return 1;
 }
 
@@ -35,6 +40,8 @@ int main(int argc, char **argv)
             encoding = kQ3FileModeText;
         else if (strcmp(argv[arg], "--binary") == 0)
             encoding = 0;
+        else if (strcmp(argv[arg], "--little-endian") == 0)
+            encoding = kQ3FileModeSwap;
         else if (strcmp(argv[arg], "--normal") == 0)
             mode = kQ3FileModeNormal;
         else if (strcmp(argv[arg], "--stream") == 0)

@@ -24,8 +24,9 @@
  *     while (Q3View_EndWriting(view) == kQ3ViewStatusRetraverse);
  * then Q3File_Close(file), which puts the bytes into the storage. A file is
  * binary and big-endian (as Mac QuickDraw 3D wrote it) unless the mode
- * includes kQ3FileModeText. Reading takes both encodings and both byte
- * orders.
+ * includes kQ3FileModeText, or kQ3FileModeSwap for a little-endian binary
+ * file (whose header's tag reads "FMD3"). Reading takes both encodings and
+ * both byte orders.
  *
  * An object written twice into one file (a shared attribute set, a geometry
  * in two groups) is written once and referred to the second time, through
@@ -79,7 +80,10 @@ enum TQ3FileModeMasks {
     kQ3FileModeNormal = 0,
     kQ3FileModeStream = 1 << 0,
     kQ3FileModeDatabase = 1 << 1,
-    kQ3FileModeText = 1 << 2
+    kQ3FileModeText = 1 << 2,
+    /* Q3 extension (Quesa's name and value): a binary file in little-endian
+     * byte order. OpenWrite writes one; OpenRead reports it for one. */
+    kQ3FileModeSwap = 1 << 3
 };
 typedef enum TQ3FileModeMasks TQ3FileModeMasks;
 typedef unsigned long TQ3FileMode;
@@ -111,7 +115,7 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_SetStorage(TQ3FileObject theFile, TQ3StorageOb
 /*
  * Q3File_OpenRead: reads the storage's header and opens the file for
  * reading; *mode (may be NULL) is the file's mode, with kQ3FileModeText for a
- * text file.
+ * text file and kQ3FileModeSwap for a little-endian binary one.
  * Errors: kQ3ErrorFileAlreadyOpen; kQ3ErrorNoStorageSetForFile;
  * kQ3ErrorInvalidMetafile and the other metafile errors for a file that is
  * not a 3DMF 1.x file (the file stays closed).
@@ -120,11 +124,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_OpenRead(TQ3FileObject theFile, TQ3FileMode *m
 
 /*
  * Q3File_OpenWrite: opens the file for writing in `mode` (Normal, Stream or
- * Database, optionally with kQ3FileModeText). The storage is written when the
- * file is closed.
+ * Database, optionally with kQ3FileModeText or kQ3FileModeSwap). The storage
+ * is written when the file is closed.
  * Errors: kQ3ErrorFileAlreadyOpen; kQ3ErrorNoStorageSetForFile;
- * kQ3ErrorInvalidParameter for a mode with other bits or both Stream and
- * Database.
+ * kQ3ErrorInvalidParameter for a mode with other bits, both Stream and
+ * Database, or both Text and Swap.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3File_OpenWrite(TQ3FileObject theFile, TQ3FileMode mode);
 
@@ -209,6 +213,27 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_SkipObject(TQ3FileObject theFile);
  * file that is not open for reading. */
 Q3_EXTERN_API_C(TQ3Boolean) Q3File_IsEndOfFile(TQ3FileObject theFile);
 
+/*
+ * Q3File_IsEndOfData: whether the data the primitive read calls (Q3Uns32_Read
+ * and the others below) read is all read. Primitive reads read one object's
+ * data in order: the first one starts on the next object of the file (for a
+ * container, on its root object's data), which Q3File_ReadObject will then
+ * not read again. Before the first primitive read it tells whether the next
+ * object has no data (a group, a reference or an empty object). kQ3True at
+ * the end of the file and for a file not open for reading.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3File_IsEndOfData(TQ3FileObject theFile);
+
+/*
+ * Q3File_IsEndOfContainer: kQ3False while the container primitive reads
+ * started on has subobjects left: Q3File_GetNextObjectType,
+ * Q3File_IsNextObjectOfType, Q3File_ReadObject and Q3File_SkipObject then go
+ * through them, one at a time. kQ3True otherwise (a plain object, a file not
+ * open for reading). rootObject is Apple's parameter; Q3 does not need it and
+ * accepts any value, NULL included.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3File_IsEndOfContainer(TQ3FileObject theFile, TQ3Object rootObject);
+
 enum TQ3FileReadGroupStateMasks {
     kQ3FileReadWholeGroup = 0,
     kQ3FileReadObjectsInGroup = 1 << 0,
@@ -233,6 +258,108 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_SetReadInGroup(TQ3FileObject theFile, TQ3FileR
  * while a group read one object at a time has not reached its end.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3File_GetReadInGroup(TQ3FileObject theFile, TQ3FileReadGroupState *readGroupState);
+
+typedef TQ3Status (*TQ3FileIdleMethod)(TQ3FileObject theFile, const void *idlerData);
+
+/*
+ * Q3File_SetIdleMethod: `idle` (NULL: none) is called with idleData before
+ * each object Q3File_ReadObject or Q3File_SkipObject reads and before each
+ * object a writing loop writes. When it returns kQ3Failure the operation is
+ * cancelled: the read fails with kQ3ErrorFileCancelled and reads nothing
+ * (the next call tries again); a writing loop writes nothing more and
+ * Q3View_EndWriting returns kQ3ViewStatusCancelled (what was written before
+ * stays in the file). The method must not call Q3 (as in QuickDraw 3D).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_SetIdleMethod(TQ3FileObject theFile, TQ3FileIdleMethod idle, const void *idleData);
+
+/*
+ * Primitive reads and writes, for reading and writing data by hand.
+ *
+ * Reading: each call reads the next value of the data Q3File_IsEndOfData
+ * describes, in the file's encoding and byte order, into *data (unchanged on
+ * failure, and the position with it).
+ * Errors (besides the shared ones, a NULL data included):
+ *   kQ3ErrorReadStateInactive  the file is not open for reading;
+ *   kQ3ErrorEndOfFile          no object is left to read data from;
+ *   kQ3ErrorInvalidMetafileObject  the next object has no data of its own
+ *                              (a group, a reference);
+ *   kQ3ErrorReadMoreThanSize   the object's data end before the value;
+ *   kQ3ErrorInvalidMetafilePrimitive  a malformed value (a word for a
+ *                              number, a number out of range, a NaN).
+ *
+ * Writing: each call writes the value into the file at the point writing has
+ * reached (after the objects written so far), in the file's encoding: binary
+ * values as the file's byte order has them, text values as words. Errors:
+ * kQ3ErrorWriteStateInactive unless the file is open for writing.
+ *
+ * In text, integers are decimal words, floats the shortest words that read
+ * back as the same value, strings quoted ("a \"b\""), raw data one word of
+ * 0x and two hex digits a byte. In binary, strings end with a NUL and are
+ * padded with zeros to a multiple of 4 bytes, and so is raw data.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3NewLine_Write(TQ3FileObject theFile); /* text: a line break; binary: nothing */
+Q3_EXTERN_API_C(TQ3Status) Q3Uns8_Read(TQ3Uns8 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns8_Write(TQ3Uns8 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns16_Read(TQ3Uns16 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns16_Write(TQ3Uns16 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns32_Read(TQ3Uns32 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns32_Write(TQ3Uns32 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Int8_Read(TQ3Int8 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Int8_Write(TQ3Int8 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Int16_Read(TQ3Int16 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Int16_Write(TQ3Int16 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Int32_Read(TQ3Int32 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Int32_Write(TQ3Int32 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns64_Read(TQ3Uns64 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns64_Write(TQ3Uns64 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Int64_Read(TQ3Int64 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Int64_Write(TQ3Int64 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Float32_Read(TQ3Float32 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Float32_Write(TQ3Float32 data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Float64_Read(TQ3Float64 *data, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Float64_Write(TQ3Float64 data, TQ3FileObject theFile);
+
+/* Q3Size_Pad: size rounded up to a multiple of 4 (binary strings and raw
+ * data take that many bytes). */
+Q3_EXTERN_API_C(TQ3Size) Q3Size_Pad(TQ3Size size);
+
+/*
+ * Q3String_Read: reads a string into data, a buffer of
+ * kQ3StringMaximumLength bytes: a longer string is cut to
+ * kQ3StringMaximumLength - 1 characters and NUL-terminated; *length is the
+ * length copied. With data NULL (Quesa's extension) *length is the string's
+ * whole length and nothing is read. Errors: as the other reads; a NULL length.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3String_Read(char *data, unsigned long *length, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3String_Write(const char *data, TQ3FileObject theFile);
+
+/* Q3RawData_Read / Q3RawData_Write: size bytes (binary: Q3Size_Pad(size)
+ * bytes in the file). */
+Q3_EXTERN_API_C(TQ3Status) Q3RawData_Read(unsigned char *data, unsigned long size, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3RawData_Write(const unsigned char *data, unsigned long size, TQ3FileObject theFile);
+
+Q3_EXTERN_API_C(TQ3Status) Q3Point2D_Read(TQ3Point2D *point2D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Point2D_Write(const TQ3Point2D *point2D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Point3D_Read(TQ3Point3D *point3D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Point3D_Write(const TQ3Point3D *point3D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3RationalPoint3D_Read(TQ3RationalPoint3D *point3D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3RationalPoint3D_Write(const TQ3RationalPoint3D *point3D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3RationalPoint4D_Read(TQ3RationalPoint4D *point4D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3RationalPoint4D_Write(const TQ3RationalPoint4D *point4D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Vector2D_Read(TQ3Vector2D *vector2D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Vector2D_Write(const TQ3Vector2D *vector2D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Vector3D_Read(TQ3Vector3D *vector3D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Vector3D_Write(const TQ3Vector3D *vector3D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Matrix4x4_Read(TQ3Matrix4x4 *matrix4x4, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Matrix4x4_Write(const TQ3Matrix4x4 *matrix4x4, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Tangent2D_Read(TQ3Tangent2D *tangent2D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Tangent2D_Write(const TQ3Tangent2D *tangent2D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Tangent3D_Read(TQ3Tangent3D *tangent3D, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Tangent3D_Write(const TQ3Tangent3D *tangent3D, TQ3FileObject theFile);
+
+/* Q3Comment_Write: text: the comment on a line of its own (`# comment`, line
+ * breaks in it made spaces); binary: nothing (as in QuickDraw 3D). */
+Q3_EXTERN_API_C(TQ3Status) Q3Comment_Write(char *comment, TQ3FileObject theFile);
 
 /*
  * Q3Unknown_GetType: kQ3UnknownTypeText or kQ3UnknownTypeBinary.

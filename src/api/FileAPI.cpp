@@ -134,3 +134,20 @@ TQ3Status Q3File_GetReadInGroup(TQ3FileObject theFile, TQ3FileReadGroupState* re
                        [](const File& file) { return file.readInGroup(); });
     });
 }
+
+TQ3Boolean Q3File_IsEndOfData(TQ3FileObject theFile)
+{
+    return guard(__func__, kQ3False,
+                 [&] { return lookup<File>(theFile, "theFile").isEndOfData() ? kQ3True : kQ3False; });
+}
+
+TQ3Boolean Q3File_IsEndOfContainer(TQ3FileObject theFile, TQ3Object /*rootObject*/)
+{
+    return guard(__func__, kQ3False,
+                 [&] { return lookup<File>(theFile, "theFile").isEndOfContainer() ? kQ3True : kQ3False; });
+}
+
+TQ3Status Q3File_SetIdleMethod(TQ3FileObject theFile, TQ3FileIdleMethod idle, const void* idleData)
+{
+    return guardStatus(__func__, [&] { lookup<File>(theFile, "theFile").setIdleMethod(idle, idleData); });
+}

@@ -19,30 +19,52 @@ namespace {
 /// mode shapes through the ShapeVisitor calls.
 class FileWriteTarget final : public WriteTarget {
 public:
-    explicit FileWriteTarget(std::shared_ptr<io::WriteContext> context) : m_context(std::move(context)) {}
-
-    void write(const Object& object) override { m_context->object(object); }
-    void visitGeometry(const Geometry& geometry) override { m_context->temporary(geometry); }
-    void visitAttributeSet(const AttributeSet& attributes) override { m_context->temporary(attributes); }
-    void visitStyle(const Style& style) override { m_context->temporary(style); }
-    void visitShader(const Shader& shader) override { m_context->temporary(shader); }
-    void visitTransform(const Transform& transform) override
+    FileWriteTarget(std::shared_ptr<io::WriteContext> context, std::shared_ptr<File::Idle> idle)
+        : m_context(std::move(context)), m_idle(std::move(idle))
     {
-        m_context->temporary(transform);
     }
+
+    void write(const Object& object) override
+    {
+        if (proceed())
+            m_context->object(object);
+    }
+    void visitGeometry(const Geometry& geometry) override { temporary(geometry); }
+    void visitAttributeSet(const AttributeSet& attributes) override { temporary(attributes); }
+    void visitStyle(const Style& style) override { temporary(style); }
+    void visitShader(const Shader& shader) override { temporary(shader); }
+    void visitTransform(const Transform& transform) override { temporary(transform); }
     void pushState() override {}
     void popState() override {}
     bool beginGroup(const DisplayGroup&) override { return false; }
     void endGroup(const DisplayGroup&) override {}
+    bool cancelled() const override { return m_cancelled; }
 
 private:
+    // The idle method runs before each object; once it asks to cancel,
+    // nothing more is written in this loop.
+    bool proceed()
+    {
+        if (!m_cancelled && !m_idle->proceed())
+            m_cancelled = true;
+        return !m_cancelled;
+    }
+    void temporary(const Object& object)
+    {
+        if (proceed())
+            m_context->temporary(object);
+    }
+
     std::shared_ptr<io::WriteContext> m_context;
+    std::shared_ptr<File::Idle> m_idle;
+    bool m_cancelled = false;
 };
 
 } // namespace
 
 File::~File()
 {
+    m_idle->method = nullptr; // a writing loop may outlive the file
     release();
 }
 
@@ -68,7 +90,9 @@ TQ3FileMode File::openRead()
     if (size > limits::kMaxStorageBytes)
         fail(kQ3ErrorInvalidMetafile, "the storage holds " + std::to_string(size) + " bytes, more than Q3 reads");
     auto parsed = io::parse(m_storage->readAll(), &io::typeOfName);
-    m_mode = parsed->mode | (parsed->encoding == io::Encoding::kText ? kQ3FileModeText : 0);
+    m_mode = parsed->mode | (parsed->encoding == io::Encoding::kText           ? kQ3FileModeText
+                             : parsed->encoding == io::Encoding::kBinaryLittle ? kQ3FileModeSwap
+                                                                               : 0);
     m_file = std::move(parsed);
     m_reader = std::make_unique<io::ReadContext>(*m_file);
     m_next = 0;
@@ -83,12 +107,15 @@ void File::openWrite(TQ3FileMode mode)
         fail(kQ3ErrorFileAlreadyOpen, "the file is already open");
     if (!m_storage)
         fail(kQ3ErrorNoStorageSetForFile, "the file has no storage (Q3File_SetStorage)");
-    const TQ3FileMode known = kQ3FileModeStream | kQ3FileModeDatabase | kQ3FileModeText;
-    if ((mode & ~known) != 0 || ((mode & kQ3FileModeStream) && (mode & kQ3FileModeDatabase)))
+    const TQ3FileMode known = kQ3FileModeStream | kQ3FileModeDatabase | kQ3FileModeText | kQ3FileModeSwap;
+    if ((mode & ~known) != 0 || ((mode & kQ3FileModeStream) && (mode & kQ3FileModeDatabase)) ||
+        ((mode & kQ3FileModeText) && (mode & kQ3FileModeSwap)))
         fail(kQ3ErrorInvalidParameter, "mode " + std::to_string(mode) +
-                                           " is not Normal, Stream or Database, with or without Text");
-    m_writer = std::make_shared<io::WriteContext>(
-        (mode & kQ3FileModeText) ? io::Encoding::kText : io::Encoding::kBinaryBig, (mode & kQ3FileModeStream) != 0);
+                                           " is not Normal, Stream or Database, with Text, Swap or neither");
+    const io::Encoding encoding = (mode & kQ3FileModeText)   ? io::Encoding::kText
+                                  : (mode & kQ3FileModeSwap) ? io::Encoding::kBinaryLittle
+                                                             : io::Encoding::kBinaryBig;
+    m_writer = std::make_shared<io::WriteContext>(encoding, (mode & kQ3FileModeStream) != 0);
     m_mode = mode;
     m_state = State::kWriting;
     m_storage->acquire();
@@ -116,6 +143,7 @@ void File::release()
         m_storage->releaseUse();
     m_state = State::kClosed;
     m_openGroups = 0;
+    m_data.reset();
     m_reader.reset();
     m_file.reset();
     m_writer.reset();
@@ -151,7 +179,9 @@ void File::requireReading() const
 
 bool File::isEndOfFile() const
 {
-    return m_state != State::kReading || m_next >= m_file->objects.size();
+    if (m_state != State::kReading)
+        return true;
+    return !(m_data && m_data->childrenLeft()) && m_next >= m_file->objects.size();
 }
 
 TQ3ObjectType File::nextObjectType() const
@@ -159,7 +189,14 @@ TQ3ObjectType File::nextObjectType() const
     requireReading();
     if (isEndOfFile())
         return kQ3ObjectTypeInvalid;
-    const io::Node* node = &m_file->objects[m_next];
+    if (m_data && m_data->childrenLeft())
+        return typeOfNode(m_data->container->children[m_data->nextChild]);
+    return typeOfNode(m_file->objects[m_next]);
+}
+
+TQ3ObjectType File::typeOfNode(const io::Node& first) const
+{
+    const io::Node* node = &first;
     for (int hops = 0; hops < 4; ++hops) {
         if (node->type == io::kTypeEndGroup)
             return kQ3SharedTypeEndGroup;
@@ -191,11 +228,31 @@ bool File::isNextObjectOfType(TQ3ObjectType type) const
     return info != nullptr && info->isA(type);
 }
 
+void File::idleBeforeReading() const
+{
+    if (!m_idle->proceed())
+        fail(kQ3ErrorFileCancelled, "the idle method returned kQ3Failure: reading is cancelled");
+}
+
 Ref<SharedObject> File::readObject()
 {
     requireReading();
     if (isEndOfFile())
         fail(kQ3ErrorEndOfFile, "no object is left in the file");
+    idleBeforeReading();
+    if (m_data && m_data->childrenLeft()) {
+        // A subobject of the container primitive reads started on.
+        std::size_t index = m_data->nextChild;
+        try {
+            Ref<SharedObject> object = m_reader->sequenceItem(m_data->container->children, index);
+            m_data->nextChild = index;
+            return object;
+        } catch (...) {
+            m_data->nextChild = std::max(index, m_data->nextChild + 1);
+            throw;
+        }
+    }
+    m_data.reset();
     const io::Node& node = m_file->objects[m_next];
     if (node.type == io::kTypeEndGroup && m_openGroups > 0) {
         ++m_next;
@@ -225,6 +282,12 @@ void File::skipObject()
     requireReading();
     if (isEndOfFile())
         fail(kQ3ErrorEndOfFile, "no object is left in the file");
+    idleBeforeReading();
+    if (m_data && m_data->childrenLeft()) {
+        ++m_data->nextChild;
+        return;
+    }
+    m_data.reset();
     std::size_t open = 0;
     std::size_t i = m_next;
     do {
@@ -255,7 +318,85 @@ std::shared_ptr<WriteTarget> File::writeTarget()
 {
     if (m_state != State::kWriting)
         fail(kQ3ErrorFileNotOpen, "the file is not open for writing");
-    return std::make_shared<FileWriteTarget>(m_writer);
+    return std::make_shared<FileWriteTarget>(m_writer, m_idle);
+}
+
+namespace {
+
+// The node whose data primitive reads read for an object of the file: the
+// object itself, a container's root; null for what has no data of its own.
+const io::Node* dataNodeOf(const io::Node& node)
+{
+    if (node.type == io::kTypeBeginGroup || node.type == io::kTypeEndGroup || node.type == io::kTypeReference ||
+        node.type == io::kTypeTableOfContents)
+        return nullptr;
+    if (node.type != io::kTypeContainer)
+        return &node;
+    if (node.children.empty())
+        return nullptr;
+    const io::Node& root = node.children.front();
+    return root.type == io::kTypeContainer ? nullptr : dataNodeOf(root);
+}
+
+} // namespace
+
+io::DataReader& File::dataReader()
+{
+    if (m_state != State::kReading)
+        fail(kQ3ErrorReadStateInactive, "the file is not open for reading");
+    if (m_data && m_data->reader)
+        return *m_data->reader;
+    if (m_next >= m_file->objects.size())
+        fail(kQ3ErrorEndOfFile, "no object is left in the file to read data from");
+    const io::Node& node = m_file->objects[m_next];
+    const io::Node* data = dataNodeOf(node);
+    if (data == nullptr)
+        fail(kQ3ErrorInvalidMetafileObject, "the next object (" + (node.name.empty() ? io::typeName(node.type) : node.name) +
+                                                ") has no data of its own to read");
+    auto state = std::make_unique<DataState>();
+    state->container = node.type == io::kTypeContainer ? &node : nullptr;
+    state->reader = std::make_unique<io::DataReader>(*m_file, *data);
+    m_data = std::move(state);
+    ++m_next;
+    return *m_data->reader;
+}
+
+void File::dataEnds(const char* what) const
+{
+    fail(kQ3ErrorReadMoreThanSize, std::string("the object's data end before ") + what + " (" +
+                                       std::to_string(m_data->reader->remaining()) +
+                                       (m_file->encoding == io::Encoding::kText ? " tokens" : " bytes") + " left)");
+}
+
+bool File::isEndOfData() const
+{
+    if (m_state != State::kReading)
+        return true;
+    if (m_data && m_data->reader)
+        return m_data->reader->atEnd();
+    if (m_next >= m_file->objects.size())
+        return true;
+    const io::Node* data = dataNodeOf(m_file->objects[m_next]);
+    return data == nullptr || io::DataReader(*m_file, *data).atEnd();
+}
+
+bool File::isEndOfContainer() const
+{
+    return m_state != State::kReading || !(m_data && m_data->childrenLeft());
+}
+
+io::Encoder& File::dataWriter()
+{
+    if (m_state != State::kWriting)
+        fail(kQ3ErrorWriteStateInactive, "the file is not open for writing");
+    return m_writer->out();
+}
+
+void File::setIdleMethod(TQ3FileIdleMethod method, const void* data)
+{
+    m_idle->method = method;
+    m_idle->data = data;
+    m_idle->file = this;
 }
 
 } // namespace q3

@@ -67,6 +67,42 @@ public:
     /// writing).
     std::shared_ptr<WriteTarget> writeTarget();
 
+    /// Primitive reads (Q3Uns32_Read, ...) read the data of one object in
+    /// order: the object a primitive read started on, which is then consumed
+    /// (a container: its root's data, and ReadObject / SkipObject go through
+    /// its subobjects until isEndOfContainer()). `read` runs on the reader
+    /// with room for `bytes` (binary) or `tokens` (text) checked first
+    /// (kQ3ErrorReadMoreThanSize); a failed read leaves the position as it
+    /// was. Throws kQ3ErrorReadStateInactive unless open for reading,
+    /// kQ3ErrorEndOfFile when no object is left, kQ3ErrorInvalidMetafileObject
+    /// for an object without data of its own (a group, a reference).
+    template <class Read>
+    auto readPrimitive(std::size_t bytes, std::size_t tokens, const char* what, Read&& read)
+    {
+        io::DataReader& in = dataReader();
+        if (in.remaining() < (m_file->encoding == io::Encoding::kText ? tokens : bytes))
+            dataEnds(what);
+        const std::size_t at = in.tell();
+        try {
+            return read(in);
+        } catch (...) {
+            in.seek(at);
+            throw;
+        }
+    }
+    /// Whether the data primitive reads read are all read (see
+    /// readPrimitive; before the first read, the next object's data).
+    bool isEndOfData() const;
+    /// False while the container primitive reads started on has subobjects
+    /// left.
+    bool isEndOfContainer() const;
+    /// Where primitive writes go: the file at the point writing has reached
+    /// (kQ3ErrorWriteStateInactive unless open for writing).
+    io::Encoder& dataWriter();
+
+    /// Q3File_SetIdleMethod: called once before each object read or written.
+    void setIdleMethod(TQ3FileIdleMethod method, const void* data);
+
     /// Q3File_SetReadInGroup: kQ3FileReadWholeGroup or
     /// kQ3FileReadObjectsInGroup (kQ3ErrorInvalidParameter otherwise).
     void setReadInGroup(TQ3FileReadGroupState state);
@@ -74,10 +110,30 @@ public:
     /// by object is not finished.
     TQ3FileReadGroupState readInGroup() const;
 
+    /// The idle method and its data, shared with writing loops' targets.
+    struct Idle {
+        TQ3FileIdleMethod method = nullptr;
+        const void* data = nullptr;
+        TQ3FileObject file = nullptr;
+        /// False when the method asks to cancel.
+        bool proceed() const { return method == nullptr || method(file, data) != kQ3Failure; }
+    };
+
 private:
     enum class State { kClosed, kReading, kWriting };
+    /// The object primitive reads are reading.
+    struct DataState {
+        const io::Node* container = nullptr; ///< null for a plain object
+        std::size_t nextChild = 1;
+        std::unique_ptr<io::DataReader> reader;
+        bool childrenLeft() const { return container != nullptr && nextChild < container->children.size(); }
+    };
     void requireReading() const;
     void release();
+    io::DataReader& dataReader();
+    [[noreturn]] void dataEnds(const char* what) const;
+    void idleBeforeReading() const;
+    TQ3ObjectType typeOfNode(const io::Node& node) const;
 
     Ref<Storage> m_storage;
     State m_state = State::kClosed;
@@ -88,6 +144,8 @@ private:
     TQ3FileReadGroupState m_readGroup = kQ3FileReadWholeGroup;
     std::size_t m_openGroups = 0; ///< groups being read object by object
     std::shared_ptr<io::WriteContext> m_writer;
+    std::unique_ptr<DataState> m_data;
+    std::shared_ptr<Idle> m_idle = std::make_shared<Idle>();
 };
 
 } // namespace q3

@@ -159,6 +159,14 @@ void writeUnknownBinary(WriteContext& context, const Object& object)
                                 ") has no text form; it is left out");
         return;
     }
+    // Its data cannot be swapped without knowing their layout.
+    const TQ3Endian order = out.encoding() == Encoding::kBinaryLittle ? kQ3EndianLittle : kQ3EndianBig;
+    if (unknown.byteOrder() != order) {
+        errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,
+                            "an unknown binary object (" + typeName(unknown.type()) +
+                                ") came from a file of the other byte order; it is left out");
+        return;
+    }
     out.begin(unknown.type(), "");
     out.raw(unknown.contents());
     out.end();

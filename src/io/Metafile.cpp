@@ -241,6 +241,29 @@ std::uint32_t parseUnsigned(const std::string& token, std::uint64_t max)
     return static_cast<std::uint32_t>(value);
 }
 
+std::uint64_t parseUnsigned64(const std::string& token)
+{
+    if (token.empty() || token[0] == '-' || token[0] == '+')
+        fail(kQ3ErrorInvalidMetafilePrimitive, "'" + token + "' is not an unsigned integer");
+    errno = 0;
+    char* end = nullptr;
+    const unsigned long long value = std::strtoull(token.c_str(), &end, 0);
+    if (errno != 0 || end == token.c_str() || *end != '\0')
+        fail(kQ3ErrorInvalidMetafilePrimitive, "'" + token + "' is not a 64-bit unsigned integer");
+    return value;
+}
+
+std::int64_t parseSigned(const std::string& token, std::int64_t min, std::int64_t max)
+{
+    errno = 0;
+    char* end = nullptr;
+    const long long value = std::strtoll(token.c_str(), &end, 0);
+    if (errno != 0 || end == token.c_str() || *end != '\0' || value < min || value > max)
+        fail(kQ3ErrorInvalidMetafilePrimitive,
+             "'" + token + "' is not an integer from " + std::to_string(min) + " to " + std::to_string(max));
+    return value;
+}
+
 const Node* findLabel(const std::vector<Node>& nodes, const std::string& label)
 {
     for (const Node& node : nodes) {
@@ -415,6 +438,12 @@ DataReader::DataReader(const Metafile& file, const Node& node)
 {
 }
 
+std::size_t DataReader::remaining() const
+{
+    return m_file.encoding == Encoding::kText ? m_node.tokens.size() - std::min(m_position, m_node.tokens.size())
+                                               : m_node.dataEnd - m_position;
+}
+
 bool DataReader::atEnd() const
 {
     return m_file.encoding == Encoding::kText ? m_position >= m_node.tokens.size() : m_position >= m_node.dataEnd;
@@ -487,7 +516,7 @@ std::uint64_t DataReader::u64()
         const std::string& t = token();
         if (!t.empty() && t.back() == '>')
             return 0;
-        return parseUnsigned(t, 0xFFFFFFFFull);
+        return parseUnsigned64(t);
     }
     const std::uint64_t first = u32();
     const std::uint64_t second = u32();
@@ -512,6 +541,94 @@ float DataReader::f32()
         fail(kQ3ErrorInvalidMetafilePrimitive,
              "the " + typeName(m_node.type) + " object holds a number that is not finite");
     return value;
+}
+
+std::int8_t DataReader::i8()
+{
+    if (m_file.encoding == Encoding::kText)
+        return static_cast<std::int8_t>(parseSigned(token(), INT8_MIN, INT8_MAX));
+    return static_cast<std::int8_t>(u8());
+}
+
+std::int16_t DataReader::i16()
+{
+    if (m_file.encoding == Encoding::kText)
+        return static_cast<std::int16_t>(parseSigned(token(), INT16_MIN, INT16_MAX));
+    return static_cast<std::int16_t>(u16());
+}
+
+std::int64_t DataReader::i64()
+{
+    if (m_file.encoding == Encoding::kText)
+        return parseSigned(token(), INT64_MIN, INT64_MAX);
+    return static_cast<std::int64_t>(u64());
+}
+
+double DataReader::f64()
+{
+    if (m_file.encoding == Encoding::kText) {
+        const std::string& t = token();
+        char* end = nullptr;
+        const double value = std::strtod(t.c_str(), &end);
+        if (end == t.c_str() || *end != '\0' || !std::isfinite(value))
+            fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t + "' is not a finite number");
+        return value;
+    }
+    const std::uint64_t bits = u64();
+    double value;
+    std::memcpy(&value, &bits, sizeof value);
+    if (!std::isfinite(value))
+        fail(kQ3ErrorInvalidMetafilePrimitive,
+             "the " + typeName(m_node.type) + " object holds a number that is not finite");
+    return value;
+}
+
+std::string DataReader::string()
+{
+    if (m_file.encoding == Encoding::kText) {
+        const std::string& t = token();
+        if (t.size() < 2 || t.front() != '"' || t.back() != '"')
+            fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t + "' is not a quoted string");
+        return t.substr(1, t.size() - 2);
+    }
+    const unsigned char* begin = m_file.bytes.data() + m_position;
+    const std::size_t left = m_node.dataEnd - m_position;
+    const void* nul = std::memchr(begin, 0, left);
+    if (nul == nullptr)
+        fail(kQ3ErrorInvalidMetafilePrimitive,
+             "the " + typeName(m_node.type) + " object's data end inside a string (no terminating NUL)");
+    const std::size_t length = static_cast<std::size_t>(static_cast<const unsigned char*>(nul) - begin);
+    std::string out(reinterpret_cast<const char*>(begin), length);
+    // The padding may be missing at the very end of the data.
+    m_position += std::min(left, (length + 4) & ~std::size_t{3});
+    return out;
+}
+
+std::string DataReader::rawData(std::size_t n)
+{
+    if (m_file.encoding == Encoding::kText) {
+        const std::string& t = token();
+        if (t.size() < 2 || t[0] != '0' || (t[1] != 'x' && t[1] != 'X') || (t.size() - 2) % 2 != 0 ||
+            (t.size() - 2) / 2 < n)
+            fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t.substr(0, 40) + "' is not " + std::to_string(n) +
+                                                       " bytes of raw data (0x and two hex digits a byte)");
+        std::string out(n, '\0');
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::string digits = t.substr(2 + 2 * i, 2);
+            if (!std::isxdigit(static_cast<unsigned char>(digits[0])) ||
+                !std::isxdigit(static_cast<unsigned char>(digits[1])))
+                fail(kQ3ErrorInvalidMetafilePrimitive, "raw data holds '" + digits + "', not a hex byte");
+            out[i] = static_cast<char>(std::strtoul(digits.c_str(), nullptr, 16));
+        }
+        return out;
+    }
+    const std::size_t padded = (n + 3) & ~std::size_t{3};
+    if (m_node.dataEnd - m_position < n)
+        fail(kQ3ErrorInvalidMetafilePrimitive, "the " + typeName(m_node.type) + " object's data end before " +
+                                                   std::to_string(n) + " bytes of raw data");
+    std::string out(reinterpret_cast<const char*>(m_file.bytes.data() + m_position), n);
+    m_position += std::min(padded, m_node.dataEnd - m_position);
+    return out;
 }
 
 TQ3Point3D DataReader::point3D()
@@ -758,6 +875,71 @@ void Encoder::f32(float value)
     } else {
         bytes(&value, 4, true);
     }
+}
+
+void Encoder::f64(double value)
+{
+    if (m_encoding == Encoding::kText) {
+        char text[40];
+        for (int digits = 15; digits <= 17; ++digits) {
+            std::snprintf(text, sizeof text, "%.*g", digits, value);
+            if (std::strtod(text, nullptr) == value)
+                break;
+        }
+        word(text);
+    } else {
+        bytes(&value, 8, true);
+    }
+}
+
+void Encoder::string(const std::string& text)
+{
+    if (m_encoding == Encoding::kText) {
+        std::string quoted = "\"";
+        for (const char c : text) {
+            if (c == '"' || c == '\\')
+                quoted += '\\';
+            quoted += c;
+        }
+        word(quoted + "\"");
+        return;
+    }
+    m_body.insert(m_body.end(), text.begin(), text.end());
+    m_body.insert(m_body.end(), 4 - text.size() % 4, 0);
+}
+
+void Encoder::rawData(const unsigned char* data, std::size_t n)
+{
+    if (m_encoding == Encoding::kText) {
+        static const char kHex[] = "0123456789ABCDEF";
+        std::string hex = "0x";
+        for (std::size_t i = 0; i < n; ++i) {
+            hex += kHex[data[i] >> 4];
+            hex += kHex[data[i] & 15];
+        }
+        word(hex);
+        return;
+    }
+    m_body.insert(m_body.end(), data, data + n);
+    m_body.insert(m_body.end(), (4 - n % 4) % 4, 0);
+}
+
+void Encoder::comment(const std::string& text)
+{
+    if (m_encoding != Encoding::kText)
+        return;
+    if (!m_text.empty() && m_text.back() != '\n')
+        m_text += '\n';
+    m_text += "# ";
+    for (const char c : text)
+        m_text += (c == '\n' || c == '\r') ? ' ' : c;
+    m_text += '\n';
+}
+
+void Encoder::newLine()
+{
+    if (m_encoding == Encoding::kText)
+        m_text += '\n';
 }
 
 void Encoder::point3D(const TQ3Point3D& p)

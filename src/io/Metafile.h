@@ -89,6 +89,17 @@ public:
     std::uint8_t u8();
     std::uint64_t u64();
     float f32();
+    /// Signed forms for the primitive calls (text: a decimal with its sign).
+    std::int8_t i8();
+    std::int16_t i16();
+    std::int64_t i64();
+    double f64();
+    /// A string: NUL-terminated and padded to 4 bytes (binary), a quoted
+    /// token (text). Refuses a binary string without its NUL.
+    std::string string();
+    /// `n` raw bytes: padded to 4 bytes (binary), one `0x` hexadecimal token
+    /// (text).
+    std::string rawData(std::size_t n);
     TQ3Point3D point3D();
     TQ3Vector3D vector3D();
     TQ3ColorRGB color();
@@ -107,6 +118,11 @@ public:
     /// the rest of the data cannot hold them.
     void requireRoom(std::uint64_t n, std::size_t bytesPerItem, std::size_t tokensPerItem, const char* what) const;
     bool atEnd() const;
+    /// Binary bytes or text tokens not read yet.
+    std::size_t remaining() const;
+    /// Where the reader is, to come back to after a failed read.
+    std::size_t tell() const { return m_position; }
+    void seek(std::size_t position) { m_position = position; }
     /// Text: the next token as it is.
     std::string word();
     /// The rest of the data, as it is (binary bytes, or text tokens joined
@@ -142,6 +158,13 @@ public:
     void u8(std::uint8_t value);
     void u64(std::uint64_t value);
     void f32(float value);
+    void f64(double value);
+    /// As DataReader::string and DataReader::rawData read them.
+    void string(const std::string& text);
+    void rawData(const unsigned char* data, std::size_t n);
+    /// Text: `# comment` on a line of its own; a line break. Binary: nothing.
+    void comment(const std::string& text);
+    void newLine();
     void point3D(const TQ3Point3D& p);
     void vector3D(const TQ3Vector3D& v);
     void color(const TQ3ColorRGB& c);

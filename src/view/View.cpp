@@ -341,7 +341,7 @@ TQ3ViewStatus View::endWriting()
 {
     if (m_loop != Loop::kWriting)
         fail(kQ3ErrorWriteStateInactive, "no writing loop is running in the view");
-    const bool cancelled = m_cancelled;
+    const bool cancelled = m_cancelled || m_writeTarget->cancelled();
     endLoop();
     return cancelled ? kQ3ViewStatusCancelled : kQ3ViewStatusDone;
 }

@@ -32,6 +32,8 @@ class Renderer;
 class WriteTarget : public ShapeVisitor {
 public:
     virtual void write(const Object& object) = 0;
+    /// Whether the target itself cancelled the loop (a file's idle method).
+    virtual bool cancelled() const { return false; }
 };
 
 /// A QuickDraw 3D view: draw context, camera, renderer, and the loop running

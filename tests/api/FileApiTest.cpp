@@ -48,7 +48,7 @@ TEST_F(FileApiTest, FileObjectStateAndErrors)
     ASSERT_EQ(Q3File_GetStorage(file, &got), kQ3Success);
     EXPECT_EQ(got, storage);
     Q3Object_Dispose(got);
-    EXPECT_Q3_ERROR(Q3File_OpenWrite(file, 8), kQ3ErrorInvalidParameter);
+    EXPECT_Q3_ERROR(Q3File_OpenWrite(file, 16), kQ3ErrorInvalidParameter);
     EXPECT_Q3_ERROR(Q3File_OpenWrite(file, kQ3FileModeStream | kQ3FileModeDatabase), kQ3ErrorInvalidParameter);
     ASSERT_EQ(Q3File_OpenWrite(file, kQ3FileModeText), kQ3Success);
     EXPECT_Q3_ERROR(Q3File_OpenWrite(file, kQ3FileModeText), kQ3ErrorFileAlreadyOpen);

@@ -281,6 +281,30 @@ int main(void)
             Q3Bitmap_Empty(&marker.bitmap) != kQ3Success || flag != 7)
             return 17;
     }
+    {
+        /* An object written by hand with the primitive calls, read back from C. */
+        TQ3StorageObject storage = Q3MemoryStorage_New(NULL, 0);
+        TQ3FileObject file = Q3File_New();
+        TQ3FileIdleMethod idle = NULL;
+        TQ3Uns32 value = 0;
+        TQ3Float32 number = 0.0f;
+        TQ3FileMode mode = kQ3FileModeNormal;
+        int ok = Q3File_SetStorage(file, storage) == kQ3Success &&
+                 Q3File_SetIdleMethod(file, idle, NULL) == kQ3Success &&
+                 Q3File_OpenWrite(file, kQ3FileModeNormal) == kQ3Success &&
+                 Q3Uns32_Write(Q3_OBJECT_TYPE('h', 'a', 'n', 'd'), file) == kQ3Success &&
+                 Q3Uns32_Write(8, file) == kQ3Success && Q3Uns32_Write(42, file) == kQ3Success &&
+                 Q3Float32_Write(0.5f, file) == kQ3Success && Q3File_Close(file) == kQ3Success &&
+                 Q3File_OpenRead(file, &mode) == kQ3Success && Q3File_IsEndOfData(file) == kQ3False &&
+                 Q3Uns32_Read(&value, file) == kQ3Success && Q3Float32_Read(&number, file) == kQ3Success &&
+                 value == 42 && number == 0.5f && Q3File_IsEndOfData(file) == kQ3True &&
+                 Q3File_IsEndOfContainer(file, NULL) == kQ3True && Q3Size_Pad(5) == 8 &&
+                 Q3File_Close(file) == kQ3Success;
+        Q3Object_Dispose(file);
+        Q3Object_Dispose(storage);
+        if (!ok)
+            return 19;
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

@@ -66,6 +66,7 @@ def unknown_file(order):
 
 
 for name, data in [("triangle_be.3dmf", triangle_file(">")), ("triangle_le.3dmf", triangle_file("<")),
-                   ("references_be.3dmf", references_file(">")), ("unknown_be.3dmf", unknown_file(">"))]:
+                   ("references_be.3dmf", references_file(">")),
+                   ("references_le.3dmf", references_file("<")), ("unknown_be.3dmf", unknown_file(">"))]:
     with open(os.path.join(here, name), "wb") as f:
         f.write(data)

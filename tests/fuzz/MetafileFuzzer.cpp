@@ -7,7 +7,9 @@
 // everything disposed. Aborts when a call breaks the error contract (a NULL
 // object or kQ3Failure with no error posted) or when objects are left alive
 // at the end: the sanitizers catch the rest (overflows, leaks, undefined
-// behaviour). Seeds: tests/fuzz/corpus-3dmf (the files of tests/data).
+// behaviour). One input in three is also read through the primitive calls
+// (Q3Uns32_Read, Q3String_Read, ...), object by object. Seeds:
+// tests/fuzz/corpus-3dmf (the files of tests/data).
 
 #include "QD3D.h"
 #include "QD3DErrors.h"
@@ -62,6 +64,49 @@ std::vector<TQ3Object> readAll(const unsigned char* data, std::size_t size)
     return objects;
 }
 
+// Reads every object's data with primitive calls chosen by the data's bytes.
+void readPrimitives(const unsigned char* data, std::size_t size)
+{
+    TQ3StorageObject storage = Q3MemoryStorage_New(data, static_cast<unsigned long>(size));
+    TQ3FileObject file = Q3File_New();
+    Q3File_SetStorage(file, storage);
+    if (Q3File_OpenRead(file, nullptr) == kQ3Success) {
+        for (std::size_t step = 0; step < 512 && Q3File_IsEndOfFile(file) == kQ3False; ++step) {
+            TQ3Status status = kQ3Success;
+            if (Q3File_IsEndOfData(file) == kQ3True && Q3File_IsEndOfContainer(file, nullptr) == kQ3True) {
+                status = Q3File_SkipObject(file);
+            } else if (Q3File_IsEndOfData(file) == kQ3False) {
+                char text[kQ3StringMaximumLength];
+                unsigned long length = 0;
+                TQ3Uns32 u32;
+                TQ3Float64 f64;
+                TQ3Matrix4x4 matrix;
+                unsigned char raw[16];
+                switch (data[step % size] % 5) {
+                case 0: status = Q3Uns32_Read(&u32, file); break;
+                case 1: status = Q3String_Read(text, &length, file); break;
+                case 2: status = Q3Float64_Read(&f64, file); break;
+                case 3: status = Q3Matrix4x4_Read(&matrix, file); break;
+                default: status = Q3RawData_Read(raw, data[step % size] % 17, file); break;
+                }
+                if (status == kQ3Failure)
+                    status = Q3File_SkipObject(file);
+            } else {
+                TQ3Object object = Q3File_ReadObject(file);
+                if (object != nullptr)
+                    Q3Object_Dispose(object);
+                else
+                    status = kQ3Failure;
+            }
+            if (status == kQ3Failure)
+                require(Q3Error_Get(nullptr) != kQ3ErrorNone, "a primitive read failed and posted no error");
+        }
+        Q3File_Close(file);
+    }
+    Q3Object_Dispose(file);
+    Q3Object_Dispose(storage);
+}
+
 std::vector<unsigned char> writeAll(const std::vector<TQ3Object>& objects, TQ3FileMode mode)
 {
     std::vector<unsigned char> bytes;
@@ -102,7 +147,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
         const std::vector<TQ3Object> objects = readAll(data, size);
         if (!objects.empty()) {
-            for (TQ3FileMode mode : {TQ3FileMode(kQ3FileModeNormal), TQ3FileMode(kQ3FileModeText)}) {
+            for (TQ3FileMode mode : {TQ3FileMode(kQ3FileModeNormal), TQ3FileMode(kQ3FileModeText),
+                                     TQ3FileMode(kQ3FileModeSwap)}) {
                 const std::vector<unsigned char> again = writeAll(objects, mode);
                 // What Q3 wrote it must read back: every object, no failure.
                 const std::vector<TQ3Object> back = readAll(again.data(), again.size());
@@ -110,6 +156,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
         }
         disposeAll(objects);
+        if (size > 0 && size % 3 == 2)
+            readPrimitives(data, size);
     }
     require(Q3Memory_CountLiveObjects() == liveAtStart, "objects left alive after everything was disposed");
     return 0;

@@ -115,3 +115,15 @@ TEST(Q3Convert, TextToBinaryToTextGivesTheSameText)
     for (const std::string& path : {text1, binary, text2})
         std::remove(path.c_str());
 }
+
+TEST(Q3Convert, LittleEndianOptionWritesTheHandLaidLittleEndianFile)
+{
+    const std::string little = scratch("le.3dmf"), big = scratch("be.3dmf");
+    const std::string data = std::string(Q3_TEST_DATA_DIR) + "/";
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + data + "references_be.3dmf " + little + " --little-endian"), 0);
+    EXPECT_EQ(slurp(little), slurp(data + "references_le.3dmf"));
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + little + " " + big + " --binary"), 0);
+    EXPECT_EQ(slurp(big), slurp(data + "references_be.3dmf"));
+    for (const std::string& path : {little, big})
+        std::remove(path.c_str());
+}
