@@ -57,6 +57,9 @@ TQ3ObjectType typeOfName(const std::string& name);
 
 /// The family tables (one per file).
 void addGeometryClasses(std::vector<ClassIO>& table);
+/// The geometries with nested parts (patches with trim loops, polyhedra...),
+/// in GeometryIOComplex.cpp; addGeometryClasses adds them.
+void addComplexGeometryClasses(std::vector<ClassIO>& table);
 void addAttributeClasses(std::vector<ClassIO>& table);
 void addGroupClasses(std::vector<ClassIO>& table);
 void addStateClasses(std::vector<ClassIO>& table);

@@ -8,6 +8,7 @@
 // file can never create a geometry the API would refuse.
 
 #include "io/ClassIO.h"
+#include "io/GeometryIOSupport.h"
 
 #include "geometry/Box.h"
 #include "geometry/Cone.h"
@@ -30,133 +31,13 @@
 namespace q3::io {
 namespace {
 
-constexpr TQ3ObjectType kTypeVertexSets = Q3_OBJECT_TYPE('v', 'a', 's', 'l');
-constexpr TQ3ObjectType kTypeCaps = Q3_OBJECT_TYPE('c', 'a', 'p', 's');
-
-const std::vector<std::pair<const char*, std::uint32_t>> kPacking = {{"Include", 0}, {"Exclude", 1}};
-const std::vector<std::pair<const char*, std::uint32_t>> kCaps = {
-    {"None", kQ3EndCapNone}, {"Top", kQ3EndCapMaskTop}, {"Bottom", kQ3EndCapMaskBottom},
-    {"Interior", kQ3EndCapMaskInterior}};
-
-const AttributeSet* setOf(TQ3AttributeSet handle)
+Ref<SharedObject> refusePart(ReadContext&, const Parts& parts)
 {
-    return handle == nullptr ? nullptr : static_cast<const AttributeSet*>(static_cast<const Object*>(handle));
+    fail(kQ3ErrorInvalidMetafileObject,
+         (parts.root.name.empty() ? typeName(parts.root.type) : parts.root.name) + " outside its geometry");
 }
 
-// Builds a geometry from data read from a file, through the class's rules.
-template <class T>
-Ref<SharedObject> make(const typename T::DataType& data)
-{
-    try {
-        T::validate(&data);
-    } catch (const Error& error) {
-        fail(kQ3ErrorInvalidMetafileObject, std::string("the file's ") + T::kName + " breaks a rule: " + error.what());
-    }
-    return Ref<SharedObject>(makeShared<T>(data));
-}
-
-template <class T>
-const typename T::DataType& dataOf(const Object& object)
-{
-    return static_cast<const T&>(object).data();
-}
-
-// ---- vertex attribute sets -------------------------------------------------
-
-bool anyVertexSet(const TQ3Vertex3D* vertices, unsigned long n)
-{
-    for (unsigned long i = 0; i < n; ++i)
-        if (WriteContext::hasAttributes(setOf(vertices[i].attributeSet)))
-            return true;
-    return false;
-}
-
-void writeVertexSets(WriteContext& context, const TQ3Vertex3D* vertices, unsigned long n)
-{
-    if (!anyVertexSet(vertices, n))
-        return;
-    Encoder& out = context.out();
-    out.begin(kTypeContainer, "Container");
-    out.begin(kTypeVertexSets, "VertexAttributeSetList");
-    out.u32(static_cast<std::uint32_t>(n));
-    out.choice(kPacking, 1);
-    std::vector<std::uint32_t> without;
-    for (unsigned long i = 0; i < n; ++i)
-        if (!WriteContext::hasAttributes(setOf(vertices[i].attributeSet)))
-            without.push_back(static_cast<std::uint32_t>(i));
-    out.u32(static_cast<std::uint32_t>(without.size()));
-    for (std::uint32_t index : without)
-        out.u32(index);
-    out.end();
-    for (unsigned long i = 0; i < n; ++i)
-        context.attributeSet(setOf(vertices[i].attributeSet));
-    out.end();
-}
-
-// The vertices' sets, one per vertex (null where none).
-std::vector<Ref<AttributeSet>> readVertexSets(ReadContext& context, const Parts& parts, unsigned long n)
-{
-    std::vector<Ref<AttributeSet>> sets(n);
-    const Node* node = parts.find(kTypeVertexSets);
-    if (node == nullptr)
-        return sets;
-    if (node->type != kTypeContainer)
-        fail(kQ3ErrorInvalidMetafileSubObject, "a VertexAttributeSetList without its attribute sets");
-    DataReader in = context.reader(node->children.front());
-    const std::uint32_t count = in.u32();
-    if (count != n)
-        fail(kQ3ErrorInvalidMetafileSubObject, "a VertexAttributeSetList for " + std::to_string(count) +
-                                                   " vertices on a geometry with " + std::to_string(n));
-    const bool exclude = in.choice(kPacking) == 1;
-    const std::uint32_t listed = in.count(4, 1, "indices");
-    std::vector<bool> has(n, exclude);
-    for (std::uint32_t i = 0; i < listed; ++i) {
-        const std::uint32_t index = in.u32();
-        if (index >= n)
-            fail(kQ3ErrorInvalidMetafileSubObject, "a VertexAttributeSetList names vertex " + std::to_string(index) +
-                                                       " of " + std::to_string(n));
-        has[index] = !exclude;
-    }
-    std::size_t next = 1;
-    for (unsigned long i = 0; i < n; ++i) {
-        if (!has[i])
-            continue;
-        if (next >= node->children.size())
-            fail(kQ3ErrorInvalidMetafileSubObject, "a VertexAttributeSetList has fewer attribute sets than it lists");
-        sets[i] = context.objectAs<AttributeSet>(node->children[next++], "a vertex's attribute set");
-    }
-    return sets;
-}
-
-// Writes `body` (the object itself) with the geometry's own set and its
-// vertices' sets, in a container when there are any.
-template <class Body>
-void writeWithSets(WriteContext& context, const AttributeSet* own, const TQ3Vertex3D* vertices, unsigned long n,
-                   Body&& body)
-{
-    const bool container = WriteContext::hasAttributes(own) || anyVertexSet(vertices, n);
-    maybeContainer(context, container, [&] {
-        body();
-        context.attributeSet(own);
-        writeVertexSets(context, vertices, n);
-    });
-}
-
-std::vector<TQ3Vertex3D> readPoints(DataReader& in, std::uint32_t n)
-{
-    std::vector<TQ3Vertex3D> vertices(n);
-    for (auto& vertex : vertices) {
-        vertex.point = in.point3D();
-        vertex.attributeSet = nullptr;
-    }
-    return vertices;
-}
-
-void attachSets(std::vector<TQ3Vertex3D>& vertices, const std::vector<Ref<AttributeSet>>& sets)
-{
-    for (std::size_t i = 0; i < vertices.size(); ++i)
-        vertices[i].attributeSet = sets[i].get();
-}
+void writeNothing(WriteContext&, const Object&) {}
 
 // ---- the classes ---------------------------------------------------------------
 
@@ -238,10 +119,28 @@ Ref<SharedObject> readVertexList(ReadContext& context, const Parts& parts, Data 
     return make<T>(data);
 }
 
+// A polyline's segments' sets: a GeometryAttributeSetList of numVertices - 1
+// elements ("Geometry Attribute Set Lists"; Quesa reads the same).
+constexpr TQ3ObjectType kTypeGeometrySets = Q3_OBJECT_TYPE('g', 'a', 's', 'l');
+
 Ref<SharedObject> readPolyLine(ReadContext& context, const Parts& parts)
 {
-    return readVertexList<PolyLine>(context, parts, TQ3PolyLineData{0, nullptr, nullptr, nullptr},
-                                    &TQ3PolyLineData::polyLineAttributeSet);
+    DataReader in = context.reader(parts.root);
+    const std::uint32_t n = in.count(12, 3, "vertices");
+    std::vector<TQ3Vertex3D> vertices = readPoints(in, n);
+    const auto sets = readVertexSets(context, parts, n);
+    attachSets(vertices, sets);
+    const auto segmentSets =
+        readSetList(context, parts, kTypeGeometrySets, "GeometryAttributeSetList", n == 0 ? 0 : n - 1);
+    std::vector<TQ3AttributeSet> segments(segmentSets.size());
+    bool anySegment = false;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        segments[i] = segmentSets[i].get();
+        anySegment = anySegment || segments[i] != nullptr;
+    }
+    Ref<AttributeSet> own = context.attributeSet(parts);
+    TQ3PolyLineData data{n, vertices.data(), anySegment ? segments.data() : nullptr, own.get()};
+    return make<PolyLine>(data);
 }
 
 Ref<SharedObject> readPolygon(ReadContext& context, const Parts& parts)
@@ -265,8 +164,24 @@ void writeVertexListObject(WriteContext& context, TQ3ObjectType type, const char
 void writePolyLine(WriteContext& context, const Object& object)
 {
     const TQ3PolyLineData& data = dataOf<PolyLine>(object);
-    writeVertexListObject(context, kQ3GeometryTypePolyLine, "PolyLine", data.vertices, data.numVertices,
-                          setOf(data.polyLineAttributeSet));
+    const AttributeSet* own = setOf(data.polyLineAttributeSet);
+    std::vector<const AttributeSet*> segments;
+    if (data.segmentAttributeSet != nullptr)
+        for (unsigned long i = 0; i + 1 < data.numVertices; ++i)
+            segments.push_back(setOf(data.segmentAttributeSet[i]));
+    const bool container =
+        WriteContext::hasAttributes(own) || anyVertexSet(data.vertices, data.numVertices) || anySet(segments);
+    maybeContainer(context, container, [&] {
+        Encoder& out = context.out();
+        out.begin(kQ3GeometryTypePolyLine, "PolyLine");
+        out.u32(static_cast<std::uint32_t>(data.numVertices));
+        for (unsigned long i = 0; i < data.numVertices; ++i)
+            out.point3D(data.vertices[i].point);
+        out.end();
+        context.attributeSet(own);
+        writeVertexSets(context, data.vertices, data.numVertices);
+        writeSetList(context, kTypeGeometrySets, "GeometryAttributeSetList", segments);
+    });
 }
 
 void writePolygon(WriteContext& context, const Object& object)
@@ -276,16 +191,23 @@ void writePolygon(WriteContext& context, const Object& object)
                           setOf(data.polygonAttributeSet));
 }
 
-// TriMesh indices are 8, 16 or 32 bits in binary files, the narrowest that
-// holds every index below the count (3D Metafile Reference, TriMesh).
+// TriMesh indices are 8, 16 or 32 bits in binary files: 8 when the count is
+// at most 0xFF, 16 when it is at most 0xFFFF, else 32, so the largest index
+// is never all ones (Quesa writes and reads the same widths; the 1.0
+// reference predates the TriMesh). An edge's triangle index of all ones at
+// its width is kQ3ArrayIndexNULL (no triangle on that side).
 std::size_t indexBytes(std::uint32_t count)
 {
-    return count <= 0xFE ? 1 : count <= 0xFFFE ? 2 : 4;
+    return count <= 0xFF ? 1 : count <= 0xFFFF ? 2 : 4;
 }
 
-std::uint32_t readIndex(DataReader& in, bool text, std::size_t bytes, std::uint32_t bound, const char* what)
+unsigned long readIndex(DataReader& in, bool text, std::size_t bytes, std::uint32_t bound, const char* what,
+                        bool nullable = false)
 {
     const std::uint32_t index = text || bytes == 4 ? in.u32() : bytes == 2 ? in.u16() : in.u8();
+    const std::uint32_t allOnes = text || bytes == 4 ? 0xFFFFFFFFu : bytes == 2 ? 0xFFFFu : 0xFFu;
+    if (nullable && index == allOnes)
+        return static_cast<unsigned long>(kQ3ArrayIndexNULL);
     if (index >= bound)
         fail(kQ3ErrorInvalidMetafileObject, std::string("a TriMesh ") + what + " index " + std::to_string(index) +
                                                 " is past the end (" + std::to_string(bound) + ")");
@@ -451,7 +373,7 @@ Ref<SharedObject> readTriMesh(ReadContext& context, const Parts& parts)
         for (auto& index : edge.pointIndices)
             index = readIndex(in, text, pointBytes, numPoints, "point");
         for (auto& index : edge.triangleIndices)
-            index = readIndex(in, text, triangleBytes, numTriangles, "triangle");
+            index = readIndex(in, text, triangleBytes, numTriangles, "triangle", true);
     }
     in.requireRoom(numPoints, 12, 3, "points");
     std::vector<TQ3Point3D> points(numPoints);
@@ -573,6 +495,16 @@ Ref<SharedObject> readBox(ReadContext& context, const Parts& parts)
         data.minorAxis = in.vector3D();
         data.origin = in.point3D();
     }
+    // The six faces' sets (left, right, front, back, top, bottom): a
+    // FaceAttributeSetList of 6 elements.
+    const auto faceSets = readSetList(context, parts, kTypeFaceSets, "FaceAttributeSetList", 6);
+    TQ3AttributeSet faces[6];
+    bool anyFace = false;
+    for (std::size_t i = 0; i < 6; ++i) {
+        faces[i] = faceSets[i].get();
+        anyFace = anyFace || faces[i] != nullptr;
+    }
+    data.faceAttributeSet = anyFace ? faces : nullptr;
     Ref<AttributeSet> own = context.attributeSet(parts);
     data.boxAttributeSet = own.get();
     return make<Box>(data);
@@ -582,7 +514,11 @@ void writeBox(WriteContext& context, const Object& object)
 {
     const TQ3BoxData& data = dataOf<Box>(object);
     const AttributeSet* own = setOf(data.boxAttributeSet);
-    maybeContainer(context, WriteContext::hasAttributes(own), [&] {
+    std::vector<const AttributeSet*> faces;
+    if (data.faceAttributeSet != nullptr)
+        for (std::size_t i = 0; i < 6; ++i)
+            faces.push_back(setOf(data.faceAttributeSet[i]));
+    maybeContainer(context, WriteContext::hasAttributes(own) || anySet(faces), [&] {
         Encoder& out = context.out();
         out.begin(kQ3GeometryTypeBox, "Box");
         out.vector3D(data.orientation);
@@ -590,6 +526,7 @@ void writeBox(WriteContext& context, const Object& object)
         out.vector3D(data.minorAxis);
         out.point3D(data.origin);
         out.end();
+        writeSetList(context, kTypeFaceSets, "FaceAttributeSetList", faces);
         context.attributeSet(own);
     });
 }
@@ -642,6 +579,77 @@ void writeCaps(Encoder& out, TQ3EndCap caps)
     out.end();
 }
 
+// The attribute sets of a quadric's parts: a container whose root is the
+// part's cap set object (no data) followed by the attribute set ("Top Cap
+// Attribute Sets", "Bottom Cap Attribute Sets", "Face Cap Attribute Sets";
+// the interior's set, which QuickDraw 3D 1.5 added, the same way).
+struct CapSet {
+    TQ3ObjectType type;
+    const char* name;
+};
+constexpr CapSet kTopCap = {Q3_OBJECT_TYPE('t', 'c', 'a', 's'), "TopCapAttributeSet"};
+constexpr CapSet kBottomCap = {Q3_OBJECT_TYPE('b', 'c', 'a', 's'), "BottomCapAttributeSet"};
+constexpr CapSet kFaceCap = {Q3_OBJECT_TYPE('f', 'c', 'a', 's'), "FaceCapAttributeSet"};
+constexpr CapSet kInteriorCap = {Q3_OBJECT_TYPE('i', 'c', 'a', 's'), "InteriorCapAttributeSet"};
+
+Ref<AttributeSet> readCapSet(ReadContext& context, const Parts& parts, const CapSet& cap)
+{
+    const Node* node = parts.find(cap.type);
+    if (node == nullptr)
+        return {};
+    if (node->type != kTypeContainer || node->children.size() != 2)
+        fail(kQ3ErrorInvalidMetafileSubObject, std::string("a ") + cap.name + " without exactly one attribute set");
+    return context.objectAs<AttributeSet>(node->children[1], cap.name);
+}
+
+void writeCapSet(WriteContext& context, const CapSet& cap, TQ3AttributeSet handle)
+{
+    const AttributeSet* set = setOf(handle);
+    if (!WriteContext::hasAttributes(set))
+        return;
+    Encoder& out = context.out();
+    out.begin(kTypeContainer, "Container");
+    out.begin(cap.type, cap.name);
+    out.end();
+    context.attributeSet(set);
+    out.end();
+}
+
+// Which cap sets each solid has, as members of its data.
+template <class Data>
+struct CapMember {
+    const CapSet* cap;
+    TQ3AttributeSet Data::*member;
+};
+
+template <class Data>
+std::vector<CapMember<Data>> capMembers();
+template <>
+std::vector<CapMember<TQ3ConeData>> capMembers()
+{
+    return {{&kInteriorCap, &TQ3ConeData::interiorAttributeSet},
+            {&kFaceCap, &TQ3ConeData::faceAttributeSet},
+            {&kBottomCap, &TQ3ConeData::bottomAttributeSet}};
+}
+template <>
+std::vector<CapMember<TQ3CylinderData>> capMembers()
+{
+    return {{&kInteriorCap, &TQ3CylinderData::interiorAttributeSet},
+            {&kTopCap, &TQ3CylinderData::topAttributeSet},
+            {&kFaceCap, &TQ3CylinderData::faceAttributeSet},
+            {&kBottomCap, &TQ3CylinderData::bottomAttributeSet}};
+}
+template <>
+std::vector<CapMember<TQ3EllipsoidData>> capMembers()
+{
+    return {{&kInteriorCap, &TQ3EllipsoidData::interiorAttributeSet}};
+}
+template <>
+std::vector<CapMember<TQ3TorusData>> capMembers()
+{
+    return {{&kInteriorCap, &TQ3TorusData::interiorAttributeSet}};
+}
+
 // Cone, cylinder, ellipsoid and torus: orientation, major and minor radius,
 // origin (the torus then its ratio), the optional ranges; caps and the
 // attribute set as subobjects.
@@ -663,6 +671,11 @@ Ref<SharedObject> readSolid(ReadContext& context, const Parts& parts, Data data,
     data.vMin = r.vMin;
     data.vMax = r.vMax;
     data.caps = readCaps(context, parts);
+    std::vector<Ref<AttributeSet>> capSets;
+    for (const CapMember<Data>& member : capMembers<Data>()) {
+        capSets.push_back(readCapSet(context, parts, *member.cap));
+        data.*member.member = capSets.back().get();
+    }
     Ref<AttributeSet> set = context.attributeSet(parts);
     data.*own = set.get();
     return make<T>(data);
@@ -674,7 +687,10 @@ void writeSolid(WriteContext& context, const Object& object, TQ3ObjectType type,
 {
     const Data& data = dataOf<T>(object);
     const AttributeSet* set = setOf(data.*own);
-    maybeContainer(context, WriteContext::hasAttributes(set) || data.caps != kQ3EndCapNone, [&] {
+    bool anyCapSet = false;
+    for (const CapMember<Data>& member : capMembers<Data>())
+        anyCapSet = anyCapSet || WriteContext::hasAttributes(setOf(data.*member.member));
+    maybeContainer(context, WriteContext::hasAttributes(set) || data.caps != kQ3EndCapNone || anyCapSet, [&] {
         Encoder& out = context.out();
         out.begin(type, name);
         out.vector3D(data.orientation);
@@ -686,6 +702,8 @@ void writeSolid(WriteContext& context, const Object& object, TQ3ObjectType type,
         writeRanges(out, Ranges{data.uMin, data.uMax, data.vMin, data.vMax}, true);
         out.end();
         writeCaps(out, data.caps);
+        for (const CapMember<Data>& member : capMembers<Data>())
+            writeCapSet(context, *member.cap, data.*member.member);
         context.attributeSet(set);
     });
 }
@@ -810,7 +828,13 @@ void addGeometryClasses(std::vector<ClassIO>& table)
                                   {kQ3GeometryTypeEllipse, "Ellipse", readEllipse, writeEllipse},
                                   {kQ3GeometryTypeEllipsoid, "Ellipsoid", readEllipsoid, writeEllipsoid},
                                   {kQ3GeometryTypeTorus, "Torus", readTorus, writeTorus},
+                                  {kTypeGeometrySets, "GeometryAttributeSetList", refusePart, writeNothing},
+                                  {kTopCap.type, kTopCap.name, refusePart, writeNothing},
+                                  {kBottomCap.type, kBottomCap.name, refusePart, writeNothing},
+                                  {kFaceCap.type, kFaceCap.name, refusePart, writeNothing},
+                                  {kInteriorCap.type, kInteriorCap.name, refusePart, writeNothing},
                               });
+    addComplexGeometryClasses(table);
 }
 
 } // namespace q3::io
