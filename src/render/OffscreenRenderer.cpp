@@ -670,8 +670,11 @@ bool OffscreenRenderer::Impl::place(const float* anchor, long xOffset, long yOff
     constexpr double kFar = 1e12; // well past any pane, yet exact in an int64
     if (!(std::fabs(px) < kFar && std::fabs(py) < kFar))
         return false;
-    out.left = std::int64_t(std::floor(px)) + xOffset;
-    out.top = std::int64_t(std::floor(py)) + yOffset;
+    // Offsets past 2^40 pixels put any image (at most 2^32 pixels wide) wholly
+    // off any pane either way; clamping them keeps the sums from overflowing.
+    constexpr long kFarOffset = 1L << 40;
+    out.left = std::int64_t(std::floor(px)) + std::clamp(xOffset, -kFarOffset, kFarOffset);
+    out.top = std::int64_t(std::floor(py)) + std::clamp(yOffset, -kFarOffset, kFarOffset);
     // Only the rows and columns that land in the pane.
     out.c0 = std::max<std::int64_t>(0, -out.left);
     out.c1 = std::min<std::int64_t>(width, std::int64_t(m_pane.width) - out.left);

@@ -172,7 +172,7 @@ TEST_F(PixmapMarkerRenderTest, PixelsOutsideThePaneAreClipped)
     // Wholly outside, however far.
     for (long offset : {LONG_MIN, long(-kWidth), long(kWidth), LONG_MAX}) {
         data.xOffset = offset;
-        data.yOffset = -offset / 2;
+        data.yOffset = offset / -2;
         expectOnly(render([&](TQ3ViewObject v) { EXPECT_EQ(Q3PixmapMarker_Submit(&data, v), kQ3Success); }), {},
                    "outside " + std::to_string(offset));
     }
