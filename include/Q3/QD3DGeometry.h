@@ -4,8 +4,8 @@
 /*
  * Geometries: NURB curves, polylines, lines, points, triangles, polygons,
  * general polygons, polyhedra, triangle grids, triangle meshes, markers,
- * and the quadrics and solids (boxes, cones, cylinders, disks, ellipses,
- * ellipsoids, tori), in retained mode (an object made by ..._New and drawn with
+ * pixmap markers, and the quadrics and solids (boxes, cones, cylinders,
+ * disks, ellipses, ellipsoids, tori), in retained mode (an object made by ..._New and drawn with
  * Q3Geometry_Submit) and immediate mode (a data structure drawn at once with
  * ..._Submit).
  *
@@ -6128,6 +6128,297 @@ Q3_EXTERN_API_C(TQ3Status) Q3Marker_GetBitmap(TQ3GeometryObject marker, TQ3Bitma
  * Ownership: the marker keeps its own copy of the bits.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3Marker_SetBitmap(TQ3GeometryObject marker, const TQ3Bitmap *bitmap);
+
+/* ---- Pixmap marker ------------------------------------------------------ */
+
+/*
+ * A pixmap marker: a colour image drawn in screen space, its pixels parallel
+ * to the pane's whatever the camera, at the image of position. The pixmap's
+ * top left pixel lies xOffset pixels to the right of and yOffset pixels
+ * below the pixel position projects to (negative offsets go left and up).
+ * Each pixel is drawn in its own colour (an n-bit channel holding v is the
+ * fraction v / (2^n - 1) of full intensity), unlit: attribute sets, lights
+ * and the illumination shader do not change it. For kQ3PixelTypeARGB32 and
+ * kQ3PixelTypeARGB16 a pixel whose alpha is 0 is not drawn and leaves the
+ * image alone; any other alpha draws the pixel opaque (the renderers do not
+ * blend). Pixels that fall outside the pane are not drawn. The interactive
+ * renderer depth-tests the whole pixmap at position's depth. A pixmap marker
+ * whose position is behind the camera or outside its hither and yon planes
+ * is not drawn; its bound is position. It is its own decomposition
+ * (Q3Geometry_GetDecomposed gives NULL, as for a marker).
+ *
+ * pixmap.image is a storage object (QD3DStorage.h) holding height rows of
+ * rowBytes bytes, top row first; within a row, pixel x occupies bytes
+ * x * pixelSize / 8 onwards. Each pixel is a pixelSize-bit word laid out as
+ * QD3DDrawContext.h's table says for pixelType, its bytes stored most
+ * significant first when byteOrder is kQ3EndianBig and least significant
+ * first when it is kQ3EndianLittle; bitOrder is checked but not used. The
+ * storage is read each time the marker is drawn, so changes to its contents
+ * show at the next drawing; a storage that no longer holds
+ * rowBytes * height bytes then makes the drawing fail with
+ * kQ3ErrorInvalidData.
+ *
+ * The rules a TQ3PixmapMarkerData must obey wherever one is accepted,
+ * checked in this order:
+ *   pixmap.image is not NULL                        kQ3ErrorNULLParameter
+ *   position's coordinates are finite               kQ3ErrorInvalidData
+ *   pixmap.pixelType is a TQ3PixelType value, and
+ *     pixmap.byteOrder and pixmap.bitOrder are
+ *     TQ3Endian values                              kQ3ErrorInvalidData
+ *   pixmap.pixelSize is the size QD3DDrawContext.h
+ *     gives for pixelType (16, 24 or 32)     kQ3ErrorUnsupportedPixelDepth
+ *   pixmap.width and pixmap.height are above 0,
+ *     and pixmap.rowBytes >= width * pixelSize / 8  kQ3ErrorInvalidData
+ *   pixmap.rowBytes * pixmap.height
+ *     <= kQ3GeometryMaxArrayCount                   kQ3ErrorParameterOutOfRange
+ *   pixmap.image is a live storage object
+ *                           kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ *   the storage holds at least
+ *     pixmap.rowBytes * pixmap.height bytes         kQ3ErrorInvalidData
+ *     (a path storage whose file cannot be read:    kQ3ErrorFileNotOpen)
+ *   pixmapMarkerAttributeSet is NULL or a live
+ *     attribute set         kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ */
+struct TQ3PixmapMarkerData {
+    TQ3Point3D position;
+    long xOffset;
+    long yOffset;
+    TQ3StoragePixmap pixmap;
+    TQ3AttributeSet pixmapMarkerAttributeSet;
+};
+typedef struct TQ3PixmapMarkerData TQ3PixmapMarkerData;
+
+/**
+ * Creates a retained pixmap marker from a copy of pixmapMarkerData (the data
+ * calls at the top of this header). The pixels stay in the storage object,
+ * which the marker references; they are not copied.
+ *
+ * @return the new pixmap marker, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarkerData is NULL.
+ *   then the codes of the TQ3PixmapMarkerData rules, in their order;
+ *   kQ3ErrorOutOfMemory        the marker cannot be allocated.
+ *
+ * Ownership: the caller owns the new marker's one reference. The marker
+ * takes its own references to the storage and the attribute set; the caller
+ * keeps its own.
+ */
+Q3_EXTERN_API_C(TQ3GeometryObject) Q3PixmapMarker_New(const TQ3PixmapMarkerData *pixmapMarkerData);
+
+/**
+ * Draws (or bounds) a pixmap marker without creating an object.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing drawn.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarkerData or view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
+ *   then the codes of the TQ3PixmapMarkerData rules, in their order.
+ *
+ * Ownership: no references are kept after the call returns.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_Submit(const TQ3PixmapMarkerData *pixmapMarkerData,
+                                                 TQ3ViewObject view);
+
+/**
+ * Replaces the data of a retained pixmap marker with a copy of
+ * pixmapMarkerData.
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry or pixmapMarkerData is NULL.
+ *   kQ3ErrorInvalidObject      geometry is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a pixmap marker.
+ *   then the codes of the TQ3PixmapMarkerData rules, in their order.
+ *
+ * Ownership: the marker references the storage and attribute set given and
+ * releases the ones it held.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_SetData(TQ3GeometryObject geometry,
+                                                  const TQ3PixmapMarkerData *pixmapMarkerData);
+
+/**
+ * Copies the data of a retained pixmap marker into pixmapMarkerData.
+ *
+ * @return kQ3Success, or kQ3Failure with *pixmapMarkerData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      geometry or pixmapMarkerData is NULL.
+ *   kQ3ErrorInvalidObject      geometry is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  geometry is not a pixmap marker.
+ *
+ * Ownership: the caller owns a new reference to the storage (pixmap.image)
+ * and to the attribute set, and gives them back with
+ * Q3PixmapMarker_EmptyData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_GetData(TQ3GeometryObject geometry,
+                                                  TQ3PixmapMarkerData *pixmapMarkerData);
+
+/**
+ * Releases what Q3PixmapMarker_GetData put in pixmapMarkerData: the storage
+ * and attribute set references; the handles become NULL.
+ *
+ * @return kQ3Success, or kQ3Failure with nothing released.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarkerData is NULL.
+ *   kQ3ErrorInvalidObject      its storage or attribute set is not a live Q3
+ *                              object.
+ *   kQ3ErrorInvalidObjectType  its storage is not a storage, or its
+ *                              attribute set not an attribute set.
+ *
+ * Ownership: consumes the references the structure holds.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_EmptyData(TQ3PixmapMarkerData *pixmapMarkerData);
+
+/**
+ * Reads the position of a retained pixmap marker.
+ *
+ * @return kQ3Success, or kQ3Failure with *position unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarker or position is NULL.
+ *   kQ3ErrorInvalidObject      pixmapMarker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pixmapMarker is not a pixmap marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_GetPosition(TQ3GeometryObject pixmapMarker, TQ3Point3D *position);
+
+/**
+ * Moves a retained pixmap marker's position.
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarker or position is NULL.
+ *   kQ3ErrorInvalidObject      pixmapMarker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pixmapMarker is not a pixmap marker.
+ *   kQ3ErrorInvalidData        a coordinate of *position is not finite.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_SetPosition(TQ3GeometryObject pixmapMarker,
+                                                      const TQ3Point3D *position);
+
+/**
+ * Reads the horizontal offset, in pixels, of a retained pixmap marker's
+ * pixmap.
+ *
+ * @return kQ3Success, or kQ3Failure with *xOffset unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarker or xOffset is NULL.
+ *   kQ3ErrorInvalidObject      pixmapMarker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pixmapMarker is not a pixmap marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_GetXOffset(TQ3GeometryObject pixmapMarker, long *xOffset);
+
+/**
+ * Replaces the horizontal offset, in pixels, of a retained pixmap marker's
+ * pixmap (any value).
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarker is NULL.
+ *   kQ3ErrorInvalidObject      pixmapMarker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pixmapMarker is not a pixmap marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_SetXOffset(TQ3GeometryObject pixmapMarker, long xOffset);
+
+/**
+ * Reads the vertical offset, in pixels (positive down), of a retained pixmap
+ * marker's pixmap.
+ *
+ * @return kQ3Success, or kQ3Failure with *yOffset unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarker or yOffset is NULL.
+ *   kQ3ErrorInvalidObject      pixmapMarker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pixmapMarker is not a pixmap marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_GetYOffset(TQ3GeometryObject pixmapMarker, long *yOffset);
+
+/**
+ * Replaces the vertical offset, in pixels (positive down), of a retained
+ * pixmap marker's pixmap (any value).
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarker is NULL.
+ *   kQ3ErrorInvalidObject      pixmapMarker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pixmapMarker is not a pixmap marker.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_SetYOffset(TQ3GeometryObject pixmapMarker, long yOffset);
+
+/**
+ * Copies a retained pixmap marker's pixmap description into pixmap.
+ *
+ * @return kQ3Success, or kQ3Failure with *pixmap unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      pixmapMarker or pixmap is NULL.
+ *   kQ3ErrorInvalidObject      pixmapMarker is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  pixmapMarker is not a pixmap marker.
+ *
+ * Ownership: the caller owns a new reference to the storage (pixmap->image)
+ * and gives it back with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_GetPixmap(TQ3GeometryObject pixmapMarker, TQ3StoragePixmap *pixmap);
+
+/**
+ * Replaces a retained pixmap marker's pixmap with pixmap, which must obey
+ * the pixmap rules of TQ3PixmapMarkerData (all but the position's), in
+ * their order.
+ *
+ * @return kQ3Success, or kQ3Failure with the marker unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized         Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter          pixmapMarker, pixmap or pixmap->image is
+ *                                  NULL.
+ *   kQ3ErrorInvalidObject          pixmapMarker or pixmap->image is not a
+ *                                  live Q3 object.
+ *   kQ3ErrorInvalidObjectType      pixmapMarker is not a pixmap marker, or
+ *                                  pixmap->image not a storage.
+ *   kQ3ErrorInvalidData            the enumerations or sizes break the rules,
+ *                                  or the storage is too small.
+ *   kQ3ErrorUnsupportedPixelDepth  pixelSize does not match pixelType.
+ *   kQ3ErrorParameterOutOfRange    rowBytes * height is above
+ *                                  kQ3GeometryMaxArrayCount.
+ *   kQ3ErrorFileNotOpen            a path storage's file cannot be read.
+ *
+ * Ownership: the marker references the new storage and releases the one it
+ * held; the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3PixmapMarker_SetPixmap(TQ3GeometryObject pixmapMarker,
+                                                    const TQ3StoragePixmap *pixmap);
 
 #ifdef __cplusplus
 }

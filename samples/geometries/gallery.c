@@ -13,6 +13,7 @@
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DShader.h"
+#include "QD3DStorage.h"
 #include "QD3DStyle.h"
 #include "QD3DView.h"
 
@@ -491,6 +492,43 @@ static TQ3GeometryObject new_marker(void)
     return g;
 }
 
+/* A 24 x 24 ARGB32 pixmap of a disc shaded from orange at its top left to
+ * blue at its bottom right, transparent around it, drawn centred on the
+ * origin. Its pixels live in a memory storage that the marker references. */
+static TQ3GeometryObject new_pixmap_marker(void)
+{
+    enum { kSize = 24 };
+    static unsigned char pixels[kSize * kSize * 4];
+    TQ3PixmapMarkerData data;
+    TQ3GeometryObject g;
+    int x, y;
+    for (y = 0; y < kSize; y++)
+        for (x = 0; x < kSize; x++) {
+            unsigned char *p = pixels + 4 * (kSize * y + x);
+            const double d = hypot(x - 11.5, y - 11.5);
+            const double t = (x + y) / (2.0 * (kSize - 1));
+            p[0] = d < 11.5 ? 0xFF : 0x00; /* alpha 0 outside the disc */
+            p[1] = (unsigned char)(255.0 * (1.0 - t) + 0.5);
+            p[2] = (unsigned char)(140.0 * (1.0 - t) + 90.0 * t + 0.5);
+            p[3] = (unsigned char)(30.0 * (1.0 - t) + 255.0 * t + 0.5);
+        }
+    data.position = point3(0, 0, 0);
+    data.xOffset = -kSize / 2;
+    data.yOffset = -kSize / 2;
+    data.pixmap.image = Q3MemoryStorage_New(pixels, sizeof pixels);
+    data.pixmap.width = kSize;
+    data.pixmap.height = kSize;
+    data.pixmap.rowBytes = kSize * 4;
+    data.pixmap.pixelSize = 32;
+    data.pixmap.pixelType = kQ3PixelTypeARGB32;
+    data.pixmap.bitOrder = kQ3EndianBig;
+    data.pixmap.byteOrder = kQ3EndianBig;
+    data.pixmapMarkerAttributeSet = NULL;
+    g = data.pixmap.image != NULL ? Q3PixmapMarker_New(&data) : NULL;
+    dispose(data.pixmap.image);
+    return g;
+}
+
 typedef struct Entry {
     const char *name;
     TQ3GeometryObject (*make)(void);
@@ -500,8 +538,8 @@ static const Entry kEntries[] = {
     {"point", new_point},         {"line", new_line},         {"polyline", new_polyline},
     {"triangle", new_triangle},   {"polygon", new_polygon},   {"trimesh", new_trimesh},
     {"mesh", new_mesh},           {"general_polygon", new_general_polygon}, {"polyhedron", new_polyhedron},
-    {"trigrid", new_trigrid},     {"marker", new_marker},     {"nurb_curve", new_nurb_curve},
-    {"nurb_patch", new_nurb_patch},
+    {"trigrid", new_trigrid},     {"marker", new_marker},     {"pixmap_marker", new_pixmap_marker},
+    {"nurb_curve", new_nurb_curve}, {"nurb_patch", new_nurb_patch},
     {"box", new_box},             {"cone", new_cone},         {"cylinder", new_cylinder},
     {"disk", new_disk},           {"ellipse", new_ellipse},   {"ellipsoid", new_ellipsoid},
     {"torus", new_torus},

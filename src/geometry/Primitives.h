@@ -67,6 +67,24 @@ struct ScreenBitmap {
     bool lsbFirst = false;
 };
 
+/// A colour image drawn in screen space at the image of one vertex (a pixmap
+/// marker): `height` rows of `rowBytes` bytes, top row first, each pixel a
+/// word of pixelType's layout (QD3DDrawContext.h) stored in byteOrder. Its
+/// top left pixel is xOffset pixels right of and yOffset pixels below the
+/// pixel the vertex projects to. Pixels keep their own colours; one whose
+/// alpha is 0 is not drawn. The fields are valid (PixmapMarker's rules).
+struct ScreenPixmap {
+    std::uint32_t vertex = 0;
+    long xOffset = 0;
+    long yOffset = 0;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::size_t rowBytes = 0;
+    TQ3PixelType pixelType = kQ3PixelTypeARGB32;
+    TQ3Endian byteOrder = kQ3EndianBig;
+    const unsigned char* bytes = nullptr;
+};
+
 /// A decomposition as a set of borrowed arrays. Attribute arrays are null
 /// when no vertex has that attribute; otherwise they hold one entry per
 /// vertex, NaN where a vertex has none (VertexAttributes). Indices refer to
@@ -94,6 +112,9 @@ struct MeshView {
     /// Bitmaps drawn in screen space (ScreenBitmap).
     const ScreenBitmap* bitmaps = nullptr;
     std::size_t bitmapCount = 0;
+    /// Colour images drawn in screen space (ScreenPixmap).
+    const ScreenPixmap* pixmaps = nullptr;
+    std::size_t pixmapCount = 0;
 };
 
 /// A decomposition that owns its arrays: what retained geometries cache.

@@ -263,6 +263,7 @@ public:
     RenderResult setMatrix(const std::array<float, 16>& matrix);
     RenderResult draw(const DrawRequest& request);
     RenderResult drawBitmap(const float* anchor, const BitmapImage& image, const RgbColor& color);
+    RenderResult drawPixmap(const float* anchor, const PixmapImage& image);
     RenderResult setLighting(const LightingSetup& lighting);
     RenderResult setFaceOptions(const FaceOptions& faces);
     RenderResult endFrame();
@@ -274,6 +275,25 @@ public:
     std::vector<std::uint8_t> m_image;
 
 private:
+    // Where a width x height image anchored at `anchor` lands: its top left
+    // pane pixel, the depth of the anchor, and the columns c0..c1 and rows
+    // r0..r1 (ends excluded) of the image inside the pane. False when nothing
+    // of it is drawn (the anchor behind the eye, outside the depth range, or
+    // the image outside the pane).
+    struct ScreenPlacement {
+        std::int64_t left = 0, top = 0;
+        double depth = 0.0;
+        std::int64_t c0 = 0, c1 = 0, r0 = 0, r1 = 0;
+    };
+    bool place(const float* anchor, long xOffset, long yOffset, std::uint32_t width, std::uint32_t height,
+               ScreenPlacement& out) const;
+    // Image pixel (c, r) of a placement as a point in clip space.
+    void pushPixel(const ScreenPlacement& at, std::int64_t c, std::int64_t r, std::vector<float>& points) const;
+    // Draws points given in clip space (rgb per point, or null for `color`)
+    // and restores the current matrix.
+    RenderResult drawScreenPoints(const std::vector<float>& points, const std::vector<float>* rgb,
+                                  const RgbColor& color);
+
     // Interleaved for glVertexPointer/glColorPointer/glNormalPointer with
     // one stride. No member initializers: storage is allocated uninitialized.
     struct Vertex {
@@ -632,6 +652,67 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
     return RenderResult::success();
 }
 
+bool OffscreenRenderer::Impl::place(const float* anchor, long xOffset, long yOffset, std::uint32_t width,
+                                    std::uint32_t height, ScreenPlacement& out) const
+{
+    // The anchor in clip space (row vector times the current matrix), then
+    // in pane pixels measured from the top left.
+    const std::array<float, 16>& matrix = m_matrices[m_currentMatrix];
+    double clip[4];
+    for (int j = 0; j < 4; ++j)
+        clip[j] = double(anchor[0]) * matrix[j] + double(anchor[1]) * matrix[4 + j] +
+                  double(anchor[2]) * matrix[8 + j] + matrix[12 + j];
+    if (!(clip[3] > 0.0) || !(clip[2] >= -clip[3] && clip[2] <= clip[3]))
+        return false;
+    out.depth = clip[2] / clip[3];
+    const double px = (clip[0] / clip[3] + 1.0) * 0.5 * m_pane.width;
+    const double py = (1.0 - clip[1] / clip[3]) * 0.5 * m_pane.height;
+    constexpr double kFar = 1e12; // well past any pane, yet exact in an int64
+    if (!(std::fabs(px) < kFar && std::fabs(py) < kFar))
+        return false;
+    // Offsets past 2^40 pixels put any image (at most 2^32 pixels wide) wholly
+    // off any pane either way; clamping them keeps the sums from overflowing.
+    constexpr long kFarOffset = 1L << 40;
+    out.left = std::int64_t(std::floor(px)) + std::clamp(xOffset, -kFarOffset, kFarOffset);
+    out.top = std::int64_t(std::floor(py)) + std::clamp(yOffset, -kFarOffset, kFarOffset);
+    // Only the rows and columns that land in the pane.
+    out.c0 = std::max<std::int64_t>(0, -out.left);
+    out.c1 = std::min<std::int64_t>(width, std::int64_t(m_pane.width) - out.left);
+    out.r0 = std::max<std::int64_t>(0, -out.top);
+    out.r1 = std::min<std::int64_t>(height, std::int64_t(m_pane.height) - out.top);
+    return out.c0 < out.c1 && out.r0 < out.r1;
+}
+
+void OffscreenRenderer::Impl::pushPixel(const ScreenPlacement& at, std::int64_t c, std::int64_t r,
+                                        std::vector<float>& points) const
+{
+    const double x = double(at.left + c) + 0.5, y = double(at.top + r) + 0.5;
+    points.push_back(float(x / m_pane.width * 2.0 - 1.0));
+    points.push_back(float(1.0 - y / m_pane.height * 2.0));
+    points.push_back(float(at.depth));
+}
+
+RenderResult OffscreenRenderer::Impl::drawScreenPoints(const std::vector<float>& points,
+                                                       const std::vector<float>* rgb, const RgbColor& color)
+{
+    if (points.empty())
+        return RenderResult::success();
+    const std::array<float, 16> matrix = m_matrices[m_currentMatrix];
+    static const std::array<float, 16> kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    RenderResult result = setMatrix(kIdentity);
+    if (!result)
+        return result;
+    DrawRequest request;
+    request.primitive = Primitive::kPoints;
+    request.xyz = points.data();
+    request.rgb = rgb != nullptr ? rgb->data() : nullptr;
+    request.vertexCount = points.size() / 3;
+    request.color = color;
+    result = draw(request);
+    const RenderResult restored = setMatrix(matrix);
+    return result ? restored : result;
+}
+
 RenderResult OffscreenRenderer::Impl::drawBitmap(const float* anchor, const BitmapImage& image,
                                                  const RgbColor& color)
 {
@@ -649,59 +730,53 @@ RenderResult OffscreenRenderer::Impl::drawBitmap(const float* anchor, const Bitm
     if (!allFinite(anchor, 3) || !allFinite(rgb, 3))
         return invalid("bitmap anchor or colour has a NaN or infinite value");
 
-    // The anchor in clip space (row vector times the current matrix), then
-    // in pane pixels measured from the top left.
-    const std::array<float, 16> matrix = m_matrices[m_currentMatrix];
-    double clip[4];
-    for (int j = 0; j < 4; ++j)
-        clip[j] = double(anchor[0]) * matrix[j] + double(anchor[1]) * matrix[4 + j] +
-                  double(anchor[2]) * matrix[8 + j] + matrix[12 + j];
-    if (!(clip[3] > 0.0) || !(clip[2] >= -clip[3] && clip[2] <= clip[3]))
+    ScreenPlacement at;
+    if (!place(anchor, image.xOffset, image.yOffset, image.width, image.height, at))
         return RenderResult::success();
-    const double depth = clip[2] / clip[3];
-    const double px = (clip[0] / clip[3] + 1.0) * 0.5 * m_pane.width;
-    const double py = (1.0 - clip[1] / clip[3]) * 0.5 * m_pane.height;
-    constexpr double kFar = 1e12; // well past any pane, yet exact in an int64
-    if (!(std::fabs(px) < kFar && std::fabs(py) < kFar))
-        return RenderResult::success();
-    const std::int64_t left = std::int64_t(std::floor(px)) + image.xOffset;
-    const std::int64_t top = std::int64_t(std::floor(py)) + image.yOffset;
-    // Only the rows and columns that land in the pane.
-    const std::int64_t c0 = std::max<std::int64_t>(0, -left);
-    const std::int64_t c1 = std::min<std::int64_t>(image.width, std::int64_t(m_pane.width) - left);
-    const std::int64_t r0 = std::max<std::int64_t>(0, -top);
-    const std::int64_t r1 = std::min<std::int64_t>(image.height, std::int64_t(m_pane.height) - top);
-    if (c0 >= c1 || r0 >= r1)
-        return RenderResult::success();
-
     std::vector<float> points;
-    for (std::int64_t r = r0; r < r1; ++r) {
+    for (std::int64_t r = at.r0; r < at.r1; ++r) {
         const unsigned char* row = image.bits + std::size_t(r) * image.rowBytes;
-        for (std::int64_t c = c0; c < c1; ++c) {
+        for (std::int64_t c = at.c0; c < at.c1; ++c) {
             const unsigned bit = unsigned(c % 8);
             const unsigned mask = image.lsbFirst ? (1u << bit) : (0x80u >> bit);
-            if ((row[c / 8] & mask) == 0)
-                continue;
-            const double x = double(left + c) + 0.5, y = double(top + r) + 0.5;
-            points.push_back(float(x / m_pane.width * 2.0 - 1.0));
-            points.push_back(float(1.0 - y / m_pane.height * 2.0));
-            points.push_back(float(depth));
+            if ((row[c / 8] & mask) != 0)
+                pushPixel(at, c, r, points);
         }
     }
-    if (points.empty())
+    return drawScreenPoints(points, nullptr, color);
+}
+
+RenderResult OffscreenRenderer::Impl::drawPixmap(const float* anchor, const PixmapImage& image)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "drawPixmap called outside a frame");
+    if (anchor == nullptr)
+        return invalid("anchor pointer is NULL");
+    if (image.pixels == nullptr)
+        return invalid("pixmap pixels are NULL");
+    const RenderResult valid = validatePixmapLayout(image.layout);
+    if (!valid)
+        return valid;
+    if (!allFinite(anchor, 3))
+        return invalid("pixmap anchor has a NaN or infinite value");
+
+    ScreenPlacement at;
+    if (!place(anchor, image.xOffset, image.yOffset, image.layout.width, image.layout.height, at))
         return RenderResult::success();
-    static const std::array<float, 16> kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    RenderResult result = setMatrix(kIdentity);
-    if (!result)
-        return result;
-    DrawRequest request;
-    request.primitive = Primitive::kPoints;
-    request.xyz = points.data();
-    request.vertexCount = points.size() / 3;
-    request.color = color;
-    result = draw(request);
-    const RenderResult restored = setMatrix(matrix);
-    return result ? restored : result;
+    // Only the part inside the pane is decoded: at most the pane's pixels.
+    // Channels go to OpenGL as fractions of their range, which it rounds to
+    // the nearest 8-bit value.
+    std::vector<float> points, colors;
+    for (std::int64_t r = at.r0; r < at.r1; ++r)
+        for (std::int64_t c = at.c0; c < at.c1; ++c) {
+            const RgbaUnit p = unpackPixelUnit(
+                image.layout.pixelType, pixmapWord(image.pixels, image.layout, std::uint32_t(c), std::uint32_t(r)));
+            if (p.a == 0.0f)
+                continue;
+            pushPixel(at, c, r, points);
+            colors.insert(colors.end(), {p.r, p.g, p.b});
+        }
+    return drawScreenPoints(points, &colors, RgbColor{});
 }
 
 void OffscreenRenderer::Impl::startFrameInGl()
@@ -1013,6 +1088,15 @@ RenderResult OffscreenRenderer::drawBitmap(const float* anchor, const BitmapImag
 {
     try {
         return m_impl->drawBitmap(anchor, image, color);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::drawPixmap(const float* anchor, const PixmapImage& image)
+{
+    try {
+        return m_impl->drawPixmap(anchor, image);
     } catch (const std::bad_alloc&) {
         return outOfMemory();
     }

@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
+#include "render/PixelConvert.h"
 #include "render/RenderResult.h"
 
 #include <cstddef>
@@ -48,6 +49,18 @@ struct BitmapImage {
     std::uint32_t width = 0;
     std::uint32_t height = 0;
     bool lsbFirst = false;
+    long xOffset = 0;
+    long yOffset = 0;
+};
+
+/// A colour image drawn in screen space (a QuickDraw 3D pixmap marker):
+/// `pixels` laid out as `layout` says (render/PixelConvert.h). Its top left
+/// pixel lies xOffset pixels right of and yOffset pixels below the pixel its
+/// anchor projects to. Each pixel keeps its colour; one whose alpha is 0 is
+/// not drawn, any other alpha is drawn opaque.
+struct PixmapImage {
+    const void* pixels = nullptr;
+    PixmapLayout layout;
     long xOffset = 0;
     long yOffset = 0;
 };
@@ -221,6 +234,12 @@ public:
     /// NULL anchor, NULL bits with a non-empty image, rowBytes too small for
     /// the width, or a non-finite anchor or colour; kOutOfMemory.
     RenderResult drawBitmap(const float* anchor, const BitmapImage& image, const RgbColor& color);
+    /// Draws `image` as drawBitmap draws a bitmap's set bits, each pixel in
+    /// its own colour, unlit; only the pixels inside the pane are decoded.
+    /// Errors: kWrongState outside a frame; kInvalidArgument for a NULL
+    /// anchor or pixels, an invalid layout or a non-finite anchor;
+    /// kOutOfMemory.
+    RenderResult drawPixmap(const float* anchor, const PixmapImage& image);
 
     /// The lights for the frame's lit draws (kWrongState outside a frame;
     /// kInvalidArgument for more than kMaxLights or a non-finite value).

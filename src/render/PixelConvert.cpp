@@ -351,10 +351,30 @@ RenderResult readPixmapToRgba8(const void* pixmap, const PixmapLayout& layout, c
     return RenderResult::success();
 }
 
-Rgba8 readPixmapPixel(const void* pixmap, const PixmapLayout& layout, std::uint32_t x, std::uint32_t y)
+RgbaUnit unpackPixelUnit(PixelType type, std::uint32_t w)
 {
-    if (pixmap == nullptr || !validatePixmapLayout(layout) || x >= layout.width || y >= layout.height)
-        return {};
+    auto unit = [w](unsigned shift, unsigned bits) {
+        const std::uint32_t top = (1u << bits) - 1u;
+        return float((w >> shift) & top) / float(top);
+    };
+    switch (type) {
+    case PixelType::kRGB32:
+    case PixelType::kRGB24:
+        return {unit(16, 8), unit(8, 8), unit(0, 8), 1.0f};
+    case PixelType::kARGB32:
+        return {unit(16, 8), unit(8, 8), unit(0, 8), unit(24, 8)};
+    case PixelType::kRGB16:
+        return {unit(10, 5), unit(5, 5), unit(0, 5), 1.0f};
+    case PixelType::kARGB16:
+        return {unit(10, 5), unit(5, 5), unit(0, 5), unit(15, 1)};
+    case PixelType::kRGB16_565:
+        return {unit(11, 5), unit(5, 6), unit(0, 5), 1.0f};
+    }
+    return {};
+}
+
+std::uint32_t pixmapWord(const void* pixmap, const PixmapLayout& layout, std::uint32_t x, std::uint32_t y)
+{
     const std::uint32_t bytes = bytesPerPixel(layout.pixelType);
     const std::uint8_t* p =
         static_cast<const std::uint8_t*>(pixmap) + std::size_t(layout.rowBytes) * y + std::size_t(x) * bytes;
@@ -363,7 +383,14 @@ Rgba8 readPixmapPixel(const void* pixmap, const PixmapLayout& layout, std::uint3
         const std::uint32_t shift = layout.byteOrder == ByteOrder::kBig ? 8 * (bytes - 1 - i) : 8 * i;
         word |= std::uint32_t(p[i]) << shift;
     }
-    return unpackPixel(layout.pixelType, word);
+    return word;
+}
+
+Rgba8 readPixmapPixel(const void* pixmap, const PixmapLayout& layout, std::uint32_t x, std::uint32_t y)
+{
+    if (pixmap == nullptr || !validatePixmapLayout(layout) || x >= layout.width || y >= layout.height)
+        return {};
+    return unpackPixel(layout.pixelType, pixmapWord(pixmap, layout, x, y));
 }
 
 } // namespace q3

@@ -89,6 +89,22 @@ std::uint32_t packPixel(PixelType type, Rgba8 color);
 /// 255 for kARGB16.
 Rgba8 unpackPixel(PixelType type, std::uint32_t word);
 
+/// A pixel's channels as fractions of their range: an n-bit channel holding
+/// v is v / (2^n - 1), so a 5-bit 16 is 16/31, not the 132/255 of
+/// unpackPixel's widening. Alpha is 1 for types without alpha and 0 or 1 for
+/// kARGB16. All 0 for an unknown type.
+struct RgbaUnit {
+    float r = 0.0f;
+    float g = 0.0f;
+    float b = 0.0f;
+    float a = 0.0f;
+};
+RgbaUnit unpackPixelUnit(PixelType type, std::uint32_t word);
+
+/// The word of pixel (x, y) of a pixmap whose layout validatePixmapLayout
+/// accepts, with x and y inside it (not checked: the caller has).
+std::uint32_t pixmapWord(const void* pixmap, const PixmapLayout& layout, std::uint32_t x, std::uint32_t y);
+
 /// Checks a layout: known pixel type and byte order, width and height >= 1,
 /// rowBytes >= width * bytesPerPixel. Errors: kInvalidArgument naming the field.
 RenderResult validatePixmapLayout(const PixmapLayout& layout);

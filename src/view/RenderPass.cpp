@@ -205,6 +205,20 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
         throwIfFailed(m_target.drawBitmap(mesh.positions + 3 * std::size_t(bitmap.vertex), image, ink),
                       "drawing a marker");
     }
+    for (std::size_t p = 0; p < mesh.pixmapCount; ++p) {
+        const ScreenPixmap& pixmap = mesh.pixmaps[p];
+        PixmapImage image;
+        image.pixels = pixmap.bytes;
+        image.layout.width = pixmap.width;
+        image.layout.height = pixmap.height;
+        image.layout.rowBytes = std::uint32_t(pixmap.rowBytes);
+        image.layout.pixelType = PixelType(pixmap.pixelType);
+        image.layout.byteOrder = ByteOrder(pixmap.byteOrder);
+        image.xOffset = pixmap.xOffset;
+        image.yOffset = pixmap.yOffset;
+        throwIfFailed(m_target.drawPixmap(mesh.positions + 3 * std::size_t(pixmap.vertex), image),
+                      "drawing a pixmap marker");
+    }
 }
 
 namespace {

@@ -305,6 +305,43 @@ int main(void)
         if (!ok)
             return 19;
     }
+    {
+        /* Pixmap markers from C: the pixmap lives in a storage object; an
+         * out-of-range pixel type (an int, as C allows) is refused. */
+        static const unsigned char pixels[8] = {0xFF, 0, 0, 0xFF, 0xFF, 0, 0xFF, 0};
+        TQ3PixmapMarkerData data;
+        TQ3StoragePixmap pixmap;
+        TQ3GeometryObject marker;
+        long offset = 0;
+        int ok;
+        memset(&data, 0, sizeof data);
+        data.pixmap.image = Q3MemoryStorage_New(pixels, sizeof pixels);
+        data.pixmap.width = 2;
+        data.pixmap.height = 1;
+        data.pixmap.rowBytes = 8;
+        data.pixmap.pixelSize = 32;
+        data.pixmap.pixelType = kQ3PixelTypeARGB32;
+        data.pixmap.bitOrder = kQ3EndianBig;
+        data.pixmap.byteOrder = kQ3EndianBig;
+        data.xOffset = -1;
+        marker = Q3PixmapMarker_New(&data);
+        ok = marker != NULL && Q3Geometry_GetType(marker) == kQ3GeometryTypePixmapMarker &&
+             Q3PixmapMarker_SetYOffset(marker, 3) == kQ3Success &&
+             Q3PixmapMarker_GetYOffset(marker, &offset) == kQ3Success && offset == 3 &&
+             Q3PixmapMarker_GetPixmap(marker, &pixmap) == kQ3Success && pixmap.image == data.pixmap.image &&
+             pixmap.rowBytes == 8;
+        if (ok)
+            Q3Object_Dispose(pixmap.image);
+        pixmap = data.pixmap;
+        pixmap.pixelType = 6;
+        ok = ok && Q3PixmapMarker_SetPixmap(marker, &pixmap) == kQ3Failure &&
+             Q3Error_Get(NULL) == kQ3ErrorInvalidData;
+        if (marker != NULL)
+            Q3Object_Dispose(marker);
+        Q3Object_Dispose(data.pixmap.image);
+        if (!ok)
+            return 18;
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

@@ -3,10 +3,10 @@
 
 /*
  * Legacy code for QuickDraw 3D 1.6's general polygons, polyhedra, triangle
- * grids and markers, written the way 1990s Macintosh samples were
+ * grids, markers and pixmap markers, written the way 1990s Macintosh samples were
  * (declarations first, Apple's headers by their own names, every status
  * checked), built with nothing but -I include/Q3: it must compile unmodified
- * against Q3. It calls every routine of the four types, bounds what it made
+ * against Q3. It calls every routine of the five types, bounds what it made
  * and draws it into a pixmap. Returns 0 when every call did what the 1.6 API
  * promises.
  */
@@ -18,6 +18,7 @@
 #include <QD3DMath.h>
 #include <QD3DRenderer.h>
 #include <QD3DSet.h>
+#include <QD3DStorage.h>
 #include <QD3DView.h>
 
 #include <stdio.h>
@@ -289,9 +290,57 @@ static TQ3GeometryObject MyMarker(TQ3AttributeSet red)
     return marker;
 }
 
+/* A 2 x 2 pixmap marker of red ARGB32 pixels (one transparent), its pixels in
+ * a memory storage. */
+static TQ3GeometryObject MyPixmapMarker(void)
+{
+    static unsigned char pixels[16] = {0xFF, 0xFF, 0, 0, 0xFF, 0xFF, 0, 0,
+                                       0xFF, 0xFF, 0, 0, 0x00, 0xFF, 0, 0};
+    TQ3PixmapMarkerData data;
+    TQ3GeometryObject marker;
+    TQ3Point3D position;
+    TQ3StoragePixmap pixmap;
+    long offset;
+
+    Q3Point3D_Set(&data.position, 0.0f, 0.0f, 0.0f);
+    data.xOffset = 0;
+    data.yOffset = 0;
+    data.pixmap.image = Q3MemoryStorage_New(pixels, sizeof pixels);
+    data.pixmap.width = 2;
+    data.pixmap.height = 2;
+    data.pixmap.rowBytes = 8;
+    data.pixmap.pixelSize = 32;
+    data.pixmap.pixelType = kQ3PixelTypeARGB32;
+    data.pixmap.bitOrder = kQ3EndianBig;
+    data.pixmap.byteOrder = kQ3EndianBig;
+    data.pixmapMarkerAttributeSet = NULL;
+
+    marker = Q3PixmapMarker_New(&data);
+    Q3Object_Dispose(data.pixmap.image);
+    if (marker == NULL) {
+        gFailures++;
+        return NULL;
+    }
+    CHECK(Q3PixmapMarker_GetPosition(marker, &position));
+    CHECK(Q3PixmapMarker_SetPosition(marker, &position));
+    CHECK(Q3PixmapMarker_GetXOffset(marker, &offset));
+    CHECK(Q3PixmapMarker_SetXOffset(marker, offset - 1));
+    CHECK(Q3PixmapMarker_GetYOffset(marker, &offset));
+    CHECK(Q3PixmapMarker_SetYOffset(marker, offset - 1));
+    CHECK(Q3PixmapMarker_GetPixmap(marker, &pixmap));
+    Check((TQ3Boolean)(pixmap.width == 2 && pixmap.rowBytes == 8), "the pixmap");
+    CHECK(Q3PixmapMarker_SetPixmap(marker, &pixmap));
+    Q3Object_Dispose(pixmap.image);
+    CHECK(Q3PixmapMarker_GetData(marker, &data));
+    CHECK(Q3PixmapMarker_SetData(marker, &data));
+    CHECK(Q3PixmapMarker_EmptyData(&data));
+    return marker;
+}
+
 /* Draws the marker into a 64 x 64 pixmap with the wireframe renderer and
- * counts the red pixels: the bitmap's 12 set bits. */
-static void MyDrawMarker(TQ3GeometryObject marker)
+ * counts the red pixels: a marker's set bits, a pixmap marker's opaque
+ * pixels. */
+static void MyDrawMarker(TQ3GeometryObject marker, long expected)
 {
     TQ3PixmapDrawContextData contextData;
     TQ3ViewAngleAspectCameraData cameraData;
@@ -341,7 +390,7 @@ static void MyDrawMarker(TQ3GeometryObject marker)
     for (i = 0; i < 64 * 64; i++)
         if (pixels[4 * i + 1] == 255 && pixels[4 * i + 2] == 0 && pixels[4 * i + 3] == 0)
             red++;
-    Check((TQ3Boolean)(red == 12), "12 red pixels");
+    Check((TQ3Boolean)(red == expected), "the red pixels");
     Q3Object_Dispose(camera);
     Q3Object_Dispose(context);
     Q3Object_Dispose(view);
@@ -366,7 +415,12 @@ int main(void)
     MyTriGrid(view, red);
     marker = MyMarker(red);
     if (marker != NULL) {
-        MyDrawMarker(marker);
+        MyDrawMarker(marker, 12);
+        MyBoundAndDispose(view, marker);
+    }
+    marker = MyPixmapMarker();
+    if (marker != NULL) {
+        MyDrawMarker(marker, 3);
         MyBoundAndDispose(view, marker);
     }
 
@@ -375,6 +429,7 @@ int main(void)
     if (Q3Exit() != kQ3Success)
         gFailures++;
     if (gFailures == 0)
-        printf("LegacyPolygons: every 1.6 general polygon, polyhedron, trigrid and marker call worked\n");
+        printf("LegacyPolygons: every 1.6 general polygon, polyhedron, trigrid, marker and pixmap marker call "
+               "worked\n");
     return gFailures == 0 ? 0 : 3;
 }

@@ -45,11 +45,13 @@
 #include "QD3DSet.h"
 #include "QD3DGroup.h"
 #include "QD3DShader.h"
+#include "QD3DStorage.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
 
 #include <algorithm>
+#include <climits>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -198,8 +200,8 @@ bool sameBytes(const T& a, const T& b)
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                   kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup,
                   kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch, kGeneralPolygon,
-                  kPolyhedron, kTriGrid, kMarker };
-constexpr int kKindCount = 31;
+                  kPolyhedron, kTriGrid, kMarker, kPixmapMarker };
+constexpr int kKindCount = 32;
 constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
 
 struct Held {
@@ -629,6 +631,7 @@ private:
         case Op::kMeshes: meshes(); break;
         case Op::kPatches: patches(); break;
         case Op::kPolygons2: polygons2(); break;
+        case Op::kPixmapMarkers: pixmapMarkers(); break;
         case Op::kCount: break;
         }
     }
@@ -2276,6 +2279,169 @@ private:
             hold(got, Kind::kAttributeSet);
     }
 
+    // Pixmap markers: a TQ3StoragePixmap of any pixel type (or a raw one),
+    // sizes small or raw, enumerations raw now and then, and an image that
+    // is a fresh memory storage (sometimes a byte short), NULL, or another
+    // kind of object. The storage made here is given back once the call is
+    // done (a marker keeps its own reference).
+    struct StoragePixmapArgs {
+        TQ3StoragePixmap pixmap{};
+        TQ3Object made = nullptr;
+    };
+
+    StoragePixmapArgs storagePixmap()
+    {
+        StoragePixmapArgs a;
+        const std::uint8_t flags = m_in.u8();
+        const std::int32_t type = enumValue(6);
+        const unsigned long bits = type == 5 ? 24 : (type >= 2 && type <= 4) ? 16 : 32;
+        const unsigned long width = (flags & 1) ? m_in.u32() : m_in.u8() % 9;
+        const unsigned long height = (flags & 2) ? m_in.u32() : m_in.u8() % 9;
+        a.pixmap.width = width;
+        a.pixmap.height = height;
+        a.pixmap.rowBytes = (flags & 4) ? m_in.u32() : width * (bits / 8) + m_in.u8() % 4;
+        a.pixmap.pixelSize = (flags & 8) ? m_in.u8() : bits;
+        setRaw(a.pixmap.pixelType, type);
+        setRaw(a.pixmap.byteOrder, enumValue(2));
+        setRaw(a.pixmap.bitOrder, enumValue(2));
+        switch ((flags >> 4) & 3) {
+        case 0: {
+            // As many bytes as the pixmap needs (at most 4096), one fewer
+            // when flag 0x40 says so; the first 16 from the input.
+            const unsigned long long need =
+                std::min<unsigned long long>((unsigned long long)a.pixmap.rowBytes * height, 4096ULL);
+            std::vector<unsigned char> bytes(need);
+            for (std::size_t i = 0; i < bytes.size(); ++i)
+                bytes[i] = i < 16 ? m_in.u8() : static_cast<unsigned char>(i * 37);
+            const unsigned long size = static_cast<unsigned long>(bytes.size()) - ((flags & 0x40) && need > 0 ? 1 : 0);
+            a.made = OBJECT(Q3MemoryStorage_New(bytes.empty() ? nullptr : bytes.data(), size));
+            a.pixmap.image = a.made;
+            break;
+        }
+        case 1: a.pixmap.image = pick(Kind::kAttributeSet); break;
+        case 2: a.pixmap.image = nullptr; break;
+        default: a.pixmap.image = pick(Kind::kPixmapMarker); break;
+        }
+        return a;
+    }
+
+    void releaseStorage(StoragePixmapArgs& a)
+    {
+        if (a.made != nullptr)
+            STATUS(Q3Object_Dispose(a.made));
+        a.made = nullptr;
+    }
+
+    static bool samePixmap(const TQ3StoragePixmap& a, const TQ3StoragePixmap& b)
+    {
+        return a.image == b.image && a.width == b.width && a.height == b.height && a.rowBytes == b.rowBytes &&
+               a.pixelSize == b.pixelSize && sameBytes(a.pixelType, b.pixelType) &&
+               sameBytes(a.bitOrder, b.bitOrder) && sameBytes(a.byteOrder, b.byteOrder);
+    }
+
+    void pixmapMarkers()
+    {
+        const std::uint8_t action = m_in.u8() % 5;
+        const bool nullData = m_in.u8() == 0;
+        if (action == 4)
+            return pixmapMarkerField();
+        if (action == 3 && !drawAllowed())
+            return;
+        StoragePixmapArgs args = storagePixmap();
+        TQ3PixmapMarkerData data{};
+        data.position = point3();
+        data.xOffset = static_cast<long>(static_cast<std::int32_t>(m_in.u32()));
+        data.yOffset = static_cast<long>(static_cast<std::int8_t>(m_in.u8()));
+        data.pixmap = args.pixmap;
+        data.pixmapMarkerAttributeSet = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+        surfaceAction<TQ3PixmapMarkerData>(action, Kind::kPixmapMarker, nullData ? nullptr : &data,
+                                           Q3PixmapMarker_New, Q3PixmapMarker_SetData, Q3PixmapMarker_GetData,
+                                           Q3PixmapMarker_EmptyData, Q3PixmapMarker_Submit,
+                                           [](const TQ3PixmapMarkerData& a, const TQ3PixmapMarkerData& b) {
+                                               return sameBytes(a.position, b.position) && a.xOffset == b.xOffset &&
+                                                      a.yOffset == b.yOffset && samePixmap(a.pixmap, b.pixmap) &&
+                                                      a.pixmapMarkerAttributeSet == b.pixmapMarkerAttributeSet;
+                                           });
+        releaseStorage(args);
+    }
+
+    void pixmapMarkerField()
+    {
+        const TQ3Object geometry = pick(Kind::kPixmapMarker);
+        const bool ours = holdsKind(geometry, Kind::kPixmapMarker) && m_initialized > 0;
+        const bool nullArg = m_in.u8() == 0;
+        const std::uint8_t call = m_in.u8() % 8;
+        const unsigned long before = ours ? editIndex(geometry) : 0;
+        TQ3Status status = kQ3Success;
+        bool edit = false;
+        switch (call) {
+        case 0: {
+            TQ3Point3D p{};
+            STATUS(Q3PixmapMarker_GetPosition(geometry, nullArg ? nullptr : &p));
+            break;
+        }
+        case 1: {
+            const TQ3Point3D p = point3();
+            edit = true;
+            status = STATUS(Q3PixmapMarker_SetPosition(geometry, nullArg ? nullptr : &p));
+            break;
+        }
+        case 2: {
+            long offset = 0;
+            STATUS(Q3PixmapMarker_GetXOffset(geometry, nullArg ? nullptr : &offset));
+            STATUS(Q3PixmapMarker_GetYOffset(geometry, nullArg ? nullptr : &offset));
+            break;
+        }
+        case 3:
+            edit = true;
+            status = STATUS(Q3PixmapMarker_SetXOffset(geometry, static_cast<long>(static_cast<std::int32_t>(m_in.u32()))));
+            break;
+        case 4:
+            edit = true;
+            status = STATUS(Q3PixmapMarker_SetYOffset(geometry, (m_in.u8() & 1) ? LONG_MIN : LONG_MAX));
+            break;
+        case 5: {
+            TQ3StoragePixmap pixmap;
+            std::memset(&pixmap, 0xA5, sizeof pixmap);
+            const TQ3StoragePixmap untouched = pixmap;
+            if (STATUS(Q3PixmapMarker_GetPixmap(geometry, nullArg ? nullptr : &pixmap)) == kQ3Success) {
+                require(Q3Object_IsType(pixmap.image, kQ3SharedTypeStorage) == kQ3True,
+                        "Q3PixmapMarker_GetPixmap", "gave no storage");
+                STATUS(Q3Object_Dispose(pixmap.image));
+            } else {
+                require(sameBytes(pixmap, untouched), "Q3PixmapMarker_GetPixmap", "failed but wrote its output");
+            }
+            break;
+        }
+        case 6: {
+            StoragePixmapArgs args = storagePixmap();
+            edit = true;
+            status = STATUS(Q3PixmapMarker_SetPixmap(geometry, nullArg ? nullptr : &args.pixmap));
+            if (status == kQ3Success) {
+                TQ3StoragePixmap got{};
+                STATUS(Q3PixmapMarker_GetPixmap(geometry, &got));
+                require(samePixmap(got, args.pixmap), "Q3PixmapMarker_SetPixmap", "the pixmap read back differs");
+                STATUS(Q3Object_Dispose(got.image));
+            }
+            releaseStorage(args);
+            break;
+        }
+        default: {
+            TQ3PixmapMarkerData got{};
+            if (STATUS(Q3PixmapMarker_GetData(geometry, nullArg ? nullptr : &got)) == kQ3Success) {
+                STATUS(Q3PixmapMarker_EmptyData(&got));
+                require(got.pixmap.image == nullptr && got.pixmapMarkerAttributeSet == nullptr,
+                        "Q3PixmapMarker_EmptyData", "left handles behind");
+            }
+            break;
+        }
+        }
+        if (edit && ours && status != kQ3Success)
+            require(editIndex(geometry) == before, "pixmapMarkers", "a failed edit changed the edit index");
+        if (edit)
+            require(status == kQ3Failure || ours, "pixmapMarkers", "an edit succeeded on something not held");
+    }
+
     // Apple's per-field calls of each type: the vectors are orientation
     // (or none), major and minor; the sets are the part sets by name; the
     // scalar is the caps (cones, cylinders) or the ratio (tori).
@@ -3789,7 +3955,8 @@ private:
                 const Held* entry = heldEntry(geometry);
                 require(entry != nullptr && (entry->kind == Kind::kPolyLine || entry->kind == Kind::kLine ||
                                              entry->kind == Kind::kPoint || entry->kind == Kind::kTriangle ||
-                                             entry->kind == Kind::kTriMesh || entry->kind == Kind::kMarker),
+                                             entry->kind == Kind::kTriMesh || entry->kind == Kind::kMarker ||
+                                             entry->kind == Kind::kPixmapMarker),
                         "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
             }
             return;

@@ -80,6 +80,7 @@ enum class Op : std::uint8_t {
     kMeshes,
     kPatches,
     kPolygons2,
+    kPixmapMarkers,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -21,7 +21,7 @@ using q3fuzz::Op;
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                            kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
                            kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch,
-                           kGeneralPolygon, kPolyhedron, kTriGrid, kMarker };
+                           kGeneralPolygon, kPolyhedron, kTriGrid, kMarker, kPixmapMarker };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -959,6 +959,92 @@ std::vector<std::pair<std::string, Seed>> seeds()
         field(1, 5, 1, 3).value(0).value(0).value(0).u8(0);
         field(0, 4, 0, 0).value(0).value(0).value(0).u8(0);
         s.scene(2).startRendering().submitHeld(kMarker).submitHeld(kGeneralPolygon).endRendering();
+    }
+    // pixmapMarkers(): a 4 x 3 pixmap marker of every pixel type (byte
+    // orders alternating), drawn, bounded and edited; then bad pixmaps: a
+    // raw pixel type, a huge width, a wrong pixel size, a storage a byte
+    // short, an image that is not a storage, a NULL image.
+    {
+        Seed& s = add("pixmap-markers");
+        // storagePixmap(): flags, type (enumValue), width, height, row
+        // padding, byte and bit orders, then (flags bits 4-5 zero) the first
+        // 16 bytes of the storage.
+        auto pixmap = [&s](std::uint8_t flags, std::uint8_t type, std::uint8_t order) -> Seed& {
+            s.u8(flags).u8(type).u8(4).u8(3).u8(1).u8(order).u8(0);
+            if ((flags & 0x30) == 0)
+                for (int i = 0; i < 16; ++i)
+                    s.u8(std::uint8_t(0x30 + 13 * i));
+            return s;
+        };
+        // The rest of pixmapMarkers(): position, x and y offsets, no set.
+        auto tail = [&s](float x) { s.value(x).value(0.5f).value(0).u32(0xFFFFFFFE).u8(0xFE).u8(0); };
+        for (std::uint8_t type = 0; type < 6; ++type) {
+            s.op(Op::kPixmapMarkers).u8(0).u8(1);
+            pixmap(0, type, type % 2);
+            tail(float(type) / 2);
+        }
+        s.scene(0).startRendering();
+        for (std::uint8_t i = 0; i < 6; ++i)
+            s.submitHeld(kPixmapMarker, i);
+        s.endRendering().startBox();
+        for (std::uint8_t i = 0; i < 6; ++i)
+            s.submitHeld(kPixmapMarker, i);
+        s.endBox();
+        // Immediate mode inside a loop, then SetData and GetData.
+        s.startRendering().op(Op::kPixmapMarkers).u8(3).u8(1);
+        pixmap(0, 1, 1);
+        tail(1);
+        s.held().endRendering();
+        s.op(Op::kPixmapMarkers).u8(1).u8(1);
+        pixmap(0, 5, 0);
+        tail(2);
+        s.held(2);
+        s.op(Op::kPixmapMarkers).u8(2).u8(1);
+        pixmap(0, 0, 0);
+        tail(0);
+        s.held(3);
+        // Bad pixmaps for New: raw type 7, huge width, pixel size 8, a byte
+        // short, an attribute set, NULL.
+        s.op(Op::kPixmapMarkers).u8(0).u8(1).u8(0).u8(0xE0).u32(7).u8(4).u8(3).u8(1).u8(0).u8(0);
+        for (int i = 0; i < 16; ++i)
+            s.u8(0xFF);
+        tail(0);
+        s.op(Op::kPixmapMarkers).u8(0).u8(1).u8(1).u8(1).u32(0xFFFFFFFF).u8(3).u8(1).u8(0).u8(0);
+        for (int i = 0; i < 16; ++i)
+            s.u8(0x11);
+        tail(0);
+        s.op(Op::kPixmapMarkers).u8(0).u8(1).u8(8).u8(1).u8(4).u8(3).u8(1).u8(8).u8(0).u8(0);
+        for (int i = 0; i < 16; ++i)
+            s.u8(0xFF);
+        tail(0);
+        s.op(Op::kPixmapMarkers).u8(0).u8(1);
+        pixmap(0x40, 3, 1);
+        tail(0);
+        s.op(Op::kPixmapMarkers).u8(0).u8(1);
+        pixmap(0x10, 1, 0).held();
+        tail(0);
+        s.op(Op::kPixmapMarkers).u8(0).u8(1);
+        pixmap(0x20, 1, 0);
+        tail(0);
+        // pixmapMarkerField(): the marker, null byte, call, its arguments.
+        auto field = [&s](std::uint8_t which, std::uint8_t call) -> Seed& {
+            return s.op(Op::kPixmapMarkers).u8(4).u8(1).held(which).u8(1).u8(call);
+        };
+        field(0, 0);
+        field(0, 1).value(1).value(1).value(0);
+        field(1, 2);
+        field(1, 3).u32(0x80000000);
+        field(2, 4).u8(1);
+        field(3, 5);
+        field(4, 6);
+        pixmap(0, 4, 1);
+        field(4, 6).u8(8).u8(4).u8(4).u8(3).u8(1).u8(24).u8(1).u8(0); // pixel size 24 for RGB16_565
+        for (int i = 0; i < 16; ++i)
+            s.u8(0x22);
+        field(5, 7);
+        s.op(Op::kDuplicate).u8(kPixmapMarker).held(0);
+        s.scene(2).startRendering().submitHeld(kPixmapMarker, 0).submitHeld(kPixmapMarker, 6).endRendering();
+        s.decompose(0).dispose(kPixmapMarker, 0);
     }
     // Q3Exit while objects live, calls while not initialized, nesting.
     {

@@ -95,7 +95,8 @@ TEST_F(GalleryTest, TheGalleryHoldsEveryGeometryTypeOnce)
         kQ3GeometryTypePolygon,   kQ3GeometryTypeTriMesh,   kQ3GeometryTypeMesh,      kQ3GeometryTypeNURBCurve,
         kQ3GeometryTypeNURBPatch, kQ3GeometryTypeBox,       kQ3GeometryTypeCone,      kQ3GeometryTypeCylinder,
         kQ3GeometryTypeDisk,      kQ3GeometryTypeEllipse,   kQ3GeometryTypeEllipsoid, kQ3GeometryTypeTorus,
-        kQ3GeometryTypeGeneralPolygon, kQ3GeometryTypePolyhedron, kQ3GeometryTypeTriGrid, kQ3GeometryTypeMarker};
+        kQ3GeometryTypeGeneralPolygon, kQ3GeometryTypePolyhedron, kQ3GeometryTypeTriGrid, kQ3GeometryTypeMarker,
+        kQ3GeometryTypePixmapMarker};
     std::set<TQ3ObjectType> found;
     for (unsigned long i = 0; i < q3gallery_count(); ++i) {
         TQ3GeometryObject geometry = q3gallery_new(i);
@@ -110,7 +111,8 @@ TEST_F(GalleryTest, TheGalleryHoldsEveryGeometryTypeOnce)
 // between the lines of its wireframe, a curve's does not.
 TEST_F(GalleryTest, EveryPictureShowsItsGeometryAndSurfacesFill)
 {
-    const std::set<std::string> notSurfaces{"point", "line", "polyline", "nurb_curve", "ellipse", "marker"};
+    const std::set<std::string> notSurfaces{"point", "line", "polyline", "nurb_curve", "ellipse", "marker",
+                                          "pixmap_marker"};
     for (unsigned long i = 0; i < q3gallery_count(); ++i) {
         const std::string name = q3gallery_name(i);
         const q3test::RgbaImage wire = render(i, false);
