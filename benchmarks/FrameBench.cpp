@@ -472,6 +472,7 @@ struct MisuseCurves {
 void MisuseFrame(benchmark::State& state)
 {
     static const MisuseCurves curves;
+    static q3bench::Q3Session session;
     static q3bench::BenchView view(128, 128);
     static const TQ3SubdivisionStyleData styles[] = {
         {kQ3SubdivisionMethodScreenSpace, 0.5f, 0.5f},   {kQ3SubdivisionMethodScreenSpace, 0.01f, 0.01f},
