@@ -178,8 +178,13 @@ nurbs::TessellatedCurve subdivide(const Plan& plan, const Source& source)
 // Why the subdivision gave in, for the warning; empty when it did not.
 std::string substitutionReport(const Plan& plan, const nurbs::TessellatedCurve& result)
 {
-    const std::string limit = " would need more than kQ3SubdivisionMaxSegmentsPerCurve (" +
-                              std::to_string(limits::kMaxSegmentsPerCurve) + ") segments";
+    const std::string limit =
+        plan.maxSegments < limits::kMaxSegmentsPerCurve
+            ? " would need more than the " + std::to_string(plan.maxSegments) +
+                  " segments a curve gets in this pane (kQ3SubdivisionViewSegmentsPerPixel per pixel of its width "
+                  "plus height)"
+            : " would need more than kQ3SubdivisionMaxSegmentsPerCurve (" +
+                  std::to_string(limits::kMaxSegmentsPerCurve) + ") segments";
     if (plan.measure == Measure::kConstant && result.substituted)
         return "constant subdivision with c1 = " + std::to_string(plan.c1) + limit + "; " +
                std::to_string(result.effectiveValue) + " segments per span are used";
@@ -267,7 +272,8 @@ std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan
     } else if (cache.capped) {
         report = "the curve's " + std::string(plan.measure == Measure::kConstant ? "constant" : "adaptive") +
                  " subdivision with c1 = " + std::to_string(plan.c1) +
-                 " would need more than kQ3SubdivisionMaxSegmentsPerCurve segments; it is drawn with fewer";
+                 " would need more segments than " + std::to_string(plan.maxSegments) +
+                 " (the most it may have here); it is drawn with fewer";
     }
     use(cache.polyline.data(), cache.polyline.size() / 3);
     return report;
