@@ -52,8 +52,10 @@
 
 #include <algorithm>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <memory>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -418,11 +420,86 @@ void EmptyFrame(benchmark::State& state)
                         rawContender("rawdirect", direct, nullptr, false)});
 }
 
+// Issue 16's misuse frame: a 128 x 128 pane (the bench camera shows
+// [-1.1, 1.1]^2), 16 immediate-mode curves of 4 to 24 control points, every
+// fourth with alternate control points 1000 times farther out (far outside the
+// view), drawn under styles a user may submit, each paired with the same frame
+// under the default style (screen space, 20 pixels). Immediate mode, so every
+// frame subdivides every curve; warnings the styles cause are part of the
+// frame (no handler is registered).
+struct MisuseCurves {
+    std::vector<std::vector<TQ3RationalPoint4D>> points;
+    std::vector<std::vector<float>> knots;
+    std::vector<TQ3NURBCurveData> data;
+
+    MisuseCurves()
+    {
+        std::mt19937 rng(16u);
+        std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+        std::uniform_int_distribution<int> count(4, 24);
+        for (int c = 0; c < 16; ++c) {
+            const unsigned long n = static_cast<unsigned long>(count(rng));
+            const unsigned long order = std::min<unsigned long>(4, n);
+            std::vector<TQ3RationalPoint4D> p;
+            for (unsigned long i = 0; i < n; ++i) {
+                const float far = (c % 4 == 3 && i % 2 == 1) ? 1000.0f : 1.0f;
+                p.push_back({far * coordinate(rng), far * coordinate(rng), 0.0f, 1.0f});
+            }
+            std::vector<float> k;
+            for (unsigned long i = 0; i < n + order; ++i)
+                k.push_back(float(std::min(std::max<long>(long(i) - long(order) + 1, 0), long(n - order + 1))));
+            points.push_back(std::move(p));
+            knots.push_back(std::move(k));
+        }
+        for (std::size_t c = 0; c < points.size(); ++c)
+            data.push_back({static_cast<unsigned long>(knots[c].size() - points[c].size()), points[c].size(),
+                            points[c].data(), knots[c].data(), nullptr});
+    }
+
+    bool frame(TQ3ViewObject view, const TQ3SubdivisionStyleData* style) const
+    {
+        if (Q3View_StartRendering(view) != kQ3Success)
+            return false;
+        bool ok = true;
+        if (style != nullptr)
+            Q3SubdivisionStyle_Submit(style, view); // may warn: part of the frame
+        for (const TQ3NURBCurveData& d : data)
+            ok = Q3NURBCurve_Submit(&d, view) == kQ3Success && ok;
+        return Q3View_EndRendering(view) == kQ3ViewStatusDone && ok;
+    }
+};
+
+void MisuseFrame(benchmark::State& state)
+{
+    static const MisuseCurves curves;
+    static q3bench::Q3Session session;
+    static q3bench::BenchView view(128, 128);
+    static const TQ3SubdivisionStyleData styles[] = {
+        {kQ3SubdivisionMethodScreenSpace, 0.5f, 0.5f},   {kQ3SubdivisionMethodScreenSpace, 0.01f, 0.01f},
+        {kQ3SubdivisionMethodScreenSpace, 1e-6f, 1e-6f}, {kQ3SubdivisionMethodWorldSpace, 1e-6f, 1e-6f},
+        {kQ3SubdivisionMethodConstant, 1024.0f, 1024.0f}};
+    static const char* names[] = {"screen0_5", "screen0_01", "screen1e_6", "world1e_6", "constant1024"};
+    std::vector<q3bench::Contender> contenders;
+    const auto byDefault = [&] { curves.frame(view.view(), nullptr); };
+    // One view, one context: no warm-up frame is needed between contenders.
+    contenders.push_back({"default", byDefault});
+    for (std::size_t i = 0; i < std::size(styles); ++i) {
+        const auto frame = [&, i] { curves.frame(view.view(), &styles[i]); };
+        contenders.push_back({names[i], frame});
+    }
+    if (!curves.frame(view.view(), nullptr)) {
+        state.SkipWithError("the misuse frame failed");
+        return;
+    }
+    q3bench::runPaired(state, q3bench::Clock::kWall, contenders);
+}
+
 // Names: Frame/512 is the 512 x 512 image. The reported time covers every
 // contender; the counters hold each one's.
 BENCHMARK(Frame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameEdited)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(EmptyFrame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(MisuseFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 } // namespace
 

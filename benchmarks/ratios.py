@@ -280,12 +280,32 @@ def patches(runs, out):
     out.append("")
 
 
+def misuse(runs, out):
+    """Issue 16's misuse frame (FrameBench.cpp, MisuseFrame): each style's
+    frame time over the default style's, paired in one run, wall time."""
+    name = "MisuseFrame"
+    if not runs.has(name):
+        return
+    out.append("### Misuse frame: 16 curves in a 128² pane, each style / the default style (paired, wall time, medians)\n")
+    out.append("| Style | frame | / default frame | Target |")
+    out.append("|---|---|---|---|")
+    out.append(f"| default (screen space, 20 px) | {fmt(runs.counter(name, 'default_ms'))} ms | 1 | |")
+    for key, label in (("screen0_5", "screen space 0.5 px"), ("screen0_01", "screen space 0.01 px"),
+                       ("screen1e_6", "screen space 1e-6 px"), ("world1e_6", "world space 1e-6"),
+                       ("constant1024", "constant 1024")):
+        ratio = 1.0 / runs.counter(name, f"default_over_{key}")
+        out.append(f"| {label} | {fmt(runs.counter(name, key + '_ms'))} ms | **{ratio:.2f}×** | "
+                   f"{verdict(ratio, 15, False)} |")
+    out.append("")
+
+
 def main(paths):
     runs = Runs(paths)
     out = []
     tessellation(runs, out)
     adaptive(runs, out)
     frames(runs, out)
+    misuse(runs, out)
     memory(runs, out)
     meshes(runs, out)
     patches(runs, out)

@@ -137,6 +137,25 @@ typedef struct TQ3SubdivisionStyleData TQ3SubdivisionStyleData;
  * kQ3SubdivisionMaxConstantSegments
  *   The largest c1 or c2 accepted for kQ3SubdivisionMethodConstant
  *   (segments per knot span); larger values are replaced by this one.
+ * kQ3SubdivisionViewSegmentsPerPixel
+ *   In a view (a rendering loop, or a bounding loop whose view has a camera
+ *   and a pixmap draw context), a world- or screen-space curve is drawn with
+ *   at most this many segments per pixel of the pane's width plus height
+ *   (4096 for a 128 x 128 pane), and never more than
+ *   kQ3SubdivisionMaxSegmentsPerCurve. A curve that would need more gets a
+ *   longer segment length, and its submit posts
+ *   kQ3WarningParameterOutOfRange. Without a view the cap stays
+ *   kQ3SubdivisionMaxSegmentsPerCurve. Whatever the method, a rendering loop
+ *   draws each knot span whose control points all lie outside one side of
+ *   the view volume, or nearer than its hither plane, as one segment: no
+ *   point of it can be seen.
+ * kQ3SubdivisionMinScreenSpaceC1
+ *   The smallest screen-space c1 or c2, in pixels (1/8). The image is
+ *   sampled once per pixel: a curve cut into segments of 1/8 pixel already
+ *   has eight vertices in every pixel it crosses, and cutting it finer
+ *   costs time in proportion for a difference the samples cannot show.
+ *   Smaller positive values are replaced by this one (also in a bounding
+ *   loop without a camera, where screen-space c1 is a world length).
  * kQ3SubdivisionDefaultC1
  *   The value substituted for a non-finite c1 or c2, or for one that is not
  *   positive under the world-space and screen-space methods. It equals
@@ -148,6 +167,8 @@ typedef struct TQ3SubdivisionStyleData TQ3SubdivisionStyleData;
 #define kQ3SubdivisionMaxTrianglesPerSurface (1 << 20)
 #define kQ3SubdivisionMaxConstantSegments 1024
 #define kQ3SubdivisionDefaultC1 20.0f
+#define kQ3SubdivisionViewSegmentsPerPixel 16
+#define kQ3SubdivisionMinScreenSpaceC1 0.125f
 
 /*
  * The substitution rule used by every function below that accepts a
@@ -159,6 +180,8 @@ typedef struct TQ3SubdivisionStyleData TQ3SubdivisionStyleData;
  *   constant method, value above
  *     kQ3SubdivisionMaxConstantSegments      -> kQ3SubdivisionMaxConstantSegments
  *   world- or screen-space method, value <= 0 -> kQ3SubdivisionDefaultC1
+ *   screen-space method, 0 < value < kQ3SubdivisionMinScreenSpaceC1
+ *                                            -> kQ3SubdivisionMinScreenSpaceC1
  * If any value was replaced, kQ3WarningParameterOutOfRange is posted once and
  * the call still succeeds with the replaced values.
  */

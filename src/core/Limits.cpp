@@ -23,6 +23,9 @@ static_assert(kMaxTrianglesPerSurface == kQ3SubdivisionMaxTrianglesPerSurface,
               "QD3DStyle.h documents kMaxTrianglesPerSurface");
 static_assert(kMaxConstantSegments == kQ3SubdivisionMaxConstantSegments,
               "QD3DStyle.h documents kMaxConstantSegments");
+static_assert(kViewSegmentsPerPixel == kQ3SubdivisionViewSegmentsPerPixel,
+              "QD3DStyle.h documents kViewSegmentsPerPixel");
+static_assert(kMinScreenSpaceC1 == kQ3SubdivisionMinScreenSpaceC1, "QD3DStyle.h documents kMinScreenSpaceC1");
 static_assert(kMaxGroupNesting == kQ3GroupMaxNesting, "QD3DGroup.h documents kMaxGroupNesting");
 static_assert(kSubdivisionDefault == kQ3SubdivisionDefaultC1, "QD3DStyle.h documents kSubdivisionDefault");
 

@@ -35,6 +35,14 @@ constexpr std::size_t kMaxTrianglesPerPatch = std::size_t{1} << 20;
 /// kQ3SubdivisionMaxSegmentsPerCurve.
 constexpr std::size_t kMaxSegmentsPerCurve = std::size_t{1} << 20;
 
+/// The most segments a world- or screen-space curve is drawn with in a view,
+/// per pixel of the pane's width plus height:
+/// kQ3SubdivisionViewSegmentsPerPixel.
+constexpr std::size_t kViewSegmentsPerPixel = 16;
+
+/// The smallest screen-space c1 or c2, in pixels: kQ3SubdivisionMinScreenSpaceC1.
+constexpr float kMinScreenSpaceC1 = 0.125f;
+
 /// The most triangles one quadric or solid (box, cone, cylinder, disk,
 /// ellipsoid, torus) is drawn with: kQ3SubdivisionMaxTrianglesPerSurface.
 constexpr std::size_t kMaxTrianglesPerSurface = std::size_t{1} << 20;

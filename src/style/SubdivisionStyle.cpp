@@ -49,6 +49,9 @@ float checkParameter(TQ3SubdivisionMethod method, float value, const char* name,
     } else if (value <= 0.0f) {
         result = limits::kSubdivisionDefault;
         why = "is not a positive length";
+    } else if (method == kQ3SubdivisionMethodScreenSpace && value < limits::kMinScreenSpaceC1) {
+        result = limits::kMinScreenSpaceC1;
+        why = "is below kQ3SubdivisionMinScreenSpaceC1 (1/8 pixel, finer than the pane is sampled)";
     }
     if (why != nullptr) {
         if (!report.empty())

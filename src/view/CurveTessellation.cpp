@@ -36,6 +36,9 @@ struct Plan {
     double c1 = 0.0;
     Matrix through{1.0}; // local -> world (world space) or local -> frustum (screen space)
     PixelRect pane;
+    bool cull = false;
+    Matrix toFrustum{1.0}; // local -> frustum, for culling
+    std::size_t maxSegments = limits::kMaxSegmentsPerCurve;
 
     // The cache key: every value the polyline depends on. The pane's origin
     // is left out on purpose: moving the pane does not change any length.
@@ -50,6 +53,7 @@ struct Plan {
             values.push_back(pane.width);
             values.push_back(pane.height);
         }
+        values.push_back(double(maxSegments));
         return values;
     }
 };
@@ -79,7 +83,43 @@ Plan planFor(const TessellationSetting& setting)
         }
         break;
     }
+    if (setting.window) {
+        if (plan.measure != Measure::kConstant)
+            plan.maxSegments = viewSegmentCap(setting.window->pane);
+        if (setting.cullOutsideView) {
+            plan.cull = true;
+            plan.toFrustum = then(setting.localToWorld, setting.window->worldToFrustum);
+        }
+    }
     return plan;
+}
+
+// Whether every control point lies strictly outside one plane of the view
+// volume in homogeneous frustum coordinates (x = +-w, y = +-w, the hither
+// plane z = 0). Each test is linear in the homogeneous point, and the span's
+// points are positive combinations of its control points (weights > 0), so
+// the whole span, and every chord between two of its points, is outside that
+// plane too. The yon plane is not used: culling there would depend on the
+// renderer's depth range.
+nurbs::SpanCulling cullingFor(const Plan& plan)
+{
+    if (!plan.cull)
+        return {};
+    return [m = plan.toFrustum](const nurbs::Point4* points, unsigned order) {
+        unsigned outside[5] = {0, 0, 0, 0, 0};
+        for (unsigned i = 0; i < order; ++i) {
+            const glm::dvec4 v = m * glm::dvec4(points[i].x, points[i].y, points[i].z, points[i].w);
+            outside[0] += v.x > v.w ? 1 : 0;
+            outside[1] += -v.x > v.w ? 1 : 0;
+            outside[2] += v.y > v.w ? 1 : 0;
+            outside[3] += -v.y > v.w ? 1 : 0;
+            outside[4] += v.z > 0.0 ? 1 : 0;
+        }
+        for (unsigned count : outside)
+            if (count == order)
+                return true;
+        return false;
+    };
 }
 
 bool isFinite(const nurbs::Point3& p)
@@ -118,10 +158,13 @@ nurbs::PointMapping mappingFor(const Plan& plan)
 template <class Source>
 void subdivide(const Plan& plan, const Source& source, nurbs::TessellatedCurve& out)
 {
+    nurbs::ViewLimits limits;
+    limits.maxSegments = plan.maxSegments;
+    limits.hidden = cullingFor(plan);
     if (plan.measure == Measure::kConstant)
-        nurbs::tessellateConstant(source, static_cast<std::uint32_t>(plan.c1), out);
+        nurbs::tessellateConstant(source, static_cast<std::uint32_t>(plan.c1), out, limits);
     else
-        nurbs::tessellateAdaptive(source, plan.c1, mappingFor(plan), out);
+        nurbs::tessellateAdaptive(source, plan.c1, mappingFor(plan), out, limits);
 }
 
 template <class Source>
@@ -135,8 +178,13 @@ nurbs::TessellatedCurve subdivide(const Plan& plan, const Source& source)
 // Why the subdivision gave in, for the warning; empty when it did not.
 std::string substitutionReport(const Plan& plan, const nurbs::TessellatedCurve& result)
 {
-    const std::string limit = " would need more than kQ3SubdivisionMaxSegmentsPerCurve (" +
-                              std::to_string(limits::kMaxSegmentsPerCurve) + ") segments";
+    const std::string limit =
+        plan.maxSegments < limits::kMaxSegmentsPerCurve
+            ? " would need more than the " + std::to_string(plan.maxSegments) +
+                  " segments a curve gets in this pane (kQ3SubdivisionViewSegmentsPerPixel per pixel of its width "
+                  "plus height)"
+            : " would need more than kQ3SubdivisionMaxSegmentsPerCurve (" +
+                  std::to_string(limits::kMaxSegmentsPerCurve) + ") segments";
     if (plan.measure == Measure::kConstant && result.substituted)
         return "constant subdivision with c1 = " + std::to_string(plan.c1) + limit + "; " +
                std::to_string(result.effectiveValue) + " segments per span are used";
@@ -159,18 +207,50 @@ std::mutex& lockFor(const CurveCache* cache)
     return stripes[(address / alignof(CurveCache)) % stripes.size()];
 }
 
+// Culling makes the polyline depend on which spans are hidden, not on the
+// camera as such: with the Bezier form at hand, the key gets the hidden spans
+// (32 to a value, exact in a double) when there are any, so a camera move
+// that hides nothing new reuses the polyline, and a curve hidden nowhere
+// shares it with bounding loops. Without the form, the key gets the matrix.
+void appendCulling(const Plan& plan, const CurveCache& cache, std::vector<double>& key)
+{
+    if (!plan.cull)
+        return;
+    if (!cache.bezier) {
+        key.push_back(-1.0);
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                key.push_back(plan.toFrustum[i][j]);
+        return;
+    }
+    const nurbs::SpanCulling hidden = cullingFor(plan);
+    const nurbs::BezierForm& form = *cache.bezier;
+    std::vector<double> mask((form.spanCount() + 31) / 32, 0.0);
+    bool any = false;
+    for (std::size_t s = 0; s < form.spanCount(); ++s)
+        if (hidden(form.spanPoints(s), form.order())) {
+            mask[s / 32] += double(std::uint32_t{1} << (s % 32));
+            any = true;
+        }
+    if (any) {
+        key.push_back(-2.0);
+        key.insert(key.end(), mask.begin(), mask.end());
+    }
+}
+
 // Reuses or rebuilds a cache's polyline; returns the warning to post (a
 // reused polyline that was capped warns again, as its first drawing did).
 std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan& plan,
                      const PolylineUser& use)
 {
+    // A large curve keeps no Bezier form: the tessellators convert it span by
+    // span, so the cache holds only the polyline (Tessellate.h, kWholeFormLimit).
+    if (!cache.bezier && nurbs::fitsWholeBezierForm(curve))
+        cache.bezier = std::make_shared<const nurbs::BezierForm>(curve);
     std::vector<double> key = plan.key();
+    appendCulling(plan, cache, key);
     std::string report;
     if (!cache.valid || cache.key != key) {
-        // A large curve keeps no Bezier form: the tessellators convert it span by
-        // span, so the cache holds only the polyline (Tessellate.h, kWholeFormLimit).
-        if (!cache.bezier && nurbs::fitsWholeBezierForm(curve))
-            cache.bezier = std::make_shared<const nurbs::BezierForm>(curve);
         // Into the cache's polyline (invalidate keeps its capacity) and this
         // thread's parameter scratch: re-tessellating a curve at a similar
         // size allocates nothing and faults no new pages in.
@@ -192,13 +272,21 @@ std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan
     } else if (cache.capped) {
         report = "the curve's " + std::string(plan.measure == Measure::kConstant ? "constant" : "adaptive") +
                  " subdivision with c1 = " + std::to_string(plan.c1) +
-                 " would need more than kQ3SubdivisionMaxSegmentsPerCurve segments; it is drawn with fewer";
+                 " would need more segments than " + std::to_string(plan.maxSegments) +
+                 " (the most it may have here); it is drawn with fewer";
     }
     use(cache.polyline.data(), cache.polyline.size() / 3);
     return report;
 }
 
 } // namespace
+
+std::size_t viewSegmentCap(const PixelRect& pane)
+{
+    const double side = std::max(double(pane.width), 1.0) + std::max(double(pane.height), 1.0);
+    const double cap = double(limits::kViewSegmentsPerPixel) * side;
+    return cap < double(limits::kMaxSegmentsPerCurve) ? std::size_t(cap) : limits::kMaxSegmentsPerCurve;
+}
 
 SubdivisionMeasure measureFor(const TessellationSetting& setting)
 {

@@ -33,8 +33,21 @@ struct TessellationSetting {
     Matrix localToWorld{1.0};
     /// The loop's window; without one, screen-space subdivision is done as
     /// world-space subdivision with the same c1 (QD3DView.h, bounding loops).
+    /// With one, world- and screen-space curves get at most
+    /// viewSegmentCap(window->pane) segments.
     std::optional<Window> window;
+    /// Rendering loops: spans that cannot be seen in the window (all their
+    /// control points outside one side or the hither plane of the view
+    /// volume) get one segment, whatever the method. Bounding loops leave it
+    /// off, so bounds cover the whole curve.
+    bool cullOutsideView = false;
 };
+
+/// The most segments a world- or screen-space curve is drawn with in a
+/// window onto `pane`: kQ3SubdivisionViewSegmentsPerPixel times the pane's
+/// width plus height, at least that for a 1 x 1 pane and at most
+/// kQ3SubdivisionMaxSegmentsPerCurve.
+std::size_t viewSegmentCap(const PixelRect& pane);
 
 /// Subdivides a valid curve as the setting says and hands the polyline to
 /// `use`. The methods are the article's ("CONTROLLING SUBDIVISION"):

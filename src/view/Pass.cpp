@@ -85,6 +85,7 @@ TessellationSetting Pass::tessellationSetting() const
     setting.style = m_state.draw.subdivision;
     setting.localToWorld = m_state.localToWorld;
     setting.window = m_window;
+    setting.cullOutsideView = m_cullCurves && m_window.has_value();
     return setting;
 }
 

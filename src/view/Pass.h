@@ -65,6 +65,9 @@ public:
     void endGroup(const DisplayGroup& group) override;
     /// Whether groups with a bounding box may be handled by their box.
     void allowGroupCulling(bool allow) { m_cullGroups = allow; }
+    /// Whether curves may skip subdividing what the window cannot show
+    /// (TessellationSetting::cullOutsideView): rendering loops only.
+    void allowCurveCulling(bool allow) { m_cullCurves = allow; }
 
     void push();
     /// Throws kQ3ErrorNothingToPop when nothing pushed is left, or nothing
@@ -116,6 +119,7 @@ private:
     };
     std::vector<GroupEntry> m_groups;
     bool m_cullGroups = true;
+    bool m_cullCurves = false;
 };
 
 } // namespace q3

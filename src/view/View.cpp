@@ -218,6 +218,7 @@ void View::startRendering()
     auto pass = std::make_unique<RenderPass>(*m_offscreen, Window{m_camera->worldToFrustum(), destination.pane},
                                              defaultAttributes(m_defaultAttributes.get()), style);
     pass->allowGroupCulling(m_cullGroups);
+    pass->allowCurveCulling(true);
     throwIfFailed(m_offscreen->beginFrame(destination.layout.width, destination.layout.height, clear,
                                           destination.pane, options),
                   "starting the image");

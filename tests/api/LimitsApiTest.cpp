@@ -176,8 +176,8 @@ TEST_F(LimitsApiTest, AMillionControlPointsOfOrderSixteenAreCreatedDrawnBoundedA
 }
 
 // c1 a millionth of Listing 1's length: segments that short would take 1.03
-// million of them (with Q3's padding), more than the cap leaves for placing
-// them, so a longer length is used and the warning posted. The image is
+// million of them (with Q3's padding), more than the view's cap leaves for
+// placing them, so a longer length is used and the warning posted. The image is
 // still the curve.
 TEST_F(LimitsApiTest, AWorldSpaceC1AMillionTimesSmallerThanTheCurveIsCapped)
 {
@@ -203,8 +203,11 @@ TEST_F(LimitsApiTest, AWorldSpaceC1AMillionTimesSmallerThanTheCurveIsCapped)
     Q3SubdivisionStyle_Submit(&tiny, view.view());
     const unsigned long vertices = decomposedVertices(curve, view.view(), true);
     EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
-    EXPECT_LE(vertices, kCap + 1);
-    EXPECT_GE(vertices, kCap / 2) << "capped, but it should still come close to the cap";
+    // In a 64 x 64 view the cap is the view's (QD3DStyle.h,
+    // kQ3SubdivisionViewSegmentsPerPixel), far below kCap.
+    const unsigned long viewCap = kQ3SubdivisionViewSegmentsPerPixel * (64 + 64);
+    EXPECT_LE(vertices, viewCap + 1);
+    EXPECT_GE(vertices, viewCap / 2) << "capped, but it should still come close to the cap";
 
     // The smallest positive c1 of all: the same, not worse.
     const TQ3SubdivisionStyleData least{kQ3SubdivisionMethodWorldSpace, std::numeric_limits<float>::denorm_min(),
@@ -219,9 +222,9 @@ TEST_F(LimitsApiTest, AWorldSpaceC1AMillionTimesSmallerThanTheCurveIsCapped)
 // A helix of radius 2 around the eye of a perspective camera, running from
 // 5 units behind it to 5 units in front of it: part of the curve has no image
 // at all, and the part near the eye's plane projects to enormous pixel
-// lengths. Screen-space subdivision to a pixel still fits under the cap (no
-// warning); to a hundredth of a pixel it does not, and gives in with the
-// warning. A line through the eye itself (its midpoint, where the
+// lengths. Screen-space subdivision to a pixel still fits under the view's
+// cap (no warning); to an eighth of a pixel, the finest allowed, it does not,
+// and gives in with the warning. A line through the eye itself (its midpoint, where the
 // subdivision probes it, is the eye) is seen end on: one point, nothing to
 // light, and no trouble.
 TEST_F(LimitsApiTest, APerspectiveCameraInsideTheCurveDrawsAndDecomposesIt)
@@ -258,12 +261,14 @@ TEST_F(LimitsApiTest, APerspectiveCameraInsideTheCurveDrawsAndDecomposesIt)
     render(view, throughCurve, throughData, pixel, false);
     EXPECT_EQ(litPixels(image), 0u) << "a line through the eye is seen as a point";
 
-    const TQ3SubdivisionStyleData hundredth{kQ3SubdivisionMethodScreenSpace, 0.01f, 0.01f};
-    render(view, helixCurve, helixData, hundredth, true);
+    // The finest screen-space c1 (a smaller one is replaced by it).
+    const TQ3SubdivisionStyleData eighth{kQ3SubdivisionMethodScreenSpace, kQ3SubdivisionMinScreenSpaceC1,
+                                         kQ3SubdivisionMinScreenSpaceC1};
+    render(view, helixCurve, helixData, eighth, true);
     EXPECT_GT(litPixels(image), 64u);
-    render(view, throughCurve, throughData, hundredth, false);
+    render(view, throughCurve, throughData, eighth, false);
 
-    for (const TQ3SubdivisionStyleData& style : {pixel, hundredth}) {
+    for (const TQ3SubdivisionStyleData& style : {pixel, eighth}) {
         ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
         Q3SubdivisionStyle_Submit(&style, view.view());
         const unsigned long helixVertices = decomposedVertices(helixCurve, view.view(), style.c1 < 1.0f);

@@ -32,7 +32,6 @@ using namespace q3test;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kDefault = kQ3SubdivisionDefaultC1;
-constexpr unsigned long kCap = kQ3SubdivisionMaxSegmentsPerCurve;
 constexpr double kRounding = 5e-5;
 
 /// How the style reaches the view.
@@ -66,6 +65,9 @@ std::vector<Case> unreasonableValues()
     for (const float v : {0.0f, -0.0f, -FLT_MIN, -1.0f, -FLT_MAX})
         for (TQ3SubdivisionMethod m : {kQ3SubdivisionMethodWorldSpace, kQ3SubdivisionMethodScreenSpace})
             cases.push_back({m, v, kDefault});
+    // Positive but finer than the pane is sampled: the screen-space floor.
+    for (const float v : {std::numeric_limits<float>::denorm_min(), FLT_MIN, 1e-6f, 0.01f, 0.1249f})
+        cases.push_back({kQ3SubdivisionMethodScreenSpace, v, kQ3SubdivisionMinScreenSpaceC1});
     return cases;
 }
 
@@ -272,7 +274,8 @@ TEST_F(SubdivisionSubstitutionTest, ValuesAtTheEdgesOfTheRuleAreKept)
         {kQ3SubdivisionMethodWorldSpace, FLT_MAX, FLT_MAX},
         {kQ3SubdivisionMethodScreenSpace, FLT_MAX, FLT_MAX},
         {kQ3SubdivisionMethodWorldSpace, 0.05f, std::numeric_limits<float>::denorm_min()},
-        {kQ3SubdivisionMethodScreenSpace, 0.5f, FLT_MIN},
+        {kQ3SubdivisionMethodScreenSpace, 0.5f, kQ3SubdivisionMinScreenSpaceC1},
+        {kQ3SubdivisionMethodScreenSpace, kQ3SubdivisionMinScreenSpaceC1, 20.0f},
     };
     for (const TQ3SubdivisionStyleData& style : edges) {
         const std::string what = "method " + std::to_string(style.method) + " c1 " + std::to_string(style.c1);
@@ -290,20 +293,21 @@ TEST_F(SubdivisionSubstitutionTest, ValuesAtTheEdgesOfTheRuleAreKept)
     }
 }
 
-// Reasonable numbers that would still need more than
-// kQ3SubdivisionMaxSegmentsPerCurve segments on Listing 1 (about 3.9 world
-// units and, in this view, about 90 pixels long): 10^-7 units, 10^-5 pixels.
-// The curve is drawn (retained and immediate) and decomposed with a warning
-// each time, and with at most the cap, but not far below it: the
-// subdivision gives in as little as it must.
+// A reasonable number that would still need more than the view's cap
+// (kQ3SubdivisionViewSegmentsPerPixel * (128 + 96) = 3584 segments) on
+// Listing 1 (about 3.9 world units and, in this view, about 90 pixels long):
+// 10^-7 units. The curve is drawn (retained and immediate) and decomposed
+// with a warning each time, and with at most the cap, but not far below it:
+// the subdivision gives in as little as it must. (A screen-space c1 cannot
+// get there in this pane: below 1/8 pixel it is replaced when submitted.)
 TEST_F(SubdivisionSubstitutionTest, ALengthNeedingMoreThanTheCapWarnsWhereTheCurveIsDrawn)
 {
+    const unsigned long kCap = kQ3SubdivisionViewSegmentsPerPixel * (128 + 96);
     Listing1 listing;
     const TQ3NURBCurveData data = listing.data();
     TQ3GeometryObject curve = Q3NURBCurve_New(&data);
     ASSERT_NE(curve, nullptr);
-    for (const TQ3SubdivisionStyleData& style : {TQ3SubdivisionStyleData{kQ3SubdivisionMethodWorldSpace, 1e-7f, 1},
-                                                 TQ3SubdivisionStyleData{kQ3SubdivisionMethodScreenSpace, 1e-5f, 1}}) {
+    for (const TQ3SubdivisionStyleData& style : {TQ3SubdivisionStyleData{kQ3SubdivisionMethodWorldSpace, 1e-7f, 1}}) {
         const std::string what = "method " + std::to_string(style.method);
         ASSERT_EQ(Q3View_StartRendering(view()), kQ3Success);
         EXPECT_EQ(Q3SubdivisionStyle_Submit(&style, view()), kQ3Success);

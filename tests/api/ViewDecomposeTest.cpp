@@ -291,13 +291,15 @@ TEST_F(ViewDecomposeTest, BadArgumentsAreReported)
 }
 
 // A 1101-point order-2 curve has 1100 spans; 1000 segments per span would
-// be 1.1 million segments, more than kQ3SubdivisionMaxSegmentsPerCurve.
+// be 1.1 million segments, more than kQ3SubdivisionMaxSegmentsPerCurve (the
+// constant method's cap also in a view). The curve lies inside the view, so
+// no span is drawn as one segment for being out of sight.
 TEST_F(ViewDecomposeTest, TheSegmentCapPostsAWarningEveryTimeTheCurveIsDrawn)
 {
     std::vector<TQ3RationalPoint4D> points;
     std::vector<float> knots;
     for (int i = 0; i <= 1100; ++i)
-        points.push_back({float(i % 7), float(i % 5), 0, 1});
+        points.push_back({0.45f * float(i % 7), 0.45f * float(i % 5), 0, 1}); // inside the view: nothing culled
     knots.push_back(0);
     for (int i = 0; i <= 1100; ++i)
         knots.push_back(float(i));

@@ -259,7 +259,8 @@ TEST_F(SubdivisionCacheRegressionTest, StyleMethodAndC1RebuildTheSameValuesAnyWa
 
 // World space measures through the local-to-world matrix: any change of it
 // rebuilds, however it was made; the same matrix reached another way does not,
-// and nor does anything about the camera or pane.
+// and nor does a camera change that hides no span; the pane's size does (it
+// sets the view's segment cap).
 TEST_F(SubdivisionCacheRegressionTest, WorldSpaceRebuildsForEveryChangeOfTheLocalToWorldMatrix)
 {
     const TQ3SubdivisionStyleData world = {kQ3SubdivisionMethodWorldSpace, 0.1f, 0.1f};
@@ -294,15 +295,18 @@ TEST_F(SubdivisionCacheRegressionTest, WorldSpaceRebuildsForEveryChangeOfTheLoca
                       }),
                  "a transform undone by Q3Pop_Submit");
 
-    // Not measured through in world space: camera and pane.
+    // Not measured through in world space: the camera.
     const FrameSetup stretched = with(world, [&](TQ3ViewObject v) { Q3ScaleTransform_Submit(&stretch, v); });
     TQ3CameraPlacement placement = m_perspective.cameraData.placement;
     placement.cameraLocation.x += 1;
     ASSERT_EQ(Q3Camera_SetPlacement(m_camera, &placement), kQ3Success);
+    expectReused(stretched, "a camera change under world space that hides no span");
+    // The pane sets world space's segment cap in a view
+    // (kQ3SubdivisionViewSegmentsPerPixel), so its size is part of the key.
     std::vector<unsigned char> small(64 * 48 * 4, 0);
     const TQ3PixmapDrawContextData smallData = contextData(small, 64, 48);
     ASSERT_EQ(Q3PixmapDrawContext_SetPixmap(m_context, &smallData.pixmap), kQ3Success);
-    expectReused(stretched, "camera and pane changes under world space");
+    expectRebuilt(stretched, "a pane size change under world space");
     const TQ3PixmapDrawContextData whole = contextData(m_memory, kWidth, kHeight);
     ASSERT_EQ(Q3PixmapDrawContext_SetPixmap(m_context, &whole.pixmap), kQ3Success);
 }

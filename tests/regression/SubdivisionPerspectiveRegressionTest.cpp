@@ -348,11 +348,15 @@ TEST_F(SubdivisionPerspectiveRegressionTest, TheVisiblePieceOfEverySegmentIsAtMo
         for (std::size_t i = 1; i < v.size(); ++i) {
             Vec3 a = v[i - 1], b = v[i];
             const Real da = map.depth(a), db = map.depth(b);
-            if (da < kHither && db < kHither)
+            if ((da < kHither) != (db < kHither))
+                ++crossing;
+            // A rendering loop draws a span outside the view as one segment
+            // (docs/subdivision.md, "What a view can show"): only segments
+            // reaching 1e-5 view-port units into the view volume count.
+            if (!map.segmentVisible(a, b, kHither, 1e-5L))
                 continue;
             if (da < kHither || db < kHither) {
                 // Clip the straight segment at the hither plane.
-                ++crossing;
                 const Real t = (kHither - da) / (db - da);
                 const Vec3 onPlane = a + t * (b - a);
                 (da < kHither ? a : b) = onPlane;

@@ -442,6 +442,59 @@ public:
 
     bool perspective() const { return m_perspective; }
 
+    /// The view volume as five affine functions of a world point, each <= 0
+    /// inside: the four sides of the view port (moved inwards by `margin`
+    /// view-port units) and the plane `hither` in front of the eye. For a
+    /// perspective camera the side functions are multiplied by the depth,
+    /// which the hither function keeps positive inside, so all five stay
+    /// affine.
+    void planes(const Vec3& p, Real hither, Real margin, Real out[5]) const
+    {
+        const Vec3 d = p - m_eye;
+        const Real x = dot(d, m_xAxis), y = dot(d, m_yAxis), z = dot(d, m_forward);
+        const Real left = m_viewPortX + margin, right = m_viewPortX + m_viewPortWidth - margin;
+        const Real top = m_viewPortY - margin, bottom = m_viewPortY - m_viewPortHeight + margin;
+        if (m_perspective) {
+            const Real nx = m_focalX * x, ny = m_focalY * y; // view-plane coordinates times z
+            out[0] = left * z - nx;
+            out[1] = nx - right * z;
+            out[2] = bottom * z - ny;
+            out[3] = ny - top * z;
+        } else {
+            const Real nx = (2 * x - (m_right + m_left)) / (m_right - m_left);
+            const Real ny = (2 * y - (m_top + m_bottom)) / (m_top - m_bottom);
+            out[0] = left - nx;
+            out[1] = nx - right;
+            out[2] = bottom - ny;
+            out[3] = ny - top;
+        }
+        out[4] = hither - z;
+    }
+
+    /// Whether some part of the world segment a-b lies inside the view
+    /// volume (planes() with the same hither and margin): the segment is
+    /// clipped against each plane in its parameter.
+    bool segmentVisible(const Vec3& a, const Vec3& b, Real hither, Real margin) const
+    {
+        Real fa[5], fb[5];
+        planes(a, hither, margin, fa);
+        planes(b, hither, margin, fb);
+        Real lo = 0, hi = 1;
+        for (int k = 0; k < 5; ++k) {
+            // f(s) = fa + s (fb - fa) <= 0
+            const Real slope = fb[k] - fa[k];
+            if (slope == 0) {
+                if (fa[k] > 0)
+                    return false;
+            } else if (slope > 0) {
+                hi = std::min(hi, -fa[k] / slope);
+            } else {
+                lo = std::max(lo, -fa[k] / slope);
+            }
+        }
+        return lo <= hi;
+    }
+
 private:
     ScreenMap(const TQ3CameraData& camera, const TQ3Area& pane)
     {

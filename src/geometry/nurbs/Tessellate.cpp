@@ -146,10 +146,16 @@ void reset(TessellatedCurve& out)
     out.effectiveValue = 0.0;
     out.capped = false;
     out.unmeasuredSegments = 0;
+    out.hiddenSpans = 0;
+}
+
+std::size_t segmentCap(const ViewLimits& limits)
+{
+    return std::max<std::size_t>(std::min(limits.maxSegments, kMaxSegments), 1);
 }
 
 template <typename Spans>
-void constantImpl(Spans& spans, std::uint32_t requested, TessellatedCurve& out)
+void constantImpl(Spans& spans, std::uint32_t requested, TessellatedCurve& out, const ViewLimits& limits)
 {
     reset(out);
     const std::size_t spanCount = spans.count();
@@ -158,7 +164,21 @@ void constantImpl(Spans& spans, std::uint32_t requested, TessellatedCurve& out)
     }
     std::uint32_t m = std::max<std::uint32_t>(requested, 1);
     m = std::min(m, kMaxSegmentsPerSpan);
-    const std::size_t perSpanBudget = std::max<std::size_t>(kMaxSegments / spanCount, 1);
+    // Hidden spans (one segment each) are found first, so the cap is shared by the
+    // spans that can be seen. Culling needs each span's Bezier form, which one segment
+    // per span does not: then nothing is culled.
+    std::vector<bool> hidden;
+    if (limits.hidden && m > 1) {
+        hidden.resize(spanCount);
+        for (std::size_t s = 0; s < spanCount; ++s) {
+            hidden[s] = limits.hidden(spans.points(s), spans.order());
+            out.hiddenSpans += hidden[s] ? 1 : 0;
+        }
+    }
+    const std::size_t visibleSpans = spanCount - out.hiddenSpans;
+    const std::size_t cap = segmentCap(limits);
+    const std::size_t perSpanBudget =
+        visibleSpans == 0 ? m : std::max<std::size_t>((cap > out.hiddenSpans ? cap - out.hiddenSpans : 0) / visibleSpans, 1);
     m = std::uint32_t(std::min<std::size_t>(m, perSpanBudget));
     out.substituted = m != requested;
     out.effectiveValue = m;
@@ -198,8 +218,17 @@ void constantImpl(Spans& spans, std::uint32_t requested, TessellatedCurve& out)
     const Point4* points = nullptr;
     for (std::size_t s = 0; s < spanCount; ++s) {
         points = spans.points(s);
-        sampleBezier(points, table, 0, m, v + 3 * kept);
         const Span& span = spans.span(s);
+        if (!hidden.empty() && hidden[s]) {
+            const Point3 p = project(points[0]);
+            v[3 * kept] = float(p.x);
+            v[3 * kept + 1] = float(p.y);
+            v[3 * kept + 2] = float(p.z);
+            t[kept] = span.start;
+            kept = dropRepeats(v, t, kept, kept, kept + 1);
+            continue;
+        }
+        sampleBezier(points, table, 0, m, v + 3 * kept);
         const double width = span.end - span.start;
         for (std::uint32_t j = 0; j < m; ++j) {
             t[kept + j] = span.start + width * fraction[j];
@@ -249,8 +278,9 @@ double distance(const Point3& a, const Point3& b)
 template <typename Spans>
 class Adaptive {
 public:
-    Adaptive(Spans& spans, const PointMapping& mapping, TessellatedCurve& out)
-        : m_spans(spans), m_mapping(mapping), m_out(out), m_builder(out), m_order(spans.order()),
+    Adaptive(Spans& spans, const PointMapping& mapping, const ViewLimits& limits, TessellatedCurve& out)
+        : m_spans(spans), m_mapping(mapping), m_hidden(limits.hidden), m_maxSegments(segmentCap(limits)),
+          m_budget(m_maxSegments - m_maxSegments / 8), m_out(out), m_builder(out), m_order(spans.order()),
           m_probeSegments(probeSegmentsPerSpan(m_order)), m_probeTable(m_order, m_probeSegments),
           m_probes(m_probeSegments + 1)
     {
@@ -262,7 +292,7 @@ public:
         if (spanCount == 0) {
             return;
         }
-        if (spanCount >= kPlacementBudget) {
+        if (spanCount >= m_budget) {
             // At least one segment per span already exceeds the budget.
             m_out.substituted = true;
             m_onePerSpan = true;
@@ -299,6 +329,12 @@ private:
     void probeSpan(std::size_t s)
     {
         m_points = m_spans.points(s);
+        probePoints();
+    }
+
+    // Probes the span whose Bezier points m_points holds.
+    void probePoints()
+    {
         double xyz[3 * (kMaxOrder + 1)];
         sampleBezier(m_points, m_probeTable, 0, m_probeSegments + 1, xyz);
         for (std::uint32_t j = 0; j <= m_probeSegments; ++j) {
@@ -382,8 +418,19 @@ private:
     // without an image is an unmeasured segment.
     void collectRuns()
     {
+        if (m_hidden) {
+            m_spanHidden.assign(m_spans.count(), false);
+        }
         for (std::size_t s = 0; s < m_spans.count(); ++s) {
-            probeSpan(s);
+            m_points = m_spans.points(s);
+            if (m_hidden && m_hidden(m_points, m_order)) {
+                // One unmeasured segment across the span, no run.
+                m_spanHidden[s] = true;
+                ++m_out.hiddenSpans;
+                ++m_unmeasurableIntervals;
+                continue;
+            }
+            probePoints();
             for (std::uint32_t j = 0; j < m_probeSegments; ++j) {
                 const Sample& a = m_probes[j];
                 const Sample& b = m_probes[j + 1];
@@ -426,7 +473,7 @@ private:
         }
         const double q = std::ceil(length * kLengthPadding / c);
         if (!(q < double(kMaxSegments))) {
-            return kMaxSegments + 1;
+            return kMaxSegments + 1;  // over any budget
         }
         return std::max<std::size_t>(std::size_t(q), 1);
     }
@@ -446,7 +493,7 @@ private:
     {
         const bool usable = c1 > 0.0;
         if (usable) {
-            if (wanted(c1) <= kPlacementBudget) {
+            if (wanted(c1) <= m_budget) {
                 m_c = c1;
                 m_out.effectiveValue = c1;
                 return;
@@ -454,19 +501,19 @@ private:
         }
         m_out.substituted = true;
         const std::size_t fixed = m_unmeasurableIntervals + m_measurableRuns;
-        if (fixed >= kPlacementBudget) {
+        if (fixed >= m_budget) {
             m_onePerSpan = true;
             m_c = kInfinity;
             m_out.effectiveValue = kInfinity;
             return;
         }
         // Each run needs at most padding * length / c + 1 segments, so this c fits.
-        const std::size_t room = kPlacementBudget - fixed;
+        const std::size_t room = m_budget - fixed;
         double c = m_totalLength > 0.0 ? m_totalLength * kLengthPadding / double(room) : kInfinity;
         if (!(c > 0.0)) {
             c = kInfinity;
         }
-        for (int attempt = 0; attempt < 64 && wanted(c) > kPlacementBudget; ++attempt) {
+        for (int attempt = 0; attempt < 64 && wanted(c) > m_budget; ++attempt) {
             c *= 1.0 + 1.0 / 1024.0;
         }
         m_c = c;
@@ -484,7 +531,7 @@ private:
     // minimum every later run still needs.
     bool haveRoom(std::size_t count) const
     {
-        return m_used + count + 1 + m_reserve <= kMaxSegments;
+        return m_used + count + 1 + m_reserve <= m_maxSegments;
     }
 
     // Chord length between mapped points; infinity when it cannot be measured.
@@ -658,9 +705,21 @@ private:
     {
         m_reserve = m_measurableRuns + m_unmeasurableIntervals;
         std::size_t cursor = 0;
+        Point3 end;
         for (std::size_t s = 0; s < m_spans.count(); ++s) {
             m_currentSpan = s;
+            if (!m_spanHidden.empty() && m_spanHidden[s]) {
+                m_points = m_spans.points(s);
+                Sample start;
+                start.point = project(m_points[0]);
+                m_reserve -= 1;
+                emit(start);
+                ++m_out.unmeasuredSegments;
+                end = project(m_points[m_order - 1]);
+                continue;
+            }
             probeSpan(s);
+            end = m_probes[m_probeSegments].point;
             for (; cursor < m_runs.size() && m_runs[cursor].span == s; ++cursor) {
                 const Run& run = m_runs[cursor];
                 if (run.measurable) {
@@ -676,7 +735,7 @@ private:
                 }
             }
         }
-        m_builder.add(m_spans.span(m_currentSpan).end, m_probes[m_probeSegments].point);
+        m_builder.add(m_spans.span(m_currentSpan).end, end);
     }
 
     void emitOnePerSpan()
@@ -689,6 +748,9 @@ private:
 
     Spans& m_spans;
     const PointMapping& m_mapping;
+    const SpanCulling& m_hidden;
+    const std::size_t m_maxSegments;  // ViewLimits::maxSegments, at most kMaxSegments
+    const std::size_t m_budget;       // the planned count's share of it (kPlacementBudget's rule)
     TessellatedCurve& m_out;
     PolylineBuilder m_builder;
     const unsigned m_order;
@@ -699,6 +761,7 @@ private:
     std::size_t m_currentSpan = 0;
 
     std::vector<Run> m_runs;
+    std::vector<bool> m_spanHidden;  // empty without culling
     std::vector<Sample> m_boundaries;  // where the image ends inside a probe interval
     std::size_t m_edgeSearches = 0;    // boundaryBetween calls so far, up to kMaxEdgeSearches
     std::size_t m_measurableRuns = 0;
@@ -719,70 +782,74 @@ bool fitsWholeBezierForm(const CurveRef& curve)
     return countNonEmptySpans(curve) * curve.order <= kWholeFormLimit;
 }
 
-void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out)
+void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out,
+                        const ViewLimits& limits)
 {
     if (!validateCurve(curve).ok()) {
         reset(out);
         return;
     }
     CurveSpans spans(curve);
-    constantImpl(spans, segmentsPerSpan, out);
+    constantImpl(spans, segmentsPerSpan, out, limits);
 }
 
-void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, TessellatedCurve& out)
+void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, TessellatedCurve& out,
+                        const ViewLimits& limits)
 {
     FormSpans spans(form);
-    constantImpl(spans, segmentsPerSpan, out);
+    constantImpl(spans, segmentsPerSpan, out, limits);
 }
 
 void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
-                        TessellatedCurve& out)
+                        TessellatedCurve& out, const ViewLimits& limits)
 {
     reset(out);
     if (!validateCurve(curve).ok()) {
         return;
     }
     if (fitsWholeBezierForm(curve)) {
-        tessellateAdaptive(BezierForm(curve), maxSegmentLength, mapping, out);
+        tessellateAdaptive(BezierForm(curve), maxSegmentLength, mapping, out, limits);
         return;
     }
     CurveSpans spans(curve);
-    Adaptive<CurveSpans>(spans, mapping, out).run(maxSegmentLength);
+    Adaptive<CurveSpans>(spans, mapping, limits, out).run(maxSegmentLength);
 }
 
 void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
-                        TessellatedCurve& out)
+                        TessellatedCurve& out, const ViewLimits& limits)
 {
     reset(out);
     FormSpans spans(form);
-    Adaptive<FormSpans>(spans, mapping, out).run(maxSegmentLength);
+    Adaptive<FormSpans>(spans, mapping, limits, out).run(maxSegmentLength);
 }
 
-TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan)
+TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, const ViewLimits& limits)
 {
     TessellatedCurve out;
-    tessellateConstant(curve, segmentsPerSpan, out);
+    tessellateConstant(curve, segmentsPerSpan, out, limits);
     return out;
 }
 
-TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan)
+TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, const ViewLimits& limits)
 {
     TessellatedCurve out;
-    tessellateConstant(form, segmentsPerSpan, out);
+    tessellateConstant(form, segmentsPerSpan, out, limits);
     return out;
 }
 
-TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping)
+TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
+                                    const ViewLimits& limits)
 {
     TessellatedCurve out;
-    tessellateAdaptive(curve, maxSegmentLength, mapping, out);
+    tessellateAdaptive(curve, maxSegmentLength, mapping, out, limits);
     return out;
 }
 
-TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping)
+TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
+                                    const ViewLimits& limits)
 {
     TessellatedCurve out;
-    tessellateAdaptive(form, maxSegmentLength, mapping, out);
+    tessellateAdaptive(form, maxSegmentLength, mapping, out, limits);
     return out;
 }
 

@@ -79,6 +79,24 @@ constexpr std::size_t kMaxEdgeSearches = std::size_t{1} << 16;
 /// whole curve.
 using PointMapping = std::function<bool(const Point3& local, Point3& mapped)>;
 
+/// Whether a span certainly cannot be seen, from its rational Bezier control points
+/// (homogeneous, weights > 0, in the curve's local coordinates; `order` of them). It
+/// must be conservative: true only when no point of the span can be visible, e.g. when
+/// every control point lies outside one plane of a view volume (a rational Bezier span
+/// with positive weights lies in the convex hull of its control points, and so does
+/// every chord between two of its points).
+using SpanCulling = std::function<bool(const Point4* points, unsigned order)>;
+
+/// What a view lets a tessellation spend: the most segments per curve (at most
+/// kMaxSegments; a curve still gets one segment per non-empty span) and, optionally,
+/// spans that cannot be seen. A hidden span gets exactly one segment, from its start to
+/// its end (a chord inside the span's hull, so it cannot be seen either), and costs no
+/// evaluation besides its Bezier conversion.
+struct ViewLimits {
+    std::size_t maxSegments = kMaxSegments;
+    SpanCulling hidden;  ///< empty: every span may be seen
+};
+
 /// A polyline approximating a curve.
 /// Invariant: vertices.size() == 3 * parameters.size(); parameters increase strictly;
 /// the first and last parameters are the domain ends (exactly) and their vertices are
@@ -91,6 +109,7 @@ struct TessellatedCurve {
     double effectiveValue = 0.0;     ///< segments per span (constant) or maximum length (adaptive) used
     bool capped = false;             ///< adaptive: kMaxSegments (or a mapping too steep to resolve) left segments longer than effectiveValue
     std::size_t unmeasuredSegments = 0; ///< adaptive: segments with an endpoint the mapping rejected
+    std::size_t hiddenSpans = 0;        ///< spans ViewLimits::hidden culled (one segment each)
 
     std::size_t vertexCount() const { return parameters.size(); }
 };
@@ -104,12 +123,18 @@ struct TessellatedCurve {
 /// Errors: none; an invalid curve (checked with validateCurve) gives an empty result, a
 /// replaced count is reported in the result for the caller to post as a warning.
 /// Ownership: the result owns its arrays.
-TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan);
-TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan);
+/// With `limits`: hidden spans get one segment, and the count per visible span is
+/// lowered so the total stays within limits.maxSegments (never below 1 per span).
+TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan,
+                                    const ViewLimits& limits = {});
+TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan,
+                                    const ViewLimits& limits = {});
 /// The same, replacing the contents of `out` and reusing its storage (for a renderer
 /// that tessellates every frame).
-void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out);
-void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, TessellatedCurve& out);
+void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out,
+                        const ViewLimits& limits = {});
+void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, TessellatedCurve& out,
+                        const ViewLimits& limits = {});
 
 /// kQ3SubdivisionMethodWorldSpace and kQ3SubdivisionMethodScreenSpace: a polyline whose
 /// segments, measured between the mapped images of their end points, are at most
@@ -132,16 +157,19 @@ void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, T
 /// and the curve is evaluated and mapped O(kMaxRootIterations) times per output vertex
 /// (placing a vertex, or bisecting for an edge), at O(order) per evaluation, plus
 /// O(order^2) per span for its Bezier form. The mapping is called from this thread only.
+/// With `limits`: hidden spans are neither probed nor measured and get one (unmeasured)
+/// segment each; limits.maxSegments replaces kMaxSegments above (the placement budget
+/// being 7/8 of it), so a view can bound the work by what it can show.
 /// Errors: none; an invalid curve gives an empty result, substitution is reported in the
-/// result. Ownership: the mapping is only used during the call.
+/// result. Ownership: the mapping and the culling are only used during the call.
 TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength,
-                                    const PointMapping& mapping);
+                                    const PointMapping& mapping, const ViewLimits& limits = {});
 TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength,
-                                    const PointMapping& mapping);
+                                    const PointMapping& mapping, const ViewLimits& limits = {});
 /// The same, replacing the contents of `out` and reusing its storage.
 void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
-                        TessellatedCurve& out);
+                        TessellatedCurve& out, const ViewLimits& limits = {});
 void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
-                        TessellatedCurve& out);
+                        TessellatedCurve& out, const ViewLimits& limits = {});
 
 } // namespace q3::nurbs

@@ -562,3 +562,83 @@ TEST(NurbsTessellate, InvalidCurveGivesEmptyResult)
 
 } // namespace
 } // namespace q3::nurbs
+
+namespace q3::nurbs {
+namespace {
+
+// ViewLimits::hidden: a span it rejects gets exactly one segment, from its start to
+// its end, under both methods; the others are subdivided as without it. The predicate
+// here hides spans by index (every third), counted as the tessellator asks.
+TEST(NurbsTessellate, HiddenSpansGetOneSegmentUnderBothMethods)
+{
+    std::mt19937 rng(16);
+    for (int trial = 0; trial < 60; ++trial) {
+        const TestCurve curve = test::randomCurve(rng, 2 + trial % 9, {});
+        const std::vector<Span> spans = nonEmptySpans(curve.ref());
+        const BezierForm form(curve.ref());
+        ViewLimits limits;
+        limits.hidden = [&form](const Point4* points, unsigned) {
+            for (std::size_t s = 0; s < form.spanCount(); ++s)
+                if (form.spanPoints(s) == points)
+                    return s % 3 == 1;
+            return false;
+        };
+        const std::size_t hiddenCount = (spans.size() + 1) / 3; // s = 1, 4, 7, ...
+        const TessellatedCurve constant = tessellateConstant(form, 8, limits);
+        EXPECT_EQ(constant.hiddenSpans, hiddenCount);
+        ASSERT_EQ(constant.vertexCount(), 8 * (spans.size() - hiddenCount) + hiddenCount + 1);
+        expectPolylineInvariants(curve, constant);
+        // A hidden span's start is followed by its end.
+        std::size_t i = 0;
+        for (std::size_t s = 0; s < spans.size(); ++s) {
+            EXPECT_EQ(constant.parameters[i], spans[s].start);
+            i += s % 3 == 1 ? 1 : 8;
+        }
+        const PointMapping identity = [](const Point3& p, Point3& out) {
+            out = p;
+            return true;
+        };
+        const double c1 = test::curveScale(curve) / 50;
+        const TessellatedCurve adaptive = tessellateAdaptive(form, c1, identity, limits);
+        EXPECT_EQ(adaptive.hiddenSpans, hiddenCount);
+        EXPECT_FALSE(adaptive.substituted);
+        expectPolylineInvariants(curve, adaptive);
+        // Only segments inside a hidden span may be longer than c1.
+        for (std::size_t v = 1; v < adaptive.vertexCount(); ++v) {
+            const double length = test::distance3(vertex(adaptive, v - 1), vertex(adaptive, v));
+            std::size_t s = 0;
+            while (s + 1 < spans.size() && adaptive.parameters[v - 1] >= spans[s].end)
+                ++s;
+            if (s % 3 == 1) {
+                EXPECT_EQ(adaptive.parameters[v - 1], spans[s].start);
+                EXPECT_EQ(adaptive.parameters[v], spans[s].end);
+            } else {
+                EXPECT_LE(length, c1 * (1 + 1e-6)) << "segment " << v - 1;
+            }
+        }
+    }
+}
+
+// ViewLimits::maxSegments replaces kMaxSegments: a c1 that would need more gets a
+// longer length (substituted), and the count stays within the cap.
+TEST(NurbsTessellate, MaxSegmentsFromTheViewBoundsTheAdaptiveCount)
+{
+    const TestCurve curve = test::listingOneCurve();
+    const PointMapping identity = [](const Point3& p, Point3& out) {
+        out = p;
+        return true;
+    };
+    ViewLimits limits;
+    limits.maxSegments = 4096;
+    const TessellatedCurve capped = tessellateAdaptive(curve.ref(), 1e-6, identity, limits);
+    EXPECT_TRUE(capped.substituted);
+    EXPECT_GT(capped.effectiveValue, 1e-6);
+    EXPECT_LE(segmentCount(capped), 4096u);
+    EXPECT_GT(segmentCount(capped), 2048u);
+    const TessellatedCurve fine = tessellateAdaptive(curve.ref(), 0.01, identity, limits);
+    EXPECT_FALSE(fine.substituted);
+    EXPECT_EQ(fine.effectiveValue, 0.01);
+}
+
+} // namespace
+} // namespace q3::nurbs
