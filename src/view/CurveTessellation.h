@@ -59,15 +59,19 @@ std::size_t viewSegmentCap(const PixelRect& pane);
 /// A retained curve passes its cache: the polyline is rebuilt only when the
 /// cache is empty (the curve drops it on every edit) or was built under
 /// another setting (its key: method, c1, the matrix the method measures
-/// through, and for screen space the pane size); the Bezier form is built once
-/// per edit and kept, unless it would exceed nurbs::kWholeFormLimit (then the
-/// curve is converted span by span at each rebuild and only the polyline is kept). `tessellations` counts rebuilds. Caches are locked while in use,
-/// so views on several threads may draw the same retained curve. Immediate
-/// mode (cache null) subdivides on every call.
+/// through, the pane size, and in a rendering loop which spans the view
+/// hides); the Bezier form is built once per edit and kept, unless it would
+/// exceed nurbs::kWholeFormLimit (then the curve is converted span by span at
+/// each rebuild and only the polyline is kept). `tessellations` counts
+/// rebuilds. Caches are locked while in use, so views on several threads may
+/// draw the same retained curve. Immediate mode (cache null) subdivides on
+/// every call.
 ///
-/// When the subdivision had to give in to kQ3SubdivisionMaxSegmentsPerCurve
-/// (QD3DStyle.h), kQ3WarningParameterOutOfRange is posted after `use`
-/// returns, also when the polyline comes from the cache.
+/// When the subdivision had to give in to its cap (kQ3SubdivisionMaxSegmentsPerCurve,
+/// or in a view for world and screen space the pane's cap set by
+/// kQ3SubdivisionViewSegmentsPerPixel, both in QD3DStyle.h),
+/// kQ3WarningParameterOutOfRange is posted after `use` returns, also when the
+/// polyline comes from the cache.
 void withCurvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
                        const TessellationSetting& setting, const PolylineUser& use);
 
