@@ -44,38 +44,6 @@ TQ3AttributeSet colorSet(float r, float g, float b)
     return set;
 }
 
-bool samePoint(const TQ3Point3D& a, const TQ3Point3D& b)
-{
-    return a.x == b.x && a.y == b.y && a.z == b.z;
-}
-
-// Two attribute sets hold the same attributes (both absent counts as same).
-bool sameSet(TQ3AttributeSet a, TQ3AttributeSet b)
-{
-    for (TQ3AttributeType type = kQ3AttributeTypeSurfaceUV; type <= kQ3AttributeTypeHighlightState; ++type) {
-        const bool inA = a != nullptr && Q3AttributeSet_Contains(a, type) == kQ3True;
-        const bool inB = b != nullptr && Q3AttributeSet_Contains(b, type) == kQ3True;
-        if (inA != inB)
-            return false;
-        if (inA) {
-            unsigned char va[32] = {}, vb[32] = {};
-            Q3AttributeSet_Get(a, type, va);
-            Q3AttributeSet_Get(b, type, vb);
-            if (std::memcmp(va, vb, sizeof va) != 0)
-                return false;
-        }
-    }
-    return true;
-}
-
-bool sameVertices(const TQ3Vertex3D* a, const TQ3Vertex3D* b, unsigned long n)
-{
-    for (unsigned long i = 0; i < n; ++i)
-        if (!samePoint(a[i].point, b[i].point) || !sameSet(a[i].attributeSet, b[i].attributeSet))
-            return false;
-    return true;
-}
-
 template <class T>
 bool sameBytes(const T* a, const T* b, unsigned long n)
 {
@@ -555,32 +523,6 @@ bool drawsSomething(const std::vector<std::uint32_t>& words)
         if (w != words.front())
             return true;
     return false;
-}
-
-// The first failing call's error, reading every object of the bytes.
-TQ3Error readError(const std::vector<unsigned char>& bytes)
-{
-    TQ3StorageObject storage = Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size()));
-    TQ3FileObject file = Q3File_New();
-    Q3File_SetStorage(file, storage);
-    Q3Object_Dispose(storage);
-    TQ3Error error = kQ3ErrorNone;
-    TQ3FileMode mode;
-    if (Q3File_OpenRead(file, &mode) != kQ3Success) {
-        error = Q3Error_Get(nullptr);
-    } else {
-        while (Q3File_IsEndOfFile(file) == kQ3False) {
-            TQ3Object object = Q3File_ReadObject(file);
-            if (object == nullptr) {
-                error = Q3Error_Get(nullptr);
-                break;
-            }
-            Q3Object_Dispose(object);
-        }
-        Q3File_Close(file);
-    }
-    Q3Object_Dispose(file);
-    return error;
 }
 
 class FileGeometryRoundTripTest : public Q3ApiTest, public ::testing::WithParamInterface<std::size_t> {};

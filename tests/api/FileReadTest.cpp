@@ -59,32 +59,6 @@ std::vector<unsigned char> binaryHeader()
     return out;
 }
 
-// The first failing call's error, with no object read.
-TQ3Error readError(const std::vector<unsigned char>& bytes)
-{
-    TQ3StorageObject storage = Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size()));
-    TQ3FileObject file = Q3File_New();
-    Q3File_SetStorage(file, storage);
-    Q3Object_Dispose(storage);
-    TQ3Error error = kQ3ErrorNone;
-    TQ3FileMode mode;
-    if (Q3File_OpenRead(file, &mode) != kQ3Success) {
-        error = Q3Error_Get(nullptr);
-    } else {
-        while (Q3File_IsEndOfFile(file) == kQ3False) {
-            TQ3Object object = Q3File_ReadObject(file);
-            if (object == nullptr) {
-                error = Q3Error_Get(nullptr);
-                break;
-            }
-            Q3Object_Dispose(object);
-        }
-        Q3File_Close(file);
-    }
-    Q3Object_Dispose(file);
-    return error;
-}
-
 } // namespace
 
 // readError's later calls clear Q3Error_Get, so the code it returns is

@@ -35,41 +35,9 @@ TQ3AttributeSet colorSet(float r, float g, float b)
     return set;
 }
 
-bool samePoint(const TQ3Point3D& a, const TQ3Point3D& b)
-{
-    return a.x == b.x && a.y == b.y && a.z == b.z;
-}
-
 bool sameVector(const TQ3Vector3D& a, const TQ3Vector3D& b)
 {
     return a.x == b.x && a.y == b.y && a.z == b.z;
-}
-
-// Two attribute sets hold the same attributes (both absent counts as same).
-bool sameSet(TQ3AttributeSet a, TQ3AttributeSet b)
-{
-    for (TQ3AttributeType type = kQ3AttributeTypeSurfaceUV; type <= kQ3AttributeTypeHighlightState; ++type) {
-        const bool inA = a != nullptr && Q3AttributeSet_Contains(a, type) == kQ3True;
-        const bool inB = b != nullptr && Q3AttributeSet_Contains(b, type) == kQ3True;
-        if (inA != inB)
-            return false;
-        if (inA) {
-            unsigned char va[32] = {}, vb[32] = {};
-            Q3AttributeSet_Get(a, type, va);
-            Q3AttributeSet_Get(b, type, vb);
-            if (std::memcmp(va, vb, sizeof va) != 0)
-                return false;
-        }
-    }
-    return true;
-}
-
-bool sameVertices(const TQ3Vertex3D* a, const TQ3Vertex3D* b, unsigned long n)
-{
-    for (unsigned long i = 0; i < n; ++i)
-        if (!samePoint(a[i].point, b[i].point) || !sameSet(a[i].attributeSet, b[i].attributeSet))
-            return false;
-    return true;
 }
 
 struct Case {

@@ -6,12 +6,15 @@
 // the public API only.
 
 #include "QD3D.h"
+#include "QD3DErrors.h"
 #include "QD3DIO.h"
+#include "QD3DSet.h"
 #include "QD3DStorage.h"
 #include "QD3DView.h"
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -91,6 +94,69 @@ inline void disposeAll(const std::vector<TQ3Object>& objects)
 {
     for (TQ3Object object : objects)
         Q3Object_Dispose(object);
+}
+
+/// Whether two points are equal to the bit (round trips must give back the same numbers).
+inline bool samePoint(const TQ3Point3D& a, const TQ3Point3D& b)
+{
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+/// Whether two attribute sets hold the same attributes with the same values
+/// (both absent counts as the same).
+inline bool sameSet(TQ3AttributeSet a, TQ3AttributeSet b)
+{
+    for (TQ3AttributeType type = kQ3AttributeTypeSurfaceUV; type <= kQ3AttributeTypeHighlightState; ++type) {
+        const bool inA = a != nullptr && Q3AttributeSet_Contains(a, type) == kQ3True;
+        const bool inB = b != nullptr && Q3AttributeSet_Contains(b, type) == kQ3True;
+        if (inA != inB)
+            return false;
+        if (inA) {
+            unsigned char va[32] = {}, vb[32] = {};
+            Q3AttributeSet_Get(a, type, va);
+            Q3AttributeSet_Get(b, type, vb);
+            if (std::memcmp(va, vb, sizeof va) != 0)
+                return false;
+        }
+    }
+    return true;
+}
+
+/// Whether two vertex arrays have the same points and attribute sets.
+inline bool sameVertices(const TQ3Vertex3D* a, const TQ3Vertex3D* b, unsigned long n)
+{
+    for (unsigned long i = 0; i < n; ++i)
+        if (!samePoint(a[i].point, b[i].point) || !sameSet(a[i].attributeSet, b[i].attributeSet))
+            return false;
+    return true;
+}
+
+/// The first error of reading every object of the bytes in turn, or
+/// kQ3ErrorNone when all of them read. (Later calls clear Q3Error_Get, so
+/// the code is taken as soon as a call fails.)
+inline TQ3Error readError(const std::vector<unsigned char>& bytes)
+{
+    TQ3StorageObject storage = Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size()));
+    TQ3FileObject file = Q3File_New();
+    Q3File_SetStorage(file, storage);
+    Q3Object_Dispose(storage);
+    TQ3Error error = kQ3ErrorNone;
+    TQ3FileMode mode;
+    if (Q3File_OpenRead(file, &mode) != kQ3Success) {
+        error = Q3Error_Get(nullptr);
+    } else {
+        while (Q3File_IsEndOfFile(file) == kQ3False) {
+            TQ3Object object = Q3File_ReadObject(file);
+            if (object == nullptr) {
+                error = Q3Error_Get(nullptr);
+                break;
+            }
+            Q3Object_Dispose(object);
+        }
+        Q3File_Close(file);
+    }
+    Q3Object_Dispose(file);
+    return error;
 }
 
 } // namespace q3test
