@@ -51,7 +51,10 @@ const Names kFallOff = {{"None", kQ3FallOffTypeNone},
                         {"Cosine", kQ3FallOffTypeCosine}};
 const Names kAxis = {{"X", kQ3AxisX}, {"Y", kQ3AxisY}, {"Z", kQ3AxisZ}};
 
-constexpr TQ3ObjectType kTypeLightData = Q3_OBJECT_TYPE('l', 'g', 'd', 't');
+// LightData's binary tag is 'lght', as in Apple's own metafile parser (MF3D's
+// kMF3DObjLightData), so that lights in binary files written by QuickDraw 3D
+// keep their state.
+constexpr TQ3ObjectType kTypeLightData = Q3_OBJECT_TYPE('l', 'g', 'h', 't');
 
 // Builds an object from file data through its class's checks.
 template <class T, class... Args>

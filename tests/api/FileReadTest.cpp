@@ -9,6 +9,7 @@
 
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
+#include "QD3DLight.h"
 #include "QD3DSet.h"
 
 #include <cstdint>
@@ -436,6 +437,52 @@ TEST_F(FileReadTest, LightsStylesTransformsAndTriMeshArraysFromAHandWrittenFile)
     EXPECT_EQ(static_cast<const TQ3Vector3D*>(data.vertexAttributeTypes[0].data)[2].z, 0.8f);
     Q3TriMesh_EmptyData(&data);
     Q3Object_Dispose(mesh);
+    disposeAll(objects);
+}
+
+// A binary light as Apple's QuickDraw 3D wrote it: a container holding the
+// DirectionalLight and its LightData, tagged 'lght' (Apple's MF3D parser,
+// kMF3DObjLightData). Written back, the LightData keeps that tag.
+TEST_F(FileReadTest, ABinaryLightDataTaggedAsAppleTagsItKeepsTheLightsState)
+{
+    auto putFloat = [](std::vector<unsigned char>& out, float value) {
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &value, sizeof bits);
+        put32(out, bits);
+    };
+    std::vector<unsigned char> bytes = binaryHeader();
+    putTag(bytes, "cntr");
+    put32(bytes, (8 + 16) + (8 + 20));
+    putTag(bytes, "drct");
+    put32(bytes, 16);
+    putFloat(bytes, 0.0f);
+    putFloat(bytes, -1.0f);
+    putFloat(bytes, 0.0f);
+    put32(bytes, 1); // castsShadows: True
+    putTag(bytes, "lght");
+    put32(bytes, 20);
+    put32(bytes, 0); // isOn: False
+    putFloat(bytes, 0.25f);
+    putFloat(bytes, 1.0f);
+    putFloat(bytes, 0.5f);
+    putFloat(bytes, 0.125f);
+
+    const auto objects = readAll(bytes);
+    ASSERT_EQ(objects.size(), 1u);
+    TQ3DirectionalLightData data;
+    ASSERT_EQ(Q3DirectionalLight_GetData(objects[0], &data), kQ3Success);
+    EXPECT_EQ(data.lightData.isOn, kQ3False);
+    EXPECT_EQ(data.lightData.brightness, 0.25f);
+    EXPECT_EQ(data.lightData.color.r, 1.0f);
+    EXPECT_EQ(data.lightData.color.g, 0.5f);
+    EXPECT_EQ(data.lightData.color.b, 0.125f);
+    EXPECT_EQ(data.castsShadows, kQ3True);
+    EXPECT_EQ(data.direction.y, -1.0f);
+
+    const std::vector<unsigned char> written = writeObjects(objects, kQ3FileModeNormal);
+    const std::string text(written.begin(), written.end());
+    EXPECT_NE(text.find("lght"), std::string::npos);
+    EXPECT_EQ(text.find("lgdt"), std::string::npos);
     disposeAll(objects);
 }
 
