@@ -228,6 +228,8 @@ float expectedParameter(std::int32_t method, float value, bool& replaced)
         result = value < 1.0f ? 1.0f : std::min(value, float(kQ3SubdivisionMaxConstantSegments));
     else if (value <= 0.0f)
         result = kQ3SubdivisionDefaultC1;
+    else if (method == kQ3SubdivisionMethodScreenSpace && value < kQ3SubdivisionMinScreenSpaceC1)
+        result = kQ3SubdivisionMinScreenSpaceC1;
     if (!sameBytes(result, value))
         replaced = true;
     return result;
