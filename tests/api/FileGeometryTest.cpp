@@ -498,24 +498,6 @@ std::vector<Case> cases()
     return all;
 }
 
-std::vector<std::uint32_t> render(TQ3Object object)
-{
-    Pixmap image(96, 72);
-    const TQ3ViewAngleAspectCameraData cameraData =
-        viewAngleCamera({3, 4, 8}, {0, 0, 0}, {0, 1, 0}, 0.8, 96.0 / 72.0);
-    TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
-    std::vector<std::uint32_t> words;
-    {
-        TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera);
-        EXPECT_EQ(view.render([&](TQ3ViewObject v) { Q3Object_Submit(object, v); }), kQ3ViewStatusDone);
-    }
-    Q3Object_Dispose(camera);
-    for (unsigned long y = 0; y < image.height(); ++y)
-        for (unsigned long x = 0; x < image.width(); ++x)
-            words.push_back(image.word(x, y));
-    return words;
-}
-
 // Whether an image has any pixel other than the first (the background).
 bool drawsSomething(const std::vector<std::uint32_t>& words)
 {
@@ -542,7 +524,7 @@ TEST_P(FileGeometryRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataA
     SCOPED_TRACE(c.name);
     TQ3Object original = c.make();
     ASSERT_NE(original, nullptr);
-    const auto expected = render(original);
+    const auto expected = renderedWords(original);
     EXPECT_TRUE(drawsSomething(expected));
     for (TQ3FileMode mode : kModes) {
         SCOPED_TRACE(mode);
@@ -559,7 +541,7 @@ TEST_P(FileGeometryRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataA
         Q3Object_Dispose(file);
         EXPECT_EQ(Q3Object_GetLeafType(back), Q3Object_GetLeafType(original));
         EXPECT_TRUE(c.same(original, back));
-        EXPECT_TRUE(render(back) == expected);
+        EXPECT_TRUE(renderedWords(back) == expected);
         Q3Object_Dispose(back);
     }
     Q3Object_Dispose(original);

@@ -345,24 +345,6 @@ std::vector<Case> cases()
 
 class FileRoundTripTest : public Q3ApiTest, public ::testing::WithParamInterface<std::size_t> {};
 
-std::vector<std::uint32_t> render(TQ3Object object)
-{
-    Pixmap image(96, 72);
-    const TQ3ViewAngleAspectCameraData cameraData =
-        viewAngleCamera({3, 4, 8}, {0, 0, 0}, {0, 1, 0}, 0.8, 96.0 / 72.0);
-    TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
-    std::vector<std::uint32_t> words;
-    {
-        TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera);
-        EXPECT_EQ(view.render([&](TQ3ViewObject v) { Q3Object_Submit(object, v); }), kQ3ViewStatusDone);
-    }
-    Q3Object_Dispose(camera);
-    for (unsigned long y = 0; y < image.height(); ++y)
-        for (unsigned long x = 0; x < image.width(); ++x)
-            words.push_back(image.word(x, y));
-    return words;
-}
-
 } // namespace
 
 TEST_P(FileRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataAndImage)
@@ -371,7 +353,7 @@ TEST_P(FileRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataAndImage)
     SCOPED_TRACE(c.name);
     TQ3Object original = c.make();
     ASSERT_NE(original, nullptr);
-    const auto expected = render(original);
+    const auto expected = renderedWords(original);
     for (TQ3FileMode mode : kModes) {
         SCOPED_TRACE(mode);
         const auto bytes = writeObjects({original}, mode);
@@ -388,7 +370,7 @@ TEST_P(FileRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataAndImage)
         Q3Object_Dispose(file);
         EXPECT_EQ(Q3Object_GetLeafType(back), Q3Object_GetLeafType(original));
         EXPECT_TRUE(c.same(original, back));
-        EXPECT_TRUE(render(back) == expected);
+        EXPECT_TRUE(renderedWords(back) == expected);
         Q3Object_Dispose(back);
     }
     Q3Object_Dispose(original);

@@ -11,9 +11,11 @@
 #include "QD3DSet.h"
 #include "QD3DStorage.h"
 #include "QD3DView.h"
+#include "RenderTestSupport.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -157,6 +159,27 @@ inline TQ3Error readError(const std::vector<unsigned char>& bytes)
     }
     Q3Object_Dispose(file);
     return error;
+}
+
+/// The pixels (ARGB32 words, top row first) of `object` drawn alone by the
+/// interactive renderer into 96 x 72 through one fixed camera: round trips
+/// compare these for the object written and the object read back.
+inline std::vector<std::uint32_t> renderedWords(TQ3Object object)
+{
+    Pixmap image(96, 72);
+    const TQ3ViewAngleAspectCameraData cameraData =
+        viewAngleCamera({3, 4, 8}, {0, 0, 0}, {0, 1, 0}, 0.8, 96.0 / 72.0);
+    TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
+    std::vector<std::uint32_t> words;
+    {
+        TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera);
+        EXPECT_EQ(view.render([&](TQ3ViewObject v) { Q3Object_Submit(object, v); }), kQ3ViewStatusDone);
+    }
+    Q3Object_Dispose(camera);
+    for (unsigned long y = 0; y < image.height(); ++y)
+        for (unsigned long x = 0; x < image.width(); ++x)
+            words.push_back(image.word(x, y));
+    return words;
 }
 
 } // namespace q3test
