@@ -20,6 +20,8 @@ const std::vector<ClassIO>& classes()
         addAttributeClasses(all);
         addGroupClasses(all);
         addStateClasses(all);
+        addCameraClasses(all);
+        addPixmapMarkerClasses(all);
         return all;
     }();
     return table;

@@ -63,6 +63,10 @@ void addComplexGeometryClasses(std::vector<ClassIO>& table);
 void addAttributeClasses(std::vector<ClassIO>& table);
 void addGroupClasses(std::vector<ClassIO>& table);
 void addStateClasses(std::vector<ClassIO>& table);
+/// Cameras and their placement, range and view port (CameraIO.cpp).
+void addCameraClasses(std::vector<ClassIO>& table);
+/// The pixmap marker (PixmapMarkerIO.cpp).
+void addPixmapMarkerClasses(std::vector<ClassIO>& table);
 
 /// Reading one file: builds objects from nodes, resolving references once
 /// each (so two references give one object) and refusing cycles.
