@@ -5,16 +5,22 @@
  *
  *   q3render model.3dmf -o image.png [--size WIDTHxHEIGHT] [--renderer interactive | wireframe]
  *            [--subdivision constant:C1,C2 | world:LENGTH | screen:PIXELS] [--background R,G,B]
+ *            [--fit-camera]
  *
- * The camera looks at the centre of the model's bounding box from the front,
- * a little above and to the right, far enough for the whole box to fit its
- * 40-degree field of view. The model is lit by the first light group in the
- * file, or, as QuickDraw 3D's viewer lit models that bring no lights, by a
- * dim white ambient light and a white directional light shining from over
- * the viewer's shoulder. Defaults: 400x300,
- * interactive, constant subdivision 16 x 16, a white background. Exit status:
- * 0 done, 1 bad arguments, 2 the model cannot be read, 3 it cannot be drawn or
- * the image cannot be written. */
+ * When the file holds a camera (at its top level), the image is what the
+ * first one sees, with its aspect ratio matched to the image's so that the
+ * image is never stretched (Q3's choice): a view angle aspect camera takes
+ * the image's width / height (keeping its field of view), a view plane or
+ * orthographic camera keeps its vertical extent and centre and gets the
+ * width that fits (both scaled for a view port that is not square). Otherwise, or with --fit-camera, the camera looks at the centre of
+ * the model's bounding box from the front, a little above and to the right,
+ * far enough for the whole box to fit its 40-degree field of view. The model
+ * is lit by the first light group in the file, or, as QuickDraw 3D's viewer
+ * lit models that bring no lights, by a dim white ambient light and a white
+ * directional light shining from over the viewer's shoulder. Defaults:
+ * 400x300, interactive, constant subdivision 16 x 16, a white background.
+ * Exit status: 0 done, 1 bad arguments, 2 the model cannot be read, 3 it
+ * cannot be drawn or the image cannot be written. */
 
 #include "q3load.h"
 #include "q3png.h"
@@ -31,13 +37,70 @@
 #include <math.h>
 #include <string.h>
 
+static void printUsage(FILE *to)
+{
+    fprintf(to, "usage: q3render model.3dmf -o image.png [--size WIDTHxHEIGHT]\n"
+                "                [--renderer interactive | wireframe]\n"
+                "                [--subdivision constant:C1,C2 | world:LENGTH | screen:PIXELS]\n"
+                "                [--background R,G,B] [--fit-camera]\n"
+                "\n"
+                "  -o image.png    the PNG to write\n"
+                "  --size          the image's size in pixels (default 400x300)\n"
+                "  --renderer      interactive (default) or wireframe\n"
+                "  --subdivision   how curves and surfaces are subdivided (default constant:16,16)\n"
+                "  --background    the background colour, 0..1 each (default 1,1,1)\n"
+                "  --fit-camera    ignore the file's camera and fit one to the model's bounds\n"
+                "                  (the default when the file has no camera); a file's camera\n"
+                "                  is used with its aspect ratio matched to the image's\n");
+}
+
 static int usage(void)
 {
-    fprintf(stderr, "usage: q3render model.3dmf -o image.png [--size WIDTHxHEIGHT]\n"
-                    "                [--renderer interactive | wireframe]\n"
-                    "                [--subdivision constant:C1,C2 | world:LENGTH | screen:PIXELS]\n"
-                    "                [--background R,G,B]\n");
+    printUsage(stderr);
     return 1;
+}
+
+/* A copy of a file's camera whose visible rectangle has the image's aspect
+ * ratio (width / height), accounting for a view port that is not square. */
+static TQ3CameraObject adaptedCamera(TQ3CameraObject fileCamera, float imageAspect)
+{
+    TQ3CameraObject camera = Q3Object_Duplicate(fileCamera);
+    TQ3CameraViewPort viewPort;
+    float aspect;
+    if (camera == NULL || Q3Camera_GetViewPort(camera, &viewPort) != kQ3Success) {
+        if (camera != NULL)
+            Q3Object_Dispose(camera);
+        return NULL;
+    }
+    aspect = imageAspect * viewPort.height / viewPort.width;
+    switch (Q3Camera_GetType(camera)) {
+    case kQ3CameraTypeViewAngleAspect:
+        Q3ViewAngleAspectCamera_SetAspectRatio(camera, aspect);
+        break;
+    case kQ3CameraTypeViewPlane: {
+        TQ3ViewPlaneCameraData data;
+        Q3ViewPlaneCamera_GetData(camera, &data);
+        data.halfWidthAtViewPlane = data.halfHeightAtViewPlane * aspect;
+        Q3ViewPlaneCamera_SetData(camera, &data);
+        break;
+    }
+    case kQ3CameraTypeOrthographic: {
+        TQ3OrthographicCameraData data;
+        float centre, halfWidth;
+        Q3OrthographicCamera_GetData(camera, &data);
+        centre = (data.left + data.right) / 2;
+        halfWidth = fabsf(data.top - data.bottom) / 2 * aspect;
+        if (data.right < data.left)
+            halfWidth = -halfWidth;
+        data.left = centre - halfWidth;
+        data.right = centre + halfWidth;
+        Q3OrthographicCamera_SetData(camera, &data);
+        break;
+    }
+    default:
+        break;
+    }
+    return camera;
 }
 
 static int parseSubdivision(const char *text, TQ3SubdivisionStyleData *style)
@@ -98,6 +161,7 @@ int main(int argc, char **argv)
     TQ3ObjectType renderer = kQ3RendererTypeInteractive;
     TQ3SubdivisionStyleData subdivision = {kQ3SubdivisionMethodConstant, 16.0f, 16.0f};
     TQ3ColorARGB background = {1.0f, 1.0f, 1.0f, 1.0f};
+    int fitCamera = 0;
     TQ3Object *objects = NULL;
     long count, i;
     int status = 0;
@@ -129,6 +193,11 @@ int main(int argc, char **argv)
             if (sscanf(value, "%f,%f,%f", &background.r, &background.g, &background.b) != 3)
                 return usage();
             ++arg;
+        } else if (strcmp(a, "--fit-camera") == 0) {
+            fitCamera = 1;
+        } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            printUsage(stdout);
+            return 0;
         } else if (a[0] == '-' || in != NULL) {
             return usage();
         } else {
@@ -162,11 +231,14 @@ int main(int argc, char **argv)
         const float fov = 0.6981317f; /* 40 degrees */
         TQ3ViewStatus done;
         TQ3GroupObject fileLights = NULL;
+        TQ3CameraObject fileCamera = NULL;
         for (i = 0; i < count; ++i) {
             if (Q3Object_IsDrawable(objects[i]))
                 Q3Group_AddObject(model, objects[i]);
             else if (fileLights == NULL && Q3Object_GetLeafType(objects[i]) == kQ3GroupTypeLight)
                 fileLights = objects[i];
+            else if (fileCamera == NULL && Q3Object_IsType(objects[i], kQ3ShapeTypeCamera))
+                fileCamera = objects[i];
         }
         memset(&contextData, 0, sizeof contextData);
         contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
@@ -184,37 +256,45 @@ int main(int argc, char **argv)
         contextData.pixmap.byteOrder = kQ3EndianBig;
         context = Q3PixmapDrawContext_New(&contextData);
 
-        if (boundsOf(view, model, &box) && box.isEmpty == kQ3False) {
-            TQ3Vector3D diagonal;
-            centre.x = (box.min.x + box.max.x) / 2;
-            centre.y = (box.min.y + box.max.y) / 2;
-            centre.z = (box.min.z + box.max.z) / 2;
-            Q3Point3D_Subtract(&box.max, &box.min, &diagonal);
-            radius = Q3Vector3D_Length(&diagonal) / 2;
-            if (!(radius > 1e-6f))
-                radius = 1.0f;
+        if (fileCamera != NULL && !fitCamera) {
+            TQ3CameraPlacement placement;
+            camera = adaptedCamera(fileCamera, (float)width / (float)height);
+            Q3Camera_GetPlacement(fileCamera, &placement);
+            Q3Point3D_Subtract(&placement.pointOfInterest, &placement.cameraLocation, &viewDirection);
+            Q3Vector3D_Normalize(&viewDirection, &viewDirection);
+        } else {
+            if (boundsOf(view, model, &box) && box.isEmpty == kQ3False) {
+                TQ3Vector3D diagonal;
+                centre.x = (box.min.x + box.max.x) / 2;
+                centre.y = (box.min.y + box.max.y) / 2;
+                centre.z = (box.min.z + box.max.z) / 2;
+                Q3Point3D_Subtract(&box.max, &box.min, &diagonal);
+                radius = Q3Vector3D_Length(&diagonal) / 2;
+                if (!(radius > 1e-6f))
+                    radius = 1.0f;
+            }
+            Q3Vector3D_Normalize(&toEye, &toEye);
+            distance = radius / sinf(fov / 2) * 1.05f;
+            memset(&cameraData, 0, sizeof cameraData);
+            cameraData.cameraData.placement.cameraLocation.x = centre.x + toEye.x * distance;
+            cameraData.cameraData.placement.cameraLocation.y = centre.y + toEye.y * distance;
+            cameraData.cameraData.placement.cameraLocation.z = centre.z + toEye.z * distance;
+            cameraData.cameraData.placement.pointOfInterest = centre;
+            cameraData.cameraData.placement.upVector.y = 1.0f;
+            cameraData.cameraData.range.hither =
+                distance - radius * 1.5f > distance * 0.01f ? distance - radius * 1.5f : distance * 0.01f;
+            cameraData.cameraData.range.yon = distance + radius * 1.5f;
+            cameraData.cameraData.viewPort.origin.x = -1.0f;
+            cameraData.cameraData.viewPort.origin.y = 1.0f;
+            cameraData.cameraData.viewPort.width = 2.0f;
+            cameraData.cameraData.viewPort.height = 2.0f;
+            cameraData.fov = fov;
+            cameraData.aspectRatioXToY = (float)width / (float)height;
+            camera = Q3ViewAngleAspectCamera_New(&cameraData);
+            viewDirection.x = -toEye.x;
+            viewDirection.y = -toEye.y;
+            viewDirection.z = -toEye.z;
         }
-        Q3Vector3D_Normalize(&toEye, &toEye);
-        distance = radius / sinf(fov / 2) * 1.05f;
-        memset(&cameraData, 0, sizeof cameraData);
-        cameraData.cameraData.placement.cameraLocation.x = centre.x + toEye.x * distance;
-        cameraData.cameraData.placement.cameraLocation.y = centre.y + toEye.y * distance;
-        cameraData.cameraData.placement.cameraLocation.z = centre.z + toEye.z * distance;
-        cameraData.cameraData.placement.pointOfInterest = centre;
-        cameraData.cameraData.placement.upVector.y = 1.0f;
-        cameraData.cameraData.range.hither = distance - radius * 1.5f > distance * 0.01f ? distance - radius * 1.5f
-                                                                                          : distance * 0.01f;
-        cameraData.cameraData.range.yon = distance + radius * 1.5f;
-        cameraData.cameraData.viewPort.origin.x = -1.0f;
-        cameraData.cameraData.viewPort.origin.y = 1.0f;
-        cameraData.cameraData.viewPort.width = 2.0f;
-        cameraData.cameraData.viewPort.height = 2.0f;
-        cameraData.fov = fov;
-        cameraData.aspectRatioXToY = (float)width / (float)height;
-        camera = Q3ViewAngleAspectCamera_New(&cameraData);
-        viewDirection.x = -toEye.x;
-        viewDirection.y = -toEye.y;
-        viewDirection.z = -toEye.z;
         lights = fileLights != NULL ? Q3Shared_GetReference(fileLights) : defaultLights(&viewDirection);
 
         if (argb == NULL || rgba == NULL || context == NULL || camera == NULL ||

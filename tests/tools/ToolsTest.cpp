@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -97,6 +99,74 @@ TEST(Q3Render, AFileItCannotReadIsAClearMessageAndExitStatusTwo)
     EXPECT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + kScene, &errors), 1);
     EXPECT_NE(errors.find("usage"), std::string::npos);
     std::remove(junk.c_str());
+}
+
+// The pixels of an image that are clearly one primary colour (the lit
+// squares of camera_scene.3dmf) and their bounding box.
+struct ColourArea {
+    int count = 0, minX = 1 << 30, minY = 1 << 30, maxX = -1, maxY = -1;
+};
+
+ColourArea areaOf(const q3test::RgbaImage& image, int channel)
+{
+    ColourArea area;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const unsigned char* p = image.at(x, y);
+            bool strong = p[channel] > 100;
+            for (int c = 0; c < 3; ++c)
+                strong = strong && (c == channel || p[c] < 60);
+            if (!strong)
+                continue;
+            ++area.count;
+            area.minX = std::min(area.minX, x);
+            area.maxX = std::max(area.maxX, x);
+            area.minY = std::min(area.minY, y);
+            area.maxY = std::max(area.maxY, y);
+        }
+    return area;
+}
+
+TEST(Q3Render, AFilesCameraIsUsedWithTheImagesAspectUnlessFitCameraIsAsked)
+{
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/camera_scene.3dmf";
+    const std::string own = scratch("own_camera.png");
+    const std::string fitted = scratch("fitted_camera.png");
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + own + " --size 200x100"), 0);
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + fitted + " --size 200x100 --fit-camera"), 0);
+    q3test::RgbaImage a, b;
+    ASSERT_TRUE(q3test::readPng(own, &a));
+    ASSERT_TRUE(q3test::readPng(fitted, &b));
+    // The file's camera, 4 units in front of the unit green square with a
+    // vertical field of view of 0.5 radians, sees only that square, centred,
+    // 100 * 0.5 / (4 tan 0.25) pixels high and, the aspect ratio matched to
+    // the image's, as many wide (a camera left at aspect 1 would stretch it
+    // to twice that width).
+    const double side = 100 * 0.5 / (4 * std::tan(0.25));
+    const ColourArea green = areaOf(a, 1);
+    EXPECT_EQ(areaOf(a, 0).count, 0);
+    ASSERT_GT(green.count, 0);
+    EXPECT_NEAR(green.maxX - green.minX + 1, side, 2.0);
+    EXPECT_NEAR(green.maxY - green.minY + 1, side, 2.0);
+    EXPECT_NEAR((green.minX + green.maxX + 1) / 2.0, 100, 1.5);
+    EXPECT_NEAR((green.minY + green.maxY + 1) / 2.0, 50, 1.5);
+    // The fitted camera sees both squares, each far smaller.
+    const ColourArea fittedGreen = areaOf(b, 1);
+    EXPECT_GT(areaOf(b, 0).count, 0);
+    EXPECT_GT(fittedGreen.count, 0);
+    EXPECT_LT(fittedGreen.count * 4, green.count);
+    for (const std::string& path : {own, fitted})
+        std::remove(path.c_str());
+}
+
+TEST(Q3Render, HelpNamesEveryOptionOnStandardOutput)
+{
+    const std::string help = scratch("help.txt");
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " --help > " + help), 0);
+    const std::string text = slurp(help);
+    for (const char* option : {"-o", "--size", "--renderer", "--subdivision", "--background", "--fit-camera"})
+        EXPECT_NE(text.find(option), std::string::npos) << option;
+    std::remove(help.c_str());
 }
 
 TEST(Q3Convert, TextToBinaryToTextGivesTheSameText)
