@@ -92,6 +92,9 @@ void expectOrthographic(TQ3Object camera, const TQ3OrthographicCameraData& expec
 {
     ASSERT_NE(camera, nullptr);
     EXPECT_EQ(Q3Object_IsType(camera, kQ3ShapeTypeCamera), kQ3True);
+    EXPECT_EQ(Q3Object_GetType(camera), kQ3ObjectTypeShared);
+    EXPECT_EQ(Q3Shared_GetType(camera), kQ3SharedTypeShape);
+    EXPECT_EQ(Q3Shape_GetType(camera), kQ3ShapeTypeCamera);
     EXPECT_EQ(Q3Object_GetLeafType(camera), kQ3CameraTypeOrthographic);
     EXPECT_EQ(Q3Camera_GetType(camera), kQ3CameraTypeOrthographic);
     TQ3OrthographicCameraData got;
