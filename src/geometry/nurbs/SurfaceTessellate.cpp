@@ -77,6 +77,9 @@ constexpr std::uint32_t kNone = ParamMesh::kNone;
 constexpr std::size_t kLayoutBudget = kMaxTriangles - kMaxTriangles / 8;
 constexpr unsigned kMaxIterations = 60;
 constexpr std::size_t kMaxRowProbes = 257;
+// Most visibility cells a layout tests (Tessellator::setUpCells); a patch with
+// more spans is laid out without them.
+constexpr std::size_t kMaxCells = std::size_t{1} << 18;
 
 double distance(const Point3& a, const Point3& b)
 {
@@ -90,6 +93,7 @@ struct RowPoint {
     Point3 image;
     bool mapped = false;
     bool knot = false;
+    bool culled = false; // screen space: both sides of it hidden in the row's band
 };
 
 struct Row {
@@ -133,6 +137,7 @@ public:
         m_adaptive = m_how.adaptive;
         std::vector<Row> rows;
         if (m_adaptive) {
+            setUpCells();
             m_c = m_how.maxEdge > 0.0 ? m_how.maxEdge : kInfinity;
             m_out.effectiveValue = m_c;
             if (!(m_how.maxEdge > 0.0))
@@ -229,7 +234,14 @@ private:
         row.points.push_back(first);
         const unsigned probes = std::max(m_s.uOrder, 8u);
         std::vector<RowPoint> table(probes + 1);
-        for (const Span& span : m_uSpans) {
+        const std::size_t band = m_culling ? vCell(v) : 0;
+        const bool onCut = m_culling && m_vCuts[band] == v && band > 0;
+        auto hidden = [&](std::size_t uCell) {
+            return m_culling && bandHidden(uCell, band, onCut);
+        };
+        for (std::size_t si = 0; si < m_uSpans.size(); ++si) {
+            const Span& span = m_uSpans[si];
+            const std::size_t base = si * probes;
             for (unsigned j = 1; j <= probes; ++j)
                 table[j] = sample(j == probes ? span.end : span.start + (span.end - span.start) * j / probes);
             unsigned j = 1;
@@ -240,9 +252,28 @@ private:
                 const RowPoint cur = row.points.back();
                 while (j <= probes && table[j].u <= cur.u)
                     ++j;
+                // A probe interval the view cannot show (on both sides of
+                // the row) is crossed in one step, unmeasured.
+                if (j <= probes && hidden(base + j - 1)) {
+                    if (j < probes) {
+                        push(row, table[j]);
+                        continue;
+                    }
+                    break;
+                }
                 unsigned k = j;
-                while (k <= probes && chord(cur, table[k]) <= s)
+                bool toHidden = false;
+                while (k <= probes && chord(cur, table[k]) <= s) {
+                    if (k < probes && hidden(base + k)) {
+                        toHidden = true;
+                        break;
+                    }
                     ++k;
+                }
+                if (toHidden) {
+                    push(row, table[k]);
+                    continue;
+                }
                 if (k > probes)
                     break;
                 if (!cur.mapped || !table[k].mapped) {
@@ -294,7 +325,82 @@ private:
                 row.points.back().knot = true;
         }
         m_lastRowSize = row.points.size();
+        if (m_culling)
+            for (RowPoint& p : row.points) {
+                // The cells on both sides of p, in the row's band.
+                const std::size_t c = cellOf(m_uCuts, p.u);
+                p.culled = hidden(c) && (m_uCuts[c] != p.u || c == 0 || hidden(c - 1));
+            }
         return row;
+    }
+
+    // ---- Visibility cells (screen space) ----------------------------------
+
+    // The layout's probe intervals (max(order, 8) per span in each
+    // direction) cut the domain into cells; a cell whose piece of surface
+    // lies outside one plane of the view volume (SurfaceHull) is hidden. The
+    // rows march across an interval hidden in the cells on both sides of the
+    // row in one step, and rows are placed by the distances at the vertices
+    // that are not so culled: a patch mostly outside the view is laid out
+    // densely only near what can be seen. (The refinement still splits every
+    // edge of a triangle that may be seen.) Off when nothing is hidden, so
+    // the layout is then the same as without a view.
+    void setUpCells()
+    {
+        m_culling = false;
+        if (!m_hull)
+            return;
+        const unsigned pu = std::max(m_s.uOrder, 8u), pv = std::max(m_s.vOrder, 8u);
+        auto cuts = [](const std::vector<Span>& spans, unsigned probes, std::vector<double>& out) {
+            out.clear();
+            for (const Span& span : spans)
+                for (unsigned i = 0; i < probes; ++i)
+                    out.push_back(span.start + (span.end - span.start) * i / probes);
+            out.push_back(spans.back().end);
+        };
+        const std::size_t columns = m_uSpans.size() * pu, rows = m_vSpans.size() * pv;
+        if (columns * rows > kMaxCells)
+            return;
+        cuts(m_uSpans, pu, m_uCuts);
+        cuts(m_vSpans, pv, m_vCuts);
+        m_cellColumns = columns;
+        m_hiddenCells.assign(columns * rows, 0);
+        bool any = false;
+        for (std::size_t sv = 0; sv < m_vSpans.size(); ++sv)
+            for (std::size_t su = 0; su < m_uSpans.size(); ++su) {
+                const Span& a = m_uSpans[su];
+                const Span& b = m_vSpans[sv];
+                const bool whole = m_hull->outside(a.start, a.end, b.start, b.end);
+                if (!whole && m_hull->inside(a.start, a.end, b.start, b.end))
+                    continue;
+                for (unsigned j = 0; j < pv; ++j)
+                    for (unsigned i = 0; i < pu; ++i) {
+                        const std::size_t cu = su * pu + i, cv = sv * pv + j;
+                        const bool out = whole || m_hull->outside(m_uCuts[cu], m_uCuts[cu + 1], m_vCuts[cv],
+                                                                  m_vCuts[cv + 1]);
+                        m_hiddenCells[cv * columns + cu] = out ? 1 : 0;
+                        any = any || out;
+                    }
+            }
+        m_culling = any;
+    }
+
+    // The cell (interval between cuts) holding t: the last cut at or before it.
+    static std::size_t cellOf(const std::vector<double>& cuts, double t)
+    {
+        const auto it = std::upper_bound(cuts.begin(), cuts.end(), t);
+        const std::size_t i = it == cuts.begin() ? 0 : std::size_t(it - cuts.begin()) - 1;
+        return std::min(i, cuts.size() - 2);
+    }
+    std::size_t vCell(double v) const { return cellOf(m_vCuts, v); }
+
+    // Whether u cell `column` is hidden in the band of a row in v cell `band`
+    // (and in the cell below, for a row on a cut).
+    bool bandHidden(std::size_t column, std::size_t band, bool onCut) const
+    {
+        if (!m_hiddenCells[band * m_cellColumns + column])
+            return false;
+        return !onCut || m_hiddenCells[(band - 1) * m_cellColumns + column] != 0;
     }
 
     void push(Row& row, const RowPoint& p)
@@ -389,8 +495,13 @@ private:
                 const std::size_t n = cur.points.size();
                 const std::size_t stride = n > kMaxRowProbes ? (n + kMaxRowProbes - 1) / kMaxRowProbes : 1;
                 for (std::size_t i = 0; i < n; ++i)
-                    if (i % stride == 0 || cur.points[i].knot)
+                    if ((i % stride == 0 || cur.points[i].knot) && !cur.points[i].culled)
                         probePoints.push_back(&cur.points[i]);
+                // With parts hidden, every cut of the visibility cells is
+                // reached by a row, so that strips stay inside the bands
+                // the rows were culled by.
+                const double ceiling =
+                    m_culling ? *std::upper_bound(m_vCuts.begin(), m_vCuts.end(), cur.v) : span.end;
                 // Scan the span's probe rows for the first one too far (or
                 // without an image), then close in.
                 double lo = cur.v;
@@ -398,7 +509,7 @@ private:
                 double next = span.end;
                 bool found = false;
                 // Try the last strip's height first.
-                if (rowStep > 0.0 && cur.v + rowStep < span.end) {
+                if (rowStep > 0.0 && cur.v + rowStep < span.end && cur.v + rowStep <= ceiling) {
                     bool unmapped = false;
                     const double guess = cur.v + rowStep;
                     const double d = rowDistance(probePoints, guess, unmapped);
@@ -428,6 +539,7 @@ private:
                 }
                 if (!found)
                     next = span.end;
+                next = std::min(next, ceiling);
                 if (m_mesh.keyY(next) == m_mesh.keyY(cur.v))
                     next = std::min(span.end, cur.v + height / double(ParamMesh::kGrid) * 2.0);
                 if (!(next > cur.v))
@@ -1537,6 +1649,11 @@ private:
     bool m_trimmed = false;
 
     std::optional<SurfaceHull> m_hull;
+    bool m_culling = false;
+    std::vector<double> m_uCuts;
+    std::vector<double> m_vCuts;
+    std::size_t m_cellColumns = 0;
+    std::vector<std::uint8_t> m_hiddenCells;
     ParamMesh m_mesh;
     std::vector<Point3> m_local;
     std::vector<Point3> m_image;
