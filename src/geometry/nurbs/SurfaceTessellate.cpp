@@ -46,7 +46,12 @@
 //    where the surface has a crease (a knot repeated order - 1 times).
 //    An edge with one end without an image (nearer than the hither plane) is
 //    measured by the part of it that is drawn: from its visible end to where
-//    the chord crosses into the half-space without an image.
+//    the chord crosses into the half-space without an image. An edge that a
+//    triangle thinner than the key grid blocks (nearly collinear vertices)
+//    has the thin triangles around it flipped away first.
+//    Screen space: what the view cannot show is not refined (the triangles'
+//    Bezier hulls, SurfaceHull) nor laid out densely (visibility cells at the
+//    rows' probe intervals).
 // 5. Output: each vertex evaluated with its exact partial derivatives for
 //    its unit normal, vertices of one row sharing the row's collapsed columns.
 //
@@ -1374,6 +1379,86 @@ private:
                     consider(tri.v[(e + 1) % 3], tri.v[(e + 2) % 3]);
             }
         }
+        // A triangle whose third vertex lies within a few key cells of the
+        // line of its longest side (nearly collinear vertices, such as the
+        // points where edges were split at the hither plane when it cuts the
+        // patch along a straight line in (u, v)) blocks the split of an edge
+        // it holds: no point of the key grid splits that side into two
+        // counterclockwise triangles. Such thin triangles around the edge
+        // (those reached from it through thin triangles, a few dozen at
+        // most) have their longest side flipped wherever that makes the
+        // thinner of the two triangles less thin, until none can be: a
+        // strip of collinear vertices is then fanned from the vertices off
+        // its line. Each flip raises a minimum height, and flips are counted
+        // against a budget proportional to the mesh, so this always ends.
+        std::size_t sliverFlips = 0;
+        const std::size_t sliverBudget = 4 * m_mesh.triangles.size() + 1024;
+        std::vector<std::uint32_t> thin;
+        auto height = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+            const double twice = double(m_mesh.orient(a, b, c));
+            if (twice <= 0.0)
+                return 0.0;
+            double longest = 0.0;
+            for (const auto& side : {std::make_pair(a, b), std::make_pair(b, c), std::make_pair(c, a)}) {
+                const ParamMesh::Vertex& p = m_mesh.vertices[side.first];
+                const ParamMesh::Vertex& w = m_mesh.vertices[side.second];
+                longest = std::max(longest, std::hypot(double(p.x - w.x), double(p.y - w.y)));
+            }
+            return twice / longest;
+        };
+        auto clearSlivers = [&](std::uint32_t a, std::uint32_t b) {
+            std::uint32_t t;
+            int e;
+            if (!m_mesh.findEdge(a, b, t, e) && !m_mesh.findEdge(b, a, t, e))
+                return false;
+            thin.clear();
+            for (const std::uint32_t x : {t, m_mesh.triangles[t].neighbour[e]})
+                if (x != kNone)
+                    thin.push_back(x);
+            for (std::size_t i = 0; i < thin.size() && thin.size() < 64; ++i)
+                for (const std::uint32_t n : m_mesh.triangles[thin[i]].neighbour)
+                    if (n != kNone && std::find(thin.begin(), thin.end(), n) == thin.end()) {
+                        const ParamMesh::Triangle& tri = m_mesh.triangles[n];
+                        if (!roomy(tri.v[0], tri.v[1], tri.v[2]))
+                            thin.push_back(n);
+                    }
+            bool changed = false;
+            for (bool progress = true; progress && sliverFlips < sliverBudget;) {
+                progress = false;
+                for (const std::uint32_t x : thin) {
+                    const ParamMesh::Triangle& tri = m_mesh.triangles[x];
+                    if (!tri.alive || roomy(tri.v[0], tri.v[1], tri.v[2]))
+                        continue;
+                    int longest = 0;
+                    double best = -1.0;
+                    for (int k = 0; k < 3; ++k) {
+                        const ParamMesh::Vertex& p = m_mesh.vertices[tri.v[(k + 1) % 3]];
+                        const ParamMesh::Vertex& w = m_mesh.vertices[tri.v[(k + 2) % 3]];
+                        const double length = std::hypot(double(p.x - w.x), double(p.y - w.y));
+                        if (length > best) {
+                            best = length;
+                            longest = k;
+                        }
+                    }
+                    if (!flippable(x, longest))
+                        continue;
+                    const std::uint32_t p = tri.v[(longest + 1) % 3], w = tri.v[(longest + 2) % 3];
+                    const std::uint32_t apex = tri.v[longest], across = opposite(x, longest);
+                    const double before = std::min(height(apex, p, w), height(across, w, p));
+                    const double after = std::min(height(apex, p, across), height(apex, across, w));
+                    if (!(after > before) || !m_mesh.flip(x, longest))
+                        continue;
+                    ++sliverFlips;
+                    changed = progress = true;
+                    consider(apex, across);
+                    consider(p, apex);
+                    consider(apex, w);
+                    consider(w, across);
+                    consider(across, p);
+                }
+            }
+            return changed;
+        };
         std::vector<std::pair<std::uint32_t, std::uint32_t>> stack;
         while (!heap.empty()) {
             const Long edge = heap.top();
@@ -1443,6 +1528,10 @@ private:
                 // wherever it lies, and the flips around it take the edge out.
                 const std::uint32_t q = m_mesh.triangles[t].v[(e + 1) % 3], r = m_mesh.triangles[t].v[(e + 2) % 3];
                 m_mesh.vertices.pop_back();
+                if (sliverFlips < sliverBudget && clearSlivers(edge.a, edge.b)) {
+                    consider(edge.a, edge.b);
+                    continue;
+                }
                 if (d != kNone && !((m_mesh.triangles[t].fixed >> e) & 1u) && drawnLength(c, d) < edge.length &&
                     roomy(c, q, d) && roomy(c, d, r) && m_mesh.flip(t, e)) {
                     consider(c, d);
