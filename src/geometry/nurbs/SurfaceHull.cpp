@@ -70,9 +70,11 @@ void SurfaceHull::planes(double x, double y, double z, double out[5]) const
     out[4] = -f[2];
 }
 
-unsigned SurfaceHull::outsidePlanes(std::size_t su, std::size_t sv, double u0, double u1, double v0,
-                                    double v1) const
+unsigned SurfaceHull::outsidePlanes(std::size_t su, std::size_t sv, double u0, double u1, double v0, double v1,
+                                    bool* straddles) const
 {
+    if (straddles != nullptr)
+        *straddles = false;
     const unsigned ku = m_s.uOrder, kv = m_s.vOrder;
     const std::size_t firstColumn = su + 1 - ku, firstRow = sv + 1 - kv;
     // Columns to Bezier form in v: grid[column][m].
@@ -89,12 +91,12 @@ unsigned SurfaceHull::outsidePlanes(std::size_t su, std::size_t sv, double u0, d
             std::copy(d[m], d[m] + 4, grid[c][m]);
     }
     unsigned mask = 31u;
-    for (unsigned m = 0; m < kv && mask != 0; ++m) {
+    for (unsigned m = 0; m < kv && (mask != 0 || straddles != nullptr); ++m) {
         double d[kMaxPatchOrder][4];
         for (unsigned c = 0; c < ku; ++c)
             std::copy(grid[c][m], grid[c][m] + 4, d[c]);
         toBezier(m_s.uKnots, su, ku, u0, u1, d);
-        for (unsigned c = 0; c < ku && mask != 0; ++c) {
+        for (unsigned c = 0; c < ku && (mask != 0 || straddles != nullptr); ++c) {
             const double* h = d[c];
             double f[4];
             for (int i = 0; i < 4; ++i)
@@ -102,20 +104,22 @@ unsigned SurfaceHull::outsidePlanes(std::size_t su, std::size_t sv, double u0, d
                        m_clip[4 * i + 3] * h[3];
             const double values[5] = {f[3] + f[0], f[3] - f[0], f[3] + f[1], f[3] - f[1], -f[2]};
             const double margin = 1e-6 * (std::fabs(f[0]) + std::fabs(f[1]) + std::fabs(f[2]) + std::fabs(f[3]));
-            for (unsigned plane = 0; plane < 5; ++plane)
+            for (unsigned plane = 0; plane < 5; ++plane) {
                 if (!(values[plane] < -margin))
                     mask &= ~(1u << plane);
+                if (straddles != nullptr && !(values[plane] >= 0.0))
+                    *straddles = true;
+            }
         }
     }
     return mask;
 }
 
-bool SurfaceHull::outside(double u0, double u1, double v0, double v1) const
+template <class F>
+bool SurfaceHull::forEachPiece(double u0, double u1, double v0, double v1, F&& f) const
 {
     if (!(u0 <= u1) || !(v0 <= v1))
         return false;
-    unsigned mask = 31u;
-    bool any = false;
     // Spans with start <= hi and end >= lo; a piece of zero width at a span's
     // end belongs to the next span (or, at the domain's end, to the last).
     auto pieces = [](const std::vector<Span>& spans, double lo, double hi, std::vector<std::size_t>& out) {
@@ -133,6 +137,7 @@ bool SurfaceHull::outside(double u0, double u1, double v0, double v1) const
     std::vector<std::size_t> us, vs;
     pieces(m_uSpans, u0, u1, us);
     pieces(m_vSpans, v0, v1, vs);
+    bool any = false;
     for (std::size_t i : us)
         for (std::size_t j : vs) {
             const Span& su = m_uSpans[i];
@@ -142,12 +147,31 @@ bool SurfaceHull::outside(double u0, double u1, double v0, double v1) const
             if (!(a <= b) || !(c <= d) || !(a < su.end || su.end == m_uSpans.back().end) ||
                 !(c < sv.end || sv.end == m_vSpans.back().end))
                 return false;
-            mask &= outsidePlanes(su.knotIndex, sv.knotIndex, a, b, c, d);
             any = true;
-            if (mask == 0)
+            if (!f(su.knotIndex, sv.knotIndex, a, b, c, d))
                 return false;
         }
-    return any && mask != 0;
+    return any;
+}
+
+bool SurfaceHull::outside(double u0, double u1, double v0, double v1) const
+{
+    unsigned mask = 31u;
+    const bool all = forEachPiece(u0, u1, v0, v1, [&](std::size_t su, std::size_t sv, double a, double b, double c,
+                                                      double d) {
+        mask &= outsidePlanes(su, sv, a, b, c, d);
+        return mask != 0;
+    });
+    return all && mask != 0;
+}
+
+bool SurfaceHull::inside(double u0, double u1, double v0, double v1) const
+{
+    return forEachPiece(u0, u1, v0, v1, [&](std::size_t su, std::size_t sv, double a, double b, double c, double d) {
+        bool straddles = false;
+        outsidePlanes(su, sv, a, b, c, d, &straddles);
+        return !straddles;
+    });
 }
 
 } // namespace q3::nurbs

@@ -30,12 +30,24 @@ public:
     /// of it. O(spans covered * (uOrder^2 vOrder + vOrder^2 uOrder)).
     bool outside(double u0, double u1, double v0, double v1) const;
 
+    /// True when every Bezier control point of the surface over [u0, u1] x
+    /// [v0, v1] is inside all five planes (no margin): then no piece of it
+    /// can be outside one. Same cost as outside().
+    bool inside(double u0, double u1, double v0, double v1) const;
+
     /// The five plane values of local point p (each >= 0 inside the volume).
     void planes(double x, double y, double z, double out[5]) const;
 
 private:
-    // Bitmask of the planes the piece in span pair (su, sv) is outside of.
-    unsigned outsidePlanes(std::size_t su, std::size_t sv, double u0, double u1, double v0, double v1) const;
+    // Bitmask of the planes the piece in span pair (su, sv) is outside of;
+    // `straddles` (when given) tells whether any of its Bezier points is
+    // outside any plane.
+    unsigned outsidePlanes(std::size_t su, std::size_t sv, double u0, double u1, double v0, double v1,
+                           bool* straddles = nullptr) const;
+    // Calls f(su, sv, a, b, c, d) for each span pair's part of the
+    // rectangle; false when the rectangle is empty or malformed.
+    template <class F>
+    bool forEachPiece(double u0, double u1, double v0, double v1, F&& f) const;
 
     SurfaceRef m_s;
     std::array<double, 16> m_clip;

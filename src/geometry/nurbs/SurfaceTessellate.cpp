@@ -46,7 +46,12 @@
 //    where the surface has a crease (a knot repeated order - 1 times).
 //    An edge with one end without an image (nearer than the hither plane) is
 //    measured by the part of it that is drawn: from its visible end to where
-//    the chord crosses into the half-space without an image.
+//    the chord crosses into the half-space without an image. An edge that a
+//    triangle thinner than the key grid blocks (nearly collinear vertices)
+//    has the thin triangles around it flipped away first.
+//    Screen space: what the view cannot show is not refined (the triangles'
+//    Bezier hulls, SurfaceHull) nor laid out densely (visibility cells at the
+//    rows' probe intervals).
 // 5. Output: each vertex evaluated with its exact partial derivatives for
 //    its unit normal, vertices of one row sharing the row's collapsed columns.
 //
@@ -77,6 +82,9 @@ constexpr std::uint32_t kNone = ParamMesh::kNone;
 constexpr std::size_t kLayoutBudget = kMaxTriangles - kMaxTriangles / 8;
 constexpr unsigned kMaxIterations = 60;
 constexpr std::size_t kMaxRowProbes = 257;
+// Most visibility cells a layout tests (Tessellator::setUpCells); a patch with
+// more spans is laid out without them.
+constexpr std::size_t kMaxCells = std::size_t{1} << 18;
 
 double distance(const Point3& a, const Point3& b)
 {
@@ -90,6 +98,7 @@ struct RowPoint {
     Point3 image;
     bool mapped = false;
     bool knot = false;
+    bool culled = false; // screen space: both sides of it hidden in the row's band
 };
 
 struct Row {
@@ -133,6 +142,7 @@ public:
         m_adaptive = m_how.adaptive;
         std::vector<Row> rows;
         if (m_adaptive) {
+            setUpCells();
             m_c = m_how.maxEdge > 0.0 ? m_how.maxEdge : kInfinity;
             m_out.effectiveValue = m_c;
             if (!(m_how.maxEdge > 0.0))
@@ -229,7 +239,14 @@ private:
         row.points.push_back(first);
         const unsigned probes = std::max(m_s.uOrder, 8u);
         std::vector<RowPoint> table(probes + 1);
-        for (const Span& span : m_uSpans) {
+        const std::size_t band = m_culling ? vCell(v) : 0;
+        const bool onCut = m_culling && m_vCuts[band] == v && band > 0;
+        auto hidden = [&](std::size_t uCell) {
+            return m_culling && bandHidden(uCell, band, onCut);
+        };
+        for (std::size_t si = 0; si < m_uSpans.size(); ++si) {
+            const Span& span = m_uSpans[si];
+            const std::size_t base = si * probes;
             for (unsigned j = 1; j <= probes; ++j)
                 table[j] = sample(j == probes ? span.end : span.start + (span.end - span.start) * j / probes);
             unsigned j = 1;
@@ -240,9 +257,28 @@ private:
                 const RowPoint cur = row.points.back();
                 while (j <= probes && table[j].u <= cur.u)
                     ++j;
+                // A probe interval the view cannot show (on both sides of
+                // the row) is crossed in one step, unmeasured.
+                if (j <= probes && hidden(base + j - 1)) {
+                    if (j < probes) {
+                        push(row, table[j]);
+                        continue;
+                    }
+                    break;
+                }
                 unsigned k = j;
-                while (k <= probes && chord(cur, table[k]) <= s)
+                bool toHidden = false;
+                while (k <= probes && chord(cur, table[k]) <= s) {
+                    if (k < probes && hidden(base + k)) {
+                        toHidden = true;
+                        break;
+                    }
                     ++k;
+                }
+                if (toHidden) {
+                    push(row, table[k]);
+                    continue;
+                }
                 if (k > probes)
                     break;
                 if (!cur.mapped || !table[k].mapped) {
@@ -294,7 +330,82 @@ private:
                 row.points.back().knot = true;
         }
         m_lastRowSize = row.points.size();
+        if (m_culling)
+            for (RowPoint& p : row.points) {
+                // The cells on both sides of p, in the row's band.
+                const std::size_t c = cellOf(m_uCuts, p.u);
+                p.culled = hidden(c) && (m_uCuts[c] != p.u || c == 0 || hidden(c - 1));
+            }
         return row;
+    }
+
+    // ---- Visibility cells (screen space) ----------------------------------
+
+    // The layout's probe intervals (max(order, 8) per span in each
+    // direction) cut the domain into cells; a cell whose piece of surface
+    // lies outside one plane of the view volume (SurfaceHull) is hidden. The
+    // rows march across an interval hidden in the cells on both sides of the
+    // row in one step, and rows are placed by the distances at the vertices
+    // that are not so culled: a patch mostly outside the view is laid out
+    // densely only near what can be seen. (The refinement still splits every
+    // edge of a triangle that may be seen.) Off when nothing is hidden, so
+    // the layout is then the same as without a view.
+    void setUpCells()
+    {
+        m_culling = false;
+        if (!m_hull)
+            return;
+        const unsigned pu = std::max(m_s.uOrder, 8u), pv = std::max(m_s.vOrder, 8u);
+        auto cuts = [](const std::vector<Span>& spans, unsigned probes, std::vector<double>& out) {
+            out.clear();
+            for (const Span& span : spans)
+                for (unsigned i = 0; i < probes; ++i)
+                    out.push_back(span.start + (span.end - span.start) * i / probes);
+            out.push_back(spans.back().end);
+        };
+        const std::size_t columns = m_uSpans.size() * pu, rows = m_vSpans.size() * pv;
+        if (columns * rows > kMaxCells)
+            return;
+        cuts(m_uSpans, pu, m_uCuts);
+        cuts(m_vSpans, pv, m_vCuts);
+        m_cellColumns = columns;
+        m_hiddenCells.assign(columns * rows, 0);
+        bool any = false;
+        for (std::size_t sv = 0; sv < m_vSpans.size(); ++sv)
+            for (std::size_t su = 0; su < m_uSpans.size(); ++su) {
+                const Span& a = m_uSpans[su];
+                const Span& b = m_vSpans[sv];
+                const bool whole = m_hull->outside(a.start, a.end, b.start, b.end);
+                if (!whole && m_hull->inside(a.start, a.end, b.start, b.end))
+                    continue;
+                for (unsigned j = 0; j < pv; ++j)
+                    for (unsigned i = 0; i < pu; ++i) {
+                        const std::size_t cu = su * pu + i, cv = sv * pv + j;
+                        const bool out = whole || m_hull->outside(m_uCuts[cu], m_uCuts[cu + 1], m_vCuts[cv],
+                                                                  m_vCuts[cv + 1]);
+                        m_hiddenCells[cv * columns + cu] = out ? 1 : 0;
+                        any = any || out;
+                    }
+            }
+        m_culling = any;
+    }
+
+    // The cell (interval between cuts) holding t: the last cut at or before it.
+    static std::size_t cellOf(const std::vector<double>& cuts, double t)
+    {
+        const auto it = std::upper_bound(cuts.begin(), cuts.end(), t);
+        const std::size_t i = it == cuts.begin() ? 0 : std::size_t(it - cuts.begin()) - 1;
+        return std::min(i, cuts.size() - 2);
+    }
+    std::size_t vCell(double v) const { return cellOf(m_vCuts, v); }
+
+    // Whether u cell `column` is hidden in the band of a row in v cell `band`
+    // (and in the cell below, for a row on a cut).
+    bool bandHidden(std::size_t column, std::size_t band, bool onCut) const
+    {
+        if (!m_hiddenCells[band * m_cellColumns + column])
+            return false;
+        return !onCut || m_hiddenCells[(band - 1) * m_cellColumns + column] != 0;
     }
 
     void push(Row& row, const RowPoint& p)
@@ -389,8 +500,13 @@ private:
                 const std::size_t n = cur.points.size();
                 const std::size_t stride = n > kMaxRowProbes ? (n + kMaxRowProbes - 1) / kMaxRowProbes : 1;
                 for (std::size_t i = 0; i < n; ++i)
-                    if (i % stride == 0 || cur.points[i].knot)
+                    if ((i % stride == 0 || cur.points[i].knot) && !cur.points[i].culled)
                         probePoints.push_back(&cur.points[i]);
+                // With parts hidden, every cut of the visibility cells is
+                // reached by a row, so that strips stay inside the bands
+                // the rows were culled by.
+                const double ceiling =
+                    m_culling ? *std::upper_bound(m_vCuts.begin(), m_vCuts.end(), cur.v) : span.end;
                 // Scan the span's probe rows for the first one too far (or
                 // without an image), then close in.
                 double lo = cur.v;
@@ -398,7 +514,7 @@ private:
                 double next = span.end;
                 bool found = false;
                 // Try the last strip's height first.
-                if (rowStep > 0.0 && cur.v + rowStep < span.end) {
+                if (rowStep > 0.0 && cur.v + rowStep < span.end && cur.v + rowStep <= ceiling) {
                     bool unmapped = false;
                     const double guess = cur.v + rowStep;
                     const double d = rowDistance(probePoints, guess, unmapped);
@@ -428,6 +544,7 @@ private:
                 }
                 if (!found)
                     next = span.end;
+                next = std::min(next, ceiling);
                 if (m_mesh.keyY(next) == m_mesh.keyY(cur.v))
                     next = std::min(span.end, cur.v + height / double(ParamMesh::kGrid) * 2.0);
                 if (!(next > cur.v))
@@ -1262,6 +1379,86 @@ private:
                     consider(tri.v[(e + 1) % 3], tri.v[(e + 2) % 3]);
             }
         }
+        // A triangle whose third vertex lies within a few key cells of the
+        // line of its longest side (nearly collinear vertices, such as the
+        // points where edges were split at the hither plane when it cuts the
+        // patch along a straight line in (u, v)) blocks the split of an edge
+        // it holds: no point of the key grid splits that side into two
+        // counterclockwise triangles. Such thin triangles around the edge
+        // (those reached from it through thin triangles, a few dozen at
+        // most) have their longest side flipped wherever that makes the
+        // thinner of the two triangles less thin, until none can be: a
+        // strip of collinear vertices is then fanned from the vertices off
+        // its line. Each flip raises a minimum height, and flips are counted
+        // against a budget proportional to the mesh, so this always ends.
+        std::size_t sliverFlips = 0;
+        const std::size_t sliverBudget = 4 * m_mesh.triangles.size() + 1024;
+        std::vector<std::uint32_t> thin;
+        auto height = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+            const double twice = double(m_mesh.orient(a, b, c));
+            if (twice <= 0.0)
+                return 0.0;
+            double longest = 0.0;
+            for (const auto& side : {std::make_pair(a, b), std::make_pair(b, c), std::make_pair(c, a)}) {
+                const ParamMesh::Vertex& p = m_mesh.vertices[side.first];
+                const ParamMesh::Vertex& w = m_mesh.vertices[side.second];
+                longest = std::max(longest, std::hypot(double(p.x - w.x), double(p.y - w.y)));
+            }
+            return twice / longest;
+        };
+        auto clearSlivers = [&](std::uint32_t a, std::uint32_t b) {
+            std::uint32_t t;
+            int e;
+            if (!m_mesh.findEdge(a, b, t, e) && !m_mesh.findEdge(b, a, t, e))
+                return false;
+            thin.clear();
+            for (const std::uint32_t x : {t, m_mesh.triangles[t].neighbour[e]})
+                if (x != kNone)
+                    thin.push_back(x);
+            for (std::size_t i = 0; i < thin.size() && thin.size() < 64; ++i)
+                for (const std::uint32_t n : m_mesh.triangles[thin[i]].neighbour)
+                    if (n != kNone && std::find(thin.begin(), thin.end(), n) == thin.end()) {
+                        const ParamMesh::Triangle& tri = m_mesh.triangles[n];
+                        if (!roomy(tri.v[0], tri.v[1], tri.v[2]))
+                            thin.push_back(n);
+                    }
+            bool changed = false;
+            for (bool progress = true; progress && sliverFlips < sliverBudget;) {
+                progress = false;
+                for (const std::uint32_t x : thin) {
+                    const ParamMesh::Triangle& tri = m_mesh.triangles[x];
+                    if (!tri.alive || roomy(tri.v[0], tri.v[1], tri.v[2]))
+                        continue;
+                    int longest = 0;
+                    double best = -1.0;
+                    for (int k = 0; k < 3; ++k) {
+                        const ParamMesh::Vertex& p = m_mesh.vertices[tri.v[(k + 1) % 3]];
+                        const ParamMesh::Vertex& w = m_mesh.vertices[tri.v[(k + 2) % 3]];
+                        const double length = std::hypot(double(p.x - w.x), double(p.y - w.y));
+                        if (length > best) {
+                            best = length;
+                            longest = k;
+                        }
+                    }
+                    if (!flippable(x, longest))
+                        continue;
+                    const std::uint32_t p = tri.v[(longest + 1) % 3], w = tri.v[(longest + 2) % 3];
+                    const std::uint32_t apex = tri.v[longest], across = opposite(x, longest);
+                    const double before = std::min(height(apex, p, w), height(across, w, p));
+                    const double after = std::min(height(apex, p, across), height(apex, across, w));
+                    if (!(after > before) || !m_mesh.flip(x, longest))
+                        continue;
+                    ++sliverFlips;
+                    changed = progress = true;
+                    consider(apex, across);
+                    consider(p, apex);
+                    consider(apex, w);
+                    consider(w, across);
+                    consider(across, p);
+                }
+            }
+            return changed;
+        };
         std::vector<std::pair<std::uint32_t, std::uint32_t>> stack;
         while (!heap.empty()) {
             const Long edge = heap.top();
@@ -1331,6 +1528,10 @@ private:
                 // wherever it lies, and the flips around it take the edge out.
                 const std::uint32_t q = m_mesh.triangles[t].v[(e + 1) % 3], r = m_mesh.triangles[t].v[(e + 2) % 3];
                 m_mesh.vertices.pop_back();
+                if (sliverFlips < sliverBudget && clearSlivers(edge.a, edge.b)) {
+                    consider(edge.a, edge.b);
+                    continue;
+                }
                 if (d != kNone && !((m_mesh.triangles[t].fixed >> e) & 1u) && drawnLength(c, d) < edge.length &&
                     roomy(c, q, d) && roomy(c, d, r) && m_mesh.flip(t, e)) {
                     consider(c, d);
@@ -1537,6 +1738,11 @@ private:
     bool m_trimmed = false;
 
     std::optional<SurfaceHull> m_hull;
+    bool m_culling = false;
+    std::vector<double> m_uCuts;
+    std::vector<double> m_vCuts;
+    std::size_t m_cellColumns = 0;
+    std::vector<std::uint8_t> m_hiddenCells;
     ParamMesh m_mesh;
     std::vector<Point3> m_local;
     std::vector<Point3> m_image;

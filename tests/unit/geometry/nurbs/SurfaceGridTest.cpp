@@ -198,11 +198,11 @@ TEST(SurfaceGrid, AReusedResultEqualsAFreshOne)
 // (the recursive sum above, on a 6 x 6 grid over the rectangle) is inside
 // the plane: on random patches, random projective maps and random
 // rectangles; and it does call some pieces outside.
-TEST(SurfaceHull, APieceCalledOutsideHasEveryPointOutsideOnePlane)
+TEST(SurfaceHull, APieceCalledOutsideHasEveryPointOutsideOnePlaneAndOneCalledInsideNone)
 {
     std::mt19937 rng(424242);
     std::uniform_real_distribution<double> unit(0.0, 1.0), entry(-1.0, 1.0);
-    std::size_t outsideCount = 0, total = 0;
+    std::size_t outsideCount = 0, insideCount = 0, total = 0;
     for (int trial = 0; trial < 30; ++trial) {
         // Orders up to 6: the recursive sum costs 2^order per basis function.
         const RandomPatch p = randomPatch(rng, false, 6);
@@ -225,6 +225,24 @@ TEST(SurfaceHull, APieceCalledOutsideHasEveryPointOutsideOnePlane)
             if (v1 < v0)
                 std::swap(v0, v1);
             ++total;
+            if (hull.inside(u0, u1, v0, v1)) {
+                // Every point of the piece inside every plane, and so no
+                // part of it outside one.
+                ++insideCount;
+                EXPECT_FALSE(hull.outside(u0, u1, v0, v1)) << "trial " << trial << " rectangle " << r;
+                for (int i = 0; i <= 5; ++i)
+                    for (int j = 0; j <= 5; ++j) {
+                        double point[3];
+                        referencePoint(p, u0 + (u1 - u0) * i / 5.0, v0 + (v1 - v0) * j / 5.0, point);
+                        double f[4];
+                        for (int k = 0; k < 4; ++k)
+                            f[k] = clip[4 * k] * point[0] + clip[4 * k + 1] * point[1] +
+                                   clip[4 * k + 2] * point[2] + clip[4 * k + 3];
+                        const double values[5] = {f[3] + f[0], f[3] - f[0], f[3] + f[1], f[3] - f[1], -f[2]};
+                        for (double value : values)
+                            EXPECT_GE(value, -1e-9) << "trial " << trial << " rectangle " << r;
+                    }
+            }
             if (!hull.outside(u0, u1, v0, v1))
                 continue;
             ++outsideCount;
@@ -247,6 +265,7 @@ TEST(SurfaceHull, APieceCalledOutsideHasEveryPointOutsideOnePlane)
     }
     EXPECT_GT(outsideCount, total / 20);
     EXPECT_LT(outsideCount, total);
+    EXPECT_GT(insideCount, total / 20);
 }
 
 } // namespace
