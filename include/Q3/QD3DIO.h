@@ -214,6 +214,38 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_SkipObject(TQ3FileObject theFile);
 Q3_EXTERN_API_C(TQ3Boolean) Q3File_IsEndOfFile(TQ3FileObject theFile);
 
 /*
+ * External references (QuickDraw 3D 1.5): an object of another metafile,
+ * written as
+ *     Container ( ExternalReference ( refID ) CString ( "path" ) )
+ * where refID is the object's entry in that file's table of contents.
+ * Reading one reads the object from that file (a relative path starts at the
+ * directory of the file being read when that is a Unix path storage); a file
+ * that cannot be read, an ID its table of contents lacks, or a chain of
+ * external references back to a file being read is
+ * kQ3ErrorInvalidMetafileObject and the read returns NULL.
+ *
+ * Q3File_MarkAsExternalReference: theFile is open for reading on a Unix path
+ * storage and sharedObject was read from it as an object its table of
+ * contents lists (a Database file, or an object referred to twice). From now
+ * on, until theFile is disposed of, every write of sharedObject, to any
+ * file, is an external reference to it. Errors: kQ3ErrorFileNotOpen (not open
+ * for reading), kQ3ErrorInvalidParameter (not a Unix path storage, or an
+ * object not read from theFile with a table of contents entry).
+ * Ownership: theFile holds a reference to sharedObject until it is disposed
+ * of.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3File_MarkAsExternalReference(TQ3FileObject theFile, TQ3SharedObject sharedObject);
+
+/*
+ * Q3File_GetExternalReferences: a group holding one C string object
+ * (QD3DString.h) per external reference in the open file, in file order,
+ * each the path as written (so a path may appear more than once); NULL with
+ * no error when there are none. Errors: kQ3ErrorFileNotOpen (not open for
+ * reading). Ownership: the caller holds the group's one reference.
+ */
+Q3_EXTERN_API_C(TQ3GroupObject) Q3File_GetExternalReferences(TQ3FileObject theFile);
+
+/*
  * Q3File_IsEndOfData: whether the data the primitive read calls (Q3Uns32_Read
  * and the others below) read is all read. Primitive reads read one object's
  * data in order: the first one starts on the next object of the file (for a

@@ -151,3 +151,19 @@ TQ3Status Q3File_SetIdleMethod(TQ3FileObject theFile, TQ3FileIdleMethod idle, co
 {
     return guardStatus(__func__, [&] { lookup<File>(theFile, "theFile").setIdleMethod(idle, idleData); });
 }
+
+TQ3Status Q3File_MarkAsExternalReference(TQ3FileObject theFile, TQ3SharedObject sharedObject)
+{
+    return guardStatus(__func__, [&] {
+        File& file = lookup<File>(theFile, "theFile");
+        const SharedObject& object = lookup<SharedObject>(sharedObject, "sharedObject");
+        file.markAsExternalReference(object);
+    });
+}
+
+TQ3GroupObject Q3File_GetExternalReferences(TQ3FileObject theFile)
+{
+    return guard(__func__, TQ3GroupObject{nullptr}, [&]() -> TQ3GroupObject {
+        return lookup<File>(theFile, "theFile").externalReferences().detach();
+    });
+}

@@ -5,6 +5,7 @@
 #include "core/ErrorManager.h"
 #include "core/Limits.h"
 #include "group/Group.h"
+#include "io/ExternalReference.h"
 #include "io/Unknown.h"
 
 #include <cctype>
@@ -22,6 +23,7 @@ const std::vector<ClassIO>& classes()
         addStateClasses(all);
         addCameraClasses(all);
         addPixmapMarkerClasses(all);
+        addExternalReferenceClasses(all);
         return all;
     }();
     return table;
@@ -129,6 +131,16 @@ std::size_t itemEnd(const std::vector<Node>& nodes, std::size_t index)
 }
 
 } // namespace
+
+std::uint32_t ReadContext::refIdOf(const Object& object) const
+{
+    for (const auto& [id, node] : m_file.references) {
+        const auto done = m_done.find(node);
+        if (done != m_done.end() && done->second.get() == &object)
+            return id;
+    }
+    return 0;
+}
 
 Ref<SharedObject> ReadContext::object(const Node& node)
 {
@@ -251,6 +263,12 @@ void WriteContext::attributeSet(const AttributeSet* set)
 void WriteContext::object(const Object& object)
 {
     DepthGuard guard(m_depth);
+    std::string externalPath;
+    std::uint32_t externalId = 0;
+    if (externalMark(object, externalPath, externalId)) {
+        writeExternalReference(m_out, externalPath, externalId);
+        return;
+    }
     const bool isGroup = object.isType(kQ3ShapeTypeGroup);
     if (!m_stream && !isGroup) {
         if (auto found = m_written.find(&object); found != m_written.end()) {

@@ -67,6 +67,8 @@ void addStateClasses(std::vector<ClassIO>& table);
 void addCameraClasses(std::vector<ClassIO>& table);
 /// The pixmap marker (PixmapMarkerIO.cpp).
 void addPixmapMarkerClasses(std::vector<ClassIO>& table);
+/// ExternalReference and CString (ExternalReference.cpp).
+void addExternalReferenceClasses(std::vector<ClassIO>& table);
 
 /// Reading one file: builds objects from nodes, resolving references once
 /// each (so two references give one object) and refusing cycles.
@@ -76,6 +78,13 @@ public:
 
     const Metafile& file() const { return m_file; }
     DataReader reader(const Node& node) const { return DataReader(m_file, node); }
+    /// Where relative paths of external references start: the directory of
+    /// the file being read when it is a path, else empty (as written).
+    const std::string& baseDirectory() const { return m_baseDirectory; }
+    void setBaseDirectory(std::string directory) { m_baseDirectory = std::move(directory); }
+    /// The reference ID the file's table of contents gives an object this
+    /// context read, or 0 when it has none.
+    std::uint32_t refIdOf(const Object& object) const;
 
     /// The object a node stands for: a container's root with its
     /// subobjects, a reference's target, an unknown object for a type no
@@ -107,6 +116,7 @@ private:
     Ref<SharedObject> build(const Node& node);
 
     const Metafile& m_file;
+    std::string m_baseDirectory;
     std::map<const Node*, Ref<SharedObject>> m_done;
     std::set<const Node*> m_reading;
     std::size_t m_depth = 0;

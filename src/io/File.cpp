@@ -4,9 +4,14 @@
 
 #include "core/ErrorManager.h"
 #include "geometry/Geometry.h"
+#include "group/Group.h"
+#include "io/ExternalReference.h"
+#include "io/StringObject.h"
 #include "shader/Shader.h"
 #include "style/Style.h"
 #include "view/Transform.h"
+
+#include <filesystem>
 
 namespace q3 {
 
@@ -65,6 +70,7 @@ private:
 File::~File()
 {
     m_idle->method = nullptr; // a writing loop may outlive the file
+    io::forgetExternals(this);
     release();
 }
 
@@ -95,6 +101,8 @@ TQ3FileMode File::openRead()
                                                                                : 0);
     m_file = std::move(parsed);
     m_reader = std::make_unique<io::ReadContext>(*m_file);
+    if (const auto* path = dynamic_cast<const UnixPathStorage*>(m_storage.get()))
+        m_reader->setBaseDirectory(std::filesystem::path(path->path()).parent_path().string());
     m_next = 0;
     m_state = State::kReading;
     m_storage->acquire();
@@ -390,6 +398,33 @@ io::Encoder& File::dataWriter()
     if (m_state != State::kWriting)
         fail(kQ3ErrorWriteStateInactive, "the file is not open for writing");
     return m_writer->out();
+}
+
+void File::markAsExternalReference(const SharedObject& object)
+{
+    requireReading();
+    const auto* path = dynamic_cast<const UnixPathStorage*>(m_storage.get());
+    if (path == nullptr)
+        fail(kQ3ErrorInvalidParameter, "an external reference names its file by path: the file's storage is not a "
+                                       "Unix path storage");
+    const std::uint32_t refId = m_reader->refIdOf(object);
+    if (refId == 0)
+        fail(kQ3ErrorInvalidParameter, std::string("the ") + object.classInfo().name +
+                                           " was not read from this file as an object its table of contents "
+                                           "lists, so no external reference can name it");
+    io::markExternal(object, path->path(), refId, this);
+}
+
+Ref<SharedObject> File::externalReferences() const
+{
+    requireReading();
+    const std::vector<std::string> paths = io::externalReferencePaths(*m_file);
+    if (paths.empty())
+        return {};
+    Ref<Group> group = makeShared<Group>();
+    for (const std::string& path : paths)
+        group->add(Ref<SharedObject>(makeShared<CString>(path)));
+    return Ref<SharedObject>(std::move(group));
 }
 
 void File::setIdleMethod(TQ3FileIdleMethod method, const void* data)

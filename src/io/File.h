@@ -100,6 +100,18 @@ public:
     /// (kQ3ErrorWriteStateInactive unless open for writing).
     io::Encoder& dataWriter();
 
+    /// Q3File_MarkAsExternalReference: from now on, until this file object
+    /// ends, every write of `object` (to any file) is an external reference
+    /// to it in this file. Throws kQ3ErrorFileNotOpen unless open for
+    /// reading, kQ3ErrorInvalidParameter when the storage is not a Unix path
+    /// or the object is not one read from this file with a table of contents
+    /// entry.
+    void markAsExternalReference(const SharedObject& object);
+    /// Q3File_GetExternalReferences: one C string object per external
+    /// reference in the file, in file order, in a group; null when it has
+    /// none. Throws kQ3ErrorFileNotOpen unless open for reading.
+    Ref<SharedObject> externalReferences() const;
+
     /// Q3File_SetIdleMethod: called once before each object read or written.
     void setIdleMethod(TQ3FileIdleMethod method, const void* data);
 

@@ -22,6 +22,7 @@
 
 #include "io/GeometryIOSupport.h"
 
+#include "core/Limits.h"
 #include "geometry/GeneralPolygon.h"
 #include "geometry/Marker.h"
 #include "geometry/MeshGeometry.h"
@@ -245,6 +246,45 @@ std::vector<Corner> readCorners(ReadContext& context, const Parts& parts, std::u
     return corners;
 }
 
+// MeshEdges ('edge', MF3D's kMF3DObjMeshEdges): the number of edges, then per
+// edge its two vertex indices; one attribute set per edge as children, as
+// MeshCorners have theirs. Only edges with a set are written.
+constexpr TQ3ObjectType kTypeMeshEdges = Q3_OBJECT_TYPE('e', 'd', 'g', 'e');
+
+struct EdgeSet {
+    std::uint32_t from, to;
+    Ref<AttributeSet> set;
+};
+
+std::vector<EdgeSet> readEdges(ReadContext& context, const Parts& parts, std::uint32_t numVertices)
+{
+    std::vector<EdgeSet> edges;
+    const Node* node = parts.find(kTypeMeshEdges);
+    if (node == nullptr)
+        return edges;
+    if (node->type != kTypeContainer)
+        fail(kQ3ErrorInvalidMetafileSubObject, "MeshEdges without their attribute sets");
+    DataReader in = context.reader(node->children.front());
+    const std::uint32_t count = in.count(8, 2, "mesh edges");
+    if (count != node->children.size() - 1)
+        fail(kQ3ErrorInvalidMetafileSubObject, "MeshEdges list " + std::to_string(count) + " edges and hold " +
+                                                   std::to_string(node->children.size() - 1) + " attribute sets");
+    edges.resize(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        EdgeSet& edge = edges[i];
+        edge.from = in.u32();
+        edge.to = in.u32();
+        if (edge.from >= numVertices || edge.to >= numVertices)
+            fail(kQ3ErrorInvalidMetafileSubObject, "a mesh edge names vertex " +
+                                                       std::to_string(std::max(edge.from, edge.to)) + " of " +
+                                                       std::to_string(numVertices));
+        edge.set = context.objectAs<AttributeSet>(node->children[i + 1], "a mesh edge's attribute set");
+    }
+    if (!in.atEnd())
+        fail(kQ3ErrorInvalidMetafileSubObject, "MeshEdges have more data than their count announces");
+    return edges;
+}
+
 Ref<SharedObject> readMesh(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
@@ -301,6 +341,7 @@ Ref<SharedObject> readMesh(ReadContext& context, const Parts& parts)
         }
     }
     const auto corners = readCorners(context, parts, numVertices, faceAt);
+    const auto edgeSets = readEdges(context, parts, numVertices);
     Ref<AttributeSet> own = context.attributeSet(parts);
 
     Ref<MeshGeometry> mesh = makeShared<MeshGeometry>();
@@ -332,6 +373,22 @@ Ref<SharedObject> readMesh(ReadContext& context, const Parts& parts)
                 mesh->cornerSet(vertices[corner.vertex], faceSerials[face]); // the corner must exist
                 mesh->setCornerSet(vertices[corner.vertex], faceSerials[face], corner.set);
             }
+        if (!edgeSets.empty()) {
+            std::map<std::pair<MeshGeometry::Serial, MeshGeometry::Serial>, MeshGeometry::Serial> edgeOf;
+            for (MeshGeometry::Serial e = mesh->nextEdge(0, 0); e != 0; e = mesh->nextEdge(0, e)) {
+                const auto ends = mesh->edgeVertices(e);
+                edgeOf[{std::min(ends.first, ends.second), std::max(ends.first, ends.second)}] = e;
+            }
+            for (const EdgeSet& edge : edgeSets) {
+                const MeshGeometry::Serial a = vertices[edge.from], b = vertices[edge.to];
+                const auto found = edgeOf.find({std::min(a, b), std::max(a, b)});
+                if (found == edgeOf.end())
+                    fail(kQ3ErrorInvalidMetafileSubObject, "MeshEdges name vertices " + std::to_string(edge.from) +
+                                                               " and " + std::to_string(edge.to) +
+                                                               ", which no face's side joins");
+                mesh->setEdgeSet(found->second, edge.set);
+            }
+        }
     } catch (const Error& error) {
         fail(kQ3ErrorInvalidMetafileObject, std::string("the file's Mesh breaks a rule: ") + error.what());
     }
@@ -378,9 +435,13 @@ void writeMesh(WriteContext& context, const Object& object)
                 cornerKeys.emplace_back(v, set);
             list.push_back(positionOf[f]);
         }
+    std::vector<MeshGeometry::Serial> edges; // the edges with a set
+    for (MeshGeometry::Serial e = mesh.nextEdge(0, 0); e != 0; e = mesh.nextEdge(0, e))
+        if (WriteContext::hasAttributes(mesh.edgeSet(e)))
+            edges.push_back(e);
     const AttributeSet* own = mesh.attributeSet();
     const bool container = WriteContext::hasAttributes(own) || anySet(vertexSets) || anySet(faceSets) ||
-                           !cornerKeys.empty();
+                           !cornerKeys.empty() || !edges.empty();
     maybeContainer(context, container, [&] {
         Encoder& out = context.out();
         out.begin(kQ3GeometryTypeMesh, "Mesh");
@@ -417,6 +478,20 @@ void writeMesh(WriteContext& context, const Object& object)
                 context.attributeSet(key.second);
             out.end();
         }
+        if (!edges.empty()) {
+            out.begin(kTypeContainer, "Container");
+            out.begin(kTypeMeshEdges, "MeshEdges");
+            out.u32(static_cast<std::uint32_t>(edges.size()));
+            for (MeshGeometry::Serial e : edges) {
+                const auto ends = mesh.edgeVertices(e);
+                out.u32(indexOf.at(ends.first));
+                out.u32(indexOf.at(ends.second));
+            }
+            out.end();
+            for (MeshGeometry::Serial e : edges)
+                context.attributeSet(mesh.edgeSet(e));
+            out.end();
+        }
         writeSetList(context, kTypeFaceSets, "FaceAttributeSetList", faceSets);
         writeSetList(context, kTypeVertexSets, "VertexAttributeSetList", vertexSets);
         context.attributeSet(own);
@@ -440,7 +515,9 @@ void writeMesh(WriteContext& context, const Object& object)
 // and are not written.
 // Marker: location, xOffset, yOffset (Int32), then the bitmap: width,
 // height, rowBytes, bitOrder (BigEndian or LittleEndian), then height *
-// rowBytes bytes of image, padded with zeros to a multiple of 4 in binary.
+// rowBytes bytes of image as RawData: padded with zeros to a multiple of 4 in
+// binary, 0x and two hex digits a byte in text (Q3 also reads the one
+// decimal number a byte it wrote before).
 
 constexpr TQ3ObjectType kTypeShapeHint = Q3_OBJECT_TYPE('g', 'p', 'l', 'h');
 
@@ -668,11 +745,26 @@ Ref<SharedObject> readMarker(ReadContext& context, const Parts& parts)
     data.bitmap.rowBytes = in.u32();
     data.bitmap.bitOrder = static_cast<TQ3Endian>(in.choice(kBitOrders));
     const std::uint64_t size = std::uint64_t{data.bitmap.height} * data.bitmap.rowBytes;
-    in.requireRoom(size, 1, 1, "bitmap bytes");
-    std::vector<unsigned char> image(static_cast<std::size_t>(size));
-    for (unsigned char& byte : image)
-        byte = in.u8();
-    if (context.file().encoding != Encoding::kText)
+    const bool text = context.file().encoding == Encoding::kText;
+    std::vector<unsigned char> image;
+    if (text && size > 0 && !in.atEnd() && in.word().rfind("0x", 0) == 0) {
+        // The reference's RawData: 0x tokens of hex digits (rawData allocates
+        // only as the tokens supply bytes).
+        in.seek(in.tell() - 1);
+        if (size > limits::kMaxArrayCount)
+            fail(kQ3ErrorInvalidMetafileObject, "a Marker claims " + std::to_string(size) + " bitmap bytes");
+        const std::string bytes = in.rawData(static_cast<std::size_t>(size));
+        image.assign(bytes.begin(), bytes.end());
+    } else {
+        // Binary, or text as Q3 wrote it before: one decimal number a byte.
+        if (text && size > 0 && !in.atEnd())
+            in.seek(in.tell() - 1);
+        in.requireRoom(size, 1, 1, "bitmap bytes");
+        image.resize(static_cast<std::size_t>(size));
+        for (unsigned char& byte : image)
+            byte = in.u8();
+    }
+    if (!text)
         for (std::uint64_t i = size; i % 4 != 0 && !in.atEnd(); ++i)
             in.u8();
     if (!in.atEnd())
@@ -698,11 +790,7 @@ void writeMarker(WriteContext& context, const Object& object)
         out.u32(static_cast<std::uint32_t>(data.bitmap.rowBytes));
         out.choice(kBitOrders, static_cast<std::uint32_t>(data.bitmap.bitOrder));
         const unsigned long size = data.bitmap.height * data.bitmap.rowBytes;
-        for (unsigned long i = 0; i < size; ++i)
-            out.u8(data.bitmap.image[i]);
-        if (out.encoding() != Encoding::kText)
-            for (unsigned long i = size; i % 4 != 0; ++i)
-                out.u8(0);
+        out.rawData(data.bitmap.image, size);
         out.end();
         context.attributeSet(own);
     });
@@ -719,6 +807,7 @@ void addComplexGeometryClasses(std::vector<ClassIO>& table)
                                   {kQ3GeometryTypeMesh, "Mesh", readMesh, writeMesh},
                                   {kTypeFaceSets, "FaceAttributeSetList", refusePart, writeNothing},
                                   {kTypeMeshCorners, "MeshCorners", refusePart, writeNothing},
+                                  {kTypeMeshEdges, "MeshEdges", refusePart, writeNothing},
                                   {kQ3GeometryTypeGeneralPolygon, "GeneralPolygon", readGeneralPolygon,
                                    writeGeneralPolygon},
                                   {kTypeShapeHint, "GeneralPolygonHint", refusePart, writeNothing},

@@ -18,11 +18,16 @@ namespace q3::io {
 namespace {
 
 // A display group's state, when not the default, is a DisplayGroupState
-// subobject whose flags say what differs from the default: Inline, DontDraw,
-// NoBoundingBox, NoBoundingSphere, DontPick.
+// subobject whose flags say what differs from the default: Inline 1,
+// DoNotDraw 2, NoBoundingBox 4, NoBoundingSphere 8, DoNotPick 16 (Apple's
+// MF3D parser, kMF3DObjDisplayGroupState, for the bits; the words are
+// Quesa's: the reference spells the first "IsInline" while QuickDraw 3D
+// writes "Inline"). Q3 writes the first word of each bit and reads the
+// others too: "IsInline", and "DontDraw" / "DontPick", which Q3 wrote before.
 constexpr TQ3ObjectType kTypeGroupState = Q3_OBJECT_TYPE('d', 'g', 's', 't');
 const std::vector<std::pair<const char*, std::uint32_t>> kStateFlags = {
-    {"None", 0}, {"Inline", 1}, {"DontDraw", 2}, {"NoBoundingBox", 4}, {"NoBoundingSphere", 8}, {"DontPick", 16}};
+    {"None", 0},       {"Inline", 1},    {"DoNotDraw", 2}, {"NoBoundingBox", 4}, {"NoBoundingSphere", 8},
+    {"DoNotPick", 16}, {"IsInline", 1},  {"DontDraw", 2},  {"DontPick", 16}};
 
 constexpr TQ3DisplayGroupState kDefaultState = kQ3DisplayGroupStateMaskIsDrawn |
                                                kQ3DisplayGroupStateMaskUseBoundingBox |

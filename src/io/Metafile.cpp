@@ -607,18 +607,23 @@ std::string DataReader::string()
 std::string DataReader::rawData(std::size_t n)
 {
     if (m_file.encoding == Encoding::kText) {
-        const std::string& t = token();
-        if (t.size() < 2 || t[0] != '0' || (t[1] != 'x' && t[1] != 'X') || (t.size() - 2) % 2 != 0 ||
-            (t.size() - 2) / 2 < n)
-            fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t.substr(0, 40) + "' is not " + std::to_string(n) +
-                                                       " bytes of raw data (0x and two hex digits a byte)");
-        std::string out(n, '\0');
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::string digits = t.substr(2 + 2 * i, 2);
-            if (!std::isxdigit(static_cast<unsigned char>(digits[0])) ||
-                !std::isxdigit(static_cast<unsigned char>(digits[1])))
-                fail(kQ3ErrorInvalidMetafilePrimitive, "raw data holds '" + digits + "', not a hex byte");
-            out[i] = static_cast<char>(std::strtoul(digits.c_str(), nullptr, 16));
+        // One or more 0x tokens, two hex digits a byte, n bytes in all (a
+        // long run may be split over several tokens, as Quesa reads them).
+        std::string out;
+        out.reserve(std::min<std::size_t>(n, 1 << 20));
+        while (out.size() < n) {
+            const std::string& t = token();
+            if (t.size() < 4 || t[0] != '0' || (t[1] != 'x' && t[1] != 'X') || (t.size() - 2) % 2 != 0 ||
+                (t.size() - 2) / 2 > n - out.size())
+                fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t.substr(0, 40) + "' is not raw data of the " +
+                                                           std::to_string(n - out.size()) +
+                                                           " bytes left (0x and two hex digits a byte)");
+            for (std::size_t i = 2; i < t.size(); i += 2) {
+                if (!std::isxdigit(static_cast<unsigned char>(t[i])) ||
+                    !std::isxdigit(static_cast<unsigned char>(t[i + 1])))
+                    fail(kQ3ErrorInvalidMetafilePrimitive, "raw data holds '" + t.substr(i, 2) + "', not a hex byte");
+                out.push_back(static_cast<char>(std::strtoul(t.substr(i, 2).c_str(), nullptr, 16)));
+            }
         }
         return out;
     }

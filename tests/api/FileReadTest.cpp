@@ -392,7 +392,7 @@ TEST_F(FileReadTest, DisplayGroupStatesRoundTrip)
         const auto bytes = writeObjects({group}, mode);
         if (mode & kQ3FileModeText) {
             const std::string text(bytes.begin(), bytes.end());
-            EXPECT_NE(text.find("DisplayGroupState ( Inline | NoBoundingBox | DontPick )"), std::string::npos)
+            EXPECT_NE(text.find("DisplayGroupState ( Inline | NoBoundingBox | DoNotPick )"), std::string::npos)
                 << text;
         }
         const auto objects = readAll(bytes);

@@ -16,6 +16,7 @@
 #include "QD3DSet.h"
 #include "QD3DShader.h"
 #include "QD3DStorage.h"
+#include "QD3DString.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 #include "QD3DView.h"
@@ -341,6 +342,27 @@ int main(void)
         Q3Object_Dispose(data.pixmap.image);
         if (!ok)
             return 18;
+    }
+    {
+        /* C strings, and a file without external references: NULL, no error;
+         * a closed file: NULL with kQ3ErrorFileNotOpen. */
+        TQ3StringObject string = Q3CString_New("path.3dmf");
+        TQ3FileObject file = Q3File_New();
+        unsigned long length = 0;
+        char *text = NULL;
+        int ok = string != NULL && Q3String_GetType(string) == kQ3StringTypeCString &&
+                 Q3CString_GetLength(string, &length) == kQ3Success && length == 9 &&
+                 Q3CString_SetString(string, "a") == kQ3Success &&
+                 Q3CString_GetString(string, &text) == kQ3Success && text != NULL && strcmp(text, "a") == 0 &&
+                 Q3CString_EmptyData(&text) == kQ3Success && text == NULL &&
+                 Q3File_GetExternalReferences(file) == NULL && Q3Error_Get(NULL) == kQ3ErrorFileNotOpen &&
+                 Q3File_MarkAsExternalReference(file, string) == kQ3Failure &&
+                 Q3Error_Get(NULL) == kQ3ErrorFileNotOpen;
+        Q3Object_Dispose(file);
+        if (string != NULL)
+            Q3Object_Dispose(string);
+        if (!ok)
+            return 20;
     }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
