@@ -59,8 +59,9 @@ constexpr unsigned kMaxRootIterations = 60;
 
 /// Adaptive method with a ProjectiveMapping: vertices are chosen among samples of the
 /// mapped span, this many per planned segment (rounded up to 8, 12, 16, 24, ...), so a
-/// segment is normally at least about (1 - 1 / kDenseSamplesPerSegment) * maxSegmentLength;
-/// a span that needs more than kMaxDenseSamples samples takes the general march.
+/// segment is at least about (1 - 1 / kDenseSamplesPerSegment) * maxSegmentLength before
+/// the secant step; a span that needs more than kMaxDenseSamples samples takes the
+/// general march.
 constexpr std::uint32_t kDenseSamplesPerSegment = 4;
 constexpr std::uint32_t kMaxDenseSamples = 4096;
 
@@ -201,12 +202,13 @@ void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const P
 /// The same with a ProjectiveMapping, which is faster: a span with an image everywhere
 /// (see ProjectiveMapping) is mapped as a whole and sampled densely with the kernel,
 /// kDenseSamplesPerSegment samples per planned segment, and each vertex is the last
-/// sample whose image is within maxSegmentLength of the previous vertex's (or, where
-/// even the next sample is farther, a point found between them as above). Every
-/// segment is still measured between the images of its end points (there, the mapped
-/// span evaluated at the two parameters), so none is longer than maxSegmentLength;
-/// such segments are normally at least (1 - 1 / kDenseSamplesPerSegment) of it rather
-/// than (1 - kChordTolerance). Other spans are marched as with a PointMapping.
+/// sample whose image is within maxSegmentLength of the previous vertex's, moved by one
+/// secant step towards (1 - kChordTolerance / 2) of it when that point's chord, evaluated
+/// and mapped, stays within it (where even the next sample is farther, a point found
+/// between them as above). Every segment is still measured between the images of its
+/// end points, so none is longer than maxSegmentLength; a segment is at least about
+/// (1 - 1 / kDenseSamplesPerSegment) of it, and normally (1 - kChordTolerance) of it.
+/// Other spans are marched as with a PointMapping.
 void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const ProjectiveMapping& mapping,
                         TessellatedCurve& out, const ViewLimits& limits = {});
 void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const ProjectiveMapping& mapping,
