@@ -3,7 +3,9 @@
 
 // Q3's tessellation kernel against GLU's NURBS tessellator (SGI's sample
 // implementation as Mesa ships it) on the curves of BenchCurves.h, paired in
-// one loop (BenchTiming.h, thread CPU time: both are single-threaded).
+// one loop (BenchTiming.h; thread CPU time for the constant method, wall time
+// for the adaptive methods, whose target is stated in wall time: both are
+// single-threaded).
 //
 // This process holds libGLU, which links the GL dispatch library; its gl*
 // entry points would clash with OSMesa's, so nothing here may link OSMesa.
@@ -247,6 +249,28 @@ void Glu_WallPeer(benchmark::State& state, int which)
     state.counters["vertices"] = double(g_sink.count);
 }
 
+// The benchmark's projection (BenchCurves.h, Projection::toPixels) as one
+// matrix, model then projection, with the viewport as scale and offset.
+nurbs::ProjectiveMapping projectiveOf(const q3bench::Projection& projection)
+{
+    nurbs::ProjectiveMapping map;
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; ++k)
+                sum += double(projection.proj[4 * k + r]) * double(projection.model[4 * c + k]);
+            map.matrix[r][c] = sum;
+        }
+    }
+    map.scale[0] = 0.5 * projection.viewport[2];
+    map.scale[1] = 0.5 * projection.viewport[3];
+    map.scale[2] = 0.0;
+    map.offset[0] = projection.viewport[0] + 0.5 * projection.viewport[2];
+    map.offset[1] = projection.viewport[1] + 0.5 * projection.viewport[3];
+    map.requirePositiveW = true;
+    return map;
+}
+
 // Adaptive methods with c1 = arc length / (16 * spans) in the space: Q3's
 // tessellateAdaptive (world: identity mapping; screen: BenchCurves.h's
 // projection to pixels) against GLU_OBJECT_PATH_LENGTH / GLU_PATH_LENGTH with
@@ -272,24 +296,18 @@ void Glu_Adaptive(benchmark::State& state, Space space, int which)
     const double gluLongest = q3bench::longestChord(g_sink.xyz.data(), g_sink.count, space);
 
     const q3bench::Projection projection;
-    nurbs::PointMapping mapping;
-    if (space == Space::kWorld) {
-        mapping = [](const nurbs::Point3& p, nurbs::Point3& image) {
-            image = p;
-            return true;
-        };
-    } else {
-        mapping = [&projection](const nurbs::Point3& p, nurbs::Point3& image) {
-            double pixel[3];
-            if (!projection.toPixels(p.x, p.y, p.z, pixel))
-                return false;
-            image = nurbs::Point3{pixel[0], pixel[1], pixel[2]};
-            return true;
-        };
-    }
+    // As a view does it: the mapping handed over as a matrix
+    // (nurbs::ProjectiveMapping, the form CurveTessellation.cpp passes; the
+    // identity for world space), so Q3 can map each span's control points
+    // once.
+    const nurbs::ProjectiveMapping projective = projectiveOf(projection);
     const nurbs::CurveRef ref = refOf(curve);
     nurbs::TessellatedCurve out;
-    nurbs::tessellateAdaptive(ref, c1, mapping, out);
+    const nurbs::ProjectiveMapping identity;
+    const auto tessellate = [&] {
+        nurbs::tessellateAdaptive(ref, c1, space == Space::kWorld ? identity : projective, out);
+    };
+    tessellate();
     if (out.vertexCount() < 2 || out.substituted || out.capped) {
         state.SkipWithError("Q3's adaptive tessellation substituted or capped c1");
         return;
@@ -297,7 +315,7 @@ void Glu_Adaptive(benchmark::State& state, Space space, int which)
     const double q3Segments = double(out.vertexCount() - 1);
     const double q3Longest = q3bench::longestChord(out.vertices.data(), out.vertexCount(), space);
 
-    q3bench::runPaired(state, q3bench::Clock::kThreadCpu,
+    q3bench::runPaired(state, q3bench::Clock::kWall,
                        {{"glu",
                          [&] {
                              glu.run(curve);
@@ -305,7 +323,7 @@ void Glu_Adaptive(benchmark::State& state, Space space, int which)
                              benchmark::ClobberMemory();
                          }},
                         {"q3", [&] {
-                             nurbs::tessellateAdaptive(ref, c1, mapping, out);
+                             tessellate();
                              benchmark::DoNotOptimize(out.vertices.data());
                              benchmark::ClobberMemory();
                          }}});

@@ -156,24 +156,36 @@ def tessellation(runs, out):
 
 
 def adaptive(runs, out):
-    out.append("### 2. Adaptive methods, c1 = arc length / (16 × spans) (paired, thread CPU time, medians)\n")
+    out.append("### 2. Adaptive methods, c1 = arc length / (16 × spans) (paired, wall time, medians)\n")
     out.append("| Space, curve | Q3 Mvertices/s | GLU Mvertices/s | Q3 / GLU vertices/s | "
-               "GLU time / Q3 time | Q3 segments / (L/c1) | GLU segments / (L/c1) | "
+               "GLU time / Q3 time | Target | Q3 segments / (L/c1) | GLU segments / (L/c1) | "
                "Q3 longest / c1 | GLU longest / c1 |")
-    out.append("|---|---|---|---|---|---|---|---|---|")
+    out.append("|---|---|---|---|---|---|---|---|---|---|")
+    targets = []
     for space in ("world", "screen"):
         for curve, label in (("cubic", "rational cubic"), ("order16", "order 16")):
             name = f"Glu_Adaptive/{space}_{curve}"
             problem = missing(runs, name)
             if problem:
-                out.append(f"| {space}, {label} | {problem} | | | | | | | |")
+                out.append(f"| {space}, {label} | {problem} | | | | | | | | |")
+                if space == "screen":
+                    targets.append((label, None))
                 continue
             c = lambda k: runs.counter(name, k)
             rq, rp = c("q3_vertices") / c("q3_ms") / 1e3, c("glu_vertices") / c("glu_ms") / 1e3
-            out.append(f"| {space}, {label} | {fmt(rq)} | {fmt(rp)} | {rq / rp:.2f} | {c('glu_over_q3'):.2f} | "
+            speedup = c("glu_over_q3")
+            goal = "info"
+            if space == "screen":
+                goal = verdict(speedup, 1.5, True)
+                targets.append((label, speedup))
+            out.append(f"| {space}, {label} | {fmt(rq)} | {fmt(rp)} | {rq / rp:.2f} | **{speedup:.2f}×** | {goal} | "
                        f"{c('q3_segments_per_ideal'):.3f} | {c('glu_segments_per_ideal'):.3f} | "
                        f"{c('q3_longest_over_c1'):.4f} | {c('glu_longest_over_c1'):.3f} |")
     out.append("")
+    shown = " / ".join(f"{label} {fmt(v)}×" if v is not None else f"{label} missing" for label, v in targets)
+    worst = min((v for _, v in targets if v is not None), default=None)
+    out.append(f"Target row: adaptive screen-space vs GLU_PATH_LENGTH ≥ 1.5× (per curve, wall time): "
+               f"{shown}: {verdict(worst, 1.5, True) if len(targets) == 2 and None not in dict(targets).values() else 'missing'}\n")
 
 
 def frames(runs, out):

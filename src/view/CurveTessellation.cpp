@@ -122,37 +122,38 @@ nurbs::SpanCulling cullingFor(const Plan& plan)
     };
 }
 
-bool isFinite(const nurbs::Point3& p)
+// The space segment lengths are measured in, as a projective map
+// (Tessellate.h's ProjectiveMapping): local -> world for world space; local ->
+// frustum, then onto the pane's pixels, for screen space, where w is the
+// distance in front of the eye for a perspective camera (points at or behind
+// the eye have no image) and frustum z above 0 is nearer than the hither
+// plane: clipped away, and for a perspective camera its image grows without
+// bound towards the eye plane, so measuring it there would spend segments (up
+// to the cap, with a coarser c1 for the whole curve) on nothing that is drawn
+// (Tessellate.h, PointMapping).
+nurbs::ProjectiveMapping projectiveFor(const Plan& plan)
 {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    nurbs::ProjectiveMapping map;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            map.matrix[r][c] = plan.through[c][r];
+    if (plan.measure == Measure::kWorld)
+        return map;
+    // frustumToPane as a scale and offset of x / w and y / w.
+    map.scale[0] = 0.5 * plan.pane.width;
+    map.offset[0] = plan.pane.x + 0.5 * plan.pane.width;
+    map.scale[1] = -0.5 * plan.pane.height;
+    map.offset[1] = plan.pane.y + 0.5 * plan.pane.height;
+    map.scale[2] = 0.0;
+    map.offset[2] = 0.0;
+    map.requirePositiveW = true;
+    map.clipNearer = true;
+    return map;
 }
 
-// The space segment lengths are measured in (Tessellate.h's PointMapping).
 nurbs::PointMapping mappingFor(const Plan& plan)
 {
-    if (plan.measure == Measure::kWorld)
-        return [m = plan.through](const nurbs::Point3& p, nurbs::Point3& out) {
-            const glm::dvec4 v = transformPoint(m, glm::dvec3(p.x, p.y, p.z));
-            if (v.w == 0.0)
-                return false;
-            out = nurbs::Point3{v.x / v.w, v.y / v.w, v.z / v.w};
-            return isFinite(out);
-        };
-    return [m = plan.through, pane = plan.pane](const nurbs::Point3& p, nurbs::Point3& out) {
-        // w is the distance in front of the eye for a perspective camera:
-        // points at or behind the eye have no image. Frustum z above 0 is
-        // nearer than the hither plane: clipped away, and for a perspective
-        // camera its image grows without bound towards the eye plane, so
-        // measuring it there would spend segments (up to the cap, with a
-        // coarser c1 for the whole curve) on nothing that is drawn
-        // (Tessellate.h, PointMapping).
-        const glm::dvec4 v = transformPoint(m, glm::dvec3(p.x, p.y, p.z));
-        if (!(v.w > 0.0) || v.z > 0.0)
-            return false;
-        const glm::dvec2 pixel = frustumToPane(pane, v.x / v.w, v.y / v.w);
-        out = nurbs::Point3{pixel.x, pixel.y, 0.0};
-        return isFinite(out);
-    };
+    return [map = projectiveFor(plan)](const nurbs::Point3& p, nurbs::Point3& out) { return map(p, out); };
 }
 
 template <class Source>
@@ -164,7 +165,7 @@ void subdivide(const Plan& plan, const Source& source, nurbs::TessellatedCurve& 
     if (plan.measure == Measure::kConstant)
         nurbs::tessellateConstant(source, static_cast<std::uint32_t>(plan.c1), out, limits);
     else
-        nurbs::tessellateAdaptive(source, plan.c1, mappingFor(plan), out, limits);
+        nurbs::tessellateAdaptive(source, plan.c1, projectiveFor(plan), out, limits);
 }
 
 template <class Source>

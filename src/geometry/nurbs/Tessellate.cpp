@@ -26,6 +26,16 @@
 // mapped part inside a probe interval (or both edges of a gap the march runs into), so
 // the mapped part is measured up to its edge; the rest gets one unmeasured segment per
 // probe interval, and a gap two.
+// With a ProjectiveMapping (what views pass), a span whose control points all map in
+// front of the eye (and beyond the hither plane) has an image everywhere, and that
+// image is itself a rational Bezier curve with the mapped control points. Such a span
+// is sampled densely with the constant method's kernel (kDenseSamplesPerSegment per
+// planned segment) and the march picks each vertex from the samples: the last one
+// whose image is within c1 of the current vertex's, moved by one secant step towards
+// the crossing of 0.985 c1 when the chord to that point, evaluated and mapped, is
+// within c1; it searches between two samples only where even the next one is farther
+// than c1. The mapping is then applied once
+// per span instead of once per evaluation, and most vertices cost no root finding.
 // This is greedy chord-length parameterisation, not a formula from the article, which
 // only defines what the methods promise ("CONTROLLING SUBDIVISION").
 
@@ -37,6 +47,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace q3::nurbs {
 namespace {
@@ -278,8 +289,10 @@ double distance(const Point3& a, const Point3& b)
 template <typename Spans>
 class Adaptive {
 public:
-    Adaptive(Spans& spans, const PointMapping& mapping, const ViewLimits& limits, TessellatedCurve& out)
-        : m_spans(spans), m_mapping(mapping), m_hidden(limits.hidden), m_maxSegments(segmentCap(limits)),
+    Adaptive(Spans& spans, const PointMapping* mapping, const ProjectiveMapping* projective,
+             const ViewLimits& limits, TessellatedCurve& out)
+        : m_spans(spans), m_mapping(mapping), m_projective(projective), m_hidden(limits.hidden),
+          m_maxSegments(segmentCap(limits)),
           m_budget(m_maxSegments - m_maxSegments / 8), m_out(out), m_builder(out), m_order(spans.order()),
           m_probeSegments(probeSegmentsPerSpan(m_order)), m_probeTable(m_order, m_probeSegments),
           m_probes(m_probeSegments + 1)
@@ -311,7 +324,10 @@ public:
 private:
     bool mapPoint(const Point3& p, Point3& image) const
     {
-        if (!m_mapping(p, image)) {
+        if (m_projective != nullptr) {
+            return (*m_projective)(p, image);
+        }
+        if (!(*m_mapping)(p, image)) {
             return false;
         }
         return std::isfinite(image.x) && std::isfinite(image.y) && std::isfinite(image.z);
@@ -421,6 +437,9 @@ private:
         if (m_hidden) {
             m_spanHidden.assign(m_spans.count(), false);
         }
+        if (m_projective != nullptr) {
+            m_spanMapped.assign(m_spans.count(), false);
+        }
         for (std::size_t s = 0; s < m_spans.count(); ++s) {
             m_points = m_spans.points(s);
             if (m_hidden && m_hidden(m_points, m_order)) {
@@ -428,6 +447,16 @@ private:
                 m_spanHidden[s] = true;
                 ++m_out.hiddenSpans;
                 ++m_unmeasurableIntervals;
+                continue;
+            }
+            if (m_projective != nullptr && mapSpan() && probeMappedSpan()) {
+                // The whole span has an image: one measurable run, measured on the
+                // mapped span's probes.
+                m_spanMapped[s] = true;
+                for (std::uint32_t j = 0; j < m_probeSegments; ++j) {
+                    addPiece(s, j, true, distance(m_probes[j].image, m_probes[j + 1].image), kNoBoundary,
+                             kNoBoundary);
+                }
                 continue;
             }
             probePoints();
@@ -489,13 +518,20 @@ private:
         return total;
     }
 
+    void setLength(double c)
+    {
+        m_c = c;
+        m_c2 = c * c * (1.0 - 1e-12);
+        m_target = (1.0 - 0.5 * kChordTolerance) * c;
+        m_out.effectiveValue = c;
+    }
+
     void chooseLength(double c1)
     {
         const bool usable = c1 > 0.0;
         if (usable) {
             if (wanted(c1) <= m_budget) {
-                m_c = c1;
-                m_out.effectiveValue = c1;
+                setLength(c1);
                 return;
             }
         }
@@ -516,8 +552,7 @@ private:
         for (int attempt = 0; attempt < 64 && wanted(c) > m_budget; ++attempt) {
             c *= 1.0 + 1.0 / 1024.0;
         }
-        m_c = c;
-        m_out.effectiveValue = c;
+        setLength(c);
     }
 
     // Appends the vertex that starts the next chord.
@@ -701,6 +736,204 @@ private:
         }
     }
 
+    // Maps the control points of the span in m_points through m_projective into
+    // m_mappedPoints. Returns whether the whole span has an image: every mapped control
+    // point has W > 0 (and Z < 0 with clipNearer), so every point of the span, a
+    // positive combination of them, has too.
+    bool mapSpan()
+    {
+        const ProjectiveMapping& map = *m_projective;
+        bool inside = true;
+        for (unsigned i = 0; i < m_order; ++i) {
+            const Point4& p = m_points[i];
+            double v[4];
+            for (int r = 0; r < 4; ++r) {
+                v[r] = map.matrix[r][0] * p.x + map.matrix[r][1] * p.y + map.matrix[r][2] * p.z +
+                       map.matrix[r][3] * p.w;
+            }
+            m_mappedPoints[i] = Point4{v[0], v[1], v[2], v[3]};
+            inside = inside && v[3] > 0.0 && !(map.clipNearer && !(v[2] < 0.0)) && std::isfinite(v[0]) &&
+                     std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]);
+        }
+        return inside;
+    }
+
+    // The images of `count` samples of the mapped span (x, y, z each), from the
+    // kernel's projected values, with m_projective's scale and offset.
+    void toImages(double* xyz, std::size_t count) const
+    {
+        const ProjectiveMapping& map = *m_projective;
+        for (std::size_t j = 0; j < count; ++j) {
+            for (int k = 0; k < 3; ++k) {
+                double& value = xyz[3 * j + k];
+                value = map.scale[k] == 0.0 ? map.offset[k] : map.scale[k] * value + map.offset[k];
+            }
+        }
+    }
+
+    // Probe images of the mapped span (m_mappedPoints) into m_probes (u and image
+    // only). Returns false when one is not finite.
+    bool probeMappedSpan()
+    {
+        double xyz[3 * (kMaxOrder + 1)];
+        sampleBezier(m_mappedPoints, m_probeTable, 0, m_probeSegments + 1, xyz);
+        toImages(xyz, m_probeSegments + 1);
+        for (std::uint32_t j = 0; j <= m_probeSegments; ++j) {
+            Sample& sample = m_probes[j];
+            sample.u = double(j) / double(m_probeSegments);
+            sample.image = Point3{xyz[3 * j], xyz[3 * j + 1], xyz[3 * j + 2]};
+            sample.mapped = std::isfinite(sample.image.x) && std::isfinite(sample.image.y) &&
+                            std::isfinite(sample.image.z);
+            if (!sample.mapped) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    // Dense samples for a run of n planned segments: kDenseSamplesPerSegment each, from a
+    // short ladder of sizes (8, 12, 16, 24, ...) so a few Bernstein tables serve a
+    // whole curve; 0 past kMaxDenseSamples.
+    static std::uint32_t denseCount(std::size_t n)
+    {
+        const std::size_t want = kDenseSamplesPerSegment * n;
+        std::uint32_t d = 8;
+        while (d < want) {
+            if (d > kMaxDenseSamples) {
+                return 0;
+            }
+            d = (d & (d - 1)) == 0 ? d + d / 2 : d / 3 * 4;
+        }
+        return d <= kMaxDenseSamples ? d : 0;
+    }
+
+    // The table for `samples` dense samples (a size from denseCount's ladder). Tables
+    // are kept per thread across calls, so a renderer that tessellates every frame
+    // builds each once: at most one per order and ladder size (about 1.8 MB in all
+    // for order 16, as every size up to kMaxDenseSamples sums to about 14,000 rows).
+    const BernsteinTable& denseTable(std::uint32_t samples) const
+    {
+        thread_local std::vector<std::unique_ptr<BernsteinTable>> tables;
+        unsigned rung = 0;
+        for (std::uint32_t d = 8; d < samples; d = (d & (d - 1)) == 0 ? d + d / 2 : d / 3 * 4) {
+            ++rung;
+        }
+        const std::size_t slot = std::size_t(m_order) * 32 + rung;
+        if (tables.size() <= slot) {
+            tables.resize(slot + 1);
+        }
+        if (!tables[slot]) {
+            tables[slot] = std::make_unique<BernsteinTable>(m_order, samples);
+        }
+        return *tables[slot];
+    }
+
+    static double d2OfLastScan(const Point3& a, const double* b)
+    {
+        const double dx = b[0] - a.x;
+        const double dy = b[1] - a.y;
+        const double dz = b[2] - a.z;
+        return dx * dx + dy * dy + dz * dz;
+    }
+
+    // Whether the chord from a to b is at most m_c, decided as chord() decides it.
+    bool within(const Point3& a, const double* b) const
+    {
+        const double dx = b[0] - a.x;
+        const double dy = b[1] - a.y;
+        const double dz = b[2] - a.z;
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        return d2 <= m_c2 || std::sqrt(d2) <= m_c;
+    }
+
+    // March along a span that has an image everywhere (m_points and m_mappedPoints
+    // set). The mapped span is a rational Bezier curve of its own (m_mappedPoints), so
+    // the kernel samples its image directly, densely (kDenseSamplesPerSegment per
+    // planned segment), and the march chooses its vertices among those samples
+    // greedily: the next vertex is the last sample whose image is within m_c of the
+    // current vertex's, moved by one secant step towards the crossing of
+    // (1 - kChordTolerance / 2) m_c when that point's chord is within m_c. Every chord is measured between the images of its two end
+    // points, so the bound holds exactly. Where even the next sample is farther than
+    // m_c, the general search (findCrossing) places a vertex between the two. A chosen
+    // sample's curve point is evaluated on its own (evaluateBezier). Spans
+    // that would need more than kMaxDenseSamples samples take the general march.
+    void emitMappedRun(const Run& run)
+    {
+        const std::uint32_t samples = denseCount(segmentsFor(run.length, m_c));
+        if (samples == 0) {
+            probePoints();
+            emitMeasurableRun(run);
+            return;
+        }
+        const BernsteinTable& table = denseTable(samples);
+        m_dense.resize(3 * (std::size_t(samples) + 1));
+        double* image = m_dense.data();
+        sampleBezier(m_mappedPoints, table, 0, samples + 1, image);
+        toImages(image, samples + 1);
+        const double step = 1.0 / double(samples);
+        const auto denseSample = [&](std::uint32_t j) {
+            Sample sample;
+            sample.u = double(j) * step;
+            sample.point = project(evaluateBezier(m_points, m_order, sample.u));
+            const double* at = image + 3 * std::size_t(j);
+            sample.image = Point3{at[0], at[1], at[2]};
+            sample.mapped = std::isfinite(at[0]) && std::isfinite(at[1]) && std::isfinite(at[2]);
+            return sample;
+        };
+        Sample current = denseSample(0);
+        current.point = project(m_points[0]);
+        std::uint32_t index = 0;  // the last sample at or before current
+        for (;;) {
+            std::uint32_t j = index + 1;
+            while (j <= samples && within(current.image, image + 3 * std::size_t(j))) {
+                ++j;
+            }
+            if (j > samples) {
+                break;
+            }
+            if (!haveRoom(2)) {
+                m_out.capped = true;
+                break;
+            }
+            Sample next;
+            if (j - 1 > index) {
+                // One secant step between samples j - 1 (within m_c) and j (beyond it)
+                // towards (1 - kChordTolerance / 2) m_c, kept when its chord, measured
+                // exactly, is within m_c; otherwise sample j - 1.
+                const double* a = image + 3 * std::size_t(j - 1);
+                const double d0 = distance(current.image, Point3{a[0], a[1], a[2]});
+                const double d1 = std::sqrt(d2OfLastScan(current.image, image + 3 * std::size_t(j)));
+                const double f = (m_target - d0) / (d1 - d0);
+                next = denseSample(j - 1);
+                if (f > 0.0 && f < 1.0) {
+                    const Sample candidate = makeSample((double(j - 1) + f) * step);
+                    if (candidate.mapped && candidate.u > next.u && candidate.u < double(j) * step &&
+                        chord(current, candidate) <= m_c) {
+                        next = candidate;
+                    }
+                }
+                index = j - 1;
+            } else {
+                // Sample j is already farther than m_c from the current vertex.
+                bool unmappable = false;
+                Sample lastMapped;
+                next = findCrossing(current, current, makeSample(double(j) * step), unmappable, lastMapped);
+                if (unmappable || !(next.u > current.u) || chord(current, next) > m_c) {
+                    m_out.capped = true;
+                }
+                if (!(next.u > current.u)) {
+                    break;
+                }
+                if (next.u >= double(j) * step) {
+                    index = j;
+                }
+            }
+            emit(current);
+            current = next;
+        }
+        emit(current);
+    }
+
     void emitRuns()
     {
         m_reserve = m_measurableRuns + m_unmeasurableIntervals;
@@ -715,6 +948,16 @@ private:
                 m_reserve -= 1;
                 emit(start);
                 ++m_out.unmeasuredSegments;
+                end = project(m_points[m_order - 1]);
+                continue;
+            }
+            if (!m_spanMapped.empty() && m_spanMapped[s]) {
+                m_points = m_spans.points(s);
+                mapSpan();
+                for (; cursor < m_runs.size() && m_runs[cursor].span == s; ++cursor) {
+                    m_reserve -= 1;
+                    emitMappedRun(m_runs[cursor]);
+                }
                 end = project(m_points[m_order - 1]);
                 continue;
             }
@@ -747,7 +990,8 @@ private:
     }
 
     Spans& m_spans;
-    const PointMapping& m_mapping;
+    const PointMapping* m_mapping;
+    const ProjectiveMapping* m_projective;  // when given, used instead of m_mapping
     const SpanCulling& m_hidden;
     const std::size_t m_maxSegments;  // ViewLimits::maxSegments, at most kMaxSegments
     const std::size_t m_budget;       // the planned count's share of it (kPlacementBudget's rule)
@@ -762,6 +1006,9 @@ private:
 
     std::vector<Run> m_runs;
     std::vector<bool> m_spanHidden;  // empty without culling
+    std::vector<bool> m_spanMapped;  // spans with an image everywhere; empty without m_projective
+    Point4 m_mappedPoints[kMaxOrder];
+    std::vector<double> m_dense;     // images of a mapped span's dense samples
     std::vector<Sample> m_boundaries;  // where the image ends inside a probe interval
     std::size_t m_edgeSearches = 0;    // boundaryBetween calls so far, up to kMaxEdgeSearches
     std::size_t m_measurableRuns = 0;
@@ -769,6 +1016,8 @@ private:
     double m_totalLength = 0.0;
 
     double m_c = kInfinity;
+    double m_c2 = kInfinity;  // m_c squared, rounded down: below it a chord is within m_c
+    double m_target = kInfinity;  // where a dense march aims a segment end
     bool m_onePerSpan = false;
     std::size_t m_used = 0;     // chords started so far
     std::size_t m_reserve = 0;  // chords the runs not yet started need at least
@@ -812,7 +1061,7 @@ void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const Po
         return;
     }
     CurveSpans spans(curve);
-    Adaptive<CurveSpans>(spans, mapping, limits, out).run(maxSegmentLength);
+    Adaptive<CurveSpans>(spans, &mapping, nullptr, limits, out).run(maxSegmentLength);
 }
 
 void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
@@ -820,7 +1069,51 @@ void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const P
 {
     reset(out);
     FormSpans spans(form);
-    Adaptive<FormSpans>(spans, mapping, limits, out).run(maxSegmentLength);
+    Adaptive<FormSpans>(spans, &mapping, nullptr, limits, out).run(maxSegmentLength);
+}
+
+void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const ProjectiveMapping& mapping,
+                        TessellatedCurve& out, const ViewLimits& limits)
+{
+    reset(out);
+    if (!validateCurve(curve).ok()) {
+        return;
+    }
+    if (fitsWholeBezierForm(curve)) {
+        tessellateAdaptive(BezierForm(curve), maxSegmentLength, mapping, out, limits);
+        return;
+    }
+    CurveSpans spans(curve);
+    Adaptive<CurveSpans>(spans, nullptr, &mapping, limits, out).run(maxSegmentLength);
+}
+
+void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const ProjectiveMapping& mapping,
+                        TessellatedCurve& out, const ViewLimits& limits)
+{
+    reset(out);
+    FormSpans spans(form);
+    Adaptive<FormSpans>(spans, nullptr, &mapping, limits, out).run(maxSegmentLength);
+}
+
+bool ProjectiveMapping::operator()(const Point3& local, Point3& mapped) const
+{
+    const double in[4] = {local.x, local.y, local.z, 1.0};
+    double v[4];
+    for (int r = 0; r < 4; ++r) {
+        v[r] = matrix[r][0] * in[0] + matrix[r][1] * in[1] + matrix[r][2] * in[2] + matrix[r][3];
+    }
+    if (requirePositiveW ? !(v[3] > 0.0) : v[3] == 0.0) {
+        return false;
+    }
+    if (clipNearer && v[2] > 0.0) {
+        return false;
+    }
+    double out[3];
+    for (int k = 0; k < 3; ++k) {
+        out[k] = scale[k] == 0.0 ? offset[k] : scale[k] * (v[k] / v[3]) + offset[k];
+    }
+    mapped = Point3{out[0], out[1], out[2]};
+    return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(out[2]);
 }
 
 TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, const ViewLimits& limits)

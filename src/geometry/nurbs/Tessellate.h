@@ -57,6 +57,14 @@ constexpr std::uint32_t probeSegmentsPerSpan(unsigned order)
 constexpr std::uint32_t kMaxLengthTableSegments = std::uint32_t{1} << 16;
 constexpr unsigned kMaxRootIterations = 60;
 
+/// Adaptive method with a ProjectiveMapping: vertices are chosen among samples of the
+/// mapped span, this many per planned segment (rounded up to 8, 12, 16, 24, ...), so a
+/// segment is at least about (1 - 1 / kDenseSamplesPerSegment) * maxSegmentLength before
+/// the secant step; a span that needs more than kMaxDenseSamples samples takes the
+/// general march.
+constexpr std::uint32_t kDenseSamplesPerSegment = 4;
+constexpr std::uint32_t kMaxDenseSamples = 4096;
+
 /// Adaptive method: most gaps (stretches without an image between two mapped samples)
 /// the march of one run splits out by finding their edges; past that, a gap costs two
 /// unmeasured segments. Each split inserts into the run's sample table, so this bounds
@@ -78,6 +86,25 @@ constexpr std::size_t kMaxEdgeSearches = std::size_t{1} << 16;
 /// images grow without bound, and the length they add would force a coarser c1 on the
 /// whole curve.
 using PointMapping = std::function<bool(const Point3& local, Point3& mapped)>;
+
+/// A PointMapping that is a projective map followed by a scale and offset per axis: the
+/// image of p is scale * (X, Y, Z) / W + offset (an axis with scale 0 is its offset),
+/// where (X, Y, Z, W) = matrix * (p, 1) and matrix is given by rows. p has an image
+/// when W != 0 (requirePositiveW: W > 0; clipNearer also needs Z <= 0, frustum z above
+/// 0 being nearer than the hither plane) and the image is finite. Given this form,
+/// tessellateAdaptive maps a span's control points once and, where every control point
+/// of a span has W > 0 (and Z < 0 with clipNearer), so that the whole span has an
+/// image, samples the mapped span with the fast kernel to find where segments end,
+/// instead of mapping every evaluation.
+struct ProjectiveMapping {
+    double matrix[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    double scale[3] = {1, 1, 1};
+    double offset[3] = {0, 0, 0};
+    bool requirePositiveW = false;
+    bool clipNearer = false;
+
+    bool operator()(const Point3& local, Point3& mapped) const;
+};
 
 /// Whether a span certainly cannot be seen, from its rational Bezier control points
 /// (homogeneous, weights > 0, in the curve's local coordinates; `order` of them). It
@@ -170,6 +197,21 @@ TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLen
 void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
                         TessellatedCurve& out, const ViewLimits& limits = {});
 void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
+                        TessellatedCurve& out, const ViewLimits& limits = {});
+
+/// The same with a ProjectiveMapping, which is faster: a span with an image everywhere
+/// (see ProjectiveMapping) is mapped as a whole and sampled densely with the kernel,
+/// kDenseSamplesPerSegment samples per planned segment, and each vertex is the last
+/// sample whose image is within maxSegmentLength of the previous vertex's, moved by one
+/// secant step towards (1 - kChordTolerance / 2) of it when that point's chord, evaluated
+/// and mapped, stays within it (where even the next sample is farther, a point found
+/// between them as above). Every segment is still measured between the images of its
+/// end points, so none is longer than maxSegmentLength; a segment is at least about
+/// (1 - 1 / kDenseSamplesPerSegment) of it, and normally (1 - kChordTolerance) of it.
+/// Other spans are marched as with a PointMapping.
+void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const ProjectiveMapping& mapping,
+                        TessellatedCurve& out, const ViewLimits& limits = {});
+void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const ProjectiveMapping& mapping,
                         TessellatedCurve& out, const ViewLimits& limits = {});
 
 } // namespace q3::nurbs

@@ -433,6 +433,84 @@ TEST(NurbsTessellate, PartlyBehindEyeCurveTerminatesAndMeasuresVisibleChords)
     EXPECT_GT(unmeasured, 0u);
 }
 
+// PerspectiveMap{eyeZ, nearDepth} as a ProjectiveMapping: W is the depth, X and Y
+// are focal times x and -y, and Z = nearDepth - depth must not be positive.
+ProjectiveMapping projectiveOf(const PerspectiveMap& map)
+{
+    ProjectiveMapping projective;
+    const double rows[4][4] = {{map.focal, 0, 0, 0},
+                               {0, -map.focal, 0, 0},
+                               {0, 0, -1, map.nearDepth + map.eyeZ},
+                               {0, 0, 1, -map.eyeZ}};
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) {
+            projective.matrix[r][c] = rows[r][c];
+        }
+    }
+    projective.scale[2] = 0.0;
+    projective.offset[0] = 320.0;
+    projective.offset[1] = 240.0;
+    projective.requirePositiveW = true;
+    projective.clipNearer = true;
+    return projective;
+}
+
+// The ProjectiveMapping path (the mapped span sampled densely, vertices chosen among
+// the samples) against the test's own perspective map and reference evaluator: random
+// rational curves of every order (weights 0.25..4, so the image's speed varies
+// sharply), c1 from 1 to 40 pixels and once 0.2 (so that long spans may need more
+// than kMaxDenseSamples samples and take the general march), and eyes inside the curves' box (spans crossing the near plane take
+// the general march too).
+TEST(NurbsTessellate, ProjectiveMappingKeepsEveryChordWithinC1)
+{
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> logPixels(std::log(1.0), std::log(40.0));
+    std::size_t unmeasured = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const unsigned k = 2 + trial % 15;
+        const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, 0.2, 12});
+        const bool eyeInside = trial % 5 == 4;
+        const PerspectiveMap perspective = eyeInside ? PerspectiveMap{0.0, 0.1} : PerspectiveMap{-25.0, 1.0};
+        const PointMapping mapping = perspective;
+        const double c1 = trial == 0 ? 0.2 : std::exp(logPixels(rng));
+        TessellatedCurve result;
+        tessellateAdaptive(curve.ref(), c1, projectiveOf(perspective), result);
+        expectPolylineInvariants(curve, result, 7);
+        if (!result.capped) {
+            EXPECT_LE(longestMappedChord(curve, result, mapping), result.effectiveValue * (1.0 + 1e-9))
+                << "trial " << trial << " order " << k << " c1 " << c1;
+        }
+        unmeasured += result.unmeasuredSegments;
+        if (!eyeInside) {
+            EXPECT_FALSE(result.substituted);
+            EXPECT_FALSE(result.capped);
+            EXPECT_EQ(result.unmeasuredSegments, 0u);
+            const double length = mappedLength(curve, mapping, 100);
+            EXPECT_LE(double(segmentCount(result)), 1.2 * length / c1 + double(countNonEmptySpans(curve.ref())))
+                << "trial " << trial << " order " << k << " c1 " << c1;
+        }
+    }
+    EXPECT_GT(unmeasured, 0u);
+}
+
+// A rational cubic whose middle weights pull it into a hairpin much narrower than its
+// probes' spacing: the dense samples near the turn are farther apart than c1, so the
+// march searches between them; every chord stays within c1.
+TEST(NurbsTessellate, ProjectiveMappingSearchesWhereDenseSamplesAreFartherThanC1)
+{
+    const TestCurve curve = test::makeCurve(4, {-5, 0, 0, 1, 4000, 1, 0, 400, -4000, -1, 0, 400, 5, 0.02f, 0, 1},
+                                            {0, 0, 0, 0, 1, 1, 1, 1});
+    const PerspectiveMap perspective{-25.0, 1.0};
+    const PointMapping mapping = perspective;
+    for (const double c1 : {0.5, 2.0, 7.0}) {
+        TessellatedCurve result;
+        tessellateAdaptive(curve.ref(), c1, projectiveOf(perspective), result);
+        expectPolylineInvariants(curve, result);
+        EXPECT_FALSE(result.capped);
+        EXPECT_LE(longestMappedChord(curve, result, mapping), c1 * (1.0 + 1e-9)) << c1;
+    }
+}
+
 TEST(NurbsTessellate, UnmappableCurveGetsProbeSegmentsPerSpan)
 {
     const TestCurve curve = test::listingOneCurve();
