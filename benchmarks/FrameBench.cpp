@@ -24,6 +24,8 @@
 //   FrameEdited/N  q3edited: every curve edited (Q3NURBCurve_SetKnot to its
 //                  own value) and the frame drawn, so all 1000 are
 //                  tessellated again; against raw (informational).
+//   FrameCpu/N/S   the main thread's CPU time of a Q3 frame (S = 0 constant,
+//                  1 screen space): for comparing builds, not paired.
 //   EmptyFrame/N   q3: StartRendering, EndRendering (pixmap written);
 //                  raw: glClear, glFinish, glReadPixels;
 //                  rawdirect: glClear, glFinish into a BGRA buffer (informational).
@@ -435,6 +437,26 @@ void FrameScreenSpace(benchmark::State& state)
         double(s.tessellations() - before) / double(std::max<benchmark::IterationCount>(2 * state.iterations(), 1));
 }
 
+// The main thread's CPU time of a Q3 frame of the 1000 retained curves
+// (Google Benchmark's default clock: this thread only, so llvmpipe's
+// rasterizer threads and the machine's other load are left out): what Q3
+// itself spends per frame subdividing, batching and writing the pixmap.
+// Arg 0: constant c1 = 64; 1: the default style (screen space, 20 px). Not
+// paired: compare builds by running them alternately.
+void FrameCpu(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    const bool constant = state.range(1) == 0;
+    Scene& s = scene();
+    q3bench::BenchView& view = s.view(size);
+    if (!s.renderQ3(view, constant)) {
+        state.SkipWithError("a frame failed");
+        return;
+    }
+    for (auto _ : state)
+        s.renderQ3(view, constant);
+}
+
 void EmptyFrame(benchmark::State& state)
 {
     const unsigned long size = static_cast<unsigned long>(state.range(0));
@@ -529,6 +551,7 @@ void MisuseFrame(benchmark::State& state)
 BENCHMARK(Frame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameEdited)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameScreenSpace)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
+BENCHMARK(FrameCpu)->Args({512, 0})->Args({512, 1})->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(EmptyFrame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(MisuseFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 

@@ -194,6 +194,8 @@ void subdivide(const Plan& plan, const Source& source, nurbs::TessellatedCurve& 
 // Why the subdivision gave in, for the warning; empty when it did not.
 std::string substitutionReport(const Plan& plan, const nurbs::TessellatedCurve& result)
 {
+    if (!result.substituted && !result.capped)
+        return {};
     const std::string limit =
         plan.maxSegments < limits::kMaxSegmentsPerCurve
             ? " would need more than the " + std::to_string(plan.maxSegments) +
