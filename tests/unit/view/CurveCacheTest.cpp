@@ -297,5 +297,28 @@ TEST(CurveCacheMemory, WithoutAScratchACallUsesItsOwnBufferAndDrawsTheSame)
     EXPECT_EQ(own, scratched);
 }
 
+// The view's buffer keeps the constant method's Bernstein table between
+// curves: reusing it, or replacing it for another order or count, gives the
+// vertices a fresh result gives, bit for bit.
+TEST(CurveCacheMemory, AReusedResultGivesWhatAFreshOneGives)
+{
+    const UniformCurve cubicA(4, 7);
+    const UniformCurve cubicB(4, 3);
+    const UniformCurve quintic(6, 5);
+    nurbs::TessellatedCurve reused;
+    const struct {
+        const UniformCurve* curve;
+        std::uint32_t segments;
+    } runs[] = {{&cubicA, 64}, {&cubicB, 64}, {&quintic, 64}, {&cubicA, 9}, {&cubicB, 64}};
+    for (const auto& run : runs) {
+        nurbs::tessellateConstant(run.curve->ref(), run.segments, reused);
+        const nurbs::TessellatedCurve fresh = nurbs::tessellateConstant(run.curve->ref(), run.segments);
+        EXPECT_EQ(reused.vertices, fresh.vertices) << "order " << run.curve->order << ", " << run.segments;
+        EXPECT_EQ(reused.parameters, fresh.parameters);
+        EXPECT_EQ(reused.table.order(), run.curve->order);
+        EXPECT_EQ(reused.table.segments(), run.segments);
+    }
+}
+
 } // namespace
 } // namespace q3
