@@ -2,42 +2,31 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
+#include <atomic>
 #include <cstdint>
-#include <memory>
-#include <vector>
 
 namespace q3 {
 
-namespace nurbs {
-class BezierForm;
-}
-
-/// What a retained NURB curve keeps between renders. The view fills it and
-/// decides when it is stale (key: everything the tessellation depends on);
-/// the curve empties it on every edit. Immediate-mode curves have none.
+/// What a retained NURB curve keeps of its tessellation: nothing but a count.
+/// A retained curve may hold at most 4 times its data (issue 16), and even a
+/// 4-point Bezier's 65-vertex polyline (780 bytes) is 8 times its 96 data
+/// bytes, so no polyline, Bezier form or key is kept: every pass subdivides
+/// the curve again into a scratch buffer owned by the view
+/// (view/CurveTessellation.h), which the renderer copies into its batch.
+/// Immediate-mode and borrowed curves have none.
 struct CurveCache {
-    /// The curve's spans in rational Bezier form, built on first use; stays null
-    /// for a curve above nurbs::kWholeFormLimit.
-    std::shared_ptr<const nurbs::BezierForm> bezier;
-    /// What the polyline was made under (edit index, style, matrices, pane...).
-    std::vector<double> key;
-    /// The last tessellation, x y z per vertex, in the curve's local space.
-    std::vector<float> polyline;
-    bool valid = false;
-    /// Whether building the polyline gave in to the segment cap; a reuse of
-    /// the polyline posts the same warning again.
-    bool capped = false;
-    /// How many times the polyline has been (re)built; tests read it.
-    std::uint64_t tessellations = 0;
-
-    void invalidate()
+    CurveCache() = default;
+    CurveCache(const CurveCache& other) : tessellations(other.tessellations.load(std::memory_order_relaxed)) {}
+    CurveCache& operator=(const CurveCache& other)
     {
-        bezier.reset();
-        key.clear();
-        polyline.clear();
-        valid = false;
-        capped = false;
+        tessellations.store(other.tessellations.load(std::memory_order_relaxed), std::memory_order_relaxed);
+        return *this;
     }
+
+    /// How many times the curve has been subdivided (once per pass that drew
+    /// or decomposed it); tests and benchmarks read it. Atomic because views
+    /// on several threads may draw the same retained curve.
+    std::atomic<std::uint64_t> tessellations{0};
 };
 
 } // namespace q3

@@ -49,7 +49,7 @@ public:
 
     /// Subdivides a valid NURB curve under the current style and hands the
     /// polyline to `use` (view/CurveTessellation.h says how); `cache` is a
-    /// retained curve's own, or null.
+    /// retained curve's own (which counts the subdivisions), or null.
     virtual void curvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
                                const PolylineUser& use) const = 0;
 

@@ -43,6 +43,15 @@ private:
 
 } // namespace
 
+struct Geometry::MeshCache {
+    Mesh mesh;
+    std::vector<double> key;
+};
+
+Geometry::Geometry() = default;
+
+Geometry::~Geometry() = default;
+
 void Geometry::accept(ShapeVisitor& visitor) const
 {
     visitor.visitGeometry(*this);
@@ -65,24 +74,21 @@ void Geometry::withMesh(std::vector<double> key, const std::function<void(Mesh&)
     }
     key.push_back(double(editIndex()));
     std::lock_guard<std::mutex> lock(meshLock(this));
-    if (!m_meshValid || m_meshKey != key) {
+    if (!m_meshCache || m_meshCache->key != key) {
         // Build into a fresh mesh so that a failure leaves no half-built one.
-        Mesh fresh;
-        build(fresh);
-        m_mesh = std::move(fresh);
-        m_meshKey = std::move(key);
-        m_meshValid = true;
+        auto fresh = std::make_unique<MeshCache>();
+        build(fresh->mesh);
+        fresh->key = std::move(key);
+        m_meshCache = std::move(fresh);
         ++m_meshBuilds;
     }
-    use(m_mesh);
+    use(m_meshCache->mesh);
 }
 
 void Geometry::onEdited()
 {
     std::lock_guard<std::mutex> lock(meshLock(this));
-    m_mesh.clear();
-    m_meshKey.clear();
-    m_meshValid = false;
+    m_meshCache.reset();
 }
 
 void appendEditIndices(std::vector<double>& key, const std::vector<const AttributeSet*>& sets)

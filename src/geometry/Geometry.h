@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace q3 {
@@ -57,8 +58,10 @@ public:
     /// How many times the cached mesh has been built; tests read it.
     std::uint64_t meshBuilds() const { return m_meshBuilds; }
 
+    ~Geometry() override;
+
 protected:
-    Geometry() = default;
+    Geometry();
 
     /// Runs `use` on the mesh built by `build` under `key` (everything the
     /// mesh depends on besides the edit index, which every key includes):
@@ -73,9 +76,12 @@ protected:
     void onEdited() override;
 
 private:
-    mutable Mesh m_mesh;
-    mutable std::vector<double> m_meshKey;
-    mutable bool m_meshValid = false;
+    /// The cached mesh and its key, allocated only by a geometry that
+    /// builds one: most geometries (curves, lines, points) never do, and an
+    /// inline Mesh would add 264 bytes to each of them (issue 16's memory
+    /// target counts every byte a retained curve holds).
+    struct MeshCache;
+    mutable std::unique_ptr<MeshCache> m_meshCache;
     mutable std::uint64_t m_meshBuilds = 0;
     bool m_cacheable = true;
 };

@@ -114,12 +114,6 @@ Ref<Geometry> NURBCurve::decomposed(const DecomposeContext& context) const
     return result;
 }
 
-void NURBCurve::onEdited()
-{
-    m_cache.invalidate();
-    DataGeometry::onEdited();
-}
-
 TQ3RationalPoint4D NURBCurve::controlPoint(unsigned long index) const
 {
     if (index >= data().numPoints)

@@ -25,8 +25,8 @@ nurbs::CurveRef curveRefOf(const TQ3NURBCurveData& data);
 
 /// A NURB curve. Invariant: its order, control points and knots always
 /// satisfy validateNURBCurveData; every edit is checked on a copy first and
-/// bumps the edit index (dropping the cached tessellation) only once it has
-/// been applied.
+/// bumps the edit index only once it has been applied. It keeps no
+/// tessellation (CurveCache): each pass subdivides it again.
 class NURBCurve final : public DataGeometry<NURBCurve, TQ3NURBCurveData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3GeometryTypeNURBCurve;
@@ -56,9 +56,6 @@ public:
 
     nurbs::CurveRef curve() const { return curveRefOf(data()); }
     CurveCache& cache() const { return m_cache; }
-
-protected:
-    void onEdited() override;
 
 private:
     mutable CurveCache m_cache;

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 
-// From a view's state to the nurbs module's tessellators (Tessellate.h),
-// with the retained curve's cache in between. A setting resolves to a Plan:
-// the method, c1, and the matrix segment lengths are measured through
-// (local -> world for world space; local -> frustum, then the perspective
-// divide and the pane's pixel scale, for screen space: the article's
-// "measured in screen space"). The plan's values are the cache key, so a
-// polyline is reused exactly when everything it was made from is unchanged.
+// From a view's state to the nurbs module's tessellators (Tessellate.h). A
+// setting resolves to a Plan: the method, c1, and the matrix segment lengths
+// are measured through (local -> world for world space; local -> frustum,
+// then the perspective divide and the pane's pixel scale, for screen space:
+// the article's "measured in screen space"). The plan's values are also the
+// key surfaces cache their meshes under (measureFor).
+//
+// Curves keep nothing between passes (geometry/CurveCache.h): each pass
+// subdivides into the view's scratch buffer. Per curve that costs the
+// kernel (a few ns per vertex for the constant method) and no heap block of
+// this file's own: the mapping and culling functions capture a pointer to
+// the plan, which fits std::function's inline storage.
 
 #include "view/CurveTessellation.h"
 
@@ -16,11 +21,8 @@
 #include "geometry/nurbs/Tessellate.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
-#include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -101,25 +103,29 @@ Plan planFor(const TessellationSetting& setting)
 // the whole span, and every chord between two of its points, is outside that
 // plane too. The yon plane is not used: culling there would depend on the
 // renderer's depth range.
+bool outsideView(const Matrix& m, const nurbs::Point4* points, unsigned order)
+{
+    unsigned outside[5] = {0, 0, 0, 0, 0};
+    for (unsigned i = 0; i < order; ++i) {
+        const glm::dvec4 v = m * glm::dvec4(points[i].x, points[i].y, points[i].z, points[i].w);
+        outside[0] += v.x > v.w ? 1 : 0;
+        outside[1] += -v.x > v.w ? 1 : 0;
+        outside[2] += v.y > v.w ? 1 : 0;
+        outside[3] += -v.y > v.w ? 1 : 0;
+        outside[4] += v.z > 0.0 ? 1 : 0;
+    }
+    for (unsigned count : outside)
+        if (count == order)
+            return true;
+    return false;
+}
+
+// The plan must outlive the result (it is captured by address).
 nurbs::SpanCulling cullingFor(const Plan& plan)
 {
     if (!plan.cull)
         return {};
-    return [m = plan.toFrustum](const nurbs::Point4* points, unsigned order) {
-        unsigned outside[5] = {0, 0, 0, 0, 0};
-        for (unsigned i = 0; i < order; ++i) {
-            const glm::dvec4 v = m * glm::dvec4(points[i].x, points[i].y, points[i].z, points[i].w);
-            outside[0] += v.x > v.w ? 1 : 0;
-            outside[1] += -v.x > v.w ? 1 : 0;
-            outside[2] += v.y > v.w ? 1 : 0;
-            outside[3] += -v.y > v.w ? 1 : 0;
-            outside[4] += v.z > 0.0 ? 1 : 0;
-        }
-        for (unsigned count : outside)
-            if (count == order)
-                return true;
-        return false;
-    };
+    return [p = &plan](const nurbs::Point4* points, unsigned order) { return outsideView(p->toFrustum, points, order); };
 }
 
 // The space segment lengths are measured in, as a projective map
@@ -168,17 +174,11 @@ void subdivide(const Plan& plan, const Source& source, nurbs::TessellatedCurve& 
         nurbs::tessellateAdaptive(source, plan.c1, projectiveFor(plan), out, limits);
 }
 
-template <class Source>
-nurbs::TessellatedCurve subdivide(const Plan& plan, const Source& source)
-{
-    nurbs::TessellatedCurve out;
-    subdivide(plan, source, out);
-    return out;
-}
-
 // Why the subdivision gave in, for the warning; empty when it did not.
 std::string substitutionReport(const Plan& plan, const nurbs::TessellatedCurve& result)
 {
+    if (!result.substituted && !result.capped)
+        return {};
     const std::string limit =
         plan.maxSegments < limits::kMaxSegmentsPerCurve
             ? " would need more than the " + std::to_string(plan.maxSegments) +
@@ -197,87 +197,6 @@ std::string substitutionReport(const Plan& plan, const nurbs::TessellatedCurve& 
         return std::string(space) + " subdivision with c1 = " + std::to_string(plan.c1) + limit +
                "; some segments are longer than c1";
     return {};
-}
-
-// Retained curves drawn by views on several threads share their cache; a
-// few striped locks keep that safe without a lock in every curve.
-std::mutex& lockFor(const CurveCache* cache)
-{
-    static std::array<std::mutex, 64> stripes;
-    const auto address = reinterpret_cast<std::uintptr_t>(cache);
-    return stripes[(address / alignof(CurveCache)) % stripes.size()];
-}
-
-// Culling makes the polyline depend on which spans are hidden, not on the
-// camera as such: with the Bezier form at hand, the key gets the hidden spans
-// (32 to a value, exact in a double) when there are any, so a camera move
-// that hides nothing new reuses the polyline, and a curve hidden nowhere
-// shares it with bounding loops. Without the form, the key gets the matrix.
-void appendCulling(const Plan& plan, const CurveCache& cache, std::vector<double>& key)
-{
-    if (!plan.cull)
-        return;
-    if (!cache.bezier) {
-        key.push_back(-1.0);
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j)
-                key.push_back(plan.toFrustum[i][j]);
-        return;
-    }
-    const nurbs::SpanCulling hidden = cullingFor(plan);
-    const nurbs::BezierForm& form = *cache.bezier;
-    std::vector<double> mask((form.spanCount() + 31) / 32, 0.0);
-    bool any = false;
-    for (std::size_t s = 0; s < form.spanCount(); ++s)
-        if (hidden(form.spanPoints(s), form.order())) {
-            mask[s / 32] += double(std::uint32_t{1} << (s % 32));
-            any = true;
-        }
-    if (any) {
-        key.push_back(-2.0);
-        key.insert(key.end(), mask.begin(), mask.end());
-    }
-}
-
-// Reuses or rebuilds a cache's polyline; returns the warning to post (a
-// reused polyline that was capped warns again, as its first drawing did).
-std::string useCache(const nurbs::CurveRef& curve, CurveCache& cache, const Plan& plan,
-                     const PolylineUser& use)
-{
-    // A large curve keeps no Bezier form: the tessellators convert it span by
-    // span, so the cache holds only the polyline (Tessellate.h, kWholeFormLimit).
-    if (!cache.bezier && nurbs::fitsWholeBezierForm(curve))
-        cache.bezier = std::make_shared<const nurbs::BezierForm>(curve);
-    std::vector<double> key = plan.key();
-    appendCulling(plan, cache, key);
-    std::string report;
-    if (!cache.valid || cache.key != key) {
-        // Into the cache's polyline (invalidate keeps its capacity) and this
-        // thread's parameter scratch: re-tessellating a curve at a similar
-        // size allocates nothing and faults no new pages in.
-        thread_local std::vector<double> parameterScratch;
-        nurbs::TessellatedCurve result;
-        result.vertices.swap(cache.polyline);
-        result.parameters.swap(parameterScratch);
-        if (cache.bezier)
-            subdivide(plan, *cache.bezier, result);
-        else
-            subdivide(plan, curve, result);
-        report = substitutionReport(plan, result);
-        cache.polyline.swap(result.vertices);
-        parameterScratch.swap(result.parameters);
-        cache.key = std::move(key);
-        cache.capped = !report.empty();
-        cache.valid = true;
-        ++cache.tessellations;
-    } else if (cache.capped) {
-        report = "the curve's " + std::string(plan.measure == Measure::kConstant ? "constant" : "adaptive") +
-                 " subdivision with c1 = " + std::to_string(plan.c1) +
-                 " would need more segments than " + std::to_string(plan.maxSegments) +
-                 " (the most it may have here); it is drawn with fewer";
-    }
-    use(cache.polyline.data(), cache.polyline.size() / 3);
-    return report;
 }
 
 } // namespace
@@ -314,18 +233,17 @@ glm::dvec2 frustumToPane(const PixelRect& pane, double x, double y)
 }
 
 void withCurvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
-                       const TessellationSetting& setting, const PolylineUser& use)
+                       const TessellationSetting& setting, const PolylineUser& use,
+                       nurbs::TessellatedCurve* scratch)
 {
     const Plan plan = planFor(setting);
-    std::string report;
-    if (cache != nullptr) {
-        std::lock_guard<std::mutex> lock(lockFor(cache));
-        report = useCache(curve, *cache, plan, use);
-    } else {
-        const nurbs::TessellatedCurve result = subdivide(plan, curve);
-        use(result.vertices.data(), result.vertexCount());
-        report = substitutionReport(plan, result);
-    }
+    nurbs::TessellatedCurve own;
+    nurbs::TessellatedCurve& result = scratch != nullptr ? *scratch : own;
+    subdivide(plan, curve, result);
+    if (cache != nullptr)
+        cache->tessellations.fetch_add(1, std::memory_order_relaxed);
+    use(result.vertices.data(), result.vertexCount());
+    const std::string report = substitutionReport(plan, result);
     if (!report.empty())
         errors::postWarning(kQ3WarningParameterOutOfRange, report);
 }

@@ -15,6 +15,10 @@
 
 namespace q3 {
 
+namespace nurbs {
+struct TessellatedCurve;
+}
+
 /// Where a loop's image goes: the camera's world-to-frustum matrix and the
 /// pixels of the pane it maps onto (y down, as QuickDraw 3D panes are).
 struct Window {
@@ -56,24 +60,20 @@ std::size_t viewSegmentCap(const PixelRect& pane);
 /// segment longer than c1 pixels after local -> world -> frustum (with the
 /// perspective divide) -> pane.
 ///
-/// A retained curve passes its cache: the polyline is rebuilt only when the
-/// cache is empty (the curve drops it on every edit) or was built under
-/// another setting (its key: method, c1, the matrix the method measures
-/// through, the pane size, and in a rendering loop which spans the view
-/// hides); the Bezier form is built once per edit and kept, unless it would
-/// exceed nurbs::kWholeFormLimit (then the curve is converted span by span at
-/// each rebuild and only the polyline is kept). `tessellations` counts
-/// rebuilds. Caches are locked while in use, so views on several threads may
-/// draw the same retained curve. Immediate mode (cache null) subdivides on
-/// every call.
+/// Every call subdivides, retained curve or not: a retained curve keeps no
+/// polyline (CurveCache says why); its `cache`, when given, only counts the
+/// call in `tessellations`. The polyline is written into `scratch` when
+/// given (a view passes one it owns, so a frame of retained curves allocates
+/// nothing once the scratch has grown to the largest curve) and into a
+/// buffer of the call's own otherwise; `use` must not keep the pointer.
 ///
 /// When the subdivision had to give in to its cap (kQ3SubdivisionMaxSegmentsPerCurve,
 /// or in a view for world and screen space the pane's cap set by
 /// kQ3SubdivisionViewSegmentsPerPixel, both in QD3DStyle.h),
-/// kQ3WarningParameterOutOfRange is posted after `use` returns, also when the
-/// polyline comes from the cache.
+/// kQ3WarningParameterOutOfRange is posted after `use` returns.
 void withCurvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
-                       const TessellationSetting& setting, const PolylineUser& use);
+                       const TessellationSetting& setting, const PolylineUser& use,
+                       nurbs::TessellatedCurve* scratch = nullptr);
 
 /// What a setting means for surfaces (geometry/Decompose.h): the method, c1
 /// and c2 as checkSubdivisionStyle left them (constant values truncated),

@@ -91,7 +91,7 @@ TessellationSetting Pass::tessellationSetting() const
 
 void Pass::curvePolyline(const nurbs::CurveRef& curve, CurveCache* cache, const PolylineUser& use) const
 {
-    withCurvePolyline(curve, cache, tessellationSetting(), use);
+    withCurvePolyline(curve, cache, tessellationSetting(), use, m_curveScratch);
 }
 
 SubdivisionMeasure Pass::subdivisionMeasure() const

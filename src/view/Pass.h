@@ -68,6 +68,10 @@ public:
     /// Whether curves may skip subdividing what the window cannot show
     /// (TessellationSetting::cullOutsideView): rendering loops only.
     void allowCurveCulling(bool allow) { m_cullCurves = allow; }
+    /// Where curves are subdivided into (withCurvePolyline's scratch): the
+    /// view's own buffer, which outlives the pass; null gives each curve a
+    /// buffer of its own.
+    void useCurveScratch(nurbs::TessellatedCurve* scratch) { m_curveScratch = scratch; }
 
     void push();
     /// Throws kQ3ErrorNothingToPop when nothing pushed is left, or nothing
@@ -120,6 +124,7 @@ private:
     std::vector<GroupEntry> m_groups;
     bool m_cullGroups = true;
     bool m_cullCurves = false;
+    nurbs::TessellatedCurve* m_curveScratch = nullptr;
 };
 
 } // namespace q3

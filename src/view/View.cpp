@@ -5,6 +5,7 @@
 #include "core/EnumValue.h"
 
 #include "geometry/Geometry.h"
+#include "geometry/nurbs/Tessellate.h"
 #include "group/Group.h"
 #include "light/Light.h"
 #include "render/OffscreenRenderer.h"
@@ -93,6 +94,21 @@ SceneLighting lightingOf(const Group* lights, const Camera& camera)
 } // namespace
 
 View::View() = default;
+
+std::size_t View::curveScratchBytes() const
+{
+    if (!m_curveScratch)
+        return 0;
+    return m_curveScratch->vertices.capacity() * sizeof(float) +
+           m_curveScratch->parameters.capacity() * sizeof(double);
+}
+
+nurbs::TessellatedCurve* View::curveScratch()
+{
+    if (!m_curveScratch)
+        m_curveScratch = std::make_unique<nurbs::TessellatedCurve>();
+    return m_curveScratch.get();
+}
 
 View::~View()
 {
@@ -219,6 +235,7 @@ void View::startRendering()
                                              defaultAttributes(m_defaultAttributes.get()), style);
     pass->allowGroupCulling(m_cullGroups);
     pass->allowCurveCulling(true);
+    pass->useCurveScratch(curveScratch());
     throwIfFailed(m_offscreen->beginFrame(destination.layout.width, destination.layout.height, clear,
                                           destination.pane, options),
                   "starting the image");
@@ -289,6 +306,7 @@ void View::startBounding(Loop loop, const TQ3ComputeBounds& computeBounds)
     }
     auto pass = std::make_unique<BoundsPass>(computeBounds, window, defaultAttributes(m_defaultAttributes.get()));
     pass->allowGroupCulling(m_cullGroups);
+    pass->useCurveScratch(curveScratch());
     m_pass = std::move(pass);
     m_loop = loop;
     m_cancelled = false;

@@ -12,6 +12,10 @@
 
 namespace q3 {
 
+namespace nurbs {
+struct TessellatedCurve;
+}
+
 extern const ClassInfo kViewClass;
 
 class AttributeSet;
@@ -60,6 +64,11 @@ public:
     ~View() override;
 
     const ClassInfo& classInfo() const override { return kViewClass; }
+
+    /// Bytes reserved by the buffer the view's passes subdivide curves into
+    /// (0 before the first curve): it grows to the largest curve drawn and is
+    /// freed with the view. Benchmarks and tests read it.
+    std::size_t curveScratchBytes() const;
 
     /// The setters throw kQ3ErrorViewIsStarted inside a loop and then change
     /// nothing. The view keeps its own reference to what it is given.
@@ -174,6 +183,8 @@ private:
 
     void requireNoLoop() const;
     Pass& activePass();
+    /// m_curveScratch, made on first use.
+    nurbs::TessellatedCurve* curveScratch();
     void startBounding(Loop loop, const TQ3ComputeBounds& computeBounds);
     /// Closes the loop, whatever state it is in.
     void endLoop();
@@ -188,6 +199,10 @@ private:
 
     Loop m_loop = Loop::kNone;
     bool m_cancelled = false;
+    /// The buffer every pass of this view subdivides curves into (declared
+    /// before m_pass, which points to it, so it is destroyed after). Views
+    /// are not shared between threads, so neither is it.
+    std::unique_ptr<nurbs::TessellatedCurve> m_curveScratch;
     std::unique_ptr<Pass> m_pass;
     std::shared_ptr<WriteTarget> m_writeTarget;
     std::unique_ptr<OffscreenRenderer> m_offscreen;

@@ -91,7 +91,7 @@ void sampleBezier(const Point4* points, const BernsteinTable& table, std::uint32
                   std::uint32_t count, double* xyz);
 
 /// A curve cut into its non-empty spans, each converted once to rational Bezier form
-/// in double: what a retained curve caches and rebuilds on edit.
+/// in double: what the adaptive method converts a curve to up front (kWholeFormLimit).
 /// Invariant: points().size() == spanCount() * order(); span s covers
 /// [span(s).start, span(s).end] and its Bezier points are spanPoints(s)[0 .. order-1].
 /// An invalid curve gives an empty form (spanCount() == 0); it evaluates to (0, 0, 0, 0)

@@ -194,7 +194,10 @@ void constantImpl(Spans& spans, std::uint32_t requested, TessellatedCurve& out, 
     out.substituted = m != requested;
     out.effectiveValue = m;
 
-    const BernsteinTable table(spans.order(), m);
+    if (out.table.order() != spans.order() || out.table.segments() != m) {
+        out.table = BernsteinTable(spans.order(), m);
+    }
+    const BernsteinTable& table = out.table;
     std::vector<double> fraction(m);
     for (std::uint32_t j = 0; j < m; ++j) {
         fraction[j] = double(j) / double(m);

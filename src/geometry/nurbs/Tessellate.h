@@ -137,6 +137,11 @@ struct TessellatedCurve {
     bool capped = false;             ///< adaptive: kMaxSegments (or a mapping too steep to resolve) left segments longer than effectiveValue
     std::size_t unmeasuredSegments = 0; ///< adaptive: segments with an endpoint the mapping rejected
     std::size_t hiddenSpans = 0;        ///< spans ViewLimits::hidden culled (one segment each)
+    /// Workspace, not output: the constant method's last Bernstein table, kept so that
+    /// a caller re-tessellating into the same result (a view, every frame) does not
+    /// rebuild it for every curve of the same order and count (its values do not
+    /// depend on the curve, so the vertices are the same bits).
+    BernsteinTable table;
 
     std::size_t vertexCount() const { return parameters.size(); }
 };

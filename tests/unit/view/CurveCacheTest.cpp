@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 
-// The retained-mode curve cache as the view uses it: an unchanged re-render
-// tessellates nothing; every change the polyline depends on (edit, style,
-// transform, camera, pane size) rebuilds it once; changes it does not depend
-// on do not. The scene is set up through the C API and the cache is read
-// through the core (CurveCache::tessellations, CurveCache::bezier).
+// A retained curve as the view draws it: it keeps no tessellation
+// (geometry/CurveCache.h), so every pass subdivides it once, into the view's
+// one curve buffer; every change (edit, style) is drawn at the next frame and
+// an unchanged re-render draws the same pixels. The scene is set up through
+// the C API and the counter read through the core
+// (CurveCache::tessellations, View::curveScratchBytes).
 
 #include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
@@ -18,6 +19,7 @@
 #include "geometry/nurbs/Bezier.h"
 #include "geometry/nurbs/Tessellate.h"
 #include "view/CurveTessellation.h"
+#include "view/View.h"
 
 #include <gtest/gtest.h>
 
@@ -62,15 +64,48 @@ protected:
     }
 
     CurveCache& cache() { return lookup<NURBCurve>(m_curve, "curve").cache(); }
+    std::uint64_t subdivisions() { return cache().tessellations.load(); }
+    std::size_t scratchBytes() { return lookup<View>(m_view, "view").curveScratchBytes(); }
 
-    // One frame: `before` runs first inside the loop, then the curve is submitted.
-    void render(const std::function<void(TQ3ViewObject)>& before = {})
+    // One frame: `before` runs first inside the loop, then `curve` (m_curve
+    // by default) is submitted. Returns the image.
+    std::vector<unsigned char> render(const std::function<void(TQ3ViewObject)>& before = {},
+                                      TQ3GeometryObject curve = nullptr)
     {
-        ASSERT_EQ(Q3View_StartRendering(m_view), kQ3Success);
+        EXPECT_EQ(Q3View_StartRendering(m_view), kQ3Success);
         if (before)
             before(m_view);
-        ASSERT_EQ(Q3Geometry_Submit(m_curve, m_view), kQ3Success);
-        ASSERT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
+        EXPECT_EQ(Q3Geometry_Submit(curve != nullptr ? curve : m_curve, m_view), kQ3Success);
+        EXPECT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
+        return m_memory;
+    }
+
+    // The vertices Q3Geometry_GetDecomposed gives under `before`.
+    std::vector<TQ3Point3D> decomposed(const std::function<void(TQ3ViewObject)>& before = {})
+    {
+        std::vector<TQ3Point3D> out;
+        EXPECT_EQ(Q3View_StartRendering(m_view), kQ3Success);
+        if (before)
+            before(m_view);
+        TQ3GeometryObject polyLine = Q3Geometry_GetDecomposed(m_curve, m_view);
+        EXPECT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
+        TQ3PolyLineData data{};
+        if (polyLine != nullptr && Q3PolyLine_GetData(polyLine, &data) == kQ3Success) {
+            for (unsigned long i = 0; i < data.numVertices; ++i)
+                out.push_back(data.vertices[i].point);
+            Q3PolyLine_EmptyData(&data);
+        }
+        if (polyLine != nullptr)
+            Q3Object_Dispose(polyLine);
+        return out;
+    }
+
+    static std::size_t lit(const std::vector<unsigned char>& image)
+    {
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < image.size(); i += 4)
+            count += image[i + 1] > 127 || image[i + 2] > 127 || image[i + 3] > 127 ? 1 : 0;
+        return count;
     }
 
     static constexpr unsigned long kWidth = 120;
@@ -87,163 +122,87 @@ protected:
     TQ3GeometryObject m_curve = nullptr;
 };
 
-TEST_F(CurveCacheTest, AnUnchangedRerenderTessellatesNothing)
+TEST_F(CurveCacheTest, EveryPassSubdividesOnceAndAnUnchangedFrameDrawsTheSamePixels)
 {
-    EXPECT_EQ(cache().tessellations, 0u);
-    render();
-    EXPECT_EQ(cache().tessellations, 1u);
-    EXPECT_TRUE(cache().valid);
-    const std::vector<float> first = cache().polyline;
+    EXPECT_EQ(subdivisions(), 0u);
+    const std::vector<unsigned char> first = render();
+    EXPECT_GT(lit(first), 0u);
+    EXPECT_EQ(subdivisions(), 1u);
     for (int frame = 0; frame < 4; ++frame)
+        EXPECT_EQ(render(), first) << "frame " << frame;
+    EXPECT_EQ(subdivisions(), 5u);
+    EXPECT_FALSE(decomposed().empty());
+    EXPECT_EQ(subdivisions(), 6u);
+}
+
+TEST_F(CurveCacheTest, TheViewSubdividesIntoOneBufferThatStopsGrowing)
+{
+    EXPECT_EQ(scratchBytes(), 0u);
+    render();
+    const std::size_t bytes = scratchBytes();
+    // At least the polyline: 12 bytes of vertex and 8 of parameter each.
+    EXPECT_GE(bytes, decomposed().size() * 20);
+    for (int frame = 0; frame < 3; ++frame)
         render();
-    EXPECT_EQ(cache().tessellations, 1u);
-    EXPECT_EQ(cache().polyline, first);
+    EXPECT_EQ(scratchBytes(), bytes);
+    // A finer style needs more room: the buffer grows once.
+    const TQ3SubdivisionStyleData fine = {kQ3SubdivisionMethodConstant, 1000, 1000};
+    render([&](TQ3ViewObject v) { Q3SubdivisionStyle_Submit(&fine, v); });
+    EXPECT_GE(scratchBytes(), 1001u * 20);
+    const std::size_t grown = scratchBytes();
+    render();
+    EXPECT_EQ(scratchBytes(), grown);
 }
 
-TEST_F(CurveCacheTest, DecomposingReusesTheRenderedPolyline)
+TEST_F(CurveCacheTest, AnEditIsDrawnAtTheNextFrame)
 {
-    render();
-    ASSERT_EQ(Q3View_StartRendering(m_view), kQ3Success);
-    TQ3GeometryObject polyLine = Q3Geometry_GetDecomposed(m_curve, m_view);
-    ASSERT_NE(polyLine, nullptr);
-    ASSERT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
-    EXPECT_EQ(cache().tessellations, 1u);
-    TQ3PolyLineData data{};
-    Q3PolyLine_GetData(polyLine, &data);
-    ASSERT_EQ(data.numVertices * 3, cache().polyline.size());
-    for (unsigned long i = 0; i < data.numVertices; ++i) {
-        EXPECT_EQ(data.vertices[i].point.x, cache().polyline[3 * i]);
-        EXPECT_EQ(data.vertices[i].point.y, cache().polyline[3 * i + 1]);
-    }
-    Q3PolyLine_EmptyData(&data);
-    Q3Object_Dispose(polyLine);
-}
-
-TEST_F(CurveCacheTest, AnEditRebuildsTheBezierFormAndThePolyline)
-{
-    render();
-    ASSERT_TRUE(cache().bezier);
+    const std::vector<unsigned char> before = render();
     const TQ3RationalPoint4D moved = {1, 2, 0, 1};
     ASSERT_EQ(Q3NURBCurve_SetControlPoint(m_curve, 1, &moved), kQ3Success);
-    EXPECT_FALSE(cache().valid);
-    EXPECT_FALSE(cache().bezier);
-    render();
-    EXPECT_EQ(cache().tessellations, 2u);
-    EXPECT_TRUE(cache().bezier);
-    // Q3Shared_Edited counts as an edit too.
-    ASSERT_EQ(Q3Shared_Edited(m_curve), kQ3Success);
-    render();
-    EXPECT_EQ(cache().tessellations, 3u);
-    render();
-    EXPECT_EQ(cache().tessellations, 3u);
+    const std::vector<unsigned char> after = render();
+    EXPECT_NE(after, before);
+    // The same pixels as a curve that was never drawn, made with the new data.
+    TQ3RationalPoint4D points[4] = {m_points[0], moved, m_points[2], m_points[3]};
+    const TQ3NURBCurveData data{4, 4, points, m_knots, nullptr};
+    TQ3GeometryObject fresh = Q3NURBCurve_New(&data);
+    ASSERT_NE(fresh, nullptr);
+    EXPECT_EQ(render({}, fresh), after);
+    Q3Object_Dispose(fresh);
+    // Setting the old point back draws the first image again.
+    ASSERT_EQ(Q3NURBCurve_SetControlPoint(m_curve, 1, &m_points[1]), kQ3Success);
+    EXPECT_EQ(render(), before);
 }
 
-TEST_F(CurveCacheTest, TheBezierFormIsBuiltOncePerEditWhateverTheStyle)
-{
-    render();
-    const nurbs::BezierForm* form = cache().bezier.get();
-    const TQ3SubdivisionStyleData styles[] = {{kQ3SubdivisionMethodConstant, 4, 4},
-                                              {kQ3SubdivisionMethodWorldSpace, 0.1f, 0.1f},
-                                              {kQ3SubdivisionMethodScreenSpace, 3, 3}};
-    for (const TQ3SubdivisionStyleData& style : styles)
-        render([&](TQ3ViewObject v) { Q3SubdivisionStyle_Submit(&style, v); });
-    EXPECT_EQ(cache().tessellations, 4u);
-    EXPECT_EQ(cache().bezier.get(), form);
-}
-
-TEST_F(CurveCacheTest, AStyleChangeRebuildsOnce)
+TEST_F(CurveCacheTest, AStyleChangeIsDrawnAtTheNextFrameAndGoingBackToo)
 {
     const TQ3SubdivisionStyleData constant = {kQ3SubdivisionMethodConstant, 6, 6};
     const TQ3SubdivisionStyleData finer = {kQ3SubdivisionMethodConstant, 7, 7};
     auto with = [](const TQ3SubdivisionStyleData& s) {
         return [&s](TQ3ViewObject v) { Q3SubdivisionStyle_Submit(&s, v); };
     };
-    render(with(constant));
-    render(with(constant));
-    EXPECT_EQ(cache().tessellations, 1u);
-    EXPECT_EQ(cache().polyline.size(), 7u * 3);
-    render(with(finer));
-    EXPECT_EQ(cache().tessellations, 2u);
-    EXPECT_EQ(cache().polyline.size(), 8u * 3);
-    // c2 does not matter to a curve.
-    const TQ3SubdivisionStyleData otherC2 = {kQ3SubdivisionMethodConstant, 7, 99};
-    render(with(otherC2));
-    EXPECT_EQ(cache().tessellations, 2u);
-    // The cache holds one polyline: going back rebuilds.
-    render(with(constant));
-    EXPECT_EQ(cache().tessellations, 3u);
+    EXPECT_EQ(decomposed(with(constant)).size(), 7u);
+    EXPECT_EQ(decomposed(with(finer)).size(), 8u);
+    EXPECT_EQ(decomposed(with(constant)).size(), 7u);
+    const std::vector<unsigned char> six = render(with(constant));
+    const std::vector<unsigned char> seven = render(with(finer));
+    EXPECT_EQ(render(with(constant)), six);
+    EXPECT_EQ(render(with(finer)), seven);
 }
 
-TEST_F(CurveCacheTest, ATransformRebuildsOnlyWhenTheMethodMeasuresThroughIt)
+TEST_F(CurveCacheTest, ACameraChangeIsDrawnAtTheNextFrame)
 {
-    const TQ3Vector3D offset = {0.25f, 0, 0};
-    const TQ3Vector3D scale = {1.5f, 1.5f, 1.5f};
-    // Screen space (the default) measures through the transform.
-    render();
-    render([&](TQ3ViewObject v) { Q3ScaleTransform_Submit(&scale, v); });
-    EXPECT_EQ(cache().tessellations, 2u);
-    render([&](TQ3ViewObject v) { Q3ScaleTransform_Submit(&scale, v); });
-    EXPECT_EQ(cache().tessellations, 2u);
-    // World space too.
-    const TQ3SubdivisionStyleData world = {kQ3SubdivisionMethodWorldSpace, 0.2f, 0.2f};
-    render([&](TQ3ViewObject v) { Q3SubdivisionStyle_Submit(&world, v); });
-    EXPECT_EQ(cache().tessellations, 3u);
-    render([&](TQ3ViewObject v) {
-        Q3SubdivisionStyle_Submit(&world, v);
-        Q3TranslateTransform_Submit(&offset, v);
-    });
-    EXPECT_EQ(cache().tessellations, 4u);
-    // Constant subdivision does not.
-    const TQ3SubdivisionStyleData constant = {kQ3SubdivisionMethodConstant, 5, 5};
-    render([&](TQ3ViewObject v) { Q3SubdivisionStyle_Submit(&constant, v); });
-    EXPECT_EQ(cache().tessellations, 5u);
-    render([&](TQ3ViewObject v) {
-        Q3SubdivisionStyle_Submit(&constant, v);
-        Q3ScaleTransform_Submit(&scale, v);
-    });
-    EXPECT_EQ(cache().tessellations, 5u);
-}
-
-TEST_F(CurveCacheTest, ACameraChangeRebuildsScreenSpaceOnly)
-{
-    render();
+    const std::vector<unsigned char> wide = render();
     TQ3OrthographicCameraData zoomed = m_cameraData;
     zoomed.left = -1;
     zoomed.right = 1;
     ASSERT_EQ(Q3OrthographicCamera_SetData(m_camera, &zoomed), kQ3Success);
-    render();
-    EXPECT_EQ(cache().tessellations, 2u);
-    render();
-    EXPECT_EQ(cache().tessellations, 2u);
-    // World space does not look at the camera.
-    const TQ3SubdivisionStyleData world = {kQ3SubdivisionMethodWorldSpace, 0.2f, 0.2f};
-    render([&](TQ3ViewObject v) { Q3SubdivisionStyle_Submit(&world, v); });
-    EXPECT_EQ(cache().tessellations, 3u);
+    const std::vector<unsigned char> narrow = render();
+    EXPECT_NE(narrow, wide);
     ASSERT_EQ(Q3OrthographicCamera_SetData(m_camera, &m_cameraData), kQ3Success);
-    render([&](TQ3ViewObject v) { Q3SubdivisionStyle_Submit(&world, v); });
-    EXPECT_EQ(cache().tessellations, 3u);
+    EXPECT_EQ(render(), wide);
 }
 
-TEST_F(CurveCacheTest, APaneOfAnotherSizeRebuildsAMovedOneDoesNot)
-{
-    render();
-    const TQ3Area pane = {{0, 0}, {60, 45}};
-    ASSERT_EQ(Q3DrawContext_SetPane(m_context, &pane), kQ3Success);
-    ASSERT_EQ(Q3DrawContext_SetPaneState(m_context, kQ3True), kQ3Success);
-    render();
-    EXPECT_EQ(cache().tessellations, 2u);
-    // The same size elsewhere: lengths in pixels are unchanged.
-    const TQ3Area moved = {{30, 20}, {90, 65}};
-    ASSERT_EQ(Q3DrawContext_SetPane(m_context, &moved), kQ3Success);
-    render();
-    EXPECT_EQ(cache().tessellations, 2u);
-    // With the pane off the view draws into the whole image: another size.
-    ASSERT_EQ(Q3DrawContext_SetPaneState(m_context, kQ3False), kQ3Success);
-    render();
-    EXPECT_EQ(cache().tessellations, 3u);
-}
-
-TEST_F(CurveCacheTest, ImmediateModeLeavesRetainedCachesAlone)
+TEST_F(CurveCacheTest, ImmediateModeLeavesRetainedCountersAlone)
 {
     render();
     const TQ3NURBCurveData data{4, 4, m_points, m_knots, nullptr};
@@ -251,7 +210,7 @@ TEST_F(CurveCacheTest, ImmediateModeLeavesRetainedCachesAlone)
     for (int i = 0; i < 3; ++i)
         ASSERT_EQ(Q3NURBCurve_Submit(&data, m_view), kQ3Success);
     ASSERT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
-    EXPECT_EQ(cache().tessellations, 1u);
+    EXPECT_EQ(subdivisions(), 1u);
 }
 
 // A clamped uniform curve of the given order with `spans` non-empty spans: a
@@ -285,28 +244,32 @@ TEST(CurveCacheMemory, TheWholeFormLimitCountsBezierPoints)
     EXPECT_TRUE(nurbs::fitsWholeBezierForm(UniformCurve(4, spans * 4).ref()));
 }
 
-TEST(CurveCacheMemory, ALargeRetainedCurveKeepsOnlyItsPolylineAndDrawsTheSame)
+TEST(CurveCacheMemory, ALargeCurveDrawsFromTheScratchWhatItsWholeFormGives)
 {
     const UniformCurve large(16, nurbs::kWholeFormLimit / 16 + 7);
     const nurbs::CurveRef ref = large.ref();
     CurveCache cache;
+    nurbs::TessellatedCurve scratch;
     TessellationSetting setting;
     setting.style = {kQ3SubdivisionMethodConstant, 3.0f, 0.0f};
     std::vector<float> drawn;
-    const PolylineUser keep = [&](const float* xyz, std::size_t count) { drawn.assign(xyz, xyz + 3 * count); };
-    withCurvePolyline(ref, &cache, setting, keep);
-    EXPECT_EQ(cache.bezier, nullptr);
-    EXPECT_EQ(cache.tessellations, 1u);
-    EXPECT_EQ(cache.polyline, drawn);
+    const float* handed = nullptr;
+    const PolylineUser keep = [&](const float* xyz, std::size_t count) {
+        handed = xyz;
+        drawn.assign(xyz, xyz + 3 * count);
+    };
+    withCurvePolyline(ref, &cache, setting, keep, &scratch);
+    EXPECT_EQ(cache.tessellations.load(), 1u);
+    EXPECT_EQ(handed, scratch.vertices.data());
     // Span-by-span conversion is the same arithmetic as the whole form's.
     EXPECT_EQ(drawn, nurbs::tessellateConstant(nurbs::BezierForm(ref), 3).vertices);
 
-    // A style change rebuilds the polyline, still without a form; c1 holds.
+    // Another style, the same buffer; c1 holds.
     const float c1 = 0.002f;
     setting.style = {kQ3SubdivisionMethodWorldSpace, c1, 0.0f};
-    withCurvePolyline(ref, &cache, setting, keep);
-    EXPECT_EQ(cache.bezier, nullptr);
-    EXPECT_EQ(cache.tessellations, 2u);
+    withCurvePolyline(ref, &cache, setting, keep, &scratch);
+    EXPECT_EQ(cache.tessellations.load(), 2u);
+    EXPECT_EQ(handed, scratch.vertices.data());
     ASSERT_GT(drawn.size(), 6u);
     double longest = 0.0;
     for (std::size_t v = 3; v < drawn.size(); v += 3)
@@ -317,15 +280,44 @@ TEST(CurveCacheMemory, ALargeRetainedCurveKeepsOnlyItsPolylineAndDrawsTheSame)
     EXPECT_GT(longest, 0.9 * c1);
 }
 
-TEST(CurveCacheMemory, ASmallRetainedCurveKeepsItsBezierForm)
+TEST(CurveCacheMemory, WithoutAScratchACallUsesItsOwnBufferAndDrawsTheSame)
 {
     const UniformCurve small(16, 50);
-    CurveCache cache;
     TessellationSetting setting;
     setting.style = {kQ3SubdivisionMethodConstant, 3.0f, 0.0f};
-    withCurvePolyline(small.ref(), &cache, setting, [](const float*, std::size_t) {});
-    ASSERT_NE(cache.bezier, nullptr);
-    EXPECT_EQ(cache.bezier->spanCount(), 50u);
+    std::vector<float> own;
+    std::vector<float> scratched;
+    withCurvePolyline(small.ref(), nullptr, setting,
+                      [&](const float* xyz, std::size_t count) { own.assign(xyz, xyz + 3 * count); });
+    nurbs::TessellatedCurve scratch;
+    withCurvePolyline(small.ref(), nullptr, setting,
+                      [&](const float* xyz, std::size_t count) { scratched.assign(xyz, xyz + 3 * count); },
+                      &scratch);
+    EXPECT_EQ(own.size(), (50u * 3 + 1) * 3);
+    EXPECT_EQ(own, scratched);
+}
+
+// The view's buffer keeps the constant method's Bernstein table between
+// curves: reusing it, or replacing it for another order or count, gives the
+// vertices a fresh result gives, bit for bit.
+TEST(CurveCacheMemory, AReusedResultGivesWhatAFreshOneGives)
+{
+    const UniformCurve cubicA(4, 7);
+    const UniformCurve cubicB(4, 3);
+    const UniformCurve quintic(6, 5);
+    nurbs::TessellatedCurve reused;
+    const struct {
+        const UniformCurve* curve;
+        std::uint32_t segments;
+    } runs[] = {{&cubicA, 64}, {&cubicB, 64}, {&quintic, 64}, {&cubicA, 9}, {&cubicB, 64}};
+    for (const auto& run : runs) {
+        nurbs::tessellateConstant(run.curve->ref(), run.segments, reused);
+        const nurbs::TessellatedCurve fresh = nurbs::tessellateConstant(run.curve->ref(), run.segments);
+        EXPECT_EQ(reused.vertices, fresh.vertices) << "order " << run.curve->order << ", " << run.segments;
+        EXPECT_EQ(reused.parameters, fresh.parameters);
+        EXPECT_EQ(reused.table.order(), run.curve->order);
+        EXPECT_EQ(reused.table.segments(), run.segments);
+    }
 }
 
 } // namespace
