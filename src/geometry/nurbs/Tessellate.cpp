@@ -907,13 +907,19 @@ private:
                 const double d0 = distance(current.image, Point3{a[0], a[1], a[2]});
                 const double d1 = std::sqrt(d2OfLastScan(current.image, image + 3 * std::size_t(j)));
                 const double f = (m_target - d0) / (d1 - d0);
-                next = denseSample(j - 1);
+                // Sample j - 1's curve point is evaluated only when the candidate is
+                // refused: the candidate is kept for most vertices.
+                bool kept = false;
                 if (f > 0.0 && f < 1.0) {
                     const Sample candidate = makeSample((double(j - 1) + f) * step);
-                    if (candidate.mapped && candidate.u > next.u && candidate.u < double(j) * step &&
+                    if (candidate.mapped && candidate.u > double(j - 1) * step && candidate.u < double(j) * step &&
                         chord(current, candidate) <= m_c) {
                         next = candidate;
+                        kept = true;
                     }
+                }
+                if (!kept) {
+                    next = denseSample(j - 1);
                 }
                 index = j - 1;
             } else {
