@@ -181,20 +181,6 @@ std::string textFile(const std::string& body)
     return "3DMetafile ( 1 6 Normal )\n" + body + "\n";
 }
 
-// Big-endian binary building blocks.
-void put32(std::vector<unsigned char>& out, std::uint32_t v)
-{
-    for (int shift = 24; shift >= 0; shift -= 8)
-        out.push_back(static_cast<unsigned char>(v >> shift));
-}
-
-void putFloat(std::vector<unsigned char>& out, float f)
-{
-    std::uint32_t bits;
-    std::memcpy(&bits, &f, sizeof bits);
-    put32(out, bits);
-}
-
 void putObject(std::vector<unsigned char>& out, const char* tag, const std::vector<unsigned char>& data)
 {
     for (int i = 0; i < 4; ++i)
@@ -213,23 +199,12 @@ std::vector<unsigned char> floatData(std::initializer_list<float> values)
 
 std::vector<unsigned char> binaryFile(const std::vector<unsigned char>& objects)
 {
-    std::vector<unsigned char> out = {'3', 'D', 'M', 'F'};
-    put32(out, 16);
-    put32(out, 0x00010006);
-    put32(out, 0);
-    put32(out, 0);
-    put32(out, 0);
+    std::vector<unsigned char> out = binaryHeader();
     out.insert(out.end(), objects.begin(), objects.end());
     return out;
 }
 
 } // namespace
-
-#define EXPECT_READ_ERROR(bytes, code)                                                        \
-    do {                                                                                      \
-        EXPECT_EQ(readError(bytes), (code));                                                  \
-        consume(q3test::Kind::Error, (code), #bytes, __FILE__, __LINE__);                     \
-    } while (0)
 
 TEST_F(FileCameraTest, EveryKindReadsBackFieldByFieldInEveryMode)
 {

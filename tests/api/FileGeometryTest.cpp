@@ -512,12 +512,6 @@ class FileGeometryTest : public Q3ApiTest {};
 
 } // namespace
 
-#define EXPECT_READ_ERROR(bytes, code)                                                        \
-    do {                                                                                      \
-        EXPECT_EQ(readError(bytes), (code));                                                  \
-        consume(q3test::Kind::Error, (code), #bytes, __FILE__, __LINE__);                     \
-    } while (0)
-
 TEST_P(FileGeometryRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataAndImage)
 {
     const Case c = cases()[GetParam()];

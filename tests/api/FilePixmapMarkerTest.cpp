@@ -94,20 +94,6 @@ std::string textFile(const std::string& body)
     return "3DMetafile ( 1 6 Normal )\n" + body + "\n";
 }
 
-// Big-endian binary building blocks.
-void put32(std::vector<unsigned char>& out, std::uint32_t v)
-{
-    for (int shift = 24; shift >= 0; shift -= 8)
-        out.push_back(static_cast<unsigned char>(v >> shift));
-}
-
-void putFloat(std::vector<unsigned char>& out, float f)
-{
-    std::uint32_t bits;
-    std::memcpy(&bits, &f, sizeof bits);
-    put32(out, bits);
-}
-
 // A binary file of one 'mrkp' whose fields are given; `imageBytes` bytes of
 // image follow (0x5A each).
 std::vector<unsigned char> binaryMarker(std::uint32_t width, std::uint32_t height, std::uint32_t rowBytes,
@@ -122,28 +108,14 @@ std::vector<unsigned char> binaryMarker(std::uint32_t width, std::uint32_t heigh
     for (std::uint32_t v : {width, height, rowBytes, pixelSize, pixelType, 0u, 0u})
         put32(data, v);
     data.insert(data.end(), imageBytes, 0x5A);
-    std::vector<unsigned char> out;
-    for (const char* p = "3DMF"; *p != '\0'; ++p)
-        out.push_back(static_cast<unsigned char>(*p));
-    put32(out, 16);
-    put32(out, 0x00010006);
-    put32(out, 0);
-    put32(out, 0);
-    put32(out, 0);
-    for (const char* p = "mrkp"; *p != '\0'; ++p)
-        out.push_back(static_cast<unsigned char>(*p));
+    std::vector<unsigned char> out = binaryHeader();
+    putTag(out, "mrkp");
     put32(out, static_cast<std::uint32_t>(data.size()));
     out.insert(out.end(), data.begin(), data.end());
     return out;
 }
 
 } // namespace
-
-#define EXPECT_READ_ERROR(bytes, code)                                                        \
-    do {                                                                                      \
-        EXPECT_EQ(readError(bytes), (code));                                                  \
-        consume(q3test::Kind::Error, (code), #bytes, __FILE__, __LINE__);                     \
-    } while (0)
 
 TEST_F(FilePixmapMarkerTest, ReadsBackFieldByFieldAndDrawsTheSameInEveryMode)
 {

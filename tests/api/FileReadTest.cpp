@@ -36,39 +36,7 @@ TQ3ColorRGB diffuseOf(TQ3AttributeSet set)
     return color;
 }
 
-// Big-endian binary building blocks for malformed files.
-void put32(std::vector<unsigned char>& out, std::uint32_t v)
-{
-    for (int shift = 24; shift >= 0; shift -= 8)
-        out.push_back(static_cast<unsigned char>(v >> shift));
-}
-
-void putTag(std::vector<unsigned char>& out, const char* tag)
-{
-    out.insert(out.end(), tag, tag + 4);
-}
-
-std::vector<unsigned char> binaryHeader()
-{
-    std::vector<unsigned char> out;
-    putTag(out, "3DMF");
-    put32(out, 16);
-    put32(out, 0x00010006);
-    put32(out, 0);
-    put32(out, 0);
-    put32(out, 0);
-    return out;
-}
-
 } // namespace
-
-// readError's later calls clear Q3Error_Get, so the code it returns is
-// compared, and the posted error consumed.
-#define EXPECT_READ_ERROR(bytes, code)                                                        \
-    do {                                                                                      \
-        EXPECT_EQ(readError(bytes), (code));                                                  \
-        consume(q3test::Kind::Error, (code), #bytes, __FILE__, __LINE__);                     \
-    } while (0)
 
 TEST_F(FileReadTest, BigAndLittleEndianFilesReadTheSame)
 {
@@ -445,11 +413,6 @@ TEST_F(FileReadTest, LightsStylesTransformsAndTriMeshArraysFromAHandWrittenFile)
 // kMF3DObjLightData). Written back, the LightData keeps that tag.
 TEST_F(FileReadTest, ABinaryLightDataTaggedAsAppleTagsItKeepsTheLightsState)
 {
-    auto putFloat = [](std::vector<unsigned char>& out, float value) {
-        std::uint32_t bits = 0;
-        std::memcpy(&bits, &value, sizeof bits);
-        put32(out, bits);
-    };
     std::vector<unsigned char> bytes = binaryHeader();
     putTag(bytes, "cntr");
     put32(bytes, (8 + 16) + (8 + 20));

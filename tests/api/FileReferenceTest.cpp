@@ -28,37 +28,6 @@ namespace {
 
 class FileReferenceTest : public Q3ApiTest {};
 
-void put32(std::vector<unsigned char>& out, std::uint32_t v)
-{
-    for (int shift = 24; shift >= 0; shift -= 8)
-        out.push_back(static_cast<unsigned char>(v >> shift));
-}
-
-void putFloat(std::vector<unsigned char>& out, float value)
-{
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    put32(out, bits);
-}
-
-void putTag(std::vector<unsigned char>& out, const char* tag)
-{
-    out.insert(out.end(), tag, tag + 4);
-}
-
-// A big-endian binary header: 3DMF, version 1.6, Normal, no table of contents.
-std::vector<unsigned char> binaryHeader()
-{
-    std::vector<unsigned char> out;
-    putTag(out, "3DMF");
-    put32(out, 16);
-    put32(out, 0x00010006);
-    put32(out, 0);
-    put32(out, 0);
-    put32(out, 0);
-    return out;
-}
-
 std::string tempPath(const char* name)
 {
     return ::testing::TempDir() + "q3_xref_" + name;
@@ -136,14 +105,6 @@ TQ3FileObject openSharedBoxFile(const std::string& path, TQ3FileMode mode, TQ3Ob
 }
 
 } // namespace
-
-// readError's later calls clear Q3Error_Get, so the code it returns is
-// compared, and the posted error consumed.
-#define EXPECT_READ_ERROR(bytes, code)                                                        \
-    do {                                                                                      \
-        EXPECT_EQ(readError(bytes), (code));                                                  \
-        consume(q3test::Kind::Error, (code), #bytes, __FILE__, __LINE__);                     \
-    } while (0)
 
 // ---- C string objects (QD3DString.h) ----------------------------------------
 

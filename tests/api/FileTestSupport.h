@@ -161,6 +161,51 @@ inline TQ3Error readError(const std::vector<unsigned char>& bytes)
     return error;
 }
 
+// readError's later calls clear Q3Error_Get, so the code it returns is
+// compared, and the posted error consumed (inside a Q3ApiTest).
+#define EXPECT_READ_ERROR(bytes, code)                                                        \
+    do {                                                                                      \
+        EXPECT_EQ(q3test::readError(bytes), (code));                                          \
+        consume(q3test::Kind::Error, (code), #bytes, __FILE__, __LINE__);                     \
+    } while (0)
+
+// Big-endian binary building blocks for hand-laid files.
+
+/// Appends v as a big-endian Uns32.
+inline void put32(std::vector<unsigned char>& out, std::uint32_t v)
+{
+    for (int shift = 24; shift >= 0; shift -= 8)
+        out.push_back(static_cast<unsigned char>(v >> shift));
+}
+
+/// Appends f as a big-endian Float32.
+inline void putFloat(std::vector<unsigned char>& out, float f)
+{
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &f, sizeof bits);
+    put32(out, bits);
+}
+
+/// Appends a four-character tag.
+inline void putTag(std::vector<unsigned char>& out, const char* tag)
+{
+    for (int i = 0; i < 4; ++i)
+        out.push_back(static_cast<unsigned char>(tag[i]));
+}
+
+/// A big-endian binary header: 3DMF, version 1.6, Normal, no table of contents.
+inline std::vector<unsigned char> binaryHeader()
+{
+    std::vector<unsigned char> out;
+    putTag(out, "3DMF");
+    put32(out, 16);
+    put32(out, 0x00010006);
+    put32(out, 0);
+    put32(out, 0);
+    put32(out, 0);
+    return out;
+}
+
 /// The pixels (ARGB32 words, top row first) of `object` drawn alone by the
 /// interactive renderer into 96 x 72 through one fixed camera: round trips
 /// compare these for the object written and the object read back.
