@@ -13,6 +13,7 @@
 // drawn points.
 
 #include "PatchReference.h"
+#include "PixmapViewTest.h"
 #include "Q3ApiTest.h"
 
 #include "QD3DCamera.h"
@@ -104,29 +105,9 @@ Patch sphere()
     return p;
 }
 
-class NURBPatchLitRegressionTest : public q3test::Q3ApiTest {
+class NURBPatchLitRegressionTest : public q3test::PixmapViewTest {
 protected:
-    void SetUp() override
-    {
-        Q3ApiTest::SetUp();
-        m_memory.assign(kWidth * kHeight * 4, 0);
-        TQ3PixmapDrawContextData data{};
-        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        data.drawContextData.clearImageColor = {1, 0, 0, 0};
-        data.pixmap = {m_memory.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
-                       kQ3EndianBig};
-        m_context = Q3PixmapDrawContext_New(&data);
-        m_view = Q3View_New();
-        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
-        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
-    }
-
-    void TearDown() override
-    {
-        Q3Object_Dispose(m_view);
-        Q3Object_Dispose(m_context);
-        Q3ApiTest::TearDown();
-    }
+    NURBPatchLitRegressionTest() : PixmapViewTest(kWidth, kHeight) {}
 
     void setCamera(const TQ3Point3D& eye)
     {
@@ -250,9 +231,6 @@ protected:
         Q3TriMesh_EmptyData(&out);
     }
 
-    std::vector<unsigned char> m_memory;
-    TQ3DrawContextObject m_context = nullptr;
-    TQ3ViewObject m_view = nullptr;
     TQ3ViewAngleAspectCameraData m_camera{};
 };
 

@@ -50,6 +50,7 @@
 // Q3_PATCH_CASES sets how many patches (default 200); Q3_PATCH_SEED the seed.
 
 #include "PatchReference.h"
+#include "PixmapViewTest.h"
 #include "Q3ApiTest.h"
 #include "q3png.h"
 
@@ -247,33 +248,17 @@ struct Figures {
     }
 };
 
-class NURBPatchPropertyRegressionTest : public q3test::Q3ApiTest {
+class NURBPatchPropertyRegressionTest : public q3test::PixmapViewTest {
 protected:
+    NURBPatchPropertyRegressionTest() : PixmapViewTest(kWidth, kHeight) {}
+
     void SetUp() override
     {
-        Q3ApiTest::SetUp();
-        m_memory.assign(kWidth * kHeight * 4, 0);
-        TQ3PixmapDrawContextData data{};
-        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        data.drawContextData.clearImageColor = {1, 0, 0, 0};
-        data.drawContextData.pane = {{0, 0}, {float(kWidth), float(kHeight)}};
-        data.pixmap = {m_memory.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
-                       kQ3EndianBig};
-        m_context = Q3PixmapDrawContext_New(&data);
-        m_view = Q3View_New();
-        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
-        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
+        PixmapViewTest::SetUp();
         m_seed = unsigned(envInt("Q3_PATCH_SEED", int(kDefaultSeed)));
         m_cases = envInt("Q3_PATCH_CASES", kDefaultCases);
         std::printf("[ patches ] %d random patches from seed %u (Q3_PATCH_CASES, Q3_PATCH_SEED)\n", m_cases, m_seed);
     }
-    void TearDown() override
-    {
-        Q3Object_Dispose(m_view);
-        Q3Object_Dispose(m_context);
-        Q3ApiTest::TearDown();
-    }
-
     void aim(const Scene& scene)
     {
         TQ3CameraObject camera = scene.perspective ? Q3ViewAngleAspectCamera_New(&scene.viewAngle)
@@ -300,9 +285,6 @@ protected:
         return mesh;
     }
 
-    std::vector<unsigned char> m_memory;
-    TQ3DrawContextObject m_context = nullptr;
-    TQ3ViewObject m_view = nullptr;
     unsigned m_seed = 0;
     int m_cases = 0;
 };

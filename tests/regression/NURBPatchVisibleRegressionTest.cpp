@@ -14,6 +14,7 @@
 // take about 16 times as many).
 
 #include "PatchReference.h"
+#include "PixmapViewTest.h"
 #include "Q3ApiTest.h"
 
 #include "QD3DCamera.h"
@@ -51,29 +52,9 @@ struct Mesh {
     bool capped = false;
 };
 
-class NURBPatchVisibleRegressionTest : public q3test::Q3ApiTest {
+class NURBPatchVisibleRegressionTest : public q3test::PixmapViewTest {
 protected:
-    void SetUp() override
-    {
-        Q3ApiTest::SetUp();
-        m_memory.assign(kWidth * kHeight * 4, 0);
-        TQ3PixmapDrawContextData data{};
-        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        data.drawContextData.clearImageColor = {1, 0, 0, 0};
-        data.pixmap = {m_memory.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
-                       kQ3EndianBig};
-        m_context = Q3PixmapDrawContext_New(&data);
-        m_view = Q3View_New();
-        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
-        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
-    }
-
-    void TearDown() override
-    {
-        Q3Object_Dispose(m_view);
-        Q3Object_Dispose(m_context);
-        Q3ApiTest::TearDown();
-    }
+    NURBPatchVisibleRegressionTest() : PixmapViewTest(kWidth, kHeight) {}
 
     // The eye at the origin looking down -z; the field of view sees
     // [-halfWidth, halfWidth] across at depth kDepth.
@@ -149,9 +130,6 @@ protected:
         return false;
     }
 
-    std::vector<unsigned char> m_memory;
-    TQ3DrawContextObject m_context = nullptr;
-    TQ3ViewObject m_view = nullptr;
     TQ3ViewAngleAspectCameraData m_camera{};
 };
 

@@ -10,6 +10,7 @@
 // behind the eye. Checked against SubdivisionReference.h's projection and
 // evaluator. docs/subdivision.md describes the behaviour.
 
+#include "PixmapViewTest.h"
 #include "Q3ApiTest.h"
 #include "SubdivisionReference.h"
 
@@ -44,18 +45,13 @@ std::size_t probesPerSpan(unsigned long order)
     return std::max<std::size_t>(order, 8);
 }
 
-class SubdivisionPerspectiveRegressionTest : public q3test::Q3ApiTest {
+class SubdivisionPerspectiveRegressionTest : public q3test::PixmapViewTest {
 protected:
+    SubdivisionPerspectiveRegressionTest() : PixmapViewTest(kWidth, kHeight) {}
+
     void SetUp() override
     {
-        Q3ApiTest::SetUp();
-        m_memory.assign(kWidth * kHeight * 4, 0);
-        TQ3PixmapDrawContextData data{};
-        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        data.drawContextData.clearImageColor = {1, 0, 0, 0};
-        data.pixmap = {m_memory.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
-                       kQ3EndianBig};
-        m_context = Q3PixmapDrawContext_New(&data);
+        PixmapViewTest::SetUp();
         // The eye at the origin looking down -z.
         m_camera.cameraData.placement = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}};
         m_camera.cameraData.range = {kHither, 100.0f};
@@ -63,20 +59,9 @@ protected:
         m_camera.fov = 1.2f;
         m_camera.aspectRatioXToY = float(kWidth) / float(kHeight);
         TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&m_camera);
-        m_view = Q3View_New();
-        ASSERT_NE(m_context, nullptr);
         ASSERT_NE(camera, nullptr);
-        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
         ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
         Q3Object_Dispose(camera);
-    }
-
-    void TearDown() override
-    {
-        Q3Object_Dispose(m_view);
-        Q3Object_Dispose(m_context);
-        Q3ApiTest::TearDown();
     }
 
     ScreenMap screen() const { return ScreenMap(m_camera, {{0, 0}, {float(kWidth), float(kHeight)}}); }
@@ -159,9 +144,6 @@ protected:
         return count;
     }
 
-    std::vector<unsigned char> m_memory;
-    TQ3DrawContextObject m_context = nullptr;
-    TQ3ViewObject m_view = nullptr;
     TQ3ViewAngleAspectCameraData m_camera{};
 };
 

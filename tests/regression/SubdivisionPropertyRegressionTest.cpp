@@ -35,6 +35,7 @@
 //    in the measuring space from 128 samples per span (a chord sum, so a lower
 //    bound: the check can only get stricter).
 
+#include "PixmapViewTest.h"
 #include "Q3ApiTest.h"
 #include "SubdivisionReference.h"
 
@@ -281,35 +282,17 @@ std::vector<Vec3> toVecs(const std::vector<TQ3Point3D>& points)
     return out;
 }
 
-class SubdivisionPropertyRegressionTest : public q3test::Q3ApiTest {
+class SubdivisionPropertyRegressionTest : public q3test::PixmapViewTest {
 protected:
+    SubdivisionPropertyRegressionTest() : PixmapViewTest(kWidth, kHeight) {}
+
     void SetUp() override
     {
-        Q3ApiTest::SetUp();
-        m_memory.assign(kWidth * kHeight * 4, 0);
-        TQ3PixmapDrawContextData data{};
-        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        data.drawContextData.clearImageColor = {1, 0, 0, 0};
-        data.drawContextData.pane = {{0, 0}, {float(kWidth), float(kHeight)}};
-        data.pixmap = {m_memory.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
-                       kQ3EndianBig};
-        m_context = Q3PixmapDrawContext_New(&data);
-        m_view = Q3View_New();
-        ASSERT_NE(m_context, nullptr);
-        ASSERT_NE(m_view, nullptr);
-        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
-        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
+        PixmapViewTest::SetUp();
         m_seed = seed();
         std::printf("[ subdivision ] random curves from seed %u (set Q3_SUBDIVISION_SEED to replay another)\n",
                     m_seed);
         RecordProperty("seed", std::to_string(m_seed));
-    }
-
-    void TearDown() override
-    {
-        Q3Object_Dispose(m_view);
-        Q3Object_Dispose(m_context);
-        Q3ApiTest::TearDown();
     }
 
     /// Points the view at a scene: its camera and pane.
@@ -491,9 +474,6 @@ protected:
         figures.add(double(segments / (length / c1 + ref.spans)));
     }
 
-    std::vector<unsigned char> m_memory;
-    TQ3DrawContextObject m_context = nullptr;
-    TQ3ViewObject m_view = nullptr;
     unsigned m_seed = 0;
 };
 
