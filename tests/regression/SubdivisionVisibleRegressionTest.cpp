@@ -17,6 +17,7 @@
 // 1e-6 of the curve's size (world): the float rounding of its end points,
 // about 1e-7 of the scene, is far below either.
 
+#include "PixmapViewTest.h"
 #include "Q3ApiTest.h"
 #include "SubdivisionReference.h"
 
@@ -113,32 +114,9 @@ Scene makeScene(std::mt19937& rng, int index)
     return scene;
 }
 
-class SubdivisionVisibleRegressionTest : public q3test::Q3ApiTest {
+class SubdivisionVisibleRegressionTest : public q3test::PixmapViewTest {
 protected:
-    void SetUp() override
-    {
-        Q3ApiTest::SetUp();
-        m_memory.assign(kSide * kSide * 4, 0);
-        TQ3PixmapDrawContextData data{};
-        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        data.drawContextData.clearImageColor = {1, 0, 0, 0};
-        data.drawContextData.pane = {{0, 0}, {float(kSide), float(kSide)}};
-        data.pixmap = {m_memory.data(), kSide, kSide, kSide * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
-                       kQ3EndianBig};
-        m_context = Q3PixmapDrawContext_New(&data);
-        m_view = Q3View_New();
-        ASSERT_NE(m_context, nullptr);
-        ASSERT_NE(m_view, nullptr);
-        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
-        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
-    }
-
-    void TearDown() override
-    {
-        Q3Object_Dispose(m_view);
-        Q3Object_Dispose(m_context);
-        Q3ApiTest::TearDown();
-    }
+    SubdivisionVisibleRegressionTest() : PixmapViewTest(kSide, kSide) {}
 
     void aim(const Scene& scene)
     {
@@ -179,10 +157,6 @@ protected:
         EXPECT_EQ(status, kQ3ViewStatusDone);
         return result;
     }
-
-    std::vector<unsigned char> m_memory;
-    TQ3DrawContextObject m_context = nullptr;
-    TQ3ViewObject m_view = nullptr;
 };
 
 Real pixelDistance(const ScreenMap& map, const Vec3& a, const Vec3& b)
