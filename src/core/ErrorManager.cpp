@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #include "core/ErrorManager.h"
 
+#include "core/ThreadLocal.h"
+
 #include <mutex>
 
 namespace q3::errors {
@@ -28,10 +30,11 @@ struct ThreadState {
     Posted<TQ3Notice> notice;
 };
 
+// Still the thread's own after its thread_local objects are destroyed, for
+// calls from atexit handlers and static destructors (core/ThreadLocal.h).
 ThreadState& state()
 {
-    thread_local ThreadState s;
-    return s;
+    return threadLocal<ThreadState, ThreadState>();
 }
 
 template <class Method>

@@ -7,6 +7,7 @@
 #include "core/EnumValue.h"
 #include "core/Limits.h"
 #include "core/ShapeVisitor.h"
+#include "core/ThreadLocal.h"
 
 #include <cmath>
 #include <string>
@@ -40,7 +41,8 @@ Group::~Group()
     // reference to another, and so on, as deep as a caller builds. Releasing
     // them recursively could exhaust the stack, so the outermost group being
     // destroyed on a thread releases everything below it in a loop instead.
-    thread_local std::vector<Ref<SharedObject>> pending;
+    struct PendingTag;
+    std::vector<Ref<SharedObject>>& pending = threadLocal<std::vector<Ref<SharedObject>>, PendingTag>();
     thread_local bool draining = false;
     for (Node& node : m_nodes)
         pending.push_back(std::move(node.object));

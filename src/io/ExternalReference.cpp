@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "core/Limits.h"
+#include "core/ThreadLocal.h"
 #include "io/StringObject.h"
 
 #include <filesystem>
@@ -38,7 +39,11 @@ Marks& marks()
 
 // External files being read, outermost first, to refuse a file that refers
 // back to one being read (a cycle) and too long a chain.
-thread_local std::vector<std::string> t_opening;
+struct OpeningTag;
+std::vector<std::string>& opening()
+{
+    return threadLocal<std::vector<std::string>, OpeningTag>();
+}
 constexpr std::size_t kMaxExternalNesting = 8;
 
 std::string textOf(ReadContext& context, const Node& node)
@@ -80,11 +85,11 @@ Ref<SharedObject> readExternalReference(ReadContext& context, const Parts& parts
     if (path.is_relative() && !context.baseDirectory().empty())
         path = std::filesystem::path(context.baseDirectory()) / path;
     const std::string where = path.lexically_normal().string();
-    for (const std::string& open : t_opening)
+    for (const std::string& open : opening())
         if (open == where)
             fail(kQ3ErrorInvalidMetafileObject,
                  "an external reference to " + where + ", which is being read (a cycle)");
-    if (t_opening.size() >= kMaxExternalNesting)
+    if (opening().size() >= kMaxExternalNesting)
         fail(kQ3ErrorInvalidMetafileObject, "external references nest deeper than " +
                                                 std::to_string(kMaxExternalNesting) + " files");
     std::error_code error;
@@ -98,7 +103,7 @@ Ref<SharedObject> readExternalReference(ReadContext& context, const Parts& parts
     if (!stream.good() && !stream.eof())
         fail(kQ3ErrorInvalidMetafileObject, "the file " + where + " an external reference names cannot be read");
 
-    t_opening.push_back(where);
+    opening().push_back(where);
     try {
         std::unique_ptr<Metafile> other = parse(std::move(bytes), &typeOfName);
         const auto found = other->references.find(refId);
@@ -108,10 +113,10 @@ Ref<SharedObject> readExternalReference(ReadContext& context, const Parts& parts
         ReadContext otherContext(*other);
         otherContext.setBaseDirectory(path.parent_path().string());
         Ref<SharedObject> result = otherContext.object(*found->second);
-        t_opening.pop_back();
+        opening().pop_back();
         return result;
     } catch (...) {
-        t_opening.pop_back();
+        opening().pop_back();
         throw;
     }
 }

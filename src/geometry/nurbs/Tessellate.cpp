@@ -41,6 +41,8 @@
 
 #include "geometry/nurbs/Tessellate.h"
 
+#include "core/ThreadLocal.h"
+
 #include "geometry/nurbs/Evaluate.h"
 #include "geometry/nurbs/Knots.h"
 
@@ -816,7 +818,8 @@ private:
     // for order 16, as every size up to kMaxDenseSamples sums to about 14,000 rows).
     const BernsteinTable& denseTable(std::uint32_t samples) const
     {
-        thread_local std::vector<std::unique_ptr<BernsteinTable>> tables;
+        struct TablesTag;
+        auto& tables = threadLocal<std::vector<std::unique_ptr<BernsteinTable>>, TablesTag>();
         unsigned rung = 0;
         for (std::uint32_t d = 8; d < samples; d = (d & (d - 1)) == 0 ? d + d / 2 : d / 3 * 4) {
             ++rung;
