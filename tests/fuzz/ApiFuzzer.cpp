@@ -203,6 +203,12 @@ enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttribu
                   kPolyhedron, kTriGrid, kMarker, kPixmapMarker };
 constexpr int kKindCount = 32;
 constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
+// The kinds Q3Geometry_GetDecomposed returns NULL for without an error.
+constexpr bool isPrimitiveKind(Kind kind)
+{
+    return kind == Kind::kPolyLine || kind == Kind::kLine || kind == Kind::kPoint || kind == Kind::kTriangle ||
+           kind == Kind::kTriMesh || kind == Kind::kMarker || kind == Kind::kPixmapMarker;
+}
 
 struct Held {
     TQ3Object handle;
@@ -2764,6 +2770,12 @@ private:
             return;
         const DrawTimer timer(m_drawSeconds);
         if (action == 5) {
+            // pick may give another kind: a primitive decomposes to NULL silently.
+            const Held* picked = heldEntry(patch);
+            if (picked != nullptr && isPrimitiveKind(picked->kind)) {
+                checkDecomposition(patch, view);
+                return;
+            }
             const TQ3Object result = OBJECT(Q3Geometry_GetDecomposed(patch, view));
             if (result == nullptr)
                 return;
@@ -3955,10 +3967,7 @@ private:
         if (polyline == nullptr) {
             if (!posted) {
                 const Held* entry = heldEntry(geometry);
-                require(entry != nullptr && (entry->kind == Kind::kPolyLine || entry->kind == Kind::kLine ||
-                                             entry->kind == Kind::kPoint || entry->kind == Kind::kTriangle ||
-                                             entry->kind == Kind::kTriMesh || entry->kind == Kind::kMarker ||
-                                             entry->kind == Kind::kPixmapMarker),
+                require(entry != nullptr && isPrimitiveKind(entry->kind),
                         "Q3Geometry_GetDecomposed", "returned NULL silently for something other than a primitive");
             }
             return;
