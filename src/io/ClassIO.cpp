@@ -265,12 +265,9 @@ void WriteContext::object(const Object& object)
     DepthGuard guard(m_depth);
     std::string externalPath;
     std::uint32_t externalId = 0;
-    if (externalMark(object, externalPath, externalId)) {
-        writeExternalReference(m_out, externalPath, externalId);
-        return;
-    }
+    const bool external = externalMark(object, externalPath, externalId);
     const bool isGroup = object.isType(kQ3ShapeTypeGroup);
-    if (!m_stream && !isGroup) {
+    if (!m_stream && (!isGroup || external)) {
         if (auto found = m_written.find(&object); found != m_written.end()) {
             Written& first = found->second;
             if (first.id == 0) {
@@ -284,6 +281,24 @@ void WriteContext::object(const Object& object)
             return;
         }
     }
+    if (external) {
+        // Every ExternalReference the file holds is listed in its table of
+        // contents with its type (the 3D Metafile Reference's condition for
+        // Q3File_GetExternalReferences); later submits of the object refer
+        // to this one (in a stream file each is written whole and listed).
+        const Written written{m_out.position(), m_nextId++, kTypeExternalReference, "ExternalReference"};
+        m_out.label(written.position, "ref" + std::to_string(written.id));
+        writeExternalReference(m_out, externalPath, externalId);
+        if (m_stream) {
+            m_streamExternals.push_back(written);
+        } else {
+            m_written[&object] = written;
+            m_added.push_back(&object);
+            m_keep.push_back(Ref<SharedObject>::retain(
+                const_cast<SharedObject*>(static_cast<const SharedObject*>(&object))));
+        }
+        return;
+    }
     const ClassIO* entry = classOfObject(object);
     if (entry == nullptr) {
         errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,
@@ -293,7 +308,7 @@ void WriteContext::object(const Object& object)
     }
     const bool remember = !m_stream && !isGroup && object.isType(kQ3ObjectTypeShared);
     if (remember) {
-        m_written[&object] = Written{m_out.position()};
+        m_written[&object] = Written{m_out.position(), 0, entry->type, entry->name};
         m_added.push_back(&object);
         m_keep.push_back(Ref<SharedObject>::retain(
             const_cast<SharedObject*>(static_cast<const SharedObject*>(&object))));
@@ -307,6 +322,7 @@ void WriteContext::object(const Object& object)
     const Encoder::Mark before = m_out.mark();
     const std::size_t kept = m_keep.size() - (remember ? 1 : 0);
     const std::uint32_t nextId = m_nextId;
+    const std::size_t streamExternals = m_streamExternals.size();
     m_added.assign(remember ? 1 : 0, &object);
     m_labelled.clear();
     try {
@@ -320,6 +336,7 @@ void WriteContext::object(const Object& object)
                 found->second.id = 0;
         m_keep.resize(kept);
         m_nextId = nextId;
+        m_streamExternals.resize(streamExternals);
         throw;
     }
 }
@@ -337,11 +354,13 @@ void WriteContext::temporary(const Object& object)
 
 std::vector<unsigned char> WriteContext::finish(TQ3FileMode mode)
 {
-    std::vector<std::pair<std::uint32_t, std::size_t>> toc;
+    std::vector<Encoder::TocEntry> toc;
     for (const auto& [object, written] : m_written)
         if (written.id != 0)
-            toc.emplace_back(written.id, written.position);
-    std::sort(toc.begin(), toc.end());
+            toc.push_back({written.id, written.position, written.type, written.name});
+    for (const Written& written : m_streamExternals)
+        toc.push_back({written.id, written.position, written.type, written.name});
+    std::sort(toc.begin(), toc.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
     return m_out.finish(mode, toc);
 }
 

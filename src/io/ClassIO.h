@@ -146,11 +146,16 @@ public:
 private:
     struct Written {
         std::size_t position;
-        std::uint32_t id = 0;
+        std::uint32_t id;   ///< its table of contents ID, 0 while nothing refers to it
+        TQ3ObjectType type; ///< for its table of contents entry
+        const char* name;
     };
     Encoder m_out;
     bool m_stream;
     std::map<const Object*, Written> m_written;
+    /// A stream file's ExternalReference objects (each listed in the table
+    /// of contents; nothing refers to them).
+    std::vector<Written> m_streamExternals;
     std::vector<Ref<SharedObject>> m_keep;
     std::uint32_t m_nextId = 1;
     std::size_t m_depth = 0;

@@ -382,7 +382,7 @@ void parseText(Metafile& file, NameLookup names)
                                                        label + "', not a label ('name>')");
             label.pop_back();
             if (entryType == 1)
-                reader.u32();
+                reader.word(); // the object's type: a class name (or a number, as some writers put it)
             const Node* target = findLabel(file.objects, label);
             if (target == nullptr)
                 fail(kQ3ErrorInvalidMetafileLabel, "table of contents entry " + std::to_string(id) +
@@ -1040,8 +1040,7 @@ void Encoder::label(std::size_t position, const std::string& name)
         m_labels.emplace_back(position, name);
 }
 
-std::vector<unsigned char> Encoder::finish(TQ3FileMode mode,
-                                           const std::vector<std::pair<std::uint32_t, std::size_t>>& toc)
+std::vector<unsigned char> Encoder::finish(TQ3FileMode mode, const std::vector<TocEntry>& toc)
 {
     static_assert(sizeof(float) == 4, "3DMF floats are IEEE single precision");
     const std::uint16_t probe = 1;
@@ -1064,11 +1063,14 @@ std::vector<unsigned char> Encoder::finish(TQ3FileMode mode,
         std::string out = "3DMetafile ( 1 6 " + std::string(kModes[mode & 3]) + (toc.empty() ? "" : " toc>") + " )\n";
         out += text;
         if (!toc.empty()) {
-            out += "toc: TableOfContents ( 0 " + std::to_string(toc.size() + 1) + " 0 0 0 " +
+            // Next table, reference seed, type seed, entry type 1, entry
+            // size 16, entry count.
+            out += "toc: TableOfContents ( 0 " + std::to_string(toc.size() + 1) + " 0 1 16 " +
                    std::to_string(toc.size());
-            // Text entries name the object's label; its position is the label's.
-            for (const auto& entry : toc)
-                out += "\n  " + std::to_string(entry.first) + " ref" + std::to_string(entry.first) + ">";
+            // Text entries name the object's label (its position is the
+            // label's); the type goes on a line of its own.
+            for (const TocEntry& entry : toc)
+                out += "\n  " + std::to_string(entry.id) + " ref" + std::to_string(entry.id) + ">\n  " + entry.name;
             out += "\n)\n";
         }
         return std::vector<unsigned char>(out.begin(), out.end());
@@ -1091,12 +1093,13 @@ std::vector<unsigned char> Encoder::finish(TQ3FileMode mode,
         table.u64(0);
         table.u32(static_cast<std::uint32_t>(toc.size() + 1));
         table.i32(0);
-        table.u32(0);
-        table.u32(12);
+        table.u32(1);
+        table.u32(16);
         table.u32(static_cast<std::uint32_t>(toc.size()));
-        for (const auto& [id, where] : toc) {
-            table.u32(id);
-            table.u64(24 + where);
+        for (const TocEntry& entry : toc) {
+            table.u32(entry.id);
+            table.u64(24 + entry.position);
+            table.u32(entry.type);
         }
         table.end();
         out.insert(out.end(), table.m_body.begin(), table.m_body.end());

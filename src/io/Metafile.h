@@ -195,10 +195,20 @@ public:
     /// Text: gives the object starting at `position` a label (inserted at
     /// finish). Binary: nothing.
     void label(std::size_t position, const std::string& name);
+    /// One table of contents entry: a reference ID, where its object starts
+    /// in the body, and the object's type (its text name for text files).
+    struct TocEntry {
+        std::uint32_t id;
+        std::size_t position;
+        TQ3ObjectType type;
+        const char* name;
+    };
     /// The whole file: header (mode, and a table of contents of the given
-    /// references, refID -> body position) followed by the objects written.
-    std::vector<unsigned char> finish(TQ3FileMode mode,
-                                      const std::vector<std::pair<std::uint32_t, std::size_t>>& toc);
+    /// entries) followed by the objects written. The table's entries carry
+    /// their object types (entry type 1), as QuickDraw 3D 1.5 and later
+    /// write them: its Q3File_GetExternalReferences finds a file's
+    /// ExternalReference objects through those types.
+    std::vector<unsigned char> finish(TQ3FileMode mode, const std::vector<TocEntry>& toc);
 
 private:
     void word(const std::string& text);

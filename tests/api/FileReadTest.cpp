@@ -60,6 +60,20 @@ TEST_F(FileReadTest, BigAndLittleEndianFilesReadTheSame)
 
 TEST_F(FileReadTest, AReferenceGivesTheOneObjectItRefersTo)
 {
+    // QuickDraw 3D 1.0's table of contents entries have no object types.
+    const auto untyped = readAll(dataFile("references_toc0_be.3dmf"));
+    ASSERT_EQ(untyped.size(), 1u);
+    TQ3GroupPosition at = nullptr;
+    Q3Group_GetFirstPosition(untyped[0], &at);
+    TQ3Object triangle = nullptr;
+    Q3Group_GetPositionObject(untyped[0], at, &triangle);
+    TQ3AttributeSet set = nullptr;
+    Q3Geometry_GetAttributeSet(triangle, &set);
+    EXPECT_EQ(diffuseOf(set).g, 1.0f);
+    Q3Object_Dispose(set);
+    Q3Object_Dispose(triangle);
+    disposeAll(untyped);
+
     const auto objects = readAll(dataFile("references_be.3dmf"));
     ASSERT_EQ(objects.size(), 1u);
     ASSERT_EQ(Q3Object_GetLeafType(objects[0]), kQ3GroupTypeDisplay);

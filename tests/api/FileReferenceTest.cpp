@@ -19,6 +19,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,73 @@ TQ3Object makeBox(float size)
     data.majorAxis = {size, 0, 0};
     data.minorAxis = {0, size, 0};
     return Q3Box_New(&data);
+}
+
+/// A 32-bit field of a binary file in its byte order.
+std::uint32_t word32(const std::vector<unsigned char>& bytes, std::size_t at, bool little)
+{
+    std::uint32_t v = 0;
+    for (int i = 0; i < 4; ++i)
+        v |= std::uint32_t{bytes.at(at + i)} << (little ? 8 * i : 24 - 8 * i);
+    return v;
+}
+
+/// The object types a written file's table of contents gives its entries,
+/// keyed by what starts at each entry's location: for a binary file, the
+/// type found there (a Container's first child's type for a container); for
+/// a text file, the first object name after the entry's label. Fails the
+/// test when the table's entries carry no types (entry type 0).
+std::map<std::string, std::string> tocTypes(const std::vector<unsigned char>& file)
+{
+    std::map<std::string, std::string> out;
+    const std::string text(file.begin(), file.end());
+    if (text.compare(0, 10, "3DMetafile") == 0) {
+        const std::size_t table = text.find("toc: TableOfContents (");
+        EXPECT_NE(table, std::string::npos) << text;
+        if (table == std::string::npos)
+            return out;
+        unsigned long next = 0, seed = 0, entryType = 9, entrySize = 0, entries = 0;
+        int typeSeed = 0;
+        std::size_t at = table + std::strlen("toc: TableOfContents (");
+        std::istringstream in(text.substr(at));
+        in >> next >> seed >> typeSeed >> entryType >> entrySize >> entries;
+        EXPECT_EQ(entryType, 1u);
+        EXPECT_EQ(entrySize, 16u);
+        for (unsigned long i = 0; i < entries; ++i) {
+            unsigned long id = 0;
+            std::string label, type;
+            in >> id >> label >> type;
+            label.pop_back(); // "name>"
+            const std::size_t labelled = text.find(label + ": ");
+            EXPECT_NE(labelled, std::string::npos) << label;
+            std::istringstream object(text.substr(labelled + label.size() + 2));
+            std::string first, paren, child;
+            object >> first >> paren >> child;
+            out[first == "Container" ? child : first] = type;
+        }
+        return out;
+    }
+    const bool little = file.at(0) == 'F';
+    const std::size_t table = word32(file, little ? 16 : 20, little);
+    const auto tag = [&](std::size_t at) {
+        std::string t(file.begin() + static_cast<long>(at), file.begin() + static_cast<long>(at) + 4);
+        if (little)
+            t = std::string(t.rbegin(), t.rend());
+        return t;
+    };
+    EXPECT_EQ(tag(table), "toc ");
+    EXPECT_EQ(word32(file, table + 8 + 16, little), 1u);  // entry type
+    EXPECT_EQ(word32(file, table + 8 + 20, little), 16u); // entry size
+    const std::uint32_t entries = word32(file, table + 8 + 24, little);
+    for (std::uint32_t i = 0; i < entries; ++i) {
+        const std::size_t entry = table + 8 + 28 + 16 * i;
+        const std::size_t location = word32(file, entry + (little ? 4 : 8), little);
+        std::string target = tag(location);
+        if (target == "cntr")
+            target = tag(location + 8);
+        out[target] = tag(entry + 12);
+    }
+    return out;
 }
 
 float boxSize(TQ3Object box)
@@ -234,12 +302,20 @@ TEST_F(FileReferenceTest, AMarkedObjectIsWrittenAsAnExternalReferenceAndReadBack
                 EXPECT_EQ(text.find(mode & kQ3FileModeSwap ? " xob" : "box "), std::string::npos);
             }
             EXPECT_NE(text.find(path), std::string::npos);
+            // The reference is written once (the group's member refers to
+            // it) and its table of contents entry says it is one, as the
+            // 3D Metafile Reference requires of a file holding external
+            // references.
+            const auto types = tocTypes(written);
+            const std::string external = (mode & kQ3FileModeText) ? "ExternalReference" : "rfex";
+            ASSERT_EQ(types.count(external), 1u) << text;
+            EXPECT_EQ(types.at(external), external);
 
             TQ3FileObject target = openBytes(written);
             ASSERT_NE(target, nullptr);
             TQ3GroupObject references = Q3File_GetExternalReferences(target);
             ASSERT_NE(references, nullptr);
-            EXPECT_EQ(stringsOf(references), (std::vector<std::string>{path, path}));
+            EXPECT_EQ(stringsOf(references), (std::vector<std::string>{path}));
             Q3Object_Dispose(references);
             TQ3Object first = Q3File_ReadObject(target);
             ASSERT_NE(first, nullptr);
@@ -252,6 +328,29 @@ TEST_F(FileReferenceTest, AMarkedObjectIsWrittenAsAnExternalReferenceAndReadBack
             EXPECT_EQ(count, 1u);
             Q3Object_Dispose(second);
             Q3Object_Dispose(first);
+            Q3File_Close(target);
+            Q3Object_Dispose(target);
+        }
+
+        // A stream file refers to nothing: each submit writes the reference
+        // whole, and each is listed with its type.
+        {
+            const auto written = writeObjects({box, box}, kQ3FileModeStream | kQ3FileModeText);
+            const std::string text(written.begin(), written.end());
+            const std::string table = text.substr(text.find("toc: TableOfContents"));
+            std::size_t listed = 0;
+            for (std::size_t at = table.find("\n  ExternalReference"); at != std::string::npos;
+                 at = table.find("\n  ExternalReference", at + 1))
+                ++listed;
+            EXPECT_EQ(listed, 2u) << text;
+            EXPECT_EQ(text.find("\n  Reference ("), std::string::npos) << text;
+            EXPECT_EQ(text.find("\nReference ("), std::string::npos) << text;
+            TQ3FileObject target = openBytes(written);
+            ASSERT_NE(target, nullptr);
+            TQ3GroupObject references = Q3File_GetExternalReferences(target);
+            ASSERT_NE(references, nullptr);
+            EXPECT_EQ(stringsOf(references), (std::vector<std::string>{path, path}));
+            Q3Object_Dispose(references);
             Q3File_Close(target);
             Q3Object_Dispose(target);
         }

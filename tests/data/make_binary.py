@@ -38,9 +38,12 @@ def triangle_file(order):
     return header(order, 0, 0) + obj(order, b"cntr", tri + red + vasl)
 
 
-def references_file(order):
+def references_file(order, toc_entry_type=1):
     # Two triangles in a display group sharing one attribute set: the second
-    # refers to the first's set through the table of contents.
+    # refers to the first's set through the table of contents. Its entries
+    # carry the object's type (entry type 1, 16 bytes) as QuickDraw 3D 1.5
+    # and later write them, or not (type 0, 12 bytes) as QuickDraw 3D 1.0
+    # wrote a normal file's.
     green = obj(order, b"cntr", obj(order, b"attr", b"") + obj(order, b"kdif", floats(order, 0, 1, 0)))
     first_tri = obj(order, b"trng", floats(order, -2, -1, 0, 0, -1, 0, -1, 1, 0))
     second_tri = obj(order, b"trng", floats(order, 0, -1, 0, 2, -1, 0, 1, 1, 0))
@@ -53,8 +56,11 @@ def references_file(order):
     body += obj(order, b"cntr", second_tri + obj(order, b"rfrn", struct.pack(order + "I", 1)))
     body += obj(order, b"endg", b"")
     toc_offset = 24 + len(body)
-    toc = obj(order, b"toc ", struct.pack(order + "QIiIII", 0, 2, 0, 0, 12, 1) +
-              struct.pack(order + "IQ", 1, set_offset))
+    entry = struct.pack(order + "IQ", 1, set_offset)
+    if toc_entry_type == 1:
+        entry += b"attr" if order == ">" else b"rtta"
+    toc = obj(order, b"toc ", struct.pack(order + "QIiIII", 0, 2, 0, toc_entry_type, 12 + 4 * toc_entry_type, 1) +
+              entry)
     return header(order, 0, toc_offset) + body + toc
 
 
@@ -67,6 +73,7 @@ def unknown_file(order):
 
 for name, data in [("triangle_be.3dmf", triangle_file(">")), ("triangle_le.3dmf", triangle_file("<")),
                    ("references_be.3dmf", references_file(">")),
-                   ("references_le.3dmf", references_file("<")), ("unknown_be.3dmf", unknown_file(">"))]:
+                   ("references_le.3dmf", references_file("<")),
+                   ("references_toc0_be.3dmf", references_file(">", 0)), ("unknown_be.3dmf", unknown_file(">"))]:
     with open(os.path.join(here, name), "wb") as f:
         f.write(data)
