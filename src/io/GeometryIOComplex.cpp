@@ -778,6 +778,7 @@ Ref<SharedObject> readMarker(ReadContext& context, const Parts& parts)
 void writeMarker(WriteContext& context, const Object& object)
 {
     const TQ3MarkerData& data = dataOf<Marker>(object);
+    requireInt32Offsets(data.xOffset, data.yOffset, "marker");
     const AttributeSet* own = setOf(data.markerAttributeSet);
     maybeContainer(context, WriteContext::hasAttributes(own), [&] {
         Encoder& out = context.out();

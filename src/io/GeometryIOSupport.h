@@ -9,6 +9,8 @@
 
 #include "io/ClassIO.h"
 
+#include <cstdint>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +25,17 @@ inline const std::vector<std::pair<const char*, std::uint32_t>> kPacking = {{"In
 inline const std::vector<std::pair<const char*, std::uint32_t>> kCaps = {
     {"None", kQ3EndCapNone}, {"Top", kQ3EndCapMaskTop}, {"Bottom", kQ3EndCapMaskBottom},
     {"Interior", kQ3EndCapMaskInterior}};
+
+/// Checks, before anything is written, that a marker's xOffset and yOffset
+/// (longs, 64-bit on LP64 hosts) fit the file's Int32 fields:
+/// kQ3ErrorInvalidData otherwise, naming `what`.
+inline void requireInt32Offsets(long xOffset, long yOffset, const char* what)
+{
+    for (const long offset : {xOffset, yOffset})
+        if (offset < INT32_MIN || offset > INT32_MAX)
+            fail(kQ3ErrorInvalidData, std::string("the ") + what + "'s offset " + std::to_string(offset) +
+                                          " does not fit the file's 32-bit field");
+}
 
 inline const AttributeSet* setOf(TQ3AttributeSet handle)
 {

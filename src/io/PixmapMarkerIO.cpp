@@ -72,10 +72,7 @@ void writePixmapMarker(WriteContext& context, const Object& object)
     if (storage.read(0, size, image.data()) < size)
         fail(kQ3ErrorInvalidData, "the pixmap marker's storage now holds fewer than the " + std::to_string(size) +
                                       " bytes of rowBytes * height");
-    for (const long offset : {data.xOffset, data.yOffset})
-        if (offset < INT32_MIN || offset > INT32_MAX)
-            fail(kQ3ErrorInvalidData, "the pixmap marker's offset " + std::to_string(offset) +
-                                          " does not fit the file's 32-bit field");
+    requireInt32Offsets(data.xOffset, data.yOffset, "pixmap marker");
     const AttributeSet* own = setOf(data.pixmapMarkerAttributeSet);
     maybeContainer(context, WriteContext::hasAttributes(own), [&] {
         Encoder& out = context.out();

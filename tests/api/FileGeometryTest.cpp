@@ -742,6 +742,27 @@ TEST_F(FileGeometryTest, HandWrittenPolygonFilesGiveTheirObjectsInEveryEncoding)
         Q3Object_Dispose(o);
 }
 
+TEST_F(FileGeometryTest, AMarkerOffsetTheFileCannotHoldIsAnErrorAndWritesNothing)
+{
+    if (sizeof(long) < 8)
+        GTEST_SKIP() << "every long fits the file's 32-bit offsets";
+    TQ3Object point = makeMarker();
+    for (const long offset : {long{INT32_MAX} + 1, long{INT32_MIN} - 1}) {
+        TQ3Object marker = makeMarker();
+        ASSERT_EQ(Q3Marker_SetYOffset(marker, offset), kQ3Success);
+        const auto objects = readAll(writeAfterRefusal(
+            [&](TQ3ViewObject view) {
+                EXPECT_Q3_ERROR(EXPECT_EQ(Q3Object_Submit(marker, view), kQ3Failure), kQ3ErrorInvalidData);
+            },
+            point));
+        ASSERT_EQ(objects.size(), 1u); // the second marker alone
+        EXPECT_TRUE(sameMarker(objects[0], point));
+        disposeAll(objects);
+        Q3Object_Dispose(marker);
+    }
+    Q3Object_Dispose(point);
+}
+
 TEST_F(FileGeometryTest, MalformedPolygonFilesAreFileErrorsNeverCrashes)
 {
     const auto bytes = dataFile("polygons.3dmf");
