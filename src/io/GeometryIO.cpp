@@ -228,8 +228,10 @@ void writeIndex(Encoder& out, std::size_t bytes, std::uint32_t index)
 //
 // One AttributeArray subobject per array: the attribute type, 0, which array
 // (0 triangles, 1 edges, 2 vertices), its index among that kind's arrays,
-// whether a use array follows, then one value per element and the use flags
-// (3D Metafile Reference, TriMesh; Quesa reads and writes the same).
+// whether a use array follows; then the use array (one byte per element)
+// when it does, and one value per element (the QD3D 1.5.4 book's
+// "Attribute Arrays": the use array "follows immediately" the flag, and
+// Quesa's reader reads it there).
 
 constexpr TQ3ObjectType kTypeAttributeArray = Q3_OBJECT_TYPE('a', 't', 'a', 'r');
 
@@ -288,6 +290,13 @@ void readAttributeArrays(ReadContext& context, const Parts& parts, const std::ui
             fail(kQ3ErrorInvalidMetafileSubObject, "two TriMesh attribute arrays at one place");
         const std::size_t words = wordsOf(type);
         const std::uint32_t n = elements[kind];
+        std::vector<char> use;
+        if (useFlags) {
+            in.requireRoom(n, 1, 1, "use flags");
+            use.resize(n);
+            for (char& flag : use)
+                flag = static_cast<char>(in.u8());
+        }
         in.requireRoom(n, 4 * words, words, "attribute values");
         std::vector<unsigned char> values(std::size_t{n} * words * 4);
         for (std::size_t w = 0; w < std::size_t{n} * words; ++w) {
@@ -298,13 +307,6 @@ void readAttributeArrays(ReadContext& context, const Parts& parts, const std::ui
                 const float f = in.f32();
                 std::memcpy(values.data() + 4 * w, &f, 4);
             }
-        }
-        std::vector<char> use;
-        if (useFlags) {
-            in.requireRoom(n, 1, 1, "use flags");
-            use.resize(n);
-            for (char& flag : use)
-                flag = static_cast<char>(in.u8());
         }
         store.values[index] = std::move(values);
         store.uses[index] = std::move(use);
@@ -329,6 +331,9 @@ void writeAttributeArrays(Encoder& out, std::uint32_t kind, const TQ3TriMeshAttr
         out.u32(kind);
         out.u32(static_cast<std::uint32_t>(i));
         out.u32(entry.attributeUseArray != nullptr ? 1 : 0);
+        if (entry.attributeUseArray != nullptr)
+            for (unsigned long e = 0; e < elements; ++e)
+                out.u8(static_cast<std::uint8_t>(entry.attributeUseArray[e]));
         const auto* bytes = static_cast<const unsigned char*>(entry.data);
         for (std::size_t w = 0; w < elements * words; ++w) {
             if (entry.attributeType == kQ3AttributeTypeHighlightState) {
@@ -341,9 +346,6 @@ void writeAttributeArrays(Encoder& out, std::uint32_t kind, const TQ3TriMeshAttr
                 out.f32(f);
             }
         }
-        if (entry.attributeUseArray != nullptr)
-            for (unsigned long e = 0; e < elements; ++e)
-                out.u8(static_cast<std::uint8_t>(entry.attributeUseArray[e]));
         out.end();
     }
 }

@@ -526,10 +526,10 @@ TEST_F(FileReferenceTest, ABinaryTriMeshAttributeArrayLaidOutByHand)
     put32(bytes, 0);
     put32(bytes, 0); // triangles
     put32(bytes, 0); // the first triangle array
-    put32(bytes, 1); // a use array follows
+    put32(bytes, 1); // a use array follows, at once (before the values)
+    bytes.insert(bytes.end(), {1, 0, 1, 0});
     for (float v : {1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 1.f, 1.f, 1.f})
         putFloat(bytes, v);
-    bytes.insert(bytes.end(), {1, 0, 1, 0});
     const auto objects = readAll(bytes);
     ASSERT_EQ(objects.size(), 1u);
     TQ3TriMeshData data{};
