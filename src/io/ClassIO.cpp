@@ -308,7 +308,11 @@ void WriteContext::object(const Object& object)
     }
     const bool remember = !m_stream && !isGroup && object.isType(kQ3ObjectTypeShared);
     if (remember) {
-        m_written[&object] = Written{m_out.position(), 0, entry->type, entry->name};
+        Written& written = m_written[&object] = Written{m_out.position(), 0, entry->type, entry->name};
+        if (m_database) {
+            written.id = m_nextId++;
+            m_out.label(written.position, "ref" + std::to_string(written.id));
+        }
         m_added.push_back(&object);
         m_keep.push_back(Ref<SharedObject>::retain(
             const_cast<SharedObject*>(static_cast<const SharedObject*>(&object))));

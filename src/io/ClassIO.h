@@ -123,10 +123,15 @@ private:
 };
 
 /// Writing one file. Objects written twice are written once and referred to
-/// (unless `stream`).
+/// (unless `stream`). A `database` file lists every shared object it writes
+/// in its table of contents, referred to or not (the 3D Metafile Reference's
+/// Database flag), groups excepted: Q3 refers to no group.
 class WriteContext {
 public:
-    WriteContext(Encoding encoding, bool stream) : m_out(encoding), m_stream(stream) {}
+    WriteContext(Encoding encoding, bool stream, bool database = false)
+        : m_out(encoding), m_stream(stream), m_database(database && !stream)
+    {
+    }
 
     Encoder& out() { return m_out; }
     /// Writes any object Q3 has a class for (references for repeats); an
@@ -152,6 +157,7 @@ private:
     };
     Encoder m_out;
     bool m_stream;
+    bool m_database;
     std::map<const Object*, Written> m_written;
     /// A stream file's ExternalReference objects (each listed in the table
     /// of contents; nothing refers to them).

@@ -123,7 +123,8 @@ void File::openWrite(TQ3FileMode mode)
     const io::Encoding encoding = (mode & kQ3FileModeText)   ? io::Encoding::kText
                                   : (mode & kQ3FileModeSwap) ? io::Encoding::kBinaryLittle
                                                              : io::Encoding::kBinaryBig;
-    m_writer = std::make_shared<io::WriteContext>(encoding, (mode & kQ3FileModeStream) != 0);
+    m_writer = std::make_shared<io::WriteContext>(encoding, (mode & kQ3FileModeStream) != 0,
+                                                  (mode & kQ3FileModeDatabase) != 0);
     m_mode = mode;
     m_state = State::kWriting;
     m_storage->acquire();

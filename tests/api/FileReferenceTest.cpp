@@ -366,6 +366,66 @@ TEST_F(FileReferenceTest, AMarkedObjectIsWrittenAsAnExternalReferenceAndReadBack
     }
 }
 
+// "Suppose E is a metafile that contains an object R that you wish to
+// reference from another metafile M. E must have an entry to object R in its
+// Table of Contents ... you can write E out in database mode" (the QD3D 1.5.4
+// book): a Database file lists every shared object it writes, written once or
+// not, with its type.
+TEST_F(FileReferenceTest, ADatabaseFileListsEveryObjectSoEachCanBeReferencedExternally)
+{
+    TQ3Object small = makeBox(1), large = makeBox(3);
+    for (TQ3FileMode encoding : {TQ3FileMode(0), TQ3FileMode(kQ3FileModeText), TQ3FileMode(kQ3FileModeSwap)}) {
+        const auto database = writeObjects({small, large}, kQ3FileModeDatabase | encoding);
+        const auto normal = writeObjects({small, large}, kQ3FileModeNormal | encoding);
+        const auto types = tocTypes(database);
+        const std::string box = (encoding & kQ3FileModeText) ? "Box" : "box ";
+        ASSERT_EQ(types.size(), 1u); // both entries are boxes
+        EXPECT_EQ(types.at(box), box);
+        const std::string text(database.begin(), database.end());
+        if (encoding & kQ3FileModeText) {
+            EXPECT_NE(text.find("ref1: Box"), std::string::npos) << text;
+            EXPECT_NE(text.find("ref2: Box"), std::string::npos) << text;
+            EXPECT_NE(text.find("\n  2 ref2>\n  Box"), std::string::npos) << text;
+        }
+        // A Normal file lists nothing (nothing is referred to): no table.
+        const std::string plain(normal.begin(), normal.end());
+        EXPECT_EQ(plain.find((encoding & kQ3FileModeText) ? "TableOfContents" : (encoding ? " cot" : "toc ")),
+                  std::string::npos);
+    }
+
+    const std::string path = tempPath("database.3dmf");
+    writeFile(path, writeObjects({small, large}, kQ3FileModeDatabase | kQ3FileModeText));
+    TQ3StorageObject storage = Q3UnixPathStorage_New(path.c_str());
+    TQ3FileObject source = Q3File_New();
+    Q3File_SetStorage(source, storage);
+    Q3Object_Dispose(storage);
+    TQ3FileMode mode = 0;
+    ASSERT_EQ(Q3File_OpenRead(source, &mode), kQ3Success);
+    EXPECT_EQ(mode, TQ3FileMode(kQ3FileModeDatabase | kQ3FileModeText));
+    TQ3Object first = Q3File_ReadObject(source);
+    TQ3Object second = Q3File_ReadObject(source);
+    ASSERT_NE(second, nullptr);
+    ASSERT_EQ(Q3File_MarkAsExternalReference(source, second), kQ3Success);
+    const auto written = writeObjects({second}, kQ3FileModeNormal | kQ3FileModeText);
+    const std::string text(written.begin(), written.end());
+    EXPECT_NE(text.find("ExternalReference ( 2 )"), std::string::npos) << text;
+    TQ3FileObject target = openBytes(written);
+    ASSERT_NE(target, nullptr);
+    TQ3Object again = Q3File_ReadObject(target);
+    ASSERT_NE(again, nullptr);
+    EXPECT_EQ(boxSize(again), 3.0f);
+    Q3Object_Dispose(again);
+    Q3File_Close(target);
+    Q3Object_Dispose(target);
+    Q3Object_Dispose(first);
+    Q3Object_Dispose(second);
+    Q3File_Close(source);
+    Q3Object_Dispose(source);
+    Q3Object_Dispose(small);
+    Q3Object_Dispose(large);
+    std::remove(path.c_str());
+}
+
 TEST_F(FileReferenceTest, ARelativeExternalReferenceStartsAtTheReadingFilesDirectory)
 {
     const std::string source = tempPath("relative_source.3dmf");
