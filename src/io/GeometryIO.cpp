@@ -291,7 +291,13 @@ void readAttributeArrays(ReadContext& context, const Parts& parts, const std::ui
         const std::size_t words = wordsOf(type);
         const std::uint32_t n = elements[kind];
         std::vector<char> use;
-        if (useFlags) {
+        // Quesa's writer sets the flag but writes no use bytes for a built-in
+        // attribute type: when the data holds the values and no room for the
+        // bytes, the file is read as Quesa wrote it, every element using its
+        // value.
+        const bool quesaWithoutUses = useFlags && !in.hasRoom(n, 1 + 4 * words, 1 + words) &&
+                                      in.hasRoom(n, 4 * words, words);
+        if (useFlags && !quesaWithoutUses) {
             in.requireRoom(n, 1, 1, "use flags");
             use.resize(n);
             for (char& flag : use)
@@ -311,7 +317,7 @@ void readAttributeArrays(ReadContext& context, const Parts& parts, const std::ui
         store.values[index] = std::move(values);
         store.uses[index] = std::move(use);
         store.entries[index] = TQ3TriMeshAttributeData{type, store.values[index].data(),
-                                                       useFlags ? store.uses[index].data() : nullptr};
+                                                       store.uses[index].empty() ? nullptr : store.uses[index].data()};
     }
     for (int kind = 0; kind < 3; ++kind)
         for (const auto& entry : stores[kind].entries)

@@ -726,13 +726,18 @@ std::uint32_t DataReader::count(std::size_t bytesPerItem, std::size_t tokensPerI
     return n;
 }
 
-void DataReader::requireRoom(std::uint64_t n, std::size_t bytesPerItem, std::size_t tokensPerItem,
-                             const char* what) const
+bool DataReader::hasRoom(std::uint64_t n, std::size_t bytesPerItem, std::size_t tokensPerItem) const
 {
     const std::size_t left = m_file.encoding == Encoding::kText ? m_node.tokens.size() - m_position
                                                                  : m_node.dataEnd - m_position;
     const std::size_t per = m_file.encoding == Encoding::kText ? tokensPerItem : bytesPerItem;
-    if (n > limits::kMaxArrayCount || (per > 0 && n > left / per))
+    return n <= limits::kMaxArrayCount && (per == 0 || n <= left / per);
+}
+
+void DataReader::requireRoom(std::uint64_t n, std::size_t bytesPerItem, std::size_t tokensPerItem,
+                             const char* what) const
+{
+    if (!hasRoom(n, bytesPerItem, tokensPerItem))
         fail(kQ3ErrorInvalidMetafileObject, "the " + typeName(m_node.type) + " object claims " + std::to_string(n) +
                                                 " " + what + ", more than its data can hold");
 }

@@ -117,6 +117,8 @@ public:
     /// Refuses (kQ3ErrorInvalidMetafileObject) `n` items of that size when
     /// the rest of the data cannot hold them.
     void requireRoom(std::uint64_t n, std::size_t bytesPerItem, std::size_t tokensPerItem, const char* what) const;
+    /// Whether the rest of the data can hold `n` such items.
+    bool hasRoom(std::uint64_t n, std::size_t bytesPerItem, std::size_t tokensPerItem) const;
     bool atEnd() const;
     /// Binary bytes or text tokens not read yet.
     std::size_t remaining() const;

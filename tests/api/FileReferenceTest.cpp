@@ -564,49 +564,66 @@ TEST_F(FileReferenceTest, ABinaryCapsLaidOutAsQuesaReadsIt)
 // value per triangle, then one use byte per triangle.
 TEST_F(FileReferenceTest, ABinaryTriMeshAttributeArrayLaidOutByHand)
 {
-    std::vector<unsigned char> bytes = binaryHeader();
-    const std::uint32_t meshSize = 24 + 4 * 3 + 3 * 12 + 28;
-    const std::uint32_t arraySize = 20 + 4 * 12 + 4;
-    putTag(bytes, "cntr");
-    put32(bytes, (8 + meshSize) + (8 + arraySize));
-    putTag(bytes, "tmsh");
-    put32(bytes, meshSize);
-    for (std::uint32_t v : {4u, 1u, 0u, 0u, 3u, 0u}) // triangles, their arrays, edges, theirs, points, theirs
-        put32(bytes, v);
-    for (int t = 0; t < 4; ++t) // 1-byte point indices: at most 0xFF points
-        bytes.insert(bytes.end(), {0, 1, 2});
-    for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
-        putFloat(bytes, v);
-    for (float v : {0.f, 0.f, 0.f, 1.f, 1.f, 0.f})
-        putFloat(bytes, v);
-    put32(bytes, 0); // isEmpty: False
-    putTag(bytes, "atar");
-    put32(bytes, arraySize);
-    put32(bytes, kQ3AttributeTypeDiffuseColor);
-    put32(bytes, 0);
-    put32(bytes, 0); // triangles
-    put32(bytes, 0); // the first triangle array
-    put32(bytes, 1); // a use array follows, at once (before the values)
-    bytes.insert(bytes.end(), {1, 0, 1, 0});
-    for (float v : {1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 1.f, 1.f, 1.f})
-        putFloat(bytes, v);
-    const auto objects = readAll(bytes);
-    ASSERT_EQ(objects.size(), 1u);
-    TQ3TriMeshData data{};
-    ASSERT_EQ(Q3TriMesh_GetData(objects[0], &data), kQ3Success);
-    ASSERT_EQ(data.numTriangleAttributeTypes, 1u);
-    EXPECT_EQ(data.triangleAttributeTypes[0].attributeType, kQ3AttributeTypeDiffuseColor);
-    const auto* colors = static_cast<const TQ3ColorRGB*>(data.triangleAttributeTypes[0].data);
-    EXPECT_EQ(colors[1].g, 1.0f);
-    EXPECT_EQ(colors[2].b, 1.0f);
-    EXPECT_EQ(colors[3].r, 1.0f);
-    ASSERT_NE(data.triangleAttributeTypes[0].attributeUseArray, nullptr);
-    EXPECT_EQ(data.triangleAttributeTypes[0].attributeUseArray[0], 1);
-    EXPECT_EQ(data.triangleAttributeTypes[0].attributeUseArray[1], 0);
-    EXPECT_EQ(data.triangleAttributeTypes[0].attributeUseArray[2], 1);
-    EXPECT_EQ(data.points[1].x, 1.0f);
-    Q3TriMesh_EmptyData(&data);
-    disposeAll(objects);
+    // withUses: the book's layout, the use bytes right after the flag;
+    // without: the flag set but no use bytes, as Quesa's writer leaves it.
+    // cut: values (floats) left out at the end.
+    const auto file = [](bool withUses, std::uint32_t cut = 0) {
+        std::vector<unsigned char> bytes = binaryHeader();
+        const std::uint32_t meshSize = 24 + 4 * 3 + 3 * 12 + 28;
+        const std::uint32_t arraySize = 20 + (withUses ? 4 : 0) + 4 * (12 - cut);
+        putTag(bytes, "cntr");
+        put32(bytes, (8 + meshSize) + (8 + arraySize));
+        putTag(bytes, "tmsh");
+        put32(bytes, meshSize);
+        for (std::uint32_t v : {4u, 1u, 0u, 0u, 3u, 0u}) // triangles, their arrays, edges, theirs, points, theirs
+            put32(bytes, v);
+        for (int t = 0; t < 4; ++t) // 1-byte point indices: at most 0xFF points
+            bytes.insert(bytes.end(), {0, 1, 2});
+        for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
+            putFloat(bytes, v);
+        for (float v : {0.f, 0.f, 0.f, 1.f, 1.f, 0.f})
+            putFloat(bytes, v);
+        put32(bytes, 0); // isEmpty: False
+        putTag(bytes, "atar");
+        put32(bytes, arraySize);
+        put32(bytes, kQ3AttributeTypeDiffuseColor);
+        put32(bytes, 0);
+        put32(bytes, 0); // triangles
+        put32(bytes, 0); // the first triangle array
+        put32(bytes, 1); // a use array follows, at once (before the values)
+        if (withUses)
+            bytes.insert(bytes.end(), {1, 0, 1, 0});
+        const float values[] = {1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 1.f, 1.f, 1.f};
+        for (std::uint32_t i = 0; i < 12 - cut; ++i)
+            putFloat(bytes, values[i]);
+        return bytes;
+    };
+    for (bool withUses : {true, false}) {
+        SCOPED_TRACE(withUses ? "the book's layout" : "Quesa's writer");
+        const auto objects = readAll(file(withUses));
+        ASSERT_EQ(objects.size(), 1u);
+        TQ3TriMeshData data{};
+        ASSERT_EQ(Q3TriMesh_GetData(objects[0], &data), kQ3Success);
+        ASSERT_EQ(data.numTriangleAttributeTypes, 1u);
+        EXPECT_EQ(data.triangleAttributeTypes[0].attributeType, kQ3AttributeTypeDiffuseColor);
+        const auto* colors = static_cast<const TQ3ColorRGB*>(data.triangleAttributeTypes[0].data);
+        EXPECT_EQ(colors[1].g, 1.0f);
+        EXPECT_EQ(colors[2].b, 1.0f);
+        EXPECT_EQ(colors[3].r, 1.0f);
+        if (withUses) {
+            ASSERT_NE(data.triangleAttributeTypes[0].attributeUseArray, nullptr);
+            EXPECT_EQ(data.triangleAttributeTypes[0].attributeUseArray[0], 1);
+            EXPECT_EQ(data.triangleAttributeTypes[0].attributeUseArray[1], 0);
+            EXPECT_EQ(data.triangleAttributeTypes[0].attributeUseArray[2], 1);
+        } else {
+            EXPECT_EQ(data.triangleAttributeTypes[0].attributeUseArray, nullptr);
+        }
+        EXPECT_EQ(data.points[1].x, 1.0f);
+        Q3TriMesh_EmptyData(&data);
+        disposeAll(objects);
+    }
+    // Use bytes with values cut short fit neither layout: an error, not a guess.
+    EXPECT_READ_ERROR(file(true, 2), kQ3ErrorInvalidMetafileObject);
 }
 
 // A text Marker's bitmap is RawData: 0x and two hex digits a byte, possibly
