@@ -20,12 +20,22 @@
 //                  rawdirect: rawmulti on a BGRA context whose own buffer is
 //                  the image (top row first), so no read-back at all
 //                  (informational; llvmpipe draws lines into BGRA more slowly
-//                  than into RGBA, so this bounds empty frames only).
+//                  than into RGBA, so this bounds empty frames only);
+//                  rawdepth: rawmulti with the hidden-line removal Q3's
+//                  interactive renderer (the bench view's) does since
+//                  2026-11-24: a 24-bit depth buffer cleared every frame,
+//                  glDepthFunc(GL_LEQUAL) (informational: the same work as
+//                  Q3's frame; raw and rawmulti skip the depth test, which
+//                  gives the same image here because every curve lies in the
+//                  plane z = 0, but costs llvmpipe's threads less).
 //   FrameEdited/N  q3edited: every curve edited (Q3NURBCurve_SetKnot to its
 //                  own value) and the frame drawn, so all 1000 are
 //                  tessellated again; against raw (informational).
 //   FrameCpu/N/S   the main thread's CPU time of a Q3 frame (S = 0 constant,
 //                  1 screen space): for comparing builds, not paired.
+//   FrameCpuRaw/N/M  the main thread's CPU time of the raw frame (M = 0 one
+//                  glDrawArrays per strip, 1 glMultiDrawArrays), to compare
+//                  with FrameCpu/N/0.
 //   EmptyFrame/N   q3: StartRendering, EndRendering (pixmap written);
 //                  raw: glClear, glFinish, glReadPixels;
 //                  rawdirect: glClear, glFinish into a BGRA buffer (informational).
@@ -41,7 +51,7 @@
 // (evaluated_second_frame: 1000 since retained curves keep no polyline, issue
 // 16's memory target; 0 with the polyline cache that came before, so the
 // same source measures both), and compares the raw images with Q3's
-// (pixels_differing).
+// (pixels_differing, _multi, _direct, _depth).
 //
 // Every timed frame follows an untimed frame by the same contender (see
 // q3Contender below); the counters <contender>_ms are timed frames only.
@@ -68,6 +78,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -195,17 +206,22 @@ enum class ReadBack {
     kDirect,     ///< a BGRA context whose buffer is the image, top row first: no read-back at all
 };
 
+/// Whether the raw peer removes hidden lines as Q3's interactive renderer
+/// does (OffscreenRenderer.cpp, FrameOptions::depthTest): a 24-bit depth
+/// buffer, cleared every frame, glDepthFunc(GL_LEQUAL).
+enum class Depth { kNone, kTested };
+
 /// A plain OSMesa program's rendering state: a context bound to its own
 /// buffer, the camera's matrix loaded, flat shading without dithering, the
 /// vertex array enabled.
 class RawGl {
 public:
-    RawGl(unsigned long size, const TQ3Matrix4x4& clip, ReadBack readBack)
-        : m_size(GLsizei(size)), m_readBack(readBack), m_buffer(size * size * 4),
+    RawGl(unsigned long size, const TQ3Matrix4x4& clip, ReadBack readBack, Depth depth = Depth::kNone)
+        : m_size(GLsizei(size)), m_readBack(readBack), m_depth(depth), m_buffer(size * size * 4),
           m_readPixels(readBack == ReadBack::kReadPixels ? size * size * 4 : 0)
     {
-        m_context = OSMesaCreateContextExt(readBack == ReadBack::kDirect ? OSMESA_BGRA : OSMESA_RGBA, 0, 0, 0,
-                                           nullptr);
+        m_context = OSMesaCreateContextExt(readBack == ReadBack::kDirect ? OSMESA_BGRA : OSMESA_RGBA,
+                                           depth == Depth::kTested ? 24 : 0, 0, 0, nullptr);
         if (m_context == nullptr || !bind())
             throw std::runtime_error("creating the raw OSMesa context failed");
         if (readBack == ReadBack::kDirect)
@@ -219,6 +235,10 @@ public:
         // OpenGL's defaults, so that both draw with the same pipeline.
         glDisable(GL_DITHER);
         glShadeModel(GL_FLAT);
+        if (depth == Depth::kTested) {
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LEQUAL);
+        }
         glEnableClientState(GL_VERTEX_ARRAY);
         release();
     }
@@ -234,7 +254,7 @@ public:
     void frame(const Scene* drawn, bool multiDraw)
     {
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
+        glClear(m_depth == Depth::kTested ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT);
         if (drawn != nullptr) {
             glColor3f(1.0f, 1.0f, 1.0f);
             glVertexPointer(3, GL_FLOAT, 0, drawn->xyz().data());
@@ -262,6 +282,7 @@ public:
 private:
     GLsizei m_size;
     ReadBack m_readBack;
+    Depth m_depth;
     std::vector<std::uint8_t> m_buffer;
     std::vector<std::uint8_t> m_readPixels;
     OSMesaContext m_context = nullptr;
@@ -283,14 +304,14 @@ TQ3Matrix4x4 clipMatrix(TQ3CameraObject camera)
     return clip;
 }
 
-RawGl& raw(unsigned long size, ReadBack readBack = ReadBack::kReadPixels)
+RawGl& raw(unsigned long size, ReadBack readBack = ReadBack::kReadPixels, Depth depth = Depth::kNone)
 {
-    static std::map<std::pair<unsigned long, ReadBack>, std::unique_ptr<RawGl>> contexts;
-    std::unique_ptr<RawGl>& context = contexts[{size, readBack}];
+    static std::map<std::tuple<unsigned long, ReadBack, Depth>, std::unique_ptr<RawGl>> contexts;
+    std::unique_ptr<RawGl>& context = contexts[{size, readBack, depth}];
     if (!context) {
         // Q3 makes the process's first OSMesa context (it pins the driver).
         Scene& s = scene();
-        context = std::make_unique<RawGl>(size, clipMatrix(s.view(size).camera()), readBack);
+        context = std::make_unique<RawGl>(size, clipMatrix(s.view(size).camera()), readBack, depth);
     }
     return *context;
 }
@@ -345,7 +366,8 @@ q3bench::Contender rawContender(const char* name, RawGl& gl, const Scene* drawn,
 
 // Checks the scene's caching and the peer's image before timing; false (with
 // the benchmark skipped) if anything is off.
-bool checkScene(benchmark::State& state, Scene& s, q3bench::BenchView& view, RawGl& gl, RawGl& direct)
+bool checkScene(benchmark::State& state, Scene& s, q3bench::BenchView& view, RawGl& gl, RawGl& direct,
+                RawGl& depth)
 {
     s.editAll();
     const std::uint64_t before = s.tessellations();
@@ -380,6 +402,13 @@ bool checkScene(benchmark::State& state, Scene& s, q3bench::BenchView& view, Raw
     direct.frame(&s, true);
     state.counters["pixels_differing_direct"] = differingPixels(view.pixels(), direct, size);
     direct.release();
+    if (!depth.bind()) {
+        state.SkipWithError("OSMesaMakeCurrent failed");
+        return false;
+    }
+    depth.frame(&s, true);
+    state.counters["pixels_differing_depth"] = differingPixels(view.pixels(), depth, size);
+    depth.release();
     return true;
 }
 
@@ -390,12 +419,14 @@ void Frame(benchmark::State& state)
     q3bench::BenchView& view = s.view(size);
     RawGl& gl = raw(size);
     RawGl& direct = raw(size, ReadBack::kDirect);
-    if (!checkScene(state, s, view, gl, direct))
+    RawGl& depth = raw(size, ReadBack::kReadPixels, Depth::kTested);
+    if (!checkScene(state, s, view, gl, direct, depth))
         return;
     const auto frame = [&] { s.renderQ3(view); };
     q3bench::runPaired(state, q3bench::Clock::kWall,
                        {q3Contender("q3", frame, frame), rawContender("raw", gl, &s, false),
-                        rawContender("rawmulti", gl, &s, true), rawContender("rawdirect", direct, &s, true)});
+                        rawContender("rawmulti", gl, &s, true), rawContender("rawdirect", direct, &s, true),
+                        rawContender("rawdepth", depth, &s, true)});
 }
 
 void FrameEdited(benchmark::State& state)
@@ -455,6 +486,26 @@ void FrameCpu(benchmark::State& state)
     }
     for (auto _ : state)
         s.renderQ3(view, constant);
+}
+
+// The main thread's CPU time of the raw peer's frame (one glMultiDrawArrays
+// of the same polylines, glFinish, glReadPixels), as FrameCpu/N/0 measures
+// Q3's: what a plain OpenGL program spends on the CPU that submits. Arg 1:
+// 0 one glDrawArrays per strip, 1 glMultiDrawArrays.
+void FrameCpuRaw(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    const bool multiDraw = state.range(1) != 0;
+    Scene& s = scene();
+    RawGl& gl = raw(size);
+    if (!gl.bind()) {
+        state.SkipWithError("OSMesaMakeCurrent failed");
+        return;
+    }
+    gl.frame(&s, multiDraw);
+    for (auto _ : state)
+        gl.frame(&s, multiDraw);
+    gl.release();
 }
 
 void EmptyFrame(benchmark::State& state)
@@ -552,6 +603,7 @@ BENCHMARK(Frame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTim
 BENCHMARK(FrameEdited)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameScreenSpace)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameCpu)->Args({512, 0})->Args({512, 1})->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(FrameCpuRaw)->Args({512, 0})->Args({512, 1})->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(EmptyFrame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(MisuseFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
