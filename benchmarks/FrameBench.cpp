@@ -20,14 +20,15 @@
 //                  rawdirect: rawmulti on a BGRA context whose own buffer is
 //                  the image (top row first), so no read-back at all
 //                  (informational; llvmpipe draws lines into BGRA more slowly
-//                  than into RGBA, so this bounds empty frames only);
-//                  rawdepth: rawmulti with the hidden-line removal Q3's
-//                  interactive renderer (the bench view's) does since
-//                  2026-11-24: a 24-bit depth buffer cleared every frame,
-//                  glDepthFunc(GL_LEQUAL) (informational: the same work as
-//                  Q3's frame; raw and rawmulti skip the depth test, which
-//                  gives the same image here because every curve lies in the
-//                  plane z = 0, but costs llvmpipe's threads less).
+//                  than into RGBA, so this bounds empty frames only).
+//   FrameDepth/N   q3 as in Frame/N; rawmulti; rawdepth: rawmulti with the
+//                  hidden-line removal Q3's interactive renderer (the bench
+//                  view's) does since 2026-11-24: a 24-bit depth buffer
+//                  cleared every frame, glDepthFunc(GL_LEQUAL). The same work
+//                  as Q3's frame; the raw peers of Frame/N skip the depth
+//                  test, which gives the same image here because every curve
+//                  lies in the plane z = 0 but costs llvmpipe's threads less
+//                  (informational).
 //   FrameEdited/N  q3edited: every curve edited (Q3NURBCurve_SetKnot to its
 //                  own value) and the frame drawn, so all 1000 are
 //                  tessellated again; against raw (informational).
@@ -51,7 +52,7 @@
 // (evaluated_second_frame: 1000 since retained curves keep no polyline, issue
 // 16's memory target; 0 with the polyline cache that came before, so the
 // same source measures both), and compares the raw images with Q3's
-// (pixels_differing, _multi, _direct, _depth).
+// (pixels_differing, _multi, _direct; FrameDepth/N: _depth).
 //
 // Every timed frame follows an untimed frame by the same contender (see
 // q3Contender below); the counters <contender>_ms are timed frames only.
@@ -366,8 +367,7 @@ q3bench::Contender rawContender(const char* name, RawGl& gl, const Scene* drawn,
 
 // Checks the scene's caching and the peer's image before timing; false (with
 // the benchmark skipped) if anything is off.
-bool checkScene(benchmark::State& state, Scene& s, q3bench::BenchView& view, RawGl& gl, RawGl& direct,
-                RawGl& depth)
+bool checkScene(benchmark::State& state, Scene& s, q3bench::BenchView& view, RawGl& gl, RawGl& direct)
 {
     s.editAll();
     const std::uint64_t before = s.tessellations();
@@ -402,13 +402,6 @@ bool checkScene(benchmark::State& state, Scene& s, q3bench::BenchView& view, Raw
     direct.frame(&s, true);
     state.counters["pixels_differing_direct"] = differingPixels(view.pixels(), direct, size);
     direct.release();
-    if (!depth.bind()) {
-        state.SkipWithError("OSMesaMakeCurrent failed");
-        return false;
-    }
-    depth.frame(&s, true);
-    state.counters["pixels_differing_depth"] = differingPixels(view.pixels(), depth, size);
-    depth.release();
     return true;
 }
 
@@ -419,13 +412,34 @@ void Frame(benchmark::State& state)
     q3bench::BenchView& view = s.view(size);
     RawGl& gl = raw(size);
     RawGl& direct = raw(size, ReadBack::kDirect);
-    RawGl& depth = raw(size, ReadBack::kReadPixels, Depth::kTested);
-    if (!checkScene(state, s, view, gl, direct, depth))
+    if (!checkScene(state, s, view, gl, direct))
         return;
     const auto frame = [&] { s.renderQ3(view); };
     q3bench::runPaired(state, q3bench::Clock::kWall,
                        {q3Contender("q3", frame, frame), rawContender("raw", gl, &s, false),
-                        rawContender("rawmulti", gl, &s, true), rawContender("rawdirect", direct, &s, true),
+                        rawContender("rawmulti", gl, &s, true), rawContender("rawdirect", direct, &s, true)});
+}
+
+// Frame/N's Q3 frame against raw OpenGL doing the same hidden-line removal
+// (rawdepth) and, in the same loop, without it (rawmulti). A benchmark of its
+// own so that Frame/N keeps the contenders it had for comparing builds.
+void FrameDepth(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    Scene& s = scene();
+    q3bench::BenchView& view = s.view(size);
+    RawGl& gl = raw(size);
+    RawGl& depth = raw(size, ReadBack::kReadPixels, Depth::kTested);
+    if (!s.renderQ3(view) || !depth.bind()) {
+        state.SkipWithError("a frame failed");
+        return;
+    }
+    depth.frame(&s, true);
+    state.counters["pixels_differing_depth"] = differingPixels(view.pixels(), depth, size);
+    depth.release();
+    const auto frame = [&] { s.renderQ3(view); };
+    q3bench::runPaired(state, q3bench::Clock::kWall,
+                       {q3Contender("q3", frame, frame), rawContender("rawmulti", gl, &s, true),
                         rawContender("rawdepth", depth, &s, true)});
 }
 
@@ -600,6 +614,7 @@ void MisuseFrame(benchmark::State& state)
 // Names: Frame/512 is the 512 x 512 image. The reported time covers every
 // contender; the counters hold each one's.
 BENCHMARK(Frame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
+BENCHMARK(FrameDepth)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameEdited)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameScreenSpace)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameCpu)->Args({512, 0})->Args({512, 1})->Unit(benchmark::kMillisecond)->MinTime(1.0);
