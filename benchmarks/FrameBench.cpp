@@ -21,11 +21,22 @@
 //                  the image (top row first), so no read-back at all
 //                  (informational; llvmpipe draws lines into BGRA more slowly
 //                  than into RGBA, so this bounds empty frames only).
+//   FrameDepth/N   q3 as in Frame/N; rawmulti; rawdepth: rawmulti with the
+//                  hidden-line removal Q3's interactive renderer (the bench
+//                  view's) does since 2026-11-24: a 24-bit depth buffer
+//                  cleared every frame, glDepthFunc(GL_LEQUAL). The same work
+//                  as Q3's frame; the raw peers of Frame/N skip the depth
+//                  test, which gives the same image here because every curve
+//                  lies in the plane z = 0 but costs llvmpipe's threads less
+//                  (informational).
 //   FrameEdited/N  q3edited: every curve edited (Q3NURBCurve_SetKnot to its
 //                  own value) and the frame drawn, so all 1000 are
 //                  tessellated again; against raw (informational).
 //   FrameCpu/N/S   the main thread's CPU time of a Q3 frame (S = 0 constant,
 //                  1 screen space): for comparing builds, not paired.
+//   FrameCpuRaw/N/M  the main thread's CPU time of the raw frame (M = 0 one
+//                  glDrawArrays per strip, 1 glMultiDrawArrays), to compare
+//                  with FrameCpu/N/0.
 //   EmptyFrame/N   q3: StartRendering, EndRendering (pixmap written);
 //                  raw: glClear, glFinish, glReadPixels;
 //                  rawdirect: glClear, glFinish into a BGRA buffer (informational).
@@ -41,7 +52,7 @@
 // (evaluated_second_frame: 1000 since retained curves keep no polyline, issue
 // 16's memory target; 0 with the polyline cache that came before, so the
 // same source measures both), and compares the raw images with Q3's
-// (pixels_differing).
+// (pixels_differing, _multi, _direct; FrameDepth/N: _depth).
 //
 // Every timed frame follows an untimed frame by the same contender (see
 // q3Contender below); the counters <contender>_ms are timed frames only.
@@ -68,6 +79,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -195,17 +207,22 @@ enum class ReadBack {
     kDirect,     ///< a BGRA context whose buffer is the image, top row first: no read-back at all
 };
 
+/// Whether the raw peer removes hidden lines as Q3's interactive renderer
+/// does (OffscreenRenderer.cpp, FrameOptions::depthTest): a 24-bit depth
+/// buffer, cleared every frame, glDepthFunc(GL_LEQUAL).
+enum class Depth { kNone, kTested };
+
 /// A plain OSMesa program's rendering state: a context bound to its own
 /// buffer, the camera's matrix loaded, flat shading without dithering, the
 /// vertex array enabled.
 class RawGl {
 public:
-    RawGl(unsigned long size, const TQ3Matrix4x4& clip, ReadBack readBack)
-        : m_size(GLsizei(size)), m_readBack(readBack), m_buffer(size * size * 4),
+    RawGl(unsigned long size, const TQ3Matrix4x4& clip, ReadBack readBack, Depth depth = Depth::kNone)
+        : m_size(GLsizei(size)), m_readBack(readBack), m_depth(depth), m_buffer(size * size * 4),
           m_readPixels(readBack == ReadBack::kReadPixels ? size * size * 4 : 0)
     {
-        m_context = OSMesaCreateContextExt(readBack == ReadBack::kDirect ? OSMESA_BGRA : OSMESA_RGBA, 0, 0, 0,
-                                           nullptr);
+        m_context = OSMesaCreateContextExt(readBack == ReadBack::kDirect ? OSMESA_BGRA : OSMESA_RGBA,
+                                           depth == Depth::kTested ? 24 : 0, 0, 0, nullptr);
         if (m_context == nullptr || !bind())
             throw std::runtime_error("creating the raw OSMesa context failed");
         if (readBack == ReadBack::kDirect)
@@ -219,6 +236,10 @@ public:
         // OpenGL's defaults, so that both draw with the same pipeline.
         glDisable(GL_DITHER);
         glShadeModel(GL_FLAT);
+        if (depth == Depth::kTested) {
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LEQUAL);
+        }
         glEnableClientState(GL_VERTEX_ARRAY);
         release();
     }
@@ -234,7 +255,7 @@ public:
     void frame(const Scene* drawn, bool multiDraw)
     {
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
+        glClear(m_depth == Depth::kTested ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT);
         if (drawn != nullptr) {
             glColor3f(1.0f, 1.0f, 1.0f);
             glVertexPointer(3, GL_FLOAT, 0, drawn->xyz().data());
@@ -262,6 +283,7 @@ public:
 private:
     GLsizei m_size;
     ReadBack m_readBack;
+    Depth m_depth;
     std::vector<std::uint8_t> m_buffer;
     std::vector<std::uint8_t> m_readPixels;
     OSMesaContext m_context = nullptr;
@@ -283,14 +305,14 @@ TQ3Matrix4x4 clipMatrix(TQ3CameraObject camera)
     return clip;
 }
 
-RawGl& raw(unsigned long size, ReadBack readBack = ReadBack::kReadPixels)
+RawGl& raw(unsigned long size, ReadBack readBack = ReadBack::kReadPixels, Depth depth = Depth::kNone)
 {
-    static std::map<std::pair<unsigned long, ReadBack>, std::unique_ptr<RawGl>> contexts;
-    std::unique_ptr<RawGl>& context = contexts[{size, readBack}];
+    static std::map<std::tuple<unsigned long, ReadBack, Depth>, std::unique_ptr<RawGl>> contexts;
+    std::unique_ptr<RawGl>& context = contexts[{size, readBack, depth}];
     if (!context) {
         // Q3 makes the process's first OSMesa context (it pins the driver).
         Scene& s = scene();
-        context = std::make_unique<RawGl>(size, clipMatrix(s.view(size).camera()), readBack);
+        context = std::make_unique<RawGl>(size, clipMatrix(s.view(size).camera()), readBack, depth);
     }
     return *context;
 }
@@ -398,6 +420,29 @@ void Frame(benchmark::State& state)
                         rawContender("rawmulti", gl, &s, true), rawContender("rawdirect", direct, &s, true)});
 }
 
+// Frame/N's Q3 frame against raw OpenGL doing the same hidden-line removal
+// (rawdepth) and, in the same loop, without it (rawmulti). A benchmark of its
+// own so that Frame/N keeps the contenders it had for comparing builds.
+void FrameDepth(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    Scene& s = scene();
+    q3bench::BenchView& view = s.view(size);
+    RawGl& gl = raw(size);
+    RawGl& depth = raw(size, ReadBack::kReadPixels, Depth::kTested);
+    if (!s.renderQ3(view) || !depth.bind()) {
+        state.SkipWithError("a frame failed");
+        return;
+    }
+    depth.frame(&s, true);
+    state.counters["pixels_differing_depth"] = differingPixels(view.pixels(), depth, size);
+    depth.release();
+    const auto frame = [&] { s.renderQ3(view); };
+    q3bench::runPaired(state, q3bench::Clock::kWall,
+                       {q3Contender("q3", frame, frame), rawContender("rawmulti", gl, &s, true),
+                        rawContender("rawdepth", depth, &s, true)});
+}
+
 void FrameEdited(benchmark::State& state)
 {
     const unsigned long size = static_cast<unsigned long>(state.range(0));
@@ -455,6 +500,26 @@ void FrameCpu(benchmark::State& state)
     }
     for (auto _ : state)
         s.renderQ3(view, constant);
+}
+
+// The main thread's CPU time of the raw peer's frame (one glMultiDrawArrays
+// of the same polylines, glFinish, glReadPixels), as FrameCpu/N/0 measures
+// Q3's: what a plain OpenGL program spends on the CPU that submits. Arg 1:
+// 0 one glDrawArrays per strip, 1 glMultiDrawArrays.
+void FrameCpuRaw(benchmark::State& state)
+{
+    const unsigned long size = static_cast<unsigned long>(state.range(0));
+    const bool multiDraw = state.range(1) != 0;
+    Scene& s = scene();
+    RawGl& gl = raw(size);
+    if (!gl.bind()) {
+        state.SkipWithError("OSMesaMakeCurrent failed");
+        return;
+    }
+    gl.frame(&s, multiDraw);
+    for (auto _ : state)
+        gl.frame(&s, multiDraw);
+    gl.release();
 }
 
 void EmptyFrame(benchmark::State& state)
@@ -549,9 +614,11 @@ void MisuseFrame(benchmark::State& state)
 // Names: Frame/512 is the 512 x 512 image. The reported time covers every
 // contender; the counters hold each one's.
 BENCHMARK(Frame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
+BENCHMARK(FrameDepth)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameEdited)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameScreenSpace)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.5);
 BENCHMARK(FrameCpu)->Args({512, 0})->Args({512, 1})->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(FrameCpuRaw)->Args({512, 0})->Args({512, 1})->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(EmptyFrame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(MisuseFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 

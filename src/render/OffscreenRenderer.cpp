@@ -302,26 +302,37 @@ private:
         float nx, ny, nz;
     };
 
+    // A plain command's vertex (see m_positions).
+    struct Position {
+        float x, y, z;
+    };
+
     static constexpr std::uint32_t kUnlit = std::numeric_limits<std::uint32_t>::max();
 
     // first and count are vertices, or for an indexed command indices.
     // shading indexes m_shadings (kUnlit: drawn with the colours as they are).
+    // A plain command (one colour, unlit, flat) draws positions from
+    // m_positions in `color`; the others draw interleaved Vertex records
+    // from m_vertices.
     struct DrawCommand {
         Primitive primitive;
         bool indexed;
         bool smooth;
+        bool plain;
         float pointSize;
         std::uint32_t matrixIndex;
         std::uint32_t shading;
         FaceOptions faces;
+        RgbColor color;
         GLint first;
         GLsizei count;
 
         bool drawsLike(const DrawCommand& other) const
         {
             return primitive == other.primitive && indexed == other.indexed && smooth == other.smooth &&
-                   pointSize == other.pointSize && matrixIndex == other.matrixIndex && shading == other.shading &&
-                   faces == other.faces;
+                   plain == other.plain && pointSize == other.pointSize && matrixIndex == other.matrixIndex &&
+                   shading == other.shading && faces == other.faces &&
+                   (!plain || (color.r == other.color.r && color.g == other.color.g && color.b == other.color.b));
         }
     };
 
@@ -331,7 +342,8 @@ private:
     void startFrameInGl();
     RenderResult flush(bool finish);
     void resetBatch();
-    void reserveVertices(std::size_t needed);
+    template <class T>
+    static void reserve(std::unique_ptr<T[]>& storage, std::size_t& capacity, std::size_t used, std::size_t needed);
 
     OSMesaContext m_context = nullptr;
     GLint m_maxViewport[2] = {0, 0};
@@ -344,6 +356,15 @@ private:
     std::unique_ptr<Vertex[]> m_vertices;
     std::size_t m_vertexCount = 0;
     std::size_t m_vertexCapacity = 0;
+    // Plain commands' vertices, 3 floats each: a third of a Vertex, and
+    // OpenGL fetches one array for them instead of three (a constant colour
+    // through glColor, as a plain OpenGL program draws; no normal, which
+    // unlit drawing never reads). Profiled on a frame of 1000 line strips
+    // (65,000 vertices, benchmarks/FrameBench.cpp): the three arrays cost
+    // Mesa's vertex fetch about 4 ms of the main thread's 21 ms.
+    std::unique_ptr<Position[]> m_positions;
+    std::size_t m_positionCount = 0;
+    std::size_t m_positionCapacity = 0;
     std::vector<GLuint> m_indices;
     std::vector<DrawCommand> m_commands;
     std::vector<std::array<float, 16>> m_matrices;
@@ -530,18 +551,22 @@ RenderResult OffscreenRenderer::Impl::setMatrix(const std::array<float, 16>& mat
     return RenderResult::success();
 }
 
-void OffscreenRenderer::Impl::reserveVertices(std::size_t needed)
+// Grows `storage` (of `capacity` elements) to hold `needed`, keeping its
+// first `used`; throws std::bad_alloc.
+template <class T>
+void OffscreenRenderer::Impl::reserve(std::unique_ptr<T[]>& storage, std::size_t& capacity, std::size_t used,
+                                      std::size_t needed)
 {
-    if (needed <= m_vertexCapacity)
+    if (needed <= capacity)
         return;
-    std::size_t capacity = m_vertexCapacity < 4096 ? 4096 : m_vertexCapacity;
-    while (capacity < needed)
-        capacity *= 2;
-    std::unique_ptr<Vertex[]> grown(new Vertex[capacity]);
-    if (m_vertexCount > 0)
-        std::memcpy(grown.get(), m_vertices.get(), m_vertexCount * sizeof(Vertex));
-    m_vertices = std::move(grown);
-    m_vertexCapacity = capacity;
+    std::size_t grown = capacity < 4096 ? 4096 : capacity;
+    while (grown < needed)
+        grown *= 2;
+    std::unique_ptr<T[]> bigger(new T[grown]);
+    if (used > 0)
+        std::memcpy(bigger.get(), storage.get(), used * sizeof(T));
+    storage = std::move(bigger);
+    capacity = grown;
 }
 
 RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
@@ -593,7 +618,13 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
                 return invalid("index " + std::to_string(r.indices[i]) + " is not below the vertex count " +
                                std::to_string(r.vertexCount));
 
-    if ((m_vertexCount > 0 && m_vertexCount + r.vertexCount > kFlushVertexCount) ||
+    // One colour, no lighting, no interpolation: positions only
+    // (m_positions). Interpolating a constant colour array does not always
+    // give the constant itself (llvmpipe's perspective-correct interpolation
+    // rounds), so smooth draws keep their colour array: same image either way.
+    const bool plain = r.rgb == nullptr && r.shading == nullptr && !r.smooth;
+    const std::size_t batched = plain ? m_positionCount : m_vertexCount;
+    if ((batched > 0 && batched + r.vertexCount > kFlushVertexCount) ||
         (!m_indices.empty() && m_indices.size() + r.indexCount > kFlushIndexCount)) {
         RenderResult flushed = flush(false);
         if (!flushed)
@@ -601,7 +632,10 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
     }
 
     try {
-        reserveVertices(m_vertexCount + r.vertexCount);
+        if (plain)
+            reserve(m_positions, m_positionCapacity, m_positionCount, m_positionCount + r.vertexCount);
+        else
+            reserve(m_vertices, m_vertexCapacity, m_vertexCount, m_vertexCount + r.vertexCount);
         if (indexed)
             m_indices.reserve(m_indices.size() + r.indexCount);
         if (r.shading != nullptr)
@@ -612,17 +646,22 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         return outOfMemory();
     }
 
-    const std::size_t base = m_vertexCount;
-    Vertex* out = m_vertices.get() + base;
-    const float* xyz = r.xyz;
-    static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
-    for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3) {
-        const float* c = r.rgb != nullptr ? r.rgb + 3 * i : nullptr;
-        const float* n = r.normals != nullptr ? r.normals + 3 * i : kNoNormal;
-        out[i] = c != nullptr ? Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2], n[0], n[1], n[2]}
-                              : Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b, n[0], n[1], n[2]};
+    const std::size_t base = plain ? m_positionCount : m_vertexCount; // after a flush, 0
+    if (plain) {
+        std::memcpy(m_positions.get() + base, r.xyz, r.vertexCount * sizeof(Position));
+        m_positionCount += r.vertexCount;
+    } else {
+        Vertex* out = m_vertices.get() + base;
+        const float* xyz = r.xyz;
+        static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
+        for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3) {
+            const float* c = r.rgb != nullptr ? r.rgb + 3 * i : nullptr;
+            const float* n = r.normals != nullptr ? r.normals + 3 * i : kNoNormal;
+            out[i] = c != nullptr ? Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2], n[0], n[1], n[2]}
+                                  : Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b, n[0], n[1], n[2]};
+        }
+        m_vertexCount += r.vertexCount;
     }
-    m_vertexCount += r.vertexCount;
 
     std::uint32_t shading = kUnlit;
     if (r.shading != nullptr) {
@@ -630,8 +669,8 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         shading = std::uint32_t(m_shadings.size() - 1);
     }
     const FaceOptions faces = r.primitive == Primitive::kTriangles ? m_faces : FaceOptions{};
-    DrawCommand command{r.primitive, indexed, r.smooth, r.pointSize, m_currentMatrix, shading, faces, 0,
-                        GLsizei(count)};
+    DrawCommand command{r.primitive, indexed, r.smooth, plain, r.pointSize, m_currentMatrix, shading, faces,
+                        plain ? r.color : RgbColor{}, 0, GLsizei(count)};
     if (indexed) {
         command.first = GLint(m_indices.size());
         for (std::size_t i = 0; i < r.indexCount; ++i)
@@ -828,12 +867,10 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             startFrameInGl();
             m_clearedInGl = true;
         }
-        if (m_vertexCount > 0) {
-            const Vertex* vertices = m_vertices.get();
-            glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
-            glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
-            glNormalPointer(GL_FLOAT, sizeof(Vertex), &vertices->nx);
-
+        if (!m_commands.empty()) {
+            // Which arrays are bound: -1 none yet, 0 m_vertices, 1 m_positions.
+            int loadedArrays = -1;
+            RgbColor loadedColor;
             std::uint32_t loadedMatrix = std::numeric_limits<std::uint32_t>::max();
             float loadedPointSize = -1.0f;
             int loadedShading = -1;
@@ -849,6 +886,30 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 std::size_t end = i + 1;
                 while (end < commandCount && m_commands[end].drawsLike(head))
                     ++end;
+                if (int(head.plain) != loadedArrays) {
+                    if (head.plain) {
+                        glDisableClientState(GL_COLOR_ARRAY);
+                        glDisableClientState(GL_NORMAL_ARRAY);
+                        glVertexPointer(3, GL_FLOAT, sizeof(Position), &m_positions.get()->x);
+                    } else {
+                        const Vertex* vertices = m_vertices.get();
+                        glEnableClientState(GL_COLOR_ARRAY);
+                        glEnableClientState(GL_NORMAL_ARRAY);
+                        glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
+                        glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
+                        glNormalPointer(GL_FLOAT, sizeof(Vertex), &vertices->nx);
+                    }
+                    loadedArrays = int(head.plain);
+                    // The current colour is undefined after drawing with a
+                    // colour array: set it again.
+                    if (head.plain)
+                        glColor3f(head.color.r, head.color.g, head.color.b);
+                    loadedColor = head.color;
+                } else if (head.plain && (head.color.r != loadedColor.r || head.color.g != loadedColor.g ||
+                                          head.color.b != loadedColor.b)) {
+                    glColor3f(head.color.r, head.color.g, head.color.b);
+                    loadedColor = head.color;
+                }
                 if (head.matrixIndex != loadedMatrix) {
                     glLoadMatrixf(m_matrices[head.matrixIndex].data());
                     loadedMatrix = head.matrixIndex;
@@ -918,6 +979,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
         glUseProgram(0);
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glEnableClientState(GL_NORMAL_ARRAY);
         // glFinish makes OSMesa copy the framebuffer into m_image.
         if (finish)
             glFinish();
@@ -933,6 +996,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
 void OffscreenRenderer::Impl::resetBatch()
 {
     m_vertexCount = 0;
+    m_positionCount = 0;
     m_indices.clear();
     m_commands.clear();
     m_shadings.clear();
@@ -967,7 +1031,7 @@ RenderResult OffscreenRenderer::Impl::setLighting(const LightingSetup& lighting)
     if (!allFinite(lighting.eye, 3) || !allFinite(lighting.viewDirection, 3))
         return invalid("the eye has a NaN or infinite value");
     // Draws already batched were made under the old lights.
-    if (m_vertexCount > 0) {
+    if (!m_commands.empty()) {
         RenderResult flushed = flush(false);
         if (!flushed)
             return flushed;

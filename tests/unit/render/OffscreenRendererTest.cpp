@@ -264,6 +264,41 @@ TEST(RenderOffscreen, LaterPrimitivesPaintOverEarlierOnes)
     EXPECT_EQ(pixelAt(renderer, 3, 5), (Pixel{0, 255, 0, 255}));
 }
 
+// Single-coloured draws are batched apart from draws with per-vertex
+// colours (positions only, the colour set once per run): each keeps its
+// own colour whichever kind it follows, in one batch and in order.
+TEST(RenderOffscreen, SingleColouredAndPerVertexColouredDrawsKeepTheirColours)
+{
+    OffscreenRenderer renderer;
+    ASSERT_TRUE(renderer.beginFrame(16, 16, kClear, PixelRect{0, 0, 16, 16}));
+    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(16, 16).data()));
+    const float row1[] = {1.5f, 1.5f, 0.0f, 9.5f, 1.5f, 0.0f};
+    const float row3[] = {1.5f, 3.5f, 0.0f, 9.5f, 3.5f, 0.0f};
+    const float row5[] = {1.5f, 5.5f, 0.0f, 9.5f, 5.5f, 0.0f};
+    const float row7[] = {1.5f, 7.5f, 0.0f, 9.5f, 7.5f, 0.0f};
+    const float green[] = {0.0f, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f};
+    const float points[] = {12.5f, 1.5f, 0.0f, 12.5f, 3.5f, 0.0f};
+    // Per-vertex green, then single red and blue strips, then per-vertex
+    // green over the blue strip's start (drawn later), then two point draws
+    // of different colours that must not merge into one.
+    ASSERT_TRUE(renderer.drawArrays(DrawMode::kLineStrip, row1, green, 2, kWhite, false));
+    ASSERT_TRUE(renderer.drawLineStrip(row3, 2, RgbColor{1.0f, 0.0f, 0.0f}));
+    ASSERT_TRUE(renderer.drawLineStrip(row5, 2, RgbColor{0.0f, 0.0f, 1.0f}));
+    const float over[] = {1.5f, 5.5f, 0.0f, 4.5f, 5.5f, 0.0f};
+    ASSERT_TRUE(renderer.drawArrays(DrawMode::kLineStrip, over, green, 2, kWhite, false));
+    ASSERT_TRUE(renderer.drawLineStrip(row7, 2, RgbColor{1.0f, 0.0f, 0.0f}));
+    ASSERT_TRUE(renderer.drawPoints(points, 1, RgbColor{1.0f, 1.0f, 0.0f}));
+    ASSERT_TRUE(renderer.drawPoints(points + 3, 1, RgbColor{0.0f, 1.0f, 1.0f}));
+    ASSERT_TRUE(renderer.endFrame());
+    EXPECT_EQ(pixelAt(renderer, 5, 1), (Pixel{0, 255, 0, 255}));
+    EXPECT_EQ(pixelAt(renderer, 5, 3), (Pixel{255, 0, 0, 255}));
+    EXPECT_EQ(pixelAt(renderer, 2, 5), (Pixel{0, 255, 0, 255}));
+    EXPECT_EQ(pixelAt(renderer, 6, 5), (Pixel{0, 0, 255, 255}));
+    EXPECT_EQ(pixelAt(renderer, 5, 7), (Pixel{255, 0, 0, 255}));
+    EXPECT_EQ(pixelAt(renderer, 12, 1), (Pixel{255, 255, 0, 255}));
+    EXPECT_EQ(pixelAt(renderer, 12, 3), (Pixel{0, 255, 255, 255}));
+}
+
 TEST(RenderOffscreen, RepeatedFramesAreBitIdentical)
 {
     OffscreenRenderer renderer;
