@@ -210,6 +210,14 @@ def frames(runs, out):
                    f"{c('evaluated_second_frame'):.0f} | {c('pixels_differing'):.0f}, "
                    f"{c('pixels_differing_multi'):.0f}, {c('pixels_differing_direct'):.0f} of {size * size} |")
     for size in (512, 1024):
+        name = f"FrameDepth/{size}"
+        if runs.has(name):
+            c = lambda k: runs.counter(name, k)
+            out.append(f"\nInfo: the same frame against raw OpenGL doing Q3's hidden-line removal (24-bit depth "
+                       f"buffer, GL_LEQUAL), {size}²: {fmt(c('q3_ms'))} ms, {c('q3_over_rawdepth'):.3f}× rawdepth "
+                       f"({fmt(c('rawdepth_ms'))} ms), {c('q3_over_rawmulti'):.3f}× rawmulti in the same loop; "
+                       f"pixels differing {c('pixels_differing_depth'):.0f}.")
+    for size in (512, 1024):
         name = f"FrameEdited/{size}"
         if runs.has(name):
             out.append(f"\nInfo: a frame after all 1000 curves were edited (so each is tessellated again), "
