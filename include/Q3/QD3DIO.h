@@ -47,8 +47,9 @@
  * anti-alias, fog, highlight, backfacing, interpolation, fill, orientation,
  * pick ID, pick parts and shadow styles; the Phong, Lambert and
  * NULL illumination shaders; ambient, directional, point and spot lights;
- * matrix, translate, scale, rotate and reset transforms. Anything else in a
- * file is read as an unknown object.
+ * matrix, translate, scale, rotate and reset transforms; view hints (below),
+ * with their camera, lights, attribute set, image dimensions, mask and clear
+ * colour. Anything else in a file is read as an unknown object.
  *
  * Objects of a type Q3 does not know are read as unknown objects
  * (Q3Unknown_GetType) and written back unchanged.

@@ -17,9 +17,11 @@
 // - one camera; lights one by one (or light groups, whose lights are taken)
 //   into one new light group;
 // - one attribute set;
-// - renderers and any other object of a type Q3 has no class for are
-//   skipped: the reference gives no renderer a layout and Q3's renderers
-//   have no 3DMF form, so a renderer named in a file cannot be matched to one;
+// - renderers and any other object of a type Q3 has no class for are kept
+//   as unknown objects, written back unchanged after the other children: the
+//   reference gives no renderer a layout and Q3's renderers have no 3DMF
+//   form, so a renderer named in a file cannot be matched to one (the hints'
+//   renderer, from the API, is not written);
 // - the three image objects, at most once each. Their presence is the state:
 //   ImageDimensions sets the dimensions state, ImageMask the mask state,
 //   ImageClearColor the clear method kQ3ClearMethodWithColor (alpha 1).
@@ -185,7 +187,9 @@ Ref<SharedObject> readViewHints(ReadContext& context, const Parts& parts)
             hints->setAttributeSet(Ref<AttributeSet>::retain(static_cast<AttributeSet*>(object.get())));
         } else if (object->isType(kQ3ShapeTypeLight) || object->isType(kQ3GroupTypeLight)) {
             addLights(*hints, *object);
-        } else if (!object->isType(kQ3ShapeTypeUnknown)) {
+        } else if (object->isType(kQ3ShapeTypeUnknown)) {
+            hints->addUnknownChild(std::move(object));
+        } else {
             fail(kQ3ErrorInvalidMetafileSubObject,
                  std::string("a ViewHints holds a ") + object->classInfo().name +
                      "; its children are a renderer, a camera, lights, an attribute set and image objects");
@@ -220,7 +224,8 @@ void writeViewHints(WriteContext& context, const Object& object)
     const bool mask = hints.maskState() == kQ3True && hints.mask().image != nullptr;
     const bool color = hints.clearMethod() == kQ3ClearMethodWithColor;
     const bool children = hints.camera() || !lights.empty() ||
-                          WriteContext::hasAttributes(hints.attributeSet().get()) || dimensions || mask || color;
+                          WriteContext::hasAttributes(hints.attributeSet().get()) || dimensions || mask || color ||
+                          !hints.unknownChildren().empty();
     maybeContainer(context, children, [&] {
         Encoder& out = context.out();
         out.begin(kQ3SharedTypeViewHints, "ViewHints");
@@ -244,6 +249,8 @@ void writeViewHints(WriteContext& context, const Object& object)
             out.color(TQ3ColorRGB{c.r, c.g, c.b});
             out.end();
         }
+        for (const Ref<SharedObject>& child : hints.unknownChildren())
+            context.object(*child);
     });
 }
 

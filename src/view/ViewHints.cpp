@@ -68,6 +68,7 @@ Object* ViewHints::duplicate() const
         copy->m_mask = copyOf(m_mask);
     copy->m_clearMethod = m_clearMethod;
     copy->m_clearColor = m_clearColor;
+    copy->m_unknownChildren = m_unknownChildren;
     return copy.detach();
 }
 

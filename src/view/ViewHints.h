@@ -5,6 +5,8 @@
 #include "QD3DDrawContext.h"
 #include "core/Object.h"
 
+#include <vector>
+
 namespace q3 {
 
 class AttributeSet;
@@ -73,6 +75,13 @@ public:
     /// kQ3ErrorInvalidParameter for a non-finite component.
     void setClearColor(const TQ3ColorARGB& color);
 
+    /// Children a file gave the hints that Q3 has no class for (a renderer
+    /// among them: Q3's renderers have no 3DMF form), kept as unknown
+    /// objects so that writing the hints back writes them unchanged. No C
+    /// call reaches them.
+    const std::vector<Ref<SharedObject>>& unknownChildren() const { return m_unknownChildren; }
+    void addUnknownChild(Ref<SharedObject> child) { m_unknownChildren.push_back(std::move(child)); }
+
 private:
     Ref<Renderer> m_renderer;
     Ref<Camera> m_camera;
@@ -85,6 +94,7 @@ private:
     TQ3Bitmap m_mask{};
     TQ3DrawContextClearImageMethod m_clearMethod = kQ3ClearMethodNone;
     TQ3ColorARGB m_clearColor{1.0f, 0.0f, 0.0f, 0.0f};
+    std::vector<Ref<SharedObject>> m_unknownChildren;
 };
 
 } // namespace q3

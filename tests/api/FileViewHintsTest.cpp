@@ -4,8 +4,8 @@
 // View hints in 3DMF files: hints written and read back in every encoding
 // and mode, compared field by field; the hand-laid files (text, big- and
 // little-endian binary, make_view_hints_binary.py); a renderer the file names
-// skipped; malformed hints as errors; and a writing loop writing hints made
-// from a view.
+// kept as an unknown object and written back; malformed hints as errors; and
+// a writing loop writing hints made from a view.
 
 #include "FileTestSupport.h"
 #include "Q3ApiTest.h"
@@ -347,10 +347,10 @@ TEST_F(FileViewHintsTest, WhatTheFileCannotHoldIsLeftOutAndLittleEndianMasksTurn
     Q3Object_Dispose(view);
 }
 
-TEST_F(FileViewHintsTest, TextMaskWithTheExamplesBitOrderAndARendererToSkip)
+TEST_F(FileViewHintsTest, TextMaskWithTheExamplesBitOrderAndARendererKeptAsUnknown)
 {
     // The reference's ImageMask example puts a bit order after rowBytes;
-    // a renderer (no class in Q3) is skipped.
+    // a renderer (no class in Q3) is no renderer of the hints.
     const auto objects = readAll(bytesOf(textFile("Container ( ViewHints ( ) InteractiveRenderer ( )\n"
                                                   "  ImageMask ( 8 2 1 LittleEndian 0x0180 ) )")));
     ASSERT_EQ(objects.size(), 1u);
@@ -364,6 +364,25 @@ TEST_F(FileViewHintsTest, TextMaskWithTheExamplesBitOrderAndARendererToSkip)
     TQ3Object renderer = objects[0];
     EXPECT_EQ(Q3ViewHints_GetRenderer(objects[0], &renderer), kQ3Success);
     EXPECT_EQ(renderer, nullptr);
+    // The renderer is kept as an unknown object and written back unchanged
+    // (to a text file: an unknown text object has no binary form, which a
+    // binary file leaves out with a warning, as for any unknown text object).
+    const auto bytes = writeObjects({objects[0]}, kQ3FileModeText);
+    EXPECT_NE(std::string(bytes.begin(), bytes.end()).find("InteractiveRenderer ( )"), std::string::npos);
+    const auto again = readAll(bytes);
+    ASSERT_EQ(again.size(), 1u);
+    const auto text = writeObjects({again[0]}, kQ3FileModeText);
+    EXPECT_EQ(text, bytes);
+    disposeAll(again);
+    std::vector<unsigned char> binary;
+    EXPECT_Q3_WARNING(binary = writeObjects({objects[0]}, kQ3FileModeNormal), kQ3WarningNoObjectSupportForWriteMethod);
+    const auto fromBinary = readAll(binary);
+    ASSERT_EQ(fromBinary.size(), 1u);
+    TQ3Bitmap binaryMask{};
+    ASSERT_EQ(Q3ViewHints_GetMask(fromBinary[0], &binaryMask), kQ3Success);
+    EXPECT_EQ(binaryMask.image[0], 0x80); // written most significant bit first
+    Q3Bitmap_Empty(&binaryMask);
+    disposeAll(fromBinary);
     disposeAll(objects);
 }
 

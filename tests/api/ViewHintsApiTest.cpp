@@ -295,6 +295,40 @@ TEST_F(ViewHintsApiTest, ValuesRoundTrip)
     EXPECT_NE(off.editIndex, s.editIndex);
 }
 
+TEST_F(ViewHintsApiTest, DuplicateSharesTheObjectsAndCopiesTheValues)
+{
+    TQ3CameraObject camera = newCamera();
+    ASSERT_EQ(Q3ViewHints_SetCamera(m_hints, camera), kQ3Success);
+    unsigned char bits[2] = {0x81, 0x18};
+    const TQ3Bitmap mask{bits, 8, 2, 1, kQ3EndianBig};
+    ASSERT_EQ(Q3ViewHints_SetMask(m_hints, &mask), kQ3Success);
+    ASSERT_EQ(Q3ViewHints_SetDimensions(m_hints, 3, 4), kQ3Success);
+    TQ3ViewHintsObject copy = Q3Object_Duplicate(m_hints);
+    ASSERT_NE(copy, nullptr);
+    EXPECT_NE(copy, m_hints);
+    EXPECT_EQ(Q3Object_IsType(copy, kQ3SharedTypeViewHints), kQ3True);
+    TQ3Object got = nullptr;
+    EXPECT_EQ(Q3ViewHints_GetCamera(copy, &got), kQ3Success);
+    EXPECT_EQ(got, camera);
+    Q3Object_Dispose(got);
+    unsigned long width = 0, height = 0;
+    EXPECT_EQ(Q3ViewHints_GetDimensions(copy, &width, &height), kQ3Success);
+    EXPECT_EQ(width, 3ul);
+    EXPECT_EQ(height, 4ul);
+    // The copy's mask is its own: changing the original's leaves it.
+    unsigned char other[2] = {0xFF, 0xFF};
+    const TQ3Bitmap full{other, 8, 2, 1, kQ3EndianBig};
+    ASSERT_EQ(Q3ViewHints_SetMask(m_hints, &full), kQ3Success);
+    TQ3Bitmap copied{};
+    ASSERT_EQ(Q3ViewHints_GetMask(copy, &copied), kQ3Success);
+    ASSERT_NE(copied.image, nullptr);
+    EXPECT_EQ(copied.image[0], 0x81);
+    EXPECT_EQ(copied.image[1], 0x18);
+    Q3Bitmap_Empty(&copied);
+    Q3Object_Dispose(copy);
+    Q3Object_Dispose(camera);
+}
+
 TEST_F(ViewHintsApiTest, BadHandlesAreErrorsAndChangeNothing)
 {
     TQ3CameraObject camera = newCamera();
