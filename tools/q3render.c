@@ -12,13 +12,19 @@
  * image is never stretched (Q3's choice): a view angle aspect camera takes
  * the image's width / height (keeping its field of view), a view plane or
  * orthographic camera keeps its vertical extent and centre and gets the
- * width that fits (both scaled for a view port that is not square). Otherwise, or with --fit-camera, the camera looks at the centre of
+ * width that fits (both scaled for a view port that is not square). A file
+ * without a top-level camera may suggest one in a view hints object
+ * (QD3DIO.h): the camera of the first ViewHints that has one is used the
+ * same way. Otherwise, or with --fit-camera, the camera looks at the centre of
  * the model's bounding box from the front, a little above and to the right,
  * far enough for the whole box to fit its 40-degree field of view. The model
- * is lit by the first light group in the file, or, as QuickDraw 3D's viewer
+ * is lit by the first light group in the file, else by the lights of the first
+ * ViewHints that has some, or, as QuickDraw 3D's viewer
  * lit models that bring no lights, by a dim white ambient light and a white
  * directional light shining from over the viewer's shoulder. Defaults:
- * 400x300, interactive, constant subdivision 16 x 16, a white background.
+ * 400x300, interactive, constant subdivision 16 x 16, and the background
+ * --background gives, else the clear colour of the first ViewHints whose
+ * clear method is kQ3ClearMethodWithColor, else white.
  * Exit status: 0 done, 1 bad arguments, 2 the model cannot be read, 3 it
  * cannot be drawn or the image cannot be written. */
 
@@ -48,9 +54,11 @@ static void printUsage(FILE *to)
                 "  --size          the image's size in pixels (default 400x300)\n"
                 "  --renderer      interactive (default) or wireframe\n"
                 "  --subdivision   how curves and surfaces are subdivided (default constant:16,16)\n"
-                "  --background    the background colour, 0..1 each (default 1,1,1)\n"
+                "  --background    the background colour, 0..1 each (default: the clear colour\n"
+                "                  of the file's first ViewHints that has one, else 1,1,1)\n"
                 "  --fit-camera    ignore the file's camera and fit one to the model's bounds\n"
                 "                  (the default when the file has no camera); a file's camera\n"
+                "                  (at its top level, else in its first ViewHints with one)\n"
                 "                  is used with its aspect ratio matched to the image's\n");
 }
 
@@ -154,6 +162,30 @@ static int boundsOf(TQ3ViewObject view, TQ3GroupObject model, TQ3BoundingBox *bo
     return status == kQ3ViewStatusDone;
 }
 
+/* Takes from a view hints object what the earlier ones did not give: its
+ * camera, its lights (a non-empty light group) and, unless the user gave a
+ * background, its clear colour when its clear method is WithColor. The
+ * camera and lights are new references for the caller. */
+static void readHints(TQ3ViewHintsObject hints, TQ3CameraObject *camera, TQ3GroupObject *lights, int *hasBackground,
+                      TQ3ColorARGB *background, int backgroundGiven)
+{
+    TQ3DrawContextClearImageMethod method;
+    if (*camera == NULL)
+        Q3ViewHints_GetCamera(hints, camera);
+    if (*lights == NULL && Q3ViewHints_GetLightGroup(hints, lights) == kQ3Success && *lights != NULL) {
+        TQ3GroupPosition first = NULL;
+        if (Q3Group_GetFirstPosition(*lights, &first) != kQ3Success || first == NULL) {
+            Q3Object_Dispose(*lights);
+            *lights = NULL;
+        }
+    }
+    if (!backgroundGiven && !*hasBackground && Q3ViewHints_GetClearImageMethod(hints, &method) == kQ3Success &&
+        method == kQ3ClearMethodWithColor && Q3ViewHints_GetClearImageColor(hints, background) == kQ3Success) {
+        background->a = 1.0f;
+        *hasBackground = 1;
+    }
+}
+
 int main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
@@ -161,7 +193,7 @@ int main(int argc, char **argv)
     TQ3ObjectType renderer = kQ3RendererTypeInteractive;
     TQ3SubdivisionStyleData subdivision = {kQ3SubdivisionMethodConstant, 16.0f, 16.0f};
     TQ3ColorARGB background = {1.0f, 1.0f, 1.0f, 1.0f};
-    int fitCamera = 0;
+    int fitCamera = 0, backgroundGiven = 0;
     TQ3Object *objects = NULL;
     long count, i;
     int status = 0;
@@ -192,6 +224,7 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--background") == 0 && value != NULL) {
             if (sscanf(value, "%f,%f,%f", &background.r, &background.g, &background.b) != 3)
                 return usage();
+            backgroundGiven = 1;
             ++arg;
         } else if (strcmp(a, "--fit-camera") == 0) {
             fitCamera = 1;
@@ -232,6 +265,9 @@ int main(int argc, char **argv)
         TQ3ViewStatus done;
         TQ3GroupObject fileLights = NULL;
         TQ3CameraObject fileCamera = NULL;
+        TQ3CameraObject hintsCamera = NULL;
+        TQ3GroupObject hintsLights = NULL;
+        int hintsBackground = 0;
         for (i = 0; i < count; ++i) {
             if (Q3Object_IsDrawable(objects[i]))
                 Q3Group_AddObject(model, objects[i]);
@@ -239,7 +275,13 @@ int main(int argc, char **argv)
                 fileLights = objects[i];
             else if (fileCamera == NULL && Q3Object_IsType(objects[i], kQ3ShapeTypeCamera))
                 fileCamera = objects[i];
+            else if (Q3Object_IsType(objects[i], kQ3SharedTypeViewHints))
+                readHints(objects[i], &hintsCamera, &hintsLights, &hintsBackground, &background, backgroundGiven);
         }
+        if (fileCamera == NULL)
+            fileCamera = hintsCamera;
+        if (fileLights == NULL)
+            fileLights = hintsLights;
         memset(&contextData, 0, sizeof contextData);
         contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
         contextData.drawContextData.clearImageColor = background;
@@ -329,6 +371,10 @@ int main(int argc, char **argv)
         free(argb);
         free(rgba);
         Q3Object_Dispose(lights);
+        if (hintsCamera != NULL)
+            Q3Object_Dispose(hintsCamera);
+        if (hintsLights != NULL)
+            Q3Object_Dispose(hintsLights);
         if (camera != NULL)
             Q3Object_Dispose(camera);
         if (context != NULL)

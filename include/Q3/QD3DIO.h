@@ -47,8 +47,9 @@
  * anti-alias, fog, highlight, backfacing, interpolation, fill, orientation,
  * pick ID, pick parts and shadow styles; the Phong, Lambert and
  * NULL illumination shaders; ambient, directional, point and spot lights;
- * matrix, translate, scale, rotate and reset transforms. Anything else in a
- * file is read as an unknown object.
+ * matrix, translate, scale, rotate and reset transforms; view hints (below),
+ * with their camera, lights, attribute set, image dimensions, mask and clear
+ * colour. Anything else in a file is read as an unknown object.
  *
  * Objects of a type Q3 does not know are read as unknown objects
  * (Q3Unknown_GetType) and written back unchanged.
@@ -70,6 +71,7 @@
  */
 
 #include "QD3D.h"
+#include "QD3DDrawContext.h"
 #include "QD3DView.h"
 
 #ifdef __cplusplus
@@ -439,6 +441,121 @@ Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_GetData(TQ3UnknownObject unknownObjec
 
 /* Q3UnknownBinary_EmptyData: frees what GetData copied, and NULLs contents. */
 Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_EmptyData(TQ3UnknownBinaryData *unknownBinaryData);
+
+/*
+ * View hints (Apple's QD3DIO.h, "ViewHints routines"): a shared object a
+ * metafile carries to suggest how to draw its model: a renderer, a camera, a
+ * light group, an attribute set, the image's dimensions, a mask and how to
+ * clear the image. A reader may configure its view from them or ignore them.
+ * To write one, make it from a view (Q3ViewHints_New) and submit it in a
+ * writing loop, before the model. 3DMF form: a ViewHints container, in
+ * docs/3dmf.md.
+ *
+ * Fields of a new view hints object when the view lacks the part they come
+ * from: no renderer, camera, light group; dimensions state kQ3False with
+ * 0 x 0; mask state kQ3False with an empty mask (image NULL, fields 0); clear
+ * method kQ3ClearMethodNone with colour (a 1, r 0, g 0, b 0).
+ *
+ * Get calls of objects return a new reference (release it with
+ * Q3Object_Dispose), or NULL when the hints hold none; Set calls keep a
+ * reference to the object passed, which is shared, not copied.
+ *
+ * Errors besides the shared ones above are listed with each call. A call
+ * that fails leaves the hints as they were.
+ */
+
+/*
+ * Q3ViewHints_New: hints holding the view's configuration: its renderer,
+ * camera and light group (shared), its default attribute set
+ * (Q3View_GetDefaultAttributeSet), and from its draw context the clear
+ * method and colour, the mask state and a copy of the mask (when it is a
+ * valid bitmap), and the size drawn into, as dimensions with the state
+ * kQ3True: the pane's extent in whole pixels when the pane state is on, else
+ * the pixmap's width and height.
+ * Ownership: the caller holds the one reference.
+ */
+Q3_EXTERN_API_C(TQ3ViewHintsObject) Q3ViewHints_New(TQ3ViewObject view);
+
+/* Q3ViewHints_SetRenderer / GetRenderer: the renderer suggested. */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetRenderer(TQ3ViewHintsObject viewHints, TQ3RendererObject renderer);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetRenderer(TQ3ViewHintsObject viewHints, TQ3RendererObject *renderer);
+
+/* Q3ViewHints_SetCamera / GetCamera: the camera suggested. */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetCamera(TQ3ViewHintsObject viewHints, TQ3CameraObject camera);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetCamera(TQ3ViewHintsObject viewHints, TQ3CameraObject *camera);
+
+/*
+ * Q3ViewHints_SetLightGroup / GetLightGroup: the lights suggested, a light
+ * group (Q3LightGroup_New); NULL removes them, as for Q3View_SetLightGroup.
+ * Errors: kQ3ErrorInvalidObjectType for a group that is not a light group.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetLightGroup(TQ3ViewHintsObject viewHints, TQ3GroupObject lightGroup);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetLightGroup(TQ3ViewHintsObject viewHints, TQ3GroupObject *lightGroup);
+
+/*
+ * Q3ViewHints_SetAttributeSet / GetAttributeSet: the view attributes
+ * suggested; NULL removes them.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetAttributeSet(TQ3ViewHintsObject viewHints, TQ3AttributeSet attributeSet);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetAttributeSet(TQ3ViewHintsObject viewHints, TQ3AttributeSet *attributeSet);
+
+/*
+ * Q3ViewHints_SetDimensionsState / GetDimensionsState: whether the
+ * dimensions are meant (any nonzero value is kQ3True).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetDimensionsState(TQ3ViewHintsObject viewHints, TQ3Boolean isValid);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetDimensionsState(TQ3ViewHintsObject viewHints, TQ3Boolean *isValid);
+
+/*
+ * Q3ViewHints_SetDimensions / GetDimensions: the image's preferred width and
+ * height in pixels. Setting them does not change the dimensions state.
+ * Errors: kQ3ErrorInvalidParameter for 0 or more than 0xFFFFFFFF (the
+ * file's Uns32).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetDimensions(TQ3ViewHintsObject viewHints, unsigned long width,
+                                                     unsigned long height);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetDimensions(TQ3ViewHintsObject viewHints, unsigned long *width,
+                                                     unsigned long *height);
+
+/*
+ * Q3ViewHints_SetMaskState / GetMaskState: whether the mask is meant (any
+ * nonzero value is kQ3True).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetMaskState(TQ3ViewHintsObject viewHints, TQ3Boolean isValid);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetMaskState(TQ3ViewHintsObject viewHints, TQ3Boolean *isValid);
+
+/*
+ * Q3ViewHints_SetMask: copies a bitmap as the mask (a set bit draws the
+ * pixel). Setting it does not change the mask state.
+ * Errors: as Q3Marker_SetBitmap: kQ3ErrorNULLParameter for a NULL image,
+ * kQ3ErrorInvalidData for a 0 width or height, rowBytes too small for the
+ * width or a bitOrder that is not a TQ3Endian; kQ3ErrorParameterOutOfRange
+ * for an image of more than kQ3GeometryMaxArrayCount bytes.
+ *
+ * Q3ViewHints_GetMask: a copy of the mask; all zero (image NULL) when none
+ * was set.
+ * Ownership: call Q3Bitmap_Empty when done with the mask.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetMask(TQ3ViewHintsObject viewHints, const TQ3Bitmap *mask);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetMask(TQ3ViewHintsObject viewHints, TQ3Bitmap *mask);
+
+/*
+ * Q3ViewHints_SetClearImageMethod / GetClearImageMethod: how the image is
+ * cleared. Errors: kQ3ErrorInvalidParameter for a value that is neither
+ * kQ3ClearMethodNone nor kQ3ClearMethodWithColor.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetClearImageMethod(TQ3ViewHintsObject viewHints,
+                                                           TQ3DrawContextClearImageMethod clearMethod);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetClearImageMethod(TQ3ViewHintsObject viewHints,
+                                                           TQ3DrawContextClearImageMethod *clearMethod);
+
+/*
+ * Q3ViewHints_SetClearImageColor / GetClearImageColor: the colour the image
+ * is cleared with. Setting it does not change the clear method.
+ * Errors: kQ3ErrorInvalidParameter for a non-finite component.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_SetClearImageColor(TQ3ViewHintsObject viewHints, const TQ3ColorARGB *color);
+Q3_EXTERN_API_C(TQ3Status) Q3ViewHints_GetClearImageColor(TQ3ViewHintsObject viewHints, TQ3ColorARGB *color);
 
 #ifdef __cplusplus
 }

@@ -23,6 +23,7 @@ const std::vector<ClassIO>& classes()
         addStateClasses(all);
         addCameraClasses(all);
         addPixmapMarkerClasses(all);
+        addViewHintsClasses(all);
         addExternalReferenceClasses(all);
         return all;
     }();
@@ -184,7 +185,7 @@ Ref<SharedObject> ReadContext::build(const Node& node)
         if (root.type == kTypeContainer || root.type == kTypeReference || root.type == kTypeBeginGroup)
             fail(kQ3ErrorInvalidMetafileObject, "a container whose first object is a " +
                                                     (root.name.empty() ? typeName(root.type) : root.name));
-        Parts parts{root, {}, &m_file};
+        Parts parts{root, {}, &m_file, &node.children};
         for (std::size_t i = 1; i < node.children.size(); ++i)
             parts.subobjects.push_back(&node.children[i]);
         const ClassIO* entry = classOfType(root.type);

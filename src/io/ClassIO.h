@@ -32,6 +32,10 @@ struct Parts {
     const Node& root;
     std::vector<const Node*> subobjects;
     const Metafile* file = nullptr; ///< to look through references
+    /// The container's children (the root, then the subobjects), for a class
+    /// that reads its subobjects as a sequence (groups included); null when
+    /// the root stands alone.
+    const std::vector<Node>* children = nullptr;
 
     /// The first subobject of that type (looking through containers), or null.
     const Node* find(TQ3ObjectType type) const;
@@ -69,6 +73,8 @@ void addCameraClasses(std::vector<ClassIO>& table);
 void addPixmapMarkerClasses(std::vector<ClassIO>& table);
 /// ExternalReference and CString (ExternalReference.cpp).
 void addExternalReferenceClasses(std::vector<ClassIO>& table);
+/// ViewHints and its image subobjects (ViewHintsIO.cpp).
+void addViewHintsClasses(std::vector<ClassIO>& table);
 
 /// Reading one file: builds objects from nodes, resolving references once
 /// each (so two references give one object) and refusing cycles.

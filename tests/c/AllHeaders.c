@@ -364,6 +364,67 @@ int main(void)
         if (!ok)
             return 20;
     }
+    {
+        /* QD3DIO.h's view hints from C: every call, Apple's unsigned long
+         * dimensions, the clear method passed as legacy code passes ints. */
+        TQ3ViewObject view = Q3View_New();
+        TQ3ViewHintsObject hints = view != NULL ? Q3ViewHints_New(view) : NULL;
+        TQ3RendererObject renderer = Q3Renderer_NewFromType(kQ3RendererTypeWireFrame);
+        TQ3RendererObject gotRenderer = NULL;
+        TQ3CameraObject camera = NULL;
+        TQ3GroupObject lights = Q3LightGroup_New(), gotLights = NULL;
+        TQ3AttributeSet set = Q3AttributeSet_New(), gotSet = NULL;
+        TQ3Boolean state = kQ3False;
+        unsigned long w = 0, h = 0;
+        unsigned char bits[2] = {0xF0, 0x0F};
+        TQ3Bitmap mask, gotMask;
+        TQ3DrawContextClearImageMethod method = kQ3ClearMethodNone;
+        TQ3ColorARGB color = {1.0f, 0.25f, 0.5f, 0.75f}, gotColor;
+        int ok;
+        mask.image = bits;
+        mask.width = 8;
+        mask.height = 2;
+        mask.rowBytes = 1;
+        mask.bitOrder = kQ3EndianBig;
+        ok = hints != NULL && Q3Object_IsType(hints, kQ3SharedTypeViewHints) == kQ3True &&
+             Q3ViewHints_SetRenderer(hints, renderer) == kQ3Success &&
+             Q3ViewHints_GetRenderer(hints, &gotRenderer) == kQ3Success && gotRenderer == renderer &&
+             Q3ViewHints_GetCamera(hints, &camera) == kQ3Success && camera == NULL &&
+             Q3ViewHints_SetCamera(hints, NULL) == kQ3Failure && Q3Error_Get(NULL) == kQ3ErrorNULLParameter &&
+             Q3ViewHints_SetLightGroup(hints, lights) == kQ3Success &&
+             Q3ViewHints_GetLightGroup(hints, &gotLights) == kQ3Success && gotLights == lights &&
+             Q3ViewHints_SetAttributeSet(hints, set) == kQ3Success &&
+             Q3ViewHints_GetAttributeSet(hints, &gotSet) == kQ3Success && gotSet == set &&
+             Q3ViewHints_SetDimensionsState(hints, kQ3True) == kQ3Success &&
+             Q3ViewHints_GetDimensionsState(hints, &state) == kQ3Success && state == kQ3True &&
+             Q3ViewHints_SetDimensions(hints, 640, 480) == kQ3Success &&
+             Q3ViewHints_GetDimensions(hints, &w, &h) == kQ3Success && w == 640 && h == 480 &&
+             Q3ViewHints_SetMaskState(hints, kQ3True) == kQ3Success &&
+             Q3ViewHints_GetMaskState(hints, &state) == kQ3Success && state == kQ3True &&
+             Q3ViewHints_SetMask(hints, &mask) == kQ3Success && Q3ViewHints_GetMask(hints, &gotMask) == kQ3Success &&
+             gotMask.image != mask.image && gotMask.image[1] == 0x0F && Q3Bitmap_Empty(&gotMask) == kQ3Success &&
+             Q3ViewHints_SetClearImageMethod(hints, (TQ3DrawContextClearImageMethod)7) == kQ3Failure &&
+             Q3Error_Get(NULL) == kQ3ErrorInvalidParameter &&
+             Q3ViewHints_SetClearImageMethod(hints, kQ3ClearMethodWithColor) == kQ3Success &&
+             Q3ViewHints_GetClearImageMethod(hints, &method) == kQ3Success && method == kQ3ClearMethodWithColor &&
+             Q3ViewHints_SetClearImageColor(hints, &color) == kQ3Success &&
+             Q3ViewHints_GetClearImageColor(hints, &gotColor) == kQ3Success && gotColor.g == 0.5f;
+        if (gotRenderer != NULL)
+            Q3Object_Dispose(gotRenderer);
+        if (gotLights != NULL)
+            Q3Object_Dispose(gotLights);
+        if (gotSet != NULL)
+            Q3Object_Dispose(gotSet);
+        if (hints != NULL)
+            Q3Object_Dispose(hints);
+        if (view != NULL)
+            Q3Object_Dispose(view);
+        Q3Object_Dispose(renderer);
+        Q3Object_Dispose(lights);
+        Q3Object_Dispose(set);
+        if (!ok)
+            return 21;
+    }
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);

@@ -44,6 +44,7 @@
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DGroup.h"
+#include "QD3DIO.h"
 #include "QD3DShader.h"
 #include "QD3DStorage.h"
 #include "QD3DStyle.h"
@@ -200,8 +201,8 @@ bool sameBytes(const T& a, const T& b)
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                   kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup,
                   kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch, kGeneralPolygon,
-                  kPolyhedron, kTriGrid, kMarker, kPixmapMarker };
-constexpr int kKindCount = 32;
+                  kPolyhedron, kTriGrid, kMarker, kPixmapMarker, kViewHints };
+constexpr int kKindCount = 33;
 constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
 // The kinds Q3Geometry_GetDecomposed returns NULL for without an error.
 constexpr bool isPrimitiveKind(Kind kind)
@@ -640,6 +641,7 @@ private:
         case Op::kPatches: patches(); break;
         case Op::kPolygons2: polygons2(); break;
         case Op::kPixmapMarkers: pixmapMarkers(); break;
+        case Op::kViewHints: viewHints(); break;
         case Op::kCount: break;
         }
     }
@@ -2371,6 +2373,99 @@ private:
                                                       a.pixmapMarkerAttributeSet == b.pixmapMarkerAttributeSet;
                                            });
         releaseStorage(args);
+    }
+
+    // QD3DIO.h's view hints: New from a view, then one Set or Get call with
+    // picked objects and input values; a Set that fails must leave the edit
+    // index as it was, and every Get's objects are released.
+    void viewHints()
+    {
+        const std::uint8_t call = m_in.u8() % 12;
+        if (call == 0) {
+            const TQ3Object hints = OBJECT(Q3ViewHints_New(pick(Kind::kView)));
+            if (hints != nullptr)
+                hold(hints, Kind::kViewHints);
+            return;
+        }
+        const TQ3Object hints = pick(Kind::kViewHints);
+        const bool ours = holdsKind(hints, Kind::kViewHints) && m_initialized > 0;
+        const bool nullArg = m_in.u8() == 0;
+        const unsigned long before = ours ? editIndex(hints) : 0;
+        TQ3Status status = kQ3Success;
+        bool edit = true;
+        switch (call) {
+        case 1: status = STATUS(Q3ViewHints_SetCamera(hints, pick(Kind::kCamera))); break;
+        case 2: status = STATUS(Q3ViewHints_SetRenderer(hints, pick(Kind::kRenderer))); break;
+        case 3: status = STATUS(Q3ViewHints_SetLightGroup(hints, pick(Kind::kGroup))); break;
+        case 4: status = STATUS(Q3ViewHints_SetAttributeSet(hints, pick(Kind::kAttributeSet))); break;
+        case 5: {
+            edit = false;
+            TQ3Object got[4] = {};
+            STATUS(Q3ViewHints_GetCamera(hints, nullArg ? nullptr : &got[0]));
+            STATUS(Q3ViewHints_GetRenderer(hints, nullArg ? nullptr : &got[1]));
+            STATUS(Q3ViewHints_GetLightGroup(hints, nullArg ? nullptr : &got[2]));
+            STATUS(Q3ViewHints_GetAttributeSet(hints, nullArg ? nullptr : &got[3]));
+            for (TQ3Object object : got)
+                if (object != nullptr)
+                    STATUS(Q3Object_Dispose(object));
+            break;
+        }
+        case 6: {
+            // Widths past 32 bits where unsigned long has them.
+            const std::uint8_t shift = m_in.u8() % 40;
+            const unsigned long width = static_cast<unsigned long>(std::uint64_t{m_in.u32()} << (shift % 33));
+            status = STATUS(Q3ViewHints_SetDimensions(hints, width, m_in.u32()));
+            break;
+        }
+        case 7:
+            status = STATUS(Q3ViewHints_SetDimensionsState(hints, (m_in.u8() & 1) ? kQ3True : kQ3False));
+            if (status == kQ3Success)
+                status = STATUS(Q3ViewHints_SetMaskState(hints, (m_in.u8() & 1) ? kQ3True : kQ3False));
+            break;
+        case 8: {
+            edit = false;
+            TQ3Boolean state = kQ3False;
+            unsigned long width = 0, height = 0;
+            STATUS(Q3ViewHints_GetDimensionsState(hints, nullArg ? nullptr : &state));
+            STATUS(Q3ViewHints_GetMaskState(hints, nullArg ? nullptr : &state));
+            STATUS(Q3ViewHints_GetDimensions(hints, nullArg ? nullptr : &width, &height));
+            TQ3Bitmap mask;
+            std::memset(&mask, 0xA5, sizeof mask);
+            const TQ3Bitmap untouched = mask;
+            if (STATUS(Q3ViewHints_GetMask(hints, nullArg ? nullptr : &mask)) == kQ3Success)
+                STATUS(Q3Bitmap_Empty(&mask));
+            else
+                require(sameBytes(mask, untouched), "Q3ViewHints_GetMask", "failed but wrote its output");
+            break;
+        }
+        case 9: {
+            // A bitmap whose image holds every byte it claims (or NULL):
+            // 0..63 x 0..63 pixels, rows of the bytes the width needs plus
+            // 0..2, a bit order from the input.
+            const unsigned long width = m_in.u8() % 64, height = m_in.u8() % 64;
+            const unsigned long rowBytes = (width + 7) / 8 + m_in.u8() % 3;
+            std::vector<unsigned char> image(rowBytes * height + 1, 0x3C);
+            TQ3Bitmap mask{nullArg ? nullptr : image.data(), width, height, rowBytes, kQ3EndianBig};
+            setRaw(mask.bitOrder, enumValue(1));
+            status = STATUS(Q3ViewHints_SetMask(hints, &mask));
+            break;
+        }
+        case 10: {
+            status = STATUS(q3fuzz_ViewHints_SetClearImageMethod(hints, enumValue(1)));
+            TQ3DrawContextClearImageMethod method;
+            STATUS(Q3ViewHints_GetClearImageMethod(hints, nullArg ? nullptr : &method));
+            break;
+        }
+        default: {
+            const TQ3ColorARGB color{m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+            status = STATUS(Q3ViewHints_SetClearImageColor(hints, nullArg ? nullptr : &color));
+            TQ3ColorARGB got;
+            STATUS(Q3ViewHints_GetClearImageColor(hints, &got));
+            break;
+        }
+        }
+        if (ours && edit && status == kQ3Failure)
+            require(editIndex(hints) == before, "Q3ViewHints_Set...", "failed but changed the hints");
     }
 
     void pixmapMarkerField()

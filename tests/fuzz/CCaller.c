@@ -4,6 +4,7 @@
 
 #include "QD3DDrawContext.h"
 #include "QD3DGroup.h"
+#include "QD3DIO.h"
 #include "QD3DMath.h"
 #include "QD3DLight.h"
 #include "QD3DRenderer.h"
@@ -20,6 +21,11 @@ TQ3Status q3fuzz_SetPaneState(TQ3Object drawContext, int state)
 TQ3Status q3fuzz_SetClearImageMethod(TQ3Object drawContext, int method)
 {
     return Q3DrawContext_SetClearImageMethod(drawContext, (TQ3DrawContextClearImageMethod)method);
+}
+
+TQ3Status q3fuzz_ViewHints_SetClearImageMethod(TQ3Object viewHints, int method)
+{
+    return Q3ViewHints_SetClearImageMethod(viewHints, (TQ3DrawContextClearImageMethod)method);
 }
 
 TQ3Status q3fuzz_SetDoubleBufferBypass(TQ3Object renderer, int bypass)

@@ -18,6 +18,7 @@ extern "C" {
 
 TQ3Status q3fuzz_SetPaneState(TQ3Object drawContext, int state);
 TQ3Status q3fuzz_SetClearImageMethod(TQ3Object drawContext, int method);
+TQ3Status q3fuzz_ViewHints_SetClearImageMethod(TQ3Object viewHints, int method);
 TQ3Status q3fuzz_SetDoubleBufferBypass(TQ3Object renderer, int bypass);
 TQ3Status q3fuzz_StartBoundingBox(TQ3Object view, int computeBounds);
 TQ3Status q3fuzz_StartBoundingSphere(TQ3Object view, int computeBounds);

@@ -81,6 +81,7 @@ enum class Op : std::uint8_t {
     kPatches,
     kPolygons2,
     kPixmapMarkers,
+    kViewHints,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -21,7 +21,7 @@ using q3fuzz::Op;
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                            kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
                            kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch,
-                           kGeneralPolygon, kPolyhedron, kTriGrid, kMarker, kPixmapMarker };
+                           kGeneralPolygon, kPolyhedron, kTriGrid, kMarker, kPixmapMarker, kViewHints };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -1100,6 +1100,36 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kSubmitCurveImmediate).listing1Curve().held().u8(0);
         s.op(Op::kSubmitCurveImmediate).listing1Curve().stray().u8(1);
         s.endRendering();
+    }
+    // viewHints(): hints from a scene's view, every Set and Get with good
+    // objects, then the wrong kinds, NULL, huge dimensions, bad bitmaps, a
+    // raw clear method and non-finite colours.
+    {
+        Seed& s = add("view-hints");
+        s.scene(2);
+        s.op(Op::kViewHints).u8(0).held();
+        s.op(Op::kViewHints).u8(1).held().u8(1).held();
+        s.op(Op::kViewHints).u8(2).held().u8(1).held();
+        s.op(Op::kViewHints).u8(4).held().u8(1).anyHeld(0);
+        s.op(Op::kViewHints).u8(5).held().u8(1);
+        s.op(Op::kViewHints).u8(6).held().u8(1).u8(0).u32(640).u32(480);
+        s.op(Op::kViewHints).u8(6).held().u8(1).u8(32).u32(2).u32(480);
+        s.op(Op::kViewHints).u8(7).held().u8(1).u8(1).u8(1);
+        s.op(Op::kViewHints).u8(9).held().u8(1).u8(12).u8(3).u8(0).u8(0);
+        s.op(Op::kViewHints).u8(9).held().u8(1).u8(12).u8(3).u8(0).u8(0xE0).u32(9);
+        s.op(Op::kViewHints).u8(9).held().u8(0).u8(8).u8(2).u8(1).u8(1);
+        s.op(Op::kViewHints).u8(8).held().u8(1);
+        s.op(Op::kViewHints).u8(8).held().u8(0);
+        s.op(Op::kViewHints).u8(10).held().u8(1).u8(1);
+        s.op(Op::kViewHints).u8(10).held().u8(1).u8(0xF0).u32(0x80000000u);
+        s.op(Op::kViewHints).u8(11).held().u8(1).value(1).value(0.5f).value(0.25f).value(0);
+        s.op(Op::kViewHints).u8(11).held().u8(1).special(0).value(0).value(0).value(0);
+        s.op(Op::kViewHints).u8(1).anyHeld(1).u8(1).held();
+        s.op(Op::kViewHints).u8(3).held().u8(1).anyHeld(2);
+        s.op(Op::kViewHints).u8(1).stray().u8(1).held();
+        s.op(Op::kViewHints).u8(0).anyHeld(0);
+        s.op(Op::kDuplicate).u8(kViewHints).held();
+        s.dispose(kViewHints);
     }
     // The curve tools (Q3NURBCurveTools.h) on a retained curve and on data: every
     // call once with good arguments, then NaN, a parameter outside the domain, an

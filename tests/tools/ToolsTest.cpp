@@ -159,6 +159,43 @@ TEST(Q3Render, AFilesCameraIsUsedWithTheImagesAspectUnlessFitCameraIsAsked)
         std::remove(path.c_str());
 }
 
+TEST(Q3Render, AViewHintsCameraAndClearColourAreUsedWhenTheFileHasNoCamera)
+{
+    // hints_scene.3dmf is camera_scene.3dmf with the camera inside a
+    // ViewHints that also gives a clear colour of (0.25, 0.5, 0.75).
+    const std::string data = std::string(Q3_TEST_DATA_DIR) + "/";
+    const std::string hinted = scratch("hinted.png"), white = scratch("hinted_white.png");
+    const std::string own = scratch("own.png"), fitted = scratch("hinted_fitted.png");
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "hints_scene.3dmf -o " + hinted + " --size 200x100"), 0);
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "hints_scene.3dmf -o " + white +
+                  " --size 200x100 --background 1,1,1"),
+              0);
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "camera_scene.3dmf -o " + own + " --size 200x100"), 0);
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "hints_scene.3dmf -o " + fitted +
+                  " --size 200x100 --fit-camera"),
+              0);
+    q3test::RgbaImage a, b, c, d;
+    ASSERT_TRUE(q3test::readPng(hinted, &a));
+    ASSERT_TRUE(q3test::readPng(white, &b));
+    ASSERT_TRUE(q3test::readPng(own, &c));
+    ASSERT_TRUE(q3test::readPng(fitted, &d));
+    // The hints' clear colour is the background unless --background is given.
+    const unsigned char* corner = a.at(0, 0);
+    EXPECT_NEAR(corner[0], 64, 1);
+    EXPECT_NEAR(corner[1], 128, 1);
+    EXPECT_NEAR(corner[2], 191, 1);
+    EXPECT_EQ(b.at(0, 0)[0], 255);
+    // Through the hints' camera, with the aspect handled as for a top-level
+    // camera: the same image as camera_scene.3dmf's on the same background.
+    EXPECT_EQ(q3test::countDifferingPixels(b, c), 0);
+    EXPECT_EQ(areaOf(a, 0).count, 0);
+    EXPECT_EQ(areaOf(a, 1).count, areaOf(c, 1).count);
+    // --fit-camera still fits one to the whole model: both squares show.
+    EXPECT_GT(areaOf(d, 0).count, 0);
+    for (const std::string& path : {hinted, white, own, fitted})
+        std::remove(path.c_str());
+}
+
 TEST(Q3Render, HelpNamesEveryOptionOnStandardOutput)
 {
     const std::string help = scratch("help.txt");
@@ -166,6 +203,7 @@ TEST(Q3Render, HelpNamesEveryOptionOnStandardOutput)
     const std::string text = slurp(help);
     for (const char* option : {"-o", "--size", "--renderer", "--subdivision", "--background", "--fit-camera"})
         EXPECT_NE(text.find(option), std::string::npos) << option;
+    EXPECT_NE(text.find("ViewHints"), std::string::npos);
     std::remove(help.c_str());
 }
 
