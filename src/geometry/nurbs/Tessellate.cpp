@@ -29,14 +29,17 @@
 // With a ProjectiveMapping (what views pass), a span whose control points all map in
 // front of the eye (and beyond the hither plane) has an image everywhere, and that
 // image is itself a rational Bezier curve with the mapped control points. Such a span
-// is sampled densely with the constant method's kernel (kDenseSamplesPerSegment per
-// planned segment) and the march picks each vertex from the samples: the last one
-// whose image is within c1 of the current vertex's, moved by one secant step towards
-// the crossing of 0.985 c1 when the chord to that point, evaluated and mapped, is
-// within c1; it searches between two samples only where even the next one is farther
-// than c1. The mapping is then applied once
-// per span instead of once per evaluation, and most vertices cost no root finding.
-// This is greedy chord-length parameterisation, not a formula from the article, which
+// is sampled with the constant method's kernel (about one sample per planned
+// segment); the chords between the samples give its sampled length S (a lower bound
+// of its length), and it gets ceil(S / (0.985 c1)) segments of equal sampled length,
+// each vertex's parameter found by cubic Hermite interpolation of the parameter
+// against sampled length. The vertices are then evaluated (one Horner pass gives the
+// point and, through the map, its image) and every chord measured between the images
+// of its ends; the rare span where one is longer than c1 (the samples missed a quick
+// turn) is marched greedily from its start instead. Most vertices thus cost one
+// evaluation and no root finding, and the work splits into loops without a chain of
+// dependent divisions between vertices.
+// This is chord-length parameterisation, not a formula from the article, which
 // only defines what the methods promise ("CONTROLLING SUBDIVISION").
 
 #include "geometry/nurbs/Tessellate.h"
@@ -55,6 +58,10 @@ namespace q3::nurbs {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Two doubles in one SSE2 register (GCC/Clang vector extension, as in Bezier.cpp); no
+// fused multiply-add is enabled, so every lane rounds as the scalar code would.
+typedef double Double2 __attribute__((vector_size(16)));
 
 class FormSpans {
 public:
@@ -302,6 +309,27 @@ public:
           m_probeSegments(probeSegmentsPerSpan(m_order)), m_probeTable(m_order, m_probeSegments),
           m_probes(m_probeSegments + 1)
     {
+        if (projective != nullptr) {
+            // Rows scale * (row k) + offset * (row W), 0 for an axis with scale 0, so
+            // that a homogeneous point's image is (row 0, row 1, row 2) / row 3.
+            for (int k = 0; k < 3; ++k) {
+                for (int c = 0; c < 4; ++c) {
+                    const double scale = projective->scale[k];
+                    m_imageMatrix[k][c] = scale == 0.0 ? 0.0
+                                                       : scale * projective->matrix[k][c] +
+                                                             projective->offset[k] * projective->matrix[3][c];
+                }
+            }
+            for (int c = 0; c < 4; ++c) {
+                m_imageMatrix[3][c] = projective->matrix[3][c];
+                m_imageColumns[c][0] = Double2{m_imageMatrix[0][c], m_imageMatrix[1][c]};
+                m_imageColumns[c][1] = Double2{m_imageMatrix[2][c], m_imageMatrix[3][c]};
+            }
+        }
+        m_binomials[0] = 1.0;
+        for (unsigned r = 1; r < m_order; ++r) {
+            m_binomials[r] = m_binomials[r - 1] * double(m_order - r) / double(r);
+        }
     }
 
     void run(double c1)
@@ -445,6 +473,7 @@ private:
         if (m_projective != nullptr) {
             m_spanMapped.assign(m_spans.count(), false);
         }
+        m_runs.reserve(m_spans.count());
         for (std::size_t s = 0; s < m_spans.count(); ++s) {
             m_points = m_spans.points(s);
             if (m_hidden && m_hidden(m_points, m_order)) {
@@ -454,14 +483,20 @@ private:
                 ++m_unmeasurableIntervals;
                 continue;
             }
-            if (m_projective != nullptr && mapSpan() && probeMappedSpan()) {
-                // The whole span has an image: one measurable run, measured on the
-                // mapped span's probes.
+            double length = 0.0;
+            if (m_projective != nullptr && mapSpan() && measureMappedSpan(length)) {
+                // The whole span has an image: one measurable run from its first probe
+                // to its last, measured on the mapped span's probes.
                 m_spanMapped[s] = true;
-                for (std::uint32_t j = 0; j < m_probeSegments; ++j) {
-                    addPiece(s, j, true, distance(m_probes[j].image, m_probes[j + 1].image), kNoBoundary,
-                             kNoBoundary);
-                }
+                Run run;
+                run.span = s;
+                run.first = 0;
+                run.last = m_probeSegments;
+                run.measurable = true;
+                run.length = length;
+                ++m_measurableRuns;
+                m_totalLength += length;
+                m_runs.push_back(run);
                 continue;
             }
             probePoints();
@@ -742,55 +777,50 @@ private:
     }
 
     // Maps the control points of the span in m_points through m_projective into
-    // m_mappedPoints. Returns whether the whole span has an image: every mapped control
+    // m_imagePoints. Returns whether the whole span has an image: every mapped control
     // point has W > 0 (and Z < 0 with clipNearer), so every point of the span, a
-    // positive combination of them, has too.
+    // positive combination of them, has too. The scale and offset are folded into the
+    // homogeneous points ((scale X + offset W, ..., W) projects to scale X / W + offset),
+    // so the span's image is the rational Bezier curve of m_imagePoints; an axis with
+    // scale 0 maps to 0 rather than to its offset, which changes no distance.
     bool mapSpan()
     {
-        const ProjectiveMapping& map = *m_projective;
+        const bool clipNearer = m_projective->clipNearer;
+        const double* depth = m_projective->matrix[2];
         bool inside = true;
         for (unsigned i = 0; i < m_order; ++i) {
             const Point4& p = m_points[i];
             double v[4];
             for (int r = 0; r < 4; ++r) {
-                v[r] = map.matrix[r][0] * p.x + map.matrix[r][1] * p.y + map.matrix[r][2] * p.z +
-                       map.matrix[r][3] * p.w;
+                const double* a = m_imageMatrix[r];
+                v[r] = a[0] * p.x + a[1] * p.y + a[2] * p.z + a[3] * p.w;
             }
-            m_mappedPoints[i] = Point4{v[0], v[1], v[2], v[3]};
-            inside = inside && v[3] > 0.0 && !(map.clipNearer && !(v[2] < 0.0)) && std::isfinite(v[0]) &&
-                     std::isfinite(v[1]) && std::isfinite(v[2]) && std::isfinite(v[3]);
+            const bool nearer =
+                clipNearer && !(depth[0] * p.x + depth[1] * p.y + depth[2] * p.z + depth[3] * p.w < 0.0);
+            inside = inside && v[3] > 0.0 && !nearer && std::isfinite(v[0]) && std::isfinite(v[1]) &&
+                     std::isfinite(v[2]) && std::isfinite(v[3]);
+            m_imagePoints[i] = Point4{v[0], v[1], v[2], v[3]};
         }
         return inside;
     }
 
-    // The images of `count` samples of the mapped span (x, y, z each), from the
-    // kernel's projected values, with m_projective's scale and offset.
-    void toImages(double* xyz, std::size_t count) const
-    {
-        const ProjectiveMapping& map = *m_projective;
-        for (std::size_t j = 0; j < count; ++j) {
-            for (int k = 0; k < 3; ++k) {
-                double& value = xyz[3 * j + k];
-                value = map.scale[k] == 0.0 ? map.offset[k] : map.scale[k] * value + map.offset[k];
-            }
-        }
-    }
-
-    // Probe images of the mapped span (m_mappedPoints) into m_probes (u and image
-    // only). Returns false when one is not finite.
-    bool probeMappedSpan()
+    // The length of the mapped span's probe polygon (its images at the probes, from
+    // m_imagePoints). Returns false when a probe's image is not finite.
+    bool measureMappedSpan(double& length) const
     {
         double xyz[3 * (kMaxOrder + 1)];
-        sampleBezier(m_mappedPoints, m_probeTable, 0, m_probeSegments + 1, xyz);
-        toImages(xyz, m_probeSegments + 1);
+        sampleBezier(m_imagePoints, m_probeTable, 0, m_probeSegments + 1, xyz);
+        length = 0.0;
         for (std::uint32_t j = 0; j <= m_probeSegments; ++j) {
-            Sample& sample = m_probes[j];
-            sample.u = double(j) / double(m_probeSegments);
-            sample.image = Point3{xyz[3 * j], xyz[3 * j + 1], xyz[3 * j + 2]};
-            sample.mapped = std::isfinite(sample.image.x) && std::isfinite(sample.image.y) &&
-                            std::isfinite(sample.image.z);
-            if (!sample.mapped) {
+            const double* at = xyz + 3 * j;
+            if (!(std::isfinite(at[0]) && std::isfinite(at[1]) && std::isfinite(at[2]))) {
                 return false;
+            }
+            if (j > 0) {
+                const double dx = at[0] - at[-3];
+                const double dy = at[1] - at[-2];
+                const double dz = at[2] - at[-1];
+                length += std::sqrt(dx * dx + dy * dy + dz * dz);
             }
         }
         return true;
@@ -834,12 +864,53 @@ private:
         return *tables[slot];
     }
 
-    static double d2OfLastScan(const Point3& a, const double* b)
+    // The image of the mapped span at u: m_imagePoints' rational Bezier curve, by the
+    // Horner scheme of evaluateBezier without its common factor (it cancels in the
+    // division).
+    Point3 imageAt(double u) const
+    {
+        const unsigned deg = m_order - 1;
+        const Point4* q = m_imagePoints;
+        double x;
+        double y;
+        double z;
+        double w;
+        if (u <= 0.5) {
+            const double s = u / (1.0 - u);
+            x = q[deg].x;
+            y = q[deg].y;
+            z = q[deg].z;
+            w = q[deg].w;
+            const double* binomial = m_binomials;
+            for (unsigned r = deg; r-- > 0;) {
+                x = x * s + binomial[r] * q[r].x;
+                y = y * s + binomial[r] * q[r].y;
+                z = z * s + binomial[r] * q[r].z;
+                w = w * s + binomial[r] * q[r].w;
+            }
+        } else {
+            const double s = (1.0 - u) / u;
+            x = q[0].x;
+            y = q[0].y;
+            z = q[0].z;
+            w = q[0].w;
+            const double* binomial = m_binomials;
+            for (unsigned r = 1; r <= deg; ++r) {
+                x = x * s + binomial[r] * q[r].x;
+                y = y * s + binomial[r] * q[r].y;
+                z = z * s + binomial[r] * q[r].z;
+                w = w * s + binomial[r] * q[r].w;
+            }
+        }
+        return Point3{x / w, y / w, z / w};
+    }
+
+    static double distanceTo(const Point3& a, const double* b)
     {
         const double dx = b[0] - a.x;
         const double dy = b[1] - a.y;
         const double dz = b[2] - a.z;
-        return dx * dx + dy * dy + dz * dz;
+        return std::sqrt(dx * dx + dy * dy + dz * dz);
     }
 
     // Whether the chord from a to b is at most m_c, decided as chord() decides it.
@@ -852,17 +923,96 @@ private:
         return d2 <= m_c2 || std::sqrt(d2) <= m_c;
     }
 
-    // March along a span that has an image everywhere (m_points and m_mappedPoints
-    // set). The mapped span is a rational Bezier curve of its own (m_mappedPoints), so
-    // the kernel samples its image directly, densely (kDenseSamplesPerSegment per
-    // planned segment), and the march chooses its vertices among those samples
-    // greedily: the next vertex is the last sample whose image is within m_c of the
-    // current vertex's, moved by one secant step towards the crossing of
-    // (1 - kChordTolerance / 2) m_c when that point's chord is within m_c. Every chord is measured between the images of its two end
-    // points, so the bound holds exactly. Where even the next sample is farther than
-    // m_c, the general search (findCrossing) places a vertex between the two. A chosen
-    // sample's curve point is evaluated on its own (evaluateBezier). Spans
-    // that would need more than kMaxDenseSamples samples take the general march.
+    // Appends the vertex at local parameter u of the current span (its curve point
+    // evaluated from m_points) as the start of the next chord.
+    void emitAt(double u)
+    {
+        const Point3 p = u <= 0.0 ? project(m_points[0]) : project(evaluateBezier(m_points, m_order, u));
+        m_builder.add(spanParameter(m_spans.span(m_currentSpan), u), p);
+        ++m_used;
+    }
+
+    // The image of a homogeneous curve point: m_imageMatrix applied, then divided by
+    // its W (the same map as mapSpan's, point by point).
+    Point3 imageOf(const Point4& h) const
+    {
+        double v[4];
+        for (int r = 0; r < 4; ++r) {
+            const double* a = m_imageMatrix[r];
+            v[r] = a[0] * h.x + a[1] * h.y + a[2] * h.z + a[3] * h.w;
+        }
+        return Point3{v[0] / v[3], v[1] / v[3], v[2] / v[3]};
+    }
+
+    // m_scaledPoints for the span in m_points: each point times its binomial
+    // coefficient, so that Horner's rule needs one multiply-add per point.
+    void scalePoints()
+    {
+        for (unsigned r = 0; r < m_order; ++r) {
+            const Point4& p = m_points[r];
+            const double c = m_binomials[r];
+            m_scaledPoints[r][0] = Double2{c * p.x, c * p.y};
+            m_scaledPoints[r][1] = Double2{c * p.z, c * p.w};
+        }
+    }
+
+    // The curve point at local parameter u in (0, 1) of the span (m_scaledPoints set)
+    // and its image: the Bernstein sum by Horner's rule in s = u / (1 - u) (or
+    // (1 - u) / u past the midpoint, so s <= 1), which is the homogeneous point
+    // divided by (1 - u)^deg (or u^deg), a positive factor that both projections
+    // cancel.
+    void pointAndImage(double u, Point3& point, Point3& image) const
+    {
+        const unsigned deg = m_order - 1;
+        Double2 xy;
+        Double2 zw;
+        if (u <= 0.5) {
+            const double sv = u / (1.0 - u);
+            const Double2 s = {sv, sv};
+            xy = m_scaledPoints[deg][0];
+            zw = m_scaledPoints[deg][1];
+            for (unsigned r = deg; r-- > 0;) {
+                xy = xy * s + m_scaledPoints[r][0];
+                zw = zw * s + m_scaledPoints[r][1];
+            }
+        } else {
+            const double sv = (1.0 - u) / u;
+            const Double2 s = {sv, sv};
+            xy = m_scaledPoints[0][0];
+            zw = m_scaledPoints[0][1];
+            for (unsigned r = 1; r <= deg; ++r) {
+                xy = xy * s + m_scaledPoints[r][0];
+                zw = zw * s + m_scaledPoints[r][1];
+            }
+        }
+        const Double2 x = {xy[0], xy[0]};
+        const Double2 y = {xy[1], xy[1]};
+        const Double2 z = {zw[0], zw[0]};
+        const Double2 w = {zw[1], zw[1]};
+        const Double2 v01 = m_imageColumns[0][0] * x + m_imageColumns[1][0] * y + m_imageColumns[2][0] * z +
+                            m_imageColumns[3][0] * w;
+        const Double2 v23 = m_imageColumns[0][1] * x + m_imageColumns[1][1] * y + m_imageColumns[2][1] * z +
+                            m_imageColumns[3][1] * w;
+        const Double2 one = {1.0, 1.0};
+        const Double2 ws = {zw[1], v23[1]};
+        const Double2 inv = one / ws;
+        point = Point3{xy[0] * inv[0], xy[1] * inv[0], zw[0] * inv[0]};
+        image = Point3{v01[0] * inv[1], v01[1] * inv[1], v23[0] * inv[1]};
+    }
+
+    // Span with an image everywhere (m_points and m_imagePoints set). Its image is a
+    // rational Bezier curve of its own (m_imagePoints), which the kernel samples
+    // directly, kDenseSamplesPerSegment per planned segment. The chords between
+    // consecutive samples give the span's sampled length S, and the span gets the
+    // fewest segments of at most kArcTarget * m_c of it, n = ceil(S / (kArcTarget
+    // m_c)), equal in sampled length: vertex k sits where the sampled length reaches
+    // k S / n (inverseLength). The vertices are then evaluated on the curve (each in
+    // one go: the homogeneous point, its projection and its image) and every chord is
+    // measured between the images of its two ends. The chord is at most the arc between
+    // its ends, which the samples make about S / n, so the chords are normally just
+    // below m_c; if one is not, the span is marched from its start one vertex at a time
+    // instead (marchMapped). Spans that would need more than kMaxDenseSamples samples
+    // take the general march.
     void emitMappedRun(const Run& run)
     {
         const std::uint32_t samples = denseCount(segmentsFor(run.length, m_c));
@@ -872,26 +1022,148 @@ private:
             return;
         }
         const BernsteinTable& table = denseTable(samples);
-        m_dense.resize(3 * (std::size_t(samples) + 1));
+        const std::size_t count = std::size_t(samples) + 1;
+        if (m_dense.size() < 5 * count) {
+            m_dense.resize(5 * count);
+        }
         double* image = m_dense.data();
-        sampleBezier(m_mappedPoints, table, 0, samples + 1, image);
-        toImages(image, samples + 1);
+        double* sampled = image + 3 * count;  // sampled length from u = 0 to each sample
+        double* inverse = sampled + count;    // 1 / the length of each sample interval (0 for none)
+        sampleBezier(m_imagePoints, table, 0, samples + 1, image);
         const double step = 1.0 / double(samples);
-        const auto denseSample = [&](std::uint32_t j) {
-            Sample sample;
-            sample.u = double(j) * step;
-            sample.point = project(evaluateBezier(m_points, m_order, sample.u));
-            const double* at = image + 3 * std::size_t(j);
-            sample.image = Point3{at[0], at[1], at[2]};
-            sample.mapped = std::isfinite(at[0]) && std::isfinite(at[1]) && std::isfinite(at[2]);
-            return sample;
-        };
-        Sample current = denseSample(0);
-        current.point = project(m_points[0]);
-        std::uint32_t index = 0;  // the last sample at or before current
+        for (std::size_t j = 0; j < samples; ++j) {
+            const double* a = image + 3 * j;
+            const double dx = a[3] - a[0];
+            const double dy = a[4] - a[1];
+            const double dz = a[5] - a[2];
+            inverse[j] = std::sqrt(dx * dx + dy * dy + dz * dz);
+        }
+        sampled[0] = 0.0;
+        for (std::size_t j = 0; j < samples; ++j) {
+            sampled[j + 1] = sampled[j] + inverse[j];
+        }
+        for (std::size_t j = 0; j < samples; ++j) {
+            inverse[j] = inverse[j] > 0.0 ? 1.0 / inverse[j] : 0.0;
+        }
+        const double total = sampled[samples];
+        const double segments = std::ceil(total / (kArcTarget * m_c));
+        emitAt(0.0);
+        if (!(total < kInfinity) || !(segments < double(kMaxDenseSamples)) || !haveRoom(std::size_t(segments) + 1)) {
+            marchMapped(0.0, Point3{image[0], image[1], image[2]}, 0, samples, step);
+            return;
+        }
+        const std::uint32_t n = std::max<std::uint32_t>(std::uint32_t(segments), 1);
+        const double spacing = total / double(n);
+        const Point3 start = imageOf(m_points[0]);
+        // From the first chord found longer than m_c on, the placement cannot be
+        // trusted (the samples missed how the image moves): the span is marched from
+        // its start one vertex at a time instead.
+        const auto march = [&] { marchMapped(0.0, start, 0, samples, step); };
+        // Vertex k (1 .. n - 1) in three passes, each free of the others' latency:
+        // its parameter, its point and image, its chord from vertex k - 1.
+        if (m_batchU.size() < std::size_t(n) + 1) {
+            m_batchU.resize(std::size_t(n) + 1);
+            m_batchPoints.resize(std::size_t(n) + 1);
+            m_batchImages.resize(std::size_t(n) + 1);
+        }
+        double* u = m_batchU.data();
+        Point3* points = m_batchPoints.data();
+        Point3* images = m_batchImages.data();
+        u[0] = 0.0;
+        std::uint32_t j = 1;
+        for (std::uint32_t k = 1; k < n; ++k) {
+            // sampled[j - 1] < target <= sampled[j] (up to rounding at the end, which
+            // the test of u[k] catches).
+            const double target = spacing * double(k);
+            while (j < samples && sampled[j] < target) {
+                ++j;
+            }
+            u[k] = inverseLength(sampled, inverse, samples, j, target) * step;
+            if (!(u[k] > u[k - 1] && u[k] < 1.0)) {
+                march();
+                return;
+            }
+        }
+        scalePoints();
+        for (std::uint32_t k = 1; k < n; ++k) {
+            pointAndImage(u[k], points[k], images[k]);
+        }
+        images[0] = start;
+        images[n] = imageOf(m_points[m_order - 1]);
+        for (std::uint32_t k = 1; k <= n; ++k) {
+            const double dx = images[k].x - images[k - 1].x;
+            const double dy = images[k].y - images[k - 1].y;
+            const double dz = images[k].z - images[k - 1].z;
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            if (!(d2 <= m_c2 || std::sqrt(d2) <= m_c)) {
+                march();
+                return;
+            }
+        }
+        // The interior vertices go straight into the output, as PolylineBuilder would
+        // add them (one equal to its predecessor in float is dropped, its parameter
+        // kept).
+        const Span& span = m_spans.span(m_currentSpan);
+        const double width = span.end - span.start;
+        std::size_t kept = m_out.parameters.size();
+        m_out.vertices.resize(3 * (kept + n - 1));
+        m_out.parameters.resize(kept + n - 1);
+        float* vertices = m_out.vertices.data();
+        double* parameters = m_out.parameters.data();
+        for (std::uint32_t k = 1; k < n; ++k) {
+            const float vertex[3] = {float(points[k].x), float(points[k].y), float(points[k].z)};
+            const double parameter = span.start + width * u[k];
+            if (kept > 0 && sameVertex(vertex, vertices + 3 * (kept - 1))) {
+                if (kept > 1) {
+                    parameters[kept - 1] = parameter;
+                }
+                continue;
+            }
+            vertices[3 * kept] = vertex[0];
+            vertices[3 * kept + 1] = vertex[1];
+            vertices[3 * kept + 2] = vertex[2];
+            parameters[kept] = parameter;
+            ++kept;
+        }
+        m_out.vertices.resize(3 * kept);
+        m_out.parameters.resize(kept);
+        m_used += n - 1;
+    }
+
+    // Where (in samples, j - 1 + fraction) the sampled length reaches `target`, given
+    // sampled[j - 1] < target <= sampled[j] and the reciprocal interval lengths:
+    // cubic Hermite interpolation of the sample index as a function of length, with
+    // slopes at the two samples averaged from the intervals beside each, which follows
+    // a speed that changes along the interval far better than a straight line.
+    static double inverseLength(const double* sampled, const double* inverse, std::uint32_t samples,
+                                std::uint32_t j, double target)
+    {
+        const double a = sampled[j - 1];
+        const double length = sampled[j] - a;
+        const double t = (target - a) * inverse[j - 1];
+        // Slopes d(index)/d(length) times `length`: 1 where the speed is uniform.
+        const double m0 = j >= 2 ? std::min(3.0, 0.5 + 0.5 * length * inverse[j - 2]) : 1.0;
+        const double m1 = j < samples ? std::min(3.0, 0.5 + 0.5 * length * inverse[j]) : 1.0;
+        const double t2 = t * t;
+        const double t3 = t2 * t;
+        const double fraction = (t3 - 2.0 * t2 + t) * m0 + (3.0 * t2 - 2.0 * t3) + (t3 - t2) * m1;
+        return double(j - 1) + fraction;
+    }
+
+    // The one-vertex-at-a-time march of a mapped span from the vertex at u (image
+    // `from`, already emitted; `index` the last of the `samples` dense samples in
+    // m_dense at or before u): from the current vertex it scans for the first sample
+    // farther than m_c, then closes in between the sample before it (or the current
+    // vertex when that sample is not past it) and that one with safeguarded regula
+    // falsi on the chord length, each step evaluating the image polynomials at one
+    // parameter, until the chord lies in [(1 - kChordTolerance) m_c, m_c].
+    void marchMapped(double u, Point3 from, std::uint32_t index, std::uint32_t samples, double step)
+    {
+        const double* image = m_dense.data();
+        const double accept = (1.0 - kChordTolerance) * m_c;
         for (;;) {
             std::uint32_t j = index + 1;
-            while (j <= samples && within(current.image, image + 3 * std::size_t(j))) {
+            while (j <= samples && within(from, image + 3 * std::size_t(j))) {
                 ++j;
             }
             if (j > samples) {
@@ -901,49 +1173,48 @@ private:
                 m_out.capped = true;
                 break;
             }
-            Sample next;
+            // The chord's end lies in (lo, hi]: lo within m_c (sample j - 1, or the
+            // current vertex when that sample is not past it), hi sample j beyond it.
+            double lo = u;
+            Point3 loImage = from;
+            double dlo = 0.0;
             if (j - 1 > index) {
-                // One secant step between samples j - 1 (within m_c) and j (beyond it)
-                // towards (1 - kChordTolerance / 2) m_c, kept when its chord, measured
-                // exactly, is within m_c; otherwise sample j - 1.
-                const double* a = image + 3 * std::size_t(j - 1);
-                const double d0 = distance(current.image, Point3{a[0], a[1], a[2]});
-                const double d1 = std::sqrt(d2OfLastScan(current.image, image + 3 * std::size_t(j)));
-                const double f = (m_target - d0) / (d1 - d0);
-                // Sample j - 1's curve point is evaluated only when the candidate is
-                // refused: the candidate is kept for most vertices.
-                bool kept = false;
-                if (f > 0.0 && f < 1.0) {
-                    const Sample candidate = makeSample((double(j - 1) + f) * step);
-                    if (candidate.mapped && candidate.u > double(j - 1) * step && candidate.u < double(j) * step &&
-                        chord(current, candidate) <= m_c) {
-                        next = candidate;
-                        kept = true;
-                    }
+                const double* at = image + 3 * std::size_t(j - 1);
+                lo = double(j - 1) * step;
+                loImage = Point3{at[0], at[1], at[2]};
+                dlo = distanceTo(from, at);
+            }
+            double hi = double(j) * step;
+            double dhi = distanceTo(from, image + 3 * std::size_t(j));
+            for (unsigned iteration = 0; iteration < kMaxRootIterations && dlo < accept; ++iteration) {
+                double f = 0.5;
+                if (iteration % 3 != 2 && std::isfinite(dhi)) {
+                    f = std::min(0.95, std::max(0.05, (m_target - dlo) / (dhi - dlo)));
                 }
-                if (!kept) {
-                    next = denseSample(j - 1);
-                }
-                index = j - 1;
-            } else {
-                // Sample j is already farther than m_c from the current vertex.
-                bool unmappable = false;
-                Sample lastMapped;
-                next = findCrossing(current, current, makeSample(double(j) * step), unmappable, lastMapped);
-                if (unmappable || !(next.u > current.u) || chord(current, next) > m_c) {
-                    m_out.capped = true;
-                }
-                if (!(next.u > current.u)) {
+                const double um = lo + (hi - lo) * f;
+                if (!(lo < um && um < hi)) {
                     break;
                 }
-                if (next.u >= double(j) * step) {
-                    index = j;
+                const Point3 im = imageAt(um);
+                const double d = distance(from, im);
+                if (d <= m_c) {
+                    lo = um;
+                    loImage = im;
+                    dlo = d;
+                } else {
+                    hi = um;
+                    dhi = std::isfinite(d) ? d : kInfinity;
                 }
             }
-            emit(current);
-            current = next;
+            if (!(lo > u)) {
+                m_out.capped = true;
+                break;
+            }
+            u = lo;
+            from = loImage;
+            index = j - 1;
+            emitAt(u);
         }
-        emit(current);
     }
 
     void emitRuns()
@@ -1019,8 +1290,15 @@ private:
     std::vector<Run> m_runs;
     std::vector<bool> m_spanHidden;  // empty without culling
     std::vector<bool> m_spanMapped;  // spans with an image everywhere; empty without m_projective
-    Point4 m_mappedPoints[kMaxOrder];
-    std::vector<double> m_dense;     // images of a mapped span's dense samples
+    Point4 m_imagePoints[kMaxOrder];  // the current span's image as a rational Bezier curve (mapSpan)
+    double m_binomials[kMaxOrder] = {};  // binomial coefficients of degree m_order - 1
+    double m_imageMatrix[4][4] = {};     // m_projective with its scale and offset folded in
+    Double2 m_imageColumns[4][2] = {};   // m_imageMatrix by columns, rows (0, 1) and (2, 3)
+    Double2 m_scaledPoints[kMaxOrder][2] = {};  // the span's points times binomials, (x, y) and (z, w)
+    std::vector<double> m_dense;     // images of a mapped span's dense samples, their sampled lengths
+    std::vector<double> m_batchU;    // a mapped span's vertices: parameters, points and images
+    std::vector<Point3> m_batchPoints;
+    std::vector<Point3> m_batchImages;
     std::vector<Sample> m_boundaries;  // where the image ends inside a probe interval
     std::size_t m_edgeSearches = 0;    // boundaryBetween calls so far, up to kMaxEdgeSearches
     std::size_t m_measurableRuns = 0;
@@ -1035,6 +1313,43 @@ private:
     std::size_t m_reserve = 0;  // chords the runs not yet started need at least
     std::vector<Sample> m_table;
 };
+
+// Most Bezier points a thread keeps in its form between calls (1 MB); a larger form is
+// freed after use.
+constexpr std::size_t kKeptFormPoints = std::size_t{1} << 15;
+
+// Calls use(form) with the Bezier form of a valid curve that fits kWholeFormLimit,
+// built in storage the thread keeps between calls, so that a curve tessellated every
+// frame does not allocate (and fault in) its form every time. A call made while the
+// storage is in use (a mapping or culling callback that tessellates) gets a form of
+// its own.
+template <typename Use>
+void withWholeForm(const CurveRef& curve, const Use& use)
+{
+    struct Scratch {
+        BezierForm form;
+        bool busy = false;
+    };
+    struct ScratchTag;
+    Scratch& scratch = threadLocal<Scratch, ScratchTag>();
+    if (scratch.busy) {
+        use(BezierForm(curve));
+        return;
+    }
+    struct Release {
+        Scratch& scratch;
+        ~Release()
+        {
+            scratch.busy = false;
+            if (scratch.form.spanCount() * scratch.form.order() > kKeptFormPoints) {
+                scratch.form = BezierForm();
+            }
+        }
+    } release{scratch};
+    scratch.busy = true;
+    scratch.form.rebuild(curve);
+    use(scratch.form);
+}
 
 } // namespace
 
@@ -1069,7 +1384,9 @@ void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const Po
         return;
     }
     if (fitsWholeBezierForm(curve)) {
-        tessellateAdaptive(BezierForm(curve), maxSegmentLength, mapping, out, limits);
+        withWholeForm(curve, [&](const BezierForm& form) {
+            tessellateAdaptive(form, maxSegmentLength, mapping, out, limits);
+        });
         return;
     }
     CurveSpans spans(curve);
@@ -1092,7 +1409,9 @@ void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const Pr
         return;
     }
     if (fitsWholeBezierForm(curve)) {
-        tessellateAdaptive(BezierForm(curve), maxSegmentLength, mapping, out, limits);
+        withWholeForm(curve, [&](const BezierForm& form) {
+            tessellateAdaptive(form, maxSegmentLength, mapping, out, limits);
+        });
         return;
     }
     CurveSpans spans(curve);

@@ -57,12 +57,13 @@ constexpr std::uint32_t probeSegmentsPerSpan(unsigned order)
 constexpr std::uint32_t kMaxLengthTableSegments = std::uint32_t{1} << 16;
 constexpr unsigned kMaxRootIterations = 60;
 
-/// Adaptive method with a ProjectiveMapping: vertices are chosen among samples of the
-/// mapped span, this many per planned segment (rounded up to 8, 12, 16, 24, ...), so a
-/// segment is at least about (1 - 1 / kDenseSamplesPerSegment) * maxSegmentLength before
-/// the secant step; a span that needs more than kMaxDenseSamples samples takes the
+/// Adaptive method with a ProjectiveMapping: a span with an image everywhere is sampled
+/// this many times per planned segment (rounded up to 8, 12, 16, 24, ...), and its
+/// vertices are placed by the samples' chord lengths, kArcTarget * maxSegmentLength
+/// apart at most; a span that needs more than kMaxDenseSamples samples takes the
 /// general march.
-constexpr std::uint32_t kDenseSamplesPerSegment = 4;
+constexpr std::uint32_t kDenseSamplesPerSegment = 1;
+constexpr double kArcTarget = 0.985;
 constexpr std::uint32_t kMaxDenseSamples = 4096;
 
 /// Adaptive method: most gaps (stretches without an image between two mapped samples)
@@ -205,14 +206,15 @@ void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const P
                         TessellatedCurve& out, const ViewLimits& limits = {});
 
 /// The same with a ProjectiveMapping, which is faster: a span with an image everywhere
-/// (see ProjectiveMapping) is mapped as a whole and sampled densely with the kernel,
-/// kDenseSamplesPerSegment samples per planned segment, and each vertex is the last
-/// sample whose image is within maxSegmentLength of the previous vertex's, moved by one
-/// secant step towards (1 - kChordTolerance / 2) of it when that point's chord, evaluated
-/// and mapped, stays within it (where even the next sample is farther, a point found
-/// between them as above). Every segment is still measured between the images of its
-/// end points, so none is longer than maxSegmentLength; a segment is at least about
-/// (1 - 1 / kDenseSamplesPerSegment) of it, and normally (1 - kChordTolerance) of it.
+/// (see ProjectiveMapping) is mapped as a whole and sampled with the kernel,
+/// kDenseSamplesPerSegment samples per planned segment; the chords between its samples
+/// give its sampled length S, and it gets n = ceil(S / (kArcTarget * maxSegmentLength))
+/// segments of equal sampled length (the parameter of each vertex interpolated between
+/// two samples). Every segment is then measured between the images of its end points;
+/// if one is longer than maxSegmentLength, the span is marched instead, one vertex at a
+/// time, each where the chord reaches (1 - kChordTolerance) to 1 times
+/// maxSegmentLength. So none is longer than maxSegmentLength, and a span gets at most
+/// S / (kArcTarget * maxSegmentLength) + 1 segments, S being at most its length.
 /// Other spans are marched as with a PointMapping.
 void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const ProjectiveMapping& mapping,
                         TessellatedCurve& out, const ViewLimits& limits = {});
