@@ -131,6 +131,21 @@ std::size_t itemEnd(const std::vector<Node>& nodes, std::size_t index)
     return nodes.size();
 }
 
+// Whether the BeginGroup at index has its own EndGroup (itemEnd gives the
+// sequence's end both when that EndGroup is the last node and when there is
+// none).
+bool groupCloses(const std::vector<Node>& nodes, std::size_t index)
+{
+    std::size_t open = 0;
+    for (std::size_t i = index; i < nodes.size(); ++i) {
+        if (nodes[i].type == kTypeBeginGroup)
+            ++open;
+        else if (nodes[i].type == kTypeEndGroup && --open == 0)
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
 std::uint32_t ReadContext::refIdOf(const Object& object) const
@@ -216,7 +231,7 @@ Ref<SharedObject> ReadContext::sequenceItem(const std::vector<Node>& nodes, std:
         index = end;
         return object(node);
     }
-    if (end == nodes.size() && (end == index + 1 || nodes[end - 1].type != kTypeEndGroup)) {
+    if (end == nodes.size() && !groupCloses(nodes, index)) {
         index = end;
         fail(kQ3ErrorInvalidMetafile, "a BeginGroup without its EndGroup");
     }

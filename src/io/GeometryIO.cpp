@@ -666,12 +666,24 @@ Ref<SharedObject> readSolid(ReadContext& context, const Parts& parts, Data data,
                             float Data::*ratio)
 {
     DataReader in = context.reader(parts.root);
-    data.orientation = in.vector3D();
-    data.majorRadius = in.vector3D();
-    data.minorRadius = in.vector3D();
-    data.origin = in.point3D();
+    // An object with no data is the default one of Apple's metafile parser
+    // (MF3D's "For 0-sized objects, default is": orientation 1 0 0, major
+    // axis 0 1 0, minor axis 0 0 1, origin 0 0 0, a torus's ratio 1), as for
+    // the box.
+    data.orientation = {1, 0, 0};
+    data.majorRadius = {0, 1, 0};
+    data.minorRadius = {0, 0, 1};
+    data.origin = {0, 0, 0};
     if (ratio != nullptr)
-        data.*ratio = in.f32();
+        data.*ratio = 1;
+    if (!in.atEnd()) {
+        data.orientation = in.vector3D();
+        data.majorRadius = in.vector3D();
+        data.minorRadius = in.vector3D();
+        data.origin = in.point3D();
+        if (ratio != nullptr)
+            data.*ratio = in.f32();
+    }
     Ranges r;
     readRanges(in, r, true);
     data.uMin = r.uMin;
@@ -755,9 +767,15 @@ Ref<SharedObject> readDisk(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
     TQ3DiskData data{};
-    data.majorRadius = in.vector3D();
-    data.minorRadius = in.vector3D();
-    data.origin = in.point3D();
+    // No data: MF3D's default (major radius 1 0 0, minor 0 1 0, origin 0 0 0).
+    data.majorRadius = {1, 0, 0};
+    data.minorRadius = {0, 1, 0};
+    data.origin = {0, 0, 0};
+    if (!in.atEnd()) {
+        data.majorRadius = in.vector3D();
+        data.minorRadius = in.vector3D();
+        data.origin = in.point3D();
+    }
     Ranges r;
     readRanges(in, r, true);
     data.uMin = r.uMin;
@@ -789,9 +807,15 @@ Ref<SharedObject> readEllipse(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
     TQ3EllipseData data{};
-    data.majorRadius = in.vector3D();
-    data.minorRadius = in.vector3D();
-    data.origin = in.point3D();
+    // No data: MF3D's default (major radius 1 0 0, minor 0 1 0, origin 0 0 0).
+    data.majorRadius = {1, 0, 0};
+    data.minorRadius = {0, 1, 0};
+    data.origin = {0, 0, 0};
+    if (!in.atEnd()) {
+        data.majorRadius = in.vector3D();
+        data.minorRadius = in.vector3D();
+        data.origin = in.point3D();
+    }
     Ranges r;
     readRanges(in, r, false);
     data.uMin = r.uMin;

@@ -8,24 +8,9 @@
 import os
 import struct
 
+from mf3d import floats, header, obj
+
 here = os.path.dirname(os.path.abspath(__file__))
-
-
-def obj(order, tag, data):
-    # An object: its four-character type (a 32-bit value, so reversed in a
-    # little-endian file), its size, its data.
-    code = tag if order == ">" else tag[::-1]
-    return code + struct.pack(order + "I", len(data)) + data
-
-
-def floats(order, *values):
-    return struct.pack(order + "%df" % len(values), *values)
-
-
-def header(order, mode, toc):
-    version = struct.pack(order + "HH", 1, 6)
-    tag = b"3DMF" if order == ">" else b"FMD3"
-    return tag + struct.pack(order + "I", 16) + version + struct.pack(order + "IQ", mode, toc)
 
 
 def triangle_file(order):

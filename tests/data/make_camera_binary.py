@@ -8,31 +8,10 @@
 # as Mac QuickDraw 3D wrote them, and little-endian.
 # Run from anywhere: python3 tests/data/make_camera_binary.py
 import os
-import struct
+
+from mf3d import floats, header, ints, obj, uns, write_both
 
 here = os.path.dirname(os.path.abspath(__file__))
-
-
-def obj(order, tag, data):
-    code = tag if order == ">" else tag[::-1]
-    return code + struct.pack(order + "I", len(data)) + data
-
-
-def floats(order, *values):
-    return struct.pack(order + "%df" % len(values), *values)
-
-
-def uns(order, *values):
-    return struct.pack(order + "%dI" % len(values), *values)
-
-
-def ints(order, *values):
-    return struct.pack(order + "%di" % len(values), *values)
-
-
-def header(order):
-    tag = b"3DMF" if order == ">" else b"FMD3"
-    return tag + struct.pack(order + "I", 16) + struct.pack(order + "HH", 1, 6) + struct.pack(order + "IQ", 0, 0)
 
 
 def camera(order, tag, own, placement, camera_range, view_port):
@@ -64,9 +43,7 @@ def pixmap_marker_file(order):
 
 def main():
     for name, make in [("cameras", cameras_file), ("pixmap_marker", pixmap_marker_file)]:
-        for suffix, order in [("_be", ">"), ("_le", "<")]:
-            with open(os.path.join(here, name + suffix + ".3dmf"), "wb") as out:
-                out.write(make(order))
+        write_both(here, name, make)
 
 
 if __name__ == "__main__":

@@ -7,31 +7,10 @@
 # Reference describes them: big-endian as Mac QuickDraw 3D wrote them, and
 # little-endian. Run from anywhere: python3 tests/data/make_geometry_binary.py
 import os
-import struct
+
+from mf3d import color_set, floats, header, ints, obj, uns, write_both
 
 here = os.path.dirname(os.path.abspath(__file__))
-
-
-def obj(order, tag, data):
-    code = tag if order == ">" else tag[::-1]
-    return code + struct.pack(order + "I", len(data)) + data
-
-
-def floats(order, *values):
-    return struct.pack(order + "%df" % len(values), *values)
-
-
-def uns(order, *values):
-    return struct.pack(order + "%dI" % len(values), *values)
-
-
-def header(order):
-    tag = b"3DMF" if order == ">" else b"FMD3"
-    return tag + struct.pack(order + "I", 16) + struct.pack(order + "HH", 1, 6) + struct.pack(order + "IQ", 0, 0)
-
-
-def color_set(order, r, g, b):
-    return obj(order, b"cntr", obj(order, b"attr", b"") + obj(order, b"kdif", floats(order, r, g, b)))
 
 
 def curve2d(order, k, points, knots):
@@ -54,10 +33,6 @@ def nurbpatch_file(order):
                + curve2d(order, 2, [(0.4, 0.4, 1), (0.4, 0.6, 1), (0.6, 0.6, 1)], [0, 0, 1, 2, 2])
                + curve2d(order, 3, [(0.6, 0.6, 1), (1.2, 0.8, 2), (0.4, 0.4, 1)], [0, 0, 0, 1, 1, 1]))
     return header(order) + obj(order, b"cntr", patch + outer + hole + color_set(order, 0.2, 0.6, 0.9))
-
-
-def ints(order, *values):
-    return struct.pack(order + "%di" % len(values), *values)
 
 
 def set_list(order, tag, count, packing, indices, sets):
@@ -123,9 +98,7 @@ def part_sets_file(order):
 def main():
     for name, make in [("nurbpatch", nurbpatch_file), ("mesh", mesh_file), ("polygons", polygons_file),
                        ("part_sets", part_sets_file)]:
-        for suffix, order in [("_be", ">"), ("_le", "<")]:
-            with open(os.path.join(here, name + suffix + ".3dmf"), "wb") as out:
-                out.write(make(order))
+        write_both(here, name, make)
 
 
 if __name__ == "__main__":
