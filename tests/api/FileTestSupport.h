@@ -22,8 +22,10 @@
 
 namespace q3test {
 
-/// The bytes of a file holding `objects`, written in `mode`.
-inline std::vector<unsigned char> writeObjects(const std::vector<TQ3Object>& objects, TQ3FileMode mode)
+/// The bytes of a file written in `mode` by a writing loop whose every pass
+/// calls `submit(view)`.
+template <class Submit>
+std::vector<unsigned char> writeFileWith(TQ3FileMode mode, Submit&& submit)
 {
     std::vector<unsigned char> bytes;
     TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
@@ -34,8 +36,7 @@ inline std::vector<unsigned char> writeObjects(const std::vector<TQ3Object>& obj
     EXPECT_EQ(Q3View_StartWriting(view, file), kQ3Success);
     TQ3ViewStatus status;
     do {
-        for (TQ3Object object : objects)
-            EXPECT_EQ(Q3Object_Submit(object, view), kQ3Success);
+        submit(view);
         status = Q3View_EndWriting(view);
     } while (status == kQ3ViewStatusRetraverse);
     EXPECT_EQ(status, kQ3ViewStatusDone);
@@ -51,32 +52,25 @@ inline std::vector<unsigned char> writeObjects(const std::vector<TQ3Object>& obj
     return bytes;
 }
 
+/// The bytes of a file holding `objects`, written in `mode`.
+inline std::vector<unsigned char> writeObjects(const std::vector<TQ3Object>& objects, TQ3FileMode mode)
+{
+    return writeFileWith(mode, [&](TQ3ViewObject view) {
+        for (TQ3Object object : objects)
+            EXPECT_EQ(Q3Object_Submit(object, view), kQ3Success);
+    });
+}
+
 /// The bytes of a Normal file after `refuse(view)` (a submit the caller
 /// expects to fail, checking its error) and then a submit of `kept`: what a
 /// refused object leaves in the file.
 template <class Refuse>
 std::vector<unsigned char> writeAfterRefusal(Refuse&& refuse, TQ3Object kept)
 {
-    std::vector<unsigned char> bytes;
-    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
-    TQ3FileObject file = Q3File_New();
-    TQ3ViewObject view = Q3View_New();
-    EXPECT_EQ(Q3File_SetStorage(file, storage), kQ3Success);
-    EXPECT_EQ(Q3File_OpenWrite(file, kQ3FileModeNormal), kQ3Success);
-    EXPECT_EQ(Q3View_StartWriting(view, file), kQ3Success);
-    refuse(view);
-    EXPECT_EQ(Q3Object_Submit(kept, view), kQ3Success);
-    EXPECT_EQ(Q3View_EndWriting(view), kQ3ViewStatusDone);
-    EXPECT_EQ(Q3File_Close(file), kQ3Success);
-    unsigned char* buffer = nullptr;
-    unsigned long size = 0;
-    EXPECT_EQ(Q3MemoryStorage_GetBuffer(storage, &buffer, &size, nullptr), kQ3Success);
-    if (buffer != nullptr)
-        bytes.assign(buffer, buffer + size);
-    Q3Object_Dispose(view);
-    Q3Object_Dispose(file);
-    Q3Object_Dispose(storage);
-    return bytes;
+    return writeFileWith(kQ3FileModeNormal, [&](TQ3ViewObject view) {
+        refuse(view);
+        EXPECT_EQ(Q3Object_Submit(kept, view), kQ3Success);
+    });
 }
 
 /// A file open for reading on a copy of the bytes (NULL if OpenRead
