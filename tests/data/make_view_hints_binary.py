@@ -8,27 +8,10 @@
 # big-endian as Mac QuickDraw 3D wrote them, and little-endian.
 # Run from anywhere: python3 tests/data/make_view_hints_binary.py
 import os
-import struct
+
+from mf3d import floats, header, obj, uns, write_both
 
 here = os.path.dirname(os.path.abspath(__file__))
-
-
-def obj(order, tag, data):
-    code = tag if order == ">" else tag[::-1]
-    return code + struct.pack(order + "I", len(data)) + data
-
-
-def floats(order, *values):
-    return struct.pack(order + "%df" % len(values), *values)
-
-
-def uns(order, *values):
-    return struct.pack(order + "%dI" % len(values), *values)
-
-
-def header(order):
-    tag = b"3DMF" if order == ">" else b"FMD3"
-    return tag + struct.pack(order + "I", 16) + struct.pack(order + "HH", 1, 6) + struct.pack(order + "IQ", 0, 0)
 
 
 def light_data(order, on, brightness, r, g, b):
@@ -53,9 +36,7 @@ def view_hints_file(order):
 
 
 def main():
-    for suffix, order in [("_be", ">"), ("_le", "<")]:
-        with open(os.path.join(here, "view_hints" + suffix + ".3dmf"), "wb") as out:
-            out.write(view_hints_file(order))
+    write_both(here, "view_hints", view_hints_file)
 
 
 if __name__ == "__main__":
