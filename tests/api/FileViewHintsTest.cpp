@@ -9,6 +9,7 @@
 
 #include "FileTestSupport.h"
 #include "Q3ApiTest.h"
+#include "ViewHintsTestSupport.h"
 
 #include "QD3DCamera.h"
 #include "QD3DGeometry.h"
@@ -161,34 +162,11 @@ void expectHandWritten(const std::vector<TQ3Object>& objects)
     EXPECT_EQ(diffuse.r, 0.25f);
     EXPECT_EQ(diffuse.g, 0.5f);
     EXPECT_EQ(diffuse.b, 0.75f);
-    TQ3Boolean state = kQ3False;
-    unsigned long width = 0, height = 0;
-    EXPECT_EQ(Q3ViewHints_GetDimensionsState(hints, &state), kQ3Success);
-    EXPECT_EQ(state, kQ3True);
-    EXPECT_EQ(Q3ViewHints_GetDimensions(hints, &width, &height), kQ3Success);
-    EXPECT_EQ(width, 320ul);
-    EXPECT_EQ(height, 200ul);
-    EXPECT_EQ(Q3ViewHints_GetMaskState(hints, &state), kQ3Success);
-    EXPECT_EQ(state, kQ3True);
-    TQ3Bitmap mask{};
-    ASSERT_EQ(Q3ViewHints_GetMask(hints, &mask), kQ3Success);
-    ASSERT_NE(mask.image, nullptr);
-    EXPECT_EQ(mask.width, 12ul);
-    EXPECT_EQ(mask.height, 2ul);
-    EXPECT_EQ(mask.rowBytes, 2ul);
-    EXPECT_EQ(mask.bitOrder, kQ3EndianBig);
     const unsigned char bits[4] = {0xF0, 0x0F, 0xA5, 0xA0};
-    EXPECT_EQ(std::memcmp(mask.image, bits, 4), 0);
-    Q3Bitmap_Empty(&mask);
+    expectImageHints(hints, 320, 200, TQ3Bitmap{const_cast<unsigned char*>(bits), 12, 2, 2, kQ3EndianBig},
+                     TQ3ColorARGB{1.0f, 0.125f, 0.375f, 0.625f});
+    TQ3Boolean state = kQ3False;
     TQ3DrawContextClearImageMethod method = kQ3ClearMethodNone;
-    TQ3ColorARGB color{};
-    EXPECT_EQ(Q3ViewHints_GetClearImageMethod(hints, &method), kQ3Success);
-    EXPECT_EQ(method, kQ3ClearMethodWithColor);
-    EXPECT_EQ(Q3ViewHints_GetClearImageColor(hints, &color), kQ3Success);
-    EXPECT_EQ(color.a, 1.0f);
-    EXPECT_EQ(color.r, 0.125f);
-    EXPECT_EQ(color.g, 0.375f);
-    EXPECT_EQ(color.b, 0.625f);
 
     // The empty one holds nothing.
     TQ3ViewHintsObject empty = objects[1];
@@ -264,30 +242,7 @@ TEST_F(FileViewHintsTest, HintsReadBackFieldByFieldInEveryMode)
         EXPECT_EQ(seen[1].data.color.b, 0.125f);
         const TQ3ColorRGB gotDiffuse = diffuseOf(got);
         EXPECT_EQ(gotDiffuse.g, 0.875f);
-        TQ3Boolean state = kQ3False;
-        unsigned long width = 0, height = 0;
-        EXPECT_EQ(Q3ViewHints_GetDimensionsState(got, &state), kQ3Success);
-        EXPECT_EQ(state, kQ3True);
-        EXPECT_EQ(Q3ViewHints_GetDimensions(got, &width, &height), kQ3Success);
-        EXPECT_EQ(width, 1024ul);
-        EXPECT_EQ(height, 0xFFFFFFFFul);
-        EXPECT_EQ(Q3ViewHints_GetMaskState(got, &state), kQ3Success);
-        EXPECT_EQ(state, kQ3True);
-        TQ3Bitmap gotMask{};
-        ASSERT_EQ(Q3ViewHints_GetMask(got, &gotMask), kQ3Success);
-        ASSERT_NE(gotMask.image, nullptr);
-        EXPECT_EQ(gotMask.width, 11ul);
-        EXPECT_EQ(gotMask.height, 3ul);
-        EXPECT_EQ(gotMask.rowBytes, 2ul);
-        EXPECT_EQ(gotMask.bitOrder, kQ3EndianBig);
-        EXPECT_EQ(std::memcmp(gotMask.image, bits, 6), 0);
-        Q3Bitmap_Empty(&gotMask);
-        TQ3DrawContextClearImageMethod method = kQ3ClearMethodNone;
-        TQ3ColorARGB gotColor{};
-        EXPECT_EQ(Q3ViewHints_GetClearImageMethod(got, &method), kQ3Success);
-        EXPECT_EQ(method, kQ3ClearMethodWithColor);
-        EXPECT_EQ(Q3ViewHints_GetClearImageColor(got, &gotColor), kQ3Success);
-        EXPECT_EQ(std::memcmp(&gotColor, &color, sizeof color), 0);
+        expectImageHints(got, 1024, 0xFFFFFFFFul, mask, color);
         disposeAll(objects);
     }
     for (TQ3Object object : {TQ3Object(hints), view, camera, lights, ambient, directional, set})

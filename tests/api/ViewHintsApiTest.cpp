@@ -7,6 +7,7 @@
 // enumerator is tried from C, in tests/c/AllHeaders.c.)
 
 #include "RenderTestSupport.h"
+#include "ViewHintsTestSupport.h"
 
 #include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
@@ -171,38 +172,14 @@ TEST_F(ViewHintsApiTest, NewCopiesTheViewsConfiguration)
     EXPECT_EQ(Q3ViewHints_GetAttributeSet(hints, &got), kQ3Success);
     EXPECT_EQ(got, set);
     Q3Object_Dispose(got);
-    TQ3Boolean state = kQ3False;
-    unsigned long width = 0, height = 0;
-    EXPECT_EQ(Q3ViewHints_GetDimensionsState(hints, &state), kQ3Success);
-    EXPECT_EQ(state, kQ3True);
-    EXPECT_EQ(Q3ViewHints_GetDimensions(hints, &width, &height), kQ3Success);
-    EXPECT_EQ(width, 40ul);
-    EXPECT_EQ(height, 30ul);
-    EXPECT_EQ(Q3ViewHints_GetMaskState(hints, &state), kQ3Success);
-    EXPECT_EQ(state, kQ3True);
-    TQ3Bitmap mask{};
-    ASSERT_EQ(Q3ViewHints_GetMask(hints, &mask), kQ3Success);
-    ASSERT_NE(mask.image, nullptr);
-    EXPECT_NE(mask.image, maskBits);
-    EXPECT_EQ(mask.width, 16ul);
-    EXPECT_EQ(mask.height, 3ul);
-    EXPECT_EQ(mask.rowBytes, 2ul);
-    EXPECT_EQ(mask.bitOrder, kQ3EndianLittle);
-    EXPECT_EQ(std::memcmp(mask.image, maskBits, 6), 0);
-    Q3Bitmap_Empty(&mask);
-    TQ3DrawContextClearImageMethod method = kQ3ClearMethodNone;
-    TQ3ColorARGB color{};
-    EXPECT_EQ(Q3ViewHints_GetClearImageMethod(hints, &method), kQ3Success);
-    EXPECT_EQ(method, kQ3ClearMethodWithColor);
-    EXPECT_EQ(Q3ViewHints_GetClearImageColor(hints, &color), kQ3Success);
-    EXPECT_EQ(color.g, 0.5f);
-    EXPECT_EQ(color.b, 0.75f);
+    expectImageHints(hints, 40, 30, contextData.drawContextData.mask, contextData.drawContextData.clearImageColor);
 
     // A pane gives the dimensions instead of the pixmap.
     const TQ3Area pane{{4, 2}, {24.4f, 12}};
     ASSERT_EQ(Q3DrawContext_SetPane(context, &pane), kQ3Success);
     ASSERT_EQ(Q3DrawContext_SetPaneState(context, kQ3True), kQ3Success);
     TQ3ViewHintsObject paned = Q3ViewHints_New(m_view);
+    unsigned long width = 0, height = 0;
     EXPECT_EQ(Q3ViewHints_GetDimensions(paned, &width, &height), kQ3Success);
     EXPECT_EQ(width, 20ul);
     EXPECT_EQ(height, 10ul);
