@@ -120,8 +120,7 @@ Ref<SharedObject> readVertexList(ReadContext& context, const Parts& parts, Data 
 }
 
 // A polyline's segments' sets: a GeometryAttributeSetList of numVertices - 1
-// elements ("Geometry Attribute Set Lists"; Quesa reads the same).
-constexpr TQ3ObjectType kTypeGeometrySets = Q3_OBJECT_TYPE('g', 'a', 's', 'l');
+// elements.
 
 Ref<SharedObject> readPolyLine(ReadContext& context, const Parts& parts)
 {

@@ -511,8 +511,10 @@ void writeMesh(WriteContext& context, const Object& object)
 // points, numTriangles, numEdges, then per triangle its three vertex indices
 // and its edge flags, then per edge its two vertex indices and two triangle
 // indices; a FaceAttributeSetList (the triangles), a VertexAttributeSetList,
-// the attribute set. Edges' own attribute sets have no place in the layout
-// and are not written.
+// a GeometryAttributeSetList of numEdges elements (the edges' own sets: no
+// source gives them a place, and this is the list the reference keeps for
+// the parts of a geometry that are neither faces nor vertices, a polyline's
+// segments; a reader that does not know it skips it), the attribute set.
 // Marker: location, xOffset, yOffset (Int32), then the bitmap: width,
 // height, rowBytes, bitOrder (BigEndian or LittleEndian), then height *
 // rowBytes bytes of image as RawData: padded with zeros to a multiple of 4 in
@@ -686,6 +688,9 @@ Ref<SharedObject> readPolyhedron(ReadContext& context, const Parts& parts)
     const auto faceSets = readSetList(context, parts, kTypeFaceSets, "FaceAttributeSetList", numTriangles);
     for (std::uint32_t i = 0; i < numTriangles; ++i)
         triangles[i].triangleAttributeSet = faceSets[i].get();
+    const auto edgeSets = readSetList(context, parts, kTypeGeometrySets, "GeometryAttributeSetList", numEdges);
+    for (std::uint32_t i = 0; i < numEdges; ++i)
+        edges[i].edgeAttributeSet = edgeSets[i].get();
     Ref<AttributeSet> own = context.attributeSet(parts);
     TQ3PolyhedronData data{numVertices,
                            vertices.data(),
@@ -704,9 +709,12 @@ void writePolyhedron(WriteContext& context, const Object& object)
     std::vector<const AttributeSet*> faceSets;
     for (unsigned long i = 0; i < data.numTriangles; ++i)
         faceSets.push_back(setOf(data.triangles[i].triangleAttributeSet));
+    std::vector<const AttributeSet*> edgeSets;
+    for (unsigned long i = 0; i < data.numEdges; ++i)
+        edgeSets.push_back(setOf(data.edges[i].edgeAttributeSet));
     maybeContainer(context,
                    WriteContext::hasAttributes(own) || anyVertexSet(data.vertices, data.numVertices) ||
-                       anySet(faceSets),
+                       anySet(faceSets) || anySet(edgeSets),
                    [&] {
                        Encoder& out = context.out();
                        out.begin(kQ3GeometryTypePolyhedron, "Polyhedron");
@@ -729,6 +737,7 @@ void writePolyhedron(WriteContext& context, const Object& object)
                        out.end();
                        writeSetList(context, kTypeFaceSets, "FaceAttributeSetList", faceSets);
                        writeVertexSets(context, data.vertices, data.numVertices);
+                       writeSetList(context, kTypeGeometrySets, "GeometryAttributeSetList", edgeSets);
                        context.attributeSet(own);
                    });
 }

@@ -20,6 +20,10 @@ namespace q3::io {
 constexpr TQ3ObjectType kTypeVertexSets = Q3_OBJECT_TYPE('v', 'a', 's', 'l');
 constexpr TQ3ObjectType kTypeCaps = Q3_OBJECT_TYPE('c', 'a', 'p', 's');
 constexpr TQ3ObjectType kTypeFaceSets = Q3_OBJECT_TYPE('f', 'a', 's', 'l');
+// The sets of the parts of a geometry that are neither faces nor vertices:
+// a polyline's segments ("Geometry Attribute Set Lists"; Quesa reads the
+// same) and a polyhedron's edges (Q3's choice, docs/3dmf.md).
+constexpr TQ3ObjectType kTypeGeometrySets = Q3_OBJECT_TYPE('g', 'a', 's', 'l');
 
 inline const std::vector<std::pair<const char*, std::uint32_t>> kPacking = {{"Include", 0}, {"Exclude", 1}};
 inline const std::vector<std::pair<const char*, std::uint32_t>> kCaps = {

@@ -291,12 +291,38 @@ void writeDirectional(WriteContext& context, const Object& object)
     });
 }
 
+// A point or spot light's attenuation. QuickDraw 3D's lights hold a
+// TQ3AttenuationType, written as one enumeration; Apple's 1995 metafile
+// parser (MF3D) and the QD3D 1.5.4 book's point light example hold three
+// Float32 coefficients c0 c1 c2 (1 / (c0 + c1 d + c2 d^2)) instead. The two
+// forms differ in size, so the data left tells them apart: exactly room for
+// the three coefficients and `bytesAfter` bytes (binary) or `tokensAfter`
+// tokens (text) after them reads the coefficients, taken as the nearest
+// QuickDraw 3D type (a squared term: InverseDistanceSquared; else a linear
+// one: InverseDistance; else None). Negative coefficients are refused.
+TQ3AttenuationType readAttenuation(DataReader& in, bool text, std::size_t bytesAfter, std::size_t tokensAfter)
+{
+    if (in.remaining() != (text ? 3 + tokensAfter : 12 + bytesAfter))
+        return static_cast<TQ3AttenuationType>(in.choice(kAttenuation));
+    float c[3];
+    for (float& coefficient : c) {
+        coefficient = in.f32();
+        if (coefficient < 0)
+            fail(kQ3ErrorInvalidMetafileObject,
+                 "a light's attenuation coefficient " + std::to_string(coefficient) + " is negative");
+    }
+    if (c[2] > 0)
+        return kQ3AttenuationTypeInverseDistanceSquared;
+    return c[1] > 0 ? kQ3AttenuationTypeInverseDistance : kQ3AttenuationTypeNone;
+}
+
 Ref<SharedObject> readPointLight(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
+    const bool text = context.file().encoding == Encoding::kText;
     TQ3PointLightData data{};
     data.location = in.point3D();
-    data.attenuation = static_cast<TQ3AttenuationType>(in.choice(kAttenuation));
+    data.attenuation = readAttenuation(in, text, 4, 1); // castsShadows follows
     data.castsShadows = static_cast<TQ3Boolean>(in.choice(kBoolean));
     data.lightData = readLightData(context, parts);
     return build<PointLight>("point light", data);
@@ -319,11 +345,12 @@ void writePointLight(WriteContext& context, const Object& object)
 Ref<SharedObject> readSpotLight(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
+    const bool text = context.file().encoding == Encoding::kText;
     TQ3SpotLightData data{};
     data.location = in.point3D();
     data.direction = in.vector3D();
     data.castsShadows = static_cast<TQ3Boolean>(in.choice(kBoolean));
-    data.attenuation = static_cast<TQ3AttenuationType>(in.choice(kAttenuation));
+    data.attenuation = readAttenuation(in, text, 12, 3); // hotAngle, outerAngle, fallOff follow
     data.hotAngle = in.f32();
     data.outerAngle = in.f32();
     data.fallOff = static_cast<TQ3FallOffType>(in.choice(kFallOff));

@@ -289,11 +289,13 @@ TQ3Object makePolyhedron()
                                       {{0, 1, 3}, kQ3PolyhedronEdge01 | kQ3PolyhedronEdge12, blue},
                                       {{1, 2, 3}, kQ3PolyhedronEdgeAll, nullptr},
                                       {{2, 0, 3}, kQ3PolyhedronEdge20, nullptr}};
-    TQ3PolyhedronEdgeData e[2] = {{{0, 1}, {0, 1}, nullptr}, {{1, 3}, {1, 2}, nullptr}};
+    TQ3AttributeSet cyan = colorSet(0, 1, 1);
+    TQ3PolyhedronEdgeData e[2] = {{{0, 1}, {0, 1}, nullptr}, {{1, 3}, {1, 2}, cyan}};
     TQ3PolyhedronData d = {4, v, 2, e, 4, t, nullptr};
     TQ3Object o = Q3Polyhedron_New(&d);
     Q3Object_Dispose(red);
     Q3Object_Dispose(blue);
+    Q3Object_Dispose(cyan);
     return o;
 }
 
@@ -314,7 +316,8 @@ bool samePolyhedron(TQ3Object a, TQ3Object b)
         same = std::memcmp(da.edges[i].vertexIndices, db.edges[i].vertexIndices, sizeof da.edges[i].vertexIndices) ==
                    0 &&
                std::memcmp(da.edges[i].triangleIndices, db.edges[i].triangleIndices,
-                           sizeof da.edges[i].triangleIndices) == 0;
+                           sizeof da.edges[i].triangleIndices) == 0 &&
+               sameSet(da.edges[i].edgeAttributeSet, db.edges[i].edgeAttributeSet);
     Q3Polyhedron_EmptyData(&da);
     Q3Polyhedron_EmptyData(&db);
     return same;
@@ -808,6 +811,17 @@ TEST_F(FileGeometryTest, MalformedPolygonFilesAreFileErrorsNeverCrashes)
     EXPECT_READ_ERROR(replaced("VertexAttributeSetList ( 7 Include 2  0 5 )",
                                "VertexAttributeSetList ( 7 Include 2  0 7 )"),
                       kQ3ErrorInvalidMetafileSubObject);
+    // The polyhedron's edge sets: a list for three edges of two, one naming
+    // an edge past the end, one listing a set it does not hold.
+    EXPECT_READ_ERROR(replaced("GeometryAttributeSetList ( 2 Include 1  1 )",
+                               "GeometryAttributeSetList ( 3 Include 1  1 )"),
+                      kQ3ErrorInvalidMetafileSubObject);
+    EXPECT_READ_ERROR(replaced("GeometryAttributeSetList ( 2 Include 1  1 )",
+                               "GeometryAttributeSetList ( 2 Include 1  2 )"),
+                      kQ3ErrorInvalidMetafileSubObject);
+    EXPECT_READ_ERROR(replaced("GeometryAttributeSetList ( 2 Include 1  1 )",
+                               "GeometryAttributeSetList ( 2 Include 2  0 1 )"),
+                      kQ3ErrorInvalidMetafileSubObject);
 
     for (const char* name : {"polygons_be.3dmf", "polygons_le.3dmf"}) {
         SCOPED_TRACE(name);
@@ -881,6 +895,71 @@ TEST_F(FileGeometryTest, TriMeshIndexWidthsFollowTheCountsAndKeepNullTriangles)
         Q3Object_Dispose(back);
         Q3Object_Dispose(mesh);
     }
+}
+
+// A binary TriMesh's index bytes are not padded: the points follow the last
+// index byte at once, and the object's size need not be a multiple of 4
+// (Quesa's writer sizes the object so and its reader reads it so; Q3 writes
+// the same). Laid out by hand: three triangles of 1-byte indices (9 bytes),
+// then a Point right after the TriMesh's odd-sized data; and the same TriMesh
+// padded with zeros to a multiple of 4 at its end, which reads the same.
+TEST_F(FileGeometryTest, ABinaryTriMeshIsNotPaddedBetweenItsIndicesAndItsPoints)
+{
+    const float points[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const unsigned char indices[9] = {0, 1, 2, 0, 3, 1, 1, 3, 2};
+    for (const std::size_t pad : {std::size_t{0}, std::size_t{3}}) {
+        SCOPED_TRACE(pad);
+        auto bytes = binaryHeader();
+        putTag(bytes, "tmsh");
+        put32(bytes, static_cast<std::uint32_t>(24 + 9 + 48 + 28 + pad));
+        for (std::uint32_t count : {3u, 0u, 0u, 0u, 4u, 0u})
+            put32(bytes, count);
+        bytes.insert(bytes.end(), indices, indices + 9);
+        for (const auto& point : points)
+            for (float c : point)
+                putFloat(bytes, c);
+        for (float c : {0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f})
+            putFloat(bytes, c);
+        put32(bytes, 0);
+        bytes.insert(bytes.end(), pad, 0);
+        putTag(bytes, "pnt ");
+        put32(bytes, 12);
+        for (float c : {0.5f, -2.0f, 4.0f})
+            putFloat(bytes, c);
+        const auto objects = readAll(bytes);
+        ASSERT_EQ(objects.size(), 2u);
+        TQ3TriMeshData mesh{};
+        ASSERT_EQ(Q3TriMesh_GetData(objects[0], &mesh), kQ3Success);
+        ASSERT_EQ(mesh.numTriangles, 3u);
+        for (unsigned long t = 0; t < 3; ++t)
+            for (int k = 0; k < 3; ++k)
+                EXPECT_EQ(mesh.triangles[t].pointIndices[k], indices[3 * t + k]);
+        ASSERT_EQ(mesh.numPoints, 4u);
+        for (unsigned long i = 0; i < 4; ++i)
+            EXPECT_TRUE(samePoint(mesh.points[i], {points[i][0], points[i][1], points[i][2]}));
+        Q3TriMesh_EmptyData(&mesh);
+        TQ3PointData point{};
+        ASSERT_EQ(Q3Point_GetData(objects[1], &point), kQ3Success);
+        EXPECT_TRUE(samePoint(point.point, {0.5f, -2.0f, 4.0f}));
+        Q3Point_EmptyData(&point);
+        disposeAll(objects);
+    }
+    // Q3 writes it so: the same TriMesh's data is 109 bytes.
+    TQ3TriMeshTriangleData triangles[3] = {{{0, 1, 2}}, {{0, 3, 1}}, {{1, 3, 2}}};
+    TQ3Point3D meshPoints[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    TQ3TriMeshData d{};
+    d.numTriangles = 3;
+    d.triangles = triangles;
+    d.numPoints = 4;
+    d.points = meshPoints;
+    d.bBox = {{0, 0, 0}, {1, 1, 1}, kQ3False};
+    TQ3Object mesh = Q3TriMesh_New(&d);
+    ASSERT_NE(mesh, nullptr);
+    const auto written = writeObjects({mesh}, kQ3FileModeStream);
+    ASSERT_GE(written.size(), 32u);
+    EXPECT_EQ(written[31] | (written[30] << 8), 109);
+    EXPECT_EQ(written.size(), 32u + 109u);
+    Q3Object_Dispose(mesh);
 }
 
 TEST_F(FileGeometryTest, HandWrittenPartSetFilesGiveTheirObjectsInEveryEncoding)
