@@ -571,6 +571,78 @@ TEST_F(FileCatalogTest, QuadricsWithNoDataAreAppleParsersDefaults)
     disposeAll(binary);
 }
 
+// ---- MF3D's attenuation coefficients --------------------------------------------------
+
+// Apple's 1995 metafile parser (MF3D) and the QD3D 1.5.4 book's point light
+// example hold a point or spot light's attenuation as three coefficients
+// c0 c1 c2; Q3 reads them as the QuickDraw 3D attenuation type they come
+// nearest to (a squared term, else a linear one, else none).
+TQ3AttenuationType pointAttenuation(TQ3Object light)
+{
+    TQ3PointLightData data{};
+    EXPECT_EQ(Q3PointLight_GetData(light, &data), kQ3Success);
+    return data.attenuation;
+}
+
+TQ3AttenuationType spotAttenuation(TQ3Object light, float* hotAngle, TQ3FallOffType* fallOff)
+{
+    TQ3SpotLightData data{};
+    EXPECT_EQ(Q3SpotLight_GetData(light, &data), kQ3Success);
+    *hotAngle = data.hotAngle;
+    *fallOff = data.fallOff;
+    return data.attenuation;
+}
+
+TEST_F(FileCatalogTest, AttenuationAsThreeCoefficientsReadsAsTheNearestType)
+{
+    const auto text = readAll(bytesOf("3DMetafile ( 1 6 Stream )\n"
+                                      "PointLight ( 1 2 3  1 0 1  True )\n"
+                                      "PointLight ( 1 2 3  1 0.5 0  False )\n"
+                                      "PointLight ( 1 2 3  1 0 0  False )\n"
+                                      "SpotLight ( 0 5 0  0 -1 0  True  0 2 0  0.3 0.6 Cosine )\n"));
+    ASSERT_EQ(text.size(), 4u);
+    EXPECT_EQ(pointAttenuation(text[0]), kQ3AttenuationTypeInverseDistanceSquared);
+    EXPECT_EQ(pointAttenuation(text[1]), kQ3AttenuationTypeInverseDistance);
+    EXPECT_EQ(pointAttenuation(text[2]), kQ3AttenuationTypeNone);
+    float hot = 0;
+    TQ3FallOffType fallOff = kQ3FallOffTypeNone;
+    EXPECT_EQ(spotAttenuation(text[3], &hot, &fallOff), kQ3AttenuationTypeInverseDistance);
+    EXPECT_EQ(hot, 0.3f);
+    EXPECT_EQ(fallOff, kQ3FallOffTypeCosine);
+    disposeAll(text);
+
+    // The same in binary, laid out by hand: a 28-byte point light (location,
+    // three Float32, castsShadows) and a 52-byte spot light.
+    auto bytes = binaryHeader();
+    putTag(bytes, "pntl");
+    put32(bytes, 28);
+    for (float f : {1.0f, 2.0f, 3.0f, 1.0f, 0.0f, 0.25f})
+        putFloat(bytes, f);
+    put32(bytes, 1);
+    putTag(bytes, "spot");
+    put32(bytes, 52);
+    for (float f : {0.0f, 5.0f, 0.0f, 0.0f, -1.0f, 0.0f})
+        putFloat(bytes, f);
+    put32(bytes, 0);
+    for (float f : {1.0f, 0.0f, 0.0f, 0.3f, 0.6f})
+        putFloat(bytes, f);
+    put32(bytes, kQ3FallOffTypeLinear);
+    const auto binary = readAll(bytes);
+    ASSERT_EQ(binary.size(), 2u);
+    EXPECT_EQ(pointAttenuation(binary[0]), kQ3AttenuationTypeInverseDistanceSquared);
+    EXPECT_EQ(spotAttenuation(binary[1], &hot, &fallOff), kQ3AttenuationTypeNone);
+    EXPECT_EQ(hot, 0.3f);
+    EXPECT_EQ(fallOff, kQ3FallOffTypeLinear);
+    disposeAll(binary);
+
+    // A negative coefficient is no attenuation of any kind.
+    EXPECT_READ_ERROR(bytesOf("3DMetafile ( 1 6 Stream )\nPointLight ( 1 2 3  1 -1 0  True )\n"),
+                      kQ3ErrorInvalidMetafileObject);
+    // Four numbers fit neither form: the enumeration word is missing.
+    EXPECT_READ_ERROR(bytesOf("3DMetafile ( 1 6 Stream )\nPointLight ( 1 2 3  1 0 0 0  True )\n"),
+                      kQ3ErrorInvalidMetafilePrimitive);
+}
+
 // ---- malformed variants -----------------------------------------------------------
 
 /// The text with the first `from` replaced by `to`.
