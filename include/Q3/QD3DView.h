@@ -345,6 +345,57 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_StartBoundingSphere(TQ3ViewObject view,
 Q3_EXTERN_API_C(TQ3ViewStatus) Q3View_EndBoundingSphere(TQ3ViewObject view,
                                                         TQ3BoundingSphere *result);
 
+/* ---- Picking (QD3DPick.h) ------------------------------------------------ */
+
+/**
+ * Starts a picking loop: the shapes submitted until Q3View_EndPicking are
+ * tested against the pick (QD3DPick.h), whose hit list is emptied now.
+ * Window-point and window-rect picks need the view's camera and draw
+ * context (the window is the draw context's pane); world-ray picks need
+ * neither. The view uses a copy of the pick's settings taken now.
+ *
+ * @param view  the view, in no loop.
+ * @param pick  the pick.
+ * @return kQ3Success, or kQ3Failure (no loop started).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view or pick is NULL.
+ *   kQ3ErrorInvalidObject      view or pick is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view, pick is not a pick.
+ *   kQ3ErrorViewIsStarted      a loop is already running in view.
+ *   kQ3ErrorDrawContextNotSet  a window pick, and the view has no draw
+ *                              context.
+ *   kQ3ErrorCameraNotSet       a window pick, and the view has no camera.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_StartPicking(TQ3ViewObject view, TQ3PickObject pick);
+
+/**
+ * Ends a traversal of a picking loop and gives the pick its hits, sorted
+ * and cut to numHitsToReturn. Q3 needs one traversal, so it never returns
+ * kQ3ViewStatusRetraverse.
+ *
+ * @param view  the view.
+ * @return kQ3ViewStatusDone (the hits are in the pick);
+ *         kQ3ViewStatusCancelled after Q3View_Cancel (the hit list stays
+ *         empty); kQ3ViewStatusError on failure. The loop is over in every
+ *         case but kQ3ErrorPickingNotStarted.
+ *
+ * Errors (kQ3ViewStatusError):
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *   kQ3ErrorPickingNotStarted  no picking loop is running in view.
+ *   kQ3ErrorPickingLoopFailed  the pick was disposed during the loop.
+ *
+ * Ownership: the hits hold references to the geometries and root groups
+ * they name, until the hit list is emptied or the pick disposed.
+ */
+Q3_EXTERN_API_C(TQ3ViewStatus) Q3View_EndPicking(TQ3ViewObject view);
+
 /* ---- Camera ------------------------------------------------------------- */
 
 /**

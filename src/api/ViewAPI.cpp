@@ -8,6 +8,7 @@
 #include "render/Renderer.h"
 #include "view/Camera.h"
 #include "view/DrawContext.h"
+#include "view/Pick.h"
 #include "view/Pass.h"
 #include "view/StateOperator.h"
 #include "view/View.h"
@@ -117,6 +118,19 @@ TQ3ViewStatus Q3View_EndBoundingSphere(TQ3ViewObject view, TQ3BoundingSphere* re
         requireNonNull(result, "result");
         return target.endBoundingSphere(*result);
     });
+}
+
+TQ3Status Q3View_StartPicking(TQ3ViewObject view, TQ3PickObject pick)
+{
+    return guardStatus(__func__, [&] {
+        View& target = lookup<View>(view, "view");
+        target.startPicking(lookup<Pick>(pick, "pick"));
+    });
+}
+
+TQ3ViewStatus Q3View_EndPicking(TQ3ViewObject view)
+{
+    return guard(__func__, kQ3ViewStatusError, [&] { return lookup<View>(view, "view").endPicking(); });
 }
 
 TQ3Status Q3View_GetCamera(TQ3ViewObject view, TQ3CameraObject* camera)

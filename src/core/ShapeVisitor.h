@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
+struct OpaqueTQ3GroupPosition;
+
 namespace q3 {
 
 class AttributeSet;
@@ -41,6 +43,9 @@ public:
     /// limits::kMaxGroupNesting.
     virtual bool beginGroup(const DisplayGroup& group) = 0;
     virtual void endGroup(const DisplayGroup& group) = 0;
+    /// Inside a display group, just before each object it submits: that
+    /// object's position in the group (picking records hit paths from it).
+    virtual void atGroupPosition(OpaqueTQ3GroupPosition* /*position*/) {}
 };
 
 } // namespace q3

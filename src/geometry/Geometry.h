@@ -48,6 +48,9 @@ public:
     /// True for the geometries that are primitives themselves (point, line,
     /// polyline, triangle, trimesh): Q3Geometry_GetDecomposed gives NULL.
     virtual bool isPrimitive() const { return false; }
+    /// False for an immediate-mode geometry (a _Submit's temporary), which
+    /// nothing may keep a reference to.
+    bool isRetained() const { return m_cacheable; }
 
     /// Q3Geometry_GetDecomposed: what decompose() gives, as a new geometry (a
     /// PolyLine for one strip, a TriMesh for triangles) carrying this

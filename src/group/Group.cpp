@@ -394,8 +394,10 @@ void DisplayGroup::submitContents(ShapeVisitor& visitor) const
     for (const Node& node : nodes()) {
         const SharedObject& object = *node.object;
         // Lights, cameras and other shapes that are not drawable do nothing.
-        if (object.isDrawable())
+        if (object.isDrawable()) {
+            visitor.atGroupPosition(const_cast<Node*>(&node));
             object.accept(visitor);
+        }
     }
 }
 
@@ -462,8 +464,10 @@ void IOProxyDisplayGroup::submitContents(ShapeVisitor& visitor) const
 {
     for (const Node& node : nodes())
         if (!node.object->isType(kQ3ShapeTypeUnknown)) {
-            if (node.object->isDrawable())
+            if (node.object->isDrawable()) {
+                visitor.atGroupPosition(const_cast<Node*>(&node));
                 node.object->accept(visitor);
+            }
             return;
         }
 }

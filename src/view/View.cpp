@@ -13,6 +13,8 @@
 #include "view/BoundsPass.h"
 #include "view/Camera.h"
 #include "view/DrawContext.h"
+#include "view/Pick.h"
+#include "view/PickPass.h"
 #include "view/RenderPass.h"
 
 #include <algorithm>
@@ -365,10 +367,58 @@ TQ3ViewStatus View::endWriting()
     return cancelled ? kQ3ViewStatusCancelled : kQ3ViewStatusDone;
 }
 
+void View::startPicking(Pick& pick)
+{
+    requireNoLoop();
+    std::optional<Window> window;
+    if (pick.kind() != Pick::Kind::kWorldRay) {
+        if (!m_drawContext)
+            fail(kQ3ErrorDrawContextNotSet, "a window pick needs the view's draw context (Q3View_SetDrawContext)");
+        if (!m_camera)
+            fail(kQ3ErrorCameraNotSet, "a window pick needs the view's camera (Q3View_SetCamera)");
+        const TQ3Pixmap& pixmap = pixmapContext(*m_drawContext).pixmap();
+        const PixmapLayout layout = layoutOf(pixmap);
+        window = Window{m_camera->worldToFrustum(), m_drawContext->drawRect(layout.width, layout.height)};
+    } else if (m_camera && m_drawContext && m_drawContext->isType(kQ3DrawContextTypePixmap)) {
+        // Screen-space subdivision needs a window when there is one.
+        const PixmapLayout layout = layoutOf(pixmapContext(*m_drawContext).pixmap());
+        window = Window{m_camera->worldToFrustum(), m_drawContext->drawRect(layout.width, layout.height)};
+    }
+    auto pass = std::make_unique<PickPass>(pick, window, defaultAttributes(m_defaultAttributes.get()));
+    pass->allowGroupCulling(m_cullGroups);
+    pass->useCurveScratch(curveScratch());
+    pick.emptyHits();
+    m_pass = std::move(pass);
+    m_pick = pick.handle();
+    m_loop = Loop::kPicking;
+    m_cancelled = false;
+}
+
+TQ3ViewStatus View::endPicking()
+{
+    if (m_loop != Loop::kPicking)
+        fail(kQ3ErrorPickingNotStarted, "no picking loop is running in the view");
+    std::vector<PickHit> hits = std::move(static_cast<PickPass&>(*m_pass).hits());
+    const bool cancelled = m_cancelled;
+    const TQ3Object handle = m_pick;
+    endLoop();
+    Pick* pick = nullptr;
+    try {
+        pick = &lookup<Pick>(handle, "pick");
+    } catch (const Error&) {
+        fail(kQ3ErrorPickingLoopFailed, "the pick was disposed during the picking loop");
+    }
+    if (cancelled)
+        return kQ3ViewStatusCancelled;
+    pick->setHits(std::move(hits));
+    return kQ3ViewStatusDone;
+}
+
 void View::endLoop()
 {
     m_pass.reset();
     m_writeTarget.reset();
+    m_pick = nullptr;
     m_loop = Loop::kNone;
     m_cancelled = false;
 }

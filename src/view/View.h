@@ -27,6 +27,7 @@ class Group;
 struct GraphicsState;
 class OffscreenRenderer;
 class Pass;
+class Pick;
 class Renderer;
 
 /// What a writing loop (Q3View_StartWriting) sends objects to; io/File
@@ -133,6 +134,18 @@ public:
     /// Throws kQ3ErrorWriteStateInactive outside a writing loop.
     TQ3ViewStatus endWriting();
 
+    /// Starts a picking loop for `pick` (QD3DPick.h): kQ3ErrorViewIsStarted
+    /// inside a loop; for window picks kQ3ErrorDrawContextNotSet, then
+    /// kQ3ErrorCameraNotSet. Empties the pick's hit list and tests against
+    /// a copy of its settings.
+    void startPicking(Pick& pick);
+    /// Ends it and hands the hits to the pick (looked up again by handle,
+    /// since it may have been disposed: kQ3ErrorPickingLoopFailed then):
+    /// kQ3ViewStatusDone, or kQ3ViewStatusCancelled after cancel() with the
+    /// hit list left empty. Throws kQ3ErrorPickingNotStarted outside a
+    /// picking loop.
+    TQ3ViewStatus endPicking();
+
     /// Makes the running loop's end report kQ3ViewStatusCancelled; until then
     /// submitted shapes are ignored. Does nothing outside a loop.
     void cancel();
@@ -170,7 +183,7 @@ public:
     Ref<Geometry> decompose(const Geometry& geometry);
 
 private:
-    enum class Loop { kNone, kRendering, kBoundingBox, kBoundingSphere, kWriting };
+    enum class Loop { kNone, kRendering, kBoundingBox, kBoundingSphere, kWriting, kPicking };
 
     /// The rendering loop's destination, read from the draw context at its
     /// start (changes to the draw context affect the next loop).
@@ -205,6 +218,9 @@ private:
     std::unique_ptr<nurbs::TessellatedCurve> m_curveScratch;
     std::unique_ptr<Pass> m_pass;
     std::shared_ptr<WriteTarget> m_writeTarget;
+    /// The pick of a picking loop, as a handle: it is not shared, so the
+    /// view cannot keep it alive and checks it is still live at the end.
+    TQ3Object m_pick = nullptr;
     std::unique_ptr<OffscreenRenderer> m_offscreen;
     Destination m_destination;
 };
