@@ -12,6 +12,7 @@
 #include "QD3DIO.h"
 #include "QD3DLight.h"
 #include "QD3DMath.h"
+#include "QD3DPick.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DShader.h"
