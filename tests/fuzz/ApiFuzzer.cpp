@@ -41,6 +41,7 @@
 #include "QD3DGeometry.h"
 #include "QD3DLight.h"
 #include "QD3DMath.h"
+#include "QD3DPick.h"
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DGroup.h"
@@ -201,8 +202,8 @@ bool sameBytes(const T& a, const T& b)
 enum class Kind { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                   kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader, kLight, kGroup,
                   kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch, kGeneralPolygon,
-                  kPolyhedron, kTriGrid, kMarker, kPixmapMarker, kViewHints };
-constexpr int kKindCount = 33;
+                  kPolyhedron, kTriGrid, kMarker, kPixmapMarker, kViewHints, kPick };
+constexpr int kKindCount = 34;
 constexpr bool isQuadric(Kind kind) { return kind >= Kind::kBox && kind <= Kind::kTorus; }
 // The kinds Q3Geometry_GetDecomposed returns NULL for without an error.
 constexpr bool isPrimitiveKind(Kind kind)
@@ -642,6 +643,7 @@ private:
         case Op::kPolygons2: polygons2(); break;
         case Op::kPixmapMarkers: pixmapMarkers(); break;
         case Op::kViewHints: viewHints(); break;
+        case Op::kPicking: picking(); break;
         case Op::kCount: break;
         }
     }
@@ -2378,6 +2380,185 @@ private:
     // QD3DIO.h's view hints: New from a view, then one Set or Get call with
     // picked objects and input values; a Set that fails must leave the edit
     // index as it was, and every Get's objects are released.
+    // QD3DPick.h: picks made from raw data, every setter and getter (a
+    // failed Set leaves the data as it was), picking loops around the other
+    // ops' submits, and every hit's details read back (the valid mask never
+    // exceeds the pick's mask; references returned are given back).
+    void picking()
+    {
+        const std::uint8_t call = m_in.u8() % 8;
+        const bool nullArg = m_in.u8() == 0;
+        if (call == 0) {
+            TQ3PickData common{};
+            setRaw(common.sort, enumValue(3));
+            common.mask = m_in.u8() < 200 ? (m_in.u32() & 0x3FF) : m_in.u32();
+            common.numHitsToReturn = m_in.u8() % 4;
+            TQ3Object made = nullptr;
+            switch (m_in.u8() % 3) {
+            case 0: {
+                TQ3WindowPointPickData d{common, {m_in.value(), m_in.value()}, m_in.value(), m_in.value()};
+                made = OBJECT(Q3WindowPointPick_New(nullArg ? nullptr : &d));
+                break;
+            }
+            case 1: {
+                TQ3WindowRectPickData d{common, {{m_in.value(), m_in.value()}, {m_in.value(), m_in.value()}}};
+                made = OBJECT(Q3WindowRectPick_New(nullArg ? nullptr : &d));
+                break;
+            }
+            default: {
+                TQ3WorldRayPickData d{common,
+                                      {{m_in.value(), m_in.value(), m_in.value()},
+                                       {m_in.value(), m_in.value(), m_in.value()}},
+                                      m_in.value(),
+                                      m_in.value()};
+                made = OBJECT(Q3WorldRayPick_New(nullArg ? nullptr : &d));
+                break;
+            }
+            }
+            if (made != nullptr) {
+                hold(made, Kind::kPick);
+                TQ3PickData got{};
+                STATUS(Q3Pick_GetData(made, &got));
+                require(got.mask == common.mask && got.numHitsToReturn == common.numHitsToReturn, "Q3Pick_GetData",
+                        "differs from what the pick was made with");
+            }
+            return;
+        }
+        const TQ3Object pick = this->pick(Kind::kPick);
+        switch (call) {
+        case 1: {
+            TQ3WindowPointPickData point;
+            TQ3WindowRectPickData rect;
+            TQ3WorldRayPickData ray;
+            std::memset(&point, 0xA5, sizeof point);
+            std::memset(&rect, 0xA5, sizeof rect);
+            std::memset(&ray, 0xA5, sizeof ray);
+            const bool gotPoint = STATUS(Q3WindowPointPick_GetData(pick, &point)) == kQ3Success;
+            const bool gotRect = STATUS(Q3WindowRectPick_GetData(pick, &rect)) == kQ3Success;
+            const bool gotRay = STATUS(Q3WorldRayPick_GetData(pick, &ray)) == kQ3Success;
+            const float value = m_in.value();
+            TQ3Status status = kQ3Success;
+            switch (m_in.u8() % 6) {
+            case 0: status = STATUS(Q3Pick_SetVertexTolerance(pick, value)); break;
+            case 1: status = STATUS(Q3Pick_SetEdgeTolerance(pick, value)); break;
+            case 2: {
+                const TQ3Point2D p{value, m_in.value()};
+                status = STATUS(Q3WindowPointPick_SetPoint(pick, nullArg ? nullptr : &p));
+                break;
+            }
+            case 3: {
+                const TQ3Area a{{value, m_in.value()}, {m_in.value(), m_in.value()}};
+                status = STATUS(Q3WindowRectPick_SetRect(pick, nullArg ? nullptr : &a));
+                break;
+            }
+            case 4: {
+                const TQ3Ray3D r{{value, m_in.value(), m_in.value()}, {m_in.value(), m_in.value(), m_in.value()}};
+                status = STATUS(Q3WorldRayPick_SetRay(pick, nullArg ? nullptr : &r));
+                break;
+            }
+            default: {
+                TQ3PickData d{};
+                setRaw(d.sort, enumValue(3));
+                d.mask = m_in.u8() < 200 ? (m_in.u32() & 0x3FF) : m_in.u32();
+                d.numHitsToReturn = m_in.u8() % 4;
+                status = STATUS(Q3Pick_SetData(pick, nullArg ? nullptr : &d));
+                break;
+            }
+            }
+            if (status != kQ3Success) {
+                TQ3WindowPointPickData point2;
+                TQ3WindowRectPickData rect2;
+                TQ3WorldRayPickData ray2;
+                std::memset(&point2, 0xA5, sizeof point2);
+                std::memset(&rect2, 0xA5, sizeof rect2);
+                std::memset(&ray2, 0xA5, sizeof ray2);
+                if (gotPoint && STATUS(Q3WindowPointPick_GetData(pick, &point2)) == kQ3Success)
+                    require(sameBytes(point, point2), "Q3WindowPointPick_Set*", "failed but changed the pick");
+                if (gotRect && STATUS(Q3WindowRectPick_GetData(pick, &rect2)) == kQ3Success)
+                    require(sameBytes(rect, rect2), "Q3WindowRectPick_Set*", "failed but changed the pick");
+                if (gotRay && STATUS(Q3WorldRayPick_GetData(pick, &ray2)) == kQ3Success)
+                    require(sameBytes(ray, ray2), "Q3WorldRayPick_Set*", "failed but changed the pick");
+            }
+            return;
+        }
+        case 2: {
+            float tolerance = 0.0f;
+            TQ3Point2D point{};
+            TQ3Area area{};
+            TQ3Ray3D ray{};
+            TQ3PickData data{};
+            QUERY(Q3Pick_GetType(pick), TQ3ObjectType{kQ3ObjectTypeInvalid});
+            STATUS(Q3Pick_GetVertexTolerance(pick, nullArg ? nullptr : &tolerance));
+            STATUS(Q3Pick_GetEdgeTolerance(pick, nullArg ? nullptr : &tolerance));
+            STATUS(Q3WindowPointPick_GetPoint(pick, nullArg ? nullptr : &point));
+            STATUS(Q3WindowRectPick_GetRect(pick, nullArg ? nullptr : &area));
+            STATUS(Q3WorldRayPick_GetRay(pick, nullArg ? nullptr : &ray));
+            STATUS(Q3Pick_GetData(pick, nullArg ? nullptr : &data));
+            return;
+        }
+        case 3: {
+            const TQ3Object view = this->pick(Kind::kView);
+            if (m_loops >= kMaxLoops)
+                return;
+            ++m_loops;
+            STATUS(Q3View_StartPicking(view, pick));
+            return;
+        }
+        case 4:
+            VIEWSTATUS(Q3View_EndPicking(this->pick(Kind::kView)));
+            return;
+        case 5: {
+            unsigned long count = 0;
+            TQ3PickData data{};
+            if (STATUS(Q3Pick_GetNumHits(pick, &count)) != kQ3Success ||
+                STATUS(Q3Pick_GetData(pick, &data)) != kQ3Success)
+                return;
+            require(data.numHitsToReturn == 0 || count <= data.numHitsToReturn, "Q3Pick_GetNumHits",
+                    "more hits than numHitsToReturn");
+            const std::uint32_t raw = m_in.u32();
+            const unsigned long index = m_in.u8() < 200 && count != 0 ? raw % count : raw;
+            TQ3PickDetail valid = 0;
+            if (STATUS(Q3Pick_GetPickDetailValidMask(pick, index, nullArg ? nullptr : &valid)) != kQ3Success)
+                return;
+            require((valid & ~data.mask) == 0 && (valid & kQ3PickDetailMaskShapePart) == 0,
+                    "Q3Pick_GetPickDetailValidMask", "reports a detail the pick did not ask for");
+            const TQ3PickDetail asked = m_in.u8() < 200 ? (1ul << (m_in.u8() % 10)) : m_in.u32();
+            union {
+                unsigned long id;
+                TQ3HitPath path;
+                TQ3Object object;
+                TQ3Matrix4x4 matrix;
+                TQ3Point3D xyz;
+                float distance;
+                TQ3Vector3D normal;
+                TQ3PickParts part;
+                TQ3Param2D uv;
+            } out;
+            std::memset(&out, 0, sizeof out);
+            if (STATUS(Q3Pick_GetPickDetailData(pick, index, asked, &out)) != kQ3Success)
+                return;
+            require((valid & asked) == asked, "Q3Pick_GetPickDetailData", "gave a detail that is not valid");
+            if (asked == kQ3PickDetailMaskObject)
+                STATUS(Q3Object_Dispose(out.object));
+            if (asked == kQ3PickDetailMaskPath) {
+                require(out.path.rootGroup != nullptr && out.path.depth != 0, "Q3Pick_GetPickDetailData",
+                        "gave an empty path");
+                STATUS(Q3HitPath_EmptyData(&out.path));
+            }
+            return;
+        }
+        case 6: {
+            STATUS(Q3Pick_EmptyHitList(pick));
+            TQ3HitPath empty{nullptr, 0, nullptr};
+            STATUS(Q3HitPath_EmptyData(nullArg ? nullptr : &empty));
+            return;
+        }
+        default:
+            QUERY(Q3Pick_GetType(pick), TQ3ObjectType{kQ3ObjectTypeInvalid});
+            return;
+        }
+    }
+
     void viewHints()
     {
         const std::uint8_t call = m_in.u8() % 12;

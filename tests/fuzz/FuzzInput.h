@@ -82,6 +82,7 @@ enum class Op : std::uint8_t {
     kPolygons2,
     kPixmapMarkers,
     kViewHints,
+    kPicking,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

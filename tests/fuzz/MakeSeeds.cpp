@@ -21,7 +21,7 @@ using q3fuzz::Op;
 enum Kind : std::uint8_t { kCurve, kPolyLine, kLine, kPoint, kStyle, kTransform, kAttributeSet, kCamera,
                            kDrawContext, kRenderer, kView, kTriangle, kPolygon, kTriMesh, kOtherStyle, kShader,
                            kLight, kGroup, kBox, kCone, kCylinder, kDisk, kEllipse, kEllipsoid, kTorus, kMesh, kPatch,
-                           kGeneralPolygon, kPolyhedron, kTriGrid, kMarker, kPixmapMarker, kViewHints };
+                           kGeneralPolygon, kPolyhedron, kTriGrid, kMarker, kPixmapMarker, kViewHints, kPick };
 
 enum Style : std::uint8_t { kConstant = 0, kWorld = 1, kScreen = 2, kBadMethod = 3 };
 
@@ -1130,6 +1130,37 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kViewHints).u8(0).anyHeld(0);
         s.op(Op::kDuplicate).u8(kViewHints).held();
         s.dispose(kViewHints);
+    }
+    // picking(): a world-ray, a window-point and a window-rect pick, each run
+    // in a picking loop over a point and a line, every detail of the first
+    // hit read; then the getters, bad Sets (NaN tolerance, inverted rect,
+    // zero ray), an end without a start and a stray handle.
+    {
+        Seed& s = add("picking");
+        s.scene();
+        s.op(Op::kNewOtherGeometry).u8(0).u8(0).value(0).value(0).value(0);
+        s.op(Op::kNewOtherGeometry).u8(1).u8(0).value(-1).value(0).value(0).value(1).value(0).value(0);
+        s.op(Op::kPicking).u8(0).u8(1).u8(1).u8(0).u32(0x3FF).u8(0).u8(2);
+        s.value(0).value(0).value(5).value(0).value(0).value(-1).value(0.5f).value(0.5f);
+        s.op(Op::kPicking).u8(0).u8(1).u8(1).u8(0).u32(0x3FF).u8(0).u8(0).value(32).value(32).value(2).value(2);
+        s.op(Op::kPicking).u8(0).u8(1).u8(2).u8(0).u32(0x3FF).u8(1).u8(1).value(0).value(0).value(31.75f).value(31.75f);
+        for (std::uint8_t w = 0; w < 3; ++w) {
+            s.op(Op::kPicking).u8(3).u8(1).held(w).held();
+            s.submitHeld(kPoint).submitHeld(kLine);
+            s.op(Op::kPicking).u8(4).u8(1).held(w).held();
+            for (std::uint8_t bit = 0; bit < 10; ++bit)
+                s.op(Op::kPicking).u8(5).u8(1).held(w).u32(0).u8(0).u8(0).u8(bit);
+            s.op(Op::kPicking).u8(5).u8(1).held(w).u32(0xFFFFFFFFu).u8(255);
+        }
+        s.op(Op::kPicking).u8(2).u8(1).held(0).op(Op::kPicking).u8(2).u8(0).held(1);
+        s.op(Op::kPicking).u8(1).u8(1).held(0).special(0).u8(0);
+        s.op(Op::kPicking).u8(1).u8(1).held(1).value(1).u8(2).value(2);
+        s.op(Op::kPicking).u8(1).u8(1).held(2).value(5).u8(3).value(0).value(1).value(1);
+        s.op(Op::kPicking).u8(1).u8(1).held(0).value(0).u8(4).value(0).value(0).value(0).value(0).value(0);
+        s.op(Op::kPicking).u8(1).u8(1).held(0).value(0).u8(5).u8(9).u8(0).u32(1).u8(1);
+        s.op(Op::kPicking).u8(6).u8(0).held(0).op(Op::kPicking).u8(7).u8(1).stray();
+        s.op(Op::kPicking).u8(4).u8(1).held(0).held();
+        s.dispose(kPick);
     }
     // The curve tools (Q3NURBCurveTools.h) on a retained curve and on data: every
     // call once with good arguments, then NaN, a parameter outside the domain, an
