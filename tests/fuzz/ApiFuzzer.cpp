@@ -2508,6 +2508,11 @@ private:
             VIEWSTATUS(Q3View_EndPicking(this->pick(Kind::kView)));
             return;
         case 5: {
+            // Every byte is read before the calls, so a failing one leaves
+            // the rest of the input decoding as written.
+            const std::uint32_t raw = m_in.u32();
+            const bool inRange = m_in.u8() < 200;
+            const TQ3PickDetail asked = m_in.u8() < 200 ? (1ul << (m_in.u8() % 10)) : m_in.u32();
             unsigned long count = 0;
             TQ3PickData data{};
             if (STATUS(Q3Pick_GetNumHits(pick, &count)) != kQ3Success ||
@@ -2515,14 +2520,12 @@ private:
                 return;
             require(data.numHitsToReturn == 0 || count <= data.numHitsToReturn, "Q3Pick_GetNumHits",
                     "more hits than numHitsToReturn");
-            const std::uint32_t raw = m_in.u32();
-            const unsigned long index = m_in.u8() < 200 && count != 0 ? raw % count : raw;
+            const unsigned long index = inRange && count != 0 ? raw % count : raw;
             TQ3PickDetail valid = 0;
             if (STATUS(Q3Pick_GetPickDetailValidMask(pick, index, nullArg ? nullptr : &valid)) != kQ3Success)
                 return;
             require((valid & ~data.mask) == 0 && (valid & kQ3PickDetailMaskShapePart) == 0,
                     "Q3Pick_GetPickDetailValidMask", "reports a detail the pick did not ask for");
-            const TQ3PickDetail asked = m_in.u8() < 200 ? (1ul << (m_in.u8() % 10)) : m_in.u32();
             union {
                 unsigned long id;
                 TQ3HitPath path;

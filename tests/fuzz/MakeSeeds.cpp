@@ -1142,15 +1142,15 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kNewOtherGeometry).u8(1).u8(0).value(-1).value(0).value(0).value(1).value(0).value(0);
         s.op(Op::kPicking).u8(0).u8(1).u8(1).u8(0).u32(0x3FF).u8(0).u8(2);
         s.value(0).value(0).value(5).value(0).value(0).value(-1).value(0.5f).value(0.5f);
-        s.op(Op::kPicking).u8(0).u8(1).u8(1).u8(0).u32(0x3FF).u8(0).u8(0).value(32).value(32).value(2).value(2);
-        s.op(Op::kPicking).u8(0).u8(1).u8(2).u8(0).u32(0x3FF).u8(1).u8(1).value(0).value(0).value(31.75f).value(31.75f);
+        s.op(Op::kPicking).u8(0).u8(1).u8(1).u8(0).u32(0x3FF).u8(0).u8(0).value(32).value(32).value(1000).value(1000);
+        s.op(Op::kPicking).u8(0).u8(1).u8(2).u8(0).u32(0x3FF).u8(1).u8(1).value(0).value(0).value(1000).value(1000);
         for (std::uint8_t w = 0; w < 3; ++w) {
             s.op(Op::kPicking).u8(3).u8(1).held(w).held();
             s.submitHeld(kPoint).submitHeld(kLine);
             s.op(Op::kPicking).u8(4).u8(1).held(w).held();
             for (std::uint8_t bit = 0; bit < 10; ++bit)
                 s.op(Op::kPicking).u8(5).u8(1).held(w).u32(0).u8(0).u8(0).u8(bit);
-            s.op(Op::kPicking).u8(5).u8(1).held(w).u32(0xFFFFFFFFu).u8(255);
+            s.op(Op::kPicking).u8(5).u8(1).held(w).u32(0xFFFFFFFFu).u8(255).u8(0).u8(0);
         }
         s.op(Op::kPicking).u8(2).u8(1).held(0).op(Op::kPicking).u8(2).u8(0).held(1);
         s.op(Op::kPicking).u8(1).u8(1).held(0).special(0).u8(0);
