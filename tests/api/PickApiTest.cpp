@@ -976,4 +976,58 @@ TEST_F(PickRenderTest, WindowPointTolerancesAreInPixels)
     }
 }
 
+// Shapes of other kinds (a box, an ellipsoid, the article's curve, a
+// polyline), each drawn alone: every pixel it covers is picked as it, every
+// pixel two pixels clear of it picks nothing.
+TEST_F(PickRenderTest, EveryKindOfShapeIsPickedWhereItIsDrawn)
+{
+    TQ3BoxData box{{0.0f, -0.8f, -0.5f}, {0, 0, 1}, {1.2f, 0.3f, 0}, {-0.3f, 1.2f, 0}, nullptr, nullptr};
+    TQ3EllipsoidData ellipsoid{{2.0f, 0.6f, 0.0f}, {0, 0, 0.8f}, {0.9f, 0, 0}, {0, 0.7f, 0}, 0, 1, 0, 1,
+                               kQ3EndCapNone, nullptr, nullptr};
+    Listing1 listing1;
+    const TQ3NURBCurveData curve = listing1.data();
+    TQ3Vertex3D zigzag[4] = {{{-0.3f, 1.8f, 0}, nullptr}, {{0.5f, 1.2f, 0}, nullptr}, {{1.4f, 1.9f, 0}, nullptr},
+                             {{3.2f, -0.9f, 0}, nullptr}};
+    const TQ3PolyLineData polyLine{4, zigzag, nullptr, nullptr};
+    const TQ3GeometryObject shapes[] = {own(Q3Box_New(&box)), own(Q3Ellipsoid_New(&ellipsoid)),
+                                        own(Q3NURBCurve_New(&curve)), own(Q3PolyLine_New(&polyLine))};
+    for (TQ3GeometryObject shape : shapes) {
+        Pixmap image(kWidth, kHeight);
+        TestView tv(image.pixmap());
+        auto scene = [&](TQ3ViewObject v) { Q3Object_Submit(shape, v); };
+        ASSERT_EQ(tv.render(scene), kQ3ViewStatusDone);
+        TQ3WindowPointPickData data = pointData2(0, 0, 1.5f);
+        TQ3PickObject p = own(Q3WindowPointPick_New(&data));
+        auto lit = [&](int x, int y) {
+            const Rgba c = image.at(x, y);
+            return c.r + c.g + c.b > 0;
+        };
+        int inside = 0, outside = 0;
+        for (int y = 2; y + 2 < kHeight; y += 2)
+            for (int x = 2; x + 2 < kWidth; x += 2) {
+                bool clear = true;
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx)
+                        clear = clear && !lit(x + dx, y + dy);
+                if (!lit(x, y) && !clear)
+                    continue;
+                const TQ3Point2D at{x + 0.5f, y + 0.5f};
+                ASSERT_EQ(Q3WindowPointPick_SetPoint(p, &at), kQ3Success);
+                ASSERT_EQ(pick(tv.view(), p, scene), kQ3ViewStatusDone);
+                if (clear) {
+                    EXPECT_EQ(hits(p), 0u) << "type " << Q3Object_GetLeafType(shape) << " pixel " << x << ", " << y;
+                    ++outside;
+                    continue;
+                }
+                ASSERT_EQ(hits(p), 1u) << "type " << Q3Object_GetLeafType(shape) << " pixel " << x << ", " << y;
+                TQ3Object got = detail<TQ3Object>(p, 0, kQ3PickDetailMaskObject);
+                EXPECT_EQ(got, shape);
+                Q3Object_Dispose(got);
+                ++inside;
+            }
+        EXPECT_GT(inside, 10) << Q3Object_GetLeafType(shape);
+        EXPECT_GT(outside, 100) << Q3Object_GetLeafType(shape);
+    }
+}
+
 } // namespace
