@@ -220,6 +220,28 @@ typedef struct TQ3Bitmap {
     TQ3Endian bitOrder;
 } TQ3Bitmap;
 
+/* One image of a mipmap texture (QD3DShader.h): width x height pixels,
+ * rowBytes apart, starting offset bytes into the mipmap's storage. */
+typedef struct TQ3MipmapImage {
+    unsigned long width;
+    unsigned long height;
+    unsigned long rowBytes;
+    unsigned long offset;
+} TQ3MipmapImage;
+
+/* A mipmap texture's data (Q3MipmapTexture_New): one storage object holding
+ * every image; useMipmapping says whether mipmaps[1..] are given too (each
+ * half the size of the one before, down to 1 x 1); reserved must be 0. */
+typedef struct TQ3Mipmap {
+    TQ3StorageObject image;
+    TQ3Boolean useMipmapping;
+    TQ3PixelType pixelType;
+    TQ3Endian bitOrder;
+    TQ3Endian byteOrder;
+    unsigned long reserved;
+    TQ3MipmapImage mipmaps[32];
+} TQ3Mipmap;
+
 /* ---- Areas and bounds --------------------------------------------------- */
 
 typedef struct TQ3Area { TQ3Point2D min, max; } TQ3Area;

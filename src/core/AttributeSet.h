@@ -54,6 +54,7 @@ public:
     std::optional<float> specularControl() const { return find<float>(kQ3AttributeTypeSpecularControl); }
     std::optional<TQ3Vector3D> normal() const { return find<TQ3Vector3D>(kQ3AttributeTypeNormal); }
     std::optional<TQ3Param2D> surfaceUV() const { return find<TQ3Param2D>(kQ3AttributeTypeSurfaceUV); }
+    std::optional<TQ3Param2D> shadingUV() const { return find<TQ3Param2D>(kQ3AttributeTypeShadingUV); }
     std::optional<TQ3Switch> highlightState() const { return find<TQ3Switch>(kQ3AttributeTypeHighlightState); }
 
 private:
@@ -106,6 +107,7 @@ public:
     std::optional<TQ3ColorRGB> transparencyColor() const { return m_values.transparencyColor(); }
     std::optional<TQ3Vector3D> normal() const { return m_values.normal(); }
     std::optional<TQ3Param2D> surfaceUV() const { return m_values.surfaceUV(); }
+    std::optional<TQ3Param2D> shadingUV() const { return m_values.shadingUV(); }
 
 private:
     static std::size_t slotIndex(TQ3AttributeType type);

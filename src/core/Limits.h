@@ -64,6 +64,10 @@ constexpr std::size_t kMaxStorageBytes = (std::size_t{1} << 31) - 1;
 /// kMaxGroupNesting, the limit a group drawn from it meets anyway.
 constexpr std::size_t kMaxMetafileNesting = kMaxGroupNesting;
 
+/// The widest and tallest texture image, in pixels (QD3DShader.h's data
+/// rules): a decoded image is then at most 64 MiB.
+constexpr std::uint32_t kMaxTextureSize = 4096;
+
 /// The value substituted for an unreasonable c1 or c2: kQ3SubdivisionDefaultC1.
 constexpr float kSubdivisionDefault = 20.0f;
 

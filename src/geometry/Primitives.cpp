@@ -40,9 +40,17 @@ void VertexAttributes::inheritFrom(const AttributeSet* set)
     if (!hasNormal())
         if (const auto value = set->normal())
             normal = *value;
-    if (!hasUV())
-        if (const auto value = set->surfaceUV())
+    if (!hasUV() || uvIsShading) {
+        if (const auto value = set->surfaceUV()) {
             uv = *value;
+            uvIsShading = false;
+        } else if (!hasUV()) {
+            if (const auto shading = set->shadingUV()) {
+                uv = *shading;
+                uvIsShading = true;
+            }
+        }
+    }
 }
 
 void VertexAttributes::inherit(TQ3AttributeType type, const void* value)
@@ -61,8 +69,16 @@ void VertexAttributes::inherit(TQ3AttributeType type, const void* value)
             std::memcpy(&normal, value, sizeof normal);
         break;
     case kQ3AttributeTypeSurfaceUV:
-        if (!hasUV())
+        if (!hasUV() || uvIsShading) {
             std::memcpy(&uv, value, sizeof uv);
+            uvIsShading = false;
+        }
+        break;
+    case kQ3AttributeTypeShadingUV:
+        if (!hasUV()) {
+            std::memcpy(&uv, value, sizeof uv);
+            uvIsShading = true;
+        }
         break;
     default:
         break;

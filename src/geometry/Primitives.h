@@ -29,7 +29,11 @@ struct VertexAttributes {
     TQ3ColorRGB color{kNone, kNone, kNone};
     TQ3ColorRGB transparency{kNone, kNone, kNone};
     TQ3Vector3D normal{kNone, kNone, kNone};
+    /// The surface uv; where the vertex, its face and its geometry have
+    /// none, the shading uv (uvIsShading), which a surface uv met later in
+    /// the inheritance replaces.
     TQ3Param2D uv{kNone, kNone};
+    bool uvIsShading = false;
 
     bool hasColor() const { return color.r == color.r; }
     bool hasTransparency() const { return transparency.r == transparency.r; }

@@ -24,6 +24,7 @@ const std::vector<ClassIO>& classes()
         addCameraClasses(all);
         addPixmapMarkerClasses(all);
         addViewHintsClasses(all);
+        addTextureClasses(all);
         addExternalReferenceClasses(all);
         return all;
     }();

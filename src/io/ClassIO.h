@@ -75,6 +75,8 @@ void addPixmapMarkerClasses(std::vector<ClassIO>& table);
 void addExternalReferenceClasses(std::vector<ClassIO>& table);
 /// ViewHints and its image subobjects (ViewHintsIO.cpp).
 void addViewHintsClasses(std::vector<ClassIO>& table);
+/// Pixmap and mipmap textures and the texture shader (TextureIO.cpp).
+void addTextureClasses(std::vector<ClassIO>& table);
 
 /// Reading one file: builds objects from nodes, resolving references once
 /// each (so two references give one object) and refusing cycles.

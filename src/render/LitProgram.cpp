@@ -30,8 +30,12 @@ namespace q3 {
 
 namespace {
 
+// The first source string: the version, then (for the textured variant) the
+// TEXTURED switch, both before anything else as GLSL requires.
+constexpr const char* kVersion = "#version 120\n";
+constexpr const char* kTexturedSwitch = "#define TEXTURED 1\n";
+
 constexpr const char* kShade = R"(
-#version 120
 #define MAX_LIGHTS 32
 uniform int lightCount;
 uniform int lightKind[MAX_LIGHTS];
@@ -56,6 +60,9 @@ uniform int perPixel;
 uniform int flipBack;
 varying vec3 worldPosition;
 varying vec3 worldNormal;
+#ifdef TEXTURED
+uniform sampler2D surfaceTexture;
+#endif
 
 vec3 shade(vec3 p, vec3 n, vec3 od)
 {
@@ -115,6 +122,30 @@ void main()
     vec4 w = localToWorld * gl_Vertex;
     worldPosition = w.xyz / w.w;
     worldNormal = normalToWorld * gl_Normal;
+#ifdef TEXTURED
+    // The texel takes the place of the diffuse colour: the ambient and
+    // diffuse light (with Od = gl_Color) goes in the primary colour, to be
+    // multiplied by the texel; the specular light (shade with Od = 0) in the
+    // secondary colour, added after.
+    gl_TexCoord[0] = gl_MultiTexCoord0;
+    if (perPixel == 1) {
+        gl_FrontColor = gl_Color;
+        gl_BackColor = gl_Color;
+    } else {
+        vec3 n = normalize(worldNormal);
+        vec3 specular = shade(worldPosition, n, vec3(0.0));
+        gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb) - specular, 1.0);
+        gl_FrontSecondaryColor = vec4(specular, 1.0);
+        if (flipBack == 1) {
+            vec3 backSpecular = shade(worldPosition, -n, vec3(0.0));
+            gl_BackColor = vec4(shade(worldPosition, -n, gl_Color.rgb) - backSpecular, 1.0);
+            gl_BackSecondaryColor = vec4(backSpecular, 1.0);
+        } else {
+            gl_BackColor = gl_FrontColor;
+            gl_BackSecondaryColor = gl_FrontSecondaryColor;
+        }
+    }
+#else
     if (perPixel == 1) {
         gl_FrontColor = gl_Color;
         gl_BackColor = gl_Color;
@@ -123,12 +154,24 @@ void main()
         gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
         gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
     }
+#endif
 }
 )";
 
 constexpr const char* kFragment = R"(
 void main()
 {
+#ifdef TEXTURED
+    vec3 texel = texture2D(surfaceTexture, gl_TexCoord[0].st).rgb;
+    if (perPixel == 1) {
+        vec3 n = normalize(worldNormal);
+        if (flipBack == 1 && !gl_FrontFacing)
+            n = -n;
+        gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
+    } else {
+        gl_FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
+    }
+#else
     if (perPixel == 1) {
         vec3 n = normalize(worldNormal);
         if (flipBack == 1 && !gl_FrontFacing)
@@ -137,14 +180,15 @@ void main()
     } else {
         gl_FragColor = gl_Color;
     }
+#endif
 }
 )";
 
-GLuint compile(GLenum kind, const char* body, std::string& error)
+GLuint compile(GLenum kind, const char* body, bool textured, std::string& error)
 {
     const GLuint shader = glCreateShader(kind);
-    const char* sources[2] = {kShade, body};
-    glShaderSource(shader, 2, sources, nullptr);
+    const char* sources[4] = {kVersion, textured ? kTexturedSwitch : "", kShade, body};
+    glShaderSource(shader, 4, sources, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -160,12 +204,12 @@ GLuint compile(GLenum kind, const char* body, std::string& error)
 
 } // namespace
 
-bool LitProgram::build(std::string& error)
+bool LitProgram::build(std::string& error, bool textured)
 {
-    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertex, error);
+    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertex, textured, error);
     if (vertex == 0)
         return false;
-    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragment, error);
+    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragment, textured, error);
     if (fragment == 0) {
         glDeleteShader(vertex);
         return false;
@@ -207,6 +251,12 @@ bool LitProgram::build(std::string& error)
     m_normalToWorld = at("normalToWorld");
     m_perPixel = at("perPixel");
     m_flipBack = at("flipBack");
+    if (textured) {
+        // The texture is bound to unit 0.
+        glUseProgram(m_program);
+        glUniform1i(at("surfaceTexture"), 0);
+        glUseProgram(0);
+    }
     return true;
 }
 

@@ -19,8 +19,10 @@ namespace q3 {
 class LitProgram {
 public:
     /// Compiles and links in the current context; false (with the log in
-    /// error) if the driver refuses it.
-    bool build(std::string& error);
+    /// error) if the driver refuses it. The textured variant takes the
+    /// diffuse colour from the texture bound to unit 0 at gl_TexCoord[0]
+    /// (OffscreenRenderer::drawLitTriangles says how).
+    bool build(std::string& error, bool textured = false);
     /// Deletes the program in the current context (when it is destroyed with
     /// its context, forgets it).
     void release();

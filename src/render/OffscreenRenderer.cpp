@@ -180,6 +180,7 @@ struct DrawRequest {
     const float* rgb = nullptr; // per vertex, or null for `color`
     const float* normals = nullptr; // lit triangles: per vertex
     const SurfaceShading* shading = nullptr; // lit triangles
+    const float* st = nullptr; // texture coordinates per vertex, or null
     std::size_t vertexCount = 0;
     bool indexed = false; // else the vertices in order
     const std::uint32_t* indices = nullptr;
@@ -266,6 +267,7 @@ public:
     RenderResult drawPixmap(const float* anchor, const PixmapImage& image);
     RenderResult setLighting(const LightingSetup& lighting);
     RenderResult setFaceOptions(const FaceOptions& faces);
+    RenderResult setTexture(const TextureImage* texture);
     RenderResult endFrame();
     void cancelFrame();
 
@@ -300,6 +302,7 @@ private:
         float x, y, z;
         float r, g, b;
         float nx, ny, nz;
+        float s, t;
     };
 
     // A plain command's vertex (see m_positions).
@@ -308,6 +311,17 @@ private:
     };
 
     static constexpr std::uint32_t kUnlit = std::numeric_limits<std::uint32_t>::max();
+    static constexpr std::uint32_t kUntextured = std::numeric_limits<std::uint32_t>::max();
+
+    // A texture decoded to RGBA8 (R, G, B, A bytes, row 0 the top row, which
+    // OpenGL takes as t = 0), with its wrap modes.
+    struct BatchTexture {
+        std::vector<std::uint8_t> rgba;
+        std::uint32_t width = 0;
+        std::uint32_t height = 0;
+        bool clampS = false;
+        bool clampT = false;
+    };
 
     // first and count are vertices, or for an indexed command indices.
     // shading indexes m_shadings (kUnlit: drawn with the colours as they are).
@@ -322,6 +336,7 @@ private:
         float pointSize;
         std::uint32_t matrixIndex;
         std::uint32_t shading;
+        std::uint32_t texture; // indexes m_textures, or kUntextured
         FaceOptions faces;
         RgbColor color;
         GLint first;
@@ -331,7 +346,7 @@ private:
         {
             return primitive == other.primitive && indexed == other.indexed && smooth == other.smooth &&
                    plain == other.plain && pointSize == other.pointSize && matrixIndex == other.matrixIndex &&
-                   shading == other.shading && faces == other.faces &&
+                   shading == other.shading && texture == other.texture && faces == other.faces &&
                    (!plain || (color.r == other.color.r && color.g == other.color.g && color.b == other.color.b));
         }
     };
@@ -342,6 +357,8 @@ private:
     void startFrameInGl();
     RenderResult flush(bool finish);
     void resetBatch();
+    // Binds m_textures[index], uploading it first if this flush has not.
+    void bindTexture(std::uint32_t index);
     template <class T>
     static void reserve(std::unique_ptr<T[]>& storage, std::size_t& capacity, std::size_t used, std::size_t needed);
 
@@ -377,6 +394,14 @@ private:
     std::vector<SurfaceShading> m_shadings;
     FaceOptions m_faces;
     LitProgram m_program;
+    LitProgram m_texturedProgram;
+    // The batch's textures; m_currentTexture is the one setTexture chose
+    // (kUntextured: none), kept as entry 0 when a batch is flushed.
+    std::vector<BatchTexture> m_textures;
+    std::uint32_t m_currentTexture = kUntextured;
+    // OpenGL names of the uploaded textures of the batch being flushed, by
+    // m_textures index (0: not uploaded yet).
+    std::vector<GLuint> m_textureNames;
 };
 
 void pinRenderingEnvironment()
@@ -451,6 +476,7 @@ void OffscreenRenderer::Impl::destroyContext()
     OSMesaDestroyContext(m_context);
     m_context = nullptr;
     m_program.forget();
+    m_texturedProgram.forget();
 }
 
 // Every value here is OpenGL's default except the shade model; they are set
@@ -485,6 +511,10 @@ void OffscreenRenderer::Impl::initializeState()
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
     glEnableClientState(GL_NORMAL_ARRAY);
+    // Textured triangles: the interpolated colour times the texel.
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glActiveTexture(GL_TEXTURE0);
     // The lit program gives back faces their own colour (flipped normals).
     glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
     glFrontFace(GL_CCW);
@@ -525,6 +555,7 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
     m_clearedInGl = false;
     m_lighting = LightingSetup{};
     m_faces = FaceOptions{};
+    m_currentTexture = kUntextured;
     resetBatch();
     m_matrices.clear();
     m_matrices.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
@@ -601,6 +632,9 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         return invalid("a vertex coordinate is NaN or infinite");
     if (r.rgb != nullptr && !allFinite(r.rgb, r.vertexCount * 3))
         return invalid("a vertex colour channel is NaN or infinite");
+    const bool textured = r.st != nullptr && m_currentTexture != kUntextured && r.primitive == Primitive::kTriangles;
+    if (textured && !allFinite(r.st, r.vertexCount * 2))
+        return invalid("a texture coordinate is NaN or infinite");
     if (r.shading != nullptr) {
         if (r.normals == nullptr)
             return invalid("lit triangles need normals");
@@ -622,7 +656,7 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
     // (m_positions). Interpolating a constant colour array does not always
     // give the constant itself (llvmpipe's perspective-correct interpolation
     // rounds), so smooth draws keep their colour array: same image either way.
-    const bool plain = r.rgb == nullptr && r.shading == nullptr && !r.smooth;
+    const bool plain = r.rgb == nullptr && r.shading == nullptr && !r.smooth && !textured;
     const std::size_t batched = plain ? m_positionCount : m_vertexCount;
     if ((batched > 0 && batched + r.vertexCount > kFlushVertexCount) ||
         (!m_indices.empty() && m_indices.size() + r.indexCount > kFlushIndexCount)) {
@@ -654,11 +688,14 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         Vertex* out = m_vertices.get() + base;
         const float* xyz = r.xyz;
         static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
+        static const float kNoST[2] = {0.0f, 0.0f};
         for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3) {
             const float* c = r.rgb != nullptr ? r.rgb + 3 * i : nullptr;
             const float* n = r.normals != nullptr ? r.normals + 3 * i : kNoNormal;
-            out[i] = c != nullptr ? Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2], n[0], n[1], n[2]}
-                                  : Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b, n[0], n[1], n[2]};
+            const float* st = textured ? r.st + 2 * i : kNoST;
+            out[i] = c != nullptr ? Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2], n[0], n[1], n[2], st[0], st[1]}
+                                  : Vertex{xyz[0],    xyz[1],    xyz[2], r.color.r, r.color.g, r.color.b,
+                                           n[0],      n[1],      n[2],   st[0],     st[1]};
         }
         m_vertexCount += r.vertexCount;
     }
@@ -669,8 +706,9 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         shading = std::uint32_t(m_shadings.size() - 1);
     }
     const FaceOptions faces = r.primitive == Primitive::kTriangles ? m_faces : FaceOptions{};
-    DrawCommand command{r.primitive, indexed, r.smooth, plain, r.pointSize, m_currentMatrix, shading, faces,
-                        plain ? r.color : RgbColor{}, 0, GLsizei(count)};
+    DrawCommand command{r.primitive, indexed, r.smooth, plain, r.pointSize, m_currentMatrix, shading,
+                        textured ? m_currentTexture : kUntextured, faces, plain ? r.color : RgbColor{}, 0,
+                        GLsizei(count)};
     if (indexed) {
         command.first = GLint(m_indices.size());
         for (std::size_t i = 0; i < r.indexCount; ++i)
@@ -875,7 +913,9 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             float loadedPointSize = -1.0f;
             int loadedShading = -1;
             std::uint32_t loadedSurface = kUnlit;
-            bool lightsLoaded = false;
+            bool loadedTexturedProgram = false;
+            bool lightsLoaded[2] = {false, false};
+            std::uint32_t loadedTexture = kUntextured;
             FaceOptions loadedFaces;
             glDisable(GL_CULL_FACE);
             glFrontFace(GL_CCW);
@@ -930,23 +970,39 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     glFrontFace(head.faces.clockwiseFront ? GL_CW : GL_CCW);
                     loadedFaces = head.faces;
                 }
-                if (head.shading != loadedSurface) {
+                if (head.texture != loadedTexture) {
+                    if (head.texture == kUntextured) {
+                        glDisable(GL_TEXTURE_2D);
+                        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+                    } else {
+                        bindTexture(head.texture);
+                        glEnable(GL_TEXTURE_2D);
+                        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+                        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &m_vertices.get()->s);
+                    }
+                    loadedTexture = head.texture;
+                }
+                const bool texturedProgram = head.texture != kUntextured;
+                if (head.shading != loadedSurface ||
+                    (head.shading != kUnlit && texturedProgram != loadedTexturedProgram)) {
                     if (head.shading == kUnlit) {
                         glUseProgram(0);
                     } else {
-                        if (!m_program.built()) {
+                        LitProgram& program = texturedProgram ? m_texturedProgram : m_program;
+                        if (!program.built()) {
                             std::string error;
-                            if (!m_program.build(error)) {
+                            if (!program.build(error, texturedProgram)) {
                                 result = RenderResult::failure(RenderStatus::kGraphicsError, error);
                                 break;
                             }
                         }
-                        m_program.use();
-                        if (!lightsLoaded) {
-                            m_program.setLighting(m_lighting);
-                            lightsLoaded = true;
+                        program.use();
+                        if (!lightsLoaded[texturedProgram]) {
+                            program.setLighting(m_lighting);
+                            lightsLoaded[texturedProgram] = true;
                         }
-                        m_program.setShading(m_shadings[head.shading]);
+                        program.setShading(m_shadings[head.shading]);
+                        loadedTexturedProgram = texturedProgram;
                     }
                     loadedSurface = head.shading;
                 }
@@ -977,6 +1033,13 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             }
         }
         glUseProgram(0);
+        glDisable(GL_TEXTURE_2D);
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        if (!m_textureNames.empty()) {
+            glDeleteTextures(GLsizei(m_textureNames.size()), m_textureNames.data());
+            m_textureNames.clear();
+        }
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glEnableClientState(GL_COLOR_ARRAY);
@@ -993,8 +1056,72 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
     return result;
 }
 
+// Texels are sampled nearest: linear filtering would blend neighbouring
+// texels with weights llvmpipe rounds in its own way, and nearest gives
+// images that the tests can check texel by texel. Only the first image is
+// uploaded (no mipmaps), for the same reason.
+void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
+{
+    if (m_textureNames.size() < m_textures.size())
+        m_textureNames.resize(m_textures.size(), 0);
+    GLuint& name = m_textureNames[index];
+    if (name != 0) {
+        glBindTexture(GL_TEXTURE_2D, name);
+        return;
+    }
+    const BatchTexture& texture = m_textures[index];
+    glGenTextures(1, &name);
+    glBindTexture(GL_TEXTURE_2D, name);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, texture.clampS ? GL_CLAMP_TO_EDGE : GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, texture.clampT ? GL_CLAMP_TO_EDGE : GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, GLsizei(texture.width), GLsizei(texture.height), 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, texture.rgba.data());
+}
+
+RenderResult OffscreenRenderer::Impl::setTexture(const TextureImage* texture)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "setTexture called outside a frame");
+    m_currentTexture = kUntextured;
+    if (texture == nullptr)
+        return RenderResult::success();
+    if (texture->pixels == nullptr)
+        return invalid("texture pixels are NULL");
+    const RenderResult valid = validatePixmapLayout(texture->layout);
+    if (!valid)
+        return valid;
+    if (texture->layout.width > kMaxImageSize || texture->layout.height > kMaxImageSize)
+        return invalid("texture is larger than " + std::to_string(kMaxImageSize) + " pixels");
+    BatchTexture decoded;
+    decoded.width = texture->layout.width;
+    decoded.height = texture->layout.height;
+    decoded.clampS = texture->clampS;
+    decoded.clampT = texture->clampT;
+    decoded.rgba.resize(std::size_t(decoded.width) * decoded.height * 4);
+    const PixelRect all{0, 0, int(decoded.width), int(decoded.height)};
+    const RenderResult read = readPixmapToRgba8(texture->pixels, texture->layout, all, decoded.rgba.data(),
+                                                std::size_t(decoded.width) * 4);
+    if (!read)
+        return read;
+    m_textures.push_back(std::move(decoded));
+    m_currentTexture = std::uint32_t(m_textures.size() - 1);
+    return RenderResult::success();
+}
+
 void OffscreenRenderer::Impl::resetBatch()
 {
+    // The current texture outlives the batch, as entry 0.
+    if (m_currentTexture != kUntextured) {
+        if (m_currentTexture != 0)
+            m_textures[0] = std::move(m_textures[m_currentTexture]);
+        m_textures.resize(1);
+        m_currentTexture = 0;
+    } else {
+        m_textures.clear();
+    }
     m_vertexCount = 0;
     m_positionCount = 0;
     m_indices.clear();
@@ -1168,9 +1295,11 @@ RenderResult OffscreenRenderer::drawPixmap(const float* anchor, const PixmapImag
 
 RenderResult OffscreenRenderer::drawElements(DrawMode mode, const float* xyz, const float* rgb,
                                              std::size_t vertexCount, const std::uint32_t* indices,
-                                             std::size_t indexCount, const RgbColor& color, bool smooth)
+                                             std::size_t indexCount, const RgbColor& color, bool smooth,
+                                             const float* st)
 {
     DrawRequest request = arrays(mode, xyz, rgb, vertexCount, color, 1.0f, smooth);
+    request.st = st;
     request.indexed = true;
     request.indices = indices;
     request.indexCount = indexCount;
@@ -1186,7 +1315,7 @@ RenderResult OffscreenRenderer::drawArrays(DrawMode mode, const float* xyz, cons
 RenderResult OffscreenRenderer::drawLitTriangles(const float* xyz, const float* normals, const float* rgb,
                                                  std::size_t vertexCount, const std::uint32_t* indices,
                                                  std::size_t indexCount, const RgbColor& color,
-                                                 const SurfaceShading& shading)
+                                                 const SurfaceShading& shading, const float* st)
 {
     DrawRequest request = arrays(Primitive::kTriangles, xyz, rgb, vertexCount, color, 1.0f, shading.interpolation != 0);
     request.indexed = true;
@@ -1194,6 +1323,7 @@ RenderResult OffscreenRenderer::drawLitTriangles(const float* xyz, const float* 
     request.indexCount = indexCount;
     request.normals = normals;
     request.shading = &shading;
+    request.st = st;
     return drawGuarded(*m_impl, request);
 }
 
@@ -1201,6 +1331,15 @@ RenderResult OffscreenRenderer::setLighting(const LightingSetup& lighting)
 {
     try {
         return m_impl->setLighting(lighting);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::setTexture(const TextureImage* texture)
+{
+    try {
+        return m_impl->setTexture(texture);
     } catch (const std::bad_alloc&) {
         return outOfMemory();
     }

@@ -65,6 +65,19 @@ struct PixmapImage {
     long yOffset = 0;
 };
 
+/// A texture for filled triangles (a QuickDraw 3D texture shader's image):
+/// `pixels` laid out as `layout` says (render/PixelConvert.h), row 0 at the
+/// top. A triangle vertex's texture coordinate (s, t) picks the texel in
+/// column floor(s * width) and row floor(t * height) counted from the top
+/// row (nearest sampling); outside 0..1 a coordinate wraps (repeats) or, when
+/// clamped, takes the edge texel. Alpha is not used.
+struct TextureImage {
+    const void* pixels = nullptr;
+    PixmapLayout layout;
+    bool clampS = false;
+    bool clampT = false;
+};
+
 /// The most lights a frame is lit by (kQ3ViewMaxLights).
 constexpr std::size_t kMaxLights = 32;
 
@@ -217,9 +230,13 @@ public:
     /// line and triangle; without, each takes the colour of its last vertex.
     /// Errors: those of the calls above, and kInvalidArgument for an index
     /// not below vertexCount or a non-finite rgb value.
+    /// With st (2 floats per vertex) and a current texture (setTexture),
+    /// triangles are textured: each pixel is its interpolated colour times
+    /// the texel (OpenGL's modulate); st is ignored for other primitives or
+    /// without a texture. Errors also: kInvalidArgument for a non-finite st.
     RenderResult drawElements(DrawMode mode, const float* xyz, const float* rgb, std::size_t vertexCount,
                               const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
-                              bool smooth);
+                              bool smooth, const float* st = nullptr);
     /// Draws count consecutive vertices as one primitive list (or one line
     /// strip), with per-vertex colours as drawElements.
     RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count,
@@ -251,9 +268,21 @@ public:
     /// normals holds a unit normal per vertex (3 floats, local coordinates),
     /// rgb the diffuse colours (or null: `color`). Errors as drawElements,
     /// and kInvalidArgument for a non-finite normal or shading value.
+    /// With st and a current texture, the texel takes the place of the
+    /// diffuse colour Od: lit at the vertices, a pixel is the interpolated
+    /// ambient and diffuse light (computed with rgb, clamped to 0..1) times
+    /// the texel plus the interpolated specular light; lit at every pixel,
+    /// the equations are evaluated with Od = rgb times the texel.
     RenderResult drawLitTriangles(const float* xyz, const float* normals, const float* rgb, std::size_t vertexCount,
                                   const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
-                                  const SurfaceShading& shading);
+                                  const SurfaceShading& shading, const float* st = nullptr);
+
+    /// The texture for the following draws that pass texture coordinates
+    /// (null: none). The image is decoded and copied now, so the caller's
+    /// pixels may go away after the call. Errors: kWrongState outside a
+    /// frame; kInvalidArgument for NULL pixels or an invalid layout (the
+    /// current texture is then none); kOutOfMemory.
+    RenderResult setTexture(const TextureImage* texture);
 
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;

@@ -42,10 +42,15 @@ protected:
     static Object* duplicateAs(const T& original)
     {
         Ref<T> copy = makeShared<T>();
-        copy->m_uvTransform = original.m_uvTransform;
-        copy->m_uBoundary = original.m_uBoundary;
-        copy->m_vBoundary = original.m_vBoundary;
+        copy->copyUVSettings(original);
         return copy.detach();
+    }
+    /// Takes the uv transform and boundaries of another shader.
+    void copyUVSettings(const Shader& original)
+    {
+        m_uvTransform = original.m_uvTransform;
+        m_uBoundary = original.m_uBoundary;
+        m_vBoundary = original.m_vBoundary;
     }
 
 private:

@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
+#include "QD3DShader.h"
 #include "QD3DStyle.h"
 #include "core/AttributeSet.h"
 #include "core/Limits.h"
@@ -34,6 +35,14 @@ struct DrawState {
     /// NULL); kQ3ObjectTypeInvalid until one is submitted, which draws
     /// surfaces unlit in their diffuse colours, as QuickDraw 3D does.
     TQ3ObjectType illumination = 0;
+    /// The surface shader in force (a texture shader), as it was when it
+    /// was submitted: its texture (a q3::Texture, held as a shared object so
+    /// that this header needs no shader header), uv transform and
+    /// boundaries. A null texture: no surface shader.
+    Ref<SharedObject> texture;
+    TQ3Matrix3x3 uvTransform{{{1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 1.0f}}};
+    TQ3ShaderUVBoundary uBoundary = kQ3ShaderUVBoundaryWrap;
+    TQ3ShaderUVBoundary vBoundary = kQ3ShaderUVBoundaryWrap;
 };
 
 } // namespace q3

@@ -4,6 +4,7 @@
 
 #include "geometry/Geometry.h"
 #include "shader/Shader.h"
+#include "shader/Texture.h"
 
 #include <glm/geometric.hpp>
 
@@ -114,6 +115,58 @@ void RenderPass::drawTriangleEdges(const MeshView& mesh, const float* rgb, const
     drawSegments(mesh, rgb, m_indices.data(), 3 * mesh.triangleCount, color, "drawing edges");
 }
 
+bool RenderPass::loadTexture()
+{
+    const DrawState& styles = state().draw;
+    if (!styles.texture)
+        return false;
+    const Texture& texture = static_cast<const Texture&>(*styles.texture);
+    const bool clampS = styles.uBoundary == kQ3ShaderUVBoundaryClamp;
+    const bool clampT = styles.vBoundary == kQ3ShaderUVBoundaryClamp;
+    if (m_loadedTexture == &texture && m_loadedTextureEdit == texture.editIndex() && m_loadedClampS == clampS &&
+        m_loadedClampT == clampT)
+        return true;
+    const TexturePixels pixels = texture.readImage();
+    TextureImage image;
+    image.pixels = pixels.bytes.data();
+    image.layout.width = pixels.width;
+    image.layout.height = pixels.height;
+    image.layout.rowBytes = std::uint32_t(pixels.rowBytes);
+    // Checked values of their enumerations (the texture's data rules).
+    image.layout.pixelType = PixelType(pixels.pixelType);
+    image.layout.byteOrder = ByteOrder(pixels.byteOrder);
+    image.clampS = clampS;
+    image.clampT = clampT;
+    m_loadedTexture = nullptr;
+    throwIfFailed(m_target.setTexture(&image), "setting the texture");
+    m_loadedTexture = &texture;
+    m_loadedTextureEdit = texture.editIndex();
+    m_loadedClampS = clampS;
+    m_loadedClampT = clampT;
+    return true;
+}
+
+const float* RenderPass::textureCoordinates(const MeshView& mesh)
+{
+    if (mesh.uvs == nullptr)
+        return nullptr;
+    for (std::size_t i = 0; i < 2 * mesh.vertexCount; ++i)
+        if (mesh.uvs[i] != mesh.uvs[i])
+            return nullptr;
+    if (!loadTexture())
+        return nullptr;
+    // (u, v, 1) times the uv transform (its third column unused); OpenGL's
+    // t runs down the image from its top row, v up from its bottom row.
+    const TQ3Matrix3x3& m = state().draw.uvTransform;
+    m_st.resize(2 * mesh.vertexCount);
+    for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
+        const float u = mesh.uvs[2 * i], v = mesh.uvs[2 * i + 1];
+        m_st[2 * i] = u * m.value[0][0] + v * m.value[1][0] + m.value[2][0];
+        m_st[2 * i + 1] = 1.0f - (u * m.value[0][1] + v * m.value[1][1] + m.value[2][1]);
+    }
+    return m_st.data();
+}
+
 void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
 {
     const DrawState& styles = state().draw;
@@ -154,12 +207,16 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
             drawTriangleEdges(mesh, rgb, color);
         } else {
             loadFaces();
+            // A texture takes the place of the diffuse colour.
+            const float* st = textureCoordinates(mesh);
+            const float* fillRgb = st != nullptr ? nullptr : rgb;
+            const RgbColor fillColor = st != nullptr ? RgbColor{1.0f, 1.0f, 1.0f} : color;
             if (styles.illumination == kQ3IlluminationTypeLambert || styles.illumination == kQ3IlluminationTypePhong)
-                drawLit(mesh, rgb, color, attributes);
+                drawLit(mesh, fillRgb, fillColor, attributes, st);
             else
-                throwIfFailed(m_target.drawElements(DrawMode::kTriangles, mesh.positions, rgb, mesh.vertexCount,
-                                                    mesh.triangles, 3 * mesh.triangleCount, color,
-                                                    styles.interpolation != kQ3InterpolationStyleNone),
+                throwIfFailed(m_target.drawElements(DrawMode::kTriangles, mesh.positions, fillRgb, mesh.vertexCount,
+                                                    mesh.triangles, 3 * mesh.triangleCount, fillColor,
+                                                    styles.interpolation != kQ3InterpolationStyleNone, st),
                               "drawing triangles");
         }
     } else if (!m_style.fillTriangles && mesh.edgeCount != 0) {
@@ -273,7 +330,7 @@ RenderLight toRenderLight(const LightSource& source)
 } // namespace
 
 void RenderPass::drawLit(const MeshView& mesh, const float* rgb, const RgbColor& color,
-                         const AttributeValues& attributes)
+                         const AttributeValues& attributes, const float* st)
 {
     const DrawState& styles = state().draw;
     if (!m_lightsLoaded) {
@@ -328,7 +385,7 @@ void RenderPass::drawLit(const MeshView& mesh, const float* rgb, const RgbColor&
             m_normals[3 * i + 2] = n.z;
         }
         throwIfFailed(m_target.drawLitTriangles(mesh.positions, m_normals.data(), rgb, mesh.vertexCount, mesh.triangles,
-                                                3 * mesh.triangleCount, color, shading),
+                                                3 * mesh.triangleCount, color, shading, st),
                       "drawing lit triangles");
         return;
     }
@@ -336,6 +393,7 @@ void RenderPass::drawLit(const MeshView& mesh, const float* rgb, const RgbColor&
     m_litPositions.resize(3 * corners);
     m_normals.resize(3 * corners);
     m_litColors.resize(rgb != nullptr ? 3 * corners : 0);
+    m_litST.resize(st != nullptr ? 2 * corners : 0);
     m_indices.resize(corners);
     for (std::size_t t = 0; t < mesh.triangleCount; ++t) {
         const std::uint32_t* v = mesh.triangles + 3 * t;
@@ -362,12 +420,16 @@ void RenderPass::drawLit(const MeshView& mesh, const float* rgb, const RgbColor&
                 if (rgb != nullptr)
                     m_litColors[3 * corner + d] = rgb[3 * v[k] + d];
             }
+            if (st != nullptr) {
+                m_litST[2 * corner] = st[2 * v[k]];
+                m_litST[2 * corner + 1] = st[2 * v[k] + 1];
+            }
             m_indices[corner] = std::uint32_t(corner);
         }
     }
     throwIfFailed(m_target.drawLitTriangles(m_litPositions.data(), m_normals.data(),
                                             rgb != nullptr ? m_litColors.data() : nullptr, corners, m_indices.data(),
-                                            corners, color, shading),
+                                            corners, color, shading, st != nullptr ? m_litST.data() : nullptr),
                   "drawing lit triangles");
 }
 

@@ -48,7 +48,9 @@ struct RenderStyle {
 /// Under a Lambert or Phong illumination shader, filled triangles are lit by
 /// the view's lights (render/LitProgram.cpp gives the equations), with the
 /// geometry's normals or, where it has none, its faces'; lines and points
-/// are drawn in their colours. The styles apply as QD3DStyle.h says: fill
+/// are drawn in their colours. Under a texture shader, filled triangles
+/// whose vertices all have a uv take their diffuse colour from its texture
+/// (QD3DShader.h, Q3TextureShader_New). The styles apply as QD3DStyle.h says: fill
 /// (filled, edges, points), backfacing (both, remove, flip), interpolation
 /// (none: one colour per triangle, vertex, pixel), orientation (which
 /// winding is the front), highlight (the highlight style's attributes over a
@@ -77,8 +79,19 @@ private:
     void drawVertices(const MeshView& mesh, const float* rgb, const RgbColor& color);
     /// The triangles as their edges (the mesh's, else every side).
     void drawTriangleEdges(const MeshView& mesh, const float* rgb, const RgbColor& color);
-    /// The triangles lit under the state's illumination shader.
-    void drawLit(const MeshView& mesh, const float* rgb, const RgbColor& color, const AttributeValues& attributes);
+    /// The triangles lit under the state's illumination shader (textured
+    /// with st, as textureCoordinates gives them, or not with null).
+    void drawLit(const MeshView& mesh, const float* rgb, const RgbColor& color, const AttributeValues& attributes,
+                 const float* st);
+    /// Hands the target the state's texture if it is not the one loaded
+    /// already; false when the state has none. Throws kQ3ErrorInvalidData
+    /// when the texture's storage no longer holds its image.
+    bool loadTexture();
+    /// The texture coordinates of the mesh's vertices under the state's
+    /// texture shader: each vertex's uv through the uv transform, v turned
+    /// to run down the image; null (untextured) without a texture shader or
+    /// when a vertex has no uv.
+    const float* textureCoordinates(const MeshView& mesh);
 
     OffscreenRenderer& m_target;
     RenderStyle m_style;
@@ -91,6 +104,12 @@ private:
     std::vector<float> m_litPositions;
     std::vector<float> m_litColors;
     std::vector<std::uint32_t> m_indices;
+    std::vector<float> m_st;
+    std::vector<float> m_litST;
+    const void* m_loadedTexture = nullptr;
+    unsigned long m_loadedTextureEdit = 0;
+    bool m_loadedClampS = false;
+    bool m_loadedClampT = false;
 };
 
 } // namespace q3

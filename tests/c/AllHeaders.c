@@ -48,6 +48,17 @@ static int styleShaderAndLightCalls(void)
     ok = ok && Q3IlluminationShader_GetType(phong) == kQ3IlluminationTypePhong;
     ok = ok && Q3SpotLight_GetOuterAngle(light, &outer) == kQ3Success && outer == 0.5f;
     ok = ok && Q3Light_GetType(light) == kQ3LightTypeSpot;
+    /* Textures: QD3D.h's TQ3Mipmap as C code fills it, a refused texture. */
+    {
+        TQ3Mipmap mipmap;
+        TQ3ColorRGB grey;
+        memset(&mipmap, 0, sizeof mipmap);
+        mipmap.useMipmapping = kQ3False;
+        mipmap.mipmaps[31].offset = 0;
+        ok = ok && Q3MipmapTexture_New(&mipmap) == NULL && Q3Error_Get(NULL) == kQ3ErrorNULLParameter;
+        ok = ok && Q3TextureShader_New(NULL) == NULL && Q3SurfaceShader_GetType(phong) == kQ3ObjectTypeInvalid;
+        ok = ok && Q3ColorRGB_Lerp(Q3ColorRGB_Set(&grey, 0.0f, 0.0f, 0.0f), &grey, 0.5f, &grey) == &grey;
+    }
     Q3Object_Dispose(fillStyle);
     Q3Object_Dispose(fogStyle);
     Q3Object_Dispose(phong);

@@ -2374,7 +2374,65 @@ private:
                                                       a.yOffset == b.yOffset && samePixmap(a.pixmap, b.pixmap) &&
                                                       a.pixmapMarkerAttributeSet == b.pixmapMarkerAttributeSet;
                                            });
+        texturesFrom(args);
         releaseStorage(args);
+    }
+
+    // QD3DShader.h's textures made from the same storage pixmap, reading no
+    // input of their own (so the seeds keep their meaning): a pixmap texture
+    // and a two-image mipmap texture go through the data rules; what is made
+    // is read back, set again (which must succeed), wrapped in a texture
+    // shader and disposed of; a colour routine runs on the pixmap's sizes.
+    void texturesFrom(const StoragePixmapArgs& args)
+    {
+        const TQ3StoragePixmap& p = args.pixmap;
+        TQ3Mipmap mipmap{};
+        mipmap.image = p.image;
+        setRaw(mipmap.useMipmapping, static_cast<std::int32_t>(p.width & 1) == 0 ? 1 : 0);
+        std::memcpy(&mipmap.pixelType, &p.pixelType, sizeof mipmap.pixelType);
+        std::memcpy(&mipmap.bitOrder, &p.bitOrder, sizeof mipmap.bitOrder);
+        std::memcpy(&mipmap.byteOrder, &p.byteOrder, sizeof mipmap.byteOrder);
+        mipmap.mipmaps[0] = TQ3MipmapImage{p.width, p.height, p.rowBytes, 0};
+        mipmap.mipmaps[1] = TQ3MipmapImage{p.width / 2, p.height / 2, p.rowBytes / 2, p.rowBytes * p.height};
+        const TQ3Object textures[2] = {OBJECT(Q3PixmapTexture_New(&p)), OBJECT(Q3MipmapTexture_New(&mipmap))};
+        for (TQ3Object texture : textures) {
+            if (texture == nullptr)
+                continue;
+            unsigned long size = 0;
+            STATUS(Q3Texture_GetWidth(texture, &size));
+            STATUS(Q3Texture_GetHeight(texture, &size));
+            if (Q3Texture_GetType(texture) == kQ3TextureTypePixmap) {
+                TQ3StoragePixmap got{};
+                if (STATUS(Q3PixmapTexture_GetPixmap(texture, &got)) == kQ3Success) {
+                    require(STATUS(Q3PixmapTexture_SetPixmap(texture, &got)) == kQ3Success,
+                            "Q3PixmapTexture_SetPixmap", "refused what Q3PixmapTexture_GetPixmap gave");
+                    STATUS(Q3Object_Dispose(got.image));
+                }
+            } else {
+                TQ3Mipmap got{};
+                if (STATUS(Q3MipmapTexture_GetMipmap(texture, &got)) == kQ3Success) {
+                    require(STATUS(Q3MipmapTexture_SetMipmap(texture, &got)) == kQ3Success,
+                            "Q3MipmapTexture_SetMipmap", "refused what Q3MipmapTexture_GetMipmap gave");
+                    STATUS(Q3Object_Dispose(got.image));
+                }
+            }
+        }
+        const TQ3Object shader = OBJECT(Q3TextureShader_New(textures[0] != nullptr ? textures[0] : textures[1]));
+        if (shader != nullptr) {
+            STATUS(Q3TextureShader_SetTexture(shader, textures[1] != nullptr ? textures[1] : textures[0]));
+            TQ3TextureObject got = nullptr;
+            if (STATUS(Q3TextureShader_GetTexture(shader, &got)) == kQ3Success)
+                STATUS(Q3Object_Dispose(got));
+            QUERY(Q3SurfaceShader_GetType(shader), kQ3ObjectTypeInvalid);
+            STATUS(Q3Object_Dispose(shader));
+        }
+        for (TQ3Object texture : textures)
+            if (texture != nullptr)
+                STATUS(Q3Object_Dispose(texture));
+        TQ3ColorRGB color{float(p.width), float(p.height), float(p.rowBytes)};
+        float luminance = 0.0f;
+        POINTER(Q3ColorRGB_Clamp(&color, &color));
+        POINTER(Q3ColorRGB_Luminance(&color, &luminance));
     }
 
     // QD3DIO.h's view hints: New from a view, then one Set or Get call with

@@ -235,3 +235,39 @@ TEST(Q3Convert, LittleEndianOptionWritesTheHandLaidLittleEndianFile)
     for (const std::string& path : {little, big})
         std::remove(path.c_str());
 }
+
+namespace {
+
+// Pixels whose colour is a scaled copy of (r, g, b): channel ratios within
+// 0.08 of one another, between 0.2 and 1.2.
+int pixelsLike(const q3test::RgbaImage& image, int r, int g, int b)
+{
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const unsigned char* p = image.at(x, y);
+            const double ratios[3] = {p[0] / double(r), p[1] / double(g), p[2] / double(b)};
+            const double lo = std::min({ratios[0], ratios[1], ratios[2]});
+            const double hi = std::max({ratios[0], ratios[1], ratios[2]});
+            if (hi - lo < 0.08 && lo > 0.2 && hi < 1.2)
+                ++n;
+        }
+    return n;
+}
+
+} // namespace
+
+TEST(Q3Render, ATexturedModelShowsItsTextureInsteadOfItsColour)
+{
+    // tests/data/textured_box.3dmf: a grey box under a texture shader with
+    // an orange (230, 180, 60) and blue (40, 90, 200) checkerboard.
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/textured_box.3dmf";
+    const std::string png = scratch("textured.png");
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + png + " --size 200x150"), 0);
+    q3test::RgbaImage image;
+    ASSERT_TRUE(q3test::readPng(png, &image));
+    EXPECT_GT(pixelsLike(image, 230, 180, 60), 1000);
+    EXPECT_GT(pixelsLike(image, 40, 90, 200), 1000);
+    EXPECT_EQ(pixelsLike(image, 128, 128, 128), 0) << "the box's grey shows through";
+    std::remove(png.c_str());
+}

@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// QD3DShader.h's textures: a pixmap texture (one image, TQ3StoragePixmap)
+// and a mipmap texture (one image or a chain, TQ3Mipmap), each kept in a
+// storage object that the texture references and reads when it is drawn.
+
+#include "QD3DShader.h"
+#include "core/Object.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace q3 {
+
+class Storage;
+
+extern const ClassInfo kTextureClass;
+extern const ClassInfo kPixmapTextureClass;
+extern const ClassInfo kMipmapTextureClass;
+
+/// One image read out of a texture's storage: `height` rows of `rowBytes`
+/// bytes, top row first, each pixel a word of pixelType's layout stored in
+/// byteOrder. The fields obey the texture's data rules.
+struct TexturePixels {
+    std::vector<unsigned char> bytes;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::size_t rowBytes = 0;
+    TQ3PixelType pixelType = kQ3PixelTypeARGB32;
+    TQ3Endian byteOrder = kQ3EndianBig;
+};
+
+/// Every texture. Invariant: its data obeys QD3DShader.h's data rules (which
+/// the constructors and setters check before changing anything) and it holds
+/// one reference to its storage.
+class Texture : public SharedObject {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3SharedTypeTexture;
+
+    /// The first image's size.
+    virtual unsigned long width() const = 0;
+    virtual unsigned long height() const = 0;
+    /// The first image, read from the storage now; throws
+    /// kQ3ErrorInvalidData when the storage no longer holds it.
+    virtual TexturePixels readImage() const = 0;
+
+protected:
+    Texture() = default;
+};
+
+/// A texture of one image (Q3PixmapTexture_).
+class PixmapTexture final : public Texture {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TextureTypePixmap;
+
+    /// QD3DShader.h's data rules for a pixmap, in their order.
+    static void check(const TQ3StoragePixmap& pixmap);
+    /// Checks, then references pixmap.image.
+    explicit PixmapTexture(const TQ3StoragePixmap& pixmap);
+    ~PixmapTexture() override;
+
+    const ClassInfo& classInfo() const override { return kPixmapTextureClass; }
+    Object* duplicate() const override;
+    unsigned long width() const override { return m_pixmap.width; }
+    unsigned long height() const override { return m_pixmap.height; }
+    TexturePixels readImage() const override;
+
+    /// The description with a new reference to the storage.
+    TQ3StoragePixmap pixmap() const;
+    /// Checks, references the new storage, releases the old one.
+    void setPixmap(const TQ3StoragePixmap& pixmap);
+
+private:
+    TQ3StoragePixmap m_pixmap;
+};
+
+/// A texture of one image or a chain of halving images (Q3MipmapTexture_).
+class MipmapTexture final : public Texture {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TextureTypeMipmap;
+
+    /// QD3DShader.h's data rules for a mipmap, in their order.
+    static void check(const TQ3Mipmap& mipmap);
+    /// Checks, then references mipmap.image.
+    explicit MipmapTexture(const TQ3Mipmap& mipmap);
+    ~MipmapTexture() override;
+
+    const ClassInfo& classInfo() const override { return kMipmapTextureClass; }
+    Object* duplicate() const override;
+    unsigned long width() const override { return m_mipmap.mipmaps[0].width; }
+    unsigned long height() const override { return m_mipmap.mipmaps[0].height; }
+    TexturePixels readImage() const override;
+
+    /// How many images the data rules read: 1, or with useMipmapping one
+    /// more than log2 of the first image's larger side.
+    static unsigned imageCount(const TQ3Mipmap& mipmap);
+    /// The description with a new reference to the storage.
+    TQ3Mipmap mipmap() const;
+    /// Checks, references the new storage, releases the old one.
+    void setMipmap(const TQ3Mipmap& mipmap);
+
+private:
+    TQ3Mipmap m_mipmap;
+};
+
+} // namespace q3

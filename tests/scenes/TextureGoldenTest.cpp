@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Textured scenes drawn by the interactive renderer and compared with
+// tests/golden/texture_NAME.png (tolerance: tests/golden/README.md): a
+// checkerboard on a TriMesh seen in perspective (unlit, wrapping twice),
+// on a box lit per pixel (Lambert) and on a NURB patch lit per vertex
+// (Phong, highlights added over the texture). Facts that a golden blessed
+// from a wrong picture would not pass are checked by reading pixels: both
+// checker colours show, the lit ones darker where the light falls less.
+// Exact texels against uv are checked in tests/api/TextureRenderTest.cpp.
+
+#include "Golden.h"
+
+#include "QD3D.h"
+#include "QD3DCamera.h"
+#include "QD3DDrawContext.h"
+#include "QD3DErrors.h"
+#include "QD3DGeometry.h"
+#include "QD3DGroup.h"
+#include "QD3DLight.h"
+#include "QD3DMath.h"
+#include "QD3DRenderer.h"
+#include "QD3DSet.h"
+#include "QD3DShader.h"
+#include "QD3DStorage.h"
+#include "QD3DStyle.h"
+#include "QD3DView.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <functional>
+#include <vector>
+
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+// The checkerboard's two colours.
+constexpr unsigned char kLight[3] = {230, 180, 60};
+constexpr unsigned char kDark[3] = {40, 90, 200};
+
+class TextureGoldenTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        ASSERT_EQ(Q3Initialize(), kQ3Success);
+        Q3Error_Register(&onError, 0);
+        s_errors = 0;
+        // An 8 x 8 checkerboard, ARGB32 big-endian.
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 8; ++x) {
+                const unsigned char* c = (x + y) % 2 == 0 ? kLight : kDark;
+                m_texels.insert(m_texels.end(), {255, c[0], c[1], c[2]});
+            }
+        m_storage = Q3MemoryStorage_New(m_texels.data(), static_cast<unsigned long>(m_texels.size()));
+        const TQ3StoragePixmap pixmap{m_storage, 8, 8, 32, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
+        m_texture = Q3PixmapTexture_New(&pixmap);
+        m_shader = Q3TextureShader_New(m_texture);
+        ASSERT_NE(m_shader, nullptr);
+    }
+    void TearDown() override
+    {
+        Q3Object_Dispose(m_shader);
+        Q3Object_Dispose(m_texture);
+        Q3Object_Dispose(m_storage);
+        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
+        Q3Error_Register(nullptr, 0);
+        Q3Exit();
+    }
+
+    // Renders `submit` in perspective from `eye` towards the origin, with an
+    // ambient light (0.3) and a directional light (0.8) when lit.
+    q3test::RgbaImage render(const TQ3Point3D& eye, bool lit, const std::function<void(TQ3ViewObject)>& submit)
+    {
+        std::vector<unsigned char> argb(std::size_t(kWidth) * kHeight * 4, 0);
+        TQ3PixmapDrawContextData contextData{};
+        contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
+        contextData.drawContextData.clearImageColor = {1.0f, 0.1f, 0.1f, 0.12f};
+        contextData.pixmap = TQ3Pixmap{argb.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32,
+                                       kQ3EndianBig, kQ3EndianBig};
+        TQ3DrawContextObject context = Q3PixmapDrawContext_New(&contextData);
+        TQ3ViewAngleAspectCameraData cameraData{};
+        cameraData.cameraData.placement = {eye, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+        cameraData.cameraData.range = {0.5f, 50.0f};
+        cameraData.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
+        cameraData.fov = 0.8f;
+        cameraData.aspectRatioXToY = float(kWidth) / kHeight;
+        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
+        TQ3ViewObject view = Q3View_New();
+        Q3View_SetDrawContext(view, context);
+        Q3View_SetCamera(view, camera);
+        Q3View_SetRendererByType(view, kQ3RendererTypeInteractive);
+        TQ3GroupObject lights = Q3LightGroup_New();
+        if (lit) {
+            const TQ3LightData ambientData{kQ3True, 0.3f, {1.0f, 1.0f, 1.0f}};
+            TQ3LightObject ambient = Q3AmbientLight_New(&ambientData);
+            const TQ3DirectionalLightData sunData{{kQ3True, 0.8f, {1.0f, 1.0f, 1.0f}}, kQ3False, {-1.0f, -1.5f, -2.0f}};
+            TQ3LightObject sun = Q3DirectionalLight_New(&sunData);
+            Q3Group_AddObject(lights, ambient);
+            Q3Group_AddObject(lights, sun);
+            Q3Object_Dispose(ambient);
+            Q3Object_Dispose(sun);
+        }
+        Q3View_SetLightGroup(view, lights);
+        EXPECT_EQ(Q3View_StartRendering(view), kQ3Success);
+        TQ3ViewStatus status;
+        do {
+            submit(view);
+            status = Q3View_EndRendering(view);
+        } while (status == kQ3ViewStatusRetraverse);
+        EXPECT_EQ(status, kQ3ViewStatusDone);
+        Q3Object_Dispose(lights);
+        Q3Object_Dispose(view);
+        Q3Object_Dispose(camera);
+        Q3Object_Dispose(context);
+        q3test::RgbaImage image(kWidth, kHeight);
+        for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
+            image.pixels[4 * i] = argb[4 * i + 1];
+            image.pixels[4 * i + 1] = argb[4 * i + 2];
+            image.pixels[4 * i + 2] = argb[4 * i + 3];
+            image.pixels[4 * i + 3] = 255;
+        }
+        return image;
+    }
+
+    // How many pixels are (within `slack`) a scaled copy of the colour:
+    // channel ratios to it all within 0.1 of one another and of no more than
+    // `maxScale`.
+    static int pixelsLike(const q3test::RgbaImage& image, const unsigned char* colour, double minScale,
+                          double maxScale)
+    {
+        int n = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                const unsigned char* p = image.at(x, y);
+                double lo = 10.0, hi = -1.0;
+                for (int k = 0; k < 3; ++k) {
+                    const double ratio = double(p[k]) / colour[k];
+                    lo = std::min(lo, ratio);
+                    hi = std::max(hi, ratio);
+                }
+                if (hi - lo < 0.1 && lo >= minScale && hi <= maxScale)
+                    ++n;
+            }
+        return n;
+    }
+
+    std::vector<unsigned char> m_texels;
+    TQ3StorageObject m_storage = nullptr;
+    TQ3TextureObject m_texture = nullptr;
+    TQ3ShaderObject m_shader = nullptr;
+
+private:
+    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
+    static int s_errors;
+};
+
+int TextureGoldenTest::s_errors = 0;
+
+TEST_F(TextureGoldenTest, TriMeshInPerspectiveWrapsTheCheckerboardTwice)
+{
+    TQ3Point3D points[4] = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}};
+    TQ3Param2D uvs[4] = {{0, 2}, {2, 2}, {2, 0}, {0, 0}};
+    TQ3TriMeshTriangleData triangles[2] = {{{0, 2, 1}}, {{0, 3, 2}}};
+    TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
+    TQ3TriMeshData data{};
+    data.numTriangles = 2;
+    data.triangles = triangles;
+    data.numPoints = 4;
+    data.points = points;
+    data.numVertexAttributeTypes = 1;
+    data.vertexAttributeTypes = &uvArray;
+    data.bBox = TQ3BoundingBox{{-2, 0, -2}, {2, 0, 2}, kQ3False};
+    TQ3GeometryObject mesh = Q3TriMesh_New(&data);
+    ASSERT_NE(mesh, nullptr);
+    const q3test::RgbaImage image = render({0.5f, 2.5f, 4.0f}, false, [&](TQ3ViewObject v) {
+        Q3Shader_Submit(m_shader, v);
+        Q3Geometry_Submit(mesh, v);
+    });
+    Q3Object_Dispose(mesh);
+    EXPECT_TRUE(q3test::matchesGolden("texture_trimesh_perspective", image));
+    // Unlit: the texels' own colours, both of them, over large areas.
+    EXPECT_GT(pixelsLike(image, kLight, 0.99, 1.01), 2000);
+    EXPECT_GT(pixelsLike(image, kDark, 0.99, 1.01), 2000);
+}
+
+TEST_F(TextureGoldenTest, BoxLitPerPixelShowsTheCheckerboardOnEachFace)
+{
+    const TQ3BoxData data{{-1, -1, -1}, {0, 2, 0}, {0, 0, 2}, {2, 0, 0}, nullptr, nullptr};
+    TQ3GeometryObject box = Q3Box_New(&data);
+    ASSERT_NE(box, nullptr);
+    TQ3ShaderObject lambert = Q3LambertIllumination_New();
+    TQ3StyleObject pixel = Q3InterpolationStyle_New(kQ3InterpolationStylePixel);
+    const q3test::RgbaImage image = render({3.0f, 2.5f, 4.0f}, true, [&](TQ3ViewObject v) {
+        Q3Shader_Submit(lambert, v);
+        Q3Style_Submit(pixel, v);
+        Q3Shader_Submit(m_shader, v);
+        Q3Geometry_Submit(box, v);
+    });
+    Q3Object_Dispose(pixel);
+    Q3Object_Dispose(lambert);
+    Q3Object_Dispose(box);
+    EXPECT_TRUE(q3test::matchesGolden("texture_box_lit", image));
+    // Lit: scaled checker colours, never brighter than 1.1 times the texel
+    // (0.3 ambient + 0.8 at most), and both colours show.
+    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 1000);
+    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 1000);
+}
+
+TEST_F(TextureGoldenTest, PatchLitPerVertexWithPhongHighlights)
+{
+    TQ3RationalPoint4D points[16];
+    for (int row = 0; row < 4; ++row)
+        for (int column = 0; column < 4; ++column) {
+            const float x = -1.5f + column, z = 1.5f - row;
+            const float y = (row == 1 || row == 2) && (column == 1 || column == 2) ? 1.2f : 0.0f;
+            points[row * 4 + column] = TQ3RationalPoint4D{x, y, z, 1.0f};
+        }
+    float knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    TQ3NURBPatchData data{4, 4, 4, 4, points, knots, knots, 0, nullptr, nullptr};
+    TQ3GeometryObject patch = Q3NURBPatch_New(&data);
+    ASSERT_NE(patch, nullptr);
+    TQ3ShaderObject phong = Q3PhongIllumination_New();
+    TQ3SubdivisionStyleData subdivision{kQ3SubdivisionMethodConstant, 16, 16};
+    TQ3StyleObject style = Q3SubdivisionStyle_New(&subdivision);
+    const q3test::RgbaImage image = render({0.5f, 3.0f, 4.0f}, true, [&](TQ3ViewObject v) {
+        Q3Shader_Submit(phong, v);
+        Q3Style_Submit(style, v);
+        Q3Shader_Submit(m_shader, v);
+        Q3Geometry_Submit(patch, v);
+    });
+    Q3Object_Dispose(style);
+    Q3Object_Dispose(phong);
+    Q3Object_Dispose(patch);
+    EXPECT_TRUE(q3test::matchesGolden("texture_patch_phong", image));
+    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 500);
+    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 500);
+}
+
+} // namespace

@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// OffscreenRenderer::setTexture and textured triangles: the contract's
+// errors, a texel per pixel under nearest sampling, wrap against clamp, the
+// texture kept across a batch flushed mid-frame, and untextured draws left
+// as they were.
+
+#include "render/OffscreenRenderer.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace q3 {
+namespace {
+
+using Pixel = std::array<std::uint8_t, 4>;
+
+Pixel pixelAt(const OffscreenRenderer& renderer, int x, int y)
+{
+    const std::uint8_t* p = renderer.pixels() + renderer.rowBytes() * std::size_t(y) + std::size_t(x) * 4;
+    return {p[0], p[1], p[2], p[3]};
+}
+
+// A 2 x 2 RGB24 texture: red, green / blue, white (row 0 the top).
+const std::uint8_t kTexels[12] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+const Pixel kRed{255, 0, 0, 255}, kGreen{0, 255, 0, 255}, kBlue{0, 0, 255, 255}, kWhite{255, 255, 255, 255};
+
+TextureImage texture(bool clamp = false)
+{
+    TextureImage image;
+    image.pixels = kTexels;
+    image.layout.width = 2;
+    image.layout.height = 2;
+    image.layout.rowBytes = 6;
+    image.layout.pixelType = PixelType::kRGB24;
+    image.layout.byteOrder = ByteOrder::kBig;
+    image.clampS = clamp;
+    image.clampT = clamp;
+    return image;
+}
+
+// A square filling an 8 x 8 pane (identity matrix: clip space), its
+// texture coordinates from (s0, t0) at the top left to (s1, t1).
+void drawSquare(OffscreenRenderer& renderer, float s0, float t0, float s1, float t1)
+{
+    const float xyz[12] = {-1, 1, 0, 1, 1, 0, 1, -1, 0, -1, -1, 0};
+    const float st[8] = {s0, t0, s1, t0, s1, t1, s0, t1};
+    const std::uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
+    ASSERT_TRUE(renderer.drawElements(DrawMode::kTriangles, xyz, nullptr, 4, indices, 6, RgbColor{1, 1, 1}, true, st));
+}
+
+void begin(OffscreenRenderer& renderer)
+{
+    ASSERT_TRUE(renderer.beginFrame(8, 8, RgbaColor{0, 0, 0, 1}, PixelRect{0, 0, 8, 8}));
+}
+
+TEST(OffscreenTexture, SetTextureRefusesOutsideAFrameAndBadImages)
+{
+    OffscreenRenderer renderer;
+    TextureImage image = texture();
+    EXPECT_EQ(renderer.setTexture(&image).status, RenderStatus::kWrongState);
+    begin(renderer);
+    TextureImage noPixels = image;
+    noPixels.pixels = nullptr;
+    EXPECT_EQ(renderer.setTexture(&noPixels).status, RenderStatus::kInvalidArgument);
+    TextureImage narrowRows = image;
+    narrowRows.layout.rowBytes = 5;
+    EXPECT_EQ(renderer.setTexture(&narrowRows).status, RenderStatus::kInvalidArgument);
+    TextureImage empty = image;
+    empty.layout.width = 0;
+    EXPECT_EQ(renderer.setTexture(&empty).status, RenderStatus::kInvalidArgument);
+    EXPECT_TRUE(renderer.setTexture(nullptr));
+    // A non-finite texture coordinate is refused once a texture is set.
+    ASSERT_TRUE(renderer.setTexture(&image));
+    const float xyz[9] = {-1, -1, 0, 1, -1, 0, 0, 1, 0};
+    const float st[6] = {0, 0, 1, 0, std::numeric_limits<float>::quiet_NaN(), 1};
+    const std::uint32_t indices[3] = {0, 1, 2};
+    EXPECT_EQ(renderer.drawElements(DrawMode::kTriangles, xyz, nullptr, 3, indices, 3, RgbColor{1, 1, 1}, true, st)
+                  .status,
+              RenderStatus::kInvalidArgument);
+    EXPECT_TRUE(renderer.endFrame());
+}
+
+TEST(OffscreenTexture, EachQuarterOfTheSquareShowsItsTexel)
+{
+    OffscreenRenderer renderer;
+    begin(renderer);
+    TextureImage image = texture();
+    ASSERT_TRUE(renderer.setTexture(&image));
+    drawSquare(renderer, 0, 0, 1, 1);
+    ASSERT_TRUE(renderer.endFrame());
+    EXPECT_EQ(pixelAt(renderer, 1, 1), kRed);
+    EXPECT_EQ(pixelAt(renderer, 6, 1), kGreen);
+    EXPECT_EQ(pixelAt(renderer, 1, 6), kBlue);
+    EXPECT_EQ(pixelAt(renderer, 6, 6), kWhite);
+}
+
+TEST(OffscreenTexture, WrapRepeatsAndClampKeepsTheEdge)
+{
+    // s and t from -1 to 1: wrapped, each quarter of the pane is the whole
+    // texture again; clamped, the texture fills the bottom right quarter and
+    // the rest repeats its edge texels: the top left quarter its corner
+    // (red), the top right its top row, the bottom left its left column.
+    for (bool clamp : {false, true}) {
+        OffscreenRenderer renderer;
+        begin(renderer);
+        TextureImage image = texture(clamp);
+        ASSERT_TRUE(renderer.setTexture(&image));
+        drawSquare(renderer, -1, -1, 1, 1);
+        ASSERT_TRUE(renderer.endFrame());
+        if (!clamp) {
+            EXPECT_EQ(pixelAt(renderer, 0, 0), kRed);
+            EXPECT_EQ(pixelAt(renderer, 3, 3), kWhite);
+            EXPECT_EQ(pixelAt(renderer, 4, 0), kRed);
+            EXPECT_EQ(pixelAt(renderer, 7, 7), kWhite);
+        } else {
+            EXPECT_EQ(pixelAt(renderer, 0, 0), kRed);
+            EXPECT_EQ(pixelAt(renderer, 3, 3), kRed);
+            EXPECT_EQ(pixelAt(renderer, 5, 0), kRed);
+            EXPECT_EQ(pixelAt(renderer, 7, 0), kGreen);
+            EXPECT_EQ(pixelAt(renderer, 7, 7), kWhite);
+            EXPECT_EQ(pixelAt(renderer, 0, 5), kRed);
+            EXPECT_EQ(pixelAt(renderer, 0, 7), kBlue);
+        }
+    }
+}
+
+TEST(OffscreenTexture, WithoutCoordinatesOrTextureTrianglesKeepTheirColour)
+{
+    OffscreenRenderer renderer;
+    begin(renderer);
+    const float xyz[12] = {-1, 1, 0, 1, 1, 0, 1, -1, 0, -1, -1, 0};
+    const std::uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
+    // Coordinates but no texture: plain.
+    const float st[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    ASSERT_TRUE(renderer.drawElements(DrawMode::kTriangles, xyz, nullptr, 4, indices, 6, RgbColor{0, 0, 1}, false, st));
+    ASSERT_TRUE(renderer.endFrame());
+    EXPECT_EQ(pixelAt(renderer, 4, 4), kBlue);
+    // A texture but no coordinates: plain too.
+    begin(renderer);
+    TextureImage image = texture();
+    ASSERT_TRUE(renderer.setTexture(&image));
+    ASSERT_TRUE(renderer.drawElements(DrawMode::kTriangles, xyz, nullptr, 4, indices, 6, RgbColor{0, 1, 0}, false));
+    ASSERT_TRUE(renderer.endFrame());
+    EXPECT_EQ(pixelAt(renderer, 1, 1), kGreen);
+    EXPECT_EQ(pixelAt(renderer, 6, 6), kGreen);
+}
+
+TEST(OffscreenTexture, TheTextureOutlivesABatchFlushedForNewLights)
+{
+    // setLighting flushes the batch drawn so far; the texture set before
+    // still textures what is drawn after.
+    OffscreenRenderer renderer;
+    begin(renderer);
+    TextureImage image = texture();
+    ASSERT_TRUE(renderer.setTexture(&image));
+    drawSquare(renderer, 0, 0, 1, 1);
+    ASSERT_TRUE(renderer.setLighting(LightingSetup{}));
+    drawSquare(renderer, 1, 0, 0, 1); // mirrored left to right
+    ASSERT_TRUE(renderer.endFrame());
+    EXPECT_EQ(pixelAt(renderer, 1, 1), kGreen);
+    EXPECT_EQ(pixelAt(renderer, 6, 6), kBlue);
+}
+
+} // namespace
+} // namespace q3
