@@ -3,6 +3,7 @@
 #include "geometry/PixmapMarker.h"
 
 #include "core/EnumValue.h"
+#include "core/PixelFormat.h"
 #include "geometry/DataGeometryImpl.h"
 // The storage interface depends only on core; the pixmap marker is the one
 // geometry whose data lives in a storage object (QD3DStorage.h).
@@ -37,30 +38,6 @@ struct Describe<TQ3PixmapMarkerData> {
 template class DataGeometry<PixmapMarker, TQ3PixmapMarkerData>;
 
 namespace {
-
-/// Bits per pixel of each TQ3PixelType (QD3DDrawContext.h's table); 0 for a
-/// value outside the enumeration.
-unsigned long bitsPerPixel(long pixelType)
-{
-    switch (pixelType) {
-    case kQ3PixelTypeRGB32:
-    case kQ3PixelTypeARGB32:
-        return 32;
-    case kQ3PixelTypeRGB24:
-        return 24;
-    case kQ3PixelTypeRGB16:
-    case kQ3PixelTypeARGB16:
-    case kQ3PixelTypeRGB16_565:
-        return 16;
-    default:
-        return 0;
-    }
-}
-
-bool isEndian(long value)
-{
-    return value == kQ3EndianBig || value == kQ3EndianLittle;
-}
 
 std::size_t imageBytes(const TQ3StoragePixmap& pixmap)
 {

@@ -3,6 +3,7 @@
 #include "shader/Texture.h"
 
 #include "core/EnumValue.h"
+#include "core/PixelFormat.h"
 #include "core/Limits.h"
 #include "core/Ref.h"
 // Textures keep their images in storage objects (QD3DStorage.h), whose
@@ -21,25 +22,6 @@ const ClassInfo kMipmapTextureClass{kQ3TextureTypeMipmap, &kTextureClass, "mipma
 
 namespace {
 
-/// Bits per pixel of each TQ3PixelType (QD3DDrawContext.h's table); 0 for a
-/// value outside the enumeration.
-unsigned long bitsPerPixel(long pixelType)
-{
-    switch (pixelType) {
-    case kQ3PixelTypeRGB32:
-    case kQ3PixelTypeARGB32:
-        return 32;
-    case kQ3PixelTypeRGB24:
-        return 24;
-    case kQ3PixelTypeRGB16:
-    case kQ3PixelTypeARGB16:
-    case kQ3PixelTypeRGB16_565:
-        return 16;
-    default:
-        return 0;
-    }
-}
-
 std::string text(unsigned long value)
 {
     return std::to_string(value);
@@ -55,7 +37,7 @@ unsigned long checkPixelFormat(const TQ3PixelType& pixelType, const TQ3Endian& b
         fail(kQ3ErrorInvalidData, prefix + "pixelType " + std::to_string(type) + " is not a TQ3PixelType");
     for (const auto& [value, name] : {std::pair{enumValue(byteOrder), "byteOrder"},
                                       std::pair{enumValue(bitOrder), "bitOrder"}})
-        if (value != kQ3EndianBig && value != kQ3EndianLittle)
+        if (!isEndian(value))
             fail(kQ3ErrorInvalidData, prefix + name + " " + std::to_string(value) + " is not a TQ3Endian");
     return bits;
 }

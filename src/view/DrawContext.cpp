@@ -3,6 +3,7 @@
 #include "view/DrawContext.h"
 
 #include "core/EnumValue.h"
+#include "core/PixelFormat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,30 +48,6 @@ bool isClearMethod(const TQ3DrawContextClearImageMethod& method)
     return value == kQ3ClearMethodNone || value == kQ3ClearMethodWithColor;
 }
 
-// Bits per pixel of a TQ3PixelType, 0 for a value that is none.
-unsigned long pixelBits(const TQ3PixelType& type)
-{
-    switch (enumValue(type)) {
-    case kQ3PixelTypeRGB32:
-    case kQ3PixelTypeARGB32:
-        return 32;
-    case kQ3PixelTypeRGB16:
-    case kQ3PixelTypeARGB16:
-    case kQ3PixelTypeRGB16_565:
-        return 16;
-    case kQ3PixelTypeRGB24:
-        return 24;
-    default:
-        return 0;
-    }
-}
-
-bool isEndian(const TQ3Endian& value)
-{
-    const long v = enumValue(value);
-    return v == kQ3EndianBig || v == kQ3EndianLittle;
-}
-
 int roundEdge(float value)
 {
     const double clamped = std::clamp(double(value), -kPaneLimit, kPaneLimit);
@@ -102,11 +79,11 @@ void validateDrawContextData(const TQ3DrawContextData& data)
 void validatePixmap(const TQ3Pixmap& pixmap)
 {
     requireNonNull(pixmap.image, "pixmap.image");
-    const unsigned long bits = pixelBits(pixmap.pixelType);
+    const unsigned long bits = bitsPerPixel(enumValue(pixmap.pixelType));
     if (bits == 0)
         fail(kQ3ErrorInvalidData,
              "pixelType " + std::to_string(enumValue(pixmap.pixelType)) + " is not a TQ3PixelType value");
-    if (!isEndian(pixmap.byteOrder) || !isEndian(pixmap.bitOrder))
+    if (!isEndian(enumValue(pixmap.byteOrder)) || !isEndian(enumValue(pixmap.bitOrder)))
         fail(kQ3ErrorInvalidData, "byteOrder and bitOrder must be kQ3EndianBig or kQ3EndianLittle");
     if (pixmap.pixelSize != bits)
         fail(kQ3ErrorUnsupportedPixelDepth, "pixelSize " + std::to_string(pixmap.pixelSize) +
