@@ -3,7 +3,10 @@
 #include "QD3DSet.h"
 #include "api/Entry.h"
 #include "core/AttributeSet.h"
+#include "shader/TextureShader.h"
 #include "view/View.h"
+
+#include <cstring>
 
 using namespace q3;
 using q3::api::guard;
@@ -19,8 +22,15 @@ TQ3AttributeSet Q3AttributeSet_New(void)
 
 TQ3Status Q3AttributeSet_Add(TQ3AttributeSet attributeSet, TQ3AttributeType theType, const void* data)
 {
-    return guardStatus(__func__,
-                       [&] { lookup<AttributeSet>(attributeSet, "attributeSet").add(theType, data); });
+    return guardStatus(__func__, [&] {
+        AttributeSet& set = lookup<AttributeSet>(attributeSet, "attributeSet");
+        if (theType != kQ3AttributeTypeSurfaceShader)
+            return set.add(theType, data);
+        requireNonNull(data, "data");
+        TQ3Object handle;
+        std::memcpy(&handle, data, sizeof handle);
+        set.addShader(Ref<SharedObject>(lookupRef<SurfaceShader>(handle, "*data (the surface shader)")));
+    });
 }
 
 TQ3Boolean Q3AttributeSet_Contains(TQ3AttributeSet attributeSet, TQ3AttributeType attributeType)
@@ -33,8 +43,16 @@ TQ3Boolean Q3AttributeSet_Contains(TQ3AttributeSet attributeSet, TQ3AttributeTyp
 
 TQ3Status Q3AttributeSet_Get(TQ3AttributeSet attributeSet, TQ3AttributeType theType, void* data)
 {
-    return guardStatus(__func__,
-                       [&] { lookup<AttributeSet>(attributeSet, "attributeSet").get(theType, data); });
+    return guardStatus(__func__, [&] {
+        const AttributeSet& set = lookup<AttributeSet>(attributeSet, "attributeSet");
+        if (theType != kQ3AttributeTypeSurfaceShader)
+            return set.get(theType, data);
+        requireNonNull(data, "data");
+        if (set.shader() == nullptr)
+            fail(kQ3ErrorAttributeNotContained, "the set holds no surface shader");
+        TQ3Object handle = Ref<SharedObject>::retain(set.shader()).detach();
+        std::memcpy(data, &handle, sizeof handle);
+    });
 }
 
 TQ3Status Q3AttributeSet_Clear(TQ3AttributeSet attributeSet, TQ3AttributeType theType)

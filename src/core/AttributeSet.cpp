@@ -40,16 +40,18 @@ std::size_t floatCount(TQ3AttributeType type)
 
 std::size_t AttributeSet::slotIndex(TQ3AttributeType type)
 {
-    if (type < kFirstType || type > kLastType)
+    if (type < kFirstType || type > kLastStoredType)
         fail(kQ3ErrorAttributeInvalidType,
              "attribute type " + std::to_string(type) +
-                 " is not one Q3 stores (1 to 10: surface UV ... highlight state)");
+                 " is not one Q3 stores (1 to 11: surface UV ... highlight state, surface shader)");
     return static_cast<std::size_t>(type - kFirstType);
 }
 
 std::size_t AttributeSet::dataSize(TQ3AttributeType type)
 {
     slotIndex(type);
+    if (type == kQ3AttributeTypeSurfaceShader)
+        return sizeof(TQ3Object);
     if (type == kQ3AttributeTypeHighlightState)
         return sizeof(TQ3Switch);
     return floatCount(type) * sizeof(float);
@@ -69,11 +71,18 @@ void AttributeValues::overlay(const AttributeValues& other)
     for (std::size_t i = 0; i < m_slots.size(); ++i)
         if (other.m_slots[i])
             m_slots[i] = other.m_slots[i];
+    if (other.m_surfaceShader)
+        m_surfaceShader = other.m_surfaceShader;
 }
 
 Object* AttributeSet::duplicate() const
 {
-    return fromValues(m_values).detach();
+    // The copy shares the surface shader and the unknown elements (shared
+    // objects, as a set read from a file shares them), like Q3Object_Duplicate
+    // of a geometry shares nothing but makes new attribute sets.
+    Ref<AttributeSet> copy = fromValues(m_values);
+    copy->m_others = m_others;
+    return copy.detach();
 }
 
 Ref<AttributeSet> AttributeSet::fromValues(const AttributeValues& values)
@@ -109,6 +118,8 @@ std::string AttributeSet::valueProblem(TQ3AttributeType type, const void* data)
 void AttributeSet::add(TQ3AttributeType type, const void* data)
 {
     const std::size_t index = slotIndex(type);
+    if (type == kQ3AttributeTypeSurfaceShader)
+        fail(kQ3ErrorInternalError, "a surface shader is stored with addShader");
     requireNonNull(data, "data");
     AttributeValues::Slot slot{};
     std::memcpy(slot.data(), data, dataSize(type));
@@ -122,6 +133,8 @@ void AttributeSet::add(TQ3AttributeType type, const void* data)
 void AttributeSet::get(TQ3AttributeType type, void* data) const
 {
     slotIndex(type);
+    if (type == kQ3AttributeTypeSurfaceShader)
+        fail(kQ3ErrorInternalError, "a surface shader is read with shader()");
     requireNonNull(data, "data");
     if (!m_values.copy(type, data, dataSize(type)))
         fail(kQ3ErrorAttributeNotContained,
@@ -134,9 +147,37 @@ bool AttributeSet::contains(TQ3AttributeType type) const
     return m_values.contains(type);
 }
 
+void AttributeSet::addShader(Ref<SharedObject> shader)
+{
+    requireNonNull(shader.get(), "shader");
+    m_values.m_surfaceShader = std::move(shader);
+    markEdited();
+}
+
+TQ3AttributeType AttributeSet::nextType(TQ3AttributeType type) const
+{
+    for (TQ3AttributeType next = type < kFirstType ? kFirstType : type + 1; next <= kLastStoredType; ++next)
+        if (m_values.contains(next))
+            return next;
+    return kQ3AttributeTypeNone;
+}
+
+void AttributeSet::addOtherElement(Ref<SharedObject> element)
+{
+    m_others.push_back(std::move(element));
+    markEdited();
+}
+
 void AttributeSet::clear(TQ3AttributeType type)
 {
     const std::size_t index = slotIndex(type);
+    if (type == kQ3AttributeTypeSurfaceShader) {
+        if (!m_values.m_surfaceShader)
+            fail(kQ3ErrorAttributeNotContained, "the set holds no surface shader");
+        m_values.m_surfaceShader.reset();
+        markEdited();
+        return;
+    }
     if (!m_values.m_slots[index])
         fail(kQ3ErrorAttributeNotContained,
              "the set holds no attribute of type " + std::to_string(type));
@@ -147,6 +188,7 @@ void AttributeSet::clear(TQ3AttributeType type)
 void AttributeSet::empty()
 {
     m_values = AttributeValues();
+    m_others.clear();
     markEdited();
 }
 

@@ -10,27 +10,41 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "core/Ref.h"
 
 namespace q3 {
 
 extern const ClassInfo kSetClass;
 extern const ClassInfo kAttributeSetClass;
 
-/// The attributes Q3 stores (the plain-data standard types, surface UV to
-/// highlight state), at most one of each, as values: what an attribute set
+/// The attributes Q3 stores, at most one of each: the plain-data standard
+/// types (surface UV to highlight state) as values, and the surface shader
+/// (type 11) as a reference to a shader object. What an attribute set
 /// holds, and what a traversal's graphics state holds after attribute sets
-/// were submitted. Invariant: every stored value is well formed.
+/// were submitted. Invariant: every stored value is well formed; the
+/// shader, when present, is a surface shader.
 class AttributeValues {
 public:
     static constexpr TQ3AttributeType kFirstType = kQ3AttributeTypeSurfaceUV;
+    /// The last plain-data type; the surface shader follows it.
     static constexpr TQ3AttributeType kLastType = kQ3AttributeTypeHighlightState;
 
-    bool contains(TQ3AttributeType type) const { return m_slots[type - kFirstType].has_value(); }
-    /// Copies the value out (data holds AttributeSet::dataSize(type) bytes);
-    /// false when there is none.
+    bool contains(TQ3AttributeType type) const
+    {
+        if (type == kQ3AttributeTypeSurfaceShader)
+            return static_cast<bool>(m_surfaceShader);
+        return m_slots[type - kFirstType].has_value();
+    }
+    /// Copies a plain-data value out (data holds AttributeSet::dataSize(type)
+    /// bytes); false when there is none.
     bool copy(TQ3AttributeType type, void* data, std::size_t size) const;
     /// Every attribute `other` has replaces this one's.
     void overlay(const AttributeValues& other);
+    /// The surface shader (a texture shader, say), or null.
+    SharedObject* surfaceShader() const { return m_surfaceShader.get(); }
+    void setSurfaceShader(Ref<SharedObject> shader) { m_surfaceShader = std::move(shader); }
 
     template <class T>
     std::optional<T> find(TQ3AttributeType type) const
@@ -61,19 +75,26 @@ private:
     friend class AttributeSet;
     using Slot = std::array<unsigned char, 24>;
     std::array<std::optional<Slot>, kLastType - kFirstType + 1> m_slots;
+    Ref<SharedObject> m_surfaceShader;
 };
 
-/// A set of QuickDraw 3D attributes (colors, normals, UVs, ...), at most one
-/// of each type. Invariant: every stored value is well formed (finite floats,
-/// a switch that is kQ3On or kQ3Off); add() checks before it stores.
+/// A set of QuickDraw 3D attributes (colors, normals, UVs, a surface
+/// shader, ...), at most one of each type, and the elements a file gave it
+/// that Q3 has no class for (kept to be written back). Invariant: every
+/// stored value is well formed (finite floats, a switch that is kQ3On or
+/// kQ3Off, a live surface shader); add() checks before it stores.
 class AttributeSet final : public SharedObject {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3SetTypeAttribute;
 
-    /// The first and last attribute types Q3 stores: the plain-data types
-    /// (surface shaders, type 11, are objects Q3 does not have).
+    /// The first and last plain-data attribute types; the surface shader
+    /// (kQ3AttributeTypeSurfaceShader, 11) is stored beside them as a
+    /// reference.
     static constexpr TQ3AttributeType kFirstType = AttributeValues::kFirstType;
     static constexpr TQ3AttributeType kLastType = AttributeValues::kLastType;
+    /// Every type a set can hold, in Q3AttributeSet_GetNextAttributeType's
+    /// order.
+    static constexpr TQ3AttributeType kLastStoredType = kQ3AttributeTypeSurfaceShader;
 
     AttributeSet() = default;
 
@@ -82,16 +103,26 @@ public:
     bool isDrawable() const override { return true; }
     void accept(ShapeVisitor& visitor) const override;
 
-    /// Bytes of data of one attribute type; throws kQ3ErrorAttributeInvalidType
-    /// for a type Q3 does not store.
+    /// Bytes of data of one attribute type (a handle's size for the surface
+    /// shader); throws kQ3ErrorAttributeInvalidType for a type Q3 does not
+    /// store.
     static std::size_t dataSize(TQ3AttributeType type);
     /// Why a value of that (stored) type is not well formed (a component
     /// that is not finite, a switch that is neither kQ3On nor kQ3Off), or an
     /// empty string when it is.
     static std::string valueProblem(TQ3AttributeType type, const void* data);
 
+    /// Stores a plain-data attribute (not the surface shader: addShader).
     void add(TQ3AttributeType type, const void* data);
+    /// Copies a plain-data attribute out (not the surface shader: shader()).
     void get(TQ3AttributeType type, void* data) const;
+    /// Stores the surface shader (the caller has checked it is one); the
+    /// set holds a reference.
+    void addShader(Ref<SharedObject> shader);
+    SharedObject* shader() const { return m_values.surfaceShader(); }
+    /// The next type the set holds after `type` (kQ3AttributeTypeNone starts
+    /// the walk), or kQ3AttributeTypeNone after the last one.
+    TQ3AttributeType nextType(TQ3AttributeType type) const;
     bool contains(TQ3AttributeType type) const;
     void clear(TQ3AttributeType type);
     void empty();
@@ -102,6 +133,10 @@ public:
     static Ref<AttributeSet> fromValues(const AttributeValues& values);
 
     const AttributeValues& values() const { return m_values; }
+    /// Objects a file held in the set that Q3 has no attribute for (unknown
+    /// elements), in file order: kept and written back unchanged.
+    const std::vector<Ref<SharedObject>>& otherElements() const { return m_others; }
+    void addOtherElement(Ref<SharedObject> element);
     /// The value of one attribute, or nullopt when the set has none.
     std::optional<TQ3ColorRGB> diffuseColor() const { return m_values.diffuseColor(); }
     std::optional<TQ3ColorRGB> transparencyColor() const { return m_values.transparencyColor(); }
@@ -113,6 +148,7 @@ private:
     static std::size_t slotIndex(TQ3AttributeType type);
 
     AttributeValues m_values;
+    std::vector<Ref<SharedObject>> m_others;
 };
 
 } // namespace q3
