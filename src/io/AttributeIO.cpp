@@ -8,6 +8,7 @@
 #include "io/ClassIO.h"
 
 #include "core/AttributeSet.h"
+#include "core/ErrorManager.h"
 
 #include <cstring>
 
@@ -46,13 +47,42 @@ const Element* elementOfType(TQ3ObjectType type)
     return nullptr;
 }
 
+// A subobject of an attribute set that is no plain-data element: the
+// surface shader (a texture shader in its container, or a reference to one:
+// kQ3AttributeTypeSurfaceShader, as Apple-era models keep their textures),
+// or an element Q3 has no class for, kept as the unknown object it reads as
+// and written back. Any other object is no attribute: a warning says it is
+// left out.
+void readOtherElement(ReadContext& context, AttributeSet& set, const Node& node)
+{
+    Ref<SharedObject> object = context.object(node);
+    if (object->isType(kQ3ShaderTypeSurface)) {
+        if (set.shader() != nullptr)
+            errors::postWarning(kQ3WarningInvalidSubObjectForObject,
+                                "an attribute set holds two surface shaders; the last one is kept");
+        set.addShader(std::move(object));
+    } else if (object->isType(kQ3ShapeTypeUnknown)) {
+        errors::postWarning(kQ3WarningUnknownElementType,
+                            "an attribute set holds " +
+                                (node.name.empty() ? typeName(node.type) : node.name) +
+                                ", an element Q3 does not know; it is kept as an unknown object and written back");
+        set.addOtherElement(std::move(object));
+    } else {
+        errors::postWarning(kQ3WarningInvalidSubObjectForObject,
+                            std::string("an attribute set holds a ") + object->classInfo().name +
+                                ", which is no attribute; it is left out");
+    }
+}
+
 Ref<SharedObject> readAttributeSet(ReadContext& context, const Parts& parts)
 {
     Ref<AttributeSet> set = makeShared<AttributeSet>();
     for (const Node* node : parts.subobjects) {
         const Element* element = elementOfType(node->type);
-        if (element == nullptr)
-            continue; // an attribute Q3 does not store
+        if (element == nullptr) {
+            readOtherElement(context, *set, *node);
+            continue;
+        }
         DataReader in = context.reader(*node);
         unsigned char value[24];
         switch (element->kind) {
@@ -152,6 +182,10 @@ void writeAttributeSet(WriteContext& context, const Object& object)
         }
         out.end();
     }
+    if (const SharedObject* shader = set.shader())
+        context.object(*shader);
+    for (const Ref<SharedObject>& other : set.otherElements())
+        context.object(*other);
     out.end();
 }
 

@@ -147,6 +147,21 @@ bool groupCloses(const std::vector<Node>& nodes, std::size_t index)
     return false;
 }
 
+// The sequence (a file's top level or a container's children) that holds
+// `node`, and its index there; null when none does.
+const std::vector<Node>* sequenceHolding(const std::vector<Node>& nodes, const Node* node, std::size_t& index)
+{
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        if (&nodes[i] == node) {
+            index = i;
+            return &nodes;
+        }
+        if (const std::vector<Node>* inside = sequenceHolding(nodes[i].children, node, index))
+            return inside;
+    }
+    return nullptr;
+}
+
 } // namespace
 
 std::uint32_t ReadContext::refIdOf(const Object& object) const
@@ -190,7 +205,13 @@ Ref<SharedObject> ReadContext::object(const Node& node)
 Ref<SharedObject> ReadContext::build(const Node& node)
 {
     if (node.type == kTypeBeginGroup) {
-        fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup where a single object must be");
+        // A Reference to a group (through the table of contents): the group
+        // is the BeginGroup with the members that follow it in its sequence.
+        std::size_t index = 0;
+        const std::vector<Node>* sequence = sequenceHolding(m_file.objects, &node, index);
+        if (sequence == nullptr)
+            fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup where a single object must be");
+        return sequenceItem(*sequence, index);
     }
     if (node.type == kTypeEndGroup)
         fail(kQ3ErrorInvalidMetafileObject, "an EndGroup without its BeginGroup");
@@ -236,10 +257,14 @@ Ref<SharedObject> ReadContext::sequenceItem(const std::vector<Node>& nodes, std:
         index = end;
         fail(kQ3ErrorInvalidMetafile, "a BeginGroup without its EndGroup");
     }
-    const std::size_t first = index + 1;
+    std::size_t first = index + 1;
     index = end;
+    // A group read before (a Reference to it came first) is that one object.
+    if (const auto done = m_done.find(&node); done != m_done.end())
+        return done->second;
     Ref<SharedObject> opened = groupOf(node);
     Ref<Group> group = Ref<Group>::adopt(static_cast<Group*>(opened.detach()));
+    first = groupStateAfter(*group, nodes, first, end - 1);
     for (std::size_t i = first; i + 1 < end;) {
         Ref<SharedObject> member = sequenceItem(nodes, i);
         if (!group->accepts(*member)) {
@@ -250,25 +275,52 @@ Ref<SharedObject> ReadContext::sequenceItem(const std::vector<Node>& nodes, std:
         }
         group->add(std::move(member));
     }
+    m_done.emplace(&node, Ref<SharedObject>(group));
     return Ref<SharedObject>(std::move(group));
 }
 
 Ref<SharedObject> ReadContext::groupOf(const Node& beginGroup)
 {
-    if (beginGroup.children.size() != 1)
-        fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup holds " + std::to_string(beginGroup.children.size()) +
-                                                " objects, not one group");
-    return Ref<SharedObject>(objectAs<Group>(beginGroup.children.front(), "the object a BeginGroup holds"));
+    // The group object comes first: alone, in a container with its state
+    // (as Q3 wrote it before), or followed by its DisplayGroupState and
+    // other subobjects as siblings (as Apple's tools write it, and as the
+    // MF3D parser's BeginGroup reads it: a group, then an optional state).
+    const std::vector<Node>& children = beginGroup.children;
+    if (children.empty())
+        fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup holds no group");
+    const Node& first = children.front();
+    if (children.size() == 1 || first.type == kTypeContainer || first.type == kTypeReference)
+        return Ref<SharedObject>(objectAs<Group>(first, "the object a BeginGroup holds"));
+    const ClassIO* entry = classOfType(first.type);
+    Parts parts{first, {}, &m_file, &children};
+    for (std::size_t i = 1; i < children.size(); ++i)
+        parts.subobjects.push_back(&children[i]);
+    if (entry == nullptr)
+        fail(kQ3ErrorInvalidMetafileSubObject, "the object a BeginGroup holds is a " +
+                                                   (first.name.empty() ? typeName(first.type) : first.name) +
+                                                   ", no group");
+    DepthGuard guard(m_depth);
+    Ref<SharedObject> read = entry->read(*this, parts);
+    if (!read->isType(kQ3ShapeTypeGroup))
+        fail(kQ3ErrorInvalidMetafileSubObject,
+             std::string("the object a BeginGroup holds is a ") + read->classInfo().name + ", no group");
+    return read;
+}
+
+std::size_t ReadContext::groupStateAfter(SharedObject& group, const std::vector<Node>& nodes, std::size_t index,
+                                         std::size_t end)
+{
+    while (index < end && nodes[index].type == kTypeDisplayGroupState) {
+        applyGroupState(*this, group, nodes[index]);
+        ++index;
+    }
+    return index;
 }
 
 bool WriteContext::hasAttributes(const AttributeSet* set)
 {
-    if (set == nullptr)
-        return false;
-    for (TQ3AttributeType type = AttributeSet::kFirstType; type <= AttributeSet::kLastType; ++type)
-        if (set->contains(type))
-            return true;
-    return false;
+    return set != nullptr && (set->nextType(kQ3AttributeTypeNone) != kQ3AttributeTypeNone ||
+                              !set->otherElements().empty());
 }
 
 void WriteContext::attributeSet(const AttributeSet* set)

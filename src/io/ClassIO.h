@@ -59,6 +59,12 @@ const ClassIO* classOfObject(const Object& object);
 /// For the parser: the type a text name stands for, 0 for none.
 TQ3ObjectType typeOfName(const std::string& name);
 
+constexpr TQ3ObjectType kTypeDisplayGroupState = Q3_OBJECT_TYPE('d', 'g', 's', 't');
+/// Sets a group's state from a DisplayGroupState node (GroupIO.cpp); a
+/// state for a group that is no display group posts
+/// kQ3WarningInvalidSubObjectForObject and is ignored.
+void applyGroupState(ReadContext& context, SharedObject& group, const Node& state);
+
 /// The family tables (one per file).
 void addGeometryClasses(std::vector<ClassIO>& table);
 /// The geometries with nested parts (patches with trim loops, polyhedra...),
@@ -117,8 +123,13 @@ public:
     /// children) from `index`: one object, or a BeginGroup up to its
     /// EndGroup as one group. Advances index past what it read.
     Ref<SharedObject> sequenceItem(const std::vector<Node>& nodes, std::size_t& index);
-    /// The (empty) group a BeginGroup node opens.
+    /// The (empty) group a BeginGroup node opens, with its state.
     Ref<SharedObject> groupOf(const Node& beginGroup);
+    /// Applies the DisplayGroupState objects that stand first among a
+    /// group's members (from `index`, before `end`) to the group; returns
+    /// the index of the first member after them.
+    std::size_t groupStateAfter(SharedObject& group, const std::vector<Node>& nodes, std::size_t index,
+                                std::size_t end);
 
 private:
     Ref<SharedObject> build(const Node& node);

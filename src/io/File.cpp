@@ -271,6 +271,7 @@ Ref<SharedObject> File::readObject()
     if (node.type == io::kTypeBeginGroup && m_readGroup == kQ3FileReadObjectsInGroup) {
         ++m_next; // a failure leaves the group's objects to be read one by one
         Ref<SharedObject> group = m_reader->groupOf(node);
+        m_next = m_reader->groupStateAfter(*group, m_file->objects, m_next, m_file->objects.size());
         ++m_openGroups;
         return group;
     }

@@ -234,10 +234,13 @@ void writeIndex(Encoder& out, std::size_t bytes, std::uint32_t index)
 
 constexpr TQ3ObjectType kTypeAttributeArray = Q3_OBJECT_TYPE('a', 't', 'a', 'r');
 
-// Words (floats, or one 32-bit switch) of one value of an attribute type.
+// Words (floats, or one 32-bit switch) of one value of an attribute type;
+// none for the surface shader, whose values are objects after the array.
 std::size_t wordsOf(TQ3AttributeType type)
 {
     switch (type) {
+    case kQ3AttributeTypeSurfaceShader:
+        return 0;
     case kQ3AttributeTypeSurfaceUV:
     case kQ3AttributeTypeShadingUV:
         return 2;
@@ -262,7 +265,33 @@ struct ArrayStore {
     std::vector<TQ3TriMeshAttributeData> entries;
     std::vector<std::vector<unsigned char>> values;
     std::vector<std::vector<char>> uses;
+    std::vector<Ref<SharedObject>> shaders; ///< what surface shader arrays point at, until the TriMesh holds them
 };
+
+// A surface shader array's values: the objects that follow the
+// AttributeArray in its container, one per element (a texture shader, or a
+// reference to one), as Apple's tools and Quesa write them. Fewer objects
+// than elements leave the rest NULL (no shader), as Quesa reads them.
+void readShaderValues(ReadContext& context, const Node* container, std::uint32_t n, ArrayStore& store,
+                      std::vector<unsigned char>& values)
+{
+    values.assign(std::size_t{n} * sizeof(TQ3Object), 0);
+    if (container == nullptr)
+        return;
+    const std::size_t given = container->children.size() - 1;
+    if (given > n)
+        fail(kQ3ErrorInvalidMetafileSubObject, "a TriMesh surface shader array holds " + std::to_string(given) +
+                                                   " shaders for " + std::to_string(n) + " elements");
+    for (std::size_t i = 0; i < given; ++i) {
+        Ref<SharedObject> shader = context.object(container->children[i + 1]);
+        if (!shader->isType(kQ3ShaderTypeSurface))
+            fail(kQ3ErrorInvalidMetafileSubObject, std::string("a TriMesh surface shader array holds a ") +
+                                                       shader->classInfo().name);
+        TQ3Object handle = shader.get();
+        std::memcpy(values.data() + i * sizeof(TQ3Object), &handle, sizeof handle);
+        store.shaders.push_back(std::move(shader));
+    }
+}
 
 void readAttributeArrays(ReadContext& context, const Parts& parts, const std::uint32_t counts[3],
                          const std::uint32_t elements[3], ArrayStore stores[3])
@@ -272,7 +301,11 @@ void readAttributeArrays(ReadContext& context, const Parts& parts, const std::ui
         stores[kind].values.resize(counts[kind]);
         stores[kind].uses.resize(counts[kind]);
     }
-    for (const Node* node : parts.subobjects) {
+    for (const Node* item : parts.subobjects) {
+        // A surface shader array is a container: the array, then its shaders.
+        const bool contained = item->type == kTypeContainer && !item->children.empty() &&
+                               item->children.front().type == kTypeAttributeArray;
+        const Node* node = contained ? &item->children.front() : item;
         if (node->type != kTypeAttributeArray)
             continue;
         DataReader in = context.reader(*node);
@@ -304,6 +337,11 @@ void readAttributeArrays(ReadContext& context, const Parts& parts, const std::ui
         }
         in.requireRoom(n, 4 * words, words, "attribute values");
         std::vector<unsigned char> values(std::size_t{n} * words * 4);
+        if (type == kQ3AttributeTypeSurfaceShader)
+            readShaderValues(context, contained ? item : nullptr, n, store, values);
+        else if (contained)
+            fail(kQ3ErrorInvalidMetafileSubObject, "a TriMesh attribute array of type " + std::to_string(type) +
+                                                       " is followed by objects");
         for (std::size_t w = 0; w < std::size_t{n} * words; ++w) {
             if (type == kQ3AttributeTypeHighlightState) {
                 const auto s = static_cast<TQ3Switch>(in.u32());
@@ -324,12 +362,16 @@ void readAttributeArrays(ReadContext& context, const Parts& parts, const std::ui
                 fail(kQ3ErrorInvalidMetafileSubObject, "a TriMesh announces an attribute array it does not hold");
 }
 
-void writeAttributeArrays(Encoder& out, std::uint32_t kind, const TQ3TriMeshAttributeData* entries,
+void writeAttributeArrays(WriteContext& context, std::uint32_t kind, const TQ3TriMeshAttributeData* entries,
                           unsigned long count, unsigned long elements)
 {
+    Encoder& out = context.out();
     for (unsigned long i = 0; i < count; ++i) {
         const TQ3TriMeshAttributeData& entry = entries[i];
         const std::size_t words = wordsOf(entry.attributeType);
+        const bool shaders = entry.attributeType == kQ3AttributeTypeSurfaceShader;
+        if (shaders)
+            out.begin(kTypeContainer, "Container");
         out.begin(kTypeAttributeArray, "AttributeArray");
         out.i32(static_cast<std::int32_t>(entry.attributeType));
         out.u32(0);
@@ -350,6 +392,21 @@ void writeAttributeArrays(Encoder& out, std::uint32_t kind, const TQ3TriMeshAttr
                 std::memcpy(&f, bytes + 4 * w, 4);
                 out.f32(f);
             }
+        }
+        out.end();
+        if (!shaders)
+            continue;
+        // The shaders follow, one per element up to the last one present; an
+        // element without a shader before it cannot be written.
+        unsigned long last = elements;
+        while (last > 0 && static_cast<const TQ3Object*>(entry.data)[last - 1] == nullptr)
+            --last;
+        for (unsigned long e = 0; e < last; ++e) {
+            const TQ3Object handle = static_cast<const TQ3Object*>(entry.data)[e];
+            if (handle == nullptr)
+                fail(kQ3ErrorInvalidParameter, "a TriMesh surface shader array has no shader at element " +
+                                                   std::to_string(e) + " before one that has: 3DMF cannot say so");
+            context.object(*static_cast<const Object*>(handle));
         }
         out.end();
     }
@@ -444,9 +501,9 @@ void writeTriMesh(WriteContext& context, const Object& object)
         out.point3D(data.bBox.max);
         out.u32(data.bBox.isEmpty != kQ3False ? 1 : 0);
         out.end();
-        writeAttributeArrays(out, 0, data.triangleAttributeTypes, data.numTriangleAttributeTypes, data.numTriangles);
-        writeAttributeArrays(out, 1, data.edgeAttributeTypes, data.numEdgeAttributeTypes, data.numEdges);
-        writeAttributeArrays(out, 2, data.vertexAttributeTypes, data.numVertexAttributeTypes, data.numPoints);
+        writeAttributeArrays(context, 0, data.triangleAttributeTypes, data.numTriangleAttributeTypes, data.numTriangles);
+        writeAttributeArrays(context, 1, data.edgeAttributeTypes, data.numEdgeAttributeTypes, data.numEdges);
+        writeAttributeArrays(context, 2, data.vertexAttributeTypes, data.numVertexAttributeTypes, data.numPoints);
         context.attributeSet(own);
     });
 }

@@ -24,7 +24,7 @@ namespace {
 // Quesa's: the reference spells the first "IsInline" while QuickDraw 3D
 // writes "Inline"). Q3 writes the first word of each bit and reads the
 // others too: "IsInline", and "DontDraw" / "DontPick", which Q3 wrote before.
-constexpr TQ3ObjectType kTypeGroupState = Q3_OBJECT_TYPE('d', 'g', 's', 't');
+constexpr TQ3ObjectType kTypeGroupState = kTypeDisplayGroupState;
 const std::vector<std::pair<const char*, std::uint32_t>> kStateFlags = {
     {"None", 0},       {"Inline", 1},    {"DoNotDraw", 2}, {"NoBoundingBox", 4}, {"NoBoundingSphere", 8},
     {"DoNotPick", 16}, {"IsInline", 1},  {"DontDraw", 2},  {"DontPick", 16}};
@@ -70,11 +70,14 @@ template <class G>
 Ref<SharedObject> readGroup(ReadContext& context, const Parts& parts)
 {
     Ref<G> group = makeShared<G>();
-    if constexpr (std::is_base_of_v<DisplayGroup, G>) {
-        if (const Node* node = parts.find(kTypeGroupState); node != nullptr && node->type == kTypeGroupState) {
-            DataReader in = context.reader(*node);
-            group->setState(stateOf(in.flags(kStateFlags)));
-        }
+    for (const Node* node : parts.subobjects) {
+        if (node->type == kTypeGroupState)
+            applyGroupState(context, *group, *node);
+        else
+            errors::postWarning(kQ3WarningInvalidSubObjectForObject,
+                                std::string("a ") + group->classInfo().name + " holds a " +
+                                    (node->name.empty() ? typeName(node->type) : node->name) +
+                                    ", which Q3 does not keep with a group; it is left out");
     }
     return Ref<SharedObject>(std::move(group));
 }
@@ -88,19 +91,19 @@ void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type,
 {
     const auto& group = static_cast<const Group&>(object);
     Encoder& out = context.out();
+    // As Apple's tools write it: the group object and, when it is not the
+    // default, its DisplayGroupState side by side in the BeginGroup.
     out.begin(kTypeBeginGroup, "BeginGroup");
     std::uint32_t flags = 0;
     if (group.isType(kQ3GroupTypeDisplay))
         flags = fileFlags(static_cast<const DisplayGroup&>(group).state());
-    maybeContainer(context, flags != 0, [&] {
-        out.begin(type, name);
+    out.begin(type, name);
+    out.end();
+    if (flags != 0) {
+        out.begin(kTypeGroupState, "DisplayGroupState");
+        out.flags(kStateFlags, flags);
         out.end();
-        if (flags != 0) {
-            out.begin(kTypeGroupState, "DisplayGroupState");
-            out.flags(kStateFlags, flags);
-            out.end();
-        }
-    });
+    }
     out.end();
     out.enterGroup();
     for (const Group::Node& node : group.nodes())
@@ -179,11 +182,28 @@ void writeUnknownBinary(WriteContext& context, const Object& object)
 
 } // namespace
 
+void applyGroupState(ReadContext& context, SharedObject& group, const Node& state)
+{
+    DataReader in = context.reader(state);
+    const std::uint32_t flags = in.flags(kStateFlags);
+    if (!group.isType(kQ3GroupTypeDisplay)) {
+        errors::postWarning(kQ3WarningInvalidSubObjectForObject,
+                            std::string("a ") + group.classInfo().name +
+                                " has a DisplayGroupState, which only display groups have; it is ignored");
+        return;
+    }
+    static_cast<DisplayGroup&>(group).setState(stateOf(flags));
+}
+
 void addGroupClasses(std::vector<ClassIO>& table)
 {
     table.insert(table.end(),
                  {
                      {kQ3ShapeTypeGroup, "Group", readGroup<Group>, writePlainGroup},
+                     // Apple's 1995 metafile parser (MF3D, kMF3DObjGroup)
+                     // types a plain group 'grop'; QD3D.h's kQ3ShapeTypeGroup
+                     // is 'grup', which Q3 writes. Read both.
+                     {Q3_OBJECT_TYPE('g', 'r', 'o', 'p'), "Group", readGroup<Group>, writePlainGroup},
                      {kQ3GroupTypeDisplay, "DisplayGroup", readGroup<DisplayGroup>, writeDisplayGroup},
                      {kQ3DisplayGroupTypeOrdered, "OrderedDisplayGroup", readGroup<OrderedDisplayGroup>,
                       writeOrderedGroup},

@@ -3,6 +3,7 @@
 #include "io/Metafile.h"
 
 #include "core/Error.h"
+#include "core/ErrorManager.h"
 #include "core/Limits.h"
 
 #include <algorithm>
@@ -63,6 +64,14 @@ public:
             invalid("containers nest deeper than " + std::to_string(limits::kMaxMetafileNesting) + " levels");
         std::size_t at = begin;
         while (at < end) {
+            if (depth == 0 && isTrailingJunk(at, end)) {
+                // Some shipped files carry padding or junk after their last
+                // object; QuickDraw 3D read the objects before it.
+                errors::postWarning(kQ3WarningInvalidMetafileObject,
+                                    "the " + std::to_string(end - at) + " bytes after the last object (from byte " +
+                                        std::to_string(at) + ") are no object; they are ignored");
+                return;
+            }
             if (end - at < 8)
                 invalid("the object at byte " + std::to_string(at) + " is truncated: " +
                         std::to_string(end - at) + " bytes left, a type and a size need 8");
@@ -84,6 +93,22 @@ public:
     }
 
 private:
+    // Whether the bytes from `at` to the end of the file cannot be an
+    // object and are left over: fewer than an object's type and size, all
+    // zero (padding), or a type that is not four printable characters whose
+    // size overruns the file. An object whose type reads as a type and
+    // whose size overruns is a truncated file, which stays an error.
+    bool isTrailingJunk(std::size_t at, std::size_t end) const
+    {
+        if (end - at < 8)
+            return true;
+        const unsigned char* p = m_file.bytes.data();
+        if (std::all_of(p + at, p + end, [](unsigned char b) { return b == 0; }))
+            return true;
+        const bool printable = std::all_of(p + at, p + at + 4, [](unsigned char b) { return b >= 0x20 && b < 0x7F; });
+        return !printable && u32At(at + 4) > end - at - 8;
+    }
+
     Metafile& m_file;
     bool m_little;
 };
@@ -104,13 +129,14 @@ std::vector<Token> tokenize(const std::vector<unsigned char>& bytes)
     const std::size_t n = bytes.size();
     while (i < n) {
         const char c = static_cast<char>(bytes[i]);
-        if (c == '\n') {
+        if (c == '\n' || c == '\r') {
+            // A line ends at LF, CR (Mac text files) or CR LF.
             ++line;
-            ++i;
+            i += (c == '\r' && i + 1 < n && bytes[i + 1] == '\n') ? 2 : 1;
         } else if (std::isspace(static_cast<unsigned char>(c))) {
             ++i;
         } else if (c == '#') {
-            while (i < n && bytes[i] != '\n')
+            while (i < n && bytes[i] != '\n' && bytes[i] != '\r')
                 ++i;
         } else if (c == '(' || c == ')' || c == '|') {
             tokens.push_back({std::string(1, c), line, i});
@@ -122,7 +148,7 @@ std::vector<Token> tokenize(const std::vector<unsigned char>& bytes)
             while (i < n && bytes[i] != '"') {
                 if (bytes[i] == '\\' && i + 1 < n)
                     ++i;
-                if (bytes[i] == '\n')
+                if (bytes[i] == '\n' || (bytes[i] == '\r' && (i + 1 >= n || bytes[i + 1] != '\n')))
                     ++line;
                 text += static_cast<char>(bytes[i]);
                 ++i;
@@ -145,7 +171,23 @@ std::vector<Token> tokenize(const std::vector<unsigned char>& bytes)
 
 bool isName(const std::string& token)
 {
-    return (!token.empty() && std::isalpha(static_cast<unsigned char>(token[0]))) || token == "3DMetafile";
+    return (!token.empty() && std::isalpha(static_cast<unsigned char>(token[0]))) || sameName(token, "3DMetafile");
+}
+
+// A boolean written as a word where a number is stored (TQ3Boolean fields,
+// flags): True and False in any case, as Apple's and other tools wrote
+// them.
+bool booleanWord(const std::string& token, std::uint32_t& value)
+{
+    if (sameName(token, "True")) {
+        value = 1;
+        return true;
+    }
+    if (sameName(token, "False")) {
+        value = 0;
+        return true;
+    }
+    return false;
 }
 
 class TextParser {
@@ -153,6 +195,23 @@ public:
     TextParser(std::vector<Token> tokens, NameLookup names) : m_tokens(std::move(tokens)), m_names(names) {}
 
     bool done() const { return m_at >= m_tokens.size(); }
+    /// Whether the rest of the file is left over after the last object:
+    /// the next token cannot start an object (a label, or a name followed by
+    /// '(') and no parenthesis follows (stray words, control bytes).
+    /// Anything with parentheses is a malformed object, not junk.
+    bool atLeftOver() const
+    {
+        if (done())
+            return false;
+        const std::string& token = m_tokens[m_at].text;
+        if (token.size() > 1 && token.back() == ':')
+            return false;
+        if (isName(token) && m_at + 1 < m_tokens.size() && m_tokens[m_at + 1].text == "(")
+            return false;
+        return std::none_of(m_tokens.begin() + static_cast<std::ptrdiff_t>(m_at), m_tokens.end(),
+                            [](const Token& t) { return t.text == "(" || t.text == ")"; });
+    }
+    std::size_t leftOverLine() const { return m_tokens[m_at].line; }
 
     // Parses `[label:] Name ( ... )` at the current token.
     Node object(std::size_t depth)
@@ -231,6 +290,8 @@ private:
 
 std::uint32_t parseUnsigned(const std::string& token, std::uint64_t max)
 {
+    if (std::uint32_t truth; booleanWord(token, truth))
+        return truth;
     if (token.empty() || token[0] == '-' || token[0] == '+')
         fail(kQ3ErrorInvalidMetafilePrimitive, "'" + token + "' is not an unsigned integer");
     errno = 0;
@@ -255,6 +316,8 @@ std::uint64_t parseUnsigned64(const std::string& token)
 
 std::int64_t parseSigned(const std::string& token, std::int64_t min, std::int64_t max)
 {
+    if (std::uint32_t truth; booleanWord(token, truth))
+        return truth;
     errno = 0;
     char* end = nullptr;
     const long long value = std::strtoll(token.c_str(), &end, 0);
@@ -360,6 +423,12 @@ void parseText(Metafile& file, NameLookup names)
         fail(kQ3ErrorInvalidMetafilePrimitive, "the file mode '" + mode + "' is none of Normal, Stream, Database");
     std::vector<Node> tocs;
     while (!parser.done()) {
+        if (parser.atLeftOver()) {
+            errors::postWarning(kQ3WarningInvalidMetafileObject,
+                                "what follows the last object (from line " + std::to_string(parser.leftOverLine()) +
+                                    ") is no object; it is ignored");
+            break;
+        }
         Node node = parser.object(0);
         if (node.type == kTypeTableOfContents)
             tocs.push_back(std::move(node));
@@ -411,13 +480,14 @@ std::unique_ptr<Metafile> parse(std::vector<unsigned char> bytes, NameLookup nam
         std::size_t i = 0;
         while (i < b.size() && (std::isspace(b[i]) || b[i] == '#')) {
             if (b[i] == '#')
-                while (i < b.size() && b[i] != '\n')
+                while (i < b.size() && b[i] != '\n' && b[i] != '\r')
                     ++i;
             else
                 ++i;
         }
         static const char kMagic[] = "3DMetafile";
-        if (b.size() - i < sizeof kMagic - 1 || std::memcmp(b.data() + i, kMagic, sizeof kMagic - 1) != 0)
+        const std::size_t magic = sizeof kMagic - 1;
+        if (b.size() - i < magic || !sameName(std::string(b.begin() + i, b.begin() + i + magic), kMagic))
             invalid("the file starts with neither the binary '3DMF' tag nor the text 3DMetafile header");
         parseText(*file, names);
     } else {
@@ -484,6 +554,8 @@ std::int32_t DataReader::i32()
 {
     if (m_file.encoding == Encoding::kText) {
         const std::string& t = token();
+        if (std::uint32_t truth; booleanWord(t, truth))
+            return static_cast<std::int32_t>(truth);
         errno = 0;
         char* end = nullptr;
         const long long value = std::strtoll(t.c_str(), &end, 0);
@@ -695,6 +767,14 @@ std::uint32_t DataReader::choice(const std::vector<std::pair<const char*, std::u
     for (const auto& [name, v] : names)
         if (sameName(t, name))
             return v;
+    // A two-valued choice (a TQ3Switch: Off 0, On 1) also reads True and
+    // False, as other tools wrote a highlight state.
+    std::uint32_t truth = 0;
+    const bool twoValued = std::all_of(names.begin(), names.end(), [](const auto& n) { return n.second <= 1; });
+    if (twoValued && booleanWord(t, truth))
+        for (const auto& [name, v] : names)
+            if (v == truth)
+                return v;
     fail(kQ3ErrorInvalidMetafilePrimitive, "'" + t + "' is none of " + m_node.name + "'s values");
 }
 

@@ -26,9 +26,12 @@ namespace {
 using Names = std::vector<std::pair<const char*, std::uint32_t>>;
 
 const Names kBoolean = {{"False", kQ3False}, {"True", kQ3True}};
+// Q3 writes "BothSides"; files written by other tools (Quesa's test models
+// among them) say "Both", which reads the same.
 const Names kBackfacing = {{"BothSides", kQ3BackfacingStyleBoth},
                            {"Remove", kQ3BackfacingStyleRemove},
-                           {"Flip", kQ3BackfacingStyleFlip}};
+                           {"Flip", kQ3BackfacingStyleFlip},
+                           {"Both", kQ3BackfacingStyleBoth}};
 const Names kInterpolation = {{"None", kQ3InterpolationStyleNone},
                               {"Vertex", kQ3InterpolationStyleVertex},
                               {"Pixel", kQ3InterpolationStylePixel}};

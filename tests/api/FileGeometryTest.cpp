@@ -631,6 +631,11 @@ TEST_F(FileGeometryTest, MalformedPatchFilesAreFileErrorsNeverCrashes)
     for (std::size_t cut = 25; cut < binary.size(); cut += 7) {
         SCOPED_TRACE(cut);
         const TQ3Error error = readError(std::vector<unsigned char>(binary.begin(), binary.begin() + cut));
+        if (cutLeavesJunk(binary, cut, false)) {
+            consume(q3test::Kind::Warning, kQ3WarningInvalidMetafileObject, "a cut binary patch", __FILE__, __LINE__);
+            if (error == kQ3ErrorNone)
+                continue;
+        }
         EXPECT_TRUE(error == kQ3ErrorInvalidMetafile || error == kQ3ErrorInvalidMetafilePrimitive ||
                     error == kQ3ErrorInvalidMetafileObject)
             << error;
@@ -718,6 +723,11 @@ TEST_F(FileGeometryTest, MalformedMeshFilesAreFileErrorsNeverCrashes)
     for (std::size_t cut = 25; cut < binary.size(); cut += 5) {
         SCOPED_TRACE(cut);
         const TQ3Error error = readError(std::vector<unsigned char>(binary.begin(), binary.begin() + cut));
+        if (cutLeavesJunk(binary, cut, false)) {
+            consume(q3test::Kind::Warning, kQ3WarningInvalidMetafileObject, "a cut binary mesh", __FILE__, __LINE__);
+            if (error == kQ3ErrorNone)
+                continue;
+        }
         EXPECT_TRUE(error == kQ3ErrorInvalidMetafile || error == kQ3ErrorInvalidMetafilePrimitive ||
                     error == kQ3ErrorInvalidMetafileObject)
             << error;
@@ -830,6 +840,11 @@ TEST_F(FileGeometryTest, MalformedPolygonFilesAreFileErrorsNeverCrashes)
         for (std::size_t cut = 25; cut < binary.size(); cut += 11) {
             SCOPED_TRACE(cut);
             const TQ3Error error = readError(std::vector<unsigned char>(binary.begin(), binary.begin() + cut));
+            if (cutLeavesJunk(binary, cut, name[9] == 'l')) {
+                consume(q3test::Kind::Warning, kQ3WarningInvalidMetafileObject, "a cut binary file", __FILE__, __LINE__);
+                if (error == kQ3ErrorNone)
+                    continue;
+            }
             EXPECT_TRUE(error == kQ3ErrorInvalidMetafile || error == kQ3ErrorInvalidMetafilePrimitive ||
                         error == kQ3ErrorInvalidMetafileObject)
                 << error;

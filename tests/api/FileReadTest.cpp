@@ -228,6 +228,8 @@ TEST_F(FileReadTest, MalformedBinaryFilesAreErrorsNeverCrashes)
     EXPECT_READ_ERROR((std::vector<unsigned char>(header.begin(), header.begin() + 10)), kQ3ErrorInvalidMetafile);
     auto truncated = binaryHeader();
     putTag(truncated, "pnt ");
+    put32(truncated, 12);
+    put32(truncated, 0);
     EXPECT_READ_ERROR(truncated, kQ3ErrorInvalidMetafile);
 
     // A size overrunning its container.

@@ -158,6 +158,46 @@ inline bool sameVertices(const TQ3Vertex3D* a, const TQ3Vertex3D* b, unsigned lo
 /// The first error of reading every object of the bytes in turn, or
 /// kQ3ErrorNone when all of them read. (Later calls clear Q3Error_Get, so
 /// the code is taken as soon as a call fails.)
+/// Where each top-level object of a binary file ends (a BeginGroup's at its
+/// EndGroup, unless `eachObject`: then every object at the file's top level,
+/// the BeginGroup, its members and the EndGroup each), walking the sizes
+/// after the 24-byte header.
+inline std::vector<std::size_t> topLevelEnds(const std::vector<unsigned char>& bytes, bool little,
+                                             bool eachObject = false)
+{
+    std::vector<std::size_t> ends;
+    std::size_t at = 24;
+    int depth = 0;
+    while (at + 8 <= bytes.size()) {
+        std::uint32_t word[2] = {0, 0};
+        for (int w = 0; w < 2; ++w)
+            for (int i = 0; i < 4; ++i)
+                word[w] |= std::uint32_t{bytes[at + 4 * w + i]} << (little ? 8 * i : 24 - 8 * i);
+        if (word[0] == 0x62676E67) // 'bgng'
+            ++depth;
+        else if (word[0] == 0x656E6467) // 'endg'
+            --depth;
+        at += 8 + word[1];
+        if (depth == 0 || eachObject)
+            ends.push_back(at);
+    }
+    return ends;
+}
+
+/// Whether a binary file cut at `cut` leaves fewer bytes than a type and a
+/// size after its last whole object at the file's top level (or after the
+/// header; the objects of a group stand at the top level too): bytes
+/// Q3 reads past with kQ3WarningInvalidMetafileObject, as QuickDraw 3D read
+/// the objects before them (docs/3dmf.md, "Bytes after the last object").
+inline bool cutLeavesJunk(const std::vector<unsigned char>& whole, std::size_t cut, bool little)
+{
+    std::size_t last = 24;
+    for (std::size_t end : topLevelEnds(whole, little, true))
+        if (end <= cut)
+            last = end;
+    return cut > last && cut - last < 8;
+}
+
 inline TQ3Error readError(const std::vector<unsigned char>& bytes)
 {
     TQ3StorageObject storage = Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size()));
