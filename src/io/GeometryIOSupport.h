@@ -2,10 +2,10 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
-// What the geometry readers and writers share (GeometryIO.cpp and
-// GeometryIOComplex.cpp): building a geometry through its class's rules, the
-// attribute set handles of a geometry's data, and the vertices' attribute
-// sets as a VertexAttributeSetList subobject.
+// What the geometry readers and writers share (GeometryIO.cpp,
+// SimpleGeometryIO.cpp and GeometryIOComplex.cpp): building a geometry
+// through its class's rules, the attribute set handles of a geometry's data,
+// and the vertices' attribute sets as a VertexAttributeSetList subobject.
 
 #include "io/ClassIO.h"
 
