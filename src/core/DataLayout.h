@@ -681,6 +681,8 @@ void emptyData(S& s)
 //                                     field outside trailing() has one, an
 //                                     object with no data takes them all
 //     vertexPoints(&S::vertices)      a fixed array of TQ3Vertex3D: the points
+//     vertexPoints(&S::numVertices, &S::vertices)
+//                                     a counted array: the count, the points
 //     trailing(float32(&S::uMin, 0), ...)   optional at the end: read when
 //                                     data is left, written unless every one
 //                                     is its default
@@ -688,8 +690,13 @@ void emptyData(S& s)
 //                              (a reader finds them by type, and takes the
 //                              geometry's own set last):
 //     ownSetPart(&S::set)             the geometry's attribute set
-//     vertexSetsPart(&S::vertices)    the vertices' sets, as a list
-//     faceSetsPart<N>(&S::faces)      N sets, NULL when none has one, as a list
+//     vertexSetsPart(&S::vertices)    the vertices' sets, as a list (also
+//                                     with the count, as vertexPoints)
+//     setListPart(SetList::kFaces, &S::faces, fixedCount<6>())
+//                                     an array of sets (NULL when none has
+//                                     one) for the faces, or for other parts
+//                                     (kOtherParts: a polyline's segments),
+//                                     as a list
 //     endCapsPart(&S::caps)           the end caps mask
 //     capSetPart(CapPart::kTop, &S::topAttributeSet)   a part's set
 //
@@ -711,6 +718,13 @@ struct FileField {
 template <class S, class E, std::size_t N>
 struct VertexPointsField {
     E (S::*member)[N];
+};
+
+/// The count and the points of a malloc'ed array of vertices.
+template <class S, class N, class E>
+struct CountedVertexPointsField {
+    N S::*count;
+    E* S::*member;
 };
 
 template <class... F>
@@ -748,6 +762,12 @@ VertexPointsField<S, E, N> vertexPoints(E (S::*member)[N])
     return {member};
 }
 
+template <class S, class N, class E>
+CountedVertexPointsField<S, N, E> vertexPoints(N S::*count, E* S::*member)
+{
+    return {count, member};
+}
+
 template <class... F>
 Trailing<F...> trailing(F... fields)
 {
@@ -773,9 +793,20 @@ struct VertexSetsPart {
     E (S::*member)[N];
 };
 
-template <class S, std::size_t N>
-struct FaceSetsPart {
+template <class S, class N, class E>
+struct CountedVertexSetsPart {
+    N S::*count;
+    E* S::*member;
+};
+
+/// Which parts an array of sets belongs to.
+enum class SetList { kFaces, kOtherParts };
+
+template <class S, class Count>
+struct SetListPart {
+    SetList list;
     TQ3Object* S::*member;
+    Count count;
 };
 
 template <class S, class T>
@@ -801,10 +832,16 @@ VertexSetsPart<S, E, N> vertexSetsPart(E (S::*member)[N])
     return {member};
 }
 
-template <std::size_t N, class S>
-FaceSetsPart<S, N> faceSetsPart(TQ3Object* S::*member)
+template <class S, class N, class E>
+CountedVertexSetsPart<S, N, E> vertexSetsPart(N S::*count, E* S::*member)
 {
-    return {member};
+    return {count, member};
+}
+
+template <class S, class Count>
+SetListPart<S, Count> setListPart(SetList list, TQ3Object* S::*member, Count count)
+{
+    return {list, member, count};
 }
 
 template <class S, class T>

@@ -64,7 +64,8 @@ template <> struct Describe<TQ3BoxData> {
     static auto fileParts()
     {
         using D = TQ3BoxData;
-        return std::make_tuple(faceSetsPart<Box::kFaces>(&D::faceAttributeSet), ownSetPart(&D::boxAttributeSet));
+        return std::make_tuple(setListPart(SetList::kFaces, &D::faceAttributeSet, fixedCount<Box::kFaces>()),
+                               ownSetPart(&D::boxAttributeSet));
     }
 };
 } // namespace layout

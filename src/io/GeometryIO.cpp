@@ -3,16 +3,17 @@
 //
 // The geometries' 3DMF layouts (3D Metafile Reference, "Geometry objects"):
 // each class's data in the reference's field order, its own attribute set
-// and its vertices' attribute sets (a VertexAttributeSetList) as subobjects.
-// A geometry read from a file goes through the class's own validation, so a
-// file can never create a geometry the API would refuse.
+// and its parts' attribute sets as subobjects. A geometry read from a file
+// goes through the class's own validation, so a file can never create a
+// geometry the API would refuse. The simple geometries (point, line,
+// polyline, triangle, polygon, box, the quadrics) come from their data
+// descriptions (SimpleGeometryIO.cpp); here are the TriMesh and the NURB
+// curve, and GeometryIOComplex.cpp has the geometries with nested parts.
 
 #include "io/ClassIO.h"
 #include "io/GeometryIOSupport.h"
 
 #include "geometry/NURBCurve.h"
-#include "geometry/PolyLine.h"
-#include "geometry/Polygon.h"
 #include "geometry/TriMesh.h"
 
 #include <cstring>
@@ -30,92 +31,6 @@ Ref<SharedObject> refusePart(ReadContext&, const Parts& parts)
 void writeNothing(WriteContext&, const Object&) {}
 
 // ---- the classes ---------------------------------------------------------------
-
-template <class T, class Data>
-Ref<SharedObject> readVertexList(ReadContext& context, const Parts& parts, Data data, TQ3AttributeSet Data::*own)
-{
-    DataReader in = context.reader(parts.root);
-    const std::uint32_t n = in.count(12, 3, "vertices");
-    std::vector<TQ3Vertex3D> vertices = readPoints(in, n);
-    const auto sets = readVertexSets(context, parts, n);
-    attachSets(vertices, sets);
-    Ref<AttributeSet> set = context.attributeSet(parts);
-    data.numVertices = n;
-    data.vertices = vertices.data();
-    data.*own = set.get();
-    return make<T>(data);
-}
-
-// A polyline's segments' sets: a GeometryAttributeSetList of numVertices - 1
-// elements.
-
-Ref<SharedObject> readPolyLine(ReadContext& context, const Parts& parts)
-{
-    DataReader in = context.reader(parts.root);
-    const std::uint32_t n = in.count(12, 3, "vertices");
-    std::vector<TQ3Vertex3D> vertices = readPoints(in, n);
-    const auto sets = readVertexSets(context, parts, n);
-    attachSets(vertices, sets);
-    const auto segmentSets =
-        readSetList(context, parts, kTypeGeometrySets, "GeometryAttributeSetList", n == 0 ? 0 : n - 1);
-    std::vector<TQ3AttributeSet> segments(segmentSets.size());
-    bool anySegment = false;
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-        segments[i] = segmentSets[i].get();
-        anySegment = anySegment || segments[i] != nullptr;
-    }
-    Ref<AttributeSet> own = context.attributeSet(parts);
-    TQ3PolyLineData data{n, vertices.data(), anySegment ? segments.data() : nullptr, own.get()};
-    return make<PolyLine>(data);
-}
-
-Ref<SharedObject> readPolygon(ReadContext& context, const Parts& parts)
-{
-    return readVertexList<Polygon>(context, parts, TQ3PolygonData{0, nullptr, nullptr},
-                                   &TQ3PolygonData::polygonAttributeSet);
-}
-
-void writeVertexListObject(WriteContext& context, TQ3ObjectType type, const char* name, const TQ3Vertex3D* vertices,
-                           unsigned long n, const AttributeSet* own)
-{
-    writeWithSets(context, own, vertices, n, [&] {
-        context.out().begin(type, name);
-        context.out().u32(static_cast<std::uint32_t>(n));
-        for (unsigned long i = 0; i < n; ++i)
-            context.out().point3D(vertices[i].point);
-        context.out().end();
-    });
-}
-
-void writePolyLine(WriteContext& context, const Object& object)
-{
-    const TQ3PolyLineData& data = dataOf<PolyLine>(object);
-    const AttributeSet* own = setOf(data.polyLineAttributeSet);
-    std::vector<const AttributeSet*> segments;
-    if (data.segmentAttributeSet != nullptr)
-        for (unsigned long i = 0; i + 1 < data.numVertices; ++i)
-            segments.push_back(setOf(data.segmentAttributeSet[i]));
-    const bool container =
-        WriteContext::hasAttributes(own) || anyVertexSet(data.vertices, data.numVertices) || anySet(segments);
-    maybeContainer(context, container, [&] {
-        Encoder& out = context.out();
-        out.begin(kQ3GeometryTypePolyLine, "PolyLine");
-        out.u32(static_cast<std::uint32_t>(data.numVertices));
-        for (unsigned long i = 0; i < data.numVertices; ++i)
-            out.point3D(data.vertices[i].point);
-        out.end();
-        context.attributeSet(own);
-        writeVertexSets(context, data.vertices, data.numVertices);
-        writeSetList(context, kTypeGeometrySets, "GeometryAttributeSetList", segments);
-    });
-}
-
-void writePolygon(WriteContext& context, const Object& object)
-{
-    const TQ3PolygonData& data = dataOf<Polygon>(object);
-    writeVertexListObject(context, kQ3GeometryTypePolygon, "Polygon", data.vertices, data.numVertices,
-                          setOf(data.polygonAttributeSet));
-}
 
 // TriMesh indices are 8, 16 or 32 bits in binary files: 8 when the count is
 // at most 0xFF, 16 when it is at most 0xFFFF, else 32, so the largest index
@@ -420,8 +335,6 @@ void addGeometryClasses(std::vector<ClassIO>& table)
 {
     addSimpleGeometryClasses(table);
     table.insert(table.end(), {
-                                  {kQ3GeometryTypePolyLine, "PolyLine", readPolyLine, writePolyLine},
-                                  {kQ3GeometryTypePolygon, "Polygon", readPolygon, writePolygon},
                                   {kQ3GeometryTypeTriMesh, "TriMesh", readTriMesh, writeTriMesh},
                                   {kQ3GeometryTypeNURBCurve, "NURBCurve", readNURBCurve, writeNURBCurve},
                                   {kTypeGeometrySets, "GeometryAttributeSetList", refusePart, writeNothing},

@@ -163,20 +163,6 @@ inline std::vector<Ref<AttributeSet>> readVertexSets(ReadContext& context, const
     return readSetList(context, parts, kTypeVertexSets, "VertexAttributeSetList", n);
 }
 
-// Writes `body` (the object itself) with the geometry's own set and its
-// vertices' sets, in a container when there are any.
-template <class Body>
-void writeWithSets(WriteContext& context, const AttributeSet* own, const TQ3Vertex3D* vertices, unsigned long n,
-                   Body&& body)
-{
-    const bool container = WriteContext::hasAttributes(own) || anyVertexSet(vertices, n);
-    maybeContainer(context, container, [&] {
-        body();
-        context.attributeSet(own);
-        writeVertexSets(context, vertices, n);
-    });
-}
-
 inline std::vector<TQ3Vertex3D> readPoints(DataReader& in, std::uint32_t n)
 {
     std::vector<TQ3Vertex3D> vertices(n);
@@ -185,12 +171,6 @@ inline std::vector<TQ3Vertex3D> readPoints(DataReader& in, std::uint32_t n)
         vertex.attributeSet = nullptr;
     }
     return vertices;
-}
-
-inline void attachSets(std::vector<TQ3Vertex3D>& vertices, const std::vector<Ref<AttributeSet>>& sets)
-{
-    for (std::size_t i = 0; i < vertices.size(); ++i)
-        vertices[i].attributeSet = sets[i].get();
 }
 
 } // namespace q3::io

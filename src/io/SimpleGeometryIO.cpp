@@ -10,13 +10,15 @@
 // subobjects' tags:
 //
 //   point3D / vector3D / float32      Point3D, Vector3D, Float32
-//   vertexPoints                      one Point3D per vertex
+//   vertexPoints                      one Point3D per vertex (a counted
+//                                     array: the Uns32 count first)
 //   trailing(...)                     read when data is left; written unless
 //                                     every field is its default (the
 //                                     quadrics' u and v ranges)
 //   ownSetPart                        the geometry's AttributeSet
-//   vertexSetsPart / faceSetsPart     a VertexAttributeSetList /
-//                                     FaceAttributeSetList
+//   vertexSetsPart                    a VertexAttributeSetList
+//   setListPart                       a FaceAttributeSetList (kFaces), a
+//                                     GeometryAttributeSetList (kOtherParts)
 //   endCapsPart                       Caps (Top 1, Bottom 2, Interior 4)
 //   capSetPart                        a TopCapAttributeSet (BottomCap...,
 //                                     FaceCap..., InteriorCap...) container:
@@ -41,6 +43,8 @@
 #include "geometry/Ellipsoid.h"
 #include "geometry/Line.h"
 #include "geometry/Point.h"
+#include "geometry/PolyLine.h"
+#include "geometry/Polygon.h"
 #include "geometry/Torus.h"
 #include "geometry/Triangle.h"
 
@@ -87,6 +91,14 @@ Ref<SharedObject> refusePart(ReadContext&, const Parts& parts)
 
 void writeNothing(WriteContext&, const Object&) {}
 
+/// What the data read holds until the geometry is made: the arrays it
+/// points to and the sets it names.
+struct Held {
+    std::vector<std::vector<TQ3Vertex3D>> vertices;
+    std::vector<std::unique_ptr<TQ3AttributeSet[]>> setArrays;
+    std::vector<Ref<AttributeSet>> references;
+};
+
 // ---- the data ------------------------------------------------------------------
 
 template <class F>
@@ -97,7 +109,7 @@ template <class F>
 constexpr bool isTrailing = IsTrailing<std::decay_t<F>>::value;
 
 template <class S, class T, Primitive K>
-void readField(DataReader& in, S& data, const layout::FileField<S, T, K>& field)
+void readField(DataReader& in, S& data, Held&, const layout::FileField<S, T, K>& field)
 {
     if constexpr (K == Primitive::kPoint3D)
         data.*field.member = in.point3D();
@@ -108,10 +120,24 @@ void readField(DataReader& in, S& data, const layout::FileField<S, T, K>& field)
 }
 
 template <class S, class E, std::size_t N>
-void readField(DataReader& in, S& data, const layout::VertexPointsField<S, E, N>& field)
+void readField(DataReader& in, S& data, Held&, const layout::VertexPointsField<S, E, N>& field)
 {
     for (E& vertex : data.*field.member)
         vertex.point = in.point3D();
+}
+
+template <class S, class N>
+void readField(DataReader& in, S& data, Held& held, const layout::CountedVertexPointsField<S, N, TQ3Vertex3D>& field)
+{
+    const std::uint32_t n = in.count(12, 3, "vertices");
+    std::vector<TQ3Vertex3D> vertices(n);
+    for (TQ3Vertex3D& vertex : vertices) {
+        vertex.point = in.point3D();
+        vertex.attributeSet = nullptr;
+    }
+    data.*field.count = n;
+    data.*field.member = vertices.data();
+    held.vertices.push_back(std::move(vertices));
 }
 
 template <class S, class T, Primitive K>
@@ -132,13 +158,22 @@ void writeField(Encoder& out, const S& data, const layout::VertexPointsField<S, 
         out.point3D(vertex.point);
 }
 
+template <class S, class N, class E>
+void writeField(Encoder& out, const S& data, const layout::CountedVertexPointsField<S, N, E>& field)
+{
+    const std::size_t n = std::size_t(data.*field.count);
+    out.u32(static_cast<std::uint32_t>(n));
+    for (std::size_t i = 0; i < n; ++i)
+        out.point3D((data.*field.member)[i].point);
+}
+
 template <class S, class T, Primitive K>
 bool hasDefault(const layout::FileField<S, T, K>& field)
 {
     return field.hasDefault;
 }
-template <class S, class E, std::size_t N>
-bool hasDefault(const layout::VertexPointsField<S, E, N>&)
+template <class F>
+bool hasDefault(const F&)
 {
     return false;
 }
@@ -148,8 +183,8 @@ void takeDefault(S& data, const layout::FileField<S, T, K>& field)
 {
     data.*field.member = field.fallback;
 }
-template <class S, class E, std::size_t N>
-void takeDefault(S&, const layout::VertexPointsField<S, E, N>&)
+template <class S, class F>
+void takeDefault(S&, const F&)
 {
 }
 
@@ -171,7 +206,7 @@ void each(const Tuple& tuple, F&& f)
 // the object has no data at all, all defaults (MF3D's "0-sized objects").
 // Then each trailing group: read when data is left, else its defaults.
 template <class S>
-void readData(DataReader& in, S& data)
+void readData(DataReader& in, S& data, Held& held)
 {
     const auto fields = layout::Describe<S>::fileFields();
     bool allDefaults = true;
@@ -185,14 +220,14 @@ void readData(DataReader& in, S& data)
             const bool present = !in.atEnd();
             each(field.fields, [&](const auto& tail) {
                 if (present)
-                    readField(in, data, tail);
+                    readField(in, data, held, tail);
                 else
                     takeDefault(data, tail);
             });
         } else if (defaults) {
             takeDefault(data, field);
         } else {
-            readField(in, data, field);
+            readField(in, data, held, field);
         }
     });
 }
@@ -254,51 +289,82 @@ void writeCapSet(WriteContext& context, const CapSet& cap, const AttributeSet* s
     out.end();
 }
 
-/// What the data read holds until the geometry is made: the sets it names
-/// and the arrays of handles it points to.
-struct Held {
-    std::vector<Ref<AttributeSet>> sets;
-    std::vector<std::unique_ptr<TQ3AttributeSet[]>> arrays;
+struct SetListTag {
+    TQ3ObjectType type;
+    const char* name;
 };
+constexpr SetListTag kFaceSets = {kTypeFaceSets, "FaceAttributeSetList"};
+constexpr SetListTag kOtherSets = {kTypeGeometrySets, "GeometryAttributeSetList"};
+
+const SetListTag& tagOf(layout::SetList list)
+{
+    return list == layout::SetList::kFaces ? kFaceSets : kOtherSets;
+}
+
+// The list's sets, one per element, or none when the array is NULL.
+template <class S, class Count>
+std::vector<const AttributeSet*> setsOf(const S& data, const layout::SetListPart<S, Count>& part)
+{
+    std::vector<const AttributeSet*> sets;
+    if (data.*part.member != nullptr) {
+        const std::size_t n = part.count(data);
+        for (std::size_t i = 0; i < n; ++i)
+            sets.push_back(setOf((data.*part.member)[i]));
+    }
+    return sets;
+}
+
+void readVertexSetsInto(ReadContext& context, const Parts& parts, TQ3Vertex3D* vertices, std::size_t n, Held& held)
+{
+    std::vector<Ref<AttributeSet>> sets = readVertexSets(context, parts, n);
+    for (std::size_t i = 0; i < n; ++i) {
+        vertices[i].attributeSet = sets[i].get();
+        held.references.push_back(std::move(sets[i]));
+    }
+}
 
 template <class S>
 void readPart(ReadContext& context, const Parts& parts, S& data, Held& held, const layout::OwnSetPart<S>& part)
 {
-    held.sets.push_back(context.attributeSet(parts));
-    data.*part.member = held.sets.back().get();
+    held.references.push_back(context.attributeSet(parts));
+    data.*part.member = held.references.back().get();
 }
 
 template <class S>
 void readPart(ReadContext& context, const Parts& parts, S& data, Held& held, const layout::CapSetPart<S>& part)
 {
-    held.sets.push_back(readCapSet(context, parts, capSetOf(part.part)));
-    data.*part.member = held.sets.back().get();
-}
-
-template <class S, class E, std::size_t N>
-void readPart(ReadContext& context, const Parts& parts, S& data, Held& held,
-              const layout::VertexSetsPart<S, E, N>& part)
-{
-    std::vector<Ref<AttributeSet>> sets = readVertexSets(context, parts, N);
-    for (std::size_t i = 0; i < N; ++i) {
-        (data.*part.member)[i].attributeSet = sets[i].get();
-        held.sets.push_back(std::move(sets[i]));
-    }
+    held.references.push_back(readCapSet(context, parts, capSetOf(part.part)));
+    data.*part.member = held.references.back().get();
 }
 
 template <class S, std::size_t N>
-void readPart(ReadContext& context, const Parts& parts, S& data, Held& held, const layout::FaceSetsPart<S, N>& part)
+void readPart(ReadContext& context, const Parts& parts, S& data, Held& held, const layout::VertexSetsPart<S, TQ3Vertex3D, N>& part)
 {
-    std::vector<Ref<AttributeSet>> sets = readSetList(context, parts, kTypeFaceSets, "FaceAttributeSetList", N);
-    auto handles = std::make_unique<TQ3AttributeSet[]>(N);
+    readVertexSetsInto(context, parts, data.*part.member, N, held);
+}
+
+template <class S, class N>
+void readPart(ReadContext& context, const Parts& parts, S& data, Held& held,
+              const layout::CountedVertexSetsPart<S, N, TQ3Vertex3D>& part)
+{
+    readVertexSetsInto(context, parts, data.*part.member, std::size_t(data.*part.count), held);
+}
+
+template <class S, class Count>
+void readPart(ReadContext& context, const Parts& parts, S& data, Held& held, const layout::SetListPart<S, Count>& part)
+{
+    const SetListTag& tag = tagOf(part.list);
+    const std::size_t n = part.count(data);
+    std::vector<Ref<AttributeSet>> sets = readSetList(context, parts, tag.type, tag.name, n);
+    auto handles = std::make_unique<TQ3AttributeSet[]>(n);
     bool any = false;
-    for (std::size_t i = 0; i < N; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         handles[i] = sets[i].get();
         any = any || handles[i] != nullptr;
-        held.sets.push_back(std::move(sets[i]));
+        held.references.push_back(std::move(sets[i]));
     }
     data.*part.member = any ? handles.get() : nullptr;
-    held.arrays.push_back(std::move(handles));
+    held.setArrays.push_back(std::move(handles));
 }
 
 template <class S, class T>
@@ -322,15 +388,15 @@ bool writesSomething(const S& data, const layout::VertexSetsPart<S, E, N>& part)
 {
     return anyVertexSet(data.*part.member, N);
 }
-template <class S, std::size_t N>
-bool writesSomething(const S& data, const layout::FaceSetsPart<S, N>& part)
+template <class S, class N, class E>
+bool writesSomething(const S& data, const layout::CountedVertexSetsPart<S, N, E>& part)
 {
-    if (data.*part.member == nullptr)
-        return false;
-    for (std::size_t i = 0; i < N; ++i)
-        if (WriteContext::hasAttributes(setOf((data.*part.member)[i])))
-            return true;
-    return false;
+    return anyVertexSet(data.*part.member, static_cast<unsigned long>(data.*part.count));
+}
+template <class S, class Count>
+bool writesSomething(const S& data, const layout::SetListPart<S, Count>& part)
+{
+    return anySet(setsOf(data, part));
 }
 template <class S, class T>
 bool writesSomething(const S& data, const layout::EndCapsPart<S, T>& part)
@@ -353,14 +419,16 @@ void writePart(WriteContext& context, const S& data, const layout::VertexSetsPar
 {
     writeVertexSets(context, data.*part.member, N);
 }
-template <class S, std::size_t N>
-void writePart(WriteContext& context, const S& data, const layout::FaceSetsPart<S, N>& part)
+template <class S, class N, class E>
+void writePart(WriteContext& context, const S& data, const layout::CountedVertexSetsPart<S, N, E>& part)
 {
-    std::vector<const AttributeSet*> sets;
-    if (data.*part.member != nullptr)
-        for (std::size_t i = 0; i < N; ++i)
-            sets.push_back(setOf((data.*part.member)[i]));
-    writeSetList(context, kTypeFaceSets, "FaceAttributeSetList", sets);
+    writeVertexSets(context, data.*part.member, static_cast<unsigned long>(data.*part.count));
+}
+template <class S, class Count>
+void writePart(WriteContext& context, const S& data, const layout::SetListPart<S, Count>& part)
+{
+    const SetListTag& tag = tagOf(part.list);
+    writeSetList(context, tag.type, tag.name, setsOf(data, part));
 }
 template <class S, class T>
 void writePart(WriteContext& context, const S& data, const layout::EndCapsPart<S, T>& part)
@@ -383,8 +451,8 @@ Ref<SharedObject> readSimple(ReadContext& context, const Parts& parts)
     using S = typename T::DataType;
     DataReader in = context.reader(parts.root);
     S data{};
-    readData(in, data);
     Held held;
+    readData(in, data, held);
     const auto partList = layout::Describe<S>::fileParts();
     each(partList, [&](const auto& part) {
         if constexpr (!isOwnSet<decltype(part)>)
@@ -428,7 +496,9 @@ void addSimpleGeometryClasses(std::vector<ClassIO>& table)
     table.insert(table.end(), {
                                   simpleClass<Point>("Point"),
                                   simpleClass<Line>("Line"),
+                                  simpleClass<PolyLine>("PolyLine"),
                                   simpleClass<Triangle>("Triangle"),
+                                  simpleClass<Polygon>("Polygon"),
                                   simpleClass<Box>("Box"),
                                   simpleClass<Cone>("Cone"),
                                   simpleClass<Cylinder>("Cylinder"),
