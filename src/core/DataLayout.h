@@ -666,4 +666,188 @@ void emptyData(S& s)
     release(s);
 }
 
+// ---- The 3DMF file order (optional) ---------------------------------------
+//
+// A simple geometry's 3DMF object is a fixed sequence of its struct's fields,
+// in the 3D Metafile Reference's order, which is not the struct's (a file's
+// Cone starts with its orientation, TQ3ConeData with its origin), followed by
+// its subobjects. Describe<S> gives that form with two more functions:
+//
+//   static auto fileFields()   the data, in file order:
+//     point3D(&S::m), vector3D(&S::m), float32(&S::m)   one primitive each
+//     point3D(&S::m, {0, 0, 0}) ...   with the default Apple's metafile
+//                                     parser gives an object with no data
+//                                     (MF3D's "0-sized objects"): when every
+//                                     field outside trailing() has one, an
+//                                     object with no data takes them all
+//     vertexPoints(&S::vertices)      a fixed array of TQ3Vertex3D: the points
+//     vertexPoints(&S::numVertices, &S::vertices)
+//                                     a counted array: the count, the points
+//     trailing(float32(&S::uMin, 0), ...)   optional at the end: read when
+//                                     data is left, written unless every one
+//                                     is its default
+//   static auto fileParts()    the subobjects, in the order they are written
+//                              (a reader finds them by type, and takes the
+//                              geometry's own set last):
+//     ownSetPart(&S::set)             the geometry's attribute set
+//     vertexSetsPart(&S::vertices)    the vertices' sets, as a list (also
+//                                     with the count, as vertexPoints)
+//     setListPart(SetList::kFaces, &S::faces, fixedCount<6>())
+//                                     an array of sets (NULL when none has
+//                                     one) for the faces, or for other parts
+//                                     (kOtherParts: a polyline's segments),
+//                                     as a list
+//     endCapsPart(&S::caps)           the end caps mask
+//     capSetPart(CapPart::kTop, &S::topAttributeSet)   a part's set
+//
+// The kinds are plain: src/io maps each to its reads, writes and tags
+// (io/SimpleGeometryIO.cpp), so src/geometry never names the format.
+
+/// The 3DMF primitive a field is written as.
+enum class Primitive { kPoint3D, kVector3D, kFloat32 };
+
+template <class S, class T, Primitive K>
+struct FileField {
+    static constexpr Primitive kKind = K;
+    T S::*member;
+    bool hasDefault;
+    T fallback;
+};
+
+/// The points of a fixed array of vertices (their sets are a part).
+template <class S, class E, std::size_t N>
+struct VertexPointsField {
+    E (S::*member)[N];
+};
+
+/// The count and the points of a malloc'ed array of vertices.
+template <class S, class N, class E>
+struct CountedVertexPointsField {
+    N S::*count;
+    E* S::*member;
+};
+
+template <class... F>
+struct Trailing {
+    std::tuple<F...> fields;
+};
+
+template <class S>
+FileField<S, TQ3Point3D, Primitive::kPoint3D> point3D(TQ3Point3D S::*member)
+{
+    return {member, false, {}};
+}
+
+template <class S>
+FileField<S, TQ3Point3D, Primitive::kPoint3D> point3D(TQ3Point3D S::*member, TQ3Point3D fallback)
+{
+    return {member, true, fallback};
+}
+
+template <class S>
+FileField<S, TQ3Vector3D, Primitive::kVector3D> vector3D(TQ3Vector3D S::*member, TQ3Vector3D fallback)
+{
+    return {member, true, fallback};
+}
+
+template <class S>
+FileField<S, float, Primitive::kFloat32> float32(float S::*member, float fallback)
+{
+    return {member, true, fallback};
+}
+
+template <class S, class E, std::size_t N>
+VertexPointsField<S, E, N> vertexPoints(E (S::*member)[N])
+{
+    return {member};
+}
+
+template <class S, class N, class E>
+CountedVertexPointsField<S, N, E> vertexPoints(N S::*count, E* S::*member)
+{
+    return {count, member};
+}
+
+template <class... F>
+Trailing<F...> trailing(F... fields)
+{
+    return {std::make_tuple(fields...)};
+}
+
+/// A quadric's part that has its own attribute set in a file.
+enum class CapPart { kTop, kBottom, kFace, kInterior };
+
+template <class S>
+struct OwnSetPart {
+    TQ3Object S::*member;
+};
+
+template <class S>
+struct CapSetPart {
+    CapPart part;
+    TQ3Object S::*member;
+};
+
+template <class S, class E, std::size_t N>
+struct VertexSetsPart {
+    E (S::*member)[N];
+};
+
+template <class S, class N, class E>
+struct CountedVertexSetsPart {
+    N S::*count;
+    E* S::*member;
+};
+
+/// Which parts an array of sets belongs to.
+enum class SetList { kFaces, kOtherParts };
+
+template <class S, class Count>
+struct SetListPart {
+    SetList list;
+    TQ3Object* S::*member;
+    Count count;
+};
+
+template <class S, class T>
+struct EndCapsPart {
+    T S::*member;
+};
+
+template <class S>
+OwnSetPart<S> ownSetPart(TQ3Object S::*member)
+{
+    return {member};
+}
+
+template <class S>
+CapSetPart<S> capSetPart(CapPart part, TQ3Object S::*member)
+{
+    return {part, member};
+}
+
+template <class S, class E, std::size_t N>
+VertexSetsPart<S, E, N> vertexSetsPart(E (S::*member)[N])
+{
+    return {member};
+}
+
+template <class S, class N, class E>
+CountedVertexSetsPart<S, N, E> vertexSetsPart(N S::*count, E* S::*member)
+{
+    return {count, member};
+}
+
+template <class S, class Count>
+SetListPart<S, Count> setListPart(SetList list, TQ3Object* S::*member, Count count)
+{
+    return {list, member, count};
+}
+
+template <class S, class T>
+EndCapsPart<S, T> endCapsPart(T S::*member)
+{
+    return {member};
+}
+
 } // namespace q3::layout

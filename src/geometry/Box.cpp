@@ -8,20 +8,6 @@ namespace q3 {
 
 const ClassInfo kBoxClass{kQ3GeometryTypeBox, &kGeometryClass, "box"};
 
-namespace layout {
-template <> struct Describe<TQ3BoxData> {
-    static auto fields()
-    {
-        using D = TQ3BoxData;
-        return std::make_tuple(
-            value("origin", &D::origin), value("orientation", &D::orientation), value("majorAxis", &D::majorAxis),
-            value("minorAxis", &D::minorAxis),
-            optionalHandleArray<AttributeSet>("faceAttributeSet", &D::faceAttributeSet, fixedCount<Box::kFaces>()),
-            handle<AttributeSet>("boxAttributeSet", &D::boxAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Box, TQ3BoxData>;
 
 void Box::check(const TQ3BoxData& d)

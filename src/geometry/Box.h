@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/Quadric.h"
 
 namespace q3 {
@@ -38,5 +39,35 @@ public:
     /// index above 5), making the array of six when the box has none.
     void setFaceSet(unsigned long index, Ref<AttributeSet> set);
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <> struct Describe<TQ3BoxData> {
+    static auto fields()
+    {
+        using D = TQ3BoxData;
+        return std::make_tuple(
+            value("origin", &D::origin), value("orientation", &D::orientation), value("majorAxis", &D::majorAxis),
+            value("minorAxis", &D::minorAxis),
+            optionalHandleArray<AttributeSet>("faceAttributeSet", &D::faceAttributeSet, fixedCount<Box::kFaces>()),
+            handle<AttributeSet>("boxAttributeSet", &D::boxAttributeSet));
+    }
+    // An empty Box ( ) is the unit box at the origin (MF3D's MF3DBoxData).
+    static auto fileFields()
+    {
+        using D = TQ3BoxData;
+        return std::make_tuple(vector3D(&D::orientation, {1, 0, 0}), vector3D(&D::majorAxis, {0, 1, 0}),
+                               vector3D(&D::minorAxis, {0, 0, 1}), point3D(&D::origin, {0, 0, 0}));
+    }
+    // The six faces' sets in face order (left, right, front, back, top, bottom).
+    static auto fileParts()
+    {
+        using D = TQ3BoxData;
+        return std::make_tuple(setListPart(SetList::kFaces, &D::faceAttributeSet, fixedCount<Box::kFaces>()),
+                               ownSetPart(&D::boxAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

@@ -8,24 +8,6 @@ namespace q3 {
 
 const ClassInfo kCylinderClass{kQ3GeometryTypeCylinder, &kGeometryClass, "cylinder"};
 
-namespace layout {
-template <> struct Describe<TQ3CylinderData> {
-    static auto fields()
-    {
-        using D = TQ3CylinderData;
-        return std::make_tuple(value("origin", &D::origin), value("orientation", &D::orientation),
-                               value("majorRadius", &D::majorRadius), value("minorRadius", &D::minorRadius),
-                               value("uMin", &D::uMin), value("uMax", &D::uMax), value("vMin", &D::vMin),
-                               value("vMax", &D::vMax), value("caps", &D::caps),
-                               handle<AttributeSet>("interiorAttributeSet", &D::interiorAttributeSet),
-                               handle<AttributeSet>("topAttributeSet", &D::topAttributeSet),
-                               handle<AttributeSet>("faceAttributeSet", &D::faceAttributeSet),
-                               handle<AttributeSet>("bottomAttributeSet", &D::bottomAttributeSet),
-                               handle<AttributeSet>("cylinderAttributeSet", &D::cylinderAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Cylinder, TQ3CylinderData>;
 
 void Cylinder::boundPoints(const TQ3CylinderData& d, std::vector<glm::dvec3>& points)

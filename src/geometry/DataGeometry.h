@@ -22,9 +22,10 @@
 //       ... Apple's per-field accessors ...
 //   };
 //
-// and, in its .cpp, the description (layout::Describe<TQ3TriangleData>) and
-// `template class DataGeometry<Triangle, TQ3TriangleData>;`, which compiles
-// the shared members there, where the description is visible.
+// the description (layout::Describe<TQ3TriangleData>: in its header when it
+// also gives the 3DMF form, which src/io reads, else in its .cpp), and in its
+// .cpp `template class DataGeometry<Triangle, TQ3TriangleData>;`, which
+// compiles the shared members there, where the description is visible.
 
 #include "geometry/Geometry.h"
 

@@ -8,19 +8,6 @@ namespace q3 {
 
 const ClassInfo kDiskClass{kQ3GeometryTypeDisk, &kGeometryClass, "disk"};
 
-namespace layout {
-template <> struct Describe<TQ3DiskData> {
-    static auto fields()
-    {
-        using D = TQ3DiskData;
-        return std::make_tuple(value("origin", &D::origin), value("majorRadius", &D::majorRadius),
-                               value("minorRadius", &D::minorRadius), value("uMin", &D::uMin), value("uMax", &D::uMax),
-                               value("vMin", &D::vMin), value("vMax", &D::vMax),
-                               handle<AttributeSet>("diskAttributeSet", &D::diskAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Disk, TQ3DiskData>;
 
 void Disk::check(const TQ3DiskData& d)

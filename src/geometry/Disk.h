@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/Quadric.h"
 
 namespace q3 {
@@ -29,5 +30,30 @@ public:
     const ClassInfo& classInfo() const override { return kDiskClass; }
     std::vector<const AttributeSet*> partSets() const { return {}; }
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <> struct Describe<TQ3DiskData> {
+    static auto fields()
+    {
+        using D = TQ3DiskData;
+        return std::make_tuple(value("origin", &D::origin), value("majorRadius", &D::majorRadius),
+                               value("minorRadius", &D::minorRadius), value("uMin", &D::uMin), value("uMax", &D::uMax),
+                               value("vMin", &D::vMin), value("vMax", &D::vMax),
+                               handle<AttributeSet>("diskAttributeSet", &D::diskAttributeSet));
+    }
+    // MF3D's 1.0 disk stops at the origin; the QD3D 1.5.4 book's adds the ranges.
+    static auto fileFields()
+    {
+        using D = TQ3DiskData;
+        return std::make_tuple(vector3D(&D::majorRadius, {1, 0, 0}), vector3D(&D::minorRadius, {0, 1, 0}),
+                               point3D(&D::origin, {0, 0, 0}),
+                               trailing(float32(&D::uMin, 0), float32(&D::uMax, 1), float32(&D::vMin, 0),
+                                        float32(&D::vMax, 1)));
+    }
+    static auto fileParts() { return std::make_tuple(ownSetPart(&TQ3DiskData::diskAttributeSet)); }
+};
+} // namespace layout
 
 } // namespace q3

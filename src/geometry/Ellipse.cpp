@@ -8,18 +8,6 @@ namespace q3 {
 
 const ClassInfo kEllipseClass{kQ3GeometryTypeEllipse, &kGeometryClass, "ellipse"};
 
-namespace layout {
-template <> struct Describe<TQ3EllipseData> {
-    static auto fields()
-    {
-        using D = TQ3EllipseData;
-        return std::make_tuple(value("origin", &D::origin), value("majorRadius", &D::majorRadius),
-                               value("minorRadius", &D::minorRadius), value("uMin", &D::uMin), value("uMax", &D::uMax),
-                               handle<AttributeSet>("ellipseAttributeSet", &D::ellipseAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Ellipse, TQ3EllipseData>;
 
 void Ellipse::check(const TQ3EllipseData& d)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/Quadric.h"
 
 namespace q3 {
@@ -35,5 +36,27 @@ public:
 private:
     mutable std::string m_report; // under the mesh lock, as QuadricGeometry's
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <> struct Describe<TQ3EllipseData> {
+    static auto fields()
+    {
+        using D = TQ3EllipseData;
+        return std::make_tuple(value("origin", &D::origin), value("majorRadius", &D::majorRadius),
+                               value("minorRadius", &D::minorRadius), value("uMin", &D::uMin), value("uMax", &D::uMax),
+                               handle<AttributeSet>("ellipseAttributeSet", &D::ellipseAttributeSet));
+    }
+    // The disk's form with uMin and uMax, as Quesa reads it.
+    static auto fileFields()
+    {
+        using D = TQ3EllipseData;
+        return std::make_tuple(vector3D(&D::majorRadius, {1, 0, 0}), vector3D(&D::minorRadius, {0, 1, 0}),
+                               point3D(&D::origin, {0, 0, 0}), trailing(float32(&D::uMin, 0), float32(&D::uMax, 1)));
+    }
+    static auto fileParts() { return std::make_tuple(ownSetPart(&TQ3EllipseData::ellipseAttributeSet)); }
+};
+} // namespace layout
 
 } // namespace q3

@@ -10,21 +10,6 @@ namespace q3 {
 
 const ClassInfo kEllipsoidClass{kQ3GeometryTypeEllipsoid, &kGeometryClass, "ellipsoid"};
 
-namespace layout {
-template <> struct Describe<TQ3EllipsoidData> {
-    static auto fields()
-    {
-        using D = TQ3EllipsoidData;
-        return std::make_tuple(value("origin", &D::origin), value("orientation", &D::orientation),
-                               value("majorRadius", &D::majorRadius), value("minorRadius", &D::minorRadius),
-                               value("uMin", &D::uMin), value("uMax", &D::uMax), value("vMin", &D::vMin),
-                               value("vMax", &D::vMax), value("caps", &D::caps),
-                               handle<AttributeSet>("interiorAttributeSet", &D::interiorAttributeSet),
-                               handle<AttributeSet>("ellipsoidAttributeSet", &D::ellipsoidAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Ellipsoid, TQ3EllipsoidData>;
 
 void Ellipsoid::boundPoints(const TQ3EllipsoidData& d, std::vector<glm::dvec3>& points)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/Quadric.h"
 
 namespace q3 {
@@ -33,5 +34,37 @@ public:
     /// Every part but the surface takes interiorAttributeSet.
     std::vector<const AttributeSet*> partSets() const;
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <> struct Describe<TQ3EllipsoidData> {
+    static auto fields()
+    {
+        using D = TQ3EllipsoidData;
+        return std::make_tuple(value("origin", &D::origin), value("orientation", &D::orientation),
+                               value("majorRadius", &D::majorRadius), value("minorRadius", &D::minorRadius),
+                               value("uMin", &D::uMin), value("uMax", &D::uMax), value("vMin", &D::vMin),
+                               value("vMax", &D::vMax), value("caps", &D::caps),
+                               handle<AttributeSet>("interiorAttributeSet", &D::interiorAttributeSet),
+                               handle<AttributeSet>("ellipsoidAttributeSet", &D::ellipsoidAttributeSet));
+    }
+    // As Quesa reads it; an object with no data is MF3D's default (docs/3dmf.md).
+    static auto fileFields()
+    {
+        using D = TQ3EllipsoidData;
+        return std::make_tuple(vector3D(&D::orientation, {1, 0, 0}), vector3D(&D::majorRadius, {0, 1, 0}),
+                               vector3D(&D::minorRadius, {0, 0, 1}), point3D(&D::origin, {0, 0, 0}),
+                               trailing(float32(&D::uMin, 0), float32(&D::uMax, 1), float32(&D::vMin, 0),
+                                        float32(&D::vMax, 1)));
+    }
+    static auto fileParts()
+    {
+        using D = TQ3EllipsoidData;
+        return std::make_tuple(endCapsPart(&D::caps), capSetPart(CapPart::kInterior, &D::interiorAttributeSet),
+                               ownSetPart(&D::ellipsoidAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

@@ -8,17 +8,6 @@ namespace q3 {
 
 const ClassInfo kLineClass{kQ3GeometryTypeLine, &kGeometryClass, "line"};
 
-namespace layout {
-template <>
-struct Describe<TQ3LineData> {
-    static auto fields()
-    {
-        return std::make_tuple(inlineArray("vertices", &TQ3LineData::vertices),
-                               handle<AttributeSet>("lineAttributeSet", &TQ3LineData::lineAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Line, TQ3LineData>;
 
 void Line::check(const TQ3LineData& data)

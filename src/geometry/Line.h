@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
@@ -42,5 +43,23 @@ public:
 private:
     static void checkEnd(unsigned long index);
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <>
+struct Describe<TQ3LineData> {
+    static auto fields()
+    {
+        return std::make_tuple(inlineArray("vertices", &TQ3LineData::vertices),
+                               handle<AttributeSet>("lineAttributeSet", &TQ3LineData::lineAttributeSet));
+    }
+    static auto fileFields() { return std::make_tuple(vertexPoints(&TQ3LineData::vertices)); }
+    static auto fileParts()
+    {
+        return std::make_tuple(ownSetPart(&TQ3LineData::lineAttributeSet), vertexSetsPart(&TQ3LineData::vertices));
+    }
+};
+} // namespace layout
 
 } // namespace q3

@@ -8,17 +8,6 @@ namespace q3 {
 
 const ClassInfo kPointClass{kQ3GeometryTypePoint, &kGeometryClass, "point"};
 
-namespace layout {
-template <>
-struct Describe<TQ3PointData> {
-    static auto fields()
-    {
-        return std::make_tuple(value("point", &TQ3PointData::point),
-                               handle<AttributeSet>("pointAttributeSet", &TQ3PointData::pointAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Point, TQ3PointData>;
 
 void Point::check(const TQ3PointData& data)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
@@ -32,5 +33,20 @@ public:
     /// is not finite.
     void setPosition(const TQ3Point3D& position);
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <>
+struct Describe<TQ3PointData> {
+    static auto fields()
+    {
+        return std::make_tuple(value("point", &TQ3PointData::point),
+                               handle<AttributeSet>("pointAttributeSet", &TQ3PointData::pointAttributeSet));
+    }
+    static auto fileFields() { return std::make_tuple(point3D(&TQ3PointData::point)); }
+    static auto fileParts() { return std::make_tuple(ownSetPart(&TQ3PointData::pointAttributeSet)); }
+};
+} // namespace layout
 
 } // namespace q3

@@ -8,30 +8,6 @@ namespace q3 {
 
 const ClassInfo kPolyLineClass{kQ3GeometryTypePolyLine, &kGeometryClass, "polyline"};
 
-namespace {
-
-std::size_t segmentCount(const TQ3PolyLineData& data)
-{
-    return data.numVertices == 0 ? 0 : std::size_t(data.numVertices) - 1;
-}
-
-} // namespace
-
-namespace layout {
-template <>
-struct Describe<TQ3PolyLineData> {
-    static auto fields()
-    {
-        return std::make_tuple(
-            value("numVertices", &TQ3PolyLineData::numVertices),
-            array("vertices", &TQ3PolyLineData::vertices, countOf(&TQ3PolyLineData::numVertices)),
-            optionalHandleArray<AttributeSet>("segmentAttributeSet", &TQ3PolyLineData::segmentAttributeSet,
-                                              segmentCount),
-            handle<AttributeSet>("polyLineAttributeSet", &TQ3PolyLineData::polyLineAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<PolyLine, TQ3PolyLineData>;
 
 void PolyLine::check(const TQ3PolyLineData& data)

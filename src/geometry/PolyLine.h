@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 #include <cstddef>
@@ -25,6 +26,11 @@ public:
     /// kQ3ErrorGeometryInsufficientNumberOfPoints (numVertices < 2),
     /// kQ3ErrorInvalidData (a coordinate is not finite).
     static void check(const TQ3PolyLineData& data);
+    /// numVertices - 1, or 0 without vertices.
+    static std::size_t segmentCount(const TQ3PolyLineData& data)
+    {
+        return data.numVertices == 0 ? 0 : std::size_t(data.numVertices) - 1;
+    }
 
     using DataGeometry::DataGeometry;
 
@@ -65,5 +71,34 @@ public:
 private:
     void checkSegmentIndex(std::size_t index) const;
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <>
+struct Describe<TQ3PolyLineData> {
+    static auto fields()
+    {
+        return std::make_tuple(
+            value("numVertices", &TQ3PolyLineData::numVertices),
+            array("vertices", &TQ3PolyLineData::vertices, countOf(&TQ3PolyLineData::numVertices)),
+            optionalHandleArray<AttributeSet>("segmentAttributeSet", &TQ3PolyLineData::segmentAttributeSet,
+                                              PolyLine::segmentCount),
+            handle<AttributeSet>("polyLineAttributeSet", &TQ3PolyLineData::polyLineAttributeSet));
+    }
+    static auto fileFields()
+    {
+        return std::make_tuple(vertexPoints(&TQ3PolyLineData::numVertices, &TQ3PolyLineData::vertices));
+    }
+    // The segments' sets: a GeometryAttributeSetList of numVertices - 1
+    // elements, as Quesa reads them.
+    static auto fileParts()
+    {
+        using D = TQ3PolyLineData;
+        return std::make_tuple(ownSetPart(&D::polyLineAttributeSet), vertexSetsPart(&D::numVertices, &D::vertices),
+                               setListPart(SetList::kOtherParts, &D::segmentAttributeSet, PolyLine::segmentCount));
+    }
+};
+} // namespace layout
 
 } // namespace q3

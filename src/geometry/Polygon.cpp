@@ -9,19 +9,6 @@ namespace q3 {
 
 const ClassInfo kPolygonClass{kQ3GeometryTypePolygon, &kGeometryClass, "polygon"};
 
-namespace layout {
-template <>
-struct Describe<TQ3PolygonData> {
-    static auto fields()
-    {
-        return std::make_tuple(
-            value("numVertices", &TQ3PolygonData::numVertices),
-            array("vertices", &TQ3PolygonData::vertices, countOf(&TQ3PolygonData::numVertices)),
-            handle<AttributeSet>("polygonAttributeSet", &TQ3PolygonData::polygonAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Polygon, TQ3PolygonData>;
 
 void Polygon::check(const TQ3PolygonData& data)

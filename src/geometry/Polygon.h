@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
@@ -37,5 +38,29 @@ public:
     void setVertexPosition(std::size_t index, const TQ3Point3D& position);
     void setVertexAttributeSet(std::size_t index, Ref<AttributeSet> attributes);
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <>
+struct Describe<TQ3PolygonData> {
+    static auto fields()
+    {
+        return std::make_tuple(
+            value("numVertices", &TQ3PolygonData::numVertices),
+            array("vertices", &TQ3PolygonData::vertices, countOf(&TQ3PolygonData::numVertices)),
+            handle<AttributeSet>("polygonAttributeSet", &TQ3PolygonData::polygonAttributeSet));
+    }
+    static auto fileFields()
+    {
+        return std::make_tuple(vertexPoints(&TQ3PolygonData::numVertices, &TQ3PolygonData::vertices));
+    }
+    static auto fileParts()
+    {
+        using D = TQ3PolygonData;
+        return std::make_tuple(ownSetPart(&D::polygonAttributeSet), vertexSetsPart(&D::numVertices, &D::vertices));
+    }
+};
+} // namespace layout
 
 } // namespace q3

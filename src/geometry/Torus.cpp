@@ -12,21 +12,6 @@ namespace q3 {
 
 const ClassInfo kTorusClass{kQ3GeometryTypeTorus, &kGeometryClass, "torus"};
 
-namespace layout {
-template <> struct Describe<TQ3TorusData> {
-    static auto fields()
-    {
-        using D = TQ3TorusData;
-        return std::make_tuple(value("origin", &D::origin), value("orientation", &D::orientation),
-                               value("majorRadius", &D::majorRadius), value("minorRadius", &D::minorRadius),
-                               value("ratio", &D::ratio), value("uMin", &D::uMin), value("uMax", &D::uMax),
-                               value("vMin", &D::vMin), value("vMax", &D::vMax), value("caps", &D::caps),
-                               handle<AttributeSet>("interiorAttributeSet", &D::interiorAttributeSet),
-                               handle<AttributeSet>("torusAttributeSet", &D::torusAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Torus, TQ3TorusData>;
 
 void Torus::check(const TQ3TorusData& d)

@@ -8,18 +8,6 @@ namespace q3 {
 
 const ClassInfo kTriangleClass{kQ3GeometryTypeTriangle, &kGeometryClass, "triangle"};
 
-namespace layout {
-template <>
-struct Describe<TQ3TriangleData> {
-    static auto fields()
-    {
-        return std::make_tuple(
-            inlineArray("vertices", &TQ3TriangleData::vertices),
-            handle<AttributeSet>("triangleAttributeSet", &TQ3TriangleData::triangleAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Triangle, TQ3TriangleData>;
 
 void Triangle::check(const TQ3TriangleData& data)

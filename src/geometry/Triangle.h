@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
@@ -37,5 +38,25 @@ public:
     /// Replaces the attribute set of vertex `index` (null removes it).
     void setVertexAttributeSet(unsigned long index, Ref<AttributeSet> attributes);
 };
+
+// The data description (core/DataLayout.h), with the 3DMF form its reader
+// and writer come from (io/SimpleGeometryIO.cpp).
+namespace layout {
+template <>
+struct Describe<TQ3TriangleData> {
+    static auto fields()
+    {
+        return std::make_tuple(
+            inlineArray("vertices", &TQ3TriangleData::vertices),
+            handle<AttributeSet>("triangleAttributeSet", &TQ3TriangleData::triangleAttributeSet));
+    }
+    static auto fileFields() { return std::make_tuple(vertexPoints(&TQ3TriangleData::vertices)); }
+    static auto fileParts()
+    {
+        return std::make_tuple(ownSetPart(&TQ3TriangleData::triangleAttributeSet),
+                               vertexSetsPart(&TQ3TriangleData::vertices));
+    }
+};
+} // namespace layout
 
 } // namespace q3

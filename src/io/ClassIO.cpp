@@ -9,7 +9,8 @@
 #include "io/Unknown.h"
 
 #include <cctype>
-#include <cstring>
+#include <string>
+#include <unordered_map>
 
 namespace q3::io {
 
@@ -31,12 +32,51 @@ const std::vector<ClassIO>& classes()
     return table;
 }
 
+namespace {
+
+// Text names compare without regard to case (the parser asks for every
+// object's name), so the name map hashes and compares case-folded
+// characters and a lookup copies nothing.
+unsigned char folded(char c)
+{
+    return static_cast<unsigned char>(std::tolower(static_cast<unsigned char>(c)));
+}
+
+struct FoldedHash {
+    std::size_t operator()(const std::string& name) const
+    {
+        std::size_t hash = 14695981039346656037ull; // FNV-1a
+        for (char c : name)
+            hash = (hash ^ folded(c)) * 1099511628211ull;
+        return hash;
+    }
+};
+
+struct FoldedEqual {
+    bool operator()(const std::string& a, const std::string& b) const
+    {
+        if (a.size() != b.size())
+            return false;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (folded(a[i]) != folded(b[i]))
+                return false;
+        return true;
+    }
+};
+
+} // namespace
+
 const ClassIO* classOfType(TQ3ObjectType type)
 {
-    for (const ClassIO& entry : classes())
-        if (entry.type == type)
-            return &entry;
-    return nullptr;
+    // Built once; a type listed twice keeps its first row, as the scan did.
+    static const std::unordered_map<TQ3ObjectType, const ClassIO*> byType = [] {
+        std::unordered_map<TQ3ObjectType, const ClassIO*> map;
+        for (const ClassIO& entry : classes())
+            map.emplace(entry.type, &entry);
+        return map;
+    }();
+    const auto found = byType.find(type);
+    return found == byType.end() ? nullptr : found->second;
 }
 
 const ClassIO* classOfObject(const Object& object)
@@ -49,18 +89,14 @@ const ClassIO* classOfObject(const Object& object)
 
 TQ3ObjectType typeOfName(const std::string& name)
 {
-    for (const ClassIO& entry : classes()) {
-        const std::size_t n = std::strlen(entry.name);
-        if (n != name.size())
-            continue;
-        bool same = true;
-        for (std::size_t i = 0; i < n && same; ++i)
-            same = std::tolower(static_cast<unsigned char>(name[i])) ==
-                   std::tolower(static_cast<unsigned char>(entry.name[i]));
-        if (same)
-            return entry.type;
-    }
-    return 0;
+    static const std::unordered_map<std::string, TQ3ObjectType, FoldedHash, FoldedEqual> byName = [] {
+        std::unordered_map<std::string, TQ3ObjectType, FoldedHash, FoldedEqual> map;
+        for (const ClassIO& entry : classes())
+            map.emplace(entry.name, entry.type);
+        return map;
+    }();
+    const auto found = byName.find(name);
+    return found == byName.end() ? 0 : found->second;
 }
 
 const Node* Parts::find(TQ3ObjectType type) const

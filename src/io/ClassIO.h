@@ -7,7 +7,9 @@
 // sets as child objects), so each class has a small pair of functions in its
 // family's file (GeometryIO.cpp, AttributeIO.cpp, GroupIO.cpp, ...), listed
 // there in one table; classes() gathers the tables. Adding a class is one
-// read function, one write function and one table row.
+// read function, one write function and one table row; a simple geometry
+// (a fixed sequence of its struct's fields, then subobjects) gets both from
+// its data description and needs only the row (SimpleGeometryIO.cpp).
 
 #include "core/AttributeSet.h"
 #include "core/Object.h"
@@ -67,6 +69,10 @@ void applyGroupState(ReadContext& context, SharedObject& group, const Node& stat
 
 /// The family tables (one per file).
 void addGeometryClasses(std::vector<ClassIO>& table);
+/// The geometries whose reader and writer come from their data description
+/// (Describe<S>::fileFields and fileParts), in SimpleGeometryIO.cpp;
+/// addGeometryClasses adds them.
+void addSimpleGeometryClasses(std::vector<ClassIO>& table);
 /// The geometries with nested parts (patches with trim loops, polyhedra...),
 /// in GeometryIOComplex.cpp; addGeometryClasses adds them.
 void addComplexGeometryClasses(std::vector<ClassIO>& table);

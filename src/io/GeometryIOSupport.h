@@ -2,10 +2,10 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
-// What the geometry readers and writers share (GeometryIO.cpp and
-// GeometryIOComplex.cpp): building a geometry through its class's rules, the
-// attribute set handles of a geometry's data, and the vertices' attribute
-// sets as a VertexAttributeSetList subobject.
+// What the geometry readers and writers share (GeometryIO.cpp,
+// SimpleGeometryIO.cpp and GeometryIOComplex.cpp): building a geometry
+// through its class's rules, the attribute set handles of a geometry's data,
+// and the vertices' attribute sets as a VertexAttributeSetList subobject.
 
 #include "io/ClassIO.h"
 
@@ -163,20 +163,6 @@ inline std::vector<Ref<AttributeSet>> readVertexSets(ReadContext& context, const
     return readSetList(context, parts, kTypeVertexSets, "VertexAttributeSetList", n);
 }
 
-// Writes `body` (the object itself) with the geometry's own set and its
-// vertices' sets, in a container when there are any.
-template <class Body>
-void writeWithSets(WriteContext& context, const AttributeSet* own, const TQ3Vertex3D* vertices, unsigned long n,
-                   Body&& body)
-{
-    const bool container = WriteContext::hasAttributes(own) || anyVertexSet(vertices, n);
-    maybeContainer(context, container, [&] {
-        body();
-        context.attributeSet(own);
-        writeVertexSets(context, vertices, n);
-    });
-}
-
 inline std::vector<TQ3Vertex3D> readPoints(DataReader& in, std::uint32_t n)
 {
     std::vector<TQ3Vertex3D> vertices(n);
@@ -185,12 +171,6 @@ inline std::vector<TQ3Vertex3D> readPoints(DataReader& in, std::uint32_t n)
         vertex.attributeSet = nullptr;
     }
     return vertices;
-}
-
-inline void attachSets(std::vector<TQ3Vertex3D>& vertices, const std::vector<Ref<AttributeSet>>& sets)
-{
-    for (std::size_t i = 0; i < vertices.size(); ++i)
-        vertices[i].attributeSet = sets[i].get();
 }
 
 } // namespace q3::io
