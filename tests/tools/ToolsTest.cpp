@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -132,8 +133,11 @@ TEST(Q3Render, AFilesCameraIsUsedWithTheImagesAspectUnlessFitCameraIsAsked)
     const std::string model = std::string(Q3_TEST_DATA_DIR) + "/camera_scene.3dmf";
     const std::string own = scratch("own_camera.png");
     const std::string fitted = scratch("fitted_camera.png");
-    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + own + " --size 200x100"), 0);
-    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + fitted + " --size 200x100 --fit-camera"), 0);
+    // --unlit: flat colours, so that a specular highlight cannot whiten part
+    // of a square and move its measured edges.
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + own + " --size 200x100 --unlit"), 0);
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + fitted + " --size 200x100 --fit-camera --unlit"),
+              0);
     q3test::RgbaImage a, b;
     ASSERT_TRUE(q3test::readPng(own, &a));
     ASSERT_TRUE(q3test::readPng(fitted, &b));
@@ -170,7 +174,9 @@ TEST(Q3Render, AViewHintsCameraAndClearColourAreUsedWhenTheFileHasNoCamera)
     ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "hints_scene.3dmf -o " + white +
                   " --size 200x100 --background 1,1,1"),
               0);
-    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "camera_scene.3dmf -o " + own + " --size 200x100"), 0);
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "camera_scene.3dmf -o " + own +
+                  " --size 200x100 --background 1,1,1"),
+              0);
     ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "hints_scene.3dmf -o " + fitted +
                   " --size 200x100 --fit-camera"),
               0);
@@ -201,9 +207,11 @@ TEST(Q3Render, HelpNamesEveryOptionOnStandardOutput)
     const std::string help = scratch("help.txt");
     ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " --help > " + help), 0);
     const std::string text = slurp(help);
-    for (const char* option : {"-o", "--size", "--renderer", "--subdivision", "--background", "--fit-camera"})
+    for (const char* option :
+         {"-o", "--size", "--renderer", "--subdivision", "--background", "--fit-camera", "--unlit", "--help"})
         EXPECT_NE(text.find(option), std::string::npos) << option;
-    EXPECT_NE(text.find("ViewHints"), std::string::npos);
+    for (const char* defaultNamed : {"ViewHints", "Phong", "0.5,0.5,0.5", "Exit status"})
+        EXPECT_NE(text.find(defaultNamed), std::string::npos) << defaultNamed;
     std::remove(help.c_str());
 }
 
@@ -263,11 +271,133 @@ TEST(Q3Render, ATexturedModelShowsItsTextureInsteadOfItsColour)
     // an orange (230, 180, 60) and blue (40, 90, 200) checkerboard.
     const std::string model = std::string(Q3_TEST_DATA_DIR) + "/textured_box.3dmf";
     const std::string png = scratch("textured.png");
-    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + png + " --size 200x150"), 0);
+    // On white: the default mid-grey background would pass for the box's grey.
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + png + " --size 200x150 --background 1,1,1"),
+              0);
     q3test::RgbaImage image;
     ASSERT_TRUE(q3test::readPng(png, &image));
     EXPECT_GT(pixelsLike(image, 230, 180, 60), 1000);
     EXPECT_GT(pixelsLike(image, 40, 90, 200), 1000);
     EXPECT_EQ(pixelsLike(image, 128, 128, 128), 0) << "the box's grey shows through";
+    std::remove(png.c_str());
+}
+
+namespace {
+
+const std::string kLitSphere = std::string(Q3_TEST_DATA_DIR) + "/lit_sphere.3dmf";
+
+// The grey of the default background, 0.5 in each channel.
+bool isBackground(const unsigned char* p)
+{
+    return std::abs(p[0] - 128) <= 1 && std::abs(p[1] - 128) <= 1 && std::abs(p[2] - 128) <= 1;
+}
+
+double brightness(const unsigned char* p)
+{
+    return (p[0] + p[1] + p[2]) / 3.0;
+}
+
+// A pixel of the sphere's image and the normal there: tests/data/lit_sphere.3dmf's
+// camera looks down -z at the unit sphere, so the image's x and y (y up) over the
+// disc's radius are the normal's x and y, near enough for comparisons between
+// pixels whose predicted brightness differs by a wide margin (the perspective of
+// a camera 5 radii away moves the silhouette by a few percent of the radius).
+struct SurfacePixel {
+    double brightness;
+    double nx, ny, nz;
+};
+
+std::vector<SurfacePixel> spherePixels(const q3test::RgbaImage& image)
+{
+    double sumX = 0, sumY = 0;
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (!isBackground(image.at(x, y))) {
+                sumX += x + 0.5;
+                sumY += y + 0.5;
+                ++n;
+            }
+    std::vector<SurfacePixel> pixels;
+    if (n == 0)
+        return pixels;
+    const double cx = sumX / n, cy = sumY / n, radius = std::sqrt(n / 3.14159265358979);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const double nx = (x + 0.5 - cx) / radius, ny = (cy - y - 0.5) / radius;
+            const double r2 = nx * nx + ny * ny;
+            if (r2 > 0.8 || isBackground(image.at(x, y)))
+                continue; // the rim, where the estimate of the normal is poorest
+            pixels.push_back({brightness(image.at(x, y)), nx, ny, std::sqrt(1 - r2)});
+        }
+    return pixels;
+}
+
+} // namespace
+
+TEST(Q3Render, ByDefaultAModelWithoutLightsIsLitAndShadedOnMidGrey)
+{
+    const std::string png = scratch("lit_sphere.png");
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + kLitSphere + " -o " + png + " --size 200x200"), 0);
+    q3test::RgbaImage image;
+    ASSERT_TRUE(q3test::readPng(png, &image));
+    EXPECT_TRUE(isBackground(image.at(0, 0)));
+    EXPECT_TRUE(isBackground(image.at(199, 199)));
+    const std::vector<SurfacePixel> pixels = spherePixels(image);
+    ASSERT_GT(pixels.size(), 5000u);
+    // q3render's default directional light travels along the view direction
+    // (0, 0, -1) tilted by (-0.3, -0.5, 0): from over the viewer's right
+    // shoulder. The Lambert term N.L (L towards the light) orders the pixels:
+    // of two pixels whose N.L differ by more than 0.5, the one facing the
+    // light more is the brighter (the Phong highlight only adds to the side
+    // facing the light).
+    const double len = std::sqrt(0.3 * 0.3 + 0.5 * 0.5 + 1.0);
+    const double lx = 0.3 / len, ly = 0.5 / len, lz = 1.0 / len;
+    auto facing = [&](const SurfacePixel& p) { return std::max(0.0, p.nx * lx + p.ny * ly + p.nz * lz); };
+    int compared = 0, wrong = 0;
+    for (size_t i = 0; i < pixels.size(); i += 37)
+        for (size_t j = 0; j < pixels.size(); j += 41) {
+            if (facing(pixels[i]) - facing(pixels[j]) <= 0.5)
+                continue;
+            ++compared;
+            if (!(pixels[i].brightness > pixels[j].brightness + 10))
+                ++wrong;
+        }
+    EXPECT_GT(compared, 1000);
+    EXPECT_EQ(wrong, 0) << "of " << compared;
+    // The brightest pixel is on the upper right (towards the light), the
+    // darkest on the lower left; the spread is that of a lit surface.
+    const auto [darkest, brightest] = std::minmax_element(
+        pixels.begin(), pixels.end(),
+        [](const SurfacePixel& a, const SurfacePixel& b) { return a.brightness < b.brightness; });
+    EXPECT_GT(brightest->nx, 0);
+    EXPECT_GT(brightest->ny, 0);
+    EXPECT_LT(darkest->nx, 0);
+    EXPECT_LT(darkest->ny, 0);
+    EXPECT_GT(brightest->brightness - darkest->brightness, 80);
+    std::remove(png.c_str());
+}
+
+TEST(Q3Render, UnlitGivesTheFlatDiffuseColourOnMidGrey)
+{
+    const std::string png = scratch("unlit_sphere.png");
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + kLitSphere + " -o " + png + " --size 200x200 --unlit"), 0);
+    q3test::RgbaImage image;
+    ASSERT_TRUE(q3test::readPng(png, &image));
+    // Every pixel is the background grey (0.5) or the sphere's diffuse grey
+    // (0.6 -> 153), whatever way the surface faces.
+    int sphere = 0, other = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const unsigned char* p = image.at(x, y);
+            if (isBackground(p))
+                continue;
+            if (std::abs(p[0] - 153) <= 1 && std::abs(p[1] - 153) <= 1 && std::abs(p[2] - 153) <= 1)
+                ++sphere;
+            else
+                ++other;
+        }
+    EXPECT_GT(sphere, 5000);
+    EXPECT_EQ(other, 0);
     std::remove(png.c_str());
 }
