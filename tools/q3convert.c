@@ -4,7 +4,7 @@
 /* q3convert: rewrites a 3DMF file, text or binary.
  *
  *   q3convert in.3dmf out.3dmf [--text | --binary | --little-endian]
- *             [--normal | --stream | --database]
+ *             [--normal | --stream | --database] [--help]
  *
  * Every object is read and written back (unknown objects unchanged). The
  * default is a binary Normal file, big-endian as Mac QuickDraw 3D wrote them;
@@ -20,10 +20,33 @@
 
 #include <string.h>
 
+static void printUsage(FILE *to)
+{
+    fprintf(to, "usage: q3convert in.3dmf out.3dmf [--text | --binary | --little-endian]\n"
+                "                 [--normal | --stream | --database]\n"
+                "\n"
+                "Reads every object of in.3dmf and writes them to out.3dmf (unknown objects\n"
+                "unchanged).\n"
+                "\n"
+                "  --text           a text file\n"
+                "  --binary         a big-endian binary file, as Mac QuickDraw 3D wrote them\n"
+                "                   (default)\n"
+                "  --little-endian  a little-endian binary file (kQ3FileModeSwap); unknown\n"
+                "                   objects of a big-endian input are left out\n"
+                "  --normal         a Normal file: objects written twice are written once and\n"
+                "                   referred to (default)\n"
+                "  --stream         a Stream file: every object written in full\n"
+                "  --database       a Database file: every shared object listed in the table\n"
+                "                   of contents, so that another file can refer to it\n"
+                "  --help, -h       print this text and exit\n"
+                "\n"
+                "Exit status: 0 done, 1 bad arguments, 2 the input cannot be read, 3 the\n"
+                "output cannot be written.\n");
+}
+
 static int usage(void)
 {
-    fprintf(stderr, "usage: q3convert in.3dmf out.3dmf [--text | --binary | --little-endian] "
-                    "[--normal | --stream | --database]\n");
+    printUsage(stderr);
     return 1;
 }
 
@@ -48,7 +71,10 @@ int main(int argc, char **argv)
             mode = kQ3FileModeStream;
         else if (strcmp(argv[arg], "--database") == 0)
             mode = kQ3FileModeDatabase;
-        else if (argv[arg][0] == '-')
+        else if (strcmp(argv[arg], "--help") == 0 || strcmp(argv[arg], "-h") == 0) {
+            printUsage(stdout);
+            return 0;
+        } else if (argv[arg][0] == '-')
             return usage();
         else if (in == NULL)
             in = argv[arg];

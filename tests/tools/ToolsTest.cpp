@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -401,3 +402,85 @@ TEST(Q3Render, UnlitGivesTheFlatDiffuseColourOnMidGrey)
     EXPECT_EQ(other, 0);
     std::remove(png.c_str());
 }
+
+namespace {
+
+// The options a program's --help names: every word that starts with one or
+// two hyphens and a letter ("-o", "--size", "--help").
+std::vector<std::string> optionsIn(const std::string& help)
+{
+    std::vector<std::string> options;
+    for (size_t i = 0; i < help.size(); ++i) {
+        const bool starts = help[i] == '-' && (i == 0 || std::string(" \t\n[|,").find(help[i - 1]) != std::string::npos);
+        if (!starts)
+            continue;
+        size_t end = i;
+        while (end < help.size() && (help[end] == '-' || std::isalnum(static_cast<unsigned char>(help[end]))))
+            ++end;
+        const std::string word = help.substr(i, end - i);
+        const size_t hyphens = word.find_first_not_of('-');
+        if (hyphens != std::string::npos && hyphens <= 2 && std::isalpha(static_cast<unsigned char>(word[hyphens])) &&
+            std::find(options.begin(), options.end(), word) == options.end())
+            options.push_back(word);
+        i = end;
+    }
+    return options;
+}
+
+// A roff source with its escaped hyphens ("\-") plain.
+std::string unescapedHyphens(std::string roff)
+{
+    for (size_t at = roff.find("\\-"); at != std::string::npos; at = roff.find("\\-", at))
+        roff.erase(at, 1);
+    return roff;
+}
+
+bool haveProgram(const std::string& name)
+{
+    return run("which " + name + " > /dev/null") == 0;
+}
+
+} // namespace
+
+class ManPage : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
+
+TEST_P(ManPage, ExistsFormatsWithoutWarningsAndNamesEveryOptionOfHelp)
+{
+    const std::string tool = GetParam().first, program = GetParam().second;
+    const std::string page = std::string(Q3_MAN_DIR) + "/" + tool + ".1";
+    const std::string roff = slurp(page);
+    ASSERT_FALSE(roff.empty()) << page << " is missing";
+    for (const char* section : {".TH", ".SH NAME", ".SH SYNOPSIS", ".SH DESCRIPTION", ".SH OPTIONS", ".SH EXIT STATUS",
+                                ".SH EXAMPLES", ".SH SEE ALSO"})
+        EXPECT_NE(roff.find(section), std::string::npos) << section;
+    // Every option --help names is in the page.
+    const std::string helpFile = scratch(tool + "_help.txt");
+    ASSERT_EQ(run(program + " --help > " + helpFile), 0);
+    const std::string help = slurp(helpFile);
+    std::remove(helpFile.c_str());
+    const std::vector<std::string> options = optionsIn(help);
+    EXPECT_GE(options.size(), 4u) << help;
+    const std::string text = unescapedHyphens(roff);
+    for (const std::string& option : options)
+        EXPECT_NE(text.find(option), std::string::npos) << option << " is in --help but not in " << page;
+    // The exit statuses --help documents (those main returns), each in the page.
+    for (const char* status : {"0 done", "1 bad arguments", "2 the", "3 "})
+        EXPECT_NE(help.find(status), std::string::npos) << status;
+    for (const char* status : {".B 0\n", ".B 1\n", ".B 2\n", ".B 3\n"})
+        EXPECT_NE(roff.find(status), std::string::npos) << status;
+    if (!haveProgram("groff")) {
+        GTEST_SKIP() << "groff is not installed: the page's formatting is not checked";
+    }
+    std::string warnings;
+    EXPECT_EQ(run("groff -man -ww -z " + page, &warnings), 0);
+    EXPECT_EQ(warnings, "");
+    if (haveProgram("man")) {
+        EXPECT_EQ(run("man --warnings -l " + page + " > /dev/null", &warnings), 0);
+        EXPECT_EQ(warnings, "");
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Tools, ManPage,
+                         ::testing::Values(std::make_pair("q3render", Q3_RENDER_TOOL),
+                                           std::make_pair("q3convert", Q3_CONVERT_TOOL)),
+                         [](const auto& info) { return std::string(info.param.first); });
