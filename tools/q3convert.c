@@ -10,7 +10,10 @@
  * default is a binary Normal file, big-endian as Mac QuickDraw 3D wrote them;
  * --little-endian writes a binary file in little-endian byte order
  * (kQ3FileModeSwap), where unknown objects of a big-endian input are left
- * out, since their data cannot be swapped. Exit
+ * out, since their data cannot be swapped. So are unknown objects of the
+ * other encoding (an unknown text object has no binary form, an unknown
+ * binary object no text form). Every warning the library posts while reading
+ * or writing, these included, is printed to stderr. Exit
  * status: 0 done, 1 bad arguments, 2 the input cannot be read, 3 the output
  * cannot be written. */
 
@@ -19,6 +22,15 @@
 #include "QD3DView.h"
 
 #include <string.h>
+
+/* What the library warns of (an object left out of the output, say) is
+ * printed, so that nothing is lost silently. */
+static void printWarning(TQ3Warning firstWarning, TQ3Warning lastWarning, long reference)
+{
+    (void)firstWarning;
+    (void)reference;
+    fprintf(stderr, "q3convert: warning %d: %s\n", (int)lastWarning, Q3Warning_GetMessage());
+}
 
 static void printUsage(FILE *to)
 {
@@ -39,6 +51,10 @@ static void printUsage(FILE *to)
                 "  --database       a Database file: every shared object listed in the table\n"
                 "                   of contents, so that another file can refer to it\n"
                 "  --help, -h       print this text and exit\n"
+                "\n"
+                "Unknown objects keep the encoding they were read in: a text output leaves\n"
+                "out unknown binary objects, a binary output unknown text objects. Each object\n"
+                "left out is named in a warning on standard error.\n"
                 "\n"
                 "Exit status: 0 done, 1 bad arguments, 2 the input cannot be read, 3 the\n"
                 "output cannot be written.\n");
@@ -87,6 +103,7 @@ int main(int argc, char **argv)
         return usage();
     if (Q3Initialize() != kQ3Success)
         return 3;
+    Q3Warning_Register(printWarning, 0);
     count = q3load_read(in, &objects);
     if (count < 0) {
         Q3Exit();
