@@ -11,11 +11,13 @@
  * model lit and shaded on a neutral background.
  *
  * Illumination: a Phong illumination shader is submitted before the model,
- * as QuickDraw 3D's viewer submitted its own illumination shader (its Options
- * menu's "Phong shading"; Quesa's reimplementation of the viewer does the
- * same with a Lambert or Phong shader) before the model's group. A file that
- * submits its own illumination shader replaces it from that point on, as any
- * later shader replaces an earlier one. Without a shader the view's default
+ * as QuickDraw 3D's viewer submits an illumination shader of its own right
+ * before the model's group (Phong or Lambert, as Q3ViewerSetPhongShading
+ * chooses; Quesa's reimplementation of the viewer, E3Viewer_DrawContent,
+ * does the same and starts with Lambert). Q3 takes Phong so that the
+ * specular colour and control a file gives show. A file that submits its own
+ * illumination shader replaces it from that point on, as any later shader
+ * replaces an earlier one. Without a shader the view's default
  * is NULL illumination, which draws a model that gives no colours (QuickDraw
  * 3D's default diffuse colour is white) as a white silhouette. --unlit
  * submits a NULL illumination shader instead and adds no lights: flat
