@@ -23,15 +23,6 @@
 
 #include <string.h>
 
-/* What the library warns of (an object left out of the output, say) is
- * printed, so that nothing is lost silently. */
-static void printWarning(TQ3Warning firstWarning, TQ3Warning lastWarning, long reference)
-{
-    (void)firstWarning;
-    (void)reference;
-    fprintf(stderr, "q3convert: warning %d: %s\n", (int)lastWarning, Q3Warning_GetMessage());
-}
-
 static void printUsage(FILE *to)
 {
     fprintf(to, "usage: q3convert in.3dmf out.3dmf [--text | --binary | --little-endian]\n"
@@ -103,7 +94,7 @@ int main(int argc, char **argv)
         return usage();
     if (Q3Initialize() != kQ3Success)
         return 3;
-    Q3Warning_Register(printWarning, 0);
+    Q3Warning_Register(q3load_printWarning, 0);
     count = q3load_read(in, &objects);
     if (count < 0) {
         Q3Exit();

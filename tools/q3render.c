@@ -48,6 +48,8 @@
  *
  * Other defaults: 400x300, the interactive renderer, constant subdivision
  * 16 x 16.
+ * Every warning the library posts is printed to stderr, and so is a warning
+ * when the file holds nothing to draw (the image is then the background).
  * Exit status: 0 done, 1 bad arguments, 2 the model cannot be read, 3 it
  * cannot be drawn or the image cannot be written. */
 
@@ -93,6 +95,9 @@ static void printUsage(FILE *to)
                 "                  is used with its aspect ratio matched to the image's\n"
                 "  --unlit         flat colours: NULL illumination and no default lights\n"
                 "  --help, -h      print this text and exit\n"
+                "\n"
+                "Warnings (the library's, and a file that holds nothing to draw) go to\n"
+                "standard error.\n"
                 "\n"
                 "Exit status: 0 done, 1 bad arguments, 2 the model cannot be read, 3 it cannot\n"
                 "be drawn or the image cannot be written.\n");
@@ -279,6 +284,7 @@ int main(int argc, char **argv)
         return usage();
     if (Q3Initialize() != kQ3Success)
         return 3;
+    Q3Warning_Register(q3load_printWarning, 0);
     count = q3load_read(in, &objects);
     if (count < 0) {
         Q3Exit();
@@ -307,6 +313,7 @@ int main(int argc, char **argv)
         TQ3CameraObject hintsCamera = NULL;
         TQ3GroupObject hintsLights = NULL;
         int hintsBackground = 0;
+        unsigned long drawable = 0;
         for (i = 0; i < count; ++i) {
             if (Q3Object_IsDrawable(objects[i]))
                 Q3Group_AddObject(model, objects[i]);
@@ -317,6 +324,8 @@ int main(int argc, char **argv)
             else if (Q3Object_IsType(objects[i], kQ3SharedTypeViewHints))
                 readHints(objects[i], &hintsCamera, &hintsLights, &hintsBackground, &background, backgroundGiven);
         }
+        if (Q3Group_CountObjects(model, &drawable) == kQ3Success && drawable == 0)
+            fprintf(stderr, "warning: %s holds nothing to draw; the image is the background alone\n", in);
         if (fileCamera == NULL)
             fileCamera = hintsCamera;
         if (fileLights == NULL)

@@ -204,6 +204,24 @@ TEST(Q3Render, AViewHintsCameraAndClearColourAreUsedWhenTheFileHasNoCamera)
         std::remove(path.c_str());
 }
 
+TEST(Q3Render, AFileWithNothingToDrawIsSaidSo)
+{
+    // A file holding a camera alone: the image is the background, and
+    // stderr says why.
+    const std::string model = scratch("camera_only.3dmf"), png = scratch("camera_only.png");
+    std::ofstream(model) << "3DMetafile ( 1 6 Normal )\n"
+                            "Container ( ViewAngleAspectCamera ( 0.5 1 ) CameraPlacement ( 0 0 4  0 0 0  0 1 0 )\n"
+                            "  CameraRange ( 1 20 ) CameraViewPort ( -1 1 2 2 ) )\n";
+    std::string errors;
+    EXPECT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + png + " --size 40x30", &errors), 0);
+    EXPECT_NE(errors.find("nothing to draw"), std::string::npos) << errors;
+    // A model with something to draw: nothing on stderr.
+    EXPECT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + kScene + " -o " + png + " --size 40x30", &errors), 0);
+    EXPECT_EQ(errors, "");
+    for (const std::string& path : {model, png})
+        std::remove(path.c_str());
+}
+
 TEST(Q3Render, HelpNamesEveryOptionOnStandardOutput)
 {
     const std::string help = scratch("help.txt");
