@@ -21,8 +21,6 @@
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -172,12 +170,6 @@ void addGeometries(TQ3GroupObject group, bool shaderInSet)
     const TQ3PointData point{{5, 5, 5}, colourSet(0, 0, 0)};
     put(group, Q3Point_New(&point));
     Q3Object_Dispose(point.pointAttributeSet);
-}
-
-std::vector<unsigned char> fileBytes(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 // Which unknown objects a scene holds: an unknown object keeps the form of

@@ -373,16 +373,22 @@ inline Census censusOf(const std::vector<unsigned char>& bytes)
     return result;
 }
 
+/// The bytes of the file at `path` (none when it cannot be opened).
+inline std::vector<unsigned char> fileBytes(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
 /// The census of the 3DMF file at `path` (failure says so when it cannot be opened).
 inline Census censusOfFile(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    if (!std::ifstream(path, std::ios::binary)) {
         Census missing;
         missing.failure = "cannot open " + path;
         return missing;
     }
-    return censusOf(std::vector<unsigned char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+    return censusOf(fileBytes(path));
 }
 
 /// The lines in which two censuses differ ("- line xN" only in a, "+ line
