@@ -106,7 +106,7 @@ TQ3CameraObject camera()
 
 // A box with a set per face and its own set, a triangle with vertex sets, an
 // ellipsoid (its own set holding a texture shader when shaderInSet), a
-// polygon, a polyline, a point.
+// polygon with a vertex set, a polyline with vertex and segment sets, a point.
 void addGeometries(TQ3GroupObject group, bool shaderInSet)
 {
     TQ3AttributeSet faces[6];
@@ -163,9 +163,13 @@ void addGeometries(TQ3GroupObject group, bool shaderInSet)
     Q3Object_Dispose(square[1].attributeSet);
 
     TQ3Vertex3D line[3] = {{{0, 2, 0}, nullptr}, {{1, 3, 0}, nullptr}, {{2, 2, 0}, nullptr}};
-    const TQ3PolyLineData polyline{3, line, nullptr, colourSet(1, 0.5f, 0)};
+    line[2].attributeSet = colourSet(0, 0, 1);
+    TQ3AttributeSet segments[2] = {colourSet(1, 1, 1), nullptr};
+    const TQ3PolyLineData polyline{3, line, segments, colourSet(1, 0.5f, 0)};
     put(group, Q3PolyLine_New(&polyline));
     Q3Object_Dispose(polyline.polyLineAttributeSet);
+    Q3Object_Dispose(segments[0]);
+    Q3Object_Dispose(line[2].attributeSet);
 
     const TQ3PointData point{{5, 5, 5}, colourSet(0, 0, 0)};
     put(group, Q3Point_New(&point));
@@ -330,6 +334,9 @@ TEST_F(FileCensusTest, TheCensusCountsWhatTheSceneHolds)
     EXPECT_EQ(count(census, "trng attributes 8"), 2);
     EXPECT_EQ(count(census, "elpd attributes 5,11"), 2);
     EXPECT_EQ(count(census, "plyg attributes 5"), 2);
+    EXPECT_EQ(count(census, "plyg vertex attributes 5"), 2);
+    EXPECT_EQ(count(census, "plyl vertex attributes 5"), 2);
+    EXPECT_EQ(count(census, "plyl segment attributes 5"), 2);
     EXPECT_EQ(count(census, "attr attributes 5"), 1);
     // The texture shaders: one in each ellipsoid's set and one in the
     // inline group (the same pixels), the mipmap in the ordered group.

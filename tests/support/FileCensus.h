@@ -16,7 +16,9 @@
 //                                 geometry's own set (the geometry's leaf
 //                                 type, then the types, 1..11, ascending)
 //   "box  face attributes 5"       one of a box's face sets
-//   "trng vertex attributes 3,5"   one of a triangle's vertex sets
+//   "trng vertex attributes 3,5"   one of a triangle's, polygon's or
+//                                 polyline's vertex sets (a polyline's
+//                                 segment sets: "segment attributes")
 //   "attr attributes 5,6"          an attribute set reached as an object
 //   "txsu texture txpm 4x4 ..."    a texture shader's texture: its size,
 //                                 pixel type and a hash of its pixels
@@ -228,6 +230,22 @@ private:
                 for (const TQ3Vertex3D& vertex : data.vertices)
                     attributeSet(vertex.attributeSet, name + " vertex attributes", depth);
                 Q3Triangle_EmptyData(&data);
+            }
+        } else if (leaf == kQ3GeometryTypePolygon) {
+            TQ3PolygonData data;
+            if (Q3Polygon_GetData(g, &data) == kQ3Success) {
+                for (unsigned long i = 0; i < data.numVertices; ++i)
+                    attributeSet(data.vertices[i].attributeSet, name + " vertex attributes", depth);
+                Q3Polygon_EmptyData(&data);
+            }
+        } else if (leaf == kQ3GeometryTypePolyLine) {
+            TQ3PolyLineData data;
+            if (Q3PolyLine_GetData(g, &data) == kQ3Success) {
+                for (unsigned long i = 0; i < data.numVertices; ++i)
+                    attributeSet(data.vertices[i].attributeSet, name + " vertex attributes", depth);
+                for (unsigned long i = 0; data.segmentAttributeSet != nullptr && i + 1 < data.numVertices; ++i)
+                    attributeSet(data.segmentAttributeSet[i], name + " segment attributes", depth);
+                Q3PolyLine_EmptyData(&data);
             }
         }
     }
