@@ -4,13 +4,16 @@
 /* q3convert: rewrites a 3DMF file, text or binary.
  *
  *   q3convert in.3dmf out.3dmf [--text | --binary | --little-endian]
- *             [--normal | --stream | --database]
+ *             [--normal | --stream | --database] [--help]
  *
  * Every object is read and written back (unknown objects unchanged). The
  * default is a binary Normal file, big-endian as Mac QuickDraw 3D wrote them;
  * --little-endian writes a binary file in little-endian byte order
  * (kQ3FileModeSwap), where unknown objects of a big-endian input are left
- * out, since their data cannot be swapped. Exit
+ * out, since their data cannot be swapped. So are unknown objects of the
+ * other encoding (an unknown text object has no binary form, an unknown
+ * binary object no text form). Every warning the library posts while reading
+ * or writing, these included, is printed to stderr. Exit
  * status: 0 done, 1 bad arguments, 2 the input cannot be read, 3 the output
  * cannot be written. */
 
@@ -20,10 +23,37 @@
 
 #include <string.h>
 
+static void printUsage(FILE *to)
+{
+    fprintf(to, "usage: q3convert in.3dmf out.3dmf [--text | --binary | --little-endian]\n"
+                "                 [--normal | --stream | --database]\n"
+                "\n"
+                "Reads every object of in.3dmf and writes them to out.3dmf (unknown objects\n"
+                "unchanged).\n"
+                "\n"
+                "  --text           a text file\n"
+                "  --binary         a big-endian binary file, as Mac QuickDraw 3D wrote them\n"
+                "                   (default)\n"
+                "  --little-endian  a little-endian binary file (kQ3FileModeSwap); unknown\n"
+                "                   objects of a big-endian input are left out\n"
+                "  --normal         a Normal file: objects written twice are written once and\n"
+                "                   referred to (default)\n"
+                "  --stream         a Stream file: every object written in full\n"
+                "  --database       a Database file: every shared object listed in the table\n"
+                "                   of contents, so that another file can refer to it\n"
+                "  --help, -h       print this text and exit\n"
+                "\n"
+                "Unknown objects keep the encoding they were read in: a text output leaves\n"
+                "out unknown binary objects, a binary output unknown text objects. Each object\n"
+                "left out is named in a warning on standard error.\n"
+                "\n"
+                "Exit status: 0 done, 1 bad arguments, 2 the input cannot be read, 3 the\n"
+                "output cannot be written.\n");
+}
+
 static int usage(void)
 {
-    fprintf(stderr, "usage: q3convert in.3dmf out.3dmf [--text | --binary | --little-endian] "
-                    "[--normal | --stream | --database]\n");
+    printUsage(stderr);
     return 1;
 }
 
@@ -48,7 +78,10 @@ int main(int argc, char **argv)
             mode = kQ3FileModeStream;
         else if (strcmp(argv[arg], "--database") == 0)
             mode = kQ3FileModeDatabase;
-        else if (argv[arg][0] == '-')
+        else if (strcmp(argv[arg], "--help") == 0 || strcmp(argv[arg], "-h") == 0) {
+            printUsage(stdout);
+            return 0;
+        } else if (argv[arg][0] == '-')
             return usage();
         else if (in == NULL)
             in = argv[arg];
@@ -61,6 +94,7 @@ int main(int argc, char **argv)
         return usage();
     if (Q3Initialize() != kQ3Success)
         return 3;
+    Q3Warning_Register(q3load_printWarning, 0);
     count = q3load_read(in, &objects);
     if (count < 0) {
         Q3Exit();

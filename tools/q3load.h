@@ -3,7 +3,8 @@
 #ifndef Q3LOAD_H
 #define Q3LOAD_H
 
-/* Reading every object of a 3DMF file, shared by q3render and q3convert. */
+/* Reading every object of a 3DMF file, and printing the library's warnings,
+ * shared by q3render and q3convert. */
 
 #include "QD3D.h"
 #include "QD3DErrors.h"
@@ -71,6 +72,16 @@ static long q3load_read(const char *path, TQ3Object **objects)
         return -1;
     }
     return count;
+}
+
+/* A warning callback (Q3Warning_Register) printing every warning the
+ * library posts to stderr: an object left out of a file, a value
+ * substituted, so that nothing is lost silently. */
+static void q3load_printWarning(TQ3Warning firstWarning, TQ3Warning lastWarning, long reference)
+{
+    (void)firstWarning;
+    (void)reference;
+    fprintf(stderr, "warning %d: %s\n", (int)lastWarning, Q3Warning_GetMessage());
 }
 
 static void q3load_free(TQ3Object *objects, long count)

@@ -5,26 +5,51 @@
  *
  *   q3render model.3dmf -o image.png [--size WIDTHxHEIGHT] [--renderer interactive | wireframe]
  *            [--subdivision constant:C1,C2 | world:LENGTH | screen:PIXELS] [--background R,G,B]
- *            [--fit-camera]
+ *            [--fit-camera] [--unlit]
  *
- * When the file holds a camera (at its top level), the image is what the
- * first one sees, with its aspect ratio matched to the image's so that the
- * image is never stretched (Q3's choice): a view angle aspect camera takes
- * the image's width / height (keeping its field of view), a view plane or
- * orthographic camera keeps its vertical extent and centre and gets the
+ * By default the picture is what a user of QuickDraw 3D's viewer saw: the
+ * model lit and shaded on a neutral background.
+ *
+ * Illumination: a Phong illumination shader is submitted before the model,
+ * as QuickDraw 3D's viewer submits an illumination shader of its own right
+ * before the model's group (Phong or Lambert, as Q3ViewerSetPhongShading
+ * chooses; Quesa's reimplementation of the viewer, E3Viewer_DrawContent,
+ * does the same and starts with Lambert). Q3 takes Phong so that the
+ * specular colour and control a file gives show. A file that submits its own
+ * illumination shader replaces it from that point on, as any later shader
+ * replaces an earlier one. Without a shader the view's default
+ * is NULL illumination, which draws a model that gives no colours (QuickDraw
+ * 3D's default diffuse colour is white) as a white silhouette. --unlit
+ * submits a NULL illumination shader instead and adds no lights: flat
+ * diffuse colours (a file's own illumination shader still applies where the
+ * file submits it).
+ *
+ * Camera: when the file holds a camera (at its top level), the image is what
+ * the first one sees, with its aspect ratio matched to the image's so that
+ * the image is never stretched (Q3's choice): a view angle aspect camera
+ * takes the image's width / height (keeping its field of view), a view plane
+ * or orthographic camera keeps its vertical extent and centre and gets the
  * width that fits (both scaled for a view port that is not square). A file
  * without a top-level camera may suggest one in a view hints object
  * (QD3DIO.h): the camera of the first ViewHints that has one is used the
  * same way. Otherwise, or with --fit-camera, the camera looks at the centre of
  * the model's bounding box from the front, a little above and to the right,
- * far enough for the whole box to fit its 40-degree field of view. The model
- * is lit by the first light group in the file, else by the lights of the first
- * ViewHints that has some, or, as QuickDraw 3D's viewer
- * lit models that bring no lights, by a dim white ambient light and a white
- * directional light shining from over the viewer's shoulder. Defaults:
- * 400x300, interactive, constant subdivision 16 x 16, and the background
- * --background gives, else the clear colour of the first ViewHints whose
- * clear method is kQ3ClearMethodWithColor, else white.
+ * far enough for the whole box to fit its 40-degree field of view.
+ *
+ * Lights: the first light group in the file, else the lights of the first
+ * ViewHints that has some, or, as QuickDraw 3D's viewer lit models that bring
+ * no lights, a white ambient light of brightness 0.3 and a white directional
+ * light of brightness 1 shining from over the viewer's right shoulder.
+ *
+ * Background: --background, else the clear colour of the first ViewHints
+ * whose clear method is kQ3ClearMethodWithColor, else mid grey (0.5, 0.5,
+ * 0.5): a white model (the default colour) and a black one both stand out
+ * from it, where on white a white unlit model would vanish.
+ *
+ * Other defaults: 400x300, the interactive renderer, constant subdivision
+ * 16 x 16.
+ * Every warning the library posts is printed to stderr, and so is a warning
+ * when the file holds nothing to draw (the image is then the background).
  * Exit status: 0 done, 1 bad arguments, 2 the model cannot be read, 3 it
  * cannot be drawn or the image cannot be written. */
 
@@ -37,6 +62,7 @@
 #include "QD3DLight.h"
 #include "QD3DMath.h"
 #include "QD3DRenderer.h"
+#include "QD3DShader.h"
 #include "QD3DStyle.h"
 #include "QD3DView.h"
 
@@ -48,18 +74,33 @@ static void printUsage(FILE *to)
     fprintf(to, "usage: q3render model.3dmf -o image.png [--size WIDTHxHEIGHT]\n"
                 "                [--renderer interactive | wireframe]\n"
                 "                [--subdivision constant:C1,C2 | world:LENGTH | screen:PIXELS]\n"
-                "                [--background R,G,B] [--fit-camera]\n"
+                "                [--background R,G,B] [--fit-camera] [--unlit]\n"
+                "\n"
+                "By default the model is lit and shaded as QuickDraw 3D's viewer showed it: a\n"
+                "Phong illumination shader is submitted before the model (a shader the file\n"
+                "submits replaces it), lit by the file's lights (its first light group, else\n"
+                "its first ViewHints' lights) or else by a white ambient light (0.3) and a\n"
+                "white directional light (1.0) from over the viewer's right shoulder.\n"
                 "\n"
                 "  -o image.png    the PNG to write\n"
                 "  --size          the image's size in pixels (default 400x300)\n"
                 "  --renderer      interactive (default) or wireframe\n"
                 "  --subdivision   how curves and surfaces are subdivided (default constant:16,16)\n"
                 "  --background    the background colour, 0..1 each (default: the clear colour\n"
-                "                  of the file's first ViewHints that has one, else 1,1,1)\n"
+                "                  of the file's first ViewHints that has one, else mid grey\n"
+                "                  0.5,0.5,0.5, from which white and black models both stand out)\n"
                 "  --fit-camera    ignore the file's camera and fit one to the model's bounds\n"
                 "                  (the default when the file has no camera); a file's camera\n"
                 "                  (at its top level, else in its first ViewHints with one)\n"
-                "                  is used with its aspect ratio matched to the image's\n");
+                "                  is used with its aspect ratio matched to the image's\n"
+                "  --unlit         flat colours: NULL illumination and no default lights\n"
+                "  --help, -h      print this text and exit\n"
+                "\n"
+                "Warnings (the library's, and a file that holds nothing to draw) go to\n"
+                "standard error.\n"
+                "\n"
+                "Exit status: 0 done, 1 bad arguments, 2 the model cannot be read, 3 it cannot\n"
+                "be drawn or the image cannot be written.\n");
 }
 
 static int usage(void)
@@ -192,8 +233,8 @@ int main(int argc, char **argv)
     unsigned long width = 400, height = 300;
     TQ3ObjectType renderer = kQ3RendererTypeInteractive;
     TQ3SubdivisionStyleData subdivision = {kQ3SubdivisionMethodConstant, 16.0f, 16.0f};
-    TQ3ColorARGB background = {1.0f, 1.0f, 1.0f, 1.0f};
-    int fitCamera = 0, backgroundGiven = 0;
+    TQ3ColorARGB background = {1.0f, 0.5f, 0.5f, 0.5f};
+    int fitCamera = 0, backgroundGiven = 0, unlit = 0;
     TQ3Object *objects = NULL;
     long count, i;
     int status = 0;
@@ -228,6 +269,8 @@ int main(int argc, char **argv)
             ++arg;
         } else if (strcmp(a, "--fit-camera") == 0) {
             fitCamera = 1;
+        } else if (strcmp(a, "--unlit") == 0) {
+            unlit = 1;
         } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             printUsage(stdout);
             return 0;
@@ -241,6 +284,7 @@ int main(int argc, char **argv)
         return usage();
     if (Q3Initialize() != kQ3Success)
         return 3;
+    Q3Warning_Register(q3load_printWarning, 0);
     count = q3load_read(in, &objects);
     if (count < 0) {
         Q3Exit();
@@ -250,6 +294,7 @@ int main(int argc, char **argv)
         TQ3GroupObject model = Q3DisplayGroup_New();
         TQ3ViewObject view = Q3View_New();
         TQ3StyleObject style = Q3SubdivisionStyle_New(&subdivision);
+        TQ3ShaderObject illumination = unlit ? Q3NULLIllumination_New() : Q3PhongIllumination_New();
         unsigned char *argb = (unsigned char *)calloc(width * height, 4);
         unsigned char *rgba = (unsigned char *)calloc(width * height, 4);
         TQ3PixmapDrawContextData contextData;
@@ -268,6 +313,7 @@ int main(int argc, char **argv)
         TQ3CameraObject hintsCamera = NULL;
         TQ3GroupObject hintsLights = NULL;
         int hintsBackground = 0;
+        unsigned long drawable = 0;
         for (i = 0; i < count; ++i) {
             if (Q3Object_IsDrawable(objects[i]))
                 Q3Group_AddObject(model, objects[i]);
@@ -278,6 +324,8 @@ int main(int argc, char **argv)
             else if (Q3Object_IsType(objects[i], kQ3SharedTypeViewHints))
                 readHints(objects[i], &hintsCamera, &hintsLights, &hintsBackground, &background, backgroundGiven);
         }
+        if (Q3Group_CountObjects(model, &drawable) == kQ3Success && drawable == 0)
+            fprintf(stderr, "warning: %s holds nothing to draw; the image is the background alone\n", in);
         if (fileCamera == NULL)
             fileCamera = hintsCamera;
         if (fileLights == NULL)
@@ -337,9 +385,14 @@ int main(int argc, char **argv)
             viewDirection.y = -toEye.y;
             viewDirection.z = -toEye.z;
         }
-        lights = fileLights != NULL ? Q3Shared_GetReference(fileLights) : defaultLights(&viewDirection);
+        if (unlit)
+            lights = Q3LightGroup_New();
+        else if (fileLights != NULL)
+            lights = Q3Shared_GetReference(fileLights);
+        else
+            lights = defaultLights(&viewDirection);
 
-        if (argb == NULL || rgba == NULL || context == NULL || camera == NULL ||
+        if (argb == NULL || rgba == NULL || context == NULL || camera == NULL || illumination == NULL ||
             Q3View_SetDrawContext(view, context) != kQ3Success || Q3View_SetCamera(view, camera) != kQ3Success ||
             Q3View_SetRendererByType(view, renderer) != kQ3Success ||
             Q3View_SetLightGroup(view, lights) != kQ3Success || Q3View_StartRendering(view) != kQ3Success) {
@@ -348,6 +401,7 @@ int main(int argc, char **argv)
         } else {
             do {
                 Q3Object_Submit(style, view);
+                Q3Object_Submit(illumination, view);
                 Q3Object_Submit(model, view);
                 done = Q3View_EndRendering(view);
             } while (done == kQ3ViewStatusRetraverse);
@@ -379,6 +433,8 @@ int main(int argc, char **argv)
             Q3Object_Dispose(camera);
         if (context != NULL)
             Q3Object_Dispose(context);
+        if (illumination != NULL)
+            Q3Object_Dispose(illumination);
         Q3Object_Dispose(style);
         Q3Object_Dispose(view);
         Q3Object_Dispose(model);

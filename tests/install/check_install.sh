@@ -20,6 +20,9 @@ test -f "$prefix/include/Q3/QD3DIO.h"
 "$prefix/bin/q3convert" "$source_dir/tests/data/scene.3dmf" "$prefix/scene.bin.3dmf" --binary
 "$prefix/bin/q3render" "$prefix/scene.bin.3dmf" -o "$prefix/scene.png" --size 80x60
 test -s "$prefix/scene.png"
+# Their man pages, where man looks for them.
+test -f "$prefix/share/man/man1/q3render.1"
+test -f "$prefix/share/man/man1/q3convert.1"
 
 cc -std=c99 -Wall -Werror "$source_dir/tests/install/outside.c" -o "$prefix/outside" \
    $(pkg-config --cflags --libs q3)

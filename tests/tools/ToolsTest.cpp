@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
+#include "FileCensus.h"
 #include "Golden.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -132,8 +135,11 @@ TEST(Q3Render, AFilesCameraIsUsedWithTheImagesAspectUnlessFitCameraIsAsked)
     const std::string model = std::string(Q3_TEST_DATA_DIR) + "/camera_scene.3dmf";
     const std::string own = scratch("own_camera.png");
     const std::string fitted = scratch("fitted_camera.png");
-    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + own + " --size 200x100"), 0);
-    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + fitted + " --size 200x100 --fit-camera"), 0);
+    // --unlit: flat colours, so that a specular highlight cannot whiten part
+    // of a square and move its measured edges.
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + own + " --size 200x100 --unlit"), 0);
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + fitted + " --size 200x100 --fit-camera --unlit"),
+              0);
     q3test::RgbaImage a, b;
     ASSERT_TRUE(q3test::readPng(own, &a));
     ASSERT_TRUE(q3test::readPng(fitted, &b));
@@ -170,7 +176,9 @@ TEST(Q3Render, AViewHintsCameraAndClearColourAreUsedWhenTheFileHasNoCamera)
     ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "hints_scene.3dmf -o " + white +
                   " --size 200x100 --background 1,1,1"),
               0);
-    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "camera_scene.3dmf -o " + own + " --size 200x100"), 0);
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "camera_scene.3dmf -o " + own +
+                  " --size 200x100 --background 1,1,1"),
+              0);
     ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + data + "hints_scene.3dmf -o " + fitted +
                   " --size 200x100 --fit-camera"),
               0);
@@ -196,14 +204,34 @@ TEST(Q3Render, AViewHintsCameraAndClearColourAreUsedWhenTheFileHasNoCamera)
         std::remove(path.c_str());
 }
 
+TEST(Q3Render, AFileWithNothingToDrawIsSaidSo)
+{
+    // A file holding a camera alone: the image is the background, and
+    // stderr says why.
+    const std::string model = scratch("camera_only.3dmf"), png = scratch("camera_only.png");
+    std::ofstream(model) << "3DMetafile ( 1 6 Normal )\n"
+                            "Container ( ViewAngleAspectCamera ( 0.5 1 ) CameraPlacement ( 0 0 4  0 0 0  0 1 0 )\n"
+                            "  CameraRange ( 1 20 ) CameraViewPort ( -1 1 2 2 ) )\n";
+    std::string errors;
+    EXPECT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + png + " --size 40x30", &errors), 0);
+    EXPECT_NE(errors.find("nothing to draw"), std::string::npos) << errors;
+    // A model with something to draw: nothing on stderr.
+    EXPECT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + kScene + " -o " + png + " --size 40x30", &errors), 0);
+    EXPECT_EQ(errors, "");
+    for (const std::string& path : {model, png})
+        std::remove(path.c_str());
+}
+
 TEST(Q3Render, HelpNamesEveryOptionOnStandardOutput)
 {
     const std::string help = scratch("help.txt");
     ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " --help > " + help), 0);
     const std::string text = slurp(help);
-    for (const char* option : {"-o", "--size", "--renderer", "--subdivision", "--background", "--fit-camera"})
+    for (const char* option :
+         {"-o", "--size", "--renderer", "--subdivision", "--background", "--fit-camera", "--unlit", "--help"})
         EXPECT_NE(text.find(option), std::string::npos) << option;
-    EXPECT_NE(text.find("ViewHints"), std::string::npos);
+    for (const char* defaultNamed : {"ViewHints", "Phong", "0.5,0.5,0.5", "Exit status"})
+        EXPECT_NE(text.find(defaultNamed), std::string::npos) << defaultNamed;
     std::remove(help.c_str());
 }
 
@@ -222,6 +250,25 @@ TEST(Q3Convert, TextToBinaryToTextGivesTheSameText)
     EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene, &errors), 1);
     for (const std::string& path : {text1, binary, text2})
         std::remove(path.c_str());
+}
+
+TEST(Q3Convert, AnObjectLeftOutIsNamedOnStandardError)
+{
+    // tests/data/unknown.3dmf holds an unknown text object, which has no
+    // binary form.
+    const std::string binary = scratch("unknown.bin.3dmf");
+    std::string errors;
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + std::string(Q3_TEST_DATA_DIR) + "/unknown.3dmf " + binary +
+                      " --binary",
+                  &errors),
+              0);
+    EXPECT_NE(errors.find("warning"), std::string::npos) << errors;
+    EXPECT_NE(errors.find("MyPrivateThing"), std::string::npos) << errors;
+    EXPECT_NE(errors.find("left out"), std::string::npos) << errors;
+    // Nothing to warn of: nothing on standard error.
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + binary + " --binary", &errors), 0);
+    EXPECT_EQ(errors, "");
+    std::remove(binary.c_str());
 }
 
 TEST(Q3Convert, LittleEndianOptionWritesTheHandLaidLittleEndianFile)
@@ -263,7 +310,9 @@ TEST(Q3Render, ATexturedModelShowsItsTextureInsteadOfItsColour)
     // an orange (230, 180, 60) and blue (40, 90, 200) checkerboard.
     const std::string model = std::string(Q3_TEST_DATA_DIR) + "/textured_box.3dmf";
     const std::string png = scratch("textured.png");
-    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + png + " --size 200x150"), 0);
+    // On white: the default mid-grey background would pass for the box's grey.
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + model + " -o " + png + " --size 200x150 --background 1,1,1"),
+              0);
     q3test::RgbaImage image;
     ASSERT_TRUE(q3test::readPng(png, &image));
     EXPECT_GT(pixelsLike(image, 230, 180, 60), 1000);
@@ -271,3 +320,259 @@ TEST(Q3Render, ATexturedModelShowsItsTextureInsteadOfItsColour)
     EXPECT_EQ(pixelsLike(image, 128, 128, 128), 0) << "the box's grey shows through";
     std::remove(png.c_str());
 }
+
+namespace {
+
+const std::string kLitSphere = std::string(Q3_TEST_DATA_DIR) + "/lit_sphere.3dmf";
+
+// The grey of the default background, 0.5 in each channel.
+bool isBackground(const unsigned char* p)
+{
+    return std::abs(p[0] - 128) <= 1 && std::abs(p[1] - 128) <= 1 && std::abs(p[2] - 128) <= 1;
+}
+
+double brightness(const unsigned char* p)
+{
+    return (p[0] + p[1] + p[2]) / 3.0;
+}
+
+// A pixel of the sphere's image and the normal there: tests/data/lit_sphere.3dmf's
+// camera looks down -z at the unit sphere, so the image's x and y (y up) over the
+// disc's radius are the normal's x and y, near enough for comparisons between
+// pixels whose predicted brightness differs by a wide margin (the perspective of
+// a camera 5 radii away moves the silhouette by a few percent of the radius).
+struct SurfacePixel {
+    double brightness;
+    double nx, ny, nz;
+};
+
+std::vector<SurfacePixel> spherePixels(const q3test::RgbaImage& image)
+{
+    double sumX = 0, sumY = 0;
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (!isBackground(image.at(x, y))) {
+                sumX += x + 0.5;
+                sumY += y + 0.5;
+                ++n;
+            }
+    std::vector<SurfacePixel> pixels;
+    if (n == 0)
+        return pixels;
+    const double cx = sumX / n, cy = sumY / n, radius = std::sqrt(n / 3.14159265358979);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const double nx = (x + 0.5 - cx) / radius, ny = (cy - y - 0.5) / radius;
+            const double r2 = nx * nx + ny * ny;
+            if (r2 > 0.8 || isBackground(image.at(x, y)))
+                continue; // the rim, where the estimate of the normal is poorest
+            pixels.push_back({brightness(image.at(x, y)), nx, ny, std::sqrt(1 - r2)});
+        }
+    return pixels;
+}
+
+} // namespace
+
+TEST(Q3Render, ByDefaultAModelWithoutLightsIsLitAndShadedOnMidGrey)
+{
+    const std::string png = scratch("lit_sphere.png");
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + kLitSphere + " -o " + png + " --size 200x200"), 0);
+    q3test::RgbaImage image;
+    ASSERT_TRUE(q3test::readPng(png, &image));
+    EXPECT_TRUE(isBackground(image.at(0, 0)));
+    EXPECT_TRUE(isBackground(image.at(199, 199)));
+    const std::vector<SurfacePixel> pixels = spherePixels(image);
+    ASSERT_GT(pixels.size(), 5000u);
+    // q3render's default directional light travels along the view direction
+    // (0, 0, -1) tilted by (-0.3, -0.5, 0): from over the viewer's right
+    // shoulder. The Lambert term N.L (L towards the light) orders the pixels:
+    // of two pixels whose N.L differ by more than 0.5, the one facing the
+    // light more is the brighter (the Phong highlight only adds to the side
+    // facing the light).
+    const double len = std::sqrt(0.3 * 0.3 + 0.5 * 0.5 + 1.0);
+    const double lx = 0.3 / len, ly = 0.5 / len, lz = 1.0 / len;
+    auto facing = [&](const SurfacePixel& p) { return std::max(0.0, p.nx * lx + p.ny * ly + p.nz * lz); };
+    int compared = 0, wrong = 0;
+    for (size_t i = 0; i < pixels.size(); i += 37)
+        for (size_t j = 0; j < pixels.size(); j += 41) {
+            if (facing(pixels[i]) - facing(pixels[j]) <= 0.5)
+                continue;
+            ++compared;
+            if (!(pixels[i].brightness > pixels[j].brightness + 10))
+                ++wrong;
+        }
+    EXPECT_GT(compared, 1000);
+    EXPECT_EQ(wrong, 0) << "of " << compared;
+    // The brightest pixel is on the upper right (towards the light), the
+    // darkest on the lower left; the spread is that of a lit surface.
+    const auto [darkest, brightest] = std::minmax_element(
+        pixels.begin(), pixels.end(),
+        [](const SurfacePixel& a, const SurfacePixel& b) { return a.brightness < b.brightness; });
+    EXPECT_GT(brightest->nx, 0);
+    EXPECT_GT(brightest->ny, 0);
+    EXPECT_LT(darkest->nx, 0);
+    EXPECT_LT(darkest->ny, 0);
+    EXPECT_GT(brightest->brightness - darkest->brightness, 80);
+    std::remove(png.c_str());
+}
+
+TEST(Q3Render, UnlitGivesTheFlatDiffuseColourOnMidGrey)
+{
+    const std::string png = scratch("unlit_sphere.png");
+    ASSERT_EQ(run(std::string(Q3_RENDER_TOOL) + " " + kLitSphere + " -o " + png + " --size 200x200 --unlit"), 0);
+    q3test::RgbaImage image;
+    ASSERT_TRUE(q3test::readPng(png, &image));
+    // Every pixel is the background grey (0.5) or the sphere's diffuse grey
+    // (0.6 -> 153), whatever way the surface faces.
+    int sphere = 0, other = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const unsigned char* p = image.at(x, y);
+            if (isBackground(p))
+                continue;
+            if (std::abs(p[0] - 153) <= 1 && std::abs(p[1] - 153) <= 1 && std::abs(p[2] - 153) <= 1)
+                ++sphere;
+            else
+                ++other;
+        }
+    EXPECT_GT(sphere, 5000);
+    EXPECT_EQ(other, 0);
+    std::remove(png.c_str());
+}
+
+namespace {
+
+// The options a program's --help names: every word that starts with one or
+// two hyphens and a letter ("-o", "--size", "--help").
+std::vector<std::string> optionsIn(const std::string& help)
+{
+    std::vector<std::string> options;
+    for (size_t i = 0; i < help.size(); ++i) {
+        const bool starts = help[i] == '-' && (i == 0 || std::string(" \t\n[|,").find(help[i - 1]) != std::string::npos);
+        if (!starts)
+            continue;
+        size_t end = i;
+        while (end < help.size() && (help[end] == '-' || std::isalnum(static_cast<unsigned char>(help[end]))))
+            ++end;
+        const std::string word = help.substr(i, end - i);
+        const size_t hyphens = word.find_first_not_of('-');
+        if (hyphens != std::string::npos && hyphens <= 2 && std::isalpha(static_cast<unsigned char>(word[hyphens])) &&
+            std::find(options.begin(), options.end(), word) == options.end())
+            options.push_back(word);
+        i = end;
+    }
+    return options;
+}
+
+// A roff source with its escaped hyphens ("\-") plain.
+std::string unescapedHyphens(std::string roff)
+{
+    for (size_t at = roff.find("\\-"); at != std::string::npos; at = roff.find("\\-", at))
+        roff.erase(at, 1);
+    return roff;
+}
+
+bool haveProgram(const std::string& name)
+{
+    return run("which " + name + " > /dev/null") == 0;
+}
+
+} // namespace
+
+class ManPage : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
+
+TEST_P(ManPage, ExistsFormatsWithoutWarningsAndNamesEveryOptionOfHelp)
+{
+    const std::string tool = GetParam().first, program = GetParam().second;
+    const std::string page = std::string(Q3_MAN_DIR) + "/" + tool + ".1";
+    const std::string roff = slurp(page);
+    ASSERT_FALSE(roff.empty()) << page << " is missing";
+    for (const char* section : {".TH", ".SH NAME", ".SH SYNOPSIS", ".SH DESCRIPTION", ".SH OPTIONS", ".SH EXIT STATUS",
+                                ".SH EXAMPLES", ".SH SEE ALSO"})
+        EXPECT_NE(roff.find(section), std::string::npos) << section;
+    // Every option --help names is in the page.
+    const std::string helpFile = scratch(tool + "_help.txt");
+    ASSERT_EQ(run(program + " --help > " + helpFile), 0);
+    const std::string help = slurp(helpFile);
+    std::remove(helpFile.c_str());
+    const std::vector<std::string> options = optionsIn(help);
+    EXPECT_GE(options.size(), 4u) << help;
+    const std::string text = unescapedHyphens(roff);
+    for (const std::string& option : options)
+        EXPECT_NE(text.find(option), std::string::npos) << option << " is in --help but not in " << page;
+    // The exit statuses --help documents (those main returns), each in the page.
+    for (const char* status : {"0 done", "1 bad arguments", "2 the", "3 "})
+        EXPECT_NE(help.find(status), std::string::npos) << status;
+    for (const char* status : {".B 0\n", ".B 1\n", ".B 2\n", ".B 3\n"})
+        EXPECT_NE(roff.find(status), std::string::npos) << status;
+    if (!haveProgram("groff")) {
+        GTEST_SKIP() << "groff is not installed: the page's formatting is not checked";
+    }
+    // LC_ALL=C: the pages are ASCII, and man warns of a locale the machine
+    // lacks before it reads the page.
+    std::string warnings;
+    EXPECT_EQ(run("LC_ALL=C groff -man -ww -z " + page, &warnings), 0);
+    EXPECT_EQ(warnings, "");
+    if (haveProgram("man")) {
+        EXPECT_EQ(run("LC_ALL=C man --warnings -l " + page + " > /dev/null", &warnings), 0);
+        EXPECT_EQ(warnings, "");
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Tools, ManPage,
+                         ::testing::Values(std::make_pair("q3render", Q3_RENDER_TOOL),
+                                           std::make_pair("q3convert", Q3_CONVERT_TOOL)),
+                         [](const auto& info) { return std::string(info.param.first); });
+
+namespace {
+
+// Every text 3DMF file of tests/data, written by hand to hold one of each
+// thing Q3 reads (unknown.3dmf aside: its unknown text object has no binary
+// form, and a binary file leaves it out, docs/3dmf.md).
+const char* const kTextModels[] = {"attributes.3dmf",     "camera_scene.3dmf",  "cameras.3dmf",
+                                   "curves_quadrics.3dmf", "groups.3dmf",        "hints_scene.3dmf",
+                                   "lights_styles.3dmf",  "lights_transforms_groups.3dmf", "lit_sphere.3dmf",
+                                   "mesh.3dmf",           "nurbpatch.3dmf",     "part_sets.3dmf",
+                                   "pixmap_marker.3dmf",  "polygons.3dmf",      "scene.3dmf",
+                                   "styles_shaders.3dmf", "textured_box.3dmf",  "textures.3dmf",
+                                   "view_hints.3dmf"};
+
+} // namespace
+
+class ConvertCensus : public ::testing::TestWithParam<const char*> {
+protected:
+    void SetUp() override { ASSERT_EQ(Q3Initialize(), kQ3Success); }
+    void TearDown() override { Q3Exit(); }
+};
+
+TEST_P(ConvertCensus, TextToBinaryToTextLosesNothing)
+{
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/" + GetParam();
+    const std::string text1 = scratch("census_a.3dmf"), binary = scratch("census_b.3dmf");
+    const std::string text2 = scratch("census_c.3dmf");
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + text1 + " --text"), 0);
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + text1 + " " + binary + " --binary"), 0);
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + binary + " " + text2 + " --text"), 0);
+    const q3test::Census original = q3test::censusOfFile(model);
+    const q3test::Census a = q3test::censusOfFile(text1), b = q3test::censusOfFile(binary);
+    const q3test::Census c = q3test::censusOfFile(text2);
+    SCOPED_TRACE(q3test::censusText(original));
+    EXPECT_EQ(original.failure, "");
+    EXPECT_GT(original.topLevel, 0);
+    EXPECT_TRUE(original == a) << "file -> text:\n" << q3test::censusDifference(original, a);
+    EXPECT_TRUE(a == b) << "text -> binary:\n" << q3test::censusDifference(a, b);
+    EXPECT_TRUE(b == c) << "binary -> text:\n" << q3test::censusDifference(b, c);
+    for (const std::string& path : {text1, binary, text2})
+        std::remove(path.c_str());
+}
+
+INSTANTIATE_TEST_SUITE_P(TestData, ConvertCensus, ::testing::ValuesIn(kTextModels),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                             std::string name = info.param;
+                             name = name.substr(0, name.find('.'));
+                             for (char& ch : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(ch)))
+                                     ch = '_';
+                             return name;
+                         });
