@@ -93,10 +93,16 @@ void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type,
     Encoder& out = context.out();
     // As Apple's tools write it: the group object and, when it is not the
     // default, its DisplayGroupState side by side in the BeginGroup.
-    out.begin(kTypeBeginGroup, "BeginGroup");
     std::uint32_t flags = 0;
-    if (group.isType(kQ3GroupTypeDisplay))
-        flags = fileFlags(static_cast<const DisplayGroup&>(group).state());
+    if (group.isType(kQ3GroupTypeDisplay)) {
+        const TQ3DisplayGroupState state = static_cast<const DisplayGroup&>(group).state();
+        // The QD3D Book's kQ3DisplayGroupStateMaskIsWritten: a display group
+        // without it is left out of files, with everything in it.
+        if (!(state & kQ3DisplayGroupStateMaskIsWritten))
+            return;
+        flags = fileFlags(state);
+    }
+    out.begin(kTypeBeginGroup, "BeginGroup");
     out.begin(type, name);
     out.end();
     if (flags != 0) {

@@ -404,4 +404,27 @@ TEST_F(FileContentTest, OtherToolsWordsForSwitchesAndBackfacingRead)
                       kQ3ErrorInvalidMetafilePrimitive);
 }
 
+TEST_F(FileContentTest, ADisplayGroupThatIsNotWrittenIsLeftOutOfFiles)
+{
+    TQ3GroupObject hidden = Q3DisplayGroup_New();
+    TQ3PointData data{{1, 2, 3}, nullptr};
+    TQ3GeometryObject point = Q3Point_New(&data);
+    ASSERT_NE(Q3Group_AddObject(hidden, point), nullptr);
+    ASSERT_EQ(Q3DisplayGroup_SetState(hidden, kQ3DisplayGroupStateMaskIsDrawn | kQ3DisplayGroupStateMaskIsPicked),
+              kQ3Success);
+    TQ3GroupObject shown = Q3DisplayGroup_New();
+    ASSERT_NE(Q3Group_AddObject(shown, point), nullptr);
+    for (TQ3FileMode mode : {kQ3FileModeNormal, kQ3FileModeText}) {
+        std::vector<TQ3Object> objects = readAll(writeObjects({hidden, shown}, mode));
+        ASSERT_EQ(objects.size(), 1u) << "mode " << mode;
+        TQ3DisplayGroupState state = 0;
+        EXPECT_EQ(Q3DisplayGroup_GetState(objects[0], &state), kQ3Success);
+        EXPECT_NE(state & kQ3DisplayGroupStateMaskIsWritten, 0u);
+        disposeAll(objects);
+    }
+    Q3Object_Dispose(point);
+    Q3Object_Dispose(hidden);
+    Q3Object_Dispose(shown);
+}
+
 } // namespace
