@@ -184,8 +184,8 @@ void addGeometries(TQ3GroupObject group, bool shaderInSet)
 enum class Unknowns { kNone, kText, kBinary };
 
 // Whether the ellipsoids' attribute sets hold a texture shader
-// (kQ3AttributeTypeSurfaceShader): attribute sets hold one, but 3DMF files
-// do not carry it yet (docs/textures.md), so the round trips leave it out.
+// (kQ3AttributeTypeSurfaceShader), which 3DMF files carry in the set's
+// container (docs/3dmf.md, "Textures in attribute sets").
 enum class ShaderInSet { kNo, kYes };
 
 // The scene's top-level objects, each holding one reference the caller disposes.
@@ -362,9 +362,9 @@ TEST_F(FileCensusTest, TheCensusCountsWhatTheSceneHolds)
     EXPECT_EQ(count(census, "object strc"), 2);
     EXPECT_EQ(count(census, "unknown text MyPrivateThing: 1 2.5 \"three words here\" Nested ( 4 )"), 1);
     EXPECT_EQ(count(census, "unknown text OtherPrivateThing: 7"), 1);
-    // A text file written from the scene (no shaders in its sets) gives the
-    // census of the objects it was written from.
-    const std::vector<TQ3Object> plain = richScene(Unknowns::kText);
+    // A text file written from the scene gives the census of the objects it
+    // was written from, the shaders in its sets included.
+    const std::vector<TQ3Object> plain = richScene(Unknowns::kText, ShaderInSet::kYes);
     const Census written = censusOf(writeObjects(plain, kQ3FileModeNormal | kQ3FileModeText));
     EXPECT_TRUE(censusOfObjects(plain) == written) << censusDifference(censusOfObjects(plain), written);
     disposeAll(plain);
@@ -372,7 +372,7 @@ TEST_F(FileCensusTest, TheCensusCountsWhatTheSceneHolds)
 
 TEST_F(FileCensusTest, TextThenBinaryThenTextLosesNothing)
 {
-    const std::vector<TQ3Object> scene = richScene(Unknowns::kNone);
+    const std::vector<TQ3Object> scene = richScene(Unknowns::kNone, ShaderInSet::kYes);
     const Census memory = censusOfObjects(scene);
     const std::vector<unsigned char> text1 = writeObjects(scene, kQ3FileModeNormal | kQ3FileModeText);
     disposeAll(scene);
