@@ -50,8 +50,11 @@ std::size_t Set::slotIndex(TQ3AttributeType type)
 std::size_t Set::dataSize(TQ3AttributeType type)
 {
     slotIndex(type);
+    // A plain copy of a handle would hold no reference: arrays of attribute
+    // values (a TriMesh's) hold the plain-data types only.
     if (type == kQ3AttributeTypeSurfaceShader)
-        return sizeof(TQ3Object);
+        fail(kQ3ErrorAttributeInvalidType,
+             "attribute type 11 (the surface shader) is held by reference, not stored as plain data");
     if (type == kQ3AttributeTypeHighlightState)
         return sizeof(TQ3Switch);
     return floatCount(type) * sizeof(float);
