@@ -84,14 +84,15 @@ Q3_EXTERN_API_C(TQ3ObjectType) Q3Set_GetType(TQ3SetObject theSet);
  * @param theType  the element type: an attribute type from
  *                 kQ3AttributeTypeSurfaceUV to kQ3AttributeTypeSurfaceShader.
  * @param data     points to a value of the C type listed for theType in
- *                 TQ3AttributeTypes, which is copied (a TQ3Switch other than
- *                 kQ3Off is refused); for kQ3AttributeTypeSurfaceShader,
+ *                 TQ3AttributeTypes, which is copied; for
+ *                 kQ3AttributeTypeSurfaceShader,
  *                 points to a TQ3SurfaceShaderObject handle.
  * @return kQ3Success, or kQ3Failure with the set unchanged.
  *
  * Errors:
  *   kQ3ErrorNotInitialized      Q3Initialize has not been called.
- *   kQ3ErrorNULLParameter       theSet or data is NULL.
+ *   kQ3ErrorNULLParameter       theSet or data is NULL, or *data is a NULL
+ *                               surface shader handle.
  *   kQ3ErrorInvalidObject       theSet is not a live Q3 object, or *data is
  *                               not a live surface shader handle.
  *   kQ3ErrorInvalidObjectType   theSet is not a set, or *data is a live
@@ -194,8 +195,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Set_Empty(TQ3SetObject target);
  * get the first; each call then gives the next type held after *theType,
  * in increasing order of type (kQ3AttributeTypeSurfaceUV first,
  * kQ3AttributeTypeSurfaceShader last), and kQ3ElementTypeNone after the
- * last one. Objects a 3DMF file gave the set that Q3 has no class for have
- * no element type and are not listed.
+ * last one. The walk keeps no state in the set, so the set may change
+ * between calls. Objects a 3DMF file gave the set that Q3 has no class for
+ * have no element type and are not listed.
  *
  * @param theSet   the set to walk.
  * @param theType  on entry kQ3ElementTypeNone or an element type Q3Set_Add
@@ -264,7 +266,8 @@ typedef TQ3ElementType TQ3AttributeType;
  *   kQ3ErrorNotInitialized        Q3Initialize has not been called.
  *   kQ3ErrorAttributeInvalidType  attributeType is not one Q3AttributeSet_Add
  *                                 takes.
- *   kQ3ErrorNULLParameter         data or view is NULL.
+ *   kQ3ErrorNULLParameter         data or view is NULL, or *data is a NULL
+ *                                 surface shader handle.
  *   kQ3ErrorInvalidObject         *data (a surface shader) or view is not a
  *                                 live Q3 object.
  *   kQ3ErrorInvalidObjectType     *data is not a surface shader, or view is
@@ -313,7 +316,8 @@ Q3_EXTERN_API_C(TQ3AttributeSet) Q3AttributeSet_New(void);
  *
  * Errors:
  *   kQ3ErrorNotInitialized        Q3Initialize has not been called.
- *   kQ3ErrorNULLParameter         attributeSet or data is NULL.
+ *   kQ3ErrorNULLParameter         attributeSet or data is NULL, or *data is a
+ *                                 NULL surface shader handle.
  *   kQ3ErrorInvalidObject         attributeSet is not a live Q3 object, or
  *                                 *data is not a live surface shader handle.
  *   kQ3ErrorInvalidObjectType     attributeSet is not an attribute set, or
@@ -425,7 +429,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Empty(TQ3AttributeSet target);
  * to get the first; each call then gives the next type held after
  * *theType, in increasing order of type (kQ3AttributeTypeSurfaceUV first,
  * kQ3AttributeTypeSurfaceShader last), and kQ3AttributeTypeNone after the
- * last one.
+ * last one. The walk keeps no state in the set, so the set may change
+ * between calls.
  *
  * @param source   the set to walk.
  * @param theType  on entry kQ3AttributeTypeNone or a type
