@@ -2,17 +2,36 @@
 /* Copyright (c) 2026 The Q3 authors */
 
 /*
- * Attribute sets: small collections of surface attributes (colour, normal,
- * highlight state, ...) that geometries carry and views inherit.
+ * Sets and attribute sets.
+ *
+ * A set (Q3Set_New) holds elements, at most one of each element type; an
+ * attribute set (Q3AttributeSet_New) is a set of surface attributes
+ * (colour, normal, highlight state, a surface shader, ...) that geometries
+ * carry and views inherit. An attribute set is a set: every Q3Set_ call
+ * takes one too.
+ *
+ * The element types Q3 has classes for are the attribute types of
+ * TQ3AttributeTypes, kQ3AttributeTypeSurfaceUV to
+ * kQ3AttributeTypeSurfaceShader (1 to 11), with the data listed there, in a
+ * set as in an attribute set: QuickDraw 3D's attributes are elements, and
+ * an attribute type is their element type. Custom element and attribute
+ * classes (Q3XElementClass_Register, Q3XElementType_GetElementSize,
+ * Q3XAttributeClass_Register and their method types, which Apple's
+ * QD3DSet.h also declares) are not provided, so no other element type can
+ * be stored: the Q3Set_ calls refuse one with kQ3ErrorUnknownElementType.
+ *
+ * Surface shader attributes are held by reference: Add retains the shader
+ * and Get returns a new reference (QD3DSet.h: "reference counts are
+ * incremented on the _Add and _Get").
  *
  * Error conventions shared by every function in this header: a call that
  * fails posts exactly one error and leaves every object and output it was
- * given unchanged. The checks run in this order, and the first that fails
- * decides the error: Q3 is initialized; then the arguments from left to
- * right (a handle: not NULL, a live Q3 object, of the right class; a
- * pointer: not NULL); then the function's other conditions in the order it
- * lists them (for a data structure, the rules given with its type, in their
- * order).
+ * given unchanged (a set's edit index included). The checks run in this
+ * order, and the first that fails decides the error: Q3 is initialized;
+ * then the arguments from left to right (a handle: not NULL, a live Q3
+ * object, of the right class; a type: one the call takes; a pointer: not
+ * NULL); then the function's other conditions in the order it lists them
+ * (for a data structure, the rules given with its type, in their order).
  */
 #ifndef QD3DSET_H
 #define QD3DSET_H
@@ -23,10 +42,188 @@
 extern "C" {
 #endif
 
+/* ---- Sets ---------------------------------------------------------------- */
+
+/**
+ * Creates an empty set.
+ *
+ * @return the new set, or NULL on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized   Q3Initialize has not been called.
+ *   kQ3ErrorOutOfMemory      the set cannot be allocated.
+ *
+ * Ownership: the caller owns the one reference the new set is born with and
+ * releases it with Q3Object_Dispose.
+ */
+Q3_EXTERN_API_C(TQ3SetObject) Q3Set_New(void);
+
+/**
+ * Returns the kind of a set: its leaf type.
+ *
+ * @param theSet  any set.
+ * @return kQ3SharedTypeSet for a set made by Q3Set_New, kQ3SetTypeAttribute
+ *         for an attribute set, or kQ3ObjectTypeInvalid on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      theSet is NULL.
+ *   kQ3ErrorInvalidObject      theSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  theSet is not a set.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3Set_GetType(TQ3SetObject theSet);
+
+/**
+ * Stores one element in a set, replacing any element of the same type
+ * already there. Takes an attribute set too, where it does what
+ * Q3AttributeSet_Add does.
+ *
+ * @param theSet   the set to modify.
+ * @param theType  the element type: an attribute type from
+ *                 kQ3AttributeTypeSurfaceUV to kQ3AttributeTypeSurfaceShader.
+ * @param data     points to a value of the C type listed for theType in
+ *                 TQ3AttributeTypes, which is copied; for
+ *                 kQ3AttributeTypeSurfaceShader,
+ *                 points to a TQ3SurfaceShaderObject handle.
+ * @return kQ3Success, or kQ3Failure with the set unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized      Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter       theSet or data is NULL, or *data is a NULL
+ *                               surface shader handle.
+ *   kQ3ErrorInvalidObject       theSet is not a live Q3 object, or *data is
+ *                               not a live surface shader handle.
+ *   kQ3ErrorInvalidObjectType   theSet is not a set, or *data is a live
+ *                               object but not a surface shader.
+ *   kQ3ErrorUnknownElementType  theType is not one of the types listed
+ *                               above (no element class is registered for
+ *                               it).
+ *   kQ3ErrorInvalidParameter    a float in *data is not finite, or a switch
+ *                               is neither kQ3On nor kQ3Off.
+ *   kQ3ErrorOutOfMemory         the element cannot be stored.
+ *
+ * Ownership: the set keeps its own copy of a value; a surface shader is
+ * retained (one reference added, released when the element is replaced or
+ * removed or the set is destroyed), and the caller keeps its own reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Set_Add(TQ3SetObject theSet, TQ3ElementType theType, const void *data);
+
+/**
+ * Copies one element out of a set.
+ *
+ * @param theSet   the set to read.
+ * @param theType  the element type (as for Q3Set_Add).
+ * @param data     receives a value of the C type listed for theType in
+ *                 TQ3AttributeTypes; for kQ3AttributeTypeSurfaceShader, a
+ *                 TQ3SurfaceShaderObject handle.
+ * @return kQ3Success, or kQ3Failure with *data unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized         Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter          theSet or data is NULL.
+ *   kQ3ErrorInvalidObject          theSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType      theSet is not a set.
+ *   kQ3ErrorUnknownElementType     theType is not a type Q3Set_Add takes.
+ *   kQ3ErrorAttributeNotContained  the set holds no element of that type.
+ *
+ * Ownership: a surface shader is returned as a new reference, which the
+ * caller releases with Q3Object_Dispose; nothing else changes hands.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Set_Get(TQ3SetObject theSet, TQ3ElementType theType, void *data);
+
+/**
+ * Reports whether a set holds an element of the given type.
+ *
+ * @param theSet   the set to query.
+ * @param theType  the element type (as for Q3Set_Add).
+ * @return kQ3True if the set holds that element; kQ3False if it does not or
+ *         the call fails.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized      Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter       theSet is NULL.
+ *   kQ3ErrorInvalidObject       theSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType   theSet is not a set.
+ *   kQ3ErrorUnknownElementType  theType is not a type Q3Set_Add takes.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3Set_Contains(TQ3SetObject theSet, TQ3ElementType theType);
+
+/**
+ * Removes the element of the given type from a set.
+ *
+ * @param theSet   the set to modify.
+ * @param theType  the element type (as for Q3Set_Add).
+ * @return kQ3Success, or kQ3Failure with the set unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized         Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter          theSet is NULL.
+ *   kQ3ErrorInvalidObject          theSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType      theSet is not a set.
+ *   kQ3ErrorUnknownElementType     theType is not a type Q3Set_Add takes.
+ *   kQ3ErrorAttributeNotContained  the set holds no element of that type.
+ *
+ * Ownership: a surface shader element releases the set's reference to the
+ * shader.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Set_Clear(TQ3SetObject theSet, TQ3ElementType theType);
+
+/**
+ * Removes every element from a set, including the objects a 3DMF file gave
+ * it that Q3 has no class for.
+ *
+ * @param target  the set to empty.
+ * @return kQ3Success, or kQ3Failure with the set unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      target is NULL.
+ *   kQ3ErrorInvalidObject      target is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  target is not a set.
+ *
+ * Ownership: the set's references to the objects it held (a surface shader,
+ * unknown objects) are released.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Set_Empty(TQ3SetObject target);
+
+/**
+ * Steps through the element types a set holds. Pass kQ3ElementTypeNone to
+ * get the first; each call then gives the next type held after *theType,
+ * in increasing order of type (kQ3AttributeTypeSurfaceUV first,
+ * kQ3AttributeTypeSurfaceShader last), and kQ3ElementTypeNone after the
+ * last one. The walk keeps no state in the set, so the set may change
+ * between calls. Objects a 3DMF file gave the set that Q3 has no class for
+ * have no element type and are not listed.
+ *
+ * @param theSet   the set to walk.
+ * @param theType  on entry kQ3ElementTypeNone or an element type Q3Set_Add
+ *                 takes (the set need not hold it); on exit the next type
+ *                 held, or kQ3ElementTypeNone.
+ * @return kQ3Success, or kQ3Failure with *theType unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized      Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter       theSet or theType is NULL.
+ *   kQ3ErrorInvalidObject       theSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType   theSet is not a set.
+ *   kQ3ErrorUnknownElementType  *theType is neither kQ3ElementTypeNone nor a
+ *                               type Q3Set_Add takes.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Set_GetNextElementType(TQ3SetObject theSet, TQ3ElementType *theType);
+
+/* ---- Attribute types ----------------------------------------------------- */
+
 /*
- * Built-in attribute types. The comment on each names the C type that
- * Q3AttributeSet_Add reads from, and Q3AttributeSet_Get writes to, the data
- * pointer.
+ * Built-in attribute types. The comment on each names the C type that the
+ * Add calls read from, and the Get calls write to, the data pointer. The
+ * surface shader is passed as a handle: Add retains it, Get returns a new
+ * reference.
  */
 enum TQ3AttributeTypes {
     kQ3AttributeTypeNone               = 0,  /* no data; never stored       */
@@ -48,6 +245,46 @@ typedef enum TQ3AttributeTypes TQ3AttributeTypes;
 /* An attribute type code: a TQ3AttributeTypes value. */
 typedef TQ3ElementType TQ3AttributeType;
 
+/* ---- Attribute drawing --------------------------------------------------- */
+
+/**
+ * Submits one attribute to a view in a rendering or bounding loop, as
+ * submitting an attribute set holding only that attribute would: it becomes
+ * the view's current attribute of its type for everything submitted
+ * afterwards in the same pass, until a Q3Pop_Submit restores the state
+ * saved by the matching Q3Push_Submit. A surface shader attribute also
+ * shades what follows as submitting the shader itself would (a texture
+ * shader's texture, uv transform and boundaries).
+ *
+ * @param attributeType  which attribute to submit (as for
+ *                       Q3AttributeSet_Add).
+ * @param data           the attribute's data (as for Q3AttributeSet_Add).
+ * @param view           a view inside a loop.
+ * @return kQ3Success, or kQ3Failure with the view state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized        Q3Initialize has not been called.
+ *   kQ3ErrorAttributeInvalidType  attributeType is not one Q3AttributeSet_Add
+ *                                 takes.
+ *   kQ3ErrorNULLParameter         data or view is NULL, or *data is a NULL
+ *                                 surface shader handle.
+ *   kQ3ErrorInvalidObject         *data (a surface shader) or view is not a
+ *                                 live Q3 object.
+ *   kQ3ErrorInvalidObjectType     *data is not a surface shader, or view is
+ *                                 not a view.
+ *   kQ3ErrorInvalidParameter      a float in *data is not finite, or a switch
+ *                                 is neither kQ3On nor kQ3Off.
+ *   kQ3ErrorViewNotStarted        view is not inside a rendering or bounding
+ *                                 loop.
+ *
+ * Ownership: the view's state holds a surface shader until the pass ends
+ * (or a pop restores an earlier state); the caller keeps its reference.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Attribute_Submit(TQ3AttributeType attributeType, const void *data,
+                                              TQ3ViewObject view);
+
+/* ---- Attribute sets ------------------------------------------------------ */
+
 /**
  * Creates an empty attribute set.
  *
@@ -66,26 +303,35 @@ Q3_EXTERN_API_C(TQ3AttributeSet) Q3AttributeSet_New(void);
  * Stores one attribute in a set, replacing any attribute of the same type
  * already there.
  *
- * Q3 stores kQ3AttributeTypeSurfaceUV through kQ3AttributeTypeHighlightState
- * (1 to 10). Shader attributes and custom attribute types are not provided.
+ * Q3 stores kQ3AttributeTypeSurfaceUV through kQ3AttributeTypeSurfaceShader
+ * (1 to 11). Custom attribute types are not provided.
  *
  * @param attributeSet  the set to modify.
  * @param theType       which attribute to store.
  * @param data          points to a value of the C type listed for theType in
- *                      TQ3AttributeTypes; the value is copied. A TQ3Switch
- *                      other than kQ3Off is stored as kQ3On.
+ *                      TQ3AttributeTypes, which is copied; for
+ *                      kQ3AttributeTypeSurfaceShader, points to a
+ *                      TQ3SurfaceShaderObject handle (a texture shader).
  * @return kQ3Success, or kQ3Failure with the set unchanged.
  *
  * Errors:
  *   kQ3ErrorNotInitialized        Q3Initialize has not been called.
- *   kQ3ErrorNULLParameter         attributeSet or data is NULL.
- *   kQ3ErrorInvalidObject         attributeSet is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType     attributeSet is not an attribute set.
+ *   kQ3ErrorNULLParameter         attributeSet or data is NULL, or *data is a
+ *                                 NULL surface shader handle.
+ *   kQ3ErrorInvalidObject         attributeSet is not a live Q3 object, or
+ *                                 *data is not a live surface shader handle.
+ *   kQ3ErrorInvalidObjectType     attributeSet is not an attribute set, or
+ *                                 *data is a live object but not a surface
+ *                                 shader (an illumination shader, say).
  *   kQ3ErrorAttributeInvalidType  theType is not one of the types listed above.
- *   kQ3ErrorInvalidParameter      a float in *data is not finite.
+ *   kQ3ErrorInvalidParameter      a float in *data is not finite, or a switch
+ *                                 is neither kQ3On nor kQ3Off.
  *   kQ3ErrorOutOfMemory           the attribute cannot be stored.
  *
- * Ownership: no references change; the set keeps its own copy of *data.
+ * Ownership: the set keeps its own copy of a value. A surface shader is
+ * retained: the set adds one reference, released when the attribute is
+ * replaced, cleared or emptied or the set is destroyed; the caller keeps
+ * its own.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Add(TQ3AttributeSet attributeSet,
                                               TQ3AttributeType theType,
@@ -95,15 +341,18 @@ Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Add(TQ3AttributeSet attributeSet,
  * Reports whether a set holds an attribute of the given type.
  *
  * @param attributeSet   the set to query.
- * @param attributeType  the attribute type to look for.
+ * @param attributeType  the attribute type to look for (as for
+ *                       Q3AttributeSet_Add).
  * @return kQ3True if the set holds that attribute; kQ3False if it does not
  *         or the call fails.
  *
  * Errors:
- *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
- *   kQ3ErrorNULLParameter      attributeSet is NULL.
- *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
+ *   kQ3ErrorNotInitialized        Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter         attributeSet is NULL.
+ *   kQ3ErrorInvalidObject         attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType     attributeSet is not an attribute set.
+ *   kQ3ErrorAttributeInvalidType  attributeType is not one Q3AttributeSet_Add
+ *                                 takes.
  *
  * Ownership: no references change.
  */
@@ -116,7 +365,8 @@ Q3_EXTERN_API_C(TQ3Boolean) Q3AttributeSet_Contains(TQ3AttributeSet attributeSet
  * @param attributeSet  the set to read.
  * @param theType       which attribute to read.
  * @param data          receives a value of the C type listed for theType in
- *                      TQ3AttributeTypes.
+ *                      TQ3AttributeTypes; for kQ3AttributeTypeSurfaceShader,
+ *                      a TQ3SurfaceShaderObject handle.
  * @return kQ3Success, or kQ3Failure with *data unchanged.
  *
  * Errors:
@@ -124,35 +374,41 @@ Q3_EXTERN_API_C(TQ3Boolean) Q3AttributeSet_Contains(TQ3AttributeSet attributeSet
  *   kQ3ErrorNULLParameter          attributeSet or data is NULL.
  *   kQ3ErrorInvalidObject          attributeSet is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType      attributeSet is not an attribute set.
+ *   kQ3ErrorAttributeInvalidType   theType is not one Q3AttributeSet_Add
+ *                                  takes.
  *   kQ3ErrorAttributeNotContained  the set holds no attribute of type theType.
  *
- * Ownership: no references change.
+ * Ownership: a surface shader is returned as a new reference, which the
+ * caller releases with Q3Object_Dispose; nothing else changes hands.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Get(TQ3AttributeSet attributeSet,
                                               TQ3AttributeType theType,
                                               void *data);
 
 /**
- * Removes the attribute of the given type from a set. Removing a type the
- * set does not hold succeeds and changes nothing.
+ * Removes the attribute of the given type from a set.
  *
  * @param attributeSet  the set to modify.
  * @param theType       which attribute to remove.
  * @return kQ3Success, or kQ3Failure with the set unchanged.
  *
  * Errors:
- *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
- *   kQ3ErrorNULLParameter      attributeSet is NULL.
- *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
- *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
+ *   kQ3ErrorNotInitialized         Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter          attributeSet is NULL.
+ *   kQ3ErrorInvalidObject          attributeSet is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType      attributeSet is not an attribute set.
+ *   kQ3ErrorAttributeInvalidType   theType is not one Q3AttributeSet_Add
+ *                                  takes.
+ *   kQ3ErrorAttributeNotContained  the set holds no attribute of type theType.
  *
- * Ownership: no references change.
+ * Ownership: clearing the surface shader releases the set's reference to it.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Clear(TQ3AttributeSet attributeSet,
                                                 TQ3AttributeType theType);
 
 /**
- * Removes every attribute from a set.
+ * Removes every attribute from a set, and the objects a 3DMF file gave it
+ * that Q3 has no attribute for.
  *
  * @param target  the set to empty.
  * @return kQ3Success, or kQ3Failure with the set unchanged.
@@ -163,16 +419,45 @@ Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Clear(TQ3AttributeSet attributeSet,
  *   kQ3ErrorInvalidObject      target is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  target is not an attribute set.
  *
- * Ownership: no references change.
+ * Ownership: the set's references to the objects it held (a surface shader,
+ * unknown objects) are released.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Empty(TQ3AttributeSet target);
+
+/**
+ * Steps through the attribute types a set holds. Pass kQ3AttributeTypeNone
+ * to get the first; each call then gives the next type held after
+ * *theType, in increasing order of type (kQ3AttributeTypeSurfaceUV first,
+ * kQ3AttributeTypeSurfaceShader last), and kQ3AttributeTypeNone after the
+ * last one. The walk keeps no state in the set, so the set may change
+ * between calls.
+ *
+ * @param source   the set to walk.
+ * @param theType  on entry kQ3AttributeTypeNone or a type
+ *                 Q3AttributeSet_Add takes (the set need not hold it); on
+ *                 exit the next type held, or kQ3AttributeTypeNone.
+ * @return kQ3Success, or kQ3Failure with *theType unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized        Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter         source or theType is NULL.
+ *   kQ3ErrorInvalidObject         source is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType     source is not an attribute set.
+ *   kQ3ErrorAttributeInvalidType  *theType is neither kQ3AttributeTypeNone
+ *                                 nor a type Q3AttributeSet_Add takes.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_GetNextAttributeType(TQ3AttributeSet source,
+                                                               TQ3AttributeType *theType);
 
 /**
  * Submits an attribute set to a view in a rendering or bounding loop. Its
  * attributes become the view's current attributes for everything submitted
  * afterwards in the same pass, until a Q3Pop_Submit restores the state saved
  * by the matching Q3Push_Submit. A geometry's own attribute set still
- * overrides them.
+ * overrides them. A surface shader in the set also shades what follows as
+ * submitting the shader itself would.
  *
  * @param attributeSet  the attributes to apply.
  * @param view          a view inside a loop.
@@ -187,10 +472,40 @@ Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Empty(TQ3AttributeSet target);
  *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding
  *                              loop.
  *
- * Ownership: no references are kept after the call returns.
+ * Ownership: the view's state holds the set's surface shader until the pass
+ * ends (or a pop restores an earlier state); no reference to the set is
+ * kept.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Submit(TQ3AttributeSet attributeSet,
                                                  TQ3ViewObject view);
+
+/**
+ * Merges two attribute sets into a third: afterwards result holds every
+ * attribute of child, and every attribute of parent whose type child does
+ * not hold (the child's value wins where both have one). Whatever result
+ * held before is replaced, the objects a 3DMF file gave it included; those
+ * objects of parent and child are not attributes and are not inherited.
+ * result may be parent or child (or both may be one set). The surface
+ * shader is inherited like the other attributes.
+ *
+ * @param parent  the set whose attributes child's override.
+ * @param child   the set whose attributes win.
+ * @param result  the set that receives the merge.
+ * @return kQ3Success, or kQ3Failure with result unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      parent, child or result is NULL.
+ *   kQ3ErrorInvalidObject      parent, child or result is not a live Q3
+ *                              object.
+ *   kQ3ErrorInvalidObjectType  parent, child or result is not an attribute
+ *                              set.
+ *
+ * Ownership: result retains the surface shader it inherits and releases the
+ * one it held; parent and child do not change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Inherit(TQ3AttributeSet parent, TQ3AttributeSet child,
+                                                  TQ3AttributeSet result);
 
 #ifdef __cplusplus
 }

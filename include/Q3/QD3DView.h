@@ -811,7 +811,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_GetAttributeSetState(TQ3ViewObject view,
  * @param attributeType  the attribute's type (kQ3AttributeType...).
  * @param data           receives the value: as many bytes as the type's data
  *                       (a TQ3ColorRGB for a colour, a float for the ambient
- *                       coefficient, and so on).
+ *                       coefficient, and so on; for
+ *                       kQ3AttributeTypeSurfaceShader a
+ *                       TQ3SurfaceShaderObject).
  * @return kQ3Success, or kQ3Failure with *data unchanged.
  *
  * Errors (besides the shared ones):
@@ -820,6 +822,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3View_GetAttributeSetState(TQ3ViewObject view,
  *   kQ3ErrorAttributeNotContained no attribute of that type is in force (the
  *                                 defaults hold only the kQ3ViewDefault*
  *                                 attributes).
+ *
+ * Ownership: a surface shader is returned as a new reference, which the
+ * caller releases with Q3Object_Dispose; nothing else changes hands.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3View_GetAttributeState(TQ3ViewObject view,
                                                     TQ3AttributeType attributeType, void *data);

@@ -2,17 +2,25 @@
 // Copyright (c) 2026 The Q3 authors
 #include "QD3DSet.h"
 #include "api/Entry.h"
+#include "api/SetEntry.h"
 #include "core/AttributeSet.h"
-#include "shader/TextureShader.h"
 #include "view/View.h"
-
-#include <cstring>
 
 using namespace q3;
 using q3::api::guard;
 using q3::api::guardStatus;
 
 extern "C" {
+
+TQ3Status Q3Attribute_Submit(TQ3AttributeType attributeType, const void* data, TQ3ViewObject view)
+{
+    return guardStatus(__func__, [&] {
+        // A one-attribute set submitted in its place: one path for both.
+        Ref<AttributeSet> set = makeShared<AttributeSet>();
+        api::addElement(*set, attributeType, data);
+        set->accept(lookup<View>(view, "view").submitTarget());
+    });
+}
 
 TQ3AttributeSet Q3AttributeSet_New(void)
 {
@@ -23,13 +31,7 @@ TQ3AttributeSet Q3AttributeSet_New(void)
 TQ3Status Q3AttributeSet_Add(TQ3AttributeSet attributeSet, TQ3AttributeType theType, const void* data)
 {
     return guardStatus(__func__, [&] {
-        AttributeSet& set = lookup<AttributeSet>(attributeSet, "attributeSet");
-        if (theType != kQ3AttributeTypeSurfaceShader)
-            return set.add(theType, data);
-        requireNonNull(data, "data");
-        TQ3Object handle;
-        std::memcpy(&handle, data, sizeof handle);
-        set.addShader(Ref<SharedObject>(lookupRef<SurfaceShader>(handle, "*data (the surface shader)")));
+        api::addElement(lookup<AttributeSet>(attributeSet, "attributeSet"), theType, data);
     });
 }
 
@@ -44,14 +46,7 @@ TQ3Boolean Q3AttributeSet_Contains(TQ3AttributeSet attributeSet, TQ3AttributeTyp
 TQ3Status Q3AttributeSet_Get(TQ3AttributeSet attributeSet, TQ3AttributeType theType, void* data)
 {
     return guardStatus(__func__, [&] {
-        const AttributeSet& set = lookup<AttributeSet>(attributeSet, "attributeSet");
-        if (theType != kQ3AttributeTypeSurfaceShader)
-            return set.get(theType, data);
-        requireNonNull(data, "data");
-        if (set.shader() == nullptr)
-            fail(kQ3ErrorAttributeNotContained, "the set holds no surface shader");
-        TQ3Object handle = Ref<SharedObject>::retain(set.shader()).detach();
-        std::memcpy(data, &handle, sizeof handle);
+        api::getElement(lookup<AttributeSet>(attributeSet, "attributeSet"), theType, data);
     });
 }
 
@@ -66,11 +61,29 @@ TQ3Status Q3AttributeSet_Empty(TQ3AttributeSet target)
     return guardStatus(__func__, [&] { lookup<AttributeSet>(target, "target").empty(); });
 }
 
+TQ3Status Q3AttributeSet_GetNextAttributeType(TQ3AttributeSet source, TQ3AttributeType* theType)
+{
+    return guardStatus(__func__, [&] {
+        const AttributeSet& set = lookup<AttributeSet>(source, "source");
+        requireNonNull(theType, "theType");
+        *theType = set.nextType(*theType);
+    });
+}
+
 TQ3Status Q3AttributeSet_Submit(TQ3AttributeSet attributeSet, TQ3ViewObject view)
 {
     return guardStatus(__func__, [&] {
         const AttributeSet& set = lookup<AttributeSet>(attributeSet, "attributeSet");
         set.accept(lookup<View>(view, "view").submitTarget());
+    });
+}
+
+TQ3Status Q3AttributeSet_Inherit(TQ3AttributeSet parent, TQ3AttributeSet child, TQ3AttributeSet result)
+{
+    return guardStatus(__func__, [&] {
+        const AttributeSet& from = lookup<AttributeSet>(parent, "parent");
+        const AttributeSet& over = lookup<AttributeSet>(child, "child");
+        lookup<AttributeSet>(result, "result").inherit(from, over);
     });
 }
 

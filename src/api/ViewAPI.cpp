@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "QD3DView.h"
 #include "api/Entry.h"
+#include "api/SetEntry.h"
 #include "core/AttributeSet.h"
 #include "core/EnumValue.h"
 #include "group/Group.h"
@@ -322,7 +323,7 @@ TQ3Status Q3View_GetAttributeState(TQ3ViewObject view, TQ3AttributeType attribut
         View& source = lookup<View>(view, "view");
         requireNonNull(data, "data");
         const GraphicsState& state = source.graphicsState();
-        AttributeSet::fromValues(state.attributes)->get(attributeType, data);
+        api::getElement(*AttributeSet::fromValues(state.attributes), attributeType, data);
     });
 }
 

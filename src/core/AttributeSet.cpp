@@ -38,7 +38,7 @@ std::size_t floatCount(TQ3AttributeType type)
 
 } // namespace
 
-std::size_t AttributeSet::slotIndex(TQ3AttributeType type)
+std::size_t Set::slotIndex(TQ3AttributeType type)
 {
     if (type < kFirstType || type > kLastStoredType)
         fail(kQ3ErrorAttributeInvalidType,
@@ -47,11 +47,14 @@ std::size_t AttributeSet::slotIndex(TQ3AttributeType type)
     return static_cast<std::size_t>(type - kFirstType);
 }
 
-std::size_t AttributeSet::dataSize(TQ3AttributeType type)
+std::size_t Set::dataSize(TQ3AttributeType type)
 {
     slotIndex(type);
+    // A plain copy of a handle would hold no reference: arrays of attribute
+    // values (a TriMesh's) hold the plain-data types only.
     if (type == kQ3AttributeTypeSurfaceShader)
-        return sizeof(TQ3Object);
+        fail(kQ3ErrorAttributeInvalidType,
+             "attribute type 11 (the surface shader) is held by reference, not stored as plain data");
     if (type == kQ3AttributeTypeHighlightState)
         return sizeof(TQ3Switch);
     return floatCount(type) * sizeof(float);
@@ -75,14 +78,27 @@ void AttributeValues::overlay(const AttributeValues& other)
         m_surfaceShader = other.m_surfaceShader;
 }
 
+Object* Set::duplicate() const
+{
+    Ref<Set> copy = makeShared<Set>();
+    copyContentsTo(*copy);
+    return copy.detach();
+}
+
 Object* AttributeSet::duplicate() const
+{
+    Ref<AttributeSet> copy = makeShared<AttributeSet>();
+    copyContentsTo(*copy);
+    return copy.detach();
+}
+
+void Set::copyContentsTo(Set& copy) const
 {
     // The copy shares the surface shader and the unknown elements (shared
     // objects, as a set read from a file shares them), like Q3Object_Duplicate
     // of a geometry shares nothing but makes new attribute sets.
-    Ref<AttributeSet> copy = fromValues(m_values);
-    copy->m_others = m_others;
-    return copy.detach();
+    copy.m_values = m_values;
+    copy.m_others = m_others;
 }
 
 Ref<AttributeSet> AttributeSet::fromValues(const AttributeValues& values)
@@ -97,7 +113,7 @@ void AttributeSet::accept(ShapeVisitor& visitor) const
     visitor.visitAttributeSet(*this);
 }
 
-std::string AttributeSet::valueProblem(TQ3AttributeType type, const void* data)
+std::string Set::valueProblem(TQ3AttributeType type, const void* data)
 {
     if (type == kQ3AttributeTypeHighlightState) {
         TQ3Switch value;
@@ -115,7 +131,7 @@ std::string AttributeSet::valueProblem(TQ3AttributeType type, const void* data)
     return {};
 }
 
-void AttributeSet::add(TQ3AttributeType type, const void* data)
+void Set::add(TQ3AttributeType type, const void* data)
 {
     const std::size_t index = slotIndex(type);
     if (type == kQ3AttributeTypeSurfaceShader)
@@ -130,7 +146,7 @@ void AttributeSet::add(TQ3AttributeType type, const void* data)
     markEdited();
 }
 
-void AttributeSet::get(TQ3AttributeType type, void* data) const
+void Set::get(TQ3AttributeType type, void* data) const
 {
     slotIndex(type);
     if (type == kQ3AttributeTypeSurfaceShader)
@@ -141,34 +157,50 @@ void AttributeSet::get(TQ3AttributeType type, void* data) const
              "the set holds no attribute of type " + std::to_string(type));
 }
 
-bool AttributeSet::contains(TQ3AttributeType type) const
+bool Set::contains(TQ3AttributeType type) const
 {
     slotIndex(type);
     return m_values.contains(type);
 }
 
-void AttributeSet::addShader(Ref<SharedObject> shader)
+void Set::addShader(Ref<SharedObject> shader)
 {
     requireNonNull(shader.get(), "shader");
     m_values.m_surfaceShader = std::move(shader);
     markEdited();
 }
 
-TQ3AttributeType AttributeSet::nextType(TQ3AttributeType type) const
+void Set::requireElementType(TQ3ElementType type)
 {
-    for (TQ3AttributeType next = type < kFirstType ? kFirstType : type + 1; next <= kLastStoredType; ++next)
+    if (type < kFirstType || type > kLastStoredType)
+        fail(kQ3ErrorUnknownElementType,
+             "element type " + std::to_string(type) +
+                 " has no element class in Q3 (the attribute types 1 to 11 have; custom element classes "
+                 "cannot be registered)");
+}
+
+void Set::requireWalkType(TQ3AttributeType type)
+{
+    if (type != kQ3AttributeTypeNone)
+        slotIndex(type);
+}
+
+TQ3AttributeType Set::nextType(TQ3AttributeType type) const
+{
+    requireWalkType(type);
+    for (TQ3AttributeType next = type + 1; next <= kLastStoredType; ++next)
         if (m_values.contains(next))
             return next;
     return kQ3AttributeTypeNone;
 }
 
-void AttributeSet::addOtherElement(Ref<SharedObject> element)
+void Set::addOtherElement(Ref<SharedObject> element)
 {
     m_others.push_back(std::move(element));
     markEdited();
 }
 
-void AttributeSet::clear(TQ3AttributeType type)
+void Set::clear(TQ3AttributeType type)
 {
     const std::size_t index = slotIndex(type);
     if (type == kQ3AttributeTypeSurfaceShader) {
@@ -185,7 +217,7 @@ void AttributeSet::clear(TQ3AttributeType type)
     markEdited();
 }
 
-void AttributeSet::empty()
+void Set::empty()
 {
     m_values = AttributeValues();
     m_others.clear();
@@ -195,6 +227,16 @@ void AttributeSet::empty()
 void AttributeSet::inheritFrom(const AttributeSet& other)
 {
     m_values.overlay(other.m_values);
+    markEdited();
+}
+
+void AttributeSet::inherit(const AttributeSet& parent, const AttributeSet& child)
+{
+    // Built apart first: parent or child may be this set.
+    AttributeValues result = parent.m_values;
+    result.overlay(child.m_values);
+    m_values = std::move(result);
+    m_others.clear();
     markEdited();
 }
 

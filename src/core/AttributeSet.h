@@ -72,20 +72,23 @@ public:
     std::optional<TQ3Switch> highlightState() const { return find<TQ3Switch>(kQ3AttributeTypeHighlightState); }
 
 private:
-    friend class AttributeSet;
+    friend class Set;
     using Slot = std::array<unsigned char, 24>;
     std::array<std::optional<Slot>, kLastType - kFirstType + 1> m_slots;
     Ref<SharedObject> m_surfaceShader;
 };
 
-/// A set of QuickDraw 3D attributes (colors, normals, UVs, a surface
-/// shader, ...), at most one of each type, and the elements a file gave it
-/// that Q3 has no class for (kept to be written back). Invariant: every
-/// stored value is well formed (finite floats, a switch that is kQ3On or
-/// kQ3Off, a live surface shader); add() checks before it stores.
-class AttributeSet final : public SharedObject {
+/// A QuickDraw 3D set (Q3Set_New): elements by element type, at most one
+/// of each. The element types Q3 has classes for are the standard attribute
+/// types (surface UV to highlight state as values, the surface shader as a
+/// reference to a shader object), so a set stores what an attribute set
+/// stores, and the elements a file gave it that Q3 has no class for (kept
+/// to be written back). Invariant: every stored value is well formed
+/// (finite floats, a switch that is kQ3On or kQ3Off, a live surface
+/// shader); add() checks before it stores.
+class Set : public SharedObject {
 public:
-    static constexpr TQ3ObjectType kClassType = kQ3SetTypeAttribute;
+    static constexpr TQ3ObjectType kClassType = kQ3SharedTypeSet;
 
     /// The first and last plain-data attribute types; the surface shader
     /// (kQ3AttributeTypeSurfaceShader, 11) is stored beside them as a
@@ -93,24 +96,30 @@ public:
     static constexpr TQ3AttributeType kFirstType = AttributeValues::kFirstType;
     static constexpr TQ3AttributeType kLastType = AttributeValues::kLastType;
     /// Every type a set can hold, in Q3AttributeSet_GetNextAttributeType's
-    /// order.
+    /// and Q3Set_GetNextElementType's order.
     static constexpr TQ3AttributeType kLastStoredType = kQ3AttributeTypeSurfaceShader;
 
-    AttributeSet() = default;
+    Set() = default;
 
-    const ClassInfo& classInfo() const override { return kAttributeSetClass; }
+    const ClassInfo& classInfo() const override { return kSetClass; }
     Object* duplicate() const override;
-    bool isDrawable() const override { return true; }
-    void accept(ShapeVisitor& visitor) const override;
 
-    /// Bytes of data of one attribute type (a handle's size for the surface
-    /// shader); throws kQ3ErrorAttributeInvalidType for a type Q3 does not
-    /// store.
+    /// Bytes of data of one plain-data attribute type; throws
+    /// kQ3ErrorAttributeInvalidType for any other type, the surface shader
+    /// included.
     static std::size_t dataSize(TQ3AttributeType type);
     /// Why a value of that (stored) type is not well formed (a component
     /// that is not finite, a switch that is neither kQ3On nor kQ3Off), or an
     /// empty string when it is.
     static std::string valueProblem(TQ3AttributeType type, const void* data);
+    /// Throws kQ3ErrorUnknownElementType unless `type` is an element type Q3
+    /// has a class for (the attribute types it stores): what the Q3Set_
+    /// calls check first, where the Q3AttributeSet_ calls report
+    /// kQ3ErrorAttributeInvalidType.
+    static void requireElementType(TQ3ElementType type);
+    /// Throws kQ3ErrorAttributeInvalidType unless `type` is kQ3AttributeTypeNone
+    /// or a type Q3 stores: where a walk over the types may start or go on.
+    static void requireWalkType(TQ3AttributeType type);
 
     /// Stores a plain-data attribute (not the surface shader: addShader).
     void add(TQ3AttributeType type, const void* data);
@@ -124,31 +133,57 @@ public:
     /// the walk), or kQ3AttributeTypeNone after the last one.
     TQ3AttributeType nextType(TQ3AttributeType type) const;
     bool contains(TQ3AttributeType type) const;
+    /// Removes one attribute; kQ3ErrorAttributeNotContained when there is none.
     void clear(TQ3AttributeType type);
     void empty();
-
-    /// Copies into this set every attribute of `other` (others' values win).
-    void inheritFrom(const AttributeSet& other);
-    /// A new set holding these values.
-    static Ref<AttributeSet> fromValues(const AttributeValues& values);
 
     const AttributeValues& values() const { return m_values; }
     /// Objects a file held in the set that Q3 has no attribute for (unknown
     /// elements), in file order: kept and written back unchanged.
     const std::vector<Ref<SharedObject>>& otherElements() const { return m_others; }
     void addOtherElement(Ref<SharedObject> element);
+
+protected:
+    /// Gives `copy` this set's values and unknown elements (shared).
+    void copyContentsTo(Set& copy) const;
+
+    AttributeValues m_values;
+    std::vector<Ref<SharedObject>> m_others;
+
+private:
+    static std::size_t slotIndex(TQ3AttributeType type);
+};
+
+/// A set of QuickDraw 3D attributes (colors, normals, UVs, a surface
+/// shader, ...): the set a view draws with (submitted, it overlays the
+/// traversal's attributes). Invariant: as Set's.
+class AttributeSet final : public Set {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3SetTypeAttribute;
+
+    AttributeSet() = default;
+
+    const ClassInfo& classInfo() const override { return kAttributeSetClass; }
+    Object* duplicate() const override;
+    bool isDrawable() const override { return true; }
+    void accept(ShapeVisitor& visitor) const override;
+
+    /// Copies into this set every attribute of `other` (others' values win).
+    void inheritFrom(const AttributeSet& other);
+    /// Replaces this set's contents by child's attributes and those of
+    /// parent's that child lacks (Q3AttributeSet_Inherit); either may be
+    /// this set. Unknown elements are not attributes: none is inherited,
+    /// and this set's own are dropped.
+    void inherit(const AttributeSet& parent, const AttributeSet& child);
+    /// A new set holding these values.
+    static Ref<AttributeSet> fromValues(const AttributeValues& values);
+
     /// The value of one attribute, or nullopt when the set has none.
     std::optional<TQ3ColorRGB> diffuseColor() const { return m_values.diffuseColor(); }
     std::optional<TQ3ColorRGB> transparencyColor() const { return m_values.transparencyColor(); }
     std::optional<TQ3Vector3D> normal() const { return m_values.normal(); }
     std::optional<TQ3Param2D> surfaceUV() const { return m_values.surfaceUV(); }
     std::optional<TQ3Param2D> shadingUV() const { return m_values.shadingUV(); }
-
-private:
-    static std::size_t slotIndex(TQ3AttributeType type);
-
-    AttributeValues m_values;
-    std::vector<Ref<SharedObject>> m_others;
 };
 
 } // namespace q3

@@ -43,6 +43,11 @@ Pass::Pass(std::optional<Window> window, const AttributeValues& attributes) : m_
 void Pass::visitAttributeSet(const AttributeSet& attributes)
 {
     m_state.attributes.overlay(attributes.values());
+    // A surface shader attribute shades what follows as the shader itself
+    // would, submitted at this point (the set only ever holds a surface
+    // shader).
+    if (const SharedObject* shader = attributes.shader())
+        static_cast<const Shader*>(shader)->apply(m_state.draw);
 }
 
 void Pass::visitStyle(const Style& style)

@@ -48,7 +48,8 @@ public:
     /// attributes: what the traversal starts with (defaultAttributes).
     Pass(std::optional<Window> window, const AttributeValues& attributes);
 
-    /// Merges the set's attributes into the state.
+    /// Merges the set's attributes into the state; its surface shader, if
+    /// it holds one, is applied as visitShader applies a submitted one.
     void visitAttributeSet(const AttributeSet& attributes) override;
     /// Styles and shaders set their part of the state.
     void visitStyle(const Style& style) override;

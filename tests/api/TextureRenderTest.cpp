@@ -175,6 +175,23 @@ TEST_F(TextureRenderTest, UnlitQuadShowsEachTexelWhereItsUVFalls)
     EXPECT_GT(expectTexels(image, UVMap{}, "identity"), 300);
 }
 
+TEST_F(TextureRenderTest, ASurfaceShaderAttributeTexturesAsTheShaderDoes)
+{
+    TQ3GeometryObject mesh = quad();
+    TQ3AttributeSet set = own(Q3AttributeSet_New());
+    ASSERT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceShader, &m_shader), kQ3Success);
+    const Pixmap fromSet = render([&](TQ3ViewObject v) {
+        EXPECT_EQ(Q3AttributeSet_Submit(set, v), kQ3Success);
+        EXPECT_EQ(Q3Geometry_Submit(mesh, v), kQ3Success);
+    });
+    EXPECT_GT(expectTexels(fromSet, UVMap{}, "Q3AttributeSet_Submit"), 300);
+    const Pixmap fromAttribute = render([&](TQ3ViewObject v) {
+        EXPECT_EQ(Q3Attribute_Submit(kQ3AttributeTypeSurfaceShader, &m_shader, v), kQ3Success);
+        EXPECT_EQ(Q3Geometry_Submit(mesh, v), kQ3Success);
+    });
+    EXPECT_GT(expectTexels(fromAttribute, UVMap{}, "Q3Attribute_Submit"), 300);
+}
+
 TEST_F(TextureRenderTest, WithoutTheShaderTheQuadKeepsItsDiffuseColour)
 {
     TQ3GeometryObject mesh = quad();

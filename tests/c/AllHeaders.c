@@ -66,6 +66,49 @@ static int styleShaderAndLightCalls(void)
     return ok;
 }
 
+/* QD3DSet.h from C as legacy code writes it: a set and an attribute set,
+ * the type walk, inheritance, and the surface shader passed as a handle. */
+static int setCalls(void)
+{
+    TQ3SetObject set = Q3Set_New();
+    TQ3AttributeSet parent = Q3AttributeSet_New(), child = Q3AttributeSet_New(), result = Q3AttributeSet_New();
+    TQ3ShaderObject illumination = Q3PhongIllumination_New();
+    TQ3SurfaceShaderObject gotShader = NULL;
+    TQ3ColorRGB red = {1.0f, 0.0f, 0.0f}, blue = {0.0f, 0.0f, 1.0f}, got;
+    float ambient = 0.5f;
+    TQ3ElementType type = kQ3ElementTypeNone;
+    TQ3AttributeType attributeType = kQ3AttributeTypeNone;
+    int ok;
+    ok = Q3Set_GetType(set) == kQ3SharedTypeSet && Q3Set_GetType(parent) == kQ3SetTypeAttribute &&
+         Q3Set_Add(set, kQ3AttributeTypeDiffuseColor, &red) == kQ3Success &&
+         Q3Set_Contains(set, kQ3AttributeTypeDiffuseColor) == kQ3True &&
+         Q3Set_Get(set, kQ3AttributeTypeDiffuseColor, &got) == kQ3Success && got.r == 1.0f &&
+         Q3Set_GetNextElementType(set, &type) == kQ3Success && type == kQ3AttributeTypeDiffuseColor &&
+         Q3Set_GetNextElementType(set, &type) == kQ3Success && type == kQ3ElementTypeNone &&
+         Q3Set_Add(set, kQ3ElementTypeUnknown, &red) == kQ3Failure &&
+         Q3Error_Get(NULL) == kQ3ErrorUnknownElementType &&
+         Q3Set_Clear(set, kQ3AttributeTypeDiffuseColor) == kQ3Success && Q3Set_Empty(set) == kQ3Success &&
+         Q3AttributeSet_Add(parent, kQ3AttributeTypeDiffuseColor, &red) == kQ3Success &&
+         Q3AttributeSet_Add(parent, kQ3AttributeTypeAmbientCoefficient, &ambient) == kQ3Success &&
+         Q3AttributeSet_Add(child, kQ3AttributeTypeDiffuseColor, &blue) == kQ3Success &&
+         Q3AttributeSet_Inherit(parent, child, result) == kQ3Success &&
+         Q3AttributeSet_Get(result, kQ3AttributeTypeDiffuseColor, &got) == kQ3Success && got.b == 1.0f &&
+         Q3AttributeSet_GetNextAttributeType(result, &attributeType) == kQ3Success &&
+         attributeType == kQ3AttributeTypeAmbientCoefficient &&
+         Q3AttributeSet_Add(result, kQ3AttributeTypeSurfaceShader, &illumination) == kQ3Failure &&
+         Q3Error_Get(NULL) == kQ3ErrorInvalidObjectType &&
+         Q3AttributeSet_Get(result, kQ3AttributeTypeSurfaceShader, &gotShader) == kQ3Failure &&
+         Q3Error_Get(NULL) == kQ3ErrorAttributeNotContained && gotShader == NULL &&
+         Q3Attribute_Submit(kQ3AttributeTypeDiffuseColor, &red, NULL) == kQ3Failure &&
+         Q3Error_Get(NULL) == kQ3ErrorNULLParameter;
+    Q3Object_Dispose(illumination);
+    Q3Object_Dispose(result);
+    Q3Object_Dispose(child);
+    Q3Object_Dispose(parent);
+    Q3Object_Dispose(set);
+    return ok;
+}
+
 int main(void)
 {
     TQ3NURBCurveData data;
@@ -122,6 +165,8 @@ int main(void)
     }
     if (!styleShaderAndLightCalls())
         return 11;
+    if (!setCalls())
+        return 22;
     {
         /* A curve tool from C: Listing 1's cubic, evaluated at its middle. */
         static TQ3RationalPoint4D points[4] = {{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}};

@@ -1026,13 +1026,21 @@ private:
                 std::memcpy(data, &raw, sizeof raw);
             }
             const bool nullData = m_in.u8() == 0;
-            switch (m_in.u8() % 5) {
+            // A surface shader is passed as a handle, read back as a new one.
+            const auto releaseShader = [&](TQ3Status status, const float* out) {
+                if (status == kQ3Success && type == kQ3AttributeTypeSurfaceShader && !nullData) {
+                    TQ3Object shader;
+                    std::memcpy(&shader, out, sizeof shader);
+                    Q3Object_Dispose(shader);
+                }
+            };
+            switch (m_in.u8() % 10) {
             case 0:
                 STATUS(Q3AttributeSet_Add(set, type, nullData ? nullptr : data));
                 break;
             case 1: {
                 float out[8];
-                STATUS(Q3AttributeSet_Get(set, type, nullData ? nullptr : out));
+                releaseShader(STATUS(Q3AttributeSet_Get(set, type, nullData ? nullptr : out)), out);
                 break;
             }
             case 2:
@@ -1040,6 +1048,34 @@ private:
                 break;
             case 3:
                 STATUS(Q3AttributeSet_Clear(set, type));
+                break;
+            case 4: {
+                TQ3AttributeType next = type;
+                STATUS(Q3AttributeSet_GetNextAttributeType(set, nullData ? nullptr : &next));
+                break;
+            }
+            case 5:
+                STATUS(Q3AttributeSet_Inherit(pick(Kind::kAttributeSet), pick(Kind::kAttributeSet), set));
+                break;
+            case 6: {
+                // The surface shader attribute: a texture shader is not among
+                // the fuzzer's objects, so this tries what must be refused.
+                TQ3Object shader = pick(Kind::kShader);
+                STATUS(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceShader, nullData ? nullptr : &shader));
+                break;
+            }
+            case 7: {
+                // The generic set calls on the same set (an attribute set is a set).
+                float out[8];
+                STATUS(Q3Set_Add(set, type, nullData ? nullptr : data));
+                releaseShader(STATUS(Q3Set_Get(set, type, nullData ? nullptr : out)), out);
+                QUERY(Q3Set_Contains(set, type), kQ3False);
+                TQ3ElementType next = type;
+                STATUS(Q3Set_GetNextElementType(set, nullData ? nullptr : &next));
+                break;
+            }
+            case 8:
+                STATUS(Q3Set_Clear(set, type));
                 break;
             default:
                 STATUS(Q3AttributeSet_Empty(set));
