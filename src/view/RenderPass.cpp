@@ -274,9 +274,9 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
                 for (std::size_t k = 1; k < m_runStarts.size(); ++k)
                     m_runStarts[k] += m_runStarts[k - 1];
                 m_runs.resize(3 * mesh.triangleCount);
-                std::vector<std::size_t> next(m_runStarts.begin(), m_runStarts.end() - 1);
+                m_runNext.assign(m_runStarts.begin(), m_runStarts.end() - 1);
                 for (std::size_t t = 0; t < mesh.triangleCount; ++t) {
-                    const std::size_t at = 3 * next[mesh.triangleShaders[t]]++;
+                    const std::size_t at = 3 * m_runNext[mesh.triangleShaders[t]]++;
                     for (int k = 0; k < 3; ++k)
                         m_runs[at + k] = mesh.triangles[3 * t + k];
                 }

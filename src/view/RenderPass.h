@@ -128,10 +128,11 @@ private:
     std::vector<std::uint32_t> m_indices;
     std::vector<float> m_st;
     std::vector<float> m_litST;
-    /// The triangles of a mesh grouped by surface shader, and where each
-    /// group starts.
+    /// The triangles of a mesh grouped by surface shader, where each group
+    /// starts, and where each is filled next.
     std::vector<std::uint32_t> m_runs;
     std::vector<std::size_t> m_runStarts;
+    std::vector<std::size_t> m_runNext;
     /// The textures handed to the target this frame (held, so that none is
     /// freed and its address reused while the frame lasts), and the one
     /// current there.
