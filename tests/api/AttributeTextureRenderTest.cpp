@@ -20,6 +20,8 @@
 #include "QD3DSet.h"
 #include "QD3DShader.h"
 #include "QD3DStorage.h"
+#include "QD3DStyle.h"
+#include "QD3DView.h"
 
 #include <cmath>
 #include <cstdint>
@@ -261,6 +263,46 @@ TEST_F(AttributeTextureRenderTest, SetSubmittedToTheViewActsAsASubmittedShaderTh
         Q3Geometry_Submit(mesh, v);
     });
     EXPECT_GT(expectTexels(setAfter, all(texelB), "a set submitted after the shader"), 300);
+}
+
+TEST_F(AttributeTextureRenderTest, PopRestoresTheShaderASetSubmittedBeforeThePush)
+{
+    TQ3GeometryObject mesh = quadMesh(setWith(nullptr));
+    TQ3AttributeSet withA = setWith(m_shaderA), withB = setWith(m_shaderB);
+    const Pixmap image = render([&](TQ3ViewObject v) {
+        Q3AttributeSet_Submit(withA, v);
+        EXPECT_EQ(Q3Push_Submit(v), kQ3Success);
+        Q3AttributeSet_Submit(withB, v);
+        EXPECT_EQ(Q3Pop_Submit(v), kQ3Success);
+        Q3Geometry_Submit(mesh, v);
+    });
+    EXPECT_GT(expectTexels(image, all(texelA), "the shader before the push"), 300);
+}
+
+TEST_F(AttributeTextureRenderTest, ShaderInTheViewsDefaultSetTexturesFromTheStart)
+{
+    TQ3GeometryObject mesh = quadMesh(setWith(nullptr));
+    Pixmap image(kWidth, kHeight);
+    TestView view(image.pixmap(), kQ3RendererTypeInteractive);
+    ASSERT_EQ(Q3View_SetDefaultAttributeSet(view.view(), setWith(m_shaderB)), kQ3Success);
+    EXPECT_EQ(view.render([&](TQ3ViewObject v) { Q3Geometry_Submit(mesh, v); }), kQ3ViewStatusDone);
+    EXPECT_GT(expectTexels(image, all(texelB), "the default set's shader"), 300);
+}
+
+TEST_F(AttributeTextureRenderTest, HighlightStylesShaderReplacesEveryShaderOfAHighlightedGeometry)
+{
+    TQ3SurfaceShaderObject faces[2] = {m_shaderA, m_shaderA};
+    TQ3AttributeSet own_ = setWith(m_shaderA);
+    const TQ3Switch on = kQ3On;
+    Q3AttributeSet_Add(own_, kQ3AttributeTypeHighlightState, &on);
+    TQ3GeometryObject mesh = quadMesh(own_, faces);
+    TQ3StyleObject highlight = own(Q3HighlightStyle_New(setWith(m_shaderB)));
+    ASSERT_NE(highlight, nullptr);
+    const Pixmap image = render([&](TQ3ViewObject v) {
+        Q3Style_Submit(highlight, v);
+        Q3Geometry_Submit(mesh, v);
+    });
+    EXPECT_GT(expectTexels(image, all(texelB), "the highlight's shader"), 300);
 }
 
 TEST_F(AttributeTextureRenderTest, TriMeshFaceShadersTextureEachFaceWithItsOwn)
