@@ -1953,18 +1953,26 @@ Q3_EXTERN_API_C(TQ3Status) Q3Polygon_SetVertexAttributeSet(TQ3GeometryObject pol
  *                                ambient coefficient, diffuse colour,
  *                                specular colour, specular control,
  *                                transparency colour, surface tangent,
- *                                highlight state) for every triangle, edge
- *                                or point: `data` holds numTriangles,
- *                                numEdges or numPoints values of the type,
- *                                one after another; attributeUseArray is
- *                                NULL, or holds one char per element, 0
- *                                where the element has no value.
+ *                                highlight state, surface shader) for every
+ *                                triangle, edge or point: `data` holds
+ *                                numTriangles, numEdges or numPoints values
+ *                                of the type, one after another;
+ *                                attributeUseArray is NULL, or holds one
+ *                                char per element, 0 where the element has
+ *                                no value. A surface shader value is a
+ *                                TQ3SurfaceShaderObject, NULL for none: the
+ *                                TriMesh holds a reference to each one in
+ *                                use, GetData returns new references and
+ *                                EmptyData releases them; Q3Object_Duplicate
+ *                                shares them.
  *   bBox                         ignored by New, SetData and Submit; GetData
  *                                returns the box of the points (isEmpty when
  *                                there are none).
  *
  * Drawing: a point's values are its vertex's attributes; a triangle's apply
- * to its three corners (a point's own still win). The wireframe renderer
+ * to its three corners (a point's own still win). A triangle is textured
+ * with the surface shader at least two of its corners have, else the
+ * TriMesh's attribute set's, else the view's (docs/textures.md). The wireframe renderer
  * draws every side of every triangle, and then every edge that has a diffuse
  * colour, in that colour.
  *
@@ -1973,8 +1981,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3Polygon_SetVertexAttributeSet(TQ3GeometryObject pol
  *   every array whose count is not 0 is not NULL (the attribute arrays'
  *     data too)                                     kQ3ErrorNULLParameter
  *   every count <= kQ3GeometryMaxArrayCount         kQ3ErrorParameterOutOfRange
- *   every attribute type is a standard type (not
- *     a surface shader or a custom type)            kQ3ErrorAttributeInvalidType
+ *   every attribute type is a standard type (1 to
+ *     11, not a custom type)                        kQ3ErrorAttributeInvalidType
  *   every point index is below numPoints, every
  *     edge's triangle index below numTriangles or
  *     kQ3ArrayIndexNULL                             kQ3ErrorInvalidData
@@ -1983,6 +1991,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3Polygon_SetVertexAttributeSet(TQ3GeometryObject pol
  *     (finite; a highlight state kQ3On or kQ3Off)   kQ3ErrorInvalidData
  *   triMeshAttributeSet is NULL or a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ *   every surface shader value in use is NULL or a
+ *     live surface shader   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
  */
 struct TQ3TriMeshTriangleData {
     unsigned long pointIndices[3];

@@ -50,11 +50,10 @@ std::size_t Set::slotIndex(TQ3AttributeType type)
 std::size_t Set::dataSize(TQ3AttributeType type)
 {
     slotIndex(type);
-    // A plain copy of a handle would hold no reference: arrays of attribute
-    // values (a TriMesh's) hold the plain-data types only.
+    // A surface shader value is a handle; whoever stores an array of them
+    // (a TriMesh's attribute arrays) holds a reference per element.
     if (type == kQ3AttributeTypeSurfaceShader)
-        fail(kQ3ErrorAttributeInvalidType,
-             "attribute type 11 (the surface shader) is held by reference, not stored as plain data");
+        return sizeof(TQ3Object);
     if (type == kQ3AttributeTypeHighlightState)
         return sizeof(TQ3Switch);
     return floatCount(type) * sizeof(float);

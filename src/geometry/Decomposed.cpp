@@ -34,9 +34,12 @@ public:
             const float* p = view.positions + 3 * i;
             m_mesh.addVertex(TQ3Point3D{p[0], p[1], p[2]}, attributes);
         }
-        for (std::size_t t = 0; t < view.triangleCount; ++t)
+        for (std::size_t t = 0; t < view.triangleCount; ++t) {
+            const std::uint32_t shader = view.triangleShaders != nullptr ? view.triangleShaders[t] : 0;
             m_mesh.addTriangle(base + view.triangles[3 * t], base + view.triangles[3 * t + 1],
-                               base + view.triangles[3 * t + 2]);
+                               base + view.triangles[3 * t + 2],
+                               shader != 0 ? view.shaders[shader - 1].get() : nullptr);
+        }
         for (std::size_t s = 0; s < view.stripCount; ++s)
             m_mesh.addStrip(base + view.strips[s].first, view.strips[s].count);
         m_others += view.pointCount + view.lineCount;

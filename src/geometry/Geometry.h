@@ -81,7 +81,7 @@ protected:
 private:
     /// The cached mesh and its key, allocated only by a geometry that
     /// builds one: most geometries (curves, lines, points) never do, and an
-    /// inline Mesh would add 264 bytes to each of them (issue 16's memory
+    /// inline Mesh and its key would add 336 bytes to each of them (issue 16's memory
     /// target counts every byte a retained curve holds).
     struct MeshCache;
     mutable std::unique_ptr<MeshCache> m_meshCache;

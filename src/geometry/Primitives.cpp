@@ -3,6 +3,7 @@
 #include "geometry/Primitives.h"
 
 #include "core/AttributeSet.h"
+#include "core/DataLayout.h"
 
 #include <algorithm>
 #include <cstring>
@@ -40,6 +41,8 @@ void VertexAttributes::inheritFrom(const AttributeSet* set)
     if (!hasNormal())
         if (const auto value = set->normal())
             normal = *value;
+    if (!hasShader())
+        shader = set->shader();
     if (!hasUV() || uvIsShading) {
         if (const auto value = set->surfaceUV()) {
             uv = *value;
@@ -80,6 +83,14 @@ void VertexAttributes::inherit(TQ3AttributeType type, const void* value)
             uvIsShading = true;
         }
         break;
+    case kQ3AttributeTypeSurfaceShader:
+        if (!hasShader()) {
+            TQ3Object handle;
+            std::memcpy(&handle, value, sizeof handle);
+            if (handle != nullptr)
+                shader = layout::heldObject(handle);
+        }
+        break;
     default:
         break;
     }
@@ -100,7 +111,35 @@ std::uint32_t Mesh::addVertex(const TQ3Point3D& position, const VertexAttributes
     appendChannel(m_transparency, attributes.hasTransparency(), transparency, 3, index);
     appendChannel(m_normals, attributes.hasNormal(), normal, 3, index);
     appendChannel(m_uvs, attributes.hasUV(), uv, 2, index);
+    if (attributes.hasShader() || !m_vertexShaders.empty()) {
+        // Created by the first vertex with a shader, then following every one.
+        m_vertexShaders.resize(index, 0);
+        m_vertexShaders.push_back(shaderNumber(attributes.shader));
+    }
     return static_cast<std::uint32_t>(index);
+}
+
+std::uint32_t Mesh::shaderNumber(const SharedObject* shader)
+{
+    if (shader == nullptr)
+        return 0;
+    for (std::size_t i = 0; i < m_shaders.size(); ++i)
+        if (m_shaders[i].get() == shader)
+            return std::uint32_t(i + 1);
+    // A reference count is bookkeeping, not part of the shader's value, so a
+    // const shader may gain a holder.
+    m_shaders.push_back(Ref<SharedObject>::retain(const_cast<SharedObject*>(shader)));
+    return std::uint32_t(m_shaders.size());
+}
+
+void Mesh::setLastTriangleShader(std::uint32_t number)
+{
+    // The array starts with the first triangle that has a shader (the ones
+    // before it have none) and then follows every triangle.
+    if (number == 0 && m_triangleShaders.empty())
+        return;
+    m_triangleShaders.resize(m_triangles.size() / 3 - 1, 0);
+    m_triangleShaders.push_back(number);
 }
 
 void Mesh::reserveVertices(std::size_t count)
@@ -116,6 +155,16 @@ void Mesh::addLine(std::uint32_t a, std::uint32_t b)
 void Mesh::addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c)
 {
     m_triangles.insert(m_triangles.end(), {a, b, c});
+    if (m_vertexShaders.empty())
+        return setLastTriangleShader(0);
+    const std::uint32_t sa = m_vertexShaders[a], sb = m_vertexShaders[b], sc = m_vertexShaders[c];
+    setLastTriangleShader(sa == sb || sa == sc ? sa : sb == sc ? sb : 0);
+}
+
+void Mesh::addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, const SharedObject* shader)
+{
+    m_triangles.insert(m_triangles.end(), {a, b, c});
+    setLastTriangleShader(shaderNumber(shader));
 }
 
 void Mesh::addEdge(std::uint32_t a, std::uint32_t b)
@@ -166,6 +215,11 @@ MeshView Mesh::view() const
     view.triangleCount = m_triangles.size() / 3;
     view.edges = m_edges.data();
     view.edgeCount = m_edges.size() / 2;
+    if (!m_triangleShaders.empty()) {
+        view.triangleShaders = m_triangleShaders.data();
+        view.shaders = m_shaders.data();
+        view.shaderCount = m_shaders.size();
+    }
     return view;
 }
 

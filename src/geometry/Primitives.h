@@ -5,11 +5,14 @@
 // What every geometry decomposes into: points, line segments, line strips and
 // triangles over one pool of vertices, each vertex with the attributes the
 // renderers use (QD3DSet.h's diffuse colour, transparency colour, normal and
-// surface uv). Rendering, bounding and Q3Geometry_GetDecomposed all consume
-// this one form, through PrimitiveSink.
+// surface uv), and each triangle with the surface shader its attribute sets
+// give it. Rendering, bounding and Q3Geometry_GetDecomposed all consume this
+// one form, through PrimitiveSink.
 
 #include "QD3D.h"
 #include "QD3DSet.h"
+#include "core/Object.h"
+#include "core/Ref.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -34,18 +37,25 @@ struct VertexAttributes {
     /// the inheritance replaces.
     TQ3Param2D uv{kNone, kNone};
     bool uvIsShading = false;
+    /// The surface shader (kQ3AttributeTypeSurfaceShader: a texture shader)
+    /// of the vertex's own set, else of its face's; null for none. Borrowed
+    /// from the sets while the mesh is built (Mesh keeps a reference).
+    const SharedObject* shader = nullptr;
 
     bool hasColor() const { return color.r == color.r; }
     bool hasTransparency() const { return transparency.r == transparency.r; }
     bool hasNormal() const { return normal.x == normal.x; }
     bool hasUV() const { return uv.u == uv.u; }
+    bool hasShader() const { return shader != nullptr; }
 
     /// QuickDraw 3D's inheritance step: each attribute this lacks is taken
     /// from `set` (null: nothing). Call it from the most specific set (the
     /// vertex's) to the least (the face's, the geometry's).
     void inheritFrom(const AttributeSet* set);
     /// The same step for one attribute value of a standard type (as stored in
-    /// a TriMesh attribute array); types the renderers do not use are ignored.
+    /// a TriMesh attribute array: for the surface shader, a handle the
+    /// geometry holds, or NULL for none); types the renderers do not use are
+    /// ignored.
     void inherit(TQ3AttributeType type, const void* value);
 };
 
@@ -109,6 +119,12 @@ struct MeshView {
     std::size_t stripCount = 0;
     const std::uint32_t* triangles = nullptr; ///< three indices per triangle
     std::size_t triangleCount = 0;
+    /// Per triangle, the surface shader its attribute sets give it: 0 for
+    /// none (it takes its geometry's, else the view's), k for shaders[k - 1].
+    /// Null when no triangle has one of its own.
+    const std::uint32_t* triangleShaders = nullptr;
+    const Ref<SharedObject>* shaders = nullptr; ///< the distinct shaders triangleShaders names
+    std::size_t shaderCount = 0;
     /// How the triangles look in a wireframe: two indices per edge (the
     /// outline of a polygon, not the diagonals its triangulation added).
     const std::uint32_t* edges = nullptr;
@@ -123,7 +139,9 @@ struct MeshView {
 
 /// A decomposition that owns its arrays: what retained geometries cache.
 /// Invariant: every attribute array is empty or has one entry per vertex;
-/// every index is below vertexCount().
+/// every index is below vertexCount(); the triangle shader array is empty or
+/// has one entry per triangle, each at most the number of shaders, which
+/// are distinct and each held by one reference.
 class Mesh {
 public:
     std::size_t vertexCount() const { return m_positions.size() / 3; }
@@ -136,7 +154,16 @@ public:
     void addLine(std::uint32_t a, std::uint32_t b);
     /// A strip over the vertices first .. first + count - 1.
     void addStrip(std::uint32_t first, std::uint32_t count) { m_strips.push_back(Strip{first, count}); }
+    /// A triangle over three vertices. Its surface shader is the one at
+    /// least two of its corners have (VertexAttributes::shader, "none"
+    /// counting as one): a shader given to every vertex of a face, or to the
+    /// face, shades the face; one given to some vertices only does not
+    /// decide a triangle the others outvote. Corners that all differ give
+    /// none (the geometry's, else the view's).
     void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+    /// A triangle whose surface shader is `shader` (null: none), whatever its
+    /// corners have (a decomposition copied triangle by triangle).
+    void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, const SharedObject* shader);
     void addEdge(std::uint32_t a, std::uint32_t b);
     /// Makes the edges every distinct side of every triangle (a mesh's
     /// wireframe), replacing any edges added before.
@@ -158,6 +185,15 @@ private:
     std::vector<Strip> m_strips;
     std::vector<std::uint32_t> m_triangles;
     std::vector<std::uint32_t> m_edges;
+    /// The surface shaders: distinct, referenced; the per-vertex and
+    /// per-triangle arrays hold 0 for none or k for m_shaders[k - 1], and are
+    /// empty until a vertex (a triangle) has one.
+    std::vector<Ref<SharedObject>> m_shaders;
+    std::vector<std::uint32_t> m_vertexShaders;
+    std::vector<std::uint32_t> m_triangleShaders;
+
+    std::uint32_t shaderNumber(const SharedObject* shader);
+    void setLastTriangleShader(std::uint32_t number);
 };
 
 /// Receives a geometry's decomposition. `own` is the geometry's own attribute

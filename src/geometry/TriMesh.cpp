@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace q3 {
@@ -24,10 +26,41 @@ bool isNullIndex(unsigned long index)
     return index == static_cast<unsigned long>(kQ3ArrayIndexNULL) || index == 0xFFFFFFFFUL;
 }
 
+// The handle a surface shader array holds for element `index`, or NULL (none,
+// or switched off by the use array, whose slot may hold anything).
+TQ3Object shaderAt(const TQ3TriMeshAttributeData& entry, std::size_t index)
+{
+    if (entry.attributeUseArray != nullptr && entry.attributeUseArray[index] == 0)
+        return nullptr;
+    TQ3Object handle;
+    std::memcpy(&handle, static_cast<const unsigned char*>(entry.data) + index * sizeof handle, sizeof handle);
+    return handle;
+}
+
+// A caller's surface shader, checked as Q3AttributeSet_Add checks one. The
+// class is found by its type code, so the geometry layer names no shader
+// class.
+SharedObject& lookupSurfaceShader(TQ3Object handle, const layout::Path& where)
+{
+    try {
+        Object& object = lookupObject(handle, "it");
+        if (!object.isType(kQ3ShaderTypeSurface))
+            fail(kQ3ErrorInvalidObjectType,
+                 std::string("it is a ") + object.classInfo().name + ", not a surface shader");
+        return static_cast<SharedObject&>(object);
+    } catch (const Error& error) {
+        fail(error.code(), where.str() + ": " + error.what());
+    }
+}
+
 // One attribute array (triangle, edge or vertex): numTypes entries, each with
 // a data block of `elementCount` values of its type and an optional
 // attributeUseArray of elementCount chars. Q3 knows the size of the standard
 // types it stores; any other type is refused (kQ3ErrorAttributeInvalidType).
+// A surface shader array (kQ3AttributeTypeSurfaceShader) holds a
+// TQ3SurfaceShaderObject per element, NULL for none: the copy holds one
+// reference to each shader an element uses (a live surface shader, checked
+// on New and SetData) and NULL in the elements the use array switches off.
 struct AttributeArraysField {
     const char* name;
     TQ3TriMeshAttributeData* D::*member;
@@ -64,7 +97,7 @@ struct AttributeArraysField {
     }
     void clear(D& s) const { s.*member = nullptr; }
     template <class Policy>
-    void fill(D& dst, const D& src, Policy&, const layout::Path& path) const
+    void fill(D& dst, const D& src, Policy& policy, const layout::Path& path) const
     {
         const TQ3TriMeshAttributeData* from = src.*member;
         if (from == nullptr)
@@ -78,12 +111,36 @@ struct AttributeArraysField {
         for (std::size_t i = 0; i < n; ++i) {
             const std::size_t bytes = count * valueSize(from[i], path.child(name).element(i));
             to[i].data = layout::allocate<unsigned char>(bytes);
-            if (bytes != 0)
+            if (from[i].attributeType == kQ3AttributeTypeSurfaceShader && count != 0)
+                std::memset(to[i].data, 0, bytes);
+            else if (bytes != 0)
                 std::memcpy(to[i].data, from[i].data, bytes);
             if (from[i].attributeUseArray != nullptr && count != 0) {
                 to[i].attributeUseArray = layout::allocate<char>(count);
                 std::memcpy(to[i].attributeUseArray, from[i].attributeUseArray, count);
             }
+            if (from[i].attributeType == kQ3AttributeTypeSurfaceShader)
+                takeShaders(to[i], from[i], count, policy, path.child(name).element(i));
+        }
+    }
+    // Fills a surface shader array's copy (all NULL) element by element, so
+    // that a failure leaves only taken references for release() to drop.
+    // New and SetData check each shader; GetData and Duplicate share them,
+    // as a duplicated attribute set shares its surface shader
+    // (AttributeSet::duplicate).
+    template <class Policy>
+    static void takeShaders(TQ3TriMeshAttributeData& to, const TQ3TriMeshAttributeData& from, std::size_t count,
+                            Policy&, const layout::Path& where)
+    {
+        TQ3Object* handles = static_cast<TQ3Object*>(to.data);
+        for (std::size_t e = 0; e < count; ++e) {
+            const TQ3Object handle = shaderAt(from, e);
+            if (handle == nullptr)
+                continue;
+            SharedObject* shader = std::is_same<Policy, layout::RetainChecked>::value
+                                       ? &lookupSurfaceShader(handle, where.child("data").element(e))
+                                       : layout::heldObject(handle);
+            handles[e] = Ref<SharedObject>::retain(shader).detach();
         }
     }
     void release(D& s) const
@@ -92,15 +149,39 @@ struct AttributeArraysField {
         if (entries == nullptr)
             return;
         for (std::size_t i = 0; i < s.*typeCount; ++i) {
+            if (entries[i].attributeType == kQ3AttributeTypeSurfaceShader && entries[i].data != nullptr)
+                for (std::size_t e = 0; e < s.*elementCount; ++e)
+                    if (const TQ3Object handle = shaderAt(entries[i], e))
+                        layout::heldObject(handle)->releaseReference();
             memory::release(entries[i].data);
             memory::release(entries[i].attributeUseArray);
         }
         memory::release(entries);
     }
-    void checkHandles(const D&, const layout::Path&) const {}
-    template <class F>
-    void forEachHandle(const D&, F&) const
+    void checkHandles(const D& s, const layout::Path& path) const
     {
+        forEachShader(s, [&](TQ3Object handle, std::size_t i, std::size_t e) {
+            lookupSurfaceShader(handle, path.child(name).element(i).child("data").element(e));
+        });
+    }
+    template <class F>
+    void forEachHandle(const D& s, F& f) const
+    {
+        forEachShader(s, [&](TQ3Object handle, std::size_t, std::size_t) { f(handle); });
+    }
+    // Calls f(handle, entry, element) for every shader a surface shader array
+    // holds.
+    template <class F>
+    void forEachShader(const D& s, F&& f) const
+    {
+        const TQ3TriMeshAttributeData* entries = s.*member;
+        if (entries == nullptr)
+            return;
+        for (std::size_t i = 0; i < s.*typeCount; ++i)
+            if (entries[i].attributeType == kQ3AttributeTypeSurfaceShader && entries[i].data != nullptr)
+                for (std::size_t e = 0; e < s.*elementCount; ++e)
+                    if (const TQ3Object handle = shaderAt(entries[i], e))
+                        f(handle, i, e);
     }
 };
 
@@ -351,6 +432,26 @@ Ref<TriMesh> TriMesh::fromMesh(const Mesh& mesh, const AttributeSet* own)
                 for (std::size_t i = 0; i < n; ++i)
                     entry.attributeUseArray[i] = channel.values[channel.width * i] == channel.values[channel.width * i];
             }
+        }
+        if (view.triangleShaders != nullptr) {
+            // The triangles' own surface shaders as a triangle attribute
+            // array, one reference per triangle that has one; the others
+            // are NULL and switched off.
+            const std::size_t count = view.triangleCount;
+            owned.triangleAttributeTypes = layout::allocate<TQ3TriMeshAttributeData>(1);
+            owned.triangleAttributeTypes[0] = TQ3TriMeshAttributeData{kQ3AttributeTypeSurfaceShader, nullptr, nullptr};
+            owned.numTriangleAttributeTypes = 1;
+            TQ3TriMeshAttributeData& entry = owned.triangleAttributeTypes[0];
+            TQ3Object* handles = layout::allocate<TQ3Object>(count);
+            for (std::size_t t = 0; t < count; ++t)
+                handles[t] = nullptr;
+            entry.data = handles;
+            entry.attributeUseArray = layout::allocate<char>(count);
+            for (std::size_t t = 0; t < count; ++t)
+                entry.attributeUseArray[t] = view.triangleShaders[t] != 0;
+            for (std::size_t t = 0; t < count; ++t)
+                if (view.triangleShaders[t] != 0)
+                    handles[t] = Ref<SharedObject>(view.shaders[view.triangleShaders[t] - 1]).detach();
         }
         // A reference count is bookkeeping, not part of the set's value, so a
         // const set may gain a holder.

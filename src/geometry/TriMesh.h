@@ -26,8 +26,9 @@ public:
 
     /// A TriMesh of a decomposition: the mesh's triangles over its vertices,
     /// with the per-vertex attributes it has as vertex attribute arrays (an
-    /// attributeUseArray where only some vertices have one), and `own` (may
-    /// be null) as its triMeshAttributeSet.
+    /// attributeUseArray where only some vertices have one), the triangles'
+    /// own surface shaders as a kQ3AttributeTypeSurfaceShader triangle
+    /// attribute array, and `own` (may be null) as its triMeshAttributeSet.
     static Ref<TriMesh> fromMesh(const Mesh& mesh, const AttributeSet* own);
 
     const ClassInfo& classInfo() const override { return kTriMeshClass; }

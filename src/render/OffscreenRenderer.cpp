@@ -267,7 +267,8 @@ public:
     RenderResult drawPixmap(const float* anchor, const PixmapImage& image);
     RenderResult setLighting(const LightingSetup& lighting);
     RenderResult setFaceOptions(const FaceOptions& faces);
-    RenderResult setTexture(const TextureImage* texture);
+    RenderResult addTexture(const TextureImage& texture, std::uint32_t& id);
+    RenderResult useTexture(std::uint32_t id);
     RenderResult endFrame();
     void cancelFrame();
 
@@ -357,8 +358,11 @@ private:
     void startFrameInGl();
     RenderResult flush(bool finish);
     void resetBatch();
-    // Binds m_textures[index], uploading it first if this flush has not.
+    // Binds m_textures[index], uploading it first if this frame has not.
     void bindTexture(std::uint32_t index);
+    // Drops the frame's textures (their OpenGL names are deleted by the next
+    // flush, when the context is current).
+    void forgetTextures();
     template <class T>
     static void reserve(std::unique_ptr<T[]>& storage, std::size_t& capacity, std::size_t used, std::size_t needed);
 
@@ -395,13 +399,16 @@ private:
     FaceOptions m_faces;
     LitProgram m_program;
     LitProgram m_texturedProgram;
-    // The batch's textures; m_currentTexture is the one setTexture chose
-    // (kUntextured: none), kept as entry 0 when a batch is flushed.
+    // The frame's textures (addTexture), kept until it ends so that a
+    // texture drawn again after others, or after a flush, is neither decoded
+    // nor uploaded twice; m_currentTexture is the one useTexture chose
+    // (kUntextured: none).
     std::vector<BatchTexture> m_textures;
     std::uint32_t m_currentTexture = kUntextured;
-    // OpenGL names of the uploaded textures of the batch being flushed, by
-    // m_textures index (0: not uploaded yet).
+    // OpenGL names of the frame's uploaded textures, by m_textures index (0:
+    // not uploaded yet), and names of an earlier frame left to delete.
     std::vector<GLuint> m_textureNames;
+    std::vector<GLuint> m_staleTextureNames;
 };
 
 void pinRenderingEnvironment()
@@ -477,6 +484,9 @@ void OffscreenRenderer::Impl::destroyContext()
     m_context = nullptr;
     m_program.forget();
     m_texturedProgram.forget();
+    // The context's textures went with it.
+    m_textureNames.clear();
+    m_staleTextureNames.clear();
 }
 
 // Every value here is OpenGL's default except the shade model; they are set
@@ -555,7 +565,7 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
     m_clearedInGl = false;
     m_lighting = LightingSetup{};
     m_faces = FaceOptions{};
-    m_currentTexture = kUntextured;
+    forgetTextures();
     resetBatch();
     m_matrices.clear();
     m_matrices.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
@@ -905,6 +915,10 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             startFrameInGl();
             m_clearedInGl = true;
         }
+        if (!m_staleTextureNames.empty()) {
+            glDeleteTextures(GLsizei(m_staleTextureNames.size()), m_staleTextureNames.data());
+            m_staleTextureNames.clear();
+        }
         if (!m_commands.empty()) {
             // Which arrays are bound: -1 none yet, 0 m_vertices, 1 m_positions.
             int loadedArrays = -1;
@@ -1036,7 +1050,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
         glDisable(GL_TEXTURE_2D);
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         glBindTexture(GL_TEXTURE_2D, 0);
-        if (!m_textureNames.empty()) {
+        if (finish && !m_textureNames.empty()) {
             glDeleteTextures(GLsizei(m_textureNames.size()), m_textureNames.data());
             m_textureNames.clear();
         }
@@ -1081,47 +1095,55 @@ void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
                  GL_UNSIGNED_BYTE, texture.rgba.data());
 }
 
-RenderResult OffscreenRenderer::Impl::setTexture(const TextureImage* texture)
+RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, std::uint32_t& id)
 {
     if (!m_inFrame)
-        return RenderResult::failure(RenderStatus::kWrongState, "setTexture called outside a frame");
-    m_currentTexture = kUntextured;
-    if (texture == nullptr)
-        return RenderResult::success();
-    if (texture->pixels == nullptr)
+        return RenderResult::failure(RenderStatus::kWrongState, "a texture added outside a frame");
+    if (texture.pixels == nullptr)
         return invalid("texture pixels are NULL");
-    const RenderResult valid = validatePixmapLayout(texture->layout);
+    const RenderResult valid = validatePixmapLayout(texture.layout);
     if (!valid)
         return valid;
-    if (texture->layout.width > kMaxImageSize || texture->layout.height > kMaxImageSize)
+    if (texture.layout.width > kMaxImageSize || texture.layout.height > kMaxImageSize)
         return invalid("texture is larger than " + std::to_string(kMaxImageSize) + " pixels");
+    if (m_textures.size() == kUntextured)
+        return invalid("too many textures in one frame");
     BatchTexture decoded;
-    decoded.width = texture->layout.width;
-    decoded.height = texture->layout.height;
-    decoded.clampS = texture->clampS;
-    decoded.clampT = texture->clampT;
+    decoded.width = texture.layout.width;
+    decoded.height = texture.layout.height;
+    decoded.clampS = texture.clampS;
+    decoded.clampT = texture.clampT;
     decoded.rgba.resize(std::size_t(decoded.width) * decoded.height * 4);
     const PixelRect all{0, 0, int(decoded.width), int(decoded.height)};
-    const RenderResult read = readPixmapToRgba8(texture->pixels, texture->layout, all, decoded.rgba.data(),
+    const RenderResult read = readPixmapToRgba8(texture.pixels, texture.layout, all, decoded.rgba.data(),
                                                 std::size_t(decoded.width) * 4);
     if (!read)
         return read;
     m_textures.push_back(std::move(decoded));
-    m_currentTexture = std::uint32_t(m_textures.size() - 1);
+    id = std::uint32_t(m_textures.size() - 1);
     return RenderResult::success();
+}
+
+RenderResult OffscreenRenderer::Impl::useTexture(std::uint32_t id)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "a texture chosen outside a frame");
+    if (id != kUntextured && id >= m_textures.size())
+        return invalid("texture " + std::to_string(id) + " was not added in this frame");
+    m_currentTexture = id;
+    return RenderResult::success();
+}
+
+void OffscreenRenderer::Impl::forgetTextures()
+{
+    m_staleTextureNames.insert(m_staleTextureNames.end(), m_textureNames.begin(), m_textureNames.end());
+    m_textureNames.clear();
+    m_textures.clear();
+    m_currentTexture = kUntextured;
 }
 
 void OffscreenRenderer::Impl::resetBatch()
 {
-    // The current texture outlives the batch, as entry 0.
-    if (m_currentTexture != kUntextured) {
-        if (m_currentTexture != 0)
-            m_textures[0] = std::move(m_textures[m_currentTexture]);
-        m_textures.resize(1);
-        m_currentTexture = 0;
-    } else {
-        m_textures.clear();
-    }
     m_vertexCount = 0;
     m_positionCount = 0;
     m_indices.clear();
@@ -1139,7 +1161,9 @@ RenderResult OffscreenRenderer::Impl::endFrame()
     if (!m_inFrame)
         return RenderResult::failure(RenderStatus::kWrongState, "endFrame called outside a frame");
     m_inFrame = false;
-    return flush(true);
+    const RenderResult result = flush(true);
+    forgetTextures();
+    return result;
 }
 
 RenderResult OffscreenRenderer::Impl::setLighting(const LightingSetup& lighting)
@@ -1179,6 +1203,7 @@ void OffscreenRenderer::Impl::cancelFrame()
 {
     m_inFrame = false;
     resetBatch();
+    forgetTextures();
 }
 
 OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>()) {}
@@ -1338,11 +1363,28 @@ RenderResult OffscreenRenderer::setLighting(const LightingSetup& lighting)
 
 RenderResult OffscreenRenderer::setTexture(const TextureImage* texture)
 {
+    RenderResult none = m_impl->useTexture(kNoTexture);
+    if (!none || texture == nullptr)
+        return none;
+    std::uint32_t id = kNoTexture;
+    RenderResult added = addTexture(*texture, id);
+    if (!added)
+        return added;
+    return m_impl->useTexture(id);
+}
+
+RenderResult OffscreenRenderer::addTexture(const TextureImage& texture, std::uint32_t& id)
+{
     try {
-        return m_impl->setTexture(texture);
+        return m_impl->addTexture(texture, id);
     } catch (const std::bad_alloc&) {
         return outOfMemory();
     }
+}
+
+RenderResult OffscreenRenderer::useTexture(std::uint32_t id)
+{
+    return m_impl->useTexture(id);
 }
 
 RenderResult OffscreenRenderer::setFaceOptions(const FaceOptions& faces)

@@ -278,11 +278,27 @@ public:
                                   const SurfaceShading& shading, const float* st = nullptr);
 
     /// The texture for the following draws that pass texture coordinates
-    /// (null: none). The image is decoded and copied now, so the caller's
-    /// pixels may go away after the call. Errors: kWrongState outside a
-    /// frame; kInvalidArgument for NULL pixels or an invalid layout (the
-    /// current texture is then none); kOutOfMemory.
+    /// (null: none): addTexture, then useTexture. The image is decoded and
+    /// copied now, so the caller's pixels may go away after the call.
+    /// Errors: kWrongState outside a frame; kInvalidArgument for NULL pixels
+    /// or an invalid layout (the current texture is then none); kOutOfMemory.
     RenderResult setTexture(const TextureImage* texture);
+
+    /// useTexture's "no texture".
+    static constexpr std::uint32_t kNoTexture = 0xFFFFFFFFu;
+    /// Keeps a texture for the rest of the frame and sets `id` to its
+    /// number for useTexture; the current texture does not change. The image
+    /// is decoded and copied now (the caller's pixels may go away after the
+    /// call) and uploaded to OpenGL once, when a draw first uses it, however
+    /// often the frame switches to it. Errors: kWrongState outside a frame;
+    /// kInvalidArgument for NULL pixels or an invalid layout; kOutOfMemory
+    /// (id is then unchanged).
+    RenderResult addTexture(const TextureImage& texture, std::uint32_t& id);
+    /// Makes texture `id` of this frame (addTexture) the one for the
+    /// following draws that pass texture coordinates, or none with
+    /// kNoTexture. Errors: kWrongState outside a frame; kInvalidArgument for
+    /// an id this frame has not given (the current texture is unchanged).
+    RenderResult useTexture(std::uint32_t id);
 
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;

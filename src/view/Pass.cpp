@@ -35,19 +35,29 @@ AttributeValues defaultAttributes(const AttributeSet* viewDefaults)
     return values;
 }
 
+namespace {
+
+// A surface shader in attribute values submitted to the view becomes the
+// view's surface shader, as the shader submitted itself would: the later of
+// the two is in force. (AttributeValues holds only surface shaders.)
+void applySurfaceShader(const AttributeValues& values, DrawState& draw)
+{
+    if (const SharedObject* shader = values.surfaceShader())
+        static_cast<const Shader&>(*shader).apply(draw);
+}
+
+} // namespace
+
 Pass::Pass(std::optional<Window> window, const AttributeValues& attributes) : m_window(std::move(window))
 {
     m_state.attributes = attributes;
+    applySurfaceShader(attributes, m_state.draw);
 }
 
 void Pass::visitAttributeSet(const AttributeSet& attributes)
 {
     m_state.attributes.overlay(attributes.values());
-    // A surface shader attribute shades what follows as the shader itself
-    // would, submitted at this point (the set only ever holds a surface
-    // shader).
-    if (const SharedObject* shader = attributes.shader())
-        static_cast<const Shader*>(shader)->apply(m_state.draw);
+    applySurfaceShader(attributes.values(), m_state.draw);
 }
 
 void Pass::visitStyle(const Style& style)

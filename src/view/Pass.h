@@ -45,11 +45,13 @@ public:
     /// window: the loop's camera and pane, when it has them (always for
     /// rendering; for bounding loops when the view has a camera and a draw
     /// context).
-    /// attributes: what the traversal starts with (defaultAttributes).
+    /// attributes: what the traversal starts with (defaultAttributes); a
+    /// surface shader among them is the state's first surface shader.
     Pass(std::optional<Window> window, const AttributeValues& attributes);
 
-    /// Merges the set's attributes into the state; its surface shader, if
-    /// it holds one, is applied as visitShader applies a submitted one.
+    /// Merges the set's attributes into the state; a surface shader in the
+    /// set also becomes the state's surface shader (DrawState::texture ...),
+    /// as submitting the shader would.
     void visitAttributeSet(const AttributeSet& attributes) override;
     /// Styles and shaders set their part of the state.
     void visitStyle(const Style& style) override;

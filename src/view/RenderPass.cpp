@@ -115,56 +115,105 @@ void RenderPass::drawTriangleEdges(const MeshView& mesh, const float* rgb, const
     drawSegments(mesh, rgb, m_indices.data(), 3 * mesh.triangleCount, color, "drawing edges");
 }
 
-bool RenderPass::loadTexture()
+RenderPass::TextureChoice RenderPass::textureOf(const DrawState& state)
 {
-    const DrawState& styles = state().draw;
-    if (!styles.texture)
+    TextureChoice choice;
+    choice.texture = state.texture.get();
+    choice.uvTransform = state.uvTransform;
+    choice.clampS = state.uBoundary == kQ3ShaderUVBoundaryClamp;
+    choice.clampT = state.vBoundary == kQ3ShaderUVBoundaryClamp;
+    return choice;
+}
+
+RenderPass::TextureChoice RenderPass::textureOf(const SharedObject* shader)
+{
+    // An attribute set holds only surface shaders (AttributeValues), which
+    // set the state's texture as when they are submitted.
+    DrawState state;
+    static_cast<const Shader&>(*shader).apply(state);
+    return textureOf(state);
+}
+
+bool RenderPass::loadTexture(const TextureChoice& choice)
+{
+    if (choice.texture == nullptr)
         return false;
-    const Texture& texture = static_cast<const Texture&>(*styles.texture);
-    const bool clampS = styles.uBoundary == kQ3ShaderUVBoundaryClamp;
-    const bool clampT = styles.vBoundary == kQ3ShaderUVBoundaryClamp;
-    if (m_loadedTexture == &texture && m_loadedTextureEdit == texture.editIndex() && m_loadedClampS == clampS &&
-        m_loadedClampT == clampT)
-        return true;
-    const TexturePixels pixels = texture.readImage();
-    TextureImage image;
-    image.pixels = pixels.bytes.data();
-    image.layout.width = pixels.width;
-    image.layout.height = pixels.height;
-    image.layout.rowBytes = std::uint32_t(pixels.rowBytes);
-    // Checked values of their enumerations (the texture's data rules).
-    image.layout.pixelType = PixelType(pixels.pixelType);
-    image.layout.byteOrder = ByteOrder(pixels.byteOrder);
-    image.clampS = clampS;
-    image.clampT = clampT;
-    m_loadedTexture = nullptr;
-    throwIfFailed(m_target.setTexture(&image), "setting the texture");
-    m_loadedTexture = &texture;
-    m_loadedTextureEdit = texture.editIndex();
-    m_loadedClampS = clampS;
-    m_loadedClampT = clampT;
+    const Texture& texture = static_cast<const Texture&>(*choice.texture);
+    const LoadedTexture* loaded = nullptr;
+    for (const LoadedTexture& candidate : m_textures)
+        if (candidate.texture.get() == &texture && candidate.edit == texture.editIndex() &&
+            candidate.clampS == choice.clampS && candidate.clampT == choice.clampT) {
+            loaded = &candidate;
+            break;
+        }
+    if (loaded == nullptr) {
+        const TexturePixels pixels = texture.readImage();
+        TextureImage image;
+        image.pixels = pixels.bytes.data();
+        image.layout.width = pixels.width;
+        image.layout.height = pixels.height;
+        image.layout.rowBytes = std::uint32_t(pixels.rowBytes);
+        // Checked values of their enumerations (the texture's data rules).
+        image.layout.pixelType = PixelType(pixels.pixelType);
+        image.layout.byteOrder = ByteOrder(pixels.byteOrder);
+        image.clampS = choice.clampS;
+        image.clampT = choice.clampT;
+        LoadedTexture entry;
+        entry.texture = Ref<SharedObject>::retain(const_cast<Texture*>(&texture));
+        entry.edit = texture.editIndex();
+        entry.clampS = choice.clampS;
+        entry.clampT = choice.clampT;
+        throwIfFailed(m_target.addTexture(image, entry.id), "setting the texture");
+        m_textures.push_back(std::move(entry));
+        loaded = &m_textures.back();
+    }
+    if (loaded->id != m_currentTexture) {
+        throwIfFailed(m_target.useTexture(loaded->id), "setting the texture");
+        m_currentTexture = loaded->id;
+    }
     return true;
 }
 
-const float* RenderPass::textureCoordinates(const MeshView& mesh)
+const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureChoice& choice)
 {
-    if (mesh.uvs == nullptr)
+    if (choice.texture == nullptr || mesh.uvs == nullptr)
         return nullptr;
-    for (std::size_t i = 0; i < 2 * mesh.vertexCount; ++i)
-        if (mesh.uvs[i] != mesh.uvs[i])
+    for (std::size_t i = 0; i < 3 * mesh.triangleCount; ++i)
+        if (mesh.uvs[2 * std::size_t(mesh.triangles[i])] != mesh.uvs[2 * std::size_t(mesh.triangles[i])])
             return nullptr;
-    if (!loadTexture())
+    if (!loadTexture(choice))
         return nullptr;
     // (u, v, 1) times the uv transform (its third column unused); OpenGL's
     // t runs down the image from its top row, v up from its bottom row.
-    const TQ3Matrix3x3& m = state().draw.uvTransform;
+    const TQ3Matrix3x3& m = choice.uvTransform;
     m_st.resize(2 * mesh.vertexCount);
     for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
         const float u = mesh.uvs[2 * i], v = mesh.uvs[2 * i + 1];
+        if (u != u) {
+            m_st[2 * i] = m_st[2 * i + 1] = 0.0f;
+            continue;
+        }
         m_st[2 * i] = u * m.value[0][0] + v * m.value[1][0] + m.value[2][0];
         m_st[2 * i + 1] = 1.0f - (u * m.value[0][1] + v * m.value[1][1] + m.value[2][1]);
     }
     return m_st.data();
+}
+
+void RenderPass::drawFilled(const MeshView& mesh, const float* rgb, const RgbColor& color,
+                            const AttributeValues& attributes, const TextureChoice& texture)
+{
+    const DrawState& styles = state().draw;
+    // A texture takes the place of the diffuse colour.
+    const float* st = textureCoordinates(mesh, texture);
+    const float* fillRgb = st != nullptr ? nullptr : rgb;
+    const RgbColor fillColor = st != nullptr ? RgbColor{1.0f, 1.0f, 1.0f} : color;
+    if (styles.illumination == kQ3IlluminationTypeLambert || styles.illumination == kQ3IlluminationTypePhong)
+        drawLit(mesh, fillRgb, fillColor, attributes, st);
+    else
+        throwIfFailed(m_target.drawElements(DrawMode::kTriangles, mesh.positions, fillRgb, mesh.vertexCount,
+                                            mesh.triangles, 3 * mesh.triangleCount, fillColor,
+                                            styles.interpolation != kQ3InterpolationStyleNone, st),
+                      "drawing triangles");
 }
 
 void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
@@ -207,17 +256,40 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
             drawTriangleEdges(mesh, rgb, color);
         } else {
             loadFaces();
-            // A texture takes the place of the diffuse colour.
-            const float* st = textureCoordinates(mesh);
-            const float* fillRgb = st != nullptr ? nullptr : rgb;
-            const RgbColor fillColor = st != nullptr ? RgbColor{1.0f, 1.0f, 1.0f} : color;
-            if (styles.illumination == kQ3IlluminationTypeLambert || styles.illumination == kQ3IlluminationTypePhong)
-                drawLit(mesh, fillRgb, fillColor, attributes, st);
-            else
-                throwIfFailed(m_target.drawElements(DrawMode::kTriangles, mesh.positions, fillRgb, mesh.vertexCount,
-                                                    mesh.triangles, 3 * mesh.triangleCount, fillColor,
-                                                    styles.interpolation != kQ3InterpolationStyleNone, st),
-                              "drawing triangles");
+            // The surface shader: a highlight's over everything; else each
+            // triangle's own, else the geometry's, else the view's.
+            const SharedObject* over = highlighted ? styles.highlight->shader() : nullptr;
+            const SharedObject* geometryShader = own != nullptr ? own->shader() : nullptr;
+            const TextureChoice base = over != nullptr             ? textureOf(over)
+                                       : geometryShader != nullptr ? textureOf(geometryShader)
+                                                                   : textureOf(styles);
+            if (over != nullptr || mesh.triangleShaders == nullptr) {
+                drawFilled(mesh, rgb, color, attributes, base);
+            } else {
+                // One draw per shader, its triangles gathered by a counting
+                // sort (group k: shader k, 0 for none).
+                m_runStarts.assign(mesh.shaderCount + 2, 0);
+                for (std::size_t t = 0; t < mesh.triangleCount; ++t)
+                    ++m_runStarts[mesh.triangleShaders[t] + 1];
+                for (std::size_t k = 1; k < m_runStarts.size(); ++k)
+                    m_runStarts[k] += m_runStarts[k - 1];
+                m_runs.resize(3 * mesh.triangleCount);
+                m_runNext.assign(m_runStarts.begin(), m_runStarts.end() - 1);
+                for (std::size_t t = 0; t < mesh.triangleCount; ++t) {
+                    const std::size_t at = 3 * m_runNext[mesh.triangleShaders[t]]++;
+                    for (int k = 0; k < 3; ++k)
+                        m_runs[at + k] = mesh.triangles[3 * t + k];
+                }
+                for (std::size_t k = 0; k <= mesh.shaderCount; ++k) {
+                    const std::size_t first = m_runStarts[k], count = m_runStarts[k + 1] - first;
+                    if (count == 0)
+                        continue;
+                    MeshView run = mesh;
+                    run.triangles = m_runs.data() + 3 * first;
+                    run.triangleCount = count;
+                    drawFilled(run, rgb, color, attributes, k == 0 ? base : textureOf(mesh.shaders[k - 1].get()));
+                }
+            }
         }
     } else if (!m_style.fillTriangles && mesh.edgeCount != 0) {
         drawSegments(mesh, rgb, mesh.edges, mesh.edgeCount, color, "drawing edges");

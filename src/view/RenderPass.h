@@ -50,7 +50,12 @@ struct RenderStyle {
 /// geometry's normals or, where it has none, its faces'; lines and points
 /// are drawn in their colours. Under a texture shader, filled triangles
 /// whose vertices all have a uv take their diffuse colour from its texture
-/// (QD3DShader.h, Q3TextureShader_New). The styles apply as QD3DStyle.h says: fill
+/// (QD3DShader.h, Q3TextureShader_New). The texture shader of a triangle is
+/// the highlight style's surface shader where the geometry is highlighted,
+/// else the one its own attribute sets give it (MeshView::triangleShaders),
+/// else its geometry's attribute set's, else the view's (submitted as a
+/// shader or in an attribute set, whichever came later); each texture is
+/// handed to the target once per frame. The styles apply as QD3DStyle.h says: fill
 /// (filled, edges, points), backfacing (both, remove, flip), interpolation
 /// (none: one colour per triangle, vertex, pixel), orientation (which
 /// winding is the front), highlight (the highlight style's attributes over a
@@ -83,15 +88,32 @@ private:
     /// with st, as textureCoordinates gives them, or not with null).
     void drawLit(const MeshView& mesh, const float* rgb, const RgbColor& color, const AttributeValues& attributes,
                  const float* st);
-    /// Hands the target the state's texture if it is not the one loaded
-    /// already; false when the state has none. Throws kQ3ErrorInvalidData
-    /// when the texture's storage no longer holds its image.
-    bool loadTexture();
-    /// The texture coordinates of the mesh's vertices under the state's
-    /// texture shader: each vertex's uv through the uv transform, v turned
-    /// to run down the image; null (untextured) without a texture shader or
-    /// when a vertex has no uv.
-    const float* textureCoordinates(const MeshView& mesh);
+
+    /// What a texture shader draws with: its texture (a q3::Texture; null
+    /// for none), uv transform and boundaries.
+    struct TextureChoice {
+        const SharedObject* texture = nullptr;
+        TQ3Matrix3x3 uvTransform{};
+        bool clampS = false;
+        bool clampT = false;
+    };
+    static TextureChoice textureOf(const DrawState& state);
+    /// A surface shader's (one held by an attribute set).
+    static TextureChoice textureOf(const SharedObject* shader);
+    /// The filled triangles of the mesh with `texture` (or untextured where
+    /// it has none or a vertex lacks a uv), lit or not as the state says.
+    void drawFilled(const MeshView& mesh, const float* rgb, const RgbColor& color, const AttributeValues& attributes,
+                    const TextureChoice& texture);
+    /// Makes the texture the target's current one, handing it over the first
+    /// time this frame draws it (with those boundaries, at that edit); false
+    /// when there is none. Throws kQ3ErrorInvalidData when the texture's
+    /// storage no longer holds its image.
+    bool loadTexture(const TextureChoice& texture);
+    /// The texture coordinates of the mesh's vertices under `texture`: each
+    /// vertex's uv through the uv transform, v turned to run down the image
+    /// (0 for a vertex no triangle uses that has none); null (untextured)
+    /// without a texture or when a triangle's vertex has no uv.
+    const float* textureCoordinates(const MeshView& mesh, const TextureChoice& texture);
 
     OffscreenRenderer& m_target;
     RenderStyle m_style;
@@ -106,10 +128,23 @@ private:
     std::vector<std::uint32_t> m_indices;
     std::vector<float> m_st;
     std::vector<float> m_litST;
-    const void* m_loadedTexture = nullptr;
-    unsigned long m_loadedTextureEdit = 0;
-    bool m_loadedClampS = false;
-    bool m_loadedClampT = false;
+    /// The triangles of a mesh grouped by surface shader, where each group
+    /// starts, and where each is filled next.
+    std::vector<std::uint32_t> m_runs;
+    std::vector<std::size_t> m_runStarts;
+    std::vector<std::size_t> m_runNext;
+    /// The textures handed to the target this frame (held, so that none is
+    /// freed and its address reused while the frame lasts), and the one
+    /// current there.
+    struct LoadedTexture {
+        Ref<SharedObject> texture;
+        unsigned long edit = 0;
+        bool clampS = false;
+        bool clampT = false;
+        std::uint32_t id = 0;
+    };
+    std::vector<LoadedTexture> m_textures;
+    std::uint32_t m_currentTexture = OffscreenRenderer::kNoTexture;
 };
 
 } // namespace q3

@@ -471,7 +471,7 @@ TEST_F(TriMeshApiTest, Rule1ComesBeforeRule2)
 
 TEST_F(TriMeshApiTest, Rule3RejectsAnAttributeTypeThatIsNotStandard)
 {
-    const TQ3AttributeType bad[] = {kQ3AttributeTypeNone, kQ3AttributeTypeSurfaceShader, kQ3AttributeTypeNumTypes,
+    const TQ3AttributeType bad[] = {kQ3AttributeTypeNone, kQ3AttributeTypeNumTypes,
                                     0x63757374 /* 'cust' */, -1};
     for (TQ3AttributeType type : bad)
         for (int which = 0; which < 4; ++which) {
@@ -492,7 +492,7 @@ TEST_F(TriMeshApiTest, Rule3RejectsAnAttributeTypeThatIsNotStandard)
 
 TEST_F(TriMeshApiTest, Rule3ComesAfterRules1And2)
 {
-    m_triangleAttributes[0].attributeType = kQ3AttributeTypeSurfaceShader;
+    m_triangleAttributes[0].attributeType = kQ3AttributeTypeNumTypes;
     TQ3TriMeshData data = fullData();
     m_vertexAttributes[1].data = nullptr; // a later array's data
     expectNewFails(data, kQ3ErrorNULLParameter, "invalid type, NULL data after it");
@@ -559,7 +559,7 @@ TEST_F(TriMeshApiTest, Rule4RejectsAnEdgeTriangleIndexOutOfRangeButAcceptsArrayI
 TEST_F(TriMeshApiTest, Rule4ComesAfterRule3)
 {
     m_triangles[0].pointIndices[0] = 99;
-    m_vertexAttributes[0].attributeType = kQ3AttributeTypeSurfaceShader;
+    m_vertexAttributes[0].attributeType = kQ3AttributeTypeNumTypes;
     expectNewFails(fullData(), kQ3ErrorAttributeInvalidType, "bad index and bad type");
 }
 
@@ -832,7 +832,7 @@ TEST_F(TriMeshApiTest, SubmitInsideALoopChecksTheDataRulesInOrder)
         data.edges = m_edges.data();
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3TriMesh_Submit(&data, v), kQ3Failure), kQ3ErrorParameterOutOfRange);
         data.numTriangles = 2;
-        m_triangleAttributes[0].attributeType = kQ3AttributeTypeSurfaceShader;
+        m_triangleAttributes[0].attributeType = kQ3AttributeTypeNumTypes;
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3TriMesh_Submit(&data, v), kQ3Failure), kQ3ErrorAttributeInvalidType);
         m_triangleAttributes[0].attributeType = kQ3AttributeTypeDiffuseColor;
         m_edgeColors[0].g = kNaN;

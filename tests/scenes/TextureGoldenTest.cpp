@@ -5,7 +5,9 @@
 // tests/golden/texture_NAME.png (tolerance: tests/golden/README.md): a
 // checkerboard on a TriMesh seen in perspective (unlit, wrapping twice),
 // on a box lit per pixel (Lambert) and on a NURB patch lit per vertex
-// (Phong, highlights added over the texture). Facts that a golden blessed
+// (Phong, highlights added over the texture); and attribute_texture.png,
+// a model whose texture shaders are kept in attribute sets (a TriMesh's own
+// set, a box's face sets, a polygon's vertex sets). Facts that a golden blessed
 // from a wrong picture would not pass are checked by reading pixels: both
 // checker colours show, the lit ones darker where the light falls less.
 // Exact texels against uv are checked in tests/api/TextureRenderTest.cpp.
@@ -236,6 +238,101 @@ TEST_F(TextureGoldenTest, PatchLitPerVertexWithPhongHighlights)
     EXPECT_TRUE(q3test::matchesGolden("texture_patch_phong", image));
     EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 500);
     EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 500);
+}
+
+TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
+{
+    // Stripes (red and white columns) and a two-colour board (green and
+    // magenta), ARGB32 big-endian like the checkerboard.
+    constexpr unsigned char kRed[3] = {210, 40, 40};
+    constexpr unsigned char kWhite[3] = {240, 240, 240};
+    constexpr unsigned char kGreen[3] = {40, 190, 70};
+    constexpr unsigned char kMagenta[3] = {200, 50, 200};
+    std::vector<unsigned char> stripes, board;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) {
+            const unsigned char* s = x % 2 == 0 ? kRed : kWhite;
+            stripes.insert(stripes.end(), {255, s[0], s[1], s[2]});
+        }
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) {
+            const unsigned char* b = (x + y) % 2 == 0 ? kGreen : kMagenta;
+            board.insert(board.end(), {255, b[0], b[1], b[2]});
+        }
+    std::vector<TQ3Object> owned;
+    const auto shaderOf = [&](std::vector<unsigned char>& texels, unsigned long side) {
+        TQ3StorageObject storage = Q3MemoryStorage_New(texels.data(), static_cast<unsigned long>(texels.size()));
+        const TQ3StoragePixmap pixmap{storage, side, side, side * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
+                                      kQ3EndianBig};
+        TQ3TextureObject texture = Q3PixmapTexture_New(&pixmap);
+        TQ3ShaderObject shader = Q3TextureShader_New(texture);
+        owned.insert(owned.end(), {storage, texture, shader});
+        return shader;
+    };
+    TQ3ShaderObject striped = shaderOf(stripes, 4);
+    TQ3ShaderObject boarded = shaderOf(board, 2);
+    const auto setWith = [&](TQ3ShaderObject shader) {
+        TQ3AttributeSet set = Q3AttributeSet_New();
+        Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceShader, &shader);
+        owned.push_back(set);
+        return set;
+    };
+
+    // The floor: a TriMesh with the checkerboard in its own set.
+    TQ3Point3D points[4] = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}};
+    TQ3Param2D uvs[4] = {{0, 2}, {2, 2}, {2, 0}, {0, 0}};
+    TQ3TriMeshTriangleData triangles[2] = {{{0, 2, 1}}, {{0, 3, 2}}};
+    TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
+    TQ3TriMeshData floorData{};
+    floorData.triMeshAttributeSet = setWith(m_shader);
+    floorData.numTriangles = 2;
+    floorData.triangles = triangles;
+    floorData.numPoints = 4;
+    floorData.points = points;
+    floorData.numVertexAttributeTypes = 1;
+    floorData.vertexAttributeTypes = &uvArray;
+    floorData.bBox = TQ3BoundingBox{{-2, 0, -2}, {2, 0, 2}, kQ3False};
+    TQ3GeometryObject floor = Q3TriMesh_New(&floorData);
+    // A box with the stripes in the face sets of its top and of the two
+    // sides facing the eye, the board on the others.
+    TQ3AttributeSet stripedFace = setWith(striped), boardedFace = setWith(boarded);
+    TQ3AttributeSet faces[6] = {boardedFace, stripedFace, stripedFace, boardedFace, stripedFace, boardedFace};
+    const TQ3BoxData boxData{{-1.6f, 0, -1.2f}, {0, 1.2f, 0}, {0, 0, 1.2f}, {1.2f, 0, 0}, faces, nullptr};
+    TQ3GeometryObject box = Q3Box_New(&boxData);
+    // A standing polygon with the board in every vertex set.
+    TQ3Vertex3D vertices[4] = {{{0.3f, 0, 0.2f}, nullptr},
+                               {{1.8f, 0, -0.4f}, nullptr},
+                               {{1.8f, 1.5f, -0.4f}, nullptr},
+                               {{0.3f, 1.5f, 0.2f}, nullptr}};
+    const TQ3Param2D corners[4] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+    for (int i = 0; i < 4; ++i) {
+        vertices[i].attributeSet = setWith(boarded);
+        Q3AttributeSet_Add(vertices[i].attributeSet, kQ3AttributeTypeSurfaceUV, &corners[i]);
+    }
+    const TQ3PolygonData polygonData{4, vertices, nullptr};
+    TQ3GeometryObject polygon = Q3Polygon_New(&polygonData);
+    ASSERT_NE(floor, nullptr);
+    ASSERT_NE(box, nullptr);
+    ASSERT_NE(polygon, nullptr);
+    owned.insert(owned.end(), {floor, box, polygon});
+
+    TQ3ShaderObject lambert = Q3LambertIllumination_New();
+    owned.push_back(lambert);
+    const q3test::RgbaImage image = render({1.0f, 3.0f, 5.0f}, true, [&](TQ3ViewObject v) {
+        Q3Shader_Submit(lambert, v);
+        Q3Geometry_Submit(floor, v);
+        Q3Geometry_Submit(box, v);
+        Q3Geometry_Submit(polygon, v);
+    });
+    for (TQ3Object object : owned)
+        Q3Object_Dispose(object);
+    EXPECT_TRUE(q3test::matchesGolden("attribute_texture", image));
+    // Every texture shows, lit (0.3 ambient + 0.8 at most).
+    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 300);
+    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 300);
+    EXPECT_GT(pixelsLike(image, kRed, 0.25, 1.11), 100);
+    EXPECT_GT(pixelsLike(image, kGreen, 0.25, 1.11), 100);
+    EXPECT_GT(pixelsLike(image, kMagenta, 0.25, 1.11), 100);
 }
 
 } // namespace

@@ -4,7 +4,8 @@
 // geometry/Primitives.h: a Mesh creates an attribute channel the first time
 // a vertex has that attribute, with NaN ("none") for every vertex before;
 // edgesFromTriangles gives each undirected triangle side exactly once;
-// VertexAttributes inherit what they lack and keep what they have.
+// VertexAttributes inherit what they lack and keep what they have; a
+// triangle takes the surface shader two of its corners share.
 
 #include "core/AttributeSet.h"
 #include "geometry/Primitives.h"
@@ -214,6 +215,72 @@ TEST(VertexAttributes, InheritanceFillsOnlyWhatIsMissing)
     bare.inherit(kQ3AttributeTypeSurfaceUV, &uv);
     EXPECT_EQ(bare.uv.v, 0.75f);
     EXPECT_FALSE(bare.hasNormal());
+}
+
+// Stand-ins for surface shaders: the mesh keeps references to whatever
+// shared objects its vertices name, without looking at their class.
+TEST(Mesh, ATriangleTakesTheShaderTwoOfItsCornersShare)
+{
+    const Ref<AttributeSet> a = makeShared<AttributeSet>(), b = makeShared<AttributeSet>();
+    Mesh mesh;
+    const auto vertex = [&](const SharedObject* shader) {
+        VertexAttributes attributes;
+        attributes.shader = shader;
+        return mesh.addVertex({0, 0, 0}, attributes);
+    };
+    const std::uint32_t plain = vertex(nullptr), plain2 = vertex(nullptr);
+    const std::uint32_t a1 = vertex(a.get()), a2 = vertex(a.get()), a3 = vertex(a.get());
+    const std::uint32_t b1 = vertex(b.get()), b2 = vertex(b.get());
+    mesh.addTriangle(plain, plain2, plain); // none: before the first with one
+    mesh.addTriangle(a1, a2, a3);           // a
+    mesh.addTriangle(a1, b1, b2);           // b outvotes a
+    mesh.addTriangle(a1, plain, plain2);    // none outvotes a
+    mesh.addTriangle(a1, b1, plain);        // all differ: none
+    mesh.addTriangle(plain, a2, a3);        // a
+    mesh.addTriangle(plain, plain, plain2, b.get()); // given: b
+    const MeshView view = mesh.view();
+    ASSERT_NE(view.triangleShaders, nullptr);
+    ASSERT_EQ(view.shaderCount, 2u);
+    EXPECT_EQ(view.shaders[0].get(), a.get());
+    EXPECT_EQ(view.shaders[1].get(), b.get());
+    const std::uint32_t expected[7] = {0, 1, 2, 0, 0, 1, 2};
+    for (std::size_t t = 0; t < 7; ++t)
+        EXPECT_EQ(view.triangleShaders[t], expected[t]) << "triangle " << t;
+}
+
+TEST(Mesh, NoShaderArrayWithoutShadersAndTheMeshHoldsItsShaders)
+{
+    Mesh mesh;
+    mesh.addVertex({0, 0, 0}, VertexAttributes{});
+    mesh.addTriangle(0, 0, 0);
+    EXPECT_EQ(mesh.view().triangleShaders, nullptr);
+    EXPECT_EQ(mesh.view().shaderCount, 0u);
+
+    Ref<AttributeSet> shader = makeShared<AttributeSet>();
+    VertexAttributes attributes;
+    attributes.inheritFrom(shader.get()); // a set without a shader: none
+    EXPECT_FALSE(attributes.hasShader());
+    attributes.shader = shader.get();
+    mesh.addVertex({1, 0, 0}, attributes);
+    mesh.addTriangle(1, 1, 0);
+    EXPECT_EQ(shader->referenceCount(), 2u);
+    mesh.clear();
+    EXPECT_EQ(shader->referenceCount(), 1u);
+}
+
+TEST(Mesh, InheritTakesAShaderHandleOnlyWhereTheVertexHasNone)
+{
+    const Ref<AttributeSet> a = makeShared<AttributeSet>(), b = makeShared<AttributeSet>();
+    VertexAttributes attributes;
+    TQ3Object none = nullptr;
+    attributes.inherit(kQ3AttributeTypeSurfaceShader, &none);
+    EXPECT_FALSE(attributes.hasShader());
+    TQ3Object handle = a.get();
+    attributes.inherit(kQ3AttributeTypeSurfaceShader, &handle);
+    EXPECT_EQ(attributes.shader, a.get());
+    handle = b.get();
+    attributes.inherit(kQ3AttributeTypeSurfaceShader, &handle);
+    EXPECT_EQ(attributes.shader, a.get());
 }
 
 } // namespace

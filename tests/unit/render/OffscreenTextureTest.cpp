@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 
-// OffscreenRenderer::setTexture and textured triangles: the contract's
-// errors, a texel per pixel under nearest sampling, wrap against clamp, the
-// texture kept across a batch flushed mid-frame, and untextured draws left
-// as they were.
+// OffscreenRenderer::setTexture, addTexture, useTexture and textured
+// triangles: the contract's errors, a texel per pixel under nearest
+// sampling, wrap against clamp, the texture kept across a batch flushed
+// mid-frame, textures of a frame used again after others, and untextured
+// draws left as they were.
 
 #include "render/OffscreenRenderer.h"
 
@@ -165,6 +166,76 @@ TEST(OffscreenTexture, TheTextureOutlivesABatchFlushedForNewLights)
     ASSERT_TRUE(renderer.endFrame());
     EXPECT_EQ(pixelAt(renderer, 1, 1), kGreen);
     EXPECT_EQ(pixelAt(renderer, 6, 6), kBlue);
+}
+
+// The same 2 x 2 texture with each row's texels swapped: green, red /
+// white, blue.
+const std::uint8_t kSwapped[12] = {0, 255, 0, 255, 0, 0, 255, 255, 255, 0, 0, 255};
+
+TEST(OffscreenTexture, AddTextureAndUseTextureRefuseOutsideAFrameAndUnknownIds)
+{
+    OffscreenRenderer renderer;
+    TextureImage image = texture();
+    std::uint32_t id = 7;
+    EXPECT_EQ(renderer.addTexture(image, id).status, RenderStatus::kWrongState);
+    EXPECT_EQ(renderer.useTexture(OffscreenRenderer::kNoTexture).status, RenderStatus::kWrongState);
+    EXPECT_EQ(id, 7u);
+    begin(renderer);
+    TextureImage noPixels = image;
+    noPixels.pixels = nullptr;
+    EXPECT_EQ(renderer.addTexture(noPixels, id).status, RenderStatus::kInvalidArgument);
+    EXPECT_EQ(id, 7u);
+    EXPECT_EQ(renderer.useTexture(0).status, RenderStatus::kInvalidArgument);
+    ASSERT_TRUE(renderer.addTexture(image, id));
+    EXPECT_EQ(id, 0u);
+    EXPECT_TRUE(renderer.useTexture(id));
+    EXPECT_EQ(renderer.useTexture(1).status, RenderStatus::kInvalidArgument);
+    EXPECT_TRUE(renderer.useTexture(OffscreenRenderer::kNoTexture));
+    ASSERT_TRUE(renderer.endFrame());
+    // A new frame starts without the last one's textures.
+    begin(renderer);
+    EXPECT_EQ(renderer.useTexture(id).status, RenderStatus::kInvalidArgument);
+    ASSERT_TRUE(renderer.endFrame());
+}
+
+TEST(OffscreenTexture, TexturesAddedOnceAreUsedAgainAfterOthersAndAfterAFlush)
+{
+    // Two textures, drawn A, B, then A again after a flush: the left half
+    // and the right half of the pane each show the last texture drawn there.
+    OffscreenRenderer renderer;
+    begin(renderer);
+    TextureImage a = texture();
+    TextureImage b = texture();
+    b.pixels = kSwapped;
+    std::uint32_t idA = 0, idB = 0;
+    ASSERT_TRUE(renderer.addTexture(a, idA));
+    ASSERT_TRUE(renderer.addTexture(b, idB));
+    EXPECT_NE(idA, idB);
+    const float left[12] = {-1, 1, 0, 0, 1, 0, 0, -1, 0, -1, -1, 0};
+    const float right[12] = {0, 1, 0, 1, 1, 0, 1, -1, 0, 0, -1, 0};
+    const float st[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    const std::uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
+    const auto draw = [&](const float* xyz) {
+        ASSERT_TRUE(
+            renderer.drawElements(DrawMode::kTriangles, xyz, nullptr, 4, indices, 6, RgbColor{1, 1, 1}, true, st));
+    };
+    ASSERT_TRUE(renderer.useTexture(idA));
+    draw(left);
+    ASSERT_TRUE(renderer.useTexture(idB));
+    draw(right);
+    ASSERT_TRUE(renderer.setLighting(LightingSetup{})); // flushes
+    ASSERT_TRUE(renderer.useTexture(idA));
+    draw(right);
+    ASSERT_TRUE(renderer.useTexture(OffscreenRenderer::kNoTexture));
+    ASSERT_TRUE(renderer.endFrame());
+    // Each half maps the whole texture: its top left quarter is the
+    // texel at row 0, column 0.
+    EXPECT_EQ(pixelAt(renderer, 0, 0), kRed);
+    EXPECT_EQ(pixelAt(renderer, 3, 7), kWhite);
+    EXPECT_EQ(pixelAt(renderer, 4, 0), kRed);
+    EXPECT_EQ(pixelAt(renderer, 7, 7), kWhite);
+    // B (drawn on the right first) shows nowhere: A was drawn over it.
+    EXPECT_EQ(pixelAt(renderer, 6, 0), kGreen);
 }
 
 } // namespace
