@@ -104,9 +104,9 @@ public:
     const ClassInfo& classInfo() const override { return kSetClass; }
     Object* duplicate() const override;
 
-    /// Bytes of data of one plain-data attribute type; throws
-    /// kQ3ErrorAttributeInvalidType for any other type, the surface shader
-    /// included.
+    /// Bytes of data of one attribute type (a handle's size for the surface
+    /// shader, whose arrays hold a reference per element); throws
+    /// kQ3ErrorAttributeInvalidType for a type Q3 does not store.
     static std::size_t dataSize(TQ3AttributeType type);
     /// Why a value of that (stored) type is not well formed (a component
     /// that is not finite, a switch that is neither kQ3On nor kQ3Off), or an
