@@ -2148,7 +2148,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_EmptyData(TQ3TriMeshData *triMeshData);
  * rule above; it is kept exactly as given (GetData returns it), and the
  * call that gives it (New, SetData, Submit, a per-field setter, a 3DMF
  * read) posts kQ3WarningInconsistentData naming the case. It has no area
- * and no normal, so it draws nothing and bounds nothing, as Quesa draws
+ * and no normal, so it draws nothing and bounds nothing
+ * (Q3Geometry_GetDecomposed gives a TriMesh of no points), as Quesa draws
  * it (Quesa posts kQ3ErrorDegenerateGeometry, not fatal, at each draw;
  * Apple's QD3DErrors.h has no degenerate-geometry warning). See
  * docs/3dmf.md, "Tolerances".

@@ -275,7 +275,9 @@ protected:
 
     void degenerateShapesAreKeptWithAWarningAndDrawNothing()
     {
-        for (const auto& [what, data] : degenerateVariants()) {
+        for (const auto& variant : degenerateVariants()) {
+            const std::string& what = variant.first;
+            const Data& data = variant.second;
             TQ3GeometryObject geometry = nullptr;
             EXPECT_Q3_WARNING(geometry = shape().create(&data), kQ3WarningInconsistentData);
             ASSERT_NE(geometry, nullptr) << what;
