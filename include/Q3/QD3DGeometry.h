@@ -4451,7 +4451,11 @@ Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_VertexNew(TQ3GeometryObject mesh, const TQ
  * Adds a face of one contour running through vertices[0 .. numVertices-1]
  * (closed from the last back to the first), with the attribute set
  * attributeSet (NULL for none). Edges are made where the face runs between
- * two vertices no contour joined before.
+ * two vertices no contour joined before. The contour may pass a vertex more
+ * than once, and an edge may have any number of faces: QuickDraw 3D and
+ * Quesa keep such meshes, and so does Q3, with no warning (the face is
+ * drawn as the area its contour encloses; docs/3dmf.md, Tolerances). The
+ * face's vertex count and walk give each of its vertices once.
  *
  * @return the new face, or NULL on failure (the mesh unchanged).
  *
@@ -4460,8 +4464,7 @@ Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_VertexNew(TQ3GeometryObject mesh, const TQ
  *   kQ3ErrorParameterOutOfRange numVertices > kQ3GeometryMaxArrayCount, or
  *                              the mesh has kQ3GeometryMaxArrayCount faces.
  *   kQ3ErrorNULLParameter      an entry of vertices is NULL.
- *   kQ3ErrorInvalidParameter   an entry is not a vertex of this mesh, or a
- *                              vertex appears twice.
+ *   kQ3ErrorInvalidParameter   an entry is not a vertex of this mesh.
  *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
  *

@@ -240,6 +240,51 @@ TEST_F(ToleranceApiTest, TriMeshesWithRepeatedIndicesOrOddTopologyAreKeptSilentl
     expectFiniteDrawing(triGrid, "triangle grid");
 }
 
+TEST_F(ToleranceApiTest, MeshFacesThatPassAVertexTwiceOrShareAnEdgeThreeWaysAreKeptSilently)
+{
+    TQ3GeometryObject mesh = own(Q3Mesh_New());
+    TQ3MeshVertex v[6];
+    const TQ3Point3D at[6] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5f, 0.5f, 1}, {2, 0, 0}};
+    for (int i = 0; i < 6; ++i) {
+        const TQ3Vertex3D vertex = {at[i], nullptr};
+        v[i] = Q3Mesh_VertexNew(mesh, &vertex);
+        ASSERT_NE(v[i], nullptr);
+    }
+    // A face through vertex 1 twice (a bow tie), one that comes back along
+    // itself (no area), and three faces on the edge 0-2.
+    const TQ3MeshVertex bowTie[5] = {v[0], v[1], v[5], v[1], v[3]};
+    const TQ3MeshVertex back[3] = {v[0], v[1], v[0]};
+    const TQ3MeshVertex fan[3][3] = {{v[0], v[2], v[3]}, {v[2], v[0], v[4]}, {v[0], v[2], v[1]}};
+    TQ3MeshFace twice = Q3Mesh_FaceNew(mesh, 5, bowTie, nullptr);
+    ASSERT_NE(twice, nullptr);
+    ASSERT_NE(Q3Mesh_FaceNew(mesh, 3, back, nullptr), nullptr);
+    for (const auto& face : fan)
+        ASSERT_NE(Q3Mesh_FaceNew(mesh, 3, face, nullptr), nullptr);
+    unsigned long faces = 0, vertices = 0;
+    ASSERT_EQ(Q3Mesh_GetNumFaces(mesh, &faces), kQ3Success);
+    EXPECT_EQ(faces, 5u);
+    ASSERT_EQ(Q3Mesh_GetFaceNumVertices(mesh, twice, &vertices), kQ3Success);
+    EXPECT_EQ(vertices, 4u) << "the count and the walk give each vertex of a face once";
+    EXPECT_GT(litPixels(mesh, kQ3RendererTypeInteractive), 0u);
+    litPixels(mesh, kQ3RendererTypeWireFrame);
+    expectFiniteDrawing(mesh, "mesh");
+    // Deleting the twice-passed vertex deletes its faces once each.
+    ASSERT_EQ(Q3Mesh_VertexDelete(mesh, v[1]), kQ3Success);
+    ASSERT_EQ(Q3Mesh_GetNumFaces(mesh, &faces), kQ3Success);
+    EXPECT_EQ(faces, 2u);
+    expectFiniteDrawing(mesh, "mesh after the delete");
+
+    // The same bow tie from a text file.
+    const std::vector<TQ3Object> objects = readAll(bytesOf("3DMetafile ( 1 6 Stream )\n"
+                                                           "Mesh ( 4  0 0 0  1 0 0  2 0 0  0 1 0\n"
+                                                           "       1 0  5 0 1 2 1 3 )\n"));
+    ASSERT_EQ(objects.size(), 1u);
+    ASSERT_EQ(Q3Mesh_GetNumFaces(objects[0], &faces), kQ3Success);
+    EXPECT_EQ(faces, 1u);
+    expectFiniteDrawing(objects[0], "read mesh");
+    disposeAll(objects);
+}
+
 TEST_F(ToleranceApiTest, ADegenerateQuadricInATextFileReadsWithTheWarning)
 {
     // An ellipsoid with a zero minor radius and a box whose axes lie in one
