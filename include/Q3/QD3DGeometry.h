@@ -2149,7 +2149,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_EmptyData(TQ3TriMeshData *triMeshData);
  * call that gives it (New, SetData, Submit, a per-field setter, a 3DMF
  * read) posts kQ3WarningInconsistentData naming the case. It has no area
  * and no normal, so it draws nothing and bounds nothing
- * (Q3Geometry_GetDecomposed gives a TriMesh of no points), as Quesa draws
+ * (Q3Geometry_GetDecomposed gives a TriMesh of no points), except an
+ * ellipse with dependent radii, a curve drawn as the segment (or point) its
+ * formula gives; as Quesa draws
  * it (Quesa posts kQ3ErrorDegenerateGeometry, not fatal, at each draw;
  * Apple's QD3DErrors.h has no degenerate-geometry warning). See
  * docs/3dmf.md, "Tolerances".
@@ -3552,8 +3554,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3Disk_GetMinorRadius(TQ3GeometryObject disk, TQ3Vect
  *   ellipseAttributeSet is NULL or a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
  * Tolerated, with kQ3WarningInconsistentData: a degenerate ellipse (its
- * vectors not independent, an empty range), kept as given and
- * drawn as nothing (see above).
+ * vectors not independent, an empty range), kept as given; drawn as its
+ * segment, or as nothing for an empty range (see above).
  */
 struct TQ3EllipseData {
     TQ3Point3D origin;
@@ -3578,7 +3580,8 @@ typedef struct TQ3EllipseData TQ3EllipseData;
  *   kQ3ErrorOutOfMemory        the ellipse cannot be allocated.
  * Warnings:
  *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
- *                              of the TQ3EllipseData rules): kept, drawn as nothing.
+ *                              of the TQ3EllipseData rules): kept, drawn as a
+ *                              segment (nothing for an empty range).
  *
  * Ownership: the caller owns the new ellipse's one reference. The ellipse
  * takes its own reference to every attribute set given.
@@ -3599,7 +3602,8 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Ellipse_New(const TQ3EllipseData *ellipseDa
  *   then the codes of the TQ3EllipseData rules, in their order.
  * Warnings:
  *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
- *                              of the TQ3EllipseData rules): kept, drawn as nothing.
+ *                              of the TQ3EllipseData rules): kept, drawn as a
+ *                              segment (nothing for an empty range).
  *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
  *                              kQ3SubdivisionMaxSegmentsPerCurve segments
  *                              (QD3DStyle.h); fewer are drawn.
@@ -3621,7 +3625,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_Submit(const TQ3EllipseData *ellipseData, T
  *   then the codes of the TQ3EllipseData rules, in their order.
  * Warnings:
  *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
- *                              of the TQ3EllipseData rules): kept, drawn as nothing.
+ *                              of the TQ3EllipseData rules): kept, drawn as a
+ *                              segment (nothing for an empty range).
  *
  * Ownership: the ellipse references the attribute sets given and releases
  * those it held.
@@ -3707,7 +3712,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetOrigin(TQ3GeometryObject ellipse, TQ3Poi
  *                              would leave float's range.
  * Warnings:
  *   kQ3WarningInconsistentData the ellipse's vectors are not independent: the
- *                              value is kept and the ellipse draws nothing.
+ *                              value is kept and the ellipse is drawn as a
+ *                              segment.
  *
  * Ownership: no references change.
  */
@@ -3742,7 +3748,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetMajorRadius(TQ3GeometryObject ellipse, T
  *                              would leave float's range.
  * Warnings:
  *   kQ3WarningInconsistentData the ellipse's vectors are not independent: the
- *                              value is kept and the ellipse draws nothing.
+ *                              value is kept and the ellipse is drawn as a
+ *                              segment.
  *
  * Ownership: no references change.
  */

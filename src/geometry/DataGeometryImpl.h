@@ -54,7 +54,7 @@ void DataGeometry<Derived, Data>::warnIfDegenerate(const Data& data)
             return;
         layout::checkHandles(data, layout::Path{});
         errors::postWarning(kQ3WarningInconsistentData, std::string("the ") + Derived::kName + " is degenerate (" +
-                                                            problem + "); it is kept as given and draws nothing");
+                                                            problem + "); it is kept as given");
     } else {
         (void)data;
     }

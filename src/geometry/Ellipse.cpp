@@ -42,7 +42,7 @@ std::string Ellipse::degeneracy(const TQ3EllipseData& d)
 
 void Ellipse::decompose(const DecomposeContext& context, PrimitiveSink& sink) const
 {
-    if (!degeneracy(data()).empty())
+    if (!emptyAngle(data().uMin, data().uMax, "uMin", "uMax").empty())
         return;
     const SubdivisionMeasure measure = context.subdivisionMeasure();
     std::string report;
@@ -77,7 +77,7 @@ void Ellipse::decompose(const DecomposeContext& context, PrimitiveSink& sink) co
 
 void Ellipse::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const
 {
-    if (!degeneracy(data()).empty())
+    if (!emptyAngle(data().uMin, data().uMax, "uMin", "uMax").empty())
         return;
     ellipseBoxCorners(toVec3(data().origin), toVec3(data().majorRadius), toVec3(data().minorRadius), points);
 }

@@ -30,9 +30,10 @@ public:
     /// curve (quadric::tessellateCurve): constant c1 segments per turn, or
     /// segments of at most c1 world units or pixels; at most
     /// kQ3SubdivisionMaxSegmentsPerCurve (then kQ3WarningParameterOutOfRange).
-    /// A degenerate ellipse draws nothing.
+    /// An empty u range draws nothing; radii that are zero or parallel draw
+    /// the segment (or point) the formula gives, a curve needing no normal.
     void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
-    /// The box of the whole ellipse; nothing for a degenerate one.
+    /// The box of the whole ellipse; nothing for an empty u range.
     void bound(const DecomposeContext& context, std::vector<glm::dvec3>& points) const override;
 
 private:

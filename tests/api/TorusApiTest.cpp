@@ -52,6 +52,13 @@ TEST_F(TorusApiTest, RatioReadsBackAndMustBeFiniteAndNotNegative)
     State state = stateOf(torus);
     for (float bad : {-1.0f, -0.0001f, kNaN, kInf, -kInf})
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_SetRatio(torus, bad), kQ3Failure), kQ3ErrorInvalidData);
+    // Zero is degenerate, not malformed: taken with the warning, read back.
+    TQ3GeometryObject ring = make(shape().sample);
+    EXPECT_Q3_WARNING(EXPECT_EQ(Q3Torus_SetRatio(ring, 0), kQ3Success), kQ3WarningInconsistentData);
+    float zero = 1;
+    ASSERT_EQ(Q3Torus_GetRatio(ring, &zero), kQ3Success);
+    EXPECT_EQ(zero, 0.0f);
+    expectDrawsNothing(ring, "SetRatio 0");
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_SetRatio(nullptr, 1), kQ3Failure), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_SetRatio(wrongClass(), 1), kQ3Failure), kQ3ErrorInvalidObjectType);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_SetRatio(disposed(), 1), kQ3Failure), kQ3ErrorInvalidObject);
