@@ -321,6 +321,33 @@ TEST_F(ToleranceApiTest, ADegenerateQuadricInATextFileReadsWithTheWarning)
     disposeAll(objects);
 }
 
+TEST_F(ToleranceApiTest, ADegenerateQuadricIsWrittenAsItIsAndReadsBackWithTheWarning)
+{
+    // A cone whose orientation lies in its base's plane, in text and in both
+    // binary byte orders.
+    TQ3ConeData data{};
+    data.orientation = {1, 0, 0};
+    data.majorRadius = {1, 0, 0};
+    data.minorRadius = {0, 0.5f, 0};
+    data.uMax = 1;
+    data.vMax = 1;
+    TQ3GeometryObject cone = nullptr;
+    EXPECT_Q3_WARNING(cone = own(Q3Cone_New(&data)), kQ3WarningInconsistentData);
+    ASSERT_NE(cone, nullptr);
+    for (TQ3FileMode mode : {TQ3FileMode(kQ3FileModeText), TQ3FileMode(kQ3FileModeNormal),
+                             TQ3FileMode(kQ3FileModeSwap)}) {
+        const std::vector<unsigned char> bytes = writeObjects({cone}, mode);
+        std::vector<TQ3Object> objects;
+        EXPECT_Q3_WARNING(objects = readAll(bytes), kQ3WarningInconsistentData);
+        ASSERT_EQ(objects.size(), 1u) << mode;
+        TQ3ConeData out{};
+        ASSERT_EQ(Q3Cone_GetData(objects[0], &out), kQ3Success);
+        EXPECT_EQ(std::memcmp(&out, &data, sizeof data), 0) << mode;
+        Q3Cone_EmptyData(&out);
+        disposeAll(objects);
+    }
+}
+
 TEST_F(ToleranceApiTest, DegeneratePolygonalGeometryInATextFileReadsSilently)
 {
     const std::string text = "3DMetafile ( 1 6 Stream )\n"
