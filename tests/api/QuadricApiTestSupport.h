@@ -315,7 +315,7 @@ protected:
             expectDrawsNothing(geometry, what);
     }
 
-    void degenerateShapesAreKeptWithAWarningAndDrawNothing()
+    void degenerateShapesAreKeptWithAWarningAndDrawnSafely()
     {
         for (const auto& variant : degenerateVariants()) {
             const std::string& what = variant.first;
@@ -734,9 +734,9 @@ protected:
     {                                                                                                                  \
         newRejectsParametersOutsideZeroToOne();                                                                        \
     }                                                                                                                  \
-    TEST_F(Fixture, DegenerateShapesAreKeptWithAWarningAndDrawNothing)                                                 \
+    TEST_F(Fixture, DegenerateShapesAreKeptWithAWarningAndDrawnSafely)                                                 \
     {                                                                                                                  \
-        degenerateShapesAreKeptWithAWarningAndDrawNothing();                                                           \
+        degenerateShapesAreKeptWithAWarningAndDrawnSafely();                                                           \
     }                                                                                                                  \
     TEST_F(Fixture, NewRejectsBadAttributeSetsAfterTheOtherRules)                                                      \
     {                                                                                                                  \
