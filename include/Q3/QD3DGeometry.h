@@ -2147,16 +2147,24 @@ Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_EmptyData(TQ3TriMeshData *triMeshData);
  *     uMin = 0.75, uMax = 0.25 is the half turn through u = 0.
  *   - caps holds only kQ3EndCapMaskTop, kQ3EndCapMaskBottom and
  *     kQ3EndCapMaskInterior: kQ3ErrorInvalidData.
- *   - The vectors are independent: none is zero and the three (the two of a
- *     disk or an ellipse) do not lie in one plane (on one line), tested as
- *     |x . (y x z)| > 1e-6 |x| |y| |z| (|x x y| > 1e-6 |x| |y|):
- *     kQ3ErrorDegenerateGeometry. Such a shape has no volume (no area) and
- *     no normal; Quesa accepts it and posts this error each time it is
- *     drawn. Q3 refuses it where it is given, so drawing never fails.
- *   - The ranges are not empty: uMin != uMax (and not uMin = 1 with
- *     uMax = 0), vMin != vMax: kQ3ErrorDegenerateGeometry.
  *   - Every attribute set given is a live attribute set:
  *     kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType.
+ * Tolerated: a degenerate shape, which QuickDraw 3D kept (files written by
+ * Apple-era tools hold them): vectors that are not independent (one is
+ * zero, or the three, the two of a disk or an ellipse, lie in one plane,
+ * on one line), tested as |x . (y x z)| <= 1e-6 |x| |y| |z|
+ * (|x x y| <= 1e-6 |x| |y|); an empty range (uMin == uMax, or uMin = 1 with
+ * uMax = 0; vMin == vMax); a torus's ratio of 0. Such data passes every
+ * rule above; it is kept exactly as given (GetData returns it), and the
+ * call that gives it (New, SetData, Submit, a per-field setter, a 3DMF
+ * read) posts kQ3WarningInconsistentData naming the case. It has no area
+ * and no normal, so it draws nothing and bounds nothing
+ * (Q3Geometry_GetDecomposed gives a TriMesh of no points), except an
+ * ellipse with dependent radii, a curve drawn as the segment (or point) its
+ * formula gives; as Quesa draws
+ * it (Quesa posts kQ3ErrorDegenerateGeometry, not fatal, at each draw;
+ * Apple's QD3DErrors.h has no degenerate-geometry warning). See
+ * docs/3dmf.md, "Tolerances".
  * Apple's per-field setters (Q3Cone_SetOrigin, Q3Torus_SetRatio, ...) check
  * the data as it would be with that one field changed, by the same rules:
  * a setter never accepts what SetData refuses. Change related fields
@@ -2218,11 +2226,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3TriMesh_EmptyData(TQ3TriMeshData *triMeshData);
  * this order:
  *   every coordinate is finite; the box within float's
  *     range                                         kQ3ErrorInvalidData
- *   orientation, majorAxis and minorAxis are
- *     independent                                   kQ3ErrorDegenerateGeometry
  *   faceAttributeSet is NULL or six attribute sets, each NULL or live, and
  *     boxAttributeSet NULL or live
  *                           kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ * Tolerated, with kQ3WarningInconsistentData: a degenerate box (its
+ * vectors not independent), kept as given and drawn as nothing (see above).
  */
 struct TQ3BoxData {
     TQ3Point3D origin;
@@ -2245,6 +2253,9 @@ typedef struct TQ3BoxData TQ3BoxData;
  *   kQ3ErrorNULLParameter      boxData is NULL.
  *   then the codes of the TQ3BoxData rules, in their order;
  *   kQ3ErrorOutOfMemory        the box cannot be allocated.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3BoxData rules): kept, drawn as nothing.
  *
  * Ownership: the caller owns the new box's one reference. The box
  * takes its own reference to every attribute set given.
@@ -2264,6 +2275,8 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Box_New(const TQ3BoxData *boxData);
  *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
  *   then the codes of the TQ3BoxData rules, in their order.
  * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3BoxData rules): kept, drawn as nothing.
  *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
  *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
  *                              (QD3DStyle.h); fewer are drawn.
@@ -2283,6 +2296,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Box_Submit(const TQ3BoxData *boxData, TQ3ViewObject
  *   kQ3ErrorInvalidObject      box is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  box is not a box.
  *   then the codes of the TQ3BoxData rules, in their order.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3BoxData rules): kept, drawn as nothing.
  *
  * Ownership: the box references the attribute sets given and releases
  * those it held.
@@ -2367,8 +2383,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Box_GetOrigin(TQ3GeometryObject box, TQ3Point3D *or
  *   kQ3ErrorInvalidObjectType  box is not a box.
  *   kQ3ErrorInvalidData        a component is not finite, or the box
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the box's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the box's vectors are not independent: the
+ *                              value is kept and the box draws nothing.
  *
  * Ownership: no references change.
  */
@@ -2402,8 +2419,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Box_GetOrientation(TQ3GeometryObject box, TQ3Vector
  *   kQ3ErrorInvalidObjectType  box is not a box.
  *   kQ3ErrorInvalidData        a component is not finite, or the box
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the box's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the box's vectors are not independent: the
+ *                              value is kept and the box draws nothing.
  *
  * Ownership: no references change.
  */
@@ -2437,8 +2455,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Box_GetMajorAxis(TQ3GeometryObject box, TQ3Vector3D
  *   kQ3ErrorInvalidObjectType  box is not a box.
  *   kQ3ErrorInvalidData        a component is not finite, or the box
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the box's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the box's vectors are not independent: the
+ *                              value is kept and the box draws nothing.
  *
  * Ownership: no references change.
  */
@@ -2522,11 +2541,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3Box_SetFaceAttributeSet(TQ3GeometryObject box,
  *     cone within float's range                     kQ3ErrorInvalidData
  *   uMin, uMax, vMin, vMax in [0, 1]; vMin <= vMax  kQ3ErrorInvalidData
  *   caps holds only end cap masks                   kQ3ErrorInvalidData
- *   orientation, majorRadius and minorRadius are
- *     independent                                   kQ3ErrorDegenerateGeometry
- *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
  *   every attribute set given is a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ * Tolerated, with kQ3WarningInconsistentData: a degenerate cone (its
+ * vectors not independent, an empty range), kept as given and
+ * drawn as nothing (see above).
  */
 struct TQ3ConeData {
     TQ3Point3D origin;
@@ -2556,6 +2575,9 @@ typedef struct TQ3ConeData TQ3ConeData;
  *   kQ3ErrorNULLParameter      coneData is NULL.
  *   then the codes of the TQ3ConeData rules, in their order;
  *   kQ3ErrorOutOfMemory        the cone cannot be allocated.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3ConeData rules): kept, drawn as nothing.
  *
  * Ownership: the caller owns the new cone's one reference. The cone
  * takes its own reference to every attribute set given.
@@ -2575,6 +2597,8 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Cone_New(const TQ3ConeData *coneData);
  *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
  *   then the codes of the TQ3ConeData rules, in their order.
  * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3ConeData rules): kept, drawn as nothing.
  *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
  *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
  *                              (QD3DStyle.h); fewer are drawn.
@@ -2594,6 +2618,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cone_Submit(const TQ3ConeData *coneData, TQ3ViewObj
  *   kQ3ErrorInvalidObject      cone is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  cone is not a cone.
  *   then the codes of the TQ3ConeData rules, in their order.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3ConeData rules): kept, drawn as nothing.
  *
  * Ownership: the cone references the attribute sets given and releases
  * those it held.
@@ -2678,8 +2705,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetOrigin(TQ3GeometryObject cone, TQ3Point3D *
  *   kQ3ErrorInvalidObjectType  cone is not a cone.
  *   kQ3ErrorInvalidData        a component is not finite, or the cone
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the cone's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the cone's vectors are not independent: the
+ *                              value is kept and the cone draws nothing.
  *
  * Ownership: no references change.
  */
@@ -2713,8 +2741,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetOrientation(TQ3GeometryObject cone, TQ3Vect
  *   kQ3ErrorInvalidObjectType  cone is not a cone.
  *   kQ3ErrorInvalidData        a component is not finite, or the cone
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the cone's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the cone's vectors are not independent: the
+ *                              value is kept and the cone draws nothing.
  *
  * Ownership: no references change.
  */
@@ -2747,8 +2776,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetMajorRadius(TQ3GeometryObject cone, TQ3Vect
  *   kQ3ErrorInvalidObjectType  cone is not a cone.
  *   kQ3ErrorInvalidData        a component is not finite, or the cone
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the cone's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the cone's vectors are not independent: the
+ *                              value is kept and the cone draws nothing.
  *
  * Ownership: no references change.
  */
@@ -2889,11 +2919,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cone_GetFaceAttributeSet(TQ3GeometryObject cone, TQ
  *     cylinder within float's range                 kQ3ErrorInvalidData
  *   uMin, uMax, vMin, vMax in [0, 1]; vMin <= vMax  kQ3ErrorInvalidData
  *   caps holds only end cap masks                   kQ3ErrorInvalidData
- *   orientation, majorRadius and minorRadius are
- *     independent                                   kQ3ErrorDegenerateGeometry
- *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
  *   every attribute set given is a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ * Tolerated, with kQ3WarningInconsistentData: a degenerate cylinder (its
+ * vectors not independent, an empty range), kept as given and
+ * drawn as nothing (see above).
  */
 struct TQ3CylinderData {
     TQ3Point3D origin;
@@ -2924,6 +2954,9 @@ typedef struct TQ3CylinderData TQ3CylinderData;
  *   kQ3ErrorNULLParameter      cylinderData is NULL.
  *   then the codes of the TQ3CylinderData rules, in their order;
  *   kQ3ErrorOutOfMemory        the cylinder cannot be allocated.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3CylinderData rules): kept, drawn as nothing.
  *
  * Ownership: the caller owns the new cylinder's one reference. The cylinder
  * takes its own reference to every attribute set given.
@@ -2943,6 +2976,8 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Cylinder_New(const TQ3CylinderData *cylinde
  *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
  *   then the codes of the TQ3CylinderData rules, in their order.
  * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3CylinderData rules): kept, drawn as nothing.
  *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
  *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
  *                              (QD3DStyle.h); fewer are drawn.
@@ -2962,6 +2997,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_Submit(const TQ3CylinderData *cylinderData
  *   kQ3ErrorInvalidObject      cylinder is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
  *   then the codes of the TQ3CylinderData rules, in their order.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3CylinderData rules): kept, drawn as nothing.
  *
  * Ownership: the cylinder references the attribute sets given and releases
  * those it held.
@@ -3046,8 +3084,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetOrigin(TQ3GeometryObject cylinder, TQ3P
  *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
  *   kQ3ErrorInvalidData        a component is not finite, or the cylinder
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the cylinder's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the cylinder's vectors are not independent: the
+ *                              value is kept and the cylinder draws nothing.
  *
  * Ownership: no references change.
  */
@@ -3081,8 +3120,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetOrientation(TQ3GeometryObject cylinder,
  *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
  *   kQ3ErrorInvalidData        a component is not finite, or the cylinder
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the cylinder's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the cylinder's vectors are not independent: the
+ *                              value is kept and the cylinder draws nothing.
  *
  * Ownership: no references change.
  */
@@ -3115,8 +3155,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetMajorRadius(TQ3GeometryObject cylinder,
  *   kQ3ErrorInvalidObjectType  cylinder is not a cylinder.
  *   kQ3ErrorInvalidData        a component is not finite, or the cylinder
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the cylinder's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the cylinder's vectors are not independent: the
+ *                              value is kept and the cylinder draws nothing.
  *
  * Ownership: no references change.
  */
@@ -3291,10 +3332,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3Cylinder_GetFaceAttributeSet(TQ3GeometryObject cyli
  *   every coordinate and parameter is finite; the
  *     disk within float's range                     kQ3ErrorInvalidData
  *   uMin, uMax, vMin, vMax in [0, 1]; vMin <= vMax  kQ3ErrorInvalidData
- *   majorRadius and minorRadius are independent     kQ3ErrorDegenerateGeometry
- *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
  *   diskAttributeSet is NULL or a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ * Tolerated, with kQ3WarningInconsistentData: a degenerate disk (its
+ * vectors not independent, an empty range), kept as given and
+ * drawn as nothing (see above).
  */
 struct TQ3DiskData {
     TQ3Point3D origin;
@@ -3319,6 +3361,9 @@ typedef struct TQ3DiskData TQ3DiskData;
  *   kQ3ErrorNULLParameter      diskData is NULL.
  *   then the codes of the TQ3DiskData rules, in their order;
  *   kQ3ErrorOutOfMemory        the disk cannot be allocated.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3DiskData rules): kept, drawn as nothing.
  *
  * Ownership: the caller owns the new disk's one reference. The disk
  * takes its own reference to every attribute set given.
@@ -3338,6 +3383,8 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Disk_New(const TQ3DiskData *diskData);
  *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
  *   then the codes of the TQ3DiskData rules, in their order.
  * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3DiskData rules): kept, drawn as nothing.
  *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
  *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
  *                              (QD3DStyle.h); fewer are drawn.
@@ -3357,6 +3404,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Disk_Submit(const TQ3DiskData *diskData, TQ3ViewObj
  *   kQ3ErrorInvalidObject      disk is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  disk is not a disk.
  *   then the codes of the TQ3DiskData rules, in their order.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3DiskData rules): kept, drawn as nothing.
  *
  * Ownership: the disk references the attribute sets given and releases
  * those it held.
@@ -3440,8 +3490,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Disk_GetOrigin(TQ3GeometryObject disk, TQ3Point3D *
  *   kQ3ErrorInvalidObjectType  disk is not a disk.
  *   kQ3ErrorInvalidData        a component is not finite, or the disk
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the disk's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the disk's vectors are not independent: the
+ *                              value is kept and the disk draws nothing.
  *
  * Ownership: no references change.
  */
@@ -3474,8 +3525,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Disk_GetMajorRadius(TQ3GeometryObject disk, TQ3Vect
  *   kQ3ErrorInvalidObjectType  disk is not a disk.
  *   kQ3ErrorInvalidData        a component is not finite, or the disk
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the disk's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the disk's vectors are not independent: the
+ *                              value is kept and the disk draws nothing.
  *
  * Ownership: no references change.
  */
@@ -3509,10 +3561,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3Disk_GetMinorRadius(TQ3GeometryObject disk, TQ3Vect
  *   every coordinate and parameter is finite; the
  *     ellipse within float's range                  kQ3ErrorInvalidData
  *   uMin and uMax in [0, 1]                         kQ3ErrorInvalidData
- *   majorRadius and minorRadius are independent     kQ3ErrorDegenerateGeometry
- *   the u range is not empty                        kQ3ErrorDegenerateGeometry
  *   ellipseAttributeSet is NULL or a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ * Tolerated, with kQ3WarningInconsistentData: a degenerate ellipse (its
+ * vectors not independent, an empty range), kept as given; drawn as its
+ * segment, or as nothing for an empty range (see above).
  */
 struct TQ3EllipseData {
     TQ3Point3D origin;
@@ -3535,6 +3588,10 @@ typedef struct TQ3EllipseData TQ3EllipseData;
  *   kQ3ErrorNULLParameter      ellipseData is NULL.
  *   then the codes of the TQ3EllipseData rules, in their order;
  *   kQ3ErrorOutOfMemory        the ellipse cannot be allocated.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3EllipseData rules): kept, drawn as a
+ *                              segment (nothing for an empty range).
  *
  * Ownership: the caller owns the new ellipse's one reference. The ellipse
  * takes its own reference to every attribute set given.
@@ -3554,6 +3611,9 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Ellipse_New(const TQ3EllipseData *ellipseDa
  *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
  *   then the codes of the TQ3EllipseData rules, in their order.
  * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3EllipseData rules): kept, drawn as a
+ *                              segment (nothing for an empty range).
  *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
  *                              kQ3SubdivisionMaxSegmentsPerCurve segments
  *                              (QD3DStyle.h); fewer are drawn.
@@ -3573,6 +3633,10 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_Submit(const TQ3EllipseData *ellipseData, T
  *   kQ3ErrorInvalidObject      ellipse is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *   then the codes of the TQ3EllipseData rules, in their order.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3EllipseData rules): kept, drawn as a
+ *                              segment (nothing for an empty range).
  *
  * Ownership: the ellipse references the attribute sets given and releases
  * those it held.
@@ -3656,8 +3720,10 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetOrigin(TQ3GeometryObject ellipse, TQ3Poi
  *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipse
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the ellipse's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the ellipse's vectors are not independent: the
+ *                              value is kept and the ellipse is drawn as a
+ *                              segment.
  *
  * Ownership: no references change.
  */
@@ -3690,8 +3756,10 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetMajorRadius(TQ3GeometryObject ellipse, T
  *   kQ3ErrorInvalidObjectType  ellipse is not an ellipse.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipse
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the ellipse's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the ellipse's vectors are not independent: the
+ *                              value is kept and the ellipse is drawn as a
+ *                              segment.
  *
  * Ownership: no references change.
  */
@@ -3731,11 +3799,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipse_GetMinorRadius(TQ3GeometryObject ellipse, T
  *     ellipsoid within float's range                kQ3ErrorInvalidData
  *   uMin, uMax, vMin, vMax in [0, 1]; vMin <= vMax  kQ3ErrorInvalidData
  *   caps holds only end cap masks                   kQ3ErrorInvalidData
- *   orientation, majorRadius and minorRadius are
- *     independent                                   kQ3ErrorDegenerateGeometry
- *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
  *   every attribute set given is a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ * Tolerated, with kQ3WarningInconsistentData: a degenerate ellipsoid (its
+ * vectors not independent, an empty range), kept as given and
+ * drawn as nothing (see above).
  */
 struct TQ3EllipsoidData {
     TQ3Point3D origin;
@@ -3763,6 +3831,9 @@ typedef struct TQ3EllipsoidData TQ3EllipsoidData;
  *   kQ3ErrorNULLParameter      ellipsoidData is NULL.
  *   then the codes of the TQ3EllipsoidData rules, in their order;
  *   kQ3ErrorOutOfMemory        the ellipsoid cannot be allocated.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3EllipsoidData rules): kept, drawn as nothing.
  *
  * Ownership: the caller owns the new ellipsoid's one reference. The ellipsoid
  * takes its own reference to every attribute set given.
@@ -3782,6 +3853,8 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Ellipsoid_New(const TQ3EllipsoidData *ellip
  *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
  *   then the codes of the TQ3EllipsoidData rules, in their order.
  * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3EllipsoidData rules): kept, drawn as nothing.
  *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
  *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
  *                              (QD3DStyle.h); fewer are drawn.
@@ -3801,6 +3874,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_Submit(const TQ3EllipsoidData *ellipsoidD
  *   kQ3ErrorInvalidObject      ellipsoid is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   then the codes of the TQ3EllipsoidData rules, in their order.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3EllipsoidData rules): kept, drawn as nothing.
  *
  * Ownership: the ellipsoid references the attribute sets given and releases
  * those it held.
@@ -3885,8 +3961,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetOrigin(TQ3GeometryObject ellipsoid, TQ
  *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the ellipsoid's vectors are not independent: the
+ *                              value is kept and the ellipsoid draws nothing.
  *
  * Ownership: no references change.
  */
@@ -3920,8 +3997,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetOrientation(TQ3GeometryObject ellipsoi
  *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the ellipsoid's vectors are not independent: the
+ *                              value is kept and the ellipsoid draws nothing.
  *
  * Ownership: no references change.
  */
@@ -3954,8 +4032,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetMajorRadius(TQ3GeometryObject ellipsoi
  *   kQ3ErrorInvalidObjectType  ellipsoid is not an ellipsoid.
  *   kQ3ErrorInvalidData        a component is not finite, or the ellipsoid
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the ellipsoid's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the ellipsoid's vectors are not independent: the
+ *                              value is kept and the ellipsoid draws nothing.
  *
  * Ownership: no references change.
  */
@@ -4001,13 +4080,13 @@ Q3_EXTERN_API_C(TQ3Status) Q3Ellipsoid_GetMinorRadius(TQ3GeometryObject ellipsoi
  *   every coordinate and parameter is finite; the
  *     torus within float's range                    kQ3ErrorInvalidData
  *   uMin, uMax, vMin, vMax in [0, 1]                kQ3ErrorInvalidData
- *   ratio > 0                                       kQ3ErrorInvalidData
+ *   ratio >= 0                                      kQ3ErrorInvalidData
  *   caps holds only end cap masks                   kQ3ErrorInvalidData
- *   orientation, majorRadius and minorRadius are
- *     independent                                   kQ3ErrorDegenerateGeometry
- *   the u and v ranges are not empty                kQ3ErrorDegenerateGeometry
  *   every attribute set given is a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
+ * Tolerated, with kQ3WarningInconsistentData: a degenerate torus (its
+ * vectors not independent, an empty range, ratio 0), kept as given and
+ * drawn as nothing (see above).
  */
 struct TQ3TorusData {
     TQ3Point3D origin;
@@ -4036,6 +4115,9 @@ typedef struct TQ3TorusData TQ3TorusData;
  *   kQ3ErrorNULLParameter      torusData is NULL.
  *   then the codes of the TQ3TorusData rules, in their order;
  *   kQ3ErrorOutOfMemory        the torus cannot be allocated.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3TorusData rules): kept, drawn as nothing.
  *
  * Ownership: the caller owns the new torus's one reference. The torus
  * takes its own reference to every attribute set given.
@@ -4055,6 +4137,8 @@ Q3_EXTERN_API_C(TQ3GeometryObject) Q3Torus_New(const TQ3TorusData *torusData);
  *   kQ3ErrorViewNotStarted     view is not inside a rendering or bounding loop.
  *   then the codes of the TQ3TorusData rules, in their order.
  * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3TorusData rules): kept, drawn as nothing.
  *   kQ3WarningParameterOutOfRange  the subdivision style asks for more than
  *                              kQ3SubdivisionMaxTrianglesPerSurface triangles
  *                              (QD3DStyle.h); fewer are drawn.
@@ -4074,6 +4158,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Torus_Submit(const TQ3TorusData *torusData, TQ3View
  *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  torus is not a torus.
  *   then the codes of the TQ3TorusData rules, in their order.
+ * Warnings:
+ *   kQ3WarningInconsistentData the data is degenerate (the tolerated cases
+ *                              of the TQ3TorusData rules): kept, drawn as nothing.
  *
  * Ownership: the torus references the attribute sets given and releases
  * those it held.
@@ -4158,8 +4245,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetOrigin(TQ3GeometryObject torus, TQ3Point3D
  *   kQ3ErrorInvalidObjectType  torus is not a torus.
  *   kQ3ErrorInvalidData        a component is not finite, or the torus
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the torus's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the torus's vectors are not independent: the
+ *                              value is kept and the torus draws nothing.
  *
  * Ownership: no references change.
  */
@@ -4193,8 +4281,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetOrientation(TQ3GeometryObject torus, TQ3Ve
  *   kQ3ErrorInvalidObjectType  torus is not a torus.
  *   kQ3ErrorInvalidData        a component is not finite, or the torus
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the torus's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the torus's vectors are not independent: the
+ *                              value is kept and the torus draws nothing.
  *
  * Ownership: no references change.
  */
@@ -4227,8 +4316,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetMajorRadius(TQ3GeometryObject torus, TQ3Ve
  *   kQ3ErrorInvalidObjectType  torus is not a torus.
  *   kQ3ErrorInvalidData        a component is not finite, or the torus
  *                              would leave float's range.
- *   kQ3ErrorDegenerateGeometry the torus's vectors would not be
- *                              independent.
+ * Warnings:
+ *   kQ3WarningInconsistentData the torus's vectors are not independent: the
+ *                              value is kept and the torus draws nothing.
  *
  * Ownership: no references change.
  */
@@ -4260,8 +4350,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetMinorRadius(TQ3GeometryObject torus, TQ3Ve
  *   kQ3ErrorNULLParameter      torus is NULL.
  *   kQ3ErrorInvalidObject      torus is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  torus is not a torus.
- *   kQ3ErrorInvalidData        ratio is not finite or not above 0, or the
+ *   kQ3ErrorInvalidData        ratio is not finite or is negative, or the
  *                              torus would leave float's range.
+ * Warnings:
+ *   kQ3WarningInconsistentData ratio is 0 (a tube with no thickness): kept,
+ *                              and the torus draws nothing.
  *
  * Ownership: no references change.
  */
@@ -4375,7 +4468,11 @@ Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_VertexNew(TQ3GeometryObject mesh, const TQ
  * Adds a face of one contour running through vertices[0 .. numVertices-1]
  * (closed from the last back to the first), with the attribute set
  * attributeSet (NULL for none). Edges are made where the face runs between
- * two vertices no contour joined before.
+ * two vertices no contour joined before. The contour may pass a vertex more
+ * than once, and an edge may have any number of faces: QuickDraw 3D and
+ * Quesa keep such meshes, and so does Q3, with no warning (the face is
+ * drawn as the area its contour encloses; docs/3dmf.md, Tolerances). The
+ * face's vertex count and walk give each of its vertices once.
  *
  * @return the new face, or NULL on failure (the mesh unchanged).
  *
@@ -4384,8 +4481,7 @@ Q3_EXTERN_API_C(TQ3MeshVertex) Q3Mesh_VertexNew(TQ3GeometryObject mesh, const TQ
  *   kQ3ErrorParameterOutOfRange numVertices > kQ3GeometryMaxArrayCount, or
  *                              the mesh has kQ3GeometryMaxArrayCount faces.
  *   kQ3ErrorNULLParameter      an entry of vertices is NULL.
- *   kQ3ErrorInvalidParameter   an entry is not a vertex of this mesh, or a
- *                              vertex appears twice.
+ *   kQ3ErrorInvalidParameter   an entry is not a vertex of this mesh.
  *   kQ3ErrorInvalidObject      attributeSet is not a live Q3 object.
  *   kQ3ErrorInvalidObjectType  attributeSet is not an attribute set.
  *

@@ -220,10 +220,6 @@ TQ3MeshFace Q3Mesh_FaceNew(TQ3GeometryObject mesh, unsigned long numVertices, co
                 fail(error.code(), "vertices[" + std::to_string(i) + "]: " + error.what());
             }
         }
-        std::vector<S> sorted = ring;
-        std::sort(sorted.begin(), sorted.end());
-        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-            fail(kQ3ErrorInvalidParameter, "a vertex appears twice in vertices");
         Ref<AttributeSet> set = attributeSetFromHandle(attributeSet, "attributeSet");
         return handleOf<TQ3MeshFace>(m.addFace(ring, std::move(set)), MeshPart::Face);
     });

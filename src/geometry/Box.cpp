@@ -17,7 +17,11 @@ void Box::check(const TQ3BoxData& d)
     requireFiniteField(d.majorAxis, "majorAxis");
     requireFiniteField(d.minorAxis, "minorAxis");
     requireWithinFloatRange(d.origin, {d.orientation, d.majorAxis, d.minorAxis});
-    requireIndependent(d.orientation, d.majorAxis, d.minorAxis, "orientation, majorAxis and minorAxis");
+}
+
+std::string Box::degeneracy(const TQ3BoxData& d)
+{
+    return dependentFrame(d.orientation, d.majorAxis, d.minorAxis, "orientation, majorAxis and minorAxis");
 }
 
 quadric::Patches Box::patches(const TQ3BoxData& d)

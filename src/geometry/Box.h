@@ -22,6 +22,8 @@ public:
 
     /// The TQ3BoxData rules of QD3DGeometry.h, in their order.
     static void check(const TQ3BoxData& data);
+    /// The tolerated degenerate case of the data (Quadric.h), or "".
+    static std::string degeneracy(const TQ3BoxData& data);
     static quadric::Patches patches(const TQ3BoxData& data);
     /// The eight corners.
     static void boundPoints(const TQ3BoxData& data, std::vector<glm::dvec3>& points);

@@ -21,6 +21,8 @@ public:
 
     /// The TQ3ConeData rules of QD3DGeometry.h, in their order.
     static void check(const TQ3ConeData& data) { checkRevolvedData(data); }
+    /// The tolerated degenerate case of the data (Quadric.h), or "".
+    static std::string degeneracy(const TQ3ConeData& data) { return revolvedDegeneracy(data); }
     static quadric::Patches patches(const TQ3ConeData& data) { return quadric::conePatches(revolvedShape(data)); }
     /// The base ellipse's box and the apex.
     static void boundPoints(const TQ3ConeData& data, std::vector<glm::dvec3>& points);

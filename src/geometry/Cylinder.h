@@ -21,6 +21,8 @@ public:
 
     /// The TQ3CylinderData rules of QD3DGeometry.h, in their order.
     static void check(const TQ3CylinderData& data) { checkRevolvedData(data); }
+    /// The tolerated degenerate case of the data (Quadric.h), or "".
+    static std::string degeneracy(const TQ3CylinderData& data) { return revolvedDegeneracy(data); }
     static quadric::Patches patches(const TQ3CylinderData& data)
     {
         return quadric::cylinderPatches(revolvedShape(data));

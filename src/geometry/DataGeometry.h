@@ -16,6 +16,9 @@
 //       static constexpr TQ3AttributeSet TQ3TriangleData::*kOwnSet =
 //           &TQ3TriangleData::triangleAttributeSet;
 //       static void check(const TQ3TriangleData& data);  // its data rules
+//       // optional: data QuickDraw 3D accepted though it is degenerate, and
+//       // what makes it so ("" when it is not; docs/3dmf.md, Tolerances)
+//       static std::string degeneracy(const TQ3TriangleData& data);
 //       using DataGeometry::DataGeometry;
 //       const ClassInfo& classInfo() const override;
 //       void decompose(const DecomposeContext&, PrimitiveSink&) const override;
@@ -51,7 +54,14 @@ public:
     /// Derived::kDataName); Derived::check's rules; every array the struct
     /// describes is present and within kQ3GeometryMaxArrayCount. Attribute sets
     /// are checked when the data is taken (the constructors and setData).
+    /// Data that passes and is degenerate gets warnIfDegenerate's warning.
     static void validate(const Data* data);
+
+    /// For a class that defines Derived::degeneracy: when it describes a
+    /// case, the attribute sets are checked (so that a call refused for them
+    /// posts its error alone) and kQ3WarningInconsistentData is posted,
+    /// naming the case. The data is kept as it is.
+    static void warnIfDegenerate(const Data& data);
 
     /// A retained geometry owning a copy of data, which passed validate():
     /// every attribute set is checked (kQ3ErrorInvalidObject /

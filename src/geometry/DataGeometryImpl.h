@@ -7,9 +7,12 @@
 // many descriptions, is described here once.
 
 #include "core/DataLayout.h"
+#include "core/ErrorManager.h"
 #include "geometry/DataGeometry.h"
 
 #include <cstring>
+#include <string>
+#include <type_traits>
 #include <utility>
 
 namespace q3 {
@@ -26,12 +29,35 @@ struct Describe<TQ3Vertex3D> {
 
 } // namespace layout
 
+namespace detail {
+template <class T, class D, class = void>
+struct HasDegeneracy : std::false_type {};
+template <class T, class D>
+struct HasDegeneracy<T, D, std::void_t<decltype(T::degeneracy(std::declval<const D&>()))>> : std::true_type {};
+} // namespace detail
+
 template <class Derived, class Data>
 void DataGeometry<Derived, Data>::validate(const Data* data)
 {
     requireNonNull(data, Derived::kDataName);
     Derived::check(*data);
     layout::checkStructure(*data, layout::Path{});
+    warnIfDegenerate(*data);
+}
+
+template <class Derived, class Data>
+void DataGeometry<Derived, Data>::warnIfDegenerate(const Data& data)
+{
+    if constexpr (detail::HasDegeneracy<Derived, Data>::value) {
+        const std::string problem = Derived::degeneracy(data);
+        if (problem.empty())
+            return;
+        layout::checkHandles(data, layout::Path{});
+        errors::postWarning(kQ3WarningInconsistentData, std::string("the ") + Derived::kName + " is degenerate (" +
+                                                            problem + "); it is kept as given");
+    } else {
+        (void)data;
+    }
 }
 
 template <class Derived, class Data>

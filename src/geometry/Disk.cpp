@@ -25,9 +25,12 @@ void Disk::check(const TQ3DiskData& d)
     requireUnitParameter(d.vMin, "vMin");
     requireUnitParameter(d.vMax, "vMax");
     requireOrdered(d.vMin, d.vMax, "vMin", "vMax");
-    requireIndependent(d.majorRadius, d.minorRadius, "majorRadius and minorRadius");
-    requireNonEmptyAngle(d.uMin, d.uMax, "uMin", "uMax");
-    requireNonEmpty(d.vMin, d.vMax, "vMin", "vMax");
+}
+
+std::string Disk::degeneracy(const TQ3DiskData& d)
+{
+    return firstCase({dependentFrame(d.majorRadius, d.minorRadius, "majorRadius and minorRadius"),
+                      emptyAngle(d.uMin, d.uMax, "uMin", "uMax"), emptyRange(d.vMin, d.vMax, "vMin", "vMax")});
 }
 
 quadric::Patches Disk::patches(const TQ3DiskData& d)

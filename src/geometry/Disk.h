@@ -21,6 +21,8 @@ public:
 
     /// The TQ3DiskData rules of QD3DGeometry.h, in their order.
     static void check(const TQ3DiskData& data);
+    /// The tolerated degenerate case of the data (Quadric.h), or "".
+    static std::string degeneracy(const TQ3DiskData& data);
     static quadric::Patches patches(const TQ3DiskData& data);
     /// The ellipse's box.
     static void boundPoints(const TQ3DiskData& data, std::vector<glm::dvec3>& points);

@@ -20,12 +20,18 @@ void Ellipse::check(const TQ3EllipseData& d)
     requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius});
     requireUnitParameter(d.uMin, "uMin");
     requireUnitParameter(d.uMax, "uMax");
-    requireIndependent(d.majorRadius, d.minorRadius, "majorRadius and minorRadius");
-    requireNonEmptyAngle(d.uMin, d.uMax, "uMin", "uMax");
+}
+
+std::string Ellipse::degeneracy(const TQ3EllipseData& d)
+{
+    return firstCase({dependentFrame(d.majorRadius, d.minorRadius, "majorRadius and minorRadius"),
+                      emptyAngle(d.uMin, d.uMax, "uMin", "uMax")});
 }
 
 void Ellipse::decompose(const DecomposeContext& context, PrimitiveSink& sink) const
 {
+    if (!emptyAngle(data().uMin, data().uMax, "uMin", "uMax").empty())
+        return;
     const SubdivisionMeasure measure = context.subdivisionMeasure();
     std::string report;
     withMesh(
@@ -59,6 +65,8 @@ void Ellipse::decompose(const DecomposeContext& context, PrimitiveSink& sink) co
 
 void Ellipse::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const
 {
+    if (!emptyAngle(data().uMin, data().uMax, "uMin", "uMax").empty())
+        return;
     ellipseBoxCorners(toVec3(data().origin), toVec3(data().majorRadius), toVec3(data().minorRadius), points);
 }
 

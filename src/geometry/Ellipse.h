@@ -21,6 +21,8 @@ public:
 
     /// The TQ3EllipseData rules of QD3DGeometry.h, in their order.
     static void check(const TQ3EllipseData& data);
+    /// The tolerated degenerate case of the data (Quadric.h), or "".
+    static std::string degeneracy(const TQ3EllipseData& data);
 
     using FieldGeometry::FieldGeometry;
 
@@ -29,8 +31,10 @@ public:
     /// curve (quadric::tessellateCurve): constant c1 segments per turn, or
     /// segments of at most c1 world units or pixels; at most
     /// kQ3SubdivisionMaxSegmentsPerCurve (then kQ3WarningParameterOutOfRange).
+    /// An empty u range draws nothing; radii that are zero or parallel draw
+    /// the segment (or point) the formula gives, a curve needing no normal.
     void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
-    /// The box of the whole ellipse.
+    /// The box of the whole ellipse; nothing for an empty u range.
     void bound(const DecomposeContext& context, std::vector<glm::dvec3>& points) const override;
 
 private:

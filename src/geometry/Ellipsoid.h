@@ -21,6 +21,8 @@ public:
 
     /// The TQ3EllipsoidData rules of QD3DGeometry.h, in their order.
     static void check(const TQ3EllipsoidData& data) { checkRevolvedData(data); }
+    /// The tolerated degenerate case of the data (Quadric.h), or "".
+    static std::string degeneracy(const TQ3EllipsoidData& data) { return revolvedDegeneracy(data); }
     static quadric::Patches patches(const TQ3EllipsoidData& data)
     {
         return quadric::ellipsoidPatches(revolvedShape(data));

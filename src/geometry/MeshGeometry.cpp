@@ -273,8 +273,13 @@ MeshGeometry::Serial MeshGeometry::addFace(const std::vector<Serial>& vertices, 
     const Serial contour = newSerial(MeshPart::Contour);
     m_contours.emplace(contour, Contour{face, vertices});
     m_faces.emplace(face, Face{{contour}, std::move(set), {}});
-    for (Serial v : vertices)
-        m_vertices.at(v).faces.push_back(face);
+    // A contour may pass a vertex more than once (QuickDraw 3D and Quesa
+    // keep such faces); the vertex lists the face once.
+    for (Serial v : vertices) {
+        std::vector<Serial>& faces = m_vertices.at(v).faces;
+        if (std::find(faces.begin(), faces.end(), face) == faces.end())
+            faces.push_back(face);
+    }
     addContourEdges(vertices);
     topologyEdited();
     return face;
@@ -388,7 +393,8 @@ MeshGeometry::Serial MeshGeometry::contourToFace(Serial contour)
             faces.erase(std::remove(faces.begin(), faces.end(), container), faces.end());
             old.corners.erase(v);
         }
-        faces.push_back(face);
+        if (std::find(faces.begin(), faces.end(), face) == faces.end())
+            faces.push_back(face);
     }
     m_contours.at(contour).face = face;
     m_faces.emplace(face, std::move(fresh));

@@ -87,30 +87,40 @@ void requireCapBits(TQ3EndCap caps)
                                       "are end cap bits");
 }
 
-void requireIndependent(const TQ3Vector3D& x, const TQ3Vector3D& y, const TQ3Vector3D& z, const char* what)
+std::string dependentFrame(const TQ3Vector3D& x, const TQ3Vector3D& y, const TQ3Vector3D& z, const char* what)
 {
-    if (!(quadric::independence(toVec3(x), toVec3(y), toVec3(z)) > quadric::kDegenerateFrame))
-        fail(kQ3ErrorDegenerateGeometry, std::string(what) + " are zero or lie in one plane: the shape would be flat");
+    if (quadric::independence(toVec3(x), toVec3(y), toVec3(z)) > quadric::kDegenerateFrame)
+        return {};
+    return std::string(what) + " are zero or lie in one plane: the shape is flat";
 }
 
-void requireIndependent(const TQ3Vector3D& x, const TQ3Vector3D& y, const char* what)
+std::string dependentFrame(const TQ3Vector3D& x, const TQ3Vector3D& y, const char* what)
 {
-    if (!(quadric::independence(toVec3(x), toVec3(y)) > quadric::kDegenerateFrame))
-        fail(kQ3ErrorDegenerateGeometry, std::string(what) + " are zero or parallel: the shape would be a line");
+    if (quadric::independence(toVec3(x), toVec3(y)) > quadric::kDegenerateFrame)
+        return {};
+    return std::string(what) + " are zero or parallel: the shape is a line or a point";
 }
 
-void requireNonEmptyAngle(float min, float max, const char* minName, const char* maxName)
+std::string emptyAngle(float min, float max, const char* minName, const char* maxName)
 {
-    if (min == max || (min == 1.0f && max == 0.0f))
-        fail(kQ3ErrorDegenerateGeometry,
-             std::string(minName) + " " + number(min) + " and " + maxName + " " + number(max) + " select no angle");
+    if (min != max && !(min == 1.0f && max == 0.0f))
+        return {};
+    return std::string(minName) + " " + number(min) + " and " + maxName + " " + number(max) + " select no angle";
 }
 
-void requireNonEmpty(float min, float max, const char* minName, const char* maxName)
+std::string emptyRange(float min, float max, const char* minName, const char* maxName)
 {
-    if (min == max)
-        fail(kQ3ErrorDegenerateGeometry,
-             std::string(minName) + " and " + maxName + " are both " + number(min) + ": the range is empty");
+    if (min != max)
+        return {};
+    return std::string(minName) + " and " + maxName + " are both " + number(min) + ": the range is empty";
+}
+
+std::string firstCase(std::initializer_list<std::string> cases)
+{
+    for (const std::string& c : cases)
+        if (!c.empty())
+            return c;
+    return {};
 }
 
 quadric::Subdivision subdivisionFor(const SubdivisionMeasure& measure, std::size_t maxTriangles)

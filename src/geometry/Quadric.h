@@ -52,17 +52,27 @@ void requireOrdered(float min, float max, const char* minName, const char* maxNa
 /// kQ3EndCapMaskBottom or kQ3EndCapMaskInterior.
 void requireCapBits(TQ3EndCap caps);
 
-/// kQ3ErrorDegenerateGeometry unless the vectors are independent
-/// (quadric::independence above quadric::kDegenerateFrame); `what` lists
-/// their names.
-void requireIndependent(const TQ3Vector3D& x, const TQ3Vector3D& y, const TQ3Vector3D& z, const char* what);
-void requireIndependent(const TQ3Vector3D& x, const TQ3Vector3D& y, const char* what);
+// ---- The tolerated cases ---------------------------------------------------------
+//
+// QuickDraw 3D and Quesa accept a shape whose vectors are zero or dependent,
+// or whose u or v range is empty, and draw nothing for it (docs/3dmf.md,
+// "Tolerances"). Q3 keeps such data as it is given, posts
+// kQ3WarningInconsistentData where it is given (DataGeometry::validate), and
+// draws and bounds nothing for it. Each function below describes the case it
+// finds, or gives an empty string.
 
-/// kQ3ErrorDegenerateGeometry for an empty range: an angle (wrapping when
-/// min > max) is empty when min == max or min = 1, max = 0; another range
-/// when min == max.
-void requireNonEmptyAngle(float min, float max, const char* minName, const char* maxName);
-void requireNonEmpty(float min, float max, const char* minName, const char* maxName);
+/// The vectors are zero or not independent (quadric::independence at or
+/// below quadric::kDegenerateFrame); `what` lists their names.
+std::string dependentFrame(const TQ3Vector3D& x, const TQ3Vector3D& y, const TQ3Vector3D& z, const char* what);
+std::string dependentFrame(const TQ3Vector3D& x, const TQ3Vector3D& y, const char* what);
+
+/// An empty range: an angle (wrapping when min > max) is empty when
+/// min == max or min = 1, max = 0; another range when min == max.
+std::string emptyAngle(float min, float max, const char* minName, const char* maxName);
+std::string emptyRange(float min, float max, const char* minName, const char* maxName);
+
+/// The first non-empty description of `cases`, or an empty string.
+std::string firstCase(std::initializer_list<std::string> cases);
 
 // ---- Conversions ---------------------------------------------------------------
 
@@ -112,9 +122,14 @@ template <class D> void checkRevolvedData(const D& d)
     requireUnitParameter(d.vMax, "vMax");
     requireOrdered(d.vMin, d.vMax, "vMin", "vMax");
     requireCapBits(d.caps);
-    requireIndependent(d.orientation, d.majorRadius, d.minorRadius, "orientation, majorRadius and minorRadius");
-    requireNonEmptyAngle(d.uMin, d.uMax, "uMin", "uMax");
-    requireNonEmpty(d.vMin, d.vMax, "vMin", "vMax");
+}
+
+/// The tolerated degenerate cases of those shapes, in the same order.
+template <class D> std::string revolvedDegeneracy(const D& d)
+{
+    return firstCase({dependentFrame(d.orientation, d.majorRadius, d.minorRadius,
+                                     "orientation, majorRadius and minorRadius"),
+                      emptyAngle(d.uMin, d.uMax, "uMin", "uMax"), emptyRange(d.vMin, d.vMax, "vMin", "vMax")});
 }
 
 template <class D> quadric::RevolvedShape revolvedShape(const D& d)
@@ -138,13 +153,15 @@ public:
     using DataGeometry<Derived, Data>::DataGeometry;
 
     /// The data with `field` set to `value` must pass Derived::check (its
-    /// errors, in its order); then the field changes and the edit is marked.
-    /// On failure nothing changes.
+    /// errors, in its order); then the field changes (with the warning of a
+    /// tolerated degenerate case, as SetData posts it) and the edit is
+    /// marked. On failure nothing changes.
     template <class T> void setField(T Data::*field, const T& value)
     {
         Data changed = this->data();
         changed.*field = value;
         Derived::check(changed);
+        this->warnIfDegenerate(changed);
         this->editableData().*field = value;
         this->markEdited();
     }
@@ -165,9 +182,12 @@ public:
     /// The shape's parts as triangles under the view's subdivision (cached
     /// for a retained shape until its data, a part's attribute set or the
     /// subdivision changes); kQ3WarningParameterOutOfRange when
-    /// kQ3SubdivisionMaxTrianglesPerSurface made it coarser.
+    /// kQ3SubdivisionMaxTrianglesPerSurface made it coarser. A degenerate
+    /// shape (Derived::degeneracy) draws nothing.
     void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override
     {
+        if (!Derived::degeneracy(this->data()).empty())
+            return;
         const SubdivisionMeasure measure = context.subdivisionMeasure();
         const std::vector<const AttributeSet*> sets = static_cast<const Derived&>(*this).partSets();
         std::vector<double> key = measure.key;
@@ -187,9 +207,11 @@ public:
     }
 
     /// The analytic box of the whole shape (a partial shape is bounded by its
-    /// whole).
+    /// whole); nothing for a degenerate shape, which draws nothing.
     void bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const override
     {
+        if (!Derived::degeneracy(this->data()).empty())
+            return;
         Derived::boundPoints(this->data(), points);
     }
 

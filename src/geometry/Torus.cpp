@@ -30,12 +30,17 @@ void Torus::check(const TQ3TorusData& d)
     requireUnitParameter(d.uMax, "uMax");
     requireUnitParameter(d.vMin, "vMin");
     requireUnitParameter(d.vMax, "vMax");
-    if (!(d.ratio > 0.0f))
-        fail(kQ3ErrorInvalidData, "ratio is " + std::to_string(d.ratio) + "; a torus's ratio must be above 0");
+    if (!(d.ratio >= 0.0f))
+        fail(kQ3ErrorInvalidData, "ratio is " + std::to_string(d.ratio) + "; a torus's ratio must not be negative");
     requireCapBits(d.caps);
-    requireIndependent(d.orientation, d.majorRadius, d.minorRadius, "orientation, majorRadius and minorRadius");
-    requireNonEmptyAngle(d.uMin, d.uMax, "uMin", "uMax");
-    requireNonEmptyAngle(d.vMin, d.vMax, "vMin", "vMax");
+}
+
+std::string Torus::degeneracy(const TQ3TorusData& d)
+{
+    return firstCase({dependentFrame(d.orientation, d.majorRadius, d.minorRadius,
+                                     "orientation, majorRadius and minorRadius"),
+                      d.ratio == 0.0f ? "ratio is 0: the tube has no thickness" : "",
+                      emptyAngle(d.uMin, d.uMax, "uMin", "uMax"), emptyAngle(d.vMin, d.vMax, "vMin", "vMax")});
 }
 
 quadric::Patches Torus::patches(const TQ3TorusData& d)

@@ -21,6 +21,8 @@ public:
 
     /// The TQ3TorusData rules of QD3DGeometry.h, in their order.
     static void check(const TQ3TorusData& data);
+    /// The tolerated degenerate case of the data (Quadric.h), or "".
+    static std::string degeneracy(const TQ3TorusData& data);
     static quadric::Patches patches(const TQ3TorusData& data);
     /// A box holding the ring's box grown by the tube's reach along each
     /// axis.

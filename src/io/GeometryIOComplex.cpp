@@ -349,14 +349,11 @@ Ref<SharedObject> readMesh(ReadContext& context, const Parts& parts)
         std::vector<MeshGeometry::Serial> vertices(numVertices);
         for (std::uint32_t i = 0; i < numVertices; ++i)
             vertices[i] = mesh->addVertex(points[i], vertexSets[i]);
-        // The rules Q3Mesh_FaceNew applies: at least 3 vertices, none twice.
+        // The rule Q3Mesh_FaceNew applies: at least 3 vertices (one may come
+        // more than once, docs/3dmf.md, Tolerances).
         const auto serialsOf = [&](const std::vector<std::uint32_t>& indices) {
             if (indices.size() < 3)
                 fail(kQ3ErrorInvalidMetafileObject, "a Mesh face or contour has fewer than 3 vertices");
-            std::vector<std::uint32_t> sorted = indices;
-            std::sort(sorted.begin(), sorted.end());
-            if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-                fail(kQ3ErrorInvalidMetafileObject, "a Mesh face or contour names a vertex twice");
             std::vector<MeshGeometry::Serial> serials(indices.size());
             for (std::size_t k = 0; k < indices.size(); ++k)
                 serials[k] = vertices[indices[k]];

@@ -78,7 +78,8 @@ TEST_F(ConeApiTest, PartialRangesWrapAroundAngleZeroButVMustIncrease)
     EXPECT_NE(make(data), nullptr);
     data.uMin = 1;
     data.uMax = 0;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Cone_New(&data), nullptr), kQ3ErrorDegenerateGeometry);
+    // No angle: kept with the warning (docs/3dmf.md, Tolerances).
+    EXPECT_Q3_WARNING(EXPECT_NE(make(data), nullptr), kQ3WarningInconsistentData);
     data = shape().sample;
     data.vMin = 0.6f;
     data.vMax = 0.4f;

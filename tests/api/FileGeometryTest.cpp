@@ -702,7 +702,9 @@ TEST_F(FileGeometryTest, MalformedMeshFilesAreFileErrorsNeverCrashes)
                       kQ3ErrorInvalidMetafileObject);
     EXPECT_READ_ERROR(replaced("2 1            #", "3 0 #"), kQ3ErrorInvalidMetafileObject);
     EXPECT_READ_ERROR(replaced("3 1 8 2", "2 1 8"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced("3 1 8 2", "3 1 8 1"), kQ3ErrorInvalidMetafileObject);
+    // A face through one vertex twice is degenerate, not malformed: it reads
+    // (docs/3dmf.md, Tolerances).
+    EXPECT_EQ(readError(replaced("3 1 8 2", "3 1 8 1")), kQ3ErrorNone);
     // A malformed number.
     EXPECT_READ_ERROR(replaced("1.5 0 0.5", "1.5 0 0.5e"), kQ3ErrorInvalidMetafilePrimitive);
     // Subobjects that do not fit: a corner on a face the mesh lacks, a corner

@@ -10,6 +10,7 @@
 // Every check calls only Q3* functions.
 
 #include "OwningApiTest.h"
+#include "RenderTestSupport.h"
 
 #include "QD3DGeometry.h"
 #include "QD3DSet.h"
@@ -210,45 +211,137 @@ protected:
             }
     }
 
-    void newRejectsDegenerateFrames()
+    /// The degenerate variants of the sample (docs/3dmf.md, Tolerances): each
+    /// vector zero, each parallel to the next, the three in one plane, each
+    /// range empty (both limits 0.5).
+    std::vector<std::pair<std::string, Data>> degenerateVariants()
     {
+        std::vector<std::pair<std::string, Data>> variants;
         const auto& vectors = shape().vectors;
         for (std::size_t i = 0; i < vectors.size(); ++i) {
             Data data = shape().sample;
             data.*(vectors[i].member) = TQ3Vector3D{0, 0, 0};
-            EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr) << vectors[i].name << " zero",
-                            kQ3ErrorDegenerateGeometry);
-            // Parallel to another one.
+            variants.emplace_back(std::string(vectors[i].name) + " zero", data);
             const TQ3Vector3D other = data.*(vectors[(i + 1) % vectors.size()].member);
             data = shape().sample;
             data.*(vectors[i].member) = TQ3Vector3D{-2 * other.x, -2 * other.y, -2 * other.z};
-            EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr) << vectors[i].name << " parallel",
-                            kQ3ErrorDegenerateGeometry);
+            variants.emplace_back(std::string(vectors[i].name) + " parallel", data);
         }
         if (vectors.size() == 3) {
-            // Three vectors in one plane.
             Data data = shape().sample;
             const TQ3Vector3D a = data.*(vectors[1].member), b = data.*(vectors[2].member);
             data.*(vectors[0].member) = TQ3Vector3D{a.x + 0.5f * b.x, a.y + 0.5f * b.y, a.z + 0.5f * b.z};
-            EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr) << "coplanar", kQ3ErrorDegenerateGeometry);
+            variants.emplace_back("coplanar", data);
         }
-        // The rules run in order: a value that is not finite is reported
-        // before a degenerate frame.
-        Data data = shape().sample;
-        data.*(vectors[0].member) = TQ3Vector3D{0, 0, 0};
-        (data.*(shape().origin)).y = kNaN;
-        EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr), kQ3ErrorInvalidData);
-    }
-
-    void newRejectsEmptyRanges()
-    {
         const auto& p = shape().parameters;
         for (std::size_t i = 0; i + 1 < p.size(); i += 2) {
             Data data = shape().sample;
             data.*(p[i].second) = 0.5f;
             data.*(p[i + 1].second) = 0.5f;
-            EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr) << p[i].first, kQ3ErrorDegenerateGeometry);
+            variants.emplace_back(std::string(p[i].first) + " empty range", data);
         }
+        return variants;
+    }
+
+    /// A degenerate shape draws nothing (docs/3dmf.md, Tolerances): its bounds are empty, its
+    /// decomposition holds no point, and the interactive and wireframe
+    /// renderers finish drawing it (Quesa's reading: it draws nothing).
+    void expectDrawsNothing(TQ3GeometryObject geometry, const std::string& what)
+    {
+        const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
+            EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success) << what;
+            TQ3GeometryObject result = Q3Geometry_GetDecomposed(geometry, v);
+            ASSERT_NE(result, nullptr) << what;
+            EXPECT_EQ(Q3Geometry_GetType(result), kQ3GeometryTypeTriMesh) << what;
+            TQ3TriMeshData mesh{};
+            EXPECT_EQ(Q3TriMesh_GetData(result, &mesh), kQ3Success);
+            EXPECT_EQ(mesh.numPoints, 0u) << what;
+            EXPECT_EQ(mesh.numTriangles, 0u) << what;
+            Q3TriMesh_EmptyData(&mesh);
+            Q3Object_Dispose(result);
+        });
+        EXPECT_EQ(box.isEmpty, kQ3True) << what;
+        for (TQ3ObjectType renderer : {kQ3RendererTypeInteractive, kQ3RendererTypeWireFrame}) {
+            Pixmap image(64, 48);
+            TestView drawing(image.pixmap(), renderer);
+            EXPECT_EQ(drawing.render([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success); }),
+                      kQ3ViewStatusDone)
+                << what;
+            for (unsigned long y = 0; y < image.height(); ++y)
+                for (unsigned long x = 0; x < image.width(); ++x)
+                    EXPECT_FALSE(image.lit(x, y)) << what << " lights pixel " << x << ", " << y;
+        }
+    }
+
+    /// An ellipse whose radii are zero or parallel is a segment (or a
+    /// point): a curve needs no normal, so it is drawn, with finite points
+    /// and finite bounds.
+    void expectDrawsASegment(TQ3GeometryObject geometry, const std::string& what)
+    {
+        const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
+            EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success) << what;
+            TQ3GeometryObject result = Q3Geometry_GetDecomposed(geometry, v);
+            ASSERT_NE(result, nullptr) << what;
+            ASSERT_EQ(Q3Geometry_GetType(result), kQ3GeometryTypePolyLine) << what;
+            TQ3PolyLineData line{};
+            EXPECT_EQ(Q3PolyLine_GetData(result, &line), kQ3Success);
+            EXPECT_GE(line.numVertices, 2u) << what;
+            for (unsigned long i = 0; i < line.numVertices; ++i) {
+                const TQ3Point3D& p = line.vertices[i].point;
+                EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) << what;
+            }
+            Q3PolyLine_EmptyData(&line);
+            Q3Object_Dispose(result);
+        });
+        ASSERT_EQ(box.isEmpty, kQ3False) << what;
+        for (float c : {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z})
+            EXPECT_TRUE(std::isfinite(c)) << what;
+        for (TQ3ObjectType renderer : {kQ3RendererTypeInteractive, kQ3RendererTypeWireFrame}) {
+            Pixmap image(64, 48);
+            TestView drawing(image.pixmap(), renderer);
+            EXPECT_EQ(drawing.render([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success); }),
+                      kQ3ViewStatusDone)
+                << what;
+        }
+    }
+
+    /// What a degenerate variant draws: nothing, but for an ellipse's
+    /// dependent radii (`frame`), its segment.
+    void expectDegenerateDrawing(TQ3GeometryObject geometry, const std::string& what, bool frame)
+    {
+        if (shape().curve && frame)
+            expectDrawsASegment(geometry, what);
+        else
+            expectDrawsNothing(geometry, what);
+    }
+
+    void degenerateShapesAreKeptWithAWarningAndDrawnSafely()
+    {
+        for (const auto& variant : degenerateVariants()) {
+            const std::string& what = variant.first;
+            const Data& data = variant.second;
+            TQ3GeometryObject geometry = nullptr;
+            EXPECT_Q3_WARNING(geometry = shape().create(&data), kQ3WarningInconsistentData);
+            ASSERT_NE(geometry, nullptr) << what;
+            own(geometry);
+            Data out = dataOf(geometry);
+            EXPECT_TRUE(same(out, data)) << what << ": GetData gives the data back unchanged";
+            shape().emptyData(&out);
+            const bool frame = what.find("range") == std::string::npos;
+            expectDegenerateDrawing(geometry, what, frame);
+            // Immediate mode posts the warning at each submit.
+            const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
+                EXPECT_Q3_WARNING(EXPECT_EQ(shape().submit(&data, v), kQ3Success) << what,
+                                  kQ3WarningInconsistentData);
+            });
+            EXPECT_EQ(box.isEmpty, shape().curve && frame ? kQ3False : kQ3True) << what;
+        }
+        // The rules run in order, and a refused call posts its error alone: a
+        // value that is not finite is reported, with no warning for the frame.
+        Data data = shape().sample;
+        data.*(shape().vectors[0].member) = TQ3Vector3D{0, 0, 0};
+        (data.*(shape().origin)).y = kNaN;
+        EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr), kQ3ErrorInvalidData);
     }
 
     void newRejectsBadAttributeSetsAfterTheOtherRules()
@@ -259,8 +352,9 @@ protected:
             EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr) << set.name, kQ3ErrorInvalidObjectType);
             data.*(set.member) = stray();
             EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr) << set.name, kQ3ErrorInvalidObject);
+            // A degenerate shape refused for its set posts the error alone.
             data.*(shape().vectors[0].member) = TQ3Vector3D{0, 0, 0};
-            EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr) << set.name, kQ3ErrorDegenerateGeometry);
+            EXPECT_Q3_ERROR(EXPECT_EQ(shape().create(&data), nullptr) << set.name, kQ3ErrorInvalidObject);
         }
     }
 
@@ -305,13 +399,28 @@ protected:
         bad.*(shape().vectors[0].member) = TQ3Vector3D{0, kInf, 0};
         EXPECT_Q3_ERROR(EXPECT_EQ(shape().setData(geometry, &bad), kQ3Failure), kQ3ErrorInvalidData);
         bad = shape().sample;
-        bad.*(shape().vectors[0].member) = TQ3Vector3D{0, 0, 0};
-        EXPECT_Q3_ERROR(EXPECT_EQ(shape().setData(geometry, &bad), kQ3Failure), kQ3ErrorDegenerateGeometry);
-        bad = shape().sample;
         bad.*(shape().own) = stray();
+        EXPECT_Q3_ERROR(EXPECT_EQ(shape().setData(geometry, &bad), kQ3Failure), kQ3ErrorInvalidObject);
+        bad.*(shape().vectors[0].member) = TQ3Vector3D{0, 0, 0};
         EXPECT_Q3_ERROR(EXPECT_EQ(shape().setData(geometry, &bad), kQ3Failure), kQ3ErrorInvalidObject);
         expectUnchanged(geometry, state, "SetData");
         shape().emptyData(&state.data);
+
+        // A degenerate shape is taken with the warning, kept as given, and
+        // drawn as nothing; valid data afterwards draws again.
+        Data flat = shape().sample;
+        flat.*(shape().vectors[0].member) = TQ3Vector3D{0, 0, 0};
+        const unsigned long beforeFlat = Q3Shared_GetEditIndex(geometry);
+        EXPECT_Q3_WARNING(EXPECT_EQ(shape().setData(geometry, &flat), kQ3Success), kQ3WarningInconsistentData);
+        EXPECT_NE(Q3Shared_GetEditIndex(geometry), beforeFlat);
+        out = dataOf(geometry);
+        EXPECT_TRUE(same(out, flat));
+        shape().emptyData(&out);
+        expectDegenerateDrawing(geometry, "SetData", true);
+        ASSERT_EQ(shape().setData(geometry, &shape().sample), kQ3Success);
+        TQ3BoundingBox box{};
+        EXPECT_FALSE(decomposedPoints(geometry, box).empty());
+        EXPECT_EQ(box.isEmpty, kQ3False);
     }
 
     void dataCallsRejectBadArguments()
@@ -399,19 +508,26 @@ protected:
                     (&w.x)[axis] = bad;
                     EXPECT_Q3_ERROR(EXPECT_EQ(v.set(geometry, &w), kQ3Failure) << v.name, kQ3ErrorInvalidData);
                 }
+            expectUnchanged(geometry, vectorState, v.name);
+            shape().emptyData(&vectorState.data);
+
+            // A zero or parallel vector is taken with the warning, as SetData
+            // takes it, and read back as given.
             const TQ3Vector3D zero{0, 0, 0};
-            EXPECT_Q3_ERROR(EXPECT_EQ(v.set(geometry, &zero), kQ3Failure) << v.name, kQ3ErrorDegenerateGeometry);
+            EXPECT_Q3_WARNING(EXPECT_EQ(v.set(geometry, &zero), kQ3Success) << v.name, kQ3WarningInconsistentData);
+            ASSERT_EQ(v.get(geometry, &got), kQ3Success);
+            EXPECT_EQ(std::memcmp(&got, &zero, sizeof got), 0) << v.name;
+            ASSERT_EQ(v.set(geometry, &scaled), kQ3Success);
             for (const VectorAccess<Data>& other : shape().vectors) {
                 if (other.member == v.member)
                     continue;
                 TQ3Vector3D parallel{};
                 other.get(geometry, &parallel);
-                EXPECT_Q3_ERROR(EXPECT_EQ(v.set(geometry, &parallel), kQ3Failure)
-                                    << v.name << " parallel to " << other.name,
-                                kQ3ErrorDegenerateGeometry);
+                EXPECT_Q3_WARNING(EXPECT_EQ(v.set(geometry, &parallel), kQ3Success)
+                                      << v.name << " parallel to " << other.name,
+                                  kQ3WarningInconsistentData);
+                ASSERT_EQ(v.set(geometry, &scaled), kQ3Success);
             }
-            expectUnchanged(geometry, vectorState, v.name);
-            shape().emptyData(&vectorState.data);
         }
     }
 
@@ -503,12 +619,14 @@ protected:
             EXPECT_Q3_ERROR(EXPECT_EQ(shape().submit(&bad, v), kQ3Failure), kQ3ErrorInvalidData);
             bad = data;
             bad.*(shape().vectors[0].member) = TQ3Vector3D{0, 0, 0};
-            EXPECT_Q3_ERROR(EXPECT_EQ(shape().submit(&bad, v), kQ3Failure), kQ3ErrorDegenerateGeometry);
+            EXPECT_Q3_WARNING(EXPECT_EQ(shape().submit(&bad, v), kQ3Success), kQ3WarningInconsistentData);
             bad = data;
             bad.*(shape().own) = v;
             EXPECT_Q3_ERROR(EXPECT_EQ(shape().submit(&bad, v), kQ3Failure), kQ3ErrorInvalidObjectType);
         });
-        EXPECT_EQ(box.isEmpty, kQ3True);
+        // Nothing was drawn but the degenerate shape, which is nothing (an
+        // ellipse's segment is something).
+        EXPECT_EQ(box.isEmpty, shape().curve ? kQ3False : kQ3True);
     }
 
     /// The points Q3 draws for a geometry in a bounding loop (world space
@@ -616,13 +734,9 @@ protected:
     {                                                                                                                  \
         newRejectsParametersOutsideZeroToOne();                                                                        \
     }                                                                                                                  \
-    TEST_F(Fixture, NewRejectsDegenerateFramesAfterNonFiniteValues)                                                    \
+    TEST_F(Fixture, DegenerateShapesAreKeptWithAWarningAndDrawnSafely)                                                 \
     {                                                                                                                  \
-        newRejectsDegenerateFrames();                                                                                  \
-    }                                                                                                                  \
-    TEST_F(Fixture, NewRejectsEmptyRanges)                                                                             \
-    {                                                                                                                  \
-        newRejectsEmptyRanges();                                                                                       \
+        degenerateShapesAreKeptWithAWarningAndDrawnSafely();                                                           \
     }                                                                                                                  \
     TEST_F(Fixture, NewRejectsBadAttributeSetsAfterTheOtherRules)                                                      \
     {                                                                                                                  \

@@ -38,7 +38,7 @@ struct TorusTraits {
 using TorusApiTest = QuadricApiTest<TorusTraits>;
 Q3_QUADRIC_API_TESTS(TorusApiTest)
 
-TEST_F(TorusApiTest, RatioReadsBackAndMustBePositiveAndFinite)
+TEST_F(TorusApiTest, RatioReadsBackAndMustBeFiniteAndNotNegative)
 {
     TQ3GeometryObject torus = make(shape().sample);
     float ratio = 0;
@@ -50,8 +50,15 @@ TEST_F(TorusApiTest, RatioReadsBackAndMustBePositiveAndFinite)
     ASSERT_EQ(Q3Torus_GetRatio(torus, &ratio), kQ3Success);
     EXPECT_EQ(ratio, 0.5f);
     State state = stateOf(torus);
-    for (float bad : {0.0f, -1.0f, kNaN, kInf, -kInf})
+    for (float bad : {-1.0f, -0.0001f, kNaN, kInf, -kInf})
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_SetRatio(torus, bad), kQ3Failure), kQ3ErrorInvalidData);
+    // Zero is degenerate, not malformed: taken with the warning, read back.
+    TQ3GeometryObject ring = make(shape().sample);
+    EXPECT_Q3_WARNING(EXPECT_EQ(Q3Torus_SetRatio(ring, 0), kQ3Success), kQ3WarningInconsistentData);
+    float zero = 1;
+    ASSERT_EQ(Q3Torus_GetRatio(ring, &zero), kQ3Success);
+    EXPECT_EQ(zero, 0.0f);
+    expectDrawsNothing(ring, "SetRatio 0");
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_SetRatio(nullptr, 1), kQ3Failure), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_SetRatio(wrongClass(), 1), kQ3Failure), kQ3ErrorInvalidObjectType);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_SetRatio(disposed(), 1), kQ3Failure), kQ3ErrorInvalidObject);
@@ -61,8 +68,15 @@ TEST_F(TorusApiTest, RatioReadsBackAndMustBePositiveAndFinite)
     expectUnchanged(torus, state, "SetRatio");
     Q3Torus_EmptyData(&state.data);
     Data data = shape().sample;
-    data.ratio = 0;
+    data.ratio = -0.5f;
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_New(&data), nullptr), kQ3ErrorInvalidData);
+    // A ratio of 0 (a tube with no thickness) is kept with the warning and
+    // draws nothing (docs/3dmf.md, Tolerances).
+    data.ratio = 0;
+    TQ3GeometryObject thin = nullptr;
+    EXPECT_Q3_WARNING(thin = make(data), kQ3WarningInconsistentData);
+    ASSERT_NE(thin, nullptr);
+    expectDrawsNothing(thin, "ratio 0");
 }
 
 TEST_F(TorusApiTest, BothRangesAreAnglesThatMayWrap)
@@ -79,7 +93,8 @@ TEST_F(TorusApiTest, BothRangesAreAnglesThatMayWrap)
     EXPECT_FALSE(decomposedPoints(torus, box).empty());
     data.vMin = 1;
     data.vMax = 0;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Torus_New(&data), nullptr), kQ3ErrorDegenerateGeometry);
+    // No angle: kept with the warning (docs/3dmf.md, Tolerances).
+    EXPECT_Q3_WARNING(EXPECT_NE(make(data), nullptr), kQ3WarningInconsistentData);
 }
 
 } // namespace

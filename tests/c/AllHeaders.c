@@ -199,11 +199,28 @@ int main(void)
         memset(&ellipse, 0, sizeof ellipse);
         memset(&ellipsoid, 0, sizeof ellipsoid);
         memset(&torus, 0, sizeof torus);
-        if (Q3Box_New(&box) != NULL || Q3Error_Get(NULL) != kQ3ErrorDegenerateGeometry ||
-            Q3Cone_New(&cone) != NULL || Q3Cylinder_New(&cylinder) != NULL || Q3Disk_New(&disk) != NULL ||
-            Q3Ellipse_New(&ellipse) != NULL || Q3Ellipsoid_New(&ellipsoid) != NULL ||
-            Q3Torus_New(&torus) != NULL || Q3Torus_SetRatio(NULL, 1.0f) != kQ3Failure ||
-            Q3Box_GetFaceAttributeSet(NULL, 0, NULL) != kQ3Failure ||
+        /* All zeros: vectors that span nothing and empty ranges, which
+           QuickDraw 3D keeps (drawing nothing); Q3 keeps them with
+           kQ3WarningInconsistentData (docs/3dmf.md, Tolerances). */
+        TQ3GeometryObject made[7];
+        int k;
+        made[0] = Q3Box_New(&box);
+        if (Q3Warning_Get(NULL) != kQ3WarningInconsistentData)
+            return 13;
+        made[1] = Q3Cone_New(&cone);
+        made[2] = Q3Cylinder_New(&cylinder);
+        made[3] = Q3Disk_New(&disk);
+        made[4] = Q3Ellipse_New(&ellipse);
+        made[5] = Q3Ellipsoid_New(&ellipsoid);
+        made[6] = Q3Torus_New(&torus);
+        if (Q3Warning_Get(NULL) != kQ3WarningInconsistentData)
+            return 13;
+        for (k = 0; k < 7; ++k) {
+            if (made[k] == NULL)
+                return 13;
+            Q3Object_Dispose(made[k]);
+        }
+        if (Q3Torus_SetRatio(NULL, 1.0f) != kQ3Failure || Q3Box_GetFaceAttributeSet(NULL, 0, NULL) != kQ3Failure ||
             kQ3SubdivisionMaxTrianglesPerSurface < 1)
             return 13;
     }
