@@ -325,7 +325,7 @@ TEST_F(FileContentTest, BytesAfterTheLastObjectAreIgnoredWithAWarning)
     std::vector<unsigned char> cut = bytes;
     const unsigned char truncated[] = {'t', 'r', 'n', 'g', 0, 0, 0, 36, 0, 0};
     cut.insert(cut.end(), std::begin(truncated), std::end(truncated));
-    EXPECT_Q3_ERROR(EXPECT_EQ(openBytes(cut), nullptr), kQ3ErrorInvalidMetafile);
+    EXPECT_READ_ERROR(cut, kQ3ErrorInvalidMetafile);
 }
 
 TEST_F(FileContentTest, UnknownElementsInAttributeSetsAreKeptAndWrittenBack)
