@@ -83,6 +83,14 @@ Q3_UPDATE_GOLDENS=1 ctest --test-dir "$sample/copy-build" -V -R '^curves$' > "$s
 grep -q "Q3_UPDATE_GOLDENS=1: re-blessed" "$sample/bless.log"
 cmp -s "$sample/copy-build/curves.png" "$sample/copy/golden/curves.png"
 ctest --test-dir "$sample/copy-build" --output-on-failure > /dev/null
+# A missing golden fails, saying how to create it; Q3_UPDATE_GOLDENS=1 creates it.
+rm "$sample/copy/golden/lit_trimesh.png"
+if ctest --test-dir "$sample/copy-build" --output-on-failure -R '^lit_trimesh$' > "$sample/missing.log" 2>&1; then
+    echo "a missing golden passed"; exit 1
+fi
+grep -q "is missing" "$sample/missing.log"
+Q3_UPDATE_GOLDENS=1 ctest --test-dir "$sample/copy-build" -R '^lit_trimesh$' > /dev/null
+cmp -s "$sample/copy-build/lit_trimesh.png" "$sample/copy/golden/lit_trimesh.png"
 # The committed golden was never touched.
 "$prefix/bin/q3compare" "$source_dir/samples/golden-test/golden/curves.png" "$sample/build/curves.png"
 echo "install check OK"
