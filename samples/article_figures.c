@@ -14,7 +14,7 @@
 #include "QD3D.h"
 #include "QD3DErrors.h"
 #include "figures.h"
-#include "q3png.h"
+#include "q3sample_png.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -152,9 +152,9 @@ int main(int argc, char **argv)
             failures++;
             continue;
         }
-        result = q3png_write_rgba8(path, rgba, Q3FIG_WIDTH, Q3FIG_HEIGHT, Q3FIG_WIDTH * 4);
-        if (result != Q3PNG_OK) {
-            fprintf(stderr, "article_figures: %s: %s\n", path, q3png_error_string(result));
+        result = q3sample_write_png(path, rgba, Q3FIG_WIDTH, Q3FIG_HEIGHT);
+        if (result != kQ3Success) {
+            fprintf(stderr, "article_figures: %s: %s\n", path, Q3Error_GetMessage());
             failures++;
             continue;
         }

@@ -12,7 +12,7 @@
 #include "QD3D.h"
 #include "QD3DErrors.h"
 #include "gallery.h"
-#include "q3png.h"
+#include "q3sample_png.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -53,9 +53,9 @@ int main(int argc, char **argv)
                 continue;
             }
             snprintf(path, sizeof path, "%s/%s_%s.png", argv[1], q3gallery_name(i), lit ? "lit" : "wireframe");
-            written = q3png_write_rgba8(path, rgba, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT, Q3GALLERY_WIDTH * 4);
-            if (written != Q3PNG_OK) {
-                fprintf(stderr, "geometries: %s: %s\n", path, q3png_error_string(written));
+            written = q3sample_write_png(path, rgba, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT);
+            if (written != kQ3Success) {
+                fprintf(stderr, "geometries: %s: %s\n", path, Q3Error_GetMessage());
                 failures++;
             }
         }

@@ -13,7 +13,7 @@
 #include "QD3DGeometry.h"
 #include "QD3DView.h"
 #include "figures.h"
-#include "q3png.h"
+#include "q3sample_png.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -50,12 +50,12 @@ int main(int argc, char **argv)
     run_listing1(canvas.view);
     q3fig_canvas_rgba(&canvas, rgba);
     q3fig_canvas_close(&canvas);
-    Q3Exit();
 
-    result = q3png_write_rgba8(path, rgba, (int)width, (int)height, (int)width * 4);
+    result = q3sample_write_png(path, rgba, width, height);
     free(rgba);
-    if (result != Q3PNG_OK) {
-        fprintf(stderr, "listing1: %s: %s\n", path, q3png_error_string(result));
+    Q3Exit();
+    if (result != kQ3Success) {
+        fprintf(stderr, "listing1: %s: %s\n", path, Q3Error_GetMessage());
         return 1;
     }
     printf("listing1: wrote %s\n", path);

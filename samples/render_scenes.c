@@ -11,7 +11,7 @@
 
 #include "QD3D.h"
 #include "QD3DErrors.h"
-#include "q3png.h"
+#include "q3sample_png.h"
 #include "lit_scenes.h"
 #include "scenes.h"
 
@@ -39,9 +39,9 @@ static int write_scene(const char *outdir, FILE *index, const Q3Scene *scene, in
         return 1;
     }
     snprintf(path, sizeof path, "%s/%s.png", outdir, scene->name);
-    written = q3png_write_rgba8(path, rgba, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, Q3SCENE_WIDTH * 4);
-    if (written != Q3PNG_OK) {
-        fprintf(stderr, "render_scenes: %s: %s\n", path, q3png_error_string(written));
+    written = q3sample_write_png(path, rgba, Q3SCENE_WIDTH, Q3SCENE_HEIGHT);
+    if (written != kQ3Success) {
+        fprintf(stderr, "render_scenes: %s: %s\n", path, Q3Error_GetMessage());
         return 1;
     }
     fprintf(index, "\n## %s\n\n%s.\n\n![%s](%s.png)\n", scene->name, scene->caption, scene->name, scene->name);

@@ -3,7 +3,7 @@
 # Copyright (c) 2026 The Q3 authors
 #
 # Installs what is missing, builds Q3 and runs every test: the Release suite,
-# the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the
+# its golden-image tests again at llvmpipe's baseline SIMD width, the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the
 # thread test under ThreadSanitizer, and a bounded libFuzzer run.
 # Build trees: build/, build-asan/, build-tsan/, build-fuzz/ (all ignored by git).
 set -euo pipefail
@@ -16,6 +16,25 @@ echo "== Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"
 ctest --test-dir build -j"$jobs" --output-on-failure --timeout 300
+
+echo "== Golden images again, llvmpipe forced to its baseline SIMD width"
+# The goldens must not depend on the host's SIMD level (docs/golden-testing.md):
+# the Release run above used the host's (AVX2 where the CPU has it); this one
+# makes llvmpipe generate 128-bit (SSE-width) code. Mesa 22.3 reads
+# LP_NATIVE_VECTOR_WIDTH; it has no LP_FORCE_SSE2, and its
+# GALLIUM_OVERRIDE_CPU_CAPS (nosse only) is unset by Q3. Only the tests
+# labelled golden run (a few seconds).
+# On a CPU with AVX-512, Mesa 22.3's llvmpipe at 128-bit vectors corrupts the
+# heap drawing the Phong-lit textured patch (malloc aborts inside OSMesa's
+# flush; the 256-bit default draws it right, and under valgrind, which has no
+# AVX-512, it passes with no error): that test is left out there until Mesa
+# is fixed (docs/golden-testing.md, "Known problem").
+baseline_skip=()
+if grep -qw avx512f /proc/cpuinfo 2> /dev/null; then
+  baseline_skip=(-E '^TextureGoldenTest\.PatchLitPerVertexWithPhongHighlights$')
+fi
+LP_NATIVE_VECTOR_WIDTH=128 ctest --test-dir build -j"$jobs" --output-on-failure --timeout 300 \
+  --no-tests=error -L '^golden$' "${baseline_skip[@]}"
 
 # Sanitizer runtime settings shared by the stages below. Leaks are errors;
 # the only suppressed ones are Mesa's own (tests/sanitizers/lsan.supp says

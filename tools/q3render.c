@@ -54,7 +54,6 @@
  * cannot be drawn or the image cannot be written. */
 
 #include "q3load.h"
-#include "q3png.h"
 
 #include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
@@ -65,6 +64,7 @@
 #include "QD3DShader.h"
 #include "QD3DStyle.h"
 #include "QD3DView.h"
+#include "Q3PixmapPNG.h"
 
 #include <math.h>
 #include <string.h>
@@ -296,7 +296,6 @@ int main(int argc, char **argv)
         TQ3StyleObject style = Q3SubdivisionStyle_New(&subdivision);
         TQ3ShaderObject illumination = unlit ? Q3NULLIllumination_New() : Q3PhongIllumination_New();
         unsigned char *argb = (unsigned char *)calloc(width * height, 4);
-        unsigned char *rgba = (unsigned char *)calloc(width * height, 4);
         TQ3PixmapDrawContextData contextData;
         TQ3DrawContextObject context;
         TQ3ViewAngleAspectCameraData cameraData;
@@ -392,7 +391,7 @@ int main(int argc, char **argv)
         else
             lights = defaultLights(&viewDirection);
 
-        if (argb == NULL || rgba == NULL || context == NULL || camera == NULL || illumination == NULL ||
+        if (argb == NULL || context == NULL || camera == NULL || illumination == NULL ||
             Q3View_SetDrawContext(view, context) != kQ3Success || Q3View_SetCamera(view, camera) != kQ3Success ||
             Q3View_SetRendererByType(view, renderer) != kQ3Success ||
             Q3View_SetLightGroup(view, lights) != kQ3Success || Q3View_StartRendering(view) != kQ3Success) {
@@ -409,21 +408,17 @@ int main(int argc, char **argv)
                 fprintf(stderr, "cannot draw %s: %s\n", in, Q3Error_GetMessage());
                 status = 3;
             } else {
+                /* The picture is opaque whatever the clear colour's alpha. */
                 unsigned long p;
-                for (p = 0; p < width * height; ++p) {
-                    rgba[4 * p + 0] = argb[4 * p + 1];
-                    rgba[4 * p + 1] = argb[4 * p + 2];
-                    rgba[4 * p + 2] = argb[4 * p + 3];
-                    rgba[4 * p + 3] = 255;
-                }
-                if (q3png_write_rgba8(out, rgba, (int)width, (int)height, (int)width * 4) != 0) {
-                    fprintf(stderr, "cannot write %s\n", out);
+                for (p = 0; p < width * height; ++p)
+                    argb[4 * p] = 255;
+                if (Q3PixmapDrawContext_WritePNG(context, out) != kQ3Success) {
+                    fprintf(stderr, "cannot write %s: %s\n", out, Q3Error_GetMessage());
                     status = 3;
                 }
             }
         }
         free(argb);
-        free(rgba);
         Q3Object_Dispose(lights);
         if (hintsCamera != NULL)
             Q3Object_Dispose(hintsCamera);

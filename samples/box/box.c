@@ -11,7 +11,7 @@
 #include "QD3D.h"
 #include "QD3DErrors.h"
 #include "box_document.h"
-#include "q3png.h"
+#include "q3sample_png.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -61,9 +61,9 @@ int main(int argc, char **argv)
             continue;
         }
         snprintf(path, sizeof path, "%s/box_frame_%lu.png", argv[1], frame);
-        written = q3png_write_rgba8(path, rgba, kWidth, kHeight, kWidth * 4);
-        if (written != Q3PNG_OK) {
-            fprintf(stderr, "box: %s: %s\n", path, q3png_error_string(written));
+        written = q3sample_write_png(path, rgba, kWidth, kHeight);
+        if (written != kQ3Success) {
+            fprintf(stderr, "box: %s: %s\n", path, Q3Error_GetMessage());
             failures++;
         }
     }

@@ -21,7 +21,7 @@
 #include "QD3D.h"
 #include "QD3DErrors.h"
 #include "figures.h"
-#include "q3png.h"
+#include "q3sample_png.h"
 #include "tool_figures.h"
 
 #include <errno.h>
@@ -55,9 +55,9 @@ static int write_figure(const Q3Figure *figure, const char *outDir, const char *
         fprintf(stderr, "curve_tools: rendering %s failed\n", file);
         return 1;
     }
-    result = q3png_write_rgba8(path, rgba, Q3FIG_WIDTH, Q3FIG_HEIGHT, Q3FIG_WIDTH * 4);
-    if (result != Q3PNG_OK) {
-        fprintf(stderr, "curve_tools: %s: %s\n", path, q3png_error_string(result));
+    result = q3sample_write_png(path, rgba, Q3FIG_WIDTH, Q3FIG_HEIGHT);
+    if (result != kQ3Success) {
+        fprintf(stderr, "curve_tools: %s: %s\n", path, Q3Error_GetMessage());
         return 1;
     }
     printf("wrote %s\n", path);

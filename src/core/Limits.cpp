@@ -9,6 +9,7 @@
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
 #include "QD3DStyle.h"
+#include "Q3PixmapPNG.h"
 
 namespace q3::limits {
 
@@ -27,6 +28,7 @@ static_assert(kViewSegmentsPerPixel == kQ3SubdivisionViewSegmentsPerPixel,
               "QD3DStyle.h documents kViewSegmentsPerPixel");
 static_assert(kMinScreenSpaceC1 == kQ3SubdivisionMinScreenSpaceC1, "QD3DStyle.h documents kMinScreenSpaceC1");
 static_assert(kMaxGroupNesting == kQ3GroupMaxNesting, "QD3DGroup.h documents kMaxGroupNesting");
+static_assert(kMaxPngPixels == kQ3PixmapPNGMaxPixels, "Q3PixmapPNG.h documents kMaxPngPixels");
 static_assert(kSubdivisionDefault == kQ3SubdivisionDefaultC1, "QD3DStyle.h documents kSubdivisionDefault");
 
 } // namespace q3::limits

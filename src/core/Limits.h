@@ -55,6 +55,10 @@ constexpr std::uint32_t kMaxConstantSegments = 1024;
 /// duplicated: kQ3GroupMaxNesting.
 constexpr std::size_t kMaxGroupNesting = 256;
 
+/// The most pixels of a PNG file Q3Pixmap_ReadPNG reads: 16384 x 16384, the
+/// largest image Q3 renders (kQ3PixmapPNGMaxPixels).
+constexpr std::uint64_t kMaxPngPixels = std::uint64_t{1} << 28;
+
 /// The most bytes a memory storage grows to, and a metafile Q3 reads or
 /// writes (2 GiB - 1): past it a storage refuses to grow and a reader refuses
 /// the file, so a corrupt size never allocates without bound.

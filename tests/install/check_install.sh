@@ -4,7 +4,11 @@
 #
 # Installs the build tree into a scratch prefix, then builds a C program from
 # outside the tree twice: with pkg-config (as legacy makefiles do) and with
-# find_package(Q3 CONFIG), and runs both.
+# find_package(Q3 CONFIG), and runs both. Then builds samples/golden-test (an
+# outside project with two golden-image tests, q3_add_golden_test) against
+# the prefix and runs its tests; on a copy of it, checks that a wrong golden
+# fails with the actual and diff pictures written and named, and that
+# Q3_UPDATE_GOLDENS=1 re-blesses it.
 set -euo pipefail
 build_dir="$1"
 source_dir="$2"
@@ -23,6 +27,8 @@ test -s "$prefix/scene.png"
 # Their man pages, where man looks for them.
 test -f "$prefix/share/man/man1/q3render.1"
 test -f "$prefix/share/man/man1/q3convert.1"
+test -f "$prefix/share/man/man1/q3compare.1"
+"$prefix/bin/q3compare" "$prefix/scene.png" "$prefix/scene.png"
 
 cc -std=c99 -Wall -Werror "$source_dir/tests/install/outside.c" -o "$prefix/outside" \
    $(pkg-config --cflags --libs q3)
@@ -39,3 +45,52 @@ CMAKE
 cmake -S "$prefix/cmake-consumer" -B "$prefix/cmake-consumer/build" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
 cmake --build "$prefix/cmake-consumer/build" > /dev/null
 "$prefix/cmake-consumer/build/outside"
+
+# ---- samples/golden-test, as its README says to build it.
+sample="$prefix/golden-test"
+cmake -S "$source_dir/samples/golden-test" -B "$sample/build" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+cmake --build "$sample/build" > /dev/null
+ctest --test-dir "$sample/build" --output-on-failure > "$sample/pass.log" || { cat "$sample/pass.log"; exit 1; }
+grep -q "100% tests passed, 0 tests failed out of 2" "$sample/pass.log"
+test "$(ctest --test-dir "$sample/build" -N -L q3-golden | grep -c 'Test *#')" = 2
+
+# A copy whose curves golden is wrong (the TriMesh's picture): the test fails,
+# keeps the actual and the diff, and names both.
+cp -R "$source_dir/samples/golden-test" "$sample/copy"
+cp "$source_dir/samples/golden-test/golden/lit_trimesh.png" "$sample/copy/golden/curves.png"
+cmake -S "$sample/copy" -B "$sample/copy-build" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+cmake --build "$sample/copy-build" > /dev/null
+if ctest --test-dir "$sample/copy-build" --output-on-failure -R '^curves$' > "$sample/fail.log" 2>&1; then
+    echo "a wrong golden passed"; cat "$sample/fail.log"; exit 1
+fi
+grep -q "does not match its golden" "$sample/fail.log"
+grep -q "pixels differ by more than 0" "$sample/fail.log"
+grep -q "actual: $sample/copy-build/curves.png" "$sample/fail.log"
+grep -q "diff:   $sample/copy-build/curves.diff.png" "$sample/fail.log"
+test -s "$sample/copy-build/curves.png"
+test -s "$sample/copy-build/curves.diff.png"
+# The diff is the golden's size and shows the mismatch: q3compare tells it
+# from the golden.
+set +e
+"$prefix/bin/q3compare" "$sample/copy-build/curves.diff.png" "$sample/copy/golden/curves.png" > /dev/null
+test $? = 1 || { echo "the diff picture is not a picture of the golden's size"; exit 1; }
+set -e
+
+# Q3_UPDATE_GOLDENS=1 re-blesses: the actual is copied over the golden, the
+# test passes and says so; afterwards it passes without the switch.
+Q3_UPDATE_GOLDENS=1 ctest --test-dir "$sample/copy-build" -V -R '^curves$' > "$sample/bless.log" 2>&1 ||
+    { cat "$sample/bless.log"; exit 1; }
+grep -q "Q3_UPDATE_GOLDENS=1: re-blessed" "$sample/bless.log"
+cmp -s "$sample/copy-build/curves.png" "$sample/copy/golden/curves.png"
+ctest --test-dir "$sample/copy-build" --output-on-failure > /dev/null
+# A missing golden fails, saying how to create it; Q3_UPDATE_GOLDENS=1 creates it.
+rm "$sample/copy/golden/lit_trimesh.png"
+if ctest --test-dir "$sample/copy-build" --output-on-failure -R '^lit_trimesh$' > "$sample/missing.log" 2>&1; then
+    echo "a missing golden passed"; exit 1
+fi
+grep -q "is missing" "$sample/missing.log"
+Q3_UPDATE_GOLDENS=1 ctest --test-dir "$sample/copy-build" -R '^lit_trimesh$' > /dev/null
+cmp -s "$sample/copy-build/lit_trimesh.png" "$sample/copy/golden/lit_trimesh.png"
+# The committed golden was never touched.
+"$prefix/bin/q3compare" "$source_dir/samples/golden-test/golden/curves.png" "$sample/build/curves.png"
+echo "install check OK"

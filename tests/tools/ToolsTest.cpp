@@ -502,10 +502,14 @@ TEST_P(ManPage, ExistsFormatsWithoutWarningsAndNamesEveryOptionOfHelp)
     for (const std::string& option : options)
         EXPECT_NE(text.find(option), std::string::npos) << option << " is in --help but not in " << page;
     // The exit statuses --help documents (those main returns), each in the page.
-    for (const char* status : {"0 done", "1 bad arguments", "2 the", "3 "})
+    const bool compare = tool == "q3compare";
+    const std::vector<std::string> helpStatuses =
+        compare ? std::vector<std::string>{"0 match", "1 mismatch", "2 error"}
+                : std::vector<std::string>{"0 done", "1 bad arguments", "2 the", "3 "};
+    for (const std::string& status : helpStatuses)
         EXPECT_NE(help.find(status), std::string::npos) << status;
-    for (const char* status : {".B 0\n", ".B 1\n", ".B 2\n", ".B 3\n"})
-        EXPECT_NE(roff.find(status), std::string::npos) << status;
+    for (std::size_t status = 0; status < helpStatuses.size(); ++status)
+        EXPECT_NE(roff.find(".B " + std::to_string(status) + "\n"), std::string::npos) << status;
     if (!haveProgram("groff")) {
         GTEST_SKIP() << "groff is not installed: the page's formatting is not checked";
     }
@@ -522,7 +526,8 @@ TEST_P(ManPage, ExistsFormatsWithoutWarningsAndNamesEveryOptionOfHelp)
 
 INSTANTIATE_TEST_SUITE_P(Tools, ManPage,
                          ::testing::Values(std::make_pair("q3render", Q3_RENDER_TOOL),
-                                           std::make_pair("q3convert", Q3_CONVERT_TOOL)),
+                                           std::make_pair("q3convert", Q3_CONVERT_TOOL),
+                                           std::make_pair("q3compare", Q3_COMPARE_TOOL)),
                          [](const auto& info) { return std::string(info.param.first); });
 
 namespace {

@@ -1,0 +1,162 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+
+/*
+ * A 1990s-style QuickDraw 3D program (declarations first, Apple's headers by
+ * their own names, every status checked) that saves what it drew with the
+ * Q3 extension of Q3PixmapPNG.h, as a golden-image test does: it draws the
+ * article's Listing 1 curve into a 16-bit 5-6-5 little-endian pixmap,
+ * writes the draw context's image to a PNG file, reads the file back into a
+ * new pixmap of the same type and compares the two byte for byte, then
+ * checks that a bad call fails through the error manager. The file goes to
+ * argv[1] (a scratch folder). Returns 0 when every call did what
+ * Q3PixmapPNG.h promises.
+ */
+#include <QD3D.h>
+#include <QD3DCamera.h>
+#include <QD3DDrawContext.h>
+#include <QD3DErrors.h>
+#include <QD3DGeometry.h>
+#include <QD3DRenderer.h>
+#include <QD3DView.h>
+#include <Q3PixmapPNG.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define kWidth 96
+#define kHeight 64
+
+static int gFailures = 0;
+
+static void Check(TQ3Boolean ok, const char *what)
+{
+    if (!ok) {
+        printf("LegacyGolden: %s failed (error %d: %s)\n", what, (int)Q3Error_Get(NULL), Q3Error_GetMessage());
+        gFailures++;
+    }
+}
+
+#define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
+
+static unsigned short gImage[kWidth * kHeight];
+
+static TQ3ViewObject MyNewView(TQ3DrawContextObject *drawContext)
+{
+    TQ3PixmapDrawContextData contextData;
+    TQ3OrthographicCameraData cameraData;
+    TQ3ViewObject view;
+    TQ3CameraObject camera;
+    TQ3RendererObject renderer;
+
+    memset(&contextData, 0, sizeof contextData);
+    contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
+    contextData.drawContextData.clearImageColor.a = 1.0f;
+    contextData.drawContextData.paneState = kQ3False;
+    contextData.drawContextData.maskState = kQ3False;
+    contextData.drawContextData.doubleBufferState = kQ3False;
+    contextData.pixmap.image = gImage;
+    contextData.pixmap.width = kWidth;
+    contextData.pixmap.height = kHeight;
+    contextData.pixmap.rowBytes = kWidth * 2;
+    contextData.pixmap.pixelSize = 16;
+    contextData.pixmap.pixelType = kQ3PixelTypeRGB16_565;
+    contextData.pixmap.bitOrder = kQ3EndianLittle;
+    contextData.pixmap.byteOrder = kQ3EndianLittle;
+    *drawContext = Q3PixmapDrawContext_New(&contextData);
+
+    memset(&cameraData, 0, sizeof cameraData);
+    cameraData.cameraData.placement.cameraLocation.z = 10.0f;
+    cameraData.cameraData.placement.upVector.y = 1.0f;
+    cameraData.cameraData.range.hither = 1.0f;
+    cameraData.cameraData.range.yon = 100.0f;
+    cameraData.cameraData.viewPort.origin.x = -1.0f;
+    cameraData.cameraData.viewPort.origin.y = 1.0f;
+    cameraData.cameraData.viewPort.width = 2.0f;
+    cameraData.cameraData.viewPort.height = 2.0f;
+    cameraData.left = -0.5f;
+    cameraData.top = 1.5f;
+    cameraData.right = 3.5f;
+    cameraData.bottom = -0.5f;
+    camera = Q3OrthographicCamera_New(&cameraData);
+    renderer = Q3Renderer_NewFromType(kQ3RendererTypeWireFrame);
+
+    view = Q3View_New();
+    CHECK(Q3View_SetDrawContext(view, *drawContext));
+    CHECK(Q3View_SetCamera(view, camera));
+    CHECK(Q3View_SetRenderer(view, renderer));
+    Q3Object_Dispose(camera);
+    Q3Object_Dispose(renderer);
+    return view;
+}
+
+static void MyDrawListing1(TQ3ViewObject view)
+{
+    static TQ3RationalPoint4D points[4] = {{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}};
+    static float knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    TQ3NURBCurveData curveData;
+    TQ3ViewStatus status;
+
+    curveData.order = 4;
+    curveData.numPoints = 4;
+    curveData.controlPoints = points;
+    curveData.knots = knots;
+    curveData.curveAttributeSet = NULL;
+    CHECK(Q3View_StartRendering(view));
+    do {
+        CHECK(Q3NURBCurve_Submit(&curveData, view));
+        status = Q3View_EndRendering(view);
+    } while (status == kQ3ViewStatusRetraverse);
+    Check((TQ3Boolean)(status == kQ3ViewStatusDone), "Q3View_EndRendering");
+}
+
+int main(int argc, char **argv)
+{
+    char path[4096];
+    TQ3DrawContextObject drawContext = NULL;
+    TQ3ViewObject view;
+    TQ3Pixmap readBack;
+    unsigned long i, white = 0;
+
+    if (argc != 2) {
+        printf("usage: LegacyGolden SCRATCHDIR\n");
+        return 2;
+    }
+    sprintf(path, "%.4000s/legacy_golden.png", argv[1]);
+    if (Q3Initialize() != kQ3Success)
+        return 1;
+
+    view = MyNewView(&drawContext);
+    MyDrawListing1(view);
+    CHECK(Q3PixmapDrawContext_WritePNG(drawContext, path));
+
+    memset(&readBack, 0, sizeof readBack);
+    CHECK(Q3Pixmap_ReadPNG(path, kQ3PixelTypeRGB16_565, kQ3EndianLittle, &readBack));
+    Check((TQ3Boolean)(readBack.width == kWidth && readBack.height == kHeight && readBack.rowBytes == kWidth * 2 &&
+                       readBack.pixelSize == 16),
+          "the pixmap read back has the size written");
+    Check((TQ3Boolean)(readBack.image != NULL && memcmp(readBack.image, gImage, sizeof gImage) == 0),
+          "the pixmap read back has every byte drawn");
+    for (i = 0; i < kWidth * kHeight; i++)
+        white += gImage[i] == 0xFFFF;
+    Check((TQ3Boolean)(white > 0 && white < kWidth * kHeight), "the curve (QuickDraw 3D's default white) was drawn on black");
+    CHECK(Q3Pixmap_EmptyData(&readBack));
+    Check((TQ3Boolean)(readBack.image == NULL), "Q3Pixmap_EmptyData sets image to NULL");
+
+    Check((TQ3Boolean)(Q3PixmapDrawContext_WritePNG(drawContext, NULL) == kQ3Failure &&
+                       Q3Error_Get(NULL) == kQ3ErrorNULLParameter),
+          "Q3PixmapDrawContext_WritePNG(NULL path)");
+    Check((TQ3Boolean)(Q3Pixmap_ReadPNG("/nonexistent/golden.png", kQ3PixelTypeARGB32, kQ3EndianBig, &readBack) ==
+                           kQ3Failure &&
+                       Q3Error_Get(NULL) == kQ3ErrorFileNotOpen && readBack.image == NULL),
+          "Q3Pixmap_ReadPNG(missing file)");
+
+    Q3Object_Dispose(view);
+    Q3Object_Dispose(drawContext);
+    remove(path);
+    Q3Exit();
+    if (gFailures == 0)
+        printf("LegacyGolden: OK\n");
+    return gFailures == 0 ? 0 : 1;
+}
