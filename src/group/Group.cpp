@@ -104,6 +104,7 @@ void Group::copyFrom(const Group& source)
     }
     if (--depth == 0)
         copies = nullptr;
+    m_others = source.m_others;
 }
 
 bool Group::accepts(const Object& object) const

@@ -9,6 +9,7 @@
 #include <list>
 #include <optional>
 #include <unordered_set>
+#include <vector>
 
 /// The C position type. A position is a node of a group's list; the group
 /// checks that a position it is given is one of its own live nodes before
@@ -86,6 +87,11 @@ public:
     void empty(TQ3ObjectType type = kQ3ObjectTypeInvalid);
 
     const std::list<Node>& nodes() const { return m_nodes; }
+    /// Objects a file gave the group beside its state that Q3 has no class
+    /// for (an element such as Apple's name element, read as an unknown
+    /// object), in file order: kept, shared by duplicates, written back.
+    const std::vector<Ref<SharedObject>>& otherElements() const { return m_others; }
+    void addOtherElement(Ref<SharedObject> element) { m_others.push_back(std::move(element)); }
     /// Whether `object` is this group or inside it, at any depth.
     bool reaches(const Object& object) const;
 
@@ -105,6 +111,7 @@ private:
 
     std::list<Node> m_nodes;
     std::unordered_set<const OpaqueTQ3GroupPosition*> m_live;
+    std::vector<Ref<SharedObject>> m_others;
 };
 
 /// A group that may be drawn: submitting it submits its objects in order,

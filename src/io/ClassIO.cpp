@@ -262,8 +262,8 @@ Ref<SharedObject> ReadContext::build(const Node& node)
         for (std::size_t i = 1; i < node.children.size(); ++i)
             parts.subobjects.push_back(&node.children[i]);
         const ClassIO* entry = classOfType(root.type);
-        if (entry == nullptr)
-            return unknownFrom(m_file, root);
+        if (entry == nullptr) // the whole container: its subobjects belong to the unknown root
+            return unknownFrom(m_file, node);
         return entry->read(*this, parts);
     }
     const ClassIO* entry = classOfType(node.type);

@@ -71,13 +71,25 @@ Ref<SharedObject> readGroup(ReadContext& context, const Parts& parts)
 {
     Ref<G> group = makeShared<G>();
     for (const Node* node : parts.subobjects) {
-        if (node->type == kTypeGroupState)
+        if (node->type == kTypeGroupState) {
             applyGroupState(context, *group, *node);
-        else
+            continue;
+        }
+        // An element Q3 has no class for (Apple's name element in its
+        // container, say) is kept as the unknown object it reads as and
+        // written back; anything else is no part of a group.
+        Ref<SharedObject> element = context.object(*node);
+        if (element->isType(kQ3ShapeTypeUnknown)) {
+            errors::postWarning(kQ3WarningUnknownElementType,
+                                std::string("a ") + group->classInfo().name + " holds " +
+                                    (node->name.empty() ? typeName(node->type) : node->name) +
+                                    ", an element Q3 does not know; it is kept as an unknown object and written back");
+            group->addOtherElement(std::move(element));
+        } else {
             errors::postWarning(kQ3WarningInvalidSubObjectForObject,
                                 std::string("a ") + group->classInfo().name + " holds a " +
-                                    (node->name.empty() ? typeName(node->type) : node->name) +
-                                    ", which Q3 does not keep with a group; it is left out");
+                                    element->classInfo().name + ", which is no part of a group; it is left out");
+        }
     }
     return Ref<SharedObject>(std::move(group));
 }
@@ -110,6 +122,8 @@ void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type,
         out.flags(kStateFlags, flags);
         out.end();
     }
+    for (const Ref<SharedObject>& element : group.otherElements())
+        context.object(*element);
     out.end();
     out.enterGroup();
     for (const Group::Node& node : group.nodes())

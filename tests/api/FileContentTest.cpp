@@ -427,4 +427,35 @@ TEST_F(FileContentTest, ADisplayGroupThatIsNotWrittenIsLeftOutOfFiles)
     Q3Object_Dispose(shown);
 }
 
+TEST_F(FileContentTest, ElementsOfAGroupQ3DoesNotKnowAreKeptAndWrittenBack)
+{
+    // Apple's name element in a group's BeginGroup, as in Quesa's test
+    // models: kept whole (its container, with the string) and written back.
+    const std::string text = "3DMetafile ( 1 6 Normal )\n"
+                             "BeginGroup ( DisplayGroup ( ) DisplayGroupState ( Inline )\n"
+                             "  Container ( Apple Computer, Inc.:NameElement ( ) CString ( \"middle box\" ) ) )\n"
+                             "Point ( 0 0 0 )\n"
+                             "EndGroup ( )\n";
+    std::vector<TQ3Object> objects;
+    EXPECT_Q3_WARNING(objects = readAll(bytesOf(text)), kQ3WarningUnknownElementType);
+    ASSERT_EQ(objects.size(), 1u);
+    TQ3GroupObject copy = Q3Object_Duplicate(objects[0]);
+    ASSERT_NE(copy, nullptr);
+    for (TQ3Object group : {objects[0], copy}) {
+        const std::vector<unsigned char> written = writeObjects({group}, kQ3FileModeText);
+        const std::string again(written.begin(), written.end());
+        EXPECT_NE(again.find("CString ( \"middle box\" )"), std::string::npos) << again;
+        EXPECT_NE(again.find("DisplayGroupState ( Inline )"), std::string::npos) << again;
+        std::vector<TQ3Object> reread;
+        EXPECT_Q3_WARNING(reread = readAll(written), kQ3WarningUnknownElementType);
+        ASSERT_EQ(reread.size(), 1u);
+        std::vector<TQ3Object> members = membersOf(reread[0]);
+        EXPECT_EQ(members.size(), 1u);
+        disposeAll(members);
+        disposeAll(reread);
+    }
+    Q3Object_Dispose(copy);
+    disposeAll(objects);
+}
+
 } // namespace
