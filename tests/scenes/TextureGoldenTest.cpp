@@ -20,6 +20,7 @@
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
+#include "QD3DIO.h"
 #include "QD3DLight.h"
 #include "QD3DMath.h"
 #include "QD3DRenderer.h"
@@ -38,6 +39,37 @@
 namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
+
+// The objects written to a 3DMF file in memory in `mode` and read back.
+std::vector<TQ3Object> throughFile(const std::vector<TQ3Object>& objects, TQ3FileMode mode)
+{
+    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
+    TQ3FileObject file = Q3File_New();
+    TQ3ViewObject view = Q3View_New();
+    Q3File_SetStorage(file, storage);
+    Q3File_OpenWrite(file, mode);
+    Q3View_StartWriting(view, file);
+    do {
+        for (TQ3Object object : objects)
+            Q3Object_Submit(object, view);
+    } while (Q3View_EndWriting(view) == kQ3ViewStatusRetraverse);
+    Q3File_Close(file);
+    Q3Object_Dispose(view);
+    std::vector<TQ3Object> read;
+    TQ3FileMode opened = 0;
+    if (Q3File_OpenRead(file, &opened) == kQ3Success) {
+        while (Q3File_IsEndOfFile(file) == kQ3False) {
+            TQ3Object object = Q3File_ReadObject(file);
+            if (object == nullptr)
+                break;
+            read.push_back(object);
+        }
+        Q3File_Close(file);
+    }
+    Q3Object_Dispose(file);
+    Q3Object_Dispose(storage);
+    return read;
+}
 // The checkerboard's two colours.
 constexpr unsigned char kLight[3] = {230, 180, 60};
 constexpr unsigned char kDark[3] = {40, 90, 200};
@@ -324,6 +356,21 @@ TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
         Q3Geometry_Submit(box, v);
         Q3Geometry_Submit(polygon, v);
     });
+    // Through 3DMF, text and binary: the shaders in the sets come back and
+    // the picture is the same, pixel for pixel.
+    for (TQ3FileMode mode : {TQ3FileMode{kQ3FileModeNormal}, TQ3FileMode{kQ3FileModeText}}) {
+        SCOPED_TRACE(mode);
+        const std::vector<TQ3Object> copies = throughFile({floor, box, polygon}, mode);
+        ASSERT_EQ(copies.size(), 3u);
+        const q3test::RgbaImage again = render({1.0f, 3.0f, 5.0f}, true, [&](TQ3ViewObject v) {
+            Q3Shader_Submit(lambert, v);
+            for (TQ3Object copy : copies)
+                Q3Object_Submit(copy, v);
+        });
+        EXPECT_TRUE(again.pixels == image.pixels) << "the copy read from the file draws another picture";
+        for (TQ3Object copy : copies)
+            Q3Object_Dispose(copy);
+    }
     for (TQ3Object object : owned)
         Q3Object_Dispose(object);
     EXPECT_TRUE(q3test::matchesGolden("attribute_texture", image));
