@@ -8,6 +8,7 @@
 
 #include "GeometryTestSupport.h"
 #include "OwningApiTest.h"
+#include "SetTestSupport.h"
 
 #include "QD3DGeometry.h"
 #include "QD3DSet.h"
@@ -29,30 +30,13 @@ using namespace q3test;
 constexpr unsigned long kTooMany = (unsigned long)kQ3GeometryMaxArrayCount + 1;
 
 // Bytes of one value of each standard attribute type, from QD3DSet.h's table
-// (written out here, independently of Q3).
+// (SetTestSupport.h writes it out independently of Q3).
 std::size_t valueBytes(TQ3AttributeType type)
 {
-    switch (type) {
-    case kQ3AttributeTypeSurfaceUV:
-    case kQ3AttributeTypeShadingUV:
-        return sizeof(TQ3Param2D);
-    case kQ3AttributeTypeNormal:
-        return sizeof(TQ3Vector3D);
-    case kQ3AttributeTypeAmbientCoefficient:
-    case kQ3AttributeTypeSpecularControl:
-        return sizeof(float);
-    case kQ3AttributeTypeDiffuseColor:
-    case kQ3AttributeTypeSpecularColor:
-    case kQ3AttributeTypeTransparencyColor:
-        return sizeof(TQ3ColorRGB);
-    case kQ3AttributeTypeSurfaceTangent:
-        return sizeof(TQ3Tangent2D);
-    case kQ3AttributeTypeHighlightState:
-        return sizeof(TQ3Switch);
-    default:
+    const std::size_t n = attributeSize(type);
+    if (n == 0)
         ADD_FAILURE() << "not a standard type: " << type;
-        return 0;
-    }
+    return n;
 }
 
 // A square of two triangles over four points, its five edges, and every
