@@ -18,6 +18,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -123,7 +124,7 @@ int modeOf(Primitive::Mode mode)
 
 void buildMaterials(const Scene& scene, tinygltf::Model& model)
 {
-    std::vector<std::pair<int, int>> textures; // (image, sampler)
+    std::vector<std::array<int, 3>> textures; // image, wrapS, wrapT
     bool unlit = false;
     for (const Material& m : scene.materials) {
         tinygltf::Material out;
@@ -146,8 +147,7 @@ void buildMaterials(const Scene& scene, tinygltf::Model& model)
         const bool translucent = m.alpha < 1.0f || (textured && scene.images[m.image].hasAlpha);
         out.alphaMode = translucent ? "BLEND" : "OPAQUE";
         if (textured) {
-            const int sampler = wrapOf(m.uBoundary) * 100000 + wrapOf(m.vBoundary);
-            const std::pair<int, int> key(m.image, sampler);
+            const std::array<int, 3> key{m.image, wrapOf(m.uBoundary), wrapOf(m.vBoundary)};
             auto found = std::find(textures.begin(), textures.end(), key);
             if (found == textures.end()) {
                 textures.push_back(key);
@@ -169,10 +169,10 @@ void buildMaterials(const Scene& scene, tinygltf::Model& model)
     }
     if (unlit)
         model.extensionsUsed.push_back(kUnlit);
-    for (const auto& [image, sampler] : textures) {
+    for (const auto& [image, wrapS, wrapT] : textures) {
         tinygltf::Sampler s;
-        s.wrapS = sampler / 100000;
-        s.wrapT = sampler % 100000;
+        s.wrapS = wrapS;
+        s.wrapT = wrapT;
         s.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
         s.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
         model.samplers.push_back(s);

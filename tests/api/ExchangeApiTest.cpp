@@ -303,4 +303,241 @@ TEST_F(ExchangeApiTest, EveryGeometryOfTheTestFilesKeepsItsDecomposition)
     EXPECT_GE(checked, 8);
 }
 
+// A model with everything a material carries: a TriMesh with vertex
+// normals, uvs and colours under an attribute set holding a diffuse colour,
+// a transparency colour and a texture shader (mipmap texture with alpha,
+// clamped in u) as its surface shader; drawn twice, translated and then
+// also scaled inside a nested group.
+class ExchangeModelTest : public ExchangeApiTest {
+protected:
+    void SetUp() override
+    {
+        ExchangeApiTest::SetUp();
+        for (unsigned i = 0; i < kWidth * kHeight; ++i) {
+            m_pixels.push_back(static_cast<unsigned char>(40 + 50 * (i % 4))); // alpha
+            m_pixels.push_back(static_cast<unsigned char>(17 * i));
+            m_pixels.push_back(static_cast<unsigned char>(255 - 13 * i));
+            m_pixels.push_back(static_cast<unsigned char>(i * i));
+        }
+        TQ3StorageObject storage = Q3MemoryStorage_New(m_pixels.data(), static_cast<unsigned long>(m_pixels.size()));
+        TQ3Mipmap mipmap{};
+        mipmap.image = storage;
+        mipmap.useMipmapping = kQ3False;
+        mipmap.pixelType = kQ3PixelTypeARGB32;
+        mipmap.bitOrder = kQ3EndianBig;
+        mipmap.byteOrder = kQ3EndianBig;
+        mipmap.mipmaps[0] = TQ3MipmapImage{kWidth, kHeight, kWidth * 4, 0};
+        TQ3TextureObject texture = Q3MipmapTexture_New(&mipmap);
+        Q3Object_Dispose(storage);
+        TQ3ShaderObject shader = Q3TextureShader_New(texture);
+        Q3Object_Dispose(texture);
+        ASSERT_EQ(Q3Shader_SetUBoundary(shader, kQ3ShaderUVBoundaryClamp), kQ3Success);
+
+        TQ3AttributeSet set = Q3AttributeSet_New();
+        const TQ3ColorRGB diffuse{0.25f, 0.5f, 0.75f};
+        const TQ3ColorRGB transparency{0.5f, 0.5f, 0.5f};
+        Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &diffuse);
+        Q3AttributeSet_Add(set, kQ3AttributeTypeTransparencyColor, &transparency);
+        ASSERT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceShader, &shader), kQ3Success);
+        Q3Object_Dispose(shader);
+
+        TQ3Point3D points[4] = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0.5f}};
+        TQ3TriMeshTriangleData triangles[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
+        TQ3Vector3D normals[4] = {{0, 0, 1}, {0, 0, 1}, {0, 0.6f, 0.8f}, {0, 0.6f, 0.8f}};
+        TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0.125f, 0.875f}};
+        TQ3ColorRGB colors[4] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.3f, 0.6f, 0.9f}};
+        TQ3TriMeshAttributeData vertex[3] = {{kQ3AttributeTypeNormal, normals, nullptr},
+                                             {kQ3AttributeTypeSurfaceUV, uvs, nullptr},
+                                             {kQ3AttributeTypeDiffuseColor, colors, nullptr}};
+        TQ3TriMeshData data{};
+        data.triMeshAttributeSet = set;
+        data.numTriangles = 2;
+        data.triangles = triangles;
+        data.numPoints = 4;
+        data.points = points;
+        data.numVertexAttributeTypes = 3;
+        data.vertexAttributeTypes = vertex;
+        data.bBox = TQ3BoundingBox{{0, 0, 0}, {2, 1, 0.5f}, kQ3False};
+        TQ3GeometryObject mesh = Q3TriMesh_New(&data);
+        Q3Object_Dispose(set);
+        ASSERT_NE(mesh, nullptr);
+
+        m_group = Q3DisplayGroup_New();
+        const TQ3Vector3D move{1, 2, 3};
+        const TQ3Vector3D scale{2, 2, 2};
+        TQ3TransformObject translate = Q3TranslateTransform_New(&move);
+        TQ3TransformObject grow = Q3ScaleTransform_New(&scale);
+        TQ3GroupObject inner = Q3DisplayGroup_New();
+        Q3Group_AddObject(inner, grow);
+        Q3Group_AddObject(inner, mesh);
+        Q3Group_AddObject(m_group, translate);
+        Q3Group_AddObject(m_group, mesh);
+        Q3Group_AddObject(m_group, inner);
+        for (TQ3Object o : {TQ3Object(translate), TQ3Object(grow), TQ3Object(inner), TQ3Object(mesh)})
+            Q3Object_Dispose(o);
+    }
+
+    void TearDown() override
+    {
+        Q3Object_Dispose(m_group);
+        ExchangeApiTest::TearDown();
+    }
+
+    TQ3BoundingBox bounds(TQ3Object object)
+    {
+        Pixmap image(8, 8);
+        TestView view(image.pixmap());
+        TQ3BoundingBox box{};
+        EXPECT_EQ(Q3View_StartBoundingBox(view.view(), kQ3ComputeBoundsExact), kQ3Success);
+        do
+            Q3Object_Submit(object, view.view());
+        while (Q3View_EndBoundingBox(view.view(), &box) == kQ3ViewStatusRetraverse);
+        return box;
+    }
+
+    static constexpr unsigned long kWidth = 4, kHeight = 3;
+    std::vector<unsigned char> m_pixels;
+    TQ3GroupObject m_group = nullptr;
+};
+
+TEST_F(ExchangeModelTest, TexturedTransparentGroupedModelSurvivesGlbAndGltf)
+{
+    for (const char* name : {"model.glb", "model.gltf"}) {
+        TQ3GroupObject back = roundTrip(m_group, name);
+        ASSERT_NE(back, nullptr) << name;
+
+        // Placement: the same world-space box.
+        const TQ3BoundingBox a = bounds(m_group);
+        const TQ3BoundingBox b = bounds(back);
+        EXPECT_NEAR(b.min.x, a.min.x, 1e-6 * 8);
+        EXPECT_NEAR(b.min.y, a.min.y, 1e-6 * 8);
+        EXPECT_NEAR(b.min.z, a.min.z, 1e-6 * 8);
+        EXPECT_NEAR(b.max.x, a.max.x, 1e-6 * 8);
+        EXPECT_NEAR(b.max.y, a.max.y, 1e-6 * 8);
+        EXPECT_NEAR(b.max.z, a.max.z, 1e-6 * 8);
+
+        // The shared mesh stays one object, drawn twice.
+        std::vector<TQ3Object> meshes;
+        collectTriMeshes(back, meshes);
+        ASSERT_EQ(meshes.size(), 2u) << name;
+        EXPECT_EQ(meshes[0], meshes[1]) << name;
+
+        Triangles read;
+        read.add(meshes[0]);
+        ASSERT_EQ(read.triangles.size(), 2u);
+        const TQ3ColorRGB colors[4] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.3f, 0.6f, 0.9f}};
+        const TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0.125f, 0.875f}};
+        for (int i = 0; i < 4; ++i) {
+            EXPECT_EQ(read.colors[i].r, colors[i].r);
+            EXPECT_EQ(read.colors[i].g, colors[i].g);
+            EXPECT_EQ(read.colors[i].b, colors[i].b);
+            EXPECT_EQ(read.uvs[i].u, uvs[i].u);
+            EXPECT_NEAR(read.uvs[i].v, uvs[i].v, 1.2e-7);
+        }
+
+        // The material: transparency per vertex (the vertex colours carry
+        // alpha), the diffuse colour, the texture's pixels exactly.
+        TQ3TriMeshData data{};
+        ASSERT_EQ(Q3TriMesh_GetData(meshes[0], &data), kQ3Success);
+        bool transparency = false;
+        for (unsigned long k = 0; k < data.numVertexAttributeTypes; ++k)
+            if (data.vertexAttributeTypes[k].attributeType == kQ3AttributeTypeTransparencyColor) {
+                transparency = true;
+                const auto* t = static_cast<const TQ3ColorRGB*>(data.vertexAttributeTypes[k].data);
+                EXPECT_EQ(t[0].r, 0.5f);
+            }
+        EXPECT_TRUE(transparency) << name;
+        TQ3AttributeSet set = data.triMeshAttributeSet;
+        ASSERT_NE(set, nullptr);
+        TQ3ColorRGB diffuse{};
+        EXPECT_EQ(Q3AttributeSet_Get(set, kQ3AttributeTypeDiffuseColor, &diffuse), kQ3Success);
+        EXPECT_EQ(diffuse.b, 0.75f);
+        TQ3ShaderObject shader = nullptr;
+        ASSERT_EQ(Q3AttributeSet_Get(set, kQ3AttributeTypeSurfaceShader, &shader), kQ3Success);
+        TQ3ShaderUVBoundary u = kQ3ShaderUVBoundaryWrap, v = kQ3ShaderUVBoundaryClamp;
+        Q3Shader_GetUBoundary(shader, &u);
+        Q3Shader_GetVBoundary(shader, &v);
+        EXPECT_EQ(u, kQ3ShaderUVBoundaryClamp);
+        EXPECT_EQ(v, kQ3ShaderUVBoundaryWrap);
+        TQ3TextureObject texture = nullptr;
+        ASSERT_EQ(Q3TextureShader_GetTexture(shader, &texture), kQ3Success);
+        TQ3Mipmap mipmap{};
+        ASSERT_EQ(Q3MipmapTexture_GetMipmap(texture, &mipmap), kQ3Success);
+        EXPECT_EQ(mipmap.pixelType, kQ3PixelTypeARGB32);
+        EXPECT_EQ(mipmap.mipmaps[0].width, kWidth);
+        EXPECT_EQ(mipmap.mipmaps[0].height, kHeight);
+        std::vector<unsigned char> pixels(m_pixels.size());
+        unsigned long got = 0;
+        EXPECT_EQ(Q3Storage_GetData(mipmap.image, 0, static_cast<unsigned long>(pixels.size()), pixels.data(), &got),
+                  kQ3Success);
+        EXPECT_EQ(mipmap.mipmaps[0].rowBytes, kWidth * 4);
+        EXPECT_EQ(pixels, m_pixels) << name;
+        Q3Object_Dispose(mipmap.image);
+        Q3Object_Dispose(texture);
+        Q3Object_Dispose(shader);
+        Q3TriMesh_EmptyData(&data);
+        Q3Object_Dispose(back);
+    }
+}
+
+TEST_F(ExchangeModelTest, TheDefaultSubdivisionAndNullOptionsWrite)
+{
+    const std::string path = temporaryPath("defaults.glb");
+    m_written.push_back(path);
+    EXPECT_EQ(Q3Exchange_Write(m_group, path.c_str(), nullptr), kQ3Success);
+    EXPECT_EQ(validatorErrors(path), "");
+}
+
+TEST_F(ExchangeApiTest, BrokenInputsAreClearErrors)
+{
+    const std::string broken = temporaryPath("broken.gltf");
+    m_written.push_back(broken);
+    {
+        std::ofstream out(broken);
+        out << "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { \"primitives\": [ { \"attributes\": "
+               "{ \"POSITION\": 7 } } ] } ] }";
+    }
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Read(broken.c_str(), kQ3ExchangeFormatAny), nullptr), kQ3ErrorInvalidData);
+    const std::string garbage = temporaryPath("garbage.glb");
+    m_written.push_back(garbage);
+    {
+        std::ofstream out(garbage);
+        out << "glTF not really";
+    }
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Read(garbage.c_str(), kQ3ExchangeFormatAny), nullptr), kQ3ErrorInvalidData);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Read(temporaryPath("absent.glb").c_str(), kQ3ExchangeFormatAny), nullptr),
+                    kQ3ErrorFileNotOpen);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Read(nullptr, kQ3ExchangeFormatAny), nullptr), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Read(broken.c_str(), TQ3ExchangeFormat(99)), nullptr),
+                    kQ3ErrorInvalidParameter);
+}
+
+TEST_F(ExchangeApiTest, AFailedWriteLeavesNothingAndBadOptionsAreRefused)
+{
+    TQ3GroupObject group = Q3DisplayGroup_New();
+    const std::string unwritable = temporaryPath("no-such-directory/out.glb");
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, unwritable.c_str(), nullptr), kQ3Failure), kQ3ErrorFileNotOpen);
+    EXPECT_FALSE(exists(unwritable));
+    const std::string unknown = temporaryPath("out.xyz");
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, unknown.c_str(), nullptr), kQ3Failure), kQ3ErrorInvalidParameter);
+    EXPECT_FALSE(exists(unknown));
+    TQ3ExchangeOptions options;
+    Q3Exchange_InitOptions(&options);
+    options.subdivisionFromSize = kQ3False;
+    const std::string path = temporaryPath("out.glb");
+    for (float bad : {0.0f, -1.0f, std::nanf(""), INFINITY}) {
+        options.subdivisionValue = bad;
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, path.c_str(), &options), kQ3Failure),
+                        kQ3ErrorInvalidParameter);
+    }
+    options.subdivisionMethod = kQ3SubdivisionMethodScreenSpace;
+    options.subdivisionValue = 1.0f;
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, path.c_str(), &options), kQ3Failure), kQ3ErrorInvalidParameter);
+    EXPECT_FALSE(exists(path));
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(nullptr, path.c_str(), nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, nullptr, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(Q3Exchange_InitOptions(nullptr), kQ3ErrorNULLParameter);
+    Q3Object_Dispose(group);
+}
+
 } // namespace
