@@ -478,7 +478,10 @@ double diagonalOf(const Object& root)
 {
     BoundsPass bounds(kQ3ComputeBoundsApproximate, std::nullopt, defaultAttributes(nullptr));
     bounds.allowGroupCulling(false);
-    walk(root, [&](const Object& object) { object.accept(bounds); });
+    walk(root, [&](const Object& object) {
+        if (dynamic_cast<const q3::Camera*>(&object) == nullptr && dynamic_cast<const q3::Light*>(&object) == nullptr)
+            object.accept(bounds);
+    });
     const TQ3BoundingBox box = bounds.box();
     if (enumValue(box.isEmpty) != kQ3False)
         return 1.0;

@@ -252,6 +252,53 @@ TEST(Q3Convert, TextToBinaryToTextGivesTheSameText)
         std::remove(path.c_str());
 }
 
+TEST(Q3Convert, ToGlbAndGltfAndBackKeepsTheTexturedBox)
+{
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/textured_box.3dmf";
+    const std::string validator = std::string(Q3_TEST_DATA_DIR) + "/../../scripts/gltf-validate.js";
+    for (const char* ext : {".glb", ".gltf", ".GLB"}) {
+        const std::string gltf = scratch(std::string("box") + ext), back = scratch("box_back.3dmf");
+        std::string errors;
+        ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + gltf + " --subdivision 4x", &errors), 0)
+            << errors;
+        EXPECT_EQ(run("node " + validator + " " + gltf + " > /dev/null", &errors), 0) << errors;
+        ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + gltf + " " + back + " --text", &errors), 0) << errors;
+        const std::string text = slurp(back);
+        EXPECT_NE(text.find("TriMesh"), std::string::npos);
+        EXPECT_NE(text.find("TextureShader"), std::string::npos);
+        EXPECT_NE(text.find("MipmapTexture"), std::string::npos);
+        // The box's 8 x 8 texels, orange E6B43C and blue 285AC8, opaque.
+        EXPECT_NE(text.find("FFE6B43CFF285AC8"), std::string::npos);
+        std::remove(gltf.c_str());
+        std::remove(back.c_str());
+    }
+    // --format wins over the extension.
+    const std::string forced = scratch("forced.bin");
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + forced + " --format glb"), 0);
+    EXPECT_EQ(slurp(forced).substr(0, 4), "glTF");
+    std::remove(forced.c_str());
+}
+
+TEST(Q3Convert, ABrokenGltfIsExitStatusTwoAndAnUnwritableOutputThreeWithNothingLeft)
+{
+    const std::string broken = scratch("broken.gltf"), out = scratch("broken.3dmf");
+    {
+        std::ofstream file(broken);
+        file << "{ \"asset\": { \"version\": \"2.0\" }, \"nodes\": [ { \"mesh\": 3 } ] ";
+    }
+    std::string errors;
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + broken + " " + out, &errors), 2);
+    EXPECT_NE(errors.find("cannot be read"), std::string::npos) << errors;
+    EXPECT_TRUE(slurp(out).empty());
+    const std::string nowhere = scratch("no/such/dir/out.glb");
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + nowhere, &errors), 3);
+    EXPECT_NE(errors.find("cannot write"), std::string::npos) << errors;
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + scratch("x.glb") + " --subdivision -1", &errors),
+              1);
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + scratch("x.glb") + " --format obj", &errors), 1);
+    std::remove(broken.c_str());
+}
+
 TEST(Q3Convert, AnObjectLeftOutIsNamedOnStandardError)
 {
     // tests/data/unknown.3dmf holds an unknown text object, which has no
