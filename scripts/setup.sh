@@ -16,6 +16,7 @@ packages=(
   libglu1-mesa-dev    # the GLU NURBS tessellator, a benchmark peer (own process)
   clang libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes
   libtinygltf-dev     # glTF 2.0 reading and writing (src/exchange, docs/exchange.md)
+  libassimp-dev       # OBJ/MTL and STL reading and writing (src/exchange)
   nodejs              # runs the Khronos glTF validator in the exchange tests (Debian's
                       # nodejs wants its npm package too; NodeSource's carries npm)
 )

@@ -2,15 +2,16 @@
 /* Copyright (c) 2026 The Q3 authors */
 
 /* q3convert: rewrites a 3DMF file, text or binary, or converts between
- * 3DMF and glTF 2.0 (Q3Exchange.h).
+ * 3DMF and glTF 2.0, OBJ or STL (Q3Exchange.h).
  *
  *   q3convert in.3dmf out.3dmf [--text | --binary | --little-endian]
  *             [--normal | --stream | --database] [--help]
- *   q3convert in.3dmf out.glb|out.gltf [--subdivision VALUE] [--format FORMAT]
- *   q3convert in.glb|in.gltf out.3dmf [--text | ...]
+ *   q3convert in.3dmf out.glb|out.gltf|out.obj|out.stl [--subdivision VALUE]
+ *             [--format FORMAT]
+ *   q3convert in.glb|in.gltf|in.obj|in.stl out.3dmf [--text | ...]
  *
- * The format of each file comes from its extension (.3dmf, .glb, .gltf;
- * anything else is 3DMF), or --format for the output.
+ * The format of each file comes from its extension (.glb, .gltf, .obj,
+ * .stl; anything else is 3DMF), or --format for the output.
  * Every object is read and written back (unknown objects unchanged). The
  * default is a binary Normal file, big-endian as Mac QuickDraw 3D wrote them;
  * --little-endian writes a binary file in little-endian byte order
@@ -36,18 +37,21 @@ static void printUsage(FILE *to)
 {
     fprintf(to, "usage: q3convert in.3dmf out.3dmf [--text | --binary | --little-endian]\n"
                 "                 [--normal | --stream | --database]\n"
-                "       q3convert in.3dmf out.glb|out.gltf [--subdivision VALUE] [--format FORMAT]\n"
-                "       q3convert in.glb|in.gltf out.3dmf [--text | ...]\n"
+                "       q3convert in.3dmf out.glb|out.gltf|out.obj|out.stl [--subdivision VALUE]\n"
+                "                 [--format FORMAT]\n"
+                "       q3convert in.glb|in.gltf|in.obj|in.stl out.3dmf [--text | ...]\n"
                 "\n"
                 "Reads every object of in.3dmf and writes them to out.3dmf (unknown objects\n"
-                "unchanged), or converts between 3DMF and glTF 2.0: every geometry as\n"
-                "triangles, line strips and points; groups as nodes; materials, textures\n"
-                "(PNG), cameras and lights (docs/exchange.md). Formats come from the file\n"
-                "extensions (.glb, .gltf; anything else is 3DMF).\n"
+                "unchanged), or converts between 3DMF and glTF 2.0, OBJ (with its MTL file\n"
+                "and PNG textures beside it) or STL: every geometry as triangles, line\n"
+                "strips and points; groups as nodes; materials, textures, cameras and\n"
+                "lights as far as each format carries them (docs/exchange.md). Formats\n"
+                "come from the file extensions (.glb, .gltf, .obj, .stl; anything else is\n"
+                "3DMF).\n"
                 "\n"
-                "  --format FORMAT  the output's format whatever its extension: 3dmf, glb\n"
-                "                   or gltf\n"
-                "  --subdivision VALUE  for glTF output: VALUE world units the longest side\n"
+                "  --format FORMAT  the output's format whatever its extension: 3dmf, glb,\n"
+                "                   gltf, obj or stl\n"
+                "  --subdivision VALUE  for glTF, OBJ and STL output: VALUE world units the longest side\n"
                 "                   of a subdivided surface or curve (\"0.05\"), or VALUE\n"
                 "                   segments around each one when it ends in 'x' (\"16x\");\n"
                 "                   default 1/32 of the model's bounding box diagonal\n"
@@ -93,6 +97,10 @@ static TQ3ExchangeFormat formatOfPath(const char *path)
         return kQ3ExchangeFormatGLB;
     if (strcmp(ext, "gltf") == 0)
         return kQ3ExchangeFormatGLTF;
+    if (strcmp(ext, "obj") == 0)
+        return kQ3ExchangeFormatOBJ;
+    if (strcmp(ext, "stl") == 0)
+        return kQ3ExchangeFormatSTL;
     return kQ3ExchangeFormatAny;
 }
 
@@ -105,6 +113,10 @@ static int formatOfName(const char *name, TQ3ExchangeFormat *format)
         *format = kQ3ExchangeFormatGLB;
     else if (strcmp(name, "gltf") == 0)
         *format = kQ3ExchangeFormatGLTF;
+    else if (strcmp(name, "obj") == 0)
+        *format = kQ3ExchangeFormatOBJ;
+    else if (strcmp(name, "stl") == 0)
+        *format = kQ3ExchangeFormatSTL;
     else
         return 0;
     return 1;

@@ -6,8 +6,9 @@
 /*
  * Q3 extension: model exchange with today's formats (QuickDraw 3D had none
  * of this). Q3Exchange_Write writes what a group or geometry draws as glTF
- * 2.0 (.gltf, .glb); Q3Exchange_Read reads a glTF file into a display group
- * of TriMeshes, so that a QuickDraw 3D program can load new content.
+ * 2.0 (.gltf, .glb), Wavefront OBJ (.obj) or STL (.stl); Q3Exchange_Read
+ * reads such a file into a display group of TriMeshes, so that a QuickDraw
+ * 3D program can load new content.
  *
  *     TQ3ExchangeOptions options;
  *     Q3Exchange_InitOptions(&options);
@@ -25,11 +26,13 @@ extern "C" {
 #endif
 
 /* A file format. kQ3ExchangeFormatAny: from the file name's extension
- * (.gltf, .glb), case-insensitively. */
+ * (.gltf, .glb, .obj, .stl), case-insensitively. */
 typedef enum TQ3ExchangeFormat {
     kQ3ExchangeFormatAny = 0,
     kQ3ExchangeFormatGLTF = 1, /* glTF 2.0, JSON with the buffer embedded */
-    kQ3ExchangeFormatGLB = 2   /* glTF 2.0, binary container, PNG textures inside */
+    kQ3ExchangeFormatGLB = 2,  /* glTF 2.0, binary container, PNG textures inside */
+    kQ3ExchangeFormatOBJ = 3,  /* Wavefront OBJ with its MTL file, PNG textures beside it */
+    kQ3ExchangeFormatSTL = 4   /* binary STL: triangles only */
 } TQ3ExchangeFormat;
 
 /* How Q3Exchange_Write works. format: as above. subdivisionFromSize:
@@ -66,7 +69,10 @@ Q3_EXTERN_API_C(TQ3Status) Q3Exchange_InitOptions(TQ3ExchangeOptions *options);
  * triangles, line strips and points as Q3Geometry_GetDecomposed does. The
  * file is written beside path under a temporary name and renamed over path
  * when complete: on failure nothing is left at path and an older file there
- * is unchanged.
+ * is unchanged. OBJ and STL are flat: each drawn mesh is written with its
+ * transform applied. An OBJ file's MTL file (<stem>.mtl) and textures
+ * (<stem>_<n>.png) are written beside it, renamed into place before the
+ * .obj. STL keeps triangles only.
  *
  * @param object   the group or geometry.
  * @param path     the file to write.
@@ -99,8 +105,11 @@ Q3Exchange_Write(TQ3Object object, const char *path, const TQ3ExchangeOptions *o
  * kQ3AttributeTypeSurfaceShader) and PolyLines, then its children's groups.
  * A mesh used by several nodes is shared.
  *
+ * An OBJ file's material files and textures (PNG) must be beside it.
+ *
  * @param path    the file to read.
- * @param format  kQ3ExchangeFormatAny: glTF and GLB told apart by content.
+ * @param format  kQ3ExchangeFormatAny: OBJ and STL by the extension, glTF
+ *                and GLB told apart by content.
  * @return a new display group, or NULL with an error posted.
  *
  * Errors:
@@ -108,9 +117,10 @@ Q3Exchange_Write(TQ3Object object, const char *path, const TQ3ExchangeOptions *o
  *   kQ3ErrorNULLParameter            path is NULL.
  *   kQ3ErrorInvalidParameter         format is not one above.
  *   kQ3ErrorFileNotOpen              the file cannot be opened.
- *   kQ3ErrorInvalidData              the file is not valid glTF 2.0 (the
- *                                    message says where), or a texture is
- *                                    not a PNG image.
+ *   kQ3ErrorInvalidData              the file is not valid glTF 2.0, OBJ or
+ *                                    STL (the message says where), an OBJ's
+ *                                    material file or texture is missing,
+ *                                    or a texture is not a PNG image.
  *   kQ3ErrorUnsupportedFunctionality the file requires an extension Q3 does
  *                                    not read.
  *   kQ3ErrorOutOfMemory              memory ran out.

@@ -540,4 +540,114 @@ TEST_F(ExchangeApiTest, AFailedWriteLeavesNothingAndBadOptionsAreRefused)
     Q3Object_Dispose(group);
 }
 
+// OBJ and STL are flat: the two instances come back as separate meshes with
+// the transforms applied, so the world box and the triangle count are what
+// must survive; OBJ also keeps the uvs, the material and the texels.
+TEST_F(ExchangeModelTest, ObjKeepsTheModelFlattenedWithItsMaterialAndTexture)
+{
+    const std::string path = temporaryPath("model.obj");
+    const std::string stem = path.substr(0, path.size() - 4);
+    for (const std::string& file : {path, stem + ".mtl", stem + "_0.png"})
+        m_written.push_back(file);
+    ASSERT_EQ(Q3Exchange_Write(m_group, path.c_str(), nullptr), kQ3Success);
+    EXPECT_TRUE(exists(stem + ".mtl"));
+    EXPECT_TRUE(exists(stem + "_0.png"));
+    TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
+    ASSERT_NE(back, nullptr);
+    const TQ3BoundingBox a = bounds(m_group);
+    const TQ3BoundingBox b = bounds(back);
+    EXPECT_NEAR(b.min.x, a.min.x, 1e-5);
+    EXPECT_NEAR(b.max.x, a.max.x, 1e-5);
+    EXPECT_NEAR(b.min.z, a.min.z, 1e-5);
+    EXPECT_NEAR(b.max.z, a.max.z, 1e-5);
+    std::vector<TQ3Object> meshes;
+    collectTriMeshes(back, meshes);
+    Triangles read;
+    for (TQ3Object mesh : meshes)
+        read.add(mesh);
+    EXPECT_EQ(read.triangles.size(), 4u);
+    ASSERT_FALSE(meshes.empty());
+    TQ3TriMeshData data{};
+    ASSERT_EQ(Q3TriMesh_GetData(meshes[0], &data), kQ3Success);
+    ASSERT_NE(data.triMeshAttributeSet, nullptr);
+    TQ3ShaderObject shader = nullptr;
+    ASSERT_EQ(Q3AttributeSet_Get(data.triMeshAttributeSet, kQ3AttributeTypeSurfaceShader, &shader), kQ3Success);
+    TQ3TextureObject texture = nullptr;
+    ASSERT_EQ(Q3TextureShader_GetTexture(shader, &texture), kQ3Success);
+    TQ3Mipmap mipmap{};
+    ASSERT_EQ(Q3MipmapTexture_GetMipmap(texture, &mipmap), kQ3Success);
+    std::vector<unsigned char> pixels(m_pixels.size());
+    unsigned long got = 0;
+    Q3Storage_GetData(mipmap.image, 0, static_cast<unsigned long>(pixels.size()), pixels.data(), &got);
+    EXPECT_EQ(pixels, m_pixels);
+    EXPECT_TRUE(read.hasUVs);
+    Q3Object_Dispose(mipmap.image);
+    Q3Object_Dispose(texture);
+    Q3Object_Dispose(shader);
+    Q3TriMesh_EmptyData(&data);
+    Q3Object_Dispose(back);
+
+    // Without its material file the OBJ is an error, not grey.
+    std::remove((stem + ".mtl").c_str());
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny), nullptr), kQ3ErrorInvalidData);
+}
+
+TEST_F(ExchangeModelTest, StlKeepsTheTrianglesFlattened)
+{
+    const std::string path = temporaryPath("model.stl");
+    m_written.push_back(path);
+    ASSERT_EQ(Q3Exchange_Write(m_group, path.c_str(), nullptr), kQ3Success);
+    TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
+    ASSERT_NE(back, nullptr);
+    std::vector<TQ3Object> meshes;
+    collectTriMeshes(back, meshes);
+    Triangles read;
+    for (TQ3Object mesh : meshes)
+        read.add(mesh);
+    EXPECT_EQ(read.triangles.size(), 4u);
+    const TQ3BoundingBox a = bounds(m_group);
+    const TQ3BoundingBox b = bounds(back);
+    EXPECT_NEAR(b.min.y, a.min.y, 1e-5);
+    EXPECT_NEAR(b.max.y, a.max.y, 1e-5);
+    EXPECT_NEAR(b.max.z, a.max.z, 1e-5);
+    Q3Object_Dispose(back);
+}
+
+TEST_F(ExchangeApiTest, EveryGeometryKeepsItsTriangleCountThroughStlAndObj)
+{
+    for (const char* name : {"curves_quadrics.3dmf", "polygons.3dmf", "nurbpatch.3dmf"}) {
+        std::vector<TQ3Object> objects = readFile(std::string(Q3_TEST_DATA_DIR) + "/" + name);
+        for (std::size_t k = 0; k < objects.size(); ++k) {
+            if (Q3Object_IsType(objects[k], kQ3ShapeTypeGeometry) != kQ3True)
+                continue;
+            const Triangles original = decomposition(objects[k]);
+            if (original.triangles.empty())
+                continue;
+            for (const char* ext : {".stl", ".obj"}) {
+                const std::string path = temporaryPath(std::to_string(k) + "-" + name + ext);
+                const std::string stem = path.substr(0, path.size() - 4);
+                m_written.push_back(path);
+                m_written.push_back(stem + ".mtl");
+                TQ3ExchangeOptions options;
+                Q3Exchange_InitOptions(&options);
+                options.subdivisionFromSize = kQ3False;
+                options.subdivisionMethod = kQ3SubdivisionMethodConstant;
+                options.subdivisionValue = kSegments;
+                ASSERT_EQ(Q3Exchange_Write(objects[k], path.c_str(), &options), kQ3Success) << path;
+                TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
+                ASSERT_NE(back, nullptr) << path;
+                std::vector<TQ3Object> meshes;
+                collectTriMeshes(back, meshes);
+                Triangles read;
+                for (TQ3Object mesh : meshes)
+                    read.add(mesh);
+                EXPECT_EQ(read.triangles.size(), original.triangles.size()) << name << " " << k << ext;
+                Q3Object_Dispose(back);
+            }
+        }
+        for (TQ3Object object : objects)
+            Q3Object_Dispose(object);
+    }
+}
+
 } // namespace

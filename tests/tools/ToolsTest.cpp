@@ -295,7 +295,7 @@ TEST(Q3Convert, ABrokenGltfIsExitStatusTwoAndAnUnwritableOutputThreeWithNothingL
     EXPECT_NE(errors.find("cannot write"), std::string::npos) << errors;
     EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + scratch("x.glb") + " --subdivision -1", &errors),
               1);
-    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + scratch("x.glb") + " --format obj", &errors), 1);
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + scratch("x.glb") + " --format fbx", &errors), 1);
     std::remove(broken.c_str());
 }
 
