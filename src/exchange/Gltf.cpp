@@ -10,6 +10,7 @@
 #include "exchange/Gltf.h"
 
 #include "core/Error.h"
+#include "core/Limits.h"
 #include "exchange/Png.h"
 
 #include <tiny_gltf.h>
@@ -309,6 +310,18 @@ bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::s
 
 // An accessor's elements as floats (normalized integers mapped to 0..1),
 // `components` per element.
+// The bufferView and buffer an accessor reads, checked to exist.
+std::pair<const tinygltf::BufferView*, const tinygltf::Buffer*> viewOf(const tinygltf::Model& model,
+                                                                       const tinygltf::Accessor& a, const char* what)
+{
+    if (a.bufferView < 0 || std::size_t(a.bufferView) >= model.bufferViews.size())
+        fail(kQ3ErrorInvalidData, std::string(what) + ": no such bufferView");
+    const tinygltf::BufferView& v = model.bufferViews[a.bufferView];
+    if (v.buffer < 0 || std::size_t(v.buffer) >= model.buffers.size())
+        fail(kQ3ErrorInvalidData, std::string(what) + ": no such buffer");
+    return {&v, &model.buffers[v.buffer]};
+}
+
 std::vector<float> readFloats(const tinygltf::Model& model, int index, int components, const char* what)
 {
     if (index < 0 || std::size_t(index) >= model.accessors.size())
@@ -317,17 +330,24 @@ std::vector<float> readFloats(const tinygltf::Model& model, int index, int compo
     const int have = tinygltf::GetNumComponentsInType(a.type);
     if (have != components && !(components == 4 && have == 3))
         fail(kQ3ErrorInvalidData, std::string(what) + ": an accessor of the wrong type");
-    std::vector<float> out(a.count * components, 1.0f);
+    // Q3 reads no sparse accessors: one without a bufferView is all zeros,
+    // as the specification says, and is refused past the limit on arrays.
+    if (a.count > limits::kMaxArrayCount)
+        fail(kQ3ErrorInvalidData, std::string(what) + ": more elements than kQ3GeometryMaxArrayCount");
     if (a.bufferView < 0)
         return std::vector<float>(a.count * components, 0.0f);
-    const tinygltf::BufferView& v = model.bufferViews.at(a.bufferView);
-    const tinygltf::Buffer& b = model.buffers.at(v.buffer);
+    const auto [view, buffer] = viewOf(model, a, what);
+    const tinygltf::BufferView& v = *view;
+    const tinygltf::Buffer& b = *buffer;
+    if (a.count > b.data.size())
+        fail(kQ3ErrorInvalidData, std::string(what) + ": an accessor reaches past its buffer");
     const int size = tinygltf::GetComponentSizeInBytes(a.componentType);
     const std::size_t stride = v.byteStride != 0 ? v.byteStride : std::size_t(size) * have;
     const std::size_t start = v.byteOffset + a.byteOffset;
     if (a.count != 0 && (size <= 0 || start + stride * (a.count - 1) + std::size_t(size) * have > b.data.size() ||
                          a.byteOffset + stride * (a.count - 1) + std::size_t(size) * have > v.byteLength))
         fail(kQ3ErrorInvalidData, std::string(what) + ": an accessor reaches past its buffer");
+    std::vector<float> out(a.count * components, 1.0f);
     for (std::size_t i = 0; i < a.count; ++i)
         for (int c = 0; c < have; ++c) {
             const unsigned char* p = b.data.data() + start + i * stride + std::size_t(c) * size;
@@ -355,15 +375,26 @@ std::vector<float> readFloats(const tinygltf::Model& model, int index, int compo
 
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int index, std::size_t vertexCount)
 {
-    const tinygltf::Accessor& a = model.accessors.at(index);
+    if (index < 0 || std::size_t(index) >= model.accessors.size())
+        fail(kQ3ErrorInvalidData, "indices: no such accessor");
+    const tinygltf::Accessor& a = model.accessors[index];
+    if (a.type != TINYGLTF_TYPE_SCALAR ||
+        (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+        fail(kQ3ErrorInvalidData, "indices that are not unsigned integer scalars");
     if (a.bufferView < 0)
         fail(kQ3ErrorInvalidData, "indices without a bufferView");
-    const tinygltf::BufferView& v = model.bufferViews.at(a.bufferView);
-    const tinygltf::Buffer& b = model.buffers.at(v.buffer);
+    if (a.count > limits::kMaxArrayCount)
+        fail(kQ3ErrorInvalidData, "indices: more elements than kQ3GeometryMaxArrayCount");
+    const auto [view, buffer] = viewOf(model, a, "indices");
+    const tinygltf::BufferView& v = *view;
+    const tinygltf::Buffer& b = *buffer;
     const int size = tinygltf::GetComponentSizeInBytes(a.componentType);
     const std::size_t stride = v.byteStride != 0 ? v.byteStride : std::size_t(size);
     const std::size_t start = v.byteOffset + a.byteOffset;
-    if (a.count != 0 && (size <= 0 || start + stride * (a.count - 1) + size > b.data.size()))
+    if (a.count != 0 && (size <= 0 || start + stride * (a.count - 1) + size > b.data.size() ||
+                         a.byteOffset + stride * (a.count - 1) + size > v.byteLength))
         fail(kQ3ErrorInvalidData, "indices reach past their buffer");
     std::vector<std::uint32_t> out(a.count);
     for (std::size_t i = 0; i < a.count; ++i) {

@@ -512,6 +512,55 @@ TEST_F(ExchangeApiTest, BrokenInputsAreClearErrors)
                     kQ3ErrorInvalidParameter);
 }
 
+// Well-formed JSON that glTF's references make impossible: each is
+// kQ3ErrorInvalidData, never a crash or a half-built group.
+TEST_F(ExchangeApiTest, ImpossibleReferencesAreInvalidData)
+{
+    const std::string buffer = "\"buffers\": [ { \"byteLength\": 36, \"uri\": "
+                               "\"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\" } ], "
+                               "\"bufferViews\": [ { \"buffer\": 0, \"byteLength\": 36 } ], "
+                               "\"accessors\": [ { \"bufferView\": 0, \"componentType\": 5126, \"count\": 3, "
+                               "\"type\": \"VEC3\", \"min\": [0, 0, 0], \"max\": [1, 1, 0] } ], "
+                               "\"meshes\": [ { \"primitives\": [ { \"attributes\": { \"POSITION\": 0 } } ] } ], ";
+    const std::string asset = "{ \"asset\": { \"version\": \"2.0\" }, ";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"cycle", asset + buffer + "\"nodes\": [ { \"children\": [1] }, { \"children\": [0] } ], "
+                  "\"scenes\": [ { \"nodes\": [0] } ] }"},
+        {"no-such-mesh", asset + buffer + "\"nodes\": [ { \"mesh\": 5 } ], \"scenes\": [ { \"nodes\": [0] } ] }"},
+        {"no-such-node", asset + buffer + "\"nodes\": [ { \"mesh\": 0 } ], \"scenes\": [ { \"nodes\": [3] } ] }"},
+        {"short-buffer", asset + "\"buffers\": [ { \"byteLength\": 4, \"uri\": "
+                                 "\"data:application/octet-stream;base64,AAAAAA==\" } ], "
+                                 "\"bufferViews\": [ { \"buffer\": 0, \"byteLength\": 4 } ], "
+                                 "\"accessors\": [ { \"bufferView\": 0, \"componentType\": 5126, \"count\": 3, "
+                                 "\"type\": \"VEC3\" } ], "
+                                 "\"meshes\": [ { \"primitives\": [ { \"attributes\": { \"POSITION\": 0 } } ] } ], "
+                                 "\"nodes\": [ { \"mesh\": 0 } ], \"scenes\": [ { \"nodes\": [0] } ] }"},
+        {"bad-index", asset + buffer.substr(0, buffer.find("\"meshes\"")) +
+                          "\"meshes\": [ { \"primitives\": [ { \"attributes\": { \"POSITION\": 0 }, \"indices\": 0 } ] } ], "
+                          "\"nodes\": [ { \"mesh\": 0 } ], \"scenes\": [ { \"nodes\": [0] } ] }"},
+    };
+    for (const auto& [name, json] : cases) {
+        const std::string path = temporaryPath(name + ".gltf");
+        m_written.push_back(path);
+        std::ofstream(path) << json;
+        TQ3GroupObject group = nullptr;
+        EXPECT_Q3_ERROR(group = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny), kQ3ErrorInvalidData);
+        EXPECT_EQ(group, nullptr) << name;
+        if (group != nullptr)
+            Q3Object_Dispose(group);
+    }
+    // The same buffer with a good scene reads.
+    const std::string good = temporaryPath("good.gltf");
+    m_written.push_back(good);
+    std::ofstream(good) << asset + buffer + "\"nodes\": [ { \"mesh\": 0 } ], \"scenes\": [ { \"nodes\": [0] } ] }";
+    TQ3GroupObject group = Q3Exchange_Read(good.c_str(), kQ3ExchangeFormatAny);
+    ASSERT_NE(group, nullptr);
+    std::vector<TQ3Object> meshes;
+    collectTriMeshes(group, meshes);
+    EXPECT_EQ(meshes.size(), 1u);
+    Q3Object_Dispose(group);
+}
+
 TEST_F(ExchangeApiTest, AFailedWriteLeavesNothingAndBadOptionsAreRefused)
 {
     TQ3GroupObject group = Q3DisplayGroup_New();
