@@ -103,7 +103,10 @@ Q3Exchange_Write(TQ3Object object, const char *path, const TQ3ExchangeOptions *o
  * attribute arrays; the material in the TriMesh's attribute set, its
  * texture as a texture shader with a mipmap texture under
  * kQ3AttributeTypeSurfaceShader) and PolyLines, then its children's groups.
- * A mesh used by several nodes is shared.
+ * A mesh used by several nodes is shared. glTF cameras (a view angle aspect
+ * or orthographic camera) and KHR_lights_punctual lights (in one light
+ * group) are placed in world coordinates and added to the returned group,
+ * which holds them without drawing them (Q3Group_GetFirstPositionOfType).
  *
  * An OBJ file's material files and textures (PNG) must be beside it.
  *

@@ -605,10 +605,46 @@ Scene readGltf(const std::string& path)
         }
         scene.meshes.push_back(std::move(out));
     }
+    for (const tinygltf::Camera& c : model.cameras) {
+        Camera out;
+        out.perspective = c.type != "orthographic";
+        if (out.perspective) {
+            out.yfov = c.perspective.yfov;
+            out.aspect = c.perspective.aspectRatio > 0.0 ? c.perspective.aspectRatio : 1.0;
+            out.znear = c.perspective.znear;
+            out.zfar = c.perspective.zfar;
+        } else {
+            out.xmag = c.orthographic.xmag;
+            out.ymag = c.orthographic.ymag;
+            out.znear = c.orthographic.znear;
+            out.zfar = c.orthographic.zfar;
+        }
+        scene.cameras.push_back(out);
+    }
+    for (const tinygltf::Light& l : model.lights) {
+        Light out;
+        out.kind = l.type == "directional" ? Light::Kind::kDirectional
+                   : l.type == "spot"      ? Light::Kind::kSpot
+                                           : Light::Kind::kPoint;
+        if (l.color.size() == 3)
+            out.color = TQ3ColorRGB{float(l.color[0]), float(l.color[1]), float(l.color[2])};
+        out.intensity = float(l.intensity);
+        out.innerCone = l.spot.innerConeAngle;
+        out.outerCone = l.spot.outerConeAngle;
+        scene.lights.push_back(out);
+    }
     for (const tinygltf::Node& n : model.nodes) {
         Node out;
         out.name = n.name;
         out.mesh = n.mesh;
+        if (n.camera >= 0 && std::size_t(n.camera) < scene.cameras.size())
+            out.camera = n.camera;
+        const auto light = n.extensions.find("KHR_lights_punctual");
+        if (light != n.extensions.end() && light->second.Get("light").IsInt()) {
+            const int index = light->second.Get("light").Get<int>();
+            if (index >= 0 && std::size_t(index) < scene.lights.size())
+                out.light = index;
+        }
         out.children = n.children;
         out.matrix = matrixOf(n);
         out.hasMatrix = out.matrix != Node{}.matrix;

@@ -32,6 +32,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <tuple>
 
@@ -173,6 +174,7 @@ public:
         allowGroupCulling(false);
         Pass::visitStyle(*m_subdivision);
         m_scene.nodes.emplace_back();
+        m_scene.nodes[0].name = "root";
         m_scene.roots.push_back(0);
         m_nodes.push_back(0);
     }
@@ -188,7 +190,7 @@ public:
     {
         if (!Pass::beginGroup(group))
             return false;
-        m_nodes.push_back(addNode());
+        m_nodes.push_back(addNode(group.classInfo().name));
         return true;
     }
 
@@ -212,7 +214,7 @@ public:
             found = m_meshes.emplace(key, int(m_scene.meshes.size())).first;
             m_scene.meshes.push_back(std::move(m_mesh));
         }
-        const int node = addNode();
+        const int node = addNode(geometry.classInfo().name);
         m_scene.nodes[node].mesh = found->second;
         setMatrix(node, flatten(state().localToWorld));
     }
@@ -236,7 +238,7 @@ public:
         const TQ3CameraPlacement& p = data.placement;
         const glm::dvec3 from(p.cameraLocation.x, p.cameraLocation.y, p.cameraLocation.z);
         const glm::dvec3 to(p.pointOfInterest.x, p.pointOfInterest.y, p.pointOfInterest.z);
-        const int node = addNode();
+        const int node = addNode(camera.classInfo().name);
         m_scene.nodes[node].camera = int(m_scene.cameras.size());
         m_scene.cameras.push_back(out);
         setMatrix(node, frame(from, to - from, glm::dvec3(p.upVector.x, p.upVector.y, p.upVector.z)));
@@ -274,17 +276,20 @@ public:
         // Ambient lights have no glTF counterpart (docs/exchange.md).
         if (!on)
             return;
-        const int node = addNode();
+        const int node = addNode(light.classInfo().name);
         m_scene.nodes[node].light = int(m_scene.lights.size());
         m_scene.lights.push_back(out);
         setMatrix(node, compose(placed, state().localToWorld));
     }
 
 private:
-    int addNode()
+    // Q3 has no name elements: a node is named after its class, which also
+    // keeps a node with nothing else from being an empty JSON object.
+    int addNode(const char* name)
     {
         const int index = int(m_scene.nodes.size());
         m_scene.nodes.emplace_back();
+        m_scene.nodes[index].name = name;
         m_scene.nodes[m_nodes.back()].children.push_back(index);
         return index;
     }
@@ -519,13 +524,27 @@ Scene sceneFrom(const Object& root, const SubdivisionChoice& choice)
                                        float(diagonalOf(root) / 32.0)};
     Scene scene;
     ExportPass pass(scene, style);
-    walk(root, [&](const Object& object) {
+    // Cameras and lights are in world coordinates; a display group holds
+    // them without drawing them (Q3Exchange_Read puts them there), so they
+    // are gathered from inside display groups too, after the drawing.
+    std::function<void(const Object&)> undrawn = [&](const Object& object) {
         if (const auto* camera = dynamic_cast<const q3::Camera*>(&object))
             pass.addCamera(*camera);
         else if (const auto* light = dynamic_cast<const q3::Light*>(&object))
             pass.addLight(*light);
-        else
-            object.accept(pass);
+        else if (const auto* group = dynamic_cast<const Group*>(&object))
+            for (const Group::Node& node : group->nodes())
+                if (node.object)
+                    undrawn(*node.object);
+    };
+    walk(root, [&](const Object& object) {
+        if (dynamic_cast<const q3::Camera*>(&object) != nullptr || dynamic_cast<const q3::Light*>(&object) != nullptr) {
+            undrawn(object);
+            return;
+        }
+        object.accept(pass);
+        if (dynamic_cast<const DisplayGroup*>(&object) != nullptr)
+            undrawn(object);
     });
     return scene;
 }

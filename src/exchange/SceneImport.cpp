@@ -3,6 +3,8 @@
 
 #include "exchange/SceneImport.h"
 
+#include "QD3DMath.h"
+
 #include "core/AttributeSet.h"
 #include "core/Error.h"
 #include "core/Limits.h"
@@ -11,11 +13,20 @@
 #include "geometry/TriMesh.h"
 #include "group/Group.h"
 #include "io/Storage.h"
+#include "light/DirectionalLight.h"
+#include "light/PointLight.h"
+#include "light/SpotLight.h"
 #include "shader/IlluminationShaders.h"
 #include "shader/Texture.h"
 #include "shader/TextureShader.h"
+#include "view/Camera.h"
 #include "view/Transform.h"
 
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace q3::exchange {
@@ -43,12 +54,23 @@ public:
         else
             group->add(makeShared<PhongIllumination>());
         for (int node : m_scene.roots)
-            group->add(nodeGroup(node, 0));
+            group->add(nodeGroup(node, 0, glm::dmat4(1.0)));
+        // Cameras and lights are placed in world coordinates, as QuickDraw
+        // 3D's are; a display group holds them without drawing them, so a
+        // program finds them by type (Q3Group_GetFirstPositionOfType).
+        for (const Ref<SharedObject>& camera : m_cameras)
+            group->add(camera);
+        if (!m_lights.empty()) {
+            Ref<LightGroup> lights = makeShared<LightGroup>();
+            for (const Ref<SharedObject>& light : m_lights)
+                lights->add(light);
+            group->add(lights);
+        }
         return group;
     }
 
 private:
-    Ref<DisplayGroup> nodeGroup(int index, std::size_t depth)
+    Ref<DisplayGroup> nodeGroup(int index, std::size_t depth, const glm::dmat4& parent)
     {
         if (depth >= limits::kMaxGroupNesting)
             fail(kQ3ErrorInvalidData, "nodes nest deeper than kQ3GroupMaxNesting");
@@ -56,6 +78,18 @@ private:
             fail(kQ3ErrorInvalidData, "node " + std::to_string(index) + " is its own descendant");
         m_visiting[index] = true;
         const Node& node = m_scene.nodes[index];
+        glm::dmat4 world = parent;
+        if (node.hasMatrix) {
+            glm::dmat4 m(1.0);
+            for (int i = 0; i < 4; ++i)
+                for (int j = 0; j < 4; ++j)
+                    m[i][j] = node.matrix[4 * i + j];
+            world = parent * m;
+        }
+        if (node.camera >= 0)
+            m_cameras.push_back(camera(m_scene.cameras[node.camera], world));
+        if (node.light >= 0)
+            m_lights.push_back(light(m_scene.lights[node.light], world));
         Ref<DisplayGroup> group = makeShared<DisplayGroup>();
         if (node.hasMatrix) {
             TQ3Matrix4x4 m;
@@ -71,7 +105,7 @@ private:
                 group->add(geometry);
         }
         for (int child : node.children)
-            group->add(nodeGroup(child, depth + 1));
+            group->add(nodeGroup(child, depth + 1, world));
         m_visiting[index] = false;
         return group;
     }
@@ -130,6 +164,63 @@ private:
         return TriMesh::fromMesh(mesh, set);
     }
 
+    // A node's frame in the world: its origin and the directions of its
+    // axes (a glTF camera or light looks down its -z, y up).
+    struct Frame {
+        glm::dvec3 origin, x, y, z;
+    };
+    static Frame frameOf(const glm::dmat4& world)
+    {
+        auto axis = [&](int k) {
+            const glm::dvec3 v(world[k]);
+            const double length = glm::length(v);
+            return length > 0.0 ? v / length : glm::dvec3(k == 0, k == 1, k == 2);
+        };
+        return Frame{glm::dvec3(world[3]), axis(0), axis(1), axis(2)};
+    }
+    static TQ3Point3D point(const glm::dvec3& v) { return TQ3Point3D{float(v.x), float(v.y), float(v.z)}; }
+    static TQ3Vector3D vector(const glm::dvec3& v) { return TQ3Vector3D{float(v.x), float(v.y), float(v.z)}; }
+
+    static Ref<SharedObject> camera(const Camera& c, const glm::dmat4& world)
+    {
+        const Frame f = frameOf(world);
+        TQ3CameraData data{};
+        data.placement.cameraLocation = point(f.origin);
+        data.placement.pointOfInterest = point(f.origin - f.z);
+        data.placement.upVector = vector(f.y);
+        // glTF allows an infinite far plane; QuickDraw 3D's yon is finite.
+        const double hither = c.znear > 0.0 ? c.znear : 0.1;
+        data.range.hither = float(hither);
+        data.range.yon = float(c.zfar > hither ? c.zfar : hither * 1e4);
+        data.viewPort = TQ3CameraViewPort{{-1.0f, 1.0f}, 2.0f, 2.0f};
+        if (!c.perspective) {
+            const TQ3OrthographicCameraData ortho{data, float(-c.xmag), float(c.ymag), float(c.xmag), float(-c.ymag)};
+            return makeShared<OrthographicCamera>(ortho);
+        }
+        // QuickDraw 3D's angle spans the narrower side.
+        const double fov = c.aspect >= 1.0 ? c.yfov : 2.0 * std::atan(std::tan(c.yfov / 2.0) * c.aspect);
+        return makeShared<ViewAngleAspectCamera>(TQ3ViewAngleAspectCameraData{data, float(fov), float(c.aspect)});
+    }
+
+    static Ref<SharedObject> light(const Light& l, const glm::dmat4& world)
+    {
+        const Frame f = frameOf(world);
+        const TQ3LightData common{kQ3True, l.intensity, l.color};
+        switch (l.kind) {
+        case Light::Kind::kDirectional:
+            return makeShared<DirectionalLight>(TQ3DirectionalLightData{common, kQ3True, vector(-f.z)});
+        case Light::Kind::kPoint:
+            return makeShared<PointLight>(
+                TQ3PointLightData{common, kQ3True, kQ3AttenuationTypeInverseDistanceSquared, point(f.origin)});
+        default:
+            return makeShared<SpotLight>(TQ3SpotLightData{common, kQ3True, kQ3AttenuationTypeInverseDistanceSquared,
+                                                          point(f.origin), vector(-f.z),
+                                                          float(std::clamp(l.innerCone, 0.0, double(kQ3PiOver2))),
+                                                          float(std::clamp(l.outerCone, 0.0, double(kQ3PiOver2))),
+                                                          kQ3FallOffTypeCosine});
+        }
+    }
+
     const Ref<AttributeSet>& attributeSet(int index)
     {
         Ref<AttributeSet>& set = m_sets[index];
@@ -186,6 +277,8 @@ private:
     std::vector<Ref<AttributeSet>> m_sets;
     std::vector<std::vector<Ref<SharedObject>>> m_meshes;
     std::vector<bool> m_visiting;
+    std::vector<Ref<SharedObject>> m_cameras;
+    std::vector<Ref<SharedObject>> m_lights;
 };
 
 } // namespace

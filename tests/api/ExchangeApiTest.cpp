@@ -12,7 +12,9 @@
 #include "RenderTestSupport.h"
 
 #include "Q3Exchange.h"
+#include "QD3DCamera.h"
 #include "QD3DGroup.h"
+#include "QD3DLight.h"
 #include "QD3DIO.h"
 #include "QD3DSet.h"
 #include "QD3DShader.h"
@@ -697,6 +699,109 @@ TEST_F(ExchangeApiTest, EveryGeometryKeepsItsTriangleCountThroughStlAndObj)
         for (TQ3Object object : objects)
             Q3Object_Dispose(object);
     }
+}
+
+// A file's camera and lights reach glTF (a camera, KHR_lights_punctual) and
+// come back placed where they were: the camera in the root group, the
+// lights in a light group there.
+TEST_F(ExchangeApiTest, CamerasAndLightsSurviveGlb)
+{
+    TQ3GroupObject file = Q3Group_New();
+    TQ3ViewAngleAspectCameraData camera{};
+    camera.cameraData.placement = {{10, 0, 4}, {10, 0, 0}, {0, 1, 0}};
+    camera.cameraData.range = {1, 20};
+    camera.cameraData.viewPort = {{-1, 1}, 2, 2};
+    camera.fov = 0.5f;
+    camera.aspectRatioXToY = 1.5f;
+    TQ3CameraObject cameraObject = Q3ViewAngleAspectCamera_New(&camera);
+    TQ3DirectionalLightData sun{{kQ3True, 0.75f, {1, 0.9f, 0.8f}}, kQ3True, {0, -1, -1}};
+    TQ3PointLightData bulb{{kQ3True, 0.5f, {1, 1, 1}}, kQ3False, kQ3AttenuationTypeNone, {1, 2, 3}};
+    TQ3LightObject sunObject = Q3DirectionalLight_New(&sun);
+    TQ3LightObject bulbObject = Q3PointLight_New(&bulb);
+    TQ3GroupObject lights = Q3LightGroup_New();
+    Q3Group_AddObject(lights, sunObject);
+    Q3Group_AddObject(lights, bulbObject);
+    TQ3GroupObject scene = Q3DisplayGroup_New();
+    TQ3TriangleData triangle{{{{0, 0, 0}, nullptr}, {{1, 0, 0}, nullptr}, {{0, 1, 0}, nullptr}}, nullptr};
+    TQ3GeometryObject geometry = Q3Triangle_New(&triangle);
+    Q3Group_AddObject(scene, geometry);
+    Q3Group_AddObject(file, cameraObject);
+    Q3Group_AddObject(file, lights);
+    Q3Group_AddObject(file, scene);
+    for (TQ3Object o : {TQ3Object(cameraObject), TQ3Object(sunObject), TQ3Object(bulbObject), TQ3Object(lights),
+                        TQ3Object(scene), TQ3Object(geometry)})
+        Q3Object_Dispose(o);
+
+    TQ3GroupObject back = roundTrip(file, "camera-lights.glb");
+    ASSERT_NE(back, nullptr);
+    TQ3GroupPosition position = nullptr;
+    ASSERT_EQ(Q3Group_GetFirstPositionOfType(back, kQ3ShapeTypeCamera, &position), kQ3Success);
+    ASSERT_NE(position, nullptr);
+    TQ3Object readCamera = nullptr;
+    Q3Group_GetPositionObject(back, position, &readCamera);
+    TQ3CameraPlacement placement{};
+    EXPECT_EQ(Q3Camera_GetPlacement(readCamera, &placement), kQ3Success);
+    EXPECT_NEAR(placement.cameraLocation.x, 10, 1e-5);
+    EXPECT_NEAR(placement.cameraLocation.z, 4, 1e-5);
+    // The point of interest is along the same line of sight.
+    EXPECT_NEAR(placement.pointOfInterest.x, 10, 1e-5);
+    EXPECT_NEAR(placement.pointOfInterest.y, 0, 1e-5);
+    EXPECT_LT(placement.pointOfInterest.z, 4);
+    EXPECT_NEAR(placement.upVector.y, 1, 1e-5);
+    float fov = 0;
+    EXPECT_EQ(Q3ViewAngleAspectCamera_GetFOV(readCamera, &fov), kQ3Success);
+    EXPECT_NEAR(fov, 0.5f, 1e-5);
+    Q3Object_Dispose(readCamera);
+
+    ASSERT_EQ(Q3Group_GetFirstPositionOfType(back, kQ3GroupTypeLight, &position), kQ3Success);
+    ASSERT_NE(position, nullptr);
+    TQ3Object readLights = nullptr;
+    Q3Group_GetPositionObject(back, position, &readLights);
+    unsigned long count = 0;
+    Q3Group_CountObjects(readLights, &count);
+    EXPECT_EQ(count, 2u);
+    Q3Group_GetFirstPositionOfType(readLights, kQ3LightTypeDirectional, &position);
+    ASSERT_NE(position, nullptr);
+    TQ3Object readSun = nullptr;
+    Q3Group_GetPositionObject(readLights, position, &readSun);
+    TQ3Vector3D direction{};
+    Q3DirectionalLight_GetDirection(readSun, &direction);
+    EXPECT_NEAR(direction.x, 0, 1e-5);
+    EXPECT_NEAR(direction.y, -std::sqrt(0.5), 1e-5);
+    EXPECT_NEAR(direction.z, -std::sqrt(0.5), 1e-5);
+    Q3Group_GetFirstPositionOfType(readLights, kQ3LightTypePoint, &position);
+    ASSERT_NE(position, nullptr);
+    TQ3Object readBulb = nullptr;
+    Q3Group_GetPositionObject(readLights, position, &readBulb);
+    TQ3Point3D location{};
+    Q3PointLight_GetLocation(readBulb, &location);
+    EXPECT_NEAR(location.x, 1, 1e-5);
+    EXPECT_NEAR(location.y, 2, 1e-5);
+    EXPECT_NEAR(location.z, 3, 1e-5);
+    // Written again from where Q3Exchange_Read put them, they are kept.
+    TQ3GroupObject again = roundTrip(back, "camera-lights-again.glb");
+    ASSERT_NE(again, nullptr);
+    unsigned long cameras = 0, lightGroups = 0;
+    Q3Group_CountObjectsOfType(again, kQ3ShapeTypeCamera, &cameras);
+    Q3Group_CountObjectsOfType(again, kQ3GroupTypeLight, &lightGroups);
+    EXPECT_EQ(cameras, 1u);
+    EXPECT_EQ(lightGroups, 1u);
+    for (TQ3Object o : {readSun, readBulb, readLights, back, TQ3Object(file), TQ3Object(again)})
+        Q3Object_Dispose(o);
+}
+
+TEST_F(ExchangeApiTest, AnEmptyGroupWritesAValidFileThatReadsBackEmpty)
+{
+    TQ3GroupObject group = Q3DisplayGroup_New();
+    for (const char* name : {"empty.glb", "empty.gltf"}) {
+        TQ3GroupObject back = roundTrip(group, name);
+        ASSERT_NE(back, nullptr);
+        std::vector<TQ3Object> meshes;
+        collectTriMeshes(back, meshes);
+        EXPECT_TRUE(meshes.empty());
+        Q3Object_Dispose(back);
+    }
+    Q3Object_Dispose(group);
 }
 
 } // namespace
