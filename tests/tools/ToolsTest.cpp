@@ -279,6 +279,31 @@ TEST(Q3Convert, ToGlbAndGltfAndBackKeepsTheTexturedBox)
     std::remove(forced.c_str());
 }
 
+TEST(Q3Convert, ToObjAndStlAndBack)
+{
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/textured_box.3dmf";
+    const std::string obj = scratch("box.obj"), mtl = scratch("box.mtl"), png = scratch("box_0.png");
+    const std::string stl = scratch("box.stl"), back = scratch("box_from.3dmf");
+    std::string errors;
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + obj + " --subdivision 2x", &errors), 0) << errors;
+    EXPECT_NE(slurp(obj).find("mtllib"), std::string::npos);
+    EXPECT_NE(slurp(mtl).find("map_Kd"), std::string::npos);
+    EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + obj + " " + back + " --text", &errors), 0) << errors;
+    EXPECT_NE(slurp(back).find("MipmapTexture"), std::string::npos);
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + stl + " --subdivision 2x", &errors), 0) << errors;
+    // Binary STL: an 80-byte header, then the triangle count.
+    EXPECT_GT(slurp(stl).size(), 84u);
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + stl + " " + back + " --text", &errors), 0) << errors;
+    EXPECT_NE(slurp(back).find("TriMesh"), std::string::npos);
+    // An OBJ without its material file is exit status 2, with the file named.
+    std::remove(mtl.c_str());
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + obj + " " + back, &errors), 2);
+    EXPECT_NE(errors.find("box.mtl"), std::string::npos) << errors;
+    for (const std::string& path : {obj, png, stl, back})
+        std::remove(path.c_str());
+}
+
 TEST(Q3Convert, ABrokenGltfIsExitStatusTwoAndAnUnwritableOutputThreeWithNothingLeft)
 {
     const std::string broken = scratch("broken.gltf"), out = scratch("broken.3dmf");
