@@ -32,6 +32,7 @@ namespace {
 using tinygltf::Value;
 
 constexpr const char* kUnlit = "KHR_materials_unlit";
+constexpr const char* kTextureTransform = "KHR_texture_transform";
 
 class Packer {
 public:
@@ -455,6 +456,32 @@ std::vector<std::uint32_t> triangulate(int mode, const std::vector<std::uint32_t
     return out;
 }
 
+// KHR_texture_transform on a texture: applied to the uvs (in glTF's s, t),
+// since Q3 bakes uv transforms into uvs; as the extension's GLSL has it,
+// translation * rotation * scale, the rotation counterclockwise.
+void applyTextureTransform(const tinygltf::TextureInfo& info, std::vector<float>& st)
+{
+    const auto found = info.extensions.find(kTextureTransform);
+    if (found == info.extensions.end() || !found->second.IsObject())
+        return;
+    const Value& t = found->second;
+    auto pair = [&](const char* key, double x, double y) {
+        const Value& v = t.Get(key);
+        if (v.IsArray() && v.ArrayLen() == 2 && v.Get(0).IsNumber() && v.Get(1).IsNumber())
+            return std::make_pair(v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble());
+        return std::make_pair(x, y);
+    };
+    const auto [ox, oy] = pair("offset", 0.0, 0.0);
+    const auto [sx, sy] = pair("scale", 1.0, 1.0);
+    const double r = t.Get("rotation").IsNumber() ? t.Get("rotation").GetNumberAsDouble() : 0.0;
+    const double c = std::cos(r), s = std::sin(r);
+    for (std::size_t i = 0; i + 1 < st.size(); i += 2) {
+        const double u = sx * st[i], v = sy * st[i + 1];
+        st[i] = float(c * u - s * v + ox);
+        st[i + 1] = float(s * u + c * v + oy);
+    }
+}
+
 Material materialOf(const tinygltf::Model& model, int index, Scene& scene, std::vector<int>& images)
 {
     Material m;
@@ -539,7 +566,7 @@ Scene readGltf(const std::string& path)
         fail(kQ3ErrorInvalidData, path + " is not a glTF 2.0 file Q3 can read: " + (err.empty() ? "no detail" : err));
     }
     for (const std::string& required : model.extensionsRequired)
-        if (required != kUnlit)
+        if (required != kUnlit && required != kTextureTransform)
             fail(kQ3ErrorUnsupportedFunctionality, path + " requires the extension " + required + ", which Q3 does not read");
 
     Scene scene;
@@ -559,6 +586,8 @@ Scene readGltf(const std::string& path)
                 prim.normals = readFloats(model, a->second, 3, "NORMAL");
             if (auto a = p.attributes.find("TEXCOORD_0"); a != p.attributes.end()) {
                 prim.uvs = readFloats(model, a->second, 2, "TEXCOORD_0");
+                if (p.material >= 0 && std::size_t(p.material) < model.materials.size())
+                    applyTextureTransform(model.materials[p.material].pbrMetallicRoughness.baseColorTexture, prim.uvs);
                 for (std::size_t i = 1; i < prim.uvs.size(); i += 2)
                     prim.uvs[i] = 1.0f - prim.uvs[i];
             }

@@ -482,6 +482,47 @@ TEST_F(ExchangeModelTest, TexturedTransparentGroupedModelSurvivesGlbAndGltf)
     }
 }
 
+// A file that transforms its texture coordinates with KHR_texture_transform
+// (as an atlas does) reads with the transform applied to the uvs.
+TEST_F(ExchangeModelTest, KhrTextureTransformIsAppliedToTheUvs)
+{
+    const std::string path = temporaryPath("transformed.gltf");
+    m_written.push_back(path);
+    ASSERT_EQ(Q3Exchange_Write(m_group, path.c_str(), nullptr), kQ3Success);
+    std::string json;
+    {
+        std::ifstream in(path);
+        json.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::size_t texture = json.find("\"baseColorTexture\"");
+    ASSERT_NE(texture, std::string::npos);
+    const std::size_t brace = json.find('{', texture);
+    json.insert(brace + 1, "\"extensions\": { \"KHR_texture_transform\": { \"offset\": [0.5, 0], "
+                           "\"scale\": [2, 2], \"rotation\": 0 } }, ");
+    const std::size_t used = json.find("\"extensionsUsed\"");
+    if (used == std::string::npos)
+        json.insert(json.find('{') + 1, "\"extensionsUsed\": [\"KHR_texture_transform\"], ");
+    else
+        json.insert(json.find('[', used) + 1, "\"KHR_texture_transform\", ");
+    std::ofstream(path) << json;
+    EXPECT_EQ(validatorErrors(path), "");
+
+    TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
+    ASSERT_NE(back, nullptr);
+    std::vector<TQ3Object> meshes;
+    collectTriMeshes(back, meshes);
+    ASSERT_FALSE(meshes.empty());
+    Triangles read;
+    read.add(meshes[0]);
+    const TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0.125f, 0.875f}};
+    for (int i = 0; i < 4; ++i) {
+        // s = u, t = 1 - v; s' = 2 s + 0.5, t' = 2 t; back: u' = s', v' = 1 - t'.
+        EXPECT_NEAR(read.uvs[i].u, 2 * uvs[i].u + 0.5, 1e-6) << i;
+        EXPECT_NEAR(read.uvs[i].v, 1 - 2 * (1 - uvs[i].v), 1e-6) << i;
+    }
+    Q3Object_Dispose(back);
+}
+
 TEST_F(ExchangeModelTest, TheDefaultSubdivisionAndNullOptionsWrite)
 {
     const std::string path = temporaryPath("defaults.glb");
