@@ -102,7 +102,7 @@ Q3Exchange_Write(TQ3Object object, const char *path, const TQ3ExchangeOptions *o
  * (vertex normals, surface uvs, diffuse and transparency colours as
  * attribute arrays; the material in the TriMesh's attribute set, its
  * texture as a texture shader with a mipmap texture under
- * kQ3AttributeTypeSurfaceShader) and PolyLines, then its children's groups.
+ * kQ3AttributeTypeSurfaceShader), PolyLines and Points, then its children's groups.
  * A mesh used by several nodes is shared. glTF cameras (a view angle aspect
  * or orthographic camera) and KHR_lights_punctual lights (in one light
  * group) are placed in world coordinates and added to the returned group,

@@ -315,7 +315,7 @@ Scene readWithAssimp(const std::string& path)
                 p.indices.push_back(face.mIndices[k]);
             }
         }
-        for (Primitive* p : {&tri, &lines})
+        for (Primitive* p : {&tri, &lines, &points})
             if (!p->indices.empty())
                 mesh.primitives.push_back(std::move(*p));
         scene.meshes.push_back(std::move(mesh));

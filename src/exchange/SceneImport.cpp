@@ -8,6 +8,7 @@
 #include "core/AttributeSet.h"
 #include "core/Error.h"
 #include "core/Limits.h"
+#include "geometry/Point.h"
 #include "geometry/PolyLine.h"
 #include "geometry/Primitives.h"
 #include "geometry/TriMesh.h"
@@ -126,6 +127,16 @@ private:
                     xyz.insert(xyz.end(), &p.positions[3 * std::size_t(i)], &p.positions[3 * std::size_t(i)] + 3);
                 if (p.indices.size() >= 2)
                     objects.push_back(PolyLine::fromPoints(xyz.data(), p.indices.size(), set));
+            } else if (p.mode == Primitive::Mode::kPoints) {
+                for (std::uint32_t i : p.indices) {
+                    const TQ3PointData data{
+                        TQ3Point3D{p.positions[3 * std::size_t(i)], p.positions[3 * std::size_t(i) + 1],
+                                   p.positions[3 * std::size_t(i) + 2]},
+                        // The point takes its own reference to the set.
+                        const_cast<AttributeSet*>(set)};
+                    Point::check(data);
+                    objects.push_back(makeShared<Point>(data));
+                }
             } else if (p.mode == Primitive::Mode::kLines) {
                 for (std::size_t k = 0; k + 1 < p.indices.size(); k += 2) {
                     float xyz[6];

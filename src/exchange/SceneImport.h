@@ -18,7 +18,7 @@ namespace q3::exchange {
 /// transparency colour, normal, surface uv) and an attribute set holding
 /// the material (diffuse, specular, specular control, transparency colours
 /// and a texture shader with a mipmap texture as its surface shader); line
-/// strips and segments become PolyLines. A mesh used by several nodes is
+/// strips and segments become PolyLines, points Points. A mesh used by several nodes is
 /// one set of geometries shared by their groups. An illumination shader
 /// (Phong, Lambert or NULL, from the first material) opens the root group.
 /// Throws kQ3ErrorInvalidData for a node cycle or a reference to nothing.

@@ -845,4 +845,66 @@ TEST_F(ExchangeApiTest, AnEmptyGroupWritesAValidFileThatReadsBackEmpty)
     Q3Object_Dispose(group);
 }
 
+// Curves and points have no triangles: a NURB curve comes back as the
+// PolyLine of its line strip, a point as a Point.
+TEST_F(ExchangeApiTest, CurvesAndPointsComeBackAsPolyLinesAndPoints)
+{
+    TQ3GroupObject group = Q3DisplayGroup_New();
+    TQ3PointData point{{1, 2, 3}, nullptr};
+    TQ3GeometryObject pointObject = Q3Point_New(&point);
+    TQ3Vertex3D vertices[3] = {{{0, 0, 0}, nullptr}, {{1, 0, 0}, nullptr}, {{1, 1, 0}, nullptr}};
+    TQ3PolyLineData polyLine{3, vertices, nullptr, nullptr};
+    TQ3GeometryObject polyLineObject = Q3PolyLine_New(&polyLine);
+    Q3Group_AddObject(group, pointObject);
+    Q3Group_AddObject(group, polyLineObject);
+    Q3Object_Dispose(pointObject);
+    Q3Object_Dispose(polyLineObject);
+    TQ3GroupObject back = roundTrip(group, "curves-points.glb");
+    ASSERT_NE(back, nullptr);
+    std::vector<TQ3Object> found;
+    std::function<void(TQ3Object)> gather = [&](TQ3Object object) {
+        if (Q3Object_IsType(object, kQ3GeometryTypePoint) == kQ3True ||
+            Q3Object_IsType(object, kQ3GeometryTypePolyLine) == kQ3True) {
+            found.push_back(object);
+            return;
+        }
+        if (Q3Object_IsType(object, kQ3ShapeTypeGroup) != kQ3True)
+            return;
+        TQ3GroupPosition position = nullptr;
+        Q3Group_GetFirstPosition(object, &position);
+        while (position != nullptr) {
+            TQ3Object child = nullptr;
+            Q3Group_GetPositionObject(object, position, &child);
+            gather(child);
+            Q3Object_Dispose(child);
+            Q3Group_GetNextPosition(object, &position);
+        }
+    };
+    gather(back);
+    ASSERT_EQ(found.size(), 2u);
+    int points = 0, polyLines = 0;
+    for (TQ3Object object : found) {
+        if (Q3Object_IsType(object, kQ3GeometryTypePoint) == kQ3True) {
+            ++points;
+            TQ3PointData data{};
+            ASSERT_EQ(Q3Point_GetData(object, &data), kQ3Success);
+            EXPECT_EQ(data.point.x, 1);
+            EXPECT_EQ(data.point.y, 2);
+            EXPECT_EQ(data.point.z, 3);
+            Q3Point_EmptyData(&data);
+        } else {
+            ++polyLines;
+            TQ3PolyLineData data{};
+            ASSERT_EQ(Q3PolyLine_GetData(object, &data), kQ3Success);
+            ASSERT_EQ(data.numVertices, 3u);
+            EXPECT_EQ(data.vertices[2].point.y, 1);
+            Q3PolyLine_EmptyData(&data);
+        }
+    }
+    EXPECT_EQ(points, 1);
+    EXPECT_EQ(polyLines, 1);
+    Q3Object_Dispose(back);
+    Q3Object_Dispose(group);
+}
+
 } // namespace
