@@ -15,6 +15,7 @@
 
 #include "core/AttributeSet.h"
 #include "core/EnumValue.h"
+#include "core/ErrorManager.h"
 #include "core/Error.h"
 #include "geometry/Geometry.h"
 #include "geometry/Primitives.h"
@@ -464,29 +465,40 @@ private:
     std::map<std::pair<const Texture*, unsigned long>, int> m_images;
 };
 
-// Plain groups and light groups are containers, not drawables: their objects
-// are taken one by one, the cameras and lights among them noted.
+// Plain groups, light groups and info groups are containers, not drawables:
+// their objects are taken one by one. Drawables, cameras and lights are
+// visited; anything else (a string, view hints) has no counterpart in the
+// formats and is left out, with kQ3WarningFunctionalityNotSupported when
+// `warn`.
 template <class Visit>
-void walk(const Object& object, const Visit& visit)
+void walk(const Object& object, const Visit& visit, bool warn)
 {
     const auto* group = dynamic_cast<const Group*>(&object);
     if (group != nullptr && dynamic_cast<const DisplayGroup*>(group) == nullptr) {
         for (const Group::Node& node : group->nodes())
             if (node.object)
-                walk(*node.object, visit);
+                walk(*node.object, visit, warn);
         return;
     }
-    visit(object);
+    if (object.isDrawable() || dynamic_cast<const q3::Camera*>(&object) != nullptr ||
+        dynamic_cast<const q3::Light*>(&object) != nullptr)
+        visit(object);
+    else if (warn)
+        errors::postWarning(kQ3WarningFunctionalityNotSupported,
+                            std::string("a ") + object.classInfo().name + " has no counterpart in the file: left out");
 }
 
 double diagonalOf(const Object& root)
 {
     BoundsPass bounds(kQ3ComputeBoundsApproximate, std::nullopt, defaultAttributes(nullptr));
     bounds.allowGroupCulling(false);
-    walk(root, [&](const Object& object) {
-        if (dynamic_cast<const q3::Camera*>(&object) == nullptr && dynamic_cast<const q3::Light*>(&object) == nullptr)
-            object.accept(bounds);
-    });
+    walk(
+        root,
+        [&](const Object& object) {
+            if (dynamic_cast<const q3::Camera*>(&object) == nullptr && dynamic_cast<const q3::Light*>(&object) == nullptr)
+                object.accept(bounds);
+        },
+        false);
     const TQ3BoundingBox box = bounds.box();
     if (enumValue(box.isEmpty) != kQ3False)
         return 1.0;
@@ -545,7 +557,7 @@ Scene sceneFrom(const Object& root, const SubdivisionChoice& choice)
         object.accept(pass);
         if (dynamic_cast<const DisplayGroup*>(&object) != nullptr)
             undrawn(object);
-    });
+    }, true);
     return scene;
 }
 

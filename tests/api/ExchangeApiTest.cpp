@@ -19,6 +19,7 @@
 #include "QD3DSet.h"
 #include "QD3DShader.h"
 #include "QD3DStorage.h"
+#include "QD3DString.h"
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 
@@ -905,6 +906,32 @@ TEST_F(ExchangeApiTest, CurvesAndPointsComeBackAsPolyLinesAndPoints)
     EXPECT_EQ(polyLines, 1);
     Q3Object_Dispose(back);
     Q3Object_Dispose(group);
+}
+
+// What the formats have no place for (an info group's strings) is left out
+// with a warning; the rest is written.
+TEST_F(ExchangeApiTest, ObjectsWithNoCounterpartAreLeftOutWithAWarning)
+{
+    TQ3GroupObject file = Q3Group_New();
+    TQ3GroupObject info = Q3InfoGroup_New();
+    TQ3StringObject note = Q3CString_New("made by hand");
+    Q3Group_AddObject(info, note);
+    TQ3TriangleData triangle{{{{0, 0, 0}, nullptr}, {{1, 0, 0}, nullptr}, {{0, 1, 0}, nullptr}}, nullptr};
+    TQ3GeometryObject geometry = Q3Triangle_New(&triangle);
+    Q3Group_AddObject(file, info);
+    Q3Group_AddObject(file, geometry);
+    const std::string path = temporaryPath("info.glb");
+    m_written.push_back(path);
+    EXPECT_Q3_WARNING(EXPECT_EQ(Q3Exchange_Write(file, path.c_str(), nullptr), kQ3Success),
+                      kQ3WarningFunctionalityNotSupported);
+    EXPECT_EQ(validatorErrors(path), "");
+    TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
+    ASSERT_NE(back, nullptr);
+    std::vector<TQ3Object> meshes;
+    collectTriMeshes(back, meshes);
+    EXPECT_EQ(meshes.size(), 1u);
+    for (TQ3Object o : {TQ3Object(note), TQ3Object(info), TQ3Object(geometry), TQ3Object(file), back})
+        Q3Object_Dispose(o);
 }
 
 } // namespace

@@ -648,3 +648,34 @@ INSTANTIATE_TEST_SUITE_P(TestData, ConvertCensus, ::testing::ValuesIn(kTextModel
                                      ch = '_';
                              return name;
                          });
+
+// Every text 3DMF file of tests/data converts to .glb and .gltf that the
+// Khronos validator passes with no errors, and reads back.
+class ConvertGltf : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ConvertGltf, EveryTestModelGivesAValidGlbAndGltf)
+{
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/" + GetParam();
+    const std::string validator = std::string(Q3_TEST_DATA_DIR) + "/../../scripts/gltf-validate.js";
+    for (const char* ext : {".glb", ".gltf"}) {
+        const std::string out = scratch(std::string("census") + ext), back = scratch("census_back.3dmf");
+        std::string errors;
+        ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + out + " --subdivision 8x", &errors), 0)
+            << errors;
+        EXPECT_EQ(run("node " + validator + " " + out + " > " + scratch("report.txt"), &errors), 0)
+            << slurp(scratch("report.txt")) << errors;
+        EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + out + " " + back, &errors), 0) << errors;
+        for (const std::string& path : {out, back, scratch("report.txt")})
+            std::remove(path.c_str());
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(TestData, ConvertGltf, ::testing::ValuesIn(kTextModels),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                             std::string name = info.param;
+                             name = name.substr(0, name.find('.'));
+                             for (char& ch : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(ch)))
+                                     ch = '_';
+                             return name;
+                         });
