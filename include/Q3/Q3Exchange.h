@@ -91,6 +91,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3Exchange_InitOptions(TQ3ExchangeOptions *options);
  *   kQ3ErrorInvalidData           a texture's storage no longer holds its
  *                                 image.
  *   kQ3ErrorOutOfMemory           memory ran out.
+ * Warnings:
+ *   kQ3WarningFunctionalityNotSupported  an object the format has no place
+ *                                 for (a string, view hints) was left out.
+ *   kQ3WarningParameterOutOfRange a subdivision value QD3DStyle.h's rules
+ *                                 replace (as a subdivision style would).
  * Ownership: none; object is not changed.
  */
 Q3_EXTERN_API_C(TQ3Status)
