@@ -378,9 +378,7 @@ private:
         m_materials.push_back(materialIndex);
 
         if (view.triangleCount != 0) {
-            Primitive triangles = base;
-            triangles.indices.assign(view.triangles, view.triangles + 3 * view.triangleCount);
-            triangles.normals = normalsOf(view, attributes);
+            Primitive triangles = litTriangles(view, base);
             compact(triangles);
             m_mesh.primitives.push_back(std::move(triangles));
         }
@@ -408,41 +406,61 @@ private:
         }
     }
 
-    // Unit normals for every vertex: its own, else the attribute in force,
-    // else the area-weighted normal of its triangles (counterclockwise front,
-    // the default orientation).
-    static std::vector<float> normalsOf(const MeshView& view, const AttributeValues& attributes)
+    // The triangles with unit normals, as the renderer lights them
+    // (view/RenderPass.cpp): when every vertex has a normal, the vertices are
+    // shared and keep theirs; otherwise each triangle gets three vertices of
+    // its own, a vertex's normal where it has one, else the face normal
+    // (counterclockwise front unless the orientation style says clockwise),
+    // so that a face without normals stays flat instead of being smoothed
+    // with its neighbours.
+    Primitive litTriangles(const MeshView& view, const Primitive& base) const
     {
-        std::vector<glm::dvec3> n(view.vertexCount, glm::dvec3(0.0));
-        std::vector<bool> given(view.vertexCount, false);
-        const std::optional<TQ3Vector3D> inForce = attributes.normal();
-        for (std::size_t i = 0; i < view.vertexCount; ++i) {
-            if (view.normals != nullptr && !isNone(view.normals[3 * i])) {
-                n[i] = glm::dvec3(view.normals[3 * i], view.normals[3 * i + 1], view.normals[3 * i + 2]);
-                given[i] = true;
-            } else if (inForce) {
-                n[i] = glm::dvec3(inForce->x, inForce->y, inForce->z);
-                given[i] = true;
+        auto unit = [](glm::dvec3 n) {
+            const double length = glm::length(n);
+            return length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0, 0, 1);
+        };
+        auto normalAt = [&](std::uint32_t i) {
+            return glm::dvec3(view.normals[3 * i], view.normals[3 * i + 1], view.normals[3 * i + 2]);
+        };
+        bool shared = view.normals != nullptr;
+        for (std::size_t k = 0; shared && k < 3 * view.triangleCount; ++k)
+            shared = !isNone(view.normals[3 * std::size_t(view.triangles[k])]);
+        Primitive out = base;
+        if (shared) {
+            out.indices.assign(view.triangles, view.triangles + 3 * view.triangleCount);
+            out.normals.resize(3 * view.vertexCount);
+            for (std::uint32_t i = 0; i < view.vertexCount; ++i) {
+                const glm::dvec3 n = isNone(view.normals[3 * i]) ? glm::dvec3(0, 0, 1) : unit(normalAt(i));
+                for (int d = 0; d < 3; ++d)
+                    out.normals[3 * i + d] = float(n[d]);
             }
+            return out;
         }
+        const double sign = state().draw.orientation == kQ3OrientationStyleClockwise ? -1.0 : 1.0;
+        out.positions.clear();
+        out.uvs.clear();
+        out.colors.clear();
+        auto copy = [](const std::vector<float>& from, std::vector<float>& to, std::uint32_t i, int width) {
+            if (!from.empty())
+                to.insert(to.end(), from.begin() + std::size_t(i) * width, from.begin() + (std::size_t(i) + 1) * width);
+        };
         for (std::size_t t = 0; t < view.triangleCount; ++t) {
             const std::uint32_t* v = view.triangles + 3 * t;
             auto at = [&](int k) {
                 const float* p = view.positions + 3 * std::size_t(v[k]);
                 return glm::dvec3(p[0], p[1], p[2]);
             };
-            const glm::dvec3 face = glm::cross(at(1) - at(0), at(2) - at(0));
-            for (int k = 0; k < 3; ++k)
-                if (!given[v[k]])
-                    n[v[k]] += face;
-        }
-        std::vector<float> out(3 * view.vertexCount);
-        for (std::size_t i = 0; i < view.vertexCount; ++i) {
-            const double length = glm::length(n[i]);
-            const glm::dvec3 unit = length > 0.0 && std::isfinite(length) ? n[i] / length : glm::dvec3(0, 0, 1);
-            out[3 * i] = float(unit.x);
-            out[3 * i + 1] = float(unit.y);
-            out[3 * i + 2] = float(unit.z);
+            const glm::dvec3 face = unit(sign * glm::cross(at(1) - at(0), at(2) - at(0)));
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec3 n =
+                    view.normals != nullptr && !isNone(view.normals[3 * std::size_t(v[k])]) ? unit(normalAt(v[k])) : face;
+                out.indices.push_back(std::uint32_t(out.positions.size() / 3));
+                copy(base.positions, out.positions, v[k], 3);
+                copy(base.uvs, out.uvs, v[k], 2);
+                copy(base.colors, out.colors, v[k], 4);
+                for (int d = 0; d < 3; ++d)
+                    out.normals.push_back(float(n[d]));
+            }
         }
         return out;
     }
