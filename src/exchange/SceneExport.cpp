@@ -31,6 +31,7 @@
 #include "view/Pass.h"
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <cmath>
 #include <functional>
@@ -166,6 +167,47 @@ std::array<double, 16> compose(const std::array<double, 16>& a, const Matrix& b)
     return flatten(then(m, b));
 }
 
+// Whether a row-vector matrix is translation x rotation x scale, which a
+// glTF node's matrix must be: no projective column, and the three axes
+// orthogonal (the scale may differ per axis, and be negative).
+bool isTrs(const Matrix& m)
+{
+    // m[i][j] holds QuickDraw 3D's value[i][j]: rows are the images of the
+    // axes, column 3 the projective part.
+    if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
+        return false;
+    const glm::dvec3 axes[3] = {glm::dvec3(m[0]), glm::dvec3(m[1]), glm::dvec3(m[2])};
+    for (int a = 0; a < 3; ++a)
+        for (int b = a + 1; b < 3; ++b) {
+            const double scale = glm::length(axes[a]) * glm::length(axes[b]);
+            if (scale == 0.0 || std::fabs(glm::dot(axes[a], axes[b])) > 1e-6 * scale)
+                return false;
+        }
+    return true;
+}
+
+// A mesh moved into world space by a matrix that is not TRS: positions
+// through the matrix (with the divide), normals through its inverse
+// transpose, renormalized.
+void bake(Mesh& mesh, const Matrix& world)
+{
+    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+    for (Primitive& p : mesh.primitives) {
+        for (std::size_t i = 0; i + 2 < p.positions.size(); i += 3) {
+            const glm::dvec4 v = transformPoint(world, glm::dvec3(p.positions[i], p.positions[i + 1], p.positions[i + 2]));
+            for (int d = 0; d < 3; ++d)
+                p.positions[i + d] = float(v[d] / v.w);
+        }
+        for (std::size_t i = 0; i + 2 < p.normals.size(); i += 3) {
+            glm::dvec3 n = normalMatrix * glm::dvec3(p.normals[i], p.normals[i + 1], p.normals[i + 2]);
+            const double length = glm::length(n);
+            n = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0, 0, 1);
+            for (int d = 0; d < 3; ++d)
+                p.normals[i + d] = float(n[d]);
+        }
+    }
+}
+
 class ExportPass final : public Pass, private PrimitiveSink {
 public:
     ExportPass(Scene& scene, const TQ3SubdivisionStyleData& subdivision)
@@ -209,6 +251,16 @@ public:
         geometry.decompose(*this, *this);
         if (m_mesh.primitives.empty())
             return;
+        const Matrix& world = state().localToWorld;
+        if (!isTrs(world)) {
+            // glTF allows only translation, rotation and scale in a node
+            // (a shear or a projection is invalid): such a mesh is placed
+            // in world space itself, under an identity node.
+            bake(m_mesh, world);
+            m_scene.meshes.push_back(std::move(m_mesh));
+            m_scene.nodes[addNode(geometry.classInfo().name)].mesh = int(m_scene.meshes.size() - 1);
+            return;
+        }
         const auto key = std::make_tuple(&geometry, geometry.editIndex(), m_materials, subdivisionMeasure().key);
         auto found = m_meshes.find(key);
         if (found == m_meshes.end()) {

@@ -21,6 +21,7 @@
 #include "QD3DStorage.h"
 #include "QD3DString.h"
 #include "QD3DStyle.h"
+#include "QD3DMath.h"
 #include "QD3DTransform.h"
 
 #include <unistd.h>
@@ -932,6 +933,39 @@ TEST_F(ExchangeApiTest, ObjectsWithNoCounterpartAreLeftOutWithAWarning)
     EXPECT_EQ(meshes.size(), 1u);
     for (TQ3Object o : {TQ3Object(note), TQ3Object(info), TQ3Object(geometry), TQ3Object(file), back})
         Q3Object_Dispose(o);
+}
+
+// A shear is no glTF node matrix (translation, rotation and scale only):
+// the mesh is written in world space instead, and lands where it was.
+TEST_F(ExchangeApiTest, AShearedGeometryIsWrittenInWorldSpace)
+{
+    TQ3Matrix4x4 shear;
+    Q3Matrix4x4_SetIdentity(&shear);
+    shear.value[1][0] = 0.5f; // x += 0.5 y
+    shear.value[3][2] = 2.0f; // then z += 2
+    TQ3TransformObject transform = Q3MatrixTransform_New(&shear);
+    TQ3TriangleData triangle{{{{0, 0, 0}, nullptr}, {{1, 0, 0}, nullptr}, {{0, 1, 0}, nullptr}}, nullptr};
+    TQ3GeometryObject geometry = Q3Triangle_New(&triangle);
+    TQ3GroupObject group = Q3DisplayGroup_New();
+    Q3Group_AddObject(group, transform);
+    Q3Group_AddObject(group, geometry);
+    Q3Object_Dispose(transform);
+    Q3Object_Dispose(geometry);
+    TQ3GroupObject back = roundTrip(group, "shear.glb");
+    ASSERT_NE(back, nullptr);
+    std::vector<TQ3Object> meshes;
+    collectTriMeshes(back, meshes);
+    ASSERT_EQ(meshes.size(), 1u);
+    Triangles read;
+    read.add(meshes[0]);
+    ASSERT_EQ(read.points.size(), 3u);
+    // (0,1,0) sheared: (0.5, 1, 2).
+    bool found = false;
+    for (const TQ3Point3D& p : read.points)
+        found = found || (std::fabs(p.x - 0.5f) < 1e-6 && std::fabs(p.y - 1) < 1e-6 && std::fabs(p.z - 2) < 1e-6);
+    EXPECT_TRUE(found);
+    Q3Object_Dispose(back);
+    Q3Object_Dispose(group);
 }
 
 } // namespace
