@@ -170,6 +170,7 @@ int main(int argc, char **argv)
     options.subdivisionFromSize = kQ3True;
     options.subdivisionMethod = kQ3SubdivisionMethodWorldSpace;
     options.subdivisionValue = 1.0f;
+    options.view = NULL;
     for (arg = 1; arg < argc; ++arg) {
         if (strcmp(argv[arg], "--format") == 0) {
             if (++arg == argc || !formatOfName(argv[arg], &outFormat))

@@ -39,14 +39,19 @@ typedef enum TQ3ExchangeFormat {
  * kQ3True (the default) subdivides in world space, no side longer than
  * 1/32 of the diagonal of the model's bounding box; kQ3False uses
  * subdivisionMethod, kQ3SubdivisionMethodWorldSpace (subdivisionValue the
- * longest side, in world units) or kQ3SubdivisionMethodConstant
- * (subdivisionValue segments around, and along, each curve and surface).
- * Either replaces every subdivision style of the model. */
+ * longest side, in world units), kQ3SubdivisionMethodConstant
+ * (subdivisionValue segments around, and along, each curve and surface) or,
+ * with a view, kQ3SubdivisionMethodScreenSpace (subdivisionValue pixels).
+ * Either replaces every subdivision style of the model. view: NULL (the
+ * default), or a view with a camera and a pixmap draw context whose pane
+ * lengths are measured in, as its rendering loop measures them, so that
+ * the file holds the triangles that view draws. */
 typedef struct TQ3ExchangeOptions {
     TQ3ExchangeFormat format;
     TQ3Boolean subdivisionFromSize;
     TQ3SubdivisionMethod subdivisionMethod;
     float subdivisionValue;
+    TQ3ViewObject view;
 } TQ3ExchangeOptions;
 
 /*
@@ -82,11 +87,15 @@ Q3_EXTERN_API_C(TQ3Status) Q3Exchange_InitOptions(TQ3ExchangeOptions *options);
  * Errors:
  *   kQ3ErrorNotInitialized        Q3Initialize has not been called.
  *   kQ3ErrorNULLParameter         object or path is NULL.
- *   kQ3ErrorInvalidObject         object is not a live Q3 object.
+ *   kQ3ErrorInvalidObject         object (or options->view) is not a live
+ *                                 Q3 object.
+ *   kQ3ErrorInvalidObjectType     options->view is not a view.
  *   kQ3ErrorInvalidParameter      the format is not one above, or Any and
  *                                 the extension names none; the subdivision
- *                                 method is not one above, or its value is
- *                                 not finite and greater than 0.
+ *                                 method is not one above (screen space
+ *                                 without a view with a camera and a pixmap
+ *                                 draw context), or its value is not finite
+ *                                 and greater than 0.
  *   kQ3ErrorFileNotOpen           the file cannot be written.
  *   kQ3ErrorInvalidData           a texture's storage no longer holds its
  *                                 image.

@@ -210,8 +210,8 @@ void bake(Mesh& mesh, const Matrix& world)
 
 class ExportPass final : public Pass, private PrimitiveSink {
 public:
-    ExportPass(Scene& scene, const TQ3SubdivisionStyleData& subdivision)
-        : Pass(std::nullopt, defaultAttributes(nullptr)), m_scene(scene),
+    ExportPass(Scene& scene, const TQ3SubdivisionStyleData& subdivision, std::optional<Window> window)
+        : Pass(std::move(window), defaultAttributes(nullptr)), m_scene(scene),
           m_subdivision(makeShared<SubdivisionStyle>(subdivision))
     {
         allowGroupCulling(false);
@@ -605,7 +605,7 @@ Scene sceneFrom(const Object& root, const SubdivisionChoice& choice)
         style = TQ3SubdivisionStyleData{kQ3SubdivisionMethodWorldSpace, float(diagonalOf(root) / 32.0),
                                        float(diagonalOf(root) / 32.0)};
     Scene scene;
-    ExportPass pass(scene, style);
+    ExportPass pass(scene, style, choice.window);
     // Cameras and lights are in world coordinates; a display group holds
     // them without drawing them (Q3Exchange_Read puts them there), so they
     // are gathered from inside display groups too, after the drawing.

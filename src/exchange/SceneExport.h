@@ -4,6 +4,9 @@
 
 #include "QD3DStyle.h"
 #include "exchange/Scene.h"
+#include "view/CurveTessellation.h"
+
+#include <optional>
 
 namespace q3 {
 class Object;
@@ -18,6 +21,8 @@ namespace q3::exchange {
 struct SubdivisionChoice {
     bool fromBounds = true;
     TQ3SubdivisionStyleData style{kQ3SubdivisionMethodWorldSpace, 1.0f, 1.0f};
+    /// A view's camera and pane: screen-space lengths are measured there.
+    std::optional<Window> window;
 };
 
 /// The scene `root` draws: a geometry, a display group, any shape, or a plain

@@ -122,11 +122,8 @@ private:
                 if (!p.indices.empty())
                     objects.push_back(triMesh(p, set));
             } else if (p.mode == Primitive::Mode::kLineStrip) {
-                std::vector<float> xyz;
-                for (std::uint32_t i : p.indices)
-                    xyz.insert(xyz.end(), &p.positions[3 * std::size_t(i)], &p.positions[3 * std::size_t(i)] + 3);
                 if (p.indices.size() >= 2)
-                    objects.push_back(PolyLine::fromPoints(xyz.data(), p.indices.size(), set));
+                    objects.push_back(polyLine(p, p.indices, set));
             } else if (p.mode == Primitive::Mode::kPoints) {
                 for (std::uint32_t i : p.indices) {
                     const TQ3PointData data{
@@ -138,15 +135,40 @@ private:
                     objects.push_back(makeShared<Point>(data));
                 }
             } else if (p.mode == Primitive::Mode::kLines) {
-                for (std::size_t k = 0; k + 1 < p.indices.size(); k += 2) {
-                    float xyz[6];
-                    std::memcpy(xyz, &p.positions[3 * std::size_t(p.indices[k])], sizeof(float) * 3);
-                    std::memcpy(xyz + 3, &p.positions[3 * std::size_t(p.indices[k + 1])], sizeof(float) * 3);
-                    objects.push_back(PolyLine::fromPoints(xyz, 2, set));
-                }
+                for (std::size_t k = 0; k + 1 < p.indices.size(); k += 2)
+                    objects.push_back(polyLine(p, {p.indices[k], p.indices[k + 1]}, set));
             }
         }
         return objects;
+    }
+
+    // A PolyLine through the primitive's vertices `indices`, each with its
+    // colour (COLOR_0) as a vertex attribute set when the primitive has
+    // colours.
+    static Ref<SharedObject> polyLine(const Primitive& p, const std::vector<std::uint32_t>& indices,
+                                      const AttributeSet* set)
+    {
+        const std::size_t count = p.positions.size() / 3;
+        std::vector<TQ3Vertex3D> vertices(indices.size());
+        std::vector<Ref<AttributeSet>> sets;
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            const std::size_t i = indices[k];
+            vertices[k].point = TQ3Point3D{p.positions[3 * i], p.positions[3 * i + 1], p.positions[3 * i + 2]};
+            vertices[k].attributeSet = nullptr;
+            if (p.colors.size() == 4 * count) {
+                sets.push_back(makeShared<AttributeSet>());
+                const TQ3ColorRGB color{p.colors[4 * i], p.colors[4 * i + 1], p.colors[4 * i + 2]};
+                sets.back()->add(kQ3AttributeTypeDiffuseColor, &color);
+                vertices[k].attributeSet = sets.back().get();
+            }
+        }
+        TQ3PolyLineData data{};
+        data.numVertices = static_cast<unsigned long>(vertices.size());
+        data.vertices = vertices.data();
+        // The polyline takes its own references to the sets.
+        data.polyLineAttributeSet = const_cast<AttributeSet*>(set);
+        PolyLine::check(data);
+        return makeShared<PolyLine>(data);
     }
 
     static Ref<SharedObject> triMesh(const Primitive& p, const AttributeSet* set)
