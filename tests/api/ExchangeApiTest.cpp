@@ -627,6 +627,16 @@ TEST_F(ExchangeApiTest, AFailedWriteLeavesNothingAndBadOptionsAreRefused)
     options.subdivisionMethod = kQ3SubdivisionMethodScreenSpace;
     options.subdivisionValue = 1.0f;
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, path.c_str(), &options), kQ3Failure), kQ3ErrorInvalidParameter);
+    // Screen space needs a view with a camera and a draw context; the view
+    // must be one.
+    TQ3ViewObject bare = Q3View_New();
+    options.view = bare;
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, path.c_str(), &options), kQ3Failure), kQ3ErrorInvalidParameter);
+    options.view = group;
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, path.c_str(), &options), kQ3Failure),
+                    kQ3ErrorInvalidObjectType);
+    options.view = nullptr;
+    Q3Object_Dispose(bare);
     EXPECT_FALSE(exists(path));
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(nullptr, path.c_str(), nullptr), kQ3Failure), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Exchange_Write(group, nullptr, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
