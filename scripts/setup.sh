@@ -15,7 +15,30 @@ packages=(
   libbenchmark-dev    # benchmarks
   libglu1-mesa-dev    # the GLU NURBS tessellator, a benchmark peer (own process)
   clang libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes
+  libtinygltf-dev     # glTF 2.0 reading and writing (src/exchange, docs/exchange.md)
+  libassimp-dev       # OBJ/MTL and STL reading and writing (src/exchange)
+  nodejs              # runs the Khronos glTF validator in the exchange tests (Debian's
+                      # nodejs wants its npm package too; NodeSource's carries npm)
 )
+
+# The Khronos glTF validator (npm's gltf-validator, a pinned version), into
+# build-tools/node_modules (ignored by git), where scripts/gltf-validate.js
+# and the exchange tests find it.
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+
+install_validator() {
+  local root
+  root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+  if [ ! -f "$root/build-tools/node_modules/gltf-validator/package.json" ]; then
+    if ! command -v npm >/dev/null; then
+      "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends npm
+    fi
+    echo "setup: installing gltf-validator into build-tools/node_modules"
+    mkdir -p "$root/build-tools"
+    npm install --silent --no-save --no-package-lock --prefix "$root/build-tools" gltf-validator@2.0.0-dev.3.10
+  fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -25,11 +48,11 @@ for p in "${packages[@]}"; do
 done
 
 if [ ${#missing[@]} -eq 0 ]; then
+  install_validator
   exit 0
 fi
 
 echo "setup: installing ${missing[*]}"
-sudo_cmd=()
-if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
 "${sudo_cmd[@]}" apt-get update -qq
 DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_validator

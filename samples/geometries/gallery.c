@@ -563,7 +563,7 @@ TQ3GeometryObject q3gallery_new(unsigned long index)
 /* ---- Drawing --------------------------------------------------------------- */
 
 /* What the scene's submit function draws (the sample is single-threaded). */
-static TQ3GeometryObject s_geometry;
+static TQ3Object s_geometry;
 static int s_lit;
 
 static TQ3Status submit_entry(TQ3ViewObject view)
@@ -581,34 +581,47 @@ static TQ3Status submit_entry(TQ3ViewObject view)
         if (status != kQ3Success)
             return kQ3Failure;
     }
-    return Q3Geometry_Submit(s_geometry, view);
+    return Q3Object_Submit(s_geometry, view);
 }
 
 int q3gallery_render(unsigned long index, int lit, unsigned long width, unsigned long height, unsigned char *rgba)
+{
+    TQ3GeometryObject geometry;
+    int result;
+
+    if (index >= q3gallery_count())
+        return 1;
+    geometry = kEntries[index].make();
+    if (geometry == NULL)
+        return 1;
+    result = q3gallery_render_object(geometry, lit, width, height, rgba);
+    dispose(geometry);
+    return result;
+}
+
+int q3gallery_render_object(TQ3Object object, int lit, unsigned long width, unsigned long height,
+                            unsigned char *rgba)
 {
     Q3Scene scene;
     TQ3GroupObject lights = NULL;
     int result;
 
-    if (index >= q3gallery_count())
+    if (object == NULL)
         return 1;
     memset(&scene, 0, sizeof scene);
-    scene.name = kEntries[index].name;
-    scene.caption = kEntries[index].name;
+    scene.name = "gallery";
+    scene.caption = "gallery";
     scene.renderer = lit ? kQ3RendererTypeInteractive : kQ3RendererTypeWireFrame;
     scene.eye = point3(1.0f, 1.3f, 4.3f);
     scene.fieldOfView = 0.75f;
     scene.background = rgb(0.12f, 0.12f, 0.16f);
     scene.submit = submit_entry;
-    s_geometry = kEntries[index].make();
+    s_geometry = object;
     s_lit = lit;
-    if (s_geometry == NULL || (lit && (lights = q3litscene_new_lights(0.3f, 0.9f, vector3(0.6f, -0.6f, -0.8f))) == NULL)) {
-        dispose(s_geometry);
+    if (lit && (lights = q3litscene_new_lights(0.3f, 0.9f, vector3(0.6f, -0.6f, -0.8f))) == NULL)
         return 1;
-    }
     result = q3scene_render_lit(&scene, lights, width, height, rgba);
     dispose(lights);
-    dispose(s_geometry);
     s_geometry = NULL;
     return result;
 }

@@ -34,6 +34,11 @@ TQ3GeometryObject q3gallery_new(unsigned long index);
  * lit (1) or in wireframe (0); 0 on success. Q3 must be initialized. */
 int q3gallery_render(unsigned long index, int lit, unsigned long width, unsigned long height, unsigned char *rgba);
 
+/* Draws any drawable object (a geometry, a group) as q3gallery_render draws
+ * an entry: the same camera, lights, subdivision and illumination. */
+int q3gallery_render_object(TQ3Object object, int lit, unsigned long width, unsigned long height,
+                            unsigned char *rgba);
+
 #ifdef __cplusplus
 }
 #endif

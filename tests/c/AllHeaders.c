@@ -22,6 +22,7 @@
 #include "QD3DTransform.h"
 #include "QD3DView.h"
 #include "Q3NURBCurveTools.h"
+#include "Q3Exchange.h"
 #include "Q3PixmapPNG.h"
 
 #include <stdio.h>

@@ -252,6 +252,78 @@ TEST(Q3Convert, TextToBinaryToTextGivesTheSameText)
         std::remove(path.c_str());
 }
 
+TEST(Q3Convert, ToGlbAndGltfAndBackKeepsTheTexturedBox)
+{
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/textured_box.3dmf";
+    const std::string validator = std::string(Q3_TEST_DATA_DIR) + "/../../scripts/gltf-validate.js";
+    for (const char* ext : {".glb", ".gltf", ".GLB"}) {
+        const std::string gltf = scratch(std::string("box") + ext), back = scratch("box_back.3dmf");
+        std::string errors;
+        ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + gltf + " --subdivision 4x", &errors), 0)
+            << errors;
+        EXPECT_EQ(run("node " + validator + " " + gltf + " > /dev/null", &errors), 0) << errors;
+        ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + gltf + " " + back + " --text", &errors), 0) << errors;
+        const std::string text = slurp(back);
+        EXPECT_NE(text.find("TriMesh"), std::string::npos);
+        EXPECT_NE(text.find("TextureShader"), std::string::npos);
+        EXPECT_NE(text.find("MipmapTexture"), std::string::npos);
+        // The box's 8 x 8 texels, orange E6B43C and blue 285AC8, opaque.
+        EXPECT_NE(text.find("FFE6B43CFF285AC8"), std::string::npos);
+        std::remove(gltf.c_str());
+        std::remove(back.c_str());
+    }
+    // --format wins over the extension.
+    const std::string forced = scratch("forced.bin");
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + forced + " --format glb"), 0);
+    EXPECT_EQ(slurp(forced).substr(0, 4), "glTF");
+    std::remove(forced.c_str());
+}
+
+TEST(Q3Convert, ToObjAndStlAndBack)
+{
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/textured_box.3dmf";
+    const std::string obj = scratch("box.obj"), mtl = scratch("box.mtl"), png = scratch("box_0.png");
+    const std::string stl = scratch("box.stl"), back = scratch("box_from.3dmf");
+    std::string errors;
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + obj + " --subdivision 2x", &errors), 0) << errors;
+    EXPECT_NE(slurp(obj).find("mtllib"), std::string::npos);
+    EXPECT_NE(slurp(mtl).find("map_Kd"), std::string::npos);
+    EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + obj + " " + back + " --text", &errors), 0) << errors;
+    EXPECT_NE(slurp(back).find("MipmapTexture"), std::string::npos);
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + stl + " --subdivision 2x", &errors), 0) << errors;
+    // Binary STL: an 80-byte header, then the triangle count.
+    EXPECT_GT(slurp(stl).size(), 84u);
+    ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + stl + " " + back + " --text", &errors), 0) << errors;
+    EXPECT_NE(slurp(back).find("TriMesh"), std::string::npos);
+    // An OBJ without its material file is exit status 2, with the file named.
+    std::remove(mtl.c_str());
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + obj + " " + back, &errors), 2);
+    EXPECT_NE(errors.find("box.mtl"), std::string::npos) << errors;
+    for (const std::string& path : {obj, png, stl, back})
+        std::remove(path.c_str());
+}
+
+TEST(Q3Convert, ABrokenGltfIsExitStatusTwoAndAnUnwritableOutputThreeWithNothingLeft)
+{
+    const std::string broken = scratch("broken.gltf"), out = scratch("broken.3dmf");
+    {
+        std::ofstream file(broken);
+        file << "{ \"asset\": { \"version\": \"2.0\" }, \"nodes\": [ { \"mesh\": 3 } ] ";
+    }
+    std::string errors;
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + broken + " " + out, &errors), 2);
+    EXPECT_NE(errors.find("cannot be read"), std::string::npos) << errors;
+    EXPECT_TRUE(slurp(out).empty());
+    const std::string nowhere = scratch("no/such/dir/out.glb");
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + nowhere, &errors), 3);
+    EXPECT_NE(errors.find("cannot write"), std::string::npos) << errors;
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + scratch("x.glb") + " --subdivision -1", &errors),
+              1);
+    EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + kScene + " " + scratch("x.glb") + " --format fbx", &errors), 1);
+    std::remove(broken.c_str());
+}
+
 TEST(Q3Convert, AnObjectLeftOutIsNamedOnStandardError)
 {
     // tests/data/unknown.3dmf holds an unknown text object, which has no
@@ -573,6 +645,37 @@ TEST_P(ConvertCensus, TextToBinaryToTextLosesNothing)
 }
 
 INSTANTIATE_TEST_SUITE_P(TestData, ConvertCensus, ::testing::ValuesIn(kTextModels),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                             std::string name = info.param;
+                             name = name.substr(0, name.find('.'));
+                             for (char& ch : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(ch)))
+                                     ch = '_';
+                             return name;
+                         });
+
+// Every text 3DMF file of tests/data converts to .glb and .gltf that the
+// Khronos validator passes with no errors, and reads back.
+class ConvertGltf : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ConvertGltf, EveryTestModelGivesAValidGlbAndGltf)
+{
+    const std::string model = std::string(Q3_TEST_DATA_DIR) + "/" + GetParam();
+    const std::string validator = std::string(Q3_TEST_DATA_DIR) + "/../../scripts/gltf-validate.js";
+    for (const char* ext : {".glb", ".gltf"}) {
+        const std::string out = scratch(std::string("census") + ext), back = scratch("census_back.3dmf");
+        std::string errors;
+        ASSERT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + model + " " + out + " --subdivision 8x", &errors), 0)
+            << errors;
+        EXPECT_EQ(run("node " + validator + " " + out + " > " + scratch("report.txt"), &errors), 0)
+            << slurp(scratch("report.txt")) << errors;
+        EXPECT_EQ(run(std::string(Q3_CONVERT_TOOL) + " " + out + " " + back, &errors), 0) << errors;
+        for (const std::string& path : {out, back, scratch("report.txt")})
+            std::remove(path.c_str());
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(TestData, ConvertGltf, ::testing::ValuesIn(kTextModels),
                          [](const ::testing::TestParamInfo<const char*>& info) {
                              std::string name = info.param;
                              name = name.substr(0, name.find('.'));
