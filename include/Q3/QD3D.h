@@ -15,6 +15,7 @@
  */
 
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #ifdef __cplusplus
@@ -34,6 +35,10 @@ extern "C" {
  * Apple's platform switches, as QD3D.h defines them for a Unix target (Q3
  * runs on Linux), for legacy code that tests them with #if. QD3D_EXPORT,
  * QD3D_CALL and QD3D_CALLBACK are empty outside Win32, as in QD3D.h.
+ * WINDOW_SYSTEM_X11 is 0: Apple's X11 draw context (TQ3XDrawContextData,
+ * Q3XDrawContext_New, Q3XBuffers_New, ...) is not declared, and legacy code
+ * that tests the macro would take a branch that cannot compile. It becomes 1
+ * when QD3DDrawContext.h declares that API.
  */
 #define OS_MACINTOSH 0
 #define OS_WIN32 0
@@ -41,7 +46,7 @@ extern "C" {
 #define OS_NEXT 0
 #define WINDOW_SYSTEM_MACINTOSH 0
 #define WINDOW_SYSTEM_WIN32 0
-#define WINDOW_SYSTEM_X11 1
+#define WINDOW_SYSTEM_X11 0
 #define WINDOW_SYSTEM_NEXT 0
 
 #define QD3D_EXPORT
@@ -53,24 +58,27 @@ extern "C" {
 /*
  * Apple's fixed-size names (QuickDraw 3D 1.6 declares them in QD3DIO.h, which
  * includes QD3D.h; Q3 declares them here, where later code expects them).
- * They are declared exactly as Apple does: TQ3Uns32 and TQ3Int32 are
- * unsigned long and long, which is 64 bits on LP64 Linux (legacy code that
- * passes their address where an unsigned long * is expected keeps working;
- * Q3's file I/O reads and writes 32 bits for them). The 64-bit types are
- * structs of two halves, high half first on big-endian machines.
+ * Each is exactly the width its name says (<stdint.h>), as it was on the
+ * Macintosh, where Apple's unsigned long was 32 bits: legacy code lays out
+ * binary data (pixmap images, file records) in TQ3Uns32 arrays. Apple's own
+ * parameters and struct fields typed unsigned long stay unsigned long, so
+ * code that passes an unsigned long * to a getter keeps compiling; only the
+ * names with a width in them changed meaning on LP64 (docs/porting.md,
+ * "Types"). The 64-bit types keep Apple's layout: structs of two 32-bit
+ * halves, high half first on big-endian machines, low half first here.
  */
-typedef unsigned char TQ3Uns8;
-typedef signed char TQ3Int8;
-typedef unsigned short TQ3Uns16;
-typedef signed short TQ3Int16;
-typedef unsigned long TQ3Uns32;
-typedef signed long TQ3Int32;
+typedef uint8_t TQ3Uns8;
+typedef int8_t TQ3Int8;
+typedef uint16_t TQ3Uns16;
+typedef int16_t TQ3Int16;
+typedef uint32_t TQ3Uns32;
+typedef int32_t TQ3Int32;
 #if defined(__BYTE_ORDER__) && defined(__ORDER_BIG_ENDIAN__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
-typedef struct TQ3Uns64 { unsigned long hi; unsigned long lo; } TQ3Uns64;
-typedef struct TQ3Int64 { signed long hi; unsigned long lo; } TQ3Int64;
+typedef struct TQ3Uns64 { TQ3Uns32 hi; TQ3Uns32 lo; } TQ3Uns64;
+typedef struct TQ3Int64 { TQ3Int32 hi; TQ3Uns32 lo; } TQ3Int64;
 #else
-typedef struct TQ3Uns64 { unsigned long lo; unsigned long hi; } TQ3Uns64;
-typedef struct TQ3Int64 { unsigned long lo; signed long hi; } TQ3Int64;
+typedef struct TQ3Uns64 { TQ3Uns32 lo; TQ3Uns32 hi; } TQ3Uns64;
+typedef struct TQ3Int64 { TQ3Uns32 lo; TQ3Int32 hi; } TQ3Int64;
 #endif
 typedef float TQ3Float32;
 typedef double TQ3Float64;
