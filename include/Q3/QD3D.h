@@ -423,6 +423,139 @@ Q3_EXTERN_API_C(TQ3Boolean) Q3IsInitialized(void);
  */
 Q3_EXTERN_API_C(TQ3Status) Q3GetVersion(unsigned long *majorRevision, unsigned long *minorRevision);
 
+/**
+ * Reports the release of QuickDraw 3D that Q3 implements, in the format of
+ * the first four bytes of a Mac 'vers' resource: 0x01608000, release 1.6.0
+ * final (major 0x01, minor and bug-fix 0x60, stage 0x80 final, build 0x00).
+ *
+ * @param releaseRevision  receives the release version.
+ * @return kQ3Success, or kQ3Failure with *releaseRevision unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   releaseRevision is NULL.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GetReleaseVersion(unsigned long *releaseRevision);
+
+/* ---- Object hierarchy ----------------------------------------------------- */
+
+/*
+ * The class hierarchy queries. Every class Q3 provides is registered; its
+ * type is its kQ3...Type constant and its name is its 3D Metafile text name
+ * where the class has one ("Box", "TriMesh", "AttributeSet", ...), else its
+ * description in one word ("InteractiveRenderer", "WireframeRenderer",
+ * "PixmapDrawContext", ...). Names compare exactly, case included. The root
+ * of the hierarchy (kQ3ObjectTypeInvalid) is not a class.
+ */
+
+/**
+ * Finds the type of the class with a name.
+ *
+ * @param objectClassString  the class name, '\0' terminated.
+ * @param objectClassType    receives the class type.
+ * @return kQ3Success, or kQ3Failure with *objectClassType unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     objectClassString or objectClassType is NULL.
+ *   kQ3ErrorInvalidParameter  no class has that name.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ObjectHierarchy_GetTypeFromString(TQ3ObjectClassNameString objectClassString,
+                                                               TQ3ObjectType *objectClassType);
+
+/**
+ * Writes the name of a registered class.
+ *
+ * @param objectClassType    the class type.
+ * @param objectClassString  receives the name, '\0' terminated (at most
+ *                           kQ3StringMaximumLength bytes with the '\0').
+ * @return kQ3Success, or kQ3Failure with objectClassString unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     objectClassString is NULL.
+ *   kQ3ErrorInvalidParameter  no class has type objectClassType.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ObjectHierarchy_GetStringFromType(TQ3ObjectType objectClassType,
+                                                               TQ3ObjectClassNameString objectClassString);
+
+/**
+ * Reports whether a class with this type is registered.
+ *
+ * @param objectClassType  the class type.
+ * @return kQ3True or kQ3False (kQ3False on failure).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3ObjectHierarchy_IsTypeRegistered(TQ3ObjectType objectClassType);
+
+/**
+ * Reports whether a class with this name is registered.
+ *
+ * @param objectClassName  the class name, '\0' terminated.
+ * @return kQ3True or kQ3False (kQ3False on failure).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   objectClassName is NULL.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3ObjectHierarchy_IsNameRegistered(const char *objectClassName);
+
+/* The subclasses of a class, as Q3ObjectHierarchy_GetSubClassData fills it. */
+struct TQ3SubClassData {
+    unsigned long numClasses;  /* the number of subclass types found */
+    TQ3ObjectType *classTypes; /* the subclass types (NULL when none) */
+};
+typedef struct TQ3SubClassData TQ3SubClassData;
+
+/**
+ * Lists the classes immediately below a class in the hierarchy, in
+ * ascending order of type code. Every Qut front end (Quesa's sample
+ * framework) builds its renderer menu with this and kQ3SharedTypeRenderer.
+ *
+ * @param objectClassType  the parent class type (kQ3ObjectTypeShared,
+ *                         kQ3SharedTypeRenderer, ...).
+ * @param subClassData     receives the count and a new array of types.
+ * @return kQ3Success, or kQ3Failure with *subClassData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     subClassData is NULL.
+ *   kQ3ErrorInvalidParameter  no class has type objectClassType.
+ *   kQ3ErrorOutOfMemory       the array could not be allocated.
+ *
+ * Ownership: the caller frees classTypes with
+ * Q3ObjectHierarchy_EmptySubClassData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ObjectHierarchy_GetSubClassData(TQ3ObjectType objectClassType,
+                                                             TQ3SubClassData *subClassData);
+
+/**
+ * Frees the array Q3ObjectHierarchy_GetSubClassData allocated, and sets
+ * numClasses to 0 and classTypes to NULL. Emptying an empty one is harmless.
+ *
+ * @param subClassData  the data to empty.
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   subClassData is NULL.
+ *
+ * Ownership: consumes subClassData->classTypes.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ObjectHierarchy_EmptySubClassData(TQ3SubClassData *subClassData);
+
 /*
  * Q3Memory_CountLiveObjects (Q3 extension): the number of Q3 objects (views,
  * shared objects) created and not yet disposed, across all threads. Tests use
@@ -462,6 +595,28 @@ Q3_EXTERN_API_C(TQ3Status) Q3Object_Submit(TQ3Object object, TQ3ViewObject view)
 /* Q3Object_IsDrawable: kQ3True when object may be submitted to a view.
  * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject (then kQ3False). */
 Q3_EXTERN_API_C(TQ3Boolean) Q3Object_IsDrawable(TQ3Object object);
+
+/**
+ * Reports whether an object can be written to a 3D Metafile: kQ3True for
+ * every class Q3's 3DMF writer knows (geometries, groups, styles,
+ * transforms, attribute sets, shaders, textures, cameras, lights, view
+ * hints, strings, unknown objects), kQ3False for the rest (views, draw
+ * contexts, renderers, storage, files, picks).
+ *
+ * @param object   the object to ask about.
+ * @param theFile  the file it would be written to; any file object, open or
+ *                 not (the answer does not depend on it).
+ * @return kQ3True or kQ3False (kQ3False on failure).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      object or theFile is NULL.
+ *   kQ3ErrorInvalidObject      object or theFile is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  theFile is not a file.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3Object_IsWritable(TQ3Object object, TQ3FileObject theFile);
 
 /* Q3Object_GetType: the object's first-level type: kQ3ObjectTypeShared,
  * kQ3ObjectTypeView, ... Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject
