@@ -15,6 +15,7 @@
  */
 
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #ifdef __cplusplus
@@ -34,6 +35,10 @@ extern "C" {
  * Apple's platform switches, as QD3D.h defines them for a Unix target (Q3
  * runs on Linux), for legacy code that tests them with #if. QD3D_EXPORT,
  * QD3D_CALL and QD3D_CALLBACK are empty outside Win32, as in QD3D.h.
+ * WINDOW_SYSTEM_X11 is 0: Apple's X11 draw context (TQ3XDrawContextData,
+ * Q3XDrawContext_New, Q3XBuffers_New, ...) is not declared, and legacy code
+ * that tests the macro would take a branch that cannot compile. It becomes 1
+ * when QD3DDrawContext.h declares that API.
  */
 #define OS_MACINTOSH 0
 #define OS_WIN32 0
@@ -41,7 +46,7 @@ extern "C" {
 #define OS_NEXT 0
 #define WINDOW_SYSTEM_MACINTOSH 0
 #define WINDOW_SYSTEM_WIN32 0
-#define WINDOW_SYSTEM_X11 1
+#define WINDOW_SYSTEM_X11 0
 #define WINDOW_SYSTEM_NEXT 0
 
 #define QD3D_EXPORT
@@ -53,24 +58,27 @@ extern "C" {
 /*
  * Apple's fixed-size names (QuickDraw 3D 1.6 declares them in QD3DIO.h, which
  * includes QD3D.h; Q3 declares them here, where later code expects them).
- * They are declared exactly as Apple does: TQ3Uns32 and TQ3Int32 are
- * unsigned long and long, which is 64 bits on LP64 Linux (legacy code that
- * passes their address where an unsigned long * is expected keeps working;
- * Q3's file I/O reads and writes 32 bits for them). The 64-bit types are
- * structs of two halves, high half first on big-endian machines.
+ * Each is exactly the width its name says (<stdint.h>), as it was on the
+ * Macintosh, where Apple's unsigned long was 32 bits: legacy code lays out
+ * binary data (pixmap images, file records) in TQ3Uns32 arrays. Apple's own
+ * parameters and struct fields typed unsigned long stay unsigned long, so
+ * code that passes an unsigned long * to a getter keeps compiling; only the
+ * names with a width in them changed meaning on LP64 (docs/porting.md,
+ * "Types"). The 64-bit types keep Apple's layout: structs of two 32-bit
+ * halves, high half first on big-endian machines, low half first here.
  */
-typedef unsigned char TQ3Uns8;
-typedef signed char TQ3Int8;
-typedef unsigned short TQ3Uns16;
-typedef signed short TQ3Int16;
-typedef unsigned long TQ3Uns32;
-typedef signed long TQ3Int32;
+typedef uint8_t TQ3Uns8;
+typedef int8_t TQ3Int8;
+typedef uint16_t TQ3Uns16;
+typedef int16_t TQ3Int16;
+typedef uint32_t TQ3Uns32;
+typedef int32_t TQ3Int32;
 #if defined(__BYTE_ORDER__) && defined(__ORDER_BIG_ENDIAN__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
-typedef struct TQ3Uns64 { unsigned long hi; unsigned long lo; } TQ3Uns64;
-typedef struct TQ3Int64 { signed long hi; unsigned long lo; } TQ3Int64;
+typedef struct TQ3Uns64 { TQ3Uns32 hi; TQ3Uns32 lo; } TQ3Uns64;
+typedef struct TQ3Int64 { TQ3Int32 hi; TQ3Uns32 lo; } TQ3Int64;
 #else
-typedef struct TQ3Uns64 { unsigned long lo; unsigned long hi; } TQ3Uns64;
-typedef struct TQ3Int64 { unsigned long lo; signed long hi; } TQ3Int64;
+typedef struct TQ3Uns64 { TQ3Uns32 lo; TQ3Uns32 hi; } TQ3Uns64;
+typedef struct TQ3Int64 { TQ3Uns32 lo; TQ3Int32 hi; } TQ3Int64;
 #endif
 typedef float TQ3Float32;
 typedef double TQ3Float64;
@@ -415,6 +423,139 @@ Q3_EXTERN_API_C(TQ3Boolean) Q3IsInitialized(void);
  */
 Q3_EXTERN_API_C(TQ3Status) Q3GetVersion(unsigned long *majorRevision, unsigned long *minorRevision);
 
+/**
+ * Reports the release of QuickDraw 3D that Q3 implements, in the format of
+ * the first four bytes of a Mac 'vers' resource: 0x01608000, release 1.6.0
+ * final (major 0x01, minor and bug-fix 0x60, stage 0x80 final, build 0x00).
+ *
+ * @param releaseRevision  receives the release version.
+ * @return kQ3Success, or kQ3Failure with *releaseRevision unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   releaseRevision is NULL.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3GetReleaseVersion(unsigned long *releaseRevision);
+
+/* ---- Object hierarchy ----------------------------------------------------- */
+
+/*
+ * The class hierarchy queries. Every class Q3 provides is registered; its
+ * type is its kQ3...Type constant and its name is its 3D Metafile text name
+ * where the class has one ("Box", "TriMesh", "AttributeSet", ...), else its
+ * description in one word ("InteractiveRenderer", "WireframeRenderer",
+ * "PixmapDrawContext", ...). Names compare exactly, case included. The root
+ * of the hierarchy (kQ3ObjectTypeInvalid) is not a class.
+ */
+
+/**
+ * Finds the type of the class with a name.
+ *
+ * @param objectClassString  the class name, '\0' terminated.
+ * @param objectClassType    receives the class type.
+ * @return kQ3Success, or kQ3Failure with *objectClassType unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     objectClassString or objectClassType is NULL.
+ *   kQ3ErrorInvalidParameter  no class has that name.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ObjectHierarchy_GetTypeFromString(TQ3ObjectClassNameString objectClassString,
+                                                               TQ3ObjectType *objectClassType);
+
+/**
+ * Writes the name of a registered class.
+ *
+ * @param objectClassType    the class type.
+ * @param objectClassString  receives the name, '\0' terminated (at most
+ *                           kQ3StringMaximumLength bytes with the '\0').
+ * @return kQ3Success, or kQ3Failure with objectClassString unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     objectClassString is NULL.
+ *   kQ3ErrorInvalidParameter  no class has type objectClassType.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ObjectHierarchy_GetStringFromType(TQ3ObjectType objectClassType,
+                                                               TQ3ObjectClassNameString objectClassString);
+
+/**
+ * Reports whether a class with this type is registered.
+ *
+ * @param objectClassType  the class type.
+ * @return kQ3True or kQ3False (kQ3False on failure).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3ObjectHierarchy_IsTypeRegistered(TQ3ObjectType objectClassType);
+
+/**
+ * Reports whether a class with this name is registered.
+ *
+ * @param objectClassName  the class name, '\0' terminated.
+ * @return kQ3True or kQ3False (kQ3False on failure).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   objectClassName is NULL.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3ObjectHierarchy_IsNameRegistered(const char *objectClassName);
+
+/* The subclasses of a class, as Q3ObjectHierarchy_GetSubClassData fills it. */
+struct TQ3SubClassData {
+    unsigned long numClasses;  /* the number of subclass types found */
+    TQ3ObjectType *classTypes; /* the subclass types (NULL when none) */
+};
+typedef struct TQ3SubClassData TQ3SubClassData;
+
+/**
+ * Lists the classes immediately below a class in the hierarchy, in
+ * ascending order of type code. Every Qut front end (Quesa's sample
+ * framework) builds its renderer menu with this and kQ3SharedTypeRenderer.
+ *
+ * @param objectClassType  the parent class type (kQ3ObjectTypeShared,
+ *                         kQ3SharedTypeRenderer, ...).
+ * @param subClassData     receives the count and a new array of types.
+ * @return kQ3Success, or kQ3Failure with *subClassData unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     subClassData is NULL.
+ *   kQ3ErrorInvalidParameter  no class has type objectClassType.
+ *   kQ3ErrorOutOfMemory       the array could not be allocated.
+ *
+ * Ownership: the caller frees classTypes with
+ * Q3ObjectHierarchy_EmptySubClassData.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ObjectHierarchy_GetSubClassData(TQ3ObjectType objectClassType,
+                                                             TQ3SubClassData *subClassData);
+
+/**
+ * Frees the array Q3ObjectHierarchy_GetSubClassData allocated, and sets
+ * numClasses to 0 and classTypes to NULL. Emptying an empty one is harmless.
+ *
+ * @param subClassData  the data to empty.
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   subClassData is NULL.
+ *
+ * Ownership: consumes subClassData->classTypes.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ObjectHierarchy_EmptySubClassData(TQ3SubClassData *subClassData);
+
 /*
  * Q3Memory_CountLiveObjects (Q3 extension): the number of Q3 objects (views,
  * shared objects) created and not yet disposed, across all threads. Tests use
@@ -454,6 +595,28 @@ Q3_EXTERN_API_C(TQ3Status) Q3Object_Submit(TQ3Object object, TQ3ViewObject view)
 /* Q3Object_IsDrawable: kQ3True when object may be submitted to a view.
  * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject (then kQ3False). */
 Q3_EXTERN_API_C(TQ3Boolean) Q3Object_IsDrawable(TQ3Object object);
+
+/**
+ * Reports whether an object can be written to a 3D Metafile: kQ3True for
+ * every class Q3's 3DMF writer knows (geometries, groups, styles,
+ * transforms, attribute sets, shaders, textures, cameras, lights, view
+ * hints, strings, unknown objects), kQ3False for the rest (views, draw
+ * contexts, renderers, storage, files, picks).
+ *
+ * @param object   the object to ask about.
+ * @param theFile  the file it would be written to; any file object, open or
+ *                 not (the answer does not depend on it).
+ * @return kQ3True or kQ3False (kQ3False on failure).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      object or theFile is NULL.
+ *   kQ3ErrorInvalidObject      object or theFile is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  theFile is not a file.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3Object_IsWritable(TQ3Object object, TQ3FileObject theFile);
 
 /* Q3Object_GetType: the object's first-level type: kQ3ObjectTypeShared,
  * kQ3ObjectTypeView, ... Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject

@@ -52,10 +52,18 @@ typedef enum TQ3DrawContextClearImageMethod TQ3DrawContextClearImageMethod;
  *   paneState          kQ3True to draw into pane only; kQ3False to draw into
  *                      the whole image (pane is then ignored and may hold
  *                      anything).
- *   mask, maskState    stored and returned as given; Q3's renderers do not
- *                      apply a mask and never read mask.image.
+ *   mask, maskState    with maskState kQ3True, Q3View_EndRendering writes
+ *                      only the pixmap pixels whose bit is set in mask:
+ *                      pixel (x, y) of the pixmap is bit x of row y of the
+ *                      mask (rows rowBytes apart, top row first; bitOrder
+ *                      kQ3EndianBig: the most significant bit of a byte is
+ *                      its leftmost pixel). Pixels outside the mask's width
+ *                      and height are not written; the other pixels keep
+ *                      what they held. mask.image is read, never copied or
+ *                      freed: it must stay valid while the state is on.
  *   doubleBufferState  stored and returned as given; a pixmap draw context is
- *                      always drawn into directly.
+ *                      always drawn into directly (Q3 renders offscreen and
+ *                      writes the finished frame, as double buffering would).
  *
  * The rules a TQ3DrawContextData must obey wherever one is accepted
  * (Q3PixmapDrawContext_New, Q3DrawContext_SetData), all reported as
@@ -63,7 +71,12 @@ typedef enum TQ3DrawContextClearImageMethod TQ3DrawContextClearImageMethod;
  *   clearImageMethod is a TQ3DrawContextClearImageMethod value;
  *   the clearImageColor components are finite;
  *   when paneState is kQ3True: the pane coordinates are finite,
- *     pane.min.x < pane.max.x and pane.min.y < pane.max.y.
+ *     pane.min.x < pane.max.x and pane.min.y < pane.max.y;
+ *   when maskState is kQ3True: mask obeys the mask rules below.
+ *
+ * The mask rules (Q3DrawContext_SetMask, and SetData with the mask on):
+ * mask.image is not NULL, width >= 1, height >= 1,
+ * rowBytes >= (width + 7) / 8, and bitOrder is a TQ3Endian value.
  */
 struct TQ3DrawContextData {
     TQ3DrawContextClearImageMethod clearImageMethod;
@@ -327,6 +340,118 @@ Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetClearImageMethod(TQ3DrawContextObjec
  */
 Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetClearImageMethod(
     TQ3DrawContextObject context, TQ3DrawContextClearImageMethod *method);
+
+/**
+ * Sets the mask of a draw context (see TQ3DrawContextData); it takes effect
+ * while the mask state is kQ3True.
+ *
+ * @param context  the draw context to change.
+ * @param mask     the mask; it must obey the mask rules above. The struct
+ *                 is copied, the bits it points to are not.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or mask is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *   kQ3ErrorInvalidParameter   *mask breaks a mask rule.
+ *
+ * Ownership: no references change; mask->image stays the caller's and must
+ * stay valid while the mask state is on.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetMask(TQ3DrawContextObject context, const TQ3Bitmap *mask);
+
+/**
+ * Reads the mask of a draw context, as last set (all zero until set).
+ *
+ * @param context  the draw context to read.
+ * @param mask     receives the mask; image is the pointer the caller gave.
+ * @return kQ3Success, or kQ3Failure with *mask unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or mask is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change; do not pass the result to Q3Bitmap_Empty.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetMask(TQ3DrawContextObject context, TQ3Bitmap *mask);
+
+/**
+ * Turns the mask on (kQ3True: write only the pixels the mask selects) or
+ * off. Any nonzero value is stored as kQ3True. Turning it on checks the
+ * stored mask.
+ *
+ * @param context  the draw context to change.
+ * @param state    the new mask state.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *   kQ3ErrorInvalidParameter   state is on and the stored mask breaks a mask
+ *                              rule (no mask was set).
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetMaskState(TQ3DrawContextObject context, TQ3Boolean state);
+
+/**
+ * Reads the mask state of a draw context (kQ3False until set).
+ *
+ * @param context  the draw context to read.
+ * @param state    receives kQ3True or kQ3False.
+ * @return kQ3Success, or kQ3Failure with *state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or state is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetMaskState(TQ3DrawContextObject context, TQ3Boolean *state);
+
+/**
+ * Records whether the application wants double buffering. Any nonzero value
+ * is stored as kQ3True. The image is the same either way: Q3 always renders
+ * offscreen and writes only the finished frame into the pixmap.
+ *
+ * @param context  the draw context to change.
+ * @param state    the new double-buffer state.
+ * @return kQ3Success, or kQ3Failure with the draw context unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_SetDoubleBufferState(TQ3DrawContextObject context, TQ3Boolean state);
+
+/**
+ * Reads the double-buffer state of a draw context, as last set.
+ *
+ * @param context  the draw context to read.
+ * @param state    receives kQ3True or kQ3False.
+ * @return kQ3Success, or kQ3Failure with *state unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      context or state is NULL.
+ *   kQ3ErrorInvalidObject      context is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  context is not a draw context.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3DrawContext_GetDoubleBufferState(TQ3DrawContextObject context, TQ3Boolean *state);
 
 /* ---- Pixmap draw context ------------------------------------------------ */
 

@@ -248,6 +248,49 @@ Q3_EXTERN_API_C(TQ3Status) Q3File_MarkAsExternalReference(TQ3FileObject theFile,
 Q3_EXTERN_API_C(TQ3GroupObject) Q3File_GetExternalReferences(TQ3FileObject theFile);
 
 /*
+ * Edit tracking (Apple's "tracking editing in read-in objects"): a flag on
+ * every shared object that each edit sets (everything that changes its edit
+ * index, Q3Shared_Edited included) and Q3Shared_ClearEditTracking clears. A
+ * new object starts with the flag clear; an object read from a file may
+ * have been edited while it was built, so clear the flag after reading and
+ * ask later whether anything changed it since.
+ */
+
+/**
+ * Clears the edit-tracking flag of a shared object. Its edit index does not
+ * change.
+ *
+ * @param sharedObject  the object.
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      sharedObject is NULL.
+ *   kQ3ErrorInvalidObject      sharedObject is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  sharedObject is not a shared object.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Shared_ClearEditTracking(TQ3SharedObject sharedObject);
+
+/**
+ * Reports whether a shared object was edited since its edit-tracking flag
+ * was last cleared (or since it was made).
+ *
+ * @param sharedObject  the object.
+ * @return kQ3True when edited, kQ3False when not or on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      sharedObject is NULL.
+ *   kQ3ErrorInvalidObject      sharedObject is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  sharedObject is not a shared object.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3Shared_GetEditTrackingState(TQ3SharedObject sharedObject);
+
+/*
  * Q3File_IsEndOfData: whether the data the primitive read calls (Q3Uns32_Read
  * and the others below) read is all read. Primitive reads read one object's
  * data in order: the first one starts on the next object of the file (for a
@@ -441,6 +484,43 @@ Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_GetData(TQ3UnknownObject unknownObjec
 
 /* Q3UnknownBinary_EmptyData: frees what GetData copied, and NULLs contents. */
 Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_EmptyData(TQ3UnknownBinaryData *unknownBinaryData);
+
+/**
+ * Gives the type name a 3D Metafile declared for an unknown binary object's
+ * type in its type table ('type' objects, which name the negative type
+ * codes of custom classes). Q3's reader does not keep type tables, so no
+ * unknown binary object has a declared name: *typeString is always set to
+ * NULL, the answer QuickDraw 3D gives for an undeclared type.
+ *
+ * @param unknownObject  an unknown binary object.
+ * @param typeString     receives the name, or NULL.
+ * @return kQ3Success, or kQ3Failure with *typeString unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      unknownObject or typeString is NULL.
+ *   kQ3ErrorInvalidObject      unknownObject is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  unknownObject is not an unknown binary object.
+ *
+ * Ownership: a non-NULL *typeString is the caller's, to free with
+ * Q3UnknownBinary_EmptyTypeString.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_GetTypeString(TQ3UnknownObject unknownObject, char **typeString);
+
+/**
+ * Frees a string Q3UnknownBinary_GetTypeString gave and sets *typeString to
+ * NULL; a NULL *typeString is left alone.
+ *
+ * @param typeString  the string to free.
+ * @return kQ3Success, or kQ3Failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   typeString is NULL.
+ *
+ * Ownership: consumes *typeString.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_EmptyTypeString(char **typeString);
 
 /*
  * View hints (Apple's QD3DIO.h, "ViewHints routines"): a shared object a

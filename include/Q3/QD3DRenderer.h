@@ -104,6 +104,46 @@ Q3_EXTERN_API_C(TQ3RendererObject) Q3Renderer_NewFromType(TQ3ObjectType renderer
  */
 Q3_EXTERN_API_C(TQ3ObjectType) Q3Renderer_GetType(TQ3RendererObject renderer);
 
+/**
+ * Reports whether a renderer is meant for interactive use. Both of Q3's
+ * renderers draw a frame at once, in the call that submits it, so both are
+ * interactive.
+ *
+ * @param renderer  the renderer to query.
+ * @return kQ3True, or kQ3False on failure.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not a renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3Renderer_IsInteractive(TQ3RendererObject renderer);
+
+/**
+ * Writes the name of a renderer class meant for people (a menu item):
+ * "Interactive" for kQ3RendererTypeInteractive, "Wireframe" for
+ * kQ3RendererTypeWireFrame. Applications fall back to the class name
+ * (Q3ObjectHierarchy_GetStringFromType) when this fails.
+ *
+ * @param rendererClassType    a renderer class type.
+ * @param rendererClassString  receives the name, '\0' terminated.
+ * @return kQ3Success, or kQ3Failure with rendererClassString unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     rendererClassString is NULL.
+ *   kQ3ErrorInvalidParameter  rendererClassType is not a renderer that Q3
+ *                             provides (kQ3SharedTypeRenderer itself
+ *                             included).
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3RendererClass_GetNickNameString(TQ3ObjectType rendererClassType,
+                                                             TQ3ObjectClassNameString rendererClassString);
+
 /* ---- Interactive renderer settings (stored only; see above) ------------- */
 
 /**
@@ -299,6 +339,59 @@ Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_SetRAVETextureFilter(
  */
 Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetRAVETextureFilter(
     TQ3RendererObject renderer, unsigned long *RAVEtextureFilterValue);
+
+/**
+ * Counts the RAVE draw contexts an interactive renderer draws with. Q3 has
+ * no RAVE (a Mac-only rasterizer interface), so the answer is always 0.
+ *
+ * @param renderer         an interactive renderer.
+ * @param numRAVEContexts  receives 0.
+ * @return kQ3Success, or kQ3Failure with *numRAVEContexts unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer or numRAVEContexts is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_CountRAVEDrawContexts(TQ3RendererObject renderer,
+                                                                       unsigned long *numRAVEContexts);
+
+/* RAVE's draw context and engine (RAVE.h); only pointers to them are used,
+ * and Q3 never has one. */
+typedef struct TQADrawContext TQADrawContext;
+typedef struct TQAEngine TQAEngine;
+
+/* Called when the RAVE draw contexts a renderer handed out go away. */
+typedef void (*TQ3RaveDestroyCallback)(TQ3RendererObject renderer);
+
+/**
+ * Lists the RAVE draw contexts and engines of an interactive renderer. Q3
+ * has none: *numRAVEContexts is set to 0, the lists are not written and the
+ * callback is never called.
+ *
+ * @param renderer                an interactive renderer.
+ * @param raveDrawContextList     room for the contexts; may be NULL.
+ * @param raveDrawingEnginesList  room for the engines; may be NULL.
+ * @param numRAVEContexts         receives 0.
+ * @param raveDestroyCallback     may be NULL; not kept.
+ * @return kQ3Success, or kQ3Failure with *numRAVEContexts unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      renderer or numRAVEContexts is NULL.
+ *   kQ3ErrorInvalidObject      renderer is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  renderer is not an interactive renderer.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetRAVEDrawContexts(TQ3RendererObject renderer,
+                                                                     TQADrawContext **raveDrawContextList,
+                                                                     TQAEngine **raveDrawingEnginesList,
+                                                                     unsigned long *numRAVEContexts,
+                                                                     TQ3RaveDestroyCallback raveDestroyCallback);
 
 #ifdef __cplusplus
 }

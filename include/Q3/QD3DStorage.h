@@ -74,6 +74,26 @@ Q3_EXTERN_API_C(TQ3Status) Q3Storage_SetData(TQ3StorageObject storage, unsigned 
  */
 Q3_EXTERN_API_C(TQ3StorageObject) Q3MemoryStorage_New(const unsigned char *buffer, unsigned long validSize);
 
+/**
+ * Reports the kind of a memory storage: the type of its class below
+ * kQ3StorageTypeMemory. QuickDraw 3D's one such class is the Mac handle
+ * storage (kQ3MemoryStorageTypeHandle), which cannot exist on Linux, so
+ * every Q3 memory storage answers kQ3ObjectTypeInvalid: a plain memory
+ * storage.
+ *
+ * @param storage  a memory storage.
+ * @return kQ3ObjectTypeInvalid (also on failure).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      storage is NULL.
+ *   kQ3ErrorInvalidObject      storage is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  storage is not a memory storage.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3MemoryStorage_GetType(TQ3StorageObject storage);
+
 /*
  * Q3MemoryStorage_Set: replaces the contents by a copy of validSize bytes of
  * buffer (NULL: empty).

@@ -102,6 +102,93 @@ Q3_EXTERN_API_C(TQ3ViewObject) Q3View_New(void);
  */
 Q3_EXTERN_API_C(TQ3Status) Q3View_Cancel(TQ3ViewObject view);
 
+/* ---- Idle and end-frame methods ---------------------------------------- */
+
+/*
+ * The idle methods let an application keep its user interface alive during
+ * a long rendering and cancel it. In a rendering loop the view calls the
+ * registered method before drawing each object submitted to it (a group
+ * counts as one object, however much it holds). Returning kQ3Failure
+ * cancels the loop, as Q3View_Cancel does: the object about to be drawn and
+ * every later one are ignored and Q3View_EndRendering returns
+ * kQ3ViewStatusCancelled. Return kQ3Success to go on; post no error. A
+ * method must not call Q3 on the view that called it. Bounding, picking and
+ * writing loops do not call them.
+ *
+ * When both are set the progress method is called instead of the idle
+ * method. Q3's renderers cannot tell how much of the frame is left, so the
+ * progress method always receives current == 0 and completed == 0, the
+ * values QuickDraw 3D gives for a renderer without progress information.
+ */
+typedef TQ3Status (*TQ3ViewIdleMethod)(TQ3ViewObject view, const void *idlerData);
+typedef TQ3Status (*TQ3ViewIdleProgressMethod)(TQ3ViewObject view, const void *idlerData, unsigned long current,
+                                               unsigned long completed);
+
+/**
+ * Registers (or, with NULL, removes) the idle method of a view.
+ *
+ * @param view        the view.
+ * @param idleMethod  the method, or NULL.
+ * @param idleData    passed to the method as idlerData; any value.
+ * @return kQ3Success, or kQ3Failure with the view unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *
+ * Ownership: no references change; idleData stays the caller's.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_SetIdleMethod(TQ3ViewObject view, TQ3ViewIdleMethod idleMethod,
+                                                const void *idleData);
+
+/**
+ * Registers (or, with NULL, removes) the idle progress method of a view.
+ *
+ * @param view        the view.
+ * @param idleMethod  the method, or NULL.
+ * @param idleData    passed to the method as idlerData; any value.
+ * @return kQ3Success, or kQ3Failure with the view unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *
+ * Ownership: no references change; idleData stays the caller's.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_SetIdleProgressMethod(TQ3ViewObject view, TQ3ViewIdleProgressMethod idleMethod,
+                                                        const void *idleData);
+
+/*
+ * The end-frame method tells the application that a frame is complete. Q3's
+ * renderers finish a frame inside Q3View_EndRendering, so the view calls it
+ * there, once the image is in the draw context and before returning
+ * kQ3ViewStatusDone; a cancelled or failed frame does not call it.
+ */
+typedef void (*TQ3ViewEndFrameMethod)(TQ3ViewObject view, void *endFrameData);
+
+/**
+ * Registers (or, with NULL, removes) the end-frame method of a view.
+ *
+ * @param view          the view.
+ * @param endFrame      the method, or NULL.
+ * @param endFrameData  passed to the method; any value.
+ * @return kQ3Success, or kQ3Failure with the view unchanged.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      view is NULL.
+ *   kQ3ErrorInvalidObject      view is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  view is not a view.
+ *
+ * Ownership: no references change; endFrameData stays the caller's.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3View_SetEndFrameMethod(TQ3ViewObject view, TQ3ViewEndFrameMethod endFrame,
+                                                    void *endFrameData);
+
 /* ---- Renderer ----------------------------------------------------------- */
 
 /**

@@ -102,6 +102,53 @@ TQ3Status Q3DrawContext_GetClearImageMethod(TQ3DrawContextObject context,
     });
 }
 
+TQ3Status Q3DrawContext_SetMask(TQ3DrawContextObject context, const TQ3Bitmap* mask)
+{
+    return guardStatus(__func__, [&] {
+        DrawContext& target = lookup<DrawContext>(context, "context");
+        requireNonNull(mask, "mask");
+        target.setMask(*mask);
+    });
+}
+
+TQ3Status Q3DrawContext_GetMask(TQ3DrawContextObject context, TQ3Bitmap* mask)
+{
+    return guardStatus(__func__, [&] {
+        const DrawContext& source = lookup<DrawContext>(context, "context");
+        requireNonNull(mask, "mask");
+        *mask = source.data().mask;
+    });
+}
+
+TQ3Status Q3DrawContext_SetMaskState(TQ3DrawContextObject context, TQ3Boolean state)
+{
+    return guardStatus(__func__, [&] { lookup<DrawContext>(context, "context").setMaskState(state); });
+}
+
+TQ3Status Q3DrawContext_GetMaskState(TQ3DrawContextObject context, TQ3Boolean* state)
+{
+    return guardStatus(__func__, [&] {
+        const DrawContext& source = lookup<DrawContext>(context, "context");
+        requireNonNull(state, "state");
+        *state = source.data().maskState;
+    });
+}
+
+TQ3Status Q3DrawContext_SetDoubleBufferState(TQ3DrawContextObject context, TQ3Boolean state)
+{
+    return guardStatus(__func__,
+                       [&] { lookup<DrawContext>(context, "context").setDoubleBufferState(state); });
+}
+
+TQ3Status Q3DrawContext_GetDoubleBufferState(TQ3DrawContextObject context, TQ3Boolean* state)
+{
+    return guardStatus(__func__, [&] {
+        const DrawContext& source = lookup<DrawContext>(context, "context");
+        requireNonNull(state, "state");
+        *state = source.data().doubleBufferState;
+    });
+}
+
 TQ3DrawContextObject Q3PixmapDrawContext_New(const TQ3PixmapDrawContextData* contextData)
 {
     return guard(__func__, TQ3DrawContextObject{nullptr}, [&]() -> TQ3DrawContextObject {

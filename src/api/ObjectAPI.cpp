@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "QD3D.h"
+#include "QD3DIO.h"
 #include "api/Entry.h"
 #include "core/LargeBlocks.h"
+#include "io/ClassIO.h"
+#include "io/File.h"
 #include "render/OffscreenRenderer.h"
 #include "view/View.h"
 
@@ -52,6 +55,14 @@ TQ3Status Q3GetVersion(unsigned long* majorRevision, unsigned long* minorRevisio
     });
 }
 
+TQ3Status Q3GetReleaseVersion(unsigned long* releaseRevision)
+{
+    return guardStatus(__func__, [&] {
+        requireNonNull(releaseRevision, "releaseRevision");
+        *releaseRevision = 0x01608000ul; // 'vers' layout: 1.6.0, final stage, build 0
+    });
+}
+
 unsigned long Q3Memory_CountLiveObjects(void)
 {
     return liveObjectCount();
@@ -80,6 +91,15 @@ TQ3Boolean Q3Object_IsDrawable(TQ3Object object)
 {
     return guard(__func__, kQ3False, [&] {
         return lookupObject(object, "object").isDrawable() ? kQ3True : kQ3False;
+    });
+}
+
+TQ3Boolean Q3Object_IsWritable(TQ3Object object, TQ3FileObject theFile)
+{
+    return guard(__func__, kQ3False, [&] {
+        const Object& source = lookupObject(object, "object");
+        lookup<File>(theFile, "theFile");
+        return io::classOfObject(source) != nullptr ? kQ3True : kQ3False;
     });
 }
 
@@ -133,6 +153,19 @@ TQ3Status Q3Shared_Edited(TQ3SharedObject sharedObject)
 {
     return guardStatus(__func__,
                        [&] { lookup<SharedObject>(sharedObject, "sharedObject").markEdited(); });
+}
+
+TQ3Status Q3Shared_ClearEditTracking(TQ3SharedObject sharedObject)
+{
+    return guardStatus(__func__,
+                       [&] { lookup<SharedObject>(sharedObject, "sharedObject").clearEditTracking(); });
+}
+
+TQ3Boolean Q3Shared_GetEditTrackingState(TQ3SharedObject sharedObject)
+{
+    return guard(__func__, kQ3False, [&] {
+        return lookup<SharedObject>(sharedObject, "sharedObject").editedSinceTracking() ? kQ3True : kQ3False;
+    });
 }
 
 TQ3ObjectType Q3Shape_GetType(TQ3ShapeObject shape)

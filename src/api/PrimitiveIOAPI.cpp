@@ -100,12 +100,7 @@ TQ3Status Q3Uns32_Read(TQ3Uns32* data, TQ3FileObject theFile)
 
 TQ3Status Q3Uns32_Write(TQ3Uns32 data, TQ3FileObject theFile)
 {
-    return guardStatus(__func__, [&] {
-        File& file = lookup<File>(theFile, "theFile");
-        if (data > 0xFFFFFFFFul)
-            fail(kQ3ErrorInvalidParameter, "data " + std::to_string(data) + " does not fit in 32 bits");
-        file.dataWriter().u32(static_cast<std::uint32_t>(data));
-    });
+    return writeValue(__func__, theFile, [&](io::Encoder& out) { out.u32(data); });
 }
 
 TQ3Status Q3Int8_Read(TQ3Int8* data, TQ3FileObject theFile)
@@ -145,12 +140,7 @@ TQ3Status Q3Int32_Read(TQ3Int32* data, TQ3FileObject theFile)
 
 TQ3Status Q3Int32_Write(TQ3Int32 data, TQ3FileObject theFile)
 {
-    return guardStatus(__func__, [&] {
-        File& file = lookup<File>(theFile, "theFile");
-        if (data < INT32_MIN || data > INT32_MAX)
-            fail(kQ3ErrorInvalidParameter, "data " + std::to_string(data) + " does not fit in 32 bits");
-        file.dataWriter().i32(static_cast<std::int32_t>(data));
-    });
+    return writeValue(__func__, theFile, [&](io::Encoder& out) { out.i32(data); });
 }
 
 TQ3Status Q3Uns64_Read(TQ3Uns64* data, TQ3FileObject theFile)
@@ -158,20 +148,16 @@ TQ3Status Q3Uns64_Read(TQ3Uns64* data, TQ3FileObject theFile)
     return readValue(__func__, data, theFile, 8, 1, [](io::DataReader& in) {
         const std::uint64_t value = in.u64();
         TQ3Uns64 out;
-        out.hi = static_cast<unsigned long>(value >> 32);
-        out.lo = static_cast<unsigned long>(value & 0xFFFFFFFFu);
+        out.hi = static_cast<TQ3Uns32>(value >> 32);
+        out.lo = static_cast<TQ3Uns32>(value & 0xFFFFFFFFu);
         return out;
     });
 }
 
 TQ3Status Q3Uns64_Write(TQ3Uns64 data, TQ3FileObject theFile)
 {
-    return guardStatus(__func__, [&] {
-        File& file = lookup<File>(theFile, "theFile");
-        if (data.hi > 0xFFFFFFFFul || data.lo > 0xFFFFFFFFul)
-            fail(kQ3ErrorInvalidParameter, "hi or lo does not fit in 32 bits");
-        file.dataWriter().u64(std::uint64_t{data.hi} << 32 | data.lo);
-    });
+    return writeValue(__func__, theFile,
+                      [&](io::Encoder& out) { out.u64(std::uint64_t{data.hi} << 32 | data.lo); });
 }
 
 TQ3Status Q3Int64_Read(TQ3Int64* data, TQ3FileObject theFile)
@@ -179,8 +165,8 @@ TQ3Status Q3Int64_Read(TQ3Int64* data, TQ3FileObject theFile)
     return readValue(__func__, data, theFile, 8, 1, [](io::DataReader& in) {
         const std::uint64_t value = static_cast<std::uint64_t>(in.i64());
         TQ3Int64 out;
-        out.hi = static_cast<std::int32_t>(static_cast<std::uint32_t>(value >> 32));
-        out.lo = static_cast<unsigned long>(value & 0xFFFFFFFFu);
+        out.hi = static_cast<TQ3Int32>(static_cast<TQ3Uns32>(value >> 32));
+        out.lo = static_cast<TQ3Uns32>(value & 0xFFFFFFFFu);
         return out;
     });
 }
@@ -189,10 +175,7 @@ TQ3Status Q3Int64_Write(TQ3Int64 data, TQ3FileObject theFile)
 {
     return guardStatus(__func__, [&] {
         File& file = lookup<File>(theFile, "theFile");
-        if (data.hi < INT32_MIN || data.hi > INT32_MAX || data.lo > 0xFFFFFFFFul)
-            fail(kQ3ErrorInvalidParameter, "hi or lo does not fit in 32 bits");
-        const std::uint64_t bits =
-            std::uint64_t{static_cast<std::uint32_t>(static_cast<std::int32_t>(data.hi))} << 32 | data.lo;
+        const std::uint64_t bits = std::uint64_t{static_cast<std::uint32_t>(data.hi)} << 32 | data.lo;
         io::Encoder& out = file.dataWriter();
         if (out.encoding() == io::Encoding::kText)
             out.raw(std::to_string(static_cast<std::int64_t>(bits)));

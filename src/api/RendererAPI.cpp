@@ -4,6 +4,9 @@
 #include "api/Entry.h"
 #include "render/Renderer.h"
 
+#include <cstring>
+#include <string>
+
 using namespace q3;
 using q3::api::guard;
 using q3::api::guardStatus;
@@ -21,6 +24,31 @@ TQ3ObjectType Q3Renderer_GetType(TQ3RendererObject renderer)
 {
     return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
                  [&] { return lookup<Renderer>(renderer, "renderer").leafType(); });
+}
+
+TQ3Boolean Q3Renderer_IsInteractive(TQ3RendererObject renderer)
+{
+    return guard(__func__, kQ3False, [&] {
+        lookup<Renderer>(renderer, "renderer");
+        return kQ3True; // both of Q3's renderers draw each frame at once
+    });
+}
+
+TQ3Status Q3RendererClass_GetNickNameString(TQ3ObjectType rendererClassType,
+                                            TQ3ObjectClassNameString rendererClassString)
+{
+    return guardStatus(__func__, [&] {
+        const char* name = nullptr;
+        if (rendererClassType == kQ3RendererTypeInteractive)
+            name = "Interactive";
+        else if (rendererClassType == kQ3RendererTypeWireFrame)
+            name = "Wireframe";
+        else
+            fail(kQ3ErrorInvalidParameter, "rendererClassType " + std::to_string(rendererClassType) +
+                                               " is not a renderer Q3 provides");
+        requireNonNull(rendererClassString, "rendererClassString");
+        std::strcpy(rendererClassString, name);
+    });
 }
 
 TQ3Status Q3InteractiveRenderer_SetCSGEquation(TQ3RendererObject renderer, TQ3CSGEquation equation)
@@ -108,6 +136,26 @@ TQ3Status Q3InteractiveRenderer_GetRAVETextureFilter(TQ3RendererObject renderer,
         const InteractiveRenderer& source = lookup<InteractiveRenderer>(renderer, "renderer");
         requireNonNull(RAVEtextureFilterValue, "RAVEtextureFilterValue");
         *RAVEtextureFilterValue = source.settings().raveTextureFilter;
+    });
+}
+
+TQ3Status Q3InteractiveRenderer_CountRAVEDrawContexts(TQ3RendererObject renderer, unsigned long* numRAVEContexts)
+{
+    return guardStatus(__func__, [&] {
+        lookup<InteractiveRenderer>(renderer, "renderer");
+        requireNonNull(numRAVEContexts, "numRAVEContexts");
+        *numRAVEContexts = 0; // Q3 has no RAVE
+    });
+}
+
+TQ3Status Q3InteractiveRenderer_GetRAVEDrawContexts(TQ3RendererObject renderer, TQADrawContext** raveDrawContextList,
+                                                    TQAEngine** raveDrawingEnginesList, unsigned long* numRAVEContexts,
+                                                    TQ3RaveDestroyCallback raveDestroyCallback)
+{
+    return guardStatus(__func__, [&] {
+        lookup<InteractiveRenderer>(renderer, "renderer");
+        requireNonNull(numRAVEContexts, "numRAVEContexts");
+        *numRAVEContexts = 0; // nothing to list, and nothing will be destroyed
     });
 }
 

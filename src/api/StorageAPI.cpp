@@ -51,6 +51,14 @@ TQ3StorageObject Q3MemoryStorage_New(const unsigned char* buffer, unsigned long 
                  [&]() -> TQ3StorageObject { return makeShared<MemoryStorage>(buffer, validSize).detach(); });
 }
 
+TQ3ObjectType Q3MemoryStorage_GetType(TQ3StorageObject storage)
+{
+    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid}, [&] {
+        lookup<MemoryStorage>(storage, "storage");
+        return TQ3ObjectType{kQ3ObjectTypeInvalid}; // no subclass: Q3 has no Mac handle storage
+    });
+}
+
 TQ3Status Q3MemoryStorage_Set(TQ3StorageObject storage, const unsigned char* buffer, unsigned long validSize)
 {
     return guardStatus(__func__, [&] {

@@ -5,6 +5,8 @@
 #include "view/Transform.h"
 #include "view/View.h"
 
+#include <cstring>
+
 using namespace q3;
 using q3::api::guard;
 using q3::api::guardStatus;
@@ -21,6 +23,17 @@ void submitTransient(const Data* data, const char* name, TQ3ViewObject view)
     ShapeVisitor& target = lookup<View>(view, "view").submitTarget();
     const Ref<T> transform = makeShared<T>(*data);
     target.visitTransform(*transform);
+}
+
+// A field setter: the transform's data with one field changed, through the
+// class's setData (the whole-data checks, nothing changed on failure).
+template <class T, class Change>
+void changeData(TQ3TransformObject transform, Change change)
+{
+    T& target = lookup<T>(transform, "transform");
+    auto data = target.data();
+    change(data);
+    target.setData(data);
 }
 
 } // namespace
@@ -198,6 +211,202 @@ TQ3Status Q3RotateTransform_GetAngle(TQ3TransformObject transform, float* radian
     return guardStatus(__func__, [&] {
         readInto<RotateTransform>(transform, "transform", radians, "radians",
                                   [](const RotateTransform& t) { return t.data().radians; });
+    });
+}
+
+TQ3TransformObject Q3QuaternionTransform_New(const TQ3Quaternion* quaternion)
+{
+    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
+        requireNonNull(quaternion, "quaternion");
+        return makeShared<QuaternionTransform>(*quaternion).detach();
+    });
+}
+
+TQ3Status Q3QuaternionTransform_Submit(const TQ3Quaternion* quaternion, TQ3ViewObject view)
+{
+    return guardStatus(__func__,
+                       [&] { submitTransient<QuaternionTransform>(quaternion, "quaternion", view); });
+}
+
+TQ3Status Q3QuaternionTransform_Set(TQ3TransformObject transform, const TQ3Quaternion* quaternion)
+{
+    return guardStatus(__func__, [&] {
+        QuaternionTransform& target = lookup<QuaternionTransform>(transform, "transform");
+        requireNonNull(quaternion, "quaternion");
+        target.setQuaternion(*quaternion);
+    });
+}
+
+TQ3Status Q3QuaternionTransform_Get(TQ3TransformObject transform, TQ3Quaternion* quaternion)
+{
+    return guardStatus(__func__, [&] {
+        readInto<QuaternionTransform>(transform, "transform", quaternion, "quaternion",
+                                      [](const QuaternionTransform& t) { return t.quaternion(); });
+    });
+}
+
+TQ3TransformObject Q3RotateAboutPointTransform_New(const TQ3RotateAboutPointTransformData* data)
+{
+    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
+        requireNonNull(data, "data");
+        return makeShared<RotateAboutPointTransform>(*data).detach();
+    });
+}
+
+TQ3Status Q3RotateAboutPointTransform_Submit(const TQ3RotateAboutPointTransformData* data, TQ3ViewObject view)
+{
+    return guardStatus(__func__, [&] { submitTransient<RotateAboutPointTransform>(data, "data", view); });
+}
+
+TQ3Status Q3RotateAboutPointTransform_SetData(TQ3TransformObject transform,
+                                              const TQ3RotateAboutPointTransformData* data)
+{
+    return guardStatus(__func__, [&] {
+        RotateAboutPointTransform& target = lookup<RotateAboutPointTransform>(transform, "transform");
+        requireNonNull(data, "data");
+        target.setData(*data);
+    });
+}
+
+TQ3Status Q3RotateAboutPointTransform_GetData(TQ3TransformObject transform, TQ3RotateAboutPointTransformData* data)
+{
+    return guardStatus(__func__, [&] {
+        readInto<RotateAboutPointTransform>(transform, "transform", data, "data",
+                                            [](const RotateAboutPointTransform& t) { return t.data(); });
+    });
+}
+
+TQ3Status Q3RotateAboutPointTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
+{
+    return guardStatus(__func__, [&] {
+        // Copied as bytes: a C caller may pass any int (core/EnumValue.h).
+        changeData<RotateAboutPointTransform>(
+            transform, [&](TQ3RotateAboutPointTransformData& d) { std::memcpy(&d.axis, &axis, sizeof axis); });
+    });
+}
+
+TQ3Status Q3RotateAboutPointTransform_GetAxis(TQ3TransformObject transform, TQ3Axis* axis)
+{
+    return guardStatus(__func__, [&] {
+        readInto<RotateAboutPointTransform>(transform, "transform", axis, "axis",
+                                            [](const RotateAboutPointTransform& t) { return t.data().axis; });
+    });
+}
+
+TQ3Status Q3RotateAboutPointTransform_SetAngle(TQ3TransformObject transform, float radians)
+{
+    return guardStatus(__func__, [&] {
+        changeData<RotateAboutPointTransform>(transform,
+                                              [&](TQ3RotateAboutPointTransformData& d) { d.radians = radians; });
+    });
+}
+
+TQ3Status Q3RotateAboutPointTransform_GetAngle(TQ3TransformObject transform, float* radians)
+{
+    return guardStatus(__func__, [&] {
+        readInto<RotateAboutPointTransform>(transform, "transform", radians, "radians",
+                                            [](const RotateAboutPointTransform& t) { return t.data().radians; });
+    });
+}
+
+TQ3Status Q3RotateAboutPointTransform_SetAboutPoint(TQ3TransformObject transform, const TQ3Point3D* about)
+{
+    return guardStatus(__func__, [&] {
+        lookup<RotateAboutPointTransform>(transform, "transform");
+        requireNonNull(about, "about");
+        changeData<RotateAboutPointTransform>(transform,
+                                              [&](TQ3RotateAboutPointTransformData& d) { d.about = *about; });
+    });
+}
+
+TQ3Status Q3RotateAboutPointTransform_GetAboutPoint(TQ3TransformObject transform, TQ3Point3D* about)
+{
+    return guardStatus(__func__, [&] {
+        readInto<RotateAboutPointTransform>(transform, "transform", about, "about",
+                                            [](const RotateAboutPointTransform& t) { return t.data().about; });
+    });
+}
+
+TQ3TransformObject Q3RotateAboutAxisTransform_New(const TQ3RotateAboutAxisTransformData* data)
+{
+    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
+        requireNonNull(data, "data");
+        return makeShared<RotateAboutAxisTransform>(*data).detach();
+    });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_Submit(const TQ3RotateAboutAxisTransformData* data, TQ3ViewObject view)
+{
+    return guardStatus(__func__, [&] { submitTransient<RotateAboutAxisTransform>(data, "data", view); });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_SetData(TQ3TransformObject transform,
+                                             const TQ3RotateAboutAxisTransformData* data)
+{
+    return guardStatus(__func__, [&] {
+        RotateAboutAxisTransform& target = lookup<RotateAboutAxisTransform>(transform, "transform");
+        requireNonNull(data, "data");
+        target.setData(*data);
+    });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_GetData(TQ3TransformObject transform, TQ3RotateAboutAxisTransformData* data)
+{
+    return guardStatus(__func__, [&] {
+        readInto<RotateAboutAxisTransform>(transform, "transform", data, "data",
+                                           [](const RotateAboutAxisTransform& t) { return t.data(); });
+    });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_SetOrientation(TQ3TransformObject transform, const TQ3Vector3D* axis)
+{
+    return guardStatus(__func__, [&] {
+        lookup<RotateAboutAxisTransform>(transform, "transform");
+        requireNonNull(axis, "axis");
+        changeData<RotateAboutAxisTransform>(transform,
+                                             [&](TQ3RotateAboutAxisTransformData& d) { d.orientation = *axis; });
+    });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_GetOrientation(TQ3TransformObject transform, TQ3Vector3D* axis)
+{
+    return guardStatus(__func__, [&] {
+        readInto<RotateAboutAxisTransform>(transform, "transform", axis, "axis",
+                                           [](const RotateAboutAxisTransform& t) { return t.data().orientation; });
+    });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_SetAngle(TQ3TransformObject transform, float radians)
+{
+    return guardStatus(__func__, [&] {
+        changeData<RotateAboutAxisTransform>(transform,
+                                             [&](TQ3RotateAboutAxisTransformData& d) { d.radians = radians; });
+    });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_GetAngle(TQ3TransformObject transform, float* radians)
+{
+    return guardStatus(__func__, [&] {
+        readInto<RotateAboutAxisTransform>(transform, "transform", radians, "radians",
+                                           [](const RotateAboutAxisTransform& t) { return t.data().radians; });
+    });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_SetOrigin(TQ3TransformObject transform, const TQ3Point3D* origin)
+{
+    return guardStatus(__func__, [&] {
+        lookup<RotateAboutAxisTransform>(transform, "transform");
+        requireNonNull(origin, "origin");
+        changeData<RotateAboutAxisTransform>(transform,
+                                             [&](TQ3RotateAboutAxisTransformData& d) { d.origin = *origin; });
+    });
+}
+
+TQ3Status Q3RotateAboutAxisTransform_GetOrigin(TQ3TransformObject transform, TQ3Point3D* origin)
+{
+    return guardStatus(__func__, [&] {
+        readInto<RotateAboutAxisTransform>(transform, "transform", origin, "origin",
+                                           [](const RotateAboutAxisTransform& t) { return t.data().origin; });
     });
 }
 

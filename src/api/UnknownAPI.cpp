@@ -103,3 +103,21 @@ TQ3Status Q3UnknownBinary_EmptyData(TQ3UnknownBinaryData* unknownBinaryData)
         unknownBinaryData->contents = nullptr;
     });
 }
+
+TQ3Status Q3UnknownBinary_GetTypeString(TQ3UnknownObject unknownObject, char** typeString)
+{
+    return guardStatus(__func__, [&] {
+        lookup<UnknownBinary>(unknownObject, "unknownObject");
+        requireNonNull(typeString, "typeString");
+        *typeString = nullptr; // the reader keeps no type table, so no type has a declared name
+    });
+}
+
+TQ3Status Q3UnknownBinary_EmptyTypeString(char** typeString)
+{
+    return guardStatus(__func__, [&] {
+        requireNonNull(typeString, "typeString");
+        std::free(*typeString);
+        *typeString = nullptr;
+    });
+}

@@ -54,6 +54,24 @@ TQ3Status Q3View_Cancel(TQ3ViewObject view)
     return guardStatus(__func__, [&] { lookup<View>(view, "view").cancel(); });
 }
 
+TQ3Status Q3View_SetIdleMethod(TQ3ViewObject view, TQ3ViewIdleMethod idleMethod, const void* idleData)
+{
+    return guardStatus(__func__, [&] { lookup<View>(view, "view").setIdleMethod(idleMethod, idleData); });
+}
+
+TQ3Status Q3View_SetIdleProgressMethod(TQ3ViewObject view, TQ3ViewIdleProgressMethod idleMethod,
+                                       const void* idleData)
+{
+    return guardStatus(__func__,
+                       [&] { lookup<View>(view, "view").setIdleProgressMethod(idleMethod, idleData); });
+}
+
+TQ3Status Q3View_SetEndFrameMethod(TQ3ViewObject view, TQ3ViewEndFrameMethod endFrame, void* endFrameData)
+{
+    return guardStatus(__func__,
+                       [&] { lookup<View>(view, "view").setEndFrameMethod(endFrame, endFrameData); });
+}
+
 TQ3Status Q3View_SetRendererByType(TQ3ViewObject view, TQ3ObjectType theType)
 {
     return guardStatus(__func__, [&] { lookup<View>(view, "view").setRendererByType(theType); });

@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "core/Object.h"
 
+#include <algorithm>
 #include <mutex>
 #include <unordered_map>
 #include <unordered_set>
@@ -31,6 +32,17 @@ const ClassInfo* findClass(TQ3ObjectType type)
     const auto& classes = classRegistry();
     const auto found = classes.find(type);
     return found == classes.end() ? nullptr : found->second;
+}
+
+std::vector<const ClassInfo*> allClasses()
+{
+    std::vector<const ClassInfo*> result;
+    for (const auto& [type, info] : classRegistry())
+        if (type != kQ3ObjectTypeInvalid)
+            result.push_back(info);
+    std::sort(result.begin(), result.end(),
+              [](const ClassInfo* a, const ClassInfo* b) { return a->type < b->type; });
+    return result;
 }
 
 const ClassInfo kRootClass{kQ3ObjectTypeInvalid, nullptr, "object"};
@@ -119,6 +131,7 @@ SharedObject::SharedObject() : m_editIndex(++g_editCounter) {}
 void SharedObject::markEdited()
 {
     m_editIndex = ++g_editCounter;
+    m_editTracked = true;
     onEdited();
 }
 

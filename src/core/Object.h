@@ -9,6 +9,7 @@
 #include <atomic>
 #include <memory>
 #include <string>
+#include <vector>
 
 /// The C handle type. Every q3::Object is one, so object -> handle is an
 /// implicit upcast; handle -> object goes through q3::lookup().
@@ -43,6 +44,9 @@ struct ClassInfo {
 
 /// The registered class with this type code, or null.
 const ClassInfo* findClass(TQ3ObjectType type);
+
+/// Every registered class but the root, in ascending order of type code.
+std::vector<const ClassInfo*> allClasses();
 
 /// The root of the class tree (type kQ3ObjectTypeInvalid) and its first-level
 /// classes.
@@ -97,6 +101,10 @@ public:
     unsigned long referenceCount() const noexcept { return m_references.load(); }
     unsigned long editIndex() const noexcept { return m_editIndex.load(); }
     void markEdited();
+    /// Whether markEdited() ran since the object was made or since
+    /// clearEditTracking() (Q3Shared_GetEditTrackingState).
+    bool editedSinceTracking() const noexcept { return m_editTracked.load(); }
+    void clearEditTracking() noexcept { m_editTracked = false; }
 
     void addReference() noexcept { m_references.fetch_add(1); }
     void releaseReference() noexcept;
@@ -109,6 +117,7 @@ protected:
 private:
     std::atomic<unsigned long> m_references{1};
     std::atomic<unsigned long> m_editIndex;
+    std::atomic<bool> m_editTracked{false};
 };
 
 /// Creates a shared object, registers it, and returns its first reference.
@@ -117,6 +126,7 @@ Ref<T> makeShared(Args&&... args)
 {
     Ref<T> ref = Ref<T>::adopt(new T(std::forward<Args>(args)...));
     ref->registerLive();
+    ref->clearEditTracking(); // what the constructor did is no edit
     return ref;
 }
 

@@ -446,6 +446,71 @@ void writeRotate(WriteContext& context, const Object& object)
     context.out().end();
 }
 
+Ref<SharedObject> readQuaternion(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3Quaternion q;
+    q.w = in.f32();
+    q.x = in.f32();
+    q.y = in.f32();
+    q.z = in.f32();
+    return build<QuaternionTransform>("quaternion transform", q);
+}
+
+void writeQuaternion(WriteContext& context, const Object& object)
+{
+    const TQ3Quaternion& q = static_cast<const QuaternionTransform&>(object).quaternion();
+    Encoder& out = context.out();
+    out.begin(kQ3TransformTypeQuaternion, "Quaternion");
+    out.f32(q.w);
+    out.f32(q.x);
+    out.f32(q.y);
+    out.f32(q.z);
+    out.end();
+}
+
+Ref<SharedObject> readRotateAboutPoint(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3RotateAboutPointTransformData data{};
+    data.axis = static_cast<TQ3Axis>(in.choice(kAxis));
+    data.radians = in.f32();
+    data.about = in.point3D();
+    return build<RotateAboutPointTransform>("rotate about point transform", data);
+}
+
+void writeRotateAboutPoint(WriteContext& context, const Object& object)
+{
+    const TQ3RotateAboutPointTransformData& data = static_cast<const RotateAboutPointTransform&>(object).data();
+    Encoder& out = context.out();
+    out.begin(kQ3TransformTypeRotateAboutPoint, "RotateAboutPoint");
+    out.choice(kAxis, static_cast<std::uint32_t>(data.axis));
+    out.f32(data.radians);
+    out.point3D(data.about);
+    out.end();
+}
+
+Ref<SharedObject> readRotateAboutAxis(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    TQ3RotateAboutAxisTransformData data{};
+    data.origin = in.point3D();
+    data.orientation = in.vector3D();
+    data.radians = in.f32();
+    return build<RotateAboutAxisTransform>("rotate about axis transform", data);
+}
+
+void writeRotateAboutAxis(WriteContext& context, const Object& object)
+{
+    const TQ3RotateAboutAxisTransformData& data = static_cast<const RotateAboutAxisTransform&>(object).data();
+    Encoder& out = context.out();
+    out.begin(kQ3TransformTypeRotateAboutAxis, "RotateAboutAxis");
+    out.point3D(data.origin);
+    out.vector3D(data.orientation);
+    out.f32(data.radians);
+    out.end();
+}
+
 Ref<SharedObject> readReset(ReadContext&, const Parts&)
 {
     return Ref<SharedObject>(makeShared<ResetTransform>());
@@ -494,6 +559,9 @@ void addStateClasses(std::vector<ClassIO>& table)
             {kQ3TransformTypeTranslate, "Translate", readTranslate, writeTranslate},
             {kQ3TransformTypeScale, "Scale", readScale, writeScale},
             {kQ3TransformTypeRotate, "Rotate", readRotate, writeRotate},
+            {kQ3TransformTypeQuaternion, "Quaternion", readQuaternion, writeQuaternion},
+            {kQ3TransformTypeRotateAboutPoint, "RotateAboutPoint", readRotateAboutPoint, writeRotateAboutPoint},
+            {kQ3TransformTypeRotateAboutAxis, "RotateAboutAxis", readRotateAboutAxis, writeRotateAboutAxis},
             {kQ3TransformTypeReset, "Reset", readReset,
              [](WriteContext& c, const Object&) { writeEmpty<kQ3TransformTypeReset>(c, "Reset"); }},
         });

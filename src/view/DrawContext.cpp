@@ -65,6 +65,20 @@ void validatePane(const TQ3Area& pane, TQ3Error code)
         fail(code, "the pane is empty or inverted (min must be less than max in x and y)");
 }
 
+void validateMask(const TQ3Bitmap& mask, TQ3Error code)
+{
+    if (mask.image == nullptr)
+        fail(code, "the mask has no image (mask.image is NULL)");
+    if (mask.width == 0 || mask.height == 0)
+        fail(code, "the mask is " + std::to_string(mask.width) + " x " + std::to_string(mask.height) +
+                       " pixels; both must be at least 1");
+    if (mask.rowBytes < mask.width / 8 + (mask.width % 8 != 0 ? 1 : 0))
+        fail(code, "mask rowBytes " + std::to_string(mask.rowBytes) + " is too small for a row of " +
+                       std::to_string(mask.width) + " bits");
+    if (!isEndian(enumValue(mask.bitOrder)))
+        fail(code, "mask bitOrder must be kQ3EndianBig or kQ3EndianLittle");
+}
+
 void validateDrawContextData(const TQ3DrawContextData& data)
 {
     if (!isClearMethod(data.clearImageMethod))
@@ -74,6 +88,8 @@ void validateDrawContextData(const TQ3DrawContextData& data)
         fail(kQ3ErrorInvalidData, "a clearImageColor component is not a finite number");
     if (normalized(data.paneState) == kQ3True)
         validatePane(data.pane, kQ3ErrorInvalidData);
+    if (normalized(data.maskState) == kQ3True)
+        validateMask(data.mask, kQ3ErrorInvalidData);
 }
 
 void validatePixmap(const TQ3Pixmap& pixmap)
@@ -162,6 +178,27 @@ void DrawContext::setClearImageMethod(const TQ3DrawContextClearImageMethod& meth
              "clear method " + std::to_string(enumValue(method)) +
                  " is neither kQ3ClearMethodNone nor kQ3ClearMethodWithColor");
     m_data.clearImageMethod = method;
+    markEdited();
+}
+
+void DrawContext::setMask(const TQ3Bitmap& mask)
+{
+    validateMask(mask, kQ3ErrorInvalidParameter);
+    m_data.mask = mask;
+    markEdited();
+}
+
+void DrawContext::setMaskState(const TQ3Boolean& state)
+{
+    if (normalized(state) == kQ3True)
+        validateMask(m_data.mask, kQ3ErrorInvalidParameter);
+    m_data.maskState = normalized(state);
+    markEdited();
+}
+
+void DrawContext::setDoubleBufferState(const TQ3Boolean& state)
+{
+    m_data.doubleBufferState = normalized(state);
     markEdited();
 }
 

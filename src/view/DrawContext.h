@@ -19,6 +19,9 @@ void validateDrawContextData(const TQ3DrawContextData& data);
 /// Checks a pane (finite, min < max in x and y); throws `code`.
 void validatePane(const TQ3Area& pane, TQ3Error code);
 
+/// Checks the mask rules of QD3DDrawContext.h; throws `code`.
+void validateMask(const TQ3Bitmap& mask, TQ3Error code);
+
 /// Checks the TQ3Pixmap rules of QD3DDrawContext.h in their order
 /// (kQ3ErrorNULLParameter, kQ3ErrorInvalidData,
 /// kQ3ErrorUnsupportedPixelDepth, kQ3ErrorInvalidData). Beyond the header's
@@ -50,6 +53,9 @@ public:
     /// is checked through enumValue (core/EnumValue.h) before use.
     void setPaneState(const TQ3Boolean& state);
     void setClearImageMethod(const TQ3DrawContextClearImageMethod& method);
+    void setMask(const TQ3Bitmap& mask);
+    void setMaskState(const TQ3Boolean& state);
+    void setDoubleBufferState(const TQ3Boolean& state);
 
     /// The pixels drawn into in an image of width x height: the pane when
     /// the pane state is on, the whole image otherwise.

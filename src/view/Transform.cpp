@@ -4,6 +4,7 @@
 
 #include "core/ShapeVisitor.h"
 #include "view/MatrixMath.h"
+#include "view/QuaternionMath.h"
 
 #include <cmath>
 #include <cstring>
@@ -18,6 +19,11 @@ const ClassInfo kTranslateTransformClass{kQ3TransformTypeTranslate, &kTransformC
 const ClassInfo kScaleTransformClass{kQ3TransformTypeScale, &kTransformClass, "scale transform"};
 const ClassInfo kRotateTransformClass{kQ3TransformTypeRotate, &kTransformClass, "rotate transform"};
 const ClassInfo kResetTransformClass{kQ3TransformTypeReset, &kTransformClass, "reset transform"};
+const ClassInfo kQuaternionTransformClass{kQ3TransformTypeQuaternion, &kTransformClass, "quaternion transform"};
+const ClassInfo kRotateAboutPointTransformClass{kQ3TransformTypeRotateAboutPoint, &kTransformClass,
+                                                "rotate about point transform"};
+const ClassInfo kRotateAboutAxisTransformClass{kQ3TransformTypeRotateAboutAxis, &kTransformClass,
+                                               "rotate about axis transform"};
 
 namespace {
 
@@ -54,17 +60,61 @@ void validateScaleTransform(const TQ3Vector3D& scale)
     requireFinite(scale, "scale");
 }
 
-void validateRotateTransform(const TQ3RotateTransformData& data)
+namespace {
+
+// C callers may store any int in the enum; reading it as a TQ3Axis would be
+// undefined behaviour in C++ for values outside the enum's range, so read
+// the bits as the int C stored.
+void validateAxisAndAngle(const TQ3Axis& storedAxis, float radians)
 {
-    // C callers may store any int in the enum; reading it as a TQ3Axis would
-    // be undefined behaviour in C++ for values outside the enum's range, so
-    // read the bits as the int C stored.
     int axis;
-    static_assert(sizeof axis == sizeof data.axis, "TQ3Axis is int-sized, as in C");
-    std::memcpy(&axis, &data.axis, sizeof axis);
+    static_assert(sizeof axis == sizeof storedAxis, "TQ3Axis is int-sized, as in C");
+    std::memcpy(&axis, &storedAxis, sizeof axis);
     if (axis != kQ3AxisX && axis != kQ3AxisY && axis != kQ3AxisZ)
         fail(kQ3ErrorInvalidData,
              "axis " + std::to_string(axis) + " is none of kQ3AxisX, kQ3AxisY, kQ3AxisZ");
+    if (!std::isfinite(radians))
+        fail(kQ3ErrorInvalidData, "radians is not finite");
+}
+
+bool isFinite(float x, float y, float z)
+{
+    return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
+}
+
+} // namespace
+
+void validateRotateTransform(const TQ3RotateTransformData& data)
+{
+    validateAxisAndAngle(data.axis, data.radians);
+}
+
+void validateQuaternionTransform(const TQ3Quaternion& q)
+{
+    if (!std::isfinite(q.w) || !isFinite(q.x, q.y, q.z))
+        fail(kQ3ErrorInvalidParameter, "quaternion has a component that is not finite");
+    // matrix() normalizes in double precision, where every finite float
+    // quaternion but zero has a length.
+    if (q.w == 0.0f && q.x == 0.0f && q.y == 0.0f && q.z == 0.0f)
+        fail(kQ3ErrorInvalidParameter, "quaternion is (0, 0, 0, 0), which is no rotation");
+}
+
+void validateRotateAboutPointTransform(const TQ3RotateAboutPointTransformData& data)
+{
+    validateAxisAndAngle(data.axis, data.radians);
+    if (!isFinite(data.about.x, data.about.y, data.about.z))
+        fail(kQ3ErrorInvalidData, "about has a coordinate that is not finite");
+}
+
+void validateRotateAboutAxisTransform(const TQ3RotateAboutAxisTransformData& data)
+{
+    if (!isFinite(data.origin.x, data.origin.y, data.origin.z))
+        fail(kQ3ErrorInvalidData, "origin has a coordinate that is not finite");
+    const TQ3Vector3D& v = data.orientation;
+    if (!isFinite(v.x, v.y, v.z))
+        fail(kQ3ErrorInvalidData, "orientation has a component that is not finite");
+    if (v.x == 0.0f && v.y == 0.0f && v.z == 0.0f)
+        fail(kQ3ErrorInvalidData, "orientation is the zero vector");
     if (!std::isfinite(data.radians))
         fail(kQ3ErrorInvalidData, "radians is not finite");
 }
@@ -177,6 +227,75 @@ TQ3Matrix4x4 RotateTransform::matrix() const
         break;
     }
     return math::rotationZ(m_data.radians);
+}
+
+QuaternionTransform::QuaternionTransform(const TQ3Quaternion& quaternion) : m_quaternion(quaternion)
+{
+    validateQuaternionTransform(quaternion);
+}
+
+Object* QuaternionTransform::duplicate() const
+{
+    return duplicateOf<QuaternionTransform>(m_quaternion);
+}
+
+void QuaternionTransform::setQuaternion(const TQ3Quaternion& quaternion)
+{
+    validateQuaternionTransform(quaternion);
+    m_quaternion = quaternion;
+    markEdited();
+}
+
+TQ3Matrix4x4 QuaternionTransform::matrix() const
+{
+    return math::matrixFromQuaternion(math::normalize(m_quaternion));
+}
+
+RotateAboutPointTransform::RotateAboutPointTransform(const TQ3RotateAboutPointTransformData& data) : m_data(data)
+{
+    validateRotateAboutPointTransform(data);
+}
+
+Object* RotateAboutPointTransform::duplicate() const
+{
+    return duplicateOf<RotateAboutPointTransform>(m_data);
+}
+
+void RotateAboutPointTransform::setData(const TQ3RotateAboutPointTransformData& data)
+{
+    validateRotateAboutPointTransform(data);
+    m_data = data;
+    markEdited();
+}
+
+TQ3Matrix4x4 RotateAboutPointTransform::matrix() const
+{
+    const float x = m_data.axis == kQ3AxisX ? m_data.radians : 0.0f;
+    const float y = m_data.axis == kQ3AxisY ? m_data.radians : 0.0f;
+    const float z = m_data.axis == kQ3AxisZ ? m_data.radians : 0.0f;
+    return math::rotationAboutPoint(m_data.about, x, y, z);
+}
+
+RotateAboutAxisTransform::RotateAboutAxisTransform(const TQ3RotateAboutAxisTransformData& data) : m_data(data)
+{
+    validateRotateAboutAxisTransform(data);
+}
+
+Object* RotateAboutAxisTransform::duplicate() const
+{
+    return duplicateOf<RotateAboutAxisTransform>(m_data);
+}
+
+void RotateAboutAxisTransform::setData(const TQ3RotateAboutAxisTransformData& data)
+{
+    validateRotateAboutAxisTransform(data);
+    m_data = data;
+    markEdited();
+}
+
+TQ3Matrix4x4 RotateAboutAxisTransform::matrix() const
+{
+    return math::rotationAboutAxis(m_data.origin, m_data.orientation, m_data.radians);
 }
 
 Object* ResetTransform::duplicate() const

@@ -13,6 +13,9 @@ extern const ClassInfo kTranslateTransformClass;
 extern const ClassInfo kScaleTransformClass;
 extern const ClassInfo kRotateTransformClass;
 extern const ClassInfo kResetTransformClass;
+extern const ClassInfo kQuaternionTransformClass;
+extern const ClassInfo kRotateAboutPointTransformClass;
+extern const ClassInfo kRotateAboutAxisTransformClass;
 
 /// The checks QD3DTransform.h lists, one per kind of data; each is the one
 /// routine behind that transform's _New, _Submit and setters (the
@@ -25,6 +28,12 @@ void validateMatrixTransform(const TQ3Matrix4x4& matrix);
 void validateTranslateTransform(const TQ3Vector3D& translate);
 void validateScaleTransform(const TQ3Vector3D& scale);
 void validateRotateTransform(const TQ3RotateTransformData& data);
+/// Quaternion: kQ3ErrorInvalidParameter for a component that is not finite
+/// or the zero quaternion. Rotate about point and about axis:
+/// kQ3ErrorInvalidData for the rule of QD3DTransform.h each breaks.
+void validateQuaternionTransform(const TQ3Quaternion& quaternion);
+void validateRotateAboutPointTransform(const TQ3RotateAboutPointTransformData& data);
+void validateRotateAboutAxisTransform(const TQ3RotateAboutAxisTransformData& data);
 
 /// A QuickDraw 3D transform: a drawable that changes the view's
 /// local-to-world matrix L when submitted, to matrix() * L, or, for the reset
@@ -126,6 +135,68 @@ public:
 
 private:
     TQ3RotateTransformData m_data;
+};
+
+/// A rotation given as a quaternion. Invariant: the quaternion is finite and
+/// not zero; it is kept as set and normalized only to build the matrix.
+class QuaternionTransform final : public Transform {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeQuaternion;
+
+    /// Throws as validateQuaternionTransform.
+    explicit QuaternionTransform(const TQ3Quaternion& quaternion);
+
+    const ClassInfo& classInfo() const override { return kQuaternionTransformClass; }
+    Object* duplicate() const override;
+    TQ3Matrix4x4 matrix() const override;
+    const TQ3Quaternion& quaternion() const { return m_quaternion; }
+    /// Throws as validateQuaternionTransform and then changes nothing.
+    void setQuaternion(const TQ3Quaternion& quaternion);
+
+private:
+    TQ3Quaternion m_quaternion;
+};
+
+/// A rotation about the line through a point parallel to a coordinate axis.
+/// Invariant: the data obey validateRotateAboutPointTransform.
+class RotateAboutPointTransform final : public Transform {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeRotateAboutPoint;
+
+    /// Throws as validateRotateAboutPointTransform.
+    explicit RotateAboutPointTransform(const TQ3RotateAboutPointTransformData& data);
+
+    const ClassInfo& classInfo() const override { return kRotateAboutPointTransformClass; }
+    Object* duplicate() const override;
+    TQ3Matrix4x4 matrix() const override;
+    const TQ3RotateAboutPointTransformData& data() const { return m_data; }
+    /// Throws as validateRotateAboutPointTransform (on the whole data) and
+    /// then changes nothing. Field setters go through it.
+    void setData(const TQ3RotateAboutPointTransformData& data);
+
+private:
+    TQ3RotateAboutPointTransformData m_data;
+};
+
+/// A rotation about an arbitrary line. Invariant: the data obey
+/// validateRotateAboutAxisTransform.
+class RotateAboutAxisTransform final : public Transform {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeRotateAboutAxis;
+
+    /// Throws as validateRotateAboutAxisTransform.
+    explicit RotateAboutAxisTransform(const TQ3RotateAboutAxisTransformData& data);
+
+    const ClassInfo& classInfo() const override { return kRotateAboutAxisTransformClass; }
+    Object* duplicate() const override;
+    TQ3Matrix4x4 matrix() const override;
+    const TQ3RotateAboutAxisTransformData& data() const { return m_data; }
+    /// Throws as validateRotateAboutAxisTransform (on the whole data) and
+    /// then changes nothing. Field setters go through it.
+    void setData(const TQ3RotateAboutAxisTransformData& data);
+
+private:
+    TQ3RotateAboutAxisTransformData m_data;
 };
 
 /// The reset transform: no data. Invariant: matrix() is the identity and

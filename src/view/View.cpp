@@ -63,6 +63,17 @@ PixelRect clipToImage(const PixelRect& rect, std::uint32_t width, std::uint32_t 
     return PixelRect{int(x0), int(y0), int(x1 - x0), int(y1 - y0)};
 }
 
+// Whether the mask selects pixel (x, y) of the pixmap: its bit is set
+// (QD3DDrawContext.h); pixels beyond the mask are not selected.
+bool maskSelects(const TQ3Bitmap& mask, int x, int y)
+{
+    if (static_cast<unsigned long>(x) >= mask.width || static_cast<unsigned long>(y) >= mask.height)
+        return false;
+    const unsigned char byte = mask.image[std::size_t(y) * mask.rowBytes + std::size_t(x) / 8];
+    const unsigned bit = mask.bitOrder == kQ3EndianLittle ? 1u << (x % 8) : 0x80u >> (x % 8);
+    return (byte & bit) != 0;
+}
+
 PixmapDrawContext& pixmapContext(DrawContext& context)
 {
     // Q3 has one kind of draw context; the check keeps this honest if more come.
@@ -214,6 +225,8 @@ void View::startRendering()
     destination.layout = layoutOf(context.pixmap());
     destination.pane = context.drawRect(destination.layout.width, destination.layout.height);
     destination.cleared = settings.clearImageMethod == kQ3ClearMethodWithColor;
+    if (settings.maskState == kQ3True)
+        destination.mask = settings.mask;
     // Without a clear, the frame starts transparent so that writeImage can
     // tell drawn pixels (alpha 1) from untouched ones.
     RgbaColor clear;
@@ -259,7 +272,11 @@ TQ3ViewStatus View::endRendering()
     const RenderResult written = writeImage();
     if (!written)
         fail(kQ3ErrorRenderingLoopFailed, "the image could not be written: " + written.message);
-    return cancelled ? kQ3ViewStatusCancelled : kQ3ViewStatusDone;
+    if (cancelled)
+        return kQ3ViewStatusCancelled;
+    if (m_endFrameMethod != nullptr)
+        m_endFrameMethod(this, m_endFrameData);
+    return kQ3ViewStatusDone;
 }
 
 RenderResult View::writeImage() const
@@ -270,19 +287,24 @@ RenderResult View::writeImage() const
     const PixelRect area = clipToImage(to.pane, to.layout.width, to.layout.height);
     if (area.width == 0)
         return RenderResult::success();
-    if (to.cleared)
+    const bool masked = to.mask.image != nullptr;
+    if (to.cleared && !masked)
         return writeRgba8ToPixmap(frame, area, to.image, to.layout, area.x, area.y);
-    // kQ3ClearMethodNone: write only the runs of pixels geometry covered.
+    // Write only the runs of pixels to be written: those geometry covered
+    // (kQ3ClearMethodNone) and those the mask selects (mask state on).
     for (int y = area.y; y < area.y + area.height; ++y) {
         const std::uint8_t* row = frame.pixels + std::size_t(y) * frame.rowBytes;
+        const auto writes = [&](int x) {
+            return (to.cleared || row[4 * x + 3] != 0) && (!masked || maskSelects(to.mask, x, y));
+        };
         int x = area.x;
         while (x < area.x + area.width) {
-            if (row[4 * x + 3] == 0) {
+            if (!writes(x)) {
                 ++x;
                 continue;
             }
             const int start = x;
-            while (x < area.x + area.width && row[4 * x + 3] != 0)
+            while (x < area.x + area.width && writes(x))
                 ++x;
             const PixelRect run{start, y, x - start, 1};
             RenderResult result = writeRgba8ToPixmap(frame, run, to.image, to.layout, start, y);
@@ -441,12 +463,43 @@ void View::flush() const
         fail(kQ3ErrorRenderingNotStarted, "no rendering loop is running in the view");
 }
 
+void View::setIdleMethod(TQ3ViewIdleMethod method, const void* data)
+{
+    m_idleMethod = method;
+    m_idleData = data;
+}
+
+void View::setIdleProgressMethod(TQ3ViewIdleProgressMethod method, const void* data)
+{
+    m_idleProgressMethod = method;
+    m_idleProgressData = data;
+}
+
+void View::setEndFrameMethod(TQ3ViewEndFrameMethod method, void* data)
+{
+    m_endFrameMethod = method;
+    m_endFrameData = data;
+}
+
+bool View::idle()
+{
+    // Q3 cannot tell how much of a frame is left: progress is (0, 0), what
+    // QuickDraw 3D reports for a renderer without progress information.
+    if (m_idleProgressMethod != nullptr)
+        return m_idleProgressMethod(this, m_idleProgressData, 0, 0) != kQ3Failure;
+    if (m_idleMethod != nullptr)
+        return m_idleMethod(this, m_idleData) != kQ3Failure;
+    return true;
+}
+
 ShapeVisitor& View::submitTarget()
 {
     static IgnoringVisitor ignoring;
     if (m_loop == Loop::kWriting)
         return m_cancelled ? static_cast<ShapeVisitor&>(ignoring) : *m_writeTarget;
     Pass& pass = activePass();
+    if (!m_cancelled && m_loop == Loop::kRendering && !idle())
+        m_cancelled = true;
     if (m_cancelled)
         return ignoring;
     return pass;

@@ -149,6 +149,15 @@ public:
     /// Makes the running loop's end report kQ3ViewStatusCancelled; until then
     /// submitted shapes are ignored. Does nothing outside a loop.
     void cancel();
+
+    /// The application's callbacks (QD3DView.h): null removes one. In a
+    /// rendering loop submitTarget() calls the progress method (with 0, 0)
+    /// or else the idle method before each object, and cancels the loop
+    /// when it returns kQ3Failure; endRendering() calls the end-frame
+    /// method after a frame is written. Allowed inside a loop.
+    void setIdleMethod(TQ3ViewIdleMethod method, const void* data);
+    void setIdleProgressMethod(TQ3ViewIdleProgressMethod method, const void* data);
+    void setEndFrameMethod(TQ3ViewEndFrameMethod method, void* data);
     /// Throws kQ3ErrorRenderingIsActive inside a rendering loop; otherwise
     /// every image is already complete.
     void sync() const;
@@ -192,7 +201,13 @@ private:
         PixmapLayout layout;
         PixelRect pane;
         bool cleared = true;
+        /// The draw context's mask while its mask state is on, else null
+        /// image (every pixel of the pane is written).
+        TQ3Bitmap mask{};
     };
+
+    /// Calls the idle or progress method; false when it asks to cancel.
+    bool idle();
 
     void requireNoLoop() const;
     Pass& activePass();
@@ -212,6 +227,12 @@ private:
 
     Loop m_loop = Loop::kNone;
     bool m_cancelled = false;
+    TQ3ViewIdleMethod m_idleMethod = nullptr;
+    const void* m_idleData = nullptr;
+    TQ3ViewIdleProgressMethod m_idleProgressMethod = nullptr;
+    const void* m_idleProgressData = nullptr;
+    TQ3ViewEndFrameMethod m_endFrameMethod = nullptr;
+    void* m_endFrameData = nullptr;
     /// The buffer every pass of this view subdivides curves into (declared
     /// before m_pass, which points to it, so it is destroyed after). Views
     /// are not shared between threads, so neither is it.

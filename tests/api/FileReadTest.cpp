@@ -13,6 +13,7 @@
 #include "QD3DSet.h"
 
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -219,6 +220,38 @@ TEST_F(FileReadTest, UnknownObjectsAreKeptAndWrittenBackUnchanged)
         EXPECT_EQ(writeObjects(objects, kQ3FileModeStream), original);
         disposeAll(objects);
     }
+}
+
+TEST_F(FileReadTest, UnknownBinaryObjectsHaveNoDeclaredTypeString)
+{
+    const auto objects = readAll(dataFile("unknown_be.3dmf"));
+    ASSERT_EQ(objects.size(), 3u);
+    char* typeString = reinterpret_cast<char*>(&typeString); // anything but NULL
+    ASSERT_EQ(Q3UnknownBinary_GetTypeString(objects[1], &typeString), kQ3Success);
+    EXPECT_EQ(typeString, nullptr);
+    EXPECT_EQ(Q3UnknownBinary_EmptyTypeString(&typeString), kQ3Success);
+    EXPECT_EQ(typeString, nullptr);
+
+    // A string the caller was given is freed and cleared.
+    typeString = static_cast<char*>(std::malloc(5));
+    ASSERT_NE(typeString, nullptr);
+    EXPECT_EQ(Q3UnknownBinary_EmptyTypeString(&typeString), kQ3Success);
+    EXPECT_EQ(typeString, nullptr);
+
+    const auto text = readAll(dataFile("unknown.3dmf"));
+    ASSERT_EQ(text.size(), 3u);
+    TQ3UnknownObject dead = Q3Object_Duplicate(objects[1]);
+    Q3Object_Dispose(dead);
+    char* kept = nullptr;
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3UnknownBinary_GetTypeString(nullptr, &kept), kQ3Failure), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3UnknownBinary_GetTypeString(dead, &kept), kQ3Failure), kQ3ErrorInvalidObject);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3UnknownBinary_GetTypeString(text[1], &kept), kQ3Failure),
+                    kQ3ErrorInvalidObjectType);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3UnknownBinary_GetTypeString(objects[1], nullptr), kQ3Failure),
+                    kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3UnknownBinary_EmptyTypeString(nullptr), kQ3Failure), kQ3ErrorNULLParameter);
+    disposeAll(objects);
+    disposeAll(text);
 }
 
 TEST_F(FileReadTest, MalformedBinaryFilesAreErrorsNeverCrashes)

@@ -168,6 +168,24 @@ std::vector<StateCase> stateCases()
                        return Q3RotateTransform_New(&d);
                    },
                    sameBy<TQ3RotateTransformData>(Q3RotateTransform_GetData)});
+    all.push_back({"Quaternion",
+                   [] {
+                       TQ3Quaternion q = {0.5f, -0.5f, 0.25f, 2.0f}; // kept as given, not normalized
+                       return Q3QuaternionTransform_New(&q);
+                   },
+                   sameBy<TQ3Quaternion>(Q3QuaternionTransform_Get)});
+    all.push_back({"RotateAboutPoint",
+                   [] {
+                       TQ3RotateAboutPointTransformData d = {kQ3AxisZ, -1.25f, {1.0f, 2.0f, -3.0f}};
+                       return Q3RotateAboutPointTransform_New(&d);
+                   },
+                   sameBy<TQ3RotateAboutPointTransformData>(Q3RotateAboutPointTransform_GetData)});
+    all.push_back({"RotateAboutAxis",
+                   [] {
+                       TQ3RotateAboutAxisTransformData d = {{0.5f, 0.0f, 1.0f}, {0.0f, 3.0f, 4.0f}, 2.5f};
+                       return Q3RotateAboutAxisTransform_New(&d);
+                   },
+                   sameBy<TQ3RotateAboutAxisTransformData>(Q3RotateAboutAxisTransform_GetData)});
     all.push_back({"Reset", [] { return Q3ResetTransform_New(); }, sameType});
     return all;
 }
@@ -193,7 +211,7 @@ TEST_P(FileStateRoundTripTest, WrittenAndReadBackInEveryModeIsTheSame)
     Q3Object_Dispose(original);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryClass, FileStateRoundTripTest, ::testing::Range<std::size_t>(0, 25),
+INSTANTIATE_TEST_SUITE_P(EveryClass, FileStateRoundTripTest, ::testing::Range<std::size_t>(0, 28),
                          [](const ::testing::TestParamInfo<std::size_t>& info) {
                              return stateCases()[info.param].name;
                          });

@@ -9,6 +9,7 @@
 #include "QD3DSet.h"
 
 #include <climits>
+#include <cstring>
 #include <functional>
 #include <string>
 #include <vector>
@@ -164,6 +165,83 @@ TEST_F(RendererApiTest, InteractiveCallsRejectOtherObjectsAndNullPointers)
     }
     for (TQ3Object object : {interactive, wireFrame, set})
         Q3Object_Dispose(object);
+}
+
+TEST_F(RendererApiTest, BothRenderersAreInteractive)
+{
+    for (TQ3ObjectType type : {kQ3RendererTypeInteractive, kQ3RendererTypeWireFrame}) {
+        TQ3RendererObject renderer = Q3Renderer_NewFromType(type);
+        EXPECT_EQ(Q3Renderer_IsInteractive(renderer), kQ3True);
+        Q3Object_Dispose(renderer);
+    }
+    TQ3AttributeSet set = Q3AttributeSet_New();
+    TQ3RendererObject dead = Q3Renderer_NewFromType(kQ3RendererTypeWireFrame);
+    Q3Object_Dispose(dead);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Renderer_IsInteractive(nullptr), kQ3False), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Renderer_IsInteractive(dead), kQ3False), kQ3ErrorInvalidObject);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Renderer_IsInteractive(set), kQ3False), kQ3ErrorInvalidObjectType);
+    Q3Object_Dispose(set);
+}
+
+TEST_F(RendererApiTest, NickNamesAreGivenForTheRenderersQ3Provides)
+{
+    TQ3ObjectClassNameString name = "";
+    ASSERT_EQ(Q3RendererClass_GetNickNameString(kQ3RendererTypeInteractive, name), kQ3Success);
+    EXPECT_STREQ(name, "Interactive");
+    ASSERT_EQ(Q3RendererClass_GetNickNameString(kQ3RendererTypeWireFrame, name), kQ3Success);
+    EXPECT_STREQ(name, "Wireframe");
+    for (TQ3ObjectType other : {TQ3ObjectType(kQ3SharedTypeRenderer), TQ3ObjectType(kQ3RendererTypeGeneric),
+                                TQ3ObjectType(kQ3GeometryTypeBox), TQ3ObjectType(0), TQ3ObjectType(-1)}) {
+        std::strcpy(name, "left");
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RendererClass_GetNickNameString(other, name), kQ3Failure),
+                        kQ3ErrorInvalidParameter);
+        EXPECT_STREQ(name, "left");
+    }
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RendererClass_GetNickNameString(kQ3RendererTypeInteractive, nullptr), kQ3Failure),
+                    kQ3ErrorNULLParameter);
+}
+
+TEST_F(RendererApiTest, ThereAreNoRAVEDrawContexts)
+{
+    TQ3RendererObject interactive = Q3Renderer_NewFromType(kQ3RendererTypeInteractive);
+    unsigned long count = 99;
+    ASSERT_EQ(Q3InteractiveRenderer_CountRAVEDrawContexts(interactive, &count), kQ3Success);
+    EXPECT_EQ(count, 0u);
+    TQADrawContext* contexts[2] = {nullptr, nullptr};
+    TQAEngine* engines[2] = {nullptr, nullptr};
+    count = 2;
+    ASSERT_EQ(Q3InteractiveRenderer_GetRAVEDrawContexts(interactive, contexts, engines, &count, nullptr), kQ3Success);
+    EXPECT_EQ(count, 0u);
+    EXPECT_EQ(contexts[0], nullptr);
+    EXPECT_EQ(engines[0], nullptr);
+    count = 2;
+    ASSERT_EQ(Q3InteractiveRenderer_GetRAVEDrawContexts(interactive, nullptr, nullptr, &count, nullptr), kQ3Success);
+    EXPECT_EQ(count, 0u);
+
+    TQ3RendererObject wireFrame = Q3Renderer_NewFromType(kQ3RendererTypeWireFrame);
+    TQ3RendererObject dead = Q3Renderer_NewFromType(kQ3RendererTypeInteractive);
+    Q3Object_Dispose(dead);
+    count = 7;
+    const struct {
+        TQ3RendererObject renderer;
+        TQ3Error code;
+    } bad[] = {{nullptr, kQ3ErrorNULLParameter}, {dead, kQ3ErrorInvalidObject}, {wireFrame, kQ3ErrorInvalidObjectType}};
+    for (const auto& b : bad) {
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3InteractiveRenderer_CountRAVEDrawContexts(b.renderer, &count), kQ3Failure), b.code);
+        EXPECT_Q3_ERROR(
+            EXPECT_EQ(Q3InteractiveRenderer_GetRAVEDrawContexts(b.renderer, contexts, engines, &count, nullptr),
+                      kQ3Failure),
+            b.code);
+    }
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3InteractiveRenderer_CountRAVEDrawContexts(interactive, nullptr), kQ3Failure),
+                    kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(
+        EXPECT_EQ(Q3InteractiveRenderer_GetRAVEDrawContexts(interactive, contexts, engines, nullptr, nullptr),
+                  kQ3Failure),
+        kQ3ErrorNULLParameter);
+    EXPECT_EQ(count, 7u);
+    Q3Object_Dispose(interactive);
+    Q3Object_Dispose(wireFrame);
 }
 
 } // namespace

@@ -163,3 +163,24 @@ TEST(StorageApiUninitialized, CallsFailWithNotInitialized)
     EXPECT_EQ(Q3UnixPathStorage_New("x"), nullptr);
     EXPECT_EQ(Q3Error_Get(nullptr), kQ3ErrorNotInitialized);
 }
+
+TEST_F(StorageApiTest, MemoryStorageGetTypeNamesNoSubclass)
+{
+    TQ3StorageObject memory = Q3MemoryStorage_New(nullptr, 0);
+    unsigned char buffer[8] = {};
+    TQ3StorageObject inPlace = Q3MemoryStorage_NewBuffer(buffer, 0, sizeof buffer);
+    EXPECT_EQ(Q3MemoryStorage_GetType(memory), kQ3ObjectTypeInvalid);
+    EXPECT_EQ(Q3MemoryStorage_GetType(inPlace), kQ3ObjectTypeInvalid);
+    EXPECT_EQ(Q3Storage_GetType(memory), kQ3StorageTypeMemory);
+
+    const std::string path = tempPath("gettype");
+    TQ3StorageObject file = Q3UnixPathStorage_New(path.c_str());
+    TQ3StorageObject dead = Q3MemoryStorage_New(nullptr, 0);
+    Q3Object_Dispose(dead);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3MemoryStorage_GetType(nullptr), kQ3ObjectTypeInvalid), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3MemoryStorage_GetType(dead), kQ3ObjectTypeInvalid), kQ3ErrorInvalidObject);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3MemoryStorage_GetType(file), kQ3ObjectTypeInvalid), kQ3ErrorInvalidObjectType);
+    Q3Object_Dispose(memory);
+    Q3Object_Dispose(inPlace);
+    Q3Object_Dispose(file);
+}

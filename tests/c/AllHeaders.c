@@ -4,6 +4,7 @@
 /* Proves that every public header compiles as strict C99 with warnings as
  * errors, together and in any order, and that the C ABI links and runs. */
 #include "QD3D.h"
+#include "QD3DAcceleration.h"
 #include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
@@ -108,6 +109,199 @@ static int setCalls(void)
     Q3Object_Dispose(child);
     Q3Object_Dispose(parent);
     Q3Object_Dispose(set);
+    return ok;
+}
+
+/* Apple's fixed-width names are their width in C too (C99 has no
+ * static_assert: a negative array size stops the compile). */
+typedef char checkUns8[sizeof(TQ3Uns8) == 1 && sizeof(TQ3Int8) == 1 ? 1 : -1];
+typedef char checkUns16[sizeof(TQ3Uns16) == 2 && sizeof(TQ3Int16) == 2 ? 1 : -1];
+typedef char checkUns32[sizeof(TQ3Uns32) == 4 && sizeof(TQ3Int32) == 4 ? 1 : -1];
+typedef char checkUns64[sizeof(TQ3Uns64) == 8 && sizeof(TQ3Int64) == 8 ? 1 : -1];
+typedef char checkSize[sizeof(TQ3Size) == 4 ? 1 : -1];
+
+/* QD3D.h promises no X11 draw context until it declares Apple's X11 API. */
+#if WINDOW_SYSTEM_X11
+#error "WINDOW_SYSTEM_X11 is set but Q3 declares no TQ3XDrawContextData"
+#endif
+#if !OS_UNIX || OS_MACINTOSH || OS_WIN32 || WINDOW_SYSTEM_MACINTOSH || WINDOW_SYSTEM_WIN32
+#error "platform switches"
+#endif
+
+static int idleCount = 0;
+static TQ3Status countIdle(TQ3ViewObject view, const void *idlerData)
+{
+    (void)view;
+    (void)idlerData;
+    ++idleCount;
+    return kQ3Success;
+}
+
+static TQ3Status stopAtOnce(TQ3ViewObject view, const void *idlerData, unsigned long current,
+                            unsigned long completed)
+{
+    (void)view;
+    (void)idlerData;
+    (void)current;
+    (void)completed;
+    return kQ3Failure;
+}
+
+static void endFrame(TQ3ViewObject view, void *endFrameData)
+{
+    (void)view;
+    ++*(int *)endFrameData;
+}
+
+/* The portable calls QuickDraw 3D programs use to query the system, as C
+ * code writes them: a renderer menu, RAVE constants, idle methods, a mask. */
+static int portableCalls(void)
+{
+    TQ3SubClassData renderers;
+    TQ3ObjectClassNameString name;
+    TQ3ObjectType type = kQ3ObjectTypeInvalid;
+    unsigned long release = 0, count = 5, n;
+    int ok = 1, menuItems = 0, frames = 0;
+    TQ3RendererObject renderer = Q3Renderer_NewFromType(kQ3RendererTypeInteractive);
+    TQ3StorageObject storage = Q3MemoryStorage_New(NULL, 0);
+    TQ3FileObject file = Q3File_New();
+    TQ3ViewObject view = Q3View_New();
+    TQ3Uns32 pixels[4 * 2];
+    TQ3PixmapDrawContextData contextData;
+    TQ3DrawContextObject context;
+    TQ3CameraObject camera;
+    TQ3OrthographicCameraData cameraData;
+    unsigned char maskBits[2] = {0xA0, 0x50};
+    TQ3Bitmap mask = {NULL, 4, 2, 1, kQ3EndianBig};
+    TQ3Boolean state = kQ3False;
+    TQ3PointData point = {{5.0f, 5.0f, 0.0f}, NULL}; /* outside the view: only the clear shows */
+    TQ3Uns32 probe = 1;
+
+    mask.image = maskBits;
+    {
+        /* The three rotation transforms, as C code fills their data. */
+        TQ3Quaternion q = {1.0f, 0.0f, 0.0f, 0.0f}, gotQ;
+        TQ3RotateAboutPointTransformData aboutPoint = {kQ3AxisZ, 0.5f, {1.0f, 2.0f, 3.0f}};
+        TQ3RotateAboutAxisTransformData aboutAxis = {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, 0.5f};
+        TQ3Matrix4x4 m1, m2;
+        TQ3Point3D about;
+        TQ3Vector3D orientation;
+        TQ3Axis axis = kQ3AxisX;
+        float angle = 0.0f;
+        TQ3TransformObject tq = Q3QuaternionTransform_New(&q);
+        TQ3TransformObject tp = Q3RotateAboutPointTransform_New(&aboutPoint);
+        TQ3TransformObject ta = Q3RotateAboutAxisTransform_New(&aboutAxis);
+        ok = ok && tq != NULL && tp != NULL && ta != NULL &&
+             Q3QuaternionTransform_Set(tq, &q) == kQ3Success && Q3QuaternionTransform_Get(tq, &gotQ) == kQ3Success &&
+             gotQ.w == 1.0f && Q3RotateAboutPointTransform_SetAxis(tp, kQ3AxisY) == kQ3Success &&
+             Q3RotateAboutPointTransform_GetAxis(tp, &axis) == kQ3Success && axis == kQ3AxisY &&
+             Q3RotateAboutPointTransform_SetAngle(tp, 0.25f) == kQ3Success &&
+             Q3RotateAboutPointTransform_GetAngle(tp, &angle) == kQ3Success && angle == 0.25f &&
+             Q3RotateAboutPointTransform_SetAboutPoint(tp, &aboutPoint.about) == kQ3Success &&
+             Q3RotateAboutPointTransform_GetAboutPoint(tp, &about) == kQ3Success && about.z == 3.0f &&
+             Q3RotateAboutPointTransform_SetData(tp, &aboutPoint) == kQ3Success &&
+             Q3RotateAboutPointTransform_GetData(tp, &aboutPoint) == kQ3Success &&
+             Q3RotateAboutAxisTransform_SetOrientation(ta, &aboutAxis.orientation) == kQ3Success &&
+             Q3RotateAboutAxisTransform_GetOrientation(ta, &orientation) == kQ3Success && orientation.z == 1.0f &&
+             Q3RotateAboutAxisTransform_SetOrigin(ta, &aboutAxis.origin) == kQ3Success &&
+             Q3RotateAboutAxisTransform_GetOrigin(ta, &about) == kQ3Success &&
+             Q3RotateAboutAxisTransform_SetAngle(ta, 0.5f) == kQ3Success &&
+             Q3RotateAboutAxisTransform_GetAngle(ta, &angle) == kQ3Success && angle == 0.5f &&
+             Q3RotateAboutAxisTransform_SetData(ta, &aboutAxis) == kQ3Success &&
+             Q3RotateAboutAxisTransform_GetData(ta, &aboutAxis) == kQ3Success &&
+             Q3Transform_GetMatrix(ta, &m1) == &m1 && Q3Matrix4x4_SetRotate_Z(&m2, 0.5f) == &m2 &&
+             m1.value[0][1] - m2.value[0][1] < 1e-6f && m2.value[0][1] - m1.value[0][1] < 1e-6f &&
+             Q3Object_IsWritable(ta, file) == kQ3True;
+        if (tq != NULL)
+            Q3Object_Dispose(tq);
+        if (tp != NULL)
+            Q3Object_Dispose(tp);
+        if (ta != NULL)
+            Q3Object_Dispose(ta);
+        (void)Q3QuaternionTransform_Submit;
+        (void)Q3RotateAboutPointTransform_Submit;
+        (void)Q3RotateAboutAxisTransform_Submit;
+    }
+    ok = ok && Q3GetReleaseVersion(&release) == kQ3Success && release == 0x01608000ul;
+    ok = ok && Q3ObjectHierarchy_GetSubClassData(kQ3SharedTypeRenderer, &renderers) == kQ3Success;
+    for (n = 0; ok && n < renderers.numClasses; n++) {
+        if (renderers.classTypes[n] == kQ3RendererTypeGeneric)
+            continue;
+        if (Q3RendererClass_GetNickNameString(renderers.classTypes[n], name) == kQ3Failure || name[0] == 0)
+            ok = ok && Q3ObjectHierarchy_GetStringFromType(renderers.classTypes[n], name) == kQ3Success;
+        ++menuItems;
+    }
+    ok = ok && Q3ObjectHierarchy_EmptySubClassData(&renderers) == kQ3Success && menuItems == 2;
+    ok = ok && Q3ObjectHierarchy_GetStringFromType(kQ3GeometryTypeBox, name) == kQ3Success &&
+         strcmp(name, "Box") == 0 && Q3ObjectHierarchy_GetTypeFromString(name, &type) == kQ3Success &&
+         type == kQ3GeometryTypeBox && Q3ObjectHierarchy_IsTypeRegistered(kQ3GeometryTypeTriMesh) == kQ3True &&
+         Q3ObjectHierarchy_IsNameRegistered("TriMesh") == kQ3True;
+    ok = ok && Q3Renderer_IsInteractive(renderer) == kQ3True &&
+         Q3InteractiveRenderer_SetPreferences(renderer, kQAVendor_Apple, kQAEngine_AppleSW) == kQ3Success &&
+         Q3InteractiveRenderer_CountRAVEDrawContexts(renderer, &count) == kQ3Success && count == 0 &&
+         Q3InteractiveRenderer_GetRAVEDrawContexts(renderer, NULL, NULL, &count, NULL) == kQ3Success &&
+         kQAVendor_BestChoice == -1 && kQAEngine_AppleHW == -1;
+    ok = ok && Q3MemoryStorage_GetType(storage) == kQ3ObjectTypeInvalid &&
+         Q3Object_IsWritable(renderer, file) == kQ3False && Q3Shared_GetEditTrackingState(storage) == kQ3False &&
+         Q3Shared_Edited(storage) == kQ3Success && Q3Shared_GetEditTrackingState(storage) == kQ3True &&
+         Q3Shared_ClearEditTracking(storage) == kQ3Success && Q3Shared_GetEditTrackingState(storage) == kQ3False;
+
+    /* A 4 x 2 image in a TQ3Uns32 array, drawn through a mask of every other
+     * pixel; an idle method that cancels, then one that lets it finish. */
+    memset(pixels, 0, sizeof pixels);
+    memset(&contextData, 0, sizeof contextData);
+    contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
+    contextData.drawContextData.clearImageColor.a = 1.0f;
+    contextData.drawContextData.clearImageColor.r = 1.0f;
+    contextData.pixmap.image = pixels;
+    contextData.pixmap.width = 4;
+    contextData.pixmap.height = 2;
+    contextData.pixmap.rowBytes = 4 * sizeof(TQ3Uns32);
+    contextData.pixmap.pixelSize = 32;
+    contextData.pixmap.pixelType = kQ3PixelTypeARGB32;
+    contextData.pixmap.bitOrder = kQ3EndianBig;
+    contextData.pixmap.byteOrder = *(unsigned char *)&probe == 1 ? kQ3EndianLittle : kQ3EndianBig;
+    context = Q3PixmapDrawContext_New(&contextData);
+    memset(&cameraData, 0, sizeof cameraData);
+    cameraData.cameraData.placement.cameraLocation.z = 10.0f;
+    cameraData.cameraData.placement.upVector.y = 1.0f;
+    cameraData.cameraData.range.hither = 1.0f;
+    cameraData.cameraData.range.yon = 100.0f;
+    cameraData.cameraData.viewPort.origin.x = -1.0f;
+    cameraData.cameraData.viewPort.origin.y = 1.0f;
+    cameraData.cameraData.viewPort.width = 2.0f;
+    cameraData.cameraData.viewPort.height = 2.0f;
+    cameraData.left = -1.0f;
+    cameraData.right = 1.0f;
+    cameraData.top = 1.0f;
+    cameraData.bottom = -1.0f;
+    camera = Q3OrthographicCamera_New(&cameraData);
+    ok = ok && context != NULL && camera != NULL && Q3DrawContext_SetMask(context, &mask) == kQ3Success &&
+         Q3DrawContext_SetMaskState(context, kQ3True) == kQ3Success &&
+         Q3DrawContext_GetMaskState(context, &state) == kQ3Success && state == kQ3True &&
+         Q3DrawContext_SetDoubleBufferState(context, kQ3True) == kQ3Success &&
+         Q3DrawContext_GetDoubleBufferState(context, &state) == kQ3Success && state == kQ3True &&
+         Q3View_SetDrawContext(view, context) == kQ3Success && Q3View_SetCamera(view, camera) == kQ3Success &&
+         Q3View_SetRenderer(view, renderer) == kQ3Success;
+    ok = ok && Q3View_SetIdleProgressMethod(view, stopAtOnce, NULL) == kQ3Success &&
+         Q3View_SetEndFrameMethod(view, endFrame, &frames) == kQ3Success &&
+         Q3View_StartRendering(view) == kQ3Success && Q3Point_Submit(&point, view) == kQ3Success &&
+         Q3View_EndRendering(view) == kQ3ViewStatusCancelled && frames == 0;
+    ok = ok && Q3View_SetIdleProgressMethod(view, NULL, NULL) == kQ3Success &&
+         Q3View_SetIdleMethod(view, countIdle, NULL) == kQ3Success && Q3View_StartRendering(view) == kQ3Success &&
+         Q3Point_Submit(&point, view) == kQ3Success && Q3View_EndRendering(view) == kQ3ViewStatusDone &&
+         idleCount == 1 && frames == 1;
+    /* The mask 1010 / 0101: only those pixels took the red clear colour. */
+    ok = ok && pixels[0] == 0xFFFF0000u && pixels[1] == 0 && pixels[2] == 0xFFFF0000u && pixels[3] == 0 &&
+         pixels[4] == 0 && pixels[5] == 0xFFFF0000u && pixels[6] == 0 && pixels[7] == 0xFFFF0000u;
+    Q3Object_Dispose(view);
+    if (context != NULL)
+        Q3Object_Dispose(context);
+    if (camera != NULL)
+        Q3Object_Dispose(camera);
+    Q3Object_Dispose(renderer);
+    Q3Object_Dispose(storage);
+    Q3Object_Dispose(file);
     return ok;
 }
 
@@ -501,6 +695,8 @@ int main(void)
         if (!ok)
             return 21;
     }
+    if (!portableCalls())
+        return 22;
     Q3Exit();
     printf("C99 headers OK (%lu.%lu), data.curveAttributeSet=%p\n", major, minor,
            (void *)data.curveAttributeSet);
