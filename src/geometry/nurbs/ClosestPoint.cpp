@@ -35,7 +35,9 @@
 namespace q3::nurbs {
 namespace {
 
-constexpr int kMaxNewtonSteps = 60;
+// Enough for Newton's quadratic convergence to an interior minimum; bisection towards
+// a minimum at the piece's end (a candidate already) stops at 2^-30 of the piece.
+constexpr int kMaxNewtonSteps = 30;
 
 struct Candidate {
     double t = 0.0;
@@ -194,13 +196,20 @@ ToolResult<ClosestPoint> closestPoint(const CurveRef& curve, const Point3& targe
             deviation = std::max(deviation, segmentDistance(project(piece.points[i]), first, last, nullptr));
         double fraction = 0.0;
         const double chordDistance = segmentDistance(target, first, last, &fraction);
+        // A piece's end control points are its curve points at a and b: free candidates.
+        search.consider(Candidate{piece.a, access::dot3(access::sub3(first, target), access::sub3(first, target))});
+        search.consider(Candidate{piece.b, access::dot3(access::sub3(last, target), access::sub3(last, target))});
         const double bound = chordDistance - deviation;
         const double best = std::sqrt(search.best().f);
         if (bound >= best - tolerance)
             continue;
-        // Started strictly inside, where the derivatives are this piece's own (at a
-        // corner the span ends, already candidates, carry the other span's).
-        search.newton(piece.a, piece.b, piece.a + std::clamp(fraction, 1e-3, 1.0 - 1e-3) * (piece.b - piece.a));
+        // Where the chord's nearest point is an end, so probably is the piece's (a
+        // candidate already); otherwise Newton starts from the chord's nearest point,
+        // strictly inside, where the derivatives are this piece's own.
+        // A piece holding the best point so far was refined by its parent's iteration.
+        const bool refined = piece.a < search.best().t && search.best().t < piece.b;
+        if (0.0 < fraction && fraction < 1.0 && !refined)
+            search.newton(piece.a, piece.b, piece.a + std::clamp(fraction, 1e-3, 1.0 - 1e-3) * (piece.b - piece.a));
         if (std::sqrt(search.best().f) - bound <= tolerance || splitsLeft == 0 ||
             !(piece.a < 0.5 * (piece.a + piece.b) && 0.5 * (piece.a + piece.b) < piece.b))
             continue;
@@ -229,7 +238,7 @@ ToolResult<ClosestPoint> closestPoint(const CurveRef& curve, const Point3& targe
         }
     }
     const CurvePoint at = evaluate(curve, best.t);
-    return toolValue(ClosestPoint{best.t, at.point, std::sqrt(best.f)});
+    return toolValue(ClosestPoint{best.t, at.point, access::length3(access::sub3(at.point, target))});
 }
 
 } // namespace q3::nurbs

@@ -140,7 +140,7 @@ TEST(NurbsClosestPoint, MatchesADenseOracleOnThousandsOfRandomQueries)
                 const Point3 on = test::referencePoint3(curve, t);
                 target = Point3{on.x + offset(rng), on.y + offset(rng), on.z + offset(rng)};
             }
-            expectAgreesWithTheOracle(curve, target, 12 * int(k), "random", trial);
+            expectAgreesWithTheOracle(curve, target, 6 * int(k), "random", trial);
         }
     }
     EXPECT_EQ(queries, 3000);
