@@ -222,6 +222,22 @@ TEST(NurbsClosestPoint, FindsTheFootOfThePerpendicularOnACircle)
     EXPECT_EQ(closestPoint(quarter.ref(), Point3{-1.0, 5.0, 0.0}).value.t, 1.0);
 }
 
+TEST(NurbsClosestPoint, AtTheCentreOfAnArcEndsWithinItsBudgetAtTheRadius)
+{
+    // Every point of the arc is equally near its centre: the one case the search
+    // may spend its kMaxClosestPointSplits on; any point of the arc is an answer.
+    const float w = float(std::sqrt(0.5));
+    const TestCurve quarter =
+        test::makeCurve(3, {1, 0, 0, 1, w, w, 0, w, 0, 1, 0, 1}, {0, 0, 0, 1, 1, 1});
+    for (double z : {0.0, 0.5}) {
+        const ToolResult<ClosestPoint> found = closestPoint(quarter.ref(), Point3{0.0, 0.0, z});
+        ASSERT_TRUE(found.ok());
+        EXPECT_NEAR(found.value.distance, std::sqrt(1.0 + z * z), 1e-7);
+        EXPECT_GE(found.value.t, 0.0);
+        EXPECT_LE(found.value.t, 1.0);
+    }
+}
+
 TEST(NurbsClosestPoint, RejectsATargetThatIsNotFinite)
 {
     const TestCurve curve = test::listingOneCurve();
