@@ -182,27 +182,28 @@ std::vector<double> powerToBernstein(const std::vector<double>& a)
 
 TEST(NurbsClosestPoint, TellsApartTwoMinimaCloserThanAnyCoarseSampling)
 {
-    // x = t, y = A ((t - 1/2)^2 - d^2)^2 + s (t - 1/2) on [0, 1]: two dips d either
-    // side of 1/2, d down to a hundredth of the span, tilted by s so that one is
-    // nearer a target below them.
+    // x = t, y = A ((t - h)^2 - d^2)^2 + s (t - h) on [0, 1]: two dips d either side
+    // of h, d down to a hundredth of the span (a fifth of the old 4k + 1 sampling's
+    // step), tilted by s so that one is nearer a target below them.
     int trial = 0;
-    for (double d : {0.1, 0.03, 0.01}) {
-        for (double s : {-1e-3, -1e-5, 0.0, 1e-5, 1e-3}) {
-            const double A = 1.0 / (d * d);
-            // ((t - h)^2 - d^2)^2 with h = 1/2, expanded in powers of t.
-            const double h = 0.5;
-            const double c0 = h * h - d * d;  // (t - h)^2 - d^2 = t^2 - 2 h t + c0
-            std::vector<double> y = {A * c0 * c0 - s * h, A * (-4 * h * c0) + s, A * (4 * h * h + 2 * c0),
-                                     A * (-4 * h), A};
-            const std::vector<double> by = powerToBernstein(y);
-            std::vector<float> points;
-            for (std::size_t i = 0; i < by.size(); ++i)
-                for (double v : {double(i) / 4.0, by[i], 0.0, 1.0})
-                    points.push_back(float(v));
-            const TestCurve curve = test::makeCurve(5, points, {0, 0, 0, 0, 0, 1, 1, 1, 1, 1});
-            for (double dx : {-0.5 * d, -0.1 * d, 0.0, 0.1 * d, 0.5 * d})
-                for (double below : {0.001, 0.05, 0.5})
-                    expectAgreesWithTheOracle(curve, Point3{0.5 + dx, -below, 0.0}, 4000, "dips", trial++);
+    for (double h : {0.5, 0.4731, 0.5382}) {
+        for (double d : {0.1, 0.03, 0.01}) {
+            for (double s : {-1e-3, -1e-5, 0.0, 1e-5, 1e-3}) {
+                const double A = 1.0 / (d * d);
+                // ((t - h)^2 - d^2)^2 expanded in powers of t.
+                const double c0 = h * h - d * d;  // (t - h)^2 - d^2 = t^2 - 2 h t + c0
+                std::vector<double> y = {A * c0 * c0 - s * h, A * (-4 * h * c0) + s, A * (4 * h * h + 2 * c0),
+                                         A * (-4 * h), A};
+                const std::vector<double> by = powerToBernstein(y);
+                std::vector<float> points;
+                for (std::size_t i = 0; i < by.size(); ++i)
+                    for (double v : {double(i) / 4.0, by[i], 0.0, 1.0})
+                        points.push_back(float(v));
+                const TestCurve curve = test::makeCurve(5, points, {0, 0, 0, 0, 0, 1, 1, 1, 1, 1});
+                for (double dx : {-0.5 * d, -0.1 * d, 0.0, 0.1 * d, 0.5 * d})
+                    for (double below : {0.001, 0.05, 0.5})
+                        expectAgreesWithTheOracle(curve, Point3{h + dx, -below, 0.0}, 1000, "dips", trial++);
+            }
         }
     }
 }
