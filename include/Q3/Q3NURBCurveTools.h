@@ -716,8 +716,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_GetParameterAtLength(TQ3GeometryObject cu
  * bounding box of the control points (x/w, y/w, z/w). The one exception is a
  * point so near a centre of curvature that thousands of pieces of the curve
  * are that nearly equally near (the centre of a circular arc): the search then
- * stops after 4096 splits and returns the best of a Newton iteration in every
- * remaining piece. *t is that parameter rounded to float and *closest the
+ * stops splitting after 4096 splits and returns the nearest point found by
+ * then. *t is that parameter rounded to float and *closest the
  * curve's point at *t, so they add what rounding t moves the point (at most
  * |C'| times half a float step of t).
  *

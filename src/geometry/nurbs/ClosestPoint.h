@@ -30,8 +30,7 @@ constexpr std::size_t kMaxClosestPointSplits = 4096;
 /// diagonal of the control points' bounding box, unless the search ran out of its
 /// kMaxClosestPointSplits splits, which takes a stretch of curve whose points are all
 /// that nearly equally near (target close to a centre of curvature, as at the centre
-/// of a circular arc); then the result is the best of a Newton iteration in each
-/// remaining piece. Among equally near points the smallest t seen wins.
+/// of a circular arc); then the result is the nearest point found by then. Among equally near points the smallest t seen wins.
 /// target must be finite (kNotFinite).
 /// Cost: O(order^2) per Newton step; a few dozen pieces for a target not close to a
 /// centre of curvature, at most kMaxClosestPointSplits; memory O(spans * order).
