@@ -449,7 +449,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_RemoveKnot(TQ3GeometryObject curve, unsig
  *
  * @param curveData  the curve.
  * @param times      how much to raise the order; order + times may be at most
- *                   kQ3NURBCurveMaxOrder. 0 returns a copy of the curve.
+ *                   kQ3NURBCurveMaxOrder. 0 returns the curve clamped:
+ *                   a copy if it is clamped already.
  * @param result     receives the new curve.
  * @return kQ3Success, or kQ3Failure with *result unchanged.
  *
@@ -706,11 +707,19 @@ Q3_EXTERN_API_C(TQ3Status) Q3NURBCurve_GetParameterAtLength(TQ3GeometryObject cu
 
 /**
  * Q3 extension. The point of a curve nearest to a given point, and its
- * parameter. Every knot span is sampled at 4 * order + 1 parameters and each
- * local minimum of the sampled distances is refined to double precision, so
- * the point returned is never farther than any of those samples (and, for
- * curves without minima closer together than the sampling, is the nearest
- * point).
+ * parameter. Every non-empty knot span is searched as a Bezier piece by
+ * branch and bound (a piece lies within its control points' convex hull), with
+ * a safeguarded Newton iteration in each piece that may hold a nearer point;
+ * the span ends, corners included, are candidates too. Guarantee: in double
+ * precision the parameter found is at a distance from the point that exceeds
+ * the curve's least distance by at most 1e-9 times the diagonal of the
+ * bounding box of the control points (x/w, y/w, z/w). The one exception is a
+ * point so near a centre of curvature that thousands of pieces of the curve
+ * are that nearly equally near (the centre of a circular arc): the search then
+ * stops splitting after 4096 splits and returns the nearest point found by
+ * then. *t is that parameter rounded to float and *closest the
+ * curve's point at *t, so they add what rounding t moves the point (at most
+ * |C'| times half a float step of t).
  *
  * @param curveData  the curve.
  * @param point      the point to approach; its coordinates must be finite.

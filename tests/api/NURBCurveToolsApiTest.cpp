@@ -562,6 +562,12 @@ TEST_F(NURBCurveToolsApiTest, TolerancesMustBeFiniteAndPositive)
     }
     Outputs o;
     EXPECT_Q3_ERROR(Q3NURBCurveData_GetArcLength(&d, 0.75f, 0.25f, 1e-3f, &o.a), kQ3ErrorInvalidParameter);
+    // The header's order: t0 or t1 not finite, then t0 or t1 outside, then the tolerance.
+    EXPECT_Q3_ERROR(Q3NURBCurveData_GetArcLength(&d, -1.0f, kNaN, 1e-3f, &o.a), kQ3ErrorInvalidParameter);
+    EXPECT_Q3_ERROR(Q3NURBCurveData_GetArcLength(&d, kNaN, 2.0f, 1e-3f, &o.a), kQ3ErrorInvalidParameter);
+    EXPECT_Q3_ERROR(Q3NURBCurveData_GetArcLength(&d, 2.0f, kInf, 1e-3f, &o.a), kQ3ErrorInvalidParameter);
+    EXPECT_Q3_ERROR(Q3NURBCurveData_GetArcLength(&d, -1.0f, 0.5f, kNaN, &o.a), kQ3ErrorParameterOutOfRange);
+    EXPECT_Q3_ERROR(Q3NURBCurveData_GetArcLength(&d, 0.0f, 2.0f, 0.0f, &o.a), kQ3ErrorParameterOutOfRange);
     for (float bad : {kNaN, kInf, -kInf})
         EXPECT_Q3_ERROR(Q3NURBCurveData_GetParameterAtLength(&d, 0, bad, 1e-3f, &o.a), kQ3ErrorInvalidParameter);
     for (float bad : {-1e-3f, 100.0f, 1e30f})
@@ -646,6 +652,41 @@ TEST_F(NURBCurveToolsApiTest, ElevationStopsAtTheHighestOrder)
         EXPECT_Q3_ERROR(Q3NURBCurve_ElevateDegree(c, times, &o.c1), kQ3ErrorParameterOutOfRange);
         EXPECT_TRUE(o.untouched());
     }
+}
+
+TEST_F(NURBCurveToolsApiTest, ElevationByZeroGivesTheCurveClamped)
+{
+    // A uniform (unclamped) cubic on the domain [3, 4].
+    CurveArrays arrays{{{0, 0, 0, 1}, {1, 2, 0, 1}, {2, -1, 1, 2}, {4, 1, 0, 1}}, {0, 1, 2, 3, 4, 5, 6, 7}, 4};
+    const TQ3NURBCurveData d = arrays.data();
+    Outputs o;
+    ASSERT_EQ(Q3NURBCurveData_ElevateDegree(&d, 0, &o.c1), kQ3Success);
+    ASSERT_EQ(o.c1.order, 4u);
+    ASSERT_EQ(o.c1.numPoints, 4u);
+    for (unsigned long i = 0; i < 8; ++i)
+        EXPECT_EQ(o.c1.knots[i], i < 4 ? 3.0f : 4.0f) << i;
+    for (float t : {3.0f, 3.25f, 3.5f, 3.75f, 4.0f}) {
+        TQ3Point3D expected{}, got{};
+        ASSERT_EQ(Q3NURBCurveData_Evaluate(&d, t, &expected), kQ3Success);
+        ASSERT_EQ(Q3NURBCurveData_Evaluate(&o.c1, t, &got), kQ3Success);
+        EXPECT_NEAR(got.x, expected.x, 1e-5f) << t;
+        EXPECT_NEAR(got.y, expected.y, 1e-5f) << t;
+        EXPECT_NEAR(got.z, expected.z, 1e-5f) << t;
+    }
+    o.release();
+    // A clamped curve comes back as it is.
+    CurveArrays clamped = listing1();
+    const TQ3NURBCurveData c = clamped.data();
+    ASSERT_EQ(Q3NURBCurveData_ElevateDegree(&c, 0, &o.c1), kQ3Success);
+    ASSERT_EQ(o.c1.numPoints, 4u);
+    for (unsigned long i = 0; i < 8; ++i)
+        EXPECT_EQ(o.c1.knots[i], c.knots[i]);
+    for (unsigned long i = 0; i < 4; ++i) {
+        EXPECT_EQ(o.c1.controlPoints[i].x, c.controlPoints[i].x);
+        EXPECT_EQ(o.c1.controlPoints[i].y, c.controlPoints[i].y);
+        EXPECT_EQ(o.c1.controlPoints[i].w, c.controlPoints[i].w);
+    }
+    o.release();
 }
 
 TEST_F(NURBCurveToolsApiTest, BezierPieceIndicesAreCheckedAtEveryBoundary)

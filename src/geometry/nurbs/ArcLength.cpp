@@ -190,8 +190,14 @@ void forEachSpanPart(const CurveRef& curve, double t0, double t1, F f)
 ToolResult<double> arcLength(const CurveRef& curve, double t0, double t1, double tolerance)
 {
     const Domain domain = curveDomain(curve);
-    for (const auto& checked : {checkParameter(t0, domain, false, "t0"), checkParameter(t1, domain, false, "t1"),
-                                checkTolerance(tolerance)})
+    const ToolResult<double> checks[] = {checkParameter(t0, domain, false, "t0"),
+                                         checkParameter(t1, domain, false, "t1"), checkTolerance(tolerance)};
+    // The header's order: t0 or t1 not finite, then t0 or t1 outside the domain,
+    // then the tolerance.
+    for (const auto& checked : checks)
+        if (checked.error == ToolError::kNotFinite && &checked != &checks[2])
+            return checked;
+    for (const auto& checked : checks)
         if (!checked.ok())
             return checked;
     if (t0 > t1)

@@ -38,7 +38,10 @@ ToolResult<HomogeneousCurve> elevateDegree(const CurveRef& curve, std::size_t ti
         return toolFailure<HomogeneousCurve>(
             ToolError::kOutOfRange,
             formatMessage("raising the order %u by %zu would exceed the highest order, %u", k, times, kMaxOrder));
-    if (times == 0)
+    // By 0 a clamped curve comes back as it is; an unclamped one goes through the
+    // collocation below, which clamps it as for any other times.
+    const std::size_t n = curve.numPoints;
+    if (times == 0 && curve.knots[0] == curve.knots[k - 1] && curve.knots[n] == curve.knots[n + k - 1])
         return toolValue(toHomogeneous(curve));
     const unsigned newOrder = k + unsigned(times);
     const unsigned degree = newOrder - 1;

@@ -9,7 +9,8 @@
 
 namespace q3::nurbs {
 
-/// Raises a valid curve's order by `times` (0 gives a copy of the curve) without
+/// Raises a valid curve's order by `times` (0 gives a clamped curve:
+/// the curve itself if it is clamped already) without
 /// changing its shape on the domain. The result is clamped: its knot vector starts
 /// and ends with order + times copies of the domain's ends; each interior knot of
 /// multiplicity m comes out with multiplicity m + times, so the curve keeps its

@@ -121,6 +121,17 @@ TEST(NurbsArcLength, RejectsBadRangesAndTolerances)
     EXPECT_EQ(parameterAtLength(curve.ref(), 0.3, 0.0, 1e-6).value, 0.3);
 }
 
+TEST(NurbsArcLength, ChecksBothParametersForBeingFiniteBeforeEitherForTheDomain)
+{
+    // The header's order: t0 or t1 not finite, then t0 or t1 outside, then the tolerance.
+    const TestCurve curve = test::listingOneCurve();
+    EXPECT_EQ(arcLength(curve.ref(), -0.5, std::nan(""), 1e-6).error, ToolError::kNotFinite);
+    EXPECT_EQ(arcLength(curve.ref(), 1.5, INFINITY, 1e-6).error, ToolError::kNotFinite);
+    EXPECT_EQ(arcLength(curve.ref(), std::nan(""), 1.5, 1e-6).error, ToolError::kNotFinite);
+    EXPECT_EQ(arcLength(curve.ref(), -0.5, 1.0, std::nan("")).error, ToolError::kOutOfRange);
+    EXPECT_EQ(arcLength(curve.ref(), 0.0, 1.5, 0.0).error, ToolError::kOutOfRange);
+}
+
 TEST(NurbsArcLength, AnUnreachableToleranceEndsAtTheCapWithAWarning)
 {
     // A cubic with a cusp at t = 0.5: C'(t) = 3((1 - 2t)^2, 1 - 2t). Its speed has a

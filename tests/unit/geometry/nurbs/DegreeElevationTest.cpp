@@ -55,6 +55,36 @@ TEST(NurbsDegreeElevation, ElevationLeavesRandomCurvesOfEveryOrderUnchanged)
     }
 }
 
+TEST(NurbsDegreeElevation, ElevationByZeroClampsAndKeepsAClampedCurveAsItIs)
+{
+    std::mt19937 rng(43);
+    for (int trial = 0; trial < 100; ++trial) {
+        const unsigned k = 2 + trial % 15;
+        const bool clamped = trial % 2 == 0;
+        const TestCurve curve = test::randomCurve(rng, k, {clamped, 0.3, 10});
+        const ToolResult<HomogeneousCurve> same = elevateDegree(curve.ref(), 0);
+        ASSERT_TRUE(same.ok()) << same.message;
+        const HomogeneousCurve& e = same.value;
+        const HomogeneousCurve original = test::asHomogeneous(curve);
+        EXPECT_EQ(e.order, k);
+        EXPECT_EQ(std::count(e.knots.begin(), e.knots.end(), curve.domainStart()), std::ptrdiff_t(k));
+        EXPECT_EQ(std::count(e.knots.begin(), e.knots.end(), curve.domainEnd()), std::ptrdiff_t(k));
+        EXPECT_EQ(interiorMultiplicities(e.knots, curve.domainStart(), curve.domainEnd()),
+                  interiorMultiplicities(original.knots, curve.domainStart(), curve.domainEnd()));
+        if (clamped) {
+            EXPECT_EQ(e.knots, original.knots);
+            ASSERT_EQ(e.points.size(), original.points.size());
+            for (std::size_t i = 0; i < e.points.size(); ++i) {
+                EXPECT_EQ(e.points[i].x, original.points[i].x);
+                EXPECT_EQ(e.points[i].w, original.points[i].w);
+            }
+        }
+        EXPECT_LE(test::maxDeviation(curve, e, curve.domainStart(), curve.domainEnd()),
+                  1e-6 * test::curveScale(curve))
+            << "order " << k;
+    }
+}
+
 TEST(NurbsDegreeElevation, ABezierCurveIsElevatedByTheBernsteinFormula)
 {
     // Listing 1's cubic raised to a quartic: Q_i = i/4 P_{i-1} + (1 - i/4) P_i.
