@@ -137,7 +137,8 @@ void SharedObject::markEdited()
 
 void SharedObject::releaseReference() noexcept
 {
-    if (m_references.fetch_sub(1) == 1)
+    // acq_rel: the contract in Object.h says why.
+    if (m_references.fetch_sub(1, std::memory_order_acq_rel) == 1)
         delete this;
 }
 

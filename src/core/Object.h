@@ -89,16 +89,52 @@ private:
     bool m_registered = false;
 };
 
-/// A reference-counted object. Born with one reference, held by its creator.
-/// Invariant: the edit index changes with every edit (markEdited), and every
-/// cache derived from the object is dropped at the same time.
+/// A reference-counted object. Invariant: the edit index changes with every
+/// edit (markEdited), and every cache derived from the object is dropped at the
+/// same time.
+///
+/// The reference-count contract, stated once here for every owner of a
+/// reference (a q3::Ref, a C caller, a handle held in a C data struct):
+/// - A shared object is born with one reference, held by its creator:
+///   makeShared() adopts it into the Ref it returns, and a New entry point
+///   hands that reference to C with detach().
+/// - A reference is added only by someone who already holds one on the same
+///   object (a Ref being copied, lookupRef() on a handle its C caller owns), so
+///   an increment never races with the deletion and has nothing to order:
+///   addReference() is a relaxed fetch_add.
+/// - releaseReference() drops one, and the call that takes the count from 1 to
+///   0 deletes the object. The decrement is an acq_rel fetch_sub: its release
+///   half puts every access a thread made through its reference before its
+///   decrement, and its acquire half, in the thread that reaches 0, puts all of
+///   them (every decrement heads a release sequence the last one reads from)
+///   before the destructor. This is what Boost's and libstdc++'s shared
+///   pointers do; one acq_rel operation rather than a release decrement and an
+///   acquire fence taken only at 0, because ThreadSanitizer (scripts/test.sh
+///   runs it) does not model standalone fences, and on x86 both are the same
+///   locked instruction.
+/// - No resurrection: a count never goes from 0 back to 1. Nothing finds an
+///   object without holding a reference to it; the live registry refuses a
+///   handle disposed earlier, but a handle whose last reference another thread
+///   is dropping at the same moment is the program's race, as in QuickDraw 3D.
+/// - referenceCount() is a snapshot for Q3Shared_IsReferenced and tests; it
+///   orders nothing (relaxed), and no code decides ownership from it.
+/// - Core code holds references in Ref<T> (core/Ref.h): adopt() takes over a
+///   reference the pointer already carries (a new object's first one, one
+///   handed in from C), retain() adds one, detach() hands one out to C without
+///   releasing it, and a Ref's copy retains and its destruction releases. The
+///   handle fields of C data structs hold plain counted references, which only
+///   the code that fills and empties those structs takes and drops
+///   (core/DataLayout.h and the fields it cannot describe).
 class SharedObject : public Object {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3ObjectTypeShared;
 
     void dispose() override { releaseReference(); }
 
-    unsigned long referenceCount() const noexcept { return m_references.load(); }
+    unsigned long referenceCount() const noexcept
+    {
+        return m_references.load(std::memory_order_relaxed);
+    }
     unsigned long editIndex() const noexcept { return m_editIndex.load(); }
     void markEdited();
     /// Whether markEdited() ran since the object was made or since
@@ -106,7 +142,7 @@ public:
     bool editedSinceTracking() const noexcept { return m_editTracked.load(); }
     void clearEditTracking() noexcept { m_editTracked = false; }
 
-    void addReference() noexcept { m_references.fetch_add(1); }
+    void addReference() noexcept { m_references.fetch_add(1, std::memory_order_relaxed); }
     void releaseReference() noexcept;
 
 protected:

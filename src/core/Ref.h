@@ -7,11 +7,10 @@
 
 namespace q3 {
 
-/// An owning reference to a shared object. There is no implicit construction
-/// from a raw pointer: adopt() takes over a reference the pointer already
-/// carries (a new object's first one, or one handed in from C), retain() adds
-/// one, detach() hands the reference out to C. Copies retain; destruction
-/// releases. Core code never calls retain/release by hand.
+/// An owning reference to a shared object, following the reference-count
+/// contract stated on SharedObject (core/Object.h), which also says what
+/// adopt(), retain() and detach() mean. There is no implicit construction from
+/// a raw pointer, so every Ref says which of the two it does.
 template <class T>
 class Ref {
 public:
