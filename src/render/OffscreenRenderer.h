@@ -2,8 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
-#include "render/PixelConvert.h"
-#include "render/RenderResult.h"
+#include "base/PixelConvert.h"
+#include "base/RenderResult.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -54,7 +54,7 @@ struct BitmapImage {
 };
 
 /// A colour image drawn in screen space (a QuickDraw 3D pixmap marker):
-/// `pixels` laid out as `layout` says (render/PixelConvert.h). Its top left
+/// `pixels` laid out as `layout` says (base/PixelConvert.h). Its top left
 /// pixel lies xOffset pixels right of and yOffset pixels below the pixel its
 /// anchor projects to. Each pixel keeps its colour; one whose alpha is 0 is
 /// not drawn, any other alpha is drawn opaque.
@@ -66,7 +66,7 @@ struct PixmapImage {
 };
 
 /// A texture for filled triangles (a QuickDraw 3D texture shader's image):
-/// `pixels` laid out as `layout` says (render/PixelConvert.h), row 0 at the
+/// `pixels` laid out as `layout` says (base/PixelConvert.h), row 0 at the
 /// top. A triangle vertex's texture coordinate (s, t) picks the texel in
 /// column floor(s * width) and row floor(t * height) counted from the top
 /// row (nearest sampling); outside 0..1 a coordinate wraps (repeats) or, when

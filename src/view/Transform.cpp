@@ -3,7 +3,7 @@
 #include "view/Transform.h"
 
 #include "core/ShapeVisitor.h"
-#include "view/MatrixMath.h"
+#include "base/MatrixMath.h"
 
 #include <cmath>
 #include <cstring>

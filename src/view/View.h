@@ -5,8 +5,8 @@
 #include "QD3DView.h"
 #include "core/Object.h"
 #include "core/ShapeVisitor.h"
-#include "render/PixelConvert.h"
-#include "render/RenderResult.h"
+#include "base/PixelConvert.h"
+#include "base/RenderResult.h"
 
 #include <memory>
 
