@@ -3,7 +3,7 @@
 #include "QD3D.h"
 #include "api/Entry.h"
 #include "core/LargeBlocks.h"
-#include "render/OffscreenRenderer.h"
+#include "base/RenderTarget.h"
 #include "view/View.h"
 
 using namespace q3;
@@ -16,7 +16,7 @@ TQ3Status Q3Initialize(void)
 {
     errors::beginCall();
     // At program start, before the application's threads use the environment.
-    pinRenderingEnvironment();
+    initializeRenderBackend();
     if (!system::initialize())
         errors::postNotice(kQ3NoticeSystemAlreadyInitialized,
                            "Q3Initialize: already initialized; the call nests and needs its own Q3Exit");
