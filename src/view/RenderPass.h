@@ -12,7 +12,7 @@
 
 namespace q3 {
 
-/// Turns a failed render/ call into the QuickDraw 3D error the view posts:
+/// Turns a failed RenderTarget call into the QuickDraw 3D error the view posts:
 /// kOutOfMemory -> kQ3ErrorOutOfMemory, kInvalidArgument ->
 /// kQ3ErrorInvalidParameter, anything else -> kQ3ErrorRenderingLoopFailed.
 /// `what` names the step for the message. Does nothing on success.
