@@ -5,8 +5,8 @@
 
 #include "QD3DMath.h"
 #include "api/MathEntry.h"
-#include "view/BoundsMath.h"
-#include "view/MathValues.h"
+#include "base/BoundsMath.h"
+#include "base/MathValues.h"
 
 #include <cstring>
 

@@ -5,8 +5,8 @@
 
 #include "QD3DMath.h"
 #include "api/MathEntry.h"
-#include "view/MatrixMath.h"
-#include "view/QuaternionMath.h"
+#include "base/MatrixMath.h"
+#include "base/QuaternionMath.h"
 
 using namespace q3;
 using q3::api::computeInto;

@@ -4,9 +4,9 @@
 #include "QD3DIO.h"
 #include "api/Entry.h"
 #include "core/LargeBlocks.h"
+#include "base/RenderTarget.h"
 #include "io/ClassIO.h"
 #include "io/File.h"
-#include "render/OffscreenRenderer.h"
 #include "view/View.h"
 
 using namespace q3;
@@ -19,7 +19,7 @@ TQ3Status Q3Initialize(void)
 {
     errors::beginCall();
     // At program start, before the application's threads use the environment.
-    pinRenderingEnvironment();
+    initializeRenderBackend();
     if (!system::initialize())
         errors::postNotice(kQ3NoticeSystemAlreadyInitialized,
                            "Q3Initialize: already initialized; the call nests and needs its own Q3Exit");

@@ -7,9 +7,9 @@
 
 #include "QD3DMath.h"
 #include "api/MathEntry.h"
-#include "view/MatrixMath.h"
-#include "view/QuaternionMath.h"
-#include "view/VectorMath.h"
+#include "base/MatrixMath.h"
+#include "base/QuaternionMath.h"
+#include "base/VectorMath.h"
 
 #include <string>
 

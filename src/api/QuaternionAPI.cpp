@@ -6,7 +6,7 @@
 
 #include "QD3DMath.h"
 #include "api/MathEntry.h"
-#include "view/QuaternionMath.h"
+#include "base/QuaternionMath.h"
 
 using namespace q3;
 using q3::api::computeInto;

@@ -3,7 +3,7 @@
 #include "QD3DStorage.h"
 
 #include "api/Entry.h"
-#include "io/Storage.h"
+#include "base/Storage.h"
 
 using namespace q3;
 using namespace q3::api;

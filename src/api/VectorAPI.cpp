@@ -5,9 +5,9 @@
 
 #include "QD3DMath.h"
 #include "api/MathEntry.h"
-#include "view/MatrixMath.h"
-#include "view/QuaternionMath.h"
-#include "view/VectorMath.h"
+#include "base/MatrixMath.h"
+#include "base/QuaternionMath.h"
+#include "base/VectorMath.h"
 
 using namespace q3;
 using q3::api::computeInto;

@@ -36,7 +36,7 @@ namespace {
 glm::dmat4 matrixOf(const std::array<double, 16>& m)
 {
     // Row-vector matrix stored row by row = glm's column-major column-vector
-    // matrix (view/Matrix.h).
+    // matrix (base/Matrix.h).
     glm::dmat4 out(1.0);
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)

@@ -266,7 +266,7 @@ void writeGltf(const Scene& scene, const std::string& path, bool binary)
         out.camera = n.camera;
         out.children = n.children;
         // A row-vector matrix stored row by row is the column-vector matrix
-        // stored column by column: glTF's layout (view/Matrix.h).
+        // stored column by column: glTF's layout (base/Matrix.h).
         if (n.hasMatrix)
             out.matrix.assign(n.matrix.begin(), n.matrix.end());
         if (n.light >= 0) {

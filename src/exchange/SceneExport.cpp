@@ -18,7 +18,7 @@
 #include "core/ErrorManager.h"
 #include "core/Error.h"
 #include "geometry/Geometry.h"
-#include "geometry/Primitives.h"
+#include "base/Primitives.h"
 #include "group/Group.h"
 #include "light/DirectionalLight.h"
 #include "light/PointLight.h"
@@ -138,7 +138,7 @@ void compact(Primitive& p)
 
 std::array<double, 16> flatten(const Matrix& m)
 {
-    // Matrix m[i][j] holds QuickDraw 3D's value[i][j] (view/Matrix.h).
+    // Matrix m[i][j] holds QuickDraw 3D's value[i][j] (base/Matrix.h).
     std::array<double, 16> out{};
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)

@@ -5,7 +5,7 @@
 #include "core/AttributeSet.h"
 #include "core/Object.h"
 #include "geometry/Decompose.h"
-#include "geometry/Primitives.h"
+#include "base/Primitives.h"
 
 #include <glm/vec3.hpp>
 

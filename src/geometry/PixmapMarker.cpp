@@ -7,7 +7,7 @@
 #include "geometry/DataGeometryImpl.h"
 // The storage interface depends only on core; the pixmap marker is the one
 // geometry whose data lives in a storage object (QD3DStorage.h).
-#include "io/Storage.h"
+#include "base/Storage.h"
 
 #include <string>
 #include <utility>

@@ -3,7 +3,7 @@
 #pragma once
 
 // Pixmaps to and from PNG files (Q3PixmapPNG.h): the pixel conversions of
-// render/PixelConvert over the files of image/PngFile.
+// base/PixelConvert over the files of image/PngFile.
 
 #include "QD3D.h"
 

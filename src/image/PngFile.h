@@ -5,7 +5,7 @@
 // PNG files of 8-bit RGBA images (libpng), for Q3PixmapPNG.h. Errors are
 // thrown as q3::Error with the codes Q3PixmapPNG.h documents.
 
-#include "render/PixelConvert.h"
+#include "base/PixelConvert.h"
 
 #include <cstdint>
 #include <string>

@@ -6,7 +6,7 @@
 #include "core/Object.h"
 #include "io/ClassIO.h"
 #include "io/Metafile.h"
-#include "io/Storage.h"
+#include "base/Storage.h"
 #include "view/View.h"
 
 #include <memory>

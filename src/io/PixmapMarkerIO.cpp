@@ -17,7 +17,7 @@
 #include "io/GeometryIOSupport.h"
 
 #include "geometry/PixmapMarker.h"
-#include "io/Storage.h"
+#include "base/Storage.h"
 
 #include <cstdint>
 #include <string>

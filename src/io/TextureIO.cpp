@@ -25,7 +25,7 @@
 #include "io/ClassIO.h"
 
 #include "core/Limits.h"
-#include "io/Storage.h"
+#include "base/Storage.h"
 #include "shader/TextureShader.h"
 
 #include <algorithm>

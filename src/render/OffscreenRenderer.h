@@ -2,137 +2,15 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
-#include "render/PixelConvert.h"
-#include "render/RenderResult.h"
+#include "base/RenderTarget.h"
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
 
-namespace q3 {
-
-/// A colour with float channels, nominally in [0, 1] (OpenGL clamps).
-struct RgbColor {
-    float r = 0.0f;
-    float g = 0.0f;
-    float b = 0.0f;
-};
-
-struct RgbaColor {
-    float r = 0.0f;
-    float g = 0.0f;
-    float b = 0.0f;
-    float a = 0.0f;
-};
-
-/// The primitive of a drawElements or drawArrays call.
-enum class DrawMode { kPoints, kLines, kLineStrip, kTriangles };
-
-/// What a frame is drawn with besides its size and pane.
-struct FrameOptions {
-    /// Hidden-surface removal: every primitive is depth-tested against what
-    /// was drawn before it (a fragment is kept when it is no farther, so of
-    /// two at the same depth the later wins, as without the test) and writes
-    /// its depth. Without it primitives are painted in submission order.
-    bool depthTest = false;
-};
-
-/// A 1-bit image drawn in screen space (a QuickDraw 3D marker): `height`
-/// rows of `rowBytes` bytes, top row first; pixel x of a row is bit x % 8 of
-/// byte x / 8, counted from the most significant bit unless lsbFirst. Its
-/// top left pixel lies xOffset pixels right of and yOffset pixels below the
-/// pixel its anchor projects to.
-struct BitmapImage {
-    const unsigned char* bits = nullptr;
-    std::size_t rowBytes = 0;
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-    bool lsbFirst = false;
-    long xOffset = 0;
-    long yOffset = 0;
-};
-
-/// A colour image drawn in screen space (a QuickDraw 3D pixmap marker):
-/// `pixels` laid out as `layout` says (render/PixelConvert.h). Its top left
-/// pixel lies xOffset pixels right of and yOffset pixels below the pixel its
-/// anchor projects to. Each pixel keeps its colour; one whose alpha is 0 is
-/// not drawn, any other alpha is drawn opaque.
-struct PixmapImage {
-    const void* pixels = nullptr;
-    PixmapLayout layout;
-    long xOffset = 0;
-    long yOffset = 0;
-};
-
-/// A texture for filled triangles (a QuickDraw 3D texture shader's image):
-/// `pixels` laid out as `layout` says (render/PixelConvert.h), row 0 at the
-/// top. A triangle vertex's texture coordinate (s, t) picks the texel in
-/// column floor(s * width) and row floor(t * height) counted from the top
-/// row (nearest sampling); outside 0..1 a coordinate wraps (repeats) or, when
-/// clamped, takes the edge texel. Alpha is not used.
-struct TextureImage {
-    const void* pixels = nullptr;
-    PixmapLayout layout;
-    bool clampS = false;
-    bool clampT = false;
-};
-
-/// The most lights a frame is lit by (kQ3ViewMaxLights).
-constexpr std::size_t kMaxLights = 32;
-
-/// A light for lit drawing, in world coordinates.
-struct RenderLight {
-    enum class Kind { kAmbient, kDirectional, kPoint, kSpot };
-    Kind kind = Kind::kAmbient;
-    float color[3] = {0.0f, 0.0f, 0.0f}; ///< colour times brightness; zero for a light that is off
-    float position[3] = {0.0f, 0.0f, 0.0f};  ///< point and spot
-    float direction[3] = {0.0f, 0.0f, -1.0f}; ///< directional and spot: unit, the way the light travels
-    int attenuation = 0;                     ///< 0 none, 1 by 1/d, 2 by 1/d^2 (point and spot)
-    float hotAngle = 0.0f;                   ///< spot: half-angles, radians
-    float outerAngle = 0.0f;
-    int fallOff = 0; ///< spot, between the angles: 0 none, 1 linear, 2 exponential, 3 cosine
-};
-
-/// The lights of a frame and where the eye is, in world coordinates.
-struct LightingSetup {
-    std::vector<RenderLight> lights; ///< at most kMaxLights
-    float eye[3] = {0.0f, 0.0f, 0.0f};
-    bool orthographic = false;
-    float viewDirection[3] = {0.0f, 0.0f, -1.0f}; ///< unit, the way the camera looks
-};
-
-/// How the triangles of one lit draw are shaded (QuickDraw 3D's illumination
-/// shaders, QD3DShader.h): for a point p with unit normal N and diffuse
-/// colour Od, ambient light Ia and lights Ii (each attenuated by f),
-///   Lambert: ka Ia Od + sum_i f Ii Od (N . Li)          (N . Li > 0)
-///   Phong:   Lambert + sum_i f Ii Os (Ri . V)^n         (N . Li > 0)
-/// with Li the unit vector towards light i, Ri its reflection about N, V the
-/// unit vector towards the eye, ka the ambient coefficient, Os the specular
-/// colour and n the specular control.
-struct SurfaceShading {
-    float localToWorld[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; ///< as setMatrix's layout
-    int illumination = 1; ///< 1 Lambert, 2 Phong
-    float ambientCoefficient = 1.0f;
-    float specularColor[3] = {0.5f, 0.5f, 0.5f};
-    float specularControl = 4.0f;
-    /// 0: one colour per triangle (its last vertex's); 1: lit at the vertices
-    /// and interpolated; 2: lit at every pixel from interpolated normals.
-    int interpolation = 1;
-    /// Back faces are lit with their normal reversed.
-    bool flipBackFaces = false;
-};
-
-/// How triangles are rasterized: back faces dropped or not, and which
-/// winding is the front.
-struct FaceOptions {
-    bool cullBack = false;
-    bool clockwiseFront = false;
-    bool operator==(const FaceOptions& other) const
-    {
-        return cullBack == other.cullBack && clockwiseFront == other.clockwiseFront;
-    }
-};
+namespace q3
+{
 
 /// Sets the environment variables Mesa reads when the process's first OSMesa
 /// context is created (OffscreenRenderer.cpp says which and why). Only the first
@@ -168,10 +46,11 @@ void pinRenderingEnvironment();
 ///
 /// Invariant: outside a frame the batch is empty; pixels() has
 /// width() * height() * 4 bytes, valid after a successful endFrame().
-class OffscreenRenderer {
+class OffscreenRenderer final : public RenderTarget
+{
 public:
     OffscreenRenderer();
-    ~OffscreenRenderer();
+    ~OffscreenRenderer() override;
     OffscreenRenderer(const OffscreenRenderer&) = delete;
     OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
 
@@ -189,7 +68,7 @@ public:
     /// kOutOfMemory; kContextFailure or kWrongRenderer if no llvmpipe context
     /// could be made (see the .cpp for the pinned Mesa settings).
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
-                            const PixelRect& pane, const FrameOptions& options = FrameOptions{});
+                            const PixelRect& pane, const FrameOptions& options = FrameOptions{}) override;
 
     /// Sets the matrix for the following draw calls: it maps the caller's 3D
     /// points straight to OpenGL clip space (homogeneous, before the divide).
@@ -200,18 +79,18 @@ public:
     /// as is.) Doubles are rounded to float, as OpenGL stores matrices.
     /// Errors: kWrongState outside a frame; kInvalidArgument if m is NULL or
     /// holds NaN/infinity (the previous matrix stays).
-    RenderResult setMatrix(const float m[16]);
-    RenderResult setMatrix(const double m[16]);
+    RenderResult setMatrix(const float m[16]) override;
+    RenderResult setMatrix(const double m[16]) override;
 
     /// Draws one connected polyline through `count` points (xyz: 3 floats per
     /// point, tightly packed). Fewer than 2 points draw nothing.
-    RenderResult drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color);
+    RenderResult drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color) override;
     /// Draws count / 2 separate segments; count must be even.
-    RenderResult drawLines(const float* xyz, std::size_t count, const RgbColor& color);
+    RenderResult drawLines(const float* xyz, std::size_t count, const RgbColor& color) override;
     /// Draws count square points of pointSize pixels (aliased; OpenGL clamps
     /// the size to its range, 1..255 for llvmpipe).
     RenderResult drawPoints(const float* xyz, std::size_t count, const RgbColor& color,
-                            float pointSize = 1.0f);
+                            float pointSize = 1.0f) override;
     /// Draws count / 3 filled, unlit, single-coloured triangles (both faces);
     /// count must be a multiple of 3.
     /// Errors (all four draw calls): kWrongState outside a frame;
@@ -220,7 +99,7 @@ public:
     /// pointSize is not a positive finite number; kOutOfMemory; and, if the
     /// call flushed a full batch, the endFrame() errors. On error nothing of
     /// the call is drawn.
-    RenderResult drawTriangles(const float* xyz, std::size_t count, const RgbColor& color);
+    RenderResult drawTriangles(const float* xyz, std::size_t count, const RgbColor& color) override;
 
     /// Draws indexed primitives over a pool of vertexCount vertices: xyz
     /// holds 3 floats per vertex, rgb 3 per vertex or is null (then every
@@ -235,12 +114,12 @@ public:
     /// the texel (OpenGL's modulate); st is ignored for other primitives or
     /// without a texture. Errors also: kInvalidArgument for a non-finite st.
     RenderResult drawElements(DrawMode mode, const float* xyz, const float* rgb, std::size_t vertexCount,
-                              const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
-                              bool smooth, const float* st = nullptr);
+                              const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color, bool smooth,
+                              const float* st = nullptr) override;
     /// Draws count consecutive vertices as one primitive list (or one line
     /// strip), with per-vertex colours as drawElements.
-    RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count,
-                            const RgbColor& color, bool smooth);
+    RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count, const RgbColor& color,
+                            bool smooth) override;
 
     /// Draws the set bits of `image` as pixels of `color`, parallel to the
     /// pane, placed by the image of `anchor` (3 floats) under the current
@@ -250,20 +129,20 @@ public:
     /// pixels. Errors: kWrongState outside a frame; kInvalidArgument for a
     /// NULL anchor, NULL bits with a non-empty image, rowBytes too small for
     /// the width, or a non-finite anchor or colour; kOutOfMemory.
-    RenderResult drawBitmap(const float* anchor, const BitmapImage& image, const RgbColor& color);
+    RenderResult drawBitmap(const float* anchor, const BitmapImage& image, const RgbColor& color) override;
     /// Draws `image` as drawBitmap draws a bitmap's set bits, each pixel in
     /// its own colour, unlit; only the pixels inside the pane are decoded.
     /// Errors: kWrongState outside a frame; kInvalidArgument for a NULL
     /// anchor or pixels, an invalid layout or a non-finite anchor;
     /// kOutOfMemory.
-    RenderResult drawPixmap(const float* anchor, const PixmapImage& image);
+    RenderResult drawPixmap(const float* anchor, const PixmapImage& image) override;
 
     /// The lights for the frame's lit draws (kWrongState outside a frame;
     /// kInvalidArgument for more than kMaxLights or a non-finite value).
-    RenderResult setLighting(const LightingSetup& lighting);
+    RenderResult setLighting(const LightingSetup& lighting) override;
     /// How the following triangles are rasterized (kWrongState outside a
     /// frame).
-    RenderResult setFaceOptions(const FaceOptions& faces);
+    RenderResult setFaceOptions(const FaceOptions& faces) override;
     /// Draws indexed triangles lit by the frame's lights as `shading` says:
     /// normals holds a unit normal per vertex (3 floats, local coordinates),
     /// rgb the diffuse colours (or null: `color`). Errors as drawElements,
@@ -275,17 +154,15 @@ public:
     /// the equations are evaluated with Od = rgb times the texel.
     RenderResult drawLitTriangles(const float* xyz, const float* normals, const float* rgb, std::size_t vertexCount,
                                   const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
-                                  const SurfaceShading& shading, const float* st = nullptr);
+                                  const SurfaceShading& shading, const float* st = nullptr) override;
 
     /// The texture for the following draws that pass texture coordinates
     /// (null: none): addTexture, then useTexture. The image is decoded and
     /// copied now, so the caller's pixels may go away after the call.
     /// Errors: kWrongState outside a frame; kInvalidArgument for NULL pixels
     /// or an invalid layout (the current texture is then none); kOutOfMemory.
-    RenderResult setTexture(const TextureImage* texture);
+    RenderResult setTexture(const TextureImage* texture) override;
 
-    /// useTexture's "no texture".
-    static constexpr std::uint32_t kNoTexture = 0xFFFFFFFFu;
     /// Keeps a texture for the rest of the frame and sets `id` to its
     /// number for useTexture; the current texture does not change. The image
     /// is decoded and copied now (the caller's pixels may go away after the
@@ -293,30 +170,30 @@ public:
     /// often the frame switches to it. Errors: kWrongState outside a frame;
     /// kInvalidArgument for NULL pixels or an invalid layout; kOutOfMemory
     /// (id is then unchanged).
-    RenderResult addTexture(const TextureImage& texture, std::uint32_t& id);
+    RenderResult addTexture(const TextureImage& texture, std::uint32_t& id) override;
     /// Makes texture `id` of this frame (addTexture) the one for the
     /// following draws that pass texture coordinates, or none with
     /// kNoTexture. Errors: kWrongState outside a frame; kInvalidArgument for
     /// an id this frame has not given (the current texture is unchanged).
-    RenderResult useTexture(std::uint32_t id);
+    RenderResult useTexture(std::uint32_t id) override;
 
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;
     /// kGraphicsError if OpenGL reported an error. The frame is closed even
     /// on failure (pixels() is then unspecified).
-    RenderResult endFrame();
+    RenderResult endFrame() override;
 
     /// Discards an open frame without rendering it (no effect otherwise);
     /// pixels() is unspecified until the next successful endFrame().
-    void cancelFrame();
+    void cancelFrame() override;
 
-    bool inFrame() const;
-    std::uint32_t width() const;
-    std::uint32_t height() const;
+    bool inFrame() const override;
+    std::uint32_t width() const override;
+    std::uint32_t height() const override;
     /// Bytes from one row to the next: always width() * 4 (tightly packed).
-    std::size_t rowBytes() const;
+    std::size_t rowBytes() const override;
     /// RGBA8 pixels, R first in memory, top row first; null before the first frame.
-    const std::uint8_t* pixels() const;
+    const std::uint8_t* pixels() const override;
 
 private:
     class Impl;

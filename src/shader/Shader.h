@@ -4,7 +4,7 @@
 
 #include "QD3DShader.h"
 #include "core/Object.h"
-#include "style/DrawState.h"
+#include "base/DrawState.h"
 
 namespace q3 {
 

@@ -8,7 +8,7 @@
 #include "core/Ref.h"
 // Textures keep their images in storage objects (QD3DStorage.h), whose
 // interface depends only on core, as the pixmap marker's does.
-#include "io/Storage.h"
+#include "base/Storage.h"
 
 #include <algorithm>
 #include <string>

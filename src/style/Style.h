@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/Object.h"
-#include "style/DrawState.h"
+#include "base/DrawState.h"
 
 namespace q3 {
 

@@ -13,7 +13,7 @@
 
 #include "core/EnumValue.h"
 #include "geometry/Geometry.h"
-#include "view/BoundsMath.h"
+#include "base/BoundsMath.h"
 
 #include <glm/geometric.hpp>
 

@@ -2,7 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 
 // Cameras and their matrices, in QuickDraw 3D's row-vector convention (see
-// view/Matrix.h for how that maps onto glm).
+// base/Matrix.h for how that maps onto glm).
 //
 // World to view is the usual "look at" frame: the eye at the origin, looking
 // down -z, +y towards the up vector. The projections follow the frustum that

@@ -4,7 +4,7 @@
 
 #include "QD3DCamera.h"
 #include "core/Object.h"
-#include "view/Matrix.h"
+#include "base/Matrix.h"
 
 namespace q3 {
 

@@ -6,8 +6,8 @@
 #include "geometry/CurveCache.h"
 #include "geometry/Decompose.h"
 #include "geometry/nurbs/Curve.h"
-#include "render/RenderResult.h"
-#include "view/Matrix.h"
+#include "base/RenderResult.h"
+#include "base/Matrix.h"
 
 #include <cstddef>
 #include <functional>

@@ -4,8 +4,8 @@
 
 #include "QD3DDrawContext.h"
 #include "core/Object.h"
-#include "render/PixelConvert.h"
-#include "render/RenderResult.h"
+#include "base/PixelConvert.h"
+#include "base/RenderResult.h"
 
 namespace q3 {
 

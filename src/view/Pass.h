@@ -7,9 +7,9 @@
 #include "core/Object.h"
 #include "core/ShapeVisitor.h"
 #include "geometry/Decompose.h"
-#include "style/DrawState.h"
+#include "base/DrawState.h"
 #include "view/CurveTessellation.h"
-#include "view/Matrix.h"
+#include "base/Matrix.h"
 
 #include <optional>
 #include <vector>

@@ -2,7 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
-#include "geometry/Primitives.h"
+#include "base/Primitives.h"
 #include "view/Pass.h"
 #include "view/Pick.h"
 

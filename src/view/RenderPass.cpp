@@ -183,7 +183,7 @@ const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureC
             return nullptr;
     if (!loadTexture(choice))
         return nullptr;
-    // (u, v, 1) times the uv transform (its third column unused); OpenGL's
+    // (u, v, 1) times the uv transform (its third column unused); the target's
     // t runs down the image from its top row, v up from its bottom row.
     const TQ3Matrix3x3& m = choice.uvTransform;
     m_st.resize(2 * mesh.vertexCount);

@@ -2,9 +2,9 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
-#include "geometry/Primitives.h"
+#include "base/Primitives.h"
 #include "light/Light.h"
-#include "render/OffscreenRenderer.h"
+#include "base/RenderTarget.h"
 #include "view/Pass.h"
 
 #include <optional>
@@ -12,14 +12,14 @@
 
 namespace q3 {
 
-/// Turns a failed render/ call into the QuickDraw 3D error the view posts:
+/// Turns a failed RenderTarget call into the QuickDraw 3D error the view posts:
 /// kOutOfMemory -> kQ3ErrorOutOfMemory, kInvalidArgument ->
 /// kQ3ErrorInvalidParameter, anything else -> kQ3ErrorRenderingLoopFailed.
 /// `what` names the step for the message. Does nothing on success.
 void throwIfFailed(const RenderResult& result, const char* what);
 
 /// The row-vector matrix from QuickDraw 3D frustum coordinates (z from 0 at
-/// hither to -1 at yon) to OpenGL clip coordinates (z from -w to w):
+/// hither to -1 at yon) to the render target's clip coordinates (z from -w to w):
 /// z_clip = -2 z - w; x, y and w are unchanged.
 Matrix frustumToClip();
 
@@ -42,11 +42,11 @@ struct RenderStyle {
 
 /// A traversal of a rendering loop: every geometry decomposes itself
 /// (Geometry::decompose) into this pass, which draws the primitives into the
-/// view's OffscreenRenderer frame. A vertex's colour is its own (after
+/// view's RenderTarget frame. A vertex's colour is its own (after
 /// inheritance from its face), else its geometry's attribute set's diffuse
 /// colour, else the state's; colours given per vertex are interpolated.
 /// Under a Lambert or Phong illumination shader, filled triangles are lit by
-/// the view's lights (render/LitProgram.cpp gives the equations), with the
+/// the view's lights (RenderTarget::drawLitTriangles gives the equations), with the
 /// geometry's normals or, where it has none, its faces'; lines and points
 /// are drawn in their colours. Under a texture shader, filled triangles
 /// whose vertices all have a uv take their diffuse colour from its texture
@@ -63,7 +63,7 @@ struct RenderStyle {
 /// Invariant: the target has a frame open for as long as the pass lives.
 class RenderPass final : public Pass, private PrimitiveSink {
 public:
-    RenderPass(OffscreenRenderer& target, const Window& window, const AttributeValues& attributes,
+    RenderPass(RenderTarget& target, const Window& window, const AttributeValues& attributes,
                const RenderStyle& style)
         : Pass(window, attributes), m_target(target), m_style(style)
     {
@@ -115,7 +115,7 @@ private:
     /// without a texture or when a triangle's vertex has no uv.
     const float* textureCoordinates(const MeshView& mesh, const TextureChoice& texture);
 
-    OffscreenRenderer& m_target;
+    RenderTarget& m_target;
     RenderStyle m_style;
     std::optional<Matrix> m_loaded;
     std::optional<FaceOptions> m_loadedFaces;
@@ -144,7 +144,7 @@ private:
         std::uint32_t id = 0;
     };
     std::vector<LoadedTexture> m_textures;
-    std::uint32_t m_currentTexture = OffscreenRenderer::kNoTexture;
+    std::uint32_t m_currentTexture = RenderTarget::kNoTexture;
 };
 
 } // namespace q3

@@ -3,8 +3,8 @@
 #include "view/Transform.h"
 
 #include "core/ShapeVisitor.h"
-#include "view/MatrixMath.h"
-#include "view/QuaternionMath.h"
+#include "base/MatrixMath.h"
+#include "base/QuaternionMath.h"
 
 #include <cmath>
 #include <cstring>

@@ -8,7 +8,7 @@
 #include "geometry/nurbs/Tessellate.h"
 #include "group/Group.h"
 #include "light/Light.h"
-#include "render/OffscreenRenderer.h"
+#include "base/RenderTarget.h"
 #include "render/Renderer.h"
 #include "view/BoundsPass.h"
 #include "view/Camera.h"
@@ -244,7 +244,7 @@ void View::startRendering()
     options.depthTest = fills;
 
     if (!m_offscreen)
-        m_offscreen = std::make_unique<OffscreenRenderer>();
+        m_offscreen = makeRenderTarget();
     style.lighting = lightingOf(m_lightGroup.get(), *m_camera);
     auto pass = std::make_unique<RenderPass>(*m_offscreen, Window{m_camera->worldToFrustum(), destination.pane},
                                              defaultAttributes(m_defaultAttributes.get()), style);

@@ -5,8 +5,8 @@
 #include "QD3DView.h"
 #include "core/Object.h"
 #include "core/ShapeVisitor.h"
-#include "render/PixelConvert.h"
-#include "render/RenderResult.h"
+#include "base/PixelConvert.h"
+#include "base/RenderResult.h"
 
 #include <memory>
 
@@ -25,7 +25,7 @@ class DrawContext;
 class Geometry;
 class Group;
 struct GraphicsState;
-class OffscreenRenderer;
+class RenderTarget;
 class Pass;
 class Pick;
 class Renderer;
@@ -45,7 +45,8 @@ public:
 /// in it. A loop is a Pass (RenderPass or BoundsPass) that receives every
 /// submitted shape and owns the graphics state and its push/pop stack.
 ///
-/// Rendering draws through one OffscreenRenderer per view, created at the
+/// Rendering draws through one RenderTarget per view (base/RenderTarget.h,
+/// made by the backend's makeRenderTarget()), created at the
 /// first rendering loop and reused by the next ones. The image reaches the
 /// caller's pixmap when the loop ends: Q3View_EndRendering converts the
 /// finished frame into the pixmap's pixel type (only the pane, when the pane
@@ -55,7 +56,7 @@ public:
 /// do { ... } while (EndRendering == kQ3ViewStatusRetraverse) loop runs once.
 ///
 /// Not shared: disposing it destroys it. Invariant: a pass exists exactly
-/// while a loop runs; while a rendering loop runs, the OffscreenRenderer has a
+/// while a loop runs; while a rendering loop runs, the RenderTarget has a
 /// frame open on the image and pane snapshotted at its start.
 class View final : public Object {
 public:
@@ -242,7 +243,7 @@ private:
     /// The pick of a picking loop, as a handle: it is not shared, so the
     /// view cannot keep it alive and checks it is still live at the end.
     TQ3Object m_pick = nullptr;
-    std::unique_ptr<OffscreenRenderer> m_offscreen;
+    std::unique_ptr<RenderTarget> m_offscreen;
     Destination m_destination;
 };
 

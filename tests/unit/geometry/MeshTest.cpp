@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 
-// geometry/Primitives.h: a Mesh creates an attribute channel the first time
+// base/Primitives.h: a Mesh creates an attribute channel the first time
 // a vertex has that attribute, with NaN ("none") for every vertex before;
 // edgesFromTriangles gives each undirected triangle side exactly once;
 // VertexAttributes inherit what they lack and keep what they have; a
 // triangle takes the surface shader two of its corners share.
 
 #include "core/AttributeSet.h"
-#include "geometry/Primitives.h"
+#include "base/Primitives.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "render/OffscreenRenderer.h"
-#include "render/PixelConvert.h"
+#include "base/PixelConvert.h"
 
 #include <gtest/gtest.h>
 

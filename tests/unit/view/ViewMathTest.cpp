@@ -6,7 +6,7 @@
 
 #include "view/CurveTessellation.h"
 #include "view/DrawContext.h"
-#include "view/Matrix.h"
+#include "base/Matrix.h"
 #include "view/RenderPass.h"
 
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 // QD3DMath.h's quaternions: q = (w, x, y, z) = w + xi + yj + zk. A nonzero
 // q stands for the rotation v -> q v q^-1 (Hamilton's product), which for a
 // unit q = (cos(a/2), sin(a/2) * axis) turns counterclockwise by a about the
-// unit axis, the same turn as the matrices of view/MatrixMath.h. q and any
+// unit axis, the same turn as the matrices of base/MatrixMath.h. q and any
 // nonzero multiple of it, -q included, stand for the same rotation; the zero
 // quaternion stands for none, and the calls that need a rotation throw
 // kQ3ErrorInvalidParameter for it.

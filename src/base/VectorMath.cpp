@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
-#include "view/VectorMath.h"
+#include "base/VectorMath.h"
 
 #include "core/Error.h"
-#include "view/MathValues.h"
+#include "base/MathValues.h"
 
 #include <glm/geometric.hpp>
 

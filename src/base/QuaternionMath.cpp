@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
-#include "view/QuaternionMath.h"
+#include "base/QuaternionMath.h"
 
 #include "core/Error.h"
-#include "view/MathValues.h"
-#include "view/MatrixMath.h"
+#include "base/MathValues.h"
+#include "base/MatrixMath.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>

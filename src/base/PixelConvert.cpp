@@ -5,7 +5,7 @@
 // instantiated once per (pixel type, byte order) so the inner loop carries no
 // per-pixel switch; packPixel/unpackPixel define the bit layouts in one place.
 
-#include "render/PixelConvert.h"
+#include "base/PixelConvert.h"
 
 #include <cstring>
 #include <string>

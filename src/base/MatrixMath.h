@@ -6,7 +6,7 @@
 // in QuickDraw 3D's row-vector convention (p' = p * M, translation in
 // value[3][0..2]), and 3x3 matrices acting the same way on 2-D points
 // (translation in value[2][0..1]). It works in the view layer's
-// double-precision glm Matrix (view/Matrix.h, which owns the one conversion
+// double-precision glm Matrix (base/Matrix.h, which owns the one conversion
 // between the conventions) and rounds to float once, at the end. No handles
 // and no error manager: the two domain failures, a direction of length 0
 // and a singular matrix, throw q3::Error for the API layer to post.

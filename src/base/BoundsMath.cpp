@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
-#include "view/BoundsMath.h"
+#include "base/BoundsMath.h"
 
 #include "core/EnumValue.h"
-#include "view/MathValues.h"
+#include "base/MathValues.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,7 +5,7 @@
 // QD3DMath.h's arithmetic on points and vectors that needs no matrix: sums,
 // differences, lengths and distances, relative ratios, affine combinations,
 // changes of dimension and polar and spherical coordinates. Computed in
-// double and rounded once (view/MathValues.h). The domain failures throw
+// double and rounded once (base/MathValues.h). The domain failures throw
 // q3::Error for the API layer to post: a zero vector to normalize
 // (kQ3ErrorVector3DZeroLength), ratios or weights summing to 0
 // (kQ3ErrorInvalidParameter), no points to combine

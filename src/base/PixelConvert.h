@@ -2,7 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
-#include "render/RenderResult.h"
+#include "base/RenderResult.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
-#include "view/MatrixMath.h"
+#include "base/MatrixMath.h"
 
 #include "core/Error.h"
-#include "view/MathValues.h"
-#include "view/Matrix.h"
+#include "base/MathValues.h"
+#include "base/Matrix.h"
 
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
@@ -19,7 +19,7 @@ namespace q3::math {
 
 namespace {
 
-// The 4x4 conversions and composition of view/Matrix.h, overloaded below
+// The 4x4 conversions and composition of base/Matrix.h, overloaded below
 // for the 3x3 matrices.
 using q3::fromQ3;
 using q3::then;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
-#include "io/Storage.h"
+#include "base/Storage.h"
 
 #include "core/Limits.h"
 

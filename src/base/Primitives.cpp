@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
-#include "geometry/Primitives.h"
+#include "base/Primitives.h"
 
 #include "core/AttributeSet.h"
 #include "core/DataLayout.h"

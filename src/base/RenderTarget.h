@@ -1,0 +1,319 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// The one seam between the view and whatever draws its pixels. Every backend
+// call is listed here once (Filament's DriverAPI.inc is the model): frame
+// control (beginFrame, endFrame, cancelFrame, the finished image), state
+// (matrix, lights, face options, textures) and the draw calls. A backend
+// (render/: OSMesa today) implements it; the view holds a RenderTarget made
+// by makeRenderTarget() and never names the backend, so another one (or
+// NullRenderTarget in the unit tests) can take its place.
+
+#include "base/PixelConvert.h"
+#include "base/RenderResult.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace q3
+{
+
+/// A colour with float channels, nominally in [0, 1] (OpenGL clamps).
+struct RgbColor {
+    float r = 0.0f;
+    float g = 0.0f;
+    float b = 0.0f;
+};
+
+struct RgbaColor {
+    float r = 0.0f;
+    float g = 0.0f;
+    float b = 0.0f;
+    float a = 0.0f;
+};
+
+/// The primitive of a drawElements or drawArrays call.
+enum class DrawMode { kPoints, kLines, kLineStrip, kTriangles };
+
+/// What a frame is drawn with besides its size and pane.
+struct FrameOptions {
+    /// Hidden-surface removal: every primitive is depth-tested against what
+    /// was drawn before it (a fragment is kept when it is no farther, so of
+    /// two at the same depth the later wins, as without the test) and writes
+    /// its depth. Without it primitives are painted in submission order.
+    bool depthTest = false;
+};
+
+/// A 1-bit image drawn in screen space (a QuickDraw 3D marker): `height`
+/// rows of `rowBytes` bytes, top row first; pixel x of a row is bit x % 8 of
+/// byte x / 8, counted from the most significant bit unless lsbFirst. Its
+/// top left pixel lies xOffset pixels right of and yOffset pixels below the
+/// pixel its anchor projects to.
+struct BitmapImage {
+    const unsigned char* bits = nullptr;
+    std::size_t rowBytes = 0;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    bool lsbFirst = false;
+    long xOffset = 0;
+    long yOffset = 0;
+};
+
+/// A colour image drawn in screen space (a QuickDraw 3D pixmap marker):
+/// `pixels` laid out as `layout` says (base/PixelConvert.h). Its top left
+/// pixel lies xOffset pixels right of and yOffset pixels below the pixel its
+/// anchor projects to. Each pixel keeps its colour; one whose alpha is 0 is
+/// not drawn, any other alpha is drawn opaque.
+struct PixmapImage {
+    const void* pixels = nullptr;
+    PixmapLayout layout;
+    long xOffset = 0;
+    long yOffset = 0;
+};
+
+/// A texture for filled triangles (a QuickDraw 3D texture shader's image):
+/// `pixels` laid out as `layout` says (base/PixelConvert.h), row 0 at the
+/// top. A triangle vertex's texture coordinate (s, t) picks the texel in
+/// column floor(s * width) and row floor(t * height) counted from the top
+/// row (nearest sampling); outside 0..1 a coordinate wraps (repeats) or, when
+/// clamped, takes the edge texel. Alpha is not used.
+struct TextureImage {
+    const void* pixels = nullptr;
+    PixmapLayout layout;
+    bool clampS = false;
+    bool clampT = false;
+};
+
+/// The most lights a frame is lit by (kQ3ViewMaxLights).
+constexpr std::size_t kMaxLights = 32;
+
+/// A light for lit drawing, in world coordinates.
+struct RenderLight {
+    enum class Kind { kAmbient, kDirectional, kPoint, kSpot };
+    Kind kind = Kind::kAmbient;
+    float color[3] = {0.0f, 0.0f, 0.0f};      ///< colour times brightness; zero for a light that is off
+    float position[3] = {0.0f, 0.0f, 0.0f};   ///< point and spot
+    float direction[3] = {0.0f, 0.0f, -1.0f}; ///< directional and spot: unit, the way the light travels
+    int attenuation = 0;                      ///< 0 none, 1 by 1/d, 2 by 1/d^2 (point and spot)
+    float hotAngle = 0.0f;                    ///< spot: half-angles, radians
+    float outerAngle = 0.0f;
+    int fallOff = 0; ///< spot, between the angles: 0 none, 1 linear, 2 exponential, 3 cosine
+};
+
+/// The lights of a frame and where the eye is, in world coordinates.
+struct LightingSetup {
+    std::vector<RenderLight> lights; ///< at most kMaxLights
+    float eye[3] = {0.0f, 0.0f, 0.0f};
+    bool orthographic = false;
+    float viewDirection[3] = {0.0f, 0.0f, -1.0f}; ///< unit, the way the camera looks
+};
+
+/// How the triangles of one lit draw are shaded (QuickDraw 3D's illumination
+/// shaders, QD3DShader.h): for a point p with unit normal N and diffuse
+/// colour Od, ambient light Ia and lights Ii (each attenuated by f),
+///   Lambert: ka Ia Od + sum_i f Ii Od (N . Li)          (N . Li > 0)
+///   Phong:   Lambert + sum_i f Ii Os (Ri . V)^n         (N . Li > 0)
+/// with Li the unit vector towards light i, Ri its reflection about N, V the
+/// unit vector towards the eye, ka the ambient coefficient, Os the specular
+/// colour and n the specular control.
+struct SurfaceShading {
+    float localToWorld[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; ///< as setMatrix's layout
+    int illumination = 1;                                                      ///< 1 Lambert, 2 Phong
+    float ambientCoefficient = 1.0f;
+    float specularColor[3] = {0.5f, 0.5f, 0.5f};
+    float specularControl = 4.0f;
+    /// 0: one colour per triangle (its last vertex's); 1: lit at the vertices
+    /// and interpolated; 2: lit at every pixel from interpolated normals.
+    int interpolation = 1;
+    /// Back faces are lit with their normal reversed.
+    bool flipBackFaces = false;
+};
+
+/// How triangles are rasterized: back faces dropped or not, and which
+/// winding is the front.
+struct FaceOptions {
+    bool cullBack = false;
+    bool clockwiseFront = false;
+    bool operator==(const FaceOptions& other) const
+    {
+        return cullBack == other.cullBack && clockwiseFront == other.clockwiseFront;
+    }
+};
+
+/// Draws points, lines, filled triangles and screen-space images into an
+/// RGBA8 image of its own, one per QuickDraw 3D view.
+///
+/// A frame is beginFrame(), any number of state and draw calls, then
+/// endFrame(); afterwards pixels() holds the finished image. Primitives are
+/// painted in submission order, later ones over earlier ones, unless the
+/// frame has the depth test (FrameOptions); there is no blending; lines are
+/// 1 pixel wide, aliased. The calls neither throw nor post errors: each
+/// returns a RenderResult and the view decides what it becomes.
+///
+/// Invariant: pixels() has width() * height() * 4 bytes, valid after a
+/// successful endFrame(). One target must not be used by two threads at once.
+class RenderTarget
+{
+public:
+    RenderTarget() = default;
+    virtual ~RenderTarget() = default;
+    RenderTarget(const RenderTarget&) = delete;
+    RenderTarget& operator=(const RenderTarget&) = delete;
+
+    /// Starts a frame on an image of width x height pixels. The pane is the
+    /// part of the image the view draws into (y measured from the top): its
+    /// pixels are cleared to clearColor and the viewport maps clip space onto
+    /// it; pixels outside the pane become (0, 0, 0, 0). The pane may extend
+    /// beyond the image (that part is simply not stored). The matrix is reset
+    /// to identity. The first frame, or a frame of a new size, creates the
+    /// OpenGL context and image; frames of an unchanged size reuse both.
+    /// Errors: kWrongState if a frame is open; kInvalidArgument if width or
+    /// height is 0 or above the implementation limit (16384 for llvmpipe),
+    /// the pane is empty, wider or taller than 16384 or has its origin
+    /// beyond +-16384, or a colour channel is NaN/infinite;
+    /// kOutOfMemory; kContextFailure or kWrongRenderer if no llvmpipe context
+    /// could be made (see the .cpp for the pinned Mesa settings).
+    virtual RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
+                                    const PixelRect& pane, const FrameOptions& options = FrameOptions{}) = 0;
+
+    /// Sets the matrix for the following draw calls: it maps the caller's 3D
+    /// points straight to OpenGL clip space (homogeneous, before the divide).
+    /// Convention: QuickDraw 3D's row-vector form, p' = p * M, with the 16
+    /// values in row-major order m[row * 4 + column], exactly the memory
+    /// layout of a TQ3Matrix4x4. (That memory is also OpenGL's column-major
+    /// layout of the column-vector matrix M^T, so it is passed to OpenGL
+    /// as is.) Doubles are rounded to float, as OpenGL stores matrices.
+    /// Errors: kWrongState outside a frame; kInvalidArgument if m is NULL or
+    /// holds NaN/infinity (the previous matrix stays).
+    virtual RenderResult setMatrix(const float m[16]) = 0;
+    virtual RenderResult setMatrix(const double m[16]) = 0;
+
+    /// Draws one connected polyline through `count` points (xyz: 3 floats per
+    /// point, tightly packed). Fewer than 2 points draw nothing.
+    virtual RenderResult drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color) = 0;
+    /// Draws count / 2 separate segments; count must be even.
+    virtual RenderResult drawLines(const float* xyz, std::size_t count, const RgbColor& color) = 0;
+    /// Draws count square points of pointSize pixels (aliased; OpenGL clamps
+    /// the size to its range, 1..255 for llvmpipe).
+    virtual RenderResult drawPoints(const float* xyz, std::size_t count, const RgbColor& color,
+                                    float pointSize = 1.0f) = 0;
+    /// Draws count / 3 filled, unlit, single-coloured triangles (both faces);
+    /// count must be a multiple of 3.
+    /// Errors (all four draw calls): kWrongState outside a frame;
+    /// kInvalidArgument if xyz is NULL while count > 0, a count does not fit
+    /// the primitive, any coordinate or colour channel is NaN/infinite, or
+    /// pointSize is not a positive finite number; kOutOfMemory; and, if the
+    /// call flushed a full batch, the endFrame() errors. On error nothing of
+    /// the call is drawn.
+    virtual RenderResult drawTriangles(const float* xyz, std::size_t count, const RgbColor& color) = 0;
+
+    /// Draws indexed primitives over a pool of vertexCount vertices: xyz
+    /// holds 3 floats per vertex, rgb 3 per vertex or is null (then every
+    /// vertex is `color`). Each index refers to the pool; indexCount must fit
+    /// the mode (even for lines, a multiple of 3 for triangles; a line strip
+    /// is not accepted). With smooth, colours are interpolated across each
+    /// line and triangle; without, each takes the colour of its last vertex.
+    /// Errors: those of the calls above, and kInvalidArgument for an index
+    /// not below vertexCount or a non-finite rgb value.
+    /// With st (2 floats per vertex) and a current texture (setTexture),
+    /// triangles are textured: each pixel is its interpolated colour times
+    /// the texel (OpenGL's modulate); st is ignored for other primitives or
+    /// without a texture. Errors also: kInvalidArgument for a non-finite st.
+    virtual RenderResult drawElements(DrawMode mode, const float* xyz, const float* rgb, std::size_t vertexCount,
+                                      const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
+                                      bool smooth, const float* st = nullptr) = 0;
+    /// Draws count consecutive vertices as one primitive list (or one line
+    /// strip), with per-vertex colours as drawElements.
+    virtual RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count,
+                                    const RgbColor& color, bool smooth) = 0;
+
+    /// Draws the set bits of `image` as pixels of `color`, parallel to the
+    /// pane, placed by the image of `anchor` (3 floats) under the current
+    /// matrix and depth-tested (when the frame is) at its depth. Nothing is
+    /// drawn when the anchor is behind the eye or outside the depth range;
+    /// bits outside the pane are skipped, so the work is at most the pane's
+    /// pixels. Errors: kWrongState outside a frame; kInvalidArgument for a
+    /// NULL anchor, NULL bits with a non-empty image, rowBytes too small for
+    /// the width, or a non-finite anchor or colour; kOutOfMemory.
+    virtual RenderResult drawBitmap(const float* anchor, const BitmapImage& image, const RgbColor& color) = 0;
+    /// Draws `image` as drawBitmap draws a bitmap's set bits, each pixel in
+    /// its own colour, unlit; only the pixels inside the pane are decoded.
+    /// Errors: kWrongState outside a frame; kInvalidArgument for a NULL
+    /// anchor or pixels, an invalid layout or a non-finite anchor;
+    /// kOutOfMemory.
+    virtual RenderResult drawPixmap(const float* anchor, const PixmapImage& image) = 0;
+
+    /// The lights for the frame's lit draws (kWrongState outside a frame;
+    /// kInvalidArgument for more than kMaxLights or a non-finite value).
+    virtual RenderResult setLighting(const LightingSetup& lighting) = 0;
+    /// How the following triangles are rasterized (kWrongState outside a
+    /// frame).
+    virtual RenderResult setFaceOptions(const FaceOptions& faces) = 0;
+    /// Draws indexed triangles lit by the frame's lights as `shading` says:
+    /// normals holds a unit normal per vertex (3 floats, local coordinates),
+    /// rgb the diffuse colours (or null: `color`). Errors as drawElements,
+    /// and kInvalidArgument for a non-finite normal or shading value.
+    /// With st and a current texture, the texel takes the place of the
+    /// diffuse colour Od: lit at the vertices, a pixel is the interpolated
+    /// ambient and diffuse light (computed with rgb, clamped to 0..1) times
+    /// the texel plus the interpolated specular light; lit at every pixel,
+    /// the equations are evaluated with Od = rgb times the texel.
+    virtual RenderResult drawLitTriangles(const float* xyz, const float* normals, const float* rgb,
+                                          std::size_t vertexCount, const std::uint32_t* indices, std::size_t indexCount,
+                                          const RgbColor& color, const SurfaceShading& shading,
+                                          const float* st = nullptr) = 0;
+
+    /// The texture for the following draws that pass texture coordinates
+    /// (null: none): addTexture, then useTexture. The image is decoded and
+    /// copied now, so the caller's pixels may go away after the call.
+    /// Errors: kWrongState outside a frame; kInvalidArgument for NULL pixels
+    /// or an invalid layout (the current texture is then none); kOutOfMemory.
+    virtual RenderResult setTexture(const TextureImage* texture) = 0;
+
+    /// useTexture's "no texture".
+    static constexpr std::uint32_t kNoTexture = 0xFFFFFFFFu;
+    /// Keeps a texture for the rest of the frame and sets `id` to its
+    /// number for useTexture; the current texture does not change. The image
+    /// is decoded and copied now (the caller's pixels may go away after the
+    /// call) and uploaded to OpenGL once, when a draw first uses it, however
+    /// often the frame switches to it. Errors: kWrongState outside a frame;
+    /// kInvalidArgument for NULL pixels or an invalid layout; kOutOfMemory
+    /// (id is then unchanged).
+    virtual RenderResult addTexture(const TextureImage& texture, std::uint32_t& id) = 0;
+    /// Makes texture `id` of this frame (addTexture) the one for the
+    /// following draws that pass texture coordinates, or none with
+    /// kNoTexture. Errors: kWrongState outside a frame; kInvalidArgument for
+    /// an id this frame has not given (the current texture is unchanged).
+    virtual RenderResult useTexture(std::uint32_t id) = 0;
+
+    /// Renders everything batched since beginFrame() and stores the image.
+    /// Errors: kWrongState if no frame is open; kContextFailure;
+    /// kGraphicsError if OpenGL reported an error. The frame is closed even
+    /// on failure (pixels() is then unspecified).
+    virtual RenderResult endFrame() = 0;
+
+    /// Discards an open frame without rendering it (no effect otherwise);
+    /// pixels() is unspecified until the next successful endFrame().
+    virtual void cancelFrame() = 0;
+
+    virtual bool inFrame() const = 0;
+    virtual std::uint32_t width() const = 0;
+    virtual std::uint32_t height() const = 0;
+    /// Bytes from one row to the next: always width() * 4 (tightly packed).
+    virtual std::size_t rowBytes() const = 0;
+    /// RGBA8 pixels, R first in memory, top row first; null before the first frame.
+    virtual const std::uint8_t* pixels() const = 0;
+};
+
+/// A new target of the backend the library was built with (render/ defines
+/// it). Never null; a backend that cannot start reports so at beginFrame.
+std::unique_ptr<RenderTarget> makeRenderTarget();
+
+/// Prepares the backend once per process before any target is made
+/// (Q3Initialize calls it; render/ defines it). Safe to call again.
+void initializeRenderBackend();
+
+} // namespace q3

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "base/RenderTarget.h"
+#include "render/OffscreenRenderer.h"
+
+// The backend this library is built with: OSMesa (OffscreenRenderer). The
+// view asks base/RenderTarget.h for a target and never names it.
+
+namespace q3 {
+
+std::unique_ptr<RenderTarget> makeRenderTarget()
+{
+    return std::make_unique<OffscreenRenderer>();
+}
+
+void initializeRenderBackend()
+{
+    pinRenderingEnvironment();
+}
+
+} // namespace q3

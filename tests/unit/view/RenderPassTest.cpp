@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// The rendering pass drawn into a NullRenderTarget (base/NullRenderTarget.h):
+// the pass reaches the pixels only through base/RenderTarget.h, so it runs
+// without any rendering backend, and the calls it makes can be read back.
+
+#include "QD3DGeometry.h"
+#include "base/NullRenderTarget.h"
+#include "geometry/Geometry.h"
+#include "view/RenderPass.h"
+
+#include <gtest/gtest.h>
+
+namespace q3 {
+namespace {
+
+class RenderPassTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        ASSERT_EQ(Q3Initialize(), kQ3Success);
+        const TQ3TriangleData triangle{{{{0, 0, 0}, nullptr}, {{1, 0, 0}, nullptr}, {{0, 1, 0}, nullptr}}, nullptr};
+        m_triangle = Q3Triangle_New(&triangle);
+        const TQ3PointData point{{0.5f, 0.5f, 0.0f}, nullptr};
+        m_point = Q3Point_New(&point);
+        ASSERT_TRUE(m_triangle && m_point);
+        ASSERT_TRUE(m_target.beginFrame(8, 8, RgbaColor{}, PixelRect{0, 0, 8, 8}).ok());
+    }
+
+    void TearDown() override
+    {
+        Q3Object_Dispose(m_triangle);
+        Q3Object_Dispose(m_point);
+        Q3Exit();
+    }
+
+    /// Draws both geometries in one pass of a renderer that fills or not.
+    void drawAll(bool fill)
+    {
+        RenderStyle style;
+        style.fillTriangles = fill;
+        RenderPass pass(m_target, Window{Matrix(1.0), PixelRect{0, 0, 8, 8}}, defaultAttributes(nullptr), style);
+        pass.visitGeometry(geometry(m_triangle));
+        pass.visitGeometry(geometry(m_point));
+    }
+
+    static const Geometry& geometry(TQ3GeometryObject handle)
+    {
+        return static_cast<const Geometry&>(*static_cast<Object*>(handle));
+    }
+
+    NullRenderTarget m_target;
+    TQ3GeometryObject m_triangle = nullptr;
+    TQ3GeometryObject m_point = nullptr;
+};
+
+TEST_F(RenderPassTest, FilledTrianglesAndPointsReachTheTargetThroughTheInterface)
+{
+    drawAll(true);
+    ASSERT_TRUE(m_target.endFrame().ok());
+    const std::vector<std::string>& calls = m_target.calls();
+    ASSERT_GE(calls.size(), 4u);
+    EXPECT_EQ(calls.front(), "beginFrame");
+    EXPECT_EQ(calls[1], "setMatrix");
+    EXPECT_EQ(calls.back(), "endFrame");
+    // The matrix is handed over once: both geometries share it.
+    EXPECT_EQ(m_target.count("setMatrix"), 1u);
+    EXPECT_EQ(m_target.count("setFaceOptions"), 1u);
+    EXPECT_EQ(m_target.count("drawElements") + m_target.count("drawLitTriangles"), 1u);
+    EXPECT_EQ(m_target.count("drawPoints"), 1u);
+    EXPECT_EQ(m_target.count("drawLines"), 0u);
+    ASSERT_NE(m_target.pixels(), nullptr);
+    EXPECT_EQ(m_target.rowBytes(), 32u);
+}
+
+TEST_F(RenderPassTest, TheWireframeRendererDrawsATrianglesEdgesAsLines)
+{
+    drawAll(false);
+    EXPECT_EQ(m_target.count("drawLines"), 1u);
+    EXPECT_EQ(m_target.count("drawElements") + m_target.count("drawLitTriangles"), 0u);
+    EXPECT_EQ(m_target.count("setFaceOptions"), 0u);
+    EXPECT_EQ(m_target.count("drawPoints"), 1u);
+}
+
+} // namespace
+} // namespace q3
