@@ -4,6 +4,7 @@
 #include "Q3Exchange.h"
 
 #include "api/Entry.h"
+#include "core/EnumValue.h"
 #include "exchange/Exchange.h"
 #include "group/Group.h"
 #include "view/Camera.h"
@@ -17,10 +18,20 @@ using namespace q3::api;
 
 namespace {
 
+// A C caller may put any int in an enum-typed field or argument: each is
+// read as bytes (core/EnumValue.h) and checked before it is used as the enum.
+TQ3ExchangeFormat checkedFormat(const TQ3ExchangeFormat& format, const char* name)
+{
+    const long value = enumValue(format);
+    if (value < kQ3ExchangeFormatAny || value > kQ3ExchangeFormatSTL)
+        fail(kQ3ErrorInvalidParameter, std::string(name) + " " + std::to_string(value) + " is not a TQ3ExchangeFormat");
+    return static_cast<TQ3ExchangeFormat>(value);
+}
+
 exchange::SubdivisionChoice subdivisionOf(const TQ3ExchangeOptions& options)
 {
     exchange::SubdivisionChoice choice;
-    if (options.subdivisionFromSize != kQ3False)
+    if (enumValue(options.subdivisionFromSize) != kQ3False)
         return choice;
     if (options.view != nullptr) {
         // The window the view's rendering loop would have.
@@ -31,15 +42,15 @@ exchange::SubdivisionChoice subdivisionOf(const TQ3ExchangeOptions& options)
             choice.window = Window{view.camera()->worldToFrustum(), context->drawRect(layout.width, layout.height)};
         }
     }
-    if (options.subdivisionMethod != kQ3SubdivisionMethodWorldSpace &&
-        options.subdivisionMethod != kQ3SubdivisionMethodConstant &&
-        !(options.subdivisionMethod == kQ3SubdivisionMethodScreenSpace && choice.window))
+    const long method = enumValue(options.subdivisionMethod);
+    if (method != kQ3SubdivisionMethodWorldSpace && method != kQ3SubdivisionMethodConstant &&
+        !(method == kQ3SubdivisionMethodScreenSpace && choice.window))
         fail(kQ3ErrorInvalidParameter, "options->subdivisionMethod is none of world space, constant, and screen "
                                        "space with a view that has a camera and a pixmap draw context");
     if (!std::isfinite(options.subdivisionValue) || !(options.subdivisionValue > 0.0f))
         fail(kQ3ErrorInvalidParameter, "options->subdivisionValue is not finite and greater than 0");
     choice.fromBounds = false;
-    choice.style = TQ3SubdivisionStyleData{options.subdivisionMethod, options.subdivisionValue,
+    choice.style = TQ3SubdivisionStyleData{static_cast<TQ3SubdivisionMethod>(method), options.subdivisionValue,
                                            options.subdivisionValue};
     return choice;
 }
@@ -63,7 +74,8 @@ TQ3Status Q3Exchange_Write(TQ3Object object, const char* path, const TQ3Exchange
         requireNonNull(path, "path");
         const TQ3ExchangeOptions chosen =
             options != nullptr ? *options : TQ3ExchangeOptions{kQ3ExchangeFormatAny, kQ3True, kQ3SubdivisionMethodWorldSpace, 1.0f, nullptr};
-        exchange::writeFile(source, path, chosen.format, subdivisionOf(chosen));
+        const TQ3ExchangeFormat format = checkedFormat(chosen.format, "options->format");
+        exchange::writeFile(source, path, format, subdivisionOf(chosen));
     });
 }
 
@@ -71,7 +83,7 @@ TQ3GroupObject Q3Exchange_Read(const char* path, TQ3ExchangeFormat format)
 {
     return guard(__func__, TQ3GroupObject{nullptr}, [&]() -> TQ3GroupObject {
         requireNonNull(path, "path");
-        return exchange::readFile(path, format).detach();
+        return exchange::readFile(path, checkedFormat(format, "format")).detach();
     });
 }
 

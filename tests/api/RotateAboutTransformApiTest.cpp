@@ -37,11 +37,12 @@ void expectMatrixNear(const TQ3Matrix4x4& actual, const TQ3Matrix4x4& expected, 
             EXPECT_NEAR(actual.value[i][j], expected.value[i][j], 1e-5f) << what << ": value[" << i << "][" << j << "]";
 }
 
-TQ3Axis rawAxis(int value)
+// Stores any int in an axis field, as C code may (reading it back as a
+// TQ3Axis would be undefined in C++: only Q3 reads it, as bytes).
+void setRawAxis(TQ3Axis& field, int value)
 {
-    TQ3Axis axis = kQ3AxisX;
-    std::memcpy(&axis, &value, sizeof axis);
-    return axis;
+    static_assert(sizeof field == sizeof value, "TQ3Axis is int-sized, as in C");
+    std::memcpy(&field, &value, sizeof value);
 }
 
 class RotateAboutTransformApiTest : public Q3ApiTest {
@@ -278,7 +279,7 @@ TEST_F(RotateAboutTransformApiTest, NewAndSubmitRejectBadData)
     }
     for (int axis : {-1, 3, 1000}) {
         TQ3RotateAboutPointTransformData p = kAboutPoint;
-        p.axis = rawAxis(axis);
+        setRawAxis(p.axis, axis);
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3RotateAboutPointTransform_New(&p), nullptr), kQ3ErrorInvalidData);
     }
     TQ3RotateAboutAxisTransformData a = kAboutAxis;
@@ -372,7 +373,7 @@ TEST_F(RotateAboutTransformApiTest, AFailedSetLeavesTheDataAndTheEditIndex)
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3QuaternionTransform_Set(q, &zero), kQ3Failure), kQ3ErrorInvalidParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3QuaternionTransform_Set(q, &nan), kQ3Failure), kQ3ErrorInvalidParameter);
     for (int bad : {-1, 3}) {
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RotateAboutPointTransform_SetAxis(p, rawAxis(bad)), kQ3Failure),
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RotateAboutPointTransform_SetAxis(p, static_cast<TQ3Axis>(bad)), kQ3Failure),
                         kQ3ErrorInvalidData);
     }
     const TQ3Point3D farAway{kInf, 0, 0};
