@@ -4896,9 +4896,11 @@ private:
             failed = made == nullptr;
             rememberPart(made);
             if (!failed) {
+                // A ring that names a vertex twice is kept, as QuickDraw 3D
+                // and Quesa keep it (docs/3dmf.md, "Tolerances"); fewer
+                // than three vertices is refused.
                 before.faces++;
-                std::set<TQ3MeshVertex> distinct(ring.begin(), ring.end());
-                require(claimed >= 3 && distinct.size() == ring.size(), call, "accepted a bad vertex list");
+                require(claimed >= 3, call, "accepted a bad vertex list");
             }
             break;
         }
