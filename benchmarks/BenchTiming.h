@@ -13,25 +13,22 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace q3bench {
 
+/// Every benchmark is timed on the wall clock: what a user waits for,
+/// including the work llvmpipe's threads and the kernel do on the caller's
+/// behalf (page cache copies, allocation), which a thread's CPU time hides.
 enum class Clock {
-    kThreadCpu, ///< CPU time of the calling thread: for single-threaded work
-    kWall,      ///< steady wall clock: for work other threads share (llvmpipe)
+    kWall, ///< steady wall clock
 };
 
-inline double now(Clock clock)
+inline double now(Clock)
 {
-    if (clock == Clock::kWall)
-        return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 /// One contender: the name its counters carry, the work of one turn, and

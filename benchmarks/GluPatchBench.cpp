@@ -246,7 +246,7 @@ void Glu_Surface(benchmark::State& state, std::uint32_t segments)
 
 } // namespace
 
-BENCHMARK_CAPTURE(Glu_Surface, torus_m16, 16)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Glu_Surface, torus_m64, 64)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Surface, torus_m16, 16)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Glu_Surface, torus_m64, 64)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

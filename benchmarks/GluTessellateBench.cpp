@@ -3,9 +3,8 @@
 
 // Q3's tessellation kernel against GLU's NURBS tessellator (SGI's sample
 // implementation as Mesa ships it) on the curves of BenchCurves.h, paired in
-// one loop (BenchTiming.h; thread CPU time for the constant method, wall time
-// for the adaptive methods, whose target is stated in wall time: both are
-// single-threaded).
+// one loop (BenchTiming.h), in wall time like every benchmark here (both
+// sides are single-threaded).
 //
 // This process holds libGLU, which links the GL dispatch library; its gl*
 // entry points would clash with OSMesa's, so nothing here may link OSMesa.
@@ -210,7 +209,7 @@ void Glu_Constant(benchmark::State& state, int which, nurbs::KernelIsa isa)
     const double q3Error = q3bench::maxSampleError(curve, out.vertices.data(), m,
                                                    [&](std::size_t s, std::uint32_t j) { return s * m + j; });
 
-    q3bench::runPaired(state, q3bench::Clock::kThreadCpu,
+    q3bench::runPaired(state, q3bench::Clock::kWall,
                        {{"glu",
                          [&] {
                              glu.run(curve);
@@ -340,15 +339,15 @@ void Glu_Adaptive(benchmark::State& state, Space space, int which)
 // Names end in the curve: cubic is the rational cubic, order16 the order-16
 // curve (1000 control points each). The reported time covers both contenders;
 // the counters hold each one's time.
-BENCHMARK_CAPTURE(Glu_Constant, cubic, 0, nurbs::supportedKernelIsa())->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Glu_Constant, order16, 1, nurbs::supportedKernelIsa())->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Glu_Constant, cubic_baseline, 0, nurbs::KernelIsa::kBaseline)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Glu_Constant, order16_baseline, 1, nurbs::KernelIsa::kBaseline)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Constant, cubic, 0, nurbs::supportedKernelIsa())->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Glu_Constant, order16, 1, nurbs::supportedKernelIsa())->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Glu_Constant, cubic_baseline, 0, nurbs::KernelIsa::kBaseline)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Glu_Constant, order16_baseline, 1, nurbs::KernelIsa::kBaseline)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(Glu_WallPeer, cubic, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(Glu_Adaptive, world_cubic, Space::kWorld, 0)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Glu_Adaptive, world_order16, Space::kWorld, 1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Glu_Adaptive, screen_cubic, Space::kScreen, 0)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Glu_Adaptive, screen_order16, Space::kScreen, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Glu_Adaptive, world_cubic, Space::kWorld, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Glu_Adaptive, world_order16, Space::kWorld, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Glu_Adaptive, screen_cubic, Space::kScreen, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Glu_Adaptive, screen_order16, Space::kScreen, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
 

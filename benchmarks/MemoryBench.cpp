@@ -241,10 +241,10 @@ void Q3_RetainedCurve(benchmark::State& state, int which)
     disposeAll(warm);
 }
 
-BENCHMARK_CAPTURE(Q3_RetainedCurve, bezier4, 0)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(Q3_RetainedCurve, cubic, 1)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(Q3_RetainedCurve, order16, 2)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(Q3_RetainedCurve, order16_large, 3)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(Q3_RetainedCurve, bezier4, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_RetainedCurve, cubic, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_RetainedCurve, order16, 2)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_RetainedCurve, order16_large, 3)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 } // namespace
 

@@ -195,7 +195,7 @@ void ReadModel(benchmark::State& state)
         std::fclose(f);
     }
     std::vector<unsigned char> buffer(bytes.size());
-    q3bench::runPaired(state, q3bench::Clock::kThreadCpu,
+    q3bench::runPaired(state, q3bench::Clock::kWall,
                        {{"q3", [&] { benchmark::DoNotOptimize(q3bench::readModel(bytes)); }},
                         {"fread", [&] {
                              std::FILE* f = std::fopen(from.c_str(), "rb");
@@ -211,15 +211,15 @@ void ReadModel(benchmark::State& state)
 
 } // namespace
 
-BENCHMARK_CAPTURE(Q3Write, Binary, kQ3FileModeNormal, "w.bin")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(PlainWrite, Binary, kQ3FileModeNormal, "pw.bin")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Q3Read, Binary, kQ3FileModeNormal, "r.bin")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(PlainRead, Binary, kQ3FileModeNormal, "pr.bin")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Q3Write, Text, kQ3FileModeText, "w.txt")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(PlainWrite, Text, kQ3FileModeText, "pw.txt")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Q3Read, Text, kQ3FileModeText, "r.txt")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(PlainRead, Text, kQ3FileModeText, "pr.txt")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Q3Write, Binary, kQ3FileModeNormal, "w.bin")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(PlainWrite, Binary, kQ3FileModeNormal, "pw.bin")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3Read, Binary, kQ3FileModeNormal, "r.bin")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(PlainRead, Binary, kQ3FileModeNormal, "pr.bin")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3Write, Text, kQ3FileModeText, "w.txt")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(PlainWrite, Text, kQ3FileModeText, "pw.txt")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3Read, Text, kQ3FileModeText, "r.txt")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(PlainRead, Text, kQ3FileModeText, "pr.txt")->Unit(benchmark::kMillisecond)->UseRealTime();
 
-BENCHMARK(ReadModel)->Unit(benchmark::kMillisecond);
+BENCHMARK(ReadModel)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

@@ -3,7 +3,7 @@
 
 // The public tessellation call against Q3's own kernel, in one process with
 // a view (OSMesa), so no GLU here: GluTessellateBench.cpp pairs the kernel
-// with GLU, and run.sh chains the two ratios. Thread CPU time throughout.
+// with GLU, and run.sh chains the two ratios. Wall time throughout (steady clock, as every benchmark here).
 //
 //   Q3_GetDecomposed   paired: inside a rendering loop of a 64 x 64 view,
 //                      Q3NURBCurve_SetKnot (to the knot's own value) empties
@@ -168,7 +168,7 @@ void Q3_GetDecomposed(benchmark::State& state, int which)
 
     const nurbs::CurveRef ref = refOf(curve);
     nurbs::TessellatedCurve out;
-    q3bench::runPaired(state, q3bench::Clock::kThreadCpu,
+    q3bench::runPaired(state, q3bench::Clock::kWall,
                        {{"decomposed",
                          [&] {
                              subject.edit();
@@ -227,12 +227,12 @@ void Q3_PublicPath(benchmark::State& state, int which)
 
 // Names end in the curve, as in GluTessellateBench.cpp: cubic is the rational
 // cubic, order16 the order-16 curve (1000 control points each).
-BENCHMARK_CAPTURE(Q3_Constant, cubic, 0)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(Q3_Constant, order16, 1)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(Q3_ConstantForm, cubic, 0)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(Q3_ConstantForm, order16, 1)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(Q3_GetDecomposed, cubic, 0)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(Q3_GetDecomposed, order16, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Q3_Constant, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_Constant, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_ConstantForm, cubic, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_ConstantForm, order16, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_GetDecomposed, cubic, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(Q3_GetDecomposed, order16, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(Q3_PublicPath, cubic, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
