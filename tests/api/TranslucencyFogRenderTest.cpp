@@ -287,6 +287,35 @@ TEST_F(TranslucencyFogRenderTest, TextureAlphaCutsOutAndOpaqueTexelsHideWhatIsBe
     quadrant(kSize / 2, kSize / 2, blue, "opaque texel hides what is behind");
 }
 
+TEST_F(TranslucencyFogRenderTest, Argb16AlphaBitCutsOut)
+{
+    // Two ARGB16 texels, big-endian: red with the alpha bit, green without.
+    std::vector<unsigned char> texels{0xFC, 0x00, 0x03, 0xE0};
+    TQ3StorageObject storage = own(Q3MemoryStorage_New(texels.data(), static_cast<unsigned long>(texels.size())));
+    const TQ3StoragePixmap pixmap{storage, 2, 1, 4, 16, kQ3PixelTypeARGB16, kQ3EndianBig, kQ3EndianBig};
+    TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
+    TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const TQ3Point3D corners[4] = {{-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}};
+    std::vector<TQ3Vertex3D> v(4);
+    for (int k = 0; k < 4; ++k) {
+        TQ3AttributeSet set = own(Q3AttributeSet_New());
+        EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]), kQ3Success);
+        v[k] = TQ3Vertex3D{corners[k], set};
+    }
+    const TQ3PolygonData data{4, v.data(), nullptr};
+    TQ3GeometryObject textured = own(Q3Polygon_New(&data));
+    TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
+    const Pixmap image = render([&](TQ3ViewObject v) {
+        Q3Geometry_Submit(back, v);
+        Q3Push_Submit(v);
+        Q3Shader_Submit(shader, v);
+        Q3Geometry_Submit(textured, v);
+        Q3Pop_Submit(v);
+    });
+    expectColumns(image, 1, kSize / 2 - 1, [&](unsigned long) { return Color{1, 0, 0}; }, "alpha bit set");
+    expectColumns(image, kSize / 2 + 1, kSize - 1, [&](unsigned long) { return kBehind; }, "alpha bit clear");
+}
+
 // Fog on a plane that rises from z = -4 at x = -2 to z = 4 at x = 2, seen by
 // the orthographic camera at z = 10: eye distance 10 - z.
 class FogModeTest : public TranslucencyFogRenderTest,
