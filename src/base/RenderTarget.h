@@ -179,7 +179,9 @@ struct FogSetup {
 /// space under their own matrix), depth-tested but without writing depth.
 /// Where such a texture's texel is opaque (alpha 1) on an opaque triangle,
 /// the pixel is drawn with the opaque primitives and writes depth (an alpha
-/// test), so cut-outs hide what lies behind them exactly.
+/// test), so cut-outs hide what lies behind them exactly. Translucent lit
+/// triangles are lit by the frame's lights as they are at endFrame (the
+/// view sets them once per frame). Lines and points are drawn opaque.
 struct OpacitySetup {
     const float* alpha = nullptr;
     std::size_t count = 0;

@@ -424,6 +424,7 @@ private:
     std::vector<SurfaceShading> m_translucentShadings;
     std::vector<TranslucentTriangle> m_translucentTriangles;
     std::vector<GLuint> m_translucentIndices;
+    std::vector<std::uint32_t> m_splitOpaque; // drawSplit's opaque triangles
     UnlitProgram m_unlitPrograms[2];
 
     OSMesaContext m_context = nullptr;
@@ -1374,8 +1375,10 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     const bool alphaTexture = textured && m_textures[m_currentTexture].hasAlpha;
     const std::size_t count = r.indexed ? r.indexCount : r.vertexCount;
     const std::array<float, 16>& m = m_matrices[m_currentMatrix];
-    std::vector<std::uint32_t> opaque;
-    std::uint32_t states[2] = {kNoFog, kNoFog}; // translucent, only translucent texels
+    std::vector<std::uint32_t>& opaque = m_splitOpaque;
+    opaque.clear();
+    constexpr std::uint32_t kNoState = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t states[2] = {kNoState, kNoState}; // translucent, only translucent texels
     static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
     for (std::size_t t = 0; t + 2 < count; t += 3) {
         std::uint32_t v[3];
@@ -1391,7 +1394,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         if (allOpaque && !alphaTexture)
             continue;
         std::uint32_t& state = states[allOpaque ? 1 : 0];
-        if (state == kNoFog)
+        if (state == kNoState)
             state = translucentState(r, textured, allOpaque);
         double centre[4] = {0.0, 0.0, 0.0, 0.0};
         const std::uint32_t first = std::uint32_t(m_translucentVertices.size());

@@ -218,6 +218,35 @@ TEST_F(TranslucencyFogRenderTest, VertexTransparencyOverridesTheGeometrysWhichOv
     expectColumns(image, 49, 63, [&](unsigned long) { return mix(kFront, kBehind, vertex.r); }, "vertex");
 }
 
+TEST_F(TranslucencyFogRenderTest, HighlightSetsColourAndTransparencyOverTheVertices)
+{
+    // The highlight style's set (diffuse green, transparency 0.5) over a
+    // geometry whose highlight state is on, whose vertices are opaque red.
+    TQ3AttributeSet highlight = own(Q3AttributeSet_New());
+    const TQ3ColorRGB green{0, 1, 0}, halfT{0.5f, 0.5f, 0.5f}, opaque{1, 1, 1}, red{1, 0, 0};
+    ASSERT_EQ(Q3AttributeSet_Add(highlight, kQ3AttributeTypeDiffuseColor, &green), kQ3Success);
+    ASSERT_EQ(Q3AttributeSet_Add(highlight, kQ3AttributeTypeTransparencyColor, &halfT), kQ3Success);
+    TQ3StyleObject style = own(Q3HighlightStyle_New(highlight));
+    TQ3AttributeSet vertexSet = own(Q3AttributeSet_New());
+    ASSERT_EQ(Q3AttributeSet_Add(vertexSet, kQ3AttributeTypeDiffuseColor, &red), kQ3Success);
+    ASSERT_EQ(Q3AttributeSet_Add(vertexSet, kQ3AttributeTypeTransparencyColor, &opaque), kQ3Success);
+    TQ3AttributeSet on = colorSet(kFront);
+    const TQ3Switch state = kQ3On;
+    ASSERT_EQ(Q3AttributeSet_Add(on, kQ3AttributeTypeHighlightState, &state), kQ3Success);
+    TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
+    TQ3GeometryObject left = rect(-3, 0, -3, 3, 1, 1, on, vertexSet);
+    TQ3GeometryObject right = rect(0, 3, -3, 3, 1, 1, colorSet(kFront), vertexSet);
+    const Pixmap image = render([&](TQ3ViewObject v) {
+        Q3Style_Submit(style, v);
+        Q3Geometry_Submit(back, v);
+        Q3Geometry_Submit(left, v);
+        Q3Geometry_Submit(right, v);
+    });
+    expectColumns(image, 0, kSize / 2, [&](unsigned long) { return mix(Color{0, 1, 0}, kBehind, 0.5); },
+                  "highlighted");
+    expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return Color{1, 0, 0}; }, "not highlighted");
+}
+
 TEST_F(TranslucencyFogRenderTest, LitTranslucentSurfaceBlendsItsLitColour)
 {
     // Lambert under an ambient light of 1: the lit colour is the diffuse one.
