@@ -80,6 +80,8 @@ public:
         return record("addTexture");
     }
     RenderResult useTexture(std::uint32_t) override { return record("useTexture"); }
+    RenderResult setFog(const FogSetup&) override { return record("setFog"); }
+    RenderResult setOpacity(const OpacitySetup&) override { return record("setOpacity"); }
     RenderResult endFrame() override
     {
         m_inFrame = false;

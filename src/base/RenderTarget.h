@@ -79,7 +79,8 @@ struct PixmapImage {
 /// top. A triangle vertex's texture coordinate (s, t) picks the texel in
 /// column floor(s * width) and row floor(t * height) counted from the top
 /// row (nearest sampling); outside 0..1 a coordinate wraps (repeats) or, when
-/// clamped, takes the edge texel. Alpha is not used.
+/// clamped, takes the edge texel. The texel's alpha multiplies the
+/// triangle's opacity (OpacitySetup).
 struct TextureImage {
     const void* pixels = nullptr;
     PixmapLayout layout;
@@ -143,14 +144,58 @@ struct FaceOptions {
     }
 };
 
+/// Fog for the following draws (QD3DStyle.h's fog style). A pixel at
+/// eye-space distance z (the distance from the camera plane along the
+/// viewing direction) keeps the fraction f of its colour and takes 1 - f of
+/// `color`: linear (end - z) / (end - start), exponential exp(-density z),
+/// exponential-squared exp(-(density z)^2), each clamped to 0..1; alpha: the
+/// pixel's own alpha. Alpha is not fogged. z comes from the clip
+/// coordinates c that setMatrix maps a point to, as
+/// (c . depthPlane) / (c . wPlane), which holds for every point drawn
+/// whatever its matrix (a clip point is the world point times one fixed
+/// world-to-clip matrix, so both planes are that matrix's inverse applied
+/// to the eye's plane and to w).
+struct FogSetup {
+    enum class Mode { kOff, kLinear, kExponential, kExponentialSquared, kAlpha };
+    Mode mode = Mode::kOff;
+    float start = 1.0f;
+    float end = 1000.0f;
+    float density = 1.0f;
+    float color[3] = {1.0f, 1.0f, 1.0f};
+    float depthPlane[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    float wPlane[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+};
+
+/// The opacity of the vertices of the following filled triangles (drawn by
+/// drawElements and drawLitTriangles): `alpha` holds one value per vertex
+/// of each of those draws (`count` of them), or is null, when every vertex
+/// has `uniform`. 1 is opaque, 0 invisible; the triangle's pixels are
+/// blended over what is behind them as
+///     result = a * colour + (1 - a) * behind      (alpha: a + (1 - a) * behind)
+/// with a the interpolated opacity times the texel's alpha. Triangles with
+/// a vertex below 1, or textured with a texture that has a texel below 1,
+/// are translucent: they are drawn after every opaque primitive of the
+/// frame, sorted back to front by the depth of their centres (in clip
+/// space under their own matrix), depth-tested but without writing depth.
+/// Where such a texture's texel is opaque (alpha 1) on an opaque triangle,
+/// the pixel is drawn with the opaque primitives and writes depth (an alpha
+/// test), so cut-outs hide what lies behind them exactly. Translucent lit
+/// triangles are lit by the frame's lights as they are at endFrame (the
+/// view sets them once per frame). Lines and points are drawn opaque.
+struct OpacitySetup {
+    const float* alpha = nullptr;
+    std::size_t count = 0;
+    float uniform = 1.0f;
+};
+
 /// Draws points, lines, filled triangles and screen-space images into an
 /// RGBA8 image of its own, one per QuickDraw 3D view.
 ///
 /// A frame is beginFrame(), any number of state and draw calls, then
 /// endFrame(); afterwards pixels() holds the finished image. Primitives are
 /// painted in submission order, later ones over earlier ones, unless the
-/// frame has the depth test (FrameOptions); there is no blending; lines are
-/// 1 pixel wide, aliased. The calls neither throw nor post errors: each
+/// frame has the depth test (FrameOptions); only translucent triangles
+/// blend (OpacitySetup); lines are 1 pixel wide, aliased. The calls neither throw nor post errors: each
 /// returns a RenderResult and the view decides what it becomes.
 ///
 /// Invariant: pixels() has width() * height() * 4 bytes, valid after a
@@ -288,6 +333,19 @@ public:
     /// kNoTexture. Errors: kWrongState outside a frame; kInvalidArgument for
     /// an id this frame has not given (the current texture is unchanged).
     virtual RenderResult useTexture(std::uint32_t id) = 0;
+
+    /// The fog of the following draws (FogSetup). Errors: kWrongState
+    /// outside a frame; kInvalidArgument for an unknown mode or a NaN or
+    /// infinite value, a negative density or, for linear fog, start not
+    /// below end (the fog stays as it was).
+    virtual RenderResult setFog(const FogSetup& fog) = 0;
+    /// The opacity of the following filled triangles (OpacitySetup). The
+    /// alpha array is read by each draw call, so it must stay valid until
+    /// the last draw it serves; a draw whose vertex count is not `count`
+    /// fails with kInvalidArgument. Errors: kWrongState outside a frame;
+    /// kInvalidArgument for a NaN, infinite or out-of-range (0..1) uniform
+    /// value (the opacity stays as it was). Each frame starts opaque.
+    virtual RenderResult setOpacity(const OpacitySetup& opacity) = 0;
 
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;

@@ -20,6 +20,7 @@
 // when asked (the backfacing style kQ3BackfacingStyleFlip).
 
 #include "render/LitProgram.h"
+#include "render/SurfaceFinish.h"
 
 #include <glm/glm.hpp>
 
@@ -155,6 +156,7 @@ void main()
         gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
     }
 #endif
+    q3FinishVertex();
 }
 )";
 
@@ -181,14 +183,16 @@ void main()
         gl_FragColor = gl_Color;
     }
 #endif
+    gl_FragColor = q3FinishFragment(gl_FragColor);
 }
 )";
 
 GLuint compile(GLenum kind, const char* body, bool textured, std::string& error)
 {
     const GLuint shader = glCreateShader(kind);
-    const char* sources[4] = {kVersion, textured ? kTexturedSwitch : "", kShade, body};
-    glShaderSource(shader, 4, sources, nullptr);
+    const char* finish = kind == GL_VERTEX_SHADER ? kFinishVertexGlsl : kFinishFragmentGlsl;
+    const char* sources[5] = {kVersion, textured ? kTexturedSwitch : "", kShade, finish, body};
+    glShaderSource(shader, 5, sources, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -217,6 +221,7 @@ bool LitProgram::build(std::string& error, bool textured)
     m_program = glCreateProgram();
     glAttachShader(m_program, vertex);
     glAttachShader(m_program, fragment);
+    bindFinishAttributes(m_program);
     glLinkProgram(m_program);
     glDeleteShader(vertex);
     glDeleteShader(fragment);
@@ -251,6 +256,7 @@ bool LitProgram::build(std::string& error, bool textured)
     m_normalToWorld = at("normalToWorld");
     m_perPixel = at("perPixel");
     m_flipBack = at("flipBack");
+    m_finish.locate(m_program);
     if (textured) {
         // The texture is bound to unit 0.
         glUseProgram(m_program);

@@ -7,6 +7,7 @@
 // backend: it needs a current OpenGL context.
 
 #include "render/OffscreenRenderer.h"
+#include "render/SurfaceFinish.h"
 
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
@@ -32,6 +33,8 @@ public:
     void use() const;
     void setLighting(const LightingSetup& lighting) const;
     void setShading(const SurfaceShading& shading) const;
+    /// The opacity and fog uniforms (render/SurfaceFinish.h).
+    const FinishUniforms& finish() const { return m_finish; }
 
 private:
     GLuint m_program = 0;
@@ -40,6 +43,7 @@ private:
     GLint m_ambientLight = -1, m_eye = -1, m_orthographic = -1, m_viewDirection = -1;
     GLint m_illumination = -1, m_ambientCoefficient = -1, m_specularColor = -1, m_specularControl = -1;
     GLint m_localToWorld = -1, m_normalToWorld = -1, m_perPixel = -1, m_flipBack = -1;
+    FinishUniforms m_finish;
 };
 
 } // namespace q3

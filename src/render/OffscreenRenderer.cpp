@@ -49,6 +49,7 @@
 #include "render/OffscreenRenderer.h"
 
 #include "render/LitProgram.h"
+#include "render/SurfaceFinish.h"
 
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
@@ -188,6 +189,7 @@ struct DrawRequest {
     RgbColor color;
     float pointSize = 1.0f;
     bool smooth = false;
+    bool opaquePart = false; // the opaque triangles of a split draw (drawSplit)
 };
 
 GLenum glMode(Primitive primitive)
@@ -269,6 +271,8 @@ public:
     RenderResult setFaceOptions(const FaceOptions& faces);
     RenderResult addTexture(const TextureImage& texture, std::uint32_t& id);
     RenderResult useTexture(std::uint32_t id);
+    RenderResult setFog(const FogSetup& fog);
+    RenderResult setOpacity(const OpacitySetup& opacity);
     RenderResult endFrame();
     void cancelFrame();
 
@@ -313,6 +317,7 @@ private:
 
     static constexpr std::uint32_t kUnlit = std::numeric_limits<std::uint32_t>::max();
     static constexpr std::uint32_t kUntextured = std::numeric_limits<std::uint32_t>::max();
+    static constexpr std::uint32_t kNoFog = std::numeric_limits<std::uint32_t>::max();
 
     // A texture decoded to RGBA8 (R, G, B, A bytes, row 0 the top row, which
     // OpenGL takes as t = 0), with its wrap modes.
@@ -322,6 +327,7 @@ private:
         std::uint32_t height = 0;
         bool clampS = false;
         bool clampT = false;
+        bool hasAlpha = false; // a texel's alpha is below 1
     };
 
     // first and count are vertices, or for an indexed command indices.
@@ -342,10 +348,12 @@ private:
         RgbColor color;
         GLint first;
         GLsizei count;
+        std::uint32_t fog = kNoFog; // indexes m_fogs
 
         bool drawsLike(const DrawCommand& other) const
         {
             return primitive == other.primitive && indexed == other.indexed && smooth == other.smooth &&
+                   fog == other.fog &&
                    plain == other.plain && pointSize == other.pointSize && matrixIndex == other.matrixIndex &&
                    shading == other.shading && texture == other.texture && faces == other.faces &&
                    (!plain || (color.r == other.color.r && color.g == other.color.g && color.b == other.color.b));
@@ -365,6 +373,59 @@ private:
     void forgetTextures();
     template <class T>
     static void reserve(std::unique_ptr<T[]>& storage, std::size_t& capacity, std::size_t used, std::size_t needed);
+
+    // Translucency and fog (RenderTarget.h: OpacitySetup, FogSetup).
+    //
+    // A triangle draw with an opacity below 1 or a texture with alpha is
+    // split (drawSplit): its translucent triangles are copied, with what
+    // they are drawn with, into the frame's translucent store, which no
+    // flush empties; the opaque rest is batched as usual. Opaque triangles
+    // of an alpha texture are batched too, alpha-tested so that only the
+    // opaque texels draw (and write depth); the store draws their other
+    // texels. endFrame draws the store last (drawTranslucent): sorted back
+    // to front, blended, depth-tested without writing depth.
+    struct TranslucentState {
+        std::array<float, 16> matrix;
+        std::uint32_t shading; // indexes m_translucentShadings, or kUnlit
+        std::uint32_t texture;
+        std::uint32_t fog;
+        FaceOptions faces;
+        bool smooth;
+        bool onlyTranslucentTexels; // alpha-tested: the texels below 1
+    };
+    struct TranslucentTriangle {
+        double depth; // of its centre in clip space (z / w), larger is farther
+        std::uint32_t state;
+        std::uint32_t first; // its 3 vertices in m_translucentVertices
+    };
+    struct FogLoad {
+        int unlit = -1; // the unlit program variant in use, -1 none
+        std::uint32_t fog[4]; // what each program's fog uniforms hold
+    };
+    static constexpr std::uint32_t kFogUnknown = kNoFog - 1;
+    static constexpr float kOpaqueAlpha = 0.998f; // between 254/255 and 1
+    RenderResult drawSplit(const DrawRequest& request, bool textured);
+    std::uint32_t translucentState(const DrawRequest& request, bool textured, bool onlyTranslucentTexels);
+    // After the batch loop's program choice for a run: the unlit program
+    // for fogged unlit runs, and the fog uniforms of the program in use.
+    bool loadFog(const DrawCommand& head, FogLoad& loaded, RenderResult& result);
+    // Opaque runs of an alpha texture draw only its opaque texels.
+    void loadOpaqueAlphaTest(std::uint32_t texture, bool& loaded);
+    void drawTranslucent(RenderResult& result);
+    void forgetTranslucent();
+    const FogSetup& fogOf(std::uint32_t fog) const;
+
+    std::vector<FogSetup> m_fogs;
+    std::uint32_t m_currentFog = kNoFog;
+    OpacitySetup m_opacity;
+    std::vector<Vertex> m_translucentVertices;
+    std::vector<float> m_translucentOpacity;
+    std::vector<TranslucentState> m_translucentStates;
+    std::vector<SurfaceShading> m_translucentShadings;
+    std::vector<TranslucentTriangle> m_translucentTriangles;
+    std::vector<GLuint> m_translucentIndices;
+    std::vector<std::uint32_t> m_splitOpaque; // drawSplit's opaque triangles
+    UnlitProgram m_unlitPrograms[2];
 
     OSMesaContext m_context = nullptr;
     GLint m_maxViewport[2] = {0, 0};
@@ -484,6 +545,8 @@ void OffscreenRenderer::Impl::destroyContext()
     m_context = nullptr;
     m_program.forget();
     m_texturedProgram.forget();
+    m_unlitPrograms[0].forget();
+    m_unlitPrograms[1].forget();
     // The context's textures went with it.
     m_textureNames.clear();
     m_staleTextureNames.clear();
@@ -529,6 +592,7 @@ void OffscreenRenderer::Impl::initializeState()
     glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
+    setDefaultOpacity();
 }
 
 RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint32_t height,
@@ -566,6 +630,7 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
     m_lighting = LightingSetup{};
     m_faces = FaceOptions{};
     forgetTextures();
+    forgetTranslucent();
     resetBatch();
     m_matrices.clear();
     m_matrices.push_back({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
@@ -661,6 +726,10 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
             if (r.indices[i] >= r.vertexCount)
                 return invalid("index " + std::to_string(r.indices[i]) + " is not below the vertex count " +
                                std::to_string(r.vertexCount));
+    if (r.primitive == Primitive::kTriangles && !r.opaquePart &&
+        (m_opacity.alpha != nullptr || m_opacity.uniform < 1.0f ||
+         (textured && m_textures[m_currentTexture].hasAlpha)))
+        return drawSplit(r, textured);
 
     // One colour, no lighting, no interpolation: positions only
     // (m_positions). Interpolating a constant colour array does not always
@@ -719,6 +788,7 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
     DrawCommand command{r.primitive, indexed, r.smooth, plain, r.pointSize, m_currentMatrix, shading,
                         textured ? m_currentTexture : kUntextured, faces, plain ? r.color : RgbColor{}, 0,
                         GLsizei(count)};
+    command.fog = m_currentFog;
     if (indexed) {
         command.first = GLint(m_indices.size());
         for (std::size_t i = 0; i < r.indexCount; ++i)
@@ -931,6 +1001,9 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             bool lightsLoaded[2] = {false, false};
             std::uint32_t loadedTexture = kUntextured;
             FaceOptions loadedFaces;
+            FogLoad fogLoad;
+            std::fill(std::begin(fogLoad.fog), std::end(fogLoad.fog), kFogUnknown);
+            bool loadedAlphaTest = false;
             glDisable(GL_CULL_FACE);
             glFrontFace(GL_CCW);
             const std::size_t commandCount = m_commands.size();
@@ -996,6 +1069,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     }
                     loadedTexture = head.texture;
                 }
+                loadOpaqueAlphaTest(head.texture, loadedAlphaTest);
                 const bool texturedProgram = head.texture != kUntextured;
                 if (head.shading != loadedSurface ||
                     (head.shading != kUnlit && texturedProgram != loadedTexturedProgram)) {
@@ -1020,6 +1094,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     }
                     loadedSurface = head.shading;
                 }
+                if (!loadFog(head, fogLoad, result))
+                    break;
                 if (end - i == 1) {
                     if (head.indexed)
                         glDrawElements(glMode(head.primitive), head.count, GL_UNSIGNED_INT,
@@ -1045,7 +1121,10 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 }
                 i = end;
             }
+            glDisable(GL_ALPHA_TEST);
         }
+        if (finish && result)
+            drawTranslucent(result);
         glUseProgram(0);
         glDisable(GL_TEXTURE_2D);
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
@@ -1119,6 +1198,8 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
                                                 std::size_t(decoded.width) * 4);
     if (!read)
         return read;
+    for (std::size_t i = 3; i < decoded.rgba.size() && !decoded.hasAlpha; i += 4)
+        decoded.hasAlpha = decoded.rgba[i] != 255;
     m_textures.push_back(std::move(decoded));
     id = std::uint32_t(m_textures.size() - 1);
     return RenderResult::success();
@@ -1163,6 +1244,7 @@ RenderResult OffscreenRenderer::Impl::endFrame()
     m_inFrame = false;
     const RenderResult result = flush(true);
     forgetTextures();
+    forgetTranslucent();
     return result;
 }
 
@@ -1199,11 +1281,310 @@ RenderResult OffscreenRenderer::Impl::setFaceOptions(const FaceOptions& faces)
     return RenderResult::success();
 }
 
+RenderResult OffscreenRenderer::Impl::setFog(const FogSetup& fog)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "setFog called outside a frame");
+    switch (fog.mode) {
+    case FogSetup::Mode::kOff:
+    case FogSetup::Mode::kLinear:
+    case FogSetup::Mode::kExponential:
+    case FogSetup::Mode::kExponentialSquared:
+    case FogSetup::Mode::kAlpha:
+        break;
+    default:
+        return invalid("unknown fog mode");
+    }
+    const float values[14] = {fog.start,         fog.end,           fog.density,       fog.color[0],
+                              fog.color[1],      fog.color[2],      fog.depthPlane[0], fog.depthPlane[1],
+                              fog.depthPlane[2], fog.depthPlane[3], fog.wPlane[0],     fog.wPlane[1],
+                              fog.wPlane[2],     fog.wPlane[3]};
+    if (!allFinite(values, 14))
+        return invalid("a fog value is NaN or infinite");
+    if (fog.density < 0.0f)
+        return invalid("fog density is negative");
+    if (fog.mode == FogSetup::Mode::kLinear && !(fog.start < fog.end))
+        return invalid("linear fog needs start below end");
+    if (fog.mode == FogSetup::Mode::kOff) {
+        m_currentFog = kNoFog;
+        return RenderResult::success();
+    }
+    if (m_currentFog != kNoFog && std::memcmp(&m_fogs[m_currentFog], &fog, sizeof fog) == 0)
+        return RenderResult::success();
+    m_fogs.push_back(fog);
+    m_currentFog = std::uint32_t(m_fogs.size() - 1);
+    return RenderResult::success();
+}
+
+RenderResult OffscreenRenderer::Impl::setOpacity(const OpacitySetup& opacity)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "setOpacity called outside a frame");
+    if (!(opacity.uniform >= 0.0f && opacity.uniform <= 1.0f))
+        return invalid("opacity must lie in 0..1");
+    m_opacity = opacity;
+    return RenderResult::success();
+}
+
+const FogSetup& OffscreenRenderer::Impl::fogOf(std::uint32_t fog) const
+{
+    static const FogSetup kOff;
+    return fog == kNoFog ? kOff : m_fogs[fog];
+}
+
+void OffscreenRenderer::Impl::forgetTranslucent()
+{
+    m_fogs.clear();
+    m_currentFog = kNoFog;
+    m_opacity = OpacitySetup{};
+    m_translucentVertices.clear();
+    m_translucentOpacity.clear();
+    m_translucentStates.clear();
+    m_translucentShadings.clear();
+    m_translucentTriangles.clear();
+    m_translucentIndices.clear();
+}
+
+std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bool textured,
+                                                        bool onlyTranslucentTexels)
+{
+    TranslucentState state;
+    state.matrix = m_matrices[m_currentMatrix];
+    state.shading = kUnlit;
+    if (r.shading != nullptr) {
+        m_translucentShadings.push_back(*r.shading);
+        state.shading = std::uint32_t(m_translucentShadings.size() - 1);
+    }
+    state.texture = textured ? m_currentTexture : kUntextured;
+    state.fog = m_currentFog;
+    state.faces = m_faces;
+    state.smooth = r.smooth;
+    state.onlyTranslucentTexels = onlyTranslucentTexels;
+    m_translucentStates.push_back(state);
+    return std::uint32_t(m_translucentStates.size() - 1);
+}
+
+RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textured)
+{
+    const float* alpha = m_opacity.alpha;
+    if (alpha != nullptr && m_opacity.count != r.vertexCount)
+        return invalid("the opacity array has " + std::to_string(m_opacity.count) + " values for " +
+                       std::to_string(r.vertexCount) + " vertices");
+    if (alpha != nullptr && !allFinite(alpha, r.vertexCount))
+        return invalid("a vertex opacity is NaN or infinite");
+    const bool alphaTexture = textured && m_textures[m_currentTexture].hasAlpha;
+    const std::size_t count = r.indexed ? r.indexCount : r.vertexCount;
+    const std::array<float, 16>& m = m_matrices[m_currentMatrix];
+    std::vector<std::uint32_t>& opaque = m_splitOpaque;
+    opaque.clear();
+    constexpr std::uint32_t kNoState = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t states[2] = {kNoState, kNoState}; // translucent, only translucent texels
+    static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
+    for (std::size_t t = 0; t + 2 < count; t += 3) {
+        std::uint32_t v[3];
+        float a[3];
+        bool allOpaque = true;
+        for (int k = 0; k < 3; ++k) {
+            v[k] = r.indexed ? r.indices[t + k] : std::uint32_t(t + k);
+            a[k] = std::clamp(alpha != nullptr ? alpha[v[k]] : m_opacity.uniform, 0.0f, 1.0f);
+            allOpaque = allOpaque && a[k] >= 1.0f;
+        }
+        if (allOpaque)
+            opaque.insert(opaque.end(), v, v + 3);
+        if (allOpaque && !alphaTexture)
+            continue;
+        std::uint32_t& state = states[allOpaque ? 1 : 0];
+        if (state == kNoState)
+            state = translucentState(r, textured, allOpaque);
+        double centre[4] = {0.0, 0.0, 0.0, 0.0};
+        const std::uint32_t first = std::uint32_t(m_translucentVertices.size());
+        for (int k = 0; k < 3; ++k) {
+            const float* p = r.xyz + 3 * std::size_t(v[k]);
+            const float* c = r.rgb != nullptr ? r.rgb + 3 * std::size_t(v[k]) : nullptr;
+            const float* n = r.normals != nullptr ? r.normals + 3 * std::size_t(v[k]) : kNoNormal;
+            Vertex out;
+            out.x = p[0];
+            out.y = p[1];
+            out.z = p[2];
+            out.r = c != nullptr ? c[0] : r.color.r;
+            out.g = c != nullptr ? c[1] : r.color.g;
+            out.b = c != nullptr ? c[2] : r.color.b;
+            out.nx = n[0];
+            out.ny = n[1];
+            out.nz = n[2];
+            out.s = textured ? r.st[2 * std::size_t(v[k])] : 0.0f;
+            out.t = textured ? r.st[2 * std::size_t(v[k]) + 1] : 0.0f;
+            m_translucentVertices.push_back(out);
+            m_translucentOpacity.push_back(a[k]);
+            for (int j = 0; j < 4; ++j)
+                centre[j] += (double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j]) / 3.0;
+        }
+        // A centre behind the eye sorts farthest.
+        const double depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
+        m_translucentTriangles.push_back(TranslucentTriangle{depth, state, first});
+    }
+    if (opaque.empty())
+        return RenderResult::success();
+    DrawRequest rest = r;
+    rest.indexed = true;
+    rest.indices = opaque.data();
+    rest.indexCount = opaque.size();
+    rest.opaquePart = true;
+    return draw(rest);
+}
+
+bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, RenderResult& result)
+{
+    const bool textured = head.texture != kUntextured;
+    if (head.shading == kUnlit) {
+        if (head.fog == kNoFog) {
+            if (loaded.unlit >= 0)
+                glUseProgram(0);
+            loaded.unlit = -1;
+            return true;
+        }
+        UnlitProgram& program = m_unlitPrograms[textured ? 1 : 0];
+        if (!program.built()) {
+            std::string error;
+            if (!program.build(error, textured)) {
+                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+                return false;
+            }
+        }
+        if (loaded.unlit != int(textured)) {
+            program.use();
+            loaded.unlit = int(textured);
+        }
+        std::uint32_t& set = loaded.fog[2 + (textured ? 1 : 0)];
+        if (set != head.fog) {
+            program.finish().setFog(fogOf(head.fog));
+            set = head.fog;
+        }
+        return true;
+    }
+    // The batch loop has made the lit program current.
+    loaded.unlit = -1;
+    std::uint32_t& set = loaded.fog[textured ? 1 : 0];
+    if (set != head.fog) {
+        (textured ? m_texturedProgram : m_program).finish().setFog(fogOf(head.fog));
+        set = head.fog;
+    }
+    return true;
+}
+
+void OffscreenRenderer::Impl::loadOpaqueAlphaTest(std::uint32_t texture, bool& loaded)
+{
+    const bool tested = texture != kUntextured && m_textures[texture].hasAlpha;
+    if (tested == loaded)
+        return;
+    if (tested) {
+        glEnable(GL_ALPHA_TEST);
+        glAlphaFunc(GL_GEQUAL, kOpaqueAlpha);
+    } else {
+        glDisable(GL_ALPHA_TEST);
+    }
+    loaded = tested;
+}
+
+void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
+{
+    if (m_translucentTriangles.empty())
+        return;
+    // Farthest first; triangles at one depth keep their submission order.
+    std::stable_sort(m_translucentTriangles.begin(), m_translucentTriangles.end(),
+                     [](const TranslucentTriangle& a, const TranslucentTriangle& b) { return a.depth > b.depth; });
+    m_translucentIndices.clear();
+    m_translucentIndices.reserve(3 * m_translucentTriangles.size());
+    for (const TranslucentTriangle& triangle : m_translucentTriangles)
+        for (std::uint32_t k = 0; k < 3; ++k)
+            m_translucentIndices.push_back(triangle.first + k);
+
+    const Vertex* vertices = m_translucentVertices.data();
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
+    glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
+    glNormalPointer(GL_FLOAT, sizeof(Vertex), &vertices->nx);
+    glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &vertices->s);
+    glEnableVertexAttribArray(kOpacityAttribute);
+    glVertexAttribPointer(kOpacityAttribute, 1, GL_FLOAT, GL_FALSE, 0, m_translucentOpacity.data());
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+
+    bool lightsLoaded[2] = {false, false};
+    const std::size_t count = m_translucentTriangles.size();
+    std::size_t i = 0;
+    while (i < count) {
+        const std::uint32_t stateIndex = m_translucentTriangles[i].state;
+        std::size_t end = i + 1;
+        while (end < count && m_translucentTriangles[end].state == stateIndex)
+            ++end;
+        const TranslucentState& state = m_translucentStates[stateIndex];
+        glLoadMatrixf(state.matrix.data());
+        glShadeModel(state.smooth ? GL_SMOOTH : GL_FLAT);
+        if (state.faces.cullBack)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
+        glFrontFace(state.faces.clockwiseFront ? GL_CW : GL_CCW);
+        const bool textured = state.texture != kUntextured;
+        if (textured) {
+            bindTexture(state.texture);
+            glEnable(GL_TEXTURE_2D);
+            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        } else {
+            glDisable(GL_TEXTURE_2D);
+            glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+        }
+        if (state.onlyTranslucentTexels) {
+            glEnable(GL_ALPHA_TEST);
+            glAlphaFunc(GL_LESS, kOpaqueAlpha);
+        } else {
+            glDisable(GL_ALPHA_TEST);
+        }
+        std::string error;
+        if (state.shading == kUnlit) {
+            UnlitProgram& program = m_unlitPrograms[textured ? 1 : 0];
+            if (!program.built() && !program.build(error, textured)) {
+                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+                break;
+            }
+            program.use();
+            program.finish().setFog(fogOf(state.fog));
+        } else {
+            LitProgram& program = textured ? m_texturedProgram : m_program;
+            if (!program.built() && !program.build(error, textured)) {
+                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+                break;
+            }
+            program.use();
+            if (!lightsLoaded[textured ? 1 : 0]) {
+                program.setLighting(m_lighting);
+                lightsLoaded[textured ? 1 : 0] = true;
+            }
+            program.setShading(m_translucentShadings[state.shading]);
+            program.finish().setFog(fogOf(state.fog));
+        }
+        glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - i)), GL_UNSIGNED_INT, m_translucentIndices.data() + 3 * i);
+        i = end;
+    }
+
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glDisableVertexAttribArray(kOpacityAttribute);
+    setDefaultOpacity();
+    glShadeModel(GL_FLAT);
+}
+
 void OffscreenRenderer::Impl::cancelFrame()
 {
     m_inFrame = false;
     resetBatch();
     forgetTextures();
+    forgetTranslucent();
 }
 
 OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>()) {}
@@ -1390,6 +1771,20 @@ RenderResult OffscreenRenderer::useTexture(std::uint32_t id)
 RenderResult OffscreenRenderer::setFaceOptions(const FaceOptions& faces)
 {
     return m_impl->setFaceOptions(faces);
+}
+
+RenderResult OffscreenRenderer::setFog(const FogSetup& fog)
+{
+    try {
+        return m_impl->setFog(fog);
+    } catch (const std::bad_alloc&) {
+        return outOfMemory();
+    }
+}
+
+RenderResult OffscreenRenderer::setOpacity(const OpacitySetup& opacity)
+{
+    return m_impl->setOpacity(opacity);
 }
 
 RenderResult OffscreenRenderer::endFrame()

@@ -32,8 +32,9 @@ void pinRenderingEnvironment();
 /// so the cost per call is a copy, not an OpenGL round trip.
 ///
 /// Primitives are painted in submission order, later ones over earlier ones,
-/// unless the frame has the depth test (FrameOptions); there is no blending;
-/// lines are 1 pixel wide, aliased.
+/// unless the frame has the depth test (FrameOptions); only translucent
+/// triangles blend (OpacitySetup), drawn last, sorted back to front, at
+/// endFrame(); lines are 1 pixel wide, aliased.
 ///
 /// Threads: the renderer's OpenGL context is current on the calling thread
 /// only inside beginFrame() (the first time, or when the size changes),
@@ -176,6 +177,12 @@ public:
     /// kNoTexture. Errors: kWrongState outside a frame; kInvalidArgument for
     /// an id this frame has not given (the current texture is unchanged).
     RenderResult useTexture(std::uint32_t id) override;
+
+    /// The fog of the following draws (RenderTarget::setFog).
+    RenderResult setFog(const FogSetup& fog) override;
+    /// The opacity of the following filled triangles
+    /// (RenderTarget::setOpacity).
+    RenderResult setOpacity(const OpacitySetup& opacity) override;
 
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;

@@ -8,7 +8,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 namespace q3 {
@@ -88,6 +90,98 @@ void RenderPass::loadFaces()
         return;
     throwIfFailed(m_target.setFaceOptions(faces), "setting the face options");
     m_loadedFaces = faces;
+}
+
+void RenderPass::loadFog()
+{
+    const TQ3FogStyleData& fog = state().draw.fog;
+    const bool off = fog.state != kQ3On;
+    if (m_loadedFog && (off ? m_loadedFog->state != kQ3On : std::memcmp(&*m_loadedFog, &fog, sizeof fog) == 0))
+        return;
+    if (!m_loadedFog && off) {
+        m_loadedFog = fog;
+        return;
+    }
+    FogSetup setup;
+    if (!off) {
+        if (!m_fogPlanes) {
+            // Clip coordinates c = w * C for the world point w (row vectors),
+            // so w = c * C^-1 and the eye distance (w - eye) . view is c times
+            // C^-1 applied to the plane (view, -eye . view); w's own fourth
+            // coordinate, 1 for every point drawn, is c * C^-1's last column.
+            const Matrix worldToClip = then(window()->worldToFrustum, frustumToClip());
+            const Matrix clipToWorld = glm::inverse(worldToClip);
+            const SceneLighting& scene = m_style.lighting;
+            glm::dvec3 view = scene.viewDirection;
+            const double length = glm::length(view);
+            view = length > 0.0 && std::isfinite(length) ? view / length : glm::dvec3(0.0, 0.0, -1.0);
+            const double plane[4] = {view.x, view.y, view.z, -glm::dot(scene.eye, view)};
+            FogSetup planes;
+            for (int i = 0; i < 4; ++i) {
+                double depth = 0.0;
+                for (int j = 0; j < 4; ++j)
+                    depth += clipToWorld[i][j] * plane[j];
+                planes.depthPlane[i] = float(depth);
+                planes.wPlane[i] = float(clipToWorld[i][3]);
+            }
+            m_fogPlanes = planes;
+        }
+        setup = *m_fogPlanes;
+        setup.mode = fog.mode == kQ3FogModeExponential          ? FogSetup::Mode::kExponential
+                     : fog.mode == kQ3FogModeExponentialSquared ? FogSetup::Mode::kExponentialSquared
+                     : fog.mode == kQ3FogModeAlpha              ? FogSetup::Mode::kAlpha
+                                                                : FogSetup::Mode::kLinear;
+        setup.start = fog.fogStart;
+        setup.end = fog.fogEnd;
+        setup.density = fog.density;
+        setup.color[0] = fog.color.r;
+        setup.color[1] = fog.color.g;
+        setup.color[2] = fog.color.b;
+    }
+    throwIfFailed(m_target.setFog(setup), "setting the fog");
+    m_loadedFog = fog;
+}
+
+namespace {
+
+// QuickDraw 3D's transparency colour as one opacity: the mean of its
+// channels (as Quesa's interactive renderer takes it), clamped to 0..1.
+float opacityOf(float r, float g, float b)
+{
+    const float mean = (r + g + b) / 3.0f;
+    return mean >= 1.0f ? 1.0f : mean > 0.0f ? mean : 0.0f;
+}
+
+} // namespace
+
+void RenderPass::prepareOpacity(const MeshView& mesh, const AttributeValues& attributes,
+                                bool highlightTransparency)
+{
+    const TQ3ColorRGB all = attributes.transparencyColor().value_or(TQ3ColorRGB{1.0f, 1.0f, 1.0f});
+    m_opacity = OpacitySetup{};
+    m_opacity.uniform = opacityOf(all.r, all.g, all.b);
+    if (mesh.transparency == nullptr || highlightTransparency)
+        return;
+    m_alpha.resize(mesh.vertexCount);
+    bool varies = false;
+    for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
+        const float* t = mesh.transparency + 3 * i;
+        m_alpha[i] = t[0] == t[0] ? opacityOf(t[0], t[1], t[2]) : m_opacity.uniform;
+        varies = varies || m_alpha[i] != m_opacity.uniform;
+    }
+    if (!varies)
+        return;
+    m_opacity.alpha = m_alpha.data();
+    m_opacity.count = mesh.vertexCount;
+}
+
+void RenderPass::loadOpacity(const OpacitySetup& opacity)
+{
+    if (opacity.alpha == m_loadedOpacity.alpha && opacity.count == m_loadedOpacity.count &&
+        opacity.uniform == m_loadedOpacity.uniform)
+        return;
+    throwIfFailed(m_target.setOpacity(opacity), "setting the opacity");
+    m_loadedOpacity = opacity;
 }
 
 void RenderPass::drawVertices(const MeshView& mesh, const float* rgb, const RgbColor& color)
@@ -207,6 +301,7 @@ void RenderPass::drawFilled(const MeshView& mesh, const float* rgb, const RgbCol
     const float* st = textureCoordinates(mesh, texture);
     const float* fillRgb = st != nullptr ? nullptr : rgb;
     const RgbColor fillColor = st != nullptr ? RgbColor{1.0f, 1.0f, 1.0f} : color;
+    loadOpacity(m_opacity);
     if (styles.illumination == kQ3IlluminationTypeLambert || styles.illumination == kQ3IlluminationTypePhong)
         drawLit(mesh, fillRgb, fillColor, attributes, st);
     else
@@ -229,6 +324,7 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
         attributes.overlay(styles.highlight->values());
     const RgbColor color = toRgb(attributes.diffuseColor().value_or(TQ3ColorRGB{1.0f, 1.0f, 1.0f}));
     loadMatrix();
+    loadFog();
 
     // Per-vertex colours, with what a vertex lacks taken from its geometry
     // or the state (a highlight colours the whole geometry).
@@ -256,6 +352,7 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
             drawTriangleEdges(mesh, rgb, color);
         } else {
             loadFaces();
+            prepareOpacity(mesh, attributes, highlighted && styles.highlight->transparencyColor());
             // The surface shader: a highlight's over everything; else each
             // triangle's own, else the geometry's, else the view's.
             const SharedObject* over = highlighted ? styles.highlight->shader() : nullptr;
@@ -498,6 +595,13 @@ void RenderPass::drawLit(const MeshView& mesh, const float* rgb, const RgbColor&
             }
             m_indices[corner] = std::uint32_t(corner);
         }
+    }
+    if (m_opacity.alpha != nullptr) {
+        // The opacity follows the vertices to their corners.
+        m_litAlpha.resize(corners);
+        for (std::size_t corner = 0; corner < corners; ++corner)
+            m_litAlpha[corner] = m_opacity.alpha[mesh.triangles[corner]];
+        loadOpacity(OpacitySetup{m_litAlpha.data(), corners, m_opacity.uniform});
     }
     throwIfFailed(m_target.drawLitTriangles(m_litPositions.data(), m_normals.data(),
                                             rgb != nullptr ? m_litColors.data() : nullptr, corners, m_indices.data(),

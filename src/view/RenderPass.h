@@ -77,6 +77,14 @@ private:
     void loadMatrix();
     /// Hands the target the backfacing and orientation styles.
     void loadFaces();
+    /// Hands the target the state's fog style if it changed.
+    void loadFog();
+    /// The opacity of the mesh's vertices (m_opacity): each vertex's
+    /// transparency colour, else the attributes' (the highlight's over all
+    /// where it has one), as the mean of its three channels.
+    void prepareOpacity(const MeshView& mesh, const AttributeValues& attributes, bool highlightTransparency);
+    /// Hands the target an opacity if it is not the one it has.
+    void loadOpacity(const OpacitySetup& opacity);
     /// Draws pairs of indices as lines (uniform colour, or per vertex).
     void drawSegments(const MeshView& mesh, const float* rgb, const std::uint32_t* pairs, std::size_t count,
                       const RgbColor& color, const char* what);
@@ -119,6 +127,16 @@ private:
     RenderStyle m_style;
     std::optional<Matrix> m_loaded;
     std::optional<FaceOptions> m_loadedFaces;
+    std::optional<TQ3FogStyleData> m_loadedFog;
+    /// The eye distance as a function of clip coordinates (FogSetup's
+    /// planes), computed when fog is first drawn.
+    std::optional<FogSetup> m_fogPlanes;
+    /// The opacity of the mesh being drawn (alpha in m_alpha, per vertex),
+    /// the one the target has, and per-corner opacity for drawLit.
+    OpacitySetup m_opacity;
+    OpacitySetup m_loadedOpacity;
+    std::vector<float> m_alpha;
+    std::vector<float> m_litAlpha;
     bool m_lightsLoaded = false;
     std::vector<float> m_scratch;
     std::vector<float> m_colors;

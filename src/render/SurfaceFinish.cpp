@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// The fog equations are QD3DStyle.h's (the fog style): the fraction f of a
+// pixel's own colour kept at eye distance z is
+//   linear               (end - z) / (end - start)
+//   exponential          exp(-density z)
+//   exponential-squared  exp(-(density z)^2)
+//   alpha                the pixel's alpha
+// clamped to 0..1, and the pixel becomes f colour + (1 - f) fog colour, as
+// OpenGL's fixed-function fog (and so Quesa's interactive renderer) blends.
+// z is the distance from the camera plane along the viewing direction, the
+// eye-space depth OpenGL's fog uses.
+
+#include "render/SurfaceFinish.h"
+
+namespace q3 {
+
+const char* const kFinishVertexGlsl = R"(
+attribute float q3Opacity;
+uniform vec4 q3FogDepthPlane;
+uniform vec4 q3FogWPlane;
+varying float q3VertexOpacity;
+varying float q3FogDepth;
+varying float q3FogW;
+
+void q3FinishVertex()
+{
+    q3VertexOpacity = q3Opacity;
+    q3FogDepth = dot(gl_Position, q3FogDepthPlane);
+    q3FogW = dot(gl_Position, q3FogWPlane);
+}
+)";
+
+const char* const kFinishFragmentGlsl = R"(
+uniform int q3FogMode;
+uniform float q3FogStart;
+uniform float q3FogEnd;
+uniform float q3FogDensity;
+uniform vec3 q3FogColor;
+varying float q3VertexOpacity;
+varying float q3FogDepth;
+varying float q3FogW;
+
+vec4 q3FinishFragment(vec4 color)
+{
+    float a = q3VertexOpacity;
+#ifdef TEXTURED
+    a *= texture2D(surfaceTexture, gl_TexCoord[0].st).a;
+#endif
+    color.a = a;
+    if (q3FogMode != 0) {
+        float z = q3FogDepth / q3FogW;
+        float f;
+        if (q3FogMode == 1)
+            f = (q3FogEnd - z) / (q3FogEnd - q3FogStart);
+        else if (q3FogMode == 2)
+            f = exp(-q3FogDensity * z);
+        else if (q3FogMode == 3)
+            f = exp(-(q3FogDensity * z) * (q3FogDensity * z));
+        else
+            f = a;
+        f = clamp(f, 0.0, 1.0);
+        color.rgb = f * color.rgb + (1.0 - f) * q3FogColor;
+    }
+    return color;
+}
+)";
+
+namespace {
+
+constexpr const char* kVersion = "#version 120\n";
+constexpr const char* kTexturedSwitch = "#define TEXTURED 1\n";
+
+constexpr const char* kUnlitDeclarations = R"(
+#ifdef TEXTURED
+uniform sampler2D surfaceTexture;
+#endif
+)";
+
+constexpr const char* kUnlitVertex = R"(
+void main()
+{
+    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+    gl_FrontColor = gl_Color;
+    gl_BackColor = gl_Color;
+#ifdef TEXTURED
+    gl_TexCoord[0] = gl_MultiTexCoord0;
+#endif
+    q3FinishVertex();
+}
+)";
+
+constexpr const char* kUnlitFragment = R"(
+void main()
+{
+    vec4 color = gl_Color;
+#ifdef TEXTURED
+    color.rgb *= texture2D(surfaceTexture, gl_TexCoord[0].st).rgb;
+#endif
+    gl_FragColor = q3FinishFragment(color);
+}
+)";
+
+GLuint compileUnlit(GLenum kind, bool textured, std::string& error)
+{
+    const GLuint shader = glCreateShader(kind);
+    const bool vertex = kind == GL_VERTEX_SHADER;
+    const char* sources[5] = {kVersion, textured ? kTexturedSwitch : "", kUnlitDeclarations,
+                              vertex ? kFinishVertexGlsl : kFinishFragmentGlsl,
+                              vertex ? kUnlitVertex : kUnlitFragment};
+    glShaderSource(shader, 5, sources, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        char log[2048] = {0};
+        glGetShaderInfoLog(shader, sizeof log - 1, nullptr, log);
+        error = std::string("compiling the unlit shader failed: ") + log;
+        glDeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
+} // namespace
+
+void bindFinishAttributes(GLuint program)
+{
+    glBindAttribLocation(program, kOpacityAttribute, "q3Opacity");
+}
+
+void setDefaultOpacity()
+{
+    glVertexAttrib1f(kOpacityAttribute, 1.0f);
+}
+
+void FinishUniforms::locate(GLuint program)
+{
+    const auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
+    m_mode = at("q3FogMode");
+    m_start = at("q3FogStart");
+    m_end = at("q3FogEnd");
+    m_density = at("q3FogDensity");
+    m_color = at("q3FogColor");
+    m_depthPlane = at("q3FogDepthPlane");
+    m_wPlane = at("q3FogWPlane");
+}
+
+void FinishUniforms::setFog(const FogSetup& fog) const
+{
+    int mode = 0;
+    switch (fog.mode) {
+    case FogSetup::Mode::kOff:
+        mode = 0;
+        break;
+    case FogSetup::Mode::kLinear:
+        mode = 1;
+        break;
+    case FogSetup::Mode::kExponential:
+        mode = 2;
+        break;
+    case FogSetup::Mode::kExponentialSquared:
+        mode = 3;
+        break;
+    case FogSetup::Mode::kAlpha:
+        mode = 4;
+        break;
+    }
+    glUniform1i(m_mode, mode);
+    glUniform1f(m_start, fog.start);
+    glUniform1f(m_end, fog.end);
+    glUniform1f(m_density, fog.density);
+    glUniform3fv(m_color, 1, fog.color);
+    glUniform4fv(m_depthPlane, 1, fog.depthPlane);
+    glUniform4fv(m_wPlane, 1, fog.wPlane);
+}
+
+bool UnlitProgram::build(std::string& error, bool textured)
+{
+    const GLuint vertex = compileUnlit(GL_VERTEX_SHADER, textured, error);
+    if (vertex == 0)
+        return false;
+    const GLuint fragment = compileUnlit(GL_FRAGMENT_SHADER, textured, error);
+    if (fragment == 0) {
+        glDeleteShader(vertex);
+        return false;
+    }
+    m_program = glCreateProgram();
+    glAttachShader(m_program, vertex);
+    glAttachShader(m_program, fragment);
+    bindFinishAttributes(m_program);
+    glLinkProgram(m_program);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(m_program, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        char log[2048] = {0};
+        glGetProgramInfoLog(m_program, sizeof log - 1, nullptr, log);
+        error = std::string("linking the unlit shader failed: ") + log;
+        release();
+        return false;
+    }
+    m_finish.locate(m_program);
+    if (textured) {
+        glUseProgram(m_program);
+        glUniform1i(glGetUniformLocation(m_program, "surfaceTexture"), 0);
+        glUseProgram(0);
+    }
+    return true;
+}
+
+void UnlitProgram::release()
+{
+    if (m_program != 0)
+        glDeleteProgram(m_program);
+    m_program = 0;
+}
+
+} // namespace q3

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// What every GLSL program of the OSMesa backend does to a pixel after its
+// colour is known: the opacity (RenderTarget.h, OpacitySetup) and the fog
+// (FogSetup). Both are written once here, as one GLSL block per stage that
+// the programs include (LitProgram, UnlitProgram), and one C++ class that
+// finds and sets their uniforms. Internal to the OSMesa backend: it needs a
+// current OpenGL context.
+//
+//   vertex stage:   q3FinishVertex() after gl_Position is written
+//   fragment stage: gl_FragColor = q3FinishFragment(colour)
+//
+// The opacity of a vertex is the generic attribute kOpacityAttribute (1
+// when no array is bound: setDefaultOpacity), times the texel's alpha in a
+// textured program. The fog's distance is an affine function of the world
+// point, so it is interpolated exactly across a triangle as the ratio of two
+// perspective-correct varyings (FogSetup says which).
+
+#include "render/OffscreenRenderer.h"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <string>
+
+namespace q3 {
+
+/// The generic vertex attribute that carries a vertex's opacity. (0 is
+/// gl_Vertex; the others are free in the compatibility profile.)
+constexpr GLuint kOpacityAttribute = 7;
+
+/// The vertex stage's block: the opacity attribute and the fog's varyings.
+extern const char* const kFinishVertexGlsl;
+/// The fragment stage's block: opacity times the texel's alpha, then fog.
+/// Uses `surfaceTexture` at gl_TexCoord[0] when TEXTURED is defined.
+extern const char* const kFinishFragmentGlsl;
+
+/// Binds q3Opacity to kOpacityAttribute; call before linking.
+void bindFinishAttributes(GLuint program);
+
+/// Makes vertices without an opacity array opaque (the current value of
+/// kOpacityAttribute, which OpenGL starts at 0).
+void setDefaultOpacity();
+
+/// The uniforms of the two blocks in one linked program.
+class FinishUniforms {
+public:
+    void locate(GLuint program);
+    /// Sets the fog of the program in use (FogSetup::Mode::kOff: none).
+    void setFog(const FogSetup& fog) const;
+
+private:
+    GLint m_mode = -1, m_start = -1, m_end = -1, m_density = -1, m_color = -1;
+    GLint m_depthPlane = -1, m_wPlane = -1;
+};
+
+/// Unlit drawing as the fixed-function pipeline does it (the interpolated
+/// or flat colour, times the texel in the textured variant), with the two
+/// blocks after it: used for fogged and for translucent unlit draws.
+class UnlitProgram {
+public:
+    bool build(std::string& error, bool textured);
+    void release();
+    void forget() { m_program = 0; }
+    bool built() const { return m_program != 0; }
+    void use() const { glUseProgram(m_program); }
+    const FinishUniforms& finish() const { return m_finish; }
+
+private:
+    GLuint m_program = 0;
+    FinishUniforms m_finish;
+};
+
+} // namespace q3

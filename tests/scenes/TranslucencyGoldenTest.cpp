@@ -1,0 +1,272 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// Translucency, fog and highlighting drawn by the interactive renderer and
+// compared with tests/golden/NAME.png (tolerance: tests/golden/README.md):
+// a translucent box over an opaque one, a row of spheres each under another
+// fog mode, a texture with alpha cut-outs over a box, and a highlighted
+// box beside a plain one. Exact pixels against the formulas are checked in
+// tests/api/TranslucencyFogRenderTest.cpp; here a few facts a golden blessed
+// from a wrong picture would not pass are checked too.
+
+#include "Golden.h"
+
+#include "QD3D.h"
+#include "QD3DCamera.h"
+#include "QD3DDrawContext.h"
+#include "QD3DErrors.h"
+#include "QD3DGeometry.h"
+#include "QD3DGroup.h"
+#include "QD3DLight.h"
+#include "QD3DMath.h"
+#include "QD3DRenderer.h"
+#include "QD3DSet.h"
+#include "QD3DShader.h"
+#include "QD3DStorage.h"
+#include "QD3DStyle.h"
+#include "QD3DView.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <vector>
+
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+
+class TranslucencyGoldenTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        ASSERT_EQ(Q3Initialize(), kQ3Success);
+        Q3Error_Register(&onError, 0);
+        s_errors = 0;
+    }
+    void TearDown() override
+    {
+        for (TQ3Object object : m_owned)
+            Q3Object_Dispose(object);
+        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
+        Q3Error_Register(nullptr, 0);
+        Q3Exit();
+    }
+
+    template <class T>
+    T own(T object)
+    {
+        EXPECT_NE(object, nullptr);
+        m_owned.push_back(object);
+        return object;
+    }
+
+    TQ3AttributeSet colors(TQ3ColorRGB diffuse, const TQ3ColorRGB* transparency = nullptr)
+    {
+        TQ3AttributeSet set = own(Q3AttributeSet_New());
+        Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &diffuse);
+        if (transparency != nullptr)
+            Q3AttributeSet_Add(set, kQ3AttributeTypeTransparencyColor, transparency);
+        return set;
+    }
+
+    TQ3GeometryObject box(TQ3Point3D origin, float size, TQ3AttributeSet set)
+    {
+        const TQ3BoxData data{origin, {0, size, 0}, {0, 0, size}, {size, 0, 0}, nullptr, set};
+        return own(Q3Box_New(&data));
+    }
+
+    TQ3GeometryObject sphere(TQ3Point3D centre, float radius, TQ3AttributeSet set)
+    {
+        TQ3EllipsoidData data{};
+        data.origin = centre;
+        data.orientation = {0, 0, radius};
+        data.majorRadius = {radius, 0, 0};
+        data.minorRadius = {0, radius, 0};
+        data.uMax = 1;
+        data.vMax = 1;
+        data.ellipsoidAttributeSet = set;
+        return own(Q3Ellipsoid_New(&data));
+    }
+
+    // Renders `submit` in perspective from `eye` towards `target`, lit by an
+    // ambient light (0.35) and a directional light (0.8), Phong shaded.
+    q3test::RgbaImage render(const TQ3Point3D& eye, const TQ3Point3D& target,
+                             const std::function<void(TQ3ViewObject)>& submit)
+    {
+        std::vector<unsigned char> argb(std::size_t(kWidth) * kHeight * 4, 0);
+        TQ3PixmapDrawContextData contextData{};
+        contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
+        contextData.drawContextData.clearImageColor = {1.0f, 0.15f, 0.15f, 0.2f};
+        contextData.pixmap = TQ3Pixmap{argb.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32,
+                                       kQ3EndianBig, kQ3EndianBig};
+        TQ3DrawContextObject context = Q3PixmapDrawContext_New(&contextData);
+        TQ3ViewAngleAspectCameraData cameraData{};
+        cameraData.cameraData.placement = {eye, target, {0.0f, 1.0f, 0.0f}};
+        cameraData.cameraData.range = {0.5f, 60.0f};
+        cameraData.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
+        cameraData.fov = 0.8f;
+        cameraData.aspectRatioXToY = float(kWidth) / kHeight;
+        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
+        TQ3ViewObject view = Q3View_New();
+        Q3View_SetDrawContext(view, context);
+        Q3View_SetCamera(view, camera);
+        Q3View_SetRendererByType(view, kQ3RendererTypeInteractive);
+        TQ3GroupObject lights = Q3LightGroup_New();
+        const TQ3LightData ambientData{kQ3True, 0.35f, {1.0f, 1.0f, 1.0f}};
+        TQ3LightObject ambient = Q3AmbientLight_New(&ambientData);
+        const TQ3DirectionalLightData sunData{{kQ3True, 0.8f, {1.0f, 1.0f, 1.0f}}, kQ3False, {-1.0f, -1.5f, -2.0f}};
+        TQ3LightObject sun = Q3DirectionalLight_New(&sunData);
+        Q3Group_AddObject(lights, ambient);
+        Q3Group_AddObject(lights, sun);
+        Q3Object_Dispose(ambient);
+        Q3Object_Dispose(sun);
+        Q3View_SetLightGroup(view, lights);
+        TQ3ShaderObject phong = Q3PhongIllumination_New();
+        EXPECT_EQ(Q3View_StartRendering(view), kQ3Success);
+        TQ3ViewStatus status;
+        do {
+            Q3Shader_Submit(phong, view);
+            submit(view);
+            status = Q3View_EndRendering(view);
+        } while (status == kQ3ViewStatusRetraverse);
+        EXPECT_EQ(status, kQ3ViewStatusDone);
+        Q3Object_Dispose(phong);
+        Q3Object_Dispose(lights);
+        Q3Object_Dispose(view);
+        Q3Object_Dispose(camera);
+        Q3Object_Dispose(context);
+        q3test::RgbaImage image(kWidth, kHeight);
+        for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
+            image.pixels[4 * i] = argb[4 * i + 1];
+            image.pixels[4 * i + 1] = argb[4 * i + 2];
+            image.pixels[4 * i + 2] = argb[4 * i + 3];
+            image.pixels[4 * i + 3] = argb[4 * i];
+        }
+        return image;
+    }
+
+    std::vector<TQ3Object> m_owned;
+
+private:
+    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
+    static int s_errors;
+};
+
+int TranslucencyGoldenTest::s_errors = 0;
+
+TEST_F(TranslucencyGoldenTest, TranslucentBoxOverAnOpaqueOne)
+{
+    const TQ3ColorRGB glass{0.4f, 0.4f, 0.4f};
+    TQ3GeometryObject opaque = box({-1.2f, -0.8f, -1.5f}, 1.6f, colors({0.9f, 0.3f, 0.2f}));
+    TQ3GeometryObject translucent = box({-0.6f, -1.0f, -0.2f}, 1.8f, colors({0.2f, 0.5f, 1.0f}, &glass));
+    const q3test::RgbaImage image = render({2.0f, 2.5f, 6.0f}, {0, 0, 0}, [&](TQ3ViewObject v) {
+        Q3Geometry_Submit(translucent, v);
+        Q3Geometry_Submit(opaque, v);
+    });
+    EXPECT_TRUE(q3test::matchesGolden("translucent_box_over_opaque", image));
+    // Somewhere the red box shows through the blue one: both red and blue
+    // well above the background's.
+    int through = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const unsigned char* p = image.at(x, y);
+            through += p[0] > 90 && p[2] > 90;
+        }
+    EXPECT_GT(through, 200);
+}
+
+TEST_F(TranslucencyGoldenTest, RowOfSpheresOneFogModeEach)
+{
+    // Left to right: linear, exponential, exponential-squared, alpha (a
+    // half-transparent sphere); each row recedes from the eye.
+    const TQ3FogMode modes[4] = {kQ3FogModeLinear, kQ3FogModeExponential, kQ3FogModeExponentialSquared,
+                                 kQ3FogModeAlpha};
+    const TQ3ColorRGB half{0.5f, 0.5f, 0.5f};
+    const TQ3SubdivisionStyleData subdivision{kQ3SubdivisionMethodConstant, 24.0f, 12.0f};
+    const q3test::RgbaImage image = render({0.0f, 1.0f, 9.0f}, {0, 0, 0}, [&](TQ3ViewObject v) {
+        Q3SubdivisionStyle_Submit(&subdivision, v);
+        for (int m = 0; m < 4; ++m) {
+            Q3Push_Submit(v);
+            const TQ3FogStyleData fog{kQ3On, modes[m], 6.0f, 16.0f, modes[m] == kQ3FogModeExponential ? 0.09f : 0.07f,
+                                      {1.0f, 0.75f, 0.8f, 0.85f}};
+            Q3FogStyle_Submit(&fog, v);
+            for (int k = 0; k < 3; ++k) {
+                const float x = -3.0f + 2.0f * m + 0.4f * k, z = 1.5f - 4.0f * k;
+                Q3Geometry_Submit(sphere({x, -0.8f + 0.9f * k, z}, 0.7f,
+                                         colors({0.95f, 0.35f, 0.1f}, modes[m] == kQ3FogModeAlpha ? &half : nullptr)),
+                                  v);
+            }
+            Q3Pop_Submit(v);
+        }
+    });
+    EXPECT_TRUE(q3test::matchesGolden("fog_spheres_modes", image));
+}
+
+TEST_F(TranslucencyGoldenTest, TextureWithAlphaCutOuts)
+{
+    // A 16 x 16 ARGB32 texture: an opaque frame and cross, transparent holes
+    // between them, and a half-transparent middle square.
+    std::vector<unsigned char> texels;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            const bool frame = x < 2 || x > 13 || y < 2 || y > 13 || x == 7 || x == 8 || y == 7 || y == 8;
+            const bool middle = x >= 5 && x <= 10 && y >= 5 && y <= 10;
+            const unsigned char a = frame ? 255 : middle ? 128 : 0;
+            texels.insert(texels.end(), {a, (unsigned char)(frame ? 240 : 220), (unsigned char)(frame ? 200 : 60),
+                                         (unsigned char)(frame ? 40 : 200)});
+        }
+    TQ3StorageObject storage = own(Q3MemoryStorage_New(texels.data(), static_cast<unsigned long>(texels.size())));
+    const TQ3StoragePixmap pixmap{storage, 16, 16, 64, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
+    TQ3TextureObject texture = own(Q3PixmapTexture_New(&pixmap));
+    TQ3ShaderObject shader = own(Q3TextureShader_New(texture));
+    TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const TQ3Point3D corners[4] = {{-1.6f, -1.2f, 0.8f}, {1.6f, -1.2f, 0.8f}, {1.6f, 1.6f, 0.8f}, {-1.6f, 1.6f, 0.8f}};
+    std::vector<TQ3Vertex3D> vertices(4);
+    for (int k = 0; k < 4; ++k) {
+        TQ3AttributeSet set = own(Q3AttributeSet_New());
+        Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]);
+        vertices[k] = TQ3Vertex3D{corners[k], set};
+    }
+    const TQ3PolygonData data{4, vertices.data(), nullptr};
+    TQ3GeometryObject plane = own(Q3Polygon_New(&data));
+    TQ3GeometryObject behind = box({-1.0f, -1.0f, -1.5f}, 1.5f, colors({0.3f, 0.8f, 0.4f}));
+    const q3test::RgbaImage image = render({1.0f, 1.5f, 6.0f}, {0, 0, 0}, [&](TQ3ViewObject v) {
+        Q3Push_Submit(v);
+        Q3Shader_Submit(shader, v);
+        Q3Geometry_Submit(plane, v);
+        Q3Pop_Submit(v);
+        Q3Geometry_Submit(behind, v);
+    });
+    EXPECT_TRUE(q3test::matchesGolden("texture_alpha_cutouts", image));
+}
+
+TEST_F(TranslucencyGoldenTest, HighlightedBoxBesideAPlainOne)
+{
+    TQ3AttributeSet highlight = own(Q3AttributeSet_New());
+    const TQ3ColorRGB yellow{1.0f, 0.9f, 0.1f};
+    Q3AttributeSet_Add(highlight, kQ3AttributeTypeDiffuseColor, &yellow);
+    TQ3StyleObject style = own(Q3HighlightStyle_New(highlight));
+    TQ3AttributeSet on = colors({0.2f, 0.4f, 0.9f});
+    const TQ3Switch state = kQ3On;
+    Q3AttributeSet_Add(on, kQ3AttributeTypeHighlightState, &state);
+    TQ3GeometryObject highlighted = box({0.3f, -0.8f, -0.8f}, 1.6f, on);
+    TQ3GeometryObject plain = box({-2.1f, -0.8f, -0.8f}, 1.6f, colors({0.2f, 0.4f, 0.9f}));
+    const q3test::RgbaImage image = render({1.0f, 2.5f, 6.5f}, {0, 0, 0}, [&](TQ3ViewObject v) {
+        Q3Style_Submit(style, v);
+        Q3Geometry_Submit(plain, v);
+        Q3Geometry_Submit(highlighted, v);
+    });
+    EXPECT_TRUE(q3test::matchesGolden("highlight_object", image));
+    // The highlighted box (right half) is yellow, the plain one (left) blue.
+    int yellowRight = 0, yellowLeft = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const unsigned char* p = image.at(x, y);
+            const bool isYellow = p[0] > 120 && p[1] > 100 && p[2] < 60;
+            (x < kWidth / 2 ? yellowLeft : yellowRight) += isYellow;
+        }
+    EXPECT_GT(yellowRight, 500);
+    EXPECT_EQ(yellowLeft, 0);
+}
+
+} // namespace
