@@ -30,8 +30,16 @@
 
 #define Q3_GL_FUNCTIONS(X) \
     X(ActiveTexture) \
+    X(AlphaFunc) \
     X(AttachShader) \
+    X(Begin) \
+    X(BindAttribLocation) \
+    X(BindFramebuffer) \
+    X(BindRenderbuffer) \
     X(BindTexture) \
+    X(BlendFuncSeparate) \
+    X(BlitFramebuffer) \
+    X(CheckFramebufferStatus) \
     X(Clear) \
     X(ClearColor) \
     X(ClearDepth) \
@@ -39,6 +47,7 @@
     X(ColorMask) \
     X(ColorPointer) \
     X(CompileShader) \
+    X(CopyTexImage2D) \
     X(CreateProgram) \
     X(CreateShader) \
     X(CullFace) \
@@ -49,12 +58,18 @@
     X(DepthMask) \
     X(Disable) \
     X(DisableClientState) \
+    X(DisableVertexAttribArray) \
     X(DrawArrays) \
     X(DrawElements) \
     X(Enable) \
     X(EnableClientState) \
+    X(EnableVertexAttribArray) \
+    X(End) \
     X(Finish) \
+    X(FramebufferRenderbuffer) \
     X(FrontFace) \
+    X(GenFramebuffers) \
+    X(GenRenderbuffers) \
     X(GenTextures) \
     X(GetError) \
     X(GetIntegerv) \
@@ -64,6 +79,7 @@
     X(GetShaderiv) \
     X(GetString) \
     X(GetUniformLocation) \
+    X(IsEnabled) \
     X(LineWidth) \
     X(LinkProgram) \
     X(LoadIdentity) \
@@ -76,6 +92,7 @@
     X(PointSize) \
     X(PolygonMode) \
     X(ReadPixels) \
+    X(RenderbufferStorageMultisample) \
     X(Scissor) \
     X(ShadeModel) \
     X(ShaderSource) \
@@ -88,9 +105,13 @@
     X(Uniform1i) \
     X(Uniform1iv) \
     X(Uniform3fv) \
+    X(Uniform4fv) \
     X(UniformMatrix3fv) \
     X(UniformMatrix4fv) \
     X(UseProgram) \
+    X(Vertex2f) \
+    X(VertexAttrib1f) \
+    X(VertexAttribPointer) \
     X(VertexPointer) \
     X(Viewport)
 

@@ -64,8 +64,10 @@ public:
     /// height is 0 or above the implementation limit (16384 for llvmpipe),
     /// the pane is empty, wider or taller than 16384 or has its origin
     /// beyond +-16384, or a colour channel is NaN/infinite;
-    /// kOutOfMemory; kContextFailure or kWrongRenderer if no llvmpipe context
-    /// could be made (see the .cpp for the pinned Mesa settings).
+    /// kOutOfMemory; kContextFailure if the backend was chosen wrongly
+    /// (Q3_RENDER_BACKEND, Q3_EGL_DEVICE), is missing or refuses a context;
+    /// kWrongRenderer if it is not llvmpipe (except EGL on a GPU; see
+    /// GlContext.cpp for the pinned Mesa settings).
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
                             const PixelRect& pane, const FrameOptions& options = FrameOptions{}) override;
 
