@@ -8,7 +8,11 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git
-  libosmesa6-dev      # offscreen rasterizing (llvmpipe)
+  libosmesa6-dev      # the OSMesa rendering backend (llvmpipe); its header, and the
+                      # library the backend opens at run time
+  libegl-dev          # the EGL rendering backend's headers (EGL/egl.h, eglext.h)
+  libegl1             # libEGL.so.1, the EGL loader the backend opens at run time
+  libegl-mesa0        # Mesa's EGL: the software device (llvmpipe) the EGL goldens run on
   libglm-dev          # vectors and matrices
   libgtest-dev        # tests
   libpng-dev          # golden images and the figures

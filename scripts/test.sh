@@ -3,7 +3,8 @@
 # Copyright (c) 2026 The Q3 authors
 #
 # Installs what is missing, builds Q3 and runs every test: the Release suite,
-# its golden-image tests again at llvmpipe's baseline SIMD width, the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the
+# its golden-image tests again at llvmpipe's baseline SIMD width and through the
+# EGL backend, the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the
 # thread test under ThreadSanitizer, and a bounded libFuzzer run.
 # Build trees: build/, build-asan/, build-tsan/, build-fuzz/ (all ignored by git).
 set -euo pipefail
@@ -35,6 +36,13 @@ if grep -qw avx512f /proc/cpuinfo 2> /dev/null; then
 fi
 LP_NATIVE_VECTOR_WIDTH=128 ctest --test-dir build -j"$jobs" --output-on-failure --timeout 300 \
   --no-tests=error -L '^golden$' "${baseline_skip[@]}"
+
+echo "== Golden images again through the EGL backend"
+# Both rendering backends must draw every golden (the same files, the same
+# pixels: README "Rendering backends"); the Release run above used the
+# default, OSMesa.
+Q3_RENDER_BACKEND=egl ctest --test-dir build -j"$jobs" --output-on-failure --timeout 300 \
+  --no-tests=error -L '^golden$'
 
 # Sanitizer runtime settings shared by the stages below. Leaks are errors;
 # the only suppressed ones are Mesa's own (tests/sanitizers/lsan.supp says

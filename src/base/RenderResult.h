@@ -15,7 +15,7 @@ enum class RenderStatus {
     kInvalidArgument,   ///< a parameter is out of range, NULL, NaN or infinite
     kWrongState,        ///< draw outside a frame, beginFrame twice, ...
     kOutOfMemory,       ///< a CPU-side buffer could not grow
-    kContextFailure,    ///< OSMesa refused to create or bind a context
+    kContextFailure,    ///< no backend, or it refused to create or bind a context
     kWrongRenderer,     ///< the GL implementation is not the pinned one (llvmpipe)
     kGraphicsError,     ///< the GL reported an error while drawing
 };

@@ -3,15 +3,13 @@
 #pragma once
 
 // The GLSL program that lights triangles as QuickDraw 3D's illumination
-// shaders do (OffscreenRenderer.h, SurfaceShading). Internal to the OSMesa
-// backend: it needs a current OpenGL context.
+// shaders do (OffscreenRenderer.h, SurfaceShading). Internal to the OpenGL
+// backends: it needs a current OpenGL context.
 
 #include "render/OffscreenRenderer.h"
 #include "render/SurfaceFinish.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "render/GlApi.h"
 
 #include <string>
 

@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 
-// The OSMesa backend of OffscreenRenderer.
+// OffscreenRenderer: the drawing shared by the OSMesa and EGL backends, which
+// differ only in their GlContext (GlContext.h; OsMesaContext.cpp,
+// EglContext.cpp). Every gl* call goes through the current context's table
+// (GlApi.h).
 //
-// Rendering goes into OSMesa's own window-system framebuffer, which OSMesa
-// copies into our RGBA8 buffer (top row first, OSMESA_Y_UP = 0) at glFinish.
+// Rendering goes into a window-system framebuffer: OSMesa's own, which OSMesa
+// copies into our RGBA8 buffer (top row first, OSMESA_Y_UP = 0) at glFinish,
+// or an EGL pbuffer, read back with glReadPixels; llvmpipe rasterizes both
+// alike, so the two backends give the same pixels.
 // That is the path every plain OSMesa program takes, so an image drawn here is
 // bit-identical to one drawn by raw OpenGL calls with the same vertices and
 // matrix (measured on 1,000 curves of 65 points: 0 of 127,709 lit pixels
@@ -28,6 +33,8 @@
 //   - DRAW_USE_LLVM=0, GALLIUM_NOSSE, GALLIUM_OVERRIDE_CPU_CAPS=nosse,
 //     LP_NO_RAST and GALLIUM_NOOP each change the image: they are unset.
 //   - Drawing through a framebuffer object differs slightly (see above).
+// GlContext.cpp pins the Mesa environment variables these measurements
+// found to matter, for both backends.
 // The OpenGL state that matters is pinned in initializeState(): no dithering,
 // no multisampling, no smoothing or stippling, line width 1, no blending, no
 // depth test, no culling, no lighting, flat shading.
@@ -48,13 +55,10 @@
 
 #include "render/OffscreenRenderer.h"
 
+#include "render/GlApi.h"
+#include "render/GlContext.h"
 #include "render/LitProgram.h"
 #include "render/SurfaceFinish.h"
-
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/osmesa.h>
-#include <GL/gl.h>
-#include <GL/glext.h>
 
 #include <algorithm>
 #include <array>
@@ -82,94 +86,24 @@ constexpr int kMaxPaneOffset = 16384;
 constexpr std::size_t kFlushVertexCount = std::size_t(1) << 20;
 constexpr std::size_t kFlushIndexCount = std::size_t(1) << 21;
 
-struct PinnedVariable {
-    const char* name;
-    const char* value; // nullptr: unset
-};
-
-// Mesa reads these once, when the first OSMesa context of the process creates
-// the process-wide llvmpipe screen. GALLIUM_DRIVER is forced rather than set
-// only when absent: Q3 refuses any other driver (the GL_RENDERER check), so
-// honouring a different value would only turn a working setup into an error.
-// The others are Mesa debugging switches measured to change the image.
-constexpr PinnedVariable kPinnedEnvironment[] = {
-    {"GALLIUM_DRIVER", "llvmpipe"},
-    {"DRAW_USE_LLVM", nullptr},
-    {"GALLIUM_NOSSE", nullptr},
-    {"GALLIUM_OVERRIDE_CPU_CAPS", nullptr},
-    {"LP_NO_RAST", nullptr},
-    {"GALLIUM_NOOP", nullptr},
-};
-
-std::mutex& contextMutex()
-{
-    static std::mutex mutex;
-    return mutex;
-}
-
-// Called with contextMutex() held; only the first call changes the environment.
-// If the process created an OSMesa context before (outside Q3), Mesa has already
-// chosen its driver and the GL_RENDERER check reports it.
-void pinMesaEnvironmentLocked()
-{
-    static bool pinned = false;
-    if (pinned)
-        return;
-    for (const PinnedVariable& variable : kPinnedEnvironment) {
-        if (variable.value != nullptr)
-            setenv(variable.name, variable.value, 1);
-        else
-            unsetenv(variable.name);
-    }
-    pinned = true;
-}
-
-/// Makes a context current for the lifetime of the scope, then makes the
-/// thread's previous OSMesa context (with its buffer) current again, or none.
-class CurrentContextScope {
+/// Makes a context current (with its GL table) for the lifetime of the
+/// scope, then the thread's previous context again, or none.
+class ContextScope {
 public:
-    CurrentContextScope()
+    ContextScope(GlContext& context, std::uint8_t* image)
+        : m_context(context), m_bound(context.makeCurrent(image)), m_api(m_bound ? &context.api() : nullptr)
     {
-        m_previous = OSMesaGetCurrentContext();
-        if (m_previous == nullptr)
-            return;
-        GLint format = 0;
-        if (!OSMesaGetColorBuffer(m_previous, &m_previousWidth, &m_previousHeight, &format,
-                                  &m_previousBuffer)) {
-            m_previous = nullptr;
-            return;
-        }
-        OSMesaGetIntegerv(OSMESA_TYPE, &m_previousType);
     }
+    ~ContextScope() { m_context.restorePrevious(); }
+    ContextScope(const ContextScope&) = delete;
+    ContextScope& operator=(const ContextScope&) = delete;
 
-    ~CurrentContextScope()
-    {
-        if (!m_bound)
-            return;
-        if (m_previous != nullptr)
-            OSMesaMakeCurrent(m_previous, m_previousBuffer, GLenum(m_previousType), m_previousWidth,
-                              m_previousHeight);
-        else
-            OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
-    }
-
-    CurrentContextScope(const CurrentContextScope&) = delete;
-    CurrentContextScope& operator=(const CurrentContextScope&) = delete;
-
-    bool bind(OSMesaContext context, void* buffer, std::uint32_t width, std::uint32_t height)
-    {
-        m_bound = OSMesaMakeCurrent(context, buffer, GL_UNSIGNED_BYTE, GLsizei(width),
-                                    GLsizei(height)) == GL_TRUE;
-        return m_bound;
-    }
+    bool bound() const { return m_bound; }
 
 private:
-    OSMesaContext m_previous = nullptr;
-    void* m_previousBuffer = nullptr;
-    GLint m_previousWidth = 0;
-    GLint m_previousHeight = 0;
-    GLint m_previousType = GL_UNSIGNED_BYTE;
-    bool m_bound = false;
+    GlContext& m_context;
+    bool m_bound;
+    GlApiScope m_api;
 };
 
 using Primitive = DrawMode;
@@ -259,6 +193,7 @@ RenderResult outOfMemory()
 
 class OffscreenRenderer::Impl {
 public:
+    explicit Impl(const GlBackendChoice& backend) : m_backend(backend) {}
     ~Impl() { destroyContext(); }
 
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
@@ -427,7 +362,10 @@ private:
     std::vector<std::uint32_t> m_splitOpaque; // drawSplit's opaque triangles
     UnlitProgram m_unlitPrograms[2];
 
-    OSMesaContext m_context = nullptr;
+    // The backend asked for (its result: why it cannot be used), and its
+    // context for the current size.
+    GlBackendChoice m_backend;
+    std::unique_ptr<GlContext> m_context;
     GLint m_maxViewport[2] = {0, 0};
 
     PixelRect m_pane;
@@ -472,58 +410,31 @@ private:
     std::vector<GLuint> m_staleTextureNames;
 };
 
-void pinRenderingEnvironment()
-{
-    std::lock_guard<std::mutex> lock(contextMutex());
-    pinMesaEnvironmentLocked();
-}
-
 RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::uint32_t height)
 {
+    if (!m_backend.result)
+        return m_backend.result;
     destroyContext();
     std::vector<std::uint8_t>().swap(m_image);
     m_width = 0;
     m_height = 0;
     m_image.resize(std::size_t(width) * height * 4);
 
-    {
-        std::lock_guard<std::mutex> lock(contextMutex());
-        pinMesaEnvironmentLocked();
-        // A depth buffer for FrameOptions::depthTest; frames without the test
-        // never touch it.
-        const int attributes[] = {OSMESA_FORMAT,       OSMESA_RGBA, OSMESA_DEPTH_BITS,  24,
-                                  OSMESA_STENCIL_BITS, 0,           OSMESA_ACCUM_BITS,  0,
-                                  OSMESA_PROFILE,      OSMESA_COMPAT_PROFILE, 0};
-        m_context = OSMesaCreateContextAttribs(attributes, nullptr);
-    }
-    if (m_context == nullptr)
-        return RenderResult::failure(RenderStatus::kContextFailure,
-                                     "OSMesaCreateContextAttribs failed for an RGBA compatibility context");
-
-    RenderResult result;
-    {
-        CurrentContextScope scope;
-        if (!scope.bind(m_context, m_image.data(), width, height)) {
+    RenderResult result = createGlContext(m_backend.backend, width, height, m_image.data(), m_context);
+    if (result) {
+        ContextScope scope(*m_context, m_image.data());
+        if (!scope.bound()) {
             result = RenderResult::failure(RenderStatus::kContextFailure,
-                                           "OSMesaMakeCurrent failed for a " + std::to_string(width) +
-                                               " x " + std::to_string(height) + " RGBA8 buffer");
+                                           std::string("making the ") + glBackendName(m_backend.backend) +
+                                               " context current failed");
         } else {
-            const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-            if (renderer == nullptr || std::strncmp(renderer, "llvmpipe", 8) != 0) {
-                result = RenderResult::failure(
-                    RenderStatus::kWrongRenderer,
-                    std::string("OpenGL renderer is '") + (renderer ? renderer : "(none)") +
-                        "', not llvmpipe: Q3 pins GALLIUM_DRIVER=llvmpipe for reproducible images, "
-                        "but Mesa chose its driver earlier (an OSMesa context created before Q3's?)");
-            } else {
-                glGetIntegerv(GL_MAX_VIEWPORT_DIMS, m_maxViewport);
-                initializeState();
-                GLenum error = takeGlError();
-                if (error != GL_NO_ERROR)
-                    result = RenderResult::failure(RenderStatus::kGraphicsError,
-                                                   std::string("setting up the OpenGL state failed: ") +
-                                                       glErrorName(error));
-            }
+            glGetIntegerv(GL_MAX_VIEWPORT_DIMS, m_maxViewport);
+            initializeState();
+            GLenum error = takeGlError();
+            if (error != GL_NO_ERROR)
+                result = RenderResult::failure(RenderStatus::kGraphicsError,
+                                               std::string("setting up the OpenGL state failed: ") +
+                                                   glErrorName(error));
         }
     }
     if (!result) {
@@ -540,9 +451,7 @@ void OffscreenRenderer::Impl::destroyContext()
 {
     if (m_context == nullptr)
         return;
-    std::lock_guard<std::mutex> lock(contextMutex());
-    OSMesaDestroyContext(m_context);
-    m_context = nullptr;
+    m_context.reset();
     m_program.forget();
     m_texturedProgram.forget();
     m_unlitPrograms[0].forget();
@@ -556,8 +465,6 @@ void OffscreenRenderer::Impl::destroyContext()
 // anyway because reproducible images depend on them (see the file comment).
 void OffscreenRenderer::Impl::initializeState()
 {
-    OSMesaPixelStore(OSMESA_Y_UP, 0);
-
     const GLenum disabled[] = {GL_DITHER,       GL_MULTISAMPLE,    GL_LINE_SMOOTH,  GL_POINT_SMOOTH,
                                GL_POLYGON_SMOOTH, GL_LINE_STIPPLE, GL_POLYGON_STIPPLE, GL_BLEND,
                                GL_DEPTH_TEST,   GL_STENCIL_TEST,   GL_ALPHA_TEST,   GL_CULL_FACE,
@@ -976,10 +883,10 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
 {
     RenderResult result;
     {
-        CurrentContextScope scope;
-        if (!scope.bind(m_context, m_image.data(), m_width, m_height)) {
+        ContextScope scope(*m_context, m_image.data());
+        if (!scope.bound()) {
             resetBatch();
-            return RenderResult::failure(RenderStatus::kContextFailure, "OSMesaMakeCurrent failed");
+            return RenderResult::failure(RenderStatus::kContextFailure, "making the OpenGL context current failed");
         }
         if (!m_clearedInGl) {
             startFrameInGl();
@@ -1137,9 +1044,9 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
         glFrontFace(GL_CCW);
         glEnableClientState(GL_COLOR_ARRAY);
         glEnableClientState(GL_NORMAL_ARRAY);
-        // glFinish makes OSMesa copy the framebuffer into m_image.
+        // The finished image into m_image.
         if (finish)
-            glFinish();
+            m_context->finish(m_image.data());
         const GLenum error = takeGlError();
         if (error != GL_NO_ERROR && result)
             result = RenderResult::failure(RenderStatus::kGraphicsError,
@@ -1587,7 +1494,11 @@ void OffscreenRenderer::Impl::cancelFrame()
     forgetTranslucent();
 }
 
-OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>()) {}
+OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>(chooseGlBackendFromEnvironment())) {}
+
+OffscreenRenderer::OffscreenRenderer(GlBackend backend) : m_impl(std::make_unique<Impl>(GlBackendChoice{backend, {}}))
+{
+}
 
 OffscreenRenderer::~OffscreenRenderer() = default;
 

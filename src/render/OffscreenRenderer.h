@@ -3,6 +3,7 @@
 #pragma once
 
 #include "base/RenderTarget.h"
+#include "render/GlContext.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -12,18 +13,11 @@
 namespace q3
 {
 
-/// Sets the environment variables Mesa reads when the process's first OSMesa
-/// context is created (OffscreenRenderer.cpp says which and why). Only the first
-/// call changes the environment, with setenv/unsetenv, which the C library does not
-/// make safe against other threads using the environment at the same time: so
-/// Q3Initialize calls it, at program start as QuickDraw 3D requires, and the first
-/// context creation calls it again in case it was skipped. Thread-safe otherwise.
-void pinRenderingEnvironment();
-
 /// Draws points, lines and filled triangles into its own RGBA8 image, headless.
 /// One per QuickDraw 3D view. This header is deliberately free of OpenGL: the
-/// implementation (OffscreenRenderer.cpp) uses OSMesa with llvmpipe today and
-/// another rasterizer could replace it without touching callers.
+/// implementation (OffscreenRenderer.cpp) draws through a GlContext of the
+/// backend it was made for: OSMesa or EGL, with llvmpipe (same pixels) or
+/// EGL on a GPU.
 ///
 /// A frame is beginFrame(), any number of setMatrix() and draw calls, then
 /// endFrame(); afterwards pixels() holds the finished image. Draw calls only
@@ -39,8 +33,9 @@ void pinRenderingEnvironment();
 /// Threads: the renderer's OpenGL context is current on the calling thread
 /// only inside beginFrame() (the first time, or when the size changes),
 /// inside endFrame(), and inside a draw call that flushes a full batch. On
-/// return from each of these, whatever OSMesa context the thread had current
-/// before is current again (or none). Hence separate renderers may render on
+/// return from each of these, whatever context of the backend the thread had
+/// current before is current again, or none (for EGL: the context of the
+/// client API bound before). Hence separate renderers may render on
 /// separate threads at the same time, and frames of two renderers may even be
 /// interleaved on one thread. One renderer must not be used by two threads at
 /// once.
@@ -50,7 +45,11 @@ void pinRenderingEnvironment();
 class OffscreenRenderer final : public RenderTarget
 {
 public:
+    /// Draws with the backend Q3_RENDER_BACKEND chooses (chooseGlBackend);
+    /// when that choice fails, beginFrame reports why (kContextFailure).
     OffscreenRenderer();
+    /// Draws with `backend`.
+    explicit OffscreenRenderer(GlBackend backend);
     ~OffscreenRenderer() override;
     OffscreenRenderer(const OffscreenRenderer&) = delete;
     OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
@@ -66,8 +65,10 @@ public:
     /// height is 0 or above the implementation limit (16384 for llvmpipe),
     /// the pane is empty, wider or taller than 16384 or has its origin
     /// beyond +-16384, or a colour channel is NaN/infinite;
-    /// kOutOfMemory; kContextFailure or kWrongRenderer if no llvmpipe context
-    /// could be made (see the .cpp for the pinned Mesa settings).
+    /// kOutOfMemory; kContextFailure if the backend was chosen wrongly
+    /// (Q3_RENDER_BACKEND, Q3_EGL_DEVICE), is missing or refuses a context;
+    /// kWrongRenderer if it is not llvmpipe (except EGL on a GPU; see
+    /// GlContext.cpp for the pinned Mesa settings).
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
                             const PixelRect& pane, const FrameOptions& options = FrameOptions{}) override;
 

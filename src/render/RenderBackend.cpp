@@ -3,8 +3,9 @@
 #include "base/RenderTarget.h"
 #include "render/OffscreenRenderer.h"
 
-// The backend this library is built with: OSMesa (OffscreenRenderer). The
-// view asks base/RenderTarget.h for a target and never names it.
+// The backends this library draws with: OffscreenRenderer over OSMesa or EGL,
+// chosen per view by Q3_RENDER_BACKEND (GlContext.h). The view asks
+// base/RenderTarget.h for a target and never names it.
 
 namespace q3 {
 

@@ -2,11 +2,11 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
-// What every GLSL program of the OSMesa backend does to a pixel after its
+// What every GLSL program of the OpenGL backends does to a pixel after its
 // colour is known: the opacity (RenderTarget.h, OpacitySetup) and the fog
 // (FogSetup). Both are written once here, as one GLSL block per stage that
 // the programs include (LitProgram, UnlitProgram), and one C++ class that
-// finds and sets their uniforms. Internal to the OSMesa backend: it needs a
+// finds and sets their uniforms. Internal to the OpenGL backends: it needs a
 // current OpenGL context.
 //
 //   vertex stage:   q3FinishVertex() after gl_Position is written
@@ -20,9 +20,7 @@
 
 #include "render/OffscreenRenderer.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "render/GlApi.h"
 
 #include <string>
 
