@@ -2618,8 +2618,8 @@ private:
             TQ3PickDetail valid = 0;
             if (STATUS(Q3Pick_GetPickDetailValidMask(pick, index, nullArg ? nullptr : &valid)) != kQ3Success)
                 return;
-            require((valid & ~data.mask) == 0 && (valid & kQ3PickDetailMaskShapePart) == 0,
-                    "Q3Pick_GetPickDetailValidMask", "reports a detail the pick did not ask for");
+            require((valid & ~data.mask) == 0, "Q3Pick_GetPickDetailValidMask",
+                    "reports a detail the pick did not ask for");
             union {
                 unsigned long id;
                 TQ3HitPath path;
@@ -2637,6 +2637,24 @@ private:
             require((valid & asked) == asked, "Q3Pick_GetPickDetailData", "gave a detail that is not valid");
             if (asked == kQ3PickDetailMaskObject)
                 STATUS(Q3Object_Dispose(out.object));
+            if (asked == kQ3PickDetailMaskShapePart) {
+                // A mesh part: every shape part call, the right one succeeding.
+                TQ3ShapeObject shape = nullptr;
+                if (STATUS(Q3ShapePart_GetShape(out.object, &shape)) == kQ3Success)
+                    STATUS(Q3Object_Dispose(shape));
+                require(QUERY(Q3ShapePart_GetType(out.object), TQ3ObjectType{kQ3ObjectTypeInvalid}) ==
+                            kQ3ShapePartTypeMeshPart,
+                        "Q3ShapePart_GetType", "a part that is not a mesh part");
+                TQ3MeshComponent component = nullptr;
+                TQ3MeshFace face = nullptr;
+                TQ3MeshEdge edge = nullptr;
+                TQ3MeshVertex vertex = nullptr;
+                STATUS(Q3MeshPart_GetComponent(out.object, &component));
+                STATUS(Q3MeshFacePart_GetFace(out.object, &face));
+                STATUS(Q3MeshEdgePart_GetEdge(out.object, &edge));
+                STATUS(Q3MeshVertexPart_GetVertex(out.object, &vertex));
+                STATUS(Q3Object_Dispose(out.object));
+            }
             if (asked == kQ3PickDetailMaskPath) {
                 require(out.path.rootGroup != nullptr && out.path.depth != 0, "Q3Pick_GetPickDetailData",
                         "gave an empty path");
