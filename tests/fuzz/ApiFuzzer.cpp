@@ -36,6 +36,7 @@
 #include "Q3NURBCurveTools.h"
 #include "QD3D.h"
 #include "QD3DCamera.h"
+#include "QD3DController.h"
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
@@ -101,6 +102,8 @@ struct Posts {
 Posts g_posts;
 // Q3_FUZZ_TRACE=1 prints each operation, for checking what a seed decodes to.
 bool g_trace = false;
+// How many times a controller notify function ran (they only count).
+unsigned long g_controllerNotifications = 0;
 
 void onError(TQ3Error, TQ3Error, long) { ++g_posts.errors; }
 void onWarning(TQ3Warning, TQ3Warning last, long)
@@ -644,6 +647,7 @@ private:
         case Op::kPixmapMarkers: pixmapMarkers(); break;
         case Op::kViewHints: viewHints(); break;
         case Op::kPicking: picking(); break;
+        case Op::kControllers: controllers(); break;
         case Op::kCount: break;
         }
     }
@@ -2672,6 +2676,178 @@ private:
             QUERY(Q3Pick_GetType(pick), TQ3ObjectType{kQ3ObjectTypeInvalid});
             return;
         }
+    }
+
+    // QD3DController.h: every call on a controller this input made (or an
+    // unknown pointer), a tracker made for the step and disposed at its end
+    // (which detaches the controllers attached to it), the cursor tracker.
+    // Notify functions only count: they must not post errors of their own.
+    static TQ3Status fuzzGetChannel(TQ3ControllerRef, unsigned long channel, void* data, unsigned long* size)
+    {
+        if (channel % 3 == 2)
+            return kQ3Failure;
+        const unsigned long n = std::min<unsigned long>(*size, channel % 5);
+        std::memset(data, 0x5A, n);
+        *size = n;
+        return kQ3Success;
+    }
+    static TQ3Status fuzzSetChannel(TQ3ControllerRef, unsigned long channel, const void*, unsigned long)
+    {
+        return channel % 4 == 3 ? kQ3Failure : kQ3Success;
+    }
+    static TQ3Status fuzzTrackerNotify(TQ3TrackerObject, TQ3ControllerRef)
+    {
+        ++g_controllerNotifications;
+        return kQ3Success;
+    }
+    static void fuzzCursorNotify() { ++g_controllerNotifications; }
+
+    void controllers()
+    {
+        const std::uint8_t call = m_in.u8() % 14;
+        const bool nullArg = m_in.u8() == 0;
+        TQ3ControllerRef ref = &m_notAController;
+        if (!m_controllers.empty() && m_in.u8() != 0)
+            ref = m_controllers[m_in.u8() % m_controllers.size()];
+        TQ3TrackerObject tracker = OBJECT(Q3Tracker_New((m_in.u8() & 1) ? fuzzTrackerNotify : nullptr));
+        const TQ3Point3D point{m_in.value(), m_in.value(), m_in.value()};
+        const TQ3Vector3D vector{m_in.value(), m_in.value(), m_in.value()};
+        const TQ3Quaternion turn{m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+        TQ3Boolean b = kQ3False;
+        unsigned long n = m_in.u32();
+        switch (call) {
+        case 0: {
+            char signature[] = "dev?";
+            signature[3] = char('a' + m_in.u8() % 4);
+            const unsigned long counts[] = {0, 3, 1024, 1025, 0xFFFFFFFFul};
+            TQ3ControllerData data{signature, counts[m_in.u8() % 5], counts[m_in.u8() % 5] % 1100, fuzzGetChannel,
+                                   fuzzSetChannel};
+            if (m_in.u8() == 0)
+                data.signature = nullptr;
+            if (TQ3ControllerRef made = POINTER(Q3Controller_New(nullArg ? nullptr : &data)))
+                if (std::find(m_controllers.begin(), m_controllers.end(), made) == m_controllers.end())
+                    m_controllers.push_back(made);
+            break;
+        }
+        case 1: {
+            TQ3ControllerRef next = nullptr;
+            STATUS(Q3Controller_GetListChanged(nullArg ? nullptr : &b, &n));
+            STATUS(Q3Controller_Next(m_in.u8() & 1 ? nullptr : ref, nullArg ? nullptr : &next));
+            STATUS(Q3Controller_GetActivation(ref, nullArg ? nullptr : &b));
+            STATUS(Q3Controller_GetValueCount(ref, nullArg ? nullptr : &n));
+            STATUS(Q3Controller_HasTracker(ref, nullArg ? nullptr : &b));
+            STATUS(Q3Controller_Track2DCursor(ref, nullArg ? nullptr : &b));
+            STATUS(Q3Controller_Track3DCursor(ref, nullArg ? nullptr : &b));
+            STATUS(Q3Controller_GetButtons(ref, nullArg ? nullptr : &n));
+            break;
+        }
+        case 2:
+            STATUS(Q3Controller_SetActivation(ref, static_cast<TQ3Boolean>(m_in.u8() % 3)));
+            if (m_in.u8() % 8 == 0)
+                STATUS(Q3Controller_Decommission(ref));
+            break;
+        case 3: {
+            char text[16];
+            STATUS(Q3Controller_GetSignature(ref, nullArg ? nullptr : text, m_in.u8() % 17));
+            unsigned char bytes[300] = {};
+            unsigned long size = m_in.u32() % 300;
+            STATUS(Q3Controller_SetChannel(ref, m_in.u8() % 6, nullArg ? nullptr : bytes, size));
+            STATUS(Q3Controller_GetChannel(ref, m_in.u8() % 6, nullArg ? nullptr : bytes, &size));
+            break;
+        }
+        case 4:
+            STATUS(Q3Controller_SetTracker(ref, m_in.u8() & 1 ? nullptr : tracker));
+            STATUS(Q3Controller_SetButtons(ref, m_in.u32()));
+            break;
+        case 5: {
+            TQ3Point3D p{};
+            TQ3Quaternion q{};
+            STATUS(Q3Controller_SetTrackerPosition(ref, nullArg ? nullptr : &point));
+            STATUS(Q3Controller_MoveTrackerPosition(ref, &vector));
+            STATUS(Q3Controller_SetTrackerOrientation(ref, &turn));
+            STATUS(Q3Controller_MoveTrackerOrientation(ref, &turn));
+            STATUS(Q3Controller_GetTrackerPosition(ref, nullArg ? nullptr : &p));
+            STATUS(Q3Controller_GetTrackerOrientation(ref, nullArg ? nullptr : &q));
+            break;
+        }
+        case 6: {
+            float values[8] = {m_in.value(), m_in.value(), m_in.value()};
+            STATUS(Q3Controller_SetValues(ref, nullArg ? nullptr : values, m_in.u8() % 9));
+            unsigned long serial = m_in.u8();
+            STATUS(Q3Controller_GetValues(ref, m_in.u8() % 9, values, nullArg ? nullptr : &b,
+                                          m_in.u8() & 1 ? nullptr : &serial));
+            break;
+        }
+        case 7: {
+            const TQ3Object state = OBJECT(Q3ControllerState_New(ref));
+            STATUS(Q3ControllerState_Restore(state));
+            STATUS(Q3ControllerState_SaveAndReset(nullArg ? tracker : state));
+            STATUS(Q3ControllerState_Restore(state));
+            if (state != nullptr)
+                STATUS(Q3Object_Dispose(state));
+            break;
+        }
+        case 8: {
+            float p = 0, o = 0;
+            STATUS(Q3Tracker_SetNotifyThresholds(tracker, m_in.value(), m_in.value()));
+            STATUS(Q3Tracker_GetNotifyThresholds(tracker, nullArg ? nullptr : &p, &o));
+            STATUS(Q3Tracker_SetActivation(tracker, static_cast<TQ3Boolean>(m_in.u8() % 3)));
+            STATUS(Q3Tracker_GetActivation(tracker, nullArg ? nullptr : &b));
+            STATUS(Q3Tracker_ChangeButtons(tracker, m_in.u8() & 1 ? nullptr : ref, m_in.u32(), m_in.u32()));
+            STATUS(Q3Tracker_GetButtons(tracker, nullArg ? nullptr : &n));
+            break;
+        }
+        case 9: {
+            const TQ3ControllerRef by = m_in.u8() & 1 ? nullptr : ref;
+            TQ3Point3D p{};
+            TQ3Vector3D d{};
+            TQ3Quaternion q{}, dq{};
+            unsigned long serial = m_in.u8();
+            STATUS(Q3Tracker_SetPosition(tracker, by, nullArg ? nullptr : &point));
+            STATUS(Q3Tracker_MovePosition(tracker, by, &vector));
+            STATUS(Q3Tracker_SetOrientation(tracker, by, &turn));
+            STATUS(Q3Tracker_MoveOrientation(tracker, by, &turn));
+            STATUS(Q3Tracker_GetPosition(tracker, nullArg ? nullptr : &p, m_in.u8() & 1 ? nullptr : &d, &b,
+                                         m_in.u8() & 1 ? nullptr : &serial));
+            STATUS(Q3Tracker_GetOrientation(tracker, &q, m_in.u8() & 1 ? nullptr : &dq, nullArg ? nullptr : &b,
+                                            m_in.u8() & 1 ? nullptr : &serial));
+            break;
+        }
+        case 10: {
+            const std::uint8_t events = m_in.u8() % 20;
+            for (std::uint8_t i = 0; i < events; ++i)
+                STATUS(Q3Tracker_SetEventCoordinates(tracker, m_in.u32(), m_in.u32(), m_in.u8() & 1 ? nullptr : &point,
+                                                     m_in.u8() & 1 ? nullptr : &turn));
+            TQ3Point3D p{};
+            TQ3Quaternion q{};
+            STATUS(Q3Tracker_GetEventCoordinates(tracker, m_in.u32(), nullArg ? nullptr : &n, &p, &q));
+            break;
+        }
+        case 11: {
+            float depth = 0;
+            TQ3Quaternion q{};
+            TQ3Boolean has = kQ3False;
+            unsigned long serial = m_in.u8();
+            STATUS(Q3CursorTracker_PrepareTracking());
+            STATUS(Q3CursorTracker_SetTrackDeltas(static_cast<TQ3Boolean>(m_in.u8() % 3)));
+            STATUS(Q3CursorTracker_GetAndClearDeltas(nullArg ? nullptr : &depth, &q, &has, &b,
+                                                     m_in.u8() & 1 ? nullptr : &serial));
+            break;
+        }
+        case 12: {
+            TQ3CursorTrackerNotifyFunc f = nullptr;
+            STATUS(Q3CursorTracker_SetNotifyFunc(m_in.u8() & 1 ? fuzzCursorNotify : nullptr));
+            STATUS(Q3CursorTracker_GetNotifyFunc(nullArg ? nullptr : &f));
+            break;
+        }
+        default:
+            // The same calls on a tracker handle that is something else.
+            STATUS(Q3Tracker_GetButtons(pick(Kind::kView), &n));
+            STATUS(Q3Controller_SetTracker(ref, pick(Kind::kAttributeSet)));
+            break;
+        }
+        if (tracker != nullptr)
+            STATUS(Q3Object_Dispose(tracker));
     }
 
     void viewHints()
@@ -5072,6 +5248,8 @@ private:
     std::vector<Held> m_held;
     std::vector<TQ3Object> m_stale;
     std::vector<void*> m_meshParts;
+    std::vector<TQ3ControllerRef> m_controllers;
+    int m_notAController = 0;
     int m_meshes = 0;
     std::vector<TQ3GroupPosition> m_positions;
     std::map<TQ3Object, CurveShape> m_curves;
