@@ -55,6 +55,10 @@ Tracker::Tracker(TQ3TrackerNotifyFunc notify, bool cursor) : m_notify(notify), m
 
 Tracker::~Tracker()
 {
+    // No controller names the cursor tracker as its own, and the registry
+    // that owns it may be mid-destruction at process exit: nothing to detach.
+    if (m_cursor)
+        return;
     std::lock_guard<std::recursive_mutex> lock(controllerMutex());
     controllers::trackerDestroyed(this);
 }
