@@ -2732,7 +2732,8 @@ private:
         case 1: {
             TQ3ControllerRef next = nullptr;
             STATUS(Q3Controller_GetListChanged(nullArg ? nullptr : &b, &n));
-            STATUS(Q3Controller_Next(m_in.u8() & 1 ? nullptr : ref, nullArg ? nullptr : &next));
+            const bool fromStart = m_in.u8() & 1;
+            STATUS(Q3Controller_Next(fromStart ? nullptr : ref, nullArg ? nullptr : &next));
             STATUS(Q3Controller_GetActivation(ref, nullArg ? nullptr : &b));
             STATUS(Q3Controller_GetValueCount(ref, nullArg ? nullptr : &n));
             STATUS(Q3Controller_HasTracker(ref, nullArg ? nullptr : &b));
@@ -2748,17 +2749,23 @@ private:
             break;
         case 3: {
             char text[16];
-            STATUS(Q3Controller_GetSignature(ref, nullArg ? nullptr : text, m_in.u8() % 17));
+            const unsigned long numChars = m_in.u8() % 17;
+            STATUS(Q3Controller_GetSignature(ref, nullArg ? nullptr : text, numChars));
             unsigned char bytes[300] = {};
             unsigned long size = m_in.u32() % 300;
-            STATUS(Q3Controller_SetChannel(ref, m_in.u8() % 6, nullArg ? nullptr : bytes, size));
-            STATUS(Q3Controller_GetChannel(ref, m_in.u8() % 6, nullArg ? nullptr : bytes, &size));
+            const unsigned long setChannel = m_in.u8() % 6;
+            const unsigned long getChannel = m_in.u8() % 6;
+            STATUS(Q3Controller_SetChannel(ref, setChannel, nullArg ? nullptr : bytes, size));
+            STATUS(Q3Controller_GetChannel(ref, getChannel, nullArg ? nullptr : bytes, &size));
             break;
         }
-        case 4:
-            STATUS(Q3Controller_SetTracker(ref, m_in.u8() & 1 ? nullptr : tracker));
-            STATUS(Q3Controller_SetButtons(ref, m_in.u32()));
+        case 4: {
+            const bool toCursor = m_in.u8() & 1;
+            STATUS(Q3Controller_SetTracker(ref, toCursor ? nullptr : tracker));
+            const unsigned long buttons = m_in.u32();
+            STATUS(Q3Controller_SetButtons(ref, buttons));
             break;
+        }
         case 5: {
             TQ3Point3D p{};
             TQ3Quaternion q{};
@@ -2772,10 +2779,12 @@ private:
         }
         case 6: {
             float values[8] = {m_in.value(), m_in.value(), m_in.value()};
-            STATUS(Q3Controller_SetValues(ref, nullArg ? nullptr : values, m_in.u8() % 9));
+            const unsigned long setCount = m_in.u8() % 9;
+            STATUS(Q3Controller_SetValues(ref, nullArg ? nullptr : values, setCount));
             unsigned long serial = m_in.u8();
-            STATUS(Q3Controller_GetValues(ref, m_in.u8() % 9, values, nullArg ? nullptr : &b,
-                                          m_in.u8() & 1 ? nullptr : &serial));
+            const unsigned long getCount = m_in.u8() % 9;
+            const bool noSerial = m_in.u8() & 1;
+            STATUS(Q3Controller_GetValues(ref, getCount, values, nullArg ? nullptr : &b, noSerial ? nullptr : &serial));
             break;
         }
         case 7: {
@@ -2789,11 +2798,16 @@ private:
         }
         case 8: {
             float p = 0, o = 0;
-            STATUS(Q3Tracker_SetNotifyThresholds(tracker, m_in.value(), m_in.value()));
+            const float positionThresh = m_in.value();
+            const float orientationThresh = m_in.value();
+            STATUS(Q3Tracker_SetNotifyThresholds(tracker, positionThresh, orientationThresh));
             STATUS(Q3Tracker_GetNotifyThresholds(tracker, nullArg ? nullptr : &p, &o));
             STATUS(Q3Tracker_SetActivation(tracker, static_cast<TQ3Boolean>(m_in.u8() % 3)));
             STATUS(Q3Tracker_GetActivation(tracker, nullArg ? nullptr : &b));
-            STATUS(Q3Tracker_ChangeButtons(tracker, m_in.u8() & 1 ? nullptr : ref, m_in.u32(), m_in.u32()));
+            const bool byApplication = m_in.u8() & 1;
+            const unsigned long buttons = m_in.u32();
+            const unsigned long mask = m_in.u32();
+            STATUS(Q3Tracker_ChangeButtons(tracker, byApplication ? nullptr : ref, buttons, mask));
             STATUS(Q3Tracker_GetButtons(tracker, nullArg ? nullptr : &n));
             break;
         }
@@ -2807,20 +2821,26 @@ private:
             STATUS(Q3Tracker_MovePosition(tracker, by, &vector));
             STATUS(Q3Tracker_SetOrientation(tracker, by, &turn));
             STATUS(Q3Tracker_MoveOrientation(tracker, by, &turn));
-            STATUS(Q3Tracker_GetPosition(tracker, nullArg ? nullptr : &p, m_in.u8() & 1 ? nullptr : &d, &b,
-                                         m_in.u8() & 1 ? nullptr : &serial));
-            STATUS(Q3Tracker_GetOrientation(tracker, &q, m_in.u8() & 1 ? nullptr : &dq, nullArg ? nullptr : &b,
-                                            m_in.u8() & 1 ? nullptr : &serial));
+            const std::uint8_t outs = m_in.u8();
+            STATUS(Q3Tracker_GetPosition(tracker, nullArg ? nullptr : &p, outs & 1 ? nullptr : &d, &b,
+                                         outs & 2 ? nullptr : &serial));
+            STATUS(Q3Tracker_GetOrientation(tracker, &q, outs & 4 ? nullptr : &dq, nullArg ? nullptr : &b,
+                                            outs & 8 ? nullptr : &serial));
             break;
         }
         case 10: {
             const std::uint8_t events = m_in.u8() % 20;
-            for (std::uint8_t i = 0; i < events; ++i)
-                STATUS(Q3Tracker_SetEventCoordinates(tracker, m_in.u32(), m_in.u32(), m_in.u8() & 1 ? nullptr : &point,
-                                                     m_in.u8() & 1 ? nullptr : &turn));
+            for (std::uint8_t i = 0; i < events; ++i) {
+                const unsigned long time = m_in.u32();
+                const unsigned long buttons = m_in.u32();
+                const std::uint8_t given = m_in.u8();
+                STATUS(Q3Tracker_SetEventCoordinates(tracker, time, buttons, given & 1 ? nullptr : &point,
+                                                     given & 2 ? nullptr : &turn));
+            }
             TQ3Point3D p{};
             TQ3Quaternion q{};
-            STATUS(Q3Tracker_GetEventCoordinates(tracker, m_in.u32(), nullArg ? nullptr : &n, &p, &q));
+            const unsigned long time = m_in.u32();
+            STATUS(Q3Tracker_GetEventCoordinates(tracker, time, nullArg ? nullptr : &n, &p, &q));
             break;
         }
         case 11: {
@@ -2830,8 +2850,9 @@ private:
             unsigned long serial = m_in.u8();
             STATUS(Q3CursorTracker_PrepareTracking());
             STATUS(Q3CursorTracker_SetTrackDeltas(static_cast<TQ3Boolean>(m_in.u8() % 3)));
+            const bool noSerial = m_in.u8() & 1;
             STATUS(Q3CursorTracker_GetAndClearDeltas(nullArg ? nullptr : &depth, &q, &has, &b,
-                                                     m_in.u8() & 1 ? nullptr : &serial));
+                                                     noSerial ? nullptr : &serial));
             break;
         }
         case 12: {
