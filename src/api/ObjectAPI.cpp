@@ -8,6 +8,7 @@
 #include "io/ClassIO.h"
 #include "io/File.h"
 #include "view/View.h"
+#include "controller/Controller.h"
 
 using namespace q3;
 using q3::api::guard;
@@ -30,8 +31,10 @@ TQ3Status Q3Exit(void)
 {
     return guardStatus(__func__, [] {
         system::exit();
-        if (!system::isInitialized())
+        if (!system::isInitialized()) {
             memory::releaseKept();
+            controllers::forgetAll();
+        }
         const unsigned long live = liveObjectCount();
         if (!system::isInitialized() && live != 0)
             errors::postWarning(kQ3WarningPossibleMemoryLeak,

@@ -25,6 +25,7 @@
 #include "Q3NURBCurveTools.h"
 #include "Q3Exchange.h"
 #include "Q3PixmapPNG.h"
+#include "QD3DController.h"
 
 #include <stdio.h>
 #include <string.h>
