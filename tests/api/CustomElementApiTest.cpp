@@ -597,6 +597,25 @@ TEST_F(CustomElementApiTest, NamesAndUrlsRoundTripThroughTextAndBinaryFiles)
     }
 }
 
+TEST_F(CustomElementApiTest, BinaryFilesDeclareTheNameClassWithATypeObject)
+{
+    TQ3GeometryObject box = own(newBox());
+    ASSERT_EQ(CENameElement_SetData(box, "declared"), kQ3Success);
+    const std::vector<unsigned char> bytes = writeObjects({box}, kQ3FileModeNormal);
+    const std::string file(bytes.begin(), bytes.end());
+    // After the 24-byte header: a Type object (its tag in the file's byte
+    // order), type -1 and the class name, before any other object.
+    ASSERT_GT(file.size(), 40u);
+    const bool little = file.compare(0, 4, "FMD3") == 0;
+    EXPECT_EQ(file.substr(24, 4), little ? std::string("epyt") : std::string("type"));
+    EXPECT_EQ(file.substr(32, 4), std::string("\xff\xff\xff\xff", 4));
+    EXPECT_EQ(file.compare(36, std::strlen(CEcNameElementName), CEcNameElementName), 0);
+    std::vector<TQ3Object> read = readAll(bytes);
+    ASSERT_EQ(read.size(), 1u);
+    EXPECT_EQ(nameOf(read[0]), "declared");
+    disposeAll(read);
+}
+
 TEST_F(CustomElementApiTest, AQuesaTestModelsGroupNameIsAName)
 {
     const std::string text = "3DMetafile ( 1 6 Normal )\n"
