@@ -83,6 +83,7 @@ enum class Op : std::uint8_t {
     kPixmapMarkers,
     kViewHints,
     kPicking,
+    kElements,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);
