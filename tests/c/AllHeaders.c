@@ -26,6 +26,8 @@
 #include "Q3Exchange.h"
 #include "Q3PixmapPNG.h"
 #include "QD3DController.h"
+#include "QD3DCustomElements.h"
+#include "QD3DExtension.h"
 
 #include <stdio.h>
 #include <string.h>

@@ -37,6 +37,7 @@
 #include "QD3D.h"
 #include "QD3DCamera.h"
 #include "QD3DController.h"
+#include "QD3DCustomElements.h"
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
@@ -648,6 +649,7 @@ private:
         case Op::kViewHints: viewHints(); break;
         case Op::kPicking: picking(); break;
         case Op::kControllers: controllers(); break;
+        case Op::kElements: elements(); break;
         case Op::kCount: break;
         }
     }
@@ -2482,6 +2484,71 @@ private:
     // failed Set leaves the data as it was), picking loops around the other
     // ops' submits, and every hit's details read back (the valid mask never
     // exceeds the pick's mask; references returned are given back).
+    // The element calls on any held object (QD3D.h's Q3Shape_ family,
+    // Quesa's Q3Object_ family) and Apple's name element: random element
+    // types (attribute types, the unknown and set elements, any long) and
+    // data, each call checked against the error contract; a handle a Get
+    // returns is disposed.
+    void elements()
+    {
+        const TQ3Object target = pick(static_cast<Kind>(m_in.u8() % kKindCount));
+        const std::uint8_t which = m_in.u8();
+        const TQ3ElementType type = which < 200 ? TQ3ElementType(which % 40) : TQ3ElementType(std::int32_t(m_in.u32()));
+        // Large enough for any element's C type; a handle read from it is
+        // checked by Q3 before use.
+        float data[8];
+        for (float& f : data)
+            f = m_in.value();
+        const bool handleType = type == kQ3AttributeTypeSurfaceShader || type == kQ3ElementTypeSet;
+        switch (m_in.u8() % 9) {
+        case 0:
+            STATUS(Q3Object_AddElement(target, type, m_in.u8() == 0 ? nullptr : data));
+            break;
+        case 1:
+            STATUS(Q3Shape_AddElement(target, type, data));
+            break;
+        case 2: {
+            float out[8] = {};
+            if (STATUS(Q3Object_GetElement(target, type, out)) == kQ3Success && handleType) {
+                TQ3Object got;
+                std::memcpy(&got, out, sizeof got);
+                Q3Object_Dispose(got);
+            }
+            break;
+        }
+        case 3:
+            QUERY(Q3Shape_ContainsElement(target, type), kQ3False);
+            break;
+        case 4: {
+            TQ3ElementType next = m_in.u8() < 200 ? TQ3ElementType(kQ3ElementTypeNone) : type;
+            for (int i = 0; i < 40; ++i)
+                if (STATUS(Q3Object_GetNextElementType(target, &next)) != kQ3Success || next == kQ3ElementTypeNone)
+                    break;
+            break;
+        }
+        case 5:
+            STATUS(Q3Shape_ClearElement(target, type));
+            break;
+        case 6:
+            STATUS(m_in.u8() < 128 ? Q3Object_EmptyElements(target) : Q3Shape_EmptyElements(target));
+            break;
+        case 7: {
+            char name[12];
+            for (char& c : name)
+                c = static_cast<char>(1 + m_in.u8() % 255);
+            name[sizeof name - 1] = '\0';
+            STATUS(CENameElement_SetData(target, m_in.u8() < 32 ? nullptr : name));
+            break;
+        }
+        case 8: {
+            char* got = nullptr;
+            if (STATUS(CENameElement_GetData(target, &got)) == kQ3Success)
+                STATUS(CENameElement_EmptyData(&got));
+            break;
+        }
+        }
+    }
+
     void picking()
     {
         const std::uint8_t call = m_in.u8() % 8;

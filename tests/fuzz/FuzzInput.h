@@ -84,6 +84,7 @@ enum class Op : std::uint8_t {
     kViewHints,
     kPicking,
     kControllers,
+    kElements,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);
