@@ -22,8 +22,10 @@
 #include "QD3DGeometry.h"
 #include "QD3DSet.h"
 #include "QD3DStorage.h"
+#include "QD3DTransform.h"
 #include "QD3DView.h"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
 #include <memory>
@@ -1131,6 +1133,120 @@ TYPED_TEST(VertexCallsContractTest, PerVertexCallsRejectBadHandlesPointersAndInd
     EXPECT_Q3_ERROR(EXPECT_EQ(G::setSet(geometry, 1, deadObject()), kQ3Failure), kQ3ErrorInvalidObject);
     this->expectSameState(before, this->stateOf(geometry));
     EXPECT_EQ(referenceCount(set), 2u);
+}
+
+/// The box of a vertex array's points, each mapped by `map`.
+template <class Map>
+TQ3BoundingBox boxOf(const TQ3Vertex3D* vertices, unsigned long count, Map map)
+{
+    TQ3BoundingBox box{{1e9f, 1e9f, 1e9f}, {-1e9f, -1e9f, -1e9f}, kQ3False};
+    for (unsigned long i = 0; i < count; ++i) {
+        const TQ3Point3D p = map(vertices[i].point);
+        box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y), std::min(box.min.z, p.z)};
+        box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y), std::max(box.max.z, p.z)};
+    }
+    return box;
+}
+
+void expectSameBox(const TQ3BoundingBox& box, const TQ3BoundingBox& expected)
+{
+    EXPECT_EQ(box.isEmpty, kQ3False);
+    EXPECT_FLOAT_EQ(box.min.x, expected.min.x);
+    EXPECT_FLOAT_EQ(box.min.y, expected.min.y);
+    EXPECT_FLOAT_EQ(box.min.z, expected.min.z);
+    EXPECT_FLOAT_EQ(box.max.x, expected.max.x);
+    EXPECT_FLOAT_EQ(box.max.y, expected.max.y);
+    EXPECT_FLOAT_EQ(box.max.z, expected.max.z);
+}
+
+TYPED_TEST(VertexCallsContractTest, ImmediateAndRetainedGeometriesBoundTheirTransformedVertices)
+{
+    using G = TypeParam;
+    // Scale by (2, 1, -1), then translate by (10, 0, 1): world = (2x + 10, y, 1 - z).
+    const TQ3Vector3D translate{10, 0, 1};
+    const TQ3Vector3D scale{2, 1, -1};
+    unsigned long n = 0;
+    const TQ3Vertex3D* given = this->sampleVertices(n);
+    const TQ3BoundingBox expected =
+        boxOf(given, n, [](const TQ3Point3D& p) { return TQ3Point3D{2 * p.x + 10, p.y, 1 - p.z}; });
+    TQ3GeometryObject geometry = this->own(G::make(&this->sample()));
+    for (bool retained : {false, true}) {
+        SCOPED_TRACE(retained ? "retained" : "immediate");
+        const TQ3BoundingBox box = this->boundsOf([&](TQ3ViewObject v) {
+            Q3TranslateTransform_Submit(&translate, v);
+            Q3ScaleTransform_Submit(&scale, v);
+            EXPECT_EQ(retained ? Q3Geometry_Submit(geometry, v) : G::submit(&this->sample(), v), kQ3Success);
+        });
+        expectSameBox(box, expected);
+    }
+}
+
+TYPED_TEST(VertexCallsContractTest, AMovedVertexIsBoundedWhereItNowIs)
+{
+    using G = TypeParam;
+    unsigned long n = 0;
+    const TQ3Vertex3D* given = this->sampleVertices(n);
+    TQ3GeometryObject geometry = this->own(G::make(&this->sample()));
+    ASSERT_NE(geometry, nullptr);
+    auto bounds = [&] {
+        return this->boundsOf([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success); });
+    };
+    auto same = [](const TQ3Point3D& p) { return p; };
+    expectSameBox(bounds(), boxOf(given, n, same));
+    const TQ3Point3D far{20, -30, 40};
+    ASSERT_EQ(G::setPosition(geometry, n - 1, &far), kQ3Success);
+    std::vector<TQ3Vertex3D> moved(given, given + n);
+    moved[n - 1].point = far;
+    expectSameBox(bounds(), boxOf(moved.data(), n, same));
+    const TQ3Point3D nan{kNaN, 0, 0};
+    EXPECT_Q3_ERROR(G::setPosition(geometry, n - 1, &nan), kQ3ErrorInvalidData);
+    expectSameBox(bounds(), boxOf(moved.data(), n, same)); // unchanged
+}
+
+// ---- Before Q3Initialize ---------------------------------------------------------------
+
+// No Q3ApiTest here: the library is not initialized.
+template <class G>
+class NotInitializedContractTest : public ::testing::Test {};
+TYPED_TEST_SUITE(NotInitializedContractTest, GeometryTypes, TypeName);
+
+template <class G>
+class VertexCallsNotInitializedContractTest : public ::testing::Test {};
+TYPED_TEST_SUITE(VertexCallsNotInitializedContractTest, VertexGeometryTypes, TypeName);
+
+TYPED_TEST(NotInitializedContractTest, EveryDataCallFailsWithNotInitialized)
+{
+    using G = TypeParam;
+    ASSERT_EQ(Q3IsInitialized(), kQ3False);
+    typename G::Data data{};
+    auto failed = [] { return Q3Error_Get(nullptr) == kQ3ErrorNotInitialized; };
+    EXPECT_EQ(G::make(&data), nullptr);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(G::submit(&data, nullptr), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(G::setData(nullptr, &data), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(G::getData(nullptr, &data), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(G::emptyData(&data), kQ3Failure);
+    EXPECT_TRUE(failed());
+}
+
+TYPED_TEST(VertexCallsNotInitializedContractTest, EveryPerVertexCallFailsWithNotInitialized)
+{
+    using G = TypeParam;
+    ASSERT_EQ(Q3IsInitialized(), kQ3False);
+    TQ3Point3D position{};
+    TQ3AttributeSet set = nullptr;
+    auto failed = [] { return Q3Error_Get(nullptr) == kQ3ErrorNotInitialized; };
+    EXPECT_EQ(G::getPosition(nullptr, 0, &position), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(G::setPosition(nullptr, 0, &position), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(G::getSet(nullptr, 0, &set), kQ3Failure);
+    EXPECT_TRUE(failed());
+    EXPECT_EQ(G::setSet(nullptr, 0, nullptr), kQ3Failure);
+    EXPECT_TRUE(failed());
 }
 
 } // namespace

@@ -2,10 +2,10 @@
 // Copyright (c) 2026 The Q3 authors
 
 // What is the polyline's own among the Q3PolyLine_* calls: its two vertices
-// at least, its rules in their order, bounds, the per-segment calls (and the
+// at least, its rules in their order, the per-segment calls (and the
 // per-vertex calls beside them), and the calls before Q3Initialize. New,
-// GetData, SetData, EmptyData, Submit, Duplicate and the per-vertex calls are
-// tried by the contract suites (GeometryContractTest.cpp).
+// GetData, SetData, EmptyData, Submit, Duplicate, bounds and the per-vertex
+// calls are tried by the contract suites (GeometryContractTest.cpp).
 
 #include "OwningApiTest.h"
 
@@ -47,17 +47,6 @@ protected:
     TQ3PolyLineData m_data{};
 };
 
-void expectBox(const TQ3BoundingBox& box, TQ3Point3D min, TQ3Point3D max)
-{
-    EXPECT_EQ(box.isEmpty, kQ3False);
-    EXPECT_NEAR(box.min.x, min.x, 1e-5f);
-    EXPECT_NEAR(box.min.y, min.y, 1e-5f);
-    EXPECT_NEAR(box.min.z, min.z, 1e-5f);
-    EXPECT_NEAR(box.max.x, max.x, 1e-5f);
-    EXPECT_NEAR(box.max.y, max.y, 1e-5f);
-    EXPECT_NEAR(box.max.z, max.z, 1e-5f);
-}
-
 // ---- Its size ----------------------------------------------------------
 
 TEST_F(PolyLineApiTest, TheSmallestPolyLineHasTwoVertices)
@@ -93,15 +82,6 @@ TEST_F(PolyLineApiTest, NewRejectsFewerThanTwoVertices)
 }
 
 // ---- Submit and bounds -------------------------------------------------------------------
-
-TEST_F(PolyLineApiTest, ImmediateAndRetainedPolyLinesBoundTheirVertices)
-{
-    expectBox(boundsOf([&](TQ3ViewObject v) { EXPECT_EQ(Q3PolyLine_Submit(&m_data, v), kQ3Success); }),
-              {-7, -5, 0}, {4, 8, 6});
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    expectBox(boundsOf([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(polyLine, v), kQ3Success); }),
-              {-7, -5, 0}, {4, 8, 6});
-}
 
 TEST_F(PolyLineApiTest, SubmitInsideALoopChecksTheDataRules)
 {
@@ -320,22 +300,6 @@ TEST_F(PolyLineApiTest, PerVertexCallsRejectBadArgumentsAndChangeNothing)
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, stray), kQ3Failure),
                     kQ3ErrorInvalidObject);
     expectSameState(before, stateOf(polyLine));
-}
-
-TEST_F(PolyLineApiTest, AMovedVertexIsBoundedWhereItNowIs)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    auto bounds = [&] {
-        return boundsOf([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(polyLine, v), kQ3Success); });
-    };
-    expectBox(bounds(), {-7, -5, 0}, {4, 8, 6});
-    const TQ3Point3D far{20, -30, 40};
-    ASSERT_EQ(Q3PolyLine_SetVertexPosition(polyLine, 1, &far), kQ3Success);
-    expectBox(bounds(), {-7, -30, 0}, {20, 8, 40});
-    const TQ3Point3D nan{kNaN, 0, 0};
-    EXPECT_Q3_ERROR(Q3PolyLine_SetVertexPosition(polyLine, 1, &nan), kQ3ErrorInvalidData);
-    expectBox(bounds(), {-7, -30, 0}, {20, 8, 40});
 }
 
 TEST(PolyLineApiUninitialized, EveryFunctionFailsWithNotInitialized)
