@@ -227,13 +227,13 @@ TQ3AttributeType Set::nextType(TQ3AttributeType type) const
 {
     if (type != kQ3AttributeTypeNone && checkedType(type)) {
         const auto after = m_custom.upper_bound(type);
-        return after == m_custom.end() ? kQ3AttributeTypeNone : after->first;
+        return after == m_custom.end() ? TQ3AttributeType{kQ3AttributeTypeNone} : after->first;
     }
     requireWalkType(type);
     for (TQ3AttributeType next = type + 1; next <= kLastStoredType; ++next)
         if (m_values.contains(next))
             return next;
-    return m_custom.empty() ? kQ3AttributeTypeNone : m_custom.begin()->first;
+    return m_custom.empty() ? TQ3AttributeType{kQ3AttributeTypeNone} : m_custom.begin()->first;
 }
 
 void Set::addCustomElement(std::unique_ptr<CustomElement> element)
