@@ -90,6 +90,22 @@ void RenderPass::loadFaces()
     m_loadedFaces = faces;
 }
 
+void RenderPass::loadAntiAlias()
+{
+    // The anti-alias style's mode: edges smooths points and lines (and
+    // surfaces drawn as edges or points), filled smooths filled triangles.
+    const TQ3AntiAliasStyleData& style = state().draw.antiAlias;
+    AntiAliasOptions options;
+    if (style.state == kQ3On) {
+        options.lines = (style.mode & kQ3AntiAliasModeMaskEdges) != 0;
+        options.triangles = (style.mode & kQ3AntiAliasModeMaskFilled) != 0;
+    }
+    if (m_loadedAntiAlias ? *m_loadedAntiAlias == options : options == AntiAliasOptions{})
+        return;
+    throwIfFailed(m_target.setAntiAlias(options), "setting the anti-aliasing");
+    m_loadedAntiAlias = options;
+}
+
 void RenderPass::drawVertices(const MeshView& mesh, const float* rgb, const RgbColor& color)
 {
     m_indices.resize(mesh.vertexCount);
@@ -148,6 +164,8 @@ bool RenderPass::loadTexture(const TextureChoice& choice)
         }
     if (loaded == nullptr) {
         const TexturePixels pixels = texture.readImage();
+        const std::vector<TexturePixels> mipmaps =
+            m_style.textureFilter == TextureFilter::kTrilinear ? texture.readMipmaps() : std::vector<TexturePixels>{};
         TextureImage image;
         image.pixels = pixels.bytes.data();
         image.layout.width = pixels.width;
@@ -158,6 +176,17 @@ bool RenderPass::loadTexture(const TextureChoice& choice)
         image.layout.byteOrder = ByteOrder(pixels.byteOrder);
         image.clampS = choice.clampS;
         image.clampT = choice.clampT;
+        image.filter = m_style.textureFilter;
+        for (const TexturePixels& mipmap : mipmaps) {
+            TextureLevel level;
+            level.pixels = mipmap.bytes.data();
+            level.layout.width = mipmap.width;
+            level.layout.height = mipmap.height;
+            level.layout.rowBytes = std::uint32_t(mipmap.rowBytes);
+            level.layout.pixelType = PixelType(mipmap.pixelType);
+            level.layout.byteOrder = ByteOrder(mipmap.byteOrder);
+            image.mipmaps.push_back(level);
+        }
         LoadedTexture entry;
         entry.texture = Ref<SharedObject>::retain(const_cast<Texture*>(&texture));
         entry.edit = texture.editIndex();
@@ -229,6 +258,7 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
         attributes.overlay(styles.highlight->values());
     const RgbColor color = toRgb(attributes.diffuseColor().value_or(TQ3ColorRGB{1.0f, 1.0f, 1.0f}));
     loadMatrix();
+    loadAntiAlias();
 
     // Per-vertex colours, with what a vertex lacks taken from its geometry
     // or the state (a highlight colours the whole geometry).

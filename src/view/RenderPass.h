@@ -38,6 +38,9 @@ struct RenderStyle {
     /// (the wireframe renderer).
     bool fillTriangles = false;
     SceneLighting lighting;
+    /// How textures are sampled (the interactive renderer's RAVE texture
+    /// filter); trilinear reads a mipmap texture's whole chain.
+    TextureFilter textureFilter = TextureFilter::kNearest;
 };
 
 /// A traversal of a rendering loop: every geometry decomposes itself
@@ -77,6 +80,8 @@ private:
     void loadMatrix();
     /// Hands the target the backfacing and orientation styles.
     void loadFaces();
+    /// Hands the target the anti-alias style (once it differs from none).
+    void loadAntiAlias();
     /// Draws pairs of indices as lines (uniform colour, or per vertex).
     void drawSegments(const MeshView& mesh, const float* rgb, const std::uint32_t* pairs, std::size_t count,
                       const RgbColor& color, const char* what);
@@ -119,6 +124,7 @@ private:
     RenderStyle m_style;
     std::optional<Matrix> m_loaded;
     std::optional<FaceOptions> m_loadedFaces;
+    std::optional<AntiAliasOptions> m_loadedAntiAlias;
     bool m_lightsLoaded = false;
     std::vector<float> m_scratch;
     std::vector<float> m_colors;
