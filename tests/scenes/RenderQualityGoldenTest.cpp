@@ -190,8 +190,9 @@ struct CheckerMipmap {
 
 // A long plane (x -4..4, z 3..-45) with the checkerboard repeated 12 times
 // along it and 2 times across, seen from just above it.
-q3test::RgbaImage drawPlane(RenderQualityGoldenTest& test, unsigned long filter,
-                            const std::function<q3test::RgbaImage(unsigned long, const std::function<void(TQ3ViewObject)>&)>& render)
+q3test::RgbaImage drawPlane(
+    unsigned long filter,
+    const std::function<q3test::RgbaImage(unsigned long, const std::function<void(TQ3ViewObject)>&)>& render)
 {
     CheckerMipmap checker;
     TQ3StorageObject storage = Q3MemoryStorage_New(checker.bytes.data(), (unsigned long)checker.bytes.size());
@@ -220,7 +221,6 @@ q3test::RgbaImage drawPlane(RenderQualityGoldenTest& test, unsigned long filter,
     Q3Object_Dispose(shader);
     Q3Object_Dispose(texture);
     Q3Object_Dispose(storage);
-    (void)test;
     return image;
 }
 
@@ -229,9 +229,9 @@ TEST_F(RenderQualityGoldenTest, AMipmappedPlaneAtAGrazingAngleUnderEachFilter)
     const auto render = [&](unsigned long filter, const std::function<void(TQ3ViewObject)>& submit) {
         return this->render({0.0f, 0.7f, 3.5f}, {0.0f, 0.0f, -20.0f}, kQ3RendererTypeInteractive, filter, submit);
     };
-    const q3test::RgbaImage fast = drawPlane(*this, 0, render);
-    const q3test::RgbaImage mid = drawPlane(*this, 1, render);
-    const q3test::RgbaImage best = drawPlane(*this, 2, render);
+    const q3test::RgbaImage fast = drawPlane(0, render);
+    const q3test::RgbaImage mid = drawPlane(1, render);
+    const q3test::RgbaImage best = drawPlane(2, render);
     EXPECT_TRUE(q3test::matchesGolden("texture_filter_fast", fast));
     EXPECT_TRUE(q3test::matchesGolden("texture_filter_mid", mid));
     EXPECT_TRUE(q3test::matchesGolden("texture_filter_best", best));
