@@ -1758,8 +1758,11 @@ Q3_EXTERN_API_C(TQ3Status) Q3Triangle_SetVertexAttributeSet(TQ3GeometryObject tr
  * A simple polygon: numVertices vertices in order around its outline, and
  * its attribute set or NULL. QuickDraw 3D asks for a convex, planar polygon;
  * Q3 also fills concave ones correctly (it triangulates the outline in the
- * plane that fits the vertices best). Its front is the side from which the
- * vertices run counterclockwise. The wireframe renderer draws its outline.
+ * plane that fits the vertices best). An outline that crosses itself gives
+ * "unpredictable results" in the QD3D Book ("Simple Polygons"); Q3 fills it
+ * by the even-odd rule, as a general polygon. Its front is the side from
+ * which the vertices run counterclockwise. The wireframe renderer draws its
+ * outline.
  *
  * The rules a TQ3PolygonData must obey wherever one is accepted, checked in
  * this order:
@@ -4389,7 +4392,8 @@ Q3_EXTERN_API_C(TQ3Status) Q3Torus_GetRatio(TQ3GeometryObject torus, float *rati
  * Q3Mesh_FaceToContour moves another face's contours into it. A face covers
  * what lies inside an odd number of its contours, measured in the plane of
  * its first contour (the even-odd rule: a contour inside another is a hole,
- * whichever way it runs). An edge joins two vertices that follow each other
+ * whichever way it runs; contours that cross are filled by the same rule, as
+ * a general polygon's). An edge joins two vertices that follow each other
  * in some contour; faces that run along the same two vertices share it. A
  * corner is a vertex of a face; it may have its own attribute set. A
  * component is a maximal set of faces connected through shared vertices,
@@ -5179,9 +5183,13 @@ typedef struct TQ3GeneralPolygonContourData TQ3GeneralPolygonContourData;
  * hint, and its attribute set or NULL. The area drawn is QuickDraw 3D's
  * even-odd fill: a point is inside when a ray from it crosses the contours an
  * odd number of times, so a contour inside another cuts a hole and one inside
- * a hole is an island. Contours may be concave. Q3 triangulates them in the
- * plane that fits all the vertices best; contours that cross each other or
- * themselves are drawn, but may then cover some area twice or miss some.
+ * a hole is an island. Contours may be concave, and may overlap each other
+ * or cross themselves: the rule decides there too (where two contours
+ * overlap is a hole; a pentagram's centre is empty), as the QD3D Book's
+ * "General Polygons" says ("contours may overlap or be disjoint ... the
+ * even-odd rule is used to determine which parts are inside"). Q3
+ * triangulates them in the plane that fits all the vertices best, adding a
+ * vertex where two sides cross, its attributes interpolated along one side.
  * Each vertex keeps its own attributes. Its front is the side from which the
  * first contour runs counterclockwise. The wireframe renderer draws every
  * contour's outline.

@@ -303,8 +303,14 @@ Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetRAVEContextHints(
     TQ3RendererObject renderer, unsigned long *RAVEContextHints);
 
 /**
- * Stores the RAVE texture filter of an interactive renderer (RAVE's
- * kQATextureFilter_Fast 0, _Mid 1, _Best 2). Q3 draws no textures.
+ * Sets how an interactive renderer samples textures, as RAVE's texture
+ * filter: kQATextureFilter_Fast (0, the default, as the QD3D Book's
+ * "Managing RAVE Features" gives it) takes the nearest texel;
+ * kQATextureFilter_Mid (1) filters bilinearly in the first image;
+ * kQATextureFilter_Best (2) filters trilinearly over a mipmap texture's
+ * chain (useMipmapping; bilinearly for a texture of one image). Any other
+ * value is stored and drawn as Fast. Takes effect from the next rendering
+ * loop.
  *
  * @param renderer                an interactive renderer.
  * @param RAVEtextureFilterValue  any value.

@@ -700,7 +700,13 @@ Q3_EXTERN_API_C(TQ3Status) Q3FillStyle_Set(TQ3StyleObject styleObject, TQ3FillSt
 /*
  * The backfacing style says what happens to the faces that point away from
  * the camera: drawn like the others (kQ3BackfacingStyleBoth, the view's
- * default), removed, or drawn with their normals reversed (flip).
+ * default), removed, or drawn with their normals reversed (flip). Under
+ * Both a back face is lit with its own normal, which points away from the
+ * camera, so the lights on the camera's side leave it dark but for ambient
+ * light, and a light behind it lights it: the QD3D Book's "Backfacing
+ * Styles" says such faces "may be illuminated only dimly or not at all,
+ * because their face normals point away from the camera", and only the flip
+ * style inverts the normals. (Quesa flips them under Both as well.)
  */
 enum TQ3BackfacingStyle { kQ3BackfacingStyleBoth = 0, kQ3BackfacingStyleRemove = 1, kQ3BackfacingStyleFlip = 2 };
 typedef enum TQ3BackfacingStyle TQ3BackfacingStyle;
@@ -1089,6 +1095,12 @@ Q3_EXTERN_API_C(TQ3Status) Q3OrientationStyle_Set(TQ3StyleObject frontFacingDire
  *            surfaces), both, or neither (0). The view's default is edges.
  *   quality  from 0 (fastest) to 1 (best, the view's default); how it is
  *            used is up to the renderer.
+ * Q3's renderers smooth by multisampling: each smoothed primitive is
+ * rasterized at 4 sample points in every pixel and the pixel is the mean of
+ * its samples. Every quality gives those 4 samples (the rasterizer Q3 pins
+ * has no other count), so images are the same at any quality and run after
+ * run. Off by default, and a frame that smooths nothing draws exactly as
+ * without the style.
  * Rules, checked in this order (kQ3ErrorInvalidParameter): state is kQ3On
  * or kQ3Off; mode has no bit but the two masks; quality is finite and
  * within 0..1.

@@ -67,6 +67,7 @@ public:
     RenderResult drawPixmap(const float*, const PixmapImage&) override { return record("drawPixmap"); }
     RenderResult setLighting(const LightingSetup&) override { return record("setLighting"); }
     RenderResult setFaceOptions(const FaceOptions&) override { return record("setFaceOptions"); }
+    RenderResult setAntiAlias(const AntiAliasOptions&) override { return record("setAntiAlias"); }
     RenderResult drawLitTriangles(const float*, const float*, const float*, std::size_t, const std::uint32_t*,
                                   std::size_t, const RgbColor&, const SurfaceShading&,
                                   const float* = nullptr) override

@@ -6,6 +6,7 @@
 #include "core/DataLayout.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -117,6 +118,35 @@ std::uint32_t Mesh::addVertex(const TQ3Point3D& position, const VertexAttributes
         m_vertexShaders.push_back(shaderNumber(attributes.shader));
     }
     return static_cast<std::uint32_t>(index);
+}
+
+std::uint32_t Mesh::addBetween(std::uint32_t a, std::uint32_t b, double t)
+{
+    // A channel's value at t, NaN (none) where the channel is missing or
+    // either end lacks it.
+    const auto between = [&](const std::vector<float>& channel, std::size_t count, std::size_t k) {
+        if (channel.empty())
+            return VertexAttributes::kNone;
+        const double x = channel[count * a + k], y = channel[count * b + k];
+        return float(x + (y - x) * t);
+    };
+    const TQ3Point3D position{between(m_positions, 3, 0), between(m_positions, 3, 1), between(m_positions, 3, 2)};
+    VertexAttributes attributes;
+    attributes.color = TQ3ColorRGB{between(m_colors, 3, 0), between(m_colors, 3, 1), between(m_colors, 3, 2)};
+    attributes.transparency =
+        TQ3ColorRGB{between(m_transparency, 3, 0), between(m_transparency, 3, 1), between(m_transparency, 3, 2)};
+    TQ3Vector3D normal{between(m_normals, 3, 0), between(m_normals, 3, 1), between(m_normals, 3, 2)};
+    const float length = std::sqrt(normal.x * normal.x + normal.y * normal.y + normal.z * normal.z);
+    if (length > 0.0f)
+        normal = TQ3Vector3D{normal.x / length, normal.y / length, normal.z / length};
+    attributes.normal = normal;
+    attributes.uv = TQ3Param2D{between(m_uvs, 2, 0), between(m_uvs, 2, 1)};
+    if (!m_vertexShaders.empty()) {
+        const std::uint32_t nearer = t < 0.5 ? a : b;
+        const std::uint32_t number = nearer < m_vertexShaders.size() ? m_vertexShaders[nearer] : 0;
+        attributes.shader = number == 0 ? nullptr : m_shaders[number - 1].get();
+    }
+    return addVertex(position, attributes);
 }
 
 std::uint32_t Mesh::shaderNumber(const SharedObject* shader)

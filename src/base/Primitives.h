@@ -149,6 +149,11 @@ public:
     /// Appends a vertex and returns its index.
     std::uint32_t addVertex(const TQ3Point3D& position, const VertexAttributes& attributes);
     void reserveVertices(std::size_t count);
+    /// Appends the vertex at t (0..1) of the way from vertex a to vertex b:
+    /// position, colours, normal (renormalized) and uv interpolated linearly,
+    /// an attribute either end lacks left out, the shader of the nearer end.
+    /// Returns its index.
+    std::uint32_t addBetween(std::uint32_t a, std::uint32_t b, double t);
 
     void addPoint(std::uint32_t v) { m_points.push_back(v); }
     void addLine(std::uint32_t a, std::uint32_t b);

@@ -74,8 +74,35 @@ struct PixmapImage {
     long yOffset = 0;
 };
 
+/// How a texture's texels are sampled (QuickDraw 3D's RAVE texture filter,
+/// Q3InteractiveRenderer_SetRAVETextureFilter). With (s, t) a pixel's texture
+/// coordinate and (u, v) = (s * width, t * height) in texels of an image:
+///   kNearest:   the texel in column floor(u) and row floor(v);
+///   kBilinear:  the four texels around (u - 1/2, v - 1/2), weighted by the
+///               fractions of those coordinates (OpenGL's GL_LINEAR);
+///   kTrilinear: bilinear in the two images around the level of detail
+///               lambda = log2 of the larger rate at which u or v changes per
+///               pixel, mixed by lambda's fraction (GL_LINEAR_MIPMAP_LINEAR;
+///               below lambda 0, bilinear in the first image).
+/// kNearest and kBilinear read the first image only.
+enum class TextureFilter { kNearest, kBilinear, kTrilinear };
+
+/// One image of a texture: `pixels` laid out as `layout` says
+/// (base/PixelConvert.h), row 0 at the top.
+struct TextureLevel {
+    const void* pixels = nullptr;
+    PixmapLayout layout;
+};
+
 /// A texture for filled triangles (a QuickDraw 3D texture shader's image):
 /// `pixels` laid out as `layout` says (base/PixelConvert.h), row 0 at the
+/// top. A triangle vertex's texture coordinate (s, t) is sampled as `filter`
+/// says, t counted down from the top row; outside 0..1 a coordinate wraps
+/// (repeats) or, when clamped, takes the edge texel. `mipmaps` holds the
+/// smaller images of a mipmap chain after this one, image i (from 1) being
+/// max(1, width >> i) x max(1, height >> i), down to 1 x 1; kTrilinear uses
+/// them (without them it is kBilinear). Alpha is decoded with the colour;
+/// drawing does not blend it.
 /// top. A triangle vertex's texture coordinate (s, t) picks the texel in
 /// column floor(s * width) and row floor(t * height) counted from the top
 /// row (nearest sampling); outside 0..1 a coordinate wraps (repeats) or, when
@@ -86,6 +113,8 @@ struct TextureImage {
     PixmapLayout layout;
     bool clampS = false;
     bool clampT = false;
+    TextureFilter filter = TextureFilter::kNearest;
+    std::vector<TextureLevel> mipmaps;
 };
 
 /// The most lights a frame is lit by (kQ3ViewMaxLights).
@@ -143,6 +172,32 @@ struct FaceOptions {
         return cullBack == other.cullBack && clockwiseFront == other.clockwiseFront;
     }
 };
+
+/// Which of the following draws are anti-aliased (QuickDraw 3D's
+/// anti-alias style): points and lines (the edges mode), filled triangles
+/// (the filled mode). An anti-aliased primitive is rasterized at
+/// kAntiAliasSamples sample points in every pixel, each covered sample
+/// taking its colour and depth, and the pixel is the mean of its samples
+/// (OpenGL multisampling, resolved into the image at endFrame). The batch
+/// (the draws since the last flush) that holds the frame's first such draw,
+/// and every later one, is multisampled whole, anti-aliased draws or not:
+/// llvmpipe keeps a single-sampled primitive's depth in one sample only, so
+/// it would not hide what is drawn behind it later. What earlier batches
+/// drew keeps its pixels. In a frame that flushes only at endFrame (a
+/// typical one), any anti-aliased draw smooths everything drawn.
+struct AntiAliasOptions {
+    bool lines = false;
+    bool triangles = false;
+    bool operator==(const AntiAliasOptions& other) const
+    {
+        return lines == other.lines && triangles == other.triangles;
+    }
+};
+
+/// The samples per pixel of anti-aliased drawing, whatever the style's
+/// quality: llvmpipe multisamples with 4 and no other count (GL_MAX_SAMPLES
+/// is 4, and 4 is the one count GL_SAMPLES lists for RGBA8).
+constexpr int kAntiAliasSamples = 4;
 
 /// Fog for the following draws (QD3DStyle.h's fog style). A pixel at
 /// eye-space distance z (the distance from the camera plane along the
@@ -297,6 +352,12 @@ public:
     /// How the following triangles are rasterized (kWrongState outside a
     /// frame).
     virtual RenderResult setFaceOptions(const FaceOptions& faces) = 0;
+    /// Which of the following draws are anti-aliased (none at beginFrame).
+    /// A frame that anti-aliases anything is drawn multisampled from the
+    /// first batch holding such a draw to its end (what an earlier batch drew
+    /// is kept, every sample of a pixel alike). Errors: kWrongState outside
+    /// a frame.
+    virtual RenderResult setAntiAlias(const AntiAliasOptions& options) = 0;
     /// Draws indexed triangles lit by the frame's lights as `shading` says:
     /// normals holds a unit normal per vertex (3 floats, local coordinates),
     /// rgb the diffuse colours (or null: `color`). Errors as drawElements,
@@ -322,11 +383,13 @@ public:
     static constexpr std::uint32_t kNoTexture = 0xFFFFFFFFu;
     /// Keeps a texture for the rest of the frame and sets `id` to its
     /// number for useTexture; the current texture does not change. The image
-    /// is decoded and copied now (the caller's pixels may go away after the
-    /// call) and uploaded to OpenGL once, when a draw first uses it, however
-    /// often the frame switches to it. Errors: kWrongState outside a frame;
-    /// kInvalidArgument for NULL pixels or an invalid layout; kOutOfMemory
-    /// (id is then unchanged).
+    /// (with its mipmaps) is decoded and copied now (the caller's pixels may
+    /// go away after the call) and uploaded to OpenGL once, when a draw first
+    /// uses it, however often the frame switches to it. Errors: kWrongState
+    /// outside a frame; kInvalidArgument for NULL pixels or an invalid layout
+    /// (of any image), a mipmap chain whose sizes do not halve down to 1 x 1
+    /// or a filter outside TextureFilter; kOutOfMemory (id is then
+    /// unchanged).
     virtual RenderResult addTexture(const TextureImage& texture, std::uint32_t& id) = 0;
     /// Makes texture `id` of this frame (addTexture) the one for the
     /// following draws that pass texture coordinates, or none with

@@ -82,11 +82,24 @@ void GeneralPolygon::decompose(const DecomposeContext&, PrimitiveSink& sink) con
             if (normal == glm::dvec3(0.0))
                 normal = mesh::newellNormal(points.data(), points.size());
             if (normal == glm::dvec3(0.0))
+                normal = mesh::spanNormal(points.data(), points.size());
+            if (normal == glm::dvec3(0.0))
                 return;
-            const std::vector<std::uint32_t> triangles =
-                mesh::triangulate(mesh::projectToPlane(points.data(), points.size(), normal), starts);
+            // The even-odd rule over contours that may overlap (the QD3D
+            // Book, "General Polygons"); points where sides cross are added
+            // with their attributes interpolated along one of the sides.
+            const mesh::Triangulation triangulation =
+                mesh::triangulateEvenOdd(mesh::projectToPlane(points.data(), points.size(), normal), starts);
+            std::vector<std::uint32_t> index(points.size() + triangulation.added.size());
+            for (std::size_t i = 0; i < points.size(); ++i)
+                index[i] = std::uint32_t(i);
+            for (std::size_t i = 0; i < triangulation.added.size(); ++i) {
+                const mesh::EdgePoint& e = triangulation.added[i];
+                index[points.size() + i] = mesh.addBetween(e.a, e.b, e.t);
+            }
+            const std::vector<std::uint32_t>& triangles = triangulation.triangles;
             for (std::size_t t = 0; t < triangles.size(); t += 3)
-                mesh.addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
+                mesh.addTriangle(index[triangles[t]], index[triangles[t + 1]], index[triangles[t + 2]]);
         },
         [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
 }

@@ -888,8 +888,13 @@ void MeshGeometry::decompose(const DecomposeContext&, PrimitiveSink& sink) const
                 }
                 const glm::dvec3 normal = mesh::newellNormal(points.data(), starts.size() > 1 ? starts[1] : points.size());
                 if (normal != glm::dvec3(0.0)) {
-                    const std::vector<std::uint32_t> triangles =
-                        mesh::triangulate(mesh::projectToPlane(points.data(), points.size(), normal), starts);
+                    // Even-odd over contours that may overlap, as a general
+                    // polygon's (points added where sides cross).
+                    const mesh::Triangulation triangulation = mesh::triangulateEvenOdd(
+                        mesh::projectToPlane(points.data(), points.size(), normal), starts);
+                    for (const mesh::EdgePoint& e : triangulation.added)
+                        order.push_back(mesh.addBetween(order[e.a], order[e.b], e.t));
+                    const std::vector<std::uint32_t>& triangles = triangulation.triangles;
                     for (std::size_t t = 0; t < triangles.size(); t += 3)
                         mesh.addTriangle(order[triangles[t]], order[triangles[t + 1]], order[triangles[t + 2]]);
                 }

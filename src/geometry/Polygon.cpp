@@ -24,12 +24,24 @@ void Polygon::decompose(const DecomposeContext&, PrimitiveSink& sink) const
             std::vector<glm::dvec3> outline(n);
             for (std::size_t i = 0; i < n; ++i)
                 outline[i] = glm::dvec3(d.vertices[i].point.x, d.vertices[i].point.y, d.vertices[i].point.z);
-            const glm::dvec3 normal = mesh::newellNormal(outline.data(), n);
+            glm::dvec3 normal = mesh::newellNormal(outline.data(), n);
+            if (normal == glm::dvec3(0.0))
+                normal = mesh::spanNormal(outline.data(), n);
             if (normal != glm::dvec3(0.0)) {
-                const std::vector<std::uint32_t> triangles =
-                    mesh::triangulate(mesh::projectToPlane(outline.data(), n, normal), {0});
+                // The Book leaves a self-crossing simple polygon unpredictable;
+                // Q3 fills it by the general polygon's even-odd rule.
+                const mesh::Triangulation triangulation =
+                    mesh::triangulateEvenOdd(mesh::projectToPlane(outline.data(), n, normal), {0});
+                std::vector<std::uint32_t> index(n + triangulation.added.size());
+                for (std::size_t i = 0; i < n; ++i)
+                    index[i] = std::uint32_t(i);
+                for (std::size_t i = 0; i < triangulation.added.size(); ++i) {
+                    const mesh::EdgePoint& e = triangulation.added[i];
+                    index[n + i] = mesh.addBetween(e.a, e.b, e.t);
+                }
+                const std::vector<std::uint32_t>& triangles = triangulation.triangles;
                 for (std::size_t t = 0; t < triangles.size(); t += 3)
-                    mesh.addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
+                    mesh.addTriangle(index[triangles[t]], index[triangles[t + 1]], index[triangles[t + 2]]);
             }
             for (std::size_t i = 0; i < n; ++i)
                 mesh.addEdge(std::uint32_t(i), std::uint32_t((i + 1) % n));

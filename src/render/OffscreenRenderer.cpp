@@ -55,6 +55,7 @@
 
 #include "render/OffscreenRenderer.h"
 
+#include "core/EnumValue.h"
 #include "render/GlApi.h"
 #include "render/GlContext.h"
 #include "render/LitProgram.h"
@@ -204,6 +205,7 @@ public:
     RenderResult drawPixmap(const float* anchor, const PixmapImage& image);
     RenderResult setLighting(const LightingSetup& lighting);
     RenderResult setFaceOptions(const FaceOptions& faces);
+    RenderResult setAntiAlias(const AntiAliasOptions& options);
     RenderResult addTexture(const TextureImage& texture, std::uint32_t& id);
     RenderResult useTexture(std::uint32_t id);
     RenderResult setFog(const FogSetup& fog);
@@ -262,6 +264,10 @@ private:
         std::uint32_t height = 0;
         bool clampS = false;
         bool clampT = false;
+        TextureFilter filter = TextureFilter::kNearest;
+        // The mipmap chain's images after the first, decoded the same way
+        // (image i + 1 is max(1, width >> (i + 1)) wide).
+        std::vector<std::vector<std::uint8_t>> mipmaps;
         bool hasAlpha = false; // a texel's alpha is below 1
     };
 
@@ -283,11 +289,13 @@ private:
         RgbColor color;
         GLint first;
         GLsizei count;
+        bool multisample = false; // anti-aliased (AntiAliasOptions)
         std::uint32_t fog = kNoFog; // indexes m_fogs
 
         bool drawsLike(const DrawCommand& other) const
         {
             return primitive == other.primitive && indexed == other.indexed && smooth == other.smooth &&
+                   multisample == other.multisample &&
                    fog == other.fog &&
                    plain == other.plain && pointSize == other.pointSize && matrixIndex == other.matrixIndex &&
                    shading == other.shading && texture == other.texture && faces == other.faces &&
@@ -303,9 +311,23 @@ private:
     void resetBatch();
     // Binds m_textures[index], uploading it first if this frame has not.
     void bindTexture(std::uint32_t index);
+    // Uploads a texture's images into the bound texture object and sets its
+    // sampling (filter, wrap modes).
+    static void uploadTexture(const BatchTexture& texture);
+    // Checks and decodes the mipmap chain of `texture` into `decoded`.
+    static RenderResult decodeMipmaps(const TextureImage& texture, BatchTexture& decoded);
     // Drops the frame's textures (their OpenGL names are deleted by the next
     // flush, when the context is current).
     void forgetTextures();
+    // Anti-aliasing (see setAntiAlias). Before a flush draws: makes the
+    // frame's multisample framebuffer the one drawn into once the batch
+    // holds an anti-aliased command, copying what the image holds into it
+    // the first time; false with `error` set when OpenGL cannot make it.
+    bool prepareMultisample(std::string& error);
+    // At endFrame: resolves the multisample framebuffer into the image.
+    void resolveMultisample();
+    // Forgets the multisample objects (gone with the context).
+    void forgetMultisample();
     template <class T>
     static void reserve(std::unique_ptr<T[]>& storage, std::size_t& capacity, std::size_t used, std::size_t needed);
 
@@ -408,6 +430,15 @@ private:
     // not uploaded yet), and names of an earlier frame left to delete.
     std::vector<GLuint> m_textureNames;
     std::vector<GLuint> m_staleTextureNames;
+    // Anti-aliasing: the current options, whether this frame draws into the
+    // multisample framebuffer, and its OpenGL objects (0: not made yet in
+    // this context), with the program that copies the image into it.
+    AntiAliasOptions m_antiAlias;
+    bool m_multisampling = false;
+    GLuint m_msFramebuffer = 0;
+    GLuint m_msColor = 0;
+    GLuint m_msDepth = 0;
+    GLuint m_copyProgram = 0;
 };
 
 RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::uint32_t height)
@@ -454,6 +485,7 @@ void OffscreenRenderer::Impl::destroyContext()
     m_context.reset();
     m_program.forget();
     m_texturedProgram.forget();
+    forgetMultisample();
     m_unlitPrograms[0].forget();
     m_unlitPrograms[1].forget();
     // The context's textures went with it.
@@ -536,6 +568,8 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
     m_clearedInGl = false;
     m_lighting = LightingSetup{};
     m_faces = FaceOptions{};
+    m_antiAlias = AntiAliasOptions{};
+    m_multisampling = false;
     forgetTextures();
     forgetTranslucent();
     resetBatch();
@@ -695,6 +729,7 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
     DrawCommand command{r.primitive, indexed, r.smooth, plain, r.pointSize, m_currentMatrix, shading,
                         textured ? m_currentTexture : kUntextured, faces, plain ? r.color : RgbColor{}, 0,
                         GLsizei(count)};
+    command.multisample = r.primitive == Primitive::kTriangles ? m_antiAlias.triangles : m_antiAlias.lines;
     command.fog = m_currentFog;
     if (indexed) {
         command.first = GLint(m_indices.size());
@@ -888,15 +923,20 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             resetBatch();
             return RenderResult::failure(RenderStatus::kContextFailure, "making the OpenGL context current failed");
         }
+        if (!m_multisampling)
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (!m_clearedInGl) {
             startFrameInGl();
             m_clearedInGl = true;
         }
+        std::string multisampleError;
+        if (!prepareMultisample(multisampleError))
+            result = RenderResult::failure(RenderStatus::kGraphicsError, multisampleError);
         if (!m_staleTextureNames.empty()) {
             glDeleteTextures(GLsizei(m_staleTextureNames.size()), m_staleTextureNames.data());
             m_staleTextureNames.clear();
         }
-        if (!m_commands.empty()) {
+        if (!m_commands.empty() && result) {
             // Which arrays are bound: -1 none yet, 0 m_vertices, 1 m_positions.
             int loadedArrays = -1;
             RgbColor loadedColor;
@@ -1044,6 +1084,9 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
         glFrontFace(GL_CCW);
         glEnableClientState(GL_COLOR_ARRAY);
         glEnableClientState(GL_NORMAL_ARRAY);
+        glDisable(GL_MULTISAMPLE);
+        if (finish && m_multisampling)
+            resolveMultisample();
         // The finished image into m_image.
         if (finish)
             m_context->finish(m_image.data());
@@ -1056,10 +1099,6 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
     return result;
 }
 
-// Texels are sampled nearest: linear filtering would blend neighbouring
-// texels with weights llvmpipe rounds in its own way, and nearest gives
-// images that the tests can check texel by texel. Only the first image is
-// uploaded (no mipmaps), for the same reason.
 void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
 {
     if (m_textureNames.size() < m_textures.size())
@@ -1069,16 +1108,81 @@ void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
         glBindTexture(GL_TEXTURE_2D, name);
         return;
     }
-    const BatchTexture& texture = m_textures[index];
     glGenTextures(1, &name);
     glBindTexture(GL_TEXTURE_2D, name);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    uploadTexture(m_textures[index]);
+}
+
+// The filters are OpenGL's own (RenderTarget.h gives their formulas):
+// llvmpipe computes the weights in fixed point (8 bits of fraction), which
+// is reproducible run after run and which the tests allow for. Only the
+// trilinear filter uploads the mipmaps; the others read the first image, so
+// GL_TEXTURE_MAX_LEVEL is 0 for them (a texture is then complete with one
+// image).
+void OffscreenRenderer::Impl::uploadTexture(const BatchTexture& texture)
+{
+    const bool mipmapped = texture.filter == TextureFilter::kTrilinear && !texture.mipmaps.empty();
+    const GLint magnify = texture.filter == TextureFilter::kNearest ? GL_NEAREST : GL_LINEAR;
+    const GLint minify = mipmapped ? GL_LINEAR_MIPMAP_LINEAR : magnify;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minify);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, magnify);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, texture.clampS ? GL_CLAMP_TO_EDGE : GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, texture.clampT ? GL_CLAMP_TO_EDGE : GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mipmapped ? GLint(texture.mipmaps.size()) : 0);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, GLsizei(texture.width), GLsizei(texture.height), 0, GL_RGBA,
                  GL_UNSIGNED_BYTE, texture.rgba.data());
+    if (!mipmapped)
+        return;
+    for (std::size_t i = 0; i < texture.mipmaps.size(); ++i) {
+        const unsigned shift = unsigned(i + 1);
+        glTexImage2D(GL_TEXTURE_2D, GLint(shift), GL_RGBA8, GLsizei(std::max(1u, texture.width >> shift)),
+                     GLsizei(std::max(1u, texture.height >> shift)), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     texture.mipmaps[i].data());
+    }
+}
+
+RenderResult OffscreenRenderer::Impl::decodeMipmaps(const TextureImage& texture, BatchTexture& decoded)
+{
+    const long filter = enumValue(texture.filter);
+    if (filter < long(TextureFilter::kNearest) || filter > long(TextureFilter::kTrilinear))
+        return invalid("texture filter " + std::to_string(filter) + " is not a TextureFilter");
+    decoded.filter = texture.filter;
+    if (texture.mipmaps.empty())
+        return RenderResult::success();
+    std::uint32_t width = decoded.width, height = decoded.height;
+    for (std::size_t i = 0; i < texture.mipmaps.size(); ++i) {
+        const TextureLevel& level = texture.mipmaps[i];
+        const std::string name = "mipmap " + std::to_string(i + 1);
+        if (width == 1 && height == 1)
+            return invalid(name + " follows a 1 x 1 image");
+        width = std::max(1u, width / 2);
+        height = std::max(1u, height / 2);
+        if (level.pixels == nullptr)
+            return invalid(name + "'s pixels are NULL");
+        const RenderResult valid = validatePixmapLayout(level.layout);
+        if (!valid)
+            return invalid(name + ": " + valid.message);
+        if (level.layout.width != width || level.layout.height != height)
+            return invalid(name + " is " + std::to_string(level.layout.width) + " x " +
+                           std::to_string(level.layout.height) + ", not " + std::to_string(width) + " x " +
+                           std::to_string(height));
+    }
+    if (width != 1 || height != 1)
+        return invalid("the mipmap chain stops before a 1 x 1 image");
+    // Only the trilinear filter reads them.
+    if (texture.filter != TextureFilter::kTrilinear)
+        return RenderResult::success();
+    decoded.mipmaps.resize(texture.mipmaps.size());
+    for (std::size_t i = 0; i < texture.mipmaps.size(); ++i) {
+        const TextureLevel& level = texture.mipmaps[i];
+        decoded.mipmaps[i].resize(std::size_t(level.layout.width) * level.layout.height * 4);
+        const PixelRect all{0, 0, int(level.layout.width), int(level.layout.height)};
+        const RenderResult read = readPixmapToRgba8(level.pixels, level.layout, all, decoded.mipmaps[i].data(),
+                                                    std::size_t(level.layout.width) * 4);
+        if (!read)
+            return read;
+    }
+    return RenderResult::success();
 }
 
 RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, std::uint32_t& id)
@@ -1105,6 +1209,9 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
                                                 std::size_t(decoded.width) * 4);
     if (!read)
         return read;
+    const RenderResult mipmaps = decodeMipmaps(texture, decoded);
+    if (!mipmaps)
+        return mipmaps;
     for (std::size_t i = 3; i < decoded.rgba.size() && !decoded.hasAlpha; i += 4)
         decoded.hasAlpha = decoded.rgba[i] != 255;
     m_textures.push_back(std::move(decoded));
@@ -1186,6 +1293,188 @@ RenderResult OffscreenRenderer::Impl::setFaceOptions(const FaceOptions& faces)
         return RenderResult::failure(RenderStatus::kWrongState, "setFaceOptions called outside a frame");
     m_faces = faces;
     return RenderResult::success();
+}
+
+RenderResult OffscreenRenderer::Impl::setAntiAlias(const AntiAliasOptions& options)
+{
+    if (!m_inFrame)
+        return RenderResult::failure(RenderStatus::kWrongState, "setAntiAlias called outside a frame");
+    m_antiAlias = options;
+    return RenderResult::success();
+}
+
+namespace {
+
+// Copies the window-system image (colour and depth, bound as textures 0 and
+// 1) into the multisample framebuffer, texel (x, y) to pixel (x, y), every
+// sample of a pixel alike (a quad over the whole image covers every sample).
+const char* const kCopyVertexShader = R"(#version 130
+void main() { gl_Position = gl_Vertex; }
+)";
+const char* const kCopyFragmentShader = R"(#version 130
+uniform sampler2D colour;
+uniform sampler2D depth;
+void main()
+{
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    gl_FragColor = texelFetch(colour, texel, 0);
+    gl_FragDepth = texelFetch(depth, texel, 0).r;
+}
+)";
+
+GLuint compileCopyProgram(std::string& error)
+{
+    const char* sources[2] = {kCopyVertexShader, kCopyFragmentShader};
+    const GLenum kinds[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+    const GLuint program = glCreateProgram();
+    for (int i = 0; i < 2; ++i) {
+        const GLuint shader = glCreateShader(kinds[i]);
+        glShaderSource(shader, 1, &sources[i], nullptr);
+        glCompileShader(shader);
+        GLint ok = GL_FALSE;
+        glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+        if (ok != GL_TRUE) {
+            char log[512] = {0};
+            glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+            error = std::string("the anti-aliasing copy shader does not compile: ") + log;
+            glDeleteShader(shader);
+            glDeleteProgram(program);
+            return 0;
+        }
+        glAttachShader(program, shader);
+        glDeleteShader(shader);
+    }
+    glLinkProgram(program);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (linked != GL_TRUE) {
+        error = "the anti-aliasing copy program does not link";
+        glDeleteProgram(program);
+        return 0;
+    }
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "colour"), 0);
+    glUniform1i(glGetUniformLocation(program, "depth"), 1);
+    glUseProgram(0);
+    return program;
+}
+
+} // namespace
+
+// The frame switches to multisampling at the first flush that draws an
+// anti-aliased command, and stays there to its end. Up to then it was drawn
+// into the window-system framebuffer (at least cleared), so that image,
+// colour and depth, is copied into every sample of the multisample one; a
+// frame without anti-aliasing never leaves the window-system framebuffer and
+// draws exactly as before. From the switch on every primitive is
+// multisampled, anti-aliased or not: with GL_MULTISAMPLE off, llvmpipe (Mesa
+// 22.3, measured) writes a fragment's colour to all of a pixel's samples but
+// its depth to one only, so a primitive drawn so would not hide what is
+// drawn behind it later.
+bool OffscreenRenderer::Impl::prepareMultisample(std::string& error)
+{
+    if (m_multisampling) {
+        glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
+        glEnable(GL_MULTISAMPLE);
+        return true;
+    }
+    bool needed = false;
+    for (const DrawCommand& command : m_commands)
+        needed = needed || command.multisample;
+    if (!needed)
+        return true;
+    // Made once per context, which has one size.
+    if (m_msFramebuffer == 0) {
+        glGenFramebuffers(1, &m_msFramebuffer);
+        glGenRenderbuffers(1, &m_msColor);
+        glGenRenderbuffers(1, &m_msDepth);
+        glBindRenderbuffer(GL_RENDERBUFFER, m_msColor);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, kAntiAliasSamples, GL_RGBA8, GLsizei(m_width),
+                                         GLsizei(m_height));
+        glBindRenderbuffer(GL_RENDERBUFFER, m_msDepth);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, kAntiAliasSamples, GL_DEPTH_COMPONENT24,
+                                         GLsizei(m_width), GLsizei(m_height));
+        glBindRenderbuffer(GL_RENDERBUFFER, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_msColor);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_msDepth);
+        const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (status != GL_FRAMEBUFFER_COMPLETE) {
+            error = "the multisample framebuffer for anti-aliasing is incomplete";
+            return false;
+        }
+    }
+    if (m_copyProgram == 0) {
+        m_copyProgram = compileCopyProgram(error);
+        if (m_copyProgram == 0)
+            return false;
+    }
+
+    // The image as it is, colour and depth, into two textures.
+    GLuint copies[2] = {0, 0};
+    glGenTextures(2, copies);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, copies[1]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 0, 0, GLsizei(m_width), GLsizei(m_height), 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, copies[0]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, GLsizei(m_width), GLsizei(m_height), 0);
+
+    // Drawn over the whole multisample image, every sample written.
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+    const GLboolean depthTest = glIsEnabled(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_MULTISAMPLE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glViewport(0, 0, GLsizei(m_width), GLsizei(m_height));
+    glUseProgram(m_copyProgram);
+    glBegin(GL_TRIANGLE_STRIP);
+    glVertex2f(-1.0f, -1.0f);
+    glVertex2f(1.0f, -1.0f);
+    glVertex2f(-1.0f, 1.0f);
+    glVertex2f(1.0f, 1.0f);
+    glEnd();
+    glUseProgram(0);
+    glDepthFunc(GL_LEQUAL);
+    if (!depthTest)
+        glDisable(GL_DEPTH_TEST);
+    if (scissor)
+        glEnable(GL_SCISSOR_TEST);
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glDeleteTextures(2, copies);
+    m_multisampling = true;
+    return true;
+}
+
+void OffscreenRenderer::Impl::resolveMultisample()
+{
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_msFramebuffer);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glDisable(GL_SCISSOR_TEST);
+    glBlitFramebuffer(0, 0, GLint(m_width), GLint(m_height), 0, 0, GLint(m_width), GLint(m_height),
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    m_multisampling = false;
+}
+
+void OffscreenRenderer::Impl::forgetMultisample()
+{
+    m_msFramebuffer = m_msColor = m_msDepth = 0;
+    m_copyProgram = 0;
+    m_multisampling = false;
 }
 
 RenderResult OffscreenRenderer::Impl::setFog(const FogSetup& fog)
@@ -1682,6 +1971,11 @@ RenderResult OffscreenRenderer::useTexture(std::uint32_t id)
 RenderResult OffscreenRenderer::setFaceOptions(const FaceOptions& faces)
 {
     return m_impl->setFaceOptions(faces);
+}
+
+RenderResult OffscreenRenderer::setAntiAlias(const AntiAliasOptions& options)
+{
+    return m_impl->setAntiAlias(options);
 }
 
 RenderResult OffscreenRenderer::setFog(const FogSetup& fog)

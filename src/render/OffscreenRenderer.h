@@ -145,6 +145,7 @@ public:
     /// How the following triangles are rasterized (kWrongState outside a
     /// frame).
     RenderResult setFaceOptions(const FaceOptions& faces) override;
+    RenderResult setAntiAlias(const AntiAliasOptions& options) override;
     /// Draws indexed triangles lit by the frame's lights as `shading` says:
     /// normals holds a unit normal per vertex (3 floats, local coordinates),
     /// rgb the diffuse colours (or null: `color`). Errors as drawElements,

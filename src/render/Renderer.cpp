@@ -65,6 +65,19 @@ void InteractiveRenderer::setRAVEContextHints(unsigned long hints)
     markEdited();
 }
 
+TextureFilter InteractiveRenderer::textureFilter() const
+{
+    // RAVE's kQATextureFilter_Fast, _Mid and _Best (RAVE.h).
+    switch (m_settings.raveTextureFilter) {
+    case 1:
+        return TextureFilter::kBilinear;
+    case 2:
+        return TextureFilter::kTrilinear;
+    default:
+        return TextureFilter::kNearest;
+    }
+}
+
 void InteractiveRenderer::setRAVETextureFilter(unsigned long filter)
 {
     m_settings.raveTextureFilter = filter;

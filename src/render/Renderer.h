@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DRenderer.h"
+#include "base/RenderTarget.h"
 #include "core/Object.h"
 
 namespace q3 {
@@ -27,6 +28,8 @@ public:
     /// one that draws only their edges. Curves, lines and points are drawn as
     /// lines and points by both.
     virtual bool fillsSurfaces() const = 0;
+    /// How the renderer samples textures: nearest unless it says otherwise.
+    virtual TextureFilter textureFilter() const { return TextureFilter::kNearest; }
 
 protected:
     Renderer() = default;
@@ -43,9 +46,10 @@ public:
     bool fillsSurfaces() const override { return false; }
 };
 
-/// The interactive renderer. Its RAVE-era settings (QD3DRenderer.h) are
-/// recorded and returned but do not change the image. Invariant: the
-/// double-buffer bypass is exactly kQ3True or kQ3False.
+/// The interactive renderer. Of its RAVE-era settings (QD3DRenderer.h) the
+/// texture filter decides how textures are sampled; the others are recorded
+/// and returned but do not change the image. Invariant: the double-buffer
+/// bypass is exactly kQ3True or kQ3False.
 class InteractiveRenderer final : public Renderer {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3RendererTypeInteractive;
@@ -63,6 +67,9 @@ public:
     const ClassInfo& classInfo() const override { return kInteractiveRendererClass; }
     Object* duplicate() const override;
     bool fillsSurfaces() const override { return true; }
+    /// kQATextureFilter_Fast (0, the default) nearest, _Mid (1) bilinear,
+    /// _Best (2) trilinear; any other value as the default.
+    TextureFilter textureFilter() const override;
 
     const Settings& settings() const { return m_settings; }
     void setCSGEquation(TQ3CSGEquation equation);

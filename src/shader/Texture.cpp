@@ -216,6 +216,18 @@ TexturePixels MipmapTexture::readImage() const
                       m_mipmap.byteOrder);
 }
 
+std::vector<TexturePixels> MipmapTexture::readMipmaps() const
+{
+    std::vector<TexturePixels> images;
+    const unsigned count = imageCount(m_mipmap);
+    for (unsigned i = 1; i < count; ++i) {
+        const TQ3MipmapImage& image = m_mipmap.mipmaps[i];
+        images.push_back(readPixels(m_mipmap.image, image.offset, image.width, image.height, image.rowBytes,
+                                    m_mipmap.pixelType, m_mipmap.byteOrder));
+    }
+    return images;
+}
+
 TQ3Mipmap MipmapTexture::mipmap() const
 {
     TQ3Mipmap copy = m_mipmap;

@@ -46,6 +46,10 @@ public:
     /// The first image, read from the storage now; throws
     /// kQ3ErrorInvalidData when the storage no longer holds it.
     virtual TexturePixels readImage() const = 0;
+    /// The images after the first (a mipmap chain's smaller ones, each half
+    /// the one before, down to 1 x 1), read now; none for a texture of one
+    /// image. Throws as readImage.
+    virtual std::vector<TexturePixels> readMipmaps() const { return {}; }
 
 protected:
     Texture() = default;
@@ -93,6 +97,8 @@ public:
     unsigned long width() const override { return m_mipmap.mipmaps[0].width; }
     unsigned long height() const override { return m_mipmap.mipmaps[0].height; }
     TexturePixels readImage() const override;
+    /// With useMipmapping, mipmaps[1] onwards.
+    std::vector<TexturePixels> readMipmaps() const override;
 
     /// How many images the data rules read: 1, or with useMipmapping one
     /// more than log2 of the first image's larger side.

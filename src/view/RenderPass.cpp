@@ -92,6 +92,22 @@ void RenderPass::loadFaces()
     m_loadedFaces = faces;
 }
 
+void RenderPass::loadAntiAlias()
+{
+    // The anti-alias style's mode: edges smooths points and lines (and
+    // surfaces drawn as edges or points), filled smooths filled triangles.
+    const TQ3AntiAliasStyleData& style = state().draw.antiAlias;
+    AntiAliasOptions options;
+    if (style.state == kQ3On) {
+        options.lines = (style.mode & kQ3AntiAliasModeMaskEdges) != 0;
+        options.triangles = (style.mode & kQ3AntiAliasModeMaskFilled) != 0;
+    }
+    if (m_loadedAntiAlias ? *m_loadedAntiAlias == options : options == AntiAliasOptions{})
+        return;
+    throwIfFailed(m_target.setAntiAlias(options), "setting the anti-aliasing");
+    m_loadedAntiAlias = options;
+}
+
 void RenderPass::loadFog()
 {
     const TQ3FogStyleData& fog = state().draw.fog;
@@ -242,6 +258,8 @@ bool RenderPass::loadTexture(const TextureChoice& choice)
         }
     if (loaded == nullptr) {
         const TexturePixels pixels = texture.readImage();
+        const std::vector<TexturePixels> mipmaps =
+            m_style.textureFilter == TextureFilter::kTrilinear ? texture.readMipmaps() : std::vector<TexturePixels>{};
         TextureImage image;
         image.pixels = pixels.bytes.data();
         image.layout.width = pixels.width;
@@ -252,6 +270,17 @@ bool RenderPass::loadTexture(const TextureChoice& choice)
         image.layout.byteOrder = ByteOrder(pixels.byteOrder);
         image.clampS = choice.clampS;
         image.clampT = choice.clampT;
+        image.filter = m_style.textureFilter;
+        for (const TexturePixels& mipmap : mipmaps) {
+            TextureLevel level;
+            level.pixels = mipmap.bytes.data();
+            level.layout.width = mipmap.width;
+            level.layout.height = mipmap.height;
+            level.layout.rowBytes = std::uint32_t(mipmap.rowBytes);
+            level.layout.pixelType = PixelType(mipmap.pixelType);
+            level.layout.byteOrder = ByteOrder(mipmap.byteOrder);
+            image.mipmaps.push_back(level);
+        }
         LoadedTexture entry;
         entry.texture = Ref<SharedObject>::retain(const_cast<Texture*>(&texture));
         entry.edit = texture.editIndex();
@@ -324,6 +353,7 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
         attributes.overlay(styles.highlight->values());
     const RgbColor color = toRgb(attributes.diffuseColor().value_or(TQ3ColorRGB{1.0f, 1.0f, 1.0f}));
     loadMatrix();
+    loadAntiAlias();
     loadFog();
 
     // Per-vertex colours, with what a vertex lacks taken from its geometry

@@ -38,6 +38,9 @@ struct RenderStyle {
     /// (the wireframe renderer).
     bool fillTriangles = false;
     SceneLighting lighting;
+    /// How textures are sampled (the interactive renderer's RAVE texture
+    /// filter); trilinear reads a mipmap texture's whole chain.
+    TextureFilter textureFilter = TextureFilter::kNearest;
 };
 
 /// A traversal of a rendering loop: every geometry decomposes itself
@@ -77,6 +80,8 @@ private:
     void loadMatrix();
     /// Hands the target the backfacing and orientation styles.
     void loadFaces();
+    /// Hands the target the anti-alias style (once it differs from none).
+    void loadAntiAlias();
     /// Hands the target the state's fog style if it changed.
     void loadFog();
     /// The opacity of the mesh's vertices (m_opacity): each vertex's
@@ -127,6 +132,7 @@ private:
     RenderStyle m_style;
     std::optional<Matrix> m_loaded;
     std::optional<FaceOptions> m_loadedFaces;
+    std::optional<AntiAliasOptions> m_loadedAntiAlias;
     std::optional<TQ3FogStyleData> m_loadedFog;
     /// The eye distance as a function of clip coordinates (FogSetup's
     /// planes), computed when fog is first drawn.

@@ -240,6 +240,7 @@ void View::startRendering()
     const bool fills = m_renderer->fillsSurfaces();
     RenderStyle style;
     style.fillTriangles = fills;
+    style.textureFilter = m_renderer->textureFilter();
     FrameOptions options;
     options.depthTest = fills;
 

@@ -429,4 +429,30 @@ TEST_F(LightingRenderTest, FlippedBackFacesAreLitWithTheReversedNormal)
     EXPECT_EQ(c.r + c.g + c.b, 0);
 }
 
+// The QD3D Book ("Backfacing Styles"): under kQ3BackfacingStyleBoth back faces
+// are drawn with their own normals, "illuminated only dimly or not at all,
+// because their face normals point away from the camera"; only the flip
+// style inverts them. So a light on the side a back face's normal points to
+// (behind it, seen from the camera) lights it, and flipping turns it away.
+TEST_F(LightingRenderTest, BackFacesUnderBothKeepTheirNormalAsTheBookSays)
+{
+    Light directional;
+    directional.kind = Light::kDirectional;
+    directional.direction = {0.5, 0, 1}; // from behind the square, towards the camera
+    Surface s;
+    s.diffuse = {0.9, 0.5, 0.2};
+    TQ3LightObject d = newLight(directional);
+    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
+    TQ3AttributeSet set = surfaceSet(s);
+    // Facing away, its normal -z points at the light: lit by it.
+    expectLit(render({d}, lambert, set, kQ3BackfacingStyleBoth, true), {directional}, s, {0, 0, -1},
+              "back face lit from behind, both");
+    const Pixmap both = render({d}, lambert, set, kQ3BackfacingStyleBoth, true);
+    const Rgba lit = both.at(kSize / 2, kSize / 2);
+    EXPECT_GT(lit.r, 100) << "the light behind the back face lights it";
+    // Flipped, its normal +z points away from the light: unlit.
+    expectLit(render({d}, lambert, set, kQ3BackfacingStyleFlip, true), {directional}, s, m_up,
+              "back face lit from behind, flip");
+}
+
 } // namespace

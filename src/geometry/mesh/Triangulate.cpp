@@ -33,6 +33,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 namespace q3::mesh {
 
@@ -390,6 +392,26 @@ glm::dvec3 newellNormal(const glm::dvec3* points, std::size_t count)
     return length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
 }
 
+glm::dvec3 spanNormal(const glm::dvec3* points, std::size_t count)
+{
+    if (count < 3)
+        return glm::dvec3(0.0);
+    // The point farthest from the first, then the point farthest from the
+    // line through both: the widest triangle of the three spans the plane.
+    std::size_t far = 0;
+    for (std::size_t i = 1; i < count; ++i)
+        if (glm::length(points[i] - points[0]) > glm::length(points[far] - points[0]))
+            far = i;
+    glm::dvec3 best(0.0);
+    for (std::size_t i = 1; i < count; ++i) {
+        const glm::dvec3 n = glm::cross(points[far] - points[0], points[i] - points[0]);
+        if (glm::length(n) > glm::length(best))
+            best = n;
+    }
+    const double length = glm::length(best);
+    return length > 0.0 && std::isfinite(length) ? best / length : glm::dvec3(0.0);
+}
+
 std::vector<glm::dvec2> projectToPlane(const glm::dvec3* points, std::size_t count, const glm::dvec3& n)
 {
     // u: perpendicular to n, built from the axis n is least aligned with.
@@ -477,6 +499,136 @@ std::vector<std::uint32_t> triangulate(const std::vector<glm::dvec2>& points,
         clipper.clip(start);
     }
     return triangles;
+}
+
+namespace {
+
+// One side of a contour between two distinct finite points, lower end first
+// (y, then x).
+struct Side {
+    std::uint32_t a; // the caller's index of the lower end
+    std::uint32_t b; // of the upper end
+};
+
+// True when the open segments p0p1 and q0q1 cross at one point inside both.
+bool crosses(const glm::dvec2& p0, const glm::dvec2& p1, const glm::dvec2& q0, const glm::dvec2& q1)
+{
+    const double d1 = cross(p0, p1, q0), d2 = cross(p0, p1, q1);
+    const double d3 = cross(q0, q1, p0), d4 = cross(q0, q1, p1);
+    return ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0));
+}
+
+} // namespace
+
+Triangulation triangulateEvenOdd(const std::vector<glm::dvec2>& points, const std::vector<std::size_t>& contourStarts)
+{
+    // The sides of every contour, repeated and non-finite points skipped.
+    std::vector<Side> sides;
+    for (std::size_t c = 0; c < contourStarts.size(); ++c) {
+        const std::size_t begin = contourStarts[c];
+        const std::size_t end = c + 1 < contourStarts.size() ? contourStarts[c + 1] : points.size();
+        std::vector<std::uint32_t> ring;
+        for (std::size_t i = begin; i < end && i < points.size(); ++i)
+            if (std::isfinite(points[i].x) && std::isfinite(points[i].y) &&
+                (ring.empty() || points[ring.back()] != points[i]))
+                ring.push_back(std::uint32_t(i));
+        while (ring.size() > 1 && points[ring.front()] == points[ring.back()])
+            ring.pop_back();
+        if (ring.size() < 2)
+            continue;
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+            std::uint32_t a = ring[i], b = ring[(i + 1) % ring.size()];
+            const glm::dvec2 &pa = points[a], &pb = points[b];
+            if (pb.y < pa.y || (pb.y == pa.y && pb.x < pa.x))
+                std::swap(a, b);
+            sides.push_back(Side{a, b});
+        }
+    }
+
+    // Where sides cross: without a crossing, ear clipping gives the same
+    // region with no added points. Sides sorted by their lower end's y are
+    // compared only with those that start below the first one's upper end.
+    std::sort(sides.begin(), sides.end(), [&](const Side& l, const Side& r) {
+        return points[l.a].y < points[r.a].y || (points[l.a].y == points[r.a].y && l.a < r.a) ||
+               (points[l.a].y == points[r.a].y && l.a == r.a && l.b < r.b);
+    });
+    std::vector<double> levels;
+    for (std::size_t i = 0; i < sides.size(); ++i)
+        for (std::size_t j = i + 1; j < sides.size() && points[sides[j].a].y <= points[sides[i].b].y; ++j) {
+            const glm::dvec2 &p0 = points[sides[i].a], &p1 = points[sides[i].b];
+            const glm::dvec2 &q0 = points[sides[j].a], &q1 = points[sides[j].b];
+            if (!crosses(p0, p1, q0, q1))
+                continue;
+            const double t = cross(q0, q1, p0) / (cross(q0, q1, p0) - cross(q0, q1, p1));
+            levels.push_back(p0.y + (p1.y - p0.y) * t);
+        }
+    Triangulation result;
+    if (levels.empty()) {
+        result.triangles = triangulate(points, contourStarts);
+        return result;
+    }
+
+    // Slabs between consecutive levels: every vertex's y and every crossing's.
+    for (const Side& side : sides) {
+        levels.push_back(points[side.a].y);
+        levels.push_back(points[side.b].y);
+    }
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+
+    // The point of side `s` at level `k`: an end of it, or a point added
+    // once (shared by the slabs above and below).
+    std::map<std::pair<std::size_t, std::size_t>, std::uint32_t> added;
+    const auto pointAt = [&](std::size_t s, std::size_t k) {
+        const Side& side = sides[s];
+        const glm::dvec2 &pa = points[side.a], &pb = points[side.b];
+        const double y = levels[k];
+        if (y == pa.y)
+            return side.a;
+        if (y == pb.y)
+            return side.b;
+        const auto [it, inserted] = added.emplace(std::make_pair(s, k), 0u);
+        if (inserted) {
+            it->second = std::uint32_t(points.size() + result.added.size());
+            result.added.push_back(EdgePoint{side.a, side.b, (y - pa.y) / (pb.y - pa.y)});
+        }
+        return it->second;
+    };
+    const auto position = [&](std::uint32_t index) {
+        if (index < points.size())
+            return points[index];
+        const EdgePoint& e = result.added[index - points.size()];
+        return points[e.a] + (points[e.b] - points[e.a]) * e.t;
+    };
+
+    struct Crossing {
+        double x;
+        std::size_t side;
+    };
+    std::vector<Crossing> row;
+    for (std::size_t k = 0; k + 1 < levels.size(); ++k) {
+        const double y0 = levels[k], y1 = levels[k + 1], middle = (y0 + y1) / 2.0;
+        row.clear();
+        for (std::size_t s = 0; s < sides.size(); ++s) {
+            const glm::dvec2 &pa = points[sides[s].a], &pb = points[sides[s].b];
+            if (pa.y <= y0 && pb.y >= y1 && pb.y > pa.y)
+                row.push_back(Crossing{pa.x + (pb.x - pa.x) * (middle - pa.y) / (pb.y - pa.y), s});
+        }
+        std::sort(row.begin(), row.end(), [](const Crossing& l, const Crossing& r) {
+            return l.x < r.x || (l.x == r.x && l.side < r.side);
+        });
+        // Inside: between the first and second crossing, the third and
+        // fourth, ... (an odd number of sides to the left).
+        for (std::size_t i = 0; i + 1 < row.size(); i += 2) {
+            const std::uint32_t l0 = pointAt(row[i].side, k), l1 = pointAt(row[i].side, k + 1);
+            const std::uint32_t r0 = pointAt(row[i + 1].side, k), r1 = pointAt(row[i + 1].side, k + 1);
+            const std::uint32_t quad[2][3] = {{l0, r0, r1}, {l0, r1, l1}};
+            for (const auto& triangle : quad)
+                if (cross(position(triangle[0]), position(triangle[1]), position(triangle[2])) > 0.0)
+                    result.triangles.insert(result.triangles.end(), triangle, triangle + 3);
+        }
+    }
+    return result;
 }
 
 } // namespace q3::mesh

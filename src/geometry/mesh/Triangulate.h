@@ -19,6 +19,13 @@ namespace q3::mesh {
 /// encloses no area.
 glm::dvec3 newellNormal(const glm::dvec3* points, std::size_t count);
 
+/// A unit normal of the plane of points whose outline encloses no net area
+/// (a symmetric bow tie, whose two loops cancel in newellNormal): the
+/// normal of the widest triangle of the first point, the point farthest
+/// from it and the point farthest from the line through both; zero when
+/// the points are collinear. Its sign is that triangle's.
+glm::dvec3 spanNormal(const glm::dvec3* points, std::size_t count);
+
 /// Projects points onto the plane through the origin with unit normal n, in
 /// a basis (u, v, n) that is right-handed, so an outline counterclockwise
 /// about n stays counterclockwise in 2D.
@@ -39,5 +46,34 @@ std::vector<glm::dvec2> projectToPlane(const glm::dvec3* points, std::size_t cou
 /// by a bridge; O(n^2) in the worst case, near linear for typical input.
 std::vector<std::uint32_t> triangulate(const std::vector<glm::dvec2>& points,
                                        const std::vector<std::size_t>& contourStarts);
+
+/// A point a triangulation adds: t (0..1) of the way along the edge from
+/// points[a] to points[b].
+struct EdgePoint {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+    double t = 0.0;
+};
+
+/// What triangulateEvenOdd gives: index triples, counterclockwise, into
+/// points followed by `added` (index points.size() + i is added[i]).
+struct Triangulation {
+    std::vector<std::uint32_t> triangles;
+    std::vector<EdgePoint> added;
+};
+
+/// Triangulates the region inside an odd number of the contours for any
+/// contours, crossing each other or themselves or not (the QD3D Book,
+/// "General Polygons": contours "may overlap", and "the even-odd rule is
+/// used to determine which parts are inside the polygon"). Contours that do
+/// not cross are triangulated as triangulate() does, adding no points.
+/// Where edges cross, the plane is cut into horizontal slabs at every vertex
+/// and crossing, so that no two edges cross inside a slab; within a slab the
+/// edges are ordered along x and the trapezoids between the first and
+/// second, the third and fourth, ... are inside (a horizontal line crosses
+/// an odd number of edges to reach them). Each trapezoid becomes two
+/// triangles over points added on its edges. O(n^2) in the edges.
+Triangulation triangulateEvenOdd(const std::vector<glm::dvec2>& points,
+                                 const std::vector<std::size_t>& contourStarts);
 
 } // namespace q3::mesh

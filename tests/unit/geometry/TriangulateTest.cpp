@@ -479,5 +479,103 @@ TEST(ProjectToPlane, IsAnIsometryThatKeepsCounterclockwiseOutlinesCounterclockwi
     }
 }
 
+// triangulateEvenOdd over contours that cross: a sample point is covered by
+// exactly one triangle where an odd number of contours surround it (each
+// contour's own crossing count, insideRing, which is even-odd for a
+// self-intersecting ring too) and by none elsewhere; every triangle is
+// counterclockwise; every added point lies on the side it names.
+void expectEvenOdd(const std::vector<Ring>& contours, const std::string& what)
+{
+    std::vector<dvec2> points;
+    std::vector<std::size_t> starts;
+    for (const Ring& ring : contours) {
+        starts.push_back(points.size());
+        points.insert(points.end(), ring.begin(), ring.end());
+    }
+    const Triangulation result = triangulateEvenOdd(points, starts);
+    std::vector<dvec2> all = points;
+    for (const EdgePoint& e : result.added) {
+        ASSERT_LT(e.a, points.size()) << what;
+        ASSERT_LT(e.b, points.size()) << what;
+        // Strictly inside in exact arithmetic; a crossing's level may round
+        // to within an ulp of a vertex's.
+        EXPECT_GE(e.t, 0.0) << what;
+        EXPECT_LE(e.t, 1.0) << what;
+        all.push_back(points[e.a] + (points[e.b] - points[e.a]) * e.t);
+    }
+    ASSERT_EQ(result.triangles.size() % 3, 0u) << what;
+    for (std::size_t t = 0; t < result.triangles.size(); t += 3) {
+        ASSERT_LT(result.triangles[t + 2], all.size()) << what;
+        const dvec2 &a = all[result.triangles[t]], &b = all[result.triangles[t + 1]], &c = all[result.triangles[t + 2]];
+        EXPECT_GT((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x), 0.0) << what << ": triangle " << t / 3;
+    }
+    double minX = 1e300, maxX = -1e300, minY = 1e300, maxY = -1e300;
+    for (const dvec2& p : points) {
+        minX = std::min(minX, p.x), maxX = std::max(maxX, p.x);
+        minY = std::min(minY, p.y), maxY = std::max(maxY, p.y);
+    }
+    int inside = 0, wrong = 0;
+    for (int i = 0; i < 97; ++i)
+        for (int j = 0; j < 89; ++j) {
+            // Off-grid samples (irrational steps), so none lies on a side.
+            const dvec2 p(minX + (maxX - minX) * (i + 0.5 * std::sqrt(2.0) - 0.2) / 97.0,
+                          minY + (maxY - minY) * (j + 0.5 * std::sqrt(3.0) - 0.4) / 89.0);
+            bool in = false;
+            for (const Ring& ring : contours)
+                in = in != insideRing(ring, p);
+            int covered = 0;
+            for (std::size_t t = 0; t < result.triangles.size(); t += 3) {
+                const dvec2 &a = all[result.triangles[t]], &b = all[result.triangles[t + 1]],
+                            &c = all[result.triangles[t + 2]];
+                const auto side = [&](const dvec2& u, const dvec2& v) {
+                    return (v.x - u.x) * (p.y - u.y) - (v.y - u.y) * (p.x - u.x);
+                };
+                covered += side(a, b) > 0 && side(b, c) > 0 && side(c, a) > 0 ? 1 : 0;
+            }
+            inside += in ? 1 : 0;
+            if (covered != (in ? 1 : 0) && wrong++ < 3)
+                ADD_FAILURE() << what << ": sample (" << p.x << ", " << p.y << ") is covered " << covered
+                              << " times, " << (in ? "inside" : "outside") << " by the even-odd rule";
+        }
+    EXPECT_GT(inside, 100) << what;
+}
+
+TEST(TriangulateEvenOdd, APentagramLeavesItsCentreEmpty)
+{
+    Ring star;
+    for (int k = 0; k < 5; ++k) {
+        const double angle = M_PI / 2 + k * 4 * M_PI / 5; // every second point of a pentagon
+        star.push_back(dvec2(std::cos(angle), std::sin(angle)));
+    }
+    expectEvenOdd({star}, "pentagram");
+    // The centre is inside the star's outline but crossed twice: a hole.
+    std::vector<dvec2> points(star.begin(), star.end());
+    const Triangulation result = triangulateEvenOdd(points, {0});
+    EXPECT_FALSE(result.added.empty());
+}
+
+TEST(TriangulateEvenOdd, ABowTieFillsBothLoops)
+{
+    expectEvenOdd({{{0, 0}, {2, 1}, {2, 0}, {0, 1}}}, "bow tie");
+}
+
+TEST(TriangulateEvenOdd, OverlappingContoursCutTheirOverlapOut)
+{
+    expectEvenOdd({{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}}, "two squares");
+    // Wound the other way round, the same region: the rule ignores direction.
+    expectEvenOdd({{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {{1, 3}, {3, 3}, {3, 1}, {1, 1}}}, "two squares, one reversed");
+    // Three overlapping triangles: the part inside all three is filled again.
+    expectEvenOdd({{{0, 0}, {4, 0}, {2, 3}}, {{0, 2}, {4, 2}, {2, -1}}, {{1, -1}, {3, -1}, {2, 4}}}, "three triangles");
+}
+
+TEST(TriangulateEvenOdd, ContoursThatDoNotCrossAreTriangulatedWithoutAddedPoints)
+{
+    const std::vector<dvec2> points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {1, 3}, {3, 3}, {3, 1}};
+    const Triangulation result = triangulateEvenOdd(points, {0, 4});
+    EXPECT_TRUE(result.added.empty());
+    EXPECT_EQ(result.triangles, triangulate(points, {0, 4}));
+    expectEvenOdd({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{1, 1}, {1, 3}, {3, 3}, {3, 1}}}, "square with a hole");
+}
+
 } // namespace
 } // namespace q3::mesh

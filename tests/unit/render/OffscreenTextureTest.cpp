@@ -11,8 +11,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -236,6 +238,88 @@ TEST(OffscreenTexture, TexturesAddedOnceAreUsedAgainAfterOthersAndAfterAFlush)
     EXPECT_EQ(pixelAt(renderer, 7, 7), kWhite);
     // B (drawn on the right first) shows nowhere: A was drawn over it.
     EXPECT_EQ(pixelAt(renderer, 6, 0), kGreen);
+}
+
+TEST(OffscreenTexture, AddTextureRefusesABrokenMipmapChainOrFilter)
+{
+    OffscreenRenderer renderer;
+    begin(renderer);
+    // The 2 x 2 image's chain is one 1 x 1 image.
+    const std::uint8_t grey[3] = {128, 128, 128};
+    TextureLevel level;
+    level.pixels = grey;
+    level.layout.width = 1;
+    level.layout.height = 1;
+    level.layout.rowBytes = 3;
+    level.layout.pixelType = PixelType::kRGB24;
+    TextureImage image = texture();
+    image.filter = TextureFilter::kTrilinear;
+    image.mipmaps = {level};
+    std::uint32_t id = 77;
+    EXPECT_TRUE(renderer.addTexture(image, id));
+    EXPECT_EQ(id, 0u);
+    TextureImage tooMany = image;
+    tooMany.mipmaps = {level, level};
+    id = 77;
+    EXPECT_EQ(renderer.addTexture(tooMany, id).status, RenderStatus::kInvalidArgument);
+    EXPECT_EQ(id, 77u);
+    TextureImage wrongSize = image;
+    wrongSize.mipmaps[0].layout.width = 2;
+    wrongSize.mipmaps[0].layout.rowBytes = 6;
+    EXPECT_EQ(renderer.addTexture(wrongSize, id).status, RenderStatus::kInvalidArgument);
+    TextureImage noPixels = image;
+    noPixels.mipmaps[0].pixels = nullptr;
+    EXPECT_EQ(renderer.addTexture(noPixels, id).status, RenderStatus::kInvalidArgument);
+    TextureImage badLayout = image;
+    badLayout.mipmaps[0].layout.rowBytes = 2;
+    EXPECT_EQ(renderer.addTexture(badLayout, id).status, RenderStatus::kInvalidArgument);
+    // A 4 x 2 image's chain is 2 x 1, then 1 x 1; stopping early is refused.
+    const std::uint8_t wide[24] = {};
+    TextureImage four = image;
+    four.pixels = wide;
+    four.layout.width = 4;
+    four.layout.rowBytes = 12;
+    TextureLevel twoByOne = level;
+    twoByOne.pixels = wide;
+    twoByOne.layout.width = 2;
+    twoByOne.layout.rowBytes = 6;
+    four.mipmaps = {twoByOne};
+    EXPECT_EQ(renderer.addTexture(four, id).status, RenderStatus::kInvalidArgument);
+    four.mipmaps = {twoByOne, level};
+    EXPECT_TRUE(renderer.addTexture(four, id));
+    EXPECT_EQ(id, 1u);
+    // A filter outside the enumeration, as a caller's bytes might hold.
+    TextureImage badFilter = texture();
+    const int seven = 7;
+    std::memcpy(&badFilter.filter, &seven, sizeof seven);
+    EXPECT_EQ(renderer.addTexture(badFilter, id).status, RenderStatus::kInvalidArgument);
+    EXPECT_TRUE(renderer.endFrame());
+}
+
+TEST(OffscreenTexture, BilinearFilteringMixesNeighbouringTexels)
+{
+    // The 2 x 2 texture over the 8 x 8 pane: pixel (x, y) samples s = (x +
+    // 1/2) / 8, so texel coordinate a = s * 2 - 1/2 = (x - 1.5) / 4, clamped
+    // at the edges: pixel 3 is 3/8 of the way from column 0 to column 1.
+    OffscreenRenderer renderer;
+    begin(renderer);
+    TextureImage image = texture(true);
+    image.filter = TextureFilter::kBilinear;
+    ASSERT_TRUE(renderer.setTexture(&image));
+    drawSquare(renderer, 0, 0, 1, 1);
+    ASSERT_TRUE(renderer.endFrame());
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const double fa = std::min(std::max((x - 1.5) / 4.0, 0.0), 1.0);
+            const double fb = std::min(std::max((y - 1.5) / 4.0, 0.0), 1.0);
+            const Pixel top[2] = {kRed, kGreen}, bottom[2] = {kBlue, kWhite};
+            const Pixel got = pixelAt(renderer, x, y);
+            for (int k = 0; k < 3; ++k) {
+                const double upper = top[0][k] + (top[1][k] - top[0][k]) * fa;
+                const double lower = bottom[0][k] + (bottom[1][k] - bottom[0][k]) * fa;
+                EXPECT_NEAR(got[k], upper + (lower - upper) * fb, 2.0) << "pixel " << x << ", " << y << " channel " << k;
+            }
+        }
 }
 
 } // namespace

@@ -67,6 +67,8 @@ TEST_F(RenderPassTest, FilledTrianglesAndPointsReachTheTargetThroughTheInterface
     // The matrix is handed over once: both geometries share it.
     EXPECT_EQ(m_target.count("setMatrix"), 1u);
     EXPECT_EQ(m_target.count("setFaceOptions"), 1u);
+    // Anti-aliasing is off by default: the target is never told about it.
+    EXPECT_EQ(m_target.count("setAntiAlias"), 0u);
     EXPECT_EQ(m_target.count("drawElements") + m_target.count("drawLitTriangles"), 1u);
     EXPECT_EQ(m_target.count("drawPoints"), 1u);
     EXPECT_EQ(m_target.count("drawLines"), 0u);

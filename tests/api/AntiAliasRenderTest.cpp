@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+
+// The anti-alias style drawn by multisampling (4 samples a pixel), checked
+// against the coverage of OpenGL's standard 4-sample pattern computed here.
+//
+// A red quad on black spans world x 0.046875..2.046875 and y -0.5..1.5; the
+// orthographic camera puts 16 pixels in a world unit with x = -0.5 at the
+// left edge and y = 2 at the top, so its top and bottom edges lie on pixel
+// rows 8 and 40 exactly and its left and right edges three quarters of the
+// way across pixel columns 8 and 40: x = 8.75 and 40.75 pixels. The four
+// samples of a pixel lie at x 0.125, 0.375, 0.625 and 0.875 of it (and y
+// 0.625, 0.125, 0.875, 0.375 in the same order: the standard pattern, one
+// sample per row and per column of a 4 x 4 grid). So column 8 is covered by
+// the one sample right of 0.75, column 40 by the three left of it: red 255/4
+// and 3 * 255/4, the mean of the samples. Without the filled mode (or with the
+// style off) those pixels are covered wholly or not at all by their centre
+// (0.5): column 8 black, column 40 red.
+
+#include "GeometryTestSupport.h"
+#include "OwningApiTest.h"
+#include "RenderTestSupport.h"
+
+#include "QD3DGeometry.h"
+#include "QD3DGroup.h"
+#include "QD3DLight.h"
+#include "QD3DShader.h"
+#include "QD3DStyle.h"
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace q3test;
+
+constexpr int kWidth = 64, kHeight = 48;
+constexpr float kLeft = 0.046875f, kRight = 2.046875f, kBottom = -0.5f, kTop = 1.5f;
+
+class AntiAliasRenderTest : public OwningApiTest {
+protected:
+    TQ3GeometryObject redQuad()
+    {
+        TQ3Vertex3D vertices[4] = {{{kLeft, kBottom, 0}, nullptr},
+                                   {{kRight, kBottom, 0}, nullptr},
+                                   {{kRight, kTop, 0}, nullptr},
+                                   {{kLeft, kTop, 0}, nullptr}};
+        TQ3PolygonData data{4, vertices, own(colorSet(1, 0, 0))};
+        TQ3GeometryObject polygon = own(Q3Polygon_New(&data));
+        EXPECT_NE(polygon, nullptr);
+        return polygon;
+    }
+
+    Pixmap render(const std::function<void(TQ3ViewObject)>& submit,
+                  TQ3ObjectType renderer = kQ3RendererTypeInteractive)
+    {
+        Pixmap image(kWidth, kHeight);
+        TestView view(image.pixmap(), renderer);
+        EXPECT_EQ(view.render(submit), kQ3ViewStatusDone);
+        return image;
+    }
+
+    // Row `row` of the quad: column 7 black, 8 a quarter red, 9..39 red, 40
+    // three quarters, 41 black, within `tolerance`.
+    void expectRow(const Pixmap& image, int row, double quarter8, double quarter40, const std::string& what)
+    {
+        for (int px = 6; px <= 42; ++px) {
+            double coverage = px < 8 || px > 40 ? 0.0 : 1.0;
+            if (px == 8)
+                coverage = quarter8;
+            if (px == 40)
+                coverage = quarter40;
+            const Rgba got = image.at(px, row);
+            EXPECT_NEAR(got.r, 255.0 * coverage, 1.0) << what << ": pixel (" << px << ", " << row << ")";
+            EXPECT_EQ(got.g, 0) << what;
+            EXPECT_EQ(got.b, 0) << what;
+        }
+    }
+};
+
+TEST_F(AntiAliasRenderTest, FilledModeCoversEdgePixelsByTheirSamples)
+{
+    TQ3GeometryObject quad = redQuad();
+    const TQ3AntiAliasStyleData style{kQ3On, kQ3AntiAliasModeMaskFilled, 1.0f};
+    const Pixmap image = render([&](TQ3ViewObject v) {
+        EXPECT_EQ(Q3AntiAliasStyle_Submit(&style, v), kQ3Success);
+        EXPECT_EQ(Q3Geometry_Submit(quad, v), kQ3Success);
+    });
+    for (int row : {8, 20, 39})
+        expectRow(image, row, 0.25, 0.75, "filled, anti-aliased");
+    // The rows on the quad's top and bottom edges: wholly in or out.
+    EXPECT_EQ(image.at(20, 7).r, 0);
+    EXPECT_EQ(image.at(20, 40).r, 0);
+}
+
+TEST_F(AntiAliasRenderTest, EveryQualityDrawsWithTheSameFourSamples)
+{
+    TQ3GeometryObject quad = redQuad();
+    for (float quality : {0.0f, 0.3f, 1.0f}) {
+        const TQ3AntiAliasStyleData style{kQ3On, kQ3AntiAliasModeMaskFilled, quality};
+        const Pixmap image = render([&](TQ3ViewObject v) {
+            Q3AntiAliasStyle_Submit(&style, v);
+            Q3Geometry_Submit(quad, v);
+        });
+        expectRow(image, 20, 0.25, 0.75, "quality " + std::to_string(quality));
+    }
+}
+
+TEST_F(AntiAliasRenderTest, WithoutTheFilledModeOrOffSurfacesAreAliased)
+{
+    TQ3GeometryObject quad = redQuad();
+    const auto drawWith = [&](const TQ3AntiAliasStyleData* style) {
+        return render([&](TQ3ViewObject v) {
+            if (style != nullptr)
+                Q3AntiAliasStyle_Submit(style, v);
+            Q3Geometry_Submit(quad, v);
+        });
+    };
+    const Pixmap plain = drawWith(nullptr);
+    expectRow(plain, 20, 0.0, 1.0, "no style");
+    const TQ3AntiAliasStyleData edges{kQ3On, kQ3AntiAliasModeMaskEdges, 1.0f};
+    const Pixmap edgesOnly = drawWith(&edges);
+    expectRow(edgesOnly, 20, 0.0, 1.0, "edges mode");
+    const TQ3AntiAliasStyleData off{kQ3Off, kQ3AntiAliasModeMaskFilled | kQ3AntiAliasModeMaskEdges, 1.0f};
+    const Pixmap offImage = drawWith(&off);
+    // Off: the very pixels of no style at all.
+    EXPECT_EQ(offImage.bytes(), plain.bytes());
+}
+
+TEST_F(AntiAliasRenderTest, EdgesModeSmoothsLinesAndIsTheSameEveryRun)
+{
+    // A shallow line: aliased, every pixel is the line's red or black;
+    // smoothed, pixels along it take shares of red in between.
+    TQ3LineData line{{{{0.0f, 0.0f, 0.0f}, nullptr}, {{3.0f, 0.7f, 0.0f}, nullptr}}, own(colorSet(1, 0, 0))};
+    TQ3GeometryObject geometry = own(Q3Line_New(&line));
+    const TQ3AntiAliasStyleData style{kQ3On, kQ3AntiAliasModeMaskEdges, 1.0f};
+    const auto draw = [&](bool smooth) {
+        return render([&](TQ3ViewObject v) {
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&style, v);
+            Q3Geometry_Submit(geometry, v);
+        });
+    };
+    const auto partial = [](const Pixmap& image) {
+        int n = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x)
+                n += image.at(x, y).r > 0 && image.at(x, y).r < 255 ? 1 : 0;
+        return n;
+    };
+    const Pixmap aliased = draw(false);
+    const Pixmap smoothed = draw(true);
+    EXPECT_EQ(partial(aliased), 0);
+    EXPECT_GT(partial(smoothed), 20);
+    const Pixmap again = draw(true);
+    EXPECT_EQ(smoothed.bytes(), again.bytes());
+}
+
+TEST_F(AntiAliasRenderTest, AStyleSubmittedAfterOtherDrawingKeepsThatDrawing)
+{
+    // The red quad drawn before the style, unlit; then a blue one behind it,
+    // lit by a full ambient light, whose lights make the target draw what it
+    // holds so far into the image, and whose style makes the rest of the
+    // frame multisampled. The red quad keeps its aliased pixels, and the
+    // depth it wrote still hides the blue one behind it.
+    TQ3GeometryObject quad = redQuad();
+    TQ3Vertex3D behind[4] = {{{1.0f, -1.0f, -1.0f}, nullptr},
+                             {{3.0f, -1.0f, -1.0f}, nullptr},
+                             {{3.0f, 1.0f, -1.0f}, nullptr},
+                             {{1.0f, 1.0f, -1.0f}, nullptr}};
+    TQ3PolygonData data{4, behind, own(colorSet(0, 0, 1))};
+    TQ3GeometryObject blue = own(Q3Polygon_New(&data));
+    const TQ3LightData light{kQ3True, 1.0f, {1, 1, 1}};
+    TQ3GroupObject lights = own(Q3LightGroup_New());
+    Q3Group_AddObject(lights, own(Q3AmbientLight_New(&light)));
+    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
+    const TQ3AntiAliasStyleData style{kQ3On, kQ3AntiAliasModeMaskFilled, 1.0f};
+    Pixmap image(kWidth, kHeight);
+    {
+        TestView view(image.pixmap(), kQ3RendererTypeInteractive);
+        ASSERT_EQ(Q3View_SetLightGroup(view.view(), lights), kQ3Success);
+        EXPECT_EQ(view.render([&](TQ3ViewObject v) {
+            Q3Geometry_Submit(quad, v);
+            Q3AntiAliasStyle_Submit(&style, v);
+            Q3Shader_Submit(lambert, v);
+            Q3Geometry_Submit(blue, v);
+        }),
+                  kQ3ViewStatusDone);
+    }
+    expectRow(image, 10, 0.0, 1.0, "drawn before the style"); // above the blue quad
+    EXPECT_EQ(image.at(30, 30).r, 255);
+    EXPECT_EQ(image.at(30, 30).b, 0);
+    EXPECT_EQ(image.at(50, 30).r, 0);
+    EXPECT_EQ(image.at(50, 30).b, 255);
+    // The blue quad's right edge, at x = 3 (pixel 56 exactly), and its left
+    // one, hidden: full pixels; its top edge is on a pixel boundary too.
+    EXPECT_EQ(image.at(55, 30).b, 255);
+    EXPECT_EQ(image.at(56, 30).b, 0);
+}
+
+} // namespace
