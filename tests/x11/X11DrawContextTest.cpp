@@ -238,6 +238,39 @@ TEST_F(X11DrawContextTest, PaneAndNoClearLeaveTheRestOfTheWindow)
     Q3Object_Dispose(pixmapContext);
 }
 
+TEST_F(X11DrawContextTest, MaskKeepsTheWindowWhereItsBitsAreClear)
+{
+    const unsigned width = 160, height = 120;
+    const Window window = makeWindow(width, height);
+    // Bits set in the left half of each row only.
+    const unsigned long rowBytes = width / 8;
+    std::vector<unsigned char> bits(rowBytes * height, 0);
+    for (unsigned y = 0; y < height; ++y)
+        for (unsigned long x = 0; x < rowBytes / 2; ++x)
+            bits[y * rowBytes + x] = 0xFF;
+    TQ3XDrawContextData data = xData(window);
+    data.contextData.mask = TQ3Bitmap{bits.data(), width, height, rowBytes, kQ3EndianBig};
+    data.contextData.maskState = kQ3True;
+    TQ3DrawContextObject context = Q3XDrawContext_New(&data);
+    ASSERT_NE(context, nullptr);
+    render(context, width, height);
+    XSync(m_display, False);
+
+    Image pixmap(width, height);
+    pixmap.fill(0);
+    TQ3PixmapDrawContextData pixmapData{data.contextData, pixmap.pixmap()};
+    TQ3DrawContextObject pixmapContext = Q3PixmapDrawContext_New(&pixmapData);
+    render(pixmapContext, width, height);
+    const std::vector<std::uint32_t> shown = readWindow(window, width, height);
+    expectSamePicture(shown, rgbOf(pixmap));
+    ASSERT_EQ(shown.size(), std::size_t(width) * height);
+    EXPECT_EQ(shown[0], 0x339966u);              // masked in: the clear colour
+    EXPECT_EQ(shown[width - 1], 0u);             // masked out: still black
+    EXPECT_EQ(shown[(height - 1) * width + width / 2], 0u);
+    Q3Object_Dispose(context);
+    Q3Object_Dispose(pixmapContext);
+}
+
 TEST_F(X11DrawContextTest, NextFrameFillsAResizedWindow)
 {
     const Window window = makeWindow(160, 120);
