@@ -685,6 +685,97 @@ Q3_EXTERN_API_C(TQ3Status) Q3Bitmap_Empty(TQ3Bitmap *bitmap);
  */
 Q3_EXTERN_API_C(unsigned long) Q3Bitmap_GetImageSize(unsigned long width, unsigned long height);
 
+/* ---- Object system types (Apple's QD3D.h) ---------------------------------
+ *
+ * The class handle and metahandler of QD3DExtension.h and QD3DSet.h's
+ * custom classes. A metahandler is called with each method type a class may
+ * have and returns the method (or NULL); Q3 asks it only while the call that
+ * was given it runs, as QuickDraw 3D promises.
+ */
+typedef struct OpaqueTQ3XObjectClass *TQ3XObjectClass;
+typedef unsigned long TQ3XMethodType;
+
+#define Q3_METHOD_TYPE(a, b, c, d) ((TQ3XMethodType)Q3_FOUR_CHARACTER_CONSTANT(a, b, c, d))
+
+#define kQ3XMethodTypeObjectUnregister Q3_METHOD_TYPE('u', 'n', 'r', 'g')
+/* Return (TQ3XFunctionPointer)kQ3True from the metahandler when objects of
+ * the class may be submitted in a view's loop. */
+#define kQ3XMethodTypeObjectIsDrawable Q3_METHOD_TYPE('i', 's', 'd', 'r')
+
+typedef void (*TQ3XFunctionPointer)(void);
+typedef TQ3XFunctionPointer (*TQ3XMetaHandler)(TQ3XMethodType methodType);
+typedef TQ3Status (*TQ3XObjectUnregisterMethod)(TQ3XObjectClass objectClass);
+
+/* ---- Elements of shapes --------------------------------------------------
+ *
+ * QuickDraw 3D 1.5's note: shapes and sets are polymorphic. Every
+ * Q3Shape_...Element call takes a shape or a set as its first parameter and
+ * on a set is the Q3Set_ call of the same meaning. A shape keeps its
+ * elements itself (not in a set); the element type kQ3ElementTypeSet is a
+ * set attached to the shape, what Q3Shape_GetSet and Q3Shape_SetSet read and
+ * replace. The element types are those a set takes (QD3DSet.h): the
+ * attribute types, registered custom element and attribute classes, and
+ * kQ3ElementTypeSet (a TQ3SetObject, held by reference: Add retains it, Get
+ * returns a new reference).
+ *
+ * Errors shared by these calls, in the order checked:
+ * kQ3ErrorNULLParameter / kQ3ErrorInvalidObject (the shape),
+ * kQ3ErrorInvalidObjectType (neither a shape nor a set),
+ * kQ3ErrorUnknownElementType (a type no element class has),
+ * kQ3ErrorNULLParameter (data), then the element's own errors as Q3Set_Add
+ * and Q3Set_Get list them; kQ3ErrorAttributeNotContained when Get or Clear
+ * find no element of the type. A failed call changes nothing.
+ */
+
+/* Q3Shape_GetSet: *theSet = a new reference to the set attached to the
+ * shape, or NULL when it has none (then kQ3Success). Errors: as above;
+ * kQ3ErrorNULLParameter (theSet). Ownership: the caller disposes the set. */
+Q3_EXTERN_API_C(TQ3Status) Q3Shape_GetSet(TQ3ShapeObject shape, TQ3SetObject *theSet);
+
+/* Q3Shape_SetSet: attaches theSet to the shape (NULL removes the set); the
+ * shape holds a reference. Errors: as above; kQ3ErrorInvalidObjectType
+ * (theSet is no set). */
+Q3_EXTERN_API_C(TQ3Status) Q3Shape_SetSet(TQ3ShapeObject shape, TQ3SetObject theSet);
+
+/* Q3Shape_AddElement: copies *data into the shape's element theType,
+ * replacing one of that type. */
+Q3_EXTERN_API_C(TQ3Status) Q3Shape_AddElement(TQ3ShapeObject shape, TQ3ElementType theType, const void *data);
+
+/* Q3Shape_GetElement: copies the shape's element theType to *data. */
+Q3_EXTERN_API_C(TQ3Status) Q3Shape_GetElement(TQ3ShapeObject shape, TQ3ElementType theType, void *data);
+
+/* Q3Shape_ContainsElement: kQ3True when the shape has an element theType
+ * (kQ3False on error). */
+Q3_EXTERN_API_C(TQ3Boolean) Q3Shape_ContainsElement(TQ3ShapeObject shape, TQ3ElementType theType);
+
+/* Q3Shape_GetNextElementType: the walk over the shape's element types:
+ * kQ3ElementTypeNone starts it and is returned after the last type; the
+ * attached set, if any, comes last as kQ3ElementTypeSet. Errors: as above;
+ * kQ3ErrorNULLParameter (theType). */
+Q3_EXTERN_API_C(TQ3Status) Q3Shape_GetNextElementType(TQ3ShapeObject shape, TQ3ElementType *theType);
+
+/* Q3Shape_EmptyElements: removes every element of the shape, the attached
+ * set included. */
+Q3_EXTERN_API_C(TQ3Status) Q3Shape_EmptyElements(TQ3ShapeObject shape);
+
+/* Q3Shape_ClearElement: removes the shape's element theType. */
+Q3_EXTERN_API_C(TQ3Status) Q3Shape_ClearElement(TQ3ShapeObject shape, TQ3ElementType theType);
+
+/* ---- Elements of any object (Quesa extension) -----------------------------
+ *
+ * Quesa's Q3Object_ element calls, for ports that moved from Quesa: on a
+ * set they are the Q3Set_ calls, on a shape the Q3Shape_ calls, and any
+ * other object (a view, a storage object, ...) keeps its elements as a
+ * shape does. Errors and ownership: as the Q3Shape_ calls (any live object
+ * is accepted).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Object_AddElement(TQ3Object object, TQ3ElementType theType, const void *data);
+Q3_EXTERN_API_C(TQ3Status) Q3Object_GetElement(TQ3Object object, TQ3ElementType theType, void *data);
+Q3_EXTERN_API_C(TQ3Boolean) Q3Object_ContainsElement(TQ3Object object, TQ3ElementType theType);
+Q3_EXTERN_API_C(TQ3Status) Q3Object_GetNextElementType(TQ3Object object, TQ3ElementType *theType);
+Q3_EXTERN_API_C(TQ3Status) Q3Object_EmptyElements(TQ3Object object);
+Q3_EXTERN_API_C(TQ3Status) Q3Object_ClearElement(TQ3Object object, TQ3ElementType theType);
+
 #ifdef __cplusplus
 }
 #endif

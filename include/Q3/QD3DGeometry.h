@@ -1983,10 +1983,10 @@ Q3_EXTERN_API_C(TQ3Status) Q3Polygon_SetVertexAttributeSet(TQ3GeometryObject pol
  *   every count <= kQ3GeometryMaxArrayCount         kQ3ErrorParameterOutOfRange
  *   every attribute type is a standard type (1 to
  *     11, not a custom type)                        kQ3ErrorAttributeInvalidType
+ *   every point coordinate is finite                kQ3ErrorInvalidData
  *   every point index is below numPoints, every
  *     edge's triangle index below numTriangles or
  *     kQ3ArrayIndexNULL                             kQ3ErrorInvalidData
- *   every point coordinate is finite                kQ3ErrorInvalidData
  *   every attribute value in use is well formed
  *     (finite; a highlight state kQ3On or kQ3Off)   kQ3ErrorInvalidData
  *   triMeshAttributeSet is NULL or a live attribute
@@ -5188,17 +5188,16 @@ typedef struct TQ3GeneralPolygonContourData TQ3GeneralPolygonContourData;
  *
  * The rules a TQ3GeneralPolygonData must obey wherever one is accepted,
  * checked in this order:
- *   contours is not NULL                            kQ3ErrorNULLParameter
- *   numContours >= 1             kQ3ErrorGeometryInsufficientNumberOfPoints
- *   numContours <= kQ3GeometryMaxArrayCount         kQ3ErrorParameterOutOfRange
- *   shapeHint is one of the enumeration's values    kQ3ErrorInvalidData
- *   then for each contour in order:
- *     vertices is not NULL                          kQ3ErrorNULLParameter
+ *   contours, and every contour's vertices, are not
+ *     NULL                                          kQ3ErrorNULLParameter
+ *   numContours >= 1, every contour's
  *     numVertices >= 3           kQ3ErrorGeometryInsufficientNumberOfPoints
- *     numVertices, and the number of vertices of
- *       this and the contours before it,
- *       <= kQ3GeometryMaxArrayCount                 kQ3ErrorParameterOutOfRange
- *     every coordinate is finite                    kQ3ErrorInvalidData
+ *   numContours and every contour's numVertices
+ *     <= kQ3GeometryMaxArrayCount                   kQ3ErrorParameterOutOfRange
+ *   every coordinate is finite                      kQ3ErrorInvalidData
+ *   shapeHint is one of the enumeration's values    kQ3ErrorInvalidData
+ *   the vertices of all contours together
+ *     <= kQ3GeometryMaxArrayCount                   kQ3ErrorParameterOutOfRange
  *   every attribute set given is a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
  */
@@ -5999,13 +5998,13 @@ Q3_EXTERN_API_C(TQ3Status) Q3TriGrid_SetFacetAttributeSet(TQ3GeometryObject triG
  * The rules a TQ3MarkerData must obey wherever one is accepted, checked in
  * this order:
  *   bitmap.image is not NULL                        kQ3ErrorNULLParameter
+ *   bitmap.rowBytes * bitmap.height
+ *     <= kQ3GeometryMaxArrayCount                   kQ3ErrorParameterOutOfRange
  *   location's coordinates are finite               kQ3ErrorInvalidData
  *   bitmap.width and bitmap.height are above 0, and
  *     bitmap.rowBytes * 8 >= bitmap.width           kQ3ErrorInvalidData
  *   bitmap.bitOrder is kQ3EndianBig or
  *     kQ3EndianLittle                               kQ3ErrorInvalidData
- *   bitmap.rowBytes * bitmap.height
- *     <= kQ3GeometryMaxArrayCount                   kQ3ErrorParameterOutOfRange
  *   markerAttributeSet is NULL or a live attribute
  *     set                   kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType
  */

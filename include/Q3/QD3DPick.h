@@ -44,7 +44,12 @@
  *   Normal              TQ3Vector3D: unit world normal of a face hit (the
  *                       vertex normals interpolated, else the triangle's
  *                       front side by the orientation style).
- *   ShapePart           never valid: Q3 has no shape part objects.
+ *   ShapePart           TQ3ShapePartObject: a new reference to the part
+ *                       of the shape that was hit; valid only for a face,
+ *                       edge or vertex hit (a pick parts style other than
+ *                       kQ3PickPartsObject) on a retained mesh in a
+ *                       window-point or world-ray pick: a mesh face, edge
+ *                       or vertex part (Q3MeshFacePart_GetFace, ...).
  *   PickPart            TQ3PickParts: the part hit (kQ3PickPartsObject
  *                       under the default pick parts style).
  *   UV                  TQ3Param2D: the surface uv of a face hit, where
@@ -605,6 +610,67 @@ Q3_EXTERN_API_C(TQ3Status) Q3WorldRayPick_GetData(TQ3PickObject pick, TQ3WorldRa
  * Ownership: no references change.
  */
 Q3_EXTERN_API_C(TQ3Status) Q3WorldRayPick_SetData(TQ3PickObject pick, const TQ3WorldRayPickData *data);
+
+/* ---- Shape parts ----------------------------------------------------------
+ *
+ * The part of a shape a pick hit (the ShapePart detail). Q3's only shapes
+ * with parts are meshes: a hit on a mesh's face, edge or vertex gives a
+ * mesh face part (kQ3MeshPartTypeMeshFacePart), edge part or vertex part,
+ * naming the mesh face the hit point lies in, the mesh edge nearest to it,
+ * or the mesh vertex there. A part holds a reference to its mesh; the face,
+ * edge or vertex it names is checked again on every call, so a part whose
+ * face an edit deleted answers kQ3ErrorInvalidParameter.
+ */
+
+/**
+ * The shape a part belongs to.
+ *
+ * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject,
+ * kQ3ErrorInvalidObjectType (shapePartObject: not a shape part),
+ * kQ3ErrorNULLParameter (shapeObject).
+ *
+ * Ownership: *shapeObject receives a new reference to the shape.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3ShapePart_GetShape(TQ3ShapePartObject shapePartObject, TQ3ShapeObject *shapeObject);
+
+/**
+ * The part's type below kQ3SharedTypeShapePart: kQ3ShapePartTypeMeshPart
+ * for every part Q3 makes.
+ *
+ * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject,
+ * kQ3ErrorInvalidObjectType (then kQ3ObjectTypeInvalid).
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3ShapePart_GetType(TQ3ShapePartObject shapePartObject);
+
+/**
+ * The mesh component (QD3DGeometry.h) the part's face, edge or vertex
+ * belongs to, as Q3Mesh_FirstMeshComponent names it.
+ *
+ * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject,
+ * kQ3ErrorInvalidObjectType (meshPartObject: not a mesh part),
+ * kQ3ErrorNULLParameter (component), kQ3ErrorInvalidParameter (the part
+ * no longer exists in the mesh).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3MeshPart_GetComponent(TQ3MeshPartObject meshPartObject, TQ3MeshComponent *component);
+
+/**
+ * The mesh face a face part names. Errors: as Q3MeshPart_GetComponent,
+ * kQ3ErrorInvalidObjectType for a part that is not a face part.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3MeshFacePart_GetFace(TQ3MeshFacePartObject meshFacePartObject, TQ3MeshFace *face);
+
+/**
+ * The mesh edge an edge part names. Errors: as Q3MeshPart_GetComponent,
+ * kQ3ErrorInvalidObjectType for a part that is not an edge part.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3MeshEdgePart_GetEdge(TQ3MeshEdgePartObject meshEdgePartObject, TQ3MeshEdge *edge);
+
+/**
+ * The mesh vertex a vertex part names. Errors: as Q3MeshPart_GetComponent,
+ * kQ3ErrorInvalidObjectType for a part that is not a vertex part.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3MeshVertexPart_GetVertex(TQ3MeshVertexPartObject meshVertexPartObject,
+                                                      TQ3MeshVertex *vertex);
 
 #ifdef __cplusplus
 }

@@ -393,6 +393,124 @@ Q3_EXTERN_API_C(TQ3Status) Q3InteractiveRenderer_GetRAVEDrawContexts(TQ3Renderer
                                                                      unsigned long *numRAVEContexts,
                                                                      TQ3RaveDestroyCallback raveDestroyCallback);
 
+/* ---- Settings dialogs and configuration data ----------------------------- */
+
+/* Apple's Unix dialog anchor: a place holder (Q3 has no settings dialog). */
+typedef struct TQ3DialogAnchor {
+    void *notUsed;
+} TQ3DialogAnchor;
+
+/**
+ * Whether the renderer has a modal settings dialog. Q3's renderers have
+ * none: kQ3False.
+ *
+ * Errors: kQ3ErrorNotInitialized; kQ3ErrorNULLParameter,
+ * kQ3ErrorInvalidObject, kQ3ErrorInvalidObjectType (renderer), each with
+ * kQ3False.
+ */
+Q3_EXTERN_API_C(TQ3Boolean) Q3Renderer_HasModalConfigure(TQ3RendererObject renderer);
+
+/**
+ * Shows the renderer's modal settings dialog. Q3's renderers have none, so
+ * the call behaves as a dialog the user cancelled at once: *canceled is
+ * kQ3True and no setting changes.
+ *
+ * Errors: the renderer's (as Q3Renderer_HasModalConfigure), then
+ * kQ3ErrorNULLParameter (canceled).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Renderer_ModalConfigure(TQ3RendererObject renderer, TQ3DialogAnchor dialogAnchor,
+                                                     TQ3Boolean *canceled);
+
+/**
+ * The renderer's private configuration, for an application to save (with
+ * the renderer's class name) and hand back with SetConfigurationData. Q3's
+ * renderers keep none: *actualDataSize is 0 and dataBuffer (which may be
+ * NULL, to ask for the size) is not written.
+ *
+ * Errors: the renderer's, then kQ3ErrorNULLParameter (actualDataSize).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Renderer_GetConfigurationData(TQ3RendererObject renderer, unsigned char *dataBuffer,
+                                                           unsigned long bufferSize, unsigned long *actualDataSize);
+
+/**
+ * Hands back configuration data GetConfigurationData gave. For Q3's
+ * renderers that is always empty: bufferSize 0 (dataBuffer may then be
+ * NULL) is accepted and changes nothing.
+ *
+ * Errors: the renderer's, then kQ3ErrorNULLParameter (dataBuffer NULL with
+ * bufferSize above 0), kQ3ErrorInvalidParameter (bufferSize above 0: not
+ * data this renderer gave).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Renderer_SetConfigurationData(TQ3RendererObject renderer, unsigned char *dataBuffer,
+                                                           unsigned long bufferSize);
+
+/* ---- Renderer view and attribute set tools ------------------------------- */
+
+/**
+ * What a renderer calls while it draws to report progress: during a
+ * rendering loop, calls the view's idle progress method with (current,
+ * completed), or, if it has none, its idle method; when that method returns
+ * kQ3Failure the loop is cancelled (Q3View_EndRendering then answers
+ * kQ3ViewStatusCancelled) and this call returns kQ3Failure without posting
+ * an error. Q3's renderers report no progress themselves (the view calls the
+ * methods with 0, 0 before each object); code that renders in steps of its
+ * own can report through this call.
+ *
+ * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject,
+ * kQ3ErrorInvalidObjectType (view), kQ3ErrorInvalidParameter (current
+ * above completed), kQ3ErrorRenderingNotStarted (outside a rendering
+ * loop).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3XView_IdleProgress(TQ3ViewObject view, unsigned long current, unsigned long completed);
+
+/**
+ * What an asynchronous renderer calls when it has finished a frame: calls
+ * the view's end-frame method (Q3View_SetEndFrameMethod), if any. Q3's
+ * renderers finish every frame in Q3View_EndRendering, which already calls
+ * it; a frame produced by other means can be announced with this call.
+ *
+ * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject,
+ * kQ3ErrorInvalidObjectType (view), kQ3ErrorRenderingIsActive (inside a
+ * rendering loop: the frame is not finished).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3XView_EndFrame(TQ3ViewObject view);
+
+/* Which attributes a set holds, one bit per standard attribute type
+ * (1 << (type - 1)), and one for any other (custom) attribute. */
+enum {
+    kQ3XAttributeMaskNone = 0L,
+    kQ3XAttributeMaskSurfaceUV = 1 << (kQ3AttributeTypeSurfaceUV - 1),
+    kQ3XAttributeMaskShadingUV = 1 << (kQ3AttributeTypeShadingUV - 1),
+    kQ3XAttributeMaskNormal = 1 << (kQ3AttributeTypeNormal - 1),
+    kQ3XAttributeMaskAmbientCoefficient = 1 << (kQ3AttributeTypeAmbientCoefficient - 1),
+    kQ3XAttributeMaskDiffuseColor = 1 << (kQ3AttributeTypeDiffuseColor - 1),
+    kQ3XAttributeMaskSpecularColor = 1 << (kQ3AttributeTypeSpecularColor - 1),
+    kQ3XAttributeMaskSpecularControl = 1 << (kQ3AttributeTypeSpecularControl - 1),
+    kQ3XAttributeMaskTransparencyColor = 1 << (kQ3AttributeTypeTransparencyColor - 1),
+    kQ3XAttributeMaskSurfaceTangent = 1 << (kQ3AttributeTypeSurfaceTangent - 1),
+    kQ3XAttributeMaskHighlightState = 1 << (kQ3AttributeTypeHighlightState - 1),
+    kQ3XAttributeMaskSurfaceShader = 1 << (kQ3AttributeTypeSurfaceShader - 1),
+    kQ3XAttributeMaskInherited = 0x03FF,
+    kQ3XAttributeMaskInterpolated = kQ3XAttributeMaskSurfaceUV | kQ3XAttributeMaskShadingUV |
+                                    kQ3XAttributeMaskNormal | kQ3XAttributeMaskAmbientCoefficient |
+                                    kQ3XAttributeMaskDiffuseColor | kQ3XAttributeMaskSpecularColor |
+                                    kQ3XAttributeMaskSpecularControl | kQ3XAttributeMaskTransparencyColor |
+                                    kQ3XAttributeMaskSurfaceTangent
+};
+typedef unsigned long TQ3XAttributeMask;
+/* Apple's values; macros rather than enumerators because they do not fit an
+ * int, which ISO C requires of an enumerator. */
+#define kQ3XAttributeMaskCustomAttribute ((TQ3XAttributeMask)0x80000000UL)
+#define kQ3XAttributeMaskAll ((TQ3XAttributeMask)0x800007FFUL)
+
+/**
+ * Which attributes the set holds, as kQ3XAttributeMask bits; 0 on failure.
+ *
+ * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject,
+ * kQ3ErrorInvalidObjectType (attributeSet: not an attribute set).
+ */
+Q3_EXTERN_API_C(TQ3XAttributeMask) Q3XAttributeSet_GetMask(TQ3AttributeSet attributeSet);
+
 #ifdef __cplusplus
 }
 #endif

@@ -14,11 +14,15 @@
  * TQ3AttributeTypes, kQ3AttributeTypeSurfaceUV to
  * kQ3AttributeTypeSurfaceShader (1 to 11), with the data listed there, in a
  * set as in an attribute set: QuickDraw 3D's attributes are elements, and
- * an attribute type is their element type. Custom element and attribute
- * classes (Q3XElementClass_Register, Q3XElementType_GetElementSize,
- * Q3XAttributeClass_Register and their method types, which Apple's
- * QD3DSet.h also declares) are not provided, so no other element type can
- * be stored: the Q3Set_ calls refuse one with kQ3ErrorUnknownElementType.
+ * an attribute type is their element type. The custom element and
+ * attribute classes an application registers (Q3XElementClass_Register,
+ * Q3XAttributeClass_Register, at the end of this header) are element types
+ * as well, in sets and attribute sets alike, with the data their methods
+ * take. The Q3Set_ calls refuse any other type with
+ * kQ3ErrorUnknownElementType, the Q3AttributeSet_ calls with
+ * kQ3ErrorAttributeInvalidType. A walk over a set's types gives the
+ * attribute types in their order, then the custom types in ascending
+ * order.
  *
  * Surface shader attributes are held by reference: Add retains the shader
  * and Get returns a new reference (QD3DSet.h: "reference counts are
@@ -82,11 +86,13 @@ Q3_EXTERN_API_C(TQ3ObjectType) Q3Set_GetType(TQ3SetObject theSet);
  *
  * @param theSet   the set to modify.
  * @param theType  the element type: an attribute type from
- *                 kQ3AttributeTypeSurfaceUV to kQ3AttributeTypeSurfaceShader.
+ *                 kQ3AttributeTypeSurfaceUV to kQ3AttributeTypeSurfaceShader,
+ *                 or a registered custom element or attribute class's.
  * @param data     points to a value of the C type listed for theType in
  *                 TQ3AttributeTypes, which is copied; for
  *                 kQ3AttributeTypeSurfaceShader,
- *                 points to a TQ3SurfaceShaderObject handle.
+ *                 points to a TQ3SurfaceShaderObject handle; for a custom
+ *                 class, to what its copy-add (copy-replace) method takes.
  * @return kQ3Success, or kQ3Failure with the set unchanged.
  *
  * Errors:
@@ -101,7 +107,8 @@ Q3_EXTERN_API_C(TQ3ObjectType) Q3Set_GetType(TQ3SetObject theSet);
  *                               above (no element class is registered for
  *                               it).
  *   kQ3ErrorInvalidParameter    a float in *data is not finite, or a switch
- *                               is neither kQ3On nor kQ3Off.
+ *                               is neither kQ3On nor kQ3Off, or a custom
+ *                               class's copy method returned kQ3Failure.
  *   kQ3ErrorOutOfMemory         the element cannot be stored.
  *
  * Ownership: the set keeps its own copy of a value; a surface shader is
@@ -506,6 +513,88 @@ Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Submit(TQ3AttributeSet attributeSet,
  */
 Q3_EXTERN_API_C(TQ3Status) Q3AttributeSet_Inherit(TQ3AttributeSet parent, TQ3AttributeSet child,
                                                   TQ3AttributeSet result);
+
+/* ---- Custom element registration ------------------------------------------
+ *
+ * A custom element class stores sizeOfElement bytes of internal data per
+ * element, made and read by its methods (each optional: without one, the
+ * bytes are copied as they are):
+ *   CopyAdd        Q3Set_Add of a new element: from the application's data
+ *                  into the zeroed internal element.
+ *   CopyReplace    Q3Set_Add over an element the set has (without it: a new
+ *                  element by CopyAdd, then the old one deleted).
+ *   CopyGet        Q3Set_Get: from the internal element to the
+ *                  application's data.
+ *   CopyDuplicate  Q3Object_Duplicate of a set or object holding it.
+ *   Delete         once for every internal element, when it is replaced,
+ *                  cleared, emptied or its set is destroyed.
+ * A copy method that returns kQ3Failure fails the call with
+ * kQ3ErrorInvalidParameter; the set keeps what it held (a failed
+ * CopyReplace may have changed the element it was given).
+ */
+#define kQ3XMethodTypeElementCopyAdd Q3_METHOD_TYPE('e', 'c', 'p', 'a')
+#define kQ3XMethodTypeElementCopyReplace Q3_METHOD_TYPE('e', 'c', 'p', 'r')
+#define kQ3XMethodTypeElementCopyGet Q3_METHOD_TYPE('e', 'c', 'p', 'g')
+#define kQ3XMethodTypeElementCopyDuplicate Q3_METHOD_TYPE('e', 'c', 'p', 'd')
+#define kQ3XMethodTypeElementDelete Q3_METHOD_TYPE('e', 'd', 'e', 'l')
+typedef TQ3Status (*TQ3XElementCopyAddMethod)(const void *fromAPIElement, void *toInternalElement);
+typedef TQ3Status (*TQ3XElementCopyReplaceMethod)(const void *fromAPIElement, void *ontoInternalElement);
+typedef TQ3Status (*TQ3XElementCopyGetMethod)(const void *fromInternalElement, void *toAPIElement);
+typedef TQ3Status (*TQ3XElementCopyDuplicateMethod)(const void *fromInternalElement, void *toInternalElement);
+typedef TQ3Status (*TQ3XElementDeleteMethod)(void *internalElement);
+
+/*
+ * Q3XElementClass_Register: registers an element class named name (unique)
+ * under kQ3ObjectTypeElement. *elementType is the type asked for; Q3 keeps
+ * it when no class has it and it is none of the reserved element types (0
+ * to 33), else gives a new (negative) type, and sets *elementType to the
+ * type the class has. metaHandler may be NULL (every method by byte copy).
+ * Errors: kQ3ErrorNULLParameter (elementType, name);
+ * kQ3ErrorInvalidParameter (an empty name, one of kQ3StringMaximumLength
+ * characters or more, one a class has already). Ownership: the class stays
+ * registered until Q3XObjectHierarchy_UnregisterClass (QD3DExtension.h).
+ * Returns the class, or NULL on failure (*elementType unchanged).
+ */
+Q3_EXTERN_API_C(TQ3XObjectClass) Q3XElementClass_Register(TQ3ElementType *elementType, const char *name,
+                                                          unsigned long sizeOfElement,
+                                                          TQ3XMetaHandler metaHandler);
+
+/*
+ * Q3XElementType_GetElementSize: *sizeOfElement = the internal size of a
+ * registered custom element or attribute class's elements. Errors:
+ * kQ3ErrorUnknownElementType (no custom class has elementType);
+ * kQ3ErrorNULLParameter (sizeOfElement).
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3XElementType_GetElementSize(TQ3ElementType elementType,
+                                                         unsigned long *sizeOfElement);
+
+/* ---- Custom attribute registration -----------------------------------------
+ *
+ * An attribute class is an element class under kQ3ElementTypeAttribute,
+ * with the element methods above and these: the metahandler returns
+ * (TQ3XFunctionPointer)kQ3True for kQ3XMethodTypeAttributeInherit when
+ * Q3AttributeSet_Inherit passes the parent's attribute on; CopyInherit
+ * copies it there (without it, CopyDuplicate, else the bytes). A view does
+ * not draw with custom attributes. Default and IsDefault (QuickDraw 3D
+ * 1.5) are asked for and kept; Q3 calls neither.
+ */
+#define kQ3XMethodTypeAttributeInherit Q3_METHOD_TYPE('i', 'n', 'h', 't')
+typedef TQ3Boolean TQ3XAttributeInheritMethod;
+#define kQ3XMethodTypeAttributeCopyInherit Q3_METHOD_TYPE('a', 'c', 'p', 'i')
+typedef TQ3Status (*TQ3XAttributeCopyInheritMethod)(const void *fromInternalAttribute, void *toInternalAttribute);
+
+/*
+ * Q3XAttributeClass_Register: as Q3XElementClass_Register, for an attribute
+ * class named creatorName.
+ */
+Q3_EXTERN_API_C(TQ3XObjectClass) Q3XAttributeClass_Register(TQ3AttributeType *attributeType,
+                                                            const char *creatorName, unsigned long sizeOfElement,
+                                                            TQ3XMetaHandler metaHandler);
+
+#define kQ3XMethodTypeAttributeDefault Q3_METHOD_TYPE('a', 's', 'd', 'f')
+typedef TQ3Status (*TQ3XAttributeDefaultMethod)(void *internalElement);
+#define kQ3XMethodTypeAttributeIsDefault Q3_METHOD_TYPE('a', 'i', 'd', 'f')
+typedef TQ3Boolean (*TQ3XAttributeIsDefaultMethod)(void *internalElement);
 
 #ifdef __cplusplus
 }

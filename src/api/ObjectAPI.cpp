@@ -6,8 +6,10 @@
 #include "core/LargeBlocks.h"
 #include "base/RenderTarget.h"
 #include "io/ClassIO.h"
+#include "io/CustomElements.h"
 #include "io/File.h"
 #include "view/View.h"
+#include "controller/Controller.h"
 
 using namespace q3;
 using q3::api::guard;
@@ -23,6 +25,14 @@ TQ3Status Q3Initialize(void)
     if (!system::initialize())
         errors::postNotice(kQ3NoticeSystemAlreadyInitialized,
                            "Q3Initialize: already initialized; the call nests and needs its own Q3Exit");
+    try {
+        // Apple's name and URL element classes (QD3DCustomElements.h), so
+        // their names are registered before any file is read.
+        io::registerCustomElements();
+    } catch (const std::exception&) {
+        errors::postError(kQ3ErrorOutOfMemory, "Q3Initialize: the custom element classes cannot be registered");
+        return kQ3Failure;
+    }
     return kQ3Success;
 }
 
@@ -30,8 +40,10 @@ TQ3Status Q3Exit(void)
 {
     return guardStatus(__func__, [] {
         system::exit();
-        if (!system::isInitialized())
+        if (!system::isInitialized()) {
             memory::releaseKept();
+            controllers::forgetAll();
+        }
         const unsigned long live = liveObjectCount();
         if (!system::isInitialized() && live != 0)
             errors::postWarning(kQ3WarningPossibleMemoryLeak,
@@ -76,7 +88,7 @@ TQ3Status Q3Object_Dispose(TQ3Object object)
 TQ3Object Q3Object_Duplicate(TQ3Object object)
 {
     return guard(__func__, TQ3Object{nullptr},
-                 [&]() -> TQ3Object { return lookupObject(object, "object").duplicate(); });
+                 [&]() -> TQ3Object { return lookupObject(object, "object").clone(); });
 }
 
 TQ3Status Q3Object_Submit(TQ3Object object, TQ3ViewObject view)

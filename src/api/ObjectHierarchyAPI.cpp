@@ -9,6 +9,7 @@
 #include "QD3D.h"
 
 #include "api/Entry.h"
+#include "core/CustomClass.h"
 #include "io/ClassIO.h"
 
 #include <algorithm>
@@ -27,6 +28,8 @@ namespace {
 
 std::string classNameOf(const ClassInfo& info)
 {
+    if (const std::shared_ptr<CustomClass> custom = findCustomClass(info.type))
+        return custom->name();
     if (const io::ClassIO* entry = io::classOfType(info.type))
         return entry->name;
     std::string name;

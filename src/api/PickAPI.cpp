@@ -71,8 +71,13 @@ void writeDetail(const PickHit& hit, TQ3PickDetail detail, void* detailData)
     case kQ3PickDetailMaskUV:
         std::memcpy(detailData, &hit.uv, sizeof hit.uv);
         return;
+    case kQ3PickDetailMaskShapePart: {
+        TQ3Object part = Ref<SharedObject>(hit.shapePart).detach();
+        std::memcpy(detailData, &part, sizeof part);
+        return;
+    }
     default:
-        fail(kQ3ErrorDataNotAvailable, "the hit has no shape part");
+        fail(kQ3ErrorInternalError, "a detail without a case");
     }
 }
 

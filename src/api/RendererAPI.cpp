@@ -160,3 +160,47 @@ TQ3Status Q3InteractiveRenderer_GetRAVEDrawContexts(TQ3RendererObject renderer, 
 }
 
 } // extern "C"
+
+extern "C" {
+
+TQ3Boolean Q3Renderer_HasModalConfigure(TQ3RendererObject renderer)
+{
+    return guard(__func__, kQ3False, [&] {
+        lookup<Renderer>(renderer, "renderer");
+        return kQ3False; // Q3's renderers have no settings dialog
+    });
+}
+
+TQ3Status Q3Renderer_ModalConfigure(TQ3RendererObject renderer, TQ3DialogAnchor, TQ3Boolean* canceled)
+{
+    return guardStatus(__func__, [&] {
+        lookup<Renderer>(renderer, "renderer");
+        requireNonNull(canceled, "canceled");
+        *canceled = kQ3True;
+    });
+}
+
+TQ3Status Q3Renderer_GetConfigurationData(TQ3RendererObject renderer, unsigned char*, unsigned long,
+                                          unsigned long* actualDataSize)
+{
+    return guardStatus(__func__, [&] {
+        lookup<Renderer>(renderer, "renderer");
+        requireNonNull(actualDataSize, "actualDataSize");
+        *actualDataSize = 0;
+    });
+}
+
+TQ3Status Q3Renderer_SetConfigurationData(TQ3RendererObject renderer, unsigned char* dataBuffer,
+                                          unsigned long bufferSize)
+{
+    return guardStatus(__func__, [&] {
+        lookup<Renderer>(renderer, "renderer");
+        if (bufferSize > 0)
+            requireNonNull(dataBuffer, "dataBuffer");
+        if (bufferSize > 0)
+            fail(kQ3ErrorInvalidParameter,
+                 "Q3's renderers keep no configuration data, so none can be handed back (bufferSize must be 0)");
+    });
+}
+
+} // extern "C"

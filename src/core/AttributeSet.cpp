@@ -77,6 +77,24 @@ void AttributeValues::overlay(const AttributeValues& other)
         m_surfaceShader = other.m_surfaceShader;
 }
 
+std::shared_ptr<CustomClass> Set::customClass(TQ3ElementType type)
+{
+    if (type >= kQ3ElementTypeNone && type <= kQ3ElementTypeSet)
+        return nullptr;
+    std::shared_ptr<CustomClass> found = findCustomClass(type);
+    if (found && found->kind() == CustomClass::Kind::kObject)
+        return nullptr;
+    return found;
+}
+
+std::shared_ptr<CustomClass> Set::checkedType(TQ3AttributeType type)
+{
+    if (std::shared_ptr<CustomClass> custom = customClass(type))
+        return custom;
+    slotIndex(type);
+    return nullptr;
+}
+
 Object* Set::duplicate() const
 {
     Ref<Set> copy = makeShared<Set>();
@@ -96,8 +114,11 @@ void Set::copyContentsTo(Set& copy) const
     // The copy shares the surface shader and the unknown elements (shared
     // objects, as a set read from a file shares them), like Q3Object_Duplicate
     // of a geometry shares nothing but makes new attribute sets.
+    // Custom elements are copied by their class's copy-duplicate method.
     copy.m_values = m_values;
     copy.m_others = m_others;
+    for (const auto& [type, element] : m_custom)
+        copy.m_custom.emplace(type, std::make_unique<CustomElement>(*element));
 }
 
 Ref<AttributeSet> AttributeSet::fromValues(const AttributeValues& values)
@@ -132,6 +153,16 @@ std::string Set::valueProblem(TQ3AttributeType type, const void* data)
 
 void Set::add(TQ3AttributeType type, const void* data)
 {
+    if (std::shared_ptr<CustomClass> custom = checkedType(type)) {
+        requireNonNull(data, "data");
+        const auto found = m_custom.find(type);
+        if (found != m_custom.end())
+            found->second->replace(data);
+        else
+            m_custom.emplace(type, std::make_unique<CustomElement>(std::move(custom), data));
+        markEdited();
+        return;
+    }
     const std::size_t index = slotIndex(type);
     if (type == kQ3AttributeTypeSurfaceShader)
         fail(kQ3ErrorInternalError, "a surface shader is stored with addShader");
@@ -147,7 +178,14 @@ void Set::add(TQ3AttributeType type, const void* data)
 
 void Set::get(TQ3AttributeType type, void* data) const
 {
-    slotIndex(type);
+    if (checkedType(type)) {
+        requireNonNull(data, "data");
+        const auto found = m_custom.find(type);
+        if (found == m_custom.end())
+            fail(kQ3ErrorAttributeNotContained, "the set holds no element of type " + std::to_string(type));
+        found->second->get(data);
+        return;
+    }
     if (type == kQ3AttributeTypeSurfaceShader)
         fail(kQ3ErrorInternalError, "a surface shader is read with shader()");
     requireNonNull(data, "data");
@@ -158,7 +196,8 @@ void Set::get(TQ3AttributeType type, void* data) const
 
 bool Set::contains(TQ3AttributeType type) const
 {
-    slotIndex(type);
+    if (checkedType(type))
+        return m_custom.count(type) != 0;
     return m_values.contains(type);
 }
 
@@ -171,26 +210,37 @@ void Set::addShader(Ref<SharedObject> shader)
 
 void Set::requireElementType(TQ3ElementType type)
 {
-    if (type < kFirstType || type > kLastStoredType)
+    if ((type < kFirstType || type > kLastStoredType) && !customClass(type))
         fail(kQ3ErrorUnknownElementType,
              "element type " + std::to_string(type) +
-                 " has no element class in Q3 (the attribute types 1 to 11 have; custom element classes "
-                 "cannot be registered)");
+                 " has no element class in Q3 (the attribute types 1 to 11 and the registered custom element "
+                 "and attribute classes have)");
 }
 
 void Set::requireWalkType(TQ3AttributeType type)
 {
     if (type != kQ3AttributeTypeNone)
-        slotIndex(type);
+        checkedType(type);
 }
 
 TQ3AttributeType Set::nextType(TQ3AttributeType type) const
 {
+    if (type != kQ3AttributeTypeNone && checkedType(type)) {
+        const auto after = m_custom.upper_bound(type);
+        return after == m_custom.end() ? TQ3AttributeType{kQ3AttributeTypeNone} : after->first;
+    }
     requireWalkType(type);
     for (TQ3AttributeType next = type + 1; next <= kLastStoredType; ++next)
         if (m_values.contains(next))
             return next;
-    return kQ3AttributeTypeNone;
+    return m_custom.empty() ? TQ3AttributeType{kQ3AttributeTypeNone} : m_custom.begin()->first;
+}
+
+void Set::addCustomElement(std::unique_ptr<CustomElement> element)
+{
+    const TQ3ElementType type = element->elementClass().type();
+    m_custom[type] = std::move(element);
+    markEdited();
 }
 
 void Set::addOtherElement(Ref<SharedObject> element)
@@ -201,6 +251,14 @@ void Set::addOtherElement(Ref<SharedObject> element)
 
 void Set::clear(TQ3AttributeType type)
 {
+    if (checkedType(type)) {
+        const auto found = m_custom.find(type);
+        if (found == m_custom.end())
+            fail(kQ3ErrorAttributeNotContained, "the set holds no element of type " + std::to_string(type));
+        m_custom.erase(found);
+        markEdited();
+        return;
+    }
     const std::size_t index = slotIndex(type);
     if (type == kQ3AttributeTypeSurfaceShader) {
         if (!m_values.m_surfaceShader)
@@ -220,7 +278,15 @@ void Set::empty()
 {
     m_values = AttributeValues();
     m_others.clear();
+    m_custom.clear();
     markEdited();
+}
+
+Set& ObjectElements::ownSet()
+{
+    if (!own)
+        own = makeShared<Set>();
+    return *own;
 }
 
 void AttributeSet::inheritFrom(const AttributeSet& other)
@@ -234,7 +300,20 @@ void AttributeSet::inherit(const AttributeSet& parent, const AttributeSet& child
     // Built apart first: parent or child may be this set.
     AttributeValues result = parent.m_values;
     result.overlay(child.m_values);
+    // Custom attributes: the child's, and the parent's the child lacks whose
+    // class lets them be inherited (kQ3XMethodTypeAttributeInherit), each
+    // copied by copy-inherit; custom elements that are no attributes stay
+    // behind.
+    std::map<TQ3ElementType, std::unique_ptr<CustomElement>> custom;
+    for (const auto& [type, element] : child.m_custom)
+        if (element->elementClass().kind() == CustomClass::Kind::kAttribute)
+            custom.emplace(type, element->inheritCopy());
+    for (const auto& [type, element] : parent.m_custom)
+        if (element->elementClass().kind() == CustomClass::Kind::kAttribute && element->inherits() &&
+            custom.count(type) == 0)
+            custom.emplace(type, element->inheritCopy());
     m_values = std::move(result);
+    m_custom = std::move(custom);
     m_others.clear();
     markEdited();
 }

@@ -3,11 +3,14 @@
 #pragma once
 
 #include "QD3DSet.h"
+#include "core/CustomClass.h"
 #include "core/Object.h"
 
 #include <array>
 #include <cstddef>
 #include <cstring>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -81,11 +84,13 @@ private:
 /// A QuickDraw 3D set (Q3Set_New): elements by element type, at most one
 /// of each. The element types Q3 has classes for are the standard attribute
 /// types (surface UV to highlight state as values, the surface shader as a
-/// reference to a shader object), so a set stores what an attribute set
-/// stores, and the elements a file gave it that Q3 has no class for (kept
-/// to be written back). Invariant: every stored value is well formed
-/// (finite floats, a switch that is kQ3On or kQ3Off, a live surface
-/// shader); add() checks before it stores.
+/// reference to a shader object) and the custom element and attribute
+/// classes registered (core/CustomClass.h: their data made by their own
+/// methods), so a set stores what an attribute set stores, and the elements
+/// a file gave it that Q3 has no class for (kept to be written back).
+/// Invariant: every stored value is well formed (finite floats, a switch
+/// that is kQ3On or kQ3Off, a live surface shader); add() checks before it
+/// stores.
 class Set : public SharedObject {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3SharedTypeSet;
@@ -113,10 +118,12 @@ public:
     /// empty string when it is.
     static std::string valueProblem(TQ3AttributeType type, const void* data);
     /// Throws kQ3ErrorUnknownElementType unless `type` is an element type Q3
-    /// has a class for (the attribute types it stores): what the Q3Set_
-    /// calls check first, where the Q3AttributeSet_ calls report
-    /// kQ3ErrorAttributeInvalidType.
+    /// has a class for (the attribute types it stores, a registered custom
+    /// class's): what the Q3Set_ calls check first, where the
+    /// Q3AttributeSet_ calls report kQ3ErrorAttributeInvalidType.
     static void requireElementType(TQ3ElementType type);
+    /// The registered custom element or attribute class of that type, or null.
+    static std::shared_ptr<CustomClass> customClass(TQ3ElementType type);
     /// Throws kQ3ErrorAttributeInvalidType unless `type` is kQ3AttributeTypeNone
     /// or a type Q3 stores: where a walk over the types may start or go on.
     static void requireWalkType(TQ3AttributeType type);
@@ -130,7 +137,8 @@ public:
     void addShader(Ref<SharedObject> shader);
     SharedObject* shader() const { return m_values.surfaceShader(); }
     /// The next type the set holds after `type` (kQ3AttributeTypeNone starts
-    /// the walk), or kQ3AttributeTypeNone after the last one.
+    /// the walk), or kQ3AttributeTypeNone after the last one: the standard
+    /// types in their order, then the custom ones in ascending order.
     TQ3AttributeType nextType(TQ3AttributeType type) const;
     bool contains(TQ3AttributeType type) const;
     /// Removes one attribute; kQ3ErrorAttributeNotContained when there is none.
@@ -142,6 +150,10 @@ public:
     /// elements), in file order: kept and written back unchanged.
     const std::vector<Ref<SharedObject>>& otherElements() const { return m_others; }
     void addOtherElement(Ref<SharedObject> element);
+    /// The custom elements, by type.
+    const std::map<TQ3ElementType, std::unique_ptr<CustomElement>>& customElements() const { return m_custom; }
+    /// Stores a custom element made elsewhere (a file's).
+    void addCustomElement(std::unique_ptr<CustomElement> element);
 
 protected:
     /// Gives `copy` this set's values and unknown elements (shared).
@@ -149,9 +161,13 @@ protected:
 
     AttributeValues m_values;
     std::vector<Ref<SharedObject>> m_others;
+    std::map<TQ3ElementType, std::unique_ptr<CustomElement>> m_custom;
 
 private:
     static std::size_t slotIndex(TQ3AttributeType type);
+    /// The custom class of `type` when it is one, null when it is a standard
+    /// type; throws as slotIndex for any other.
+    static std::shared_ptr<CustomClass> checkedType(TQ3AttributeType type);
 };
 
 /// A set of QuickDraw 3D attributes (colors, normals, UVs, a surface
@@ -184,6 +200,16 @@ public:
     std::optional<TQ3Vector3D> normal() const { return m_values.normal(); }
     std::optional<TQ3Param2D> surfaceUV() const { return m_values.surfaceUV(); }
     std::optional<TQ3Param2D> shadingUV() const { return m_values.shadingUV(); }
+};
+
+/// The elements an object keeps itself (QD3D.h: a shape's elements are
+/// attached to it directly, not through a set): a set holding them, and the
+/// set attached as the element kQ3ElementTypeSet (Q3Shape_SetSet).
+struct ObjectElements {
+    Ref<Set> own;
+    Ref<Set> attached;
+    /// The set of own elements, made when first needed.
+    Set& ownSet();
 };
 
 } // namespace q3

@@ -7,13 +7,22 @@
 // with a fields() function returning a tuple of field descriptors:
 //
 //   value("point", &S::point)                plain data, copied as it is
+//   finite("origin", &S::origin)             the same, every coordinate
+//                                            finite (float, point, vector)
+//   atLeast("numVertices", &S::numVertices, 3)
+//                                            a count with a minimum
 //   handle<AttributeSet>("set", &S::set)     an object the struct holds one
 //                                            reference to (NULL allowed)
+//   requiredHandle<Storage>(...)             the same, never NULL
 //   inlineArray("vertices", &S::vertices)    a fixed array inside the struct
 //   array("points", &S::points, countOf(&S::numPoints))
 //                                            a malloc'ed array and the
-//                                            expression that counts it
+//                                            expression that counts it,
+//                                            NULL allowed when that is 0
+//   requiredArray(...)                       the same, never NULL
 //   optionalArray(...)                       the same, NULL allowed
+//   finiteElements(array(...))               an array of points or floats,
+//                                            each finite
 //   nested("bitmap", &S::bitmap)             a described struct inside S
 //   any type with the FieldKind members      (e.g. TriMesh's attribute arrays)
 //
@@ -22,8 +31,11 @@
 // (TQ3PolyLineData -> TQ3Vertex3D -> its attribute set).
 //
 // From the description come the operations every geometry needs: the
-// structural check (required arrays present, counts within
-// limits::kMaxArrayCount), deep copies with three policies for the handles
+// structural check (four passes over the whole struct, each finished before
+// the next starts: every required array and handle present, every count at
+// least its minimum, every count within limits::kMaxArrayCount, every finite
+// field finite; so a class's own rules, which run after it, may read every
+// array), deep copies with three policies for the handles
 // inside (retain after checking them: New and SetData; retain trusted ones:
 // GetData; duplicate each distinct object once: Duplicate), checking the
 // handles without keeping them (immediate mode), releasing (EmptyData and
@@ -41,6 +53,7 @@
 #include "core/Limits.h"
 #include "core/Object.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
@@ -182,6 +195,42 @@ inline void checkCount(std::size_t count, const Path& where)
                                               std::to_string(limits::kMaxArrayCount) + ")");
 }
 
+/// The passes of the structural check, in their order: every required array
+/// and handle present (kQ3ErrorNULLParameter), every count at least its
+/// minimum (kQ3ErrorGeometryInsufficientNumberOfPoints), every count within
+/// kQ3GeometryMaxArrayCount (kQ3ErrorParameterOutOfRange), every finite
+/// field finite (kQ3ErrorInvalidData). Each walks the whole struct; the
+/// elements of an array are visited only when it is present and its count
+/// within the limit, so no pass reads past what the caller gave.
+enum class Pass { kPresence, kMinimum, kMaximum, kValues };
+
+/// True when every coordinate of a value a finite() field names is finite.
+inline bool isFinite(float v)
+{
+    return std::isfinite(v);
+}
+inline bool isFinite(const TQ3Point3D& p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+inline bool isFinite(const TQ3Vector3D& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+inline bool isFinite(const TQ3RationalPoint4D& p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+}
+
+/// Throws kQ3ErrorInvalidData naming `where` unless `v` is finite.
+template <class T>
+void checkFinite(const T& v, const Path& where)
+{
+    if (!isFinite(v))
+        fail(kQ3ErrorInvalidData, where.str() + (std::is_same<T, float>::value ? " is not finite"
+                                                                               : " has a coordinate that is not finite"));
+}
+
 /// malloc for count elements (nullptr for none), large blocks recycled
 /// (core/LargeBlocks.h); throws std::bad_alloc.
 template <class E>
@@ -206,6 +255,8 @@ void forEachField(F&& f)
 template <class S>
 void checkStructure(const S& s, const Path& path);
 template <class S>
+void checkPass(const S& s, const Path& path, Pass pass);
+template <class S>
 void clearOwned(S& s);
 template <class S, class Policy>
 void fill(S& dst, const S& src, Policy& policy, const Path& path);
@@ -218,10 +269,10 @@ void forEachHandle(const S& s, F&& f);
 
 // Element helpers: described elements recurse, plain ones are bytes.
 template <class E>
-void checkElement(const E& e, const Path& path)
+void checkElement(const E& e, const Path& path, Pass pass)
 {
     if constexpr (IsDescribed<E>::value)
-        checkStructure(e, path);
+        checkPass(e, path, pass);
 }
 
 template <class E>
@@ -298,16 +349,50 @@ void releaseElements(E* elements, std::size_t count)
 
 // ---- Field kinds ---------------------------------------------------------
 //
-// A field kind has: check(s, path) (structure), clear(s) (owned parts to
+// A field kind has: check(s, path, pass) (structure, one Pass), clear(s) (owned parts to
 // NULL), fill(dst, src, policy, path) (dst cleared, counts copied),
 // release(s), checkHandles(s, path), forEachHandle(s, f).
 
-template <class S, class T>
+template <class S, class T, bool Finite = false>
 struct ValueField {
     const char* name;
     T S::*member;
 
-    void check(const S&, const Path&) const {}
+    void check(const S& s, const Path& path, Pass pass) const
+    {
+        if constexpr (Finite)
+            if (pass == Pass::kValues)
+                checkFinite(s.*member, path.child(name));
+        (void)s, (void)path, (void)pass;
+    }
+    void clear(S&) const {}
+    template <class Policy>
+    void fill(S&, const S&, Policy&, const Path&) const
+    {
+    }
+    void release(S&) const {}
+    void checkHandles(const S&, const Path&) const {}
+    template <class F>
+    void forEachHandle(const S&, F&) const
+    {
+    }
+};
+
+/// A count field with a minimum (a polygon's three vertices): plain data,
+/// checked in the minimum pass.
+template <class S, class N>
+struct AtLeastField {
+    const char* name;
+    N S::*member;
+    unsigned long minimum;
+
+    void check(const S& s, const Path& path, Pass pass) const
+    {
+        if (pass == Pass::kMinimum && (unsigned long)(s.*member) < minimum)
+            fail(kQ3ErrorGeometryInsufficientNumberOfPoints, path.child(name).str() + " is " +
+                                                                 std::to_string(s.*member) + ", fewer than " +
+                                                                 std::to_string(minimum));
+    }
     void clear(S&) const {}
     template <class Policy>
     void fill(S&, const S&, Policy&, const Path&) const
@@ -325,8 +410,13 @@ template <class S, class C>
 struct HandleField {
     const char* name;
     TQ3Object S::*member;
+    bool required;
 
-    void check(const S&, const Path&) const {}
+    void check(const S& s, const Path& path, Pass pass) const
+    {
+        if (pass == Pass::kPresence && required && s.*member == nullptr)
+            fail(kQ3ErrorNULLParameter, path.child(name).str() + " is NULL");
+    }
     void clear(S& s) const { s.*member = nullptr; }
     template <class Policy>
     void fill(S& dst, const S& src, Policy& policy, const Path& path) const
@@ -362,10 +452,10 @@ struct InlineArrayField {
     const char* name;
     E (S::*member)[N];
 
-    void check(const S& s, const Path& path) const
+    void check(const S& s, const Path& path, Pass pass) const
     {
         for (std::size_t i = 0; i < N; ++i)
-            checkElement((s.*member)[i], path.child(name).element(i));
+            checkElement((s.*member)[i], path.child(name).element(i), pass);
     }
     void clear(S& s) const
     {
@@ -397,28 +487,40 @@ struct InlineArrayField {
     }
 };
 
+/// Whether an array may be NULL: never, when its count is 0, always.
+enum class Presence { kAlways, kWhenCounted, kOptional };
+
 template <class S, class E, class Count>
 struct ArrayField {
     const char* name;
     E* S::*member;
     Count count;
-    bool optional;
+    Presence presence;
+    bool finite = false;
 
-    void check(const S& s, const Path& path) const
+    void check(const S& s, const Path& path, Pass pass) const
     {
         const Path here = path.child(name);
         const std::size_t n = count(s);
-        checkCount(n, here);
         const E* elements = s.*member;
-        if (elements == nullptr) {
-            if (n != 0 && !optional)
-                fail(kQ3ErrorNULLParameter, here.str() + " is NULL but should hold " + std::to_string(n) +
-                                                " entries");
+        if (pass == Pass::kPresence && elements == nullptr &&
+            (presence == Presence::kAlways || (n != 0 && presence == Presence::kWhenCounted)))
+            fail(kQ3ErrorNULLParameter, here.str() + " is NULL but should hold " + std::to_string(n) + " entries");
+        if (pass == Pass::kMaximum)
+            checkCount(n, here);
+        // Elements are read only within the limit (the maximum pass reports
+        // a larger count).
+        if (elements == nullptr || n > limits::kMaxArrayCount)
             return;
-        }
-        if constexpr (IsDescribed<E>::value)
+        if constexpr (IsDescribed<E>::value) {
             for (std::size_t i = 0; i < n; ++i)
-                checkStructure(elements[i], here.element(i));
+                checkPass(elements[i], here.element(i), pass);
+        } else if constexpr (std::is_same<E, float>::value || std::is_same<E, TQ3Point3D>::value ||
+                             std::is_same<E, TQ3RationalPoint4D>::value) {
+            if (finite && pass == Pass::kValues)
+                for (std::size_t i = 0; i < n; ++i)
+                    checkFinite(elements[i], here.element(i));
+        }
     }
     void clear(S& s) const { s.*member = nullptr; }
     template <class Policy>
@@ -461,7 +563,7 @@ struct NestedField {
     const char* name;
     E S::*member;
 
-    void check(const S& s, const Path& path) const { checkElement(s.*member, path.child(name)); }
+    void check(const S& s, const Path& path, Pass pass) const { checkElement(s.*member, path.child(name), pass); }
     void clear(S& s) const { clearElement(s.*member); }
     template <class Policy>
     void fill(S& dst, const S& src, Policy& policy, const Path& path) const
@@ -486,13 +588,14 @@ struct HandleArrayField {
     Count count;
     bool optional;
 
-    void check(const S& s, const Path& path) const
+    void check(const S& s, const Path& path, Pass pass) const
     {
         const Path here = path.child(name);
         const std::size_t n = count(s);
-        checkCount(n, here);
-        if (s.*member == nullptr && n != 0 && !optional)
+        if (pass == Pass::kPresence && s.*member == nullptr && n != 0 && !optional)
             fail(kQ3ErrorNULLParameter, here.str() + " is NULL but should hold " + std::to_string(n) + " entries");
+        if (pass == Pass::kMaximum)
+            checkCount(n, here);
     }
     void clear(S& s) const { s.*member = nullptr; }
     template <class Policy>
@@ -558,10 +661,32 @@ ValueField<S, T> value(const char* name, T S::*member)
     return {name, member};
 }
 
+/// A count that must be at least `minimum`:
+/// kQ3ErrorGeometryInsufficientNumberOfPoints in the minimum pass.
+template <class S, class N>
+AtLeastField<S, N> atLeast(const char* name, N S::*member, unsigned long minimum)
+{
+    return {name, member, minimum};
+}
+
+/// A value that must be finite: kQ3ErrorInvalidData in the values pass.
+template <class S, class T>
+ValueField<S, T, true> finite(const char* name, T S::*member)
+{
+    return {name, member};
+}
+
 template <class C, class S>
 HandleField<S, C> handle(const char* name, TQ3Object S::*member)
 {
-    return {name, member};
+    return {name, member, false};
+}
+
+/// A handle that must not be NULL: kQ3ErrorNULLParameter in the presence pass.
+template <class C, class S>
+HandleField<S, C> requiredHandle(const char* name, TQ3Object S::*member)
+{
+    return {name, member, true};
 }
 
 template <class S, class E, std::size_t N>
@@ -573,13 +698,27 @@ InlineArrayField<S, E, N> inlineArray(const char* name, E (S::*member)[N])
 template <class S, class E, class Count>
 ArrayField<S, E, Count> array(const char* name, E* S::*member, Count count)
 {
-    return {name, member, count, false};
+    return {name, member, count, Presence::kWhenCounted};
+}
+
+template <class S, class E, class Count>
+ArrayField<S, E, Count> requiredArray(const char* name, E* S::*member, Count count)
+{
+    return {name, member, count, Presence::kAlways};
 }
 
 template <class S, class E, class Count>
 ArrayField<S, E, Count> optionalArray(const char* name, E* S::*member, Count count)
 {
-    return {name, member, count, true};
+    return {name, member, count, Presence::kOptional};
+}
+
+/// The array with every element (a float or a point) required to be finite.
+template <class S, class E, class Count>
+ArrayField<S, E, Count> finiteElements(ArrayField<S, E, Count> field)
+{
+    field.finite = true;
+    return field;
 }
 
 template <class S, class E>
@@ -597,9 +736,18 @@ HandleArrayField<S, C, Count> optionalHandleArray(const char* name, TQ3Object* S
 // ---- The walks -----------------------------------------------------------
 
 template <class S>
+void checkPass(const S& s, const Path& path, Pass pass)
+{
+    forEachField<S>([&](const auto& field) { field.check(s, path, pass); });
+}
+
+/// The structural check: the presence pass over the whole struct, then the
+/// minimum counts, the maximum counts and the finite values (see Pass).
+template <class S>
 void checkStructure(const S& s, const Path& path)
 {
-    forEachField<S>([&](const auto& field) { field.check(s, path); });
+    for (Pass pass : {Pass::kPresence, Pass::kMinimum, Pass::kMaximum, Pass::kValues})
+        checkPass(s, path, pass);
 }
 
 template <class S>

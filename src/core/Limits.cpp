@@ -6,6 +6,7 @@
 
 #include "core/Limits.h"
 
+#include "QD3DController.h"
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
 #include "QD3DStyle.h"
@@ -15,6 +16,8 @@ namespace q3::limits {
 
 static_assert(kMaxArrayCount == kQ3GeometryMaxArrayCount, "QD3DGeometry.h documents kMaxArrayCount");
 static_assert(kMaxCurveOrder == kQ3NURBCurveMaxOrder, "QD3DGeometry.h documents kMaxCurveOrder");
+static_assert(kMaxChannelBytes == kQ3ControllerSetChannelMaxDataSize,
+              "QD3DController.h documents kMaxChannelBytes");
 static_assert(kMaxPatchOrder == kQ3NURBPatchMaxOrder, "QD3DGeometry.h documents kMaxPatchOrder");
 static_assert(kMaxTrianglesPerPatch == kQ3SubdivisionMaxTrianglesPerPatch,
               "QD3DStyle.h documents kMaxTrianglesPerPatch");

@@ -75,4 +75,13 @@ constexpr std::uint32_t kMaxTextureSize = 4096;
 /// The value substituted for an unreasonable c1 or c2: kQ3SubdivisionDefaultC1.
 constexpr float kSubdivisionDefault = 20.0f;
 
+/// The most values and channels a controller may declare (QD3DController.h),
+/// so a driver's counts never allocate without bound.
+constexpr unsigned long kMaxControllerValues = 1024;
+constexpr unsigned long kMaxControllerChannels = 1024;
+/// The most bytes of one controller channel: kQ3ControllerSetChannelMaxDataSize.
+constexpr unsigned long kMaxChannelBytes = 256;
+/// How many event coordinates a tracker's ring buffer keeps.
+constexpr std::size_t kTrackerEventCount = 16;
+
 } // namespace q3::limits

@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #include "core/Object.h"
 
+#include "core/AttributeSet.h"
+
 #include <algorithm>
 #include <mutex>
 #include <unordered_map>
@@ -12,11 +14,19 @@ namespace q3 {
 namespace {
 
 // Every ClassInfo, by type code. Filled during static initialization (from
-// any translation unit, hence the function-local static) and read-only after.
+// any translation unit, hence the function-local static), and at run time by
+// the classes applications register (core/CustomClass.h), hence the mutex.
+// Never destroyed, so class infos ending at exit can still leave it.
 std::unordered_map<TQ3ObjectType, const ClassInfo*>& classRegistry()
 {
     static auto* classes = new std::unordered_map<TQ3ObjectType, const ClassInfo*>;
     return *classes;
+}
+
+std::mutex& classRegistryMutex()
+{
+    static auto* mutex = new std::mutex;
+    return *mutex;
 }
 
 } // namespace
@@ -24,11 +34,22 @@ std::unordered_map<TQ3ObjectType, const ClassInfo*>& classRegistry()
 ClassInfo::ClassInfo(TQ3ObjectType type_, const ClassInfo* parent_, const char* name_)
     : type(type_), parent(parent_), name(name_)
 {
+    std::lock_guard<std::mutex> lock(classRegistryMutex());
     classRegistry().emplace(type, this);
+}
+
+ClassInfo::~ClassInfo()
+{
+    std::lock_guard<std::mutex> lock(classRegistryMutex());
+    auto& classes = classRegistry();
+    const auto found = classes.find(type);
+    if (found != classes.end() && found->second == this)
+        classes.erase(found);
 }
 
 const ClassInfo* findClass(TQ3ObjectType type)
 {
+    std::lock_guard<std::mutex> lock(classRegistryMutex());
     const auto& classes = classRegistry();
     const auto found = classes.find(type);
     return found == classes.end() ? nullptr : found->second;
@@ -37,6 +58,7 @@ const ClassInfo* findClass(TQ3ObjectType type)
 std::vector<const ClassInfo*> allClasses()
 {
     std::vector<const ClassInfo*> result;
+    std::lock_guard<std::mutex> lock(classRegistryMutex());
     for (const auto& [type, info] : classRegistry())
         if (type != kQ3ObjectTypeInvalid)
             result.push_back(info);
@@ -114,6 +136,32 @@ void Object::registerLive()
 void Object::dispose()
 {
     delete this;
+}
+
+ObjectElements& Object::elements()
+{
+    if (!m_elements)
+        m_elements = std::make_unique<ObjectElements>();
+    return *m_elements;
+}
+
+Object* Object::clone() const
+{
+    Object* copy = duplicate();
+    if (m_elements == nullptr || copy == nullptr)
+        return copy;
+    // The own elements are copied (custom ones by their copy-duplicate
+    // method); an attached set is shared, as Q3Shape_SetSet shares it.
+    try {
+        ObjectElements& target = copy->elements();
+        if (m_elements->own)
+            target.own = Ref<Set>::adopt(static_cast<Set*>(m_elements->own->duplicate()));
+        target.attached = m_elements->attached;
+    } catch (...) {
+        copy->dispose();
+        throw;
+    }
+    return copy;
 }
 
 Object* Object::duplicate() const

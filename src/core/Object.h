@@ -21,6 +21,8 @@ protected:
 namespace q3 {
 
 class ShapeVisitor;
+class Set;
+struct ObjectElements;
 
 /// A node of the QuickDraw 3D class tree: a type code, its parent and a name
 /// for messages. Every ClassInfo enters the class registry when it is
@@ -28,6 +30,8 @@ class ShapeVisitor;
 /// classes is whatever is linked in: no file lists them.
 struct ClassInfo {
     ClassInfo(TQ3ObjectType type, const ClassInfo* parent, const char* name);
+    /// Leaves the registry (a class an application unregisters).
+    ~ClassInfo();
     ClassInfo(const ClassInfo&) = delete;
     ClassInfo& operator=(const ClassInfo&) = delete;
 
@@ -72,6 +76,14 @@ public:
     virtual void dispose();
     /// A deep copy holding one reference for the caller.
     virtual Object* duplicate() const;
+    /// duplicate(), with copies of the object's own elements
+    /// (Q3Object_Duplicate, and a group's duplicate of its members).
+    Object* clone() const;
+    /// The elements kept on the object itself (Q3Shape_AddElement,
+    /// Q3Object_AddElement; a set's own elements are the set), made when
+    /// first asked for; null from the const form while there are none.
+    ObjectElements& elements();
+    const ObjectElements* elementsIfAny() const { return m_elements.get(); }
     virtual bool isDrawable() const { return false; }
     /// Submits the object to a view (drawables only).
     virtual void accept(ShapeVisitor& visitor) const;
@@ -87,6 +99,7 @@ protected:
 
 private:
     bool m_registered = false;
+    std::unique_ptr<ObjectElements> m_elements;
 };
 
 /// A reference-counted object. Invariant: the edit index changes with every

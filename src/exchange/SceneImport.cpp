@@ -131,7 +131,7 @@ private:
                                    p.positions[3 * std::size_t(i) + 2]},
                         // The point takes its own reference to the set.
                         const_cast<AttributeSet*>(set)};
-                    Point::check(data);
+                    Point::checkData(data);
                     objects.push_back(makeShared<Point>(data));
                 }
             } else if (p.mode == Primitive::Mode::kLines) {
@@ -167,7 +167,7 @@ private:
         data.vertices = vertices.data();
         // The polyline takes its own references to the sets.
         data.polyLineAttributeSet = const_cast<AttributeSet*>(set);
-        PolyLine::check(data);
+        PolyLine::checkData(data);
         return makeShared<PolyLine>(data);
     }
 

@@ -12,10 +12,6 @@ template class DataGeometry<Box, TQ3BoxData>;
 
 void Box::check(const TQ3BoxData& d)
 {
-    requireFiniteField(d.origin, "origin");
-    requireFiniteField(d.orientation, "orientation");
-    requireFiniteField(d.majorAxis, "majorAxis");
-    requireFiniteField(d.minorAxis, "minorAxis");
     requireWithinFloatRange(d.origin, {d.orientation, d.majorAxis, d.minorAxis});
 }
 

@@ -50,8 +50,8 @@ template <> struct Describe<TQ3BoxData> {
     {
         using D = TQ3BoxData;
         return std::make_tuple(
-            value("origin", &D::origin), value("orientation", &D::orientation), value("majorAxis", &D::majorAxis),
-            value("minorAxis", &D::minorAxis),
+            finite("origin", &D::origin), finite("orientation", &D::orientation), finite("majorAxis", &D::majorAxis),
+            finite("minorAxis", &D::minorAxis),
             optionalHandleArray<AttributeSet>("faceAttributeSet", &D::faceAttributeSet, fixedCount<Box::kFaces>()),
             handle<AttributeSet>("boxAttributeSet", &D::boxAttributeSet));
     }

@@ -15,7 +15,9 @@
 //       static constexpr const char* kDataName = "triangleData";   // messages
 //       static constexpr TQ3AttributeSet TQ3TriangleData::*kOwnSet =
 //           &TQ3TriangleData::triangleAttributeSet;
-//       static void check(const TQ3TriangleData& data);  // its data rules
+//       // optional: the data rules its description cannot say (index
+//       // ranges, enumerations), run after the description's own checks
+//       static void check(const TQ3TriangleData& data);
 //       // optional: data QuickDraw 3D accepted though it is degenerate, and
 //       // what makes it so ("" when it is not; docs/3dmf.md, Tolerances)
 //       static std::string degeneracy(const TQ3TriangleData& data);
@@ -51,11 +53,23 @@ public:
 
     /// Everything New, SetData and Submit require of the caller's data, in
     /// this order: data is not NULL (kQ3ErrorNULLParameter, named
-    /// Derived::kDataName); Derived::check's rules; every array the struct
-    /// describes is present and within kQ3GeometryMaxArrayCount. Attribute sets
-    /// are checked when the data is taken (the constructors and setData).
-    /// Data that passes and is degenerate gets warnIfDegenerate's warning.
+    /// Derived::kDataName); checkData. Attribute sets are checked when the
+    /// data is taken (the constructors and setData). Data that passes and is
+    /// degenerate gets warnIfDegenerate's warning.
     static void validate(const Data* data);
+
+    /// The rules of the data, in two steps: the structural check its
+    /// description gives (layout::checkStructure: every required array and
+    /// handle present, every count at least its minimum, every count within
+    /// kQ3GeometryMaxArrayCount, every field described as finite() finite),
+    /// then Derived::check, the
+    /// class's own rules, which may therefore read every array. The per-field
+    /// setters check a changed copy of the data through it too.
+    static void checkData(const Data& data);
+
+    /// The class's own rules, beyond its description; a class with some
+    /// hides this one (Derived::check).
+    static void check(const Data&) {}
 
     /// For a class that defines Derived::degeneracy: when it describes a
     /// case, the attribute sets are checked (so that a call refused for them

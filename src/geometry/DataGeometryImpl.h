@@ -22,12 +22,19 @@ template <>
 struct Describe<TQ3Vertex3D> {
     static auto fields()
     {
-        return std::make_tuple(value("point", &TQ3Vertex3D::point),
+        return std::make_tuple(finite("point", &TQ3Vertex3D::point),
                                handle<AttributeSet>("attributeSet", &TQ3Vertex3D::attributeSet));
     }
 };
 
 } // namespace layout
+
+/// Specialized as true, in its .cpp before the explicit instantiation, for a
+/// class whose check() covers its structure itself in an order its header
+/// documents (the NURB curve and patch: orders and counts before the arrays'
+/// presence). Its description's structural check then runs after check().
+template <class Derived>
+struct ChecksItsOwnStructure : std::false_type {};
 
 namespace detail {
 template <class T, class D, class = void>
@@ -40,9 +47,20 @@ template <class Derived, class Data>
 void DataGeometry<Derived, Data>::validate(const Data* data)
 {
     requireNonNull(data, Derived::kDataName);
-    Derived::check(*data);
-    layout::checkStructure(*data, layout::Path{});
+    checkData(*data);
     warnIfDegenerate(*data);
+}
+
+template <class Derived, class Data>
+void DataGeometry<Derived, Data>::checkData(const Data& data)
+{
+    if constexpr (ChecksItsOwnStructure<Derived>::value) {
+        Derived::check(data);
+        layout::checkStructure(data, layout::Path{});
+    } else {
+        layout::checkStructure(data, layout::Path{});
+        Derived::check(data);
+    }
 }
 
 template <class Derived, class Data>

@@ -12,13 +12,6 @@ template class DataGeometry<Disk, TQ3DiskData>;
 
 void Disk::check(const TQ3DiskData& d)
 {
-    requireFiniteField(d.origin, "origin");
-    requireFiniteField(d.majorRadius, "majorRadius");
-    requireFiniteField(d.minorRadius, "minorRadius");
-    requireFiniteField(d.uMin, "uMin");
-    requireFiniteField(d.uMax, "uMax");
-    requireFiniteField(d.vMin, "vMin");
-    requireFiniteField(d.vMax, "vMax");
     requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius});
     requireUnitParameter(d.uMin, "uMin");
     requireUnitParameter(d.uMax, "uMax");

@@ -40,9 +40,9 @@ template <> struct Describe<TQ3DiskData> {
     static auto fields()
     {
         using D = TQ3DiskData;
-        return std::make_tuple(value("origin", &D::origin), value("majorRadius", &D::majorRadius),
-                               value("minorRadius", &D::minorRadius), value("uMin", &D::uMin), value("uMax", &D::uMax),
-                               value("vMin", &D::vMin), value("vMax", &D::vMax),
+        return std::make_tuple(finite("origin", &D::origin), finite("majorRadius", &D::majorRadius),
+                               finite("minorRadius", &D::minorRadius), finite("uMin", &D::uMin), finite("uMax", &D::uMax),
+                               finite("vMin", &D::vMin), finite("vMax", &D::vMax),
                                handle<AttributeSet>("diskAttributeSet", &D::diskAttributeSet));
     }
     // MF3D's 1.0 disk stops at the origin; the QD3D 1.5.4 book's adds the ranges.

@@ -12,11 +12,6 @@ template class DataGeometry<Ellipse, TQ3EllipseData>;
 
 void Ellipse::check(const TQ3EllipseData& d)
 {
-    requireFiniteField(d.origin, "origin");
-    requireFiniteField(d.majorRadius, "majorRadius");
-    requireFiniteField(d.minorRadius, "minorRadius");
-    requireFiniteField(d.uMin, "uMin");
-    requireFiniteField(d.uMax, "uMax");
     requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius});
     requireUnitParameter(d.uMin, "uMin");
     requireUnitParameter(d.uMax, "uMax");

@@ -48,8 +48,8 @@ template <> struct Describe<TQ3EllipseData> {
     static auto fields()
     {
         using D = TQ3EllipseData;
-        return std::make_tuple(value("origin", &D::origin), value("majorRadius", &D::majorRadius),
-                               value("minorRadius", &D::minorRadius), value("uMin", &D::uMin), value("uMax", &D::uMax),
+        return std::make_tuple(finite("origin", &D::origin), finite("majorRadius", &D::majorRadius),
+                               finite("minorRadius", &D::minorRadius), finite("uMin", &D::uMin), finite("uMax", &D::uMax),
                                handle<AttributeSet>("ellipseAttributeSet", &D::ellipseAttributeSet));
     }
     // The disk's form with uMin and uMax, as Quesa reads it.

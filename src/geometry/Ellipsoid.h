@@ -44,10 +44,10 @@ template <> struct Describe<TQ3EllipsoidData> {
     static auto fields()
     {
         using D = TQ3EllipsoidData;
-        return std::make_tuple(value("origin", &D::origin), value("orientation", &D::orientation),
-                               value("majorRadius", &D::majorRadius), value("minorRadius", &D::minorRadius),
-                               value("uMin", &D::uMin), value("uMax", &D::uMax), value("vMin", &D::vMin),
-                               value("vMax", &D::vMax), value("caps", &D::caps),
+        return std::make_tuple(finite("origin", &D::origin), finite("orientation", &D::orientation),
+                               finite("majorRadius", &D::majorRadius), finite("minorRadius", &D::minorRadius),
+                               finite("uMin", &D::uMin), finite("uMax", &D::uMax), finite("vMin", &D::vMin),
+                               finite("vMax", &D::vMax), value("caps", &D::caps),
                                handle<AttributeSet>("interiorAttributeSet", &D::interiorAttributeSet),
                                handle<AttributeSet>("ellipsoidAttributeSet", &D::ellipsoidAttributeSet));
     }

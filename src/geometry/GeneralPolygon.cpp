@@ -16,8 +16,8 @@ struct Describe<TQ3GeneralPolygonContourData> {
     static auto fields()
     {
         using C = TQ3GeneralPolygonContourData;
-        return std::make_tuple(value("numVertices", &C::numVertices),
-                               array("vertices", &C::vertices, countOf(&C::numVertices)));
+        return std::make_tuple(atLeast("numVertices", &C::numVertices, 3),
+                               requiredArray("vertices", &C::vertices, countOf(&C::numVertices)));
     }
 };
 
@@ -26,8 +26,8 @@ struct Describe<TQ3GeneralPolygonData> {
     static auto fields()
     {
         using D = TQ3GeneralPolygonData;
-        return std::make_tuple(value("numContours", &D::numContours),
-                               array("contours", &D::contours, countOf(&D::numContours)),
+        return std::make_tuple(atLeast("numContours", &D::numContours, 1),
+                               requiredArray("contours", &D::contours, countOf(&D::numContours)),
                                value("shapeHint", &D::shapeHint),
                                handle<AttributeSet>("generalPolygonAttributeSet", &D::generalPolygonAttributeSet));
     }
@@ -45,25 +45,13 @@ void GeneralPolygon::checkShapeHint(const TQ3GeneralPolygonShapeHint& hint, TQ3E
 
 void GeneralPolygon::check(const TQ3GeneralPolygonData& data)
 {
-    requireNonNull(data.contours, "contours");
-    if (data.numContours < 1)
-        fail(kQ3ErrorGeometryInsufficientNumberOfPoints, "numContours is 0; a general polygon needs a contour");
-    layout::checkCount(data.numContours, layout::Path{nullptr, "contours"});
     checkShapeHint(data.shapeHint, kQ3ErrorInvalidData);
+    // Each contour is within the limit (the description); all of them
+    // together must be too, as the decomposition holds them in one mesh.
     std::size_t total = 0;
     for (unsigned long c = 0; c < data.numContours; ++c) {
-        const TQ3GeneralPolygonContourData& contour = data.contours[c];
-        const std::string where = "contours[" + std::to_string(c) + "]";
-        if (contour.vertices == nullptr)
-            fail(kQ3ErrorNULLParameter, where + ".vertices is NULL");
-        if (contour.numVertices < 3)
-            fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
-                 where + ".numVertices is " + std::to_string(contour.numVertices) + "; a contour needs at least 3");
-        layout::checkCount(contour.numVertices, layout::Path{nullptr, "contour vertices"});
-        total += contour.numVertices;
+        total += data.contours[c].numVertices;
         layout::checkCount(total, layout::Path{nullptr, "the vertices of all contours"});
-        for (unsigned long i = 0; i < contour.numVertices; ++i)
-            requireFinite(contour.vertices[i].point, where + ".vertices[" + std::to_string(i) + "].point");
     }
 }
 

@@ -58,6 +58,12 @@ public:
     /// kQ3ErrorUnsupportedGeometryType for a mixture the result types cannot hold.
     virtual Ref<Geometry> decomposed(const DecomposeContext& context) const;
 
+    /// The shape part (QD3DPick.h) of the kind `part` (kQ3PickPartsMaskFace,
+    /// Edge or Vertex) at `local`, a hit point in the geometry's own
+    /// coordinates, as a new object; null for a geometry without parts (all
+    /// but the mesh).
+    virtual Ref<SharedObject> shapePartAt(TQ3PickParts part, const TQ3Point3D& local) const { return {}; }
+
     /// How many times the cached mesh has been built; tests read it.
     std::uint64_t meshBuilds() const { return m_meshBuilds; }
 

@@ -10,12 +10,6 @@ const ClassInfo kLineClass{kQ3GeometryTypeLine, &kGeometryClass, "line"};
 
 template class DataGeometry<Line, TQ3LineData>;
 
-void Line::check(const TQ3LineData& data)
-{
-    for (unsigned long i = 0; i < 2; ++i)
-        requireFinite(data.vertices[i].point, "vertices", i);
-}
-
 void Line::decompose(const DecomposeContext&, PrimitiveSink& sink) const
 {
     const TQ3Vertex3D* ends = data().vertices;

@@ -18,9 +18,7 @@ public:
     static constexpr const char* kDataName = "lineData";
     static constexpr TQ3AttributeSet TQ3LineData::*kOwnSet = &TQ3LineData::lineAttributeSet;
 
-    /// The TQ3LineData rules of QD3DGeometry.h: kQ3ErrorInvalidData for a
-    /// coordinate that is not finite.
-    static void check(const TQ3LineData& data);
+    // The TQ3LineData rules of QD3DGeometry.h are all in the description below.
 
     using DataGeometry::DataGeometry;
 

@@ -17,7 +17,7 @@ template <>
 struct Describe<TQ3Bitmap> {
     static auto fields()
     {
-        return std::make_tuple(array("image", &TQ3Bitmap::image, countProduct(&TQ3Bitmap::rowBytes, &TQ3Bitmap::height)));
+        return std::make_tuple(requiredArray("image", &TQ3Bitmap::image, countProduct(&TQ3Bitmap::rowBytes, &TQ3Bitmap::height)));
     }
 };
 
@@ -26,7 +26,7 @@ struct Describe<TQ3MarkerData> {
     static auto fields()
     {
         using D = TQ3MarkerData;
-        return std::make_tuple(value("location", &D::location), value("xOffset", &D::xOffset),
+        return std::make_tuple(finite("location", &D::location), value("xOffset", &D::xOffset),
                                value("yOffset", &D::yOffset), nested("bitmap", &D::bitmap),
                                handle<AttributeSet>("markerAttributeSet", &D::markerAttributeSet));
     }
@@ -37,7 +37,12 @@ template class DataGeometry<Marker, TQ3MarkerData>;
 
 void Marker::checkBitmap(const TQ3Bitmap& bitmap)
 {
-    requireNonNull(bitmap.image, "bitmap.image");
+    layout::checkStructure(bitmap, layout::Path{nullptr, "bitmap"});
+    checkBitmapRules(bitmap);
+}
+
+void Marker::checkBitmapRules(const TQ3Bitmap& bitmap)
+{
     if (bitmap.width == 0 || bitmap.height == 0)
         fail(kQ3ErrorInvalidData, "the bitmap is " + std::to_string(bitmap.width) + " x " +
                                       std::to_string(bitmap.height) + " pixels; a marker needs at least one");
@@ -47,15 +52,11 @@ void Marker::checkBitmap(const TQ3Bitmap& bitmap)
     const long order = enumValue(bitmap.bitOrder);
     if (order != kQ3EndianBig && order != kQ3EndianLittle)
         fail(kQ3ErrorInvalidData, "bitmap.bitOrder " + std::to_string(order) + " is not a TQ3Endian");
-    layout::checkCount(layout::countProduct(&TQ3Bitmap::rowBytes, &TQ3Bitmap::height)(bitmap),
-                       layout::Path{nullptr, "bitmap.image"});
 }
 
 void Marker::check(const TQ3MarkerData& data)
 {
-    requireNonNull(data.bitmap.image, "bitmap.image");
-    requireFinite(data.location, "location");
-    checkBitmap(data.bitmap);
+    checkBitmapRules(data.bitmap);
 }
 
 void Marker::decompose(const DecomposeContext&, PrimitiveSink& sink) const

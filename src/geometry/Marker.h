@@ -24,6 +24,9 @@ public:
     static void check(const TQ3MarkerData& data);
     /// The bitmap rules alone (Q3Marker_SetBitmap), in the same order.
     static void checkBitmap(const TQ3Bitmap& bitmap);
+    /// checkBitmap's rules beyond the bitmap's description (its image
+    /// present, rowBytes * height within the limit), for data that passed it.
+    static void checkBitmapRules(const TQ3Bitmap& bitmap);
 
     using DataGeometry::DataGeometry;
 

@@ -13,6 +13,7 @@
 #include "geometry/MeshGeometry.h"
 
 #include "core/Limits.h"
+#include "geometry/ShapePart.h"
 #include "geometry/mesh/Triangulate.h"
 
 #include <glm/geometric.hpp>
@@ -918,6 +919,92 @@ void MeshGeometry::decompose(const DecomposeContext&, PrimitiveSink& sink) const
             }
         },
         [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
+}
+
+
+namespace {
+
+double pointSegmentDistance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b)
+{
+    const glm::dvec3 ab = b - a;
+    const double length2 = glm::dot(ab, ab);
+    const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+    return glm::distance(p, a + t * ab);
+}
+
+glm::dvec3 toVec(const TQ3Point3D& p)
+{
+    return glm::dvec3(p.x, p.y, p.z);
+}
+
+} // namespace
+
+Ref<SharedObject> MeshGeometry::shapePartAt(TQ3PickParts part, const TQ3Point3D& local) const
+{
+    const glm::dvec3 p = toVec(local);
+    Ref<MeshGeometry> self = Ref<MeshGeometry>::retain(const_cast<MeshGeometry*>(this));
+    double best = std::numeric_limits<double>::infinity();
+    Serial found = 0;
+    if (part == kQ3PickPartsMaskVertex) {
+        for (const auto& v : m_vertices) {
+            const double d = glm::distance(p, toVec(v.second.point));
+            if (d < best) {
+                best = d;
+                found = v.first;
+            }
+        }
+        return found == 0 ? Ref<SharedObject>() : Ref<SharedObject>(makeShared<MeshVertexPart>(self, found));
+    }
+    if (part == kQ3PickPartsMaskEdge) {
+        for (const auto& e : m_edges) {
+            const double d = pointSegmentDistance(p, toVec(m_vertices.at(e.second.from).point),
+                                                  toVec(m_vertices.at(e.second.to).point));
+            if (d < best) {
+                best = d;
+                found = e.first;
+            }
+        }
+        return found == 0 ? Ref<SharedObject>() : Ref<SharedObject>(makeShared<MeshEdgePart>(self, found));
+    }
+    if (part != kQ3PickPartsMaskFace)
+        return {};
+    // Each face scores its plane distance, plus, when the point falls
+    // outside its contours (even-odd, projected along the normal's largest
+    // axis), its distance to the nearest contour side: 0 for the face the
+    // hit point lies in, up to rounding.
+    for (const auto& f : m_faces) {
+        std::vector<glm::dvec3> first;
+        for (Serial v : m_contours.at(f.second.contours.front()).vertices)
+            first.push_back(toVec(m_vertices.at(v).point));
+        glm::dvec3 n = mesh::newellNormal(first.data(), first.size());
+        const double length = glm::length(n);
+        if (!(length > 0.0))
+            continue;
+        n /= length;
+        const double planeDistance = std::fabs(glm::dot(p - first.front(), n));
+        const glm::dvec3 a = glm::abs(n);
+        const int drop = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+        const int u = drop == 0 ? 1 : 0, w = drop == 2 ? 1 : 2;
+        bool inside = false;
+        double edgeDistance = std::numeric_limits<double>::infinity();
+        for (Serial c : f.second.contours) {
+            const std::vector<Serial>& ring = m_contours.at(c).vertices;
+            for (std::size_t k = 0, count = ring.size(); k < count; ++k) {
+                const glm::dvec3 s = toVec(m_vertices.at(ring[k]).point);
+                const glm::dvec3 t = toVec(m_vertices.at(ring[(k + 1) % count]).point);
+                edgeDistance = std::min(edgeDistance, pointSegmentDistance(p, s, t));
+                if ((s[w] > p[w]) != (t[w] > p[w]) &&
+                    p[u] < s[u] + (p[w] - s[w]) * (t[u] - s[u]) / (t[w] - s[w]))
+                    inside = !inside;
+            }
+        }
+        const double score = planeDistance + (inside ? 0.0 : edgeDistance);
+        if (score < best) {
+            best = score;
+            found = f.first;
+        }
+    }
+    return found == 0 ? Ref<SharedObject>() : Ref<SharedObject>(makeShared<MeshFacePart>(self, found));
 }
 
 } // namespace q3

@@ -49,6 +49,12 @@ public:
     /// attributes; every edge once as the wireframe, in its colour if it has
     /// one.
     void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
+    /// The face `local` lies in (the nearest by plane distance plus distance
+    /// outside its contours), the edge nearest to it, or the vertex nearest
+    /// to it, as a mesh face, edge or vertex part.
+    Ref<SharedObject> shapePartAt(TQ3PickParts part, const TQ3Point3D& local) const override;
+    /// Whether the mesh has a part of that kind with that serial.
+    bool hasPart(Serial serial, MeshPart kind) const { return holds(serial, kind); }
 
     // Handles.
     static void* handleOf(Serial serial, MeshPart kind);

@@ -38,6 +38,12 @@ struct Describe<TQ3NURBCurveData> {
 };
 } // namespace layout
 
+// The NURB rules, in QD3DGeometry.h's order, check the orders and counts
+// before the arrays: validateNURBCurveData runs before the description's
+// check.
+template <>
+struct ChecksItsOwnStructure<NURBCurve> : std::true_type {};
+
 template class DataGeometry<NURBCurve, TQ3NURBCurveData>;
 
 nurbs::CurveRef curveRefOf(const TQ3NURBCurveData& data)

@@ -55,6 +55,11 @@ struct Describe<TQ3NURBPatchData> {
 };
 } // namespace layout
 
+// The NURB rules, in QD3DGeometry.h's order, check the orders and counts
+// before the arrays: validateNURBPatchData runs before the description's check.
+template <>
+struct ChecksItsOwnStructure<NURBPatch> : std::true_type {};
+
 template class DataGeometry<NURBPatch, TQ3NURBPatchData>;
 
 namespace {

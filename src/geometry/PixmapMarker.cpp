@@ -20,7 +20,7 @@ const ClassInfo kPixmapMarkerClass{kQ3GeometryTypePixmapMarker, &kGeometryClass,
 namespace layout {
 template <>
 struct Describe<TQ3StoragePixmap> {
-    static auto fields() { return std::make_tuple(handle<Storage>("image", &TQ3StoragePixmap::image)); }
+    static auto fields() { return std::make_tuple(requiredHandle<Storage>("image", &TQ3StoragePixmap::image)); }
 };
 
 template <>
@@ -28,7 +28,7 @@ struct Describe<TQ3PixmapMarkerData> {
     static auto fields()
     {
         using D = TQ3PixmapMarkerData;
-        return std::make_tuple(value("position", &D::position), value("xOffset", &D::xOffset),
+        return std::make_tuple(finite("position", &D::position), value("xOffset", &D::xOffset),
                                value("yOffset", &D::yOffset), nested("pixmap", &D::pixmap),
                                handle<AttributeSet>("pixmapMarkerAttributeSet", &D::pixmapMarkerAttributeSet));
     }
@@ -48,7 +48,12 @@ std::size_t imageBytes(const TQ3StoragePixmap& pixmap)
 
 void PixmapMarker::checkPixmap(const TQ3StoragePixmap& pixmap)
 {
-    requireNonNull(pixmap.image, "pixmap.image");
+    layout::checkStructure(pixmap, layout::Path{nullptr, "pixmap"});
+    checkPixmapRules(pixmap);
+}
+
+void PixmapMarker::checkPixmapRules(const TQ3StoragePixmap& pixmap)
+{
     const long type = enumValue(pixmap.pixelType);
     const unsigned long bits = bitsPerPixel(type);
     if (bits == 0)
@@ -84,9 +89,7 @@ void PixmapMarker::checkPixmap(const TQ3StoragePixmap& pixmap)
 
 void PixmapMarker::check(const TQ3PixmapMarkerData& data)
 {
-    requireNonNull(data.pixmap.image, "pixmap.image");
-    requireFinite(data.position, "position");
-    checkPixmap(data.pixmap);
+    checkPixmapRules(data.pixmap);
 }
 
 void PixmapMarker::decompose(const DecomposeContext&, PrimitiveSink& sink) const

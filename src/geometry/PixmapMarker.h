@@ -29,6 +29,9 @@ public:
     static void check(const TQ3PixmapMarkerData& data);
     /// The pixmap rules alone (Q3PixmapMarker_SetPixmap), in the same order.
     static void checkPixmap(const TQ3StoragePixmap& pixmap);
+    /// checkPixmap's rules beyond the pixmap's description (its image
+    /// present), for data that passed it.
+    static void checkPixmapRules(const TQ3StoragePixmap& pixmap);
 
     using DataGeometry::DataGeometry;
 

@@ -10,11 +10,6 @@ const ClassInfo kPointClass{kQ3GeometryTypePoint, &kGeometryClass, "point"};
 
 template class DataGeometry<Point, TQ3PointData>;
 
-void Point::check(const TQ3PointData& data)
-{
-    requireFinite(data.point, "point");
-}
-
 void Point::decompose(const DecomposeContext&, PrimitiveSink& sink) const
 {
     static const std::uint32_t kFirst = 0;

@@ -18,9 +18,7 @@ public:
     static constexpr const char* kDataName = "pointData";
     static constexpr TQ3AttributeSet TQ3PointData::*kOwnSet = &TQ3PointData::pointAttributeSet;
 
-    /// The TQ3PointData rules of QD3DGeometry.h: kQ3ErrorInvalidData for a
-    /// coordinate that is not finite.
-    static void check(const TQ3PointData& data);
+    // The TQ3PointData rules of QD3DGeometry.h are all in the description below.
 
     using DataGeometry::DataGeometry;
 
@@ -41,7 +39,7 @@ template <>
 struct Describe<TQ3PointData> {
     static auto fields()
     {
-        return std::make_tuple(value("point", &TQ3PointData::point),
+        return std::make_tuple(finite("point", &TQ3PointData::point),
                                handle<AttributeSet>("pointAttributeSet", &TQ3PointData::pointAttributeSet));
     }
     static auto fileFields() { return std::make_tuple(point3D(&TQ3PointData::point)); }

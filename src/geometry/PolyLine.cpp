@@ -10,17 +10,6 @@ const ClassInfo kPolyLineClass{kQ3GeometryTypePolyLine, &kGeometryClass, "polyli
 
 template class DataGeometry<PolyLine, TQ3PolyLineData>;
 
-void PolyLine::check(const TQ3PolyLineData& data)
-{
-    requireNonNull(data.vertices, "vertices");
-    if (data.numVertices < 2)
-        fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
-             "numVertices is " + std::to_string(data.numVertices) + "; a polyline needs at least 2");
-    layout::checkCount(data.numVertices, layout::Path{nullptr, "vertices"});
-    for (unsigned long i = 0; i < data.numVertices; ++i)
-        requireFinite(data.vertices[i].point, "vertices", i);
-}
-
 Ref<PolyLine> PolyLine::fromPoints(const float* xyz, std::size_t count, const AttributeSet* attributes)
 {
     requireNonNull(xyz, "xyz");

@@ -21,11 +21,8 @@ public:
     static constexpr const char* kDataName = "polyLineData";
     static constexpr TQ3AttributeSet TQ3PolyLineData::*kOwnSet = &TQ3PolyLineData::polyLineAttributeSet;
 
-    /// The TQ3PolyLineData rules of QD3DGeometry.h, in their order:
-    /// kQ3ErrorNULLParameter (vertices is NULL),
-    /// kQ3ErrorGeometryInsufficientNumberOfPoints (numVertices < 2),
-    /// kQ3ErrorInvalidData (a coordinate is not finite).
-    static void check(const TQ3PolyLineData& data);
+    // The TQ3PolyLineData rules of QD3DGeometry.h are all in the description below.
+
     /// numVertices - 1, or 0 without vertices.
     static std::size_t segmentCount(const TQ3PolyLineData& data)
     {
@@ -80,8 +77,8 @@ struct Describe<TQ3PolyLineData> {
     static auto fields()
     {
         return std::make_tuple(
-            value("numVertices", &TQ3PolyLineData::numVertices),
-            array("vertices", &TQ3PolyLineData::vertices, countOf(&TQ3PolyLineData::numVertices)),
+            atLeast("numVertices", &TQ3PolyLineData::numVertices, 2),
+            requiredArray("vertices", &TQ3PolyLineData::vertices, countOf(&TQ3PolyLineData::numVertices)),
             optionalHandleArray<AttributeSet>("segmentAttributeSet", &TQ3PolyLineData::segmentAttributeSet,
                                               PolyLine::segmentCount),
             handle<AttributeSet>("polyLineAttributeSet", &TQ3PolyLineData::polyLineAttributeSet));

@@ -11,17 +11,6 @@ const ClassInfo kPolygonClass{kQ3GeometryTypePolygon, &kGeometryClass, "polygon"
 
 template class DataGeometry<Polygon, TQ3PolygonData>;
 
-void Polygon::check(const TQ3PolygonData& data)
-{
-    requireNonNull(data.vertices, "vertices");
-    if (data.numVertices < 3)
-        fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
-             "numVertices is " + std::to_string(data.numVertices) + "; a polygon needs at least 3");
-    layout::checkCount(data.numVertices, layout::Path{nullptr, "vertices"});
-    for (unsigned long i = 0; i < data.numVertices; ++i)
-        requireFinite(data.vertices[i].point, "vertices", i);
-}
-
 void Polygon::decompose(const DecomposeContext&, PrimitiveSink& sink) const
 {
     const TQ3PolygonData& d = data();

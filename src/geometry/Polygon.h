@@ -18,12 +18,7 @@ public:
     static constexpr const char* kDataName = "polygonData";
     static constexpr TQ3AttributeSet TQ3PolygonData::*kOwnSet = &TQ3PolygonData::polygonAttributeSet;
 
-    /// The TQ3PolygonData rules of QD3DGeometry.h, in their order:
-    /// kQ3ErrorNULLParameter (vertices is NULL),
-    /// kQ3ErrorGeometryInsufficientNumberOfPoints (numVertices < 3),
-    /// kQ3ErrorParameterOutOfRange (numVertices above kQ3GeometryMaxArrayCount),
-    /// kQ3ErrorInvalidData (a coordinate is not finite).
-    static void check(const TQ3PolygonData& data);
+    // The TQ3PolygonData rules of QD3DGeometry.h are all in the description below.
 
     using DataGeometry::DataGeometry;
 
@@ -47,8 +42,8 @@ struct Describe<TQ3PolygonData> {
     static auto fields()
     {
         return std::make_tuple(
-            value("numVertices", &TQ3PolygonData::numVertices),
-            array("vertices", &TQ3PolygonData::vertices, countOf(&TQ3PolygonData::numVertices)),
+            atLeast("numVertices", &TQ3PolygonData::numVertices, 3),
+            requiredArray("vertices", &TQ3PolygonData::vertices, countOf(&TQ3PolygonData::numVertices)),
             handle<AttributeSet>("polygonAttributeSet", &TQ3PolygonData::polygonAttributeSet));
     }
     static auto fileFields()

@@ -34,12 +34,12 @@ struct Describe<TQ3PolyhedronData> {
     static auto fields()
     {
         using D = TQ3PolyhedronData;
-        return std::make_tuple(value("numVertices", &D::numVertices),
-                               array("vertices", &D::vertices, countOf(&D::numVertices)),
+        return std::make_tuple(atLeast("numVertices", &D::numVertices, 3),
+                               requiredArray("vertices", &D::vertices, countOf(&D::numVertices)),
                                value("numEdges", &D::numEdges),
                                array("edges", &D::edges, countOf(&D::numEdges)),
-                               value("numTriangles", &D::numTriangles),
-                               array("triangles", &D::triangles, countOf(&D::numTriangles)),
+                               atLeast("numTriangles", &D::numTriangles, 1),
+                               requiredArray("triangles", &D::triangles, countOf(&D::numTriangles)),
                                handle<AttributeSet>("polyhedronAttributeSet", &D::polyhedronAttributeSet));
     }
 };
@@ -85,20 +85,6 @@ void checkEdge(const TQ3PolyhedronEdgeData& e, unsigned long numVertices, unsign
 
 void Polyhedron::check(const TQ3PolyhedronData& data)
 {
-    requireNonNull(data.vertices, "vertices");
-    requireNonNull(data.triangles, "triangles");
-    if (data.numEdges > 0)
-        requireNonNull(data.edges, "edges");
-    if (data.numVertices < 3)
-        fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
-             "numVertices is " + std::to_string(data.numVertices) + "; a polyhedron needs at least 3");
-    if (data.numTriangles < 1)
-        fail(kQ3ErrorGeometryInsufficientNumberOfPoints, "numTriangles is 0; a polyhedron needs a triangle");
-    layout::checkCount(data.numVertices, layout::Path{nullptr, "vertices"});
-    layout::checkCount(data.numEdges, layout::Path{nullptr, "edges"});
-    layout::checkCount(data.numTriangles, layout::Path{nullptr, "triangles"});
-    for (unsigned long i = 0; i < data.numVertices; ++i)
-        requireFinite(data.vertices[i].point, "vertices", i);
     for (unsigned long t = 0; t < data.numTriangles; ++t)
         checkTriangle(data.triangles[t], data.numVertices, "triangles[" + std::to_string(t) + "]");
     for (unsigned long e = 0; e < data.numEdges; ++e)

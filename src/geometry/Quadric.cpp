@@ -20,11 +20,6 @@ static_assert(unsigned(kQ3EndCapMaskTop) == quadric::kCapTop && unsigned(kQ3EndC
 
 namespace {
 
-bool finite(float v)
-{
-    return std::isfinite(v);
-}
-
 std::string number(double value)
 {
     char text[32];
@@ -33,24 +28,6 @@ std::string number(double value)
 }
 
 } // namespace
-
-void requireFiniteField(const TQ3Point3D& point, const char* name)
-{
-    if (!finite(point.x) || !finite(point.y) || !finite(point.z))
-        fail(kQ3ErrorInvalidData, std::string(name) + " has a coordinate that is not finite");
-}
-
-void requireFiniteField(const TQ3Vector3D& vector, const char* name)
-{
-    if (!finite(vector.x) || !finite(vector.y) || !finite(vector.z))
-        fail(kQ3ErrorInvalidData, std::string(name) + " has a component that is not finite");
-}
-
-void requireFiniteField(float value, const char* name)
-{
-    if (!finite(value))
-        fail(kQ3ErrorInvalidData, std::string(name) + " is not finite");
-}
 
 void requireWithinFloatRange(const TQ3Point3D& origin, std::initializer_list<TQ3Vector3D> vectors, double lastScale)
 {

@@ -31,10 +31,7 @@ namespace q3 {
 
 // ---- The rules ---------------------------------------------------------------
 
-/// kQ3ErrorInvalidData unless every component is finite; `name` is the field.
-void requireFiniteField(const TQ3Point3D& point, const char* name);
-void requireFiniteField(const TQ3Vector3D& vector, const char* name);
-void requireFiniteField(float value, const char* name);
+// Every float of the data is finite: the descriptions say so (finite()).
 
 /// kQ3ErrorInvalidData when a point origin + (up to) the sum of the vectors'
 /// lengths, times `scale` for the last one, could leave float's range: the
@@ -104,17 +101,9 @@ void ellipseBoxCorners(const quadric::Vec3& centre, const quadric::Vec3& x, cons
 
 /// The rules of the shapes revolved around an orientation (TQ3ConeData,
 /// TQ3CylinderData, TQ3EllipsoidData: the same fields), in QD3DGeometry.h's
-/// order.
+/// order, after their descriptions have found every float finite.
 template <class D> void checkRevolvedData(const D& d)
 {
-    requireFiniteField(d.origin, "origin");
-    requireFiniteField(d.orientation, "orientation");
-    requireFiniteField(d.majorRadius, "majorRadius");
-    requireFiniteField(d.minorRadius, "minorRadius");
-    requireFiniteField(d.uMin, "uMin");
-    requireFiniteField(d.uMax, "uMax");
-    requireFiniteField(d.vMin, "vMin");
-    requireFiniteField(d.vMax, "vMax");
     requireWithinFloatRange(d.origin, {d.orientation, d.majorRadius, d.minorRadius});
     requireUnitParameter(d.uMin, "uMin");
     requireUnitParameter(d.uMax, "uMax");
@@ -152,7 +141,7 @@ template <class Derived, class Data> class FieldGeometry : public DataGeometry<D
 public:
     using DataGeometry<Derived, Data>::DataGeometry;
 
-    /// The data with `field` set to `value` must pass Derived::check (its
+    /// The data with `field` set to `value` must pass checkData (its
     /// errors, in its order); then the field changes (with the warning of a
     /// tolerated degenerate case, as SetData posts it) and the edit is
     /// marked. On failure nothing changes.
@@ -160,7 +149,7 @@ public:
     {
         Data changed = this->data();
         changed.*field = value;
-        Derived::check(changed);
+        this->checkData(changed);
         this->warnIfDegenerate(changed);
         this->editableData().*field = value;
         this->markEdited();

@@ -16,15 +16,6 @@ template class DataGeometry<Torus, TQ3TorusData>;
 
 void Torus::check(const TQ3TorusData& d)
 {
-    requireFiniteField(d.origin, "origin");
-    requireFiniteField(d.orientation, "orientation");
-    requireFiniteField(d.majorRadius, "majorRadius");
-    requireFiniteField(d.minorRadius, "minorRadius");
-    requireFiniteField(d.ratio, "ratio");
-    requireFiniteField(d.uMin, "uMin");
-    requireFiniteField(d.uMax, "uMax");
-    requireFiniteField(d.vMin, "vMin");
-    requireFiniteField(d.vMax, "vMax");
     requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius, d.orientation}, 1.0 + std::fabs(double(d.ratio)));
     requireUnitParameter(d.uMin, "uMin");
     requireUnitParameter(d.uMax, "uMax");

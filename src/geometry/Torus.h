@@ -41,10 +41,10 @@ template <> struct Describe<TQ3TorusData> {
     static auto fields()
     {
         using D = TQ3TorusData;
-        return std::make_tuple(value("origin", &D::origin), value("orientation", &D::orientation),
-                               value("majorRadius", &D::majorRadius), value("minorRadius", &D::minorRadius),
-                               value("ratio", &D::ratio), value("uMin", &D::uMin), value("uMax", &D::uMax),
-                               value("vMin", &D::vMin), value("vMax", &D::vMax), value("caps", &D::caps),
+        return std::make_tuple(finite("origin", &D::origin), finite("orientation", &D::orientation),
+                               finite("majorRadius", &D::majorRadius), finite("minorRadius", &D::minorRadius),
+                               finite("ratio", &D::ratio), finite("uMin", &D::uMin), finite("uMax", &D::uMax),
+                               finite("vMin", &D::vMin), finite("vMax", &D::vMax), value("caps", &D::caps),
                                handle<AttributeSet>("interiorAttributeSet", &D::interiorAttributeSet),
                                handle<AttributeSet>("torusAttributeSet", &D::torusAttributeSet));
     }

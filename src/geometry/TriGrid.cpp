@@ -26,8 +26,8 @@ struct Describe<TQ3TriGridData> {
     {
         using D = TQ3TriGridData;
         return std::make_tuple(
-            value("numRows", &D::numRows), value("numColumns", &D::numColumns),
-            array("vertices", &D::vertices, countProduct(&D::numRows, &D::numColumns)),
+            atLeast("numRows", &D::numRows, 2), atLeast("numColumns", &D::numColumns, 2),
+            requiredArray("vertices", &D::vertices, countProduct(&D::numRows, &D::numColumns)),
             optionalHandleArray<AttributeSet>("facetAttributeSet", &D::facetAttributeSet,
                                               [](const D& d) { return d.facetAttributeSet != nullptr ? TriGrid::facetCount(d) : 0; }),
             handle<AttributeSet>("triGridAttributeSet", &D::triGridAttributeSet));
@@ -49,19 +49,6 @@ std::array<std::size_t, 3> TriGrid::facetVertices(std::size_t numColumns, std::s
         return second ? std::array<std::size_t, 3>{below, right, diagonal}
                       : std::array<std::size_t, 3>{v, right, below};
     return second ? std::array<std::size_t, 3>{v, right, diagonal} : std::array<std::size_t, 3>{v, diagonal, below};
-}
-
-void TriGrid::check(const TQ3TriGridData& data)
-{
-    requireNonNull(data.vertices, "vertices");
-    if (data.numRows < 2 || data.numColumns < 2)
-        fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
-             "the grid is " + std::to_string(data.numRows) + " x " + std::to_string(data.numColumns) +
-                 "; a triangle grid needs at least 2 x 2 vertices");
-    const std::size_t count = layout::countProduct(&TQ3TriGridData::numRows, &TQ3TriGridData::numColumns)(data);
-    layout::checkCount(count, layout::Path{nullptr, "vertices"});
-    for (std::size_t i = 0; i < count; ++i)
-        requireFinite(data.vertices[i].point, "vertices", i);
 }
 
 void TriGrid::decompose(const DecomposeContext&, PrimitiveSink& sink) const

@@ -22,8 +22,6 @@ public:
     static constexpr const char* kDataName = "triGridData";
     static constexpr TQ3AttributeSet TQ3TriGridData::*kOwnSet = &TQ3TriGridData::triGridAttributeSet;
 
-    /// The TQ3TriGridData rules of QD3DGeometry.h, in their order.
-    static void check(const TQ3TriGridData& data);
     /// 2 (rows - 1) (columns - 1), saturating (0 for fewer than 2 of either).
     static std::size_t facetCount(const TQ3TriGridData& data);
     /// The vertex indices (row * numColumns + column) of facet `facet`, in

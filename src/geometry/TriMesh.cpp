@@ -76,23 +76,38 @@ struct AttributeArraysField {
         }
     }
 
-    void check(const D& s, const layout::Path& path) const
+    // Presence: the entries, and each entry's data block unless there are
+    // no elements (entries are read only within the limit); maximum: the
+    // entries' count; values: each entry's type is one Q3 stores.
+    void check(const D& s, const layout::Path& path, layout::Pass pass) const
     {
         const layout::Path here = path.child(name);
         const std::size_t n = s.*typeCount;
-        layout::checkCount(n, here);
         const TQ3TriMeshAttributeData* entries = s.*member;
-        if (entries == nullptr) {
-            if (n != 0)
-                fail(kQ3ErrorNULLParameter, here.str() + " is NULL but should hold " + std::to_string(n) + " entries");
+        switch (pass) {
+        case layout::Pass::kPresence:
+            if (entries == nullptr) {
+                if (n != 0)
+                    fail(kQ3ErrorNULLParameter,
+                         here.str() + " is NULL but should hold " + std::to_string(n) + " entries");
+                return;
+            }
+            if (n > limits::kMaxArrayCount || s.*elementCount == 0)
+                return;
+            for (std::size_t i = 0; i < n; ++i)
+                if (entries[i].data == nullptr)
+                    fail(kQ3ErrorNULLParameter, here.element(i).child("data").str() + " is NULL");
             return;
-        }
-        const std::size_t count = s.*elementCount;
-        for (std::size_t i = 0; i < n; ++i) {
-            const layout::Path entry = here.element(i);
-            valueSize(entries[i], entry);
-            if (entries[i].data == nullptr && count != 0)
-                fail(kQ3ErrorNULLParameter, entry.child("data").str() + " is NULL");
+        case layout::Pass::kMinimum:
+            return;
+        case layout::Pass::kMaximum:
+            layout::checkCount(n, here);
+            return;
+        case layout::Pass::kValues:
+            if (entries != nullptr)
+                for (std::size_t i = 0; i < n; ++i)
+                    valueSize(entries[i], here.element(i));
+            return;
         }
     }
     void clear(D& s) const { s.*member = nullptr; }
@@ -209,26 +224,6 @@ void checkValues(const TQ3TriMeshAttributeData* entries, std::size_t types, std:
         });
 }
 
-// Rule 1 for one array: present unless its count is 0.
-void requirePresent(const void* array, unsigned long count, const char* name)
-{
-    if (array == nullptr && count != 0)
-        fail(kQ3ErrorNULLParameter,
-             std::string(name) + " is NULL but should hold " + std::to_string(count) + " entries");
-}
-
-// Rule 1 for the data blocks of an attribute array's entries. The entries are
-// read only when their count is within the limit; rule 2 reports the others.
-void requireValuesPresent(const TQ3TriMeshAttributeData* entries, unsigned long types, unsigned long count,
-                          const char* name)
-{
-    if (entries == nullptr || count == 0 || types > limits::kMaxArrayCount)
-        return;
-    for (unsigned long i = 0; i < types; ++i)
-        if (entries[i].data == nullptr)
-            fail(kQ3ErrorNULLParameter, std::string(name) + "[" + std::to_string(i) + "].data is NULL");
-}
-
 void checkIndexValue(unsigned long value, unsigned long count, const std::string& where, const char* countName)
 {
     if (value >= count)
@@ -251,9 +246,11 @@ struct Describe<TQ3TriMeshData> {
             array("edges", &D::edges, countOf(&D::numEdges)),
             AttributeArraysField{"edgeAttributeTypes", &D::edgeAttributeTypes, &D::numEdgeAttributeTypes,
                                  &D::numEdges},
-            array("points", &D::points, countOf(&D::numPoints)),
+            // The points after every attribute array, so that an unknown
+            // attribute type is reported before a point that is not finite.
             AttributeArraysField{"vertexAttributeTypes", &D::vertexAttributeTypes, &D::numVertexAttributeTypes,
                                  &D::numPoints},
+            layout::finiteElements(array("points", &D::points, countOf(&D::numPoints))),
             value("bBox", &D::bBox));
     }
 };
@@ -263,29 +260,9 @@ template class DataGeometry<TriMesh, TQ3TriMeshData>;
 
 void TriMesh::check(const TQ3TriMeshData& data)
 {
-    // Rules 1 and 2 hold across the whole structure: every NULL array is
-    // reported before any count above the limit. Then the per-field walk of
-    // the description (rule 3, attribute types), so that the index checks
-    // below may read the arrays.
-    requirePresent(data.triangles, data.numTriangles, "triangles");
-    requirePresent(data.triangleAttributeTypes, data.numTriangleAttributeTypes, "triangleAttributeTypes");
-    requirePresent(data.edges, data.numEdges, "edges");
-    requirePresent(data.edgeAttributeTypes, data.numEdgeAttributeTypes, "edgeAttributeTypes");
-    requirePresent(data.points, data.numPoints, "points");
-    requirePresent(data.vertexAttributeTypes, data.numVertexAttributeTypes, "vertexAttributeTypes");
-    requireValuesPresent(data.triangleAttributeTypes, data.numTriangleAttributeTypes, data.numTriangles,
-                         "triangleAttributeTypes");
-    requireValuesPresent(data.edgeAttributeTypes, data.numEdgeAttributeTypes, data.numEdges, "edgeAttributeTypes");
-    requireValuesPresent(data.vertexAttributeTypes, data.numVertexAttributeTypes, data.numPoints,
-                         "vertexAttributeTypes");
-    for (const auto& [count, name] : {std::pair{data.numTriangles, "triangles"},
-                                      std::pair{data.numTriangleAttributeTypes, "triangleAttributeTypes"},
-                                      std::pair{data.numEdges, "edges"},
-                                      std::pair{data.numEdgeAttributeTypes, "edgeAttributeTypes"},
-                                      std::pair{data.numPoints, "points"},
-                                      std::pair{data.numVertexAttributeTypes, "vertexAttributeTypes"}})
-        layout::checkCount(count, layout::Path{nullptr, name});
-    layout::checkStructure(data, layout::Path{});
+    // The description has found every array present, every count within the
+    // limit, every attribute type known and every point finite, so the
+    // indices and values below may be read.
     for (unsigned long t = 0; t < data.numTriangles; ++t)
         for (int k = 0; k < 3; ++k)
             if (data.triangles[t].pointIndices[k] >= data.numPoints)
@@ -304,9 +281,6 @@ void TriMesh::check(const TQ3TriMeshData& data)
                                 where + ".triangleIndices[" + std::to_string(k) + "]", "numTriangles");
         }
     }
-    for (unsigned long i = 0; i < data.numPoints; ++i)
-        if (!std::isfinite(data.points[i].x) || !std::isfinite(data.points[i].y) || !std::isfinite(data.points[i].z))
-            requireFinite(data.points[i], "points[" + std::to_string(i) + "]");
     checkValues(data.triangleAttributeTypes, data.numTriangleAttributeTypes, data.numTriangles, "triangleAttributeTypes");
     checkValues(data.edgeAttributeTypes, data.numEdgeAttributeTypes, data.numEdges, "edgeAttributeTypes");
     checkValues(data.vertexAttributeTypes, data.numVertexAttributeTypes, data.numPoints, "vertexAttributeTypes");

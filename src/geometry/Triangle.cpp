@@ -10,12 +10,6 @@ const ClassInfo kTriangleClass{kQ3GeometryTypeTriangle, &kGeometryClass, "triang
 
 template class DataGeometry<Triangle, TQ3TriangleData>;
 
-void Triangle::check(const TQ3TriangleData& data)
-{
-    for (unsigned long i = 0; i < 3; ++i)
-        requireFinite(data.vertices[i].point, "vertices", i);
-}
-
 void Triangle::decompose(const DecomposeContext&, PrimitiveSink& sink) const
 {
     const TQ3Vertex3D* corners = data().vertices;

@@ -18,9 +18,7 @@ public:
     static constexpr const char* kDataName = "triangleData";
     static constexpr TQ3AttributeSet TQ3TriangleData::*kOwnSet = &TQ3TriangleData::triangleAttributeSet;
 
-    /// The TQ3TriangleData rules of QD3DGeometry.h: kQ3ErrorInvalidData for a
-    /// coordinate that is not finite.
-    static void check(const TQ3TriangleData& data);
+    // The TQ3TriangleData rules of QD3DGeometry.h are all in the description below.
 
     using DataGeometry::DataGeometry;
 

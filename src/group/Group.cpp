@@ -92,7 +92,7 @@ void Group::copyFrom(const Group& source)
         for (const Node& node : source.m_nodes) {
             Ref<SharedObject>& copy = (*copies)[node.object.get()];
             if (!copy)
-                copy = Ref<SharedObject>::adopt(static_cast<SharedObject*>(node.object->duplicate()));
+                copy = Ref<SharedObject>::adopt(static_cast<SharedObject*>(node.object->clone()));
             auto it = m_nodes.emplace(m_nodes.end(), copy);
             it->self = it;
             m_live.insert(&*it);

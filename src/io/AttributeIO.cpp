@@ -9,6 +9,7 @@
 
 #include "core/AttributeSet.h"
 #include "core/ErrorManager.h"
+#include "io/CustomElements.h"
 
 #include <cstring>
 
@@ -186,6 +187,7 @@ void writeAttributeSet(WriteContext& context, const Object& object)
         context.object(*shader);
     for (const Ref<SharedObject>& other : set.otherElements())
         context.object(*other);
+    writeCustomElements(context, set);
     out.end();
 }
 

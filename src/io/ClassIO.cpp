@@ -2,9 +2,11 @@
 // Copyright (c) 2026 The Q3 authors
 #include "io/ClassIO.h"
 
+#include "core/CustomClass.h"
 #include "core/ErrorManager.h"
 #include "core/Limits.h"
 #include "group/Group.h"
+#include "io/CustomElements.h"
 #include "io/ExternalReference.h"
 #include "io/Unknown.h"
 
@@ -96,7 +98,11 @@ TQ3ObjectType typeOfName(const std::string& name)
         return map;
     }();
     const auto found = byName.find(name);
-    return found == byName.end() ? 0 : found->second;
+    if (found != byName.end())
+        return found->second;
+    // A class an application registered (or Q3's name and URL elements).
+    const std::shared_ptr<CustomClass> custom = findCustomClassNamed(name);
+    return custom ? custom->type() : 0;
 }
 
 const Node* Parts::find(TQ3ObjectType type) const
@@ -198,6 +204,31 @@ const std::vector<Node>* sequenceHolding(const std::vector<Node>& nodes, const N
     return nullptr;
 }
 
+// Takes the custom elements (Apple's name and URL elements) out of an
+// object's subobjects: they belong to the object, not to its class's reader.
+std::vector<std::unique_ptr<CustomElement>> takeElements(ReadContext& context, Parts& parts)
+{
+    std::vector<std::unique_ptr<CustomElement>> elements;
+    for (auto it = parts.subobjects.begin(); it != parts.subobjects.end();) {
+        if (std::unique_ptr<CustomElement> element = readCustomElement(context, **it)) {
+            elements.push_back(std::move(element));
+            it = parts.subobjects.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    return elements;
+}
+
+void attachElements(SharedObject& object, std::vector<std::unique_ptr<CustomElement>> elements)
+{
+    if (elements.empty())
+        return;
+    Set& target = object.isType(kQ3SharedTypeSet) ? static_cast<Set&>(object) : object.elements().ownSet();
+    for (std::unique_ptr<CustomElement>& element : elements)
+        target.addCustomElement(std::move(element));
+}
+
 } // namespace
 
 std::uint32_t ReadContext::refIdOf(const Object& object) const
@@ -264,7 +295,10 @@ Ref<SharedObject> ReadContext::build(const Node& node)
         const ClassIO* entry = classOfType(root.type);
         if (entry == nullptr) // the whole container: its subobjects belong to the unknown root
             return unknownFrom(m_file, node);
-        return entry->read(*this, parts);
+        std::vector<std::unique_ptr<CustomElement>> elements = takeElements(*this, parts);
+        Ref<SharedObject> read = entry->read(*this, parts);
+        attachElements(*read, std::move(elements));
+        return read;
     }
     const ClassIO* entry = classOfType(node.type);
     if (entry == nullptr)
@@ -336,7 +370,9 @@ Ref<SharedObject> ReadContext::groupOf(const Node& beginGroup)
                                                    (first.name.empty() ? typeName(first.type) : first.name) +
                                                    ", no group");
     DepthGuard guard(m_depth);
+    std::vector<std::unique_ptr<CustomElement>> elements = takeElements(*this, parts);
     Ref<SharedObject> read = entry->read(*this, parts);
+    attachElements(*read, std::move(elements));
     if (!read->isType(kQ3ShapeTypeGroup))
         fail(kQ3ErrorInvalidMetafileSubObject,
              std::string("the object a BeginGroup holds is a ") + read->classInfo().name + ", no group");
@@ -422,8 +458,10 @@ void WriteContext::object(const Object& object)
         m_keep.push_back(Ref<SharedObject>::retain(
             const_cast<SharedObject*>(static_cast<const SharedObject*>(&object))));
     }
+    const std::size_t start = m_out.position();
     if (m_depth > 1) {
         entry->write(*this, object);
+        ownElements(object, start);
         return;
     }
     // A submitted object is written whole or not at all: a failure inside
@@ -436,6 +474,7 @@ void WriteContext::object(const Object& object)
     m_labelled.clear();
     try {
         entry->write(*this, object);
+        ownElements(object, start);
     } catch (...) {
         m_out.rollback(before);
         for (const Object* added : m_added)
@@ -448,6 +487,25 @@ void WriteContext::object(const Object& object)
         m_streamExternals.resize(streamExternals);
         throw;
     }
+}
+
+void WriteContext::ownElements(const Object& object, std::size_t start)
+{
+    const ObjectElements* elements = object.elementsIfAny();
+    if (elements == nullptr || !hasFileElements(elements->own.get()) || object.isType(kQ3SharedTypeSet) ||
+        object.isType(kQ3ShapeTypeGroup) || m_out.position() == start)
+        return;
+    const std::size_t moved = m_out.reopenAsContainer(start);
+    if (moved != 0) {
+        for (auto& [written, at] : m_written)
+            if (at.position > start)
+                at.position += moved;
+        for (Written& external : m_streamExternals)
+            if (external.position > start)
+                external.position += moved;
+    }
+    writeCustomElements(*this, *elements->own);
+    m_out.end();
 }
 
 void WriteContext::temporary(const Object& object)

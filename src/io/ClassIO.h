@@ -174,6 +174,11 @@ public:
     std::vector<unsigned char> finish(TQ3FileMode mode);
 
 private:
+    /// Writes the object's own name and URL elements (groups and sets write
+    /// theirs themselves) into the container of the object just written from
+    /// `start`, making one when the object had none.
+    void ownElements(const Object& object, std::size_t start);
+
     struct Written {
         std::size_t position;
         std::uint32_t id;   ///< its table of contents ID, 0 while nothing refers to it

@@ -10,6 +10,7 @@
 
 #include "core/ErrorManager.h"
 #include "group/Group.h"
+#include "io/CustomElements.h"
 #include "io/Unknown.h"
 
 #include <type_traits>
@@ -124,6 +125,10 @@ void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type,
     }
     for (const Ref<SharedObject>& element : group.otherElements())
         context.object(*element);
+    // Its name and URL elements beside its state, as Quesa's test models
+    // hold them (io/CustomElements.h).
+    if (const ObjectElements* elements = group.elementsIfAny(); elements != nullptr && elements->own)
+        writeCustomElements(context, *elements->own);
     out.end();
     out.enterGroup();
     for (const Group::Node& node : group.nodes())

@@ -227,6 +227,8 @@ public:
         if (!isName(first))
             fail(kQ3ErrorInvalidMetafilePrimitive,
                  "line " + std::to_string(line()) + ": expected an object name, found '" + first + "'");
+        for (std::size_t more = spacedName(m_at - 1); more > 1; --more)
+            first += " " + m_tokens[m_at++].text;
         node.name = first;
         node.type = lookup(first);
         node.offset = line();
@@ -244,7 +246,8 @@ public:
                 break;
             }
             const bool labelled = token.size() > 1 && token.back() == ':';
-            const bool named = isName(token) && m_at + 1 < m_tokens.size() && m_tokens[m_at + 1].text == "(";
+            const bool named = isName(token) && ((m_at + 1 < m_tokens.size() && m_tokens[m_at + 1].text == "(") ||
+                                                 spacedName(m_at) > 1);
             if (labelled || named)
                 node.children.push_back(object(depth + 1));
             else {
@@ -259,6 +262,23 @@ public:
     }
 
 private:
+    // The class names of registered classes may hold spaces ("Apple
+    // Computer, Inc.:NameElement"), which split them into several tokens:
+    // how many tokens from `at` make such a name followed by '(', or 0.
+    std::size_t spacedName(std::size_t at) const
+    {
+        std::string joined = m_tokens[at].text;
+        for (std::size_t end = at + 1; end < m_tokens.size() && end < at + 8; ++end) {
+            const std::string& token = m_tokens[end].text;
+            if (token == "(")
+                return end - at > 1 && m_names(joined) != 0 ? end - at : 0;
+            if (token == ")" || token == "|" || token.front() == '"')
+                return 0;
+            joined += " " + token;
+        }
+        return 0;
+    }
+
     TQ3ObjectType lookup(const std::string& name) const
     {
         if (sameName(name, "Container"))
@@ -350,7 +370,22 @@ const Node* findOffset(const std::vector<Node>& nodes, std::size_t offset)
     return nullptr;
 }
 
-void parseBinary(Metafile& file)
+// Gives the nodes of a file-local type (a negative type a Type object
+// names) that name, and the type of the class of that name when one has it.
+void resolveTypes(std::vector<Node>& nodes, const std::map<TQ3ObjectType, std::string>& declared, NameLookup names)
+{
+    for (Node& node : nodes) {
+        const auto found = declared.find(node.type);
+        if (found != declared.end()) {
+            node.name = found->second;
+            if (const TQ3ObjectType resolved = names(found->second))
+                node.type = resolved;
+        }
+        resolveTypes(node.children, declared, names);
+    }
+}
+
+void parseBinary(Metafile& file, NameLookup names)
 {
     BinaryParser parser(file);
     const std::size_t size = file.bytes.size();
@@ -368,11 +403,24 @@ void parseBinary(Metafile& file)
     std::vector<Node> all;
     parser.parseSequence(24, size, 0, all);
     const Node* toc = nullptr;
+    std::map<TQ3ObjectType, std::string> declared;
     for (Node& node : all)
-        if (node.type != kTypeTableOfContents)
+        if (node.type == kTypeType) {
+            // Type ( -1 "Apple Computer, Inc.:NameElement" ): what a custom
+            // type stands for in this file.
+            DataReader in(file, node);
+            const std::int32_t id = in.i32();
+            std::string name = in.string();
+            if (id >= 0)
+                fail(kQ3ErrorInvalidMetafileObject, "a Type object declares the type " + std::to_string(id) +
+                                                        ", not a negative one");
+            declared[static_cast<TQ3ObjectType>(static_cast<std::uint32_t>(id))] = std::move(name);
+        } else if (node.type != kTypeTableOfContents)
             file.objects.push_back(std::move(node));
         else if (node.offset == tocOffset)
             toc = &node;
+    if (!declared.empty())
+        resolveTypes(file.objects, declared, names);
     if (tocOffset != 0 && toc == nullptr)
         invalid("the header's table of contents offset " + std::to_string(tocOffset) + " is no table of contents");
     if (toc == nullptr)
@@ -491,7 +539,7 @@ std::unique_ptr<Metafile> parse(std::vector<unsigned char> bytes, NameLookup nam
             invalid("the file starts with neither the binary '3DMF' tag nor the text 3DMetafile header");
         parseText(*file, names);
     } else {
-        parseBinary(*file);
+        parseBinary(*file, names);
     }
     if (file->major != 1)
         invalid("the file is version " + std::to_string(file->major) + "." + std::to_string(file->minor) +
@@ -881,6 +929,17 @@ void Encoder::begin(TQ3ObjectType type, const char* name)
         return;
     }
     m_open.push_back({m_body.size(), false});
+    if (type < 0) {
+        // A class registered at run time: a file-local negative type, which
+        // a Type object ahead of the objects names (3D Metafile Reference,
+        // "Type objects").
+        std::size_t index = 0;
+        while (index < m_customTypes.size() && m_customTypes[index] != name)
+            ++index;
+        if (index == m_customTypes.size())
+            m_customTypes.emplace_back(name);
+        type = -static_cast<TQ3ObjectType>(index + 1);
+    }
     const std::uint32_t t = static_cast<std::uint32_t>(type);
     bytes(&t, 4, true);
     const std::uint32_t placeholder = 0;
@@ -892,6 +951,7 @@ void Encoder::end()
     const Open open = m_open.back();
     m_open.pop_back();
     if (m_encoding == Encoding::kText) {
+        m_lastClose = m_text.size();
         if (open.hadChild) {
             m_text += '\n';
             m_text.append(2 * (m_open.size() + m_groupDepth), ' ');
@@ -1112,6 +1172,43 @@ void Encoder::raw(const std::string& data)
     }
 }
 
+std::size_t Encoder::reopenAsContainer(std::size_t start)
+{
+    if (m_encoding == Encoding::kText) {
+        std::size_t first = start;
+        while (first < m_text.size() && m_text[first] == ' ')
+            ++first;
+        if (m_text.compare(first, 11, "Container (") == 0) {
+            m_text.resize(m_lastClose);
+            m_open.push_back({start, true});
+            return 0;
+        }
+        const std::string opening = std::string(first - start, ' ') + "Container (\n";
+        m_text.insert(start, opening);
+        for (auto& label : m_labels)
+            if (label.first > start)
+                label.first += opening.size();
+        m_open.push_back({start, true});
+        return opening.size();
+    }
+    std::uint32_t type = 0;
+    for (int i = 0; i < 4; ++i) {
+        const int shift = m_encoding == Encoding::kBinaryBig ? 24 - 8 * i : 8 * i;
+        type |= static_cast<std::uint32_t>(m_body[start + i]) << shift;
+    }
+    if (type == static_cast<std::uint32_t>(kTypeContainer)) {
+        m_open.push_back({start, true});
+        return 0;
+    }
+    Encoder head(m_encoding);
+    const std::uint32_t tag = static_cast<std::uint32_t>(kTypeContainer);
+    head.bytes(&tag, 4, true);
+    head.u32(0);
+    m_body.insert(m_body.begin() + static_cast<std::ptrdiff_t>(start), head.m_body.begin(), head.m_body.end());
+    m_open.push_back({start, true});
+    return head.m_body.size();
+}
+
 std::size_t Encoder::position() const
 {
     if (m_encoding == Encoding::kText)
@@ -1168,9 +1265,19 @@ std::vector<unsigned char> Encoder::finish(TQ3FileMode mode, const std::vector<T
     const std::uint32_t version = m_encoding == Encoding::kBinaryBig ? (1u << 16 | 6u) : (6u << 16 | 1u);
     head.u32(version);
     head.u32(mode & 3);
-    const std::uint64_t tocOffset = toc.empty() ? 0 : 24 + m_body.size();
+    // Type objects for the custom classes, ahead of every object.
+    Encoder types(m_encoding);
+    for (std::size_t i = 0; i < m_customTypes.size(); ++i) {
+        types.begin(kTypeType, "Type");
+        types.i32(-static_cast<std::int32_t>(i + 1));
+        types.string(m_customTypes[i]);
+        types.end();
+    }
+    const std::size_t bodyStart = 24 + types.m_body.size();
+    const std::uint64_t tocOffset = toc.empty() ? 0 : bodyStart + m_body.size();
     head.u64(tocOffset);
     std::vector<unsigned char> out = std::move(head.m_body);
+    out.insert(out.end(), types.m_body.begin(), types.m_body.end());
     out.insert(out.end(), m_body.begin(), m_body.end());
     if (!toc.empty()) {
         Encoder table(m_encoding);
@@ -1183,7 +1290,7 @@ std::vector<unsigned char> Encoder::finish(TQ3FileMode mode, const std::vector<T
         table.u32(static_cast<std::uint32_t>(toc.size()));
         for (const TocEntry& entry : toc) {
             table.u32(entry.id);
-            table.u64(24 + entry.position);
+            table.u64(bodyStart + entry.position);
             table.u32(entry.type);
         }
         table.end();

@@ -38,6 +38,8 @@ constexpr TQ3ObjectType kTypeBeginGroup = Q3_OBJECT_TYPE('b', 'g', 'n', 'g');
 constexpr TQ3ObjectType kTypeEndGroup = Q3_OBJECT_TYPE('e', 'n', 'd', 'g');
 constexpr TQ3ObjectType kTypeReference = Q3_OBJECT_TYPE('r', 'f', 'r', 'n');
 constexpr TQ3ObjectType kTypeTableOfContents = Q3_OBJECT_TYPE('t', 'o', 'c', ' ');
+/// Binary files: names a file-local negative type (Int32 type, String name).
+constexpr TQ3ObjectType kTypeType = Q3_OBJECT_TYPE('t', 'y', 'p', 'e');
 
 enum class Encoding { kBinaryBig, kBinaryLittle, kText };
 
@@ -192,6 +194,14 @@ public:
         m_groupDepth = at.groupDepth;
     }
 
+    /// Makes the object written last, which starts at `start` (its
+    /// position() before it began), an open container again: its own end is
+    /// undone when it is a Container, else a Container is begun before it.
+    /// What is written next goes into that container, up to end(). Returns
+    /// how far everything after `start` moved (the inserted Container's
+    /// bytes or characters), for positions kept outside the encoder.
+    std::size_t reopenAsContainer(std::size_t start);
+
     /// Where the next object starts (binary: its byte offset in the body).
     std::size_t position() const;
     /// Text: gives the object starting at `position` a label (inserted at
@@ -226,6 +236,12 @@ private:
     std::vector<Open> m_open;
     std::vector<std::pair<std::size_t, std::string>> m_labels;
     std::size_t m_groupDepth = 0;
+    /// Text: where the last end() began writing its ')' (for
+    /// reopenAsContainer).
+    std::size_t m_lastClose = 0;
+    /// Binary: the file-local negative type of each custom class written
+    /// (by name), declared by Type objects ahead of the objects.
+    std::vector<std::string> m_customTypes;
 };
 
 /// The four characters of a type, for messages ('trng').

@@ -32,6 +32,8 @@ struct PickHit {
     TQ3Vector3D normal{};
     TQ3PickParts part = kQ3PickPartsObject;
     TQ3Param2D uv{};
+    /// The shape part hit (a mesh face, edge or vertex part), or null.
+    Ref<SharedObject> shapePart;
     /// The distance the hits are sorted by, when `valid` has Distance.
     double sortDistance = 0.0;
 };

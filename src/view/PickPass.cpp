@@ -201,6 +201,19 @@ void PickPass::visitGeometry(const Geometry& geometry)
             hit.valid |= mask & kQ3PickDetailMaskUV;
             hit.uv = TQ3Param2D{float(c.uv->x), float(c.uv->y)};
         }
+        // The shape part: where the hit lies in the geometry's own
+        // coordinates, asked of the geometry (a mesh names its face, edge or
+        // vertex there). Window-rect hits have no point to ask about.
+        if ((mask & kQ3PickDetailMaskShapePart) != 0 && kind.slot != kObject && geometry.isRetained() &&
+            m_kind != Pick::Kind::kWindowRect) {
+            const glm::dvec4 h = transformPoint(glm::inverse(m_toWorld), c.xyz);
+            const glm::dvec3 local = glm::dvec3(h) / h.w;
+            if (finite(local)) {
+                hit.shapePart = geometry.shapePartAt(kind.part, toPoint(local));
+                if (hit.shapePart)
+                    hit.valid |= kQ3PickDetailMaskShapePart;
+            }
+        }
         m_hits.push_back(std::move(hit));
     }
 }

@@ -562,6 +562,28 @@ bool View::idle()
     return true;
 }
 
+bool View::idleProgress(unsigned long current, unsigned long completed)
+{
+    if (m_loop != Loop::kRendering)
+        fail(kQ3ErrorRenderingNotStarted, "Q3XView_IdleProgress is for a rendering loop");
+    bool goOn = true;
+    if (m_idleProgressMethod != nullptr)
+        goOn = m_idleProgressMethod(this, m_idleProgressData, current, completed) != kQ3Failure;
+    else if (m_idleMethod != nullptr)
+        goOn = m_idleMethod(this, m_idleData) != kQ3Failure;
+    if (!goOn)
+        m_cancelled = true;
+    return goOn;
+}
+
+void View::endFrame()
+{
+    if (m_loop == Loop::kRendering)
+        fail(kQ3ErrorRenderingIsActive, "the frame is still being rendered");
+    if (m_endFrameMethod != nullptr)
+        m_endFrameMethod(this, m_endFrameData);
+}
+
 ShapeVisitor& View::submitTarget()
 {
     static IgnoringVisitor ignoring;

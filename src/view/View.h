@@ -161,6 +161,13 @@ public:
     void setIdleMethod(TQ3ViewIdleMethod method, const void* data);
     void setIdleProgressMethod(TQ3ViewIdleProgressMethod method, const void* data);
     void setEndFrameMethod(TQ3ViewEndFrameMethod method, void* data);
+    /// Q3XView_IdleProgress: the progress (or idle) method with these
+    /// values; false, with the loop cancelled, when it asks to cancel.
+    /// Throws kQ3ErrorRenderingNotStarted outside a rendering loop.
+    bool idleProgress(unsigned long current, unsigned long completed);
+    /// Q3XView_EndFrame: the end-frame method, if any. Throws
+    /// kQ3ErrorRenderingIsActive inside a rendering loop.
+    void endFrame();
     /// Throws kQ3ErrorRenderingIsActive inside a rendering loop; otherwise
     /// every image is already complete.
     void sync() const;

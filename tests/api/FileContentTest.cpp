@@ -429,11 +429,13 @@ TEST_F(FileContentTest, ADisplayGroupThatIsNotWrittenIsLeftOutOfFiles)
 
 TEST_F(FileContentTest, ElementsOfAGroupQ3DoesNotKnowAreKeptAndWrittenBack)
 {
-    // Apple's name element in a group's BeginGroup, as in Quesa's test
-    // models: kept whole (its container, with the string) and written back.
+    // An element of a class Q3 does not know in a group's BeginGroup, laid
+    // out as Apple's name element is in Quesa's test models (which Q3 now
+    // reads as a name: CustomElementApiTest): kept whole (its container,
+    // with the string) and written back.
     const std::string text = "3DMetafile ( 1 6 Normal )\n"
                              "BeginGroup ( DisplayGroup ( ) DisplayGroupState ( Inline )\n"
-                             "  Container ( Apple Computer, Inc.:NameElement ( ) CString ( \"middle box\" ) ) )\n"
+                             "  Container ( Acme Inc.:LabelElement ( ) CString ( \"middle box\" ) ) )\n"
                              "Point ( 0 0 0 )\n"
                              "EndGroup ( )\n";
     std::vector<TQ3Object> objects;

@@ -475,7 +475,7 @@ TEST_F(PickApiTest, HitIndexAndDetailErrors)
     TQ3PickDetail valid = 0;
     for (unsigned long i : {0ul, 2ul}) {
         ASSERT_EQ(Q3Pick_GetPickDetailValidMask(w, i, &valid), kQ3Success);
-        // Shape parts are never valid; what was not asked for is not either.
+        // Triangles have no shape parts; what was not asked for is not valid either.
         EXPECT_EQ(valid, TQ3PickDetail(kQ3PickDetailMaskPickID));
     }
     unsigned long id = 0;
@@ -571,7 +571,7 @@ TEST_F(PickApiTest, DetailsOfAHit)
     ASSERT_EQ(hits(w), 1u);
     TQ3PickDetail valid = 0;
     ASSERT_EQ(Q3Pick_GetPickDetailValidMask(w, 0, &valid), kQ3Success);
-    // Everything but the path (no group) and the shape part.
+    // Everything but the path (no group) and the shape part (a triangle has no parts).
     EXPECT_EQ(valid, TQ3PickDetail(0x3FF & ~kQ3PickDetailMaskPath & ~kQ3PickDetailMaskShapePart));
     EXPECT_EQ(detail<unsigned long>(w, 0, kQ3PickDetailMaskPickID), 42u);
     TQ3Object object = detail<TQ3Object>(w, 0, kQ3PickDetailMaskObject);

@@ -1,5 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
+
+// What is the point's own among the Q3Point_* calls: bounds, Get and
+// SetPosition, and the calls before Q3Initialize. New, GetData, SetData,
+// EmptyData, Submit and Duplicate are tried by the contract suite
+// (GeometryContractTest.cpp).
+
 #include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
@@ -23,160 +29,6 @@ protected:
     TQ3PointData m_data{{1.5f, -2, 3}, nullptr};
 };
 
-TEST_F(PointApiTest, NewMakesAPointThatGetDataReturns)
-{
-    TQ3GeometryObject point = own(Q3Point_New(&m_data));
-    ASSERT_NE(point, nullptr);
-    EXPECT_EQ(Q3Object_GetLeafType(point), kQ3GeometryTypePoint);
-    EXPECT_EQ(Q3Geometry_GetType(point), kQ3GeometryTypePoint);
-    EXPECT_EQ(Q3Object_IsDrawable(point), kQ3True);
-    TQ3PointData out{{0, 0, 0}, nullptr};
-    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
-    EXPECT_EQ(out.point.x, 1.5f);
-    EXPECT_EQ(out.point.y, -2.0f);
-    EXPECT_EQ(out.point.z, 3.0f);
-    EXPECT_EQ(out.pointAttributeSet, nullptr);
-}
-
-TEST_F(PointApiTest, TheAttributeSetIsHeldByReferenceAndHandedOutWithANewOne)
-{
-    TQ3AttributeSet set = own(Q3AttributeSet_New());
-    m_data.pointAttributeSet = set;
-    TQ3GeometryObject point = Q3Point_New(&m_data);
-    ASSERT_NE(point, nullptr);
-    EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3True);
-    TQ3PointData out{};
-    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
-    Q3Object_Dispose(point);
-    EXPECT_EQ(out.pointAttributeSet, set);
-    EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3True); // GetData's reference
-    Q3Object_Dispose(out.pointAttributeSet);
-    EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3False);
-}
-
-TEST_F(PointApiTest, EmptyDataReleasesTheReferenceGetDataHandedOut)
-{
-    TQ3AttributeSet set = own(Q3AttributeSet_New());
-    m_data.pointAttributeSet = set;
-    TQ3GeometryObject point = Q3Point_New(&m_data);
-    ASSERT_NE(point, nullptr);
-    TQ3PointData out{};
-    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
-    EXPECT_EQ(Q3Point_EmptyData(&out), kQ3Success);
-    EXPECT_EQ(out.pointAttributeSet, nullptr);
-    Q3Object_Dispose(point);
-    m_data.pointAttributeSet = nullptr;
-    EXPECT_EQ(Q3Shared_IsReferenced(set), kQ3False); // only the test's own reference is left
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_EmptyData(nullptr), kQ3Failure), kQ3ErrorNULLParameter);
-    TQ3PointData wrong{{0, 0, 0}, point};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_EmptyData(&wrong), kQ3Failure), kQ3ErrorInvalidObject);
-    EXPECT_EQ(wrong.pointAttributeSet, point); // unchanged on failure
-    TQ3PointData noSet{{0, 0, 0}, nullptr};
-    EXPECT_EQ(Q3Point_EmptyData(&noSet), kQ3Success);
-}
-
-TEST_F(PointApiTest, NewRejectsNullDataAndNonFiniteCoordinates)
-{
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(nullptr), nullptr), kQ3ErrorNULLParameter);
-    for (int axis = 0; axis < 3; ++axis)
-        for (float bad : kNonFinite) {
-            TQ3PointData data = m_data;
-            float* coordinates[] = {&data.point.x, &data.point.y, &data.point.z};
-            *coordinates[axis] = bad;
-            EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(&data), nullptr), kQ3ErrorInvalidData);
-        }
-}
-
-TEST_F(PointApiTest, NewRejectsBadAttributeSetHandlesAfterCoordinates)
-{
-    TQ3GeometryObject notASet = own(Q3Point_New(&m_data));
-    int notAnObject = 0;
-    TQ3PointData data = m_data;
-    data.pointAttributeSet = notASet;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(&data), nullptr), kQ3ErrorInvalidObjectType);
-    data.pointAttributeSet = reinterpret_cast<TQ3AttributeSet>(&notAnObject);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(&data), nullptr), kQ3ErrorInvalidObject);
-    data.point.z = kNaN;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_New(&data), nullptr), kQ3ErrorInvalidData);
-}
-
-TEST_F(PointApiTest, SetDataReplacesThePointAndBumpsTheEditIndex)
-{
-    TQ3GeometryObject point = own(Q3Point_New(&m_data));
-    ASSERT_NE(point, nullptr);
-    const unsigned long edit = Q3Shared_GetEditIndex(point);
-    TQ3AttributeSet set = own(Q3AttributeSet_New());
-    const TQ3PointData replacement{{7, 8, 9}, set};
-    EXPECT_EQ(Q3Point_SetData(point, &replacement), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(point), edit);
-    TQ3PointData out{};
-    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
-    EXPECT_EQ(out.point.y, 8.0f);
-    EXPECT_EQ(out.pointAttributeSet, set);
-    Q3Object_Dispose(out.pointAttributeSet);
-}
-
-TEST_F(PointApiTest, FailedSetDataChangesNothing)
-{
-    TQ3GeometryObject point = own(Q3Point_New(&m_data));
-    ASSERT_NE(point, nullptr);
-    const unsigned long edit = Q3Shared_GetEditIndex(point);
-    TQ3PointData bad{{kNaN, 0, 0}, nullptr};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(point, &bad), kQ3Failure), kQ3ErrorInvalidData);
-    bad = TQ3PointData{{5, 5, 5}, point};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(point, &bad), kQ3Failure), kQ3ErrorInvalidObjectType);
-    EXPECT_EQ(Q3Shared_GetEditIndex(point), edit);
-    TQ3PointData out{};
-    ASSERT_EQ(Q3Point_GetData(point, &out), kQ3Success);
-    EXPECT_EQ(out.point.x, 1.5f);
-    EXPECT_EQ(out.pointAttributeSet, nullptr);
-}
-
-TEST_F(PointApiTest, SetDataAndGetDataRejectBadArguments)
-{
-    TQ3GeometryObject point = own(Q3Point_New(&m_data));
-    TQ3AttributeSet notAPoint = own(Q3AttributeSet_New());
-    TQ3PointData out{{4, 4, 4}, nullptr};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(nullptr, &m_data), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(point, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_SetData(notAPoint, &m_data), kQ3Failure), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_GetData(nullptr, &out), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_GetData(point, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_GetData(notAPoint, &out), kQ3Failure), kQ3ErrorInvalidObjectType);
-    EXPECT_EQ(out.point.x, 4.0f);
-}
-
-TEST_F(PointApiTest, DuplicateCopiesTheAttributeSet)
-{
-    TQ3AttributeSet set = own(Q3AttributeSet_New());
-    m_data.pointAttributeSet = set;
-    TQ3GeometryObject point = own(Q3Point_New(&m_data));
-    TQ3GeometryObject copy = own(static_cast<TQ3GeometryObject>(Q3Object_Duplicate(point)));
-    ASSERT_NE(copy, nullptr);
-    EXPECT_EQ(Q3Object_GetLeafType(copy), kQ3GeometryTypePoint);
-    TQ3PointData out{};
-    ASSERT_EQ(Q3Point_GetData(copy, &out), kQ3Success);
-    EXPECT_EQ(out.point.z, 3.0f);
-    ASSERT_NE(out.pointAttributeSet, nullptr);
-    EXPECT_NE(out.pointAttributeSet, set);
-    Q3Object_Dispose(out.pointAttributeSet);
-}
-
-TEST_F(PointApiTest, SubmitOutsideALoopFailsWithViewNotStarted)
-{
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&m_data, view()), kQ3Failure), kQ3ErrorViewNotStarted);
-    TQ3GeometryObject point = own(Q3Point_New(&m_data));
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(point, view()), kQ3Failure), kQ3ErrorViewNotStarted);
-}
-
-TEST_F(PointApiTest, SubmitRejectsBadArguments)
-{
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(nullptr, view()), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&m_data, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
-    TQ3AttributeSet notAView = own(Q3AttributeSet_New());
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&m_data, notAView), kQ3Failure), kQ3ErrorInvalidObjectType);
-}
-
 TEST_F(PointApiTest, PointsBoundTheirPositions)
 {
     const TQ3PointData other{{-1, 4, 0}, nullptr};
@@ -192,17 +44,6 @@ TEST_F(PointApiTest, PointsBoundTheirPositions)
     EXPECT_FLOAT_EQ(box.max.x, 1.5f);
     EXPECT_FLOAT_EQ(box.max.y, 4);
     EXPECT_FLOAT_EQ(box.max.z, 3);
-}
-
-TEST_F(PointApiTest, SubmitInsideALoopChecksTheDataRules)
-{
-    const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
-        const TQ3PointData nan{{0, kNaN, 0}, nullptr};
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&nan, v), kQ3Failure), kQ3ErrorInvalidData);
-        const TQ3PointData badSet{{0, 0, 0}, v};
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point_Submit(&badSet, v), kQ3Failure), kQ3ErrorInvalidObjectType);
-    });
-    EXPECT_EQ(box.isEmpty, kQ3True);
 }
 
 // ---- Position access (QuickDraw 3D 1.6) ---------------------------------------

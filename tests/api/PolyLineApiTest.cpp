@@ -1,5 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
+
+// What is the polyline's own among the Q3PolyLine_* calls: its two vertices
+// at least, its rules in their order, the per-segment calls (and the
+// per-vertex calls beside them), and the calls before Q3Initialize. New,
+// GetData, SetData, EmptyData, Submit, Duplicate, bounds and the per-vertex
+// calls are tried by the contract suites (GeometryContractTest.cpp).
+
 #include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
@@ -18,8 +25,6 @@ namespace {
 using q3test::Q3ApiTest;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr float kInf = std::numeric_limits<float>::infinity();
-const float kNonFinite[] = {kNaN, kInf, -kInf};
 
 TQ3AttributeSet colorSet(float r, float g, float b)
 {
@@ -27,13 +32,6 @@ TQ3AttributeSet colorSet(float r, float g, float b)
     const TQ3ColorRGB color{r, g, b};
     Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color);
     return set;
-}
-
-TQ3ColorRGB colorOf(TQ3AttributeSet set)
-{
-    TQ3ColorRGB color{-1, -1, -1};
-    Q3AttributeSet_Get(set, kQ3AttributeTypeDiffuseColor, &color);
-    return color;
 }
 
 class PolyLineApiTest : public q3test::OwningApiTest {
@@ -49,111 +47,7 @@ protected:
     TQ3PolyLineData m_data{};
 };
 
-void expectBox(const TQ3BoundingBox& box, TQ3Point3D min, TQ3Point3D max)
-{
-    EXPECT_EQ(box.isEmpty, kQ3False);
-    EXPECT_NEAR(box.min.x, min.x, 1e-5f);
-    EXPECT_NEAR(box.min.y, min.y, 1e-5f);
-    EXPECT_NEAR(box.min.z, min.z, 1e-5f);
-    EXPECT_NEAR(box.max.x, max.x, 1e-5f);
-    EXPECT_NEAR(box.max.y, max.y, 1e-5f);
-    EXPECT_NEAR(box.max.z, max.z, 1e-5f);
-}
-
-// ---- New and GetData ----------------------------------------------------------
-
-TEST_F(PolyLineApiTest, NewMakesAPolyLineThatGetDataReturns)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    EXPECT_EQ(Q3Object_GetLeafType(polyLine), kQ3GeometryTypePolyLine);
-    EXPECT_EQ(Q3Geometry_GetType(polyLine), kQ3GeometryTypePolyLine);
-    EXPECT_EQ(Q3Shape_GetType(polyLine), kQ3ShapeTypeGeometry);
-    EXPECT_EQ(Q3Object_IsDrawable(polyLine), kQ3True);
-
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    ASSERT_EQ(out.numVertices, 3u);
-    ASSERT_NE(out.vertices, nullptr);
-    EXPECT_NE(out.vertices, m_vertices.data());
-    for (unsigned long i = 0; i < 3; ++i) {
-        EXPECT_EQ(out.vertices[i].point.x, m_vertices[i].point.x);
-        EXPECT_EQ(out.vertices[i].point.y, m_vertices[i].point.y);
-        EXPECT_EQ(out.vertices[i].point.z, m_vertices[i].point.z);
-        EXPECT_EQ(out.vertices[i].attributeSet, nullptr);
-    }
-    EXPECT_EQ(out.segmentAttributeSet, nullptr);
-    EXPECT_EQ(out.polyLineAttributeSet, nullptr);
-    EXPECT_EQ(Q3PolyLine_EmptyData(&out), kQ3Success);
-    EXPECT_EQ(out.vertices, nullptr);
-    EXPECT_EQ(out.numVertices, 3u);
-}
-
-TEST_F(PolyLineApiTest, NewCopiesTheCallersArrays)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    m_vertices[0].point.x = 100;
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    EXPECT_EQ(out.vertices[0].point.x, 1.0f);
-    Q3PolyLine_EmptyData(&out);
-}
-
-TEST_F(PolyLineApiTest, AttributeSetsAreHeldByReferenceAndHandedOutWithNewOnes)
-{
-    TQ3AttributeSet vertexSet = own(colorSet(1, 0, 0));
-    TQ3AttributeSet segmentSet = own(colorSet(0, 1, 0));
-    TQ3AttributeSet wholeSet = own(colorSet(0, 0, 1));
-    m_vertices[1].attributeSet = vertexSet;
-    TQ3AttributeSet segments[2] = {nullptr, segmentSet};
-    m_data.segmentAttributeSet = segments;
-    m_data.polyLineAttributeSet = wholeSet;
-
-    TQ3GeometryObject polyLine = Q3PolyLine_New(&m_data);
-    ASSERT_NE(polyLine, nullptr);
-    EXPECT_EQ(Q3Shared_IsReferenced(vertexSet), kQ3True);
-    EXPECT_EQ(Q3Shared_IsReferenced(segmentSet), kQ3True);
-    EXPECT_EQ(Q3Shared_IsReferenced(wholeSet), kQ3True);
-
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    EXPECT_EQ(out.vertices[0].attributeSet, nullptr);
-    EXPECT_EQ(out.vertices[1].attributeSet, vertexSet);
-    EXPECT_EQ(out.vertices[2].attributeSet, nullptr);
-    ASSERT_NE(out.segmentAttributeSet, nullptr);
-    EXPECT_NE(out.segmentAttributeSet, segments);
-    EXPECT_EQ(out.segmentAttributeSet[0], nullptr);
-    EXPECT_EQ(out.segmentAttributeSet[1], segmentSet);
-    EXPECT_EQ(out.polyLineAttributeSet, wholeSet);
-    // The polyline keeps its references after the caller's data is gone.
-    Q3Object_Dispose(polyLine);
-    EXPECT_EQ(Q3Shared_IsReferenced(vertexSet), kQ3True); // GetData's reference
-    // GetData's references come back with EmptyData; a second call is a no-op.
-    ASSERT_EQ(Q3PolyLine_EmptyData(&out), kQ3Success);
-    EXPECT_EQ(out.vertices, nullptr);
-    EXPECT_EQ(out.segmentAttributeSet, nullptr);
-    EXPECT_EQ(out.polyLineAttributeSet, nullptr);
-    EXPECT_EQ(Q3PolyLine_EmptyData(&out), kQ3Success);
-    EXPECT_EQ(Q3Shared_IsReferenced(vertexSet), kQ3False);
-    EXPECT_EQ(Q3Shared_IsReferenced(segmentSet), kQ3False);
-    EXPECT_EQ(Q3Shared_IsReferenced(wholeSet), kQ3False);
-}
-
-TEST_F(PolyLineApiTest, ThePolyLineOutlivesTheCallersAttributeSetReference)
-{
-    TQ3AttributeSet set = colorSet(0.5f, 0.5f, 0.5f);
-    m_data.polyLineAttributeSet = set;
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    const unsigned long live = Q3Memory_CountLiveObjects();
-    Q3Object_Dispose(set);
-    EXPECT_EQ(Q3Memory_CountLiveObjects(), live); // the polyline still holds it
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    EXPECT_EQ(colorOf(out.polyLineAttributeSet).r, 0.5f);
-    Q3PolyLine_EmptyData(&out);
-}
+// ---- Its size ----------------------------------------------------------
 
 TEST_F(PolyLineApiTest, TheSmallestPolyLineHasTwoVertices)
 {
@@ -187,207 +81,7 @@ TEST_F(PolyLineApiTest, NewRejectsFewerThanTwoVertices)
     }
 }
 
-TEST_F(PolyLineApiTest, NewRejectsANonFiniteCoordinateInAnyVertex)
-{
-    for (std::size_t vertex : {std::size_t{0}, std::size_t{2}})
-        for (int axis = 0; axis < 3; ++axis)
-            for (float bad : kNonFinite) {
-                std::vector<TQ3Vertex3D> vertices = m_vertices;
-                float* coordinates[] = {&vertices[vertex].point.x, &vertices[vertex].point.y,
-                                        &vertices[vertex].point.z};
-                *coordinates[axis] = bad;
-                m_data.vertices = vertices.data();
-                EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_New(&m_data), nullptr), kQ3ErrorInvalidData);
-            }
-}
-
-TEST_F(PolyLineApiTest, NewRejectsBadAttributeSetHandles)
-{
-    const TQ3Vector3D offset{1, 1, 1};
-    TQ3TransformObject notASet = own(Q3TranslateTransform_New(&offset));
-    int notAnObject = 0;
-    TQ3AttributeSet stray = reinterpret_cast<TQ3AttributeSet>(&notAnObject);
-
-    m_vertices[2].attributeSet = notASet;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_New(&m_data), nullptr), kQ3ErrorInvalidObjectType);
-    m_vertices[2].attributeSet = stray;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_New(&m_data), nullptr), kQ3ErrorInvalidObject);
-    m_vertices[2].attributeSet = nullptr;
-
-    TQ3AttributeSet segments[2] = {nullptr, notASet};
-    m_data.segmentAttributeSet = segments;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_New(&m_data), nullptr), kQ3ErrorInvalidObjectType);
-    segments[1] = stray;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_New(&m_data), nullptr), kQ3ErrorInvalidObject);
-    m_data.segmentAttributeSet = nullptr;
-
-    m_data.polyLineAttributeSet = notASet;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_New(&m_data), nullptr), kQ3ErrorInvalidObjectType);
-    m_data.polyLineAttributeSet = stray;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_New(&m_data), nullptr), kQ3ErrorInvalidObject);
-}
-
-TEST_F(PolyLineApiTest, CoordinatesAreCheckedBeforeAttributeSets)
-{
-    int notAnObject = 0;
-    m_data.polyLineAttributeSet = reinterpret_cast<TQ3AttributeSet>(&notAnObject);
-    m_vertices[1].point.y = kNaN;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_New(&m_data), nullptr), kQ3ErrorInvalidData);
-}
-
-// ---- SetData ------------------------------------------------------------------
-
-TEST_F(PolyLineApiTest, SetDataReplacesEverythingAndBumpsTheEditIndex)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    const unsigned long edit = Q3Shared_GetEditIndex(polyLine);
-    TQ3AttributeSet set = own(colorSet(1, 1, 0));
-    TQ3Vertex3D two[2] = {{{0, 0, 0}, set}, {{1, 1, 1}, nullptr}};
-    TQ3AttributeSet segments[1] = {set};
-    const TQ3PolyLineData replacement{2, two, segments, set};
-    EXPECT_EQ(Q3PolyLine_SetData(polyLine, &replacement), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
-
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    EXPECT_EQ(out.numVertices, 2u);
-    EXPECT_EQ(out.vertices[1].point.z, 1.0f);
-    EXPECT_EQ(out.vertices[0].attributeSet, set);
-    EXPECT_EQ(out.segmentAttributeSet[0], set);
-    EXPECT_EQ(out.polyLineAttributeSet, set);
-    Q3PolyLine_EmptyData(&out);
-}
-
-TEST_F(PolyLineApiTest, FailedSetDataChangesNothing)
-{
-    TQ3AttributeSet set = own(colorSet(1, 0, 1));
-    m_data.polyLineAttributeSet = set;
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    const unsigned long edit = Q3Shared_GetEditIndex(polyLine);
-
-    TQ3PolyLineData bad = m_data;
-    bad.numVertices = 1;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetData(polyLine, &bad), kQ3Failure),
-                    kQ3ErrorGeometryInsufficientNumberOfPoints);
-    bad = m_data;
-    bad.polyLineAttributeSet = polyLine; // a geometry, not a set
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetData(polyLine, &bad), kQ3Failure), kQ3ErrorInvalidObjectType);
-    std::vector<TQ3Vertex3D> infinite = m_vertices;
-    infinite[0].point.x = -kInf;
-    bad = m_data;
-    bad.vertices = infinite.data();
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetData(polyLine, &bad), kQ3Failure), kQ3ErrorInvalidData);
-    bad.vertices = nullptr;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetData(polyLine, &bad), kQ3Failure), kQ3ErrorNULLParameter);
-
-    EXPECT_EQ(Q3Shared_GetEditIndex(polyLine), edit);
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    EXPECT_EQ(out.numVertices, 3u);
-    EXPECT_EQ(out.vertices[0].point.x, 1.0f);
-    EXPECT_EQ(out.polyLineAttributeSet, set);
-    Q3PolyLine_EmptyData(&out);
-}
-
-TEST_F(PolyLineApiTest, SetDataRejectsBadArguments)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    TQ3AttributeSet notAPolyLine = own(Q3AttributeSet_New());
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetData(nullptr, &m_data), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetData(polyLine, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetData(notAPolyLine, &m_data), kQ3Failure),
-                    kQ3ErrorInvalidObjectType);
-    int notAnObject = 0;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetData(reinterpret_cast<TQ3GeometryObject>(&notAnObject), &m_data),
-                              kQ3Failure),
-                    kQ3ErrorInvalidObject);
-}
-
-TEST_F(PolyLineApiTest, GetDataRejectsBadArgumentsAndLeavesTheOutputAlone)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    TQ3AttributeSet notAPolyLine = own(Q3AttributeSet_New());
-    TQ3PolyLineData out{7, nullptr, nullptr, nullptr};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetData(nullptr, &out), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetData(polyLine, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetData(notAPolyLine, &out), kQ3Failure), kQ3ErrorInvalidObjectType);
-    EXPECT_EQ(out.numVertices, 7u);
-}
-
-TEST_F(PolyLineApiTest, EmptyDataWithABadHandleReleasesNothing)
-{
-    TQ3AttributeSet set = own(Q3AttributeSet_New());
-    m_vertices[0].attributeSet = set;
-    m_data.polyLineAttributeSet = set;
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    int notAnObject = 0;
-    out.polyLineAttributeSet = reinterpret_cast<TQ3AttributeSet>(&notAnObject);
-    const unsigned long live = Q3Memory_CountLiveObjects();
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_EmptyData(&out), kQ3Failure), kQ3ErrorInvalidObject);
-    EXPECT_NE(out.vertices, nullptr);
-    EXPECT_EQ(out.vertices[0].attributeSet, set);
-    EXPECT_EQ(Q3Memory_CountLiveObjects(), live);
-    out.polyLineAttributeSet = set;
-    EXPECT_EQ(Q3PolyLine_EmptyData(&out), kQ3Success);
-}
-
-TEST_F(PolyLineApiTest, EmptyDataRejectsNull)
-{
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_EmptyData(nullptr), kQ3Failure), kQ3ErrorNULLParameter);
-}
-
-// ---- Duplicate ------------------------------------------------------------------
-
-TEST_F(PolyLineApiTest, DuplicateCopiesDeeplyAndKeepsSharingShared)
-{
-    TQ3AttributeSet shared = own(colorSet(0.5f, 0.25f, 1));
-    m_vertices[0].attributeSet = shared;
-    m_vertices[2].attributeSet = shared;
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    TQ3GeometryObject copy = own(static_cast<TQ3GeometryObject>(Q3Object_Duplicate(polyLine)));
-    ASSERT_NE(copy, nullptr);
-    EXPECT_EQ(Q3Object_GetLeafType(copy), kQ3GeometryTypePolyLine);
-
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(copy, &out), kQ3Success);
-    EXPECT_EQ(out.vertices[2].point.x, -7.0f);
-    ASSERT_NE(out.vertices[0].attributeSet, nullptr);
-    EXPECT_NE(out.vertices[0].attributeSet, shared);
-    EXPECT_EQ(out.vertices[0].attributeSet, out.vertices[2].attributeSet);
-    EXPECT_EQ(colorOf(out.vertices[0].attributeSet).g, 0.25f);
-    Q3PolyLine_EmptyData(&out);
-}
-
-// ---- Submit -------------------------------------------------------------------
-
-TEST_F(PolyLineApiTest, SubmitOutsideALoopFailsWithViewNotStarted)
-{
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_Submit(&m_data, view()), kQ3Failure), kQ3ErrorViewNotStarted);
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(polyLine, view()), kQ3Failure), kQ3ErrorViewNotStarted);
-}
-
-TEST_F(PolyLineApiTest, SubmitRejectsBadArguments)
-{
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_Submit(nullptr, view()), kQ3Failure), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_Submit(&m_data, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
-    TQ3AttributeSet notAView = own(Q3AttributeSet_New());
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_Submit(&m_data, notAView), kQ3Failure), kQ3ErrorInvalidObjectType);
-}
-
-TEST_F(PolyLineApiTest, ImmediateAndRetainedPolyLinesBoundTheirVertices)
-{
-    expectBox(boundsOf([&](TQ3ViewObject v) { EXPECT_EQ(Q3PolyLine_Submit(&m_data, v), kQ3Success); }),
-              {-7, -5, 0}, {4, 8, 6});
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    expectBox(boundsOf([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(polyLine, v), kQ3Success); }),
-              {-7, -5, 0}, {4, 8, 6});
-}
+// ---- Submit and bounds -------------------------------------------------------------------
 
 TEST_F(PolyLineApiTest, SubmitInsideALoopChecksTheDataRules)
 {
@@ -457,120 +151,6 @@ void expectSameState(const PolyLineState& before, const PolyLineState& after)
     EXPECT_EQ(before.segmentSets, after.segmentSets);
     EXPECT_EQ(before.whole, after.whole);
     EXPECT_EQ(before.editIndex, after.editIndex);
-}
-
-TEST_F(PolyLineApiTest, GetVertexPositionReadsEveryVertexAndRejectsOtherIndices)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    for (unsigned long i = 0; i < 3; ++i) { // 0 and the last index among them
-        TQ3Point3D position{};
-        ASSERT_EQ(Q3PolyLine_GetVertexPosition(polyLine, i, &position), kQ3Success);
-        EXPECT_EQ(position.x, m_vertices[i].point.x);
-        EXPECT_EQ(position.y, m_vertices[i].point.y);
-        EXPECT_EQ(position.z, m_vertices[i].point.z);
-    }
-    std::vector<unsigned long> bad = {3};
-    bad.insert(bad.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
-    for (unsigned long index : bad) {
-        TQ3Point3D position{42, 42, 42};
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetVertexPosition(polyLine, index, &position), kQ3Failure),
-                        kQ3ErrorParameterOutOfRange);
-        EXPECT_EQ(position.x, 42.0f); // unchanged on failure
-    }
-}
-
-TEST_F(PolyLineApiTest, SetVertexPositionMovesOneVertexKeepsItsSetAndBumpsTheEditIndex)
-{
-    TQ3AttributeSet set = own(colorSet(1, 0, 0));
-    m_vertices[2].attributeSet = set;
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    for (unsigned long index : {0UL, 2UL}) {
-        const unsigned long edit = Q3Shared_GetEditIndex(polyLine);
-        const TQ3Point3D moved{10.0f + index, -20, 30};
-        EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, index, &moved), kQ3Success);
-        EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
-        TQ3Point3D position{};
-        ASSERT_EQ(Q3PolyLine_GetVertexPosition(polyLine, index, &position), kQ3Success);
-        EXPECT_EQ(position.x, moved.x);
-        EXPECT_EQ(position.y, moved.y);
-        EXPECT_EQ(position.z, moved.z);
-    }
-    const PolyLineState state = stateOf(polyLine);
-    EXPECT_EQ(state.points[1].y, -5.0f); // the vertex in between stays put
-    EXPECT_EQ(state.vertexSets[2], set);
-    EXPECT_EQ(state.vertexSets[0], nullptr);
-}
-
-TEST_F(PolyLineApiTest, SetVertexPositionRejectsBadIndicesAndNonFiniteCoordinatesAndChangesNothing)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    const PolyLineState before = stateOf(polyLine);
-    const TQ3Point3D fine{1, 1, 1};
-    std::vector<unsigned long> bad = {3};
-    bad.insert(bad.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
-    for (unsigned long index : bad)
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, index, &fine), kQ3Failure),
-                        kQ3ErrorParameterOutOfRange);
-    for (unsigned long index : {0UL, 2UL})
-        for (int axis = 0; axis < 3; ++axis)
-            for (float value : kNonFinite) {
-                TQ3Point3D position = fine;
-                float* coordinates[] = {&position.x, &position.y, &position.z};
-                *coordinates[axis] = value;
-                // The same code New and SetData post for the same coordinate.
-                EXPECT_Q3_ERROR(
-                    EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, index, &position), kQ3Failure),
-                    kQ3ErrorInvalidData);
-            }
-    // The index is checked before the coordinates.
-    const TQ3Point3D nan{kNaN, 0, 0};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, 3, &nan), kQ3Failure),
-                    kQ3ErrorParameterOutOfRange);
-    expectSameState(before, stateOf(polyLine));
-}
-
-TEST_F(PolyLineApiTest, VertexAttributeSetsAreReadAndReplacedWithBalancedReferences)
-{
-    TQ3AttributeSet first = own(colorSet(1, 0, 0));
-    TQ3AttributeSet second = own(colorSet(0, 1, 0));
-    m_vertices[0].attributeSet = first;
-    TQ3GeometryObject polyLine = Q3PolyLine_New(&m_data);
-    ASSERT_NE(polyLine, nullptr);
-
-    TQ3AttributeSet got = second;
-    ASSERT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 2, &got), kQ3Success);
-    EXPECT_EQ(got, nullptr); // none is NULL, and still a success
-    ASSERT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 0, &got), kQ3Success);
-    EXPECT_EQ(got, first);
-    Q3Object_Dispose(got); // Get handed out a reference of the caller's own
-
-    unsigned long edit = Q3Shared_GetEditIndex(polyLine);
-    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, second), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
-    EXPECT_EQ(Q3Shared_IsReferenced(first), kQ3False); // the polyline let go of it
-    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 2, second), kQ3Success);
-    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 2, second), kQ3Success); // same set again
-    ASSERT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 2, &got), kQ3Success);
-    EXPECT_EQ(got, second);
-    Q3Object_Dispose(got);
-
-    const PolyLineState state = stateOf(polyLine);
-    EXPECT_EQ(state.vertexSets[0], second);
-    EXPECT_EQ(state.vertexSets[1], nullptr);
-    EXPECT_EQ(state.vertexSets[2], second);
-    EXPECT_EQ(state.points[0].x, 1.0f); // positions are left alone
-
-    edit = Q3Shared_GetEditIndex(polyLine);
-    EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, nullptr), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
-    ASSERT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 0, &got), kQ3Success);
-    EXPECT_EQ(got, nullptr);
-    EXPECT_EQ(Q3Shared_IsReferenced(second), kQ3True); // vertex 2 still holds it
-    Q3Object_Dispose(polyLine);
-    EXPECT_EQ(Q3Shared_IsReferenced(second), kQ3False); // one reference per vertex, no more
 }
 
 TEST_F(PolyLineApiTest, SegmentAttributeSetsAreReadAndReplacedWithBalancedReferences)
@@ -720,22 +300,6 @@ TEST_F(PolyLineApiTest, PerVertexCallsRejectBadArgumentsAndChangeNothing)
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, stray), kQ3Failure),
                     kQ3ErrorInvalidObject);
     expectSameState(before, stateOf(polyLine));
-}
-
-TEST_F(PolyLineApiTest, AMovedVertexIsBoundedWhereItNowIs)
-{
-    TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
-    ASSERT_NE(polyLine, nullptr);
-    auto bounds = [&] {
-        return boundsOf([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(polyLine, v), kQ3Success); });
-    };
-    expectBox(bounds(), {-7, -5, 0}, {4, 8, 6});
-    const TQ3Point3D far{20, -30, 40};
-    ASSERT_EQ(Q3PolyLine_SetVertexPosition(polyLine, 1, &far), kQ3Success);
-    expectBox(bounds(), {-7, -30, 0}, {20, 8, 40});
-    const TQ3Point3D nan{kNaN, 0, 0};
-    EXPECT_Q3_ERROR(Q3PolyLine_SetVertexPosition(polyLine, 1, &nan), kQ3ErrorInvalidData);
-    expectBox(bounds(), {-7, -30, 0}, {20, 8, 40});
 }
 
 TEST(PolyLineApiUninitialized, EveryFunctionFailsWithNotInitialized)

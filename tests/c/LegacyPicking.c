@@ -220,6 +220,59 @@ int main(void)
     EXPECT(Q3View_EndPicking(view) == kQ3ViewStatusError);
     EXPECT(Q3Error_Get(NULL) == kQ3ErrorPickingNotStarted);
 
+    /* A mesh picked by face: the hit's shape part names the face. */
+    {
+        static const TQ3Point3D corners[4] = {{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f},
+                                              {1.0f, 1.0f, 0.0f}, {-1.0f, 1.0f, 0.0f}};
+        TQ3GeometryObject mesh = Q3Mesh_New();
+        TQ3MeshVertex vertices[4];
+        TQ3MeshFace face, partFace = NULL;
+        TQ3Vertex3D vertex;
+        TQ3WorldRayPickData rayData;
+        TQ3PickObject rayPick;
+        TQ3ShapePartObject part = NULL;
+        TQ3ShapeObject shape = NULL;
+        int k;
+
+        for (k = 0; k < 4; k++) {
+            vertex.point = corners[k];
+            vertex.attributeSet = NULL;
+            vertices[k] = Q3Mesh_VertexNew(mesh, &vertex);
+        }
+        face = Q3Mesh_FaceNew(mesh, 4, vertices, NULL);
+        rayData.data.sort = kQ3PickSortNearToFar;
+        rayData.data.mask = kQ3PickDetailMaskShapePart;
+        rayData.data.numHitsToReturn = kQ3ReturnAllHits;
+        rayData.ray.origin.x = 0.25f;
+        rayData.ray.origin.y = 0.5f;
+        rayData.ray.origin.z = 10.0f;
+        rayData.ray.direction.x = 0.0f;
+        rayData.ray.direction.y = 0.0f;
+        rayData.ray.direction.z = -1.0f;
+        rayData.vertexTolerance = 0.01f;
+        rayData.edgeTolerance = 0.01f;
+        rayPick = Q3WorldRayPick_New(&rayData);
+        CHECK(Q3View_StartPicking(view, rayPick));
+        do {
+            CHECK(Q3PickPartsStyle_Submit(kQ3PickPartsMaskFace, view));
+            CHECK(Q3Object_Submit(mesh, view));
+            status = Q3View_EndPicking(view);
+        } while (status == kQ3ViewStatusRetraverse);
+        CHECK(Q3Pick_GetNumHits(rayPick, &numHits));
+        EXPECT(numHits == 1);
+        CHECK(Q3Pick_GetPickDetailData(rayPick, 0, kQ3PickDetailMaskShapePart, &part));
+        EXPECT(Q3ShapePart_GetType(part) == kQ3ShapePartTypeMeshPart);
+        EXPECT(Q3Object_GetLeafType(part) == kQ3MeshPartTypeMeshFacePart);
+        CHECK(Q3MeshFacePart_GetFace(part, &partFace));
+        EXPECT(partFace == face);
+        CHECK(Q3ShapePart_GetShape(part, &shape));
+        EXPECT(shape == mesh);
+        Q3Object_Dispose(shape);
+        Q3Object_Dispose(part);
+        Q3Object_Dispose(rayPick);
+        Q3Object_Dispose(mesh);
+    }
+
     Q3Object_Dispose(pick);
     Q3Object_Dispose(backID);
     Q3Object_Dispose(front);

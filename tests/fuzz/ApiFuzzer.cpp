@@ -36,6 +36,8 @@
 #include "Q3NURBCurveTools.h"
 #include "QD3D.h"
 #include "QD3DCamera.h"
+#include "QD3DController.h"
+#include "QD3DCustomElements.h"
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
@@ -101,6 +103,8 @@ struct Posts {
 Posts g_posts;
 // Q3_FUZZ_TRACE=1 prints each operation, for checking what a seed decodes to.
 bool g_trace = false;
+// How many times a controller notify function ran (they only count).
+unsigned long g_controllerNotifications = 0;
 
 void onError(TQ3Error, TQ3Error, long) { ++g_posts.errors; }
 void onWarning(TQ3Warning, TQ3Warning last, long)
@@ -644,6 +648,8 @@ private:
         case Op::kPixmapMarkers: pixmapMarkers(); break;
         case Op::kViewHints: viewHints(); break;
         case Op::kPicking: picking(); break;
+        case Op::kControllers: controllers(); break;
+        case Op::kElements: elements(); break;
         case Op::kCount: break;
         }
     }
@@ -2478,6 +2484,71 @@ private:
     // failed Set leaves the data as it was), picking loops around the other
     // ops' submits, and every hit's details read back (the valid mask never
     // exceeds the pick's mask; references returned are given back).
+    // The element calls on any held object (QD3D.h's Q3Shape_ family,
+    // Quesa's Q3Object_ family) and Apple's name element: random element
+    // types (attribute types, the unknown and set elements, any long) and
+    // data, each call checked against the error contract; a handle a Get
+    // returns is disposed.
+    void elements()
+    {
+        const TQ3Object target = pick(static_cast<Kind>(m_in.u8() % kKindCount));
+        const std::uint8_t which = m_in.u8();
+        const TQ3ElementType type = which < 200 ? TQ3ElementType(which % 40) : TQ3ElementType(std::int32_t(m_in.u32()));
+        // Large enough for any element's C type; a handle read from it is
+        // checked by Q3 before use.
+        float data[8];
+        for (float& f : data)
+            f = m_in.value();
+        const bool handleType = type == kQ3AttributeTypeSurfaceShader || type == kQ3ElementTypeSet;
+        switch (m_in.u8() % 9) {
+        case 0:
+            STATUS(Q3Object_AddElement(target, type, m_in.u8() == 0 ? nullptr : data));
+            break;
+        case 1:
+            STATUS(Q3Shape_AddElement(target, type, data));
+            break;
+        case 2: {
+            float out[8] = {};
+            if (STATUS(Q3Object_GetElement(target, type, out)) == kQ3Success && handleType) {
+                TQ3Object got;
+                std::memcpy(&got, out, sizeof got);
+                Q3Object_Dispose(got);
+            }
+            break;
+        }
+        case 3:
+            QUERY(Q3Shape_ContainsElement(target, type), kQ3False);
+            break;
+        case 4: {
+            TQ3ElementType next = m_in.u8() < 200 ? TQ3ElementType(kQ3ElementTypeNone) : type;
+            for (int i = 0; i < 40; ++i)
+                if (STATUS(Q3Object_GetNextElementType(target, &next)) != kQ3Success || next == kQ3ElementTypeNone)
+                    break;
+            break;
+        }
+        case 5:
+            STATUS(Q3Shape_ClearElement(target, type));
+            break;
+        case 6:
+            STATUS(m_in.u8() < 128 ? Q3Object_EmptyElements(target) : Q3Shape_EmptyElements(target));
+            break;
+        case 7: {
+            char name[12];
+            for (char& c : name)
+                c = static_cast<char>(1 + m_in.u8() % 255);
+            name[sizeof name - 1] = '\0';
+            STATUS(CENameElement_SetData(target, m_in.u8() < 32 ? nullptr : name));
+            break;
+        }
+        case 8: {
+            char* got = nullptr;
+            if (STATUS(CENameElement_GetData(target, &got)) == kQ3Success)
+                STATUS(CENameElement_EmptyData(&got));
+            break;
+        }
+        }
+    }
+
     void picking()
     {
         const std::uint8_t call = m_in.u8() % 8;
@@ -2618,8 +2689,8 @@ private:
             TQ3PickDetail valid = 0;
             if (STATUS(Q3Pick_GetPickDetailValidMask(pick, index, nullArg ? nullptr : &valid)) != kQ3Success)
                 return;
-            require((valid & ~data.mask) == 0 && (valid & kQ3PickDetailMaskShapePart) == 0,
-                    "Q3Pick_GetPickDetailValidMask", "reports a detail the pick did not ask for");
+            require((valid & ~data.mask) == 0, "Q3Pick_GetPickDetailValidMask",
+                    "reports a detail the pick did not ask for");
             union {
                 unsigned long id;
                 TQ3HitPath path;
@@ -2637,6 +2708,24 @@ private:
             require((valid & asked) == asked, "Q3Pick_GetPickDetailData", "gave a detail that is not valid");
             if (asked == kQ3PickDetailMaskObject)
                 STATUS(Q3Object_Dispose(out.object));
+            if (asked == kQ3PickDetailMaskShapePart) {
+                // A mesh part: every shape part call, the right one succeeding.
+                TQ3ShapeObject shape = nullptr;
+                if (STATUS(Q3ShapePart_GetShape(out.object, &shape)) == kQ3Success)
+                    STATUS(Q3Object_Dispose(shape));
+                require(QUERY(Q3ShapePart_GetType(out.object), TQ3ObjectType{kQ3ObjectTypeInvalid}) ==
+                            kQ3ShapePartTypeMeshPart,
+                        "Q3ShapePart_GetType", "a part that is not a mesh part");
+                TQ3MeshComponent component = nullptr;
+                TQ3MeshFace face = nullptr;
+                TQ3MeshEdge edge = nullptr;
+                TQ3MeshVertex vertex = nullptr;
+                STATUS(Q3MeshPart_GetComponent(out.object, &component));
+                STATUS(Q3MeshFacePart_GetFace(out.object, &face));
+                STATUS(Q3MeshEdgePart_GetEdge(out.object, &edge));
+                STATUS(Q3MeshVertexPart_GetVertex(out.object, &vertex));
+                STATUS(Q3Object_Dispose(out.object));
+            }
             if (asked == kQ3PickDetailMaskPath) {
                 require(out.path.rootGroup != nullptr && out.path.depth != 0, "Q3Pick_GetPickDetailData",
                         "gave an empty path");
@@ -2654,6 +2743,199 @@ private:
             QUERY(Q3Pick_GetType(pick), TQ3ObjectType{kQ3ObjectTypeInvalid});
             return;
         }
+    }
+
+    // QD3DController.h: every call on a controller this input made (or an
+    // unknown pointer), a tracker made for the step and disposed at its end
+    // (which detaches the controllers attached to it), the cursor tracker.
+    // Notify functions only count: they must not post errors of their own.
+    static TQ3Status fuzzGetChannel(TQ3ControllerRef, unsigned long channel, void* data, unsigned long* size)
+    {
+        if (channel % 3 == 2)
+            return kQ3Failure;
+        const unsigned long n = std::min<unsigned long>(*size, channel % 5);
+        std::memset(data, 0x5A, n);
+        *size = n;
+        return kQ3Success;
+    }
+    static TQ3Status fuzzSetChannel(TQ3ControllerRef, unsigned long channel, const void*, unsigned long)
+    {
+        return channel % 4 == 3 ? kQ3Failure : kQ3Success;
+    }
+    static TQ3Status fuzzTrackerNotify(TQ3TrackerObject, TQ3ControllerRef)
+    {
+        ++g_controllerNotifications;
+        return kQ3Success;
+    }
+    static void fuzzCursorNotify() { ++g_controllerNotifications; }
+
+    void controllers()
+    {
+        const std::uint8_t call = m_in.u8() % 14;
+        const bool nullArg = m_in.u8() == 0;
+        TQ3ControllerRef ref = &m_notAController;
+        if (!m_controllers.empty() && m_in.u8() != 0)
+            ref = m_controllers[m_in.u8() % m_controllers.size()];
+        TQ3TrackerObject tracker = OBJECT(Q3Tracker_New((m_in.u8() & 1) ? fuzzTrackerNotify : nullptr));
+        const TQ3Point3D point{m_in.value(), m_in.value(), m_in.value()};
+        const TQ3Vector3D vector{m_in.value(), m_in.value(), m_in.value()};
+        const TQ3Quaternion turn{m_in.value(), m_in.value(), m_in.value(), m_in.value()};
+        TQ3Boolean b = kQ3False;
+        unsigned long n = m_in.u32();
+        switch (call) {
+        case 0: {
+            char signature[] = "dev?";
+            signature[3] = char('a' + m_in.u8() % 4);
+            const unsigned long counts[] = {0, 3, 1024, 1025, 0xFFFFFFFFul};
+            TQ3ControllerData data{signature, counts[m_in.u8() % 5], counts[m_in.u8() % 5] % 1100, fuzzGetChannel,
+                                   fuzzSetChannel};
+            if (m_in.u8() == 0)
+                data.signature = nullptr;
+            if (TQ3ControllerRef made = POINTER(Q3Controller_New(nullArg ? nullptr : &data)))
+                if (std::find(m_controllers.begin(), m_controllers.end(), made) == m_controllers.end())
+                    m_controllers.push_back(made);
+            break;
+        }
+        case 1: {
+            TQ3ControllerRef next = nullptr;
+            STATUS(Q3Controller_GetListChanged(nullArg ? nullptr : &b, &n));
+            const bool fromStart = m_in.u8() & 1;
+            STATUS(Q3Controller_Next(fromStart ? nullptr : ref, nullArg ? nullptr : &next));
+            STATUS(Q3Controller_GetActivation(ref, nullArg ? nullptr : &b));
+            STATUS(Q3Controller_GetValueCount(ref, nullArg ? nullptr : &n));
+            STATUS(Q3Controller_HasTracker(ref, nullArg ? nullptr : &b));
+            STATUS(Q3Controller_Track2DCursor(ref, nullArg ? nullptr : &b));
+            STATUS(Q3Controller_Track3DCursor(ref, nullArg ? nullptr : &b));
+            STATUS(Q3Controller_GetButtons(ref, nullArg ? nullptr : &n));
+            break;
+        }
+        case 2:
+            STATUS(Q3Controller_SetActivation(ref, static_cast<TQ3Boolean>(m_in.u8() % 3)));
+            if (m_in.u8() % 8 == 0)
+                STATUS(Q3Controller_Decommission(ref));
+            break;
+        case 3: {
+            char text[16];
+            const unsigned long numChars = m_in.u8() % 17;
+            STATUS(Q3Controller_GetSignature(ref, nullArg ? nullptr : text, numChars));
+            unsigned char bytes[300] = {};
+            unsigned long size = m_in.u32() % 300;
+            const unsigned long setChannel = m_in.u8() % 6;
+            const unsigned long getChannel = m_in.u8() % 6;
+            STATUS(Q3Controller_SetChannel(ref, setChannel, nullArg ? nullptr : bytes, size));
+            STATUS(Q3Controller_GetChannel(ref, getChannel, nullArg ? nullptr : bytes, &size));
+            break;
+        }
+        case 4: {
+            const bool toCursor = m_in.u8() & 1;
+            STATUS(Q3Controller_SetTracker(ref, toCursor ? nullptr : tracker));
+            const unsigned long buttons = m_in.u32();
+            STATUS(Q3Controller_SetButtons(ref, buttons));
+            break;
+        }
+        case 5: {
+            TQ3Point3D p{};
+            TQ3Quaternion q{};
+            STATUS(Q3Controller_SetTrackerPosition(ref, nullArg ? nullptr : &point));
+            STATUS(Q3Controller_MoveTrackerPosition(ref, &vector));
+            STATUS(Q3Controller_SetTrackerOrientation(ref, &turn));
+            STATUS(Q3Controller_MoveTrackerOrientation(ref, &turn));
+            STATUS(Q3Controller_GetTrackerPosition(ref, nullArg ? nullptr : &p));
+            STATUS(Q3Controller_GetTrackerOrientation(ref, nullArg ? nullptr : &q));
+            break;
+        }
+        case 6: {
+            float values[8] = {m_in.value(), m_in.value(), m_in.value()};
+            const unsigned long setCount = m_in.u8() % 9;
+            STATUS(Q3Controller_SetValues(ref, nullArg ? nullptr : values, setCount));
+            unsigned long serial = m_in.u8();
+            const unsigned long getCount = m_in.u8() % 9;
+            const bool noSerial = m_in.u8() & 1;
+            STATUS(Q3Controller_GetValues(ref, getCount, values, nullArg ? nullptr : &b, noSerial ? nullptr : &serial));
+            break;
+        }
+        case 7: {
+            const TQ3Object state = OBJECT(Q3ControllerState_New(ref));
+            STATUS(Q3ControllerState_Restore(state));
+            STATUS(Q3ControllerState_SaveAndReset(nullArg ? tracker : state));
+            STATUS(Q3ControllerState_Restore(state));
+            if (state != nullptr)
+                STATUS(Q3Object_Dispose(state));
+            break;
+        }
+        case 8: {
+            float p = 0, o = 0;
+            const float positionThresh = m_in.value();
+            const float orientationThresh = m_in.value();
+            STATUS(Q3Tracker_SetNotifyThresholds(tracker, positionThresh, orientationThresh));
+            STATUS(Q3Tracker_GetNotifyThresholds(tracker, nullArg ? nullptr : &p, &o));
+            STATUS(Q3Tracker_SetActivation(tracker, static_cast<TQ3Boolean>(m_in.u8() % 3)));
+            STATUS(Q3Tracker_GetActivation(tracker, nullArg ? nullptr : &b));
+            const bool byApplication = m_in.u8() & 1;
+            const unsigned long buttons = m_in.u32();
+            const unsigned long mask = m_in.u32();
+            STATUS(Q3Tracker_ChangeButtons(tracker, byApplication ? nullptr : ref, buttons, mask));
+            STATUS(Q3Tracker_GetButtons(tracker, nullArg ? nullptr : &n));
+            break;
+        }
+        case 9: {
+            const TQ3ControllerRef by = m_in.u8() & 1 ? nullptr : ref;
+            TQ3Point3D p{};
+            TQ3Vector3D d{};
+            TQ3Quaternion q{}, dq{};
+            unsigned long serial = m_in.u8();
+            STATUS(Q3Tracker_SetPosition(tracker, by, nullArg ? nullptr : &point));
+            STATUS(Q3Tracker_MovePosition(tracker, by, &vector));
+            STATUS(Q3Tracker_SetOrientation(tracker, by, &turn));
+            STATUS(Q3Tracker_MoveOrientation(tracker, by, &turn));
+            const std::uint8_t outs = m_in.u8();
+            STATUS(Q3Tracker_GetPosition(tracker, nullArg ? nullptr : &p, outs & 1 ? nullptr : &d, &b,
+                                         outs & 2 ? nullptr : &serial));
+            STATUS(Q3Tracker_GetOrientation(tracker, &q, outs & 4 ? nullptr : &dq, nullArg ? nullptr : &b,
+                                            outs & 8 ? nullptr : &serial));
+            break;
+        }
+        case 10: {
+            const std::uint8_t events = m_in.u8() % 20;
+            for (std::uint8_t i = 0; i < events; ++i) {
+                const unsigned long time = m_in.u32();
+                const unsigned long buttons = m_in.u32();
+                const std::uint8_t given = m_in.u8();
+                STATUS(Q3Tracker_SetEventCoordinates(tracker, time, buttons, given & 1 ? nullptr : &point,
+                                                     given & 2 ? nullptr : &turn));
+            }
+            TQ3Point3D p{};
+            TQ3Quaternion q{};
+            const unsigned long time = m_in.u32();
+            STATUS(Q3Tracker_GetEventCoordinates(tracker, time, nullArg ? nullptr : &n, &p, &q));
+            break;
+        }
+        case 11: {
+            float depth = 0;
+            TQ3Quaternion q{};
+            TQ3Boolean has = kQ3False;
+            unsigned long serial = m_in.u8();
+            STATUS(Q3CursorTracker_PrepareTracking());
+            STATUS(Q3CursorTracker_SetTrackDeltas(static_cast<TQ3Boolean>(m_in.u8() % 3)));
+            const bool noSerial = m_in.u8() & 1;
+            STATUS(Q3CursorTracker_GetAndClearDeltas(nullArg ? nullptr : &depth, &q, &has, &b,
+                                                     noSerial ? nullptr : &serial));
+            break;
+        }
+        case 12: {
+            TQ3CursorTrackerNotifyFunc f = nullptr;
+            STATUS(Q3CursorTracker_SetNotifyFunc(m_in.u8() & 1 ? fuzzCursorNotify : nullptr));
+            STATUS(Q3CursorTracker_GetNotifyFunc(nullArg ? nullptr : &f));
+            break;
+        }
+        default:
+            // The same calls on a tracker handle that is something else.
+            STATUS(Q3Tracker_GetButtons(pick(Kind::kView), &n));
+            STATUS(Q3Controller_SetTracker(ref, pick(Kind::kAttributeSet)));
+            break;
+        }
+        if (tracker != nullptr)
+            STATUS(Q3Object_Dispose(tracker));
     }
 
     void viewHints()
@@ -5054,6 +5336,8 @@ private:
     std::vector<Held> m_held;
     std::vector<TQ3Object> m_stale;
     std::vector<void*> m_meshParts;
+    std::vector<TQ3ControllerRef> m_controllers;
+    int m_notAController = 0;
     int m_meshes = 0;
     std::vector<TQ3GroupPosition> m_positions;
     std::map<TQ3Object, CurveShape> m_curves;

@@ -83,6 +83,8 @@ enum class Op : std::uint8_t {
     kPixmapMarkers,
     kViewHints,
     kPicking,
+    kControllers,
+    kElements,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -1162,6 +1162,38 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kPicking).u8(4).u8(1).held(0).held();
         s.dispose(kPick);
     }
+    // controllers(): a controller made and activated, every call once on it
+    // and its step's tracker (thresholds, buttons, positions, events), the
+    // cursor tracker, then deactivation and decommission, a refused count and
+    // an unknown controller pointer.
+    {
+        Seed& s = add("controllers");
+        auto head = [&](std::uint8_t call, std::uint8_t choose) -> Seed& {
+            s.op(Op::kControllers).u8(call).u8(1);
+            if (choose != 0xFF)
+                s.u8(choose).u8(0);
+            s.u8(1).value(1).value(2).value(3).value(0.5f).value(0).value(0);
+            s.value(0.7071f).value(0).value(0.7071f).value(0);
+            return s.u32(3);
+        };
+        head(0, 0xFF).u8(0).u8(1).u8(1).u8(1);
+        head(2, 1).u8(1).u8(1);
+        head(1, 1).u8(0);
+        head(3, 1).u8(16).u32(4).u8(1).u8(1);
+        head(4, 1).u8(0).u32(5);
+        head(5, 1);
+        head(6, 1).value(1).value(2).value(3).u8(3).u8(0).u8(3).u8(0);
+        head(7, 1);
+        head(8, 1).value(0.5f).value(0.25f).u8(1).u8(0).u32(3).u32(1);
+        head(9, 1).u8(0).u8(0).u8(0);
+        head(10, 1).u8(3).u32(100).u32(1).u8(0).u32(200).u32(2).u8(3).u32(300).u32(4).u8(1).u32(190);
+        head(11, 1).u8(0).u8(1).u8(0);
+        head(12, 1).u8(1);
+        head(2, 1).u8(0).u8(0);
+        head(0, 1).u8(0).u8(4).u8(4).u8(1);
+        s.op(Op::kControllers).u8(1).u8(1).u8(0).u8(0);
+        s.value(0).value(0).value(0).value(0).value(0).value(0).value(0).value(0).value(0).value(0).u32(0).u8(1);
+    }
     // The curve tools (Q3NURBCurveTools.h) on a retained curve and on data: every
     // call once with good arguments, then NaN, a parameter outside the domain, an
     // index past the end and a count past the limit.

@@ -73,11 +73,30 @@ struct Describe<Sample> {
     }
 };
 
+// The rules a description states beyond presence and the limit: a minimum
+// count, finite values and finite elements.
+struct Counted {
+    unsigned long n;
+    TQ3Point3D* points;
+    float scale;
+};
+
+template <>
+struct Describe<Counted> {
+    static auto fields()
+    {
+        return std::make_tuple(atLeast("n", &Counted::n, 2),
+                               finiteElements(requiredArray("points", &Counted::points, countOf(&Counted::n))),
+                               finite("scale", &Counted::scale));
+    }
+};
+
 } // namespace q3::layout
 
 namespace q3 {
 namespace {
 
+using layout::Counted;
 using layout::Path;
 
 TQ3Error codeOf(const std::function<void()>& call, std::string* message = nullptr)
@@ -276,6 +295,53 @@ TEST_F(DataLayoutTest, CheckStructureRejectsCountsAboveTheLimitWithoutReadingThe
     s.extra = nullptr;
     s.numValues = limits::kMaxArrayCount - s.numLeaves;
     EXPECT_EQ(codeOf([&] { layout::checkStructure(s, Path{}); }), kQ3ErrorNone);
+}
+
+TEST_F(DataLayoutTest, CheckStructureReportsEveryNullBeforeAnyCount)
+{
+    // A count above the limit in an earlier field, a NULL array in a later
+    // one: presence is checked over the whole struct first.
+    Sample s = m_data;
+    s.numLeaves = (unsigned long)limits::kMaxArrayCount + 1;
+    s.grid = nullptr;
+    std::string message;
+    EXPECT_EQ(codeOf([&] { layout::checkStructure(s, Path{}); }, &message), kQ3ErrorNULLParameter);
+    EXPECT_NE(message.find("grid"), std::string::npos) << message;
+}
+
+TEST_F(DataLayoutTest, CheckStructureChecksPresenceThenMinimumThenMaximumThenValues)
+{
+    TQ3Point3D points[3] = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};
+    const Counted good{3, points, 1.0f};
+    EXPECT_EQ(codeOf([&] { layout::checkStructure(good, Path{}); }), kQ3ErrorNone);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::string message;
+    // A required array is NULL even with no entries; before the minimum.
+    EXPECT_EQ(codeOf([&] { layout::checkStructure(Counted{0, nullptr, nan}, Path{}); }), kQ3ErrorNULLParameter);
+    // The minimum, before a value that is not finite.
+    EXPECT_EQ(codeOf([&] { layout::checkStructure(Counted{1, points, nan}, Path{}); }, &message),
+              kQ3ErrorGeometryInsufficientNumberOfPoints);
+    EXPECT_NE(message.find("n is 1"), std::string::npos) << message;
+    // The maximum, without reading the three points as more.
+    EXPECT_EQ(codeOf([&] {
+                  layout::checkStructure(Counted{(unsigned long)limits::kMaxArrayCount + 1, points, nan}, Path{});
+              }),
+              kQ3ErrorParameterOutOfRange);
+    // The values: the field and every element.
+    EXPECT_EQ(codeOf([&] { layout::checkStructure(Counted{3, points, nan}, Path{}); }, &message),
+              kQ3ErrorInvalidData);
+    EXPECT_NE(message.find("scale"), std::string::npos) << message;
+    for (float bad : {nan, std::numeric_limits<float>::infinity()}) {
+        points[1].y = bad;
+        EXPECT_EQ(codeOf([&] { layout::checkStructure(Counted{3, points, 1.0f}, Path{}); }, &message),
+                  kQ3ErrorInvalidData);
+        EXPECT_NE(message.find("points[1]"), std::string::npos) << message;
+    }
+    // Elements past the count are not read.
+    EXPECT_EQ(codeOf([&] { layout::checkStructure(Counted{2, points, 1.0f}, Path{}); }), kQ3ErrorInvalidData);
+    points[1].y = 1;
+    points[2].x = nan;
+    EXPECT_EQ(codeOf([&] { layout::checkStructure(Counted{2, points, 1.0f}, Path{}); }), kQ3ErrorNone);
 }
 
 // ---- Copies ---------------------------------------------------------------------------

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "QD3DController.h"
+
+#include "api/Entry.h"
+#include "controller/Controller.h"
+#include "core/ParameterChecks.h"
+
+using namespace q3;
+using q3::api::guard;
+using q3::api::guardStatus;
+
+namespace {
+
+// Runs body(tracker) under the Pointing Device Manager's lock once the
+// tracker handle is checked.
+template <class Body>
+TQ3Status withTracker(const char* function, TQ3TrackerObject handle, Body&& body)
+{
+    return guardStatus(function, [&] {
+        std::lock_guard<std::recursive_mutex> lock(controllerMutex());
+        body(lookup<Tracker>(handle, "trackerObject"));
+    });
+}
+
+TQ3Boolean boolean(bool value)
+{
+    return value ? kQ3True : kQ3False;
+}
+
+} // namespace
+
+extern "C" {
+
+TQ3TrackerObject Q3Tracker_New(TQ3TrackerNotifyFunc notifyFunc)
+{
+    return guard(__func__, TQ3TrackerObject{nullptr},
+                 [&]() -> TQ3TrackerObject { return makeShared<Tracker>(notifyFunc).detach(); });
+}
+
+TQ3Status Q3Tracker_SetNotifyThresholds(TQ3TrackerObject trackerObject, float positionThresh,
+                                        float orientationThresh)
+{
+    return withTracker(__func__, trackerObject,
+                       [&](Tracker& t) { t.setThresholds(positionThresh, orientationThresh); });
+}
+
+TQ3Status Q3Tracker_GetNotifyThresholds(TQ3TrackerObject trackerObject, float* positionThresh,
+                                        float* orientationThresh)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        requireNonNull(positionThresh, "positionThresh");
+        requireNonNull(orientationThresh, "orientationThresh");
+        *positionThresh = t.positionThreshold();
+        *orientationThresh = t.orientationThreshold();
+    });
+}
+
+TQ3Status Q3Tracker_SetActivation(TQ3TrackerObject trackerObject, TQ3Boolean active)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) { t.setActive(booleanOf(active) == kQ3True); });
+}
+
+TQ3Status Q3Tracker_GetActivation(TQ3TrackerObject trackerObject, TQ3Boolean* active)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        requireNonNull(active, "active");
+        *active = boolean(t.active());
+    });
+}
+
+TQ3Status Q3Tracker_GetButtons(TQ3TrackerObject trackerObject, unsigned long* buttons)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        requireNonNull(buttons, "buttons");
+        *buttons = t.buttons();
+    });
+}
+
+TQ3Status Q3Tracker_ChangeButtons(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
+                                  unsigned long buttons, unsigned long buttonMask)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        controllers::lookupOptional(controllerRef, "controllerRef");
+        t.changeButtons(controllerRef, buttons, buttonMask);
+    });
+}
+
+TQ3Status Q3Tracker_GetPosition(TQ3TrackerObject trackerObject, TQ3Point3D* position, TQ3Vector3D* delta,
+                                TQ3Boolean* changed, unsigned long* serialNumber)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        requireNonNull(position, "position");
+        requireNonNull(changed, "changed");
+        *changed = boolean(t.readPosition(*position, delta, serialNumber));
+    });
+}
+
+TQ3Status Q3Tracker_SetPosition(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
+                                const TQ3Point3D* position)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        controllers::lookupOptional(controllerRef, "controllerRef");
+        requireNonNull(position, "position");
+        checkFinite(*position, "position");
+        t.setPosition(controllerRef, *position);
+    });
+}
+
+TQ3Status Q3Tracker_MovePosition(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
+                                 const TQ3Vector3D* delta)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        controllers::lookupOptional(controllerRef, "controllerRef");
+        requireNonNull(delta, "delta");
+        checkFinite(*delta, "delta");
+        t.movePosition(controllerRef, *delta);
+    });
+}
+
+TQ3Status Q3Tracker_GetOrientation(TQ3TrackerObject trackerObject, TQ3Quaternion* orientation,
+                                   TQ3Quaternion* delta, TQ3Boolean* changed, unsigned long* serialNumber)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        requireNonNull(orientation, "orientation");
+        requireNonNull(changed, "changed");
+        *changed = boolean(t.readOrientation(*orientation, delta, serialNumber));
+    });
+}
+
+TQ3Status Q3Tracker_SetOrientation(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
+                                   const TQ3Quaternion* orientation)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        controllers::lookupOptional(controllerRef, "controllerRef");
+        requireNonNull(orientation, "orientation");
+        t.setOrientation(controllerRef, checkedRotation(*orientation, "orientation"));
+    });
+}
+
+TQ3Status Q3Tracker_MoveOrientation(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
+                                    const TQ3Quaternion* delta)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        controllers::lookupOptional(controllerRef, "controllerRef");
+        requireNonNull(delta, "delta");
+        t.moveOrientation(controllerRef, checkedRotation(*delta, "delta"));
+    });
+}
+
+TQ3Status Q3Tracker_SetEventCoordinates(TQ3TrackerObject trackerObject, unsigned long timeStamp,
+                                        unsigned long buttons, const TQ3Point3D* position,
+                                        const TQ3Quaternion* orientation)
+{
+    return withTracker(__func__, trackerObject, [&](Tracker& t) {
+        if (position != nullptr)
+            checkFinite(*position, "position");
+        TQ3Quaternion q{};
+        if (orientation != nullptr)
+            q = checkedRotation(*orientation, "orientation");
+        t.setEventCoordinates(timeStamp, buttons, position, orientation != nullptr ? &q : nullptr);
+    });
+}
+
+TQ3Status Q3Tracker_GetEventCoordinates(TQ3TrackerObject trackerObject, unsigned long timeStamp,
+                                        unsigned long* buttons, TQ3Point3D* position, TQ3Quaternion* orientation)
+{
+    return withTracker(__func__, trackerObject,
+                       [&](Tracker& t) { t.eventCoordinates(timeStamp, buttons, position, orientation); });
+}
+
+} // extern "C"

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "core/CustomObject.h"
+
+#include "QD3DExtension.h"
+
+#include <cstring>
+
+namespace q3 {
+
+namespace {
+
+/// A custom object over Base: Object (a class registered under TQ3Object,
+/// disposed at once) or SharedObject (under kQ3ObjectTypeShared or a shape:
+/// counted references).
+template <class Base>
+class CustomObject final : public Base, public CustomInstance {
+public:
+    explicit CustomObject(std::shared_ptr<CustomClass> leaf) : CustomInstance(std::move(leaf)) {}
+    ~CustomObject() override { destroy(this); }
+
+    const ClassInfo& classInfo() const override { return customClass().info(); }
+    bool isDrawable() const override
+    {
+        // The metahandler answers kQ3True in place of a function.
+        return customClass().method(kQ3XMethodTypeObjectIsDrawable) != nullptr;
+    }
+    void accept(ShapeVisitor&) const override
+    {
+        // Q3 has no methods through which a custom object draws, bounds or
+        // picks: a drawable one is accepted and adds nothing.
+        if (!isDrawable())
+            fail(kQ3ErrorInvalidObjectType, "a " + customClass().name() +
+                                                " cannot be submitted (its class is not drawable)");
+    }
+    Object* duplicate() const override;
+};
+
+std::shared_ptr<CustomClass> requireRegistered(const CustomClass& leaf)
+{
+    std::shared_ptr<CustomClass> found = findCustomClass(leaf.type());
+    if (found.get() != &leaf)
+        fail(kQ3ErrorInvalidObjectClass, "the class \"" + leaf.name() + "\" is no longer registered");
+    return found;
+}
+
+template <class Base>
+std::unique_ptr<Base, void (*)(Base*)> fresh(const std::shared_ptr<CustomClass>& leaf)
+{
+    auto* made = new CustomObject<Base>(leaf);
+    made->registerLive();
+    return {made, [](Base* object) { object->dispose(); }};
+}
+
+template <class Base>
+Object* CustomObject<Base>::duplicate() const
+{
+    // The class cannot have been unregistered while this object lives.
+    auto copy = fresh<Base>(requireRegistered(customClass()));
+    auto& target = static_cast<CustomObject<Base>&>(*copy);
+    copyInto(const_cast<CustomObject*>(this), target, copy.get());
+    return copy.release();
+}
+
+} // namespace
+
+CustomInstance::CustomInstance(std::shared_ptr<CustomClass> leaf) : m_leaf(std::move(leaf))
+{
+    std::vector<std::shared_ptr<CustomClass>> chain;
+    for (const ClassInfo* info = &m_leaf->info(); info != nullptr; info = info->parent)
+        if (std::shared_ptr<CustomClass> custom = findCustomClass(info->type))
+            if (&custom->info() == info)
+                chain.insert(chain.begin(), std::move(custom));
+    for (std::shared_ptr<CustomClass>& custom : chain) {
+        std::unique_ptr<unsigned char[]> block;
+        if (custom->size() != 0) {
+            block = std::make_unique<unsigned char[]>(custom->size());
+            std::memset(block.get(), 0, custom->size());
+        }
+        m_blocks.emplace_back(std::move(custom), std::move(block));
+    }
+    for (auto& block : m_blocks)
+        ++block.first->instances;
+}
+
+CustomInstance::~CustomInstance()
+{
+    for (auto& block : m_blocks)
+        --block.first->instances;
+}
+
+void* CustomInstance::privateData(const CustomClass& forClass) const
+{
+    for (const auto& [custom, block] : m_blocks)
+        if (custom.get() == &forClass)
+            return block.get();
+    fail(kQ3ErrorInvalidObjectType,
+         "the object is a " + m_leaf->name() + ", not of the class \"" + forClass.name() + "\"");
+}
+
+void CustomInstance::construct(TQ3Object self, void* parameters)
+{
+    for (; m_constructed < m_blocks.size(); ++m_constructed) {
+        auto& [custom, block] = m_blocks[m_constructed];
+        if (auto make = custom->methodAs<TQ3XObjectNewMethod>(kQ3XMethodTypeObjectNew))
+            if (make(self, block.get(), parameters) != kQ3Success)
+                fail(kQ3ErrorInvalidParameter, "the new method of the class \"" + custom->name() + "\" failed");
+    }
+}
+
+void CustomInstance::destroy(TQ3Object self) noexcept
+{
+    while (m_constructed > 0) {
+        auto& [custom, block] = m_blocks[--m_constructed];
+        if (auto remove = custom->methodAs<TQ3XObjectDeleteMethod>(kQ3XMethodTypeObjectDelete))
+            remove(self, block.get());
+    }
+}
+
+void CustomInstance::copyInto(TQ3Object self, CustomInstance& to, TQ3Object toHandle) const
+{
+    for (; to.m_constructed < m_blocks.size(); ++to.m_constructed) {
+        const auto& [custom, block] = m_blocks[to.m_constructed];
+        void* target = to.m_blocks[to.m_constructed].second.get();
+        if (auto copy = custom->methodAs<TQ3XObjectDuplicateMethod>(kQ3XMethodTypeObjectDuplicate)) {
+            if (copy(self, block.get(), toHandle, target) != kQ3Success)
+                fail(kQ3ErrorInvalidParameter,
+                     "the duplicate method of the class \"" + custom->name() + "\" failed");
+        } else if (custom->size() != 0) {
+            std::memcpy(target, block.get(), custom->size());
+        }
+    }
+}
+
+Object* CustomInstance::make(const std::shared_ptr<CustomClass>& leaf, void* parameters)
+{
+    if (leaf->kind() != CustomClass::Kind::kObject)
+        fail(kQ3ErrorInvalidObjectClass,
+             "the class \"" + leaf->name() + "\" is an element class: Q3Set_Add makes its elements");
+    if (leaf->info().isA(kQ3ObjectTypeShared)) {
+        auto made = fresh<SharedObject>(leaf);
+        static_cast<CustomObject<SharedObject>&>(*made).construct(made.get(), parameters);
+        static_cast<SharedObject&>(*made).clearEditTracking();
+        return made.release();
+    }
+    auto made = fresh<Object>(leaf);
+    static_cast<CustomObject<Object>&>(*made).construct(made.get(), parameters);
+    return made.release();
+}
+
+CustomInstance* customInstanceOf(Object& object)
+{
+    return dynamic_cast<CustomInstance*>(&object);
+}
+
+} // namespace q3

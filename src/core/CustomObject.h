@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#pragma once
+
+// Objects of the classes applications register (QD3DExtension.h). An
+// object holds one block of instance data per custom class in its chain;
+// the classes' own methods make, copy and delete what is in them.
+
+#include "core/CustomClass.h"
+#include "core/Object.h"
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace q3 {
+
+/// What every custom object has, whatever Q3 class it derives from.
+/// Invariant: m_blocks lists the custom classes of the chain from the top
+/// down, each with its instance data (null for size 0); the first
+/// m_constructed of them had their new method run (or were copied), and only
+/// those get their delete method.
+class CustomInstance {
+public:
+    CustomInstance(const CustomInstance&) = delete;
+    CustomInstance& operator=(const CustomInstance&) = delete;
+
+    const CustomClass& customClass() const { return *m_leaf; }
+    /// The instance data of `forClass`; throws kQ3ErrorInvalidObjectType when
+    /// the class is not in the object's chain.
+    void* privateData(const CustomClass& forClass) const;
+
+    /// Makes an object of a registered object class and runs the new
+    /// methods; throws kQ3ErrorInvalidParameter when one fails (the object
+    /// is gone again).
+    static Object* make(const std::shared_ptr<CustomClass>& leaf, void* parameters);
+
+protected:
+    explicit CustomInstance(std::shared_ptr<CustomClass> leaf);
+    virtual ~CustomInstance();
+    /// Runs the delete methods, from the leaf up (each object's destructor).
+    void destroy(TQ3Object self) noexcept;
+    /// Fills `to` (just made, zeroed) from this object by each class's
+    /// duplicate method, or a byte copy.
+    void copyInto(TQ3Object self, CustomInstance& to, TQ3Object toHandle) const;
+    void construct(TQ3Object self, void* parameters);
+
+private:
+    std::shared_ptr<CustomClass> m_leaf;
+    std::vector<std::pair<std::shared_ptr<CustomClass>, std::unique_ptr<unsigned char[]>>> m_blocks;
+    std::size_t m_constructed = 0;
+};
+
+/// The custom object found from a handle, or null when the object is of a
+/// class Q3 defines.
+CustomInstance* customInstanceOf(Object& object);
+
+} // namespace q3
