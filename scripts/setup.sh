@@ -13,6 +13,9 @@ packages=(
   libegl-dev          # the EGL rendering backend's headers (EGL/egl.h, eglext.h)
   libegl1             # libEGL.so.1, the EGL loader the backend opens at run time
   libegl-mesa0        # Mesa's EGL: the software device (llvmpipe) the EGL goldens run on
+  libx11-dev          # Xlib's headers: QD3DDrawContext.h's X11 draw context includes them
+                      # (libq3 opens libX11.so.6 with dlopen when a window is drawn into)
+  xvfb                # a virtual X server: the X11 draw context tests start their own
   libglm-dev          # vectors and matrices
   libgtest-dev        # tests
   libpng-dev          # golden images and the figures

@@ -35,10 +35,12 @@ extern "C" {
  * Apple's platform switches, as QD3D.h defines them for a Unix target (Q3
  * runs on Linux), for legacy code that tests them with #if. QD3D_EXPORT,
  * QD3D_CALL and QD3D_CALLBACK are empty outside Win32, as in QD3D.h.
- * WINDOW_SYSTEM_X11 is 0: Apple's X11 draw context (TQ3XDrawContextData,
- * Q3XDrawContext_New, Q3XBuffers_New, ...) is not declared, and legacy code
- * that tests the macro would take a branch that cannot compile. It becomes 1
- * when QD3DDrawContext.h declares that API.
+ * WINDOW_SYSTEM_X11 is 1: QD3DDrawContext.h declares Apple's X11 draw
+ * context (TQ3XDrawContextData, Q3XDrawContext_New, Q3XBuffers_New, ...)
+ * and, as Apple's header does, includes <X11/Xlib.h> and <X11/Xutil.h> for
+ * it. A program built where the X11 headers are missing defines
+ * WINDOW_SYSTEM_X11 to 0 before including a Q3 header (the library is the
+ * same either way).
  */
 #define OS_MACINTOSH 0
 #define OS_WIN32 0
@@ -46,7 +48,9 @@ extern "C" {
 #define OS_NEXT 0
 #define WINDOW_SYSTEM_MACINTOSH 0
 #define WINDOW_SYSTEM_WIN32 0
-#define WINDOW_SYSTEM_X11 0
+#ifndef WINDOW_SYSTEM_X11
+#define WINDOW_SYSTEM_X11 1
+#endif
 #define WINDOW_SYSTEM_NEXT 0
 
 #define QD3D_EXPORT

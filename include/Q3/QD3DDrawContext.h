@@ -27,6 +27,12 @@
 
 #include "QD3D.h"
 
+/* As in Apple's header: the X11 draw context's types come from Xlib. */
+#if defined(WINDOW_SYSTEM_X11) && WINDOW_SYSTEM_X11
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -531,6 +537,165 @@ Q3_EXTERN_API_C(TQ3Status) Q3PixmapDrawContext_SetPixmap(TQ3DrawContextObject dr
  */
 Q3_EXTERN_API_C(TQ3Status) Q3PixmapDrawContext_GetPixmap(TQ3DrawContextObject drawContext,
                                                          TQ3Pixmap *pixmap);
+
+#if defined(WINDOW_SYSTEM_X11) && WINDOW_SYSTEM_X11
+
+/* ---- X11 draw context ---------------------------------------------------
+ *
+ * Renders a view into an X window. Q3 draws each frame off screen with its
+ * rendering backend (the same drawing, and so the same pixels, as a pixmap
+ * draw context of the window's size) and puts the finished pane into the
+ * window with one XPutImage at Q3View_EndRendering, so the window never
+ * shows a partial frame, with or without double buffering. The window's
+ * size is read from the server at every Q3View_StartRendering, so the
+ * frame follows a resized window. The window's visual must be TrueColor;
+ * libX11.so.6 is opened when first needed. X protocol errors from these
+ * calls (BadWindow, BadDrawable, BadMatch) are caught by an error handler
+ * Q3 installs around its own requests (and restores afterwards), and
+ * become kQ3ErrorX11Error; they never reach the application's handler or
+ * end the process. Xlib calls on one Display must not run on two threads
+ * at once (XInitThreads otherwise).
+ */
+
+/* Apple's buffer record for Q3XBuffers_New/Swap. */
+typedef struct OpaqueTQ3XBufferObject *TQ3XBufferObject;
+
+/* A PseudoColor colormap's layout (Apple's; stored, unused by TrueColor). */
+struct TQ3XColormapData {
+    long baseEntry;
+    long maxRed;
+    long maxGreen;
+    long maxBlue;
+    long multRed;
+    long multGreen;
+    long multBlue;
+};
+typedef struct TQ3XColormapData TQ3XColormapData;
+
+/*
+ * An X11 draw context's data. display: not NULL. drawable: a window of that
+ * display (checked with the server). visual: NULL (the window's own visual
+ * is used) or a TrueColor visual. cmap: stored. colorMapData: NULL or a
+ * colormap layout, copied.
+ */
+struct TQ3XDrawContextData {
+    TQ3DrawContextData contextData;
+    Display *display;
+    Drawable drawable;
+    Visual *visual;
+    Colormap cmap;
+    TQ3XColormapData *colorMapData;
+};
+typedef struct TQ3XDrawContextData TQ3XDrawContextData;
+
+/**
+ * Makes a buffer record for a window, for programs that swap buffers
+ * themselves. Q3 composes every frame off screen and shows it whole, so
+ * the record only remembers the display, window and count; Q3XBuffers_Swap
+ * sends the display's queued requests. The same display and window always
+ * give the same record, which lives as long as the process (Apple declares
+ * no call to dispose of it).
+ *
+ * @param dpy         the display.
+ * @param numBuffers  1 or 2.
+ * @param window      a window of dpy.
+ * @return the record, or NULL.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     dpy is NULL.
+ *   kQ3ErrorInvalidParameter  numBuffers is neither 1 nor 2.
+ *   kQ3ErrorX11Error          window is not a window of dpy, or libX11
+ *                             cannot be loaded.
+ *
+ * Ownership: the record is Q3's.
+ */
+Q3_EXTERN_API_C(TQ3XBufferObject) Q3XBuffers_New(Display *dpy, unsigned long numBuffers, Window window);
+
+/**
+ * Shows what was drawn into the record's window: flushes the display's
+ * queued requests (XFlush).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized    Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter     dpy or buffers is NULL.
+ *   kQ3ErrorInvalidParameter  buffers did not come from Q3XBuffers_New, or
+ *                             was made for another display.
+ *
+ * Ownership: none.
+ */
+Q3_EXTERN_API_C(void) Q3XBuffers_Swap(Display *dpy, TQ3XBufferObject buffers);
+
+/**
+ * Finds the visuals of a screen an X11 draw context can use: TrueColor,
+ * depth 24.
+ *
+ * @param dpy     the display.
+ * @param screen  one of its screens.
+ * @return the first of Xlib's list of matching visuals, or NULL.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   dpy or screen is NULL.
+ *   kQ3ErrorX11Error        the screen has no such visual, or libX11 cannot
+ *                           be loaded.
+ *
+ * Ownership: the caller frees the list with XFree.
+ */
+Q3_EXTERN_API_C(XVisualInfo *) Q3X_GetVisualInfo(Display *dpy, Screen *screen);
+
+/**
+ * Creates an X11 draw context.
+ *
+ * @param xContextData  the common data and the window (TQ3XDrawContextData).
+ * @return a new draw context, or NULL.
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized  Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter   xContextData or its display is NULL.
+ *   kQ3ErrorInvalidData     the TQ3DrawContextData rules (see
+ *                           Q3PixmapDrawContext_New), or visual is not
+ *                           TrueColor.
+ *   kQ3ErrorX11Error        drawable is not a window of display, or libX11
+ *                           cannot be loaded.
+ *
+ * Ownership: the caller owns the one reference to the new draw context.
+ * The display, window, visual and colormap stay the caller's and must
+ * outlive the draw context's use.
+ */
+Q3_EXTERN_API_C(TQ3DrawContextObject) Q3XDrawContext_New(const TQ3XDrawContextData *xContextData);
+
+/**
+ * Sets or reads one field of an X11 draw context's data. Set checks as
+ * Q3XDrawContext_New does for that field (a new display is not checked
+ * against the drawable: set the drawable next) and changes nothing on
+ * failure; Get returns the field as last set (the colormap data as a
+ * copy; all zero when none was given).
+ *
+ * Errors:
+ *   kQ3ErrorNotInitialized     Q3Initialize has not been called.
+ *   kQ3ErrorNULLParameter      drawContext, or the pointer argument, is NULL.
+ *   kQ3ErrorInvalidObject      drawContext is not a live Q3 object.
+ *   kQ3ErrorInvalidObjectType  drawContext is not an X11 draw context.
+ *   kQ3ErrorInvalidParameter   SetVisual: the visual is not TrueColor.
+ *   kQ3ErrorX11Error           SetDrawable: not a window of the display.
+ *
+ * Ownership: no references change.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_SetDisplay(TQ3DrawContextObject drawContext, const Display *display);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_GetDisplay(TQ3DrawContextObject drawContext, Display **display);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_SetDrawable(TQ3DrawContextObject drawContext, Drawable drawable);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_GetDrawable(TQ3DrawContextObject drawContext, Drawable *drawable);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_SetVisual(TQ3DrawContextObject drawContext, const Visual *visual);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_GetVisual(TQ3DrawContextObject drawContext, Visual **visual);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_SetColormap(TQ3DrawContextObject drawContext, Colormap colormap);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_GetColormap(TQ3DrawContextObject drawContext, Colormap *colormap);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_SetColormapData(TQ3DrawContextObject drawContext,
+                                                          const TQ3XColormapData *colormapData);
+Q3_EXTERN_API_C(TQ3Status) Q3XDrawContext_GetColormapData(TQ3DrawContextObject drawContext,
+                                                          TQ3XColormapData *colormapData);
+
+#endif /* WINDOW_SYSTEM_X11 */
 
 #ifdef __cplusplus
 }

@@ -16,8 +16,10 @@
 #include "view/Pick.h"
 #include "view/PickPass.h"
 #include "view/RenderPass.h"
+#include "view/WindowDrawContext.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 namespace q3 {
@@ -76,11 +78,56 @@ bool maskSelects(const TQ3Bitmap& mask, int x, int y)
 
 PixmapDrawContext& pixmapContext(DrawContext& context)
 {
-    // Q3 has one kind of draw context; the check keeps this honest if more come.
+    // The pixmap and X11 draw contexts are the kinds Q3 draws into.
     if (!context.isType(kQ3DrawContextTypePixmap))
         fail(kQ3ErrorInvalidObjectType, std::string("the view's draw context is a ") +
                                             context.classInfo().name + ", which Q3 cannot render into");
     return static_cast<PixmapDrawContext&>(context);
+}
+
+// The size of the image a draw context holds: the pixmap's, or the X
+// window's as the server reports it now (kQ3ErrorX11Error when it cannot).
+std::pair<std::uint32_t, std::uint32_t> imageSize(DrawContext& context)
+{
+    if (context.isType(kQ3DrawContextTypeX11)) {
+        std::uint32_t width = 0, height = 0;
+        const RenderResult result = windowSize(static_cast<WindowDrawContext&>(context).window(), width, height);
+        if (!result)
+            fail(kQ3ErrorX11Error, "the X11 draw context's window: " + result.message);
+        return {width, height};
+    }
+    const PixmapLayout layout = layoutOf(pixmapContext(context).pixmap());
+    return {layout.width, layout.height};
+}
+
+// The pixels of the window a bounding or picking loop subdivides curves
+// for: none for a window the server no longer knows, which only a
+// rendering loop or a window pick must report.
+std::optional<PixelRect> subdivisionRect(DrawContext& context)
+{
+    if (context.isType(kQ3DrawContextTypeX11)) {
+        std::uint32_t width = 0, height = 0;
+        if (!windowSize(static_cast<WindowDrawContext&>(context).window(), width, height))
+            return std::nullopt;
+        return context.drawRect(width, height);
+    }
+    if (!context.isType(kQ3DrawContextTypePixmap))
+        return std::nullopt;
+    const auto [width, height] = imageSize(context);
+    return context.drawRect(width, height);
+}
+
+// The layout of m_windowPixels for writeRgba8ToPixmap: one 32-bit
+// 0xAARRGGBB value per pixel in the host's byte order.
+PixmapLayout windowLayout(std::uint32_t width, std::uint32_t height)
+{
+    PixmapLayout layout;
+    layout.width = width;
+    layout.height = height;
+    layout.rowBytes = width * 4;
+    layout.pixelType = PixelType::kARGB32;
+    layout.byteOrder = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ ? ByteOrder::kLittle : ByteOrder::kBig;
+    return layout;
 }
 
 // The lights of a light group and the camera's eye, in world coordinates.
@@ -218,15 +265,34 @@ void View::startRendering()
     if (!m_renderer)
         fail(kQ3ErrorRendererNotSet, "the view has no renderer (Q3View_SetRenderer)");
 
-    const PixmapDrawContext& context = pixmapContext(*m_drawContext);
+    const DrawContext& context = *m_drawContext;
     const TQ3DrawContextData& settings = context.data();
     Destination destination;
-    destination.image = context.pixmap().image;
-    destination.layout = layoutOf(context.pixmap());
+    if (context.isType(kQ3DrawContextTypeX11)) {
+        // The frame is drawn as into a pixmap of the window's size, which
+        // starts as the window's pixels where the frame may leave them.
+        const auto [width, height] = imageSize(*m_drawContext);
+        destination.window = true;
+        destination.nativeWindow = static_cast<const WindowDrawContext&>(context).window();
+        destination.layout = windowLayout(width, height);
+        m_windowPixels.assign(std::size_t(width) * height, 0);
+        destination.image = m_windowPixels.data();
+    } else {
+        const PixmapDrawContext& pixmap = pixmapContext(*m_drawContext);
+        destination.image = pixmap.pixmap().image;
+        destination.layout = layoutOf(pixmap.pixmap());
+    }
     destination.pane = context.drawRect(destination.layout.width, destination.layout.height);
     destination.cleared = settings.clearImageMethod == kQ3ClearMethodWithColor;
     if (settings.maskState == kQ3True)
         destination.mask = settings.mask;
+    if (destination.window && (!destination.cleared || destination.mask.image != nullptr)) {
+        const PixelRect area = clipToImage(destination.pane, destination.layout.width, destination.layout.height);
+        const RenderResult read = readWindow(destination.nativeWindow, area, m_windowPixels.data(),
+                                             destination.layout.width);
+        if (!read)
+            fail(kQ3ErrorX11Error, "reading the window the frame is drawn over: " + read.message);
+    }
     // Without a clear, the frame starts transparent so that writeImage can
     // tell drawn pixels (alpha 1) from untouched ones.
     RgbaColor clear;
@@ -273,6 +339,13 @@ TQ3ViewStatus View::endRendering()
     const RenderResult written = writeImage();
     if (!written)
         fail(kQ3ErrorRenderingLoopFailed, "the image could not be written: " + written.message);
+    if (m_destination.window) {
+        const Destination& to = m_destination;
+        const PixelRect area = clipToImage(to.pane, to.layout.width, to.layout.height);
+        const RenderResult shown = writeWindow(to.nativeWindow, area, m_windowPixels.data(), to.layout.width);
+        if (!shown)
+            fail(kQ3ErrorX11Error, "the frame could not be put into the window: " + shown.message);
+    }
     if (cancelled)
         return kQ3ViewStatusCancelled;
     if (m_endFrameMethod != nullptr)
@@ -324,11 +397,9 @@ void View::startBounding(Loop loop, const TQ3ComputeBounds& computeBounds)
                                            " is neither kQ3ComputeBoundsExact nor Approximate");
     // Screen-space subdivision (for Q3Geometry_GetDecomposed) needs a window.
     std::optional<Window> window;
-    if (m_camera && m_drawContext && m_drawContext->isType(kQ3DrawContextTypePixmap)) {
-        const TQ3Pixmap& pixmap = pixmapContext(*m_drawContext).pixmap();
-        const PixmapLayout layout = layoutOf(pixmap);
-        window = Window{m_camera->worldToFrustum(), m_drawContext->drawRect(layout.width, layout.height)};
-    }
+    if (m_camera && m_drawContext)
+        if (const std::optional<PixelRect> rect = subdivisionRect(*m_drawContext))
+            window = Window{m_camera->worldToFrustum(), *rect};
     auto pass = std::make_unique<BoundsPass>(computeBounds, window, defaultAttributes(m_defaultAttributes.get()));
     pass->allowGroupCulling(m_cullGroups);
     pass->useCurveScratch(curveScratch());
@@ -399,13 +470,12 @@ void View::startPicking(Pick& pick)
             fail(kQ3ErrorDrawContextNotSet, "a window pick needs the view's draw context (Q3View_SetDrawContext)");
         if (!m_camera)
             fail(kQ3ErrorCameraNotSet, "a window pick needs the view's camera (Q3View_SetCamera)");
-        const TQ3Pixmap& pixmap = pixmapContext(*m_drawContext).pixmap();
-        const PixmapLayout layout = layoutOf(pixmap);
-        window = Window{m_camera->worldToFrustum(), m_drawContext->drawRect(layout.width, layout.height)};
-    } else if (m_camera && m_drawContext && m_drawContext->isType(kQ3DrawContextTypePixmap)) {
+        const auto [width, height] = imageSize(*m_drawContext);
+        window = Window{m_camera->worldToFrustum(), m_drawContext->drawRect(width, height)};
+    } else if (m_camera && m_drawContext) {
         // Screen-space subdivision needs a window when there is one.
-        const PixmapLayout layout = layoutOf(pixmapContext(*m_drawContext).pixmap());
-        window = Window{m_camera->worldToFrustum(), m_drawContext->drawRect(layout.width, layout.height)};
+        if (const std::optional<PixelRect> rect = subdivisionRect(*m_drawContext))
+            window = Window{m_camera->worldToFrustum(), *rect};
     }
     auto pass = std::make_unique<PickPass>(pick, window, defaultAttributes(m_defaultAttributes.get()));
     pass->allowGroupCulling(m_cullGroups);

@@ -7,8 +7,10 @@
 #include "core/ShapeVisitor.h"
 #include "base/PixelConvert.h"
 #include "base/RenderResult.h"
+#include "base/WindowSystem.h"
 
 #include <memory>
+#include <vector>
 
 namespace q3 {
 
@@ -212,6 +214,10 @@ private:
         /// The draw context's mask while its mask state is on, else null
         /// image (every pixel of the pane is written).
         TQ3Bitmap mask{};
+        /// The frame goes to an X window (X11DrawContext): image is
+        /// m_windowPixels, shown by endRendering.
+        bool window = false;
+        NativeWindow nativeWindow;
     };
 
     /// Calls the idle or progress method; false when it asks to cancel.
@@ -252,6 +258,9 @@ private:
     TQ3Object m_pick = nullptr;
     std::unique_ptr<RenderTarget> m_offscreen;
     Destination m_destination;
+    /// A window frame's pixels (0x00RRGGBB, the window's size), kept between
+    /// frames so that a frame of an unchanged size allocates nothing.
+    std::vector<std::uint32_t> m_windowPixels;
 };
 
 } // namespace q3

@@ -10,6 +10,7 @@
 #include "render/Renderer.h"
 #include "view/Camera.h"
 #include "view/DrawContext.h"
+#include "view/WindowDrawContext.h"
 #include "view/View.h"
 
 #include <cmath>
@@ -100,6 +101,13 @@ Ref<ViewHints> ViewHints::fromView(const View& view)
             const TQ3Pixmap& pixmap = static_cast<const PixmapDrawContext*>(context)->pixmap();
             hints->m_width = pixmap.width > kMaxDimension ? kMaxDimension : pixmap.width;
             hints->m_height = pixmap.height > kMaxDimension ? kMaxDimension : pixmap.height;
+        } else if (context->isType(kQ3DrawContextTypeX11)) {
+            // The window's size now; none when the server no longer knows it.
+            std::uint32_t width = 0, height = 0;
+            if (windowSize(static_cast<const WindowDrawContext*>(context)->window(), width, height)) {
+                hints->m_width = width > kMaxDimension ? kMaxDimension : width;
+                hints->m_height = height > kMaxDimension ? kMaxDimension : height;
+            }
         }
         if (hints->m_width == 0 || hints->m_height == 0)
             hints->m_width = hints->m_height = 0;

@@ -3,7 +3,8 @@
 
 # libq3.so neither imports nor exports an OpenGL, EGL or OSMesa symbol: its
 # backends open their libraries with dlopen and resolve every GL entry point
-# through their own loader (src/render/GlApi.h says why). Run as
+# through their own loader (src/render/GlApi.h says why). Likewise Xlib,
+# which src/render/X11Window.cpp opens for the X11 draw context. Run as
 # cmake -DQ3_NM=nm -DQ3_LIBRARY=libq3.so -P CheckGlImports.cmake; fails
 # (exit status 1) listing every such symbol, defined or undefined.
 
@@ -20,7 +21,7 @@ foreach(line IN LISTS lines)
   if(line MATCHES "([^ \t]+)[ \t]*$")
     math(EXPR count "${count} + 1")
     string(REGEX REPLACE "@.*$" "" name "${CMAKE_MATCH_1}")
-    if(name MATCHES "^(gl[A-Z_]|egl[A-Z]|OSMesa|glX|_glapi)")
+    if(name MATCHES "^(gl[A-Z_]|egl[A-Z]|OSMesa|glX|_glapi|X[A-Z][a-z])")
       list(APPEND found "${line}")
     endif()
   endif()
@@ -31,7 +32,7 @@ endif()
 if(found)
   list(LENGTH found n)
   string(REPLACE ";" "\n  " names "${found}")
-  message(FATAL_ERROR "${Q3_LIBRARY} binds ${n} GL/EGL/OSMesa symbol(s) by name (call them through "
+  message(FATAL_ERROR "${Q3_LIBRARY} binds ${n} GL/EGL/OSMesa/Xlib symbol(s) by name (call them through "
     "src/render/GlApi.h, adding the function to Q3_GL_FUNCTIONS):\n  ${names}")
 endif()
 
@@ -42,7 +43,7 @@ execute_process(COMMAND "${Q3_READELF}" -d "${Q3_LIBRARY}"
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${Q3_READELF} -d ${Q3_LIBRARY} failed (${status}): ${readelf_error}")
 endif()
-string(REGEX MATCHALL "\\(NEEDED\\)[^\n]*\\[(lib(GL|EGL|OSMesa|glapi|GLX|OpenGL)[^]]*)\\]" needed "${readelf_output}")
+string(REGEX MATCHALL "\\(NEEDED\\)[^\n]*\\[(lib(GL|EGL|OSMesa|glapi|GLX|OpenGL|X11)[^]]*)\\]" needed "${readelf_output}")
 if(needed)
   string(REPLACE ";" "\n  " names "${needed}")
   message(FATAL_ERROR "${Q3_LIBRARY} links a GL library at load time:\n  ${names}")

@@ -123,10 +123,12 @@ typedef char checkUns32[sizeof(TQ3Uns32) == 4 && sizeof(TQ3Int32) == 4 ? 1 : -1]
 typedef char checkUns64[sizeof(TQ3Uns64) == 8 && sizeof(TQ3Int64) == 8 ? 1 : -1];
 typedef char checkSize[sizeof(TQ3Size) == 4 ? 1 : -1];
 
-/* QD3D.h promises no X11 draw context until it declares Apple's X11 API. */
-#if WINDOW_SYSTEM_X11
-#error "WINDOW_SYSTEM_X11 is set but Q3 declares no TQ3XDrawContextData"
+/* WINDOW_SYSTEM_X11 is Apple's 1, and QD3DDrawContext.h then declares
+ * Apple's X11 draw context with Xlib's types. */
+#if !WINDOW_SYSTEM_X11
+#error "WINDOW_SYSTEM_X11 is not 1"
 #endif
+typedef char checkXData[sizeof(((TQ3XDrawContextData *)0)->display) == sizeof(Display *) ? 1 : -1];
 #if !OS_UNIX || OS_MACINTOSH || OS_WIN32 || WINDOW_SYSTEM_MACINTOSH || WINDOW_SYSTEM_WIN32
 #error "platform switches"
 #endif

@@ -1,0 +1,305 @@
+// SPDX-License-Identifier: MIT
+// Copyright (c) 2026 The Q3 authors
+#include "base/WindowSystem.h"
+
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <mutex>
+#include <string>
+
+// base/WindowSystem.h for X11. libX11.so.6 is opened with dlopen the first
+// time a call needs it (a program that shows an X window has it loaded
+// already, so this finds the same copy), and libq3.so imports no X symbol.
+//
+// Xlib reports protocol errors (BadWindow for a drawable that is no window,
+// BadMatch for reading outside the screen) asynchronously, through one
+// process-wide handler whose default prints and exits. Each call here
+// syncs first (so errors of the application's earlier requests still go to
+// its own handler), installs a handler that records the error, makes its
+// requests, syncs again and puts the application's handler back. The handler
+// is process-wide, so the calls are serialized by one mutex.
+
+namespace q3 {
+namespace {
+
+struct XlibApi {
+    decltype(&XSetErrorHandler) setErrorHandler = nullptr;
+    decltype(&XSync) sync = nullptr;
+    decltype(&XFlush) flush = nullptr;
+    decltype(&XGetWindowAttributes) getWindowAttributes = nullptr;
+    decltype(&XCreateImage) createImage = nullptr;
+    decltype(&XGetImage) getImage = nullptr;
+    decltype(&XPutImage) putImage = nullptr;
+    decltype(&XCreateGC) createGC = nullptr;
+    decltype(&XFreeGC) freeGC = nullptr;
+    decltype(&XGetVisualInfo) getVisualInfo = nullptr;
+    decltype(&XScreenNumberOfScreen) screenNumberOfScreen = nullptr;
+    decltype(&XGetErrorText) getErrorText = nullptr;
+};
+
+template <class F>
+bool load(void* library, const char* name, F& function)
+{
+    function = reinterpret_cast<F>(dlsym(library, name));
+    return function != nullptr;
+}
+
+// Loaded once; null when libX11 or one of its functions is missing.
+const XlibApi* xlib()
+{
+    static const XlibApi* api = [] () -> const XlibApi* {
+        void* library = dlopen("libX11.so.6", RTLD_NOW | RTLD_LOCAL);
+        if (library == nullptr)
+            return nullptr;
+        static XlibApi loaded;
+        const bool complete = load(library, "XSetErrorHandler", loaded.setErrorHandler) &&
+                              load(library, "XSync", loaded.sync) && load(library, "XFlush", loaded.flush) &&
+                              load(library, "XGetWindowAttributes", loaded.getWindowAttributes) &&
+                              load(library, "XCreateImage", loaded.createImage) &&
+                              load(library, "XGetImage", loaded.getImage) &&
+                              load(library, "XPutImage", loaded.putImage) &&
+                              load(library, "XCreateGC", loaded.createGC) &&
+                              load(library, "XFreeGC", loaded.freeGC) &&
+                              load(library, "XGetVisualInfo", loaded.getVisualInfo) &&
+                              load(library, "XScreenNumberOfScreen", loaded.screenNumberOfScreen) &&
+                              load(library, "XGetErrorText", loaded.getErrorText);
+        return complete ? &loaded : nullptr;
+    }();
+    return api;
+}
+
+std::mutex& trapMutex()
+{
+    static std::mutex mutex;
+    return mutex;
+}
+
+// The first error seen while a trap is set (guarded by trapMutex()).
+int g_errorCode = 0;
+int g_errorRequest = 0;
+
+int recordError(Display*, XErrorEvent* event)
+{
+    if (g_errorCode == 0) {
+        g_errorCode = event->error_code;
+        g_errorRequest = event->request_code;
+    }
+    return 0;
+}
+
+// Catches the X errors of the requests made while it lives.
+class ErrorTrap {
+public:
+    ErrorTrap(const XlibApi& api, Display* display) : m_api(api), m_display(display), m_lock(trapMutex())
+    {
+        m_api.sync(m_display, False);
+        g_errorCode = 0;
+        m_previous = m_api.setErrorHandler(recordError);
+    }
+    ~ErrorTrap()
+    {
+        m_api.sync(m_display, False);
+        m_api.setErrorHandler(m_previous);
+    }
+    ErrorTrap(const ErrorTrap&) = delete;
+    ErrorTrap& operator=(const ErrorTrap&) = delete;
+
+    /// Waits for the server's answer to every request so far; the failure
+    /// naming the first error since the last check, or success.
+    RenderResult check(const char* what)
+    {
+        m_api.sync(m_display, False);
+        if (g_errorCode == 0)
+            return RenderResult::success();
+        const int code = g_errorCode;
+        g_errorCode = 0;
+        char text[256] = {};
+        m_api.getErrorText(m_display, code, text, sizeof text);
+        return RenderResult::failure(RenderStatus::kContextFailure,
+                                     std::string(what) + " failed with X error " + std::to_string(code) +
+                                         " (" + text + ", request code " + std::to_string(g_errorRequest) + ")");
+    }
+
+private:
+    const XlibApi& m_api;
+    Display* m_display;
+    std::lock_guard<std::mutex> m_lock;
+    XErrorHandler m_previous = nullptr;
+};
+
+RenderResult missingLibrary()
+{
+    return RenderResult::failure(RenderStatus::kContextFailure,
+                                 "libX11.so.6 (or one of its functions) could not be loaded: " +
+                                     std::string(dlerror() ? dlerror() : "not found"));
+}
+
+// One colour channel of a TrueColor pixel: its mask's shift and width.
+struct Channel {
+    unsigned shift = 0;
+    unsigned bits = 0;
+    explicit Channel(unsigned long mask)
+    {
+        while (mask != 0 && (mask & 1u) == 0) {
+            mask >>= 1;
+            ++shift;
+        }
+        while ((mask & 1u) != 0) {
+            mask >>= 1;
+            ++bits;
+        }
+    }
+    unsigned long encode(std::uint32_t value8) const
+    {
+        const unsigned long max = (1ul << bits) - 1;
+        return ((value8 * max + 127) / 255) << shift;
+    }
+    std::uint32_t decode(unsigned long pixel) const
+    {
+        const unsigned long max = (1ul << bits) - 1;
+        return std::uint32_t((((pixel >> shift) & max) * 255 + max / 2) / max);
+    }
+};
+
+// The attributes of a window Q3 can draw into, with the trap set.
+RenderResult windowAttributes(const XlibApi& api, Display* display, Window window, XWindowAttributes& attributes,
+                              ErrorTrap& trap)
+{
+    const Status got = api.getWindowAttributes(display, window, &attributes);
+    RenderResult result = trap.check("XGetWindowAttributes");
+    if (!result)
+        return RenderResult::failure(result.status, "the drawable is not a window of the display: " + result.message);
+    if (got == 0)
+        return RenderResult::failure(RenderStatus::kContextFailure, "the drawable is not a window of the display");
+    if (attributes.c_class == InputOnly)
+        return RenderResult::failure(RenderStatus::kContextFailure, "the window is InputOnly: it has no pixels");
+    if (attributes.visual == nullptr || attributes.visual->c_class != TrueColor)
+        return RenderResult::failure(RenderStatus::kContextFailure,
+                                     "the window's visual is not TrueColor, which Q3 needs");
+    return RenderResult::success();
+}
+
+} // namespace
+
+RenderResult windowSize(const NativeWindow& window, std::uint32_t& width, std::uint32_t& height)
+{
+    const XlibApi* api = xlib();
+    if (api == nullptr)
+        return missingLibrary();
+    Display* display = static_cast<Display*>(window.display);
+    ErrorTrap trap(*api, display);
+    XWindowAttributes attributes{};
+    RenderResult result = windowAttributes(*api, display, window.drawable, attributes, trap);
+    if (!result)
+        return result;
+    width = std::uint32_t(attributes.width);
+    height = std::uint32_t(attributes.height);
+    return RenderResult::success();
+}
+
+RenderResult readWindow(const NativeWindow& window, const PixelRect& rect, std::uint32_t* pixels,
+                        std::size_t rowPixels)
+{
+    const XlibApi* api = xlib();
+    if (api == nullptr)
+        return missingLibrary();
+    if (rect.width <= 0 || rect.height <= 0)
+        return RenderResult::success();
+    Display* display = static_cast<Display*>(window.display);
+    ErrorTrap trap(*api, display);
+    XWindowAttributes attributes{};
+    RenderResult result = windowAttributes(*api, display, window.drawable, attributes, trap);
+    if (!result)
+        return result;
+    XImage* image = api->getImage(display, window.drawable, rect.x, rect.y, unsigned(rect.width),
+                                  unsigned(rect.height), AllPlanes, ZPixmap);
+    result = trap.check("XGetImage");
+    if (!result || image == nullptr) {
+        if (image != nullptr)
+            XDestroyImage(image);
+        return result ? RenderResult::failure(RenderStatus::kContextFailure, "XGetImage returned nothing")
+                      : result;
+    }
+    const Channel red(attributes.visual->red_mask), green(attributes.visual->green_mask),
+        blue(attributes.visual->blue_mask);
+    for (int y = 0; y < rect.height; ++y)
+        for (int x = 0; x < rect.width; ++x) {
+            const unsigned long pixel = XGetPixel(image, x, y);
+            pixels[std::size_t(rect.y + y) * rowPixels + std::size_t(rect.x + x)] =
+                red.decode(pixel) << 16 | green.decode(pixel) << 8 | blue.decode(pixel);
+        }
+    XDestroyImage(image);
+    return RenderResult::success();
+}
+
+RenderResult writeWindow(const NativeWindow& window, const PixelRect& rect, const std::uint32_t* pixels,
+                         std::size_t rowPixels)
+{
+    const XlibApi* api = xlib();
+    if (api == nullptr)
+        return missingLibrary();
+    if (rect.width <= 0 || rect.height <= 0)
+        return RenderResult::success();
+    Display* display = static_cast<Display*>(window.display);
+    ErrorTrap trap(*api, display);
+    XWindowAttributes attributes{};
+    RenderResult result = windowAttributes(*api, display, window.drawable, attributes, trap);
+    if (!result)
+        return result;
+    XImage* image = api->createImage(display, attributes.visual, unsigned(attributes.depth), ZPixmap, 0, nullptr,
+                                     unsigned(rect.width), unsigned(rect.height), 32, 0);
+    if (image == nullptr)
+        return RenderResult::failure(RenderStatus::kOutOfMemory, "XCreateImage failed");
+    // XDestroyImage frees the data with free().
+    image->data = static_cast<char*>(std::malloc(std::size_t(image->bytes_per_line) * std::size_t(rect.height)));
+    if (image->data == nullptr) {
+        XDestroyImage(image);
+        return RenderResult::failure(RenderStatus::kOutOfMemory, "no memory for the window's image");
+    }
+    const Channel red(attributes.visual->red_mask), green(attributes.visual->green_mask),
+        blue(attributes.visual->blue_mask);
+    for (int y = 0; y < rect.height; ++y)
+        for (int x = 0; x < rect.width; ++x) {
+            const std::uint32_t rgb = pixels[std::size_t(rect.y + y) * rowPixels + std::size_t(rect.x + x)];
+            XPutPixel(image, x, y, red.encode(rgb >> 16 & 0xFF) | green.encode(rgb >> 8 & 0xFF) | blue.encode(rgb & 0xFF));
+        }
+    GC gc = api->createGC(display, window.drawable, 0, nullptr);
+    api->putImage(display, window.drawable, gc, image, 0, 0, rect.x, rect.y, unsigned(rect.width),
+                  unsigned(rect.height));
+    api->freeGC(display, gc);
+    XDestroyImage(image);
+    return trap.check("XPutImage");
+}
+
+RenderResult flushDisplay(void* display)
+{
+    const XlibApi* api = xlib();
+    if (api == nullptr)
+        return missingLibrary();
+    api->flush(static_cast<Display*>(display));
+    return RenderResult::success();
+}
+
+RenderResult trueColorVisuals(void* display, void* screen, void*& visuals)
+{
+    const XlibApi* api = xlib();
+    if (api == nullptr)
+        return missingLibrary();
+    XVisualInfo wanted{};
+    wanted.screen = api->screenNumberOfScreen(static_cast<Screen*>(screen));
+    wanted.c_class = TrueColor;
+    wanted.depth = 24;
+    int count = 0;
+    XVisualInfo* list = api->getVisualInfo(static_cast<Display*>(display),
+                                           VisualScreenMask | VisualClassMask | VisualDepthMask, &wanted, &count);
+    if (list == nullptr || count == 0)
+        return RenderResult::failure(RenderStatus::kContextFailure, "the screen has no TrueColor visual of depth 24");
+    visuals = list;
+    return RenderResult::success();
+}
+
+} // namespace q3
