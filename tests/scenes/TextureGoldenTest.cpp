@@ -13,6 +13,7 @@
 // Exact texels against uv are checked in tests/api/TextureRenderTest.cpp.
 
 #include "Golden.h"
+#include "SceneRender.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -107,55 +108,14 @@ protected:
     // ambient light (0.3) and a directional light (0.8) when lit.
     q3test::RgbaImage render(const TQ3Point3D& eye, bool lit, const std::function<void(TQ3ViewObject)>& submit)
     {
-        std::vector<unsigned char> argb(std::size_t(kWidth) * kHeight * 4, 0);
-        TQ3PixmapDrawContextData contextData{};
-        contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        contextData.drawContextData.clearImageColor = {1.0f, 0.1f, 0.1f, 0.12f};
-        contextData.pixmap = TQ3Pixmap{argb.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32,
-                                       kQ3EndianBig, kQ3EndianBig};
-        TQ3DrawContextObject context = Q3PixmapDrawContext_New(&contextData);
-        TQ3ViewAngleAspectCameraData cameraData{};
-        cameraData.cameraData.placement = {eye, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
-        cameraData.cameraData.range = {0.5f, 50.0f};
-        cameraData.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
-        cameraData.fov = 0.8f;
-        cameraData.aspectRatioXToY = float(kWidth) / kHeight;
-        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
-        TQ3ViewObject view = Q3View_New();
-        Q3View_SetDrawContext(view, context);
-        Q3View_SetCamera(view, camera);
-        Q3View_SetRendererByType(view, kQ3RendererTypeInteractive);
-        TQ3GroupObject lights = Q3LightGroup_New();
-        if (lit) {
-            const TQ3LightData ambientData{kQ3True, 0.3f, {1.0f, 1.0f, 1.0f}};
-            TQ3LightObject ambient = Q3AmbientLight_New(&ambientData);
-            const TQ3DirectionalLightData sunData{{kQ3True, 0.8f, {1.0f, 1.0f, 1.0f}}, kQ3False, {-1.0f, -1.5f, -2.0f}};
-            TQ3LightObject sun = Q3DirectionalLight_New(&sunData);
-            Q3Group_AddObject(lights, ambient);
-            Q3Group_AddObject(lights, sun);
-            Q3Object_Dispose(ambient);
-            Q3Object_Dispose(sun);
-        }
-        Q3View_SetLightGroup(view, lights);
-        EXPECT_EQ(Q3View_StartRendering(view), kQ3Success);
-        TQ3ViewStatus status;
-        do {
-            submit(view);
-            status = Q3View_EndRendering(view);
-        } while (status == kQ3ViewStatusRetraverse);
-        EXPECT_EQ(status, kQ3ViewStatusDone);
-        Q3Object_Dispose(lights);
-        Q3Object_Dispose(view);
-        Q3Object_Dispose(camera);
-        Q3Object_Dispose(context);
-        q3test::RgbaImage image(kWidth, kHeight);
-        for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
-            image.pixels[4 * i] = argb[4 * i + 1];
-            image.pixels[4 * i + 1] = argb[4 * i + 2];
-            image.pixels[4 * i + 2] = argb[4 * i + 3];
-            image.pixels[4 * i + 3] = 255;
-        }
-        return image;
+        q3test::SceneSetup setup;
+        setup.width = kWidth;
+        setup.height = kHeight;
+        setup.clear = {1.0f, 0.1f, 0.1f, 0.12f};
+        setup.eye = eye;
+        setup.ambient = lit ? 0.3f : 0.0f;
+        setup.sun = lit;
+        return q3test::renderScene(setup, submit);
     }
 
     // How many pixels are (within `slack`) a scaled copy of the colour:
