@@ -19,6 +19,7 @@
 
 #include "Golden.h"
 #include "SceneRender.h"
+#include "SessionTest.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -45,20 +46,8 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-class RenderQualityGoldenTest : public ::testing::Test {
+class RenderQualityGoldenTest : public q3test::SessionTest<> {
 protected:
-    void SetUp() override
-    {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
-    }
-    void TearDown() override
-    {
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
-    }
 
     // Renders `submit` in perspective from `eye` towards `target` with the
     // renderer `type` (RAVE texture filter `filter` for the interactive
@@ -99,13 +88,7 @@ protected:
         const double mean = sum / n;
         return squares / n - mean * mean;
     }
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int RenderQualityGoldenTest::s_errors = 0;
 
 // The checkerboard's colours (8 x 8 texel squares on a 64 x 64 image).
 constexpr unsigned char kLight[3] = {240, 220, 120};

@@ -14,6 +14,7 @@
 
 #include "Golden.h"
 #include "SceneRender.h"
+#include "SessionTest.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -75,13 +76,11 @@ std::vector<TQ3Object> throughFile(const std::vector<TQ3Object>& objects, TQ3Fil
 constexpr unsigned char kLight[3] = {230, 180, 60};
 constexpr unsigned char kDark[3] = {40, 90, 200};
 
-class TextureGoldenTest : public ::testing::Test {
+class TextureGoldenTest : public q3test::SessionTest<> {
 protected:
     void SetUp() override
     {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
+        SessionTest::SetUp();
         // An 8 x 8 checkerboard, ARGB32 big-endian.
         for (int y = 0; y < 8; ++y)
             for (int x = 0; x < 8; ++x) {
@@ -99,9 +98,7 @@ protected:
         Q3Object_Dispose(m_shader);
         Q3Object_Dispose(m_texture);
         Q3Object_Dispose(m_storage);
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
+        SessionTest::TearDown();
     }
 
     // Renders `submit` in perspective from `eye` towards the origin, with an
@@ -144,13 +141,7 @@ protected:
     TQ3StorageObject m_storage = nullptr;
     TQ3TextureObject m_texture = nullptr;
     TQ3ShaderObject m_shader = nullptr;
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int TextureGoldenTest::s_errors = 0;
 
 TEST_F(TextureGoldenTest, TriMeshInPerspectiveWrapsTheCheckerboardTwice)
 {

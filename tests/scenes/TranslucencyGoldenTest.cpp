@@ -11,6 +11,7 @@
 
 #include "Golden.h"
 #include "SceneRender.h"
+#include "SessionTest.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -36,21 +37,13 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-class TranslucencyGoldenTest : public ::testing::Test {
+class TranslucencyGoldenTest : public q3test::SessionTest<> {
 protected:
-    void SetUp() override
-    {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
-    }
     void TearDown() override
     {
         for (TQ3Object object : m_owned)
             Q3Object_Dispose(object);
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
+        SessionTest::TearDown();
     }
 
     template <class T>
@@ -107,13 +100,7 @@ protected:
     }
 
     std::vector<TQ3Object> m_owned;
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int TranslucencyGoldenTest::s_errors = 0;
 
 TEST_F(TranslucencyGoldenTest, TranslucentBoxOverAnOpaqueOne)
 {
