@@ -20,6 +20,7 @@
 #include "Golden.h"
 #include "SceneRender.h"
 #include "SessionTest.h"
+#include "QuadMesh.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -146,19 +147,8 @@ q3test::RgbaImage drawPlane(
     TQ3TextureObject texture = Q3MipmapTexture_New(&checker.mipmap);
     EXPECT_NE(texture, nullptr);
     TQ3ShaderObject shader = Q3TextureShader_New(texture);
-    TQ3Point3D points[4] = {{-4, 0, 3}, {4, 0, 3}, {4, 0, -45}, {-4, 0, -45}};
-    TQ3Param2D uvs[4] = {{0, 0}, {2, 0}, {2, 12}, {0, 12}};
-    TQ3TriMeshTriangleData triangles[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
-    TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
-    TQ3TriMeshData data{};
-    data.numTriangles = 2;
-    data.triangles = triangles;
-    data.numPoints = 4;
-    data.points = points;
-    data.numVertexAttributeTypes = 1;
-    data.vertexAttributeTypes = &uvArray;
-    data.bBox = TQ3BoundingBox{{-4, 0, -45}, {4, 0, 3}, kQ3False};
-    TQ3GeometryObject plane = Q3TriMesh_New(&data);
+    const q3test::QuadMesh quad({{-4, 0, 3}, {4, 0, 3}, {4, 0, -45}, {-4, 0, -45}}, {{0, 0}, {2, 0}, {2, 12}, {0, 12}});
+    TQ3GeometryObject plane = quad.create();
     q3test::RgbaImage image = render(filter, [&](TQ3ViewObject view) {
         Q3Shader_Submit(shader, view);
         Q3Geometry_Submit(plane, view);

@@ -15,6 +15,7 @@
 #include "Golden.h"
 #include "SceneRender.h"
 #include "SessionTest.h"
+#include "QuadMesh.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -145,19 +146,8 @@ protected:
 
 TEST_F(TextureGoldenTest, TriMeshInPerspectiveWrapsTheCheckerboardTwice)
 {
-    TQ3Point3D points[4] = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}};
-    TQ3Param2D uvs[4] = {{0, 2}, {2, 2}, {2, 0}, {0, 0}};
-    TQ3TriMeshTriangleData triangles[2] = {{{0, 2, 1}}, {{0, 3, 2}}};
-    TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
-    TQ3TriMeshData data{};
-    data.numTriangles = 2;
-    data.triangles = triangles;
-    data.numPoints = 4;
-    data.points = points;
-    data.numVertexAttributeTypes = 1;
-    data.vertexAttributeTypes = &uvArray;
-    data.bBox = TQ3BoundingBox{{-2, 0, -2}, {2, 0, 2}, kQ3False};
-    TQ3GeometryObject mesh = Q3TriMesh_New(&data);
+    const q3test::QuadMesh quad({{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}}, {{0, 2}, {2, 2}, {2, 0}, {0, 0}}, true);
+    TQ3GeometryObject mesh = quad.create();
     ASSERT_NE(mesh, nullptr);
     const q3test::RgbaImage image = render({0.5f, 2.5f, 4.0f}, false, [&](TQ3ViewObject v) {
         Q3Shader_Submit(m_shader, v);
@@ -262,20 +252,9 @@ TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
     };
 
     // The floor: a TriMesh with the checkerboard in its own set.
-    TQ3Point3D points[4] = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}};
-    TQ3Param2D uvs[4] = {{0, 2}, {2, 2}, {2, 0}, {0, 0}};
-    TQ3TriMeshTriangleData triangles[2] = {{{0, 2, 1}}, {{0, 3, 2}}};
-    TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
-    TQ3TriMeshData floorData{};
-    floorData.triMeshAttributeSet = setWith(m_shader);
-    floorData.numTriangles = 2;
-    floorData.triangles = triangles;
-    floorData.numPoints = 4;
-    floorData.points = points;
-    floorData.numVertexAttributeTypes = 1;
-    floorData.vertexAttributeTypes = &uvArray;
-    floorData.bBox = TQ3BoundingBox{{-2, 0, -2}, {2, 0, 2}, kQ3False};
-    TQ3GeometryObject floor = Q3TriMesh_New(&floorData);
+    q3test::QuadMesh floorQuad({{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}}, {{0, 2}, {2, 2}, {2, 0}, {0, 0}}, true);
+    floorQuad.data.triMeshAttributeSet = setWith(m_shader);
+    TQ3GeometryObject floor = floorQuad.create();
     // A box with the stripes in the face sets of its top and of the two
     // sides facing the eye, the board on the others.
     TQ3AttributeSet stripedFace = setWith(striped), boardedFace = setWith(boarded);
