@@ -26,7 +26,8 @@
  * or right button, or the left with Shift, moves it in the picture plane
  * (one pixel per pixel at the depth of the camera's point of interest); the
  * wheel moves the camera toward the point of interest (each step 0.9 times
- * the distance) or away (1/0.9). Moving the mouse without a button picks
+ * the distance) or away (1/0.9); an orthographic camera, which moving does
+ * not change, shows 0.9 (1/0.9) times its rectangle instead. Moving the mouse without a button picks
  * (Q3WindowPointPick) the geometry under the cursor and shows its type in
  * the title and on standard output.
  *
@@ -187,6 +188,10 @@ typedef struct Viewer {
     TQ3LightObject headLight; /* the default directional light, or NULL */
     TQ3CameraObject fileCamera; /* borrowed from the objects read, or NULL */
     TQ3CameraObject camera;
+    /* An orthographic camera's rectangle at the window's aspect: zoom
+     * scales it, as moving an orthographic camera changes nothing. */
+    TQ3OrthographicCameraData ortho;
+    int isOrtho;
     TQ3ObjectType renderer;
     TQ3FillStyle fill;
     int lightsOn;
@@ -245,6 +250,8 @@ static float worldPerPixel(const Viewer *v)
         /* The field of view spans the shorter side. */
         return 2 * distance * tanf(fov / 2) / (float)(v->width < v->height ? v->width : v->height);
     }
+    if (v->isOrtho)
+        return fabsf(v->ortho.top - v->ortho.bottom) * v->zoom / (float)v->height;
     return 2 * distance * tanf(fov / 2) / (float)v->height;
 }
 
@@ -258,6 +265,15 @@ static void updateCamera(Viewer *v)
     float shift = length(sub(placement.cameraLocation, v->centre)) - length(sub(v->home.cameraLocation, v->centre));
     range.hither = range.hither + shift > range.hither * 0.01f ? range.hither + shift : range.hither * 0.01f;
     range.yon += shift;
+    if (v->isOrtho) {
+        TQ3OrthographicCameraData data = v->ortho;
+        float x = (data.left + data.right) / 2, y = (data.top + data.bottom) / 2;
+        data.left = x + (data.left - x) * v->zoom;
+        data.right = x + (data.right - x) * v->zoom;
+        data.top = y + (data.top - y) * v->zoom;
+        data.bottom = y + (data.bottom - y) * v->zoom;
+        Q3OrthographicCamera_SetData(v->camera, &data);
+    }
     Q3Camera_SetPlacement(v->camera, &placement);
     Q3Camera_SetRange(v->camera, &range);
     if (v->headLight != NULL) {
@@ -289,6 +305,23 @@ static TQ3CameraObject newCamera(Viewer *v)
     data.fov = kFittedFieldOfView;
     data.aspectRatioXToY = aspect;
     return Q3ViewAngleAspectCamera_New(&data);
+}
+
+/* Makes a camera of the window's aspect ratio the view's. */
+static int useNewCamera(Viewer *v)
+{
+    TQ3CameraObject camera = newCamera(v);
+    if (camera == NULL || Q3View_SetCamera(v->view, camera) != kQ3Success) {
+        if (camera != NULL)
+            Q3Object_Dispose(camera);
+        return 0;
+    }
+    if (v->camera != NULL)
+        Q3Object_Dispose(v->camera);
+    v->camera = camera;
+    v->isOrtho = Q3Camera_GetType(camera) == kQ3CameraTypeOrthographic &&
+                 Q3OrthographicCamera_GetData(camera, &v->ortho) == kQ3Success;
+    return 1;
 }
 
 /* The first camera: the file's placement and range, or q3render's fitted
@@ -388,6 +421,8 @@ static void setTitle(Viewer *v)
     snprintf(title, sizeof title, "q3view: %s%s%s", v->path, strcmp(v->picked, "nothing") != 0 ? " - " : "",
              strcmp(v->picked, "nothing") != 0 ? v->picked : "");
     XStoreName(v->display, v->window, title);
+    /* The server has the title before anything is printed about it. */
+    XSync(v->display, False);
 }
 
 /* One colour channel of a TrueColor pixel, as 0..255. */
@@ -540,8 +575,8 @@ static int run(Viewer *v, const char *script)
                 hoverX = -1;
                 if (strcmp(name, v->picked) != 0) {
                     strcpy(v->picked, name);
-                    printf("pick %s\n", name);
                     setTitle(v);
+                    printf("pick %s\n", name);
                 }
                 continue;
             }
@@ -556,16 +591,12 @@ static int run(Viewer *v, const char *script)
         case ConfigureNotify:
             if ((unsigned long)event.xconfigure.width != v->width ||
                 (unsigned long)event.xconfigure.height != v->height) {
-                TQ3CameraObject camera;
                 v->width = (unsigned long)event.xconfigure.width;
                 v->height = (unsigned long)event.xconfigure.height;
-                camera = newCamera(v);
-                if (camera == NULL || Q3View_SetCamera(v->view, camera) != kQ3Success) {
+                if (!useNewCamera(v)) {
                     fprintf(stderr, "cannot follow the window's size: %s\n", Q3Error_GetMessage());
                     return kExitCannotDraw;
                 }
-                Q3Object_Dispose(v->camera);
-                v->camera = camera;
                 v->dirty = 1;
                 printf("size %lux%lu\n", v->width, v->height);
             }
@@ -788,9 +819,7 @@ int main(int argc, char **argv)
         status = kExitCannotDraw;
     } else {
         findHome(&v);
-        v.camera = newCamera(&v);
-        if (v.camera == NULL || Q3View_SetCamera(v.view, v.camera) != kQ3Success ||
-            Q3View_SetRendererByType(v.view, v.renderer) != kQ3Success ||
+        if (!useNewCamera(&v) || Q3View_SetRendererByType(v.view, v.renderer) != kQ3Success ||
             Q3View_SetLightGroup(v.view, v.lights) != kQ3Success) {
             fprintf(stderr, "cannot draw %s: %s\n", in, Q3Error_GetMessage());
             status = kExitCannotDraw;

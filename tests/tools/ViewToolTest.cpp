@@ -69,9 +69,12 @@ int run(const std::string& command, std::string* errors = nullptr, std::string* 
 // units down the z axis with a field of view of 0.6 radians.
 constexpr float kEyeDistance = 4.0f;
 constexpr float kFieldOfView = 0.6f;
-const char* const kCube = R"(3DMetafile ( 1 6 Normal )
-Container (
-  ViewAngleAspectCamera ( 0.6 1 )
+const char* const kPerspectiveCamera = "ViewAngleAspectCamera ( 0.6 1 )";
+// 4 x 3 world units in view: 80 pixels a unit in a 320 x 240 window.
+const char* const kOrthographicCamera = "OrthographicCamera ( -2 1.5 2 -1.5 )";
+std::string cube(const char* camera)
+{
+    return std::string("3DMetafile ( 1 6 Normal )\nContainer (\n  ") + camera + R"(
   CameraPlacement ( 0 0 4  0 0 0  0 1 0 )
   CameraRange ( 1 10 )
   CameraViewPort ( -1 1 2 2 )
@@ -97,6 +100,7 @@ Container (
   Container ( AttributeSet ( ) DiffuseColor ( 0 1 1 ) )
 )
 )";
+}
 
 struct Rgb {
     int r, g, b;
@@ -212,6 +216,14 @@ public:
             move(x0 + (x1 - x0) * i / steps, y0 + (y1 - y0) * i / steps);
         button(number, false);
     }
+    /// Holds a modifier key down (press) or lets it go.
+    void modifier(KeySym symbol, unsigned mask, bool press)
+    {
+        if (usesXTest())
+            m_key(m_display, XKeysymToKeycode(m_display, symbol), press ? True : False, 0);
+        m_modifiers = press ? m_modifiers | mask : m_modifiers & ~mask;
+        XSync(m_display, False);
+    }
     void key(KeySym symbol)
     {
         const KeyCode code = XKeysymToKeycode(m_display, symbol);
@@ -243,7 +255,7 @@ private:
         event.xkey.root = DefaultRootWindow(m_display);
         event.xkey.x = event.xkey.x_root = m_x;
         event.xkey.y = event.xkey.y_root = m_y;
-        event.xkey.state = m_buttons;
+        event.xkey.state = m_buttons | m_modifiers;
         event.xkey.same_screen = True;
         return event;
     }
@@ -256,6 +268,7 @@ private:
     KeyFn m_key = nullptr;
     int m_x = 0, m_y = 0;
     unsigned m_buttons = 0;
+    unsigned m_modifiers = 0;
 };
 
 // q3view running on a display, its standard output read line by line.
@@ -387,7 +400,7 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
         GTEST_SKIP() << server.why();
     Display* display = server.display();
     const std::string model = scratch("cube.3dmf");
-    std::ofstream(model) << kCube;
+    std::ofstream(model) << cube(kPerspectiveCamera);
     const std::string prefix = scratch("shot");
     Viewer viewer(DisplayString(display), {model, "--size", "320x240", "--save", prefix});
 
@@ -401,6 +414,10 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     // Picking: the front face at the centre, nothing in the corner.
     input.move(160, 120);
     EXPECT_EQ(viewer.waitFor("pick "), "pick Polygon") << viewer.log();
+    char* title = nullptr;
+    ASSERT_TRUE(XFetchName(display, window, &title));
+    EXPECT_EQ(std::string(title), "q3view: " + model + " - Polygon");
+    XFree(title);
     input.move(3, 3);
     EXPECT_EQ(viewer.waitFor("pick "), "pick nothing") << viewer.log();
 
@@ -482,6 +499,23 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     redRun(panned, 120, &after);
     EXPECT_NEAR(after - before, 48.0 * kEyeDistance / (kEyeDistance - 0.5), 1.0);
     EXPECT_NEAR(redRun(panned, 120), side, 1.5);
+    // The middle button, and the left one with Shift, move it the same.
+    input.key(XK_r);
+    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
+    input.drag(2, 100, 120, 148, 120);
+    input.key(XK_s);
+    q3test::RgbaImage middle;
+    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &middle));
+    EXPECT_EQ(q3test::countDifferingPixels(panned, middle), 0);
+    input.key(XK_r);
+    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
+    input.modifier(XK_Shift_L, ShiftMask, true);
+    input.drag(1, 100, 120, 148, 120);
+    input.modifier(XK_Shift_L, ShiftMask, false);
+    input.key(XK_s);
+    q3test::RgbaImage shifted;
+    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &shifted));
+    EXPECT_EQ(q3test::countDifferingPixels(panned, shifted), 0);
     input.key(XK_r);
     ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
 
@@ -504,6 +538,20 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &edges));
     EXPECT_TRUE(isBackground(pixel(edges, 160, 120)));
     EXPECT_GT(redPixels(edges), 0);
+    // Points: the vertices alone.
+    input.key(XK_p);
+    ASSERT_EQ(viewer.waitFor("fill"), "fill points");
+    input.key(XK_s);
+    q3test::RgbaImage points;
+    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &points));
+    EXPECT_TRUE(isBackground(pixel(points, 160, 120)));
+    EXPECT_EQ(redRun(points, 120), 0);
+    long drawn = 0;
+    for (int y = 0; y < points.height; ++y)
+        for (int x = 0; x < points.width; ++x)
+            drawn += isBackground(pixel(points, x, y)) ? 0 : 1;
+    EXPECT_GE(drawn, 4);
+    EXPECT_LT(drawn, 100);
     input.key(XK_f);
     ASSERT_EQ(viewer.waitFor("fill"), "fill filled");
     // Lights on again: shaded, so the picture changes.
@@ -539,8 +587,80 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     EXPECT_EQ(viewer.exitStatus(), 0);
     EXPECT_EQ(viewer.errors(), "");
     std::remove(model.c_str());
-    for (int n = 1; n <= 13; ++n)
+    for (int n = 1; n <= 16; ++n)
         std::remove((prefix + "-" + std::to_string(n) + ".png").c_str());
+}
+
+TEST(Q3View, TheWheelScalesAnOrthographicCamerasRectangle)
+{
+    q3test::XvfbServer server;
+    if (server.display() == nullptr)
+        GTEST_SKIP() << server.why();
+    Display* display = server.display();
+    const std::string model = scratch("ortho_cube.3dmf");
+    std::ofstream(model) << cube(kOrthographicCamera);
+    const std::string prefix = scratch("ortho");
+    Viewer viewer(DisplayString(display), {model, "--size", "320x240", "--save", prefix, "--script", "l s"});
+    const std::string shown = viewer.waitFor("window ");
+    ASSERT_NE(shown, "") << viewer.errors();
+    const Window window = Window(std::strtoul(shown.c_str() + 7, nullptr, 16));
+    Input input(display, window);
+    q3test::RgbaImage first, zoomed, panned;
+    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &first));
+    // 80 pixels a unit: the front face is 80 pixels square.
+    EXPECT_NEAR(redRun(first, 120), 80.0, 1.0);
+    EXPECT_NEAR(redColumn(first, 160), 80.0, 1.0);
+    // A wheel step shows 0.9 times the rectangle: 80 / 0.9 pixels a unit.
+    input.move(160, 120);
+    input.button(Button4, true);
+    input.button(Button4, false);
+    input.key(XK_s);
+    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &zoomed));
+    EXPECT_NEAR(redRun(zoomed, 120), 80.0 / 0.9, 1.0);
+    EXPECT_NEAR(redColumn(zoomed, 160), 80.0 / 0.9, 1.0);
+    // Moving it: every depth moves as far as the mouse.
+    input.key(XK_r);
+    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
+    input.drag(3, 100, 120, 148, 100);
+    input.key(XK_s);
+    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &panned));
+    int before = 0, after = 0;
+    redRun(first, 120, &before);
+    redRun(panned, 100, &after);
+    EXPECT_NEAR(after - before, 48, 1);
+    EXPECT_NEAR(redColumn(panned, 160 + 48) - redColumn(first, 160), 0, 1);
+    input.key(XK_q);
+    EXPECT_EQ(viewer.exitStatus(), 0);
+    EXPECT_EQ(viewer.errors(), "");
+    std::remove(model.c_str());
+    for (int n = 1; n <= 3; ++n)
+        std::remove((prefix + "-" + std::to_string(n) + ".png").c_str());
+}
+
+TEST(Q3View, TheFilesCameraIsUsedUnlessFitCameraIsAsked)
+{
+    q3test::XvfbServer server;
+    if (server.display() == nullptr)
+        GTEST_SKIP() << server.why();
+    // camera_scene.3dmf: a red square at the origin, a green one at x = 10,
+    // and a camera close in front of the green one. Its camera shows the
+    // green square in the middle; a fitted camera looks at the middle of
+    // both, x = 5, where there is nothing.
+    const std::string prefix = scratch("camera");
+    const std::string command = std::string("DISPLAY=") + DisplayString(server.display()) + " " + Q3_VIEW_TOOL +
+                                " " + Q3_TEST_DATA_DIR + "/camera_scene.3dmf --size 160x120 --script 'l s q' --save ";
+    std::string errors;
+    ASSERT_EQ(run(command + prefix + "_file", &errors), 0) << errors;
+    ASSERT_EQ(run(command + prefix + "_fit --fit-camera", &errors), 0) << errors;
+    q3test::RgbaImage file, fit;
+    ASSERT_TRUE(q3test::readPng(prefix + "_file-1.png", &file));
+    ASSERT_TRUE(q3test::readPng(prefix + "_fit-1.png", &fit));
+    EXPECT_TRUE(is(pixel(file, 80, 60), 0, 255, 0));
+    EXPECT_TRUE(isBackground(pixel(fit, 80, 60)));
+    EXPECT_EQ(redRun(file, 60), 0);
+    EXPECT_GT(redRun(fit, 60), 0);
+    std::remove((prefix + "_file-1.png").c_str());
+    std::remove((prefix + "_fit-1.png").c_str());
 }
 
 TEST(Q3View, AScriptDrawsSavesAndQuitsWithNoOneAtTheKeyboard)
