@@ -43,8 +43,9 @@
  * "pick NAME" ("pick nothing") when what is under the cursor changes.
  *
  * Exit status: 0 done, 1 bad arguments, 2 the model cannot be read, 3 no X
- * display can be opened (or it has no visual Q3 can draw with), 4 the model
- * cannot be drawn or a picture cannot be saved. */
+ * display can be opened (or it has no visual Q3 can draw with, or the
+ * connection is lost), 4 the model cannot be drawn, an X request fails or
+ * a picture cannot be saved. */
 
 #define _POSIX_C_SOURCE 200809L
 
@@ -106,7 +107,8 @@ static void printUsage(FILE *to)
                 "l lights on/off, r reset the camera, s save the picture as PNG, q or Escape quit.\n"
                 "\n"
                 "Exit status: 0 done, 1 bad arguments, 2 the model cannot be read, 3 no X display\n"
-                "can be opened (DISPLAY), 4 the model cannot be drawn or a picture not saved.\n");
+                "can be opened (DISPLAY) or the connection is lost, 4 the model cannot be drawn,\n"
+                "an X request fails or a picture cannot be saved.\n");
 }
 
 static int usage(void)
@@ -521,8 +523,10 @@ static int key(Viewer *v, KeySym symbol)
         break;
     case XK_s:
         /* What the keys before asked for is drawn before it is saved. */
-        if (v->dirty && !draw(v))
+        if (v->dirty && !draw(v)) {
+            fprintf(stderr, "cannot draw %s: %s\n", v->path, Q3Error_GetMessage());
             return -1;
+        }
         return save(v) ? 1 : -1;
     case XK_q:
     case XK_Escape:
@@ -532,6 +536,23 @@ static int key(Viewer *v, KeySym symbol)
     }
     v->dirty = 1;
     return 1;
+}
+
+/* Xlib's default handlers end the process with status 1, which here means
+ * bad arguments: a lost connection ends it with the no-display status, an
+ * X error with the cannot-draw one, each with a message. */
+static int lostDisplay(Display *display)
+{
+    fprintf(stderr, "the connection to the X display %s was lost\n", DisplayString(display));
+    exit(kExitNoDisplay);
+}
+
+static int xError(Display *display, XErrorEvent *error)
+{
+    char text[256];
+    XGetErrorText(display, error->error_code, text, sizeof text);
+    fprintf(stderr, "X error %d (%s), request %d\n", (int)error->error_code, text, (int)error->request_code);
+    exit(kExitCannotDraw);
 }
 
 static KeySym scriptKey(char c)
@@ -563,8 +584,10 @@ static int run(Viewer *v, const char *script)
                         result = key(v, scriptKey(*script));
                         if (result <= 0)
                             return result == 0 ? kExitDone : kExitCannotDraw;
-                        if (v->dirty && !draw(v))
+                        if (v->dirty && !draw(v)) {
+                            fprintf(stderr, "cannot draw %s: %s\n", v->path, Q3Error_GetMessage());
                             return kExitCannotDraw;
+                        }
                     }
                 }
                 continue;
@@ -759,6 +782,8 @@ int main(int argc, char **argv)
         status = kExitNoDisplay;
         goto done;
     }
+    XSetIOErrorHandler(lostDisplay);
+    XSetErrorHandler(xError);
     visualInfo = Q3X_GetVisualInfo(v.display, DefaultScreenOfDisplay(v.display));
     if (visualInfo == NULL) {
         fprintf(stderr, "the X display has no visual Q3 can draw with: %s\n", Q3Error_GetMessage());

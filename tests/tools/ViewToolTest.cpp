@@ -663,6 +663,22 @@ TEST(Q3View, TheFilesCameraIsUsedUnlessFitCameraIsAsked)
     std::remove((prefix + "_fit-1.png").c_str());
 }
 
+TEST(Q3View, ALostConnectionIsExitStatusThreeWithAMessage)
+{
+    q3test::XvfbServer server;
+    if (server.display() == nullptr)
+        GTEST_SKIP() << server.why();
+    Display* display = server.display();
+    Viewer viewer(DisplayString(display), {std::string(Q3_TEST_DATA_DIR) + "/scene.3dmf", "--size", "64x48"});
+    const std::string shown = viewer.waitFor("window ");
+    ASSERT_NE(shown, "") << viewer.errors();
+    // The server closes q3view's connection, as when the display goes away.
+    XKillClient(display, Window(std::strtoul(shown.c_str() + 7, nullptr, 16)));
+    XSync(display, False);
+    EXPECT_EQ(viewer.exitStatus(), 3);
+    EXPECT_NE(viewer.errors().find("the connection to the X display"), std::string::npos) << viewer.errors();
+}
+
 TEST(Q3View, AScriptDrawsSavesAndQuitsWithNoOneAtTheKeyboard)
 {
     q3test::XvfbServer server;
