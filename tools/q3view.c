@@ -197,8 +197,9 @@ typedef struct Viewer {
     TQ3ObjectType renderer;
     TQ3FillStyle fill;
     int lightsOn;
-    /* The first camera: where it stands and looks, the centre it turns
-     * about, its range, and the fitted camera's radius. */
+    /* The first camera: where it stands and looks, its range, and the
+     * centre the model turns about; the fitted camera's field of view,
+     * which also sizes a pan under a view plane camera (an estimate). */
     TQ3CameraPlacement home;
     TQ3CameraRange homeRange;
     TQ3Point3D centre;
