@@ -420,8 +420,9 @@ static void pickAt(Viewer *v, int x, int y, char name[kQ3StringMaximumLength])
 
 static void setTitle(Viewer *v)
 {
-    char title[1024];
-    snprintf(title, sizeof title, "q3view: %s%s%s", v->path, strcmp(v->picked, "nothing") != 0 ? " - " : "",
+    /* Room for the prefix, 2048 bytes of the path and a type name. */
+    char title[9 + 2048 + 3 + kQ3StringMaximumLength];
+    snprintf(title, sizeof title, "q3view: %.2048s%s%s", v->path, strcmp(v->picked, "nothing") != 0 ? " - " : "",
              strcmp(v->picked, "nothing") != 0 ? v->picked : "");
     XStoreName(v->display, v->window, title);
     /* The server has the title before anything is printed about it. */
