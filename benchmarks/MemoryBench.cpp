@@ -213,7 +213,7 @@ void Q3_RetainedCurve(benchmark::State& state, int which)
         return;
     }
 
-    const q3::NURBCurve& first = q3::lookup<q3::NURBCurve>(curves.front(), "curve");
+    const q3::NURBCurve& counted = q3::lookup<q3::NURBCurve>(curves.front(), "curve");
 
     const double k = double(count);
     const double dataBytes = double(curve.numPoints() * sizeof(TQ3RationalPoint4D) + curve.knots.size() * sizeof(float));
@@ -229,7 +229,7 @@ void Q3_RetainedCurve(benchmark::State& state, int which)
     state.counters["held_over_data"] = (createdBytes + cacheBytes) / dataBytes;
     state.counters["view_scratch_bytes"] =
         double(q3::lookup<q3::View>(view.view(), "view").curveScratchBytes());
-    state.counters["evaluations_per_frame"] = double(first.tessellations()) / 2.0;
+    state.counters["evaluations_per_frame"] = double(counted.tessellations()) / 2.0;
 
     const TQ3NURBCurveData data = q3bench::curveData(curve);
     for (auto _ : state) {
