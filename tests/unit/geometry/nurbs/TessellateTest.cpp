@@ -757,3 +757,77 @@ TEST(NurbsTessellate, MaxSegmentsFromTheViewBoundsTheAdaptiveCount)
 
 } // namespace
 } // namespace q3::nurbs
+
+namespace q3::nurbs {
+namespace {
+
+// A constant count as the tessellators use it: truncated, then 1 to
+// kMaxSegmentsPerSpan, NaN and -infinity as 1.
+TEST(NurbsTessellate, ClampedSegmentsTruncatesAndBounds)
+{
+    EXPECT_EQ(clampedSegments(0.0), 1u);
+    EXPECT_EQ(clampedSegments(-3.0), 1u);
+    EXPECT_EQ(clampedSegments(std::nan("")), 1u);
+    EXPECT_EQ(clampedSegments(-kInf), 1u);
+    EXPECT_EQ(clampedSegments(1.0), 1u);
+    EXPECT_EQ(clampedSegments(2.99), 2u);
+    EXPECT_EQ(clampedSegments(double(kMaxSegmentsPerSpan)), kMaxSegmentsPerSpan);
+    EXPECT_EQ(clampedSegments(double(kMaxSegmentsPerSpan) + 0.5), kMaxSegmentsPerSpan);
+    EXPECT_EQ(clampedSegments(kInf), kMaxSegmentsPerSpan);
+}
+
+// cullHiddenSpans with a clip matrix: a span is hidden exactly when all its
+// Bezier control points lie outside one of the planes x = +-w, y = +-w or
+// z = 0 (z > 0 outside) after the matrix, as computed here from the form.
+TEST(NurbsTessellate, ClipCullsSpansWhoseControlPointsAreAllOutsideOnePlane)
+{
+    std::mt19937 rng(30);
+    std::size_t culled = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const TestCurve curve = test::randomCurve(rng, 2 + trial % 7, {});
+        const BezierForm form(curve.ref());
+        // Scale so that the view volume (|x|, |y| <= w) holds part of the curve,
+        // and push z behind the hither plane except for some trials.
+        const double k = 1.0 / (0.5 * test::curveScale(curve));
+        TessellationOptions options;
+        options.c1 = 6;
+        options.hasClip = true;
+        options.cullHiddenSpans = true;
+        options.clip = {k, 0, 0, 0.3, 0, k, 0, -0.2, 0, 0, trial % 3 == 0 ? 1.0 : 0.0, -1.0, 0, 0, 0, 1};
+        std::size_t expected = 0;
+        for (std::size_t s = 0; s < form.spanCount(); ++s) {
+            unsigned outside[5] = {0, 0, 0, 0, 0};
+            for (unsigned i = 0; i < form.order(); ++i) {
+                const Point4& p = form.spanPoints(s)[i];
+                const double x = k * p.x + 0.3 * p.w, y = k * p.y - 0.2 * p.w;
+                const double z = (trial % 3 == 0 ? p.z : 0.0) - p.w, w = p.w;
+                outside[0] += x > w;
+                outside[1] += -x > w;
+                outside[2] += y > w;
+                outside[3] += -y > w;
+                outside[4] += z > 0.0;
+            }
+            bool hidden = false;
+            for (unsigned count : outside)
+                hidden = hidden || count == form.order();
+            expected += hidden ? 1 : 0;
+        }
+        culled += expected;
+        TessellatedCurve fromCurve, fromForm;
+        tessellate(curve.ref(), options, fromCurve);
+        tessellate(form, options, fromForm);
+        EXPECT_EQ(fromCurve.hiddenSpans, expected) << "trial " << trial;
+        EXPECT_EQ(fromForm.hiddenSpans, expected);
+        const std::size_t spans = form.spanCount();
+        EXPECT_EQ(fromCurve.vertexCount(), 6 * (spans - expected) + expected + 1);
+        expectPolylineInvariants(curve, fromCurve);
+        // Without hasClip nothing is culled.
+        options.hasClip = false;
+        tessellate(curve.ref(), options, fromCurve);
+        EXPECT_EQ(fromCurve.hiddenSpans, 0u);
+    }
+    EXPECT_GT(culled, 0u); // the trials do cull
+}
+
+} // namespace
+} // namespace q3::nurbs
