@@ -160,6 +160,51 @@ TEST_F(GLDrawContextTest, FrameGoesIntoTheApplicationsFramebufferObject)
     glDeleteRenderbuffers(1, &colour);
 }
 
+TEST_F(GLDrawContextTest, OpenGLESContextGetsThePixmapsPicture)
+{
+    const EGLint wanted[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT,
+                             EGL_RED_SIZE,     8,               EGL_GREEN_SIZE,      8,
+                             EGL_BLUE_SIZE,    8,               EGL_ALPHA_SIZE,      8,
+                             EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint matched = 0;
+    if (!eglChooseConfig(m_app.display, wanted, &config, 1, &matched) || matched == 0)
+        GTEST_SKIP() << "no OpenGL ES 3 pbuffer config";
+    eglBindAPI(EGL_OPENGL_ES_API);
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_NONE};
+    EGLContext es = eglCreateContext(m_app.display, config, EGL_NO_CONTEXT, attributes);
+    const EGLint size[] = {EGL_WIDTH, kWidth, EGL_HEIGHT, kHeight, EGL_NONE};
+    EGLSurface surface = eglCreatePbufferSurface(m_app.display, config, size);
+    ASSERT_NE(es, EGL_NO_CONTEXT);
+    ASSERT_NE(surface, EGL_NO_SURFACE);
+    ASSERT_TRUE(eglMakeCurrent(m_app.display, surface, surface, es));
+
+    glClearColor(0x33 / 255.0f, 0x66 / 255.0f, 0xCC / 255.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(3, 4, 5, 6);
+    const GLint scissorBefore = GlState::integer(GL_SCISSOR_TEST);
+    const TQ3GLDrawContextData data = glData();
+    TQ3DrawContextObject context = Q3GLDrawContext_New(&data);
+    EXPECT_EQ(render(context), kQ3ViewStatusDone);
+    Q3Object_Dispose(context);
+    EXPECT_EQ(eglGetCurrentContext(), es);
+    EXPECT_EQ(eglQueryAPI(), EGLenum(EGL_OPENGL_ES_API));
+    EXPECT_EQ(GlState::integer(GL_SCISSOR_TEST), scissorBefore);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    // The overlay, as a scissored clear.
+    glScissor(kOverlayX0, kHeight - kOverlayY1, kOverlayX1 - kOverlayX0, kOverlayY1 - kOverlayY0);
+    glClearColor(1.0f, 0xCC / 255.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    expectPicture(readFramebuffer(kWidth, kHeight), pixmapPicture(kQ3ClearMethodWithColor));
+
+    eglMakeCurrent(m_app.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroySurface(m_app.display, surface);
+    eglDestroyContext(m_app.display, es);
+    eglBindAPI(EGL_OPENGL_API);
+}
+
 TEST_F(GLDrawContextTest, NoCurrentContextIsAnError)
 {
     eglMakeCurrent(m_app.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
