@@ -29,12 +29,26 @@ XvfbServer* server()
     return instance.get();
 }
 
+// The application's own connection to the server, opened once and never
+// closed, as an application keeps its display open while its window lives.
+// Closing the last GLX connection makes Mesa unload its DRI driver before
+// LeakSanitizer looks at exit, and memory that only the driver's globals
+// still pointed to then shows as leaked from an unknown module (measured:
+// 240 bytes in 3 blocks with the OSMesa backend; with the driver kept
+// loaded, by this connection or by the EGL backend's libEGL, none).
+Display* applicationDisplay()
+{
+    static Display* display =
+        server()->display() != nullptr ? XOpenDisplay(XDisplayString(server()->display())) : nullptr;
+    return display;
+}
+
 class GlxDrawContextTest : public AppGlTest {
 protected:
     void SetUp() override
     {
         AppGlTest::SetUp();
-        m_display = server()->display();
+        m_display = applicationDisplay();
         if (m_display == nullptr)
             GTEST_SKIP() << "no X server for the GLX test: " << server()->why();
         const std::string why = createWindowAndContext();
