@@ -53,6 +53,10 @@
 #include "render/DynamicLibrary.h"
 #include "render/GlApi.h"
 
+#include <link.h>
+
+#include <atomic>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -88,10 +92,14 @@ struct GlxCalls {
 };
 
 /// A window-system library the application has loaded, with the GL table
-/// its loader resolves. Invariant once `ready`: every call and gl is bound.
+/// its loader resolves. Invariant once `ready`: every call and gl is bound,
+/// and stay so.
 template <class Calls>
 struct Loader {
-    bool ready = false;
+    std::atomic<bool> ready{false};
+    /// The process's load count (loadCount) when the library was last
+    /// looked for in vain.
+    unsigned long long missingAt = ~0ull;
     Calls calls;
     GlApi gl;
 };
@@ -113,57 +121,87 @@ std::mutex& loaderMutex()
     return mutex;
 }
 
-// Bound once the application has loaded libEGL; until then asked again at
-// every call (the application may load it later).
+// How many shared objects the process has loaded so far (glibc's
+// dlpi_adds, read from the first object only). A dlopen with RTLD_NOLOAD
+// that finds nothing still searches the library path (9 system calls, 23
+// microseconds measured), and the backends ask at every context switch;
+// so a library found missing is looked for again only once the process has
+// loaded something since.
+unsigned long long loadCount()
+{
+    unsigned long long adds = 0;
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, std::size_t size, void* out) {
+            if (size >= offsetof(dl_phdr_info, dlpi_adds) + sizeof info->dlpi_adds)
+                *static_cast<unsigned long long*>(out) = info->dlpi_adds;
+            return 1;
+        },
+        &adds);
+    return adds;
+}
+
+// Looks for the library with `find` (true: bound) unless it was found, or
+// found missing with nothing loaded since.
+template <class Calls, class Find>
+const Loader<Calls>* loaderOf(Loader<Calls>& loader, Find find)
+{
+    if (loader.ready.load(std::memory_order_acquire))
+        return &loader;
+    std::lock_guard<std::mutex> lock(loaderMutex());
+    if (loader.ready.load(std::memory_order_relaxed))
+        return &loader;
+    const unsigned long long adds = loadCount();
+    if (adds == loader.missingAt || !find(loader)) {
+        loader.missingAt = adds;
+        return nullptr;
+    }
+    loader.ready.store(true, std::memory_order_release);
+    return &loader;
+}
+
+// Bound once the application has loaded libEGL (it may do so late).
 const Loader<EglCalls>* eglLoader()
 {
     static Loader<EglCalls> loader;
-    std::lock_guard<std::mutex> lock(loaderMutex());
-    if (loader.ready)
-        return &loader;
-    DynamicLibrary file("libEGL.so.1", true);
-    EglCalls& c = loader.calls;
-    file.bind(c.GetProcAddress, "eglGetProcAddress");
-    file.bind(c.GetCurrentContext, "eglGetCurrentContext");
-    file.bind(c.GetCurrentDisplay, "eglGetCurrentDisplay");
-    file.bind(c.GetCurrentSurface, "eglGetCurrentSurface");
-    file.bind(c.MakeCurrent, "eglMakeCurrent");
-    file.bind(c.QueryAPI, "eglQueryAPI");
-    file.bind(c.BindAPI, "eglBindAPI");
-    const char* missing = nullptr;
-    if (!file.ok() || !loader.gl.load(eglProc, &c, missing))
-        return nullptr;
-    loader.ready = true;
-    return &loader;
+    return loaderOf(loader, [](Loader<EglCalls>& l) {
+        DynamicLibrary file("libEGL.so.1", true);
+        EglCalls& c = l.calls;
+        file.bind(c.GetProcAddress, "eglGetProcAddress");
+        file.bind(c.GetCurrentContext, "eglGetCurrentContext");
+        file.bind(c.GetCurrentDisplay, "eglGetCurrentDisplay");
+        file.bind(c.GetCurrentSurface, "eglGetCurrentSurface");
+        file.bind(c.MakeCurrent, "eglMakeCurrent");
+        file.bind(c.QueryAPI, "eglQueryAPI");
+        file.bind(c.BindAPI, "eglBindAPI");
+        const char* missing = nullptr;
+        return file.ok() && l.gl.load(eglProc, &c, missing);
+    });
 }
 
 const Loader<GlxCalls>* glxLoader()
 {
     static Loader<GlxCalls> loader;
-    std::lock_guard<std::mutex> lock(loaderMutex());
-    if (loader.ready)
-        return &loader;
-    // GLVND's libGLX.so.0, which its libGL.so.1 loads; else a libGL.so.1
-    // of its own.
-    for (const char* name : {"libGLX.so.0", "libGL.so.1"}) {
-        DynamicLibrary file(name, true);
-        GlxCalls& c = loader.calls;
-        file.bind(c.GetProcAddressARB, "glXGetProcAddressARB");
-        file.bind(c.GetCurrentContext, "glXGetCurrentContext");
-        file.bind(c.GetCurrentDisplay, "glXGetCurrentDisplay");
-        file.bind(c.GetCurrentDrawable, "glXGetCurrentDrawable");
-        file.bind(c.GetCurrentReadDrawable, "glXGetCurrentReadDrawable");
-        file.bind(c.MakeContextCurrent, "glXMakeContextCurrent");
-        const char* missing = nullptr;
-        if (file.ok() && loader.gl.load(glxProc, &c, missing)) {
-            loader.ready = true;
-            return &loader;
+    return loaderOf(loader, [](Loader<GlxCalls>& l) {
+        // GLVND's libGLX.so.0, which its libGL.so.1 loads; else a libGL.so.1
+        // of its own.
+        for (const char* name : {"libGLX.so.0", "libGL.so.1"}) {
+            DynamicLibrary file(name, true);
+            GlxCalls& c = l.calls;
+            file.bind(c.GetProcAddressARB, "glXGetProcAddressARB");
+            file.bind(c.GetCurrentContext, "glXGetCurrentContext");
+            file.bind(c.GetCurrentDisplay, "glXGetCurrentDisplay");
+            file.bind(c.GetCurrentDrawable, "glXGetCurrentDrawable");
+            file.bind(c.GetCurrentReadDrawable, "glXGetCurrentReadDrawable");
+            file.bind(c.MakeContextCurrent, "glXMakeContextCurrent");
+            const char* missing = nullptr;
+            if (file.ok() && l.gl.load(glxProc, &c, missing))
+                return true;
         }
-    }
-    return nullptr;
+        return false;
+    });
 }
 
-/// The thread's current context, made current again, with its GL table.
+/// The thread's current context's GL table.
 struct CurrentContext {
     const GlApi* gl = nullptr;
     bool es = false;
