@@ -34,6 +34,7 @@
     X(AttachShader) \
     X(Begin) \
     X(BindAttribLocation) \
+    X(BindBuffer) \
     X(BindFramebuffer) \
     X(BindRenderbuffer) \
     X(BindTexture) \
@@ -51,6 +52,7 @@
     X(CreateProgram) \
     X(CreateShader) \
     X(CullFace) \
+    X(DeleteFramebuffers) \
     X(DeleteProgram) \
     X(DeleteShader) \
     X(DeleteTextures) \
@@ -67,6 +69,7 @@
     X(End) \
     X(Finish) \
     X(FramebufferRenderbuffer) \
+    X(FramebufferTexture2D) \
     X(FrontFace) \
     X(GenFramebuffers) \
     X(GenRenderbuffers) \
@@ -91,6 +94,7 @@
     X(PixelStorei) \
     X(PointSize) \
     X(PolygonMode) \
+    X(ReadBuffer) \
     X(ReadPixels) \
     X(RenderbufferStorageMultisample) \
     X(Scissor) \
