@@ -34,11 +34,13 @@
     X(AttachShader) \
     X(Begin) \
     X(BindAttribLocation) \
+    X(BindBuffer) \
     X(BindFramebuffer) \
     X(BindRenderbuffer) \
     X(BindTexture) \
     X(BlendFuncSeparate) \
     X(BlitFramebuffer) \
+    X(BufferData) \
     X(CheckFramebufferStatus) \
     X(Clear) \
     X(ClearColor) \
@@ -51,6 +53,7 @@
     X(CreateProgram) \
     X(CreateShader) \
     X(CullFace) \
+    X(DeleteBuffers) \
     X(DeleteProgram) \
     X(DeleteShader) \
     X(DeleteTextures) \
@@ -68,6 +71,7 @@
     X(Finish) \
     X(FramebufferRenderbuffer) \
     X(FrontFace) \
+    X(GenBuffers) \
     X(GenFramebuffers) \
     X(GenRenderbuffers) \
     X(GenTextures) \
