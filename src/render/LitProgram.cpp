@@ -31,10 +31,12 @@ namespace q3 {
 
 namespace {
 
-// The first source string: the version, then (for the textured variant) the
-// TEXTURED switch, both before anything else as GLSL requires.
+// The first source strings: the version, then the variant's switches
+// (LitProgram::variant: TEXTURED, PER_PIXEL), both before anything else as
+// GLSL requires.
 constexpr const char* kVersion = "#version 120\n";
-constexpr const char* kTexturedSwitch = "#define TEXTURED 1\n";
+constexpr const char* kSwitches[LitProgram::kVariants] = {"", "#define TEXTURED 1\n", "#define PER_PIXEL 1\n",
+                                                          "#define TEXTURED 1\n#define PER_PIXEL 1\n"};
 
 constexpr const char* kShade = R"(
 #define MAX_LIGHTS 32
@@ -57,7 +59,6 @@ uniform vec3 specularColor;
 uniform float specularControl;
 uniform mat4 localToWorld;
 uniform mat3 normalToWorld;
-uniform int perPixel;
 uniform int flipBack;
 varying vec3 worldPosition;
 varying vec3 worldNormal;
@@ -129,32 +130,32 @@ void main()
     // multiplied by the texel; the specular light (shade with Od = 0) in the
     // secondary colour, added after.
     gl_TexCoord[0] = gl_MultiTexCoord0;
-    if (perPixel == 1) {
-        gl_FrontColor = gl_Color;
-        gl_BackColor = gl_Color;
-    } else {
-        vec3 n = normalize(worldNormal);
-        vec3 specular = shade(worldPosition, n, vec3(0.0));
-        gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb) - specular, 1.0);
-        gl_FrontSecondaryColor = vec4(specular, 1.0);
-        if (flipBack == 1) {
-            vec3 backSpecular = shade(worldPosition, -n, vec3(0.0));
-            gl_BackColor = vec4(shade(worldPosition, -n, gl_Color.rgb) - backSpecular, 1.0);
-            gl_BackSecondaryColor = vec4(backSpecular, 1.0);
-        } else {
-            gl_BackColor = gl_FrontColor;
-            gl_BackSecondaryColor = gl_FrontSecondaryColor;
-        }
-    }
+#ifdef PER_PIXEL
+    gl_FrontColor = gl_Color;
+    gl_BackColor = gl_Color;
 #else
-    if (perPixel == 1) {
-        gl_FrontColor = gl_Color;
-        gl_BackColor = gl_Color;
+    vec3 n = normalize(worldNormal);
+    vec3 specular = shade(worldPosition, n, vec3(0.0));
+    gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb) - specular, 1.0);
+    gl_FrontSecondaryColor = vec4(specular, 1.0);
+    if (flipBack == 1) {
+        vec3 backSpecular = shade(worldPosition, -n, vec3(0.0));
+        gl_BackColor = vec4(shade(worldPosition, -n, gl_Color.rgb) - backSpecular, 1.0);
+        gl_BackSecondaryColor = vec4(backSpecular, 1.0);
     } else {
-        vec3 n = normalize(worldNormal);
-        gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
-        gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
+        gl_BackColor = gl_FrontColor;
+        gl_BackSecondaryColor = gl_FrontSecondaryColor;
     }
+#endif
+#else
+#ifdef PER_PIXEL
+    gl_FrontColor = gl_Color;
+    gl_BackColor = gl_Color;
+#else
+    vec3 n = normalize(worldNormal);
+    gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+    gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
+#endif
 #endif
     q3FinishVertex();
 }
@@ -165,33 +166,33 @@ void main()
 {
 #ifdef TEXTURED
     vec3 texel = texture2D(surfaceTexture, gl_TexCoord[0].st).rgb;
-    if (perPixel == 1) {
-        vec3 n = normalize(worldNormal);
-        if (flipBack == 1 && !gl_FrontFacing)
-            n = -n;
-        gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
-    } else {
-        gl_FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
-    }
+#ifdef PER_PIXEL
+    vec3 n = normalize(worldNormal);
+    if (flipBack == 1 && !gl_FrontFacing)
+        n = -n;
+    gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
 #else
-    if (perPixel == 1) {
-        vec3 n = normalize(worldNormal);
-        if (flipBack == 1 && !gl_FrontFacing)
-            n = -n;
-        gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
-    } else {
-        gl_FragColor = gl_Color;
-    }
+    gl_FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
+#endif
+#else
+#ifdef PER_PIXEL
+    vec3 n = normalize(worldNormal);
+    if (flipBack == 1 && !gl_FrontFacing)
+        n = -n;
+    gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+#else
+    gl_FragColor = gl_Color;
+#endif
 #endif
     gl_FragColor = q3FinishFragment(gl_FragColor);
 }
 )";
 
-GLuint compile(GLenum kind, const char* body, bool textured, std::string& error)
+GLuint compile(GLenum kind, const char* body, int variant, std::string& error)
 {
     const GLuint shader = glCreateShader(kind);
     const char* finish = kind == GL_VERTEX_SHADER ? kFinishVertexGlsl : kFinishFragmentGlsl;
-    const char* sources[5] = {kVersion, textured ? kTexturedSwitch : "", kShade, finish, body};
+    const char* sources[5] = {kVersion, kSwitches[variant], kShade, finish, body};
     glShaderSource(shader, 5, sources, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
@@ -208,12 +209,13 @@ GLuint compile(GLenum kind, const char* body, bool textured, std::string& error)
 
 } // namespace
 
-bool LitProgram::build(std::string& error, bool textured)
+bool LitProgram::build(std::string& error, int variant)
 {
-    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertex, textured, error);
+    const bool textured = (variant & 1) != 0;
+    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertex, variant, error);
     if (vertex == 0)
         return false;
-    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragment, textured, error);
+    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragment, variant, error);
     if (fragment == 0) {
         glDeleteShader(vertex);
         return false;
@@ -254,7 +256,6 @@ bool LitProgram::build(std::string& error, bool textured)
     m_specularControl = at("specularControl");
     m_localToWorld = at("localToWorld");
     m_normalToWorld = at("normalToWorld");
-    m_perPixel = at("perPixel");
     m_flipBack = at("flipBack");
     m_finish.locate(m_program);
     if (textured) {
@@ -342,7 +343,6 @@ void LitProgram::setShading(const SurfaceShading& shading) const
     glUniform1f(m_ambientCoefficient, shading.ambientCoefficient);
     glUniform3fv(m_specularColor, 1, shading.specularColor);
     glUniform1f(m_specularControl, shading.specularControl);
-    glUniform1i(m_perPixel, shading.interpolation == 2 ? 1 : 0);
     glUniform1i(m_flipBack, shading.flipBackFaces ? 1 : 0);
 }
 

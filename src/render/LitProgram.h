@@ -17,11 +17,21 @@ namespace q3 {
 
 class LitProgram {
 public:
-    /// Compiles and links in the current context; false (with the log in
-    /// error) if the driver refuses it. The textured variant takes the
-    /// diffuse colour from the texture bound to unit 0 at gl_TexCoord[0]
-    /// (OffscreenRenderer::drawLitTriangles says how).
-    bool build(std::string& error, bool textured = false);
+    /// The program comes in variants, each compiled only with the code its
+    /// draws run: textured or not (the textured one takes the diffuse
+    /// colour from the texture bound to unit 0 at gl_TexCoord[0], as
+    /// OffscreenRenderer::drawLitTriangles says), lit at the vertices or at
+    /// every pixel (SurfaceShading::interpolation 2). One program for both
+    /// interpolations made llvmpipe run the per-pixel lighting loop in every
+    /// fragment whatever the uniform said (benchmarks/RESULTS.md, ModelFrame).
+    static constexpr int kVariants = 4;
+    static int variant(bool textured, const SurfaceShading& shading)
+    {
+        return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0);
+    }
+    /// Compiles and links variant `variant` in the current context; false
+    /// (with the log in error) if the driver refuses it.
+    bool build(std::string& error, int variant = 0);
     /// Deletes the program in the current context (when it is destroyed with
     /// its context, forgets it).
     void release();
@@ -40,7 +50,7 @@ private:
     GLint m_lightAttenuation = -1, m_lightHot = -1, m_lightOuter = -1, m_lightFallOff = -1;
     GLint m_ambientLight = -1, m_eye = -1, m_orthographic = -1, m_viewDirection = -1;
     GLint m_illumination = -1, m_ambientCoefficient = -1, m_specularColor = -1, m_specularControl = -1;
-    GLint m_localToWorld = -1, m_normalToWorld = -1, m_perPixel = -1, m_flipBack = -1;
+    GLint m_localToWorld = -1, m_normalToWorld = -1, m_flipBack = -1;
     FinishUniforms m_finish;
 };
 

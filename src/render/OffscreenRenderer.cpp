@@ -64,6 +64,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -357,7 +358,9 @@ private:
     };
     struct FogLoad {
         int unlit = -1; // the unlit program variant in use, -1 none
-        std::uint32_t fog[4]; // what each program's fog uniforms hold
+        // What each program's fog uniforms hold: the lit variants, then the
+        // unlit untextured and textured programs.
+        std::uint32_t fog[LitProgram::kVariants + 2];
     };
     static constexpr std::uint32_t kFogUnknown = kNoFog - 1;
     static constexpr float kOpaqueAlpha = 0.998f; // between 254/255 and 1
@@ -369,6 +372,11 @@ private:
     // Opaque runs of an alpha texture draw only its opaque texels.
     void loadOpaqueAlphaTest(std::uint32_t texture, bool& loaded);
     void drawTranslucent(RenderResult& result);
+    // Reorders the sorted translucent triangles so that each state's run is
+    // as long as it can be without changing a pixel (see the definition).
+    void clusterTranslucent();
+    std::vector<std::uint32_t> m_clusterOf;        // clusterTranslucent's scratch
+    std::vector<TranslucentTriangle> m_clustered;
     void forgetTranslucent();
     const FogSetup& fogOf(std::uint32_t fog) const;
 
@@ -418,8 +426,12 @@ private:
     LightingSetup m_lighting;
     std::vector<SurfaceShading> m_shadings;
     FaceOptions m_faces;
-    LitProgram m_program;
-    LitProgram m_texturedProgram;
+    // The lighting programs, one per variant (LitProgram::variant): textured
+    // or not, lit at the vertices or at every pixel.
+    LitProgram m_litPrograms[LitProgram::kVariants];
+    // The variant a shading is drawn with, built if it is not yet (null,
+    // with `result` set, when the driver refuses it).
+    LitProgram* litProgram(bool textured, const SurfaceShading& shading, RenderResult& result);
     // The frame's textures (addTexture), kept until it ends so that a
     // texture drawn again after others, or after a flush, is neither decoded
     // nor uploaded twice; m_currentTexture is the one useTexture chose
@@ -439,6 +451,17 @@ private:
     GLuint m_msColor = 0;
     GLuint m_msDepth = 0;
     GLuint m_copyProgram = 0;
+    // Buffer objects the arrays of a flush are uploaded into once (0: not
+    // made yet in this context): interleaved vertices, plain positions,
+    // indices, translucent opacity. Drawing from client arrays instead makes
+    // Mesa copy the index range of every draw call into a buffer of its own;
+    // a translucent store whose sorted triangles switch state often (meshes
+    // interleaved in depth) then copied its whole vertex range per switch
+    // (benchmarks/RESULTS.md, ModelFrame: most of the main thread's time).
+    enum StreamBuffer { kStreamVertices, kStreamPositions, kStreamIndices, kStreamOpacity, kStreamBufferCount };
+    GLuint m_streamBuffers[kStreamBufferCount] = {0, 0, 0, 0};
+    // Uploads `bytes` into stream buffer `which`, leaving it bound to `target`.
+    void uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes);
 };
 
 RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::uint32_t height)
@@ -483,11 +506,12 @@ void OffscreenRenderer::Impl::destroyContext()
     if (m_context == nullptr)
         return;
     m_context.reset();
-    m_program.forget();
-    m_texturedProgram.forget();
+    for (LitProgram& program : m_litPrograms)
+        program.forget();
     forgetMultisample();
     m_unlitPrograms[0].forget();
     m_unlitPrograms[1].forget();
+    std::fill(std::begin(m_streamBuffers), std::end(m_streamBuffers), 0u);
     // The context's textures went with it.
     m_textureNames.clear();
     m_staleTextureNames.clear();
@@ -914,6 +938,41 @@ void OffscreenRenderer::Impl::startFrameInGl()
     }
 }
 
+LitProgram* OffscreenRenderer::Impl::litProgram(bool textured, const SurfaceShading& shading, RenderResult& result)
+{
+    const int variant = LitProgram::variant(textured, shading);
+    LitProgram& program = m_litPrograms[variant];
+    if (!program.built()) {
+        std::string error;
+        if (!program.build(error, variant)) {
+            result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+            return nullptr;
+        }
+    }
+    return &program;
+}
+
+void OffscreenRenderer::Impl::uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes)
+{
+    if (m_streamBuffers[which] == 0)
+        glGenBuffers(1, &m_streamBuffers[which]);
+    glBindBuffer(target, m_streamBuffers[which]);
+    // A new store each time (orphaning): the driver need not wait for
+    // draws that still read the previous contents.
+    glBufferData(target, GLsizeiptr(bytes), data, GL_STREAM_DRAW);
+}
+
+namespace {
+
+// A byte offset into the bound buffer object, as gl*Pointer and
+// glDrawElements take it.
+const void* bufferOffset(std::size_t bytes)
+{
+    return reinterpret_cast<const void*>(bytes);
+}
+
+} // namespace
+
 RenderResult OffscreenRenderer::Impl::flush(bool finish)
 {
     RenderResult result;
@@ -944,8 +1003,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             float loadedPointSize = -1.0f;
             int loadedShading = -1;
             std::uint32_t loadedSurface = kUnlit;
-            bool loadedTexturedProgram = false;
-            bool lightsLoaded[2] = {false, false};
+            bool lightsLoaded[LitProgram::kVariants] = {};
+            int loadedVariant = -1;
             std::uint32_t loadedTexture = kUntextured;
             FaceOptions loadedFaces;
             FogLoad fogLoad;
@@ -953,6 +1012,14 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             bool loadedAlphaTest = false;
             glDisable(GL_CULL_FACE);
             glFrontFace(GL_CCW);
+            if (m_vertexCount != 0)
+                uploadStream(kStreamVertices, GL_ARRAY_BUFFER, m_vertices.get(), m_vertexCount * sizeof(Vertex));
+            if (m_positionCount != 0)
+                uploadStream(kStreamPositions, GL_ARRAY_BUFFER, m_positions.get(),
+                             m_positionCount * sizeof(Position));
+            if (!m_indices.empty())
+                uploadStream(kStreamIndices, GL_ELEMENT_ARRAY_BUFFER, m_indices.data(),
+                             m_indices.size() * sizeof(GLuint));
             const std::size_t commandCount = m_commands.size();
             std::size_t i = 0;
             while (i < commandCount) {
@@ -964,14 +1031,15 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     if (head.plain) {
                         glDisableClientState(GL_COLOR_ARRAY);
                         glDisableClientState(GL_NORMAL_ARRAY);
-                        glVertexPointer(3, GL_FLOAT, sizeof(Position), &m_positions.get()->x);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamPositions]);
+                        glVertexPointer(3, GL_FLOAT, sizeof(Position), bufferOffset(offsetof(Position, x)));
                     } else {
-                        const Vertex* vertices = m_vertices.get();
                         glEnableClientState(GL_COLOR_ARRAY);
                         glEnableClientState(GL_NORMAL_ARRAY);
-                        glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
-                        glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
-                        glNormalPointer(GL_FLOAT, sizeof(Vertex), &vertices->nx);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamVertices]);
+                        glVertexPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, x)));
+                        glColorPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, r)));
+                        glNormalPointer(GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, nx)));
                     }
                     loadedArrays = int(head.plain);
                     // The current colour is undefined after drawing with a
@@ -1012,33 +1080,30 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                         bindTexture(head.texture);
                         glEnable(GL_TEXTURE_2D);
                         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-                        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &m_vertices.get()->s);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamVertices]);
+                        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, s)));
                     }
                     loadedTexture = head.texture;
                 }
                 loadOpaqueAlphaTest(head.texture, loadedAlphaTest);
                 const bool texturedProgram = head.texture != kUntextured;
-                if (head.shading != loadedSurface ||
-                    (head.shading != kUnlit && texturedProgram != loadedTexturedProgram)) {
+                const int variant =
+                    head.shading == kUnlit ? -1 : LitProgram::variant(texturedProgram, m_shadings[head.shading]);
+                if (head.shading != loadedSurface || variant != loadedVariant) {
                     if (head.shading == kUnlit) {
                         glUseProgram(0);
                     } else {
-                        LitProgram& program = texturedProgram ? m_texturedProgram : m_program;
-                        if (!program.built()) {
-                            std::string error;
-                            if (!program.build(error, texturedProgram)) {
-                                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
-                                break;
-                            }
+                        LitProgram* program = litProgram(texturedProgram, m_shadings[head.shading], result);
+                        if (program == nullptr)
+                            break;
+                        program->use();
+                        if (!lightsLoaded[variant]) {
+                            program->setLighting(m_lighting);
+                            lightsLoaded[variant] = true;
                         }
-                        program.use();
-                        if (!lightsLoaded[texturedProgram]) {
-                            program.setLighting(m_lighting);
-                            lightsLoaded[texturedProgram] = true;
-                        }
-                        program.setShading(m_shadings[head.shading]);
-                        loadedTexturedProgram = texturedProgram;
+                        program->setShading(m_shadings[head.shading]);
                     }
+                    loadedVariant = variant;
                     loadedSurface = head.shading;
                 }
                 if (!loadFog(head, fogLoad, result))
@@ -1046,7 +1111,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 if (end - i == 1) {
                     if (head.indexed)
                         glDrawElements(glMode(head.primitive), head.count, GL_UNSIGNED_INT,
-                                       m_indices.data() + head.first);
+                                       bufferOffset(sizeof(GLuint) * std::size_t(head.first)));
                     else
                         glDrawArrays(glMode(head.primitive), head.first, head.count);
                 } else {
@@ -1057,7 +1122,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                         m_multiFirsts.push_back(m_commands[k].first);
                         m_multiCounts.push_back(m_commands[k].count);
                         if (head.indexed)
-                            m_multiIndices.push_back(m_indices.data() + m_commands[k].first);
+                            m_multiIndices.push_back(bufferOffset(sizeof(GLuint) * std::size_t(m_commands[k].first)));
                     }
                     if (head.indexed)
                         glMultiDrawElements(glMode(head.primitive), m_multiCounts.data(), GL_UNSIGNED_INT,
@@ -1069,6 +1134,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 i = end;
             }
             glDisable(GL_ALPHA_TEST);
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
         }
         if (finish && result)
             drawTranslucent(result);
@@ -1651,7 +1718,7 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, 
             program.use();
             loaded.unlit = int(textured);
         }
-        std::uint32_t& set = loaded.fog[2 + (textured ? 1 : 0)];
+        std::uint32_t& set = loaded.fog[LitProgram::kVariants + (textured ? 1 : 0)];
         if (set != head.fog) {
             program.finish().setFog(fogOf(head.fog));
             set = head.fog;
@@ -1660,9 +1727,10 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, 
     }
     // The batch loop has made the lit program current.
     loaded.unlit = -1;
-    std::uint32_t& set = loaded.fog[textured ? 1 : 0];
+    const int variant = LitProgram::variant(textured, m_shadings[head.shading]);
+    std::uint32_t& set = loaded.fog[variant];
     if (set != head.fog) {
-        (textured ? m_texturedProgram : m_program).finish().setFog(fogOf(head.fog));
+        m_litPrograms[variant].finish().setFog(fogOf(head.fog));
         set = head.fog;
     }
     return true;
@@ -1682,6 +1750,98 @@ void OffscreenRenderer::Impl::loadOpaqueAlphaTest(std::uint32_t texture, bool& l
     loaded = tested;
 }
 
+// The back-to-front order matters only where triangles cover the same
+// pixels: blending is order dependent there and nowhere else (translucent
+// triangles write no depth, and the depth test reads only what the opaque
+// ones wrote). So the states (each one draw's translucent triangles) are
+// grouped into clusters whose screen rectangles overlap, transitively; the
+// triangles of different clusters touch disjoint pixels, so drawing cluster
+// after cluster, each in the sorted order, gives the very pixels of the
+// sorted order, with one draw call per state where a cluster is one state
+// (separate translucent objects) instead of one per switch between
+// interleaved depths. A rectangle is the triangle corners' window
+// coordinates widened by two pixels (covering whatever the rasterizer,
+// multisampled or not, can touch); a triangle with a corner at or behind
+// the eye (w <= 0, clipped into a larger area) makes its state cover
+// everything. Beyond kMaxClusteredStates states the pairwise test is not
+// worth it and the order stays as sorted.
+void OffscreenRenderer::Impl::clusterTranslucent()
+{
+    constexpr std::size_t kMaxClusteredStates = 256;
+    const std::size_t stateCount = m_translucentStates.size();
+    if (stateCount < 2 || stateCount > kMaxClusteredStates)
+        return;
+    struct Box {
+        double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
+        double x1 = -x0, y1 = -x0;
+        bool used = false;
+    };
+    std::vector<Box> boxes(stateCount);
+    const double halfWidth = 0.5 * double(m_pane.width), halfHeight = 0.5 * double(m_pane.height);
+    constexpr double kMargin = 2.0;
+    for (const TranslucentTriangle& triangle : m_translucentTriangles) {
+        Box& box = boxes[triangle.state];
+        box.used = true;
+        const std::array<float, 16>& m = m_translucentStates[triangle.state].matrix;
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const Vertex& v = m_translucentVertices[triangle.first + k];
+            // Row vector times the row-major matrix (setMatrix's convention).
+            const double x = double(v.x) * m[0] + double(v.y) * m[4] + double(v.z) * m[8] + m[12];
+            const double y = double(v.x) * m[1] + double(v.y) * m[5] + double(v.z) * m[9] + m[13];
+            const double w = double(v.x) * m[3] + double(v.y) * m[7] + double(v.z) * m[11] + m[15];
+            if (!(w > 1e-6) || !std::isfinite(x / w) || !std::isfinite(y / w)) {
+                box.x0 = box.y0 = -std::numeric_limits<double>::infinity();
+                box.x1 = box.y1 = std::numeric_limits<double>::infinity();
+                continue;
+            }
+            const double px = (x / w + 1.0) * halfWidth, py = (y / w + 1.0) * halfHeight;
+            box.x0 = std::min(box.x0, px - kMargin);
+            box.x1 = std::max(box.x1, px + kMargin);
+            box.y0 = std::min(box.y0, py - kMargin);
+            box.y1 = std::max(box.y1, py + kMargin);
+        }
+    }
+    // Union-find over the states whose rectangles overlap.
+    std::vector<std::uint32_t> parent(stateCount);
+    for (std::uint32_t i = 0; i < stateCount; ++i)
+        parent[i] = i;
+    const auto root = [&parent](std::uint32_t i) {
+        while (parent[i] != i)
+            i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    for (std::uint32_t i = 0; i < stateCount; ++i)
+        for (std::uint32_t j = i + 1; j < stateCount && boxes[i].used; ++j)
+            if (boxes[j].used && boxes[i].x0 <= boxes[j].x1 && boxes[j].x0 <= boxes[i].x1 &&
+                boxes[i].y0 <= boxes[j].y1 && boxes[j].y0 <= boxes[i].y1) {
+                const std::uint32_t a = root(i), b = root(j);
+                if (a != b)
+                    parent[std::max(a, b)] = std::min(a, b);
+            }
+    // Clusters numbered by first appearance in the sorted order; a stable
+    // counting sort by cluster keeps the sorted order inside each.
+    constexpr std::uint32_t kUnnumbered = std::numeric_limits<std::uint32_t>::max();
+    m_clusterOf.assign(stateCount, kUnnumbered);
+    std::vector<std::size_t> counts;
+    for (const TranslucentTriangle& triangle : m_translucentTriangles) {
+        std::uint32_t& cluster = m_clusterOf[root(triangle.state)];
+        if (cluster == kUnnumbered) {
+            cluster = std::uint32_t(counts.size());
+            counts.push_back(0);
+        }
+        ++counts[cluster];
+    }
+    if (counts.size() < 2)
+        return;
+    std::vector<std::size_t> next(counts.size(), 0);
+    for (std::size_t c = 1; c < counts.size(); ++c)
+        next[c] = next[c - 1] + counts[c - 1];
+    m_clustered.resize(m_translucentTriangles.size());
+    for (const TranslucentTriangle& triangle : m_translucentTriangles)
+        m_clustered[next[m_clusterOf[root(triangle.state)]]++] = triangle;
+    m_translucentTriangles.swap(m_clustered);
+}
+
 void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
 {
     if (m_translucentTriangles.empty())
@@ -1689,27 +1849,33 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     // Farthest first; triangles at one depth keep their submission order.
     std::stable_sort(m_translucentTriangles.begin(), m_translucentTriangles.end(),
                      [](const TranslucentTriangle& a, const TranslucentTriangle& b) { return a.depth > b.depth; });
+    clusterTranslucent();
     m_translucentIndices.clear();
     m_translucentIndices.reserve(3 * m_translucentTriangles.size());
     for (const TranslucentTriangle& triangle : m_translucentTriangles)
         for (std::uint32_t k = 0; k < 3; ++k)
             m_translucentIndices.push_back(triangle.first + k);
 
-    const Vertex* vertices = m_translucentVertices.data();
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
     glEnableClientState(GL_NORMAL_ARRAY);
-    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
-    glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
-    glNormalPointer(GL_FLOAT, sizeof(Vertex), &vertices->nx);
-    glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &vertices->s);
+    uploadStream(kStreamVertices, GL_ARRAY_BUFFER, m_translucentVertices.data(),
+                 m_translucentVertices.size() * sizeof(Vertex));
+    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, x)));
+    glColorPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, r)));
+    glNormalPointer(GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, nx)));
+    glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, s)));
+    uploadStream(kStreamOpacity, GL_ARRAY_BUFFER, m_translucentOpacity.data(),
+                 m_translucentOpacity.size() * sizeof(float));
     glEnableVertexAttribArray(kOpacityAttribute);
-    glVertexAttribPointer(kOpacityAttribute, 1, GL_FLOAT, GL_FALSE, 0, m_translucentOpacity.data());
+    glVertexAttribPointer(kOpacityAttribute, 1, GL_FLOAT, GL_FALSE, 0, bufferOffset(0));
+    uploadStream(kStreamIndices, GL_ELEMENT_ARRAY_BUFFER, m_translucentIndices.data(),
+                 m_translucentIndices.size() * sizeof(GLuint));
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
 
-    bool lightsLoaded[2] = {false, false};
+    bool lightsLoaded[LitProgram::kVariants] = {};
     const std::size_t count = m_translucentTriangles.size();
     std::size_t i = 0;
     while (i < count) {
@@ -1750,20 +1916,20 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
             program.use();
             program.finish().setFog(fogOf(state.fog));
         } else {
-            LitProgram& program = textured ? m_texturedProgram : m_program;
-            if (!program.built() && !program.build(error, textured)) {
-                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+            const SurfaceShading& shading = m_translucentShadings[state.shading];
+            LitProgram* program = litProgram(textured, shading, result);
+            if (program == nullptr)
                 break;
+            program->use();
+            const int variant = LitProgram::variant(textured, shading);
+            if (!lightsLoaded[variant]) {
+                program->setLighting(m_lighting);
+                lightsLoaded[variant] = true;
             }
-            program.use();
-            if (!lightsLoaded[textured ? 1 : 0]) {
-                program.setLighting(m_lighting);
-                lightsLoaded[textured ? 1 : 0] = true;
-            }
-            program.setShading(m_translucentShadings[state.shading]);
-            program.finish().setFog(fogOf(state.fog));
+            program->setShading(shading);
+            program->finish().setFog(fogOf(state.fog));
         }
-        glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - i)), GL_UNSIGNED_INT, m_translucentIndices.data() + 3 * i);
+        glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - i)), GL_UNSIGNED_INT, bufferOffset(sizeof(GLuint) * 3 * i));
         i = end;
     }
 
@@ -1771,6 +1937,8 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDisableVertexAttribArray(kOpacityAttribute);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
     setDefaultOpacity();
     glShadeModel(GL_FLAT);
 }
