@@ -25,6 +25,8 @@
 //                 pixmap of its own (OSMesa: the image the context draws
 //                 into, swizzled; EGL: glReadPixels). The peer uses Q3's
 //                 context kind (Q3_RENDER_BACKEND) and loader (render/GlApi.h).
+//   ModelFrameQ3Only, ModelFrameRawOnly  each side's frames alone, for a
+//                 profiler (perf record --benchmark_filter=...Only);
 //   FirstFrame    a new view (draw context, camera, renderer) and its first
 //                 frame of the model, timed together; the view is disposed
 //                 of untimed.
@@ -553,6 +555,30 @@ void ModelFrame(benchmark::State& state)
     q3bench::runPaired(state, q3bench::Clock::kWall, {q3, raw});
 }
 
+// Q3's frames alone (no peer in the process's turns): what perf profiles.
+void ModelFrameQ3Only(benchmark::State& state)
+{
+    ModelScene& s = scene();
+    static std::unique_ptr<q3bench::BenchView> view = s.newView();
+    for (auto _ : state)
+        if (!s.renderQ3(*view)) {
+            state.SkipWithError("a Q3 frame failed");
+            return;
+        }
+}
+
+// The peer's frames alone.
+void ModelFrameRawOnly(benchmark::State& state)
+{
+    ModelScene& s = scene();
+    static std::unique_ptr<q3bench::BenchView> view = s.newView();
+    static std::unique_ptr<RawModel> gl = std::make_unique<RawModel>(s, clipMatrix(view->camera()));
+    gl->bind();
+    for (auto _ : state)
+        gl->frame(s);
+    gl->release();
+}
+
 void FirstFrame(benchmark::State& state)
 {
     ModelScene& s = scene();
@@ -574,6 +600,8 @@ void FirstFrame(benchmark::State& state)
 }
 
 BENCHMARK(ModelFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(ModelFrameQ3Only)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(100);
+BENCHMARK(ModelFrameRawOnly)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(100);
 BENCHMARK(FirstFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 } // namespace bench

@@ -25,6 +25,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace q3 {
@@ -32,11 +33,21 @@ namespace q3 {
 namespace {
 
 // The first source strings: the version, then the variant's switches
-// (LitProgram::variant: TEXTURED, PER_PIXEL), both before anything else as
+// (LitProgram::variant: TEXTURED, PER_PIXEL, FOG), both before anything else as
 // GLSL requires.
 constexpr const char* kVersion = "#version 120\n";
-constexpr const char* kSwitches[LitProgram::kVariants] = {"", "#define TEXTURED 1\n", "#define PER_PIXEL 1\n",
-                                                          "#define TEXTURED 1\n#define PER_PIXEL 1\n"};
+// The variant's switches (LitProgram::variant), after the version line.
+std::string switches(int variant)
+{
+    std::string text;
+    if ((variant & 1) != 0)
+        text += "#define TEXTURED 1\n";
+    if ((variant & 2) != 0)
+        text += "#define PER_PIXEL 1\n";
+    if ((variant & 4) != 0)
+        text += "#define FOG 1\n";
+    return text;
+}
 
 constexpr const char* kShade = R"(
 #define MAX_LIGHTS 32
@@ -165,7 +176,8 @@ constexpr const char* kFragment = R"(
 void main()
 {
 #ifdef TEXTURED
-    vec3 texel = texture2D(surfaceTexture, gl_TexCoord[0].st).rgb;
+    vec4 texelColor = texture2D(surfaceTexture, gl_TexCoord[0].st);
+    vec3 texel = texelColor.rgb;
 #ifdef PER_PIXEL
     vec3 n = normalize(worldNormal);
     if (flipBack == 1 && !gl_FrontFacing)
@@ -184,7 +196,11 @@ void main()
     gl_FragColor = gl_Color;
 #endif
 #endif
-    gl_FragColor = q3FinishFragment(gl_FragColor);
+#ifdef TEXTURED
+    gl_FragColor = q3FinishFragment(gl_FragColor, texelColor.a);
+#else
+    gl_FragColor = q3FinishFragment(gl_FragColor, 1.0);
+#endif
 }
 )";
 
@@ -192,7 +208,8 @@ GLuint compile(GLenum kind, const char* body, int variant, std::string& error)
 {
     const GLuint shader = glCreateShader(kind);
     const char* finish = kind == GL_VERTEX_SHADER ? kFinishVertexGlsl : kFinishFragmentGlsl;
-    const char* sources[5] = {kVersion, kSwitches[variant], kShade, finish, body};
+    const std::string header = switches(variant);
+    const char* sources[5] = {kVersion, header.c_str(), kShade, finish, body};
     glShaderSource(shader, 5, sources, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;

@@ -23,11 +23,12 @@ public:
     /// OffscreenRenderer::drawLitTriangles says), lit at the vertices or at
     /// every pixel (SurfaceShading::interpolation 2). One program for both
     /// interpolations made llvmpipe run the per-pixel lighting loop in every
-    /// fragment whatever the uniform said (benchmarks/RESULTS.md, ModelFrame).
-    static constexpr int kVariants = 4;
-    static int variant(bool textured, const SurfaceShading& shading)
+    /// fragment whatever the uniform said (benchmarks/RESULTS.md, ModelFrame);
+    /// likewise fogged or not (SurfaceFinish.h).
+    static constexpr int kVariants = 8;
+    static int variant(bool textured, const SurfaceShading& shading, bool fogged)
     {
-        return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0);
+        return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0);
     }
     /// Compiles and links variant `variant` in the current context; false
     /// (with the log in error) if the driver refuses it.

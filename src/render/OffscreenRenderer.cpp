@@ -431,7 +431,7 @@ private:
     LitProgram m_litPrograms[LitProgram::kVariants];
     // The variant a shading is drawn with, built if it is not yet (null,
     // with `result` set, when the driver refuses it).
-    LitProgram* litProgram(bool textured, const SurfaceShading& shading, RenderResult& result);
+    LitProgram* litProgram(int variant, RenderResult& result);
     // The frame's textures (addTexture), kept until it ends so that a
     // texture drawn again after others, or after a flush, is neither decoded
     // nor uploaded twice; m_currentTexture is the one useTexture chose
@@ -938,9 +938,8 @@ void OffscreenRenderer::Impl::startFrameInGl()
     }
 }
 
-LitProgram* OffscreenRenderer::Impl::litProgram(bool textured, const SurfaceShading& shading, RenderResult& result)
+LitProgram* OffscreenRenderer::Impl::litProgram(int variant, RenderResult& result)
 {
-    const int variant = LitProgram::variant(textured, shading);
     LitProgram& program = m_litPrograms[variant];
     if (!program.built()) {
         std::string error;
@@ -1087,13 +1086,14 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 }
                 loadOpaqueAlphaTest(head.texture, loadedAlphaTest);
                 const bool texturedProgram = head.texture != kUntextured;
-                const int variant =
-                    head.shading == kUnlit ? -1 : LitProgram::variant(texturedProgram, m_shadings[head.shading]);
+                const int variant = head.shading == kUnlit ? -1
+                                                           : LitProgram::variant(texturedProgram, m_shadings[head.shading],
+                                                                                 head.fog != kNoFog);
                 if (head.shading != loadedSurface || variant != loadedVariant) {
                     if (head.shading == kUnlit) {
                         glUseProgram(0);
                     } else {
-                        LitProgram* program = litProgram(texturedProgram, m_shadings[head.shading], result);
+                        LitProgram* program = litProgram(variant, result);
                         if (program == nullptr)
                             break;
                         program->use();
@@ -1727,7 +1727,7 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, 
     }
     // The batch loop has made the lit program current.
     loaded.unlit = -1;
-    const int variant = LitProgram::variant(textured, m_shadings[head.shading]);
+    const int variant = LitProgram::variant(textured, m_shadings[head.shading], head.fog != kNoFog);
     std::uint32_t& set = loaded.fog[variant];
     if (set != head.fog) {
         m_litPrograms[variant].finish().setFog(fogOf(head.fog));
@@ -1917,11 +1917,11 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
             program.finish().setFog(fogOf(state.fog));
         } else {
             const SurfaceShading& shading = m_translucentShadings[state.shading];
-            LitProgram* program = litProgram(textured, shading, result);
+            const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog);
+            LitProgram* program = litProgram(variant, result);
             if (program == nullptr)
                 break;
             program->use();
-            const int variant = LitProgram::variant(textured, shading);
             if (!lightsLoaded[variant]) {
                 program->setLighting(m_lighting);
                 lightsLoaded[variant] = true;
