@@ -24,11 +24,19 @@ public:
     /// every pixel (SurfaceShading::interpolation 2). One program for both
     /// interpolations made llvmpipe run the per-pixel lighting loop in every
     /// fragment whatever the uniform said (benchmarks/RESULTS.md, ModelFrame);
-    /// likewise fogged or not (SurfaceFinish.h).
-    static constexpr int kVariants = 8;
-    static int variant(bool textured, const SurfaceShading& shading, bool fogged)
+    /// likewise fogged or not (SurfaceFinish.h), and lit by directional
+    /// (and ambient) lights only or not: the point and spot code (a square
+    /// root, divisions, acos, exp, cos per light) ran for every light of
+    /// every vertex too.
+    static constexpr int kVariants = 16;
+    static int variant(bool textured, const SurfaceShading& shading, bool fogged, const LightingSetup& lighting)
     {
-        return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0);
+        bool directionalOnly = true;
+        for (const RenderLight& light : lighting.lights)
+            directionalOnly = directionalOnly && (light.kind == RenderLight::Kind::kAmbient ||
+                                                  light.kind == RenderLight::Kind::kDirectional);
+        return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0) +
+               (directionalOnly ? 8 : 0);
     }
     /// Compiles and links variant `variant` in the current context; false
     /// (with the log in error) if the driver refuses it.

@@ -354,7 +354,10 @@ private:
     struct TranslucentTriangle {
         double depth; // of its centre in clip space (z / w), larger is farther
         std::uint32_t state;
-        std::uint32_t first; // its 3 vertices in m_translucentVertices
+        // Its corners in m_translucentVertices, which holds each vertex of a
+        // draw once however many of its translucent triangles share it (so
+        // that the vertex shader runs once per vertex, as for opaque draws).
+        std::uint32_t v[3];
     };
     struct FogLoad {
         int unlit = -1; // the unlit program variant in use, -1 none
@@ -390,6 +393,7 @@ private:
     std::vector<TranslucentTriangle> m_translucentTriangles;
     std::vector<GLuint> m_translucentIndices;
     std::vector<std::uint32_t> m_splitOpaque; // drawSplit's opaque triangles
+    std::vector<std::uint32_t> m_splitVertices; // drawSplit: a vertex's place in m_translucentVertices
     UnlitProgram m_unlitPrograms[2];
 
     // The backend asked for (its result: why it cannot be used), and its
@@ -1088,7 +1092,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 const bool texturedProgram = head.texture != kUntextured;
                 const int variant = head.shading == kUnlit ? -1
                                                            : LitProgram::variant(texturedProgram, m_shadings[head.shading],
-                                                                                 head.fog != kNoFog);
+                                                                                 head.fog != kNoFog, m_lighting);
                 if (head.shading != loadedSurface || variant != loadedVariant) {
                     if (head.shading == kUnlit) {
                         glUseProgram(0);
@@ -1643,6 +1647,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     constexpr std::uint32_t kNoState = std::numeric_limits<std::uint32_t>::max();
     std::uint32_t states[2] = {kNoState, kNoState}; // translucent, only translucent texels
     static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
+    m_splitVertices.assign(r.vertexCount, kNoState);
     for (std::size_t t = 0; t + 2 < count; t += 3) {
         std::uint32_t v[3];
         float a[3];
@@ -1660,9 +1665,17 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         if (state == kNoState)
             state = translucentState(r, textured, allOpaque);
         double centre[4] = {0.0, 0.0, 0.0, 0.0};
-        const std::uint32_t first = std::uint32_t(m_translucentVertices.size());
+        TranslucentTriangle triangle;
+        triangle.state = state;
         for (int k = 0; k < 3; ++k) {
             const float* p = r.xyz + 3 * std::size_t(v[k]);
+            for (int j = 0; j < 4; ++j)
+                centre[j] += (double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j]) / 3.0;
+            std::uint32_t& stored = m_splitVertices[v[k]];
+            triangle.v[k] = stored;
+            if (stored != kNoState)
+                continue;
+            stored = triangle.v[k] = std::uint32_t(m_translucentVertices.size());
             const float* c = r.rgb != nullptr ? r.rgb + 3 * std::size_t(v[k]) : nullptr;
             const float* n = r.normals != nullptr ? r.normals + 3 * std::size_t(v[k]) : kNoNormal;
             Vertex out;
@@ -1679,12 +1692,10 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
             out.t = textured ? r.st[2 * std::size_t(v[k]) + 1] : 0.0f;
             m_translucentVertices.push_back(out);
             m_translucentOpacity.push_back(a[k]);
-            for (int j = 0; j < 4; ++j)
-                centre[j] += (double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j]) / 3.0;
         }
         // A centre behind the eye sorts farthest.
-        const double depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
-        m_translucentTriangles.push_back(TranslucentTriangle{depth, state, first});
+        triangle.depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
+        m_translucentTriangles.push_back(triangle);
     }
     if (opaque.empty())
         return RenderResult::success();
@@ -1727,7 +1738,7 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, 
     }
     // The batch loop has made the lit program current.
     loaded.unlit = -1;
-    const int variant = LitProgram::variant(textured, m_shadings[head.shading], head.fog != kNoFog);
+    const int variant = LitProgram::variant(textured, m_shadings[head.shading], head.fog != kNoFog, m_lighting);
     std::uint32_t& set = loaded.fog[variant];
     if (set != head.fog) {
         m_litPrograms[variant].finish().setFog(fogOf(head.fog));
@@ -1784,7 +1795,7 @@ void OffscreenRenderer::Impl::clusterTranslucent()
         box.used = true;
         const std::array<float, 16>& m = m_translucentStates[triangle.state].matrix;
         for (std::uint32_t k = 0; k < 3; ++k) {
-            const Vertex& v = m_translucentVertices[triangle.first + k];
+            const Vertex& v = m_translucentVertices[triangle.v[k]];
             // Row vector times the row-major matrix (setMatrix's convention).
             const double x = double(v.x) * m[0] + double(v.y) * m[4] + double(v.z) * m[8] + m[12];
             const double y = double(v.x) * m[1] + double(v.y) * m[5] + double(v.z) * m[9] + m[13];
@@ -1854,7 +1865,7 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     m_translucentIndices.reserve(3 * m_translucentTriangles.size());
     for (const TranslucentTriangle& triangle : m_translucentTriangles)
         for (std::uint32_t k = 0; k < 3; ++k)
-            m_translucentIndices.push_back(triangle.first + k);
+            m_translucentIndices.push_back(triangle.v[k]);
 
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
@@ -1917,7 +1928,7 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
             program.finish().setFog(fogOf(state.fog));
         } else {
             const SurfaceShading& shading = m_translucentShadings[state.shading];
-            const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog);
+            const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog, m_lighting);
             LitProgram* program = litProgram(variant, result);
             if (program == nullptr)
                 break;
