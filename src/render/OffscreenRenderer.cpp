@@ -196,7 +196,7 @@ RenderResult outOfMemory()
 class OffscreenRenderer::Impl {
 public:
     explicit Impl(const GlBackendChoice& backend) : m_backend(backend) {}
-    ~Impl() { destroyContext(); }
+    ~Impl() { destroyContext(true); }
 
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
                             const PixelRect& pane, const FrameOptions& options);
@@ -305,7 +305,12 @@ private:
     };
 
     RenderResult createContext(std::uint32_t width, std::uint32_t height);
-    void destroyContext();
+    // Lets go of the context: into the process's pool of idle contexts
+    // (ContextPool) when `park` and it can be reused, else destroyed.
+    void destroyContext(bool park = false);
+    // Takes an idle context of this backend and size from the pool, with
+    // what it has compiled; false when there is none.
+    bool adoptContext(std::uint32_t width, std::uint32_t height);
     void initializeState();
     void startFrameInGl();
     RenderResult flush(bool finish);
@@ -468,17 +473,90 @@ private:
     void uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes);
 };
 
+namespace {
+
+// Idle contexts, kept for the next renderer of the same backend and size.
+// A new view's first frame otherwise pays for a new OpenGL context (about
+// 5 ms with llvmpipe) and for compiling its GLSL programs and llvmpipe's
+// machine code for them (about 20 ms for a textured, lit, translucent scene:
+// benchmarks/RESULTS.md, FirstFrame); a context handed on keeps its linked
+// programs, and llvmpipe keeps their compiled variants with them. Views come
+// and go (a window resized, a document reopened) far more often than
+// several live at once, so a few idle contexts cover the common case. The
+// pool is never destroyed: an atexit handler may still render after static
+// destructors ran, and the process's end frees what it holds.
+struct IdleContext {
+    GlBackend backend = GlBackend::kOsMesa;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::unique_ptr<GlContext> context;
+    GLint maxViewport[2] = {0, 0};
+    LitProgram litPrograms[LitProgram::kVariants];
+    UnlitProgram unlitPrograms[2];
+    GLuint streamBuffers[4] = {0, 0, 0, 0};
+    GLuint msFramebuffer = 0, msColor = 0, msDepth = 0, copyProgram = 0;
+};
+
+constexpr std::size_t kIdleContexts = 2;
+
+struct ContextPool {
+    std::mutex mutex;
+    std::vector<std::unique_ptr<IdleContext>> idle; // oldest first
+};
+
+ContextPool& contextPool()
+{
+    static ContextPool* pool = new ContextPool;
+    return *pool;
+}
+
+} // namespace
+
+bool OffscreenRenderer::Impl::adoptContext(std::uint32_t width, std::uint32_t height)
+{
+    std::unique_ptr<IdleContext> taken;
+    {
+        ContextPool& pool = contextPool();
+        std::lock_guard<std::mutex> lock(pool.mutex);
+        for (auto it = pool.idle.end(); it != pool.idle.begin();) {
+            --it;
+            if ((*it)->backend == m_backend.backend && (*it)->width == width && (*it)->height == height) {
+                taken = std::move(*it);
+                pool.idle.erase(it);
+                break;
+            }
+        }
+    }
+    if (!taken)
+        return false;
+    m_context = std::move(taken->context);
+    m_maxViewport[0] = taken->maxViewport[0];
+    m_maxViewport[1] = taken->maxViewport[1];
+    for (int i = 0; i < LitProgram::kVariants; ++i)
+        m_litPrograms[i] = taken->litPrograms[i];
+    m_unlitPrograms[0] = taken->unlitPrograms[0];
+    m_unlitPrograms[1] = taken->unlitPrograms[1];
+    std::copy(std::begin(taken->streamBuffers), std::end(taken->streamBuffers), std::begin(m_streamBuffers));
+    m_msFramebuffer = taken->msFramebuffer;
+    m_msColor = taken->msColor;
+    m_msDepth = taken->msDepth;
+    m_copyProgram = taken->copyProgram;
+    return true;
+}
+
 RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::uint32_t height)
 {
     if (!m_backend.result)
         return m_backend.result;
-    destroyContext();
+    destroyContext(true);
     std::vector<std::uint8_t>().swap(m_image);
     m_width = 0;
     m_height = 0;
     m_image.resize(std::size_t(width) * height * 4);
 
-    RenderResult result = createGlContext(m_backend.backend, width, height, m_image.data(), m_context);
+    RenderResult result = adoptContext(width, height)
+                              ? RenderResult::success()
+                              : createGlContext(m_backend.backend, width, height, m_image.data(), m_context);
     if (result) {
         ContextScope scope(*m_context, m_image.data());
         if (!scope.bound()) {
@@ -505,10 +583,42 @@ RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::ui
     return result;
 }
 
-void OffscreenRenderer::Impl::destroyContext()
+void OffscreenRenderer::Impl::destroyContext(bool park)
 {
     if (m_context == nullptr)
         return;
+    // A context with textures of its own left (a frame cancelled before its
+    // end) is not handed on: they could only be deleted with it current.
+    if (park && m_width != 0 && m_textureNames.empty() && m_staleTextureNames.empty()) {
+        auto idle = std::make_unique<IdleContext>();
+        idle->backend = m_backend.backend;
+        idle->width = m_width;
+        idle->height = m_height;
+        idle->context = std::move(m_context);
+        idle->maxViewport[0] = m_maxViewport[0];
+        idle->maxViewport[1] = m_maxViewport[1];
+        for (int i = 0; i < LitProgram::kVariants; ++i)
+            idle->litPrograms[i] = m_litPrograms[i];
+        idle->unlitPrograms[0] = m_unlitPrograms[0];
+        idle->unlitPrograms[1] = m_unlitPrograms[1];
+        std::copy(std::begin(m_streamBuffers), std::end(m_streamBuffers), std::begin(idle->streamBuffers));
+        idle->msFramebuffer = m_msFramebuffer;
+        idle->msColor = m_msColor;
+        idle->msDepth = m_msDepth;
+        idle->copyProgram = m_copyProgram;
+        std::unique_ptr<IdleContext> evicted;
+        {
+            ContextPool& pool = contextPool();
+            std::lock_guard<std::mutex> lock(pool.mutex);
+            pool.idle.push_back(std::move(idle));
+            if (pool.idle.size() > kIdleContexts) {
+                evicted = std::move(pool.idle.front());
+                pool.idle.erase(pool.idle.begin());
+            }
+        }
+        // Destroyed outside the pool's lock (it takes the context mutex).
+        evicted.reset();
+    }
     m_context.reset();
     for (LitProgram& program : m_litPrograms)
         program.forget();
