@@ -270,6 +270,8 @@ private:
         // (image i + 1 is max(1, width >> (i + 1)) wide).
         std::vector<std::vector<std::uint8_t>> mipmaps;
         bool hasAlpha = false; // a texel's alpha is below 1
+        // Its entry in m_textureCache, or kNotCached.
+        std::uint32_t cacheSlot = std::numeric_limits<std::uint32_t>::max();
     };
 
     // first and count are vertices, or for an indexed command indices.
@@ -451,6 +453,33 @@ private:
     // not uploaded yet), and names of an earlier frame left to delete.
     std::vector<GLuint> m_textureNames;
     std::vector<GLuint> m_staleTextureNames;
+    // Textures kept on the GPU from frame to frame: a texture added with
+    // the very bytes, layouts, wrap modes and filter of one the previous
+    // frame used is neither decoded nor uploaded again (compared byte for
+    // byte, so an edited image is a new texture). An entry not used by a
+    // frame is deleted at its end, so what is kept is what the scene draws.
+    // The names belong to the renderer's context (released with it).
+    static constexpr std::uint32_t kNotCached = std::numeric_limits<std::uint32_t>::max();
+    static constexpr std::size_t kTextureCacheBytes = std::size_t(64) << 20;
+    struct CachedTexture {
+        std::vector<std::uint8_t> source;  // every level's bytes as given, one after the other
+        std::vector<PixmapLayout> layouts; // every level's layout
+        bool clampS = false;
+        bool clampT = false;
+        TextureFilter filter = TextureFilter::kNearest;
+        bool hasAlpha = false;
+        GLuint name = 0; // 0 until a draw uploads it
+        std::uint64_t lastFrame = 0;
+    };
+    std::vector<CachedTexture> m_textureCache;
+    std::size_t m_textureCacheBytes = 0;
+    std::uint64_t m_frameNumber = 0;
+    // The slot of a cached texture with exactly these images and sampling,
+    // or kNotCached.
+    std::uint32_t findCachedTexture(const TextureImage& texture) const;
+    // Deletes the cache's textures that the frame did not use (all with
+    // `all`); the context must be current.
+    void evictTextures(bool all);
     // Anti-aliasing: the current options, whether this frame draws into the
     // multisample framebuffer, and its OpenGL objects (0: not made yet in
     // this context), with the program that copies the image into it.
@@ -589,6 +618,18 @@ void OffscreenRenderer::Impl::destroyContext(bool park)
         return;
     // A context with textures of its own left (a frame cancelled before its
     // end) is not handed on: they could only be deleted with it current.
+    if (park && m_width != 0 && m_textureNames.empty() && m_staleTextureNames.empty() && !m_textureCache.empty()) {
+        // The cached textures are this renderer's: deleted before the
+        // context is handed on (a context that cannot be made current is
+        // not handed on).
+        ContextScope scope(*m_context, m_image.data());
+        if (scope.bound())
+            evictTextures(true);
+        else
+            park = false;
+    }
+    m_textureCache.clear();
+    m_textureCacheBytes = 0;
     if (park && m_width != 0 && m_textureNames.empty() && m_staleTextureNames.empty()) {
         auto idle = std::make_unique<IdleContext>();
         idle->backend = m_backend.backend;
@@ -700,6 +741,7 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
     if (pane.width > m_maxViewport[0] || pane.height > m_maxViewport[1])
         return invalid("pane is larger than the maximum viewport");
 
+    ++m_frameNumber;
     m_pane = pane;
     m_clearColor = clearColor;
     m_options = options;
@@ -1261,6 +1303,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             glDeleteTextures(GLsizei(m_textureNames.size()), m_textureNames.data());
             m_textureNames.clear();
         }
+        if (finish)
+            evictTextures(false);
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glEnableClientState(GL_COLOR_ARRAY);
@@ -1282,6 +1326,18 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
 
 void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
 {
+    const BatchTexture& texture = m_textures[index];
+    if (texture.cacheSlot != kNotCached) {
+        CachedTexture& cached = m_textureCache[texture.cacheSlot];
+        if (cached.name != 0) {
+            glBindTexture(GL_TEXTURE_2D, cached.name);
+            return;
+        }
+        glGenTextures(1, &cached.name);
+        glBindTexture(GL_TEXTURE_2D, cached.name);
+        uploadTexture(texture);
+        return;
+    }
     if (m_textureNames.size() < m_textures.size())
         m_textureNames.resize(m_textures.size(), 0);
     GLuint& name = m_textureNames[index];
@@ -1366,6 +1422,56 @@ RenderResult OffscreenRenderer::Impl::decodeMipmaps(const TextureImage& texture,
     return RenderResult::success();
 }
 
+std::uint32_t OffscreenRenderer::Impl::findCachedTexture(const TextureImage& texture) const
+{
+    const auto sameLayout = [](const PixmapLayout& a, const PixmapLayout& b) {
+        return a.width == b.width && a.height == b.height && a.rowBytes == b.rowBytes &&
+               a.pixelType == b.pixelType && a.byteOrder == b.byteOrder;
+    };
+    for (std::size_t slot = 0; slot < m_textureCache.size(); ++slot) {
+        const CachedTexture& cached = m_textureCache[slot];
+        if (cached.clampS != texture.clampS || cached.clampT != texture.clampT || cached.filter != texture.filter ||
+            cached.layouts.size() != texture.mipmaps.size() + 1 || !sameLayout(cached.layouts[0], texture.layout))
+            continue;
+        bool same = true;
+        for (std::size_t i = 0; same && i < texture.mipmaps.size(); ++i)
+            same = texture.mipmaps[i].pixels != nullptr && sameLayout(cached.layouts[i + 1], texture.mipmaps[i].layout);
+        std::size_t at = 0;
+        for (std::size_t i = 0; same && i < cached.layouts.size(); ++i) {
+            const PixmapLayout& layout = cached.layouts[i];
+            const std::size_t bytes = std::size_t(layout.rowBytes) * (layout.height - 1) +
+                                      std::size_t(layout.width) * bytesPerPixel(layout.pixelType);
+            const void* pixels = i == 0 ? texture.pixels : texture.mipmaps[i - 1].pixels;
+            same = std::memcmp(cached.source.data() + at, pixels, bytes) == 0;
+            at += bytes;
+        }
+        if (same)
+            return std::uint32_t(slot);
+    }
+    return kNotCached;
+}
+
+void OffscreenRenderer::Impl::evictTextures(bool all)
+{
+    std::vector<GLuint> names;
+    std::size_t kept = 0;
+    for (std::size_t slot = 0; slot < m_textureCache.size(); ++slot) {
+        CachedTexture& cached = m_textureCache[slot];
+        if (all || cached.lastFrame != m_frameNumber) {
+            if (cached.name != 0)
+                names.push_back(cached.name);
+            m_textureCacheBytes -= cached.source.size();
+            continue;
+        }
+        if (kept != slot)
+            m_textureCache[kept] = std::move(cached);
+        ++kept;
+    }
+    m_textureCache.resize(kept);
+    if (!names.empty())
+        glDeleteTextures(GLsizei(names.size()), names.data());
+}
+
 RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, std::uint32_t& id)
 {
     if (!m_inFrame)
@@ -1379,6 +1485,23 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
         return invalid("texture is larger than " + std::to_string(kMaxImageSize) + " pixels");
     if (m_textures.size() == kUntextured)
         return invalid("too many textures in one frame");
+    const std::uint32_t slot = findCachedTexture(texture);
+    if (slot != kNotCached && m_textureCache[slot].name != 0) {
+        // Uploaded already: only what drawing asks of it.
+        CachedTexture& cached = m_textureCache[slot];
+        cached.lastFrame = m_frameNumber;
+        BatchTexture known;
+        known.width = texture.layout.width;
+        known.height = texture.layout.height;
+        known.clampS = cached.clampS;
+        known.clampT = cached.clampT;
+        known.filter = cached.filter;
+        known.hasAlpha = cached.hasAlpha;
+        known.cacheSlot = slot;
+        m_textures.push_back(std::move(known));
+        id = std::uint32_t(m_textures.size() - 1);
+        return RenderResult::success();
+    }
     BatchTexture decoded;
     decoded.width = texture.layout.width;
     decoded.height = texture.layout.height;
@@ -1395,6 +1518,33 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
         return mipmaps;
     for (std::size_t i = 3; i < decoded.rgba.size() && !decoded.hasAlpha; i += 4)
         decoded.hasAlpha = decoded.rgba[i] != 255;
+    if (slot != kNotCached) {
+        m_textureCache[slot].lastFrame = m_frameNumber;
+        decoded.cacheSlot = slot;
+    } else {
+        // Kept for the frames after this one (uploaded when first drawn).
+        CachedTexture cached;
+        const auto keep = [&cached](const void* pixels, const PixmapLayout& layout) {
+            const std::size_t bytes = std::size_t(layout.rowBytes) * (layout.height - 1) +
+                                      std::size_t(layout.width) * bytesPerPixel(layout.pixelType);
+            const std::uint8_t* from = static_cast<const std::uint8_t*>(pixels);
+            cached.source.insert(cached.source.end(), from, from + bytes);
+            cached.layouts.push_back(layout);
+        };
+        keep(texture.pixels, texture.layout);
+        for (const TextureLevel& level : texture.mipmaps)
+            keep(level.pixels, level.layout);
+        if (m_textureCacheBytes + cached.source.size() <= kTextureCacheBytes) {
+            cached.clampS = texture.clampS;
+            cached.clampT = texture.clampT;
+            cached.filter = texture.filter;
+            cached.hasAlpha = decoded.hasAlpha;
+            cached.lastFrame = m_frameNumber;
+            m_textureCacheBytes += cached.source.size();
+            m_textureCache.push_back(std::move(cached));
+            decoded.cacheSlot = std::uint32_t(m_textureCache.size() - 1);
+        }
+    }
     m_textures.push_back(std::move(decoded));
     id = std::uint32_t(m_textures.size() - 1);
     return RenderResult::success();

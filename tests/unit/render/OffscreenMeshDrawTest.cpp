@@ -185,5 +185,48 @@ TEST_F(OffscreenMeshDraw, BadMeshesAreRefused)
     });
 }
 
+// Textures are kept on the GPU from frame to frame only while their bytes
+// stay the same: an image changed in place, in the same buffer, is drawn
+// with its new texels, and the old one again when it comes back.
+TEST_F(OffscreenMeshDraw, ATextureChangedBetweenFramesIsDrawnAsItIsNow)
+{
+    // One ARGB32 texel, big-endian: A, R, G, B in memory.
+    std::uint8_t texel[4] = {255, 200, 10, 20};
+    TextureImage image;
+    image.pixels = texel;
+    image.layout.width = 1;
+    image.layout.height = 1;
+    image.layout.rowBytes = 4;
+    const float st[10] = {};
+    const auto drawTextured = [&] {
+        return frame([&] {
+            std::uint32_t id = kNoTexture;
+            ASSERT_TRUE(m_renderer.addTexture(image, id).ok());
+            Shading shading;
+            shading.st = st;
+            shading.texture = id;
+            MeshView mesh = square();
+            mesh.lineCount = 0;
+            mesh.pointCount = 0;
+            ASSERT_TRUE(m_renderer.draw(mesh, shading).ok());
+        });
+    };
+    const std::size_t centre = (8 * kSize + 8) * 4;
+    const auto centreOf = [&](const std::vector<std::uint8_t>& pixels) {
+        return std::array<int, 3>{pixels[centre], pixels[centre + 1], pixels[centre + 2]};
+    };
+    EXPECT_EQ(centreOf(drawTextured()), (std::array<int, 3>{200, 10, 20}));
+    EXPECT_EQ(centreOf(drawTextured()), (std::array<int, 3>{200, 10, 20}));
+    texel[1] = 30;
+    texel[3] = 90;
+    EXPECT_EQ(centreOf(drawTextured()), (std::array<int, 3>{30, 10, 90}));
+    texel[1] = 200;
+    texel[3] = 20;
+    EXPECT_EQ(centreOf(drawTextured()), (std::array<int, 3>{200, 10, 20}));
+    // Clamped instead of repeated is another texture (its wrap mode).
+    image.clampS = true;
+    EXPECT_EQ(centreOf(drawTextured()), (std::array<int, 3>{200, 10, 20}));
+}
+
 } // namespace
 } // namespace q3
