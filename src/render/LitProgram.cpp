@@ -33,7 +33,7 @@ namespace q3 {
 namespace {
 
 // The first source strings: the version, then the variant's switches
-// (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY), both before anything else as
+// (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY, ONE_SIDED), both before anything else as
 // GLSL requires.
 constexpr const char* kVersion = "#version 120\n";
 // The variant's switches (LitProgram::variant), after the version line.
@@ -48,6 +48,8 @@ std::string switches(int variant)
         text += "#define FOG 1\n";
     if ((variant & 8) != 0)
         text += "#define DIRECTIONAL_ONLY 1\n";
+    if ((variant & 16) != 0)
+        text += "#define ONE_SIDED 1\n";
     return text;
 }
 
@@ -192,7 +194,9 @@ void main()
     gl_TexCoord[0] = gl_MultiTexCoord0;
 #ifdef PER_PIXEL
     gl_FrontColor = gl_Color;
+#ifndef ONE_SIDED
     gl_BackColor = gl_Color;
+#endif
 #else
     vec3 n = normalize(worldNormal);
     vec3 lit;
@@ -200,6 +204,7 @@ void main()
     shadeTwo(worldPosition, n, gl_Color.rgb, lit, specular);
     gl_FrontColor = vec4(lit - specular, 1.0);
     gl_FrontSecondaryColor = vec4(specular, 1.0);
+#ifndef ONE_SIDED
     if (flipBack == 1) {
         vec3 backLit;
         vec3 backSpecular;
@@ -211,14 +216,19 @@ void main()
         gl_BackSecondaryColor = gl_FrontSecondaryColor;
     }
 #endif
+#endif
 #else
 #ifdef PER_PIXEL
     gl_FrontColor = gl_Color;
+#ifndef ONE_SIDED
     gl_BackColor = gl_Color;
+#endif
 #else
     vec3 n = normalize(worldNormal);
     gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+#ifndef ONE_SIDED
     gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
+#endif
 #endif
 #endif
     q3FinishVertex();

@@ -27,8 +27,15 @@ public:
     /// likewise fogged or not (SurfaceFinish.h), and lit by directional
     /// (and ambient) lights only or not: the point and spot code (a square
     /// root, divisions, acos, exp, cos per light) ran for every light of
-    /// every vertex too.
-    static constexpr int kVariants = 16;
+    /// every vertex too; and back faces lit with the front's colours or
+    /// their own (SurfaceShading::flipBackFaces): a one-sided variant
+    /// (isOneSided) writes no back colours, so the back faces' lighting is
+    /// not computed and llvmpipe interpolates half the colours; it is drawn
+    /// with GL_VERTEX_PROGRAM_TWO_SIDE off, every face taking the front
+    /// colours, which the two-sided program gives back faces anyway when
+    /// they are not flipped.
+    static constexpr int kVariants = 32;
+    static bool isOneSided(int variant) { return (variant & 16) != 0; }
     static int variant(bool textured, const SurfaceShading& shading, bool fogged, const LightingSetup& lighting)
     {
         bool directionalOnly = true;
@@ -36,7 +43,7 @@ public:
             directionalOnly = directionalOnly && (light.kind == RenderLight::Kind::kAmbient ||
                                                   light.kind == RenderLight::Kind::kDirectional);
         return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0) +
-               (directionalOnly ? 8 : 0);
+               (directionalOnly ? 8 : 0) + (shading.flipBackFaces ? 0 : 16);
     }
     /// Compiles and links variant `variant` in the current context; false
     /// (with the log in error) if the driver refuses it.

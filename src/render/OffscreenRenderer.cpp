@@ -443,6 +443,15 @@ private:
     // The variant a shading is drawn with, built if it is not yet (null,
     // with `result` set, when the driver refuses it).
     LitProgram* litProgram(int variant, RenderResult& result);
+    // Two-sided colours for a lit variant that writes them (on between uses:
+    // the unlit programs write both).
+    static void setTwoSided(int variant)
+    {
+        if (LitProgram::isOneSided(variant))
+            glDisable(GL_VERTEX_PROGRAM_TWO_SIDE);
+        else
+            glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
+    }
     // The frame's textures (addTexture), kept until it ends so that a
     // texture drawn again after others, or after a flush, is neither decoded
     // nor uploaded twice; m_currentTexture is the one useTexture chose
@@ -1253,6 +1262,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                         if (program == nullptr)
                             break;
                         program->use();
+                        setTwoSided(variant);
                         if (!lightsLoaded[variant]) {
                             program->setLighting(m_lighting);
                             lightsLoaded[variant] = true;
@@ -1296,6 +1306,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
         if (finish && result)
             drawTranslucent(result);
         glUseProgram(0);
+        glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
         glDisable(GL_TEXTURE_2D);
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         glBindTexture(GL_TEXTURE_2D, 0);
@@ -2193,6 +2204,7 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
             if (program == nullptr)
                 break;
             program->use();
+            setTwoSided(variant);
             if (!lightsLoaded[variant]) {
                 program->setLighting(m_lighting);
                 lightsLoaded[variant] = true;
