@@ -1435,13 +1435,16 @@ RenderResult OffscreenRenderer::Impl::decodeMipmaps(const TextureImage& texture,
 
 std::uint32_t OffscreenRenderer::Impl::findCachedTexture(const TextureImage& texture) const
 {
-    const auto sameLayout = [](const PixmapLayout& a, const PixmapLayout& b) {
-        return a.width == b.width && a.height == b.height && a.rowBytes == b.rowBytes &&
-               a.pixelType == b.pixelType && a.byteOrder == b.byteOrder;
+    // The caller's enumerations are not validated yet (a mipmap's layout,
+    // the filter): read as numbers (core/EnumValue.h).
+    const auto sameLayout = [](const PixmapLayout& known, const PixmapLayout& given) {
+        return known.width == given.width && known.height == given.height && known.rowBytes == given.rowBytes &&
+               long(known.pixelType) == enumValue(given.pixelType) && long(known.byteOrder) == enumValue(given.byteOrder);
     };
     for (std::size_t slot = 0; slot < m_textureCache.size(); ++slot) {
         const CachedTexture& cached = m_textureCache[slot];
-        if (cached.clampS != texture.clampS || cached.clampT != texture.clampT || cached.filter != texture.filter ||
+        if (cached.clampS != texture.clampS || cached.clampT != texture.clampT ||
+            long(cached.filter) != enumValue(texture.filter) ||
             cached.layouts.size() != texture.mipmaps.size() + 1 || !sameLayout(cached.layouts[0], texture.layout))
             continue;
         bool same = true;
