@@ -46,7 +46,7 @@
 //                  method places every vertex; against raw (the constant
 //                  polylines, a fixed yardstick for comparing builds).
 //
-// Before timing, Frame/N checks with the curves' CurveCache::tessellations
+// Before timing, Frame/N checks with the curves' NURBCurve::tessellations
 // counters that after an edit the first frame subdivides all 1000 curves,
 // and reports how many an unchanged second frame subdivides
 // (evaluated_second_frame: 1000 since retained curves keep no polyline, issue
@@ -150,12 +150,12 @@ public:
             Q3NURBCurve_SetKnot(curve, 4, 1.0f);
     }
 
-    /// The sum of every curve's CurveCache::tessellations.
+    /// The sum of every curve's NURBCurve::tessellations.
     std::uint64_t tessellations() const
     {
         std::uint64_t total = 0;
         for (TQ3GeometryObject curve : m_curves) {
-            const std::uint64_t count = q3::lookup<q3::NURBCurve>(curve, "curve").cache().tessellations;
+            const std::uint64_t count = q3::lookup<q3::NURBCurve>(curve, "curve").tessellations();
             total += count;
         }
         return total;

@@ -205,8 +205,8 @@ void Glu_Surface(benchmark::State& state, std::uint32_t segments)
 {
     Torus torus;
     const nurbs::PatchRef patch = torus.ref();
-    nurbs::SurfaceSubdivision how;
-    how.uSegments = how.vSegments = segments;
+    nurbs::TessellationOptions how;
+    how.c1 = how.c2 = segments;
     nurbs::TessellatedSurface out;
     nurbs::tessellateSurface(patch, how, out);
     const std::size_t expected = 16 * 2 * std::size_t(segments) * segments;

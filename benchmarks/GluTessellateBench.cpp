@@ -167,7 +167,7 @@ std::string describeSink()
 }
 
 // Constant method, 64 segments per span: GLU from the control points against
-// tessellateConstant from the control points (Bezier conversion included,
+// nurbs::tessellate (constant) from the control points (Bezier conversion included,
 // the output's storage reused as GLU reuses its own). Both make the same
 // spans * 64 + 1 distinct vertices, so glu_over_q3 is the speed-up in
 // vertices per second. The errors are the largest distance of a vertex from
@@ -201,7 +201,9 @@ void Glu_Constant(benchmark::State& state, int which, nurbs::KernelIsa isa)
 
     const nurbs::CurveRef ref = refOf(curve);
     nurbs::TessellatedCurve out;
-    nurbs::tessellateConstant(ref, m, out);
+    nurbs::TessellationOptions options;
+    options.c1 = m;
+    nurbs::tessellate(ref, options, out);
     if (out.vertexCount() != spans * m + 1) {
         state.SkipWithError(("Q3 gave " + std::to_string(out.vertexCount()) + " vertices").c_str());
         return;
@@ -217,7 +219,7 @@ void Glu_Constant(benchmark::State& state, int which, nurbs::KernelIsa isa)
                              benchmark::ClobberMemory();
                          }},
                         {"q3", [&] {
-                             nurbs::tessellateConstant(ref, m, out);
+                             nurbs::tessellate(ref, options, out);
                              benchmark::DoNotOptimize(out.vertices.data());
                              benchmark::ClobberMemory();
                          }}});
@@ -271,7 +273,7 @@ nurbs::ProjectiveMapping projectiveOf(const q3bench::Projection& projection)
 }
 
 // Adaptive methods with c1 = arc length / (16 * spans) in the space: Q3's
-// tessellateAdaptive (world: identity mapping; screen: BenchCurves.h's
+// nurbs::tessellate (adaptive; world: identity mapping; screen: BenchCurves.h's
 // projection to pixels) against GLU_OBJECT_PATH_LENGTH / GLU_PATH_LENGTH with
 // the same tolerance. They make different vertex counts, reported with how
 // close each comes to the fewest segments (segments / (L / c1)) and whether
@@ -302,10 +304,12 @@ void Glu_Adaptive(benchmark::State& state, Space space, int which)
     const nurbs::ProjectiveMapping projective = projectiveOf(projection);
     const nurbs::CurveRef ref = refOf(curve);
     nurbs::TessellatedCurve out;
-    const nurbs::ProjectiveMapping identity;
-    const auto tessellate = [&] {
-        nurbs::tessellateAdaptive(ref, c1, space == Space::kWorld ? identity : projective, out);
-    };
+    nurbs::TessellationOptions options;
+    options.method = nurbs::Method::kAdaptive;
+    options.c1 = c1;
+    if (space != Space::kWorld)
+        options.mapping = projective; // the identity for world space
+    const auto tessellate = [&] { nurbs::tessellate(ref, options, out); };
     tessellate();
     if (out.vertexCount() < 2 || out.substituted || out.capped) {
         state.SkipWithError("Q3's adaptive tessellation substituted or capped c1");

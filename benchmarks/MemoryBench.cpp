@@ -17,13 +17,13 @@
 // subdivision with c1 = 64:
 //   created_bytes   per curve after Q3NURBCurve_New (object, copies, registry)
 //   cache_bytes     per curve added by the first frame (expected 0: a retained
-//                   curve keeps no tessellation, src/geometry/CurveCache.h)
+//                   curve keeps no tessellation, src/geometry/NURBCurve.h)
 //   second_frame    per curve added by the second frame (expected 0)
 //   held_over_data  (created + cache) / data bytes: issue 16's target is <= 4
 //   view_scratch_bytes  the view's one curve buffer (View::curveScratchBytes),
 //                   which every frame subdivides into: it belongs to the view,
 //                   not to any curve, and grows to the largest curve drawn
-//   evaluations_per_frame  CurveCache::tessellations added per curve by a frame
+//   evaluations_per_frame  NURBCurve::tessellations added per curve by a frame
 // The timed loop is Q3NURBCurve_New + Q3Object_Dispose of one such curve.
 
 #include "BenchCurves.h"
@@ -213,7 +213,7 @@ void Q3_RetainedCurve(benchmark::State& state, int which)
         return;
     }
 
-    const q3::CurveCache& cache = q3::lookup<q3::NURBCurve>(curves.front(), "curve").cache();
+    const q3::NURBCurve& counted = q3::lookup<q3::NURBCurve>(curves.front(), "curve");
 
     const double k = double(count);
     const double dataBytes = double(curve.numPoints() * sizeof(TQ3RationalPoint4D) + curve.knots.size() * sizeof(float));
@@ -229,7 +229,7 @@ void Q3_RetainedCurve(benchmark::State& state, int which)
     state.counters["held_over_data"] = (createdBytes + cacheBytes) / dataBytes;
     state.counters["view_scratch_bytes"] =
         double(q3::lookup<q3::View>(view.view(), "view").curveScratchBytes());
-    state.counters["evaluations_per_frame"] = double(cache.tessellations.load()) / 2.0;
+    state.counters["evaluations_per_frame"] = double(counted.tessellations()) / 2.0;
 
     const TQ3NURBCurveData data = q3bench::curveData(curve);
     for (auto _ : state) {

@@ -10,7 +10,7 @@
 //                      the curve's cache, Q3Geometry_GetDecomposed rebuilds it
 //                      (Bezier form, tessellation) and makes a PolyLine,
 //                      Q3Object_Dispose frees that; against the kernel,
-//                      tessellateConstant from the control points into
+//                      nurbs::tessellate (constant) from the control points into
 //                      reused storage. Constant method, 64 segments per span.
 //   Q3_Constant        the kernel alone (informational).
 //   Q3_ConstantForm    the same from a prebuilt BezierForm, what a retained
@@ -70,16 +70,27 @@ void finishItems(benchmark::State& state, double vertices)
     state.counters["vertices"] = vertices;
 }
 
+// The constant method at kSegmentsPerSpan, as a view passes it.
+const nurbs::TessellationOptions& constantOptions()
+{
+    static const nurbs::TessellationOptions options = [] {
+        nurbs::TessellationOptions o;
+        o.c1 = q3bench::kSegmentsPerSpan;
+        return o;
+    }();
+    return options;
+}
+
 void Q3_Constant(benchmark::State& state, int which)
 {
     const BenchCurve& curve = curveNamed(which);
     const nurbs::CurveRef ref = refOf(curve);
     nurbs::TessellatedCurve out;
-    nurbs::tessellateConstant(ref, q3bench::kSegmentsPerSpan, out);
+    nurbs::tessellate(ref, constantOptions(), out);
     if (!checkConstant(state, curve, out))
         return;
     for (auto _ : state) {
-        nurbs::tessellateConstant(ref, q3bench::kSegmentsPerSpan, out);
+        nurbs::tessellate(ref, constantOptions(), out);
         benchmark::DoNotOptimize(out.vertices.data());
         benchmark::ClobberMemory();
     }
@@ -91,11 +102,11 @@ void Q3_ConstantForm(benchmark::State& state, int which)
     const BenchCurve& curve = curveNamed(which);
     const nurbs::BezierForm form(refOf(curve));
     nurbs::TessellatedCurve out;
-    nurbs::tessellateConstant(form, q3bench::kSegmentsPerSpan, out);
+    nurbs::tessellate(form, constantOptions(), out);
     if (!checkConstant(state, curve, out))
         return;
     for (auto _ : state) {
-        nurbs::tessellateConstant(form, q3bench::kSegmentsPerSpan, out);
+        nurbs::tessellate(form, constantOptions(), out);
         benchmark::DoNotOptimize(out.vertices.data());
         benchmark::ClobberMemory();
     }
@@ -177,7 +188,7 @@ void Q3_GetDecomposed(benchmark::State& state, int which)
                              Q3Object_Dispose(decomposed);
                          }},
                         {"kernel", [&] {
-                             nurbs::tessellateConstant(ref, q3bench::kSegmentsPerSpan, out);
+                             nurbs::tessellate(ref, constantOptions(), out);
                              benchmark::DoNotOptimize(out.vertices.data());
                              benchmark::ClobberMemory();
                          }}});

@@ -16,6 +16,8 @@ packages=(
   libx11-dev          # Xlib's headers: QD3DDrawContext.h's X11 draw context includes them
                       # (libq3 opens libX11.so.6 with dlopen when a window is drawn into)
   xvfb                # a virtual X server: the X11 draw context tests start their own
+  libxtst6            # XTEST's client library: the q3view test's mouse and key events
+                      # (opened at run time; without it the test falls back to XSendEvent)
   libglm-dev          # vectors and matrices
   libgtest-dev        # tests
   libpng-dev          # golden images and the figures

@@ -4,12 +4,18 @@
 #define Q3LOAD_H
 
 /* Reading every object of a 3DMF file, and printing the library's warnings,
- * shared by q3render and q3convert. */
+ * shared by q3render, q3convert and q3view; fitting a file's camera to an
+ * image and measuring a model, shared by q3render and q3view. */
 
 #include "QD3D.h"
+#include "QD3DCamera.h"
 #include "QD3DErrors.h"
+#include "QD3DGroup.h"
 #include "QD3DIO.h"
 #include "QD3DStorage.h"
+#include "QD3DView.h"
+
+#include <math.h>
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -90,6 +96,87 @@ static void q3load_free(TQ3Object *objects, long count)
     for (i = 0; i < count; ++i)
         Q3Object_Dispose(objects[i]);
     free(objects);
+}
+
+/* A copy of a file's camera whose visible rectangle has the image's aspect
+ * ratio (width / height), accounting for a view port that is not square. */
+static inline TQ3CameraObject q3load_adaptedCamera(TQ3CameraObject fileCamera, float imageAspect)
+{
+    TQ3CameraObject camera = Q3Object_Duplicate(fileCamera);
+    TQ3CameraViewPort viewPort;
+    float aspect;
+    if (camera == NULL || Q3Camera_GetViewPort(camera, &viewPort) != kQ3Success) {
+        if (camera != NULL)
+            Q3Object_Dispose(camera);
+        return NULL;
+    }
+    aspect = imageAspect * viewPort.height / viewPort.width;
+    switch (Q3Camera_GetType(camera)) {
+    case kQ3CameraTypeViewAngleAspect:
+        Q3ViewAngleAspectCamera_SetAspectRatio(camera, aspect);
+        break;
+    case kQ3CameraTypeViewPlane: {
+        TQ3ViewPlaneCameraData data;
+        Q3ViewPlaneCamera_GetData(camera, &data);
+        data.halfWidthAtViewPlane = data.halfHeightAtViewPlane * aspect;
+        Q3ViewPlaneCamera_SetData(camera, &data);
+        break;
+    }
+    case kQ3CameraTypeOrthographic: {
+        TQ3OrthographicCameraData data;
+        float centre, halfWidth;
+        Q3OrthographicCamera_GetData(camera, &data);
+        centre = (data.left + data.right) / 2;
+        halfWidth = fabsf(data.top - data.bottom) / 2 * aspect;
+        if (data.right < data.left)
+            halfWidth = -halfWidth;
+        data.left = centre - halfWidth;
+        data.right = centre + halfWidth;
+        Q3OrthographicCamera_SetData(camera, &data);
+        break;
+    }
+    default:
+        break;
+    }
+    return camera;
+}
+
+/* The exact bounding box of a model in world space; 0 when it cannot be
+ * computed. */
+static inline int q3load_bounds(TQ3ViewObject view, TQ3GroupObject model, TQ3BoundingBox *box)
+{
+    TQ3ViewStatus status;
+    if (Q3View_StartBoundingBox(view, kQ3ComputeBoundsExact) != kQ3Success)
+        return 0;
+    do {
+        Q3Object_Submit(model, view);
+        status = Q3View_EndBoundingBox(view, box);
+    } while (status == kQ3ViewStatusRetraverse);
+    return status == kQ3ViewStatusDone;
+}
+
+/* Takes from a view hints object what the earlier ones did not give: its
+ * camera, its lights (a non-empty light group) and, unless the user gave a
+ * background, its clear colour when its clear method is WithColor. The
+ * camera and lights are new references for the caller. */
+static inline void q3load_readHints(TQ3ViewHintsObject hints, TQ3CameraObject *camera, TQ3GroupObject *lights,
+                                    int *hasBackground, TQ3ColorARGB *background, int backgroundGiven)
+{
+    TQ3DrawContextClearImageMethod method;
+    if (*camera == NULL)
+        Q3ViewHints_GetCamera(hints, camera);
+    if (*lights == NULL && Q3ViewHints_GetLightGroup(hints, lights) == kQ3Success && *lights != NULL) {
+        TQ3GroupPosition first = NULL;
+        if (Q3Group_GetFirstPosition(*lights, &first) != kQ3Success || first == NULL) {
+            Q3Object_Dispose(*lights);
+            *lights = NULL;
+        }
+    }
+    if (!backgroundGiven && !*hasBackground && Q3ViewHints_GetClearImageMethod(hints, &method) == kQ3Success &&
+        method == kQ3ClearMethodWithColor && Q3ViewHints_GetClearImageColor(hints, background) == kQ3Success) {
+        background->a = 1.0f;
+        *hasBackground = 1;
+    }
 }
 
 #endif /* Q3LOAD_H */

@@ -109,49 +109,6 @@ static int usage(void)
     return 1;
 }
 
-/* A copy of a file's camera whose visible rectangle has the image's aspect
- * ratio (width / height), accounting for a view port that is not square. */
-static TQ3CameraObject adaptedCamera(TQ3CameraObject fileCamera, float imageAspect)
-{
-    TQ3CameraObject camera = Q3Object_Duplicate(fileCamera);
-    TQ3CameraViewPort viewPort;
-    float aspect;
-    if (camera == NULL || Q3Camera_GetViewPort(camera, &viewPort) != kQ3Success) {
-        if (camera != NULL)
-            Q3Object_Dispose(camera);
-        return NULL;
-    }
-    aspect = imageAspect * viewPort.height / viewPort.width;
-    switch (Q3Camera_GetType(camera)) {
-    case kQ3CameraTypeViewAngleAspect:
-        Q3ViewAngleAspectCamera_SetAspectRatio(camera, aspect);
-        break;
-    case kQ3CameraTypeViewPlane: {
-        TQ3ViewPlaneCameraData data;
-        Q3ViewPlaneCamera_GetData(camera, &data);
-        data.halfWidthAtViewPlane = data.halfHeightAtViewPlane * aspect;
-        Q3ViewPlaneCamera_SetData(camera, &data);
-        break;
-    }
-    case kQ3CameraTypeOrthographic: {
-        TQ3OrthographicCameraData data;
-        float centre, halfWidth;
-        Q3OrthographicCamera_GetData(camera, &data);
-        centre = (data.left + data.right) / 2;
-        halfWidth = fabsf(data.top - data.bottom) / 2 * aspect;
-        if (data.right < data.left)
-            halfWidth = -halfWidth;
-        data.left = centre - halfWidth;
-        data.right = centre + halfWidth;
-        Q3OrthographicCamera_SetData(camera, &data);
-        break;
-    }
-    default:
-        break;
-    }
-    return camera;
-}
-
 static int parseSubdivision(const char *text, TQ3SubdivisionStyleData *style)
 {
     if (strncmp(text, "constant:", 9) == 0) {
@@ -189,42 +146,6 @@ static TQ3GroupObject defaultLights(const TQ3Vector3D *viewDirection)
     Q3Object_Dispose(a);
     Q3Object_Dispose(d);
     return lights;
-}
-
-static int boundsOf(TQ3ViewObject view, TQ3GroupObject model, TQ3BoundingBox *box)
-{
-    TQ3ViewStatus status;
-    if (Q3View_StartBoundingBox(view, kQ3ComputeBoundsExact) != kQ3Success)
-        return 0;
-    do {
-        Q3Object_Submit(model, view);
-        status = Q3View_EndBoundingBox(view, box);
-    } while (status == kQ3ViewStatusRetraverse);
-    return status == kQ3ViewStatusDone;
-}
-
-/* Takes from a view hints object what the earlier ones did not give: its
- * camera, its lights (a non-empty light group) and, unless the user gave a
- * background, its clear colour when its clear method is WithColor. The
- * camera and lights are new references for the caller. */
-static void readHints(TQ3ViewHintsObject hints, TQ3CameraObject *camera, TQ3GroupObject *lights, int *hasBackground,
-                      TQ3ColorARGB *background, int backgroundGiven)
-{
-    TQ3DrawContextClearImageMethod method;
-    if (*camera == NULL)
-        Q3ViewHints_GetCamera(hints, camera);
-    if (*lights == NULL && Q3ViewHints_GetLightGroup(hints, lights) == kQ3Success && *lights != NULL) {
-        TQ3GroupPosition first = NULL;
-        if (Q3Group_GetFirstPosition(*lights, &first) != kQ3Success || first == NULL) {
-            Q3Object_Dispose(*lights);
-            *lights = NULL;
-        }
-    }
-    if (!backgroundGiven && !*hasBackground && Q3ViewHints_GetClearImageMethod(hints, &method) == kQ3Success &&
-        method == kQ3ClearMethodWithColor && Q3ViewHints_GetClearImageColor(hints, background) == kQ3Success) {
-        background->a = 1.0f;
-        *hasBackground = 1;
-    }
 }
 
 int main(int argc, char **argv)
@@ -321,7 +242,7 @@ int main(int argc, char **argv)
             else if (fileCamera == NULL && Q3Object_IsType(objects[i], kQ3ShapeTypeCamera))
                 fileCamera = objects[i];
             else if (Q3Object_IsType(objects[i], kQ3SharedTypeViewHints))
-                readHints(objects[i], &hintsCamera, &hintsLights, &hintsBackground, &background, backgroundGiven);
+                q3load_readHints(objects[i], &hintsCamera, &hintsLights, &hintsBackground, &background, backgroundGiven);
         }
         if (Q3Group_CountObjects(model, &drawable) == kQ3Success && drawable == 0)
             fprintf(stderr, "warning: %s holds nothing to draw; the image is the background alone\n", in);
@@ -347,12 +268,12 @@ int main(int argc, char **argv)
 
         if (fileCamera != NULL && !fitCamera) {
             TQ3CameraPlacement placement;
-            camera = adaptedCamera(fileCamera, (float)width / (float)height);
+            camera = q3load_adaptedCamera(fileCamera, (float)width / (float)height);
             Q3Camera_GetPlacement(fileCamera, &placement);
             Q3Point3D_Subtract(&placement.pointOfInterest, &placement.cameraLocation, &viewDirection);
             Q3Vector3D_Normalize(&viewDirection, &viewDirection);
         } else {
-            if (boundsOf(view, model, &box) && box.isEmpty == kQ3False) {
+            if (q3load_bounds(view, model, &box) && box.isEmpty == kQ3False) {
                 TQ3Vector3D diagonal;
                 centre.x = (box.min.x + box.max.x) / 2;
                 centre.y = (box.min.y + box.max.y) / 2;

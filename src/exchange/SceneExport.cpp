@@ -261,7 +261,7 @@ public:
             m_scene.nodes[addNode(geometry.classInfo().name)].mesh = int(m_scene.meshes.size() - 1);
             return;
         }
-        const auto key = std::make_tuple(&geometry, geometry.editIndex(), m_materials, subdivisionMeasure().key);
+        const auto key = std::make_tuple(&geometry, geometry.editIndex(), m_materials, subdivisionMeasure().key());
         auto found = m_meshes.find(key);
         if (found == m_meshes.end()) {
             found = m_meshes.emplace(key, int(m_scene.meshes.size())).first;

@@ -8,52 +8,61 @@
 // which keeps them below the view in the layering.
 
 #include "QD3DStyle.h"
-#include "geometry/nurbs/Curve.h"
 #include "geometry/nurbs/Tessellate.h"
 
-#include <array>
-#include <cstddef>
-#include <functional>
+#include <string>
 #include <vector>
 
 namespace q3 {
 
-struct CurveCache;
-
-/// Receives a polyline: vertexCount vertices, x y z each, in the curve's
-/// local coordinates.
-using PolylineUser = std::function<void(const float* xyz, std::size_t vertexCount)>;
-
-/// How a surface is subdivided under the current style (QD3DStyle.h): the
-/// method and its values, and for world and screen space the map from the
-/// geometry's local coordinates to the space lengths are measured in (world
-/// units, or pane pixels after the perspective divide); the map returns false
-/// for a point with no image there (behind the eye, nearer than hither).
-/// `key` holds every value the subdivision depends on, for caches.
+/// How a shape is subdivided under the current style (QD3DStyle.h): the
+/// style's method (for messages) and the tessellation options it resolved to
+/// (nurbs::TessellationOptions: c1 and c2 as checkSubdivisionStyle left them,
+/// constant values truncated; for world and screen space the map from the
+/// geometry's local coordinates to the space lengths are measured in, world
+/// units or pane pixels after the perspective divide; the view's limits).
 struct SubdivisionMeasure {
     TQ3SubdivisionMethod method = kQ3SubdivisionMethodConstant;
-    double c1 = 0.0;
-    double c2 = 0.0;
-    nurbs::PointMapping map;
-    /// Screen space with a window: local -> frustum coordinates, row-major
-    /// (nurbs::SurfaceHull), so that parts outside the view volume can be
-    /// left coarse. Its values are in `key` already (as the map's).
-    bool hasClip = false;
-    std::array<double, 16> clip{};
-    std::vector<double> key;
+    nurbs::TessellationOptions options;
+    /// Where a curve is tessellated into: a buffer the view owns, so that a
+    /// frame of retained curves allocates nothing once it has grown to the
+    /// largest curve; null outside a view (the caller uses its own). Whoever
+    /// tessellates into it uses the polyline before the next tessellation.
+    nurbs::TessellatedCurve* curveScratch = nullptr;
+
+    /// Every value a tessellation under this measure depends on, for caches.
+    /// The mapping's offset (the pane's origin) is left out on purpose: moving
+    /// the pane does not change any length.
+    std::vector<double> key() const;
 };
+
+/// What a tessellation gave in to, for postSubdivisionWarning.
+struct SubdivisionShortfall {
+    /// The shape, as the message names it ("a NURB curve", "an ellipse").
+    std::string shape;
+    /// The cap that was reached, e.g. "kQ3SubdivisionMaxSegmentsPerCurve (1048576) segments".
+    std::string limit;
+    /// What was used instead, e.g. "4 segments per span are used".
+    std::string used;
+    /// Whether c2 is part of the request (constant surfaces).
+    bool withC2 = false;
+};
+
+/// The one place the subdivision warning is worded: "<method> subdivision of
+/// <shape> with c1 = ... [and c2 = ...] would need more than <limit>;
+/// <used>". A shape that caches its tessellation keeps the text to post it
+/// again whenever the cached result is drawn.
+std::string subdivisionWarning(const SubdivisionMeasure& measure, const SubdivisionShortfall& shortfall);
+
+/// Posts subdivisionWarning's text as kQ3WarningParameterOutOfRange.
+void postSubdivisionWarning(const SubdivisionMeasure& measure, const SubdivisionShortfall& shortfall);
 
 class DecomposeContext {
 public:
     virtual ~DecomposeContext() = default;
 
-    /// Subdivides a valid NURB curve under the current style and hands the
-    /// polyline to `use` (view/CurveTessellation.h says how); `cache` is a
-    /// retained curve's own (which counts the subdivisions), or null.
-    virtual void curvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
-                               const PolylineUser& use) const = 0;
-
-    /// The current subdivision, for geometries that tessellate surfaces.
+    /// The current subdivision, for every geometry that subdivides (curves,
+    /// ellipses, patches, quadrics).
     virtual SubdivisionMeasure subdivisionMeasure() const = 0;
 };
 

@@ -30,7 +30,7 @@ void Ellipse::decompose(const DecomposeContext& context, PrimitiveSink& sink) co
     const SubdivisionMeasure measure = context.subdivisionMeasure();
     std::string report;
     withMesh(
-        measure.key,
+        measure.key(),
         [&](Mesh& mesh) {
             const TQ3EllipseData& d = data();
             const quadric::EllipseShape shape{toVec3(d.origin), toVec3(d.majorRadius), toVec3(d.minorRadius),
@@ -42,13 +42,16 @@ void Ellipse::decompose(const DecomposeContext& context, PrimitiveSink& sink) co
                 mesh.addVertex(TQ3Point3D{float(p.x), float(p.y), float(p.z)}, VertexAttributes{});
             mesh.addStrip(0, std::uint32_t(line.points.size()));
             m_report.clear();
-            if (line.reduced)
-                m_report = "the ellipse's subdivision with c1 = " + std::to_string(measure.c1) +
-                           " would need more than kQ3SubdivisionMaxSegmentsPerCurve (" +
-                           std::to_string(limits::kMaxSegmentsPerCurve) + ") segments; " +
-                           (measure.method == kQ3SubdivisionMethodConstant
-                                ? "fewer are used"
-                                : "segments up to " + std::to_string(line.effective) + " long are used");
+            if (line.reduced) {
+                SubdivisionShortfall shortfall;
+                shortfall.shape = "an ellipse";
+                shortfall.limit = "kQ3SubdivisionMaxSegmentsPerCurve (" +
+                                  std::to_string(limits::kMaxSegmentsPerCurve) + ") segments";
+                shortfall.used = measure.method == kQ3SubdivisionMethodConstant
+                                     ? "fewer are used"
+                                     : "segments up to " + std::to_string(line.effective) + " long are used";
+                m_report = subdivisionWarning(measure, shortfall);
+            }
         },
         [&](const Mesh& mesh) {
             report = m_report;

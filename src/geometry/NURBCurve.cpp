@@ -2,9 +2,11 @@
 // Copyright (c) 2026 The Q3 authors
 #include "geometry/NURBCurve.h"
 
+#include "core/Limits.h"
 #include "geometry/DataGeometryImpl.h"
 #include "geometry/PolyLine.h"
 #include "geometry/nurbs/Knots.h"
+#include "geometry/nurbs/Tessellate.h"
 
 #include <cmath>
 #include <string>
@@ -77,24 +79,64 @@ void validateNURBCurveData(const TQ3NURBCurveData* data)
         fail(kQ3ErrorInvalidData, result.message);
 }
 
+namespace {
+
+// The warning for a polyline the caps made coarser than c1 asks for.
+void warnIfShort(const SubdivisionMeasure& measure, const nurbs::TessellatedCurve& result)
+{
+    if (!result.substituted && !result.capped)
+        return;
+    const std::size_t cap = measure.options.maxSegments;
+    SubdivisionShortfall shortfall;
+    shortfall.shape = "a NURB curve";
+    shortfall.limit = cap < limits::kMaxSegmentsPerCurve
+                          ? "the " + std::to_string(cap) +
+                                " segments a curve gets in this pane (kQ3SubdivisionViewSegmentsPerPixel per pixel "
+                                "of its width plus height)"
+                          : "kQ3SubdivisionMaxSegmentsPerCurve (" + std::to_string(limits::kMaxSegmentsPerCurve) +
+                                ") segments";
+    if (measure.options.method == nurbs::Method::kConstant)
+        shortfall.used = std::to_string(std::uint64_t(result.effectiveValue)) + " segments per span are used";
+    else if (result.substituted)
+        shortfall.used = "segments up to " + std::to_string(result.effectiveValue) + " long are used";
+    else
+        shortfall.used = "some segments are longer than c1";
+    postSubdivisionWarning(measure, shortfall);
+}
+
+} // namespace
+
+const nurbs::TessellatedCurve& NURBCurve::tessellate(const SubdivisionMeasure& measure, bool count,
+                                                     nurbs::TessellatedCurve& own) const
+{
+    nurbs::TessellatedCurve& result = measure.curveScratch != nullptr ? *measure.curveScratch : own;
+    nurbs::tessellate(curve(), measure.options, result);
+    if (count)
+        m_tessellations.fetch_add(1, std::memory_order_relaxed);
+    return result;
+}
+
 void NURBCurve::decompose(const DecomposeContext& context, PrimitiveSink& sink) const
 {
-    context.curvePolyline(curve(), borrowed() ? nullptr : &m_cache, [&](const float* xyz, std::size_t count) {
-        static const std::uint32_t kFirst = 0;
-        const Strip strip{0, static_cast<std::uint32_t>(count)};
-        MeshView mesh;
-        mesh.positions = xyz;
-        mesh.vertexCount = count;
-        // A curve that subdivides to one point is drawn as that point.
-        if (count == 1) {
-            mesh.points = &kFirst;
-            mesh.pointCount = 1;
-        } else {
-            mesh.strips = &strip;
-            mesh.stripCount = 1;
-        }
-        sink.draw(mesh, attributeSet());
-    });
+    const SubdivisionMeasure measure = context.subdivisionMeasure();
+    nurbs::TessellatedCurve own;
+    const nurbs::TessellatedCurve& polyline = tessellate(measure, !borrowed(), own);
+    static const std::uint32_t kFirst = 0;
+    const std::size_t count = polyline.vertexCount();
+    const Strip strip{0, static_cast<std::uint32_t>(count)};
+    MeshView mesh;
+    mesh.positions = polyline.vertices.data();
+    mesh.vertexCount = count;
+    // A curve that subdivides to one point is drawn as that point.
+    if (count == 1) {
+        mesh.points = &kFirst;
+        mesh.pointCount = 1;
+    } else {
+        mesh.strips = &strip;
+        mesh.stripCount = 1;
+    }
+    sink.draw(mesh, attributeSet());
+    warnIfShort(measure, polyline);
 }
 
 void NURBCurve::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const
@@ -108,15 +150,18 @@ void NURBCurve::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) 
 
 Ref<Geometry> NURBCurve::decomposed(const DecomposeContext& context) const
 {
+    const SubdivisionMeasure measure = context.subdivisionMeasure();
+    nurbs::TessellatedCurve own;
+    const nurbs::TessellatedCurve& polyline = tessellate(measure, true, own);
+    const float* xyz = polyline.vertices.data();
     Ref<PolyLine> result;
-    context.curvePolyline(curve(), &m_cache, [&](const float* xyz, std::size_t count) {
-        if (count == 1) {
-            const float twice[6] = {xyz[0], xyz[1], xyz[2], xyz[0], xyz[1], xyz[2]};
-            result = PolyLine::fromPoints(twice, 2, attributeSet());
-        } else {
-            result = PolyLine::fromPoints(xyz, count, attributeSet());
-        }
-    });
+    if (polyline.vertexCount() == 1) {
+        const float twice[6] = {xyz[0], xyz[1], xyz[2], xyz[0], xyz[1], xyz[2]};
+        result = PolyLine::fromPoints(twice, 2, attributeSet());
+    } else {
+        result = PolyLine::fromPoints(xyz, polyline.vertexCount(), attributeSet());
+    }
+    warnIfShort(measure, polyline);
     return result;
 }
 

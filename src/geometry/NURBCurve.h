@@ -3,9 +3,12 @@
 #pragma once
 
 #include "QD3DGeometry.h"
-#include "geometry/CurveCache.h"
 #include "geometry/DataGeometry.h"
+#include "geometry/Decompose.h"
 #include "geometry/nurbs/Curve.h"
+
+#include <atomic>
+#include <cstdint>
 
 namespace q3 {
 
@@ -26,7 +29,11 @@ nurbs::CurveRef curveRefOf(const TQ3NURBCurveData& data);
 /// A NURB curve. Invariant: its order, control points and knots always
 /// satisfy validateNURBCurveData; every edit is checked on a copy first and
 /// bumps the edit index only once it has been applied. It keeps no
-/// tessellation (CurveCache): each pass subdivides it again.
+/// tessellation, only a count: a retained curve may hold at most 4 times its
+/// data (issue 16), and even a 4-point Bezier's 65-vertex polyline (780
+/// bytes) is 8 times its 96 data bytes, so every pass subdivides it again
+/// into the view's scratch buffer (SubdivisionMeasure::curveScratch), which
+/// the renderer copies into its batch.
 class NURBCurve final : public DataGeometry<NURBCurve, TQ3NURBCurveData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3GeometryTypeNURBCurve;
@@ -40,7 +47,9 @@ public:
 
     const ClassInfo& classInfo() const override { return kNURBCurveClass; }
     /// The polyline the context's subdivision gives (one point for a curve
-    /// that subdivides to a single point).
+    /// that subdivides to a single point); kQ3WarningParameterOutOfRange when
+    /// a cap (kQ3SubdivisionMaxSegmentsPerCurve, or in a view for world and
+    /// screen space kQ3SubdivisionViewSegmentsPerPixel) made it coarser.
     void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
     /// The control points projected to 3D (x/w, y/w, z/w): the article's
     /// bound, which the curve never leaves (convex hull property).
@@ -55,10 +64,29 @@ public:
     void setKnot(unsigned long index, float value);
 
     nurbs::CurveRef curve() const { return curveRefOf(data()); }
-    CurveCache& cache() const { return m_cache; }
+    /// How many times this retained curve has been subdivided (once per pass
+    /// that drew or decomposed it); tests and benchmarks read it.
+    std::uint64_t tessellations() const { return m_tessellations.load(std::memory_order_relaxed); }
 
 private:
-    mutable CurveCache m_cache;
+    /// Tessellates under the context's subdivision into its scratch (or
+    /// `own`), counts it, and returns the polyline; the caller posts the
+    /// warning (warnIfShort) once it has used it.
+    const nurbs::TessellatedCurve& tessellate(const SubdivisionMeasure& measure, bool count,
+                                              nurbs::TessellatedCurve& own) const;
+
+    /// Atomic because views on several threads may draw the same retained
+    /// curve; a copy (Duplicate) starts from the original's count.
+    struct Counter : std::atomic<std::uint64_t> {
+        Counter() : std::atomic<std::uint64_t>(0) {}
+        Counter(const Counter& other) : std::atomic<std::uint64_t>(other.load(std::memory_order_relaxed)) {}
+        Counter& operator=(const Counter& other)
+        {
+            store(other.load(std::memory_order_relaxed), std::memory_order_relaxed);
+            return *this;
+        }
+    };
+    mutable Counter m_tessellations;
 };
 
 } // namespace q3

@@ -297,30 +297,27 @@ nurbs::PatchRef patchRefOf(const TQ3NURBPatchData& data)
 
 namespace {
 
-const char* methodName(TQ3SubdivisionMethod method)
+// The warning for triangles the cap made coarser than the style asks for;
+// empty when they are not.
+std::string warningFor(const SubdivisionMeasure& measure, const nurbs::TessellatedSurface& result)
 {
-    return method == kQ3SubdivisionMethodWorldSpace ? "world-space" : "screen-space";
-}
-
-// Why the triangles are not what the style asked for; empty when they are.
-std::string report(const SubdivisionMeasure& measure, const nurbs::TessellatedSurface& result)
-{
-    const std::string cap = " would need more than kQ3SubdivisionMaxTrianglesPerPatch (" +
-                            std::to_string(limits::kMaxTrianglesPerPatch) + ") triangles";
-    if (measure.method == kQ3SubdivisionMethodConstant) {
-        if (!result.substituted)
-            return {};
-        return format("constant subdivision of a NURB patch with c1 = %s and c2 = %s", num(measure.c1).c_str(),
-                      num(measure.c2).c_str()) +
-               cap + format("; %u x %u segments per pair of spans are used", result.uSegments, result.vSegments);
+    const bool constant = measure.options.method == nurbs::Method::kConstant;
+    if (!result.substituted && (constant || !result.capped))
+        return {};
+    SubdivisionShortfall shortfall;
+    shortfall.shape = "a NURB patch";
+    shortfall.withC2 = constant;
+    shortfall.limit =
+        "kQ3SubdivisionMaxTrianglesPerPatch (" + std::to_string(limits::kMaxTrianglesPerPatch) + ") triangles";
+    if (constant)
+        shortfall.used = format("%u x %u segments per pair of spans are used", result.uSegments, result.vSegments);
+    else if (result.substituted)
+        shortfall.used = "edges up to " + num(result.effectiveValue) + " long are used";
+    else {
+        shortfall.limit += " (or splits finer than the parameter grid)";
+        shortfall.used = "some edges are longer than c1";
     }
-    const std::string asked =
-        std::string(methodName(measure.method)) + " subdivision of a NURB patch with c1 = " + num(measure.c1);
-    if (result.substituted)
-        return asked + cap + "; edges up to " + num(result.effectiveValue) + " long are used";
-    if (result.capped)
-        return asked + cap + " (or splits finer than the parameter grid); some edges are longer than c1";
-    return {};
+    return subdivisionWarning(measure, shortfall);
 }
 
 } // namespace
@@ -330,20 +327,10 @@ void NURBPatch::decompose(const DecomposeContext& context, PrimitiveSink& sink) 
     const SubdivisionMeasure measure = context.subdivisionMeasure();
     std::string warning;
     withMesh(
-        measure.key,
+        measure.key(),
         [&](Mesh& mesh) {
-            nurbs::SurfaceSubdivision how;
-            if (measure.method == kQ3SubdivisionMethodConstant) {
-                how.uSegments = std::uint32_t(std::max(1.0, std::min(measure.c1, 4294967295.0)));
-                how.vSegments = std::uint32_t(std::max(1.0, std::min(measure.c2, 4294967295.0)));
-            } else {
-                how.adaptive = true;
-                how.maxEdge = measure.c1;
-                how.mapping = measure.map;
-                how.hasClip = measure.hasClip;
-                how.clip = measure.clip;
-            }
-            const nurbs::TessellatedSurface result = nurbs::tessellateSurface(patchRefOf(data()), how);
+            nurbs::TessellatedSurface result;
+            nurbs::tessellateSurface(patchRefOf(data()), measure.options, result);
             if (result.crossing) {
                 const std::string loops =
                     result.crossingLoop == result.crossingOther
@@ -354,7 +341,7 @@ void NURBPatch::decompose(const DecomposeContext& context, PrimitiveSink& sink) 
                                               num(result.crossingV) +
                                               "); trim loops must not cross, so the patch is not drawn");
             }
-            m_warning = report(measure, result);
+            m_warning = warningFor(measure, result);
             const std::size_t n = result.vertexCount();
             mesh.reserveVertices(n);
             for (std::size_t i = 0; i < n; ++i) {

@@ -10,6 +10,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace q3 {
@@ -104,14 +105,14 @@ quadric::Subdivision subdivisionFor(const SubdivisionMeasure& measure, std::size
 {
     quadric::Subdivision s;
     s.maxTriangles = maxTriangles;
-    s.c1 = measure.c1;
-    s.c2 = measure.c2;
-    if (measure.method == kQ3SubdivisionMethodConstant) {
+    s.c1 = measure.options.c1;
+    s.c2 = measure.options.c2;
+    if (measure.options.method == nurbs::Method::kConstant) {
         s.method = quadric::Method::kConstant;
         return s;
     }
     s.method = quadric::Method::kMeasured;
-    s.map = [map = measure.map](const quadric::Vec3& local, quadric::Vec3& mapped) {
+    s.map = [map = measure.options.mapping](const quadric::Vec3& local, quadric::Vec3& mapped) {
         nurbs::Point3 out;
         if (!map(nurbs::Point3{local.x, local.y, local.z}, out))
             return false;
@@ -141,15 +142,15 @@ std::string buildSurface(Mesh& mesh, const quadric::Patches& patches, const Subd
     mesh.edgesFromTriangles();
     if (!t.reduced)
         return {};
-    const std::string limit = " would need more than kQ3SubdivisionMaxTrianglesPerSurface (" +
-                              std::to_string(limits::kMaxTrianglesPerSurface) + ") triangles";
-    if (measure.method == kQ3SubdivisionMethodConstant)
-        return std::string("the ") + shape + "'s constant subdivision with c1 = " + number(measure.c1) +
-               " and c2 = " + number(measure.c2) + limit + "; c1 = " + number(t.effectiveC1) +
-               " and c2 = " + number(t.effectiveC2) + " are used";
-    const char* space = measure.method == kQ3SubdivisionMethodWorldSpace ? "world-space" : "screen-space";
-    return std::string("the ") + shape + "'s " + space + " subdivision with c1 = " + number(measure.c1) + limit +
-           "; edges up to " + number(t.effectiveC1) + " long are used";
+    SubdivisionShortfall shortfall;
+    shortfall.shape = std::string(std::strchr("aeiou", shape[0]) != nullptr ? "an " : "a ") + shape;
+    shortfall.limit =
+        "kQ3SubdivisionMaxTrianglesPerSurface (" + std::to_string(limits::kMaxTrianglesPerSurface) + ") triangles";
+    shortfall.withC2 = measure.options.method == nurbs::Method::kConstant;
+    shortfall.used = shortfall.withC2 ? "c1 = " + number(t.effectiveC1) + " and c2 = " + number(t.effectiveC2) +
+                                            " are used"
+                                      : "edges up to " + number(t.effectiveC1) + " long are used";
+    return subdivisionWarning(measure, shortfall);
 }
 
 void ellipseBoxCorners(const quadric::Vec3& centre, const quadric::Vec3& x, const quadric::Vec3& y,

@@ -179,7 +179,7 @@ public:
             return;
         const SubdivisionMeasure measure = context.subdivisionMeasure();
         const std::vector<const AttributeSet*> sets = static_cast<const Derived&>(*this).partSets();
-        std::vector<double> key = measure.key;
+        std::vector<double> key = measure.key();
         appendEditIndices(key, sets);
         std::string report;
         this->withMesh(

@@ -26,19 +26,19 @@
 
 #if Q3_HAVE_EGL
 
+#include "render/AppGlContext.h"
+#include "render/DynamicLibrary.h"
 #include "render/GlApi.h"
 #include "render/GlContext.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
-#include <dlfcn.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace q3 {
@@ -79,20 +79,8 @@ const EglLibrary& egl()
 {
     static const EglLibrary library = [] {
         EglLibrary l;
-        void* handle = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
-        if (handle == nullptr) {
-            const char* why = dlerror();
-            l.error = std::string("cannot load libEGL.so.1: ") + (why ? why : "unknown reason");
-            return l;
-        }
-        bool all = true;
-        auto bind = [&](auto& function, const char* name) {
-            function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(dlsym(handle, name));
-            if (function == nullptr && all) {
-                all = false;
-                l.error = std::string("libEGL.so.1 has no ") + name;
-            }
-        };
+        DynamicLibrary file("libEGL.so.1");
+        auto bind = [&](auto& function, const char* name) { file.bind(function, name); };
         bind(l.GetProcAddress, "eglGetProcAddress");
         bind(l.GetError, "eglGetError");
         bind(l.QueryString, "eglQueryString");
@@ -110,8 +98,10 @@ const EglLibrary& egl()
         bind(l.GetCurrentContext, "eglGetCurrentContext");
         bind(l.GetCurrentDisplay, "eglGetCurrentDisplay");
         bind(l.GetCurrentSurface, "eglGetCurrentSurface");
-        if (!all)
+        if (!file.ok()) {
+            l.error = file.error();
             return l;
+        }
         const char* extensions = l.QueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
         const std::string client = extensions != nullptr ? extensions : "";
         for (const char* needed : {"EGL_EXT_platform_device", "EGL_EXT_device_enumeration",
@@ -244,6 +234,8 @@ public:
     bool makeCurrent(std::uint8_t*) override
     {
         const EglLibrary& l = egl();
+        // GLVND refuses an EGL context while a GLX one is current.
+        m_foreign = releaseWindowSystemContext(false, true);
         m_previousApi = l.QueryAPI();
         m_previousContext = l.GetCurrentContext();
         m_previousDisplay = l.GetCurrentDisplay();
@@ -263,6 +255,8 @@ public:
             l.BindAPI(m_previousApi);
         }
         m_previousContext = EGL_NO_CONTEXT;
+        restoreWindowSystemContext(m_foreign);
+        m_foreign = WindowSystemBinding{};
     }
 
     // glReadPixels waits for the drawing; OpenGL's rows start at the bottom.
@@ -287,6 +281,7 @@ private:
     EGLDisplay m_previousDisplay = EGL_NO_DISPLAY;
     EGLSurface m_previousDraw = EGL_NO_SURFACE;
     EGLSurface m_previousRead = EGL_NO_SURFACE;
+    WindowSystemBinding m_foreign;
 };
 
 } // namespace

@@ -54,6 +54,7 @@
     X(CreateShader) \
     X(CullFace) \
     X(DeleteBuffers) \
+    X(DeleteFramebuffers) \
     X(DeleteProgram) \
     X(DeleteShader) \
     X(DeleteTextures) \
@@ -70,6 +71,7 @@
     X(End) \
     X(Finish) \
     X(FramebufferRenderbuffer) \
+    X(FramebufferTexture2D) \
     X(FrontFace) \
     X(GenBuffers) \
     X(GenFramebuffers) \
@@ -95,6 +97,7 @@
     X(PixelStorei) \
     X(PointSize) \
     X(PolygonMode) \
+    X(ReadBuffer) \
     X(ReadPixels) \
     X(RenderbufferStorageMultisample) \
     X(Scissor) \

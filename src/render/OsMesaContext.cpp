@@ -12,11 +12,12 @@
 
 #if Q3_HAVE_OSMESA
 
+#include "render/AppGlContext.h"
+#include "render/DynamicLibrary.h"
 #include "render/GlApi.h"
 #include "render/GlContext.h"
 
 #include <GL/osmesa.h>
-#include <dlfcn.h>
 
 #include <string>
 
@@ -47,20 +48,8 @@ const OsMesaLibrary& osMesa()
 {
     static const OsMesaLibrary library = [] {
         OsMesaLibrary l;
-        void* handle = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
-        if (handle == nullptr) {
-            const char* why = dlerror();
-            l.error = std::string("cannot load libOSMesa.so.8: ") + (why ? why : "unknown reason");
-            return l;
-        }
-        bool all = true;
-        auto bind = [&](auto& function, const char* name) {
-            function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(dlsym(handle, name));
-            if (function == nullptr && all) {
-                all = false;
-                l.error = std::string("libOSMesa.so.8 has no ") + name;
-            }
-        };
+        DynamicLibrary file("libOSMesa.so.8");
+        auto bind = [&](auto& function, const char* name) { file.bind(function, name); };
         bind(l.CreateContextAttribs, "OSMesaCreateContextAttribs");
         bind(l.DestroyContext, "OSMesaDestroyContext");
         bind(l.MakeCurrent, "OSMesaMakeCurrent");
@@ -69,8 +58,10 @@ const OsMesaLibrary& osMesa()
         bind(l.GetIntegerv, "OSMesaGetIntegerv");
         bind(l.PixelStore, "OSMesaPixelStore");
         bind(l.GetProcAddress, "OSMesaGetProcAddress");
-        if (!all)
+        if (!file.ok()) {
+            l.error = file.error();
             return l;
+        }
         const char* missing = nullptr;
         if (!l.gl.load(osMesaProc, &l, missing)) {
             l.error = std::string("OSMesaGetProcAddress does not know ") + missing;
@@ -99,7 +90,11 @@ public:
     bool makeCurrent(std::uint8_t* image) override
     {
         const OsMesaLibrary& l = osMesa();
-        m_previous = l.GetCurrentContext();
+        // With an application's EGL or GLX context current, Mesa's current
+        // context is that one, which OSMesaGetCurrentContext would take for
+        // an OSMesa context: it is released instead, and bound again after.
+        m_foreign = releaseWindowSystemContext(true, true);
+        m_previous = m_foreign.kind == WindowSystemBinding::Kind::kNone ? l.GetCurrentContext() : nullptr;
         if (m_previous != nullptr) {
             GLint format = 0;
             if (!l.GetColorBuffer(m_previous, &m_previousWidth, &m_previousHeight, &format, &m_previousBuffer))
@@ -118,6 +113,8 @@ public:
         else
             l.MakeCurrent(nullptr, nullptr, 0, 0, 0);
         m_previous = nullptr;
+        restoreWindowSystemContext(m_foreign);
+        m_foreign = WindowSystemBinding{};
     }
 
     // glFinish makes OSMesa copy its framebuffer into the bound image.
@@ -135,6 +132,7 @@ private:
     GLint m_previousWidth = 0;
     GLint m_previousHeight = 0;
     GLint m_previousType = GL_UNSIGNED_BYTE;
+    WindowSystemBinding m_foreign;
 };
 
 } // namespace

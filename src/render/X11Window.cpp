@@ -165,6 +165,18 @@ struct Channel {
     }
 };
 
+// Xlib's name for the host's byte order, which a client's XImage has.
+constexpr int kHostByteOrder = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ ? LSBFirst : MSBFirst;
+
+// Whether a window of this visual and depth takes the frame's 0xAARRGGBB
+// words unchanged: 8 bits a channel in the usual places, depth 24 (at depth
+// 32 the top byte would be the window's alpha).
+bool holdsHostPixels(const Visual& visual, int depth)
+{
+    return depth == 24 && visual.red_mask == 0xFF0000ul && visual.green_mask == 0x00FF00ul &&
+           visual.blue_mask == 0x0000FFul;
+}
+
 // The attributes of a window Q3 can draw into, with the trap set.
 RenderResult windowAttributes(const XlibApi& api, Display* display, Window window, XWindowAttributes& attributes,
                               ErrorTrap& trap)
@@ -250,6 +262,29 @@ RenderResult writeWindow(const NativeWindow& window, const PixelRect& rect, cons
     RenderResult result = windowAttributes(*api, display, window.drawable, attributes, trap);
     if (!result)
         return result;
+    if (holdsHostPixels(*attributes.visual, attributes.depth)) {
+        // The frame's 0xAARRGGBB words are the window's pixels as they are
+        // (the server ignores the top byte at depth 24): XPutImage sends
+        // them from where they lie, with no copy or conversion (a copy
+        // through XPutPixel took a third of an 800 x 600 frame's time).
+        const std::uint32_t* first = pixels + std::size_t(rect.y) * rowPixels + std::size_t(rect.x);
+        XImage* direct = api->createImage(display, attributes.visual, unsigned(attributes.depth), ZPixmap, 0,
+                                          reinterpret_cast<char*>(const_cast<std::uint32_t*>(first)),
+                                          unsigned(rect.width), unsigned(rect.height), 32, int(rowPixels * 4));
+        if (direct == nullptr)
+            return RenderResult::failure(RenderStatus::kOutOfMemory, "XCreateImage failed");
+        if (direct->bits_per_pixel == 32 && direct->byte_order == kHostByteOrder) {
+            GC gc = api->createGC(display, window.drawable, 0, nullptr);
+            api->putImage(display, window.drawable, gc, direct, 0, 0, rect.x, rect.y, unsigned(rect.width),
+                          unsigned(rect.height));
+            api->freeGC(display, gc);
+            direct->data = nullptr; // the caller's pixels: not XDestroyImage's to free
+            XDestroyImage(direct);
+            return trap.check("XPutImage");
+        }
+        direct->data = nullptr;
+        XDestroyImage(direct);
+    }
     XImage* image = api->createImage(display, attributes.visual, unsigned(attributes.depth), ZPixmap, 0, nullptr,
                                      unsigned(rect.width), unsigned(rect.height), 32, 0);
     if (image == nullptr)

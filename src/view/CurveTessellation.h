@@ -3,7 +3,6 @@
 #pragma once
 
 #include "QD3DStyle.h"
-#include "geometry/CurveCache.h"
 #include "geometry/Decompose.h"
 #include "geometry/nurbs/Curve.h"
 #include "base/RenderResult.h"
@@ -14,10 +13,6 @@
 #include <optional>
 
 namespace q3 {
-
-namespace nurbs {
-struct TessellatedCurve;
-}
 
 /// Where a loop's image goes: the camera's world-to-frustum matrix and the
 /// pixels of the pane it maps onto (y down, as QuickDraw 3D panes are).
@@ -53,32 +48,16 @@ struct TessellationSetting {
 /// kQ3SubdivisionMaxSegmentsPerCurve.
 std::size_t viewSegmentCap(const PixelRect& pane);
 
-/// Subdivides a valid curve as the setting says and hands the polyline to
-/// `use`. The methods are the article's ("CONTROLLING SUBDIVISION"):
-/// constant, c1 segments per non-empty knot span; world space, no segment
-/// longer than c1 after the local-to-world transform; screen space, no
-/// segment longer than c1 pixels after local -> world -> frustum (with the
-/// perspective divide) -> pane.
-///
-/// Every call subdivides, retained curve or not: a retained curve keeps no
-/// polyline (CurveCache says why); its `cache`, when given, only counts the
-/// call in `tessellations`. The polyline is written into `scratch` when
-/// given (a view passes one it owns, so a frame of retained curves allocates
-/// nothing once the scratch has grown to the largest curve) and into a
-/// buffer of the call's own otherwise; `use` must not keep the pointer.
-///
-/// When the subdivision had to give in to its cap (kQ3SubdivisionMaxSegmentsPerCurve,
-/// or in a view for world and screen space the pane's cap set by
-/// kQ3SubdivisionViewSegmentsPerPixel, both in QD3DStyle.h),
-/// kQ3WarningParameterOutOfRange is posted after `use` returns.
-void withCurvePolyline(const nurbs::CurveRef& curve, CurveCache* cache,
-                       const TessellationSetting& setting, const PolylineUser& use,
-                       nurbs::TessellatedCurve* scratch = nullptr);
-
-/// What a setting means for surfaces (geometry/Decompose.h): the method, c1
-/// and c2 as checkSubdivisionStyle left them (constant values truncated),
-/// and for world and screen space the same local-to-measured map and cache
-/// key that curves use. Screen space without a window is world space.
+/// The one place a setting becomes tessellation options (QD3DStyle.h, "CONTROLLING
+/// SUBDIVISION"): constant, c1 segments per non-empty knot span (c1 and c2
+/// truncated; checkSubdivisionStyle already substituted values out of range);
+/// world space, no segment longer than c1 after the local-to-world transform;
+/// screen space, no segment longer than c1 pixels after local -> world ->
+/// frustum (with the perspective divide) -> pane, or world space without a
+/// window. With a window: world- and screen-space curves get at most
+/// viewSegmentCap(pane) segments, the clip is the local-to-frustum map,
+/// screen-space surfaces leave what it cannot show coarse, and with
+/// cullOutsideView curves cull spans outside it.
 SubdivisionMeasure measureFor(const TessellationSetting& setting);
 
 } // namespace q3

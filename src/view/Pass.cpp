@@ -104,22 +104,10 @@ TessellationSetting Pass::tessellationSetting() const
     return setting;
 }
 
-void Pass::curvePolyline(const nurbs::CurveRef& curve, CurveCache* cache, const PolylineUser& use) const
-{
-    withCurvePolyline(curve, cache, tessellationSetting(), use, m_curveScratch);
-}
-
 SubdivisionMeasure Pass::subdivisionMeasure() const
 {
-    const TessellationSetting setting = tessellationSetting();
-    SubdivisionMeasure measure = measureFor(setting);
-    if (measure.method == kQ3SubdivisionMethodScreenSpace && setting.window) {
-        const Matrix m = then(setting.localToWorld, setting.window->worldToFrustum);
-        measure.hasClip = true;
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j)
-                measure.clip[4 * i + j] = m[j][i];
-    }
+    SubdivisionMeasure measure = measureFor(tessellationSetting());
+    measure.curveScratch = m_curveScratch;
     return measure;
 }
 

@@ -71,9 +71,9 @@ public:
     /// Whether curves may skip subdividing what the window cannot show
     /// (TessellationSetting::cullOutsideView): rendering loops only.
     void allowCurveCulling(bool allow) { m_cullCurves = allow; }
-    /// Where curves are subdivided into (withCurvePolyline's scratch): the
-    /// view's own buffer, which outlives the pass; null gives each curve a
-    /// buffer of its own.
+    /// Where curves are subdivided into (SubdivisionMeasure::curveScratch):
+    /// the view's own buffer, which outlives the pass; null gives each curve
+    /// a buffer of its own.
     void useCurveScratch(nurbs::TessellatedCurve* scratch) { m_curveScratch = scratch; }
 
     void push();
@@ -90,7 +90,6 @@ public:
     /// What a geometry submitted now would be subdivided under.
     TessellationSetting tessellationSetting() const;
 
-    void curvePolyline(const nurbs::CurveRef& curve, CurveCache* cache, const PolylineUser& use) const override;
     SubdivisionMeasure subdivisionMeasure() const override;
 
     /// Q3Geometry_GetDecomposed: what the geometry submitted now would be

@@ -8,11 +8,13 @@
 #include "geometry/nurbs/Tessellate.h"
 #include "group/Group.h"
 #include "light/Light.h"
+#include "base/GlFramebuffer.h"
 #include "base/RenderTarget.h"
 #include "render/Renderer.h"
 #include "view/BoundsPass.h"
 #include "view/Camera.h"
 #include "view/DrawContext.h"
+#include "view/GLDrawContext.h"
 #include "view/Pick.h"
 #include "view/PickPass.h"
 #include "view/RenderPass.h"
@@ -85,10 +87,15 @@ PixmapDrawContext& pixmapContext(DrawContext& context)
     return static_cast<PixmapDrawContext&>(context);
 }
 
-// The size of the image a draw context holds: the pixmap's, or the X
-// window's as the server reports it now (kQ3ErrorX11Error when it cannot).
+// The size of the image a draw context holds: the pixmap's, the X
+// window's as the server reports it now (kQ3ErrorX11Error when it cannot),
+// or the GL framebuffer's the application set.
 std::pair<std::uint32_t, std::uint32_t> imageSize(DrawContext& context)
 {
+    if (context.isType(kQ3DrawContextTypeGL)) {
+        const GLDrawContext& gl = static_cast<GLDrawContext&>(context);
+        return {gl.width(), gl.height()};
+    }
     if (context.isType(kQ3DrawContextTypeX11)) {
         std::uint32_t width = 0, height = 0;
         const RenderResult result = windowSize(static_cast<WindowDrawContext&>(context).window(), width, height);
@@ -111,7 +118,7 @@ std::optional<PixelRect> subdivisionRect(DrawContext& context)
             return std::nullopt;
         return context.drawRect(width, height);
     }
-    if (!context.isType(kQ3DrawContextTypePixmap))
+    if (!context.isType(kQ3DrawContextTypePixmap) && !context.isType(kQ3DrawContextTypeGL))
         return std::nullopt;
     const auto [width, height] = imageSize(context);
     return context.drawRect(width, height);
@@ -277,6 +284,16 @@ void View::startRendering()
         destination.layout = windowLayout(width, height);
         m_windowPixels.assign(std::size_t(width) * height, 0);
         destination.image = m_windowPixels.data();
+    } else if (context.isType(kQ3DrawContextTypeGL)) {
+        // Likewise for the application's framebuffer, through its context.
+        const RenderResult current = checkCurrentGlContext();
+        if (!current)
+            fail(kQ3ErrorBadDrawContext, "the GL draw context: " + current.message);
+        const auto [width, height] = imageSize(*m_drawContext);
+        destination.appGl = true;
+        destination.layout = windowLayout(width, height);
+        m_windowPixels.assign(std::size_t(width) * height, 0);
+        destination.image = m_windowPixels.data();
     } else {
         const PixmapDrawContext& pixmap = pixmapContext(*m_drawContext);
         destination.image = pixmap.pixmap().image;
@@ -292,6 +309,13 @@ void View::startRendering()
                                              destination.layout.width);
         if (!read)
             fail(kQ3ErrorX11Error, "reading the window the frame is drawn over: " + read.message);
+    }
+    if (destination.appGl && (!destination.cleared || destination.mask.image != nullptr)) {
+        const PixelRect area = clipToImage(destination.pane, destination.layout.width, destination.layout.height);
+        const RenderResult read = readGlFramebuffer(area, destination.layout.height, m_windowPixels.data(),
+                                                    destination.layout.width);
+        if (!read)
+            fail(kQ3ErrorBadDrawContext, "reading the framebuffer the frame is drawn over: " + read.message);
     }
     // Without a clear, the frame starts transparent so that writeImage can
     // tell drawn pixels (alpha 1) from untouched ones.
@@ -345,6 +369,13 @@ TQ3ViewStatus View::endRendering()
         const RenderResult shown = writeWindow(to.nativeWindow, area, m_windowPixels.data(), to.layout.width);
         if (!shown)
             fail(kQ3ErrorX11Error, "the frame could not be put into the window: " + shown.message);
+    }
+    if (m_destination.appGl) {
+        const Destination& to = m_destination;
+        const PixelRect area = clipToImage(to.pane, to.layout.width, to.layout.height);
+        const RenderResult shown = writeGlFramebuffer(area, to.layout.height, m_windowPixels.data(), to.layout.width);
+        if (!shown)
+            fail(kQ3ErrorBadDrawContext, "the frame could not be put into the GL framebuffer: " + shown.message);
     }
     if (cancelled)
         return kQ3ViewStatusCancelled;

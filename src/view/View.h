@@ -218,6 +218,10 @@ private:
         /// m_windowPixels, shown by endRendering.
         bool window = false;
         NativeWindow nativeWindow;
+        /// The frame goes to the application's current OpenGL context
+        /// (GLDrawContext): image is m_windowPixels too, put into the
+        /// context's framebuffer by endRendering.
+        bool appGl = false;
     };
 
     /// Calls the idle or progress method; false when it asks to cancel.
@@ -258,7 +262,8 @@ private:
     TQ3Object m_pick = nullptr;
     std::unique_ptr<RenderTarget> m_offscreen;
     Destination m_destination;
-    /// A window frame's pixels (0x00RRGGBB, the window's size), kept between
+    /// A window or GL frame's pixels (0xAARRGGBB, the window's or
+    /// framebuffer's size), kept between
     /// frames so that a frame of an unchanged size allocates nothing.
     std::vector<std::uint32_t> m_windowPixels;
 };

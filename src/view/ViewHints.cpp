@@ -10,6 +10,7 @@
 #include "render/Renderer.h"
 #include "view/Camera.h"
 #include "view/DrawContext.h"
+#include "view/GLDrawContext.h"
 #include "view/WindowDrawContext.h"
 #include "view/View.h"
 
@@ -108,6 +109,10 @@ Ref<ViewHints> ViewHints::fromView(const View& view)
                 hints->m_width = width > kMaxDimension ? kMaxDimension : width;
                 hints->m_height = height > kMaxDimension ? kMaxDimension : height;
             }
+        } else if (context->isType(kQ3DrawContextTypeGL)) {
+            const GLDrawContext* gl = static_cast<const GLDrawContext*>(context);
+            hints->m_width = gl->width();
+            hints->m_height = gl->height();
         }
         if (hints->m_width == 0 || hints->m_height == 0)
             hints->m_width = hints->m_height = 0;

@@ -15,6 +15,7 @@
 
 #include "GeometryTestSupport.h"
 #include "OwningApiTest.h"
+#include "QuadMesh.h"
 #include "RenderTestSupport.h"
 
 #include "QD3DSet.h"
@@ -124,25 +125,15 @@ protected:
     TQ3GeometryObject quadMesh(TQ3AttributeSet set, TQ3SurfaceShaderObject* faceShaders = nullptr,
                                char* faceUse = nullptr)
     {
-        TQ3Point3D points[4] = {{kX0, kY0, 0}, {kX1, kY0, 0}, {kX1, kY1, 0}, {kX0, kY1, 0}};
-        TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        TQ3TriMeshTriangleData triangles[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
-        TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
+        q3test::QuadMesh quad({{kX0, kY0, 0}, {kX1, kY0, 0}, {kX1, kY1, 0}, {kX0, kY1, 0}},
+                              {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
         TQ3TriMeshAttributeData shaderArray{kQ3AttributeTypeSurfaceShader, faceShaders, faceUse};
-        TQ3TriMeshData data{};
-        data.triMeshAttributeSet = set;
-        data.numTriangles = 2;
-        data.triangles = triangles;
+        quad.data.triMeshAttributeSet = set;
         if (faceShaders != nullptr) {
-            data.numTriangleAttributeTypes = 1;
-            data.triangleAttributeTypes = &shaderArray;
+            quad.data.numTriangleAttributeTypes = 1;
+            quad.data.triangleAttributeTypes = &shaderArray;
         }
-        data.numPoints = 4;
-        data.points = points;
-        data.numVertexAttributeTypes = 1;
-        data.vertexAttributeTypes = &uvArray;
-        data.bBox = TQ3BoundingBox{{kX0, kY0, 0}, {kX1, kY1, 0}, kQ3False};
-        TQ3GeometryObject mesh = own(Q3TriMesh_New(&data));
+        TQ3GeometryObject mesh = own(quad.create());
         EXPECT_NE(mesh, nullptr);
         return mesh;
     }
@@ -393,21 +384,12 @@ TEST_F(AttributeTextureRenderTest, TriMeshVertexShaderArrayTexturesTheTrianglesW
 {
     // Corners 0 1 2 hold B, corner 3 A: triangle 0 (0 1 2) takes B;
     // triangle 1 (0 2 3) has two corners with B, so B too.
-    TQ3Point3D points[4] = {{kX0, kY0, 0}, {kX1, kY0, 0}, {kX1, kY1, 0}, {kX0, kY1, 0}};
-    TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    q3test::QuadMesh quad({{kX0, kY0, 0}, {kX1, kY0, 0}, {kX1, kY1, 0}, {kX0, kY1, 0}}, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
     TQ3SurfaceShaderObject shaders[4] = {m_shaderB, m_shaderB, m_shaderB, m_shaderA};
-    TQ3TriMeshTriangleData triangles[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
-    TQ3TriMeshAttributeData arrays[2] = {{kQ3AttributeTypeSurfaceUV, uvs, nullptr},
-                                         {kQ3AttributeTypeSurfaceShader, shaders, nullptr}};
-    TQ3TriMeshData data{};
-    data.numTriangles = 2;
-    data.triangles = triangles;
-    data.numPoints = 4;
-    data.points = points;
-    data.numVertexAttributeTypes = 2;
-    data.vertexAttributeTypes = arrays;
-    data.bBox = TQ3BoundingBox{{kX0, kY0, 0}, {kX1, kY1, 0}, kQ3False};
-    TQ3GeometryObject mesh = own(Q3TriMesh_New(&data));
+    TQ3TriMeshAttributeData arrays[2] = {quad.uvArray, {kQ3AttributeTypeSurfaceShader, shaders, nullptr}};
+    quad.data.numVertexAttributeTypes = 2;
+    quad.data.vertexAttributeTypes = arrays;
+    TQ3GeometryObject mesh = own(quad.create());
     ASSERT_NE(mesh, nullptr);
     const Pixmap image = render([&](TQ3ViewObject v) { Q3Geometry_Submit(mesh, v); });
     EXPECT_GT(expectTexels(image, all(texelB), "vertex shaders"), 300);

@@ -173,8 +173,7 @@ TEST_F(MathApiTest, Point3DDistancePropagatesNonFiniteCoordinates)
 TEST_F(MathApiTest, Point3DDistanceRejectsNullAndReturnsZero)
 {
     const TQ3Point3D a{1, 2, 3};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Distance(nullptr, &a), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Distance(&a, nullptr), 0.0f), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Point3D_Distance", Q3Point3D_Distance, &a, &a);
 }
 
 TEST_F(MathApiTest, Vector3DLengthIsEuclidean)
@@ -263,8 +262,7 @@ TEST_F(MathApiTest, Vector3DNormalizeRejectsNull)
 {
     const TQ3Vector3D v{1, 0, 0};
     TQ3Vector3D result{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Normalize(nullptr, &result), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Normalize(&v, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Vector3D_Normalize", Q3Vector3D_Normalize, &v, &result);
 }
 
 TEST_F(MathApiTest, Vector3DCrossIsRightHanded)
@@ -309,9 +307,7 @@ TEST_F(MathApiTest, Vector3DCrossRejectsNull)
 {
     const TQ3Vector3D v{1, 0, 0};
     TQ3Vector3D r{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Cross(nullptr, &v, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Cross(&v, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Cross(&v, &v, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Vector3D_Cross", Q3Vector3D_Cross, &v, &v, &r);
 }
 
 TEST_F(MathApiTest, Vector3DDotMatchesHandComputation)
@@ -332,8 +328,7 @@ TEST_F(MathApiTest, Vector3DDotPropagatesNonFiniteComponents)
 TEST_F(MathApiTest, Vector3DDotRejectsNull)
 {
     const TQ3Vector3D v{1, 0, 0};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Dot(nullptr, &v), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Dot(&v, nullptr), 0.0f), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Vector3D_Dot", Q3Vector3D_Dot, &v, &v);
 }
 
 // ---- Transforming points ----------------------------------------------------
@@ -754,8 +749,7 @@ TEST_F(MathApiTest, InvertRejectsNonFiniteMatrices)
 TEST_F(MathApiTest, InvertRejectsNull)
 {
     TQ3Matrix4x4 r{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Invert(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Invert(&kIdentity, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Matrix4x4_Invert", Q3Matrix4x4_Invert, &kIdentity, &r);
 }
 
 TEST_F(MathApiTest, TransposeSwapsRowsAndColumns)
@@ -784,8 +778,7 @@ TEST_F(MathApiTest, TransposeCarriesNonFiniteEntries)
 TEST_F(MathApiTest, TransposeRejectsNull)
 {
     TQ3Matrix4x4 r{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Transpose(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Transpose(&kIdentity, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Matrix4x4_Transpose", Q3Matrix4x4_Transpose, &kIdentity, &r);
 }
 
 TEST_F(MathApiTest, CopyCopiesEveryBit)
@@ -803,8 +796,7 @@ TEST_F(MathApiTest, CopyCopiesEveryBit)
 TEST_F(MathApiTest, CopyRejectsNull)
 {
     TQ3Matrix4x4 r{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Copy(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Copy(&kIdentity, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Matrix4x4_Copy", Q3Matrix4x4_Copy, &kIdentity, &r);
 }
 
 // ---- Before Q3Initialize ------------------------------------------------------

@@ -73,8 +73,7 @@ TEST_F(MathBoundsApiTest, BoxCopyCopiesEveryByte)
     EXPECT_TRUE(sameBits(dest, src));
     EXPECT_EQ(Q3BoundingBox_Copy(&dest, &dest), &dest);
     EXPECT_TRUE(sameBits(dest, src));
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_Copy(nullptr, &dest), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_Copy(&src, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3BoundingBox_Copy", Q3BoundingBox_Copy, &src, &dest);
 }
 
 TEST_F(MathBoundsApiTest, BoxSetStoresItsFieldsAsGiven)
@@ -182,12 +181,8 @@ TEST_F(MathBoundsApiTest, BoxUnionsRejectNullAndLeaveTheResultAlone)
     const TQ3Point3D p{1, 2, 3};
     const TQ3RationalPoint4D p4{1, 2, 3, 1};
     TQ3BoundingBox r = filledWith<TQ3BoundingBox>(7);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_Union(nullptr, &a, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_Union(&a, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_Union(&a, &a, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_UnionPoint3D(nullptr, &p, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_UnionPoint3D(&a, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_UnionPoint3D(&a, &p, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3BoundingBox_Union", Q3BoundingBox_Union, &a, &a, &r);
+    expectEachNullRejected("Q3BoundingBox_UnionPoint3D", Q3BoundingBox_UnionPoint3D, &a, &p, &r);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_UnionRationalPoint4D(nullptr, &p4, &r), nullptr),
                     kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_UnionRationalPoint4D(&a, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
@@ -260,8 +255,7 @@ TEST_F(MathBoundsApiTest, SphereCopyAndSetStoreTheirFields)
     EXPECT_EQ(rawIsEmpty(dest), int(kQ3True));
     EXPECT_TRUE(std::isnan(dest.radius));
     TQ3BoundingSphere untouched = filledWith<TQ3BoundingSphere>(7);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_Copy(nullptr, &untouched), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_Copy(&src, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3BoundingSphere_Copy", Q3BoundingSphere_Copy, &src, &untouched);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_Set(nullptr, &origin, 1, kQ3False), nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_Set(&untouched, nullptr, 1, kQ3False), nullptr),
                     kQ3ErrorNULLParameter);
@@ -351,12 +345,8 @@ TEST_F(MathBoundsApiTest, SphereUnionsRejectNullAndLeaveTheResultAlone)
     const TQ3Point3D p{1, 2, 3};
     const TQ3RationalPoint4D p4{1, 2, 3, 1};
     TQ3BoundingSphere r = filledWith<TQ3BoundingSphere>(7);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_Union(nullptr, &s, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_Union(&s, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_Union(&s, &s, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_UnionPoint3D(nullptr, &p, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_UnionPoint3D(&s, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_UnionPoint3D(&s, &p, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3BoundingSphere_Union", Q3BoundingSphere_Union, &s, &s, &r);
+    expectEachNullRejected("Q3BoundingSphere_UnionPoint3D", Q3BoundingSphere_UnionPoint3D, &s, &p, &r);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_UnionRationalPoint4D(nullptr, &p4, &r), nullptr),
                     kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_UnionRationalPoint4D(&s, nullptr, &r), nullptr),

@@ -336,17 +336,11 @@ TEST_F(MathMatrixApiTest, Matrix3x3CallsRejectNullAndLeaveTheResultAlone)
 {
     TQ3Matrix3x3 r = filledWith<TQ3Matrix3x3>(7);
     const TQ3Matrix3x3& m = kGeneral3x3;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Copy(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Copy(&m, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Transpose(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Transpose(&m, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Invert(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Invert(&m, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Adjoint(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Adjoint(&m, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Multiply(nullptr, &m, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Multiply(&m, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix3x3_Multiply(&m, &m, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Matrix3x3_Copy", Q3Matrix3x3_Copy, &m, &r);
+    expectEachNullRejected("Q3Matrix3x3_Transpose", Q3Matrix3x3_Transpose, &m, &r);
+    expectEachNullRejected("Q3Matrix3x3_Invert", Q3Matrix3x3_Invert, &m, &r);
+    expectEachNullRejected("Q3Matrix3x3_Adjoint", Q3Matrix3x3_Adjoint, &m, &r);
+    expectEachNullRejected("Q3Matrix3x3_Multiply", Q3Matrix3x3_Multiply, &m, &m, &r);
     EXPECT_TRUE(sameBits(r, filledWith<TQ3Matrix3x3>(7)));
 }
 
@@ -450,9 +444,7 @@ TEST_F(MathMatrixApiTest, SetRotateVectorToVectorRejectsZeroVectorsAndNull)
                     kQ3ErrorVector3DZeroLength);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_SetRotateVectorToVector(&m, &v, &zero), nullptr),
                     kQ3ErrorVector3DZeroLength);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_SetRotateVectorToVector(nullptr, &v, &v), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_SetRotateVectorToVector(&m, nullptr, &v), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_SetRotateVectorToVector(&m, &v, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Matrix4x4_SetRotateVectorToVector", Q3Matrix4x4_SetRotateVectorToVector, &m, &v, &v);
     EXPECT_TRUE(sameBits(m, filledWith<TQ3Matrix4x4>(7)));
 }
 

@@ -114,14 +114,10 @@ TEST_F(MathPointApiTest, ConversionsRejectNullAndLeaveTheResultAlone)
     TQ3Point2D out2 = filledWith<TQ3Point2D>(7);
     TQ3Point3D out3 = filledWith<TQ3Point3D>(7);
     TQ3RationalPoint4D out4 = filledWith<TQ3RationalPoint4D>(7);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_To3D(nullptr, &out3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_To3D(&p2, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_To2D(nullptr, &out2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_To2D(&r3, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_To4D(nullptr, &out4), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_To4D(&p3, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_To3D(nullptr, &out3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_To3D(&r4, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Point2D_To3D", Q3Point2D_To3D, &p2, &out3);
+    expectEachNullRejected("Q3RationalPoint3D_To2D", Q3RationalPoint3D_To2D, &r3, &out2);
+    expectEachNullRejected("Q3Point3D_To4D", Q3Point3D_To4D, &p3, &out4);
+    expectEachNullRejected("Q3RationalPoint4D_To3D", Q3RationalPoint4D_To3D, &r4, &out3);
     EXPECT_TRUE(sameBits(out2, filledWith<TQ3Point2D>(7)));
     EXPECT_TRUE(sameBits(out3, filledWith<TQ3Point3D>(7)));
     EXPECT_TRUE(sameBits(out4, filledWith<TQ3RationalPoint4D>(7)));
@@ -189,33 +185,15 @@ TEST_F(MathPointApiTest, DifferencesAndMovesRejectNull)
     TQ3Point2D rp2{};
     TQ3Param2D ru{};
     TQ3Point3D rp3{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Subtract(nullptr, &p2, &rv2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Subtract(&p2, nullptr, &rv2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Subtract(&p2, &p2, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Subtract(nullptr, &u, &rv2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Subtract(&u, nullptr, &rv2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Subtract(&u, &u, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Subtract(nullptr, &p3, &rv3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Subtract(&p3, nullptr, &rv3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Subtract(&p3, &p3, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Vector2D_Add(nullptr, &v2, &rp2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Vector2D_Add(&p2, nullptr, &rp2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Vector2D_Add(&p2, &v2, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Vector2D_Add(nullptr, &v2, &ru), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Vector2D_Add(&u, nullptr, &ru), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Vector2D_Add(&u, &v2, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Vector3D_Add(nullptr, &v3, &rp3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Vector3D_Add(&p3, nullptr, &rp3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Vector3D_Add(&p3, &v3, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Vector2D_Subtract(nullptr, &v2, &rp2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Vector2D_Subtract(&p2, nullptr, &rp2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Vector2D_Subtract(&p2, &v2, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Vector2D_Subtract(nullptr, &v2, &ru), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Vector2D_Subtract(&u, nullptr, &ru), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Vector2D_Subtract(&u, &v2, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Vector3D_Subtract(nullptr, &v3, &rp3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Vector3D_Subtract(&p3, nullptr, &rp3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Vector3D_Subtract(&p3, &v3, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Point2D_Subtract", Q3Point2D_Subtract, &p2, &p2, &rv2);
+    expectEachNullRejected("Q3Param2D_Subtract", Q3Param2D_Subtract, &u, &u, &rv2);
+    expectEachNullRejected("Q3Point3D_Subtract", Q3Point3D_Subtract, &p3, &p3, &rv3);
+    expectEachNullRejected("Q3Point2D_Vector2D_Add", Q3Point2D_Vector2D_Add, &p2, &v2, &rp2);
+    expectEachNullRejected("Q3Param2D_Vector2D_Add", Q3Param2D_Vector2D_Add, &u, &v2, &ru);
+    expectEachNullRejected("Q3Point3D_Vector3D_Add", Q3Point3D_Vector3D_Add, &p3, &v3, &rp3);
+    expectEachNullRejected("Q3Point2D_Vector2D_Subtract", Q3Point2D_Vector2D_Subtract, &p2, &v2, &rp2);
+    expectEachNullRejected("Q3Param2D_Vector2D_Subtract", Q3Param2D_Vector2D_Subtract, &u, &v2, &ru);
+    expectEachNullRejected("Q3Point3D_Vector3D_Subtract", Q3Point3D_Vector3D_Subtract, &p3, &v3, &rp3);
 }
 
 TEST_F(MathPointApiTest, CrossProductTriIsTheTriangleNormal)
@@ -237,10 +215,7 @@ TEST_F(MathPointApiTest, CrossProductTriIsTheTriangleNormal)
     const TQ3Point3D nan{kNaN, 0, 0};
     Q3Point3D_CrossProductTri(&o, &nan, &y, &n);
     EXPECT_TRUE(std::isnan(n.z));
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_CrossProductTri(nullptr, &x, &y, &n), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_CrossProductTri(&o, nullptr, &y, &n), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_CrossProductTri(&o, &x, nullptr, &n), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_CrossProductTri(&o, &x, &y, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Point3D_CrossProductTri", Q3Point3D_CrossProductTri, &o, &x, &y, &n);
 }
 
 // ---- Distances ------------------------------------------------------------------------------
@@ -293,24 +268,15 @@ TEST_F(MathPointApiTest, DistancesRejectNullAndReturnZero)
     const TQ3RationalPoint3D r3{1, 2, 1};
     const TQ3Point3D p3{1, 2, 3};
     const TQ3RationalPoint4D r4{1, 2, 3, 1};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Distance(nullptr, &p2), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Distance(&p2, nullptr), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_DistanceSquared(nullptr, &p2), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_DistanceSquared(&p2, nullptr), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Distance(nullptr, &u), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Distance(&u, nullptr), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_DistanceSquared(nullptr, &u), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_DistanceSquared(&u, nullptr), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_Distance(nullptr, &r3), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_Distance(&r3, nullptr), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_DistanceSquared(nullptr, &r3), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_DistanceSquared(&r3, nullptr), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_DistanceSquared(nullptr, &p3), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_DistanceSquared(&p3, nullptr), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_Distance(nullptr, &r4), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_Distance(&r4, nullptr), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_DistanceSquared(nullptr, &r4), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_DistanceSquared(&r4, nullptr), 0.0f), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Point2D_Distance", Q3Point2D_Distance, &p2, &p2);
+    expectEachNullRejected("Q3Point2D_DistanceSquared", Q3Point2D_DistanceSquared, &p2, &p2);
+    expectEachNullRejected("Q3Param2D_Distance", Q3Param2D_Distance, &u, &u);
+    expectEachNullRejected("Q3Param2D_DistanceSquared", Q3Param2D_DistanceSquared, &u, &u);
+    expectEachNullRejected("Q3RationalPoint3D_Distance", Q3RationalPoint3D_Distance, &r3, &r3);
+    expectEachNullRejected("Q3RationalPoint3D_DistanceSquared", Q3RationalPoint3D_DistanceSquared, &r3, &r3);
+    expectEachNullRejected("Q3Point3D_DistanceSquared", Q3Point3D_DistanceSquared, &p3, &p3);
+    expectEachNullRejected("Q3RationalPoint4D_Distance", Q3RationalPoint4D_Distance, &r4, &r4);
+    expectEachNullRejected("Q3RationalPoint4D_DistanceSquared", Q3RationalPoint4D_DistanceSquared, &r4, &r4);
 }
 
 // ---- Relative ratios ----------------------------------------------------------------------------
@@ -445,12 +411,8 @@ TEST_F(MathPointApiTest, Point2DTransformsRejectNull)
     const TQ3Param2D u{1, 2};
     TQ3Point2D r{};
     TQ3Param2D ru{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Transform(nullptr, &kIdentity3x3, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Transform(&p, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_Transform(&p, &kIdentity3x3, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Transform(nullptr, &kIdentity3x3, &ru), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Transform(&u, nullptr, &ru), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_Transform(&u, &kIdentity3x3, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Point2D_Transform", Q3Point2D_Transform, &p, &kIdentity3x3, &r);
+    expectEachNullRejected("Q3Param2D_Transform", Q3Param2D_Transform, &u, &kIdentity3x3, &ru);
 }
 
 // ---- Polar and spherical coordinates -------------------------------------------------------------------
@@ -562,14 +524,10 @@ TEST_F(MathPointApiTest, PolarAndSphericalConversionsRejectNull)
     TQ3SphericalPoint rSphere = filledWith<TQ3SphericalPoint>(7);
     TQ3Point2D r2 = filledWith<TQ3Point2D>(7);
     TQ3Point3D r3 = filledWith<TQ3Point3D>(7);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_ToPolar(nullptr, &rPolar), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_ToPolar(&p2, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolarPoint_ToPoint2D(nullptr, &r2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolarPoint_ToPoint2D(&polar, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_ToSpherical(nullptr, &rSphere), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_ToSpherical(&p3, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3SphericalPoint_ToPoint3D(nullptr, &r3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3SphericalPoint_ToPoint3D(&sphere, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Point2D_ToPolar", Q3Point2D_ToPolar, &p2, &rPolar);
+    expectEachNullRejected("Q3PolarPoint_ToPoint2D", Q3PolarPoint_ToPoint2D, &polar, &r2);
+    expectEachNullRejected("Q3Point3D_ToSpherical", Q3Point3D_ToSpherical, &p3, &rSphere);
+    expectEachNullRejected("Q3SphericalPoint_ToPoint3D", Q3SphericalPoint_ToPoint3D, &sphere, &r3);
     EXPECT_TRUE(sameBits(rPolar, filledWith<TQ3PolarPoint>(7)));
     EXPECT_TRUE(sameBits(rSphere, filledWith<TQ3SphericalPoint>(7)));
     EXPECT_TRUE(sameBits(r2, filledWith<TQ3Point2D>(7)));

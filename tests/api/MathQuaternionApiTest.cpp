@@ -90,8 +90,7 @@ TEST_F(MathQuaternionApiTest, SetSetIdentityAndCopyStoreTheirValues)
     EXPECT_TRUE(sameBits(q, TQ3Quaternion{1, 0, 0, 0}));
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Set(nullptr, 1, 0, 0, 0), nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_SetIdentity(nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Copy(nullptr, &q), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Copy(&q, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Quaternion_Copy", Q3Quaternion_Copy, &q, &q);
 }
 
 TEST_F(MathQuaternionApiTest, IsIdentityTestsXYZWithinRealZeroAndIgnoresW)
@@ -146,10 +145,8 @@ TEST_F(MathQuaternionApiTest, InvertAndNormalizeRejectTheZeroQuaternionAndNull)
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Invert(&zero, &r), nullptr), kQ3ErrorInvalidParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Normalize(&zero, &r), nullptr), kQ3ErrorInvalidParameter);
     EXPECT_TRUE(sameBits(r, filledWith<TQ3Quaternion>(7)));
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Invert(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Invert(&kGeneral, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Normalize(nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Normalize(&kGeneral, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Quaternion_Invert", Q3Quaternion_Invert, &kGeneral, &r);
+    expectEachNullRejected("Q3Quaternion_Normalize", Q3Quaternion_Normalize, &kGeneral, &r);
 }
 
 TEST_F(MathQuaternionApiTest, InvertAndNormalizePropagateNonFiniteComponents)
@@ -170,8 +167,7 @@ TEST_F(MathQuaternionApiTest, DotIsTheFourVectorDotProduct)
     const TQ3Quaternion a{1, 2, 3, 4}, b{-1, 0.5f, 2, -0.25f}, nan{kNaN, 0, 0, 0};
     EXPECT_EQ(Q3Quaternion_Dot(&a, &b), -1.0f + 1 + 6 - 1);
     EXPECT_TRUE(std::isnan(Q3Quaternion_Dot(&a, &nan)));
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Dot(nullptr, &a), 0.0f), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Dot(&a, nullptr), 0.0f), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Quaternion_Dot", Q3Quaternion_Dot, &a, &a);
 }
 
 TEST_F(MathQuaternionApiTest, MultiplyAppliesTheFirstRotationFirst)
@@ -207,9 +203,7 @@ TEST_F(MathQuaternionApiTest, MultiplyAllowsTheResultToBeEitherFactor)
     TQ3Quaternion r{};
     Q3Quaternion_Multiply(&nan, &q1, &r);
     EXPECT_TRUE(std::isnan(r.w));
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Multiply(nullptr, &q1, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Multiply(&q1, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_Multiply(&q1, &q1, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Quaternion_Multiply", Q3Quaternion_Multiply, &q1, &q1, &r);
 }
 
 // ---- Rotations ---------------------------------------------------------------------------------
@@ -394,9 +388,7 @@ TEST_F(MathQuaternionApiTest, MatchReflectionPicksTheSignOnQ2sSide)
     const TQ3Quaternion nan{kNaN, 0, 0, 0};
     Q3Quaternion_MatchReflection(&q1, &nan, &r);
     EXPECT_EQ(r.w, -0.5f);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_MatchReflection(nullptr, &q1, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_MatchReflection(&q1, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Quaternion_MatchReflection(&q1, &q1, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Quaternion_MatchReflection", Q3Quaternion_MatchReflection, &q1, &q1, &r);
 }
 
 TEST_F(MathQuaternionApiTest, InterpolateFastIsTheNormalizedStraightLine)
@@ -524,12 +516,8 @@ TEST_F(MathQuaternionApiTest, TransformQuaternionRejectsTheZeroQuaternionAndNull
     TQ3Point3D rp = filledWith<TQ3Point3D>(7);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_TransformQuaternion(&v, &zero, &rv), nullptr), kQ3ErrorInvalidParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_TransformQuaternion(&p, &zero, &rp), nullptr), kQ3ErrorInvalidParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_TransformQuaternion(nullptr, &q, &rv), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_TransformQuaternion(&v, nullptr, &rv), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_TransformQuaternion(&v, &q, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_TransformQuaternion(nullptr, &q, &rp), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_TransformQuaternion(&p, nullptr, &rp), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_TransformQuaternion(&p, &q, nullptr), nullptr), kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Vector3D_TransformQuaternion", Q3Vector3D_TransformQuaternion, &v, &q, &rv);
+    expectEachNullRejected("Q3Point3D_TransformQuaternion", Q3Point3D_TransformQuaternion, &p, &q, &rp);
     EXPECT_TRUE(sameBits(rv, filledWith<TQ3Vector3D>(7)));
     EXPECT_TRUE(sameBits(rp, filledWith<TQ3Point3D>(7)));
     const TQ3Quaternion nan{1, kNaN, 0, 0};

@@ -20,6 +20,7 @@
 // a unit or two from the exact value; the tolerances say how many.
 
 #include "OwningApiTest.h"
+#include "QuadMesh.h"
 #include "RenderTestSupport.h"
 
 #include "QD3DRenderer.h"
@@ -139,19 +140,9 @@ protected:
     // The quad, unlit, with uv (0, 0) at world (0, -0.5) and (1, 1) at (2, 1.5).
     TQ3GeometryObject quad()
     {
-        TQ3Point3D points[4] = {{0, -0.5f, 0}, {2, -0.5f, 0}, {2, 1.5f, 0}, {0, 1.5f, 0}};
-        TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        TQ3TriMeshTriangleData triangles[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
-        TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
-        TQ3TriMeshData data{};
-        data.numTriangles = 2;
-        data.triangles = triangles;
-        data.numPoints = 4;
-        data.points = points;
-        data.numVertexAttributeTypes = 1;
-        data.vertexAttributeTypes = &uvArray;
-        data.bBox = TQ3BoundingBox{{0, -0.5f, 0}, {2, 1.5f, 0}, kQ3False};
-        TQ3GeometryObject mesh = own(Q3TriMesh_New(&data));
+        const q3test::QuadMesh quad({{0, -0.5f, 0}, {2, -0.5f, 0}, {2, 1.5f, 0}, {0, 1.5f, 0}},
+                                    {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+        TQ3GeometryObject mesh = own(quad.create());
         EXPECT_NE(mesh, nullptr);
         return mesh;
     }

@@ -11,6 +11,7 @@
 
 #include "GeometryTestSupport.h"
 #include "OwningApiTest.h"
+#include "QuadMesh.h"
 #include "RenderTestSupport.h"
 
 #include "QD3DGroup.h"
@@ -112,20 +113,10 @@ protected:
     // or another uv type) and a red diffuse colour the texture replaces.
     TQ3GeometryObject quad(TQ3AttributeType uvType = kQ3AttributeTypeSurfaceUV)
     {
-        TQ3Point3D points[4] = {{kX0, kY0, 0}, {kX1, kY0, 0}, {kX1, kY1, 0}, {kX0, kY1, 0}};
-        TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        TQ3TriMeshTriangleData triangles[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
-        TQ3TriMeshAttributeData uvArray{uvType, uvs, nullptr};
-        TQ3TriMeshData data{};
-        data.triMeshAttributeSet = own(colorSet(1, 0, 0));
-        data.numTriangles = 2;
-        data.triangles = triangles;
-        data.numPoints = 4;
-        data.points = points;
-        data.numVertexAttributeTypes = 1;
-        data.vertexAttributeTypes = &uvArray;
-        data.bBox = TQ3BoundingBox{{kX0, kY0, 0}, {kX1, kY1, 0}, kQ3False};
-        TQ3GeometryObject mesh = own(Q3TriMesh_New(&data));
+        q3test::QuadMesh quad({{kX0, kY0, 0}, {kX1, kY0, 0}, {kX1, kY1, 0}, {kX0, kY1, 0}},
+                              {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, false, uvType);
+        quad.data.triMeshAttributeSet = own(colorSet(1, 0, 0));
+        TQ3GeometryObject mesh = own(quad.create());
         EXPECT_NE(mesh, nullptr);
         return mesh;
     }

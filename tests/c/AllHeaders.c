@@ -25,6 +25,7 @@
 #include "Q3NURBCurveTools.h"
 #include "Q3Exchange.h"
 #include "Q3PixmapPNG.h"
+#include "Q3GLDrawContext.h"
 #include "QD3DController.h"
 #include "QD3DCustomElements.h"
 #include "QD3DExtension.h"

@@ -29,6 +29,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "LegacyCommon.h"
+
+const char *gMyProgramName = "ExitCleanup";
+
 static TQ3ViewObject gView = NULL;
 static TQ3DrawContextObject gContext = NULL;
 static TQ3GroupObject gScene = NULL;
@@ -109,38 +113,12 @@ static void MyCleanUp(void)
 
 int main(void)
 {
-    TQ3PixmapDrawContextData contextData;
-    TQ3OrthographicCameraData cameraData;
     TQ3CameraObject camera;
 
     if (Q3Initialize() != kQ3Success)
         return 1;
-    memset(&contextData, 0, sizeof contextData);
-    contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-    contextData.drawContextData.clearImageColor.a = 1.0f;
-    contextData.pixmap.image = gPixels;
-    contextData.pixmap.width = 64;
-    contextData.pixmap.height = 64;
-    contextData.pixmap.rowBytes = 64 * 4;
-    contextData.pixmap.pixelSize = 32;
-    contextData.pixmap.pixelType = kQ3PixelTypeARGB32;
-    contextData.pixmap.bitOrder = kQ3EndianBig;
-    contextData.pixmap.byteOrder = kQ3EndianBig;
-    gContext = Q3PixmapDrawContext_New(&contextData);
-    memset(&cameraData, 0, sizeof cameraData);
-    Q3Point3D_Set(&cameraData.cameraData.placement.cameraLocation, 0.0f, 0.0f, 5.0f);
-    Q3Vector3D_Set(&cameraData.cameraData.placement.upVector, 0.0f, 1.0f, 0.0f);
-    cameraData.cameraData.range.hither = 0.5f;
-    cameraData.cameraData.range.yon = 20.0f;
-    cameraData.cameraData.viewPort.origin.x = -1.0f;
-    cameraData.cameraData.viewPort.origin.y = 1.0f;
-    cameraData.cameraData.viewPort.width = 2.0f;
-    cameraData.cameraData.viewPort.height = 2.0f;
-    cameraData.left = -1.5f;
-    cameraData.top = 1.5f;
-    cameraData.right = 1.5f;
-    cameraData.bottom = -1.5f;
-    camera = Q3OrthographicCamera_New(&cameraData);
+    gContext = MyNewARGBDrawContext(gPixels, 64, 64);
+    camera = MyNewOrthographicCamera(5.0f, 0.5f, 20.0f, -1.5f, 1.5f, 1.5f, -1.5f);
     gView = Q3View_New();
     gScene = MyMakeScene();
     if (gContext == NULL || camera == NULL || gView == NULL || gScene == NULL)

@@ -25,20 +25,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "LegacyCommon.h"
+
+const char *gMyProgramName = "LegacyGolden";
+
 #define kWidth 96
 #define kHeight 64
-
-static int gFailures = 0;
-
-static void Check(TQ3Boolean ok, const char *what)
-{
-    if (!ok) {
-        printf("LegacyGolden: %s failed (error %d: %s)\n", what, (int)Q3Error_Get(NULL), Q3Error_GetMessage());
-        gFailures++;
-    }
-}
-
-#define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
 
 static unsigned short gImage[kWidth * kHeight];
 

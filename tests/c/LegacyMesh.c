@@ -19,32 +19,9 @@
 
 #include <stdio.h>
 
-static int gFailures = 0;
+#include "LegacyCommon.h"
 
-static void Check(TQ3Boolean ok, const char *what)
-{
-    if (!ok) {
-        printf("LegacyMesh: %s failed (error %d)\n", what, (int)Q3Error_Get(NULL));
-        gFailures++;
-    }
-}
-
-#define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
-#define EXPECT(condition) Check((TQ3Boolean)((condition) != 0), #condition)
-
-static TQ3AttributeSet MyNewColorSet(float r, float g, float b)
-{
-    TQ3AttributeSet set;
-    TQ3ColorRGB color;
-
-    color.r = r;
-    color.g = g;
-    color.b = b;
-    set = Q3AttributeSet_New();
-    if (set != NULL)
-        Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color);
-    return set;
-}
+const char *gMyProgramName = "LegacyMesh";
 
 static TQ3MeshVertex MyAddVertex(TQ3GeometryObject mesh, float x, float y, float z)
 {

@@ -27,18 +27,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-static int gFailures = 0;
+#include "LegacyCommon.h"
 
-static void Check(TQ3Boolean ok, const char *what)
-{
-    if (!ok) {
-        printf("LegacyPicking: %s failed (error %d)\n", what, (int)Q3Error_Get(NULL));
-        gFailures++;
-    }
-}
-
-#define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
-#define EXPECT(condition) Check((TQ3Boolean)((condition) != 0), #condition)
+const char *gMyProgramName = "LegacyPicking";
 
 static TQ3GeometryObject MyNewTriangle(float x, float y, float z)
 {

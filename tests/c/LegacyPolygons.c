@@ -25,54 +25,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int gFailures = 0;
+#include "LegacyCommon.h"
 
-static void Check(TQ3Boolean ok, const char *what)
-{
-    if (!ok) {
-        printf("LegacyPolygons: %s failed (error %d)\n", what, (int)Q3Error_Get(NULL));
-        gFailures++;
-    }
-}
-
-#define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
-
-static TQ3AttributeSet MyNewColorSet(float r, float g, float b)
-{
-    TQ3AttributeSet set;
-    TQ3ColorRGB color;
-
-    color.r = r;
-    color.g = g;
-    color.b = b;
-    set = Q3AttributeSet_New();
-    if (set != NULL)
-        Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color);
-    return set;
-}
-
-static void MyCheckAndDisposeSet(TQ3AttributeSet set, TQ3AttributeSet expected, const char *what)
-{
-    Check((TQ3Boolean)(set == expected), what);
-    if (set != NULL)
-        Q3Object_Dispose(set);
-}
-
-static void MyBoundAndDispose(TQ3ViewObject view, TQ3GeometryObject geometry)
-{
-    TQ3BoundingBox bounds;
-
-    if (geometry == NULL) {
-        gFailures++;
-        return;
-    }
-    CHECK(Q3View_StartBoundingBox(view, kQ3ComputeBoundsExact));
-    do {
-        CHECK(Q3Geometry_Submit(geometry, view));
-    } while (Q3View_EndBoundingBox(view, &bounds) == kQ3ViewStatusRetraverse);
-    Check((TQ3Boolean)(bounds.isEmpty == kQ3False), "bounds");
-    Q3Object_Dispose(geometry);
-}
+const char *gMyProgramName = "LegacyPolygons";
 
 static void MyGeneralPolygon(TQ3ViewObject view, TQ3AttributeSet red)
 {
@@ -342,7 +297,6 @@ static TQ3GeometryObject MyPixmapMarker(void)
  * pixels. */
 static void MyDrawMarker(TQ3GeometryObject marker, long expected)
 {
-    TQ3PixmapDrawContextData contextData;
     TQ3ViewAngleAspectCameraData cameraData;
     TQ3DrawContextObject context;
     TQ3CameraObject camera;
@@ -352,18 +306,7 @@ static void MyDrawMarker(TQ3GeometryObject marker, long expected)
 
     pixels = (unsigned char *)calloc(64 * 64, 4);
     view = Q3View_New();
-    memset(&contextData, 0, sizeof contextData);
-    contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-    contextData.drawContextData.clearImageColor.a = 1.0f;
-    contextData.pixmap.image = pixels;
-    contextData.pixmap.width = 64;
-    contextData.pixmap.height = 64;
-    contextData.pixmap.rowBytes = 64 * 4;
-    contextData.pixmap.pixelSize = 32;
-    contextData.pixmap.pixelType = kQ3PixelTypeARGB32;
-    contextData.pixmap.bitOrder = kQ3EndianBig;
-    contextData.pixmap.byteOrder = kQ3EndianBig;
-    context = Q3PixmapDrawContext_New(&contextData);
+    context = MyNewARGBDrawContext(pixels, 64, 64);
     memset(&cameraData, 0, sizeof cameraData);
     Q3Point3D_Set(&cameraData.cameraData.placement.cameraLocation, 0.0f, 0.0f, 5.0f);
     Q3Vector3D_Set(&cameraData.cameraData.placement.upVector, 0.0f, 1.0f, 0.0f);

@@ -19,54 +19,9 @@
 
 #include <stdio.h>
 
-static int gFailures = 0;
+#include "LegacyCommon.h"
 
-static void Check(TQ3Boolean ok, const char *what)
-{
-    if (!ok) {
-        printf("LegacyQuadrics: %s failed (error %d)\n", what, (int)Q3Error_Get(NULL));
-        gFailures++;
-    }
-}
-
-#define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
-
-static TQ3AttributeSet MyNewColorSet(float r, float g, float b)
-{
-    TQ3AttributeSet set;
-    TQ3ColorRGB color;
-
-    color.r = r;
-    color.g = g;
-    color.b = b;
-    set = Q3AttributeSet_New();
-    if (set != NULL)
-        Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color);
-    return set;
-}
-
-static void MyCheckAndDisposeSet(TQ3AttributeSet set, TQ3AttributeSet expected, const char *what)
-{
-    Check((TQ3Boolean)(set == expected), what);
-    if (set != NULL)
-        Q3Object_Dispose(set);
-}
-
-static void MyBoundAndDispose(TQ3ViewObject view, TQ3GeometryObject geometry)
-{
-    TQ3BoundingBox bounds;
-
-    if (geometry == NULL) {
-        gFailures++;
-        return;
-    }
-    CHECK(Q3View_StartBoundingBox(view, kQ3ComputeBoundsExact));
-    do {
-        CHECK(Q3Geometry_Submit(geometry, view));
-    } while (Q3View_EndBoundingBox(view, &bounds) == kQ3ViewStatusRetraverse);
-    Check((TQ3Boolean)(bounds.isEmpty == kQ3False), "bounds");
-    Q3Object_Dispose(geometry);
-}
+const char *gMyProgramName = "LegacyQuadrics";
 
 static void MyBox(TQ3ViewObject view, TQ3AttributeSet red)
 {

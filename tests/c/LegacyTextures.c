@@ -27,17 +27,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int gFailures = 0;
+#include "LegacyCommon.h"
 
-static void Check(TQ3Boolean ok, const char *what)
-{
-    if (!ok) {
-        printf("LegacyTextures: %s failed (error %d)\n", what, (int)Q3Error_Get(NULL));
-        gFailures++;
-    }
-}
-
-#define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
+const char *gMyProgramName = "LegacyTextures";
 
 /* Texels, ARGB32 big-endian, top row first: red, green / blue, white. */
 static unsigned char gTexels[16] = {0xFF, 0xFF, 0, 0, 0xFF, 0, 0xFF, 0,
@@ -120,8 +112,6 @@ static TQ3GeometryObject MyNewSquare(void)
  * square filling its middle 16 x 16, and checks the four quarters. */
 static void MyDraw(TQ3ShaderObject shader, TQ3GeometryObject square)
 {
-    TQ3PixmapDrawContextData contextData;
-    TQ3OrthographicCameraData cameraData;
     TQ3DrawContextObject context;
     TQ3CameraObject camera;
     TQ3ViewObject view;
@@ -131,32 +121,8 @@ static void MyDraw(TQ3ShaderObject shader, TQ3GeometryObject square)
 
     pixels = (unsigned char *)calloc(32 * 32, 4);
     view = Q3View_New();
-    memset(&contextData, 0, sizeof contextData);
-    contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-    contextData.drawContextData.clearImageColor.a = 1.0f;
-    contextData.pixmap.image = pixels;
-    contextData.pixmap.width = 32;
-    contextData.pixmap.height = 32;
-    contextData.pixmap.rowBytes = 32 * 4;
-    contextData.pixmap.pixelSize = 32;
-    contextData.pixmap.pixelType = kQ3PixelTypeARGB32;
-    contextData.pixmap.bitOrder = kQ3EndianBig;
-    contextData.pixmap.byteOrder = kQ3EndianBig;
-    context = Q3PixmapDrawContext_New(&contextData);
-    memset(&cameraData, 0, sizeof cameraData);
-    Q3Point3D_Set(&cameraData.cameraData.placement.cameraLocation, 0.0f, 0.0f, 5.0f);
-    Q3Vector3D_Set(&cameraData.cameraData.placement.upVector, 0.0f, 1.0f, 0.0f);
-    cameraData.cameraData.range.hither = 0.5f;
-    cameraData.cameraData.range.yon = 20.0f;
-    cameraData.cameraData.viewPort.origin.x = -1.0f;
-    cameraData.cameraData.viewPort.origin.y = 1.0f;
-    cameraData.cameraData.viewPort.width = 2.0f;
-    cameraData.cameraData.viewPort.height = 2.0f;
-    cameraData.left = -2.0f;
-    cameraData.top = 2.0f;
-    cameraData.right = 2.0f;
-    cameraData.bottom = -2.0f;
-    camera = Q3OrthographicCamera_New(&cameraData);
+    context = MyNewARGBDrawContext(pixels, 32, 32);
+    camera = MyNewOrthographicCamera(5.0f, 0.5f, 20.0f, -2.0f, 2.0f, 2.0f, -2.0f);
     if (pixels == NULL || view == NULL || context == NULL || camera == NULL) {
         gFailures++;
         return;

@@ -4639,8 +4639,11 @@ private:
             return;
         }
         if (holdsKind(geometry, Kind::kPolygon)) {
-            // A polygon gives a TriMesh of at most numVertices - 2 triangles
-            // over its own vertices.
+            // A polygon gives a TriMesh over its own vertices, in order: at
+            // most numVertices - 2 triangles when it adds none; a contour that
+            // crosses itself is filled by the even-odd rule over points added
+            // where its edges cross, and then the count is bounded by the
+            // slab decomposition (see boundsEvenOdd).
             require(!posted && Q3Geometry_GetType(polyline) == kQ3GeometryTypeTriMesh, "Q3Geometry_GetDecomposed",
                     "a polygon did not give a trimesh");
             hold(polyline, Kind::kTriMesh);
@@ -4648,7 +4651,8 @@ private:
             TQ3TriMeshData mesh{};
             STATUS(Q3Polygon_GetData(geometry, &polygon));
             STATUS(Q3TriMesh_GetData(polyline, &mesh));
-            require(mesh.numPoints == polygon.numVertices && mesh.numTriangles + 2 <= polygon.numVertices,
+            require(startsWithVertices(mesh, polygon.vertices, polygon.numVertices) &&
+                        boundsEvenOdd(mesh, polygon.numVertices, 1),
                     "Q3Geometry_GetDecomposed", "a polygon's trimesh has the wrong size");
             STATUS(Q3Polygon_EmptyData(&polygon));
             STATUS(Q3TriMesh_EmptyData(&mesh));
@@ -4676,8 +4680,39 @@ private:
         STATUS(Q3PolyLine_EmptyData(&data));
     }
 
+    // Whether mesh's first count points are vertices' points, in order.
+    static bool startsWithVertices(const TQ3TriMeshData& mesh, const TQ3Vertex3D* vertices, unsigned long count)
+    {
+        if (mesh.numPoints < count)
+            return false;
+        for (unsigned long i = 0; i < count; ++i) {
+            const TQ3Point3D& a = mesh.points[i];
+            const TQ3Point3D& b = vertices[i].point;
+            if (std::memcmp(&a, &b, sizeof a) != 0)
+                return false;
+        }
+        return true;
+    }
+
+    // The size an even-odd fill of `vertices` points in `contours` contours
+    // may have. Without added points: a triangulation of the contours joined
+    // by bridges, vertices + 2 contours - 2 triangles at most. With points
+    // added where the vertices edges cross: at most one slab per vertex and
+    // crossing (e (e - 1) / 2 of them), each holding at most e / 2 inside
+    // trapezoids of two triangles over four added points.
+    static bool boundsEvenOdd(const TQ3TriMeshData& mesh, unsigned long vertices, unsigned long contours)
+    {
+        if (mesh.numPoints == vertices)
+            return mesh.numTriangles + 2 <= vertices + 2 * contours;
+        const double edges = double(vertices);
+        const double slabs = edges + edges * (edges - 1.0) / 2.0;
+        const double trapezoids = slabs * (edges / 2.0);
+        return double(mesh.numTriangles) <= 2.0 * trapezoids && double(mesh.numPoints - vertices) <= 4.0 * trapezoids;
+    }
+
     // A general polygon gives a trimesh over its own vertices with at most
-    // vertices + 2 contours - 2 triangles; a grid one of three vertices per
+    // vertices + 2 contours - 2 triangles (more over added points where
+    // contours cross: boundsEvenOdd); a grid one of three vertices per
     // facet; a polyhedron three per triangle and two per listed edge.
     void checkPolygons2Decomposed(TQ3Object geometry, Kind kind, bool posted, TQ3Object result)
     {
@@ -4690,9 +4725,16 @@ private:
             TQ3GeneralPolygonData data{};
             STATUS(Q3GeneralPolygon_GetData(geometry, &data));
             unsigned long total = 0;
-            for (unsigned long c = 0; c < data.numContours; ++c)
-                total += data.contours[c].numVertices;
-            require(mesh.numPoints == total && mesh.numTriangles + 2 <= total + 2 * data.numContours, call,
+            bool ordered = true;
+            for (unsigned long c = 0; c < data.numContours; ++c) {
+                const TQ3GeneralPolygonContourData& contour = data.contours[c];
+                TQ3TriMeshData rest = mesh;
+                rest.numPoints = mesh.numPoints >= total ? mesh.numPoints - total : 0;
+                rest.points = mesh.points + (mesh.numPoints >= total ? total : 0);
+                ordered = ordered && startsWithVertices(rest, contour.vertices, contour.numVertices);
+                total += contour.numVertices;
+            }
+            require(ordered && boundsEvenOdd(mesh, total, data.numContours), call,
                     "a general polygon's trimesh has the wrong size");
             STATUS(Q3GeneralPolygon_EmptyData(&data));
         } else if (kind == Kind::kTriGrid) {

@@ -3,7 +3,7 @@
 
 // A retained curve is drawn right after every kind of change its polyline
 // depends on, and unchanged after changes it does not depend on. A retained
-// curve keeps no polyline (geometry/CurveCache.h: issue 16's memory target),
+// curve keeps no polyline (geometry/NURBCurve.h: issue 16's memory target),
 // so every pass subdivides it again; what these tests check is the result.
 // Every kind of change the polyline depends on (the curve's edit index; the
 // subdivision style's method and c1; the local-to-world transform for world
@@ -11,7 +11,7 @@
 // and the pane's size, for screen space) is made between two frames, and
 // then:
 //   - the frame subdivided the curve exactly once per use (the counter
-//     CurveCache::tessellations rose by 2: Q3Geometry_GetDecomposed and the
+//     NURBCurve::tessellations rose by 2: Q3Geometry_GetDecomposed and the
 //     submit), so no stale copy can have been drawn;
 //   - the polyline drawn and decomposed equals, vertex for vertex, the one a
 //     brand-new curve with the same data gives under the same state (a second
@@ -91,7 +91,7 @@ protected:
         Q3ApiTest::TearDown();
     }
 
-    std::uint64_t builds() const { return q3::lookup<q3::NURBCurve>(m_curve, "curve").cache().tessellations; }
+    std::uint64_t builds() const { return q3::lookup<q3::NURBCurve>(m_curve, "curve").tessellations(); }
 
     static std::vector<TQ3Point3D> verticesOf(TQ3GeometryObject polyLine)
     {

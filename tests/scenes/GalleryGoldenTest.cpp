@@ -9,6 +9,7 @@
 // and the lit interactive picture of a surface fills more than its wireframe.
 
 #include "Golden.h"
+#include "SessionTest.h"
 
 #include "QD3D.h"
 #include "QD3DErrors.h"
@@ -32,20 +33,8 @@
 
 namespace {
 
-class GalleryTest : public ::testing::Test {
+class GalleryTest : public q3test::SessionTest<> {
 protected:
-    void SetUp() override
-    {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
-    }
-    void TearDown() override
-    {
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while drawing";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
-    }
 
     static q3test::RgbaImage render(unsigned long index, bool lit)
     {
@@ -70,13 +59,7 @@ protected:
                 n += isDrawn(image, x, y) ? 1 : 0;
         return n;
     }
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int GalleryTest::s_errors = 0;
 
 class GalleryGolden : public GalleryTest, public ::testing::WithParamInterface<std::tuple<unsigned long, bool>> {};
 

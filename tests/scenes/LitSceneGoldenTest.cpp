@@ -9,6 +9,7 @@
 // are checked in tests/api/LightingRenderTest.cpp.
 
 #include "Golden.h"
+#include "SessionTest.h"
 
 #include "QD3D.h"
 #include "QD3DErrors.h"
@@ -28,20 +29,8 @@ constexpr int kWidth = Q3SCENE_WIDTH;
 constexpr int kHeight = Q3SCENE_HEIGHT;
 constexpr unsigned long kBoxFrames = 4;
 
-class LitSceneTest : public ::testing::Test {
+class LitSceneTest : public q3test::SessionTest<> {
 protected:
-    void SetUp() override
-    {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
-    }
-    void TearDown() override
-    {
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
-    }
 
     static q3test::RgbaImage render(const char* name)
     {
@@ -52,13 +41,7 @@ protected:
             EXPECT_EQ(q3litscene_render(scene, kWidth, kHeight, image.pixels.data()), 0) << name;
         return image;
     }
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int LitSceneTest::s_errors = 0;
 
 class LitSceneGolden : public LitSceneTest, public ::testing::WithParamInterface<unsigned long> {};
 

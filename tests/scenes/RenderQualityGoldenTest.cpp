@@ -18,6 +18,9 @@
 // tests/api/AntiAliasRenderTest.cpp.
 
 #include "Golden.h"
+#include "SceneRender.h"
+#include "SessionTest.h"
+#include "QuadMesh.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -44,20 +47,8 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-class RenderQualityGoldenTest : public ::testing::Test {
+class RenderQualityGoldenTest : public q3test::SessionTest<> {
 protected:
-    void SetUp() override
-    {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
-    }
-    void TearDown() override
-    {
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
-    }
 
     // Renders `submit` in perspective from `eye` towards `target` with the
     // renderer `type` (RAVE texture filter `filter` for the interactive
@@ -65,57 +56,19 @@ protected:
     q3test::RgbaImage render(const TQ3Point3D& eye, const TQ3Point3D& target, TQ3ObjectType type,
                              unsigned long filter, const std::function<void(TQ3ViewObject)>& submit)
     {
-        std::vector<unsigned char> argb(std::size_t(kWidth) * kHeight * 4, 0);
-        TQ3PixmapDrawContextData contextData{};
-        contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        contextData.drawContextData.clearImageColor = {1.0f, 0.08f, 0.1f, 0.16f};
-        contextData.pixmap = TQ3Pixmap{argb.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32,
-                                       kQ3EndianBig, kQ3EndianBig};
-        TQ3DrawContextObject context = Q3PixmapDrawContext_New(&contextData);
-        TQ3ViewAngleAspectCameraData cameraData{};
-        cameraData.cameraData.placement = {eye, target, {0.0f, 1.0f, 0.0f}};
-        cameraData.cameraData.range = {0.2f, 100.0f};
-        cameraData.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
-        cameraData.fov = 0.9f;
-        cameraData.aspectRatioXToY = float(kWidth) / kHeight;
-        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
-        TQ3RendererObject renderer = Q3Renderer_NewFromType(type);
+        q3test::SceneSetup setup;
+        setup.width = kWidth;
+        setup.height = kHeight;
+        setup.clear = {1.0f, 0.08f, 0.1f, 0.16f};
+        setup.eye = eye;
+        setup.target = target;
+        setup.hither = 0.2f;
+        setup.yon = 100.0f;
+        setup.fov = 0.9f;
+        setup.renderer = type;
         if (type == kQ3RendererTypeInteractive)
-            EXPECT_EQ(Q3InteractiveRenderer_SetRAVETextureFilter(renderer, filter), kQ3Success);
-        TQ3ViewObject view = Q3View_New();
-        Q3View_SetDrawContext(view, context);
-        Q3View_SetCamera(view, camera);
-        Q3View_SetRenderer(view, renderer);
-        TQ3GroupObject lights = Q3LightGroup_New();
-        const TQ3LightData ambientData{kQ3True, 0.35f, {1.0f, 1.0f, 1.0f}};
-        TQ3LightObject ambient = Q3AmbientLight_New(&ambientData);
-        const TQ3DirectionalLightData sunData{{kQ3True, 0.8f, {1.0f, 1.0f, 1.0f}}, kQ3False, {-1.0f, -1.5f, -2.0f}};
-        TQ3LightObject sun = Q3DirectionalLight_New(&sunData);
-        Q3Group_AddObject(lights, ambient);
-        Q3Group_AddObject(lights, sun);
-        Q3Object_Dispose(ambient);
-        Q3Object_Dispose(sun);
-        Q3View_SetLightGroup(view, lights);
-        EXPECT_EQ(Q3View_StartRendering(view), kQ3Success);
-        TQ3ViewStatus status;
-        do {
-            submit(view);
-            status = Q3View_EndRendering(view);
-        } while (status == kQ3ViewStatusRetraverse);
-        EXPECT_EQ(status, kQ3ViewStatusDone);
-        Q3Object_Dispose(lights);
-        Q3Object_Dispose(view);
-        Q3Object_Dispose(renderer);
-        Q3Object_Dispose(camera);
-        Q3Object_Dispose(context);
-        q3test::RgbaImage image(kWidth, kHeight);
-        for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
-            image.pixels[4 * i] = argb[4 * i + 1];
-            image.pixels[4 * i + 1] = argb[4 * i + 2];
-            image.pixels[4 * i + 2] = argb[4 * i + 3];
-            image.pixels[4 * i + 3] = 255;
-        }
-        return image;
+            setup.textureFilter = filter;
+        return q3test::renderScene(setup, submit);
     }
 
     // The variance of the green channel over rows y0..y1, pixels of the
@@ -136,13 +89,7 @@ protected:
         const double mean = sum / n;
         return squares / n - mean * mean;
     }
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int RenderQualityGoldenTest::s_errors = 0;
 
 // The checkerboard's colours (8 x 8 texel squares on a 64 x 64 image).
 constexpr unsigned char kLight[3] = {240, 220, 120};
@@ -200,19 +147,8 @@ q3test::RgbaImage drawPlane(
     TQ3TextureObject texture = Q3MipmapTexture_New(&checker.mipmap);
     EXPECT_NE(texture, nullptr);
     TQ3ShaderObject shader = Q3TextureShader_New(texture);
-    TQ3Point3D points[4] = {{-4, 0, 3}, {4, 0, 3}, {4, 0, -45}, {-4, 0, -45}};
-    TQ3Param2D uvs[4] = {{0, 0}, {2, 0}, {2, 12}, {0, 12}};
-    TQ3TriMeshTriangleData triangles[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
-    TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
-    TQ3TriMeshData data{};
-    data.numTriangles = 2;
-    data.triangles = triangles;
-    data.numPoints = 4;
-    data.points = points;
-    data.numVertexAttributeTypes = 1;
-    data.vertexAttributeTypes = &uvArray;
-    data.bBox = TQ3BoundingBox{{-4, 0, -45}, {4, 0, 3}, kQ3False};
-    TQ3GeometryObject plane = Q3TriMesh_New(&data);
+    const q3test::QuadMesh quad({{-4, 0, 3}, {4, 0, 3}, {4, 0, -45}, {-4, 0, -45}}, {{0, 0}, {2, 0}, {2, 12}, {0, 12}});
+    TQ3GeometryObject plane = quad.create();
     q3test::RgbaImage image = render(filter, [&](TQ3ViewObject view) {
         Q3Shader_Submit(shader, view);
         Q3Geometry_Submit(plane, view);

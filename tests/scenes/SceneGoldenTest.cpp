@@ -7,6 +7,7 @@
 // blessed from a wrong picture would not pass.
 
 #include "Golden.h"
+#include "SessionTest.h"
 
 #include "QD3D.h"
 #include "QD3DErrors.h"
@@ -21,20 +22,8 @@
 
 namespace {
 
-class SceneTest : public ::testing::TestWithParam<unsigned long> {
+class SceneTest : public q3test::SessionTest<::testing::TestWithParam<unsigned long>> {
 protected:
-    void SetUp() override
-    {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
-    }
-    void TearDown() override
-    {
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
-    }
 
     static q3test::RgbaImage render(const Q3Scene* scene)
     {
@@ -42,13 +31,7 @@ protected:
         EXPECT_EQ(q3scene_render(scene, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, image.pixels.data()), 0) << scene->name;
         return image;
     }
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int SceneTest::s_errors = 0;
 
 struct Pixel {
     int r, g, b;

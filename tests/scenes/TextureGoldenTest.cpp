@@ -13,6 +13,9 @@
 // Exact texels against uv are checked in tests/api/TextureRenderTest.cpp.
 
 #include "Golden.h"
+#include "SceneRender.h"
+#include "SessionTest.h"
+#include "QuadMesh.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -74,13 +77,11 @@ std::vector<TQ3Object> throughFile(const std::vector<TQ3Object>& objects, TQ3Fil
 constexpr unsigned char kLight[3] = {230, 180, 60};
 constexpr unsigned char kDark[3] = {40, 90, 200};
 
-class TextureGoldenTest : public ::testing::Test {
+class TextureGoldenTest : public q3test::SessionTest<> {
 protected:
     void SetUp() override
     {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
+        SessionTest::SetUp();
         // An 8 x 8 checkerboard, ARGB32 big-endian.
         for (int y = 0; y < 8; ++y)
             for (int x = 0; x < 8; ++x) {
@@ -98,64 +99,21 @@ protected:
         Q3Object_Dispose(m_shader);
         Q3Object_Dispose(m_texture);
         Q3Object_Dispose(m_storage);
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
+        SessionTest::TearDown();
     }
 
     // Renders `submit` in perspective from `eye` towards the origin, with an
     // ambient light (0.3) and a directional light (0.8) when lit.
     q3test::RgbaImage render(const TQ3Point3D& eye, bool lit, const std::function<void(TQ3ViewObject)>& submit)
     {
-        std::vector<unsigned char> argb(std::size_t(kWidth) * kHeight * 4, 0);
-        TQ3PixmapDrawContextData contextData{};
-        contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        contextData.drawContextData.clearImageColor = {1.0f, 0.1f, 0.1f, 0.12f};
-        contextData.pixmap = TQ3Pixmap{argb.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32,
-                                       kQ3EndianBig, kQ3EndianBig};
-        TQ3DrawContextObject context = Q3PixmapDrawContext_New(&contextData);
-        TQ3ViewAngleAspectCameraData cameraData{};
-        cameraData.cameraData.placement = {eye, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
-        cameraData.cameraData.range = {0.5f, 50.0f};
-        cameraData.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
-        cameraData.fov = 0.8f;
-        cameraData.aspectRatioXToY = float(kWidth) / kHeight;
-        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
-        TQ3ViewObject view = Q3View_New();
-        Q3View_SetDrawContext(view, context);
-        Q3View_SetCamera(view, camera);
-        Q3View_SetRendererByType(view, kQ3RendererTypeInteractive);
-        TQ3GroupObject lights = Q3LightGroup_New();
-        if (lit) {
-            const TQ3LightData ambientData{kQ3True, 0.3f, {1.0f, 1.0f, 1.0f}};
-            TQ3LightObject ambient = Q3AmbientLight_New(&ambientData);
-            const TQ3DirectionalLightData sunData{{kQ3True, 0.8f, {1.0f, 1.0f, 1.0f}}, kQ3False, {-1.0f, -1.5f, -2.0f}};
-            TQ3LightObject sun = Q3DirectionalLight_New(&sunData);
-            Q3Group_AddObject(lights, ambient);
-            Q3Group_AddObject(lights, sun);
-            Q3Object_Dispose(ambient);
-            Q3Object_Dispose(sun);
-        }
-        Q3View_SetLightGroup(view, lights);
-        EXPECT_EQ(Q3View_StartRendering(view), kQ3Success);
-        TQ3ViewStatus status;
-        do {
-            submit(view);
-            status = Q3View_EndRendering(view);
-        } while (status == kQ3ViewStatusRetraverse);
-        EXPECT_EQ(status, kQ3ViewStatusDone);
-        Q3Object_Dispose(lights);
-        Q3Object_Dispose(view);
-        Q3Object_Dispose(camera);
-        Q3Object_Dispose(context);
-        q3test::RgbaImage image(kWidth, kHeight);
-        for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
-            image.pixels[4 * i] = argb[4 * i + 1];
-            image.pixels[4 * i + 1] = argb[4 * i + 2];
-            image.pixels[4 * i + 2] = argb[4 * i + 3];
-            image.pixels[4 * i + 3] = 255;
-        }
-        return image;
+        q3test::SceneSetup setup;
+        setup.width = kWidth;
+        setup.height = kHeight;
+        setup.clear = {1.0f, 0.1f, 0.1f, 0.12f};
+        setup.eye = eye;
+        setup.ambient = lit ? 0.3f : 0.0f;
+        setup.sun = lit;
+        return q3test::renderScene(setup, submit);
     }
 
     // How many pixels are (within `slack`) a scaled copy of the colour:
@@ -184,29 +142,12 @@ protected:
     TQ3StorageObject m_storage = nullptr;
     TQ3TextureObject m_texture = nullptr;
     TQ3ShaderObject m_shader = nullptr;
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int TextureGoldenTest::s_errors = 0;
 
 TEST_F(TextureGoldenTest, TriMeshInPerspectiveWrapsTheCheckerboardTwice)
 {
-    TQ3Point3D points[4] = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}};
-    TQ3Param2D uvs[4] = {{0, 2}, {2, 2}, {2, 0}, {0, 0}};
-    TQ3TriMeshTriangleData triangles[2] = {{{0, 2, 1}}, {{0, 3, 2}}};
-    TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
-    TQ3TriMeshData data{};
-    data.numTriangles = 2;
-    data.triangles = triangles;
-    data.numPoints = 4;
-    data.points = points;
-    data.numVertexAttributeTypes = 1;
-    data.vertexAttributeTypes = &uvArray;
-    data.bBox = TQ3BoundingBox{{-2, 0, -2}, {2, 0, 2}, kQ3False};
-    TQ3GeometryObject mesh = Q3TriMesh_New(&data);
+    const q3test::QuadMesh quad({{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}}, {{0, 2}, {2, 2}, {2, 0}, {0, 0}}, true);
+    TQ3GeometryObject mesh = quad.create();
     ASSERT_NE(mesh, nullptr);
     const q3test::RgbaImage image = render({0.5f, 2.5f, 4.0f}, false, [&](TQ3ViewObject v) {
         Q3Shader_Submit(m_shader, v);
@@ -311,20 +252,9 @@ TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
     };
 
     // The floor: a TriMesh with the checkerboard in its own set.
-    TQ3Point3D points[4] = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}};
-    TQ3Param2D uvs[4] = {{0, 2}, {2, 2}, {2, 0}, {0, 0}};
-    TQ3TriMeshTriangleData triangles[2] = {{{0, 2, 1}}, {{0, 3, 2}}};
-    TQ3TriMeshAttributeData uvArray{kQ3AttributeTypeSurfaceUV, uvs, nullptr};
-    TQ3TriMeshData floorData{};
-    floorData.triMeshAttributeSet = setWith(m_shader);
-    floorData.numTriangles = 2;
-    floorData.triangles = triangles;
-    floorData.numPoints = 4;
-    floorData.points = points;
-    floorData.numVertexAttributeTypes = 1;
-    floorData.vertexAttributeTypes = &uvArray;
-    floorData.bBox = TQ3BoundingBox{{-2, 0, -2}, {2, 0, 2}, kQ3False};
-    TQ3GeometryObject floor = Q3TriMesh_New(&floorData);
+    q3test::QuadMesh floorQuad({{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}}, {{0, 2}, {2, 2}, {2, 0}, {0, 0}}, true);
+    floorQuad.data.triMeshAttributeSet = setWith(m_shader);
+    TQ3GeometryObject floor = floorQuad.create();
     // A box with the stripes in the face sets of its top and of the two
     // sides facing the eye, the board on the others.
     TQ3AttributeSet stripedFace = setWith(striped), boardedFace = setWith(boarded);

@@ -10,6 +10,8 @@
 // from a wrong picture would not pass are checked too.
 
 #include "Golden.h"
+#include "SceneRender.h"
+#include "SessionTest.h"
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
@@ -35,21 +37,13 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-class TranslucencyGoldenTest : public ::testing::Test {
+class TranslucencyGoldenTest : public q3test::SessionTest<> {
 protected:
-    void SetUp() override
-    {
-        ASSERT_EQ(Q3Initialize(), kQ3Success);
-        Q3Error_Register(&onError, 0);
-        s_errors = 0;
-    }
     void TearDown() override
     {
         for (TQ3Object object : m_owned)
             Q3Object_Dispose(object);
-        EXPECT_EQ(s_errors, 0) << "Q3 posted errors while rendering";
-        Q3Error_Register(nullptr, 0);
-        Q3Exit();
+        SessionTest::TearDown();
     }
 
     template <class T>
@@ -93,66 +87,20 @@ protected:
     q3test::RgbaImage render(const TQ3Point3D& eye, const TQ3Point3D& target,
                              const std::function<void(TQ3ViewObject)>& submit)
     {
-        std::vector<unsigned char> argb(std::size_t(kWidth) * kHeight * 4, 0);
-        TQ3PixmapDrawContextData contextData{};
-        contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        contextData.drawContextData.clearImageColor = {1.0f, 0.15f, 0.15f, 0.2f};
-        contextData.pixmap = TQ3Pixmap{argb.data(), kWidth, kHeight, kWidth * 4, 32, kQ3PixelTypeARGB32,
-                                       kQ3EndianBig, kQ3EndianBig};
-        TQ3DrawContextObject context = Q3PixmapDrawContext_New(&contextData);
-        TQ3ViewAngleAspectCameraData cameraData{};
-        cameraData.cameraData.placement = {eye, target, {0.0f, 1.0f, 0.0f}};
-        cameraData.cameraData.range = {0.5f, 60.0f};
-        cameraData.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
-        cameraData.fov = 0.8f;
-        cameraData.aspectRatioXToY = float(kWidth) / kHeight;
-        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&cameraData);
-        TQ3ViewObject view = Q3View_New();
-        Q3View_SetDrawContext(view, context);
-        Q3View_SetCamera(view, camera);
-        Q3View_SetRendererByType(view, kQ3RendererTypeInteractive);
-        TQ3GroupObject lights = Q3LightGroup_New();
-        const TQ3LightData ambientData{kQ3True, 0.35f, {1.0f, 1.0f, 1.0f}};
-        TQ3LightObject ambient = Q3AmbientLight_New(&ambientData);
-        const TQ3DirectionalLightData sunData{{kQ3True, 0.8f, {1.0f, 1.0f, 1.0f}}, kQ3False, {-1.0f, -1.5f, -2.0f}};
-        TQ3LightObject sun = Q3DirectionalLight_New(&sunData);
-        Q3Group_AddObject(lights, ambient);
-        Q3Group_AddObject(lights, sun);
-        Q3Object_Dispose(ambient);
-        Q3Object_Dispose(sun);
-        Q3View_SetLightGroup(view, lights);
-        TQ3ShaderObject phong = Q3PhongIllumination_New();
-        EXPECT_EQ(Q3View_StartRendering(view), kQ3Success);
-        TQ3ViewStatus status;
-        do {
-            Q3Shader_Submit(phong, view);
-            submit(view);
-            status = Q3View_EndRendering(view);
-        } while (status == kQ3ViewStatusRetraverse);
-        EXPECT_EQ(status, kQ3ViewStatusDone);
-        Q3Object_Dispose(phong);
-        Q3Object_Dispose(lights);
-        Q3Object_Dispose(view);
-        Q3Object_Dispose(camera);
-        Q3Object_Dispose(context);
-        q3test::RgbaImage image(kWidth, kHeight);
-        for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
-            image.pixels[4 * i] = argb[4 * i + 1];
-            image.pixels[4 * i + 1] = argb[4 * i + 2];
-            image.pixels[4 * i + 2] = argb[4 * i + 3];
-            image.pixels[4 * i + 3] = argb[4 * i];
-        }
-        return image;
+        q3test::SceneSetup setup;
+        setup.width = kWidth;
+        setup.height = kHeight;
+        setup.clear = {1.0f, 0.15f, 0.15f, 0.2f};
+        setup.eye = eye;
+        setup.target = target;
+        setup.yon = 60.0f;
+        setup.phong = true;
+        setup.keepAlpha = true;
+        return q3test::renderScene(setup, submit);
     }
 
     std::vector<TQ3Object> m_owned;
-
-private:
-    static void onError(TQ3Error, TQ3Error, long) { ++s_errors; }
-    static int s_errors;
 };
-
-int TranslucencyGoldenTest::s_errors = 0;
 
 TEST_F(TranslucencyGoldenTest, TranslucentBoxOverAnOpaqueOne)
 {

@@ -13,8 +13,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <mutex>
 #include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace q3test {
@@ -83,12 +87,44 @@ protected:
         posted().clear();
     }
 
+    /// For a call whose arguments are all pointers, the last one its result
+    /// (QD3DMath.h's style): NULL in each position in turn posts
+    /// kQ3ErrorNULLParameter and returns NULL (kQ3Failure for a status, 0
+    /// for a number), and the result pointed to keeps every byte.
+    template <class R, class... A>
+    void expectEachNullRejected(const char* name, R (*call)(A...), typename std::common_type<A>::type... args)
+    {
+        const std::tuple<A...> given(args...);
+        auto* result = std::get<sizeof...(A) - 1>(given);
+        std::vector<unsigned char> before(sizeof *result);
+        std::memcpy(before.data(), result, before.size());
+        for (std::size_t i = 0; i < sizeof...(A); ++i) {
+            const R returned = callWithNullAt(call, given, i, std::index_sequence_for<A...>{});
+            if constexpr (std::is_pointer<R>::value)
+                EXPECT_EQ(returned, nullptr) << name << " with argument " << i << " NULL";
+            else if constexpr (std::is_same<R, TQ3Status>::value)
+                EXPECT_EQ(returned, kQ3Failure) << name << " with argument " << i << " NULL";
+            else
+                EXPECT_EQ(returned, R(0)) << name << " with argument " << i << " NULL";
+            EXPECT_EQ(Q3Error_Get(nullptr), kQ3ErrorNULLParameter) << name << " with argument " << i << " NULL";
+            consume(Kind::Error, kQ3ErrorNULLParameter, name, __FILE__, __LINE__);
+        }
+        EXPECT_EQ(std::memcmp(before.data(), result, before.size()), 0) << name << " changed its result";
+    }
+
     static const char* kindName(Kind kind)
     {
         return kind == Kind::Error ? "error" : kind == Kind::Warning ? "warning" : "notice";
     }
 
 private:
+    template <class R, class... A, std::size_t... I>
+    static R callWithNullAt(R (*call)(A...), const std::tuple<A...>& given, std::size_t nullAt,
+                            std::index_sequence<I...>)
+    {
+        return call((I == nullAt ? A(nullptr) : std::get<I>(given))...);
+    }
+
     static std::mutex& mutex()
     {
         static std::mutex m;

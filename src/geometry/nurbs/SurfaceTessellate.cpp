@@ -124,13 +124,17 @@ struct Constraint {
 
 class Tessellator {
 public:
-    Tessellator(const PatchRef& patch, const SurfaceSubdivision& how, TessellatedSurface& out)
+    Tessellator(const PatchRef& patch, const TessellationOptions& how, TessellatedSurface& out)
         : m_patch(patch), m_s(patch.surface), m_how(how), m_out(out), m_domain(surfaceDomain(m_s)),
           m_uSpans(uSpans(m_s)), m_vSpans(vSpans(m_s)), m_iso(m_s)
     {
         m_mesh.setDomain(m_domain.u0, m_domain.u1, m_domain.v0, m_domain.v1);
-        if (how.adaptive && how.hasClip)
+        if (how.method == Method::kAdaptive && how.hasClip && how.coarseOutsideClip)
             m_hull.emplace(m_s, how.clip);
+        if (how.customMapping)
+            m_mapping = how.customMapping;
+        else
+            m_mapping = [p = &how.mapping](const Point3& local, Point3& image) { return (*p)(local, image); };
     }
 
     void run()
@@ -139,13 +143,13 @@ public:
             clearArrays();
             return;
         }
-        m_adaptive = m_how.adaptive;
+        m_adaptive = m_how.method == Method::kAdaptive;
         std::vector<Row> rows;
         if (m_adaptive) {
             setUpCells();
-            m_c = m_how.maxEdge > 0.0 ? m_how.maxEdge : kInfinity;
+            m_c = m_how.c1 > 0.0 ? m_how.c1 : kInfinity;
             m_out.effectiveValue = m_c;
-            if (!(m_how.maxEdge > 0.0))
+            if (!(m_how.c1 > 0.0))
                 m_out.substituted = true;
             planAdaptive(rows);
         } else {
@@ -192,9 +196,9 @@ private:
 
     bool mapPoint(const Point3& local, Point3& image) const
     {
-        if (!m_adaptive || !m_how.mapping)
+        if (!m_adaptive)
             return false;
-        if (!m_how.mapping(local, image))
+        if (!m_mapping(local, image))
             return false;
         return std::isfinite(image.x) && std::isfinite(image.y) && std::isfinite(image.z);
     }
@@ -633,15 +637,21 @@ private:
         TessellatedCurve polyline;
         if (m_adaptive && std::isfinite(m_c)) {
             const SurfaceRef s = m_s;
-            const PointMapping& map = m_how.mapping;
+            const PointMapping& map = m_mapping;
             const PointMapping onSurface = [&s, &map](const Point3& p, Point3& image) {
                 return map(evaluateSurface(s, p.x, p.y), image);
             };
             // A hair below c1, so that rounding the ends to the mesh's keys
             // cannot take a chord past it.
-            tessellateAdaptive(ref, m_c * (1.0 - 1e-9), onSurface, polyline);
+            TessellationOptions options;
+            options.method = Method::kAdaptive;
+            options.c1 = m_c * (1.0 - 1e-9);
+            options.customMapping = onSurface;
+            tessellate(ref, options, polyline);
         } else {
-            tessellateConstant(ref, m_adaptive ? 1u : m_uSegments, polyline);
+            TessellationOptions options;
+            options.c1 = m_adaptive ? 1u : m_uSegments;
+            tessellate(ref, options, polyline);
         }
         // Every vertex but the curve's end (the next curve's start stands for it).
         const std::size_t count = polyline.parameters.size();
@@ -694,10 +704,10 @@ private:
 
     void planConstant(std::vector<Row>& rows)
     {
-        std::uint32_t m = std::min(std::max<std::uint32_t>(m_how.uSegments, 1), limits::kMaxConstantSegments);
-        std::uint32_t n = std::min(std::max<std::uint32_t>(m_how.vSegments, 1), limits::kMaxConstantSegments);
+        std::uint32_t m = clampedSegments(m_how.c1);
+        std::uint32_t n = clampedSegments(m_how.c2);
         const double spanPairs = double(m_uSpans.size()) * double(m_vSpans.size());
-        bool lowered = m != m_how.uSegments || n != m_how.vSegments;
+        bool lowered = double(m) != m_how.c1 || double(n) != m_how.c2;
         if (2.0 * double(m) * double(n) * spanPairs > double(kLayoutBudget)) {
             const double f = std::sqrt(double(kLayoutBudget) / (2.0 * double(m) * double(n) * spanPairs));
             m = std::max<std::uint32_t>(1, std::uint32_t(double(m) * f));
@@ -1714,7 +1724,8 @@ private:
 
     const PatchRef& m_patch;
     SurfaceRef m_s;
-    const SurfaceSubdivision& m_how;
+    const TessellationOptions& m_how;
+    PointMapping m_mapping; // customMapping, or the projective mapping
     TessellatedSurface& m_out;
     SurfaceDomain m_domain;
     std::vector<Span> m_uSpans;
@@ -1751,7 +1762,7 @@ private:
 
 } // namespace
 
-void tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how, TessellatedSurface& out)
+void tessellateSurface(const PatchRef& patch, const TessellationOptions& how, TessellatedSurface& out)
 {
     // The arrays are replaced by Tessellator::run (emptied, or overwritten in place).
     out.substituted = false;
@@ -1769,13 +1780,6 @@ void tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how, Tes
         out.parameters.clear();
         out.triangles.clear();
     }
-}
-
-TessellatedSurface tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how)
-{
-    TessellatedSurface out;
-    tessellateSurface(patch, how, out);
-    return out;
 }
 
 } // namespace q3::nurbs

@@ -39,27 +39,6 @@ constexpr double kAcrossRows = 0.75;
 /// measured length lies in [(1 - kStepTolerance) * bound, bound].
 constexpr double kStepTolerance = 0.03;
 
-/// How a patch is to be subdivided.
-struct SurfaceSubdivision {
-    /// Constant method: segments per non-empty span in u and in v (0 counts
-    /// as 1, more than limits::kMaxConstantSegments as that).
-    bool adaptive = false;
-    std::uint32_t uSegments = 1;
-    std::uint32_t vSegments = 1;
-    /// Adaptive method: the longest a triangle edge may be, measured between
-    /// the images of its vertices under `mapping` (Tessellate.h's
-    /// PointMapping: false for a point without an image).
-    double maxEdge = 0.0;
-    PointMapping mapping;
-    /// Screen space: the map from local points to the view's frustum
-    /// coordinates (SurfaceHull.h), when `hasClip`. Triangles whose piece of
-    /// the surface lies outside the view volume (shown by the convex hull of
-    /// its Bezier control points) cannot be seen and are not held to
-    /// maxEdge; every other triangle is.
-    bool hasClip = false;
-    std::array<double, 16> clip{};
-};
-
 /// A tessellated patch: triangles over vertices, each vertex a point of the
 /// surface with its unit normal and parameters. Triangles are
 /// counterclockwise in (u, v), so their front is the side the normals point
@@ -73,8 +52,8 @@ struct TessellatedSurface {
     std::vector<std::uint32_t> triangles; ///< three vertex indices per triangle
 
     /// The requested value was replaced by effectiveValue to respect
-    /// kMaxTriangles (constant: uSegments and vSegments lowered, reported as
-    /// their product; adaptive: a longer maxEdge).
+    /// kMaxTriangles (constant: c1 and c2 lowered, reported as their
+    /// product; adaptive: a longer c1).
     bool substituted = false;
     double effectiveValue = 0.0;
     /// Constant method: the segments per span used in u and in v.
@@ -97,14 +76,15 @@ struct TessellatedSurface {
     std::size_t triangleCount() const { return triangles.size() / 3; }
 };
 
-/// Tessellates a valid patch (see QD3DGeometry.h, "Subdivision", for what
-/// each method promises; docs/subdivision.md, "Surfaces", for how).
+/// Tessellates a valid patch under `options` (Tessellate.h; the surface reads
+/// method, c1 and c2, the mapping, and the clip with coarseOutsideClip), replacing
+/// the contents of `out` and reusing its storage. See QD3DGeometry.h,
+/// "Subdivision", for what each method promises; docs/subdivision.md, "Surfaces",
+/// for how. Constant: clampedSegments(c1) segments per span in u and
+/// clampedSegments(c2) in v.
 /// Work: O(output + trim vertices * log) for typical input; every loop in it
 /// is bounded by kMaxTriangles and the input's size, whatever the values.
 /// Errors: none; crossing loops and substitutions are reported in the result.
-TessellatedSurface tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how);
-/// The same, replacing the contents of `out` and reusing its storage (for a
-/// caller that tessellates again and again).
-void tessellateSurface(const PatchRef& patch, const SurfaceSubdivision& how, TessellatedSurface& out);
+void tessellateSurface(const PatchRef& patch, const TessellationOptions& options, TessellatedSurface& out);
 
 } // namespace q3::nurbs

@@ -157,6 +157,13 @@ std::size_t dropRepeats(float* v, double* t, std::size_t kept, std::size_t from,
     return kept;
 }
 
+// What the options let one tessellation spend (TessellationOptions::maxSegments,
+// the culling), as the two methods take it.
+struct ViewLimits {
+    std::size_t maxSegments = kMaxSegments;
+    const SpanCulling& hidden;
+};
+
 // Empties a result but keeps its storage for reuse.
 void reset(TessellatedCurve& out)
 {
@@ -175,15 +182,14 @@ std::size_t segmentCap(const ViewLimits& limits)
 }
 
 template <typename Spans>
-void constantImpl(Spans& spans, std::uint32_t requested, TessellatedCurve& out, const ViewLimits& limits)
+void constantImpl(Spans& spans, double requested, TessellatedCurve& out, const ViewLimits& limits)
 {
     reset(out);
     const std::size_t spanCount = spans.count();
     if (spanCount == 0) {
         return;
     }
-    std::uint32_t m = std::max<std::uint32_t>(requested, 1);
-    m = std::min(m, kMaxSegmentsPerSpan);
+    std::uint32_t m = clampedSegments(requested);
     // Hidden spans (one segment each) are found first, so the cap is shared by the
     // spans that can be seen. Culling needs each span's Bezier form, which one segment
     // per span does not: then nothing is culled.
@@ -200,7 +206,7 @@ void constantImpl(Spans& spans, std::uint32_t requested, TessellatedCurve& out, 
     const std::size_t perSpanBudget =
         visibleSpans == 0 ? m : std::max<std::size_t>((cap > out.hiddenSpans ? cap - out.hiddenSpans : 0) / visibleSpans, 1);
     m = std::uint32_t(std::min<std::size_t>(m, perSpanBudget));
-    out.substituted = m != requested;
+    out.substituted = double(m) != requested;
     out.effectiveValue = m;
 
     if (out.table.order() != spans.order() || out.table.segments() != m) {
@@ -1358,72 +1364,109 @@ bool fitsWholeBezierForm(const CurveRef& curve)
     return countNonEmptySpans(curve) * curve.order <= kWholeFormLimit;
 }
 
-void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out,
-                        const ViewLimits& limits)
+std::uint32_t clampedSegments(double count)
 {
-    if (!validateCurve(curve).ok()) {
-        reset(out);
+    if (!(count >= 1.0)) {
+        return 1;
+    }
+    return count >= double(kMaxSegmentsPerSpan) ? kMaxSegmentsPerSpan : std::uint32_t(count);
+}
+
+namespace {
+
+// The general mapping when given, else the projective one.
+template <typename Spans>
+void adaptiveImpl(Spans& spans, const TessellationOptions& options, const ViewLimits& limits, TessellatedCurve& out)
+{
+    if (options.customMapping) {
+        Adaptive<Spans>(spans, &options.customMapping, nullptr, limits, out).run(options.c1);
+    } else {
+        Adaptive<Spans>(spans, nullptr, &options.mapping, limits, out).run(options.c1);
+    }
+}
+
+// Whether every control point lies strictly outside one plane of the view volume
+// in homogeneous frustum coordinates (x = +-w, y = +-w, the hither plane z = 0).
+// Each test is linear in the homogeneous point, and the span's points are positive
+// combinations of its control points (weights > 0), so the whole span, and every
+// chord between two of its points, is outside that plane too. The yon plane is not
+// used: culling there would depend on the renderer's depth range.
+bool outsideClip(const std::array<double, 16>& m, const Point4* points, unsigned order)
+{
+    unsigned outside[5] = {0, 0, 0, 0, 0};
+    for (unsigned i = 0; i < order; ++i) {
+        const Point4& p = points[i];
+        double v[4];
+        for (int r = 0; r < 4; ++r) {
+            v[r] = m[4 * r] * p.x + m[4 * r + 1] * p.y + m[4 * r + 2] * p.z + m[4 * r + 3] * p.w;
+        }
+        outside[0] += v[0] > v[3] ? 1 : 0;
+        outside[1] += -v[0] > v[3] ? 1 : 0;
+        outside[2] += v[1] > v[3] ? 1 : 0;
+        outside[3] += -v[1] > v[3] ? 1 : 0;
+        outside[4] += v[2] > 0.0 ? 1 : 0;
+    }
+    for (unsigned count : outside) {
+        if (count == order) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// Runs `run(limits)` with the options' limits; the culling captures only a pointer
+// to the options, which fits std::function's inline storage (no allocation).
+template <typename Run>
+void withLimits(const TessellationOptions& options, const Run& run)
+{
+    if (options.hidden || !(options.cullHiddenSpans && options.hasClip)) {
+        run(ViewLimits{options.maxSegments, options.hidden});
         return;
     }
-    CurveSpans spans(curve);
-    constantImpl(spans, segmentsPerSpan, out, limits);
+    const SpanCulling culling = [o = &options](const Point4* points, unsigned order) {
+        return outsideClip(o->clip, points, order);
+    };
+    run(ViewLimits{options.maxSegments, culling});
 }
 
-void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, TessellatedCurve& out,
-                        const ViewLimits& limits)
+void tessellateForm(const BezierForm& form, const TessellationOptions& options, TessellatedCurve& out)
 {
-    FormSpans spans(form);
-    constantImpl(spans, segmentsPerSpan, out, limits);
+    withLimits(options, [&](const ViewLimits& limits) {
+        FormSpans spans(form);
+        if (options.method == Method::kConstant) {
+            constantImpl(spans, options.c1, out, limits);
+        } else {
+            reset(out);
+            adaptiveImpl(spans, options, limits, out);
+        }
+    });
 }
 
-void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
-                        TessellatedCurve& out, const ViewLimits& limits)
+} // namespace
+
+void tessellate(const BezierForm& form, const TessellationOptions& options, TessellatedCurve& out)
+{
+    tessellateForm(form, options, out);
+}
+
+void tessellate(const CurveRef& curve, const TessellationOptions& options, TessellatedCurve& out)
 {
     reset(out);
     if (!validateCurve(curve).ok()) {
         return;
     }
-    if (fitsWholeBezierForm(curve)) {
-        withWholeForm(curve, [&](const BezierForm& form) {
-            tessellateAdaptive(form, maxSegmentLength, mapping, out, limits);
-        });
+    if (options.method == Method::kAdaptive && fitsWholeBezierForm(curve)) {
+        withWholeForm(curve, [&](const BezierForm& form) { tessellateForm(form, options, out); });
         return;
     }
-    CurveSpans spans(curve);
-    Adaptive<CurveSpans>(spans, &mapping, nullptr, limits, out).run(maxSegmentLength);
-}
-
-void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
-                        TessellatedCurve& out, const ViewLimits& limits)
-{
-    reset(out);
-    FormSpans spans(form);
-    Adaptive<FormSpans>(spans, &mapping, nullptr, limits, out).run(maxSegmentLength);
-}
-
-void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const ProjectiveMapping& mapping,
-                        TessellatedCurve& out, const ViewLimits& limits)
-{
-    reset(out);
-    if (!validateCurve(curve).ok()) {
-        return;
-    }
-    if (fitsWholeBezierForm(curve)) {
-        withWholeForm(curve, [&](const BezierForm& form) {
-            tessellateAdaptive(form, maxSegmentLength, mapping, out, limits);
-        });
-        return;
-    }
-    CurveSpans spans(curve);
-    Adaptive<CurveSpans>(spans, nullptr, &mapping, limits, out).run(maxSegmentLength);
-}
-
-void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const ProjectiveMapping& mapping,
-                        TessellatedCurve& out, const ViewLimits& limits)
-{
-    reset(out);
-    FormSpans spans(form);
-    Adaptive<FormSpans>(spans, nullptr, &mapping, limits, out).run(maxSegmentLength);
+    withLimits(options, [&](const ViewLimits& limits) {
+        CurveSpans spans(curve);
+        if (options.method == Method::kConstant) {
+            constantImpl(spans, options.c1, out, limits);
+        } else {
+            adaptiveImpl(spans, options, limits, out);
+        }
+    });
 }
 
 bool ProjectiveMapping::operator()(const Point3& local, Point3& mapped) const
@@ -1445,36 +1488,6 @@ bool ProjectiveMapping::operator()(const Point3& local, Point3& mapped) const
     }
     mapped = Point3{out[0], out[1], out[2]};
     return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(out[2]);
-}
-
-TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, const ViewLimits& limits)
-{
-    TessellatedCurve out;
-    tessellateConstant(curve, segmentsPerSpan, out, limits);
-    return out;
-}
-
-TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, const ViewLimits& limits)
-{
-    TessellatedCurve out;
-    tessellateConstant(form, segmentsPerSpan, out, limits);
-    return out;
-}
-
-TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
-                                    const ViewLimits& limits)
-{
-    TessellatedCurve out;
-    tessellateAdaptive(curve, maxSegmentLength, mapping, out, limits);
-    return out;
-}
-
-TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
-                                    const ViewLimits& limits)
-{
-    TessellatedCurve out;
-    tessellateAdaptive(form, maxSegmentLength, mapping, out, limits);
-    return out;
 }
 
 } // namespace q3::nurbs

@@ -6,6 +6,7 @@
 #include "geometry/nurbs/Bezier.h"
 #include "geometry/nurbs/Curve.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -93,7 +94,7 @@ using PointMapping = std::function<bool(const Point3& local, Point3& mapped)>;
 /// where (X, Y, Z, W) = matrix * (p, 1) and matrix is given by rows. p has an image
 /// when W != 0 (requirePositiveW: W > 0; clipNearer also needs Z <= 0, frustum z above
 /// 0 being nearer than the hither plane) and the image is finite. Given this form,
-/// tessellateAdaptive maps a span's control points once and, where every control point
+/// the adaptive method maps a span's control points once and, where every control point
 /// of a span has W > 0 (and Z < 0 with clipNearer), so that the whole span has an
 /// image, samples the mapped span with the fast kernel to find where segments end,
 /// instead of mapping every evaluation.
@@ -115,15 +116,6 @@ struct ProjectiveMapping {
 /// every chord between two of its points).
 using SpanCulling = std::function<bool(const Point4* points, unsigned order)>;
 
-/// What a view lets a tessellation spend: the most segments per curve (at most
-/// kMaxSegments; a curve still gets one segment per non-empty span) and, optionally,
-/// spans that cannot be seen. A hidden span gets exactly one segment, from its start to
-/// its end (a chord inside the span's hull, so it cannot be seen either), and costs no
-/// evaluation besides its Bezier conversion.
-struct ViewLimits {
-    std::size_t maxSegments = kMaxSegments;
-    SpanCulling hidden;  ///< empty: every span may be seen
-};
 
 /// A polyline approximating a curve.
 /// Invariant: vertices.size() == 3 * parameters.size(); parameters increase strictly;
@@ -137,7 +129,7 @@ struct TessellatedCurve {
     double effectiveValue = 0.0;     ///< segments per span (constant) or maximum length (adaptive) used
     bool capped = false;             ///< adaptive: kMaxSegments (or a mapping too steep to resolve) left segments longer than effectiveValue
     std::size_t unmeasuredSegments = 0; ///< adaptive: segments with an endpoint the mapping rejected
-    std::size_t hiddenSpans = 0;        ///< spans ViewLimits::hidden culled (one segment each)
+    std::size_t hiddenSpans = 0;        ///< hidden spans culled (one segment each)
     /// Workspace, not output: the constant method's last Bernstein table, kept so that
     /// a caller re-tessellating into the same result (a view, every frame) does not
     /// rebuild it for every curve of the same order and count (its values do not
@@ -147,38 +139,75 @@ struct TessellatedCurve {
     std::size_t vertexCount() const { return parameters.size(); }
 };
 
-/// kQ3SubdivisionMethodConstant: segmentsPerSpan segments in every non-empty span, at
-/// uniform parameters within the span; s spans give segmentsPerSpan * s + 1 vertices
-/// before exact duplicates are dropped. 0 is replaced by 1, more than
-/// kMaxSegmentsPerSpan by kMaxSegmentsPerSpan, and the count is lowered further so the
-/// total stays within kMaxSegments (never below 1 per span); any replacement sets
-/// `substituted`. Uses the Bezier sampling kernel.
-/// Errors: none; an invalid curve (checked with validateCurve) gives an empty result, a
-/// replaced count is reported in the result for the caller to post as a warning.
-/// Ownership: the result owns its arrays.
-/// With `limits`: hidden spans get one segment, and the count per visible span is
-/// lowered so the total stays within limits.maxSegments (never below 1 per span).
-TessellatedCurve tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan,
-                                    const ViewLimits& limits = {});
-TessellatedCurve tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan,
-                                    const ViewLimits& limits = {});
-/// The same, replacing the contents of `out` and reusing its storage (for a renderer
-/// that tessellates every frame).
-void tessellateConstant(const CurveRef& curve, std::uint32_t segmentsPerSpan, TessellatedCurve& out,
-                        const ViewLimits& limits = {});
-void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, TessellatedCurve& out,
-                        const ViewLimits& limits = {});
+enum class Method {
+    kConstant, ///< c1 segments per non-empty span (c2 across for surfaces)
+    kAdaptive, ///< no segment (triangle edge) longer than c1, measured after the mapping
+};
 
-/// kQ3SubdivisionMethodWorldSpace and kQ3SubdivisionMethodScreenSpace: a polyline whose
-/// segments, measured between the mapped images of their end points, are at most
-/// maxSegmentLength long, with close to the fewest segments: every segment but the last
-/// of each run of mappable curve is at least (1 - kChordTolerance) * maxSegmentLength.
-/// When the planned count (kLengthPadding * length / maxSegmentLength per run) would
-/// exceed kPlacementBudget, or maxSegmentLength is not > 0 (NaN included), a larger
-/// length is used and `substituted` set; if one segment per run plus one per unmappable
-/// probe interval is already over kPlacementBudget (always so with that many spans),
-/// every span gets one segment and effectiveValue is infinity. +infinity is accepted and
-/// gives one segment per run.
+/// Everything a tessellation depends on besides its source, fixed before it starts
+/// (OpenSubdiv's Bfr::Tessellation::Options). The tessellators take it as given:
+/// the one place a style's values become options is the view's
+/// (view/CurveTessellation.h, measureFor), after checkSubdivisionStyle applied
+/// QD3DStyle.h's substitution rule.
+struct TessellationOptions {
+    Method method = Method::kConstant;
+    /// Constant: segments per non-empty span (in u for surfaces), a whole number
+    /// from 1 to kMaxSegmentsPerSpan (kMaxConstantSegments); a fraction is
+    /// truncated, anything outside is clampedSegments'. Adaptive: the longest a
+    /// segment (a triangle edge) may be, measured between the mapped images of its
+    /// end points; not > 0 (NaN included) is substituted, +infinity gives one
+    /// segment per run.
+    double c1 = 1.0;
+    /// Surfaces, constant method: segments per span in v, as c1.
+    double c2 = 1.0;
+    /// Adaptive: the space lengths are measured in.
+    ProjectiveMapping mapping;
+    /// Adaptive: a general mapping used instead of `mapping` when set (every
+    /// evaluation is mapped; tests use it for mappings that are not projective).
+    PointMapping customMapping;
+    /// Curves: the most segments (at most kMaxSegments; a curve still gets one
+    /// segment per non-empty span).
+    std::size_t maxSegments = kMaxSegments;
+    /// The view volume: local -> homogeneous frustum coordinates, row-major
+    /// (x and y within +-w, the hither plane at z = 0), when hasClip.
+    bool hasClip = false;
+    std::array<double, 16> clip{};
+    /// Curves: spans whose control points all lie outside one plane of `clip`
+    /// (or the hither plane) cannot be seen and get one segment, from their start
+    /// to their end (a chord inside the span's hull, so it cannot be seen either),
+    /// at no cost besides their Bezier conversion. Needs hasClip.
+    bool cullHiddenSpans = false;
+    /// Curves: the same with any predicate (used instead of cullHiddenSpans when set).
+    SpanCulling hidden;
+    /// Surfaces, adaptive: triangles whose piece of the surface lies outside `clip`
+    /// (shown by the convex hull of its Bezier control points) are not held to c1.
+    /// Needs hasClip.
+    bool coarseOutsideClip = false;
+};
+
+/// A constant count as the tessellators use it: truncated, then at least 1 and at
+/// most kMaxSegmentsPerSpan (NaN counts as 1).
+std::uint32_t clampedSegments(double count);
+
+/// Tessellates a curve, replacing the contents of `out` and reusing its storage (a
+/// view re-tessellates into one result every frame). The source is a valid curve (an
+/// invalid one, checked with validateCurve, gives an empty result) or its Bezier form.
+///
+/// Method::kConstant (kQ3SubdivisionMethodConstant): clampedSegments(c1) segments in
+/// every non-empty span, at uniform parameters within the span; s spans give
+/// c1 * s + 1 vertices before exact duplicates are dropped. The count is lowered so
+/// the total stays within maxSegments (never below 1 per span); a count other than c1
+/// sets `substituted`. Uses the Bezier sampling kernel.
+///
+/// Method::kAdaptive (kQ3SubdivisionMethodWorldSpace and ScreenSpace): a polyline
+/// whose segments, measured between the mapped images of their end points, are at
+/// most c1 long, with close to the fewest segments: every segment but the last of
+/// each run of mappable curve is at least (1 - kChordTolerance) * c1. When the
+/// planned count (kLengthPadding * length / c1 per run) would exceed the placement
+/// budget (7/8 of maxSegments), or c1 is not > 0 (NaN included), a larger length is
+/// used and `substituted` set; if one segment per run plus one per unmappable probe
+/// interval is already over the budget (always so with that many spans), every span
+/// gets one segment and effectiveValue is infinity.
 /// Where the mapping fails, segments are not measured: the mapped part is measured up
 /// to the edge where its image ends (found by bisection to the last bit of the
 /// parameter), then one unmeasured segment per probe interval (probeSegmentsPerSpan)
@@ -186,39 +215,25 @@ void tessellateConstant(const BezierForm& form, std::uint32_t segmentsPerSpan, T
 /// counted in unmeasuredSegments. So an unmeasured segment starts or ends at such an
 /// edge or at a point without an image: with the near plane as the edge, its part
 /// that is drawn has no length.
-/// For any finite input the output is O(kMaxSegments + spans * probeSegmentsPerSpan),
-/// and the curve is evaluated and mapped O(kMaxRootIterations) times per output vertex
-/// (placing a vertex, or bisecting for an edge), at O(order) per evaluation, plus
-/// O(order^2) per span for its Bezier form. The mapping is called from this thread only.
-/// With `limits`: hidden spans are neither probed nor measured and get one (unmeasured)
-/// segment each; limits.maxSegments replaces kMaxSegments above (the placement budget
-/// being 7/8 of it), so a view can bound the work by what it can show.
-/// Errors: none; an invalid curve gives an empty result, substitution is reported in the
-/// result. Ownership: the mapping and the culling are only used during the call.
-TessellatedCurve tessellateAdaptive(const CurveRef& curve, double maxSegmentLength,
-                                    const PointMapping& mapping, const ViewLimits& limits = {});
-TessellatedCurve tessellateAdaptive(const BezierForm& form, double maxSegmentLength,
-                                    const PointMapping& mapping, const ViewLimits& limits = {});
-/// The same, replacing the contents of `out` and reusing its storage.
-void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const PointMapping& mapping,
-                        TessellatedCurve& out, const ViewLimits& limits = {});
-void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const PointMapping& mapping,
-                        TessellatedCurve& out, const ViewLimits& limits = {});
-
-/// The same with a ProjectiveMapping, which is faster: a span with an image everywhere
-/// (see ProjectiveMapping) is mapped as a whole and sampled with the kernel,
-/// kDenseSamplesPerSegment samples per planned segment; the chords between its samples
-/// give its sampled length S, and it gets n = ceil(S / (kArcTarget * maxSegmentLength))
-/// segments of equal sampled length (the parameter of each vertex interpolated between
-/// two samples). Every segment is then measured between the images of its end points;
-/// if one is longer than maxSegmentLength, the span is marched instead, one vertex at a
-/// time, each where the chord reaches (1 - kChordTolerance) to 1 times
-/// maxSegmentLength. So none is longer than maxSegmentLength, and a span gets at most
-/// S / (kArcTarget * maxSegmentLength) + 1 segments, S being at most its length.
-/// Other spans are marched as with a PointMapping.
-void tessellateAdaptive(const CurveRef& curve, double maxSegmentLength, const ProjectiveMapping& mapping,
-                        TessellatedCurve& out, const ViewLimits& limits = {});
-void tessellateAdaptive(const BezierForm& form, double maxSegmentLength, const ProjectiveMapping& mapping,
-                        TessellatedCurve& out, const ViewLimits& limits = {});
+/// With the ProjectiveMapping (no customMapping), a span with an image everywhere is
+/// mapped as a whole and sampled with the kernel, kDenseSamplesPerSegment samples per
+/// planned segment; the chords between its samples give its sampled length S, and it
+/// gets n = ceil(S / (kArcTarget * c1)) segments of equal sampled length. Every
+/// segment is then measured between the images of its end points; if one is longer
+/// than c1, the span is marched instead, one vertex at a time, each where the chord
+/// reaches (1 - kChordTolerance) to 1 times c1. So none is longer than c1, and a span
+/// gets at most S / (kArcTarget * c1) + 1 segments, S being at most its length.
+/// For any finite input the output is O(maxSegments + spans * probeSegmentsPerSpan),
+/// and the curve is evaluated and mapped O(kMaxRootIterations) times per output vertex,
+/// at O(order) per evaluation, plus O(order^2) per span for its Bezier form.
+///
+/// Hidden spans (cullHiddenSpans, hidden) get one segment each and are counted in
+/// hiddenSpans; the adaptive method neither probes nor measures them.
+/// Errors: none; substitution and caps are reported in the result for the caller to
+/// post (geometry/Decompose.h, postSubdivisionWarning). Ownership: the result owns its
+/// arrays; the mappings and the culling are only used during the call, from this
+/// thread.
+void tessellate(const CurveRef& curve, const TessellationOptions& options, TessellatedCurve& out);
+void tessellate(const BezierForm& form, const TessellationOptions& options, TessellatedCurve& out);
 
 } // namespace q3::nurbs

@@ -52,10 +52,6 @@ public:
 // Immediate-mode geometries decompose without asking for subdivision.
 class NoSubdivision final : public DecomposeContext {
 public:
-    void curvePolyline(const nurbs::CurveRef&, CurveCache*, const PolylineUser&) const override
-    {
-        throw std::logic_error("no curve here");
-    }
     SubdivisionMeasure subdivisionMeasure() const override { return SubdivisionMeasure{}; }
 };
 

@@ -2,11 +2,11 @@
 // Copyright (c) 2026 The Q3 authors
 
 // A retained curve as the view draws it: it keeps no tessellation
-// (geometry/CurveCache.h), so every pass subdivides it once, into the view's
+// (geometry/NURBCurve.h), so every pass subdivides it once, into the view's
 // one curve buffer; every change (edit, style) is drawn at the next frame and
 // an unchanged re-render draws the same pixels. The scene is set up through
 // the C API and the counter read through the core
-// (CurveCache::tessellations, View::curveScratchBytes).
+// (NURBCurve::tessellations, View::curveScratchBytes).
 
 #include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
@@ -63,8 +63,7 @@ protected:
         Q3Exit();
     }
 
-    CurveCache& cache() { return lookup<NURBCurve>(m_curve, "curve").cache(); }
-    std::uint64_t subdivisions() { return cache().tessellations.load(); }
+    std::uint64_t subdivisions() { return lookup<NURBCurve>(m_curve, "curve").tessellations(); }
     std::size_t scratchBytes() { return lookup<View>(m_view, "view").curveScratchBytes(); }
 
     // One frame: `before` runs first inside the loop, then `curve` (m_curve
@@ -244,32 +243,34 @@ TEST(CurveCacheMemory, TheWholeFormLimitCountsBezierPoints)
     EXPECT_TRUE(nurbs::fitsWholeBezierForm(UniformCurve(4, spans * 4).ref()));
 }
 
+// What a pass does with a curve (NURBCurve::decompose): tessellate under the
+// options the setting resolves to, into the buffer given.
+const std::vector<float>& subdivide(const nurbs::CurveRef& ref, const TessellationSetting& setting,
+                                    nurbs::TessellatedCurve& into)
+{
+    nurbs::tessellate(ref, measureFor(setting).options, into);
+    return into.vertices;
+}
+
 TEST(CurveCacheMemory, ALargeCurveDrawsFromTheScratchWhatItsWholeFormGives)
 {
     const UniformCurve large(16, nurbs::kWholeFormLimit / 16 + 7);
     const nurbs::CurveRef ref = large.ref();
-    CurveCache cache;
     nurbs::TessellatedCurve scratch;
     TessellationSetting setting;
     setting.style = {kQ3SubdivisionMethodConstant, 3.0f, 0.0f};
-    std::vector<float> drawn;
-    const float* handed = nullptr;
-    const PolylineUser keep = [&](const float* xyz, std::size_t count) {
-        handed = xyz;
-        drawn.assign(xyz, xyz + 3 * count);
-    };
-    withCurvePolyline(ref, &cache, setting, keep, &scratch);
-    EXPECT_EQ(cache.tessellations.load(), 1u);
-    EXPECT_EQ(handed, scratch.vertices.data());
+    std::vector<float> drawn = subdivide(ref, setting, scratch);
     // Span-by-span conversion is the same arithmetic as the whole form's.
-    EXPECT_EQ(drawn, nurbs::tessellateConstant(nurbs::BezierForm(ref), 3).vertices);
+    nurbs::TessellationOptions three;
+    three.c1 = 3;
+    nurbs::TessellatedCurve fromForm;
+    nurbs::tessellate(nurbs::BezierForm(ref), three, fromForm);
+    EXPECT_EQ(drawn, fromForm.vertices);
 
     // Another style, the same buffer; c1 holds.
     const float c1 = 0.002f;
     setting.style = {kQ3SubdivisionMethodWorldSpace, c1, 0.0f};
-    withCurvePolyline(ref, &cache, setting, keep, &scratch);
-    EXPECT_EQ(cache.tessellations.load(), 2u);
-    EXPECT_EQ(handed, scratch.vertices.data());
+    drawn = subdivide(ref, setting, scratch);
     ASSERT_GT(drawn.size(), 6u);
     double longest = 0.0;
     for (std::size_t v = 3; v < drawn.size(); v += 3)
@@ -285,14 +286,11 @@ TEST(CurveCacheMemory, WithoutAScratchACallUsesItsOwnBufferAndDrawsTheSame)
     const UniformCurve small(16, 50);
     TessellationSetting setting;
     setting.style = {kQ3SubdivisionMethodConstant, 3.0f, 0.0f};
-    std::vector<float> own;
-    std::vector<float> scratched;
-    withCurvePolyline(small.ref(), nullptr, setting,
-                      [&](const float* xyz, std::size_t count) { own.assign(xyz, xyz + 3 * count); });
+    nurbs::TessellatedCurve fresh;
+    const std::vector<float> own = subdivide(small.ref(), setting, fresh);
     nurbs::TessellatedCurve scratch;
-    withCurvePolyline(small.ref(), nullptr, setting,
-                      [&](const float* xyz, std::size_t count) { scratched.assign(xyz, xyz + 3 * count); },
-                      &scratch);
+    subdivide(UniformCurve(4, 9).ref(), setting, scratch); // a buffer used before
+    const std::vector<float> scratched = subdivide(small.ref(), setting, scratch);
     EXPECT_EQ(own.size(), (50u * 3 + 1) * 3);
     EXPECT_EQ(own, scratched);
 }
@@ -311,8 +309,11 @@ TEST(CurveCacheMemory, AReusedResultGivesWhatAFreshOneGives)
         std::uint32_t segments;
     } runs[] = {{&cubicA, 64}, {&cubicB, 64}, {&quintic, 64}, {&cubicA, 9}, {&cubicB, 64}};
     for (const auto& run : runs) {
-        nurbs::tessellateConstant(run.curve->ref(), run.segments, reused);
-        const nurbs::TessellatedCurve fresh = nurbs::tessellateConstant(run.curve->ref(), run.segments);
+        nurbs::TessellationOptions options;
+        options.c1 = run.segments;
+        nurbs::tessellate(run.curve->ref(), options, reused);
+        nurbs::TessellatedCurve fresh;
+        nurbs::tessellate(run.curve->ref(), options, fresh);
         EXPECT_EQ(reused.vertices, fresh.vertices) << "order " << run.curve->order << ", " << run.segments;
         EXPECT_EQ(reused.parameters, fresh.parameters);
         EXPECT_EQ(reused.table.order(), run.curve->order);

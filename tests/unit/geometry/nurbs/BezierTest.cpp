@@ -227,13 +227,15 @@ TEST(NurbsBezier, Avx2KernelsGiveTheBaselineBitsForEveryOrder)
         const TestCurve curve = test::randomCurve(rng, k, options);
         ASSERT_TRUE(forceKernelIsa(KernelIsa::kBaseline));
         const KernelOutput baseline = runKernels(curve.ref());
+        TessellationOptions thirteen;
+        thirteen.c1 = 13;
         TessellatedCurve baselineCurve;
-        tessellateConstant(curve.ref(), 13, baselineCurve);
+        tessellate(curve.ref(), thirteen, baselineCurve);
         ASSERT_TRUE(forceKernelIsa(KernelIsa::kAvx2));
         EXPECT_EQ(activeKernelIsa(), KernelIsa::kAvx2);
         const KernelOutput avx2 = runKernels(curve.ref());
         TessellatedCurve avx2Curve;
-        tessellateConstant(curve.ref(), 13, avx2Curve);
+        tessellate(curve.ref(), thirteen, avx2Curve);
         ASSERT_FALSE(baseline.form.empty());
         EXPECT_TRUE(sameBits(baseline.form, avx2.form)) << "order " << k << ", trial " << trial;
         EXPECT_TRUE(sameBits(baseline.samplesFloat, avx2.samplesFloat)) << "order " << k;

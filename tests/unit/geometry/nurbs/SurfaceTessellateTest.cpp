@@ -139,10 +139,11 @@ double expectValidMesh(const TessellatedSurface& s)
 TEST(SurfaceTessellate, ConstantGivesTwoTrianglesPerCellAndCoversTheDomain)
 {
     const TestPatch p = bump();
-    SurfaceSubdivision how;
-    how.uSegments = 7;
-    how.vSegments = 5;
-    const TessellatedSurface s = tessellateSurface(p.ref(), how);
+    TessellationOptions how;
+    how.c1 = 7;
+    how.c2 = 5;
+    TessellatedSurface s;
+    tessellateSurface(p.ref(), how, s);
     EXPECT_EQ(s.triangleCount(), 2u * 7 * 5);
     EXPECT_EQ(s.vertexCount(), 8u * 6);
     EXPECT_NEAR(expectValidMesh(s), 1.0, 1e-12);
@@ -152,11 +153,12 @@ TEST(SurfaceTessellate, ConstantGivesTwoTrianglesPerCellAndCoversTheDomain)
 TEST(SurfaceTessellate, WorldSpaceEdgesAreWithinTheBound)
 {
     const TestPatch p = bump();
-    SurfaceSubdivision how;
-    how.adaptive = true;
-    how.maxEdge = 0.1;
-    how.mapping = kIdentity;
-    const TessellatedSurface s = tessellateSurface(p.ref(), how);
+    TessellationOptions how;
+    how.method = Method::kAdaptive;
+    how.c1 = 0.1;
+    how.customMapping = kIdentity;
+    TessellatedSurface s;
+    tessellateSurface(p.ref(), how, s);
     EXPECT_NEAR(expectValidMesh(s), 1.0, 1e-12);
     double longest = 0.0;
     for (std::size_t t = 0; t < s.triangleCount(); ++t)
@@ -188,11 +190,12 @@ TEST(SurfaceTessellate, AHoleAndAnIslandKeepTheRightArea)
     p.addPolygon({{0.1f, 0.1f}, {0.9f, 0.1f}, {0.9f, 0.9f}, {0.1f, 0.9f}}); // outer, counterclockwise
     p.addCircle(0.5f, 0.5f, 0.3f, true);                                    // hole
     p.addCircle(0.5f, 0.5f, 0.1f, false);                                   // island
-    SurfaceSubdivision how;
-    how.adaptive = true;
-    how.maxEdge = 0.05;
-    how.mapping = kIdentity;
-    const TessellatedSurface s = tessellateSurface(p.ref(), how);
+    TessellationOptions how;
+    how.method = Method::kAdaptive;
+    how.c1 = 0.05;
+    how.customMapping = kIdentity;
+    TessellatedSurface s;
+    tessellateSurface(p.ref(), how, s);
     ASSERT_FALSE(s.crossing);
     const double pi = 3.14159265358979;
     const double expected = 0.64 - pi * 0.09 + pi * 0.01;
@@ -204,9 +207,10 @@ TEST(SurfaceTessellate, ALoneClockwiseLoopCutsAHole)
 {
     TestPatch p = bump();
     p.addPolygon({{0.25f, 0.25f}, {0.25f, 0.75f}, {0.75f, 0.75f}, {0.75f, 0.25f}});
-    SurfaceSubdivision how;
-    how.uSegments = how.vSegments = 8;
-    const TessellatedSurface s = tessellateSurface(p.ref(), how);
+    TessellationOptions how;
+    how.c1 = how.c2 = 8;
+    TessellatedSurface s;
+    tessellateSurface(p.ref(), how, s);
     EXPECT_NEAR(expectValidMesh(s), 0.75, 1e-9);
 }
 
@@ -215,9 +219,10 @@ TEST(SurfaceTessellate, CrossingLoopsAreRefused)
     TestPatch p = bump();
     p.addPolygon({{0.1f, 0.1f}, {0.6f, 0.1f}, {0.6f, 0.6f}, {0.1f, 0.6f}});
     p.addPolygon({{0.4f, 0.4f}, {0.9f, 0.4f}, {0.9f, 0.9f}, {0.4f, 0.9f}});
-    SurfaceSubdivision how;
-    how.uSegments = how.vSegments = 4;
-    const TessellatedSurface s = tessellateSurface(p.ref(), how);
+    TessellationOptions how;
+    how.c1 = how.c2 = 4;
+    TessellatedSurface s;
+    tessellateSurface(p.ref(), how, s);
     EXPECT_TRUE(s.crossing);
     EXPECT_EQ(s.triangleCount(), 0u);
 }

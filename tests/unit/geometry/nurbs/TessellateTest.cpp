@@ -22,6 +22,43 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // the curve's size, so 1e-6 of the size is a safe bound for "on the curve".
 constexpr double kOnCurveTolerance = 1e-6;
 
+// The constant method with c1 = segmentsPerSpan over `base` (its culling and cap).
+template <typename Source>
+TessellatedCurve constantOf(const Source& source, double segmentsPerSpan, const TessellationOptions& base = {})
+{
+    TessellationOptions options = base;
+    options.method = Method::kConstant;
+    options.c1 = segmentsPerSpan;
+    TessellatedCurve out;
+    tessellate(source, options, out);
+    return out;
+}
+
+// The adaptive method with c1 = maxSegmentLength, measured through a general mapping.
+template <typename Source>
+TessellatedCurve adaptiveOf(const Source& source, double maxSegmentLength, const PointMapping& mapping,
+                          const TessellationOptions& base = {})
+{
+    TessellationOptions options = base;
+    options.method = Method::kAdaptive;
+    options.c1 = maxSegmentLength;
+    options.customMapping = mapping;
+    TessellatedCurve out;
+    tessellate(source, options, out);
+    return out;
+}
+
+// The same through a ProjectiveMapping (the fast path), into `out`.
+template <typename Source>
+void adaptiveOf(const Source& source, double maxSegmentLength, const ProjectiveMapping& mapping, TessellatedCurve& out)
+{
+    TessellationOptions options;
+    options.method = Method::kAdaptive;
+    options.c1 = maxSegmentLength;
+    options.mapping = mapping;
+    tessellate(source, options, out);
+}
+
 std::size_t segmentCount(const TessellatedCurve& result)
 {
     return result.vertexCount() == 0 ? 0 : result.vertexCount() - 1;
@@ -188,7 +225,7 @@ TEST(NurbsTessellate, ConstantGivesMSegmentsPerSpanOnRandomCurves)
         options.repeatProbability = trial % 4 == 0 ? 0.5 : 0.0;
         const TestCurve curve = test::randomCurve(rng, k, options);
         const std::uint32_t m = 1 + std::uint32_t(trial % 9);
-        const TessellatedCurve result = tessellateConstant(curve.ref(), m);
+        const TessellatedCurve result = constantOf(curve.ref(), m);
         const std::vector<Span> spans = nonEmptySpans(curve.ref());
         EXPECT_FALSE(result.substituted);
         EXPECT_EQ(result.effectiveValue, double(m));
@@ -209,8 +246,8 @@ TEST(NurbsTessellate, ConstantFromCachedFormMatchesConstantFromCurve)
     std::mt19937 rng(2);
     for (int trial = 0; trial < 40; ++trial) {
         const TestCurve curve = test::randomCurve(rng, 2 + trial % 15, {});
-        const TessellatedCurve direct = tessellateConstant(curve.ref(), 6);
-        const TessellatedCurve cached = tessellateConstant(BezierForm(curve.ref()), 6);
+        const TessellatedCurve direct = constantOf(curve.ref(), 6);
+        const TessellatedCurve cached = constantOf(BezierForm(curve.ref()), 6);
         EXPECT_EQ(direct.vertices, cached.vertices);
         EXPECT_EQ(direct.parameters, cached.parameters);
     }
@@ -220,7 +257,7 @@ TEST(NurbsTessellate, ConstantListingOneWithFiveSegments)
 {
     // The article's subdivision example: c1 = 5 on the single-span Bezier curve.
     const TestCurve curve = test::listingOneCurve();
-    const TessellatedCurve result = tessellateConstant(curve.ref(), 5);
+    const TessellatedCurve result = constantOf(curve.ref(), 5);
     ASSERT_EQ(result.vertexCount(), 6u);
     EXPECT_EQ(result.parameters[0], 0.0);
     EXPECT_EQ(result.parameters[5], 1.0);
@@ -234,7 +271,7 @@ TEST(NurbsTessellate, ConstantDropsRepeatedVertices)
 {
     // Order 2 through A, A, B: the first span is a single point.
     const TestCurve curve = test::makeCurve(2, {1, 2, 3, 1, 1, 2, 3, 1, 4, 2, 3, 1}, {0, 0, 1, 2, 2});
-    const TessellatedCurve result = tessellateConstant(curve.ref(), 3);
+    const TessellatedCurve result = constantOf(curve.ref(), 3);
     ASSERT_EQ(result.vertexCount(), 4u);  // A, then three points up to B
     EXPECT_EQ(result.parameters.front(), 0.0);
     EXPECT_EQ(result.parameters.back(), 2.0);
@@ -244,18 +281,18 @@ TEST(NurbsTessellate, ConstantDropsRepeatedVertices)
 TEST(NurbsTessellate, PointCurveGivesSingleVertex)
 {
     const TestCurve curve = test::makeCurve(3, {2, 2, 2, 2, 1, 1, 1, 1, 3, 3, 3, 3}, {0, 0, 0, 1, 1, 1});
-    const TessellatedCurve constant = tessellateConstant(curve.ref(), 10);
+    const TessellatedCurve constant = constantOf(curve.ref(), 10);
     ASSERT_EQ(constant.vertexCount(), 1u);
     EXPECT_EQ(constant.parameters[0], 0.0);
     EXPECT_EQ(constant.vertices[0], 1.0f);
-    const TessellatedCurve adaptive = tessellateAdaptive(curve.ref(), 0.01, AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}});
+    const TessellatedCurve adaptive = adaptiveOf(curve.ref(), 0.01, AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}});
     EXPECT_EQ(adaptive.vertexCount(), 1u);
 }
 
 TEST(NurbsTessellate, ConstantReplacesZeroByOne)
 {
     const TestCurve curve = test::listingOneCurve();
-    const TessellatedCurve result = tessellateConstant(curve.ref(), 0);
+    const TessellatedCurve result = constantOf(curve.ref(), 0);
     EXPECT_TRUE(result.substituted);
     EXPECT_EQ(result.effectiveValue, 1.0);
     EXPECT_EQ(result.vertexCount(), 2u);
@@ -266,19 +303,19 @@ TEST(NurbsTessellate, ConstantCapsSegmentsPerSpan)
     const TestCurve curve = test::makeCurve(3, {0, 0, 0, 1, 1, 1, 0, 1, 2, 0, 0, 1, 3, 1, 0, 1, 4, 0, 0, 1},
                                             {0, 0, 0, 1, 2, 3, 3, 3});
     for (std::uint32_t requested : {kMaxSegmentsPerSpan + 1, 100000u, 0xFFFFFFFFu}) {
-        const TessellatedCurve result = tessellateConstant(curve.ref(), requested);
+        const TessellatedCurve result = constantOf(curve.ref(), requested);
         EXPECT_TRUE(result.substituted);
         EXPECT_EQ(result.effectiveValue, double(kMaxSegmentsPerSpan));
         EXPECT_EQ(result.vertexCount(), 3 * kMaxSegmentsPerSpan + 1);
     }
-    const TessellatedCurve exact = tessellateConstant(curve.ref(), kMaxSegmentsPerSpan);
+    const TessellatedCurve exact = constantOf(curve.ref(), kMaxSegmentsPerSpan);
     EXPECT_FALSE(exact.substituted);
 }
 
 TEST(NurbsTessellate, ConstantCapsTotalSegments)
 {
     const TestCurve curve = longCurve(4, 5003);  // 5000 spans
-    const TessellatedCurve result = tessellateConstant(curve.ref(), 1000);
+    const TessellatedCurve result = constantOf(curve.ref(), 1000);
     EXPECT_TRUE(result.substituted);
     const std::uint32_t expected = std::uint32_t(kMaxSegments / 5000);
     EXPECT_EQ(result.effectiveValue, double(expected));
@@ -293,7 +330,7 @@ TEST(NurbsTessellate, HugeOrderSixteenCurveStaysBounded)
     // methods fall back to one segment per span (the documented floor).
     const TestCurve curve = longCurve(16, 1000000);
     const std::size_t spans = 1000000 - 15;
-    const TessellatedCurve constant = tessellateConstant(curve.ref(), 4);
+    const TessellatedCurve constant = constantOf(curve.ref(), 4);
     EXPECT_TRUE(constant.substituted);
     EXPECT_EQ(constant.effectiveValue, 1.0);
     EXPECT_EQ(constant.vertexCount(), spans + 1);
@@ -301,7 +338,7 @@ TEST(NurbsTessellate, HugeOrderSixteenCurveStaysBounded)
 
     const double size = curve.domainEnd();
     const TessellatedCurve adaptive =
-        tessellateAdaptive(curve.ref(), size * 1e-6, AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}});
+        adaptiveOf(curve.ref(), size * 1e-6, AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}});
     EXPECT_TRUE(adaptive.substituted);
     EXPECT_LE(segmentCount(adaptive), std::max(kMaxSegments, spans));
     EXPECT_EQ(adaptive.parameters.front(), curve.domainStart());
@@ -323,7 +360,7 @@ TEST(NurbsTessellate, HugeCurveWithTinyLengthPlansWithinBudget)
     ASSERT_LT(spans, kPlacementBudget);
     const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
     const double c1 = 1e-6 * 1e6;  // the curve is about a million units long
-    const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+    const TessellatedCurve result = adaptiveOf(curve.ref(), c1, mapping);
     EXPECT_TRUE(result.substituted);
     EXPECT_GT(result.effectiveValue, c1);
     EXPECT_LE(segmentCount(result), kMaxSegments);
@@ -353,7 +390,7 @@ TEST(NurbsTessellate, WorldSpaceChordsAreShortAndFewOnRandomCurves)
         const PointMapping mapping = affine;
         const double length = mappedLength(curve, mapping, 400);
         const double c1 = length / divisions(rng);
-        const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+        const TessellatedCurve result = adaptiveOf(curve.ref(), c1, mapping);
         EXPECT_FALSE(result.substituted);
         EXPECT_FALSE(result.capped);
         EXPECT_EQ(result.effectiveValue, c1);
@@ -376,7 +413,7 @@ TEST(NurbsTessellate, ScreenSpaceChordsAreShortAndFewUnderPerspective)
         const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, 0.2, 12});
         const PointMapping mapping = PerspectiveMap{-25.0, 1.0};
         const double c1 = pixels(rng);
-        const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+        const TessellatedCurve result = adaptiveOf(curve.ref(), c1, mapping);
         EXPECT_FALSE(result.substituted);
         EXPECT_EQ(result.unmeasuredSegments, 0u);
         expectPolylineInvariants(curve, result);
@@ -392,8 +429,8 @@ TEST(NurbsTessellate, AdaptiveFromCachedFormMatchesAdaptiveFromCurve)
     const PointMapping mapping = PerspectiveMap{-25.0, 1.0};
     for (int trial = 0; trial < 30; ++trial) {
         const TestCurve curve = test::randomCurve(rng, 2 + trial % 15, {});
-        const TessellatedCurve direct = tessellateAdaptive(curve.ref(), 3.0, mapping);
-        const TessellatedCurve cached = tessellateAdaptive(BezierForm(curve.ref()), 3.0, mapping);
+        const TessellatedCurve direct = adaptiveOf(curve.ref(), 3.0, mapping);
+        const TessellatedCurve cached = adaptiveOf(BezierForm(curve.ref()), 3.0, mapping);
         EXPECT_EQ(direct.vertices, cached.vertices);
         EXPECT_EQ(direct.parameters, cached.parameters);
     }
@@ -405,8 +442,8 @@ TEST(NurbsTessellate, AdaptiveStreamingMatchesCachedFormOnLongCurve)
     // converts span by span; it must give the same polyline as the cached form.
     const TestCurve curve = longCurve(16, 20015);
     const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
-    const TessellatedCurve streamed = tessellateAdaptive(curve.ref(), 0.3, mapping);
-    const TessellatedCurve cached = tessellateAdaptive(BezierForm(curve.ref()), 0.3, mapping);
+    const TessellatedCurve streamed = adaptiveOf(curve.ref(), 0.3, mapping);
+    const TessellatedCurve cached = adaptiveOf(BezierForm(curve.ref()), 0.3, mapping);
     EXPECT_FALSE(streamed.substituted);
     EXPECT_EQ(streamed.parameters, cached.parameters);
     EXPECT_EQ(streamed.vertices, cached.vertices);
@@ -422,7 +459,7 @@ TEST(NurbsTessellate, PartlyBehindEyeCurveTerminatesAndMeasuresVisibleChords)
         const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, 0.2, 12});
         const PointMapping mapping = PerspectiveMap{0.0, 0.1};
         const double c1 = 8.0;
-        const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+        const TessellatedCurve result = adaptiveOf(curve.ref(), c1, mapping);
         expectPolylineInvariants(curve, result);
         EXPECT_LE(segmentCount(result), kMaxSegments);
         if (!result.capped) {
@@ -474,7 +511,7 @@ TEST(NurbsTessellate, ProjectiveMappingKeepsEveryChordWithinC1)
         const PointMapping mapping = perspective;
         const double c1 = trial == 0 ? 0.2 : std::exp(logPixels(rng));
         TessellatedCurve result;
-        tessellateAdaptive(curve.ref(), c1, projectiveOf(perspective), result);
+        adaptiveOf(curve.ref(), c1, projectiveOf(perspective), result);
         expectPolylineInvariants(curve, result, 7);
         if (!result.capped) {
             EXPECT_LE(longestMappedChord(curve, result, mapping), result.effectiveValue * (1.0 + 1e-9))
@@ -504,7 +541,7 @@ TEST(NurbsTessellate, ProjectiveMappingSearchesWhereDenseSamplesAreFartherThanC1
     const PointMapping mapping = perspective;
     for (const double c1 : {0.5, 2.0, 7.0}) {
         TessellatedCurve result;
-        tessellateAdaptive(curve.ref(), c1, projectiveOf(perspective), result);
+        adaptiveOf(curve.ref(), c1, projectiveOf(perspective), result);
         expectPolylineInvariants(curve, result);
         EXPECT_FALSE(result.capped);
         EXPECT_LE(longestMappedChord(curve, result, mapping), c1 * (1.0 + 1e-9)) << c1;
@@ -515,7 +552,7 @@ TEST(NurbsTessellate, UnmappableCurveGetsProbeSegmentsPerSpan)
 {
     const TestCurve curve = test::listingOneCurve();
     const PointMapping never = [](const Point3&, Point3&) { return false; };
-    const TessellatedCurve result = tessellateAdaptive(curve.ref(), 0.001, never);
+    const TessellatedCurve result = adaptiveOf(curve.ref(), 0.001, never);
     EXPECT_EQ(segmentCount(result), probeSegmentsPerSpan(4));
     EXPECT_EQ(result.unmeasuredSegments, probeSegmentsPerSpan(4));
     EXPECT_FALSE(result.substituted);
@@ -533,7 +570,7 @@ TEST(NurbsTessellate, ACrossingProbeIntervalIsMeasuredUpToTheEdge)
         return p.x <= edge;
     };
     const double c1 = 0.05;
-    const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, leftOnly);
+    const TessellatedCurve result = adaptiveOf(curve.ref(), c1, leftOnly);
     expectPolylineInvariants(curve, result);
     const std::vector<float>& v = result.vertices;
     bool edgeFound = false;
@@ -567,7 +604,7 @@ TEST(NurbsTessellate, EdgeSearchesStopAtTheirBudget)
         q = p;
         return p.x <= edge;
     };
-    const TessellatedCurve result = tessellateAdaptive(zigzag.ref(), 10.0, leftOnly);
+    const TessellatedCurve result = adaptiveOf(zigzag.ref(), 10.0, leftOnly);
     ASSERT_GT(result.vertexCount(), spans);
     std::size_t edges = 0;
     for (std::size_t i = 0; i < result.vertexCount(); ++i)
@@ -583,7 +620,7 @@ TEST(NurbsTessellate, NonFiniteMappedPointCountsAsUnmappable)
         q = Point3{p.x, p.x > 1.0 ? std::numeric_limits<double>::quiet_NaN() : p.y, 0.0};
         return true;
     };
-    const TessellatedCurve result = tessellateAdaptive(curve.ref(), 0.05, nan);
+    const TessellatedCurve result = adaptiveOf(curve.ref(), 0.05, nan);
     expectPolylineInvariants(curve, result);
     EXPECT_GT(result.unmeasuredSegments, 0u);
     EXPECT_LE(segmentCount(result), 200u);
@@ -595,7 +632,7 @@ TEST(NurbsTessellate, TinyLengthIsSubstitutedAndBounded)
     const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
     const double length = mappedLength(curve, mapping, 200);
     const double c1 = length * 1e-6 / 1e3;
-    const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+    const TessellatedCurve result = adaptiveOf(curve.ref(), c1, mapping);
     EXPECT_TRUE(result.substituted);
     EXPECT_GT(result.effectiveValue, c1);
     EXPECT_LE(segmentCount(result), kMaxSegments);
@@ -610,7 +647,7 @@ TEST(NurbsTessellate, NonPositiveOrNaNLengthIsSubstituted)
     const TestCurve curve = test::listingOneCurve();
     const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
     for (double c1 : {0.0, -1.0, -kInf, std::numeric_limits<double>::quiet_NaN()}) {
-        const TessellatedCurve result = tessellateAdaptive(curve.ref(), c1, mapping);
+        const TessellatedCurve result = adaptiveOf(curve.ref(), c1, mapping);
         EXPECT_TRUE(result.substituted) << c1;
         EXPECT_GT(result.effectiveValue, 0.0);
         EXPECT_LE(segmentCount(result), kMaxSegments);
@@ -622,7 +659,7 @@ TEST(NurbsTessellate, InfiniteLengthGivesOneSegmentPerSpan)
 {
     const TestCurve curve = longCurve(3, 12);
     const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
-    const TessellatedCurve result = tessellateAdaptive(curve.ref(), kInf, mapping);
+    const TessellatedCurve result = adaptiveOf(curve.ref(), kInf, mapping);
     EXPECT_FALSE(result.substituted);
     EXPECT_EQ(segmentCount(result), countNonEmptySpans(curve.ref()));
     expectPolylineInvariants(curve, result);
@@ -633,9 +670,9 @@ TEST(NurbsTessellate, InvalidCurveGivesEmptyResult)
     TestCurve curve = test::listingOneCurve();
     curve.knots[2] = 5.0f;
     const PointMapping mapping = AffineMap{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
-    EXPECT_EQ(tessellateConstant(curve.ref(), 4).vertexCount(), 0u);
-    EXPECT_EQ(tessellateAdaptive(curve.ref(), 0.1, mapping).vertexCount(), 0u);
-    EXPECT_EQ(tessellateConstant(BezierForm(curve.ref()), 4).vertexCount(), 0u);
+    EXPECT_EQ(constantOf(curve.ref(), 4).vertexCount(), 0u);
+    EXPECT_EQ(adaptiveOf(curve.ref(), 0.1, mapping).vertexCount(), 0u);
+    EXPECT_EQ(constantOf(BezierForm(curve.ref()), 4).vertexCount(), 0u);
 }
 
 } // namespace
@@ -644,7 +681,7 @@ TEST(NurbsTessellate, InvalidCurveGivesEmptyResult)
 namespace q3::nurbs {
 namespace {
 
-// ViewLimits::hidden: a span it rejects gets exactly one segment, from its start to
+// TessellationOptions::hidden: a span it rejects gets exactly one segment, from its start to
 // its end, under both methods; the others are subdivided as without it. The predicate
 // here hides spans by index (every third), counted as the tessellator asks.
 TEST(NurbsTessellate, HiddenSpansGetOneSegmentUnderBothMethods)
@@ -654,7 +691,7 @@ TEST(NurbsTessellate, HiddenSpansGetOneSegmentUnderBothMethods)
         const TestCurve curve = test::randomCurve(rng, 2 + trial % 9, {});
         const std::vector<Span> spans = nonEmptySpans(curve.ref());
         const BezierForm form(curve.ref());
-        ViewLimits limits;
+        TessellationOptions limits;
         limits.hidden = [&form](const Point4* points, unsigned) {
             for (std::size_t s = 0; s < form.spanCount(); ++s)
                 if (form.spanPoints(s) == points)
@@ -662,7 +699,7 @@ TEST(NurbsTessellate, HiddenSpansGetOneSegmentUnderBothMethods)
             return false;
         };
         const std::size_t hiddenCount = (spans.size() + 1) / 3; // s = 1, 4, 7, ...
-        const TessellatedCurve constant = tessellateConstant(form, 8, limits);
+        const TessellatedCurve constant = constantOf(form, 8, limits);
         EXPECT_EQ(constant.hiddenSpans, hiddenCount);
         ASSERT_EQ(constant.vertexCount(), 8 * (spans.size() - hiddenCount) + hiddenCount + 1);
         expectPolylineInvariants(curve, constant);
@@ -677,7 +714,7 @@ TEST(NurbsTessellate, HiddenSpansGetOneSegmentUnderBothMethods)
             return true;
         };
         const double c1 = test::curveScale(curve) / 50;
-        const TessellatedCurve adaptive = tessellateAdaptive(form, c1, identity, limits);
+        const TessellatedCurve adaptive = adaptiveOf(form, c1, identity, limits);
         EXPECT_EQ(adaptive.hiddenSpans, hiddenCount);
         EXPECT_FALSE(adaptive.substituted);
         expectPolylineInvariants(curve, adaptive);
@@ -697,7 +734,7 @@ TEST(NurbsTessellate, HiddenSpansGetOneSegmentUnderBothMethods)
     }
 }
 
-// ViewLimits::maxSegments replaces kMaxSegments: a c1 that would need more gets a
+// TessellationOptions::maxSegments replaces kMaxSegments: a c1 that would need more gets a
 // longer length (substituted), and the count stays within the cap.
 TEST(NurbsTessellate, MaxSegmentsFromTheViewBoundsTheAdaptiveCount)
 {
@@ -706,16 +743,90 @@ TEST(NurbsTessellate, MaxSegmentsFromTheViewBoundsTheAdaptiveCount)
         out = p;
         return true;
     };
-    ViewLimits limits;
+    TessellationOptions limits;
     limits.maxSegments = 4096;
-    const TessellatedCurve capped = tessellateAdaptive(curve.ref(), 1e-6, identity, limits);
+    const TessellatedCurve capped = adaptiveOf(curve.ref(), 1e-6, identity, limits);
     EXPECT_TRUE(capped.substituted);
     EXPECT_GT(capped.effectiveValue, 1e-6);
     EXPECT_LE(segmentCount(capped), 4096u);
     EXPECT_GT(segmentCount(capped), 2048u);
-    const TessellatedCurve fine = tessellateAdaptive(curve.ref(), 0.01, identity, limits);
+    const TessellatedCurve fine = adaptiveOf(curve.ref(), 0.01, identity, limits);
     EXPECT_FALSE(fine.substituted);
     EXPECT_EQ(fine.effectiveValue, 0.01);
+}
+
+} // namespace
+} // namespace q3::nurbs
+
+namespace q3::nurbs {
+namespace {
+
+// A constant count as the tessellators use it: truncated, then 1 to
+// kMaxSegmentsPerSpan, NaN and -infinity as 1.
+TEST(NurbsTessellate, ClampedSegmentsTruncatesAndBounds)
+{
+    EXPECT_EQ(clampedSegments(0.0), 1u);
+    EXPECT_EQ(clampedSegments(-3.0), 1u);
+    EXPECT_EQ(clampedSegments(std::nan("")), 1u);
+    EXPECT_EQ(clampedSegments(-kInf), 1u);
+    EXPECT_EQ(clampedSegments(1.0), 1u);
+    EXPECT_EQ(clampedSegments(2.99), 2u);
+    EXPECT_EQ(clampedSegments(double(kMaxSegmentsPerSpan)), kMaxSegmentsPerSpan);
+    EXPECT_EQ(clampedSegments(double(kMaxSegmentsPerSpan) + 0.5), kMaxSegmentsPerSpan);
+    EXPECT_EQ(clampedSegments(kInf), kMaxSegmentsPerSpan);
+}
+
+// cullHiddenSpans with a clip matrix: a span is hidden exactly when all its
+// Bezier control points lie outside one of the planes x = +-w, y = +-w or
+// z = 0 (z > 0 outside) after the matrix, as computed here from the form.
+TEST(NurbsTessellate, ClipCullsSpansWhoseControlPointsAreAllOutsideOnePlane)
+{
+    std::mt19937 rng(30);
+    std::size_t culled = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const TestCurve curve = test::randomCurve(rng, 2 + trial % 7, {});
+        const BezierForm form(curve.ref());
+        // Scale so that the view volume (|x|, |y| <= w) holds part of the curve,
+        // and push z behind the hither plane except for some trials.
+        const double k = 1.0 / (0.5 * test::curveScale(curve));
+        TessellationOptions options;
+        options.c1 = 6;
+        options.hasClip = true;
+        options.cullHiddenSpans = true;
+        options.clip = {k, 0, 0, 0.3, 0, k, 0, -0.2, 0, 0, trial % 3 == 0 ? 1.0 : 0.0, -1.0, 0, 0, 0, 1};
+        std::size_t expected = 0;
+        for (std::size_t s = 0; s < form.spanCount(); ++s) {
+            unsigned outside[5] = {0, 0, 0, 0, 0};
+            for (unsigned i = 0; i < form.order(); ++i) {
+                const Point4& p = form.spanPoints(s)[i];
+                const double x = k * p.x + 0.3 * p.w, y = k * p.y - 0.2 * p.w;
+                const double z = (trial % 3 == 0 ? p.z : 0.0) - p.w, w = p.w;
+                outside[0] += x > w;
+                outside[1] += -x > w;
+                outside[2] += y > w;
+                outside[3] += -y > w;
+                outside[4] += z > 0.0;
+            }
+            bool hidden = false;
+            for (unsigned count : outside)
+                hidden = hidden || count == form.order();
+            expected += hidden ? 1 : 0;
+        }
+        culled += expected;
+        TessellatedCurve fromCurve, fromForm;
+        tessellate(curve.ref(), options, fromCurve);
+        tessellate(form, options, fromForm);
+        EXPECT_EQ(fromCurve.hiddenSpans, expected) << "trial " << trial;
+        EXPECT_EQ(fromForm.hiddenSpans, expected);
+        const std::size_t spans = form.spanCount();
+        EXPECT_EQ(fromCurve.vertexCount(), 6 * (spans - expected) + expected + 1);
+        expectPolylineInvariants(curve, fromCurve);
+        // Without hasClip nothing is culled.
+        options.hasClip = false;
+        tessellate(curve.ref(), options, fromCurve);
+        EXPECT_EQ(fromCurve.hiddenSpans, 0u);
+    }
+    EXPECT_GT(culled, 0u); // the trials do cull
 }
 
 } // namespace

@@ -1,0 +1,96 @@
+/* SPDX-License-Identifier: MIT */
+/* Copyright (c) 2026 The Q3 authors */
+#include "LegacyCommon.h"
+
+#include <QD3DErrors.h>
+#include <QD3DGeometry.h>
+#include <QD3DMath.h>
+
+#include <stdio.h>
+#include <string.h>
+
+int gFailures = 0;
+
+void Check(TQ3Boolean ok, const char *what)
+{
+    if (!ok) {
+        printf("%s: %s failed (error %d: %s)\n", gMyProgramName, what, (int)Q3Error_Get(NULL), Q3Error_GetMessage());
+        gFailures++;
+    }
+}
+
+TQ3AttributeSet MyNewColorSet(float r, float g, float b)
+{
+    TQ3AttributeSet set;
+    TQ3ColorRGB color;
+
+    color.r = r;
+    color.g = g;
+    color.b = b;
+    set = Q3AttributeSet_New();
+    if (set != NULL)
+        Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color);
+    return set;
+}
+
+void MyCheckAndDisposeSet(TQ3AttributeSet set, TQ3AttributeSet expected, const char *what)
+{
+    Check((TQ3Boolean)(set == expected), what);
+    if (set != NULL)
+        Q3Object_Dispose(set);
+}
+
+void MyBoundAndDispose(TQ3ViewObject view, TQ3GeometryObject geometry)
+{
+    TQ3BoundingBox bounds;
+
+    if (geometry == NULL) {
+        gFailures++;
+        return;
+    }
+    CHECK(Q3View_StartBoundingBox(view, kQ3ComputeBoundsExact));
+    do {
+        CHECK(Q3Geometry_Submit(geometry, view));
+    } while (Q3View_EndBoundingBox(view, &bounds) == kQ3ViewStatusRetraverse);
+    Check((TQ3Boolean)(bounds.isEmpty == kQ3False), "bounds");
+    Q3Object_Dispose(geometry);
+}
+
+TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, unsigned long height)
+{
+    TQ3PixmapDrawContextData contextData;
+
+    memset(&contextData, 0, sizeof contextData);
+    contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
+    contextData.drawContextData.clearImageColor.a = 1.0f;
+    contextData.pixmap.image = pixels;
+    contextData.pixmap.width = width;
+    contextData.pixmap.height = height;
+    contextData.pixmap.rowBytes = width * 4;
+    contextData.pixmap.pixelSize = 32;
+    contextData.pixmap.pixelType = kQ3PixelTypeARGB32;
+    contextData.pixmap.bitOrder = kQ3EndianBig;
+    contextData.pixmap.byteOrder = kQ3EndianBig;
+    return Q3PixmapDrawContext_New(&contextData);
+}
+
+TQ3CameraObject MyNewOrthographicCamera(float z, float hither, float yon, float left, float top, float right,
+                                        float bottom)
+{
+    TQ3OrthographicCameraData cameraData;
+
+    memset(&cameraData, 0, sizeof cameraData);
+    Q3Point3D_Set(&cameraData.cameraData.placement.cameraLocation, 0.0f, 0.0f, z);
+    Q3Vector3D_Set(&cameraData.cameraData.placement.upVector, 0.0f, 1.0f, 0.0f);
+    cameraData.cameraData.range.hither = hither;
+    cameraData.cameraData.range.yon = yon;
+    cameraData.cameraData.viewPort.origin.x = -1.0f;
+    cameraData.cameraData.viewPort.origin.y = 1.0f;
+    cameraData.cameraData.viewPort.width = 2.0f;
+    cameraData.cameraData.viewPort.height = 2.0f;
+    cameraData.left = left;
+    cameraData.top = top;
+    cameraData.right = right;
+    cameraData.bottom = bottom;
+    return Q3OrthographicCamera_New(&cameraData);
+}
