@@ -268,6 +268,26 @@ def meshes(runs, out):
     out.append("")
 
 
+def models(runs, out):
+    out.append("### 8. A real-world-like model: 10,240 textured Phong triangles in 20 meshes, 4 textures, "
+               "a translucent column, two lights, 512² (paired, wall time, medians)\n")
+    out.append("| Q3 frame | raw OpenGL, static buffers, one draw per material | Q3 / raw | Target | "
+               "first frame of a new view | Target | the process's first frame (info) | pixels differing (info) |")
+    out.append("|---|---|---|---|---|---|---|---|")
+    problem = missing(runs, "ModelFrame", "FirstFrame")
+    if problem:
+        out.append(f"| {problem} | | | | | | | |")
+        out.append("")
+        return
+    c = lambda k: runs.counter("ModelFrame", k)
+    first = runs.counter("FirstFrame", "first_frame_ms")
+    out.append(f"| {fmt(c('q3_ms'))} ms | {fmt(c('raw_ms'))} ms | **{c('q3_over_raw'):.3f}×** | "
+               f"{verdict(c('q3_over_raw'), 1.05, False)} | {fmt(first)} ms | "
+               f"{'meets' if first <= 15 else 'MISSES'} (≤ 15 ms) | {fmt(c('process_first_frame_ms'))} ms | "
+               f"{c('pixels_differing'):.0f} of {512 * 512} |")
+    out.append("")
+
+
 def memory(runs, out):
     out.append("### 5. Memory held per retained curve (after one frame, constant c1 = 64)\n")
     out.append("| Curve | data bytes | object + copies | added by a 1st frame | held / data | Target | "
@@ -344,6 +364,7 @@ def main(paths):
     memory(runs, out)
     meshes(runs, out)
     patches(runs, out)
+    models(runs, out)
     counts = sorted({runs.count(n) for n in runs.runs})
     out.append(f"Repetitions pooled per benchmark: {', '.join(map(str, counts))}.")
     if runs.errors:

@@ -52,7 +52,7 @@ fi
 cmake --build "$build_dir" --target benchmarks
 
 bin="$build_dir/benchmarks"
-for exe in q3_bench_tessellate q3_bench_glu q3_bench_glu_patch q3_bench_frame q3_bench_memory q3_bench_mesh; do
+for exe in q3_bench_tessellate q3_bench_glu q3_bench_glu_patch q3_bench_frame q3_bench_memory q3_bench_mesh q3_bench_model; do
   if [ ! -x "$bin/$exe" ]; then
     echo "run.sh: $bin/$exe was not built (is libglu1-mesa-dev installed? see scripts/setup.sh)" >&2
     exit 1
@@ -76,6 +76,7 @@ for round in $(seq 1 "$rounds"); do
   run q3_bench_glu_patch "$round"
   run q3_bench_frame "$round"
   run q3_bench_mesh "$round"
+  run q3_bench_model "$round"
 done
 run q3_bench_memory 1
 

@@ -16,7 +16,19 @@ namespace q3 {
 /// textures from 0. Invariant: pixels() holds width() * height() * 4 bytes.
 class NullRenderTarget final : public RenderTarget {
 public:
-    /// The names of the calls made so far ("beginFrame", "drawElements", ...).
+    /// What one draw call was given.
+    struct DrawRecord {
+        std::size_t triangles = 0;
+        std::size_t lines = 0;
+        std::size_t points = 0;
+        std::size_t edges = 0;
+        Shading::Fill fill = Shading::Fill::kFilled;
+        bool lit = false;
+        bool edgesAlone = false;
+    };
+    /// The draw calls made so far, in order.
+    const std::vector<DrawRecord>& draws() const { return m_draws; }
+    /// The names of the calls made so far ("beginFrame", "draw", ...).
     const std::vector<std::string>& calls() const { return m_calls; }
     /// How many of the recorded calls are named `name`.
     std::size_t count(const std::string& name) const
@@ -38,27 +50,12 @@ public:
     }
     RenderResult setMatrix(const float[16]) override { return record("setMatrix"); }
     RenderResult setMatrix(const double[16]) override { return record("setMatrix"); }
-    RenderResult drawLineStrip(const float*, std::size_t, const RgbColor&) override
+    /// Records "draw" and keeps the mesh's counts and the shading's fill.
+    RenderResult draw(const MeshView& mesh, const Shading& shading) override
     {
-        return record("drawLineStrip");
-    }
-    RenderResult drawLines(const float*, std::size_t, const RgbColor&) override { return record("drawLines"); }
-    RenderResult drawPoints(const float*, std::size_t, const RgbColor&, float = 1.0f) override
-    {
-        return record("drawPoints");
-    }
-    RenderResult drawTriangles(const float*, std::size_t, const RgbColor&) override
-    {
-        return record("drawTriangles");
-    }
-    RenderResult drawElements(DrawMode, const float*, const float*, std::size_t, const std::uint32_t*, std::size_t,
-                              const RgbColor&, bool, const float* = nullptr) override
-    {
-        return record("drawElements");
-    }
-    RenderResult drawArrays(DrawMode, const float*, const float*, std::size_t, const RgbColor&, bool) override
-    {
-        return record("drawArrays");
+        m_draws.push_back(DrawRecord{mesh.triangleCount, mesh.lineCount, mesh.pointCount, mesh.edgeCount, shading.fill,
+                                     shading.lit, shading.edgesAlone});
+        return record("draw");
     }
     RenderResult drawBitmap(const float*, const BitmapImage&, const RgbColor&) override
     {
@@ -68,21 +65,12 @@ public:
     RenderResult setLighting(const LightingSetup&) override { return record("setLighting"); }
     RenderResult setFaceOptions(const FaceOptions&) override { return record("setFaceOptions"); }
     RenderResult setAntiAlias(const AntiAliasOptions&) override { return record("setAntiAlias"); }
-    RenderResult drawLitTriangles(const float*, const float*, const float*, std::size_t, const std::uint32_t*,
-                                  std::size_t, const RgbColor&, const SurfaceShading&,
-                                  const float* = nullptr) override
-    {
-        return record("drawLitTriangles");
-    }
-    RenderResult setTexture(const TextureImage*) override { return record("setTexture"); }
     RenderResult addTexture(const TextureImage&, std::uint32_t& id) override
     {
         id = m_textures++;
         return record("addTexture");
     }
-    RenderResult useTexture(std::uint32_t) override { return record("useTexture"); }
     RenderResult setFog(const FogSetup&) override { return record("setFog"); }
-    RenderResult setOpacity(const OpacitySetup&) override { return record("setOpacity"); }
     RenderResult endFrame() override
     {
         m_inFrame = false;
@@ -109,6 +97,7 @@ private:
     }
 
     std::vector<std::string> m_calls;
+    std::vector<DrawRecord> m_draws;
     std::vector<std::uint8_t> m_pixels;
     std::uint32_t m_width = 0;
     std::uint32_t m_height = 0;

@@ -5,12 +5,16 @@
 // The one seam between the view and whatever draws its pixels. Every backend
 // call is listed here once (Filament's DriverAPI.inc is the model): frame
 // control (beginFrame, endFrame, cancelFrame, the finished image), state
-// (matrix, lights, face options, textures) and the draw calls. A backend
+// (matrix, lights, face options, anti-aliasing, textures, fog), one draw call
+// for a mesh (draw: a MeshView and the Shading the view resolved for it,
+// the backend deciding how to upload and draw it) and the two screen-space
+// images that are not meshes (drawBitmap, drawPixmap). A backend
 // (render/: OSMesa today) implements it; the view holds a RenderTarget made
 // by makeRenderTarget() and never names the backend, so another one (or
 // NullRenderTarget in the unit tests) can take its place.
 
 #include "base/PixelConvert.h"
+#include "base/Primitives.h"
 #include "base/RenderResult.h"
 
 #include <cstddef>
@@ -35,7 +39,8 @@ struct RgbaColor {
     float a = 0.0f;
 };
 
-/// The primitive of a drawElements or drawArrays call.
+/// The primitive of a backend's drawElements or drawArrays call
+/// (render/OffscreenRenderer.h).
 enum class DrawMode { kPoints, kLines, kLineStrip, kTriangles };
 
 /// What a frame is drawn with besides its size and pane.
@@ -101,12 +106,7 @@ struct TextureLevel {
 /// (repeats) or, when clamped, takes the edge texel. `mipmaps` holds the
 /// smaller images of a mipmap chain after this one, image i (from 1) being
 /// max(1, width >> i) x max(1, height >> i), down to 1 x 1; kTrilinear uses
-/// them (without them it is kBilinear). Alpha is decoded with the colour;
-/// drawing does not blend it.
-/// top. A triangle vertex's texture coordinate (s, t) picks the texel in
-/// column floor(s * width) and row floor(t * height) counted from the top
-/// row (nearest sampling); outside 0..1 a coordinate wraps (repeats) or, when
-/// clamped, takes the edge texel. The texel's alpha multiplies the
+/// them (without them it is kBilinear). The texel's alpha multiplies the
 /// triangle's opacity (OpacitySetup).
 struct TextureImage {
     const void* pixels = nullptr;
@@ -221,10 +221,9 @@ struct FogSetup {
     float wPlane[4] = {0.0f, 0.0f, 0.0f, 1.0f};
 };
 
-/// The opacity of the vertices of the following filled triangles (drawn by
-/// drawElements and drawLitTriangles): `alpha` holds one value per vertex
-/// of each of those draws (`count` of them), or is null, when every vertex
-/// has `uniform`. 1 is opaque, 0 invisible; the triangle's pixels are
+/// The opacity of the vertices of a draw's filled triangles (its Shading;
+/// the backend's setOpacity): `alpha` holds one value per vertex (`count`
+/// of them), or is null, when every vertex has `uniform`. 1 is opaque, 0 invisible; the triangle's pixels are
 /// blended over what is behind them as
 ///     result = a * colour + (1 - a) * behind      (alpha: a + (1 - a) * behind)
 /// with a the interpolated opacity times the texel's alpha. Triangles with
@@ -241,6 +240,53 @@ struct OpacitySetup {
     const float* alpha = nullptr;
     std::size_t count = 0;
     float uniform = 1.0f;
+};
+
+/// Shading's "no texture".
+constexpr std::uint32_t kNoTexture = 0xFFFFFFFFu;
+
+/// How RenderTarget::draw draws one mesh: what the view resolved from its
+/// state and the geometry's attributes, so that the backend needs nothing
+/// else. The arrays hold one entry per vertex of the mesh drawn, and are
+/// read during the call only.
+struct Shading {
+    /// How the mesh's triangles are drawn (QuickDraw 3D's fill style, with
+    /// the wireframe renderer's edges for filled): filled; as their edges
+    /// (MeshView::edges, else every side of every triangle); or every vertex
+    /// of the mesh as a point.
+    enum class Fill { kFilled, kEdges, kPoints };
+    Fill fill = Fill::kFilled;
+    /// A mesh without triangles draws its edges (the wireframe renderer).
+    bool edgesAlone = false;
+    /// The colour of every vertex (r g b per vertex), or null for `color`.
+    const float* rgb = nullptr;
+    RgbColor color{1.0f, 1.0f, 1.0f};
+    /// Unlit filled triangles: colours interpolated across each, or the
+    /// colour of its last vertex. (Lines interpolate per-vertex colours;
+    /// points never do.)
+    bool smooth = true;
+    /// Filled triangles lit by the frame's lights (setLighting) as
+    /// `surface` says, with the mesh's normals (unit length after
+    /// normalizing; a vertex whose normal is NaN, or every vertex under
+    /// flat interpolation, takes its triangle's face normal, turned to the
+    /// side clockwiseFront names the front, or for flat interpolation to
+    /// the side its vertices' normals point to); otherwise unlit.
+    /// Lit at the vertices, a textured pixel is the interpolated ambient
+    /// and diffuse light (computed with the colour, clamped to 0..1) times
+    /// the texel plus the interpolated specular light; lit at every pixel,
+    /// the equations are evaluated with Od = colour times the texel.
+    bool lit = false;
+    SurfaceShading surface;
+    bool clockwiseFront = false;
+    /// Filled triangles textured with texture `texture` (addTexture) at
+    /// these coordinates (s t per vertex, t down from the image's top row),
+    /// each pixel its colour times the texel (OpenGL's modulate); null or
+    /// kNoTexture: untextured.
+    const float* st = nullptr;
+    std::uint32_t texture = kNoTexture;
+    /// The opacity of the filled triangles' vertices (OpacitySetup: `alpha`
+    /// null or one value per vertex of the mesh).
+    OpacitySetup opacity;
 };
 
 /// Draws points, lines, filled triangles and screen-space images into an
@@ -291,44 +337,20 @@ public:
     virtual RenderResult setMatrix(const float m[16]) = 0;
     virtual RenderResult setMatrix(const double m[16]) = 0;
 
-    /// Draws one connected polyline through `count` points (xyz: 3 floats per
-    /// point, tightly packed). Fewer than 2 points draw nothing.
-    virtual RenderResult drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color) = 0;
-    /// Draws count / 2 separate segments; count must be even.
-    virtual RenderResult drawLines(const float* xyz, std::size_t count, const RgbColor& color) = 0;
-    /// Draws count square points of pointSize pixels (aliased; OpenGL clamps
-    /// the size to its range, 1..255 for llvmpipe).
-    virtual RenderResult drawPoints(const float* xyz, std::size_t count, const RgbColor& color,
-                                    float pointSize = 1.0f) = 0;
-    /// Draws count / 3 filled, unlit, single-coloured triangles (both faces);
-    /// count must be a multiple of 3.
-    /// Errors (all four draw calls): kWrongState outside a frame;
-    /// kInvalidArgument if xyz is NULL while count > 0, a count does not fit
-    /// the primitive, any coordinate or colour channel is NaN/infinite, or
-    /// pointSize is not a positive finite number; kOutOfMemory; and, if the
-    /// call flushed a full batch, the endFrame() errors. On error nothing of
-    /// the call is drawn.
-    virtual RenderResult drawTriangles(const float* xyz, std::size_t count, const RgbColor& color) = 0;
-
-    /// Draws indexed primitives over a pool of vertexCount vertices: xyz
-    /// holds 3 floats per vertex, rgb 3 per vertex or is null (then every
-    /// vertex is `color`). Each index refers to the pool; indexCount must fit
-    /// the mode (even for lines, a multiple of 3 for triangles; a line strip
-    /// is not accepted). With smooth, colours are interpolated across each
-    /// line and triangle; without, each takes the colour of its last vertex.
-    /// Errors: those of the calls above, and kInvalidArgument for an index
-    /// not below vertexCount or a non-finite rgb value.
-    /// With st (2 floats per vertex) and a current texture (setTexture),
-    /// triangles are textured: each pixel is its interpolated colour times
-    /// the texel (OpenGL's modulate); st is ignored for other primitives or
-    /// without a texture. Errors also: kInvalidArgument for a non-finite st.
-    virtual RenderResult drawElements(DrawMode mode, const float* xyz, const float* rgb, std::size_t vertexCount,
-                                      const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
-                                      bool smooth, const float* st = nullptr) = 0;
-    /// Draws count consecutive vertices as one primitive list (or one line
-    /// strip), with per-vertex colours as drawElements.
-    virtual RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count,
-                                    const RgbColor& color, bool smooth) = 0;
+    /// Draws a mesh under the current matrix as `shading` says (Shading): its
+    /// triangles as the fill style says, then its lines, line strips and
+    /// points; edges only under Shading::edgesAlone when it has no
+    /// triangles. Bitmaps and pixmaps of the view are not drawn (drawBitmap,
+    /// drawPixmap). The arrays are read during the call only.
+    /// Errors: kWrongState outside a frame; kInvalidArgument for a NULL
+    /// positions array with vertices, an index not below vertexCount, a
+    /// NaN or infinite coordinate, colour, normal, texture coordinate or
+    /// shading value, an opacity array of another length than vertexCount,
+    /// an opacity outside 0..1, or a texture id this frame has not given;
+    /// kOutOfMemory; and, if the call flushed a full batch, the endFrame()
+    /// errors. On error what the call drew before the failing primitive
+    /// may stay.
+    virtual RenderResult draw(const MeshView& mesh, const Shading& shading) = 0;
 
     /// Draws the set bits of `image` as pixels of `color`, parallel to the
     /// pane, placed by the image of `anchor` (3 floats) under the current
@@ -358,31 +380,10 @@ public:
     /// is kept, every sample of a pixel alike). Errors: kWrongState outside
     /// a frame.
     virtual RenderResult setAntiAlias(const AntiAliasOptions& options) = 0;
-    /// Draws indexed triangles lit by the frame's lights as `shading` says:
-    /// normals holds a unit normal per vertex (3 floats, local coordinates),
-    /// rgb the diffuse colours (or null: `color`). Errors as drawElements,
-    /// and kInvalidArgument for a non-finite normal or shading value.
-    /// With st and a current texture, the texel takes the place of the
-    /// diffuse colour Od: lit at the vertices, a pixel is the interpolated
-    /// ambient and diffuse light (computed with rgb, clamped to 0..1) times
-    /// the texel plus the interpolated specular light; lit at every pixel,
-    /// the equations are evaluated with Od = rgb times the texel.
-    virtual RenderResult drawLitTriangles(const float* xyz, const float* normals, const float* rgb,
-                                          std::size_t vertexCount, const std::uint32_t* indices, std::size_t indexCount,
-                                          const RgbColor& color, const SurfaceShading& shading,
-                                          const float* st = nullptr) = 0;
-
-    /// The texture for the following draws that pass texture coordinates
-    /// (null: none): addTexture, then useTexture. The image is decoded and
-    /// copied now, so the caller's pixels may go away after the call.
-    /// Errors: kWrongState outside a frame; kInvalidArgument for NULL pixels
-    /// or an invalid layout (the current texture is then none); kOutOfMemory.
-    virtual RenderResult setTexture(const TextureImage* texture) = 0;
-
-    /// useTexture's "no texture".
-    static constexpr std::uint32_t kNoTexture = 0xFFFFFFFFu;
+    /// Shading's "no texture" (kept here for the backend's own calls).
+    static constexpr std::uint32_t kNoTexture = q3::kNoTexture;
     /// Keeps a texture for the rest of the frame and sets `id` to its
-    /// number for useTexture; the current texture does not change. The image
+    /// number for Shading::texture; the current texture does not change. The image
     /// (with its mipmaps) is decoded and copied now (the caller's pixels may
     /// go away after the call) and uploaded to OpenGL once, when a draw first
     /// uses it, however often the frame switches to it. Errors: kWrongState
@@ -391,25 +392,11 @@ public:
     /// or a filter outside TextureFilter; kOutOfMemory (id is then
     /// unchanged).
     virtual RenderResult addTexture(const TextureImage& texture, std::uint32_t& id) = 0;
-    /// Makes texture `id` of this frame (addTexture) the one for the
-    /// following draws that pass texture coordinates, or none with
-    /// kNoTexture. Errors: kWrongState outside a frame; kInvalidArgument for
-    /// an id this frame has not given (the current texture is unchanged).
-    virtual RenderResult useTexture(std::uint32_t id) = 0;
-
     /// The fog of the following draws (FogSetup). Errors: kWrongState
     /// outside a frame; kInvalidArgument for an unknown mode or a NaN or
     /// infinite value, a negative density or, for linear fog, start not
     /// below end (the fog stays as it was).
     virtual RenderResult setFog(const FogSetup& fog) = 0;
-    /// The opacity of the following filled triangles (OpacitySetup). The
-    /// alpha array is read by each draw call, so it must stay valid until
-    /// the last draw it serves; a draw whose vertex count is not `count`
-    /// fails with kInvalidArgument. Errors: kWrongState outside a frame;
-    /// kInvalidArgument for a NaN, infinite or out-of-range (0..1) uniform
-    /// value (the opacity stays as it was). Each frame starts opaque.
-    virtual RenderResult setOpacity(const OpacitySetup& opacity) = 0;
-
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;
     /// kGraphicsError if OpenGL reported an error. The frame is closed even

@@ -40,6 +40,7 @@
     X(BindTexture) \
     X(BlendFuncSeparate) \
     X(BlitFramebuffer) \
+    X(BufferData) \
     X(CheckFramebufferStatus) \
     X(Clear) \
     X(ClearColor) \
@@ -52,6 +53,7 @@
     X(CreateProgram) \
     X(CreateShader) \
     X(CullFace) \
+    X(DeleteBuffers) \
     X(DeleteFramebuffers) \
     X(DeleteProgram) \
     X(DeleteShader) \
@@ -71,6 +73,7 @@
     X(FramebufferRenderbuffer) \
     X(FramebufferTexture2D) \
     X(FrontFace) \
+    X(GenBuffers) \
     X(GenFramebuffers) \
     X(GenRenderbuffers) \
     X(GenTextures) \

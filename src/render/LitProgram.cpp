@@ -25,16 +25,33 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace q3 {
 
 namespace {
 
-// The first source string: the version, then (for the textured variant) the
-// TEXTURED switch, both before anything else as GLSL requires.
+// The first source strings: the version, then the variant's switches
+// (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY, ONE_SIDED), both before anything else as
+// GLSL requires.
 constexpr const char* kVersion = "#version 120\n";
-constexpr const char* kTexturedSwitch = "#define TEXTURED 1\n";
+// The variant's switches (LitProgram::variant), after the version line.
+std::string switches(int variant)
+{
+    std::string text;
+    if ((variant & 1) != 0)
+        text += "#define TEXTURED 1\n";
+    if ((variant & 2) != 0)
+        text += "#define PER_PIXEL 1\n";
+    if ((variant & 4) != 0)
+        text += "#define FOG 1\n";
+    if ((variant & 8) != 0)
+        text += "#define DIRECTIONAL_ONLY 1\n";
+    if ((variant & 16) != 0)
+        text += "#define ONE_SIDED 1\n";
+    return text;
+}
 
 constexpr const char* kShade = R"(
 #define MAX_LIGHTS 32
@@ -57,13 +74,53 @@ uniform vec3 specularColor;
 uniform float specularControl;
 uniform mat4 localToWorld;
 uniform mat3 normalToWorld;
-uniform int perPixel;
 uniform int flipBack;
 varying vec3 worldPosition;
 varying vec3 worldNormal;
 #ifdef TEXTURED
 uniform sampler2D surfaceTexture;
 #endif
+
+// Light i at p: the unit vector l towards it and its attenuation f (with a
+// spot light's fall-off); false where it adds nothing (at the light, or
+// outside a spot light's cone).
+bool lightAt(int i, vec3 p, out vec3 l, out float f)
+{
+#ifdef DIRECTIONAL_ONLY
+    l = -lightDirection[i];
+    f = 1.0;
+#else
+    f = 1.0;
+    if (lightKind[i] == 1) {
+        l = -lightDirection[i];
+    } else {
+        vec3 d = lightPosition[i] - p;
+        float distance = length(d);
+        if (distance <= 0.0)
+            return false;
+        l = d / distance;
+        if (lightAttenuation[i] == 1)
+            f = 1.0 / distance;
+        else if (lightAttenuation[i] == 2)
+            f = 1.0 / (distance * distance);
+        if (lightKind[i] == 3) {
+            float angle = acos(clamp(dot(-l, lightDirection[i]), -1.0, 1.0));
+            if (angle > lightOuter[i])
+                return false;
+            if (angle > lightHot[i]) {
+                float t = (angle - lightHot[i]) / (lightOuter[i] - lightHot[i]);
+                if (lightFallOff[i] == 1)
+                    f *= 1.0 - t;
+                else if (lightFallOff[i] == 2)
+                    f *= (exp(1.0 - t) - 1.0) / (exp(1.0) - 1.0);
+                else if (lightFallOff[i] == 3)
+                    f *= cos(t * 1.5707963267948966);
+            }
+        }
+    }
+#endif
+    return true;
+}
 
 vec3 shade(vec3 p, vec3 n, vec3 od)
 {
@@ -73,34 +130,9 @@ vec3 shade(vec3 p, vec3 n, vec3 od)
         if (i >= lightCount)
             break;
         vec3 l;
-        float f = 1.0;
-        if (lightKind[i] == 1) {
-            l = -lightDirection[i];
-        } else {
-            vec3 d = lightPosition[i] - p;
-            float distance = length(d);
-            if (distance <= 0.0)
-                continue;
-            l = d / distance;
-            if (lightAttenuation[i] == 1)
-                f = 1.0 / distance;
-            else if (lightAttenuation[i] == 2)
-                f = 1.0 / (distance * distance);
-            if (lightKind[i] == 3) {
-                float angle = acos(clamp(dot(-l, lightDirection[i]), -1.0, 1.0));
-                if (angle > lightOuter[i])
-                    continue;
-                if (angle > lightHot[i]) {
-                    float t = (angle - lightHot[i]) / (lightOuter[i] - lightHot[i]);
-                    if (lightFallOff[i] == 1)
-                        f *= 1.0 - t;
-                    else if (lightFallOff[i] == 2)
-                        f *= (exp(1.0 - t) - 1.0) / (exp(1.0) - 1.0);
-                    else if (lightFallOff[i] == 3)
-                        f *= cos(t * 1.5707963267948966);
-                }
-            }
-        }
+        float f;
+        if (!lightAt(i, p, l, f))
+            continue;
         float nl = dot(n, l);
         if (nl <= 0.0)
             continue;
@@ -113,6 +145,37 @@ vec3 shade(vec3 p, vec3 n, vec3 od)
         }
     }
     return result;
+}
+
+// shade(p, n, od) in `lit` and shade(p, n, vec3(0.0)), the specular light
+// alone, in `specular`, in one pass over the lights: the same operations
+// on the same values as two calls, the lights' vectors found once.
+void shadeTwo(vec3 p, vec3 n, vec3 od, out vec3 lit, out vec3 specular)
+{
+    lit = ambientCoefficient * ambientLight * od;
+    specular = ambientCoefficient * ambientLight * vec3(0.0);
+    vec3 toEye = orthographic == 1 ? -viewDirection : normalize(eye - p);
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= lightCount)
+            break;
+        vec3 l;
+        float f;
+        if (!lightAt(i, p, l, f))
+            continue;
+        float nl = dot(n, l);
+        if (nl <= 0.0)
+            continue;
+        lit += f * nl * lightColor[i] * od;
+        specular += f * nl * lightColor[i] * vec3(0.0);
+        if (illumination == 2) {
+            vec3 r = 2.0 * nl * n - l;
+            float rv = dot(r, toEye);
+            if (rv > 0.0) {
+                lit += f * lightColor[i] * specularColor * pow(rv, specularControl);
+                specular += f * lightColor[i] * specularColor * pow(rv, specularControl);
+            }
+        }
+    }
 }
 )";
 
@@ -129,32 +192,44 @@ void main()
     // multiplied by the texel; the specular light (shade with Od = 0) in the
     // secondary colour, added after.
     gl_TexCoord[0] = gl_MultiTexCoord0;
-    if (perPixel == 1) {
-        gl_FrontColor = gl_Color;
-        gl_BackColor = gl_Color;
-    } else {
-        vec3 n = normalize(worldNormal);
-        vec3 specular = shade(worldPosition, n, vec3(0.0));
-        gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb) - specular, 1.0);
-        gl_FrontSecondaryColor = vec4(specular, 1.0);
-        if (flipBack == 1) {
-            vec3 backSpecular = shade(worldPosition, -n, vec3(0.0));
-            gl_BackColor = vec4(shade(worldPosition, -n, gl_Color.rgb) - backSpecular, 1.0);
-            gl_BackSecondaryColor = vec4(backSpecular, 1.0);
-        } else {
-            gl_BackColor = gl_FrontColor;
-            gl_BackSecondaryColor = gl_FrontSecondaryColor;
-        }
-    }
+#ifdef PER_PIXEL
+    gl_FrontColor = gl_Color;
+#ifndef ONE_SIDED
+    gl_BackColor = gl_Color;
+#endif
 #else
-    if (perPixel == 1) {
-        gl_FrontColor = gl_Color;
-        gl_BackColor = gl_Color;
+    vec3 n = normalize(worldNormal);
+    vec3 lit;
+    vec3 specular;
+    shadeTwo(worldPosition, n, gl_Color.rgb, lit, specular);
+    gl_FrontColor = vec4(lit - specular, 1.0);
+    gl_FrontSecondaryColor = vec4(specular, 1.0);
+#ifndef ONE_SIDED
+    if (flipBack == 1) {
+        vec3 backLit;
+        vec3 backSpecular;
+        shadeTwo(worldPosition, -n, gl_Color.rgb, backLit, backSpecular);
+        gl_BackColor = vec4(backLit - backSpecular, 1.0);
+        gl_BackSecondaryColor = vec4(backSpecular, 1.0);
     } else {
-        vec3 n = normalize(worldNormal);
-        gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
-        gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
+        gl_BackColor = gl_FrontColor;
+        gl_BackSecondaryColor = gl_FrontSecondaryColor;
     }
+#endif
+#endif
+#else
+#ifdef PER_PIXEL
+    gl_FrontColor = gl_Color;
+#ifndef ONE_SIDED
+    gl_BackColor = gl_Color;
+#endif
+#else
+    vec3 n = normalize(worldNormal);
+    gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+#ifndef ONE_SIDED
+    gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
+#endif
+#endif
 #endif
     q3FinishVertex();
 }
@@ -164,34 +239,40 @@ constexpr const char* kFragment = R"(
 void main()
 {
 #ifdef TEXTURED
-    vec3 texel = texture2D(surfaceTexture, gl_TexCoord[0].st).rgb;
-    if (perPixel == 1) {
-        vec3 n = normalize(worldNormal);
-        if (flipBack == 1 && !gl_FrontFacing)
-            n = -n;
-        gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
-    } else {
-        gl_FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
-    }
+    vec4 texelColor = texture2D(surfaceTexture, gl_TexCoord[0].st);
+    vec3 texel = texelColor.rgb;
+#ifdef PER_PIXEL
+    vec3 n = normalize(worldNormal);
+    if (flipBack == 1 && !gl_FrontFacing)
+        n = -n;
+    gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
 #else
-    if (perPixel == 1) {
-        vec3 n = normalize(worldNormal);
-        if (flipBack == 1 && !gl_FrontFacing)
-            n = -n;
-        gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
-    } else {
-        gl_FragColor = gl_Color;
-    }
+    gl_FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
 #endif
-    gl_FragColor = q3FinishFragment(gl_FragColor);
+#else
+#ifdef PER_PIXEL
+    vec3 n = normalize(worldNormal);
+    if (flipBack == 1 && !gl_FrontFacing)
+        n = -n;
+    gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+#else
+    gl_FragColor = gl_Color;
+#endif
+#endif
+#ifdef TEXTURED
+    gl_FragColor = q3FinishFragment(gl_FragColor, texelColor.a);
+#else
+    gl_FragColor = q3FinishFragment(gl_FragColor, 1.0);
+#endif
 }
 )";
 
-GLuint compile(GLenum kind, const char* body, bool textured, std::string& error)
+GLuint compile(GLenum kind, const char* body, int variant, std::string& error)
 {
     const GLuint shader = glCreateShader(kind);
     const char* finish = kind == GL_VERTEX_SHADER ? kFinishVertexGlsl : kFinishFragmentGlsl;
-    const char* sources[5] = {kVersion, textured ? kTexturedSwitch : "", kShade, finish, body};
+    const std::string header = switches(variant);
+    const char* sources[5] = {kVersion, header.c_str(), kShade, finish, body};
     glShaderSource(shader, 5, sources, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
@@ -208,12 +289,13 @@ GLuint compile(GLenum kind, const char* body, bool textured, std::string& error)
 
 } // namespace
 
-bool LitProgram::build(std::string& error, bool textured)
+bool LitProgram::build(std::string& error, int variant)
 {
-    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertex, textured, error);
+    const bool textured = (variant & 1) != 0;
+    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertex, variant, error);
     if (vertex == 0)
         return false;
-    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragment, textured, error);
+    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragment, variant, error);
     if (fragment == 0) {
         glDeleteShader(vertex);
         return false;
@@ -254,7 +336,6 @@ bool LitProgram::build(std::string& error, bool textured)
     m_specularControl = at("specularControl");
     m_localToWorld = at("localToWorld");
     m_normalToWorld = at("normalToWorld");
-    m_perPixel = at("perPixel");
     m_flipBack = at("flipBack");
     m_finish.locate(m_program);
     if (textured) {
@@ -342,7 +423,6 @@ void LitProgram::setShading(const SurfaceShading& shading) const
     glUniform1f(m_ambientCoefficient, shading.ambientCoefficient);
     glUniform3fv(m_specularColor, 1, shading.specularColor);
     glUniform1f(m_specularControl, shading.specularControl);
-    glUniform1i(m_perPixel, shading.interpolation == 2 ? 1 : 0);
     glUniform1i(m_flipBack, shading.flipBackFaces ? 1 : 0);
 }
 

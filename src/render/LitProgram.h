@@ -17,11 +17,37 @@ namespace q3 {
 
 class LitProgram {
 public:
-    /// Compiles and links in the current context; false (with the log in
-    /// error) if the driver refuses it. The textured variant takes the
-    /// diffuse colour from the texture bound to unit 0 at gl_TexCoord[0]
-    /// (OffscreenRenderer::drawLitTriangles says how).
-    bool build(std::string& error, bool textured = false);
+    /// The program comes in variants, each compiled only with the code its
+    /// draws run: textured or not (the textured one takes the diffuse
+    /// colour from the texture bound to unit 0 at gl_TexCoord[0], as
+    /// OffscreenRenderer::drawLitTriangles says), lit at the vertices or at
+    /// every pixel (SurfaceShading::interpolation 2). One program for both
+    /// interpolations made llvmpipe run the per-pixel lighting loop in every
+    /// fragment whatever the uniform said (benchmarks/RESULTS.md, ModelFrame);
+    /// likewise fogged or not (SurfaceFinish.h), and lit by directional
+    /// (and ambient) lights only or not: the point and spot code (a square
+    /// root, divisions, acos, exp, cos per light) ran for every light of
+    /// every vertex too; and back faces lit with the front's colours or
+    /// their own (SurfaceShading::flipBackFaces): a one-sided variant
+    /// (isOneSided) writes no back colours, so the back faces' lighting is
+    /// not computed and llvmpipe interpolates half the colours; it is drawn
+    /// with GL_VERTEX_PROGRAM_TWO_SIDE off, every face taking the front
+    /// colours, which the two-sided program gives back faces anyway when
+    /// they are not flipped.
+    static constexpr int kVariants = 32;
+    static bool isOneSided(int variant) { return (variant & 16) != 0; }
+    static int variant(bool textured, const SurfaceShading& shading, bool fogged, const LightingSetup& lighting)
+    {
+        bool directionalOnly = true;
+        for (const RenderLight& light : lighting.lights)
+            directionalOnly = directionalOnly && (light.kind == RenderLight::Kind::kAmbient ||
+                                                  light.kind == RenderLight::Kind::kDirectional);
+        return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0) +
+               (directionalOnly ? 8 : 0) + (shading.flipBackFaces ? 0 : 16);
+    }
+    /// Compiles and links variant `variant` in the current context; false
+    /// (with the log in error) if the driver refuses it.
+    bool build(std::string& error, int variant = 0);
     /// Deletes the program in the current context (when it is destroyed with
     /// its context, forgets it).
     void release();
@@ -40,7 +66,7 @@ private:
     GLint m_lightAttenuation = -1, m_lightHot = -1, m_lightOuter = -1, m_lightFallOff = -1;
     GLint m_ambientLight = -1, m_eye = -1, m_orthographic = -1, m_viewDirection = -1;
     GLint m_illumination = -1, m_ambientCoefficient = -1, m_specularColor = -1, m_specularControl = -1;
-    GLint m_localToWorld = -1, m_normalToWorld = -1, m_perPixel = -1, m_flipBack = -1;
+    GLint m_localToWorld = -1, m_normalToWorld = -1, m_flipBack = -1;
     FinishUniforms m_finish;
 };
 

@@ -64,6 +64,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -195,7 +196,7 @@ RenderResult outOfMemory()
 class OffscreenRenderer::Impl {
 public:
     explicit Impl(const GlBackendChoice& backend) : m_backend(backend) {}
-    ~Impl() { destroyContext(); }
+    ~Impl() { destroyContext(true); }
 
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
                             const PixelRect& pane, const FrameOptions& options);
@@ -269,6 +270,8 @@ private:
         // (image i + 1 is max(1, width >> (i + 1)) wide).
         std::vector<std::vector<std::uint8_t>> mipmaps;
         bool hasAlpha = false; // a texel's alpha is below 1
+        // Its entry in m_textureCache, or kNotCached.
+        std::uint32_t cacheSlot = std::numeric_limits<std::uint32_t>::max();
     };
 
     // first and count are vertices, or for an indexed command indices.
@@ -304,7 +307,12 @@ private:
     };
 
     RenderResult createContext(std::uint32_t width, std::uint32_t height);
-    void destroyContext();
+    // Lets go of the context: into the process's pool of idle contexts
+    // (ContextPool) when `park` and it can be reused, else destroyed.
+    void destroyContext(bool park = false);
+    // Takes an idle context of this backend and size from the pool, with
+    // what it has compiled; false when there is none.
+    bool adoptContext(std::uint32_t width, std::uint32_t height);
     void initializeState();
     void startFrameInGl();
     RenderResult flush(bool finish);
@@ -353,11 +361,16 @@ private:
     struct TranslucentTriangle {
         double depth; // of its centre in clip space (z / w), larger is farther
         std::uint32_t state;
-        std::uint32_t first; // its 3 vertices in m_translucentVertices
+        // Its corners in m_translucentVertices, which holds each vertex of a
+        // draw once however many of its translucent triangles share it (so
+        // that the vertex shader runs once per vertex, as for opaque draws).
+        std::uint32_t v[3];
     };
     struct FogLoad {
         int unlit = -1; // the unlit program variant in use, -1 none
-        std::uint32_t fog[4]; // what each program's fog uniforms hold
+        // What each program's fog uniforms hold: the lit variants, then the
+        // unlit untextured and textured programs.
+        std::uint32_t fog[LitProgram::kVariants + 2];
     };
     static constexpr std::uint32_t kFogUnknown = kNoFog - 1;
     static constexpr float kOpaqueAlpha = 0.998f; // between 254/255 and 1
@@ -369,6 +382,11 @@ private:
     // Opaque runs of an alpha texture draw only its opaque texels.
     void loadOpaqueAlphaTest(std::uint32_t texture, bool& loaded);
     void drawTranslucent(RenderResult& result);
+    // Reorders the sorted translucent triangles so that each state's run is
+    // as long as it can be without changing a pixel (see the definition).
+    void clusterTranslucent();
+    std::vector<std::uint32_t> m_clusterOf;        // clusterTranslucent's scratch
+    std::vector<TranslucentTriangle> m_clustered;
     void forgetTranslucent();
     const FogSetup& fogOf(std::uint32_t fog) const;
 
@@ -382,6 +400,7 @@ private:
     std::vector<TranslucentTriangle> m_translucentTriangles;
     std::vector<GLuint> m_translucentIndices;
     std::vector<std::uint32_t> m_splitOpaque; // drawSplit's opaque triangles
+    std::vector<std::uint32_t> m_splitVertices; // drawSplit: a vertex's place in m_translucentVertices
     UnlitProgram m_unlitPrograms[2];
 
     // The backend asked for (its result: why it cannot be used), and its
@@ -418,8 +437,21 @@ private:
     LightingSetup m_lighting;
     std::vector<SurfaceShading> m_shadings;
     FaceOptions m_faces;
-    LitProgram m_program;
-    LitProgram m_texturedProgram;
+    // The lighting programs, one per variant (LitProgram::variant): textured
+    // or not, lit at the vertices or at every pixel.
+    LitProgram m_litPrograms[LitProgram::kVariants];
+    // The variant a shading is drawn with, built if it is not yet (null,
+    // with `result` set, when the driver refuses it).
+    LitProgram* litProgram(int variant, RenderResult& result);
+    // Two-sided colours for a lit variant that writes them (on between uses:
+    // the unlit programs write both).
+    static void setTwoSided(int variant)
+    {
+        if (LitProgram::isOneSided(variant))
+            glDisable(GL_VERTEX_PROGRAM_TWO_SIDE);
+        else
+            glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
+    }
     // The frame's textures (addTexture), kept until it ends so that a
     // texture drawn again after others, or after a flush, is neither decoded
     // nor uploaded twice; m_currentTexture is the one useTexture chose
@@ -430,6 +462,33 @@ private:
     // not uploaded yet), and names of an earlier frame left to delete.
     std::vector<GLuint> m_textureNames;
     std::vector<GLuint> m_staleTextureNames;
+    // Textures kept on the GPU from frame to frame: a texture added with
+    // the very bytes, layouts, wrap modes and filter of one the previous
+    // frame used is neither decoded nor uploaded again (compared byte for
+    // byte, so an edited image is a new texture). An entry not used by a
+    // frame is deleted at its end, so what is kept is what the scene draws.
+    // The names belong to the renderer's context (released with it).
+    static constexpr std::uint32_t kNotCached = std::numeric_limits<std::uint32_t>::max();
+    static constexpr std::size_t kTextureCacheBytes = std::size_t(64) << 20;
+    struct CachedTexture {
+        std::vector<std::uint8_t> source;  // every level's bytes as given, one after the other
+        std::vector<PixmapLayout> layouts; // every level's layout
+        bool clampS = false;
+        bool clampT = false;
+        TextureFilter filter = TextureFilter::kNearest;
+        bool hasAlpha = false;
+        GLuint name = 0; // 0 until a draw uploads it
+        std::uint64_t lastFrame = 0;
+    };
+    std::vector<CachedTexture> m_textureCache;
+    std::size_t m_textureCacheBytes = 0;
+    std::uint64_t m_frameNumber = 0;
+    // The slot of a cached texture with exactly these images and sampling,
+    // or kNotCached.
+    std::uint32_t findCachedTexture(const TextureImage& texture) const;
+    // Deletes the cache's textures that the frame did not use (all with
+    // `all`); the context must be current.
+    void evictTextures(bool all);
     // Anti-aliasing: the current options, whether this frame draws into the
     // multisample framebuffer, and its OpenGL objects (0: not made yet in
     // this context), with the program that copies the image into it.
@@ -439,19 +498,103 @@ private:
     GLuint m_msColor = 0;
     GLuint m_msDepth = 0;
     GLuint m_copyProgram = 0;
+    // Buffer objects the arrays of a flush are uploaded into once (0: not
+    // made yet in this context): interleaved vertices, plain positions,
+    // indices, translucent opacity. Drawing from client arrays instead makes
+    // Mesa copy the index range of every draw call into a buffer of its own;
+    // a translucent store whose sorted triangles switch state often (meshes
+    // interleaved in depth) then copied its whole vertex range per switch
+    // (benchmarks/RESULTS.md, ModelFrame: most of the main thread's time).
+    enum StreamBuffer { kStreamVertices, kStreamPositions, kStreamIndices, kStreamOpacity, kStreamBufferCount };
+    GLuint m_streamBuffers[kStreamBufferCount] = {0, 0, 0, 0};
+    // Uploads `bytes` into stream buffer `which`, leaving it bound to `target`.
+    void uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes);
 };
+
+namespace {
+
+// Idle contexts, kept for the next renderer of the same backend and size.
+// A new view's first frame otherwise pays for a new OpenGL context (about
+// 5 ms with llvmpipe) and for compiling its GLSL programs and llvmpipe's
+// machine code for them (about 20 ms for a textured, lit, translucent scene:
+// benchmarks/RESULTS.md, FirstFrame); a context handed on keeps its linked
+// programs, and llvmpipe keeps their compiled variants with them. Views come
+// and go (a window resized, a document reopened) far more often than
+// several live at once, so a few idle contexts cover the common case. The
+// pool is never destroyed: an atexit handler may still render after static
+// destructors ran, and the process's end frees what it holds.
+struct IdleContext {
+    GlBackend backend = GlBackend::kOsMesa;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::unique_ptr<GlContext> context;
+    GLint maxViewport[2] = {0, 0};
+    LitProgram litPrograms[LitProgram::kVariants];
+    UnlitProgram unlitPrograms[2];
+    GLuint streamBuffers[4] = {0, 0, 0, 0};
+    GLuint msFramebuffer = 0, msColor = 0, msDepth = 0, copyProgram = 0;
+};
+
+constexpr std::size_t kIdleContexts = 2;
+
+struct ContextPool {
+    std::mutex mutex;
+    std::vector<std::unique_ptr<IdleContext>> idle; // oldest first
+};
+
+ContextPool& contextPool()
+{
+    static ContextPool* pool = new ContextPool;
+    return *pool;
+}
+
+} // namespace
+
+bool OffscreenRenderer::Impl::adoptContext(std::uint32_t width, std::uint32_t height)
+{
+    std::unique_ptr<IdleContext> taken;
+    {
+        ContextPool& pool = contextPool();
+        std::lock_guard<std::mutex> lock(pool.mutex);
+        for (auto it = pool.idle.end(); it != pool.idle.begin();) {
+            --it;
+            if ((*it)->backend == m_backend.backend && (*it)->width == width && (*it)->height == height) {
+                taken = std::move(*it);
+                pool.idle.erase(it);
+                break;
+            }
+        }
+    }
+    if (!taken)
+        return false;
+    m_context = std::move(taken->context);
+    m_maxViewport[0] = taken->maxViewport[0];
+    m_maxViewport[1] = taken->maxViewport[1];
+    for (int i = 0; i < LitProgram::kVariants; ++i)
+        m_litPrograms[i] = taken->litPrograms[i];
+    m_unlitPrograms[0] = taken->unlitPrograms[0];
+    m_unlitPrograms[1] = taken->unlitPrograms[1];
+    std::copy(std::begin(taken->streamBuffers), std::end(taken->streamBuffers), std::begin(m_streamBuffers));
+    m_msFramebuffer = taken->msFramebuffer;
+    m_msColor = taken->msColor;
+    m_msDepth = taken->msDepth;
+    m_copyProgram = taken->copyProgram;
+    return true;
+}
 
 RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::uint32_t height)
 {
     if (!m_backend.result)
         return m_backend.result;
-    destroyContext();
+    destroyContext(true);
     std::vector<std::uint8_t>().swap(m_image);
     m_width = 0;
     m_height = 0;
     m_image.resize(std::size_t(width) * height * 4);
 
-    RenderResult result = createGlContext(m_backend.backend, width, height, m_image.data(), m_context);
+    RenderResult result = adoptContext(width, height)
+                              ? RenderResult::success()
+                              : createGlContext(m_backend.backend, width, height, m_image.data(), m_context);
     if (result) {
         ContextScope scope(*m_context, m_image.data());
         if (!scope.bound()) {
@@ -478,16 +621,61 @@ RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::ui
     return result;
 }
 
-void OffscreenRenderer::Impl::destroyContext()
+void OffscreenRenderer::Impl::destroyContext(bool park)
 {
     if (m_context == nullptr)
         return;
+    // A context with textures of its own left (a frame cancelled before its
+    // end) is not handed on: they could only be deleted with it current.
+    if (park && m_width != 0 && m_textureNames.empty() && m_staleTextureNames.empty() && !m_textureCache.empty()) {
+        // The cached textures are this renderer's: deleted before the
+        // context is handed on (a context that cannot be made current is
+        // not handed on).
+        ContextScope scope(*m_context, m_image.data());
+        if (scope.bound())
+            evictTextures(true);
+        else
+            park = false;
+    }
+    m_textureCache.clear();
+    m_textureCacheBytes = 0;
+    if (park && m_width != 0 && m_textureNames.empty() && m_staleTextureNames.empty()) {
+        auto idle = std::make_unique<IdleContext>();
+        idle->backend = m_backend.backend;
+        idle->width = m_width;
+        idle->height = m_height;
+        idle->context = std::move(m_context);
+        idle->maxViewport[0] = m_maxViewport[0];
+        idle->maxViewport[1] = m_maxViewport[1];
+        for (int i = 0; i < LitProgram::kVariants; ++i)
+            idle->litPrograms[i] = m_litPrograms[i];
+        idle->unlitPrograms[0] = m_unlitPrograms[0];
+        idle->unlitPrograms[1] = m_unlitPrograms[1];
+        std::copy(std::begin(m_streamBuffers), std::end(m_streamBuffers), std::begin(idle->streamBuffers));
+        idle->msFramebuffer = m_msFramebuffer;
+        idle->msColor = m_msColor;
+        idle->msDepth = m_msDepth;
+        idle->copyProgram = m_copyProgram;
+        std::unique_ptr<IdleContext> evicted;
+        {
+            ContextPool& pool = contextPool();
+            std::lock_guard<std::mutex> lock(pool.mutex);
+            pool.idle.push_back(std::move(idle));
+            if (pool.idle.size() > kIdleContexts) {
+                evicted = std::move(pool.idle.front());
+                pool.idle.erase(pool.idle.begin());
+            }
+        }
+        // Destroyed outside the pool's lock (it takes the context mutex).
+        evicted.reset();
+    }
     m_context.reset();
-    m_program.forget();
-    m_texturedProgram.forget();
+    for (LitProgram& program : m_litPrograms)
+        program.forget();
     forgetMultisample();
     m_unlitPrograms[0].forget();
     m_unlitPrograms[1].forget();
+    std::fill(std::begin(m_streamBuffers), std::end(m_streamBuffers), 0u);
     // The context's textures went with it.
     m_textureNames.clear();
     m_staleTextureNames.clear();
@@ -562,6 +750,7 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
     if (pane.width > m_maxViewport[0] || pane.height > m_maxViewport[1])
         return invalid("pane is larger than the maximum viewport");
 
+    ++m_frameNumber;
     m_pane = pane;
     m_clearColor = clearColor;
     m_options = options;
@@ -914,6 +1103,40 @@ void OffscreenRenderer::Impl::startFrameInGl()
     }
 }
 
+LitProgram* OffscreenRenderer::Impl::litProgram(int variant, RenderResult& result)
+{
+    LitProgram& program = m_litPrograms[variant];
+    if (!program.built()) {
+        std::string error;
+        if (!program.build(error, variant)) {
+            result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+            return nullptr;
+        }
+    }
+    return &program;
+}
+
+void OffscreenRenderer::Impl::uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes)
+{
+    if (m_streamBuffers[which] == 0)
+        glGenBuffers(1, &m_streamBuffers[which]);
+    glBindBuffer(target, m_streamBuffers[which]);
+    // A new store each time (orphaning): the driver need not wait for
+    // draws that still read the previous contents.
+    glBufferData(target, GLsizeiptr(bytes), data, GL_STREAM_DRAW);
+}
+
+namespace {
+
+// A byte offset into the bound buffer object, as gl*Pointer and
+// glDrawElements take it.
+const void* bufferOffset(std::size_t bytes)
+{
+    return reinterpret_cast<const void*>(bytes);
+}
+
+} // namespace
+
 RenderResult OffscreenRenderer::Impl::flush(bool finish)
 {
     RenderResult result;
@@ -944,8 +1167,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             float loadedPointSize = -1.0f;
             int loadedShading = -1;
             std::uint32_t loadedSurface = kUnlit;
-            bool loadedTexturedProgram = false;
-            bool lightsLoaded[2] = {false, false};
+            bool lightsLoaded[LitProgram::kVariants] = {};
+            int loadedVariant = -1;
             std::uint32_t loadedTexture = kUntextured;
             FaceOptions loadedFaces;
             FogLoad fogLoad;
@@ -953,6 +1176,14 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             bool loadedAlphaTest = false;
             glDisable(GL_CULL_FACE);
             glFrontFace(GL_CCW);
+            if (m_vertexCount != 0)
+                uploadStream(kStreamVertices, GL_ARRAY_BUFFER, m_vertices.get(), m_vertexCount * sizeof(Vertex));
+            if (m_positionCount != 0)
+                uploadStream(kStreamPositions, GL_ARRAY_BUFFER, m_positions.get(),
+                             m_positionCount * sizeof(Position));
+            if (!m_indices.empty())
+                uploadStream(kStreamIndices, GL_ELEMENT_ARRAY_BUFFER, m_indices.data(),
+                             m_indices.size() * sizeof(GLuint));
             const std::size_t commandCount = m_commands.size();
             std::size_t i = 0;
             while (i < commandCount) {
@@ -964,14 +1195,15 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     if (head.plain) {
                         glDisableClientState(GL_COLOR_ARRAY);
                         glDisableClientState(GL_NORMAL_ARRAY);
-                        glVertexPointer(3, GL_FLOAT, sizeof(Position), &m_positions.get()->x);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamPositions]);
+                        glVertexPointer(3, GL_FLOAT, sizeof(Position), bufferOffset(offsetof(Position, x)));
                     } else {
-                        const Vertex* vertices = m_vertices.get();
                         glEnableClientState(GL_COLOR_ARRAY);
                         glEnableClientState(GL_NORMAL_ARRAY);
-                        glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
-                        glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
-                        glNormalPointer(GL_FLOAT, sizeof(Vertex), &vertices->nx);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamVertices]);
+                        glVertexPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, x)));
+                        glColorPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, r)));
+                        glNormalPointer(GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, nx)));
                     }
                     loadedArrays = int(head.plain);
                     // The current colour is undefined after drawing with a
@@ -1012,33 +1244,32 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                         bindTexture(head.texture);
                         glEnable(GL_TEXTURE_2D);
                         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-                        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &m_vertices.get()->s);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamVertices]);
+                        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, s)));
                     }
                     loadedTexture = head.texture;
                 }
                 loadOpaqueAlphaTest(head.texture, loadedAlphaTest);
                 const bool texturedProgram = head.texture != kUntextured;
-                if (head.shading != loadedSurface ||
-                    (head.shading != kUnlit && texturedProgram != loadedTexturedProgram)) {
+                const int variant = head.shading == kUnlit ? -1
+                                                           : LitProgram::variant(texturedProgram, m_shadings[head.shading],
+                                                                                 head.fog != kNoFog, m_lighting);
+                if (head.shading != loadedSurface || variant != loadedVariant) {
                     if (head.shading == kUnlit) {
                         glUseProgram(0);
                     } else {
-                        LitProgram& program = texturedProgram ? m_texturedProgram : m_program;
-                        if (!program.built()) {
-                            std::string error;
-                            if (!program.build(error, texturedProgram)) {
-                                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
-                                break;
-                            }
+                        LitProgram* program = litProgram(variant, result);
+                        if (program == nullptr)
+                            break;
+                        program->use();
+                        setTwoSided(variant);
+                        if (!lightsLoaded[variant]) {
+                            program->setLighting(m_lighting);
+                            lightsLoaded[variant] = true;
                         }
-                        program.use();
-                        if (!lightsLoaded[texturedProgram]) {
-                            program.setLighting(m_lighting);
-                            lightsLoaded[texturedProgram] = true;
-                        }
-                        program.setShading(m_shadings[head.shading]);
-                        loadedTexturedProgram = texturedProgram;
+                        program->setShading(m_shadings[head.shading]);
                     }
+                    loadedVariant = variant;
                     loadedSurface = head.shading;
                 }
                 if (!loadFog(head, fogLoad, result))
@@ -1046,7 +1277,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 if (end - i == 1) {
                     if (head.indexed)
                         glDrawElements(glMode(head.primitive), head.count, GL_UNSIGNED_INT,
-                                       m_indices.data() + head.first);
+                                       bufferOffset(sizeof(GLuint) * std::size_t(head.first)));
                     else
                         glDrawArrays(glMode(head.primitive), head.first, head.count);
                 } else {
@@ -1057,7 +1288,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                         m_multiFirsts.push_back(m_commands[k].first);
                         m_multiCounts.push_back(m_commands[k].count);
                         if (head.indexed)
-                            m_multiIndices.push_back(m_indices.data() + m_commands[k].first);
+                            m_multiIndices.push_back(bufferOffset(sizeof(GLuint) * std::size_t(m_commands[k].first)));
                     }
                     if (head.indexed)
                         glMultiDrawElements(glMode(head.primitive), m_multiCounts.data(), GL_UNSIGNED_INT,
@@ -1069,10 +1300,13 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 i = end;
             }
             glDisable(GL_ALPHA_TEST);
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
         }
         if (finish && result)
             drawTranslucent(result);
         glUseProgram(0);
+        glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
         glDisable(GL_TEXTURE_2D);
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         glBindTexture(GL_TEXTURE_2D, 0);
@@ -1080,6 +1314,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             glDeleteTextures(GLsizei(m_textureNames.size()), m_textureNames.data());
             m_textureNames.clear();
         }
+        if (finish)
+            evictTextures(false);
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glEnableClientState(GL_COLOR_ARRAY);
@@ -1101,6 +1337,18 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
 
 void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
 {
+    const BatchTexture& texture = m_textures[index];
+    if (texture.cacheSlot != kNotCached) {
+        CachedTexture& cached = m_textureCache[texture.cacheSlot];
+        if (cached.name != 0) {
+            glBindTexture(GL_TEXTURE_2D, cached.name);
+            return;
+        }
+        glGenTextures(1, &cached.name);
+        glBindTexture(GL_TEXTURE_2D, cached.name);
+        uploadTexture(texture);
+        return;
+    }
     if (m_textureNames.size() < m_textures.size())
         m_textureNames.resize(m_textures.size(), 0);
     GLuint& name = m_textureNames[index];
@@ -1185,6 +1433,59 @@ RenderResult OffscreenRenderer::Impl::decodeMipmaps(const TextureImage& texture,
     return RenderResult::success();
 }
 
+std::uint32_t OffscreenRenderer::Impl::findCachedTexture(const TextureImage& texture) const
+{
+    // The caller's enumerations are not validated yet (a mipmap's layout,
+    // the filter): read as numbers (core/EnumValue.h).
+    const auto sameLayout = [](const PixmapLayout& known, const PixmapLayout& given) {
+        return known.width == given.width && known.height == given.height && known.rowBytes == given.rowBytes &&
+               long(known.pixelType) == enumValue(given.pixelType) && long(known.byteOrder) == enumValue(given.byteOrder);
+    };
+    for (std::size_t slot = 0; slot < m_textureCache.size(); ++slot) {
+        const CachedTexture& cached = m_textureCache[slot];
+        if (cached.clampS != texture.clampS || cached.clampT != texture.clampT ||
+            long(cached.filter) != enumValue(texture.filter) ||
+            cached.layouts.size() != texture.mipmaps.size() + 1 || !sameLayout(cached.layouts[0], texture.layout))
+            continue;
+        bool same = true;
+        for (std::size_t i = 0; same && i < texture.mipmaps.size(); ++i)
+            same = texture.mipmaps[i].pixels != nullptr && sameLayout(cached.layouts[i + 1], texture.mipmaps[i].layout);
+        std::size_t at = 0;
+        for (std::size_t i = 0; same && i < cached.layouts.size(); ++i) {
+            const PixmapLayout& layout = cached.layouts[i];
+            const std::size_t bytes = std::size_t(layout.rowBytes) * (layout.height - 1) +
+                                      std::size_t(layout.width) * bytesPerPixel(layout.pixelType);
+            const void* pixels = i == 0 ? texture.pixels : texture.mipmaps[i - 1].pixels;
+            same = std::memcmp(cached.source.data() + at, pixels, bytes) == 0;
+            at += bytes;
+        }
+        if (same)
+            return std::uint32_t(slot);
+    }
+    return kNotCached;
+}
+
+void OffscreenRenderer::Impl::evictTextures(bool all)
+{
+    std::vector<GLuint> names;
+    std::size_t kept = 0;
+    for (std::size_t slot = 0; slot < m_textureCache.size(); ++slot) {
+        CachedTexture& cached = m_textureCache[slot];
+        if (all || cached.lastFrame != m_frameNumber) {
+            if (cached.name != 0)
+                names.push_back(cached.name);
+            m_textureCacheBytes -= cached.source.size();
+            continue;
+        }
+        if (kept != slot)
+            m_textureCache[kept] = std::move(cached);
+        ++kept;
+    }
+    m_textureCache.resize(kept);
+    if (!names.empty())
+        glDeleteTextures(GLsizei(names.size()), names.data());
+}
+
 RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, std::uint32_t& id)
 {
     if (!m_inFrame)
@@ -1198,6 +1499,23 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
         return invalid("texture is larger than " + std::to_string(kMaxImageSize) + " pixels");
     if (m_textures.size() == kUntextured)
         return invalid("too many textures in one frame");
+    const std::uint32_t slot = findCachedTexture(texture);
+    if (slot != kNotCached && m_textureCache[slot].name != 0) {
+        // Uploaded already: only what drawing asks of it.
+        CachedTexture& cached = m_textureCache[slot];
+        cached.lastFrame = m_frameNumber;
+        BatchTexture known;
+        known.width = texture.layout.width;
+        known.height = texture.layout.height;
+        known.clampS = cached.clampS;
+        known.clampT = cached.clampT;
+        known.filter = cached.filter;
+        known.hasAlpha = cached.hasAlpha;
+        known.cacheSlot = slot;
+        m_textures.push_back(std::move(known));
+        id = std::uint32_t(m_textures.size() - 1);
+        return RenderResult::success();
+    }
     BatchTexture decoded;
     decoded.width = texture.layout.width;
     decoded.height = texture.layout.height;
@@ -1214,6 +1532,33 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
         return mipmaps;
     for (std::size_t i = 3; i < decoded.rgba.size() && !decoded.hasAlpha; i += 4)
         decoded.hasAlpha = decoded.rgba[i] != 255;
+    if (slot != kNotCached) {
+        m_textureCache[slot].lastFrame = m_frameNumber;
+        decoded.cacheSlot = slot;
+    } else {
+        // Kept for the frames after this one (uploaded when first drawn).
+        CachedTexture cached;
+        const auto keep = [&cached](const void* pixels, const PixmapLayout& layout) {
+            const std::size_t bytes = std::size_t(layout.rowBytes) * (layout.height - 1) +
+                                      std::size_t(layout.width) * bytesPerPixel(layout.pixelType);
+            const std::uint8_t* from = static_cast<const std::uint8_t*>(pixels);
+            cached.source.insert(cached.source.end(), from, from + bytes);
+            cached.layouts.push_back(layout);
+        };
+        keep(texture.pixels, texture.layout);
+        for (const TextureLevel& level : texture.mipmaps)
+            keep(level.pixels, level.layout);
+        if (m_textureCacheBytes + cached.source.size() <= kTextureCacheBytes) {
+            cached.clampS = texture.clampS;
+            cached.clampT = texture.clampT;
+            cached.filter = texture.filter;
+            cached.hasAlpha = decoded.hasAlpha;
+            cached.lastFrame = m_frameNumber;
+            m_textureCacheBytes += cached.source.size();
+            m_textureCache.push_back(std::move(cached));
+            decoded.cacheSlot = std::uint32_t(m_textureCache.size() - 1);
+        }
+    }
     m_textures.push_back(std::move(decoded));
     id = std::uint32_t(m_textures.size() - 1);
     return RenderResult::success();
@@ -1576,6 +1921,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     constexpr std::uint32_t kNoState = std::numeric_limits<std::uint32_t>::max();
     std::uint32_t states[2] = {kNoState, kNoState}; // translucent, only translucent texels
     static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
+    m_splitVertices.assign(r.vertexCount, kNoState);
     for (std::size_t t = 0; t + 2 < count; t += 3) {
         std::uint32_t v[3];
         float a[3];
@@ -1593,9 +1939,17 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         if (state == kNoState)
             state = translucentState(r, textured, allOpaque);
         double centre[4] = {0.0, 0.0, 0.0, 0.0};
-        const std::uint32_t first = std::uint32_t(m_translucentVertices.size());
+        TranslucentTriangle triangle;
+        triangle.state = state;
         for (int k = 0; k < 3; ++k) {
             const float* p = r.xyz + 3 * std::size_t(v[k]);
+            for (int j = 0; j < 4; ++j)
+                centre[j] += (double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j]) / 3.0;
+            std::uint32_t& stored = m_splitVertices[v[k]];
+            triangle.v[k] = stored;
+            if (stored != kNoState)
+                continue;
+            stored = triangle.v[k] = std::uint32_t(m_translucentVertices.size());
             const float* c = r.rgb != nullptr ? r.rgb + 3 * std::size_t(v[k]) : nullptr;
             const float* n = r.normals != nullptr ? r.normals + 3 * std::size_t(v[k]) : kNoNormal;
             Vertex out;
@@ -1612,12 +1966,10 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
             out.t = textured ? r.st[2 * std::size_t(v[k]) + 1] : 0.0f;
             m_translucentVertices.push_back(out);
             m_translucentOpacity.push_back(a[k]);
-            for (int j = 0; j < 4; ++j)
-                centre[j] += (double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j]) / 3.0;
         }
         // A centre behind the eye sorts farthest.
-        const double depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
-        m_translucentTriangles.push_back(TranslucentTriangle{depth, state, first});
+        triangle.depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
+        m_translucentTriangles.push_back(triangle);
     }
     if (opaque.empty())
         return RenderResult::success();
@@ -1651,7 +2003,7 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, 
             program.use();
             loaded.unlit = int(textured);
         }
-        std::uint32_t& set = loaded.fog[2 + (textured ? 1 : 0)];
+        std::uint32_t& set = loaded.fog[LitProgram::kVariants + (textured ? 1 : 0)];
         if (set != head.fog) {
             program.finish().setFog(fogOf(head.fog));
             set = head.fog;
@@ -1660,9 +2012,10 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, 
     }
     // The batch loop has made the lit program current.
     loaded.unlit = -1;
-    std::uint32_t& set = loaded.fog[textured ? 1 : 0];
+    const int variant = LitProgram::variant(textured, m_shadings[head.shading], head.fog != kNoFog, m_lighting);
+    std::uint32_t& set = loaded.fog[variant];
     if (set != head.fog) {
-        (textured ? m_texturedProgram : m_program).finish().setFog(fogOf(head.fog));
+        m_litPrograms[variant].finish().setFog(fogOf(head.fog));
         set = head.fog;
     }
     return true;
@@ -1682,6 +2035,98 @@ void OffscreenRenderer::Impl::loadOpaqueAlphaTest(std::uint32_t texture, bool& l
     loaded = tested;
 }
 
+// The back-to-front order matters only where triangles cover the same
+// pixels: blending is order dependent there and nowhere else (translucent
+// triangles write no depth, and the depth test reads only what the opaque
+// ones wrote). So the states (each one draw's translucent triangles) are
+// grouped into clusters whose screen rectangles overlap, transitively; the
+// triangles of different clusters touch disjoint pixels, so drawing cluster
+// after cluster, each in the sorted order, gives the very pixels of the
+// sorted order, with one draw call per state where a cluster is one state
+// (separate translucent objects) instead of one per switch between
+// interleaved depths. A rectangle is the triangle corners' window
+// coordinates widened by two pixels (covering whatever the rasterizer,
+// multisampled or not, can touch); a triangle with a corner at or behind
+// the eye (w <= 0, clipped into a larger area) makes its state cover
+// everything. Beyond kMaxClusteredStates states the pairwise test is not
+// worth it and the order stays as sorted.
+void OffscreenRenderer::Impl::clusterTranslucent()
+{
+    constexpr std::size_t kMaxClusteredStates = 256;
+    const std::size_t stateCount = m_translucentStates.size();
+    if (stateCount < 2 || stateCount > kMaxClusteredStates)
+        return;
+    struct Box {
+        double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
+        double x1 = -x0, y1 = -x0;
+        bool used = false;
+    };
+    std::vector<Box> boxes(stateCount);
+    const double halfWidth = 0.5 * double(m_pane.width), halfHeight = 0.5 * double(m_pane.height);
+    constexpr double kMargin = 2.0;
+    for (const TranslucentTriangle& triangle : m_translucentTriangles) {
+        Box& box = boxes[triangle.state];
+        box.used = true;
+        const std::array<float, 16>& m = m_translucentStates[triangle.state].matrix;
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const Vertex& v = m_translucentVertices[triangle.v[k]];
+            // Row vector times the row-major matrix (setMatrix's convention).
+            const double x = double(v.x) * m[0] + double(v.y) * m[4] + double(v.z) * m[8] + m[12];
+            const double y = double(v.x) * m[1] + double(v.y) * m[5] + double(v.z) * m[9] + m[13];
+            const double w = double(v.x) * m[3] + double(v.y) * m[7] + double(v.z) * m[11] + m[15];
+            if (!(w > 1e-6) || !std::isfinite(x / w) || !std::isfinite(y / w)) {
+                box.x0 = box.y0 = -std::numeric_limits<double>::infinity();
+                box.x1 = box.y1 = std::numeric_limits<double>::infinity();
+                continue;
+            }
+            const double px = (x / w + 1.0) * halfWidth, py = (y / w + 1.0) * halfHeight;
+            box.x0 = std::min(box.x0, px - kMargin);
+            box.x1 = std::max(box.x1, px + kMargin);
+            box.y0 = std::min(box.y0, py - kMargin);
+            box.y1 = std::max(box.y1, py + kMargin);
+        }
+    }
+    // Union-find over the states whose rectangles overlap.
+    std::vector<std::uint32_t> parent(stateCount);
+    for (std::uint32_t i = 0; i < stateCount; ++i)
+        parent[i] = i;
+    const auto root = [&parent](std::uint32_t i) {
+        while (parent[i] != i)
+            i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    for (std::uint32_t i = 0; i < stateCount; ++i)
+        for (std::uint32_t j = i + 1; j < stateCount && boxes[i].used; ++j)
+            if (boxes[j].used && boxes[i].x0 <= boxes[j].x1 && boxes[j].x0 <= boxes[i].x1 &&
+                boxes[i].y0 <= boxes[j].y1 && boxes[j].y0 <= boxes[i].y1) {
+                const std::uint32_t a = root(i), b = root(j);
+                if (a != b)
+                    parent[std::max(a, b)] = std::min(a, b);
+            }
+    // Clusters numbered by first appearance in the sorted order; a stable
+    // counting sort by cluster keeps the sorted order inside each.
+    constexpr std::uint32_t kUnnumbered = std::numeric_limits<std::uint32_t>::max();
+    m_clusterOf.assign(stateCount, kUnnumbered);
+    std::vector<std::size_t> counts;
+    for (const TranslucentTriangle& triangle : m_translucentTriangles) {
+        std::uint32_t& cluster = m_clusterOf[root(triangle.state)];
+        if (cluster == kUnnumbered) {
+            cluster = std::uint32_t(counts.size());
+            counts.push_back(0);
+        }
+        ++counts[cluster];
+    }
+    if (counts.size() < 2)
+        return;
+    std::vector<std::size_t> next(counts.size(), 0);
+    for (std::size_t c = 1; c < counts.size(); ++c)
+        next[c] = next[c - 1] + counts[c - 1];
+    m_clustered.resize(m_translucentTriangles.size());
+    for (const TranslucentTriangle& triangle : m_translucentTriangles)
+        m_clustered[next[m_clusterOf[root(triangle.state)]]++] = triangle;
+    m_translucentTriangles.swap(m_clustered);
+}
+
 void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
 {
     if (m_translucentTriangles.empty())
@@ -1689,27 +2134,33 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     // Farthest first; triangles at one depth keep their submission order.
     std::stable_sort(m_translucentTriangles.begin(), m_translucentTriangles.end(),
                      [](const TranslucentTriangle& a, const TranslucentTriangle& b) { return a.depth > b.depth; });
+    clusterTranslucent();
     m_translucentIndices.clear();
     m_translucentIndices.reserve(3 * m_translucentTriangles.size());
     for (const TranslucentTriangle& triangle : m_translucentTriangles)
         for (std::uint32_t k = 0; k < 3; ++k)
-            m_translucentIndices.push_back(triangle.first + k);
+            m_translucentIndices.push_back(triangle.v[k]);
 
-    const Vertex* vertices = m_translucentVertices.data();
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
     glEnableClientState(GL_NORMAL_ARRAY);
-    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->x);
-    glColorPointer(3, GL_FLOAT, sizeof(Vertex), &vertices->r);
-    glNormalPointer(GL_FLOAT, sizeof(Vertex), &vertices->nx);
-    glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &vertices->s);
+    uploadStream(kStreamVertices, GL_ARRAY_BUFFER, m_translucentVertices.data(),
+                 m_translucentVertices.size() * sizeof(Vertex));
+    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, x)));
+    glColorPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, r)));
+    glNormalPointer(GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, nx)));
+    glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, s)));
+    uploadStream(kStreamOpacity, GL_ARRAY_BUFFER, m_translucentOpacity.data(),
+                 m_translucentOpacity.size() * sizeof(float));
     glEnableVertexAttribArray(kOpacityAttribute);
-    glVertexAttribPointer(kOpacityAttribute, 1, GL_FLOAT, GL_FALSE, 0, m_translucentOpacity.data());
+    glVertexAttribPointer(kOpacityAttribute, 1, GL_FLOAT, GL_FALSE, 0, bufferOffset(0));
+    uploadStream(kStreamIndices, GL_ELEMENT_ARRAY_BUFFER, m_translucentIndices.data(),
+                 m_translucentIndices.size() * sizeof(GLuint));
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
 
-    bool lightsLoaded[2] = {false, false};
+    bool lightsLoaded[LitProgram::kVariants] = {};
     const std::size_t count = m_translucentTriangles.size();
     std::size_t i = 0;
     while (i < count) {
@@ -1750,20 +2201,21 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
             program.use();
             program.finish().setFog(fogOf(state.fog));
         } else {
-            LitProgram& program = textured ? m_texturedProgram : m_program;
-            if (!program.built() && !program.build(error, textured)) {
-                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+            const SurfaceShading& shading = m_translucentShadings[state.shading];
+            const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog, m_lighting);
+            LitProgram* program = litProgram(variant, result);
+            if (program == nullptr)
                 break;
+            program->use();
+            setTwoSided(variant);
+            if (!lightsLoaded[variant]) {
+                program->setLighting(m_lighting);
+                lightsLoaded[variant] = true;
             }
-            program.use();
-            if (!lightsLoaded[textured ? 1 : 0]) {
-                program.setLighting(m_lighting);
-                lightsLoaded[textured ? 1 : 0] = true;
-            }
-            program.setShading(m_translucentShadings[state.shading]);
-            program.finish().setFog(fogOf(state.fog));
+            program->setShading(shading);
+            program->finish().setFog(fogOf(state.fog));
         }
-        glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - i)), GL_UNSIGNED_INT, m_translucentIndices.data() + 3 * i);
+        glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - i)), GL_UNSIGNED_INT, bufferOffset(sizeof(GLuint) * 3 * i));
         i = end;
     }
 
@@ -1771,6 +2223,8 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDisableVertexAttribArray(kOpacityAttribute);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
     setDefaultOpacity();
     glShadeModel(GL_FLAT);
 }

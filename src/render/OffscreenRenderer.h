@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #pragma once
 
+#include "base/Primitives.h"
 #include "base/RenderTarget.h"
 #include "render/GlContext.h"
 
@@ -84,15 +85,22 @@ public:
     RenderResult setMatrix(const float m[16]) override;
     RenderResult setMatrix(const double m[16]) override;
 
+    /// Draws a mesh as RenderTarget::draw says, through the primitive calls
+    /// below.
+    RenderResult draw(const MeshView& mesh, const Shading& shading) override;
+
+    // The backend's primitive calls, which draw() is made of (and its unit
+    // tests call directly): not part of RenderTarget.
+
     /// Draws one connected polyline through `count` points (xyz: 3 floats per
     /// point, tightly packed). Fewer than 2 points draw nothing.
-    RenderResult drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color) override;
+    RenderResult drawLineStrip(const float* xyz, std::size_t count, const RgbColor& color);
     /// Draws count / 2 separate segments; count must be even.
-    RenderResult drawLines(const float* xyz, std::size_t count, const RgbColor& color) override;
+    RenderResult drawLines(const float* xyz, std::size_t count, const RgbColor& color);
     /// Draws count square points of pointSize pixels (aliased; OpenGL clamps
     /// the size to its range, 1..255 for llvmpipe).
     RenderResult drawPoints(const float* xyz, std::size_t count, const RgbColor& color,
-                            float pointSize = 1.0f) override;
+                            float pointSize = 1.0f);
     /// Draws count / 3 filled, unlit, single-coloured triangles (both faces);
     /// count must be a multiple of 3.
     /// Errors (all four draw calls): kWrongState outside a frame;
@@ -101,7 +109,7 @@ public:
     /// pointSize is not a positive finite number; kOutOfMemory; and, if the
     /// call flushed a full batch, the endFrame() errors. On error nothing of
     /// the call is drawn.
-    RenderResult drawTriangles(const float* xyz, std::size_t count, const RgbColor& color) override;
+    RenderResult drawTriangles(const float* xyz, std::size_t count, const RgbColor& color);
 
     /// Draws indexed primitives over a pool of vertexCount vertices: xyz
     /// holds 3 floats per vertex, rgb 3 per vertex or is null (then every
@@ -117,11 +125,11 @@ public:
     /// without a texture. Errors also: kInvalidArgument for a non-finite st.
     RenderResult drawElements(DrawMode mode, const float* xyz, const float* rgb, std::size_t vertexCount,
                               const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color, bool smooth,
-                              const float* st = nullptr) override;
+                              const float* st = nullptr);
     /// Draws count consecutive vertices as one primitive list (or one line
     /// strip), with per-vertex colours as drawElements.
     RenderResult drawArrays(DrawMode mode, const float* xyz, const float* rgb, std::size_t count, const RgbColor& color,
-                            bool smooth) override;
+                            bool smooth);
 
     /// Draws the set bits of `image` as pixels of `color`, parallel to the
     /// pane, placed by the image of `anchor` (3 floats) under the current
@@ -157,14 +165,14 @@ public:
     /// the equations are evaluated with Od = rgb times the texel.
     RenderResult drawLitTriangles(const float* xyz, const float* normals, const float* rgb, std::size_t vertexCount,
                                   const std::uint32_t* indices, std::size_t indexCount, const RgbColor& color,
-                                  const SurfaceShading& shading, const float* st = nullptr) override;
+                                  const SurfaceShading& shading, const float* st = nullptr);
 
     /// The texture for the following draws that pass texture coordinates
     /// (null: none): addTexture, then useTexture. The image is decoded and
     /// copied now, so the caller's pixels may go away after the call.
     /// Errors: kWrongState outside a frame; kInvalidArgument for NULL pixels
     /// or an invalid layout (the current texture is then none); kOutOfMemory.
-    RenderResult setTexture(const TextureImage* texture) override;
+    RenderResult setTexture(const TextureImage* texture);
 
     /// Keeps a texture for the rest of the frame and sets `id` to its
     /// number for useTexture; the current texture does not change. The image
@@ -178,13 +186,13 @@ public:
     /// following draws that pass texture coordinates, or none with
     /// kNoTexture. Errors: kWrongState outside a frame; kInvalidArgument for
     /// an id this frame has not given (the current texture is unchanged).
-    RenderResult useTexture(std::uint32_t id) override;
+    RenderResult useTexture(std::uint32_t id);
 
     /// The fog of the following draws (RenderTarget::setFog).
     RenderResult setFog(const FogSetup& fog) override;
     /// The opacity of the following filled triangles
     /// (RenderTarget::setOpacity).
-    RenderResult setOpacity(const OpacitySetup& opacity) override;
+    RenderResult setOpacity(const OpacitySetup& opacity);
 
     /// Renders everything batched since beginFrame() and stores the image.
     /// Errors: kWrongState if no frame is open; kContextFailure;
@@ -207,6 +215,19 @@ public:
 private:
     class Impl;
     std::unique_ptr<Impl> m_impl;
+    // draw() (OffscreenRendererDraw.cpp): a mesh's primitives as the calls
+    // above take them; the arrays keep their capacity from draw to draw.
+    RenderResult drawSegments(const MeshView& mesh, const Shading& shading, const std::uint32_t* pairs,
+                              std::size_t count);
+    RenderResult drawFilled(const MeshView& mesh, const Shading& shading);
+    RenderResult drawLit(const MeshView& mesh, const Shading& shading, const float* st);
+    std::vector<float> m_scratch;
+    std::vector<std::uint32_t> m_indices;
+    std::vector<float> m_normals;
+    std::vector<float> m_litPositions;
+    std::vector<float> m_litColors;
+    std::vector<float> m_litST;
+    std::vector<float> m_litAlpha;
 };
 
 } // namespace q3

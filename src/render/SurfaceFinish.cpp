@@ -42,13 +42,11 @@ varying float q3VertexOpacity;
 varying float q3FogDepth;
 varying float q3FogW;
 
-vec4 q3FinishFragment(vec4 color)
+vec4 q3FinishFragment(vec4 color, float texelAlpha)
 {
-    float a = q3VertexOpacity;
-#ifdef TEXTURED
-    a *= texture2D(surfaceTexture, gl_TexCoord[0].st).a;
-#endif
+    float a = q3VertexOpacity * texelAlpha;
     color.a = a;
+#ifdef FOG
     if (q3FogMode != 0) {
         float z = q3FogDepth / q3FogW;
         float f;
@@ -63,6 +61,7 @@ vec4 q3FinishFragment(vec4 color)
         f = clamp(f, 0.0, 1.0);
         color.rgb = f * color.rgb + (1.0 - f) * q3FogColor;
     }
+#endif
     return color;
 }
 )";
@@ -70,7 +69,9 @@ vec4 q3FinishFragment(vec4 color)
 namespace {
 
 constexpr const char* kVersion = "#version 120\n";
-constexpr const char* kTexturedSwitch = "#define TEXTURED 1\n";
+// The unlit program always has the fog code (its draws may be fogged or
+// not; the uniform q3FogMode says).
+constexpr const char* kUnlitSwitches[2] = {"#define FOG 1\n", "#define FOG 1\n#define TEXTURED 1\n"};
 
 constexpr const char* kUnlitDeclarations = R"(
 #ifdef TEXTURED
@@ -96,9 +97,12 @@ void main()
 {
     vec4 color = gl_Color;
 #ifdef TEXTURED
-    color.rgb *= texture2D(surfaceTexture, gl_TexCoord[0].st).rgb;
+    vec4 texel = texture2D(surfaceTexture, gl_TexCoord[0].st);
+    color.rgb *= texel.rgb;
+    gl_FragColor = q3FinishFragment(color, texel.a);
+#else
+    gl_FragColor = q3FinishFragment(color, 1.0);
 #endif
-    gl_FragColor = q3FinishFragment(color);
 }
 )";
 
@@ -106,7 +110,7 @@ GLuint compileUnlit(GLenum kind, bool textured, std::string& error)
 {
     const GLuint shader = glCreateShader(kind);
     const bool vertex = kind == GL_VERTEX_SHADER;
-    const char* sources[5] = {kVersion, textured ? kTexturedSwitch : "", kUnlitDeclarations,
+    const char* sources[5] = {kVersion, kUnlitSwitches[textured ? 1 : 0], kUnlitDeclarations,
                               vertex ? kFinishVertexGlsl : kFinishFragmentGlsl,
                               vertex ? kUnlitVertex : kUnlitFragment};
     glShaderSource(shader, 5, sources, nullptr);

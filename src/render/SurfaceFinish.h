@@ -10,7 +10,7 @@
 // current OpenGL context.
 //
 //   vertex stage:   q3FinishVertex() after gl_Position is written
-//   fragment stage: gl_FragColor = q3FinishFragment(colour)
+//   fragment stage: gl_FragColor = q3FinishFragment(colour, texel alpha or 1)
 //
 // The opacity of a vertex is the generic attribute kOpacityAttribute (1
 // when no array is bound: setDefaultOpacity), times the texel's alpha in a
@@ -32,8 +32,10 @@ constexpr GLuint kOpacityAttribute = 7;
 
 /// The vertex stage's block: the opacity attribute and the fog's varyings.
 extern const char* const kFinishVertexGlsl;
-/// The fragment stage's block: opacity times the texel's alpha, then fog.
-/// Uses `surfaceTexture` at gl_TexCoord[0] when TEXTURED is defined.
+/// The fragment stage's block: opacity times the texel's alpha (the
+/// caller's one sample of the texture, 1 untextured), then, when FOG is
+/// defined, the fog the uniforms say (a program drawn only unfogged leaves
+/// the code out: llvmpipe runs a branch on a uniform in every fragment).
 extern const char* const kFinishFragmentGlsl;
 
 /// Binds q3Opacity to kOpacityAttribute; call before linking.

@@ -61,25 +61,6 @@ void RenderPass::visitGeometry(const Geometry& geometry)
     geometry.decompose(*this, *this);
 }
 
-void RenderPass::drawSegments(const MeshView& mesh, const float* rgb, const std::uint32_t* pairs,
-                              std::size_t count, const RgbColor& color, const char* what)
-{
-    if (count == 0)
-        return;
-    if (rgb != nullptr) {
-        throwIfFailed(m_target.drawElements(DrawMode::kLines, mesh.positions, rgb, mesh.vertexCount, pairs,
-                                            2 * count, color, true),
-                      what);
-        return;
-    }
-    m_scratch.clear();
-    for (std::size_t i = 0; i < 2 * count; ++i) {
-        const float* p = mesh.positions + 3 * std::size_t(pairs[i]);
-        m_scratch.insert(m_scratch.end(), p, p + 3);
-    }
-    throwIfFailed(m_target.drawLines(m_scratch.data(), 2 * count, color), what);
-}
-
 void RenderPass::loadFaces()
 {
     const DrawState& styles = state().draw;
@@ -191,40 +172,6 @@ void RenderPass::prepareOpacity(const MeshView& mesh, const AttributeValues& att
     m_opacity.count = mesh.vertexCount;
 }
 
-void RenderPass::loadOpacity(const OpacitySetup& opacity)
-{
-    if (opacity.alpha == m_loadedOpacity.alpha && opacity.count == m_loadedOpacity.count &&
-        opacity.uniform == m_loadedOpacity.uniform)
-        return;
-    throwIfFailed(m_target.setOpacity(opacity), "setting the opacity");
-    m_loadedOpacity = opacity;
-}
-
-void RenderPass::drawVertices(const MeshView& mesh, const float* rgb, const RgbColor& color)
-{
-    m_indices.resize(mesh.vertexCount);
-    for (std::size_t i = 0; i < mesh.vertexCount; ++i)
-        m_indices[i] = std::uint32_t(i);
-    throwIfFailed(m_target.drawElements(DrawMode::kPoints, mesh.positions, rgb, mesh.vertexCount, m_indices.data(),
-                                        m_indices.size(), color, false),
-                  "drawing points");
-}
-
-void RenderPass::drawTriangleEdges(const MeshView& mesh, const float* rgb, const RgbColor& color)
-{
-    if (mesh.edgeCount != 0) {
-        drawSegments(mesh, rgb, mesh.edges, mesh.edgeCount, color, "drawing edges");
-        return;
-    }
-    m_indices.clear();
-    for (std::size_t t = 0; t < mesh.triangleCount; ++t)
-        for (int k = 0; k < 3; ++k) {
-            m_indices.push_back(mesh.triangles[3 * t + k]);
-            m_indices.push_back(mesh.triangles[3 * t + (k + 1) % 3]);
-        }
-    drawSegments(mesh, rgb, m_indices.data(), 3 * mesh.triangleCount, color, "drawing edges");
-}
-
 RenderPass::TextureChoice RenderPass::textureOf(const DrawState& state)
 {
     TextureChoice choice;
@@ -244,10 +191,10 @@ RenderPass::TextureChoice RenderPass::textureOf(const SharedObject* shader)
     return textureOf(state);
 }
 
-bool RenderPass::loadTexture(const TextureChoice& choice)
+std::uint32_t RenderPass::loadTexture(const TextureChoice& choice)
 {
     if (choice.texture == nullptr)
-        return false;
+        return kNoTexture;
     const Texture& texture = static_cast<const Texture&>(*choice.texture);
     const LoadedTexture* loaded = nullptr;
     for (const LoadedTexture& candidate : m_textures)
@@ -290,21 +237,19 @@ bool RenderPass::loadTexture(const TextureChoice& choice)
         m_textures.push_back(std::move(entry));
         loaded = &m_textures.back();
     }
-    if (loaded->id != m_currentTexture) {
-        throwIfFailed(m_target.useTexture(loaded->id), "setting the texture");
-        m_currentTexture = loaded->id;
-    }
-    return true;
+    return loaded->id;
 }
 
-const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureChoice& choice)
+const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureChoice& choice, std::uint32_t& id)
 {
+    id = kNoTexture;
     if (choice.texture == nullptr || mesh.uvs == nullptr)
         return nullptr;
     for (std::size_t i = 0; i < 3 * mesh.triangleCount; ++i)
         if (mesh.uvs[2 * std::size_t(mesh.triangles[i])] != mesh.uvs[2 * std::size_t(mesh.triangles[i])])
             return nullptr;
-    if (!loadTexture(choice))
+    id = loadTexture(choice);
+    if (id == kNoTexture)
         return nullptr;
     // (u, v, 1) times the uv transform (its third column unused); the target's
     // t runs down the image from its top row, v up from its bottom row.
@@ -322,22 +267,29 @@ const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureC
     return m_st.data();
 }
 
-void RenderPass::drawFilled(const MeshView& mesh, const float* rgb, const RgbColor& color,
-                            const AttributeValues& attributes, const TextureChoice& texture)
+void RenderPass::drawFilled(const MeshView& mesh, const Shading& base, const AttributeValues& attributes,
+                            const TextureChoice& texture)
 {
     const DrawState& styles = state().draw;
+    Shading shading = base;
     // A texture takes the place of the diffuse colour.
-    const float* st = textureCoordinates(mesh, texture);
-    const float* fillRgb = st != nullptr ? nullptr : rgb;
-    const RgbColor fillColor = st != nullptr ? RgbColor{1.0f, 1.0f, 1.0f} : color;
-    loadOpacity(m_opacity);
-    if (styles.illumination == kQ3IlluminationTypeLambert || styles.illumination == kQ3IlluminationTypePhong)
-        drawLit(mesh, fillRgb, fillColor, attributes, st);
-    else
-        throwIfFailed(m_target.drawElements(DrawMode::kTriangles, mesh.positions, fillRgb, mesh.vertexCount,
-                                            mesh.triangles, 3 * mesh.triangleCount, fillColor,
-                                            styles.interpolation != kQ3InterpolationStyleNone, st),
-                      "drawing triangles");
+    std::uint32_t id = kNoTexture;
+    const float* st = textureCoordinates(mesh, texture, id);
+    if (st != nullptr) {
+        shading.rgb = nullptr;
+        shading.color = RgbColor{1.0f, 1.0f, 1.0f};
+        shading.st = st;
+        shading.texture = id;
+    }
+    shading.smooth = styles.interpolation != kQ3InterpolationStyleNone;
+    shading.opacity = m_opacity;
+    if (styles.illumination == kQ3IlluminationTypeLambert || styles.illumination == kQ3IlluminationTypePhong) {
+        loadLights();
+        shading.lit = true;
+        shading.surface = surfaceShading(attributes);
+        shading.clockwiseFront = styles.orientation == kQ3OrientationStyleClockwise;
+    }
+    throwIfFailed(m_target.draw(mesh, shading), "drawing triangles");
 }
 
 void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
@@ -370,80 +322,80 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
         rgb = m_colors.data();
     }
 
-    if (mesh.triangleCount != 0) {
-        // The wireframe renderer draws edges (or points, under the points
-        // fill style); the interactive renderer as the fill style says.
-        TQ3FillStyle fill = styles.fill;
-        if (!m_style.fillTriangles && fill == kQ3FillStyleFilled)
-            fill = kQ3FillStyleEdges;
-        if (fill == kQ3FillStylePoints) {
-            drawVertices(mesh, rgb, color);
-        } else if (fill == kQ3FillStyleEdges) {
-            drawTriangleEdges(mesh, rgb, color);
+    Shading shading;
+    shading.rgb = rgb;
+    shading.color = color;
+    // The wireframe renderer draws edges (or points, under the points fill
+    // style), also of meshes that have only edges; the interactive renderer
+    // as the fill style says.
+    shading.fill = styles.fill == kQ3FillStylePoints  ? Shading::Fill::kPoints
+                   : styles.fill == kQ3FillStyleEdges ? Shading::Fill::kEdges
+                   : m_style.fillTriangles            ? Shading::Fill::kFilled
+                                                      : Shading::Fill::kEdges;
+    shading.edgesAlone = !m_style.fillTriangles;
+
+    // The mesh's screen-space images are drawn below, not by the target.
+    MeshView primitives = mesh;
+    primitives.bitmaps = nullptr;
+    primitives.bitmapCount = 0;
+    primitives.pixmaps = nullptr;
+    primitives.pixmapCount = 0;
+    if (mesh.triangleCount == 0 || shading.fill != Shading::Fill::kFilled) {
+        throwIfFailed(m_target.draw(primitives, shading), "drawing a mesh");
+    } else {
+        loadFaces();
+        prepareOpacity(mesh, attributes, highlighted && styles.highlight->transparencyColor());
+        // The filled triangles first, one draw per surface shader: a
+        // highlight's over everything; else each triangle's own, else the
+        // geometry's, else the view's.
+        MeshView triangles = primitives;
+        triangles.lines = nullptr;
+        triangles.lineCount = 0;
+        triangles.strips = nullptr;
+        triangles.stripCount = 0;
+        triangles.points = nullptr;
+        triangles.pointCount = 0;
+        const SharedObject* over = highlighted ? styles.highlight->shader() : nullptr;
+        const SharedObject* geometryShader = own != nullptr ? own->shader() : nullptr;
+        const TextureChoice base = over != nullptr             ? textureOf(over)
+                                   : geometryShader != nullptr ? textureOf(geometryShader)
+                                                               : textureOf(styles);
+        if (over != nullptr || mesh.triangleShaders == nullptr) {
+            drawFilled(triangles, shading, attributes, base);
         } else {
-            loadFaces();
-            prepareOpacity(mesh, attributes, highlighted && styles.highlight->transparencyColor());
-            // The surface shader: a highlight's over everything; else each
-            // triangle's own, else the geometry's, else the view's.
-            const SharedObject* over = highlighted ? styles.highlight->shader() : nullptr;
-            const SharedObject* geometryShader = own != nullptr ? own->shader() : nullptr;
-            const TextureChoice base = over != nullptr             ? textureOf(over)
-                                       : geometryShader != nullptr ? textureOf(geometryShader)
-                                                                   : textureOf(styles);
-            if (over != nullptr || mesh.triangleShaders == nullptr) {
-                drawFilled(mesh, rgb, color, attributes, base);
-            } else {
-                // One draw per shader, its triangles gathered by a counting
-                // sort (group k: shader k, 0 for none).
-                m_runStarts.assign(mesh.shaderCount + 2, 0);
-                for (std::size_t t = 0; t < mesh.triangleCount; ++t)
-                    ++m_runStarts[mesh.triangleShaders[t] + 1];
-                for (std::size_t k = 1; k < m_runStarts.size(); ++k)
-                    m_runStarts[k] += m_runStarts[k - 1];
-                m_runs.resize(3 * mesh.triangleCount);
-                m_runNext.assign(m_runStarts.begin(), m_runStarts.end() - 1);
-                for (std::size_t t = 0; t < mesh.triangleCount; ++t) {
-                    const std::size_t at = 3 * m_runNext[mesh.triangleShaders[t]]++;
-                    for (int k = 0; k < 3; ++k)
-                        m_runs[at + k] = mesh.triangles[3 * t + k];
-                }
-                for (std::size_t k = 0; k <= mesh.shaderCount; ++k) {
-                    const std::size_t first = m_runStarts[k], count = m_runStarts[k + 1] - first;
-                    if (count == 0)
-                        continue;
-                    MeshView run = mesh;
-                    run.triangles = m_runs.data() + 3 * first;
-                    run.triangleCount = count;
-                    drawFilled(run, rgb, color, attributes, k == 0 ? base : textureOf(mesh.shaders[k - 1].get()));
-                }
+            // Triangles gathered by shader with a counting sort (group k:
+            // shader k, 0 for none).
+            m_runStarts.assign(mesh.shaderCount + 2, 0);
+            for (std::size_t t = 0; t < mesh.triangleCount; ++t)
+                ++m_runStarts[mesh.triangleShaders[t] + 1];
+            for (std::size_t k = 1; k < m_runStarts.size(); ++k)
+                m_runStarts[k] += m_runStarts[k - 1];
+            m_runs.resize(3 * mesh.triangleCount);
+            m_runNext.assign(m_runStarts.begin(), m_runStarts.end() - 1);
+            for (std::size_t t = 0; t < mesh.triangleCount; ++t) {
+                const std::size_t at = 3 * m_runNext[mesh.triangleShaders[t]]++;
+                for (int k = 0; k < 3; ++k)
+                    m_runs[at + k] = mesh.triangles[3 * t + k];
+            }
+            for (std::size_t k = 0; k <= mesh.shaderCount; ++k) {
+                const std::size_t first = m_runStarts[k], count = m_runStarts[k + 1] - first;
+                if (count == 0)
+                    continue;
+                MeshView run = triangles;
+                run.triangles = m_runs.data() + 3 * first;
+                run.triangleCount = count;
+                drawFilled(run, shading, attributes, k == 0 ? base : textureOf(mesh.shaders[k - 1].get()));
             }
         }
-    } else if (!m_style.fillTriangles && mesh.edgeCount != 0) {
-        drawSegments(mesh, rgb, mesh.edges, mesh.edgeCount, color, "drawing edges");
-    }
-    drawSegments(mesh, rgb, mesh.lines, mesh.lineCount, color, "drawing lines");
-    for (std::size_t s = 0; s < mesh.stripCount; ++s) {
-        const Strip& strip = mesh.strips[s];
-        const float* xyz = mesh.positions + 3 * std::size_t(strip.first);
-        if (rgb != nullptr)
-            throwIfFailed(m_target.drawArrays(DrawMode::kLineStrip, xyz, rgb + 3 * std::size_t(strip.first),
-                                              strip.count, color, true),
-                          "drawing a line strip");
-        else
-            throwIfFailed(m_target.drawLineStrip(xyz, strip.count, color), "drawing a line strip");
-    }
-    if (mesh.pointCount != 0) {
-        if (rgb != nullptr) {
-            throwIfFailed(m_target.drawElements(DrawMode::kPoints, mesh.positions, rgb, mesh.vertexCount,
-                                                mesh.points, mesh.pointCount, color, false),
-                          "drawing points");
-        } else {
-            m_scratch.clear();
-            for (std::size_t i = 0; i < mesh.pointCount; ++i) {
-                const float* p = mesh.positions + 3 * std::size_t(mesh.points[i]);
-                m_scratch.insert(m_scratch.end(), p, p + 3);
-            }
-            throwIfFailed(m_target.drawPoints(m_scratch.data(), mesh.pointCount, color), "drawing points");
+        // Then the rest of the mesh (filled triangles show no edges).
+        if (mesh.lineCount != 0 || mesh.stripCount != 0 || mesh.pointCount != 0) {
+            MeshView rest = primitives;
+            rest.triangles = nullptr;
+            rest.triangleCount = 0;
+            rest.triangleShaders = nullptr;
+            rest.edges = nullptr;
+            rest.edgeCount = 0;
+            throwIfFailed(m_target.draw(rest, shading), "drawing a mesh");
         }
     }
     for (std::size_t b = 0; b < mesh.bitmapCount; ++b) {
@@ -478,11 +430,6 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
 }
 
 namespace {
-
-glm::vec3 at(const float* values, std::size_t i)
-{
-    return glm::vec3(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
-}
 
 // A unit vector, or +z for one that has no direction.
 glm::vec3 unit(const glm::vec3& v)
@@ -528,28 +475,30 @@ RenderLight toRenderLight(const LightSource& source)
 
 } // namespace
 
-void RenderPass::drawLit(const MeshView& mesh, const float* rgb, const RgbColor& color,
-                         const AttributeValues& attributes, const float* st)
+void RenderPass::loadLights()
+{
+    if (m_lightsLoaded)
+        return;
+    LightingSetup setup;
+    for (const LightSource& source : m_style.lighting.lights) {
+        if (setup.lights.size() == kMaxLights)
+            break;
+        setup.lights.push_back(toRenderLight(source));
+    }
+    const SceneLighting& scene = m_style.lighting;
+    const glm::vec3 look = unit(glm::vec3(scene.viewDirection));
+    for (int k = 0; k < 3; ++k) {
+        setup.eye[k] = float(scene.eye[k]);
+        setup.viewDirection[k] = look[k];
+    }
+    setup.orthographic = scene.orthographic;
+    throwIfFailed(m_target.setLighting(setup), "setting the lights");
+    m_lightsLoaded = true;
+}
+
+SurfaceShading RenderPass::surfaceShading(const AttributeValues& attributes) const
 {
     const DrawState& styles = state().draw;
-    if (!m_lightsLoaded) {
-        LightingSetup setup;
-        for (const LightSource& source : m_style.lighting.lights) {
-            if (setup.lights.size() == kMaxLights)
-                break;
-            setup.lights.push_back(toRenderLight(source));
-        }
-        const SceneLighting& scene = m_style.lighting;
-        const glm::vec3 look = unit(glm::vec3(scene.viewDirection));
-        for (int k = 0; k < 3; ++k) {
-            setup.eye[k] = float(scene.eye[k]);
-            setup.viewDirection[k] = look[k];
-        }
-        setup.orthographic = scene.orthographic;
-        throwIfFailed(m_target.setLighting(setup), "setting the lights");
-        m_lightsLoaded = true;
-    }
-
     SurfaceShading shading;
     const Matrix& toWorld = state().localToWorld;
     for (int i = 0; i < 4; ++i)
@@ -566,77 +515,7 @@ void RenderPass::drawLit(const MeshView& mesh, const float* rgb, const RgbColor&
                             : styles.interpolation == kQ3InterpolationStylePixel ? 2
                                                                                  : 1;
     shading.flipBackFaces = styles.backfacing == kQ3BackfacingStyleFlip;
-
-    // Normals: the vertices' own where every vertex has one and the
-    // interpolation uses them; otherwise each triangle gets its own three
-    // vertices, with its face normal where a vertex has none (and always
-    // for flat shading), turned to the front the orientation style names.
-    const float sign = styles.orientation == kQ3OrientationStyleClockwise ? -1.0f : 1.0f;
-    bool shared = shading.interpolation != 0 && mesh.normals != nullptr;
-    for (std::size_t i = 0; shared && i < mesh.vertexCount; ++i)
-        shared = mesh.normals[3 * i] == mesh.normals[3 * i];
-    if (shared) {
-        m_normals.resize(3 * mesh.vertexCount);
-        for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
-            const glm::vec3 n = unit(at(mesh.normals, i));
-            m_normals[3 * i] = n.x;
-            m_normals[3 * i + 1] = n.y;
-            m_normals[3 * i + 2] = n.z;
-        }
-        throwIfFailed(m_target.drawLitTriangles(mesh.positions, m_normals.data(), rgb, mesh.vertexCount, mesh.triangles,
-                                                3 * mesh.triangleCount, color, shading, st),
-                      "drawing lit triangles");
-        return;
-    }
-    const std::size_t corners = 3 * mesh.triangleCount;
-    m_litPositions.resize(3 * corners);
-    m_normals.resize(3 * corners);
-    m_litColors.resize(rgb != nullptr ? 3 * corners : 0);
-    m_litST.resize(st != nullptr ? 2 * corners : 0);
-    m_indices.resize(corners);
-    for (std::size_t t = 0; t < mesh.triangleCount; ++t) {
-        const std::uint32_t* v = mesh.triangles + 3 * t;
-        const glm::vec3 a = at(mesh.positions, v[0]), b = at(mesh.positions, v[1]), c = at(mesh.positions, v[2]);
-        glm::vec3 face = unit(sign * glm::cross(b - a, c - a));
-        if (shading.interpolation == 0 && mesh.normals != nullptr) {
-            // A flat face keeps the side its vertices' normals point to.
-            glm::vec3 sum(0.0f);
-            for (int k = 0; k < 3; ++k)
-                if (mesh.normals[3 * v[k]] == mesh.normals[3 * v[k]])
-                    sum += at(mesh.normals, v[k]);
-            if (glm::dot(sum, face) < 0.0f)
-                face = -face;
-        }
-        for (int k = 0; k < 3; ++k) {
-            const std::size_t corner = 3 * t + k;
-            glm::vec3 n = face;
-            if (shading.interpolation != 0 && mesh.normals != nullptr &&
-                mesh.normals[3 * v[k]] == mesh.normals[3 * v[k]])
-                n = unit(at(mesh.normals, v[k]));
-            for (int d = 0; d < 3; ++d) {
-                m_litPositions[3 * corner + d] = mesh.positions[3 * v[k] + d];
-                m_normals[3 * corner + d] = n[d];
-                if (rgb != nullptr)
-                    m_litColors[3 * corner + d] = rgb[3 * v[k] + d];
-            }
-            if (st != nullptr) {
-                m_litST[2 * corner] = st[2 * v[k]];
-                m_litST[2 * corner + 1] = st[2 * v[k] + 1];
-            }
-            m_indices[corner] = std::uint32_t(corner);
-        }
-    }
-    if (m_opacity.alpha != nullptr) {
-        // The opacity follows the vertices to their corners.
-        m_litAlpha.resize(corners);
-        for (std::size_t corner = 0; corner < corners; ++corner)
-            m_litAlpha[corner] = m_opacity.alpha[mesh.triangles[corner]];
-        loadOpacity(OpacitySetup{m_litAlpha.data(), corners, m_opacity.uniform});
-    }
-    throwIfFailed(m_target.drawLitTriangles(m_litPositions.data(), m_normals.data(),
-                                            rgb != nullptr ? m_litColors.data() : nullptr, corners, m_indices.data(),
-                                            corners, color, shading, st != nullptr ? m_litST.data() : nullptr),
-                  "drawing lit triangles");
+    return shading;
 }
 
 } // namespace q3

@@ -44,12 +44,15 @@ struct RenderStyle {
 };
 
 /// A traversal of a rendering loop: every geometry decomposes itself
-/// (Geometry::decompose) into this pass, which draws the primitives into the
-/// view's RenderTarget frame. A vertex's colour is its own (after
+/// (Geometry::decompose) into this pass, which resolves what each mesh is
+/// drawn with (colours, opacity, texture, illumination, fill style: a
+/// Shading) and hands the mesh to the view's RenderTarget frame, one draw per
+/// surface shader of its filled triangles and one for the rest; the target
+/// decides how to draw it. A vertex's colour is its own (after
 /// inheritance from its face), else its geometry's attribute set's diffuse
 /// colour, else the state's; colours given per vertex are interpolated.
 /// Under a Lambert or Phong illumination shader, filled triangles are lit by
-/// the view's lights (RenderTarget::drawLitTriangles gives the equations), with the
+/// the view's lights (RenderTarget.h, SurfaceShading, gives the equations), with the
 /// geometry's normals or, where it has none, its faces'; lines and points
 /// are drawn in their colours. Under a texture shader, filled triangles
 /// whose vertices all have a uv take their diffuse colour from its texture
@@ -88,19 +91,10 @@ private:
     /// transparency colour, else the attributes' (the highlight's over all
     /// where it has one), as the mean of its three channels.
     void prepareOpacity(const MeshView& mesh, const AttributeValues& attributes, bool highlightTransparency);
-    /// Hands the target an opacity if it is not the one it has.
-    void loadOpacity(const OpacitySetup& opacity);
-    /// Draws pairs of indices as lines (uniform colour, or per vertex).
-    void drawSegments(const MeshView& mesh, const float* rgb, const std::uint32_t* pairs, std::size_t count,
-                      const RgbColor& color, const char* what);
-    /// Every vertex of the mesh as a point.
-    void drawVertices(const MeshView& mesh, const float* rgb, const RgbColor& color);
-    /// The triangles as their edges (the mesh's, else every side).
-    void drawTriangleEdges(const MeshView& mesh, const float* rgb, const RgbColor& color);
-    /// The triangles lit under the state's illumination shader (textured
-    /// with st, as textureCoordinates gives them, or not with null).
-    void drawLit(const MeshView& mesh, const float* rgb, const RgbColor& color, const AttributeValues& attributes,
-                 const float* st);
+    /// Hands the target the frame's lights, the first time a draw is lit.
+    void loadLights();
+    /// The illumination shader's parameters for the current state.
+    SurfaceShading surfaceShading(const AttributeValues& attributes) const;
 
     /// What a texture shader draws with: its texture (a q3::Texture; null
     /// for none), uv transform and boundaries.
@@ -113,20 +107,22 @@ private:
     static TextureChoice textureOf(const DrawState& state);
     /// A surface shader's (one held by an attribute set).
     static TextureChoice textureOf(const SharedObject* shader);
-    /// The filled triangles of the mesh with `texture` (or untextured where
-    /// it has none or a vertex lacks a uv), lit or not as the state says.
-    void drawFilled(const MeshView& mesh, const float* rgb, const RgbColor& color, const AttributeValues& attributes,
+    /// Draws the mesh's filled triangles as `base` says, with `texture` (or
+    /// untextured where it has none or a vertex lacks a uv), lit or not as
+    /// the state says.
+    void drawFilled(const MeshView& mesh, const Shading& base, const AttributeValues& attributes,
                     const TextureChoice& texture);
-    /// Makes the texture the target's current one, handing it over the first
-    /// time this frame draws it (with those boundaries, at that edit); false
+    /// The target's number for the texture, handing it over the first time
+    /// this frame draws it (with those boundaries, at that edit); kNoTexture
     /// when there is none. Throws kQ3ErrorInvalidData when the texture's
     /// storage no longer holds its image.
-    bool loadTexture(const TextureChoice& texture);
+    std::uint32_t loadTexture(const TextureChoice& texture);
     /// The texture coordinates of the mesh's vertices under `texture`: each
     /// vertex's uv through the uv transform, v turned to run down the image
-    /// (0 for a vertex no triangle uses that has none); null (untextured)
+    /// (0 for a vertex no triangle uses that has none), with the target's
+    /// number for the texture in `id`; null (untextured, id kNoTexture)
     /// without a texture or when a triangle's vertex has no uv.
-    const float* textureCoordinates(const MeshView& mesh, const TextureChoice& texture);
+    const float* textureCoordinates(const MeshView& mesh, const TextureChoice& texture, std::uint32_t& id);
 
     RenderTarget& m_target;
     RenderStyle m_style;
@@ -137,29 +133,19 @@ private:
     /// The eye distance as a function of clip coordinates (FogSetup's
     /// planes), computed when fog is first drawn.
     std::optional<FogSetup> m_fogPlanes;
-    /// The opacity of the mesh being drawn (alpha in m_alpha, per vertex),
-    /// the one the target has, and per-corner opacity for drawLit.
+    /// The opacity of the mesh being drawn (alpha in m_alpha, per vertex).
     OpacitySetup m_opacity;
-    OpacitySetup m_loadedOpacity;
     std::vector<float> m_alpha;
-    std::vector<float> m_litAlpha;
     bool m_lightsLoaded = false;
-    std::vector<float> m_scratch;
     std::vector<float> m_colors;
-    std::vector<float> m_normals;
-    std::vector<float> m_litPositions;
-    std::vector<float> m_litColors;
-    std::vector<std::uint32_t> m_indices;
     std::vector<float> m_st;
-    std::vector<float> m_litST;
     /// The triangles of a mesh grouped by surface shader, where each group
     /// starts, and where each is filled next.
     std::vector<std::uint32_t> m_runs;
     std::vector<std::size_t> m_runStarts;
     std::vector<std::size_t> m_runNext;
     /// The textures handed to the target this frame (held, so that none is
-    /// freed and its address reused while the frame lasts), and the one
-    /// current there.
+    /// freed and its address reused while the frame lasts).
     struct LoadedTexture {
         Ref<SharedObject> texture;
         unsigned long edit = 0;
@@ -168,7 +154,6 @@ private:
         std::uint32_t id = 0;
     };
     std::vector<LoadedTexture> m_textures;
-    std::uint32_t m_currentTexture = RenderTarget::kNoTexture;
 };
 
 } // namespace q3

@@ -69,20 +69,28 @@ TEST_F(RenderPassTest, FilledTrianglesAndPointsReachTheTargetThroughTheInterface
     EXPECT_EQ(m_target.count("setFaceOptions"), 1u);
     // Anti-aliasing is off by default: the target is never told about it.
     EXPECT_EQ(m_target.count("setAntiAlias"), 0u);
-    EXPECT_EQ(m_target.count("drawElements") + m_target.count("drawLitTriangles"), 1u);
-    EXPECT_EQ(m_target.count("drawPoints"), 1u);
-    EXPECT_EQ(m_target.count("drawLines"), 0u);
+    // One draw per mesh: the triangle filled, then the point.
+    const std::vector<NullRenderTarget::DrawRecord>& draws = m_target.draws();
+    ASSERT_EQ(draws.size(), 2u);
+    EXPECT_EQ(draws[0].triangles, 1u);
+    EXPECT_EQ(draws[0].fill, Shading::Fill::kFilled);
+    EXPECT_FALSE(draws[0].edgesAlone);
+    EXPECT_EQ(draws[1].triangles, 0u);
+    EXPECT_EQ(draws[1].points, 1u);
     ASSERT_NE(m_target.pixels(), nullptr);
     EXPECT_EQ(m_target.rowBytes(), 32u);
 }
 
-TEST_F(RenderPassTest, TheWireframeRendererDrawsATrianglesEdgesAsLines)
+TEST_F(RenderPassTest, TheWireframeRendererAsksForATrianglesEdges)
 {
     drawAll(false);
-    EXPECT_EQ(m_target.count("drawLines"), 1u);
-    EXPECT_EQ(m_target.count("drawElements") + m_target.count("drawLitTriangles"), 0u);
+    const std::vector<NullRenderTarget::DrawRecord>& draws = m_target.draws();
+    ASSERT_EQ(draws.size(), 2u);
+    EXPECT_EQ(draws[0].triangles, 1u);
+    EXPECT_EQ(draws[0].fill, Shading::Fill::kEdges);
+    EXPECT_TRUE(draws[0].edgesAlone);
     EXPECT_EQ(m_target.count("setFaceOptions"), 0u);
-    EXPECT_EQ(m_target.count("drawPoints"), 1u);
+    EXPECT_EQ(draws[1].points, 1u);
 }
 
 } // namespace
