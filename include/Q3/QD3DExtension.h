@@ -26,9 +26,11 @@
  * refused with kQ3ErrorInvalidObjectClass. Element and attribute classes
  * are registered with QD3DSet.h's Q3XElementClass_Register and
  * Q3XAttributeClass_Register. A custom object is not drawn (a drawable one,
- * kQ3XMethodTypeObjectIsDrawable, is accepted by a view and draws nothing)
- * and has no 3DMF form (Q3 does not provide Apple's custom-object I/O
- * methods; writing one posts kQ3WarningNoObjectSupportForWriteMethod).
+ * kQ3XMethodTypeObjectIsDrawable, is accepted by a view and draws nothing).
+ * Objects and elements of a class with QD3DIO.h's I/O methods (traverse,
+ * write, read, read-data, attach) are written to and read from 3DMF files
+ * by them; without a traverse method they are left out of files with
+ * kQ3WarningNoObjectSupportForWriteMethod.
  *
  * Q3XSharedLibrary_Register calls the registration function it is given at
  * once (Q3 loads no plug-in libraries itself); the Mac creator and file

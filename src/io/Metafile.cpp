@@ -929,7 +929,7 @@ void Encoder::begin(TQ3ObjectType type, const char* name)
         return;
     }
     m_open.push_back({m_body.size(), false});
-    if (type < 0) {
+    if (isCustomType(type)) {
         // A class registered at run time: a file-local negative type, which
         // a Type object ahead of the objects names (3D Metafile Reference,
         // "Type objects").

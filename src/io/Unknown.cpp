@@ -15,7 +15,7 @@ Object* UnknownText::duplicate() const
 
 Object* UnknownBinary::duplicate() const
 {
-    return makeShared<UnknownBinary>(m_type, m_contents, m_order).detach();
+    return makeShared<UnknownBinary>(m_type, m_contents, m_order, m_typeString).detach();
 }
 
 } // namespace q3

@@ -54,8 +54,8 @@ class UnknownBinary final : public UnknownObject {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3UnknownTypeBinary;
 
-    UnknownBinary(TQ3ObjectType type, std::string contents, TQ3Endian order)
-        : m_type(type), m_contents(std::move(contents)), m_order(order)
+    UnknownBinary(TQ3ObjectType type, std::string contents, TQ3Endian order, std::string typeString = {})
+        : m_type(type), m_contents(std::move(contents)), m_order(order), m_typeString(std::move(typeString))
     {
     }
 
@@ -65,11 +65,15 @@ public:
     TQ3ObjectType type() const { return m_type; }
     const std::string& contents() const { return m_contents; }
     TQ3Endian byteOrder() const { return m_order; }
+    /// The class name a Type object of the file declared for a custom
+    /// (negative) type; empty for any other type.
+    const std::string& typeString() const { return m_typeString; }
 
 private:
     TQ3ObjectType m_type;
     std::string m_contents;
     TQ3Endian m_order;
+    std::string m_typeString;
 };
 
 } // namespace q3
