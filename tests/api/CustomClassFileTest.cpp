@@ -52,10 +52,12 @@ struct SpotBehaviour {
     bool postFromWrite = false;
     bool wrongSize = false;
     bool skipWrite = false; // the traverse method writes nothing
+    bool subObjectData = false; // the traverse method adds a Test:Weight
     int deletes = 0;        // calls of the data delete method
 };
 SpotBehaviour g_spot;
 TQ3XObjectClass g_spotClass = nullptr;
+TQ3AttributeType g_weightType = 0; // the attribute class below
 
 TQ3Status spotNew(TQ3Object, void* privateData, void* parameters)
 {
@@ -100,6 +102,14 @@ TQ3Status spotTraverse(TQ3Object, void* data, TQ3ViewObject view)
         size += 4;
     if (Q3XView_SubmitWriteData(view, size, spot, countDelete) != kQ3Success)
         return kQ3Failure;
+    if (g_spot.subObjectData) {
+        static float s_weight[2] = {0.5f, 0.0f};
+        std::uint32_t flags = 7;
+        std::memcpy(&s_weight[1], &flags, sizeof flags);
+        if (Q3XView_SubmitSubObjectData(view, Q3XObjectHierarchy_FindClassByType(g_weightType), 8, s_weight,
+                                        countDelete) != kQ3Success)
+            return kQ3Failure;
+    }
     if (spot->child != nullptr)
         return Q3Object_Submit(spot->child, view);
     return kQ3Success;
@@ -169,7 +179,6 @@ struct Weight {
     float weight;
     TQ3Uns32 flags;
 };
-TQ3AttributeType g_weightType = 0;
 bool g_failReadData = false;
 
 TQ3Status weightTraverse(TQ3Object object, void* data, TQ3ViewObject view)
@@ -206,6 +215,48 @@ TQ3XFunctionPointer weightMetaHandler(TQ3XMethodType type)
         return reinterpret_cast<TQ3XFunctionPointer>(weightWrite);
     case kQ3XMethodTypeObjectReadData:
         return reinterpret_cast<TQ3XFunctionPointer>(weightReadData);
+    default:
+        return nullptr;
+    }
+}
+
+// ---- A class whose objects attach themselves to the object whose
+// container holds them.
+
+struct Attached {
+    TQ3ObjectType parentType = 0;
+    TQ3Uns32 value = 0;
+    int calls = 0;
+};
+Attached g_attached;
+TQ3XObjectClass g_tagClass = nullptr;
+
+TQ3Object tagRead(TQ3FileObject file)
+{
+    TQ3Uns32 value = 0;
+    if (Q3Uns32_Read(&value, file) != kQ3Success)
+        return nullptr;
+    TQ3Object tag = Q3XObjectHierarchy_NewObject(g_tagClass, nullptr);
+    if (tag != nullptr)
+        *static_cast<TQ3Uns32*>(Q3XObjectClass_GetPrivate(g_tagClass, tag)) = value;
+    return tag;
+}
+
+TQ3Status tagAttach(TQ3Object child, TQ3Object parent)
+{
+    ++g_attached.calls;
+    g_attached.parentType = Q3Object_GetLeafType(parent);
+    g_attached.value = *static_cast<TQ3Uns32*>(Q3XObjectClass_GetPrivate(g_tagClass, child));
+    return kQ3Success;
+}
+
+TQ3XFunctionPointer tagMetaHandler(TQ3XMethodType type)
+{
+    switch (type) {
+    case kQ3XMethodTypeObjectRead:
+        return reinterpret_cast<TQ3XFunctionPointer>(tagRead);
+    case kQ3XMethodTypeObjectAttach:
+        return reinterpret_cast<TQ3XFunctionPointer>(tagAttach);
     default:
         return nullptr;
     }
@@ -567,6 +618,53 @@ TEST_F(CustomClassFileTest, AReadMethodReadsNothingPastItsOwnObject)
     EXPECT_EQ(spotOf(read[0]).child, nullptr);
     EXPECT_EQ(Q3Object_GetLeafType(read[1]), kQ3GeometryTypeBox);
     disposeAll(read);
+}
+
+TEST_F(CustomClassFileTest, SubObjectDataIsWrittenByItsClassAfterTheData)
+{
+    g_spot.subObjectData = true;
+    TQ3Object spot = newSpot(1.0f, 2, "s");
+    const std::vector<unsigned char> bytes = writeObjects({spot}, kQ3FileModeText);
+    const std::string text = textOf(bytes);
+    const std::size_t data = text.find("Test:Spot ( 1 2 \"s\" )");
+    const std::size_t sub = text.find("Test:Weight ( 0.5 7 )");
+    ASSERT_NE(data, std::string::npos) << text;
+    ASSERT_NE(sub, std::string::npos) << text;
+    EXPECT_LT(data, sub);
+    EXPECT_NE(text.find("Container ("), std::string::npos);
+    EXPECT_EQ(g_spot.deletes, 2); // the spot's data and the weight's
+    // Binary: the sizes match what the traverse method gave.
+    g_spot.deletes = 0;
+    EXPECT_FALSE(writeObjects({spot}, kQ3FileModeNormal).empty());
+    EXPECT_EQ(g_spot.deletes, 2);
+}
+
+TEST_F(CustomClassFileTest, AnAttachMethodGetsTheObjectWhoseContainerHoldsIt)
+{
+    TQ3ObjectType type = 0;
+    g_tagClass = Q3XObjectHierarchy_RegisterClass(kQ3ObjectTypeShared, &type, const_cast<char*>("Test:Tag"),
+                                                  tagMetaHandler, nullptr, 0, sizeof(TQ3Uns32));
+    ASSERT_NE(g_tagClass, nullptr);
+    g_attached = Attached{};
+    const std::string text = "3DMetafile ( 1 6 Normal )\n"
+                             "Container ( Box ( 1 0 0 0 1 0 0 0 1 0 0 0 ) Test:Tag ( 5 ) )\n";
+    std::vector<TQ3Object> read = readAll(bytesOf(text));
+    ASSERT_EQ(read.size(), 1u);
+    EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3GeometryTypeBox);
+    EXPECT_EQ(g_attached.calls, 1);
+    EXPECT_EQ(g_attached.parentType, kQ3GeometryTypeBox);
+    EXPECT_EQ(g_attached.value, 5u);
+    disposeAll(read);
+
+    // A class without an attach method: left out with a warning.
+    const std::string spotInBox = "3DMetafile ( 1 6 Normal )\n"
+                                  "Container ( Box ( 1 0 0 0 1 0 0 0 1 0 0 0 ) Test:Spot ( 1 2 \"x\" ) )\n";
+    EXPECT_Q3_WARNING(read = readAll(bytesOf(spotInBox)), kQ3WarningNoAttachMethod);
+    ASSERT_EQ(read.size(), 1u);
+    EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3GeometryTypeBox);
+    disposeAll(read);
+    EXPECT_EQ(Q3XObjectHierarchy_UnregisterClass(g_tagClass), kQ3Success);
+    g_tagClass = nullptr;
 }
 
 } // namespace
