@@ -24,6 +24,7 @@ const TQ3XMethodType kKnownMethodTypes[] = {
     kQ3XMethodTypeAttributeCopyInherit, kQ3XMethodTypeAttributeDefault,    kQ3XMethodTypeAttributeIsDefault,
     kQ3XMethodTypeObjectTraverse,       kQ3XMethodTypeObjectTraverseData,  kQ3XMethodTypeObjectWrite,
     kQ3XMethodTypeObjectRead,           kQ3XMethodTypeObjectReadData,      kQ3XMethodTypeObjectAttach,
+    kQ3XMethodTypeObjectSubmitRender,   kQ3XMethodTypeObjectSubmitPick,    kQ3XMethodTypeObjectSubmitBounds,
 };
 const std::size_t kKnownMethodTypeCount = sizeof kKnownMethodTypes / sizeof kKnownMethodTypes[0];
 
