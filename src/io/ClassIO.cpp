@@ -157,9 +157,31 @@ Ref<SharedObject> unknownFrom(const Metafile& file, const Node& node)
     }
     std::string contents(reinterpret_cast<const char*>(file.bytes.data()) + node.dataBegin,
                          node.dataEnd - node.dataBegin);
-    return makeShared<UnknownBinary>(node.type, std::move(contents),
-                                     file.encoding == Encoding::kBinaryLittle ? kQ3EndianLittle : kQ3EndianBig,
-                                     isCustomType(node.type) ? node.name : std::string());
+    auto unknown =
+        makeShared<UnknownBinary>(node.type, std::move(contents),
+                                  file.encoding == Encoding::kBinaryLittle ? kQ3EndianLittle : kQ3EndianBig,
+                                  isCustomType(node.type) ? node.name : std::string());
+    // The custom types inside (a container's, a group's objects), by the
+    // codes the bytes hold, so writing renumbers them (Encoder::rawObjects).
+    std::map<std::uint32_t, std::string> declared;
+    const auto collect = [&](auto& self, const std::vector<Node>& nodes) -> void {
+        for (const Node& child : nodes) {
+            if (!child.name.empty() && child.offset + 4 <= file.bytes.size()) {
+                const unsigned char* p = file.bytes.data() + child.offset;
+                const std::uint32_t code =
+                    file.encoding == Encoding::kBinaryLittle
+                        ? std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 | std::uint32_t{p[2]} << 16 |
+                              std::uint32_t{p[3]} << 24
+                        : std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | p[3];
+                if (isCustomType(static_cast<TQ3ObjectType>(code)))
+                    declared[code] = child.name;
+            }
+            self(self, child.children);
+        }
+    };
+    collect(collect, node.children);
+    unknown->setDeclaredTypes(std::move(declared));
+    return Ref<SharedObject>(std::move(unknown));
 }
 
 // Where the item starting at `index` ends: past its EndGroup for a BeginGroup.

@@ -202,7 +202,7 @@ void writeUnknownBinary(WriteContext& context, const Object& object)
     }
     // A custom type is declared again under the name its file gave it.
     out.begin(unknown.type(), unknown.typeString().c_str());
-    out.raw(unknown.contents());
+    out.rawObjects(unknown.contents(), unknown.declaredTypes());
     out.end();
 }
 

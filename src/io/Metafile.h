@@ -178,6 +178,13 @@ public:
     void flags(const std::vector<std::pair<const char*, std::uint32_t>>& names, std::uint32_t value);
     /// Data copied as it is (an unknown object's).
     void raw(const std::string& data);
+    /// Binary: the data of an unknown container or group (a sequence of
+    /// objects) copied, with the custom types `declared` names (their codes
+    /// in the file they came from) renumbered as this file declares them.
+    void rawObjects(const std::string& data, const std::map<std::uint32_t, std::string>& declared);
+    /// Binary: this file's code for a custom class name, declared by a Type
+    /// object ahead of the objects.
+    std::int32_t customType(const std::string& name);
 
     /// A point to come back to: rollback(mark()) forgets everything written
     /// since (what a failed write leaves behind).

@@ -5,6 +5,8 @@
 #include "QD3D.h"
 #include "core/Object.h"
 
+#include <cstdint>
+#include <map>
 #include <string>
 
 namespace q3 {
@@ -68,12 +70,17 @@ public:
     /// The class name a Type object of the file declared for a custom
     /// (negative) type; empty for any other type.
     const std::string& typeString() const { return m_typeString; }
+    /// The custom types the data's objects have (a container's, a group's),
+    /// by their codes in the data: the names their file's Type objects gave.
+    const std::map<std::uint32_t, std::string>& declaredTypes() const { return m_declared; }
+    void setDeclaredTypes(std::map<std::uint32_t, std::string> declared) { m_declared = std::move(declared); }
 
 private:
     TQ3ObjectType m_type;
     std::string m_contents;
     TQ3Endian m_order;
     std::string m_typeString;
+    std::map<std::uint32_t, std::string> m_declared;
 };
 
 } // namespace q3

@@ -506,6 +506,44 @@ TEST_F(CustomClassFileTest, AnUnregisteredClassReadsAsAnUnknownObjectAndIsWritte
     disposeAll(read);
 }
 
+TEST_F(CustomClassFileTest, AnUnregisteredObjectWithSubObjectsKeepsItsClassNameInANewFile)
+{
+    std::vector<unsigned char> binary;
+    {
+        TQ3Object box = keep(newBox());
+        TQ3Object spot = newSpot(3.0f, 2, "parent", box);
+        binary = writeObjects({spot}, kQ3FileModeNormal);
+        disposeOwned();
+    }
+    ASSERT_EQ(Q3XObjectHierarchy_UnregisterClass(g_spotClass), kQ3Success);
+    g_spotClass = nullptr;
+    std::vector<TQ3Object> read;
+    EXPECT_Q3_WARNING(read = readAll(binary), kQ3WarningUnknownObject);
+    ASSERT_EQ(read.size(), 1u);
+    EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3UnknownTypeBinary);
+    EXPECT_EQ(writeObjects({read[0]}, kQ3FileModeNormal), binary);
+
+    // Written after an object of another class, which takes the type -1:
+    // the unknown container's root is renumbered with the name it had.
+    TQ3GeometryObject box = keep(newBox());
+    const Weight weight{1.0f, 1u};
+    ASSERT_EQ(Q3Shape_AddElement(box, g_weightType, &weight), kQ3Success);
+    const std::vector<unsigned char> mixed = writeObjects({box, read[0]}, kQ3FileModeNormal);
+    disposeAll(read);
+    TQ3ObjectType type = 0;
+    g_spotClass = Q3XObjectHierarchy_RegisterClass(kQ3SharedTypeShape, &type, const_cast<char*>("Test:Spot"),
+                                                   spotMetaHandler, nullptr, 0, sizeof(Spot));
+    ASSERT_NE(g_spotClass, nullptr);
+    read = readAll(mixed);
+    ASSERT_EQ(read.size(), 2u);
+    EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3GeometryTypeBox);
+    ASSERT_EQ(Q3Object_GetLeafType(read[1]), type);
+    EXPECT_STREQ(spotOf(read[1]).label, "parent");
+    ASSERT_NE(spotOf(read[1]).child, nullptr);
+    EXPECT_EQ(Q3Object_GetLeafType(spotOf(read[1]).child), kQ3GeometryTypeBox);
+    disposeAll(read);
+}
+
 TEST_F(CustomClassFileTest, ATraverseMethodMayWriteNothing)
 {
     g_spot.skipWrite = true;
