@@ -1332,7 +1332,9 @@ std::vector<unsigned char> Encoder::finish(TQ3FileMode mode, const std::vector<T
         for (const TocEntry& entry : toc) {
             table.u32(entry.id);
             table.u64(bodyStart + entry.position);
-            table.u32(entry.type);
+            // A custom class's entry has the file's code for it, as its
+            // object does (the name is declared already: the object was written).
+            table.u32(static_cast<std::uint32_t>(isCustomType(entry.type) ? customType(entry.name) : entry.type));
         }
         table.end();
         out.insert(out.end(), table.m_body.begin(), table.m_body.end());

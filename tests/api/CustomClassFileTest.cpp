@@ -406,6 +406,10 @@ TEST_F(CustomClassFileTest, ABinaryFileDeclaresTheClassWithATypeObject)
     const std::size_t object = 24 + 8 + 16;
     EXPECT_EQ(bigU32(bytes, object), 0xFFFFFFFFu);
     EXPECT_EQ(bigU32(bytes, object + 4), 12u);
+    // The table of contents lists it (referred to twice) with that type: its
+    // one entry ends the file (ID, 64-bit location, type).
+    EXPECT_EQ(bigU32(bytes, bytes.size() - 4), 0xFFFFFFFFu);
+    EXPECT_EQ(bigU32(bytes, bytes.size() - 8), object);
     // The second submit refers to the first: one object comes back twice.
     std::vector<TQ3Object> read = readAll(bytes);
     ASSERT_EQ(read.size(), 2u);
