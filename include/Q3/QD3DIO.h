@@ -539,6 +539,22 @@ Q3_EXTERN_API_C(TQ3Status) Q3String_Write(const char *data, TQ3FileObject theFil
 Q3_EXTERN_API_C(TQ3Status) Q3RawData_Read(unsigned char *data, unsigned long size, TQ3FileObject theFile);
 Q3_EXTERN_API_C(TQ3Status) Q3RawData_Write(const unsigned char *data, unsigned long size, TQ3FileObject theFile);
 
+/*
+ * Q3 extension (Quesa's names and signatures): Q3Uns8_ReadArray,
+ * Q3Uns16_ReadArray, Q3Uns32_ReadArray and Q3Float32_ReadArray read numNums
+ * values into the array in one call, as that many Q3Uns8_Read (...) calls
+ * would, for a custom class's read method reading a block of points or
+ * indices. All or nothing: when the data cannot hold them all
+ * (kQ3ErrorReadMoreThanSize) or one is malformed, the array and the
+ * position are unchanged. numNums 0 reads nothing (the array may then be
+ * NULL). Errors: as the reads above; kQ3ErrorNULLParameter for a NULL array
+ * with numNums above 0.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Uns8_ReadArray(TQ3Uns32 numNums, TQ3Uns8 *intArray, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns16_ReadArray(TQ3Uns32 numNums, TQ3Uns16 *intArray, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns32_ReadArray(TQ3Uns32 numNums, TQ3Uns32 *intArray, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Float32_ReadArray(TQ3Uns32 numFloats, TQ3Float32 *floatArray, TQ3FileObject theFile);
+
 Q3_EXTERN_API_C(TQ3Status) Q3Point2D_Read(TQ3Point2D *point2D, TQ3FileObject theFile);
 Q3_EXTERN_API_C(TQ3Status) Q3Point2D_Write(const TQ3Point2D *point2D, TQ3FileObject theFile);
 Q3_EXTERN_API_C(TQ3Status) Q3Point3D_Read(TQ3Point3D *point3D, TQ3FileObject theFile);
