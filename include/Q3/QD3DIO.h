@@ -49,7 +49,9 @@
  * NULL illumination shaders; ambient, directional, point and spot lights;
  * matrix, translate, scale, rotate and reset transforms; view hints (below),
  * with their camera, lights, attribute set, image dimensions, mask and clear
- * colour. Anything else in a file is read as an unknown object.
+ * colour; objects and elements of the classes an application registers,
+ * through their class's I/O methods (below). Anything else in a file is
+ * read as an unknown object.
  *
  * Objects of a type Q3 does not know are read as unknown objects
  * (Q3Unknown_GetType) and written back unchanged.
