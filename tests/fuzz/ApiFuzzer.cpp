@@ -47,7 +47,6 @@
 #include "QD3DRenderer.h"
 #include "QD3DSet.h"
 #include "QD3DGroup.h"
-#include "QD3DExtension.h"
 #include "QD3DIO.h"
 #include "QD3DShader.h"
 #include "QD3DStorage.h"
@@ -2501,7 +2500,7 @@ private:
         for (float& f : data)
             f = m_in.value();
         const bool handleType = type == kQ3AttributeTypeSurfaceShader || type == kQ3ElementTypeSet;
-        switch (m_in.u8() % 11) {
+        switch (m_in.u8() % 9) {
         case 0:
             STATUS(Q3Object_AddElement(target, type, m_in.u8() == 0 ? nullptr : data));
             break;
@@ -2547,13 +2546,6 @@ private:
                 STATUS(CENameElement_EmptyData(&got));
             break;
         }
-        case 9: // outside a traverse method: always refused
-            STATUS(Q3XView_SubmitWriteData(target, m_in.u32(), data, nullptr));
-            break;
-        case 10:
-            STATUS(Q3XView_SubmitSubObjectData(target, Q3XObjectHierarchy_FindClassByType(type), m_in.u32(), data,
-                                               nullptr));
-            break;
         }
     }
 
