@@ -25,10 +25,13 @@
  * format) would need Q3's internal methods for it; such a parent is
  * refused with kQ3ErrorInvalidObjectClass. Element and attribute classes
  * are registered with QD3DSet.h's Q3XElementClass_Register and
- * Q3XAttributeClass_Register. A custom object is not drawn (a drawable one,
- * kQ3XMethodTypeObjectIsDrawable, is accepted by a view and draws nothing)
- * and has no 3DMF form (Q3 does not provide Apple's custom-object I/O
- * methods; writing one posts kQ3WarningNoObjectSupportForWriteMethod).
+ * Q3XAttributeClass_Register. A custom object is drawable when its class
+ * answers kQ3XMethodTypeObjectIsDrawable or has a submit method (below);
+ * it draws, picks and bounds only through its submit methods.
+ * Objects and elements of a class with QD3DIO.h's I/O methods (traverse,
+ * write, read, read-data, attach) are written to and read from 3DMF files
+ * by them; without a traverse method they are left out of files with
+ * kQ3WarningNoObjectSupportForWriteMethod.
  *
  * Q3XSharedLibrary_Register calls the registration function it is given at
  * once (Q3 loads no plug-in libraries itself); the Mac creator and file
@@ -79,6 +82,29 @@ typedef TQ3Status (*TQ3XObjectDuplicateMethod)(TQ3Object fromObject, const void 
                                                TQ3Object toObject, const void *toPrivateData);
 
 typedef TQ3Status (*TQ3XSharedLibraryRegister)(void);
+
+/*
+ * Q3 extension (Quesa's names, values and signature; Apple's 1.6 headers
+ * leave submit methods private): how a custom object draws, picks and
+ * bounds. When an object of the class is submitted (Q3Object_Submit, or as
+ * a member of a group being drawn), the submit method of the running loop
+ * is called: kQ3XMethodTypeObjectSubmitRender in a rendering loop,
+ * kQ3XMethodTypeObjectSubmitPick in a picking loop,
+ * kQ3XMethodTypeObjectSubmitBounds in a bounding loop. theView is the
+ * loop's view, objectType the object's leaf type, theObject the object and
+ * objectData its instance data for the class (Q3XObjectClass_GetPrivate).
+ * The method submits what the object stands for to theView (geometries,
+ * styles, transforms, in retained or immediate mode); those are drawn,
+ * picked and bounded as if submitted directly. Without the loop's method
+ * the object adds nothing to it. Returning kQ3Failure fails the submit
+ * (kQ3ErrorInvalidParameter); an object that submits itself deeper than
+ * 256 levels fails with kQ3ErrorInvalidObject.
+ */
+#define kQ3XMethodTypeObjectSubmitRender Q3_METHOD_TYPE('Q', 's', 'u', 'r')
+#define kQ3XMethodTypeObjectSubmitPick Q3_METHOD_TYPE('Q', 's', 'u', 'p')
+#define kQ3XMethodTypeObjectSubmitBounds Q3_METHOD_TYPE('Q', 's', 'u', 'b')
+typedef TQ3Status (*TQ3XObjectSubmitMethod)(TQ3ViewObject theView, TQ3ObjectType objectType, TQ3Object theObject,
+                                            const void *objectData);
 
 /*
  * Q3XObjectHierarchy_RegisterClass: registers an object class named

@@ -49,7 +49,9 @@
  * NULL illumination shaders; ambient, directional, point and spot lights;
  * matrix, translate, scale, rotate and reset transforms; view hints (below),
  * with their camera, lights, attribute set, image dimensions, mask and clear
- * colour. Anything else in a file is read as an unknown object.
+ * colour; objects and elements of the classes an application registers,
+ * through their class's I/O methods (below). Anything else in a file is
+ * read as an unknown object.
  *
  * Objects of a type Q3 does not know are read as unknown objects
  * (Q3Unknown_GetType) and written back unchanged.
@@ -94,6 +96,130 @@ typedef unsigned long TQ3FileMode;
     (TQ3FileVersion)((((TQ3Uns32)(majorVersion)&0xFFFF) << 16) | ((TQ3Uns32)(minorVersion)&0xFFFF))
 typedef unsigned long TQ3FileVersion;
 #define kQ3FileVersionCurrent Q3FileVersion(1, 6)
+
+/*
+ * I/O methods of the classes an application registers (QD3DExtension.h's
+ * Q3XObjectHierarchy_RegisterClass, QD3DSet.h's Q3XElementClass_Register and
+ * Q3XAttributeClass_Register): how their objects and elements are written
+ * to and read from 3DMF files. Each object is written under its class name
+ * (a text file: `Name ( data )`; a binary file: a negative type that a Type
+ * object ahead of the objects declares with the name), so a class is found
+ * again by its name when the file is read by any program that registered
+ * it. A file's object of a class nobody registered reads as an unknown
+ * object (Q3UnknownBinary/Q3UnknownText) and is written back unchanged.
+ *
+ * Writing: when an object of the class (Q3Object_Submit in a writing loop,
+ * or as a member of a group) or an element of the class (on a shape, an
+ * object, a set or an attribute set being written) is written, Q3 calls the
+ * class's traverse method: kQ3XMethodTypeObjectTraverse, or for an element
+ * class kQ3XMethodTypeObjectTraverseData if it has one. The method decides
+ * whether to write at all (returning kQ3Success without submitting anything
+ * writes nothing), then calls Q3XView_SubmitWriteData once with the data
+ * its write method will write, and may then submit subobjects: other
+ * objects with Q3Object_Submit (or an immediate-mode call such as
+ * Q3Triangle_Submit), data of a registered class with
+ * Q3XView_SubmitSubObjectData. When the method has returned, Q3 writes the
+ * object: the class's kQ3XMethodTypeObjectWrite method is called with the
+ * data pointer and the file and writes the data with the primitive calls
+ * below (Q3Uns32_Write, Q3String_Write, ...); then the subobjects follow,
+ * the whole in a Container when there are any. Every delete method given
+ * with the data is called once the object is written or has failed. A class
+ * without a traverse method is left out of files with
+ * kQ3WarningNoObjectSupportForWriteMethod.
+ *
+ * Reading: an object of a registered object class is made by its
+ * kQ3XMethodTypeObjectRead method, an element by its element class's
+ * kQ3XMethodTypeObjectReadData method. The method reads the object's data
+ * with the primitive calls until Q3File_IsEndOfData is kQ3True, then, while
+ * Q3File_IsEndOfContainer is kQ3False, its subobjects with
+ * Q3File_ReadObject (or passes over them with Q3File_SkipObject). Past its
+ * own object, Q3File_ReadObject fails with kQ3ErrorEndOfFile. A subobject
+ * that is an object of a registered class with kQ3XMethodTypeObjectAttach,
+ * in the container of an object whose reader does not take it, is read and
+ * given to that method with the object it belongs to.
+ */
+#define kQ3XMethodTypeObjectTraverse Q3_METHOD_TYPE('t', 'r', 'v', 's')
+#define kQ3XMethodTypeObjectTraverseData Q3_METHOD_TYPE('t', 'r', 'v', 'd')
+#define kQ3XMethodTypeObjectWrite Q3_METHOD_TYPE('w', 'r', 'i', 't')
+#define kQ3XMethodTypeObjectReadData Q3_METHOD_TYPE('r', 'd', 'd', 't')
+#define kQ3XMethodTypeObjectRead Q3_METHOD_TYPE('r', 'e', 'a', 'd')
+#define kQ3XMethodTypeObjectAttach Q3_METHOD_TYPE('a', 't', 't', 'c')
+
+/*
+ * TQ3XObjectTraverseMethod: object is the object being written and data its
+ * instance data for the class (Q3XObjectClass_GetPrivate); for an element,
+ * object is NULL and data the element's internal data. view is the writing
+ * loop's view, to pass to Q3XView_SubmitWriteData and the submit calls.
+ * Returning kQ3Failure fails the write (kQ3ErrorInvalidParameter; a
+ * submitted object is then written whole or not at all).
+ */
+typedef TQ3Status (*TQ3XObjectTraverseMethod)(TQ3Object object, void *data, TQ3ViewObject view);
+typedef TQ3Status (*TQ3XObjectTraverseDataMethod)(TQ3Object object, void *data, TQ3ViewObject view);
+
+/*
+ * TQ3XObjectWriteMethod: writes the data given to Q3XView_SubmitWriteData
+ * (or Q3XView_SubmitSubObjectData) into theFile with the primitive write
+ * calls. In a binary file it must write exactly the size given with the
+ * data: more is kQ3ErrorWroteMoreThanSize, less kQ3ErrorWroteLessThanSize
+ * (text files have no sizes). Returning kQ3Failure fails the write
+ * (kQ3ErrorInvalidParameter).
+ */
+typedef TQ3Status (*TQ3XObjectWriteMethod)(const void *object, TQ3FileObject theFile);
+
+/* TQ3XDataDeleteMethod: frees data given to the calls below, once written
+ * (or once the write failed). */
+typedef void (*TQ3XDataDeleteMethod)(void *data);
+
+/*
+ * Q3XView_SubmitWriteData: from a traverse method (above): the object's own
+ * data, size bytes (binary files), which the class's write method writes;
+ * deleteData (may be NULL) is called with data afterwards. size 0 writes an
+ * object with no data and needs no write method.
+ * Errors: kQ3ErrorWriteStateInactive outside a traverse method of a writing
+ * loop on that view, or called twice in one; kQ3ErrorNeedRequiredMethods
+ * for a size above 0 when the class has no write method (the object is
+ * then not written). On failure deleteData is called all the same.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3XView_SubmitWriteData(TQ3ViewObject view, TQ3Size size, void *data,
+                                                   TQ3XDataDeleteMethod deleteData);
+
+/*
+ * Q3XView_SubmitSubObjectData: from a traverse method, after
+ * Q3XView_SubmitWriteData: a subobject of objectClass (a registered class:
+ * objects of an object class, elements of an element class, are written by
+ * that class's write method with data, as above).
+ * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObjectClass (objectClass);
+ * kQ3ErrorWriteStateInactive as above, or before Q3XView_SubmitWriteData;
+ * kQ3ErrorNeedRequiredMethods as above. On failure deleteData is called.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3XView_SubmitSubObjectData(TQ3ViewObject view, TQ3XObjectClass objectClass,
+                                                       unsigned long size, void *data,
+                                                       TQ3XDataDeleteMethod deleteData);
+
+/*
+ * TQ3XObjectReadMethod: reads an object of the class from theFile (above)
+ * and returns it with one reference for the caller, or NULL on failure
+ * (Q3File_ReadObject then fails with kQ3ErrorInvalidMetafileObject). The
+ * object must be a shared one.
+ */
+typedef TQ3Object (*TQ3XObjectReadMethod)(TQ3FileObject theFile);
+
+/*
+ * TQ3XObjectReadDataMethod: reads an element of the class from theFile and
+ * adds it with Q3Set_Add to parentObject, a set whose elements Q3 then gives
+ * to the object the element belongs to (its set, attribute set, shape or
+ * group). kQ3Failure fails the read of that object
+ * (kQ3ErrorInvalidMetafileObject).
+ */
+typedef TQ3Status (*TQ3XObjectReadDataMethod)(TQ3Object parentObject, TQ3FileObject theFile);
+
+/*
+ * TQ3XObjectAttachMethod: childObject, an object of the class read from the
+ * container of parentObject (above), is to be attached to it. kQ3Failure
+ * fails the read (kQ3ErrorInvalidMetafileObject). A subobject of a
+ * registered class without one is left out with kQ3WarningNoAttachMethod.
+ */
+typedef TQ3Status (*TQ3XObjectAttachMethod)(TQ3Object childObject, TQ3Object parentObject);
 
 /*
  * Q3File_New: a file object with no storage, closed.
@@ -415,6 +541,22 @@ Q3_EXTERN_API_C(TQ3Status) Q3String_Write(const char *data, TQ3FileObject theFil
 Q3_EXTERN_API_C(TQ3Status) Q3RawData_Read(unsigned char *data, unsigned long size, TQ3FileObject theFile);
 Q3_EXTERN_API_C(TQ3Status) Q3RawData_Write(const unsigned char *data, unsigned long size, TQ3FileObject theFile);
 
+/*
+ * Q3 extension (Quesa's names and signatures): Q3Uns8_ReadArray,
+ * Q3Uns16_ReadArray, Q3Uns32_ReadArray and Q3Float32_ReadArray read numNums
+ * values into the array in one call, as that many Q3Uns8_Read (...) calls
+ * would, for a custom class's read method reading a block of points or
+ * indices. All or nothing: when the data cannot hold them all
+ * (kQ3ErrorReadMoreThanSize) or one is malformed, the array and the
+ * position are unchanged. numNums 0 reads nothing (the array may then be
+ * NULL). Errors: as the reads above; kQ3ErrorNULLParameter for a NULL array
+ * with numNums above 0.
+ */
+Q3_EXTERN_API_C(TQ3Status) Q3Uns8_ReadArray(TQ3Uns32 numNums, TQ3Uns8 *intArray, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns16_ReadArray(TQ3Uns32 numNums, TQ3Uns16 *intArray, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Uns32_ReadArray(TQ3Uns32 numNums, TQ3Uns32 *intArray, TQ3FileObject theFile);
+Q3_EXTERN_API_C(TQ3Status) Q3Float32_ReadArray(TQ3Uns32 numFloats, TQ3Float32 *floatArray, TQ3FileObject theFile);
+
 Q3_EXTERN_API_C(TQ3Status) Q3Point2D_Read(TQ3Point2D *point2D, TQ3FileObject theFile);
 Q3_EXTERN_API_C(TQ3Status) Q3Point2D_Write(const TQ3Point2D *point2D, TQ3FileObject theFile);
 Q3_EXTERN_API_C(TQ3Status) Q3Point3D_Read(TQ3Point3D *point3D, TQ3FileObject theFile);
@@ -488,9 +630,9 @@ Q3_EXTERN_API_C(TQ3Status) Q3UnknownBinary_EmptyData(TQ3UnknownBinaryData *unkno
 /**
  * Gives the type name a 3D Metafile declared for an unknown binary object's
  * type in its type table ('type' objects, which name the negative type
- * codes of custom classes). Q3's reader does not keep type tables, so no
- * unknown binary object has a declared name: *typeString is always set to
- * NULL, the answer QuickDraw 3D gives for an undeclared type.
+ * codes of custom classes): the name of a class no one registered, which
+ * writing the object declares again. *typeString is NULL for any other type
+ * (no declared name).
  *
  * @param unknownObject  an unknown binary object.
  * @param typeString     receives the name, or NULL.

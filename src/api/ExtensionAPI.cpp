@@ -4,11 +4,14 @@
 // QD3DExtension.h: the classes applications register (core/CustomClass.h)
 // and their objects (core/CustomObject.h); posting errors from extensions.
 #include "QD3DExtension.h"
+#include "QD3DIO.h"
 #include "api/Entry.h"
 #include "core/CustomClass.h"
 #include "core/CustomObject.h"
 #include "core/EnumValue.h"
 #include "io/ClassIO.h"
+#include "io/CustomIO.h"
+#include "view/View.h"
 
 #include <mutex>
 #include <set>
@@ -185,6 +188,34 @@ TQ3Status Q3XSharedLibrary_Unregister(unsigned long sharedLibrary)
             fail(kQ3ErrorInvalidParameter,
                  "the shared library " + std::to_string(sharedLibrary) + " is not registered");
     });
+}
+
+// Q3XView_SubmitWriteData and Q3XView_SubmitSubObjectData: deleteData is
+// called on failure too, since the caller gave the data away.
+TQ3Status Q3XView_SubmitWriteData(TQ3ViewObject view, TQ3Size size, void* data, TQ3XDataDeleteMethod deleteData)
+{
+    const TQ3Status status = guardStatus(__func__, [&] {
+        lookup<View>(view, "view");
+        io::activeCustomWrite(view).submitData(size, data, deleteData);
+        deleteData = nullptr; // the collector deletes it now
+    });
+    if (deleteData != nullptr)
+        deleteData(data);
+    return status;
+}
+
+TQ3Status Q3XView_SubmitSubObjectData(TQ3ViewObject view, TQ3XObjectClass objectClass, unsigned long size,
+                                      void* data, TQ3XDataDeleteMethod deleteData)
+{
+    const TQ3Status status = guardStatus(__func__, [&] {
+        lookup<View>(view, "view");
+        std::shared_ptr<CustomClass> subClass = lookupCustomClass(objectClass, "objectClass");
+        io::activeCustomWrite(view).submitSubObjectData(std::move(subClass), size, data, deleteData);
+        deleteData = nullptr;
+    });
+    if (deleteData != nullptr)
+        deleteData(data);
+    return status;
 }
 
 // Posted into the running call (no beginCall): an extension's method posts

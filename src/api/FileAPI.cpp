@@ -83,7 +83,7 @@ TQ3Status Q3View_StartWriting(TQ3ViewObject view, TQ3FileObject theFile)
     return guardStatus(__func__, [&] {
         View& target = lookup<View>(view, "view");
         File& file = lookup<File>(theFile, "theFile");
-        target.startWriting(file.writeTarget());
+        target.startWriting(file.writeTarget(view));
     });
 }
 

@@ -10,6 +10,7 @@
 #include "io/File.h"
 
 #include <algorithm>
+#include <vector>
 
 #include <cstring>
 
@@ -28,6 +29,29 @@ TQ3Status readValue(const char* function, Value* out, TQ3FileObject theFile, std
         File& file = lookup<File>(theFile, "theFile");
         requireNonNull(out, "data");
         *out = file.readPrimitive(bytes, tokens, function, read);
+    });
+}
+
+/// A read of `count` values of `bytes` bytes (binary) or one token (text)
+/// each, all or nothing.
+template <class Value, class Read>
+TQ3Status readArray(const char* function, TQ3Uns32 count, Value* out, TQ3FileObject theFile, std::size_t bytes,
+                    Read read)
+{
+    return guardStatus(function, [&] {
+        File& file = lookup<File>(theFile, "theFile");
+        if (count == 0)
+            return;
+        requireNonNull(out, "the array");
+        const std::vector<Value> values =
+            file.readPrimitive(std::size_t{count} * bytes, count, function, [&](io::DataReader& in) {
+                std::vector<Value> read_;
+                read_.reserve(count);
+                for (TQ3Uns32 i = 0; i < count; ++i)
+                    read_.push_back(read(in));
+                return read_;
+            });
+        std::copy(values.begin(), values.end(), out);
     });
 }
 
@@ -407,4 +431,24 @@ TQ3Status Q3Tangent3D_Write(const TQ3Tangent3D* tangent3D, TQ3FileObject theFile
         out.vector3D(t.vTangent);
         out.vector3D(t.wTangent);
     });
+}
+
+TQ3Status Q3Uns8_ReadArray(TQ3Uns32 numNums, TQ3Uns8* intArray, TQ3FileObject theFile)
+{
+    return readArray(__func__, numNums, intArray, theFile, 1, [](io::DataReader& in) { return in.u8(); });
+}
+
+TQ3Status Q3Uns16_ReadArray(TQ3Uns32 numNums, TQ3Uns16* intArray, TQ3FileObject theFile)
+{
+    return readArray(__func__, numNums, intArray, theFile, 2, [](io::DataReader& in) { return in.u16(); });
+}
+
+TQ3Status Q3Uns32_ReadArray(TQ3Uns32 numNums, TQ3Uns32* intArray, TQ3FileObject theFile)
+{
+    return readArray(__func__, numNums, intArray, theFile, 4, [](io::DataReader& in) { return in.u32(); });
+}
+
+TQ3Status Q3Float32_ReadArray(TQ3Uns32 numFloats, TQ3Float32* floatArray, TQ3FileObject theFile)
+{
+    return readArray(__func__, numFloats, floatArray, theFile, 4, [](io::DataReader& in) { return in.f32(); });
 }

@@ -107,9 +107,18 @@ TQ3Status Q3UnknownBinary_EmptyData(TQ3UnknownBinaryData* unknownBinaryData)
 TQ3Status Q3UnknownBinary_GetTypeString(TQ3UnknownObject unknownObject, char** typeString)
 {
     return guardStatus(__func__, [&] {
-        lookup<UnknownBinary>(unknownObject, "unknownObject");
+        const UnknownBinary& unknown = lookup<UnknownBinary>(unknownObject, "unknownObject");
         requireNonNull(typeString, "typeString");
-        *typeString = nullptr; // the reader keeps no type table, so no type has a declared name
+        if (unknown.typeString().empty()) {
+            *typeString = nullptr;
+            return;
+        }
+        const std::string& name = unknown.typeString();
+        char* copy = static_cast<char*>(std::malloc(name.size() + 1));
+        if (copy == nullptr)
+            throw std::bad_alloc();
+        std::memcpy(copy, name.c_str(), name.size() + 1);
+        *typeString = copy;
     });
 }
 

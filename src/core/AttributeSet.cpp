@@ -243,6 +243,17 @@ void Set::addCustomElement(std::unique_ptr<CustomElement> element)
     markEdited();
 }
 
+std::vector<std::unique_ptr<CustomElement>> Set::takeCustomElements()
+{
+    std::vector<std::unique_ptr<CustomElement>> taken;
+    for (auto& [type, element] : m_custom)
+        taken.push_back(std::move(element));
+    m_custom.clear();
+    if (!taken.empty())
+        markEdited();
+    return taken;
+}
+
 void Set::addOtherElement(Ref<SharedObject> element)
 {
     m_others.push_back(std::move(element));

@@ -154,6 +154,9 @@ public:
     const std::map<TQ3ElementType, std::unique_ptr<CustomElement>>& customElements() const { return m_custom; }
     /// Stores a custom element made elsewhere (a file's).
     void addCustomElement(std::unique_ptr<CustomElement> element);
+    /// Hands every custom element over to the caller (the set keeps none):
+    /// a file's elements, read into a set of their own, move to their object.
+    std::vector<std::unique_ptr<CustomElement>> takeCustomElements();
 
 protected:
     /// Gives `copy` this set's values and unknown elements (shared).

@@ -3,6 +3,7 @@
 #include "core/CustomClass.h"
 
 #include "QD3DExtension.h"
+#include "QD3DIO.h"
 #include "QD3DSet.h"
 
 #include <cstring>
@@ -21,6 +22,9 @@ const TQ3XMethodType kKnownMethodTypes[] = {
     kQ3XMethodTypeElementCopyAdd,      kQ3XMethodTypeElementCopyReplace,   kQ3XMethodTypeElementCopyGet,
     kQ3XMethodTypeElementCopyDuplicate, kQ3XMethodTypeElementDelete,       kQ3XMethodTypeAttributeInherit,
     kQ3XMethodTypeAttributeCopyInherit, kQ3XMethodTypeAttributeDefault,    kQ3XMethodTypeAttributeIsDefault,
+    kQ3XMethodTypeObjectTraverse,       kQ3XMethodTypeObjectTraverseData,  kQ3XMethodTypeObjectWrite,
+    kQ3XMethodTypeObjectRead,           kQ3XMethodTypeObjectReadData,      kQ3XMethodTypeObjectAttach,
+    kQ3XMethodTypeObjectSubmitRender,   kQ3XMethodTypeObjectSubmitPick,    kQ3XMethodTypeObjectSubmitBounds,
 };
 const std::size_t kKnownMethodTypeCount = sizeof kKnownMethodTypes / sizeof kKnownMethodTypes[0];
 

@@ -3,6 +3,7 @@
 #include "core/CustomObject.h"
 
 #include "QD3DExtension.h"
+#include "core/Limits.h"
 
 #include <cstring>
 
@@ -23,15 +24,20 @@ public:
     bool isDrawable() const override
     {
         // The metahandler answers kQ3True in place of a function.
-        return customClass().method(kQ3XMethodTypeObjectIsDrawable) != nullptr;
+        const CustomClass& leaf = customClass();
+        return leaf.method(kQ3XMethodTypeObjectIsDrawable) != nullptr ||
+               leaf.method(kQ3XMethodTypeObjectSubmitRender) != nullptr ||
+               leaf.method(kQ3XMethodTypeObjectSubmitPick) != nullptr ||
+               leaf.method(kQ3XMethodTypeObjectSubmitBounds) != nullptr;
     }
     void accept(ShapeVisitor&) const override
     {
-        // Q3 has no methods through which a custom object draws, bounds or
-        // picks: a drawable one is accepted and adds nothing.
+        // The object draws, picks and bounds through its class's submit
+        // methods, which submit to the view (and so reach the visitor).
         if (!isDrawable())
             fail(kQ3ErrorInvalidObjectType, "a " + customClass().name() +
                                                 " cannot be submitted (its class is not drawable)");
+        submitThroughMethod(const_cast<CustomObject*>(this));
     }
     Object* duplicate() const override;
 };
@@ -146,6 +152,54 @@ Object* CustomInstance::make(const std::shared_ptr<CustomClass>& leaf, void* par
     auto made = fresh<Object>(leaf);
     static_cast<CustomObject<Object>&>(*made).construct(made.get(), parameters);
     return made.release();
+}
+
+namespace {
+
+struct SubmitState {
+    TQ3Object view = nullptr;
+    TQ3XMethodType method = 0;
+    std::size_t depth = 0; ///< submit methods running
+};
+thread_local SubmitState t_submit;
+
+} // namespace
+
+CustomSubmitScope::CustomSubmitScope(TQ3Object view, TQ3XMethodType method)
+    : m_view(t_submit.view), m_method(t_submit.method)
+{
+    t_submit.view = view;
+    t_submit.method = method;
+}
+
+CustomSubmitScope::~CustomSubmitScope()
+{
+    t_submit.view = m_view;
+    t_submit.method = m_method;
+}
+
+void CustomInstance::submitThroughMethod(TQ3Object self) const
+{
+    if (t_submit.view == nullptr || t_submit.method == 0)
+        return;
+    auto submit = m_leaf->methodAs<TQ3XObjectSubmitMethod>(t_submit.method);
+    if (submit == nullptr)
+        return;
+    if (t_submit.depth >= limits::kMaxGroupNesting)
+        fail(kQ3ErrorInvalidObject, "a " + m_leaf->name() + " submits objects nested deeper than " +
+                                        std::to_string(limits::kMaxGroupNesting) + " levels");
+    const void* data = m_blocks.empty() ? nullptr : m_blocks.back().second.get();
+    ++t_submit.depth;
+    TQ3Status status;
+    try {
+        status = submit(t_submit.view, m_leaf->type(), self, data);
+    } catch (...) {
+        --t_submit.depth;
+        throw;
+    }
+    --t_submit.depth;
+    if (status != kQ3Success)
+        fail(kQ3ErrorInvalidParameter, "the submit method of the class \"" + m_leaf->name() + "\" failed");
 }
 
 CustomInstance* customInstanceOf(Object& object)

@@ -44,6 +44,9 @@ protected:
     /// duplicate method, or a byte copy.
     void copyInto(TQ3Object self, CustomInstance& to, TQ3Object toHandle) const;
     void construct(TQ3Object self, void* parameters);
+    /// Calls the class's submit method for the running CustomSubmitScope,
+    /// if it has one (kQ3ErrorInvalidParameter when it fails).
+    void submitThroughMethod(TQ3Object self) const;
 
 private:
     std::shared_ptr<CustomClass> m_leaf;
@@ -54,5 +57,22 @@ private:
 /// The custom object found from a handle, or null when the object is of a
 /// class Q3 defines.
 CustomInstance* customInstanceOf(Object& object);
+
+/// While a view submits a retained object (View::submit): the view's handle
+/// and the submit method type its loop calls (kQ3XMethodTypeObjectSubmitRender,
+/// ...Pick, ...Bounds; 0 for none), so that a custom object's accept() can
+/// call its class's submit method with them, also as a member of a group.
+/// Scopes nest (a submit method may submit other objects).
+class CustomSubmitScope {
+public:
+    CustomSubmitScope(TQ3Object view, TQ3XMethodType method);
+    ~CustomSubmitScope();
+    CustomSubmitScope(const CustomSubmitScope&) = delete;
+    CustomSubmitScope& operator=(const CustomSubmitScope&) = delete;
+
+private:
+    TQ3Object m_view;
+    TQ3XMethodType m_method;
+};
 
 } // namespace q3

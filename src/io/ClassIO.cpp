@@ -7,6 +7,8 @@
 #include "core/Limits.h"
 #include "group/Group.h"
 #include "io/CustomElements.h"
+#include "io/CustomIO.h"
+#include "core/CustomObject.h"
 #include "io/ExternalReference.h"
 #include "io/Unknown.h"
 
@@ -155,8 +157,31 @@ Ref<SharedObject> unknownFrom(const Metafile& file, const Node& node)
     }
     std::string contents(reinterpret_cast<const char*>(file.bytes.data()) + node.dataBegin,
                          node.dataEnd - node.dataBegin);
-    return makeShared<UnknownBinary>(node.type, std::move(contents),
-                                     file.encoding == Encoding::kBinaryLittle ? kQ3EndianLittle : kQ3EndianBig);
+    auto unknown =
+        makeShared<UnknownBinary>(node.type, std::move(contents),
+                                  file.encoding == Encoding::kBinaryLittle ? kQ3EndianLittle : kQ3EndianBig,
+                                  isCustomType(node.type) ? node.name : std::string());
+    // The custom types inside (a container's, a group's objects), by the
+    // codes the bytes hold, so writing renumbers them (Encoder::rawObjects).
+    std::map<std::uint32_t, std::string> declared;
+    const auto collect = [&](auto& self, const std::vector<Node>& nodes) -> void {
+        for (const Node& child : nodes) {
+            if (!child.name.empty() && child.offset + 4 <= file.bytes.size()) {
+                const unsigned char* p = file.bytes.data() + child.offset;
+                const std::uint32_t code =
+                    file.encoding == Encoding::kBinaryLittle
+                        ? std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 | std::uint32_t{p[2]} << 16 |
+                              std::uint32_t{p[3]} << 24
+                        : std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | p[3];
+                if (isCustomType(static_cast<TQ3ObjectType>(code)))
+                    declared[code] = child.name;
+            }
+            self(self, child.children);
+        }
+    };
+    collect(collect, node.children);
+    unknown->setDeclaredTypes(std::move(declared));
+    return Ref<SharedObject>(std::move(unknown));
 }
 
 // Where the item starting at `index` ends: past its EndGroup for a BeginGroup.
@@ -204,29 +229,73 @@ const std::vector<Node>* sequenceHolding(const std::vector<Node>& nodes, const N
     return nullptr;
 }
 
-// Takes the custom elements (Apple's name and URL elements) out of an
-// object's subobjects: they belong to the object, not to its class's reader.
-std::vector<std::unique_ptr<CustomElement>> takeElements(ReadContext& context, Parts& parts)
-{
+// What an object's container holds besides what its class reads: custom
+// elements (Apple's name and URL elements, an application's) and objects of
+// an application's classes, which their class's attach method attaches.
+struct Extras {
     std::vector<std::unique_ptr<CustomElement>> elements;
+    std::vector<std::pair<Ref<SharedObject>, TQ3XObjectAttachMethod>> attached;
+};
+
+// Takes the extras out of an object's subobjects: they belong to the object,
+// not to its class's reader.
+Extras takeExtras(ReadContext& context, Parts& parts)
+{
+    Extras extras;
     for (auto it = parts.subobjects.begin(); it != parts.subobjects.end();) {
-        if (std::unique_ptr<CustomElement> element = readCustomElement(context, **it)) {
-            elements.push_back(std::move(element));
+        if (readCustomElement(context, **it, extras.elements)) {
             it = parts.subobjects.erase(it);
-        } else {
-            ++it;
+            continue;
         }
+        const Node& node = **it;
+        const Node& root = node.type == kTypeContainer && !node.children.empty() ? node.children.front() : node;
+        const std::shared_ptr<CustomClass> custom = root.type != 0 ? findCustomClass(root.type) : nullptr;
+        if (!custom || custom->kind() != CustomClass::Kind::kObject) {
+            ++it;
+            continue;
+        }
+        if (auto attach = custom->methodAs<TQ3XObjectAttachMethod>(kQ3XMethodTypeObjectAttach))
+            extras.attached.emplace_back(context.object(node), attach);
+        else
+            errors::postWarning(kQ3WarningNoAttachMethod, "a " + custom->name() +
+                                                              " among an object's subobjects has no attach method "
+                                                              "(kQ3XMethodTypeObjectAttach); it is left out");
+        it = parts.subobjects.erase(it);
     }
-    return elements;
+    return extras;
 }
 
-void attachElements(SharedObject& object, std::vector<std::unique_ptr<CustomElement>> elements)
+void attachExtras(SharedObject& object, Extras extras)
 {
-    if (elements.empty())
+    for (auto& [child, attach] : extras.attached)
+        if (attach(child.get(), &object) != kQ3Success)
+            fail(kQ3ErrorInvalidMetafileObject,
+                 std::string("the attach method of the class \"") + child->classInfo().name + "\" failed");
+    if (extras.elements.empty())
         return;
     Set& target = object.isType(kQ3SharedTypeSet) ? static_cast<Set&>(object) : object.elements().ownSet();
-    for (std::unique_ptr<CustomElement>& element : elements)
+    for (std::unique_ptr<CustomElement>& element : extras.elements)
         target.addCustomElement(std::move(element));
+}
+
+// An object of an application's class, read by its read method; null when
+// it is none or cannot be read so (then it is an unknown object).
+Ref<SharedObject> customObjectFrom(ReadContext& context, const Node& node, TQ3ObjectType type)
+{
+    const std::shared_ptr<CustomClass> custom = type != 0 ? findCustomClass(type) : nullptr;
+    if (!custom || custom->kind() != CustomClass::Kind::kObject)
+        return {};
+    return readCustomObject(context, node, *custom);
+}
+
+// A type a binary file declares with a Type object for a class nobody
+// registered (the parser resolves the others to their class's type).
+void warnUnregistered(const Node& root)
+{
+    if (isCustomType(root.type) && !root.name.empty() && !findCustomClass(root.type))
+        errors::postWarning(kQ3WarningUnknownObject, "no class named \"" + root.name +
+                                                         "\" is registered; the object is read as an unknown "
+                                                         "object and written back unchanged");
 }
 
 } // namespace
@@ -293,16 +362,24 @@ Ref<SharedObject> ReadContext::build(const Node& node)
         for (std::size_t i = 1; i < node.children.size(); ++i)
             parts.subobjects.push_back(&node.children[i]);
         const ClassIO* entry = classOfType(root.type);
-        if (entry == nullptr) // the whole container: its subobjects belong to the unknown root
+        if (entry == nullptr) { // the whole container: its subobjects belong to the root
+            if (Ref<SharedObject> custom = customObjectFrom(*this, node, root.type))
+                return custom;
+            warnUnregistered(root);
             return unknownFrom(m_file, node);
-        std::vector<std::unique_ptr<CustomElement>> elements = takeElements(*this, parts);
+        }
+        Extras extras = takeExtras(*this, parts);
         Ref<SharedObject> read = entry->read(*this, parts);
-        attachElements(*read, std::move(elements));
+        attachExtras(*read, std::move(extras));
         return read;
     }
     const ClassIO* entry = classOfType(node.type);
-    if (entry == nullptr)
+    if (entry == nullptr) {
+        if (Ref<SharedObject> custom = customObjectFrom(*this, node, node.type))
+            return custom;
+        warnUnregistered(node);
         return unknownFrom(m_file, node);
+    }
     return entry->read(*this, Parts{node, {}, &m_file});
 }
 
@@ -370,9 +447,9 @@ Ref<SharedObject> ReadContext::groupOf(const Node& beginGroup)
                                                    (first.name.empty() ? typeName(first.type) : first.name) +
                                                    ", no group");
     DepthGuard guard(m_depth);
-    std::vector<std::unique_ptr<CustomElement>> elements = takeElements(*this, parts);
+    Extras extras = takeExtras(*this, parts);
     Ref<SharedObject> read = entry->read(*this, parts);
-    attachElements(*read, std::move(elements));
+    attachExtras(*read, std::move(extras));
     if (!read->isType(kQ3ShapeTypeGroup))
         fail(kQ3ErrorInvalidMetafileSubObject,
              std::string("the object a BeginGroup holds is a ") + read->classInfo().name + ", no group");
@@ -403,6 +480,10 @@ void WriteContext::attributeSet(const AttributeSet* set)
 
 void WriteContext::object(const Object& object)
 {
+    if (m_collecting != nullptr) {
+        m_collecting->submitObject(object);
+        return;
+    }
     DepthGuard guard(m_depth);
     std::string externalPath;
     std::uint32_t externalId = 0;
@@ -440,10 +521,19 @@ void WriteContext::object(const Object& object)
         }
         return;
     }
+    // A class an application registered writes itself through its methods.
     const ClassIO* entry = classOfObject(object);
+    const CustomClass* custom = customWriterOf(object);
+    const ClassIO customEntry{custom ? custom->type() : 0, custom ? custom->name().c_str() : "", nullptr,
+                              writeCustomObject};
+    if (custom != nullptr)
+        entry = &customEntry;
     if (entry == nullptr) {
         errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,
                             std::string("Q3 has no 3DMF form for a ") + object.classInfo().name +
+                                (customInstanceOf(const_cast<Object&>(object)) != nullptr
+                                     ? " (its class has no traverse method, kQ3XMethodTypeObjectTraverse)"
+                                     : "") +
                                 "; it is left out of the file");
         return;
     }
@@ -461,6 +551,8 @@ void WriteContext::object(const Object& object)
     const std::size_t start = m_out.position();
     if (m_depth > 1) {
         entry->write(*this, object);
+        if (remember && m_out.position() == start) // a traverse method chose to write nothing
+            m_written.erase(&object);
         ownElements(object, start);
         return;
     }
@@ -474,6 +566,8 @@ void WriteContext::object(const Object& object)
     m_labelled.clear();
     try {
         entry->write(*this, object);
+        if (remember && m_out.position() == start) // a traverse method chose to write nothing
+            m_written.erase(&object);
         ownElements(object, start);
     } catch (...) {
         m_out.rollback(before);
@@ -510,6 +604,10 @@ void WriteContext::ownElements(const Object& object, std::size_t start)
 
 void WriteContext::temporary(const Object& object)
 {
+    if (m_collecting != nullptr) {
+        m_collecting->submitTemporary(object);
+        return;
+    }
     const ClassIO* entry = classOfObject(object);
     if (entry == nullptr) {
         errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,

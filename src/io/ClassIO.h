@@ -20,12 +20,18 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
+
+namespace q3 {
+class File;
+}
 
 namespace q3::io {
 
 class ReadContext;
 class WriteContext;
+class CustomWrite;
 
 /// An object's parts as the file holds them: the object itself and, when it
 /// is the root of a container, the objects after it (attribute sets, vertex
@@ -105,6 +111,10 @@ public:
     /// The reference ID the file's table of contents gives an object this
     /// context read, or 0 when it has none.
     std::uint32_t refIdOf(const Object& object) const;
+    /// The file object reading (what custom classes' read methods read
+    /// through), or null (an external reference's file).
+    File* fileObject() const { return m_fileObject; }
+    void setFileObject(File* file) { m_fileObject = file; }
 
     /// The object a node stands for: a container's root with its
     /// subobjects, a reference's target, an unknown object for a type no
@@ -141,6 +151,7 @@ private:
     Ref<SharedObject> build(const Node& node);
 
     const Metafile& m_file;
+    File* m_fileObject = nullptr;
     std::string m_baseDirectory;
     std::map<const Node*, Ref<SharedObject>> m_done;
     std::set<const Node*> m_reading;
@@ -173,6 +184,22 @@ public:
 
     std::vector<unsigned char> finish(TQ3FileMode mode);
 
+    /// The handles custom classes' methods get: the view of the writing
+    /// loop writing now, and the file (null once it is closed or gone: a
+    /// write method cannot run then).
+    void setView(TQ3ViewObject view) { m_view = view; }
+    TQ3ViewObject view() const { return m_view; }
+    void setFile(TQ3FileObject file) { m_fileHandle = file; }
+    TQ3FileObject fileHandle() const { return m_fileHandle; }
+    /// While a custom class's traverse method runs, what it submits is
+    /// collected here (io/CustomIO.h) instead of being written.
+    CustomWrite* collecting() const { return m_collecting; }
+    CustomWrite* setCollecting(CustomWrite* collector) { return std::exchange(m_collecting, collector); }
+    /// Custom methods running: the file cannot be closed meanwhile.
+    bool busy() const { return m_methods > 0; }
+    void enterMethod() { ++m_methods; }
+    void leaveMethod() { --m_methods; }
+
 private:
     /// Writes the object's own name and URL elements (groups and sets write
     /// theirs themselves) into the container of the object just written from
@@ -188,6 +215,10 @@ private:
     Encoder m_out;
     bool m_stream;
     bool m_database;
+    TQ3ViewObject m_view = nullptr;
+    TQ3FileObject m_fileHandle = nullptr;
+    CustomWrite* m_collecting = nullptr;
+    std::size_t m_methods = 0;
     std::map<const Object*, Written> m_written;
     /// A stream file's ExternalReference objects (each listed in the table
     /// of contents; nothing refers to them).

@@ -7,6 +7,7 @@
 #include "core/EnumValue.h"
 #include "core/ErrorManager.h"
 #include "io/ClassIO.h"
+#include "io/CustomIO.h"
 #include "io/StringObject.h"
 
 #include <cstdlib>
@@ -242,18 +243,19 @@ std::shared_ptr<CustomClass> urlElementClass()
     return ensure(CEcUrlElementName, sizeof(UrlElementData), urlMetaHandler);
 }
 
-std::unique_ptr<CustomElement> readCustomElement(ReadContext& context, const Node& node)
+bool readCustomElement(ReadContext& context, const Node& node, std::vector<std::unique_ptr<CustomElement>>& made)
 {
     const Node& root = rootOf(node);
     if (root.type == 0 || root.type == kTypeContainer)
-        return nullptr;
+        return false;
     const std::shared_ptr<CustomClass> custom = findCustomClass(root.type);
     if (!custom || custom->kind() == CustomClass::Kind::kObject)
-        return nullptr;
+        return false;
     if (custom->name() == CEcNameElementName) {
         Ref<CString> text = makeShared<CString>(descriptionOf(context, node));
         TQ3Object handle = text.get();
-        return std::make_unique<CustomElement>(custom, &handle);
+        made.push_back(std::make_unique<CustomElement>(custom, &handle));
+        return true;
     }
     if (custom->name() == CEcUrlElementName) {
         DataReader in = context.reader(root);
@@ -268,11 +270,10 @@ std::unique_ptr<CustomElement> readCustomElement(ReadContext& context, const Nod
         TCEUrlData data{const_cast<char*>(url.c_str()), described ? const_cast<char*>(description.c_str()) : nullptr,
                         options == kCEUrlOptionUseMap ? kCEUrlOptionUseMap : kCEUrlOptionNone};
         TCEUrlData* pointer = &data;
-        return std::make_unique<CustomElement>(custom, &pointer);
+        made.push_back(std::make_unique<CustomElement>(custom, &pointer));
+        return true;
     }
-    errors::postWarning(kQ3WarningNoObjectSupportForReadMethod,
-                        "the element class \"" + custom->name() + "\" has no 3DMF form in Q3; the element is left out");
-    return nullptr;
+    return readCustomElementData(context, node, *custom, made);
 }
 
 bool hasFileElements(const Set* set)
@@ -281,7 +282,7 @@ bool hasFileElements(const Set* set)
         return false;
     for (const auto& [type, element] : set->customElements())
         if (element->elementClass().name() == CEcNameElementName ||
-            element->elementClass().name() == CEcUrlElementName)
+            element->elementClass().name() == CEcUrlElementName || writesCustomElements(element->elementClass()))
             return true;
     return false;
 }
@@ -314,7 +315,7 @@ void writeCustomElements(WriteContext& context, const Set& set)
                     out.end();
                 }
             });
-        } else {
+        } else if (!writeCustomElement(context, *element)) {
             errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,
                                 "the element class \"" + custom.name() +
                                     "\" has no 3DMF form in Q3; the element is left out of the file");

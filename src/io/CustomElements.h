@@ -44,12 +44,17 @@ struct UrlElementData {
     std::uint32_t options;
 };
 
-/// The element a subobject node stands for when it is a name or URL
-/// element, else null. Throws kQ3ErrorInvalidMetafileObject for a malformed
-/// one.
-std::unique_ptr<CustomElement> readCustomElement(ReadContext& context, const Node& node);
-/// Writes every name and URL element of the set; any other custom element
-/// posts kQ3WarningNoObjectSupportForWriteMethod and is left out.
+/// Whether a subobject node is an element of a custom element class (a
+/// name or URL element, or an application's element: its read-data method
+/// reads it, io/CustomIO.h); the elements read are added to `made`. An
+/// application's element class without a read-data method posts
+/// kQ3WarningNoObjectSupportForReadMethod and gives false. Throws
+/// kQ3ErrorInvalidMetafileObject for a malformed one.
+bool readCustomElement(ReadContext& context, const Node& node, std::vector<std::unique_ptr<CustomElement>>& made);
+/// Writes every custom element of the set: the name and URL elements, and
+/// the elements of application classes with a traverse method (their
+/// traverse and write methods write them); any other custom element posts
+/// kQ3WarningNoObjectSupportForWriteMethod and is left out.
 void writeCustomElements(WriteContext& context, const Set& set);
 /// Whether writeCustomElements would write something.
 bool hasFileElements(const Set* set);

@@ -24,15 +24,18 @@ namespace {
 /// mode shapes through the ShapeVisitor calls.
 class FileWriteTarget final : public WriteTarget {
 public:
-    FileWriteTarget(std::shared_ptr<io::WriteContext> context, std::shared_ptr<File::Idle> idle)
-        : m_context(std::move(context)), m_idle(std::move(idle))
+    FileWriteTarget(std::shared_ptr<io::WriteContext> context, std::shared_ptr<File::Idle> idle,
+                    TQ3ViewObject view)
+        : m_context(std::move(context)), m_idle(std::move(idle)), m_view(view)
     {
     }
 
     void write(const Object& object) override
     {
-        if (proceed())
+        if (proceed()) {
+            m_context->setView(m_view);
             m_context->object(object);
+        }
     }
     void visitGeometry(const Geometry& geometry) override { temporary(geometry); }
     void visitAttributeSet(const AttributeSet& attributes) override { temporary(attributes); }
@@ -56,12 +59,15 @@ private:
     }
     void temporary(const Object& object)
     {
-        if (proceed())
+        if (proceed()) {
+            m_context->setView(m_view);
             m_context->temporary(object);
+        }
     }
 
     std::shared_ptr<io::WriteContext> m_context;
     std::shared_ptr<File::Idle> m_idle;
+    TQ3ViewObject m_view;
     bool m_cancelled = false;
 };
 
@@ -70,6 +76,8 @@ private:
 File::~File()
 {
     m_idle->method = nullptr; // a writing loop may outlive the file
+    if (m_writer)
+        m_writer->setFile(nullptr);
     io::forgetExternals(this);
     release();
 }
@@ -101,6 +109,7 @@ TQ3FileMode File::openRead()
                                                                                : 0);
     m_file = std::move(parsed);
     m_reader = std::make_unique<io::ReadContext>(*m_file);
+    m_reader->setFileObject(this);
     if (const auto* path = dynamic_cast<const UnixPathStorage*>(m_storage.get()))
         m_reader->setBaseDirectory(std::filesystem::path(path->path()).parent_path().string());
     m_next = 0;
@@ -125,6 +134,7 @@ void File::openWrite(TQ3FileMode mode)
                                                              : io::Encoding::kBinaryBig;
     m_writer = std::make_shared<io::WriteContext>(encoding, (mode & kQ3FileModeStream) != 0,
                                                   (mode & kQ3FileModeDatabase) != 0);
+    m_writer->setFile(this);
     m_mode = mode;
     m_state = State::kWriting;
     m_storage->acquire();
@@ -148,6 +158,8 @@ TQ3FileVersion File::version() const
 
 void File::release()
 {
+    if (m_writer)
+        m_writer->setFile(nullptr); // a writing loop may go on after the close
     if (m_state != State::kClosed && m_storage)
         m_storage->releaseUse();
     m_state = State::kClosed;
@@ -162,6 +174,8 @@ void File::close()
 {
     if (!isOpen())
         fail(kQ3ErrorFileNotOpen, "the file is not open");
+    if (m_methods > 0 || (m_writer && m_writer->busy()))
+        fail(kQ3ErrorAccessRestricted, "a custom class's method is reading or writing the file");
     if (m_state == State::kWriting) {
         std::shared_ptr<io::WriteContext> writer = m_writer;
         Ref<Storage> storage = m_storage;
@@ -177,6 +191,8 @@ void File::cancel()
 {
     if (!isOpen())
         fail(kQ3ErrorFileNotOpen, "the file is not open");
+    if (m_methods > 0 || (m_writer && m_writer->busy()))
+        fail(kQ3ErrorAccessRestricted, "a custom class's method is reading or writing the file");
     release();
 }
 
@@ -190,6 +206,8 @@ bool File::isEndOfFile() const
 {
     if (m_state != State::kReading)
         return true;
+    if (m_data && m_data->scoped)
+        return !m_data->childrenLeft();
     return !(m_data && m_data->childrenLeft()) && m_next >= m_file->objects.size();
 }
 
@@ -324,11 +342,11 @@ TQ3FileReadGroupState File::readInGroup() const
     return m_readGroup | (m_openGroups > 0 ? kQ3FileCurrentlyInsideGroup : 0);
 }
 
-std::shared_ptr<WriteTarget> File::writeTarget()
+std::shared_ptr<WriteTarget> File::writeTarget(TQ3ViewObject view)
 {
     if (m_state != State::kWriting)
         fail(kQ3ErrorFileNotOpen, "the file is not open for writing");
-    return std::make_shared<FileWriteTarget>(m_writer, m_idle);
+    return std::make_shared<FileWriteTarget>(m_writer, m_idle, view);
 }
 
 namespace {
@@ -349,6 +367,31 @@ const io::Node* dataNodeOf(const io::Node& node)
 }
 
 } // namespace
+
+void File::readNode(const io::Node& node, const std::function<void()>& body)
+{
+    requireReading();
+    const io::Node* data = dataNodeOf(node);
+    if (data == nullptr)
+        fail(kQ3ErrorInvalidMetafileObject, "the object (" + (node.name.empty() ? io::typeName(node.type) : node.name) +
+                                                ") has no data of its own to read");
+    auto state = std::make_unique<DataState>();
+    state->container = node.type == io::kTypeContainer ? &node : nullptr;
+    state->reader = std::make_unique<io::DataReader>(*m_file, *data);
+    state->scoped = true;
+    std::swap(state, m_data);
+    ++m_methods;
+    struct Restore {
+        File& file;
+        std::unique_ptr<DataState>& saved;
+        ~Restore()
+        {
+            --file.m_methods;
+            std::swap(saved, file.m_data);
+        }
+    } restore{*this, state};
+    body();
+}
 
 io::DataReader& File::dataReader()
 {

@@ -9,6 +9,7 @@
 #include "base/Storage.h"
 #include "view/View.h"
 
+#include <functional>
 #include <memory>
 
 namespace q3 {
@@ -63,9 +64,17 @@ public:
     void skipObject();
     bool isEndOfFile() const;
 
-    /// What a writing loop writes to (kQ3ErrorFileNotOpen unless open for
-    /// writing).
-    std::shared_ptr<WriteTarget> writeTarget();
+    /// What a writing loop of `view` writes to (kQ3ErrorFileNotOpen unless
+    /// open for writing). The view's handle is what the traverse methods of
+    /// custom classes get.
+    std::shared_ptr<WriteTarget> writeTarget(TQ3ViewObject view);
+
+    /// Runs `body` (a custom class's read or read-data method) with primitive
+    /// reads reading `node`'s data (a container: its root's), and
+    /// ReadObject, SkipObject and the end tests going through the
+    /// container's subobjects and no further (the end of the file past
+    /// them). What primitive reads were reading before comes back after.
+    void readNode(const io::Node& node, const std::function<void()>& body);
 
     /// Primitive reads (Q3Uns32_Read, ...) read the data of one object in
     /// order: the object a primitive read started on, which is then consumed
@@ -138,6 +147,9 @@ private:
         const io::Node* container = nullptr; ///< null for a plain object
         std::size_t nextChild = 1;
         std::unique_ptr<io::DataReader> reader;
+        /// A custom class's method reads this object (readNode): nothing
+        /// past it.
+        bool scoped = false;
         bool childrenLeft() const { return container != nullptr && nextChild < container->children.size(); }
     };
     void requireReading() const;
@@ -158,6 +170,8 @@ private:
     std::shared_ptr<io::WriteContext> m_writer;
     std::unique_ptr<DataState> m_data;
     std::shared_ptr<Idle> m_idle = std::make_shared<Idle>();
+    /// Custom read methods running (readNode): the file cannot close then.
+    std::size_t m_methods = 0;
 };
 
 } // namespace q3

@@ -200,8 +200,9 @@ void writeUnknownBinary(WriteContext& context, const Object& object)
                                 ") came from a file of the other byte order; it is left out");
         return;
     }
-    out.begin(unknown.type(), "");
-    out.raw(unknown.contents());
+    // A custom type is declared again under the name its file gave it.
+    out.begin(unknown.type(), unknown.typeString().c_str());
+    out.rawObjects(unknown.contents(), unknown.declaredTypes());
     out.end();
 }
 

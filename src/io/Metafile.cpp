@@ -929,21 +929,25 @@ void Encoder::begin(TQ3ObjectType type, const char* name)
         return;
     }
     m_open.push_back({m_body.size(), false});
-    if (type < 0) {
-        // A class registered at run time: a file-local negative type, which
-        // a Type object ahead of the objects names (3D Metafile Reference,
-        // "Type objects").
-        std::size_t index = 0;
-        while (index < m_customTypes.size() && m_customTypes[index] != name)
-            ++index;
-        if (index == m_customTypes.size())
-            m_customTypes.emplace_back(name);
-        type = -static_cast<TQ3ObjectType>(index + 1);
-    }
+    if (isCustomType(type))
+        type = customType(name);
     const std::uint32_t t = static_cast<std::uint32_t>(type);
     bytes(&t, 4, true);
     const std::uint32_t placeholder = 0;
     bytes(&placeholder, 4, true);
+}
+
+std::int32_t Encoder::customType(const std::string& name)
+{
+    // A class registered at run time: a file-local negative type, which a
+    // Type object ahead of the objects names (3D Metafile Reference, "Type
+    // objects").
+    std::size_t index = 0;
+    while (index < m_customTypes.size() && m_customTypes[index] != name)
+        ++index;
+    if (index == m_customTypes.size())
+        m_customTypes.emplace_back(name);
+    return -static_cast<std::int32_t>(index + 1);
 }
 
 void Encoder::end()
@@ -1172,6 +1176,43 @@ void Encoder::raw(const std::string& data)
     }
 }
 
+void Encoder::rawObjects(const std::string& data, const std::map<std::uint32_t, std::string>& declared)
+{
+    const std::size_t start = m_body.size();
+    m_body.insert(m_body.end(), data.begin(), data.end());
+    if (declared.empty())
+        return;
+    const bool swap = m_encoding == Encoding::kBinaryLittle;
+    const auto load = [&](std::size_t at) {
+        std::uint32_t v;
+        std::memcpy(&v, &m_body[at], 4);
+        return swap ? v : (v >> 24 | (v >> 8 & 0xFF00) | (v << 8 & 0xFF0000) | v << 24);
+    };
+    const auto store = [&](std::size_t at, std::uint32_t v) {
+        if (!swap)
+            v = v >> 24 | (v >> 8 & 0xFF00) | (v << 8 & 0xFF0000) | v << 24;
+        std::memcpy(&m_body[at], &v, 4);
+    };
+    // The objects' headers, inside containers and groups (the data of any
+    // other object is opaque): each declared code becomes this file's code
+    // for the same name.
+    const auto walk = [&](auto& self, std::size_t at, std::size_t end) -> void {
+        while (at + 8 <= end) {
+            const std::uint32_t type = load(at);
+            const std::size_t size = load(at + 4);
+            if (size > end - at - 8)
+                return; // checked when the file was parsed; never past the data
+            if (const auto found = declared.find(type); found != declared.end())
+                store(at, static_cast<std::uint32_t>(customType(found->second)));
+            else if (type == static_cast<std::uint32_t>(kTypeContainer) ||
+                     type == static_cast<std::uint32_t>(kTypeBeginGroup))
+                self(self, at + 8, at + 8 + size);
+            at += 8 + size;
+        }
+    };
+    walk(walk, start, m_body.size());
+}
+
 std::size_t Encoder::reopenAsContainer(std::size_t start)
 {
     if (m_encoding == Encoding::kText) {
@@ -1291,7 +1332,9 @@ std::vector<unsigned char> Encoder::finish(TQ3FileMode mode, const std::vector<T
         for (const TocEntry& entry : toc) {
             table.u32(entry.id);
             table.u64(bodyStart + entry.position);
-            table.u32(entry.type);
+            // A custom class's entry has the file's code for it, as its
+            // object does (the name is declared already: the object was written).
+            table.u32(static_cast<std::uint32_t>(isCustomType(entry.type) ? customType(entry.name) : entry.type));
         }
         table.end();
         out.insert(out.end(), table.m_body.begin(), table.m_body.end());

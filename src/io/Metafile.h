@@ -178,15 +178,26 @@ public:
     void flags(const std::vector<std::pair<const char*, std::uint32_t>>& names, std::uint32_t value);
     /// Data copied as it is (an unknown object's).
     void raw(const std::string& data);
+    /// Binary: the data of an unknown container or group (a sequence of
+    /// objects) copied, with the custom types `declared` names (their codes
+    /// in the file they came from) renumbered as this file declares them.
+    void rawObjects(const std::string& data, const std::map<std::uint32_t, std::string>& declared);
+    /// Binary: this file's code for a custom class name, declared by a Type
+    /// object ahead of the objects.
+    std::int32_t customType(const std::string& name);
 
     /// A point to come back to: rollback(mark()) forgets everything written
     /// since (what a failed write leaves behind).
     struct Mark {
-        std::size_t body, text, open, labels, groupDepth;
+        std::size_t body, text, open, labels, groupDepth, customTypes;
     };
-    Mark mark() const { return {m_body.size(), m_text.size(), m_open.size(), m_labels.size(), m_groupDepth}; }
+    Mark mark() const
+    {
+        return {m_body.size(), m_text.size(), m_open.size(), m_labels.size(), m_groupDepth, m_customTypes.size()};
+    }
     void rollback(const Mark& at)
     {
+        m_customTypes.resize(at.customTypes);
         m_body.resize(at.body);
         m_text.resize(at.text);
         m_open.resize(at.open);
@@ -246,5 +257,13 @@ private:
 
 /// The four characters of a type, for messages ('trng').
 std::string typeName(TQ3ObjectType type);
+
+/// Whether a type is a custom class's: negative as a 32-bit value (a binary
+/// file's types are read as 32-bit patterns into the wider TQ3ObjectType,
+/// so a file-local type -1 arrives as 0xFFFFFFFF).
+inline bool isCustomType(TQ3ObjectType type)
+{
+    return static_cast<std::int32_t>(static_cast<std::uint32_t>(type)) < 0;
+}
 
 } // namespace q3::io

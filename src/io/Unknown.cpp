@@ -15,7 +15,9 @@ Object* UnknownText::duplicate() const
 
 Object* UnknownBinary::duplicate() const
 {
-    return makeShared<UnknownBinary>(m_type, m_contents, m_order).detach();
+    auto copy = makeShared<UnknownBinary>(m_type, m_contents, m_order, m_typeString);
+    copy->setDeclaredTypes(m_declared);
+    return copy.detach();
 }
 
 } // namespace q3

@@ -5,6 +5,8 @@
 #include "QD3D.h"
 #include "core/Object.h"
 
+#include <cstdint>
+#include <map>
 #include <string>
 
 namespace q3 {
@@ -54,8 +56,8 @@ class UnknownBinary final : public UnknownObject {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3UnknownTypeBinary;
 
-    UnknownBinary(TQ3ObjectType type, std::string contents, TQ3Endian order)
-        : m_type(type), m_contents(std::move(contents)), m_order(order)
+    UnknownBinary(TQ3ObjectType type, std::string contents, TQ3Endian order, std::string typeString = {})
+        : m_type(type), m_contents(std::move(contents)), m_order(order), m_typeString(std::move(typeString))
     {
     }
 
@@ -65,11 +67,20 @@ public:
     TQ3ObjectType type() const { return m_type; }
     const std::string& contents() const { return m_contents; }
     TQ3Endian byteOrder() const { return m_order; }
+    /// The class name a Type object of the file declared for a custom
+    /// (negative) type; empty for any other type.
+    const std::string& typeString() const { return m_typeString; }
+    /// The custom types the data's objects have (a container's, a group's),
+    /// by their codes in the data: the names their file's Type objects gave.
+    const std::map<std::uint32_t, std::string>& declaredTypes() const { return m_declared; }
+    void setDeclaredTypes(std::map<std::uint32_t, std::string> declared) { m_declared = std::move(declared); }
 
 private:
     TQ3ObjectType m_type;
     std::string m_contents;
     TQ3Endian m_order;
+    std::string m_typeString;
+    std::map<std::uint32_t, std::string> m_declared;
 };
 
 } // namespace q3

@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The Q3 authors
 #include "view/View.h"
 
+#include "QD3DExtension.h"
+#include "core/CustomObject.h"
 #include "core/EnumValue.h"
 
 #include "geometry/Geometry.h"
@@ -644,6 +646,14 @@ void View::submit(const Object& object)
     if (!object.isDrawable())
         fail(kQ3ErrorInvalidObjectType,
              std::string("object is a ") + object.classInfo().name + ", which cannot be submitted");
+    // Custom objects (here or in a group) draw through their class's submit
+    // method for this loop (QD3DExtension.h).
+    const TQ3XMethodType method = m_loop == Loop::kRendering ? kQ3XMethodTypeObjectSubmitRender
+                                  : m_loop == Loop::kPicking ? kQ3XMethodTypeObjectSubmitPick
+                                  : (m_loop == Loop::kBoundingBox || m_loop == Loop::kBoundingSphere)
+                                      ? kQ3XMethodTypeObjectSubmitBounds
+                                      : 0;
+    CustomSubmitScope scope(this, method);
     object.accept(submitTarget());
 }
 

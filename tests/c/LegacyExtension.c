@@ -2,15 +2,18 @@
 /* Copyright (c) 2026 The Q3 authors */
 
 /* QuickDraw 3D 1.6 plug-in style C: a custom element class with its own copy
- * methods in a set, a custom shape class with instance data, and Apple's
- * name element on a box, through QD3DExtension.h, QD3DSet.h and
- * QD3DCustomElements.h only. */
+ * methods in a set, a custom shape class with instance data that writes
+ * itself to a 3DMF file and reads itself back (QD3DIO.h's traverse, write
+ * and read methods), and Apple's name element on a box, through
+ * QD3DExtension.h, QD3DSet.h, QD3DIO.h and QD3DCustomElements.h only. */
 #include "QD3D.h"
 #include "QD3DCustomElements.h"
 #include "QD3DErrors.h"
 #include "QD3DExtension.h"
 #include "QD3DGeometry.h"
+#include "QD3DIO.h"
 #include "QD3DSet.h"
+#include "QD3DStorage.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -65,11 +68,38 @@ static TQ3Status MyShape_New(TQ3Object object, void *privateData, void *paramete
     return kQ3Success;
 }
 
+static TQ3XObjectClass gShapeClass = NULL;
+
+static TQ3Status MyShape_Traverse(TQ3Object object, void *data, TQ3ViewObject view)
+{
+    (void)object;
+    return Q3XView_SubmitWriteData(view, sizeof(TQ3Float32), data, NULL);
+}
+
+static TQ3Status MyShape_Write(const void *data, TQ3FileObject file)
+{
+    return Q3Float32_Write(((const MyShapePrivate *)data)->weight, file);
+}
+
+static TQ3Object MyShape_Read(TQ3FileObject file)
+{
+    float weight = 0.0f;
+    if (Q3Float32_Read(&weight, file) != kQ3Success)
+        return NULL;
+    return Q3XObjectHierarchy_NewObject(gShapeClass, &weight);
+}
+
 static TQ3XFunctionPointer MyShape_MetaHandler(TQ3XMethodType methodType)
 {
     switch (methodType) {
     case kQ3XMethodTypeObjectNew:
         return (TQ3XFunctionPointer)MyShape_New;
+    case kQ3XMethodTypeObjectTraverse:
+        return (TQ3XFunctionPointer)MyShape_Traverse;
+    case kQ3XMethodTypeObjectWrite:
+        return (TQ3XFunctionPointer)MyShape_Write;
+    case kQ3XMethodTypeObjectRead:
+        return (TQ3XFunctionPointer)MyShape_Read;
     case kQ3XMethodTypeObjectClassVersion:
         return (TQ3XFunctionPointer)Q3_OBJECT_CLASS_VERSION(1, 2);
     default:
@@ -85,7 +115,11 @@ int main(void)
     TQ3SetObject set;
     TQ3GeometryObject box;
     TQ3BoxData boxData;
-    TQ3Object shape;
+    TQ3Object shape, readBack = NULL;
+    TQ3StorageObject storage;
+    TQ3FileObject file;
+    TQ3ViewObject view;
+    TQ3FileMode mode = 0;
     MyShapePrivate *shapeData;
     TQ3XObjectClassVersion version = 0;
     char shapeName[] = "Legacy Corp.:Weight";
@@ -115,6 +149,31 @@ int main(void)
     shapeData = (MyShapePrivate *)Q3XObjectClass_GetPrivate(shapeClass, shape);
     ok = ok && shapeData != NULL && shapeData->weight == 2.5f;
     ok = ok && Q3Object_IsType(shape, kQ3SharedTypeShape) == kQ3True;
+    gShapeClass = shapeClass;
+
+    /* Write the shape to a text file in memory and read it back. */
+    storage = Q3MemoryStorage_New(NULL, 0);
+    file = Q3File_New();
+    view = Q3View_New();
+    ok = ok && Q3File_SetStorage(file, storage) == kQ3Success;
+    ok = ok && Q3File_OpenWrite(file, kQ3FileModeText) == kQ3Success;
+    ok = ok && Q3View_StartWriting(view, file) == kQ3Success;
+    ok = ok && Q3Object_Submit(shape, view) == kQ3Success;
+    ok = ok && Q3View_EndWriting(view) == kQ3ViewStatusDone;
+    ok = ok && Q3File_Close(file) == kQ3Success;
+    ok = ok && Q3File_OpenRead(file, &mode) == kQ3Success && (mode & kQ3FileModeText) != 0;
+    if (ok)
+        readBack = Q3File_ReadObject(file);
+    ok = ok && readBack != NULL && Q3Object_GetLeafType(readBack) == shapeType;
+    if (readBack != NULL) {
+        shapeData = (MyShapePrivate *)Q3XObjectClass_GetPrivate(shapeClass, readBack);
+        ok = ok && shapeData != NULL && shapeData->weight == 2.5f;
+        Q3Object_Dispose(readBack);
+    }
+    Q3File_Close(file);
+    Q3Object_Dispose(view);
+    Q3Object_Dispose(file);
+    Q3Object_Dispose(storage);
     Q3Object_Dispose(shape);
     ok = ok && Q3XObjectHierarchy_UnregisterClass(shapeClass) == kQ3Success;
 
