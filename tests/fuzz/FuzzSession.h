@@ -17,6 +17,7 @@
 #include "QD3DCustomElements.h"
 #include "QD3DDrawContext.h"
 #include "QD3DErrors.h"
+#include "QD3DExtension.h"
 #include "QD3DGeometry.h"
 #include "QD3DLight.h"
 #include "QD3DMath.h"

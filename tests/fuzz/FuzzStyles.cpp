@@ -586,7 +586,7 @@ void Session::elements()
     for (float& f : data)
         f = m_in.value();
     const bool handleType = type == kQ3AttributeTypeSurfaceShader || type == kQ3ElementTypeSet;
-    switch (m_in.u8() % 9) {
+    switch (m_in.u8() % 11) {
     case 0:
         STATUS(Q3Object_AddElement(target, type, m_in.u8() == 0 ? nullptr : data));
         break;
@@ -632,6 +632,15 @@ void Session::elements()
             STATUS(CENameElement_EmptyData(&got));
         break;
     }
+    // Outside a custom class's traverse method both must fail, whatever the
+    // target (QD3DIO.h).
+    case 9:
+        STATUS(Q3XView_SubmitWriteData(target, m_in.u32(), data, nullptr));
+        break;
+    case 10:
+        STATUS(Q3XView_SubmitSubObjectData(target, Q3XObjectHierarchy_FindClassByType(type), m_in.u32(), data,
+                                           nullptr));
+        break;
     }
 }
 
