@@ -102,10 +102,8 @@ TQ3GroupPosition Q3Group_AddObjectAfter(TQ3GroupObject group, TQ3GroupPosition p
 
 TQ3Status Q3Group_GetPositionObject(TQ3GroupObject group, TQ3GroupPosition position, TQ3Object* object)
 {
-    return guardStatus(__func__, [&] {
-        const Group& source = lookup<Group>(group, "group");
-        requireNonNull(object, "object");
-        *object = Ref<SharedObject>::retain(&source.objectAt(position)).detach();
+    return getValue<Group>(__func__, group, "group", object, "object", [&](const Group& source) {
+        return Ref<SharedObject>::retain(&source.objectAt(position)).detach();
     });
 }
 

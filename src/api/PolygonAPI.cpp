@@ -52,10 +52,8 @@ TQ3Status Q3Polygon_SetVertexPosition(TQ3GeometryObject polygon, unsigned long i
 TQ3Status Q3Polygon_GetVertexAttributeSet(TQ3GeometryObject polygon, unsigned long index,
                                            TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Polygon>(polygon, "polygon", attributeSet, "attributeSet", [&](const Polygon& t) {
-            return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
-        });
+    return getValue<Polygon>(__func__, polygon, "polygon", attributeSet, "attributeSet", [&](const Polygon& t) {
+        return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
     });
 }
 

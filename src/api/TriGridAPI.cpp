@@ -54,10 +54,8 @@ TQ3Status Q3TriGrid_SetVertexPosition(TQ3GeometryObject triGrid, unsigned long r
 TQ3Status Q3TriGrid_GetVertexAttributeSet(TQ3GeometryObject triGrid, unsigned long rowIndex,
                                           unsigned long columnIndex, TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<TriGrid>(triGrid, "triGrid", attributeSet, "attributeSet", [&](const TriGrid& g) {
-            return attributeSetToHandle(heldAttributeSet(g.vertex(rowIndex, columnIndex).attributeSet));
-        });
+    return getValue<TriGrid>(__func__, triGrid, "triGrid", attributeSet, "attributeSet", [&](const TriGrid& g) {
+        return attributeSetToHandle(heldAttributeSet(g.vertex(rowIndex, columnIndex).attributeSet));
     });
 }
 

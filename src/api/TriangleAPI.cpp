@@ -52,10 +52,8 @@ TQ3Status Q3Triangle_SetVertexPosition(TQ3GeometryObject triangle, unsigned long
 TQ3Status Q3Triangle_GetVertexAttributeSet(TQ3GeometryObject triangle, unsigned long index,
                                            TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Triangle>(triangle, "triangle", attributeSet, "attributeSet", [&](const Triangle& t) {
-            return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
-        });
+    return getValue<Triangle>(__func__, triangle, "triangle", attributeSet, "attributeSet", [&](const Triangle& t) {
+        return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
     });
 }
 
