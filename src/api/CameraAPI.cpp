@@ -22,8 +22,7 @@ TQ3Status Q3Camera_SetData(TQ3CameraObject camera, const TQ3CameraData* cameraDa
 
 TQ3Status Q3Camera_GetData(TQ3CameraObject camera, TQ3CameraData* cameraData)
 {
-    return getValue<Camera>(__func__, camera, "camera", cameraData, "cameraData",
-                            [&](const Camera& source) { return source.data(); });
+    return getValue<Camera>(__func__, camera, "camera", cameraData, "cameraData", &Camera::data);
 }
 
 TQ3Status Q3Camera_SetPlacement(TQ3CameraObject camera, const TQ3CameraPlacement* placement)
@@ -89,7 +88,7 @@ TQ3CameraObject Q3OrthographicCamera_New(const TQ3OrthographicCameraData* orthog
 TQ3Status Q3OrthographicCamera_GetData(TQ3CameraObject camera, TQ3OrthographicCameraData* cameraData)
 {
     return getValue<OrthographicCamera>(__func__, camera, "camera", cameraData, "cameraData",
-                                        [&](const OrthographicCamera& source) { return source.orthographicData(); });
+                                        &OrthographicCamera::orthographicData);
 }
 
 TQ3Status Q3OrthographicCamera_SetData(TQ3CameraObject camera,
@@ -167,7 +166,7 @@ TQ3CameraObject Q3ViewPlaneCamera_New(const TQ3ViewPlaneCameraData* cameraData)
 TQ3Status Q3ViewPlaneCamera_GetData(TQ3CameraObject camera, TQ3ViewPlaneCameraData* cameraData)
 {
     return getValue<ViewPlaneCamera>(__func__, camera, "camera", cameraData, "cameraData",
-                                     [&](const ViewPlaneCamera& source) { return source.viewPlaneData(); });
+                                     &ViewPlaneCamera::viewPlaneData);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetData(TQ3CameraObject camera, const TQ3ViewPlaneCameraData* cameraData)

@@ -22,8 +22,7 @@ TQ3Status Q3DrawContext_SetData(TQ3DrawContextObject context, const TQ3DrawConte
 
 TQ3Status Q3DrawContext_GetData(TQ3DrawContextObject context, TQ3DrawContextData* contextData)
 {
-    return getValue<DrawContext>(__func__, context, "context", contextData, "contextData",
-                                 [&](const DrawContext& source) { return source.data(); });
+    return getValue<DrawContext>(__func__, context, "context", contextData, "contextData", &DrawContext::data);
 }
 
 TQ3Status Q3DrawContext_SetClearImageColor(TQ3DrawContextObject context, const TQ3ColorARGB* color)
@@ -82,7 +81,7 @@ TQ3Status Q3DrawContext_SetMask(TQ3DrawContextObject context, const TQ3Bitmap* m
 TQ3Status Q3DrawContext_GetMask(TQ3DrawContextObject context, TQ3Bitmap* mask)
 {
     return getValue<DrawContext>(__func__, context, "context", mask, "mask",
-                                 [&](const DrawContext& source) { return source.data().mask; });
+                                 [&](const DrawContext& source) -> const TQ3Bitmap& { return source.data().mask; });
 }
 
 TQ3Status Q3DrawContext_SetMaskState(TQ3DrawContextObject context, TQ3Boolean state)
@@ -126,7 +125,7 @@ TQ3Status Q3PixmapDrawContext_SetPixmap(TQ3DrawContextObject drawContext, const 
 TQ3Status Q3PixmapDrawContext_GetPixmap(TQ3DrawContextObject drawContext, TQ3Pixmap* pixmap)
 {
     return getValue<PixmapDrawContext>(__func__, drawContext, "drawContext", pixmap, "pixmap",
-                                       [&](const PixmapDrawContext& source) { return source.pixmap(); });
+                                       &PixmapDrawContext::pixmap);
 }
 
 } // extern "C"

@@ -65,12 +65,14 @@ inline char* mallocCopy(const std::string& text)
 /// The Get half of a single-value accessor, in the order every Get checks:
 /// the handle (as a T, called `handleName` in errors), then the output pointer
 /// (`outName`), then *out = read(object). Nothing is written on failure.
+/// `read` may be a member function of T (`&T::data`): the value is then
+/// assigned straight from what it returns, as `*out = object.data()` would.
 template <class T, class Value, class Read>
 void readInto(TQ3Object handle, const char* handleName, Value* out, const char* outName, Read read)
 {
     const T& source = lookup<T>(handle, handleName);
     requireNonNull(out, outName);
-    *out = read(source);
+    *out = std::invoke(read, source);
 }
 
 /// A whole New entry point of a shared T made from one value given through a

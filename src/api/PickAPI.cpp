@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 
 using namespace q3;
 using namespace q3::api;
@@ -41,7 +42,7 @@ TQ3Status getOfKind(const char* function, TQ3PickObject pick, KindOf kind, Value
     return guardStatus(function, [&] {
         const Pick& source = Pick::ofKind(pick, kind.kind, kind.name);
         requireNonNull(out, outName);
-        *out = read(source);
+        *out = std::invoke(read, source);
     });
 }
 
@@ -218,7 +219,7 @@ TQ3Status Q3WindowPointPick_SetPoint(TQ3PickObject pick, const TQ3Point2D* point
 
 TQ3Status Q3WindowPointPick_GetData(TQ3PickObject pick, TQ3WindowPointPickData* data)
 {
-    return getOfKind(__func__, pick, kPoint, data, "data", [](const Pick& p) { return p.windowPoint(); });
+    return getOfKind(__func__, pick, kPoint, data, "data", &Pick::windowPoint);
 }
 
 TQ3Status Q3WindowPointPick_SetData(TQ3PickObject pick, const TQ3WindowPointPickData* data)
@@ -243,7 +244,7 @@ TQ3Status Q3WindowRectPick_SetRect(TQ3PickObject pick, const TQ3Area* rect)
 
 TQ3Status Q3WindowRectPick_GetData(TQ3PickObject pick, TQ3WindowRectPickData* data)
 {
-    return getOfKind(__func__, pick, kRect, data, "data", [](const Pick& p) { return p.windowRect(); });
+    return getOfKind(__func__, pick, kRect, data, "data", &Pick::windowRect);
 }
 
 TQ3Status Q3WindowRectPick_SetData(TQ3PickObject pick, const TQ3WindowRectPickData* data)
@@ -268,7 +269,7 @@ TQ3Status Q3WorldRayPick_SetRay(TQ3PickObject pick, const TQ3Ray3D* ray)
 
 TQ3Status Q3WorldRayPick_GetData(TQ3PickObject pick, TQ3WorldRayPickData* data)
 {
-    return getOfKind(__func__, pick, kRay, data, "data", [](const Pick& p) { return p.worldRay(); });
+    return getOfKind(__func__, pick, kRay, data, "data", &Pick::worldRay);
 }
 
 TQ3Status Q3WorldRayPick_SetData(TQ3PickObject pick, const TQ3WorldRayPickData* data)

@@ -111,8 +111,7 @@ TQ3Status Q3XDrawContext_SetDisplay(TQ3DrawContextObject drawContext, const Disp
 
 TQ3Status Q3XDrawContext_GetDisplay(TQ3DrawContextObject drawContext, Display** display)
 {
-    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", display, "display",
-                                    [&](const X11DrawContext& source) { return source.display(); });
+    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", display, "display", &X11DrawContext::display);
 }
 
 TQ3Status Q3XDrawContext_SetDrawable(TQ3DrawContextObject drawContext, Drawable drawable)
@@ -124,7 +123,7 @@ TQ3Status Q3XDrawContext_SetDrawable(TQ3DrawContextObject drawContext, Drawable 
 TQ3Status Q3XDrawContext_GetDrawable(TQ3DrawContextObject drawContext, Drawable* drawable)
 {
     return getValue<X11DrawContext>(__func__, drawContext, "drawContext", drawable, "drawable",
-                                    [&](const X11DrawContext& source) { return source.drawable(); });
+                                    &X11DrawContext::drawable);
 }
 
 TQ3Status Q3XDrawContext_SetVisual(TQ3DrawContextObject drawContext, const Visual* visual)
@@ -138,8 +137,7 @@ TQ3Status Q3XDrawContext_SetVisual(TQ3DrawContextObject drawContext, const Visua
 
 TQ3Status Q3XDrawContext_GetVisual(TQ3DrawContextObject drawContext, Visual** visual)
 {
-    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", visual, "visual",
-                                    [&](const X11DrawContext& source) { return source.visual(); });
+    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", visual, "visual", &X11DrawContext::visual);
 }
 
 TQ3Status Q3XDrawContext_SetColormap(TQ3DrawContextObject drawContext, Colormap colormap)
@@ -151,7 +149,7 @@ TQ3Status Q3XDrawContext_SetColormap(TQ3DrawContextObject drawContext, Colormap 
 TQ3Status Q3XDrawContext_GetColormap(TQ3DrawContextObject drawContext, Colormap* colormap)
 {
     return getValue<X11DrawContext>(__func__, drawContext, "drawContext", colormap, "colormap",
-                                    [&](const X11DrawContext& source) { return source.colormap(); });
+                                    &X11DrawContext::colormap);
 }
 
 TQ3Status Q3XDrawContext_SetColormapData(TQ3DrawContextObject drawContext, const TQ3XColormapData* colormapData)
@@ -163,7 +161,7 @@ TQ3Status Q3XDrawContext_SetColormapData(TQ3DrawContextObject drawContext, const
 TQ3Status Q3XDrawContext_GetColormapData(TQ3DrawContextObject drawContext, TQ3XColormapData* colormapData)
 {
     return getValue<X11DrawContext>(__func__, drawContext, "drawContext", colormapData, "colormapData",
-                                    [&](const X11DrawContext& source) { return source.colormapData(); });
+                                    &X11DrawContext::colormapData);
 }
 
 } // extern "C"
