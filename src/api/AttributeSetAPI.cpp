@@ -7,8 +7,7 @@
 #include "view/View.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 extern "C" {
 
@@ -63,11 +62,8 @@ TQ3Status Q3AttributeSet_Empty(TQ3AttributeSet target)
 
 TQ3Status Q3AttributeSet_GetNextAttributeType(TQ3AttributeSet source, TQ3AttributeType* theType)
 {
-    return guardStatus(__func__, [&] {
-        const AttributeSet& set = lookup<AttributeSet>(source, "source");
-        requireNonNull(theType, "theType");
-        *theType = set.nextType(*theType);
-    });
+    return getValue<AttributeSet>(__func__, source, "source", theType, "theType",
+                                  [&](const AttributeSet& set) { return set.nextType(*theType); });
 }
 
 TQ3Status Q3AttributeSet_Submit(TQ3AttributeSet attributeSet, TQ3ViewObject view)

@@ -76,10 +76,8 @@ TQ3Status Q3Box_GetMinorAxis(TQ3GeometryObject box, TQ3Vector3D* minorAxis)
 
 TQ3Status Q3Box_GetFaceAttributeSet(TQ3GeometryObject box, unsigned long faceIndex, TQ3AttributeSet* faceAttributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Box>(box, "box", faceAttributeSet, "faceAttributeSet",
-                      [&](const Box& b) { return attributeSetToHandle(b.faceSet(faceIndex)); });
-    });
+    return getValue<Box>(__func__, box, "box", faceAttributeSet, "faceAttributeSet",
+                         [&](const Box& b) { return attributeSetToHandle(b.faceSet(faceIndex)); });
 }
 
 TQ3Status Q3Box_SetFaceAttributeSet(TQ3GeometryObject box, unsigned long faceIndex, TQ3AttributeSet faceAttributeSet)

@@ -5,9 +5,7 @@
 #include "view/Camera.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
-using q3::api::readInto;
+using namespace q3::api;
 
 extern "C" {
 
@@ -19,101 +17,63 @@ TQ3ObjectType Q3Camera_GetType(TQ3CameraObject camera)
 
 TQ3Status Q3Camera_SetData(TQ3CameraObject camera, const TQ3CameraData* cameraData)
 {
-    return guardStatus(__func__, [&] {
-        Camera& target = lookup<Camera>(camera, "camera");
-        requireNonNull(cameraData, "cameraData");
-        target.setData(*cameraData);
-    });
+    return setValue<Camera>(__func__, camera, "camera", cameraData, "cameraData", &Camera::setData);
 }
 
 TQ3Status Q3Camera_GetData(TQ3CameraObject camera, TQ3CameraData* cameraData)
 {
-    return guardStatus(__func__, [&] {
-        const Camera& source = lookup<Camera>(camera, "camera");
-        requireNonNull(cameraData, "cameraData");
-        *cameraData = source.data();
-    });
+    return getValue<Camera>(__func__, camera, "camera", cameraData, "cameraData", &Camera::data);
 }
 
 TQ3Status Q3Camera_SetPlacement(TQ3CameraObject camera, const TQ3CameraPlacement* placement)
 {
-    return guardStatus(__func__, [&] {
-        Camera& target = lookup<Camera>(camera, "camera");
-        requireNonNull(placement, "placement");
-        target.setPlacement(*placement);
-    });
+    return setValue<Camera>(__func__, camera, "camera", placement, "placement", &Camera::setPlacement);
 }
 
 TQ3Status Q3Camera_GetPlacement(TQ3CameraObject camera, TQ3CameraPlacement* placement)
 {
-    return guardStatus(__func__, [&] {
-        const Camera& source = lookup<Camera>(camera, "camera");
-        requireNonNull(placement, "placement");
-        *placement = source.data().placement;
-    });
+    return getValue<Camera>(__func__, camera, "camera", placement, "placement",
+                            [&](const Camera& source) { return source.data().placement; });
 }
 
 TQ3Status Q3Camera_SetRange(TQ3CameraObject camera, const TQ3CameraRange* range)
 {
-    return guardStatus(__func__, [&] {
-        Camera& target = lookup<Camera>(camera, "camera");
-        requireNonNull(range, "range");
-        target.setRange(*range);
-    });
+    return setValue<Camera>(__func__, camera, "camera", range, "range", &Camera::setRange);
 }
 
 TQ3Status Q3Camera_GetRange(TQ3CameraObject camera, TQ3CameraRange* range)
 {
-    return guardStatus(__func__, [&] {
-        const Camera& source = lookup<Camera>(camera, "camera");
-        requireNonNull(range, "range");
-        *range = source.data().range;
-    });
+    return getValue<Camera>(__func__, camera, "camera", range, "range",
+                            [&](const Camera& source) { return source.data().range; });
 }
 
 TQ3Status Q3Camera_SetViewPort(TQ3CameraObject camera, const TQ3CameraViewPort* viewPort)
 {
-    return guardStatus(__func__, [&] {
-        Camera& target = lookup<Camera>(camera, "camera");
-        requireNonNull(viewPort, "viewPort");
-        target.setViewPort(*viewPort);
-    });
+    return setValue<Camera>(__func__, camera, "camera", viewPort, "viewPort", &Camera::setViewPort);
 }
 
 TQ3Status Q3Camera_GetViewPort(TQ3CameraObject camera, TQ3CameraViewPort* viewPort)
 {
-    return guardStatus(__func__, [&] {
-        const Camera& source = lookup<Camera>(camera, "camera");
-        requireNonNull(viewPort, "viewPort");
-        *viewPort = source.data().viewPort;
-    });
+    return getValue<Camera>(__func__, camera, "camera", viewPort, "viewPort",
+                            [&](const Camera& source) { return source.data().viewPort; });
 }
 
 TQ3Status Q3Camera_GetWorldToView(TQ3CameraObject camera, TQ3Matrix4x4* worldToView)
 {
-    return guardStatus(__func__, [&] {
-        const Camera& source = lookup<Camera>(camera, "camera");
-        requireNonNull(worldToView, "worldToView");
-        *worldToView = toQ3(source.worldToView());
-    });
+    return getValue<Camera>(__func__, camera, "camera", worldToView, "worldToView",
+                            [&](const Camera& source) { return toQ3(source.worldToView()); });
 }
 
 TQ3Status Q3Camera_GetViewToFrustum(TQ3CameraObject camera, TQ3Matrix4x4* viewToFrustum)
 {
-    return guardStatus(__func__, [&] {
-        const Camera& source = lookup<Camera>(camera, "camera");
-        requireNonNull(viewToFrustum, "viewToFrustum");
-        *viewToFrustum = toQ3(source.viewToFrustum());
-    });
+    return getValue<Camera>(__func__, camera, "camera", viewToFrustum, "viewToFrustum",
+                            [&](const Camera& source) { return toQ3(source.viewToFrustum()); });
 }
 
 TQ3Status Q3Camera_GetWorldToFrustum(TQ3CameraObject camera, TQ3Matrix4x4* worldToFrustum)
 {
-    return guardStatus(__func__, [&] {
-        const Camera& source = lookup<Camera>(camera, "camera");
-        requireNonNull(worldToFrustum, "worldToFrustum");
-        *worldToFrustum = toQ3(source.worldToFrustum());
-    });
+    return getValue<Camera>(__func__, camera, "camera", worldToFrustum, "worldToFrustum",
+                            [&](const Camera& source) { return toQ3(source.worldToFrustum()); });
 }
 
 TQ3CameraObject Q3OrthographicCamera_New(const TQ3OrthographicCameraData* orthographicData)
@@ -127,21 +87,15 @@ TQ3CameraObject Q3OrthographicCamera_New(const TQ3OrthographicCameraData* orthog
 
 TQ3Status Q3OrthographicCamera_GetData(TQ3CameraObject camera, TQ3OrthographicCameraData* cameraData)
 {
-    return guardStatus(__func__, [&] {
-        const OrthographicCamera& source = lookup<OrthographicCamera>(camera, "camera");
-        requireNonNull(cameraData, "cameraData");
-        *cameraData = source.orthographicData();
-    });
+    return getValue<OrthographicCamera>(__func__, camera, "camera", cameraData, "cameraData",
+                                        &OrthographicCamera::orthographicData);
 }
 
 TQ3Status Q3OrthographicCamera_SetData(TQ3CameraObject camera,
                                        const TQ3OrthographicCameraData* cameraData)
 {
-    return guardStatus(__func__, [&] {
-        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
-        requireNonNull(cameraData, "cameraData");
-        target.setOrthographicData(*cameraData);
-    });
+    return setValue<OrthographicCamera>(__func__, camera, "camera", cameraData, "cameraData",
+                                        &OrthographicCamera::setOrthographicData);
 }
 
 TQ3Status Q3OrthographicCamera_SetLeft(TQ3CameraObject camera, float left)
@@ -154,10 +108,8 @@ TQ3Status Q3OrthographicCamera_SetLeft(TQ3CameraObject camera, float left)
 
 TQ3Status Q3OrthographicCamera_GetLeft(TQ3CameraObject camera, float* left)
 {
-    return guardStatus(__func__, [&] {
-        readInto<OrthographicCamera>(camera, "camera", left, "left",
-                                     [](const OrthographicCamera& c) { return c.orthographicData().left; });
-    });
+    return getValue<OrthographicCamera>(__func__, camera, "camera", left, "left",
+                                        [](const OrthographicCamera& c) { return c.orthographicData().left; });
 }
 
 TQ3Status Q3OrthographicCamera_SetTop(TQ3CameraObject camera, float top)
@@ -170,10 +122,8 @@ TQ3Status Q3OrthographicCamera_SetTop(TQ3CameraObject camera, float top)
 
 TQ3Status Q3OrthographicCamera_GetTop(TQ3CameraObject camera, float* top)
 {
-    return guardStatus(__func__, [&] {
-        readInto<OrthographicCamera>(camera, "camera", top, "top",
-                                     [](const OrthographicCamera& c) { return c.orthographicData().top; });
-    });
+    return getValue<OrthographicCamera>(__func__, camera, "camera", top, "top",
+                                        [](const OrthographicCamera& c) { return c.orthographicData().top; });
 }
 
 TQ3Status Q3OrthographicCamera_SetRight(TQ3CameraObject camera, float right)
@@ -186,10 +136,8 @@ TQ3Status Q3OrthographicCamera_SetRight(TQ3CameraObject camera, float right)
 
 TQ3Status Q3OrthographicCamera_GetRight(TQ3CameraObject camera, float* right)
 {
-    return guardStatus(__func__, [&] {
-        readInto<OrthographicCamera>(camera, "camera", right, "right",
-                                     [](const OrthographicCamera& c) { return c.orthographicData().right; });
-    });
+    return getValue<OrthographicCamera>(__func__, camera, "camera", right, "right",
+                                        [](const OrthographicCamera& c) { return c.orthographicData().right; });
 }
 
 TQ3Status Q3OrthographicCamera_SetBottom(TQ3CameraObject camera, float bottom)
@@ -202,10 +150,8 @@ TQ3Status Q3OrthographicCamera_SetBottom(TQ3CameraObject camera, float bottom)
 
 TQ3Status Q3OrthographicCamera_GetBottom(TQ3CameraObject camera, float* bottom)
 {
-    return guardStatus(__func__, [&] {
-        readInto<OrthographicCamera>(camera, "camera", bottom, "bottom",
-                                     [](const OrthographicCamera& c) { return c.orthographicData().bottom; });
-    });
+    return getValue<OrthographicCamera>(__func__, camera, "camera", bottom, "bottom",
+                                        [](const OrthographicCamera& c) { return c.orthographicData().bottom; });
 }
 
 TQ3CameraObject Q3ViewPlaneCamera_New(const TQ3ViewPlaneCameraData* cameraData)
@@ -219,20 +165,14 @@ TQ3CameraObject Q3ViewPlaneCamera_New(const TQ3ViewPlaneCameraData* cameraData)
 
 TQ3Status Q3ViewPlaneCamera_GetData(TQ3CameraObject camera, TQ3ViewPlaneCameraData* cameraData)
 {
-    return guardStatus(__func__, [&] {
-        const ViewPlaneCamera& source = lookup<ViewPlaneCamera>(camera, "camera");
-        requireNonNull(cameraData, "cameraData");
-        *cameraData = source.viewPlaneData();
-    });
+    return getValue<ViewPlaneCamera>(__func__, camera, "camera", cameraData, "cameraData",
+                                     &ViewPlaneCamera::viewPlaneData);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetData(TQ3CameraObject camera, const TQ3ViewPlaneCameraData* cameraData)
 {
-    return guardStatus(__func__, [&] {
-        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
-        requireNonNull(cameraData, "cameraData");
-        target.setViewPlaneData(*cameraData);
-    });
+    return setValue<ViewPlaneCamera>(__func__, camera, "camera", cameraData, "cameraData",
+                                     &ViewPlaneCamera::setViewPlaneData);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetViewPlane(TQ3CameraObject camera, float viewPlane)
@@ -245,10 +185,8 @@ TQ3Status Q3ViewPlaneCamera_SetViewPlane(TQ3CameraObject camera, float viewPlane
 
 TQ3Status Q3ViewPlaneCamera_GetViewPlane(TQ3CameraObject camera, float* viewPlane)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewPlaneCamera>(camera, "camera", viewPlane, "viewPlane",
-                                  [](const ViewPlaneCamera& c) { return c.viewPlaneData().viewPlane; });
-    });
+    return getValue<ViewPlaneCamera>(__func__, camera, "camera", viewPlane, "viewPlane",
+                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().viewPlane; });
 }
 
 TQ3Status Q3ViewPlaneCamera_SetHalfWidth(TQ3CameraObject camera, float halfWidthAtViewPlane)
@@ -261,10 +199,8 @@ TQ3Status Q3ViewPlaneCamera_SetHalfWidth(TQ3CameraObject camera, float halfWidth
 
 TQ3Status Q3ViewPlaneCamera_GetHalfWidth(TQ3CameraObject camera, float* halfWidthAtViewPlane)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewPlaneCamera>(camera, "camera", halfWidthAtViewPlane, "halfWidthAtViewPlane",
-            [](const ViewPlaneCamera& c) { return c.viewPlaneData().halfWidthAtViewPlane; });
-    });
+    return getValue<ViewPlaneCamera>(__func__, camera, "camera", halfWidthAtViewPlane, "halfWidthAtViewPlane",
+                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().halfWidthAtViewPlane; });
 }
 
 TQ3Status Q3ViewPlaneCamera_SetHalfHeight(TQ3CameraObject camera, float halfHeightAtViewPlane)
@@ -277,10 +213,8 @@ TQ3Status Q3ViewPlaneCamera_SetHalfHeight(TQ3CameraObject camera, float halfHeig
 
 TQ3Status Q3ViewPlaneCamera_GetHalfHeight(TQ3CameraObject camera, float* halfHeightAtViewPlane)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewPlaneCamera>(camera, "camera", halfHeightAtViewPlane, "halfHeightAtViewPlane",
-            [](const ViewPlaneCamera& c) { return c.viewPlaneData().halfHeightAtViewPlane; });
-    });
+    return getValue<ViewPlaneCamera>(__func__, camera, "camera", halfHeightAtViewPlane, "halfHeightAtViewPlane",
+                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().halfHeightAtViewPlane; });
 }
 
 TQ3Status Q3ViewPlaneCamera_SetCenterX(TQ3CameraObject camera, float centerXOnViewPlane)
@@ -293,10 +227,8 @@ TQ3Status Q3ViewPlaneCamera_SetCenterX(TQ3CameraObject camera, float centerXOnVi
 
 TQ3Status Q3ViewPlaneCamera_GetCenterX(TQ3CameraObject camera, float* centerXOnViewPlane)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewPlaneCamera>(camera, "camera", centerXOnViewPlane, "centerXOnViewPlane",
-            [](const ViewPlaneCamera& c) { return c.viewPlaneData().centerXOnViewPlane; });
-    });
+    return getValue<ViewPlaneCamera>(__func__, camera, "camera", centerXOnViewPlane, "centerXOnViewPlane",
+                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().centerXOnViewPlane; });
 }
 
 TQ3Status Q3ViewPlaneCamera_SetCenterY(TQ3CameraObject camera, float centerYOnViewPlane)
@@ -309,10 +241,8 @@ TQ3Status Q3ViewPlaneCamera_SetCenterY(TQ3CameraObject camera, float centerYOnVi
 
 TQ3Status Q3ViewPlaneCamera_GetCenterY(TQ3CameraObject camera, float* centerYOnViewPlane)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewPlaneCamera>(camera, "camera", centerYOnViewPlane, "centerYOnViewPlane",
-            [](const ViewPlaneCamera& c) { return c.viewPlaneData().centerYOnViewPlane; });
-    });
+    return getValue<ViewPlaneCamera>(__func__, camera, "camera", centerYOnViewPlane, "centerYOnViewPlane",
+                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().centerYOnViewPlane; });
 }
 
 TQ3CameraObject Q3ViewAngleAspectCamera_New(const TQ3ViewAngleAspectCameraData* cameraData)
@@ -337,11 +267,8 @@ TQ3Status Q3ViewAngleAspectCamera_GetData(TQ3CameraObject camera,
 TQ3Status Q3ViewAngleAspectCamera_SetData(TQ3CameraObject camera,
                                           const TQ3ViewAngleAspectCameraData* cameraData)
 {
-    return guardStatus(__func__, [&] {
-        ViewAngleAspectCamera& target = lookup<ViewAngleAspectCamera>(camera, "camera");
-        requireNonNull(cameraData, "cameraData");
-        target.setViewAngleAspectData(*cameraData);
-    });
+    return setValue<ViewAngleAspectCamera>(__func__, camera, "camera", cameraData, "cameraData",
+                                           &ViewAngleAspectCamera::setViewAngleAspectData);
 }
 
 TQ3Status Q3ViewAngleAspectCamera_SetFOV(TQ3CameraObject camera, float fov)
@@ -354,10 +281,8 @@ TQ3Status Q3ViewAngleAspectCamera_SetFOV(TQ3CameraObject camera, float fov)
 
 TQ3Status Q3ViewAngleAspectCamera_GetFOV(TQ3CameraObject camera, float* fov)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewAngleAspectCamera>(camera, "camera", fov, "fov",
-            [](const ViewAngleAspectCamera& c) { return c.viewAngleAspectData().fov; });
-    });
+    return getValue<ViewAngleAspectCamera>(__func__, camera, "camera", fov, "fov",
+                                           [](const ViewAngleAspectCamera& c) { return c.viewAngleAspectData().fov; });
 }
 
 TQ3Status Q3ViewAngleAspectCamera_SetAspectRatio(TQ3CameraObject camera, float aspectRatioXToY)

@@ -12,25 +12,10 @@
 #include "io/StringObject.h"
 
 #include <cstdlib>
-#include <cstring>
-#include <new>
 
 using namespace q3;
 using namespace q3::api::elements;
-using q3::api::guardStatus;
-
-namespace {
-
-char* mallocCopy(const std::string& text)
-{
-    char* copy = static_cast<char*>(std::malloc(text.size() + 1));
-    if (copy == nullptr)
-        throw std::bad_alloc();
-    std::memcpy(copy, text.c_str(), text.size() + 1);
-    return copy;
-}
-
-} // namespace
+using namespace q3::api;
 
 extern "C" {
 

@@ -5,8 +5,7 @@
 #include "view/DrawContext.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 extern "C" {
 
@@ -18,56 +17,34 @@ TQ3ObjectType Q3DrawContext_GetType(TQ3DrawContextObject drawContext)
 
 TQ3Status Q3DrawContext_SetData(TQ3DrawContextObject context, const TQ3DrawContextData* contextData)
 {
-    return guardStatus(__func__, [&] {
-        DrawContext& target = lookup<DrawContext>(context, "context");
-        requireNonNull(contextData, "contextData");
-        target.setData(*contextData);
-    });
+    return setValue<DrawContext>(__func__, context, "context", contextData, "contextData", &DrawContext::setData);
 }
 
 TQ3Status Q3DrawContext_GetData(TQ3DrawContextObject context, TQ3DrawContextData* contextData)
 {
-    return guardStatus(__func__, [&] {
-        const DrawContext& source = lookup<DrawContext>(context, "context");
-        requireNonNull(contextData, "contextData");
-        *contextData = source.data();
-    });
+    return getValue<DrawContext>(__func__, context, "context", contextData, "contextData", &DrawContext::data);
 }
 
 TQ3Status Q3DrawContext_SetClearImageColor(TQ3DrawContextObject context, const TQ3ColorARGB* color)
 {
-    return guardStatus(__func__, [&] {
-        DrawContext& target = lookup<DrawContext>(context, "context");
-        requireNonNull(color, "color");
-        target.setClearImageColor(*color);
-    });
+    return setValue<DrawContext>(__func__, context, "context", color, "color", &DrawContext::setClearImageColor);
 }
 
 TQ3Status Q3DrawContext_GetClearImageColor(TQ3DrawContextObject context, TQ3ColorARGB* color)
 {
-    return guardStatus(__func__, [&] {
-        const DrawContext& source = lookup<DrawContext>(context, "context");
-        requireNonNull(color, "color");
-        *color = source.data().clearImageColor;
-    });
+    return getValue<DrawContext>(__func__, context, "context", color, "color",
+                                 [&](const DrawContext& source) { return source.data().clearImageColor; });
 }
 
 TQ3Status Q3DrawContext_SetPane(TQ3DrawContextObject context, const TQ3Area* pane)
 {
-    return guardStatus(__func__, [&] {
-        DrawContext& target = lookup<DrawContext>(context, "context");
-        requireNonNull(pane, "pane");
-        target.setPane(*pane);
-    });
+    return setValue<DrawContext>(__func__, context, "context", pane, "pane", &DrawContext::setPane);
 }
 
 TQ3Status Q3DrawContext_GetPane(TQ3DrawContextObject context, TQ3Area* pane)
 {
-    return guardStatus(__func__, [&] {
-        const DrawContext& source = lookup<DrawContext>(context, "context");
-        requireNonNull(pane, "pane");
-        *pane = source.data().pane;
-    });
+    return getValue<DrawContext>(__func__, context, "context", pane, "pane",
+                                 [&](const DrawContext& source) { return source.data().pane; });
 }
 
 TQ3Status Q3DrawContext_SetPaneState(TQ3DrawContextObject context, TQ3Boolean state)
@@ -78,11 +55,8 @@ TQ3Status Q3DrawContext_SetPaneState(TQ3DrawContextObject context, TQ3Boolean st
 
 TQ3Status Q3DrawContext_GetPaneState(TQ3DrawContextObject context, TQ3Boolean* state)
 {
-    return guardStatus(__func__, [&] {
-        const DrawContext& source = lookup<DrawContext>(context, "context");
-        requireNonNull(state, "state");
-        *state = source.data().paneState;
-    });
+    return getValue<DrawContext>(__func__, context, "context", state, "state",
+                                 [&](const DrawContext& source) { return source.data().paneState; });
 }
 
 TQ3Status Q3DrawContext_SetClearImageMethod(TQ3DrawContextObject context,
@@ -95,29 +69,19 @@ TQ3Status Q3DrawContext_SetClearImageMethod(TQ3DrawContextObject context,
 TQ3Status Q3DrawContext_GetClearImageMethod(TQ3DrawContextObject context,
                                             TQ3DrawContextClearImageMethod* method)
 {
-    return guardStatus(__func__, [&] {
-        const DrawContext& source = lookup<DrawContext>(context, "context");
-        requireNonNull(method, "method");
-        *method = source.data().clearImageMethod;
-    });
+    return getValue<DrawContext>(__func__, context, "context", method, "method",
+                                 [&](const DrawContext& source) { return source.data().clearImageMethod; });
 }
 
 TQ3Status Q3DrawContext_SetMask(TQ3DrawContextObject context, const TQ3Bitmap* mask)
 {
-    return guardStatus(__func__, [&] {
-        DrawContext& target = lookup<DrawContext>(context, "context");
-        requireNonNull(mask, "mask");
-        target.setMask(*mask);
-    });
+    return setValue<DrawContext>(__func__, context, "context", mask, "mask", &DrawContext::setMask);
 }
 
 TQ3Status Q3DrawContext_GetMask(TQ3DrawContextObject context, TQ3Bitmap* mask)
 {
-    return guardStatus(__func__, [&] {
-        const DrawContext& source = lookup<DrawContext>(context, "context");
-        requireNonNull(mask, "mask");
-        *mask = source.data().mask;
-    });
+    return getValue<DrawContext>(__func__, context, "context", mask, "mask",
+                                 [&](const DrawContext& source) -> const TQ3Bitmap& { return source.data().mask; });
 }
 
 TQ3Status Q3DrawContext_SetMaskState(TQ3DrawContextObject context, TQ3Boolean state)
@@ -127,11 +91,8 @@ TQ3Status Q3DrawContext_SetMaskState(TQ3DrawContextObject context, TQ3Boolean st
 
 TQ3Status Q3DrawContext_GetMaskState(TQ3DrawContextObject context, TQ3Boolean* state)
 {
-    return guardStatus(__func__, [&] {
-        const DrawContext& source = lookup<DrawContext>(context, "context");
-        requireNonNull(state, "state");
-        *state = source.data().maskState;
-    });
+    return getValue<DrawContext>(__func__, context, "context", state, "state",
+                                 [&](const DrawContext& source) { return source.data().maskState; });
 }
 
 TQ3Status Q3DrawContext_SetDoubleBufferState(TQ3DrawContextObject context, TQ3Boolean state)
@@ -142,11 +103,8 @@ TQ3Status Q3DrawContext_SetDoubleBufferState(TQ3DrawContextObject context, TQ3Bo
 
 TQ3Status Q3DrawContext_GetDoubleBufferState(TQ3DrawContextObject context, TQ3Boolean* state)
 {
-    return guardStatus(__func__, [&] {
-        const DrawContext& source = lookup<DrawContext>(context, "context");
-        requireNonNull(state, "state");
-        *state = source.data().doubleBufferState;
-    });
+    return getValue<DrawContext>(__func__, context, "context", state, "state",
+                                 [&](const DrawContext& source) { return source.data().doubleBufferState; });
 }
 
 TQ3DrawContextObject Q3PixmapDrawContext_New(const TQ3PixmapDrawContextData* contextData)
@@ -160,20 +118,14 @@ TQ3DrawContextObject Q3PixmapDrawContext_New(const TQ3PixmapDrawContextData* con
 
 TQ3Status Q3PixmapDrawContext_SetPixmap(TQ3DrawContextObject drawContext, const TQ3Pixmap* pixmap)
 {
-    return guardStatus(__func__, [&] {
-        PixmapDrawContext& target = lookup<PixmapDrawContext>(drawContext, "drawContext");
-        requireNonNull(pixmap, "pixmap");
-        target.setPixmap(*pixmap);
-    });
+    return setValue<PixmapDrawContext>(__func__, drawContext, "drawContext", pixmap, "pixmap",
+                                       &PixmapDrawContext::setPixmap);
 }
 
 TQ3Status Q3PixmapDrawContext_GetPixmap(TQ3DrawContextObject drawContext, TQ3Pixmap* pixmap)
 {
-    return guardStatus(__func__, [&] {
-        const PixmapDrawContext& source = lookup<PixmapDrawContext>(drawContext, "drawContext");
-        requireNonNull(pixmap, "pixmap");
-        *pixmap = source.pixmap();
-    });
+    return getValue<PixmapDrawContext>(__func__, drawContext, "drawContext", pixmap, "pixmap",
+                                       &PixmapDrawContext::pixmap);
 }
 
 } // extern "C"

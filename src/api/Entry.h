@@ -6,6 +6,9 @@
 #include "core/ErrorManager.h"
 #include "core/Object.h"
 
+#include <cstdlib>
+#include <cstring>
+#include <functional>
 #include <new>
 #include <string>
 
@@ -48,15 +51,101 @@ TQ3Status guardStatus(const char* function, Body&& body) noexcept
     });
 }
 
+/// A malloc'ed, NUL-terminated copy of text for a C caller to free() (or to
+/// hand to the Q3 call that frees it); std::bad_alloc when memory runs out.
+inline char* mallocCopy(const std::string& text)
+{
+    char* copy = static_cast<char*>(std::malloc(text.size() + 1));
+    if (copy == nullptr)
+        throw std::bad_alloc();
+    std::memcpy(copy, text.c_str(), text.size() + 1);
+    return copy;
+}
+
 /// The Get half of a single-value accessor, in the order every Get checks:
 /// the handle (as a T, called `handleName` in errors), then the output pointer
 /// (`outName`), then *out = read(object). Nothing is written on failure.
+/// `read` may be a member function of T (`&T::data`): the value is then
+/// assigned straight from what it returns, as `*out = object.data()` would.
 template <class T, class Value, class Read>
 void readInto(TQ3Object handle, const char* handleName, Value* out, const char* outName, Read read)
 {
     const T& source = lookup<T>(handle, handleName);
     requireNonNull(out, outName);
-    *out = read(source);
+    *out = std::invoke(read, source);
+}
+
+/// A whole New entry point of a shared T made from one value given through a
+/// pointer (`dataName` in errors); T's constructor checks the value. The
+/// caller owns the one reference of the new object.
+template <class T, class Value>
+TQ3Object newShared(const char* function, const Value* data, const char* dataName) noexcept
+{
+    return guard(function, TQ3Object{nullptr}, [&]() -> TQ3Object {
+        requireNonNull(data, dataName);
+        return makeShared<T>(*data).detach();
+    });
+}
+
+/// A whole Get entry point of one value: readInto under guardStatus.
+template <class T, class Value, class Read>
+TQ3Status getValue(const char* function, TQ3Object handle, const char* handleName, Value* out, const char* outName,
+                   Read read) noexcept
+{
+    return guardStatus(function, [&] { readInto<T>(handle, handleName, out, outName, read); });
+}
+
+/// A whole Set entry point of one value given through a pointer, in the order
+/// every Set checks: the handle (as a T), then the pointer (`inName`), then
+/// write(object, *in), a member function of T that checks the value.
+template <class T, class Value, class Write>
+TQ3Status setValue(const char* function, TQ3Object handle, const char* handleName, const Value* in,
+                   const char* inName, Write write) noexcept
+{
+    return guardStatus(function, [&] {
+        T& target = lookup<T>(handle, handleName);
+        requireNonNull(in, inName);
+        std::invoke(write, target, *in);
+    });
+}
+
+/// A new reference for the caller to an object held, or NULL when none is.
+template <class T>
+TQ3Object handOut(const Ref<T>& held)
+{
+    return Ref<T>(held).detach();
+}
+
+/// The Get and Set entry points of an object a T holds (a view's camera, its
+/// light group). Get hands out a new reference (NULL when none is held); Set
+/// looks the object up, required or optional (NULL clears it), and hands the
+/// T a reference of its own.
+template <class T, class Held>
+TQ3Status getHeld(const char* function, TQ3Object handle, const char* handleName, TQ3Object* out,
+                  const char* outName, const Ref<Held>& (T::*read)() const) noexcept
+{
+    return getValue<T>(function, handle, handleName, out, outName,
+                       [&](const T& source) { return handOut((source.*read)()); });
+}
+
+template <class T, class Held>
+TQ3Status setHeld(const char* function, TQ3Object handle, const char* handleName, TQ3Object object,
+                  const char* objectName, void (T::*write)(Ref<Held>)) noexcept
+{
+    return guardStatus(function, [&] {
+        T& target = lookup<T>(handle, handleName);
+        (target.*write)(lookupRef<Held>(object, objectName));
+    });
+}
+
+template <class T, class Held>
+TQ3Status setHeldOptional(const char* function, TQ3Object handle, const char* handleName, TQ3Object object,
+                          const char* objectName, void (T::*write)(Ref<Held>)) noexcept
+{
+    return guardStatus(function, [&] {
+        T& target = lookup<T>(handle, handleName);
+        (target.*write)(Ref<Held>::retain(lookupOptional<Held>(object, objectName)));
+    });
 }
 
 } // namespace q3::api

@@ -37,10 +37,8 @@ TQ3Status Q3GeneralPolygon_EmptyData(TQ3GeneralPolygonData* generalPolygonData)
 TQ3Status Q3GeneralPolygon_GetVertexPosition(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
                                              unsigned long pointIndex, TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        readInto<GeneralPolygon>(generalPolygon, "generalPolygon", position, "position",
-                                 [&](const GeneralPolygon& p) { return p.vertex(contourIndex, pointIndex).point; });
-    });
+    return getValue<GeneralPolygon>(__func__, generalPolygon, "generalPolygon", position, "position",
+                                    [&](const GeneralPolygon& p) { return p.vertex(contourIndex, pointIndex).point; });
 }
 
 TQ3Status Q3GeneralPolygon_SetVertexPosition(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
@@ -83,10 +81,8 @@ TQ3Status Q3GeneralPolygon_SetShapeHint(TQ3GeometryObject generalPolygon, TQ3Gen
 
 TQ3Status Q3GeneralPolygon_GetShapeHint(TQ3GeometryObject generalPolygon, TQ3GeneralPolygonShapeHint* shapeHint)
 {
-    return guardStatus(__func__, [&] {
-        readInto<GeneralPolygon>(generalPolygon, "generalPolygon", shapeHint, "shapeHint",
-                                 [](const GeneralPolygon& p) { return p.shapeHint(); });
-    });
+    return getValue<GeneralPolygon>(__func__, generalPolygon, "generalPolygon", shapeHint, "shapeHint",
+                                    [](const GeneralPolygon& p) { return p.shapeHint(); });
 }
 
 } // extern "C"

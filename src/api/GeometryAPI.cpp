@@ -6,8 +6,7 @@
 #include "view/View.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 extern "C" {
 
@@ -19,11 +18,8 @@ TQ3ObjectType Q3Geometry_GetType(TQ3GeometryObject geometry)
 
 TQ3Status Q3Geometry_GetAttributeSet(TQ3GeometryObject geometry, TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        const Geometry& source = lookup<Geometry>(geometry, "geometry");
-        requireNonNull(attributeSet, "attributeSet");
-        *attributeSet = attributeSetToHandle(source.attributeSet());
-    });
+    return getValue<Geometry>(__func__, geometry, "geometry", attributeSet, "attributeSet",
+                              [&](const Geometry& source) { return attributeSetToHandle(source.attributeSet()); });
 }
 
 TQ3Status Q3Geometry_SetAttributeSet(TQ3GeometryObject geometry, TQ3AttributeSet attributeSet)

@@ -102,10 +102,8 @@ TQ3GroupPosition Q3Group_AddObjectAfter(TQ3GroupObject group, TQ3GroupPosition p
 
 TQ3Status Q3Group_GetPositionObject(TQ3GroupObject group, TQ3GroupPosition position, TQ3Object* object)
 {
-    return guardStatus(__func__, [&] {
-        const Group& source = lookup<Group>(group, "group");
-        requireNonNull(object, "object");
-        *object = Ref<SharedObject>::retain(&source.objectAt(position)).detach();
+    return getValue<Group>(__func__, group, "group", object, "object", [&](const Group& source) {
+        return Ref<SharedObject>::retain(&source.objectAt(position)).detach();
     });
 }
 
@@ -146,18 +144,14 @@ TQ3Status Q3Group_GetPreviousPosition(TQ3GroupObject group, TQ3GroupPosition* po
 
 TQ3Status Q3Group_CountObjects(TQ3GroupObject group, unsigned long* nObjects)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Group>(group, "group", nObjects, "nObjects",
-                        [](const Group& g) { return static_cast<unsigned long>(g.count()); });
-    });
+    return getValue<Group>(__func__, group, "group", nObjects, "nObjects",
+                           [](const Group& g) { return static_cast<unsigned long>(g.count()); });
 }
 
 TQ3Status Q3Group_CountObjectsOfType(TQ3GroupObject group, TQ3ObjectType isType, unsigned long* nObjects)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Group>(group, "group", nObjects, "nObjects",
-                        [&](const Group& g) { return static_cast<unsigned long>(g.count(isType)); });
-    });
+    return getValue<Group>(__func__, group, "group", nObjects, "nObjects",
+                           [&](const Group& g) { return static_cast<unsigned long>(g.count(isType)); });
 }
 
 TQ3Status Q3Group_EmptyObjects(TQ3GroupObject group)
@@ -223,9 +217,8 @@ TQ3ObjectType Q3DisplayGroup_GetType(TQ3GroupObject group)
 
 TQ3Status Q3DisplayGroup_GetState(TQ3GroupObject group, TQ3DisplayGroupState* state)
 {
-    return guardStatus(__func__, [&] {
-        readInto<DisplayGroup>(group, "group", state, "state", [](const DisplayGroup& g) { return g.state(); });
-    });
+    return getValue<DisplayGroup>(__func__, group, "group", state, "state",
+                                  [](const DisplayGroup& g) { return g.state(); });
 }
 
 TQ3Status Q3DisplayGroup_SetState(TQ3GroupObject group, TQ3DisplayGroupState state)
@@ -243,11 +236,7 @@ TQ3Status Q3DisplayGroup_Submit(TQ3GroupObject group, TQ3ViewObject view)
 
 TQ3Status Q3DisplayGroup_SetAndUseBoundingBox(TQ3GroupObject group, TQ3BoundingBox* bBox)
 {
-    return guardStatus(__func__, [&] {
-        DisplayGroup& target = lookup<DisplayGroup>(group, "group");
-        requireNonNull(bBox, "bBox");
-        target.setBoundingBox(*bBox);
-    });
+    return setValue<DisplayGroup>(__func__, group, "group", bBox, "bBox", &DisplayGroup::setBoundingBox);
 }
 
 TQ3Status Q3DisplayGroup_GetBoundingBox(TQ3GroupObject group, TQ3BoundingBox* bBox)

@@ -6,9 +6,7 @@
 #include "light/Light.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
-using q3::api::readInto;
+using namespace q3::api;
 
 namespace {
 
@@ -79,18 +77,13 @@ TQ3Status Q3Light_SetColor(TQ3LightObject light, const TQ3ColorRGB* color)
 
 TQ3Status Q3Light_GetData(TQ3LightObject light, TQ3LightData* lightData)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Light>(light, "light", lightData, "lightData", [](const Light& source) { return source.lightData(); });
-    });
+    return getValue<Light>(__func__, light, "light", lightData, "lightData",
+                           [](const Light& source) { return source.lightData(); });
 }
 
 TQ3Status Q3Light_SetData(TQ3LightObject light, const TQ3LightData* lightData)
 {
-    return guardStatus(__func__, [&] {
-        Light& target = lookup<Light>(light, "light");
-        requireNonNull(lightData, "lightData");
-        target.setLightData(*lightData);
-    });
+    return setValue<Light>(__func__, light, "light", lightData, "lightData", &Light::setLightData);
 }
 
 } // extern "C"

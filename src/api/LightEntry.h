@@ -17,10 +17,7 @@ namespace q3::api {
 template <class L>
 TQ3LightObject newLight(const char* function, const typename L::DataType* data, const char* dataName)
 {
-    return guard(function, TQ3LightObject{nullptr}, [&]() -> TQ3LightObject {
-        requireNonNull(data, dataName);
-        return makeShared<L>(*data).detach();
-    });
+    return newShared<L>(function, data, dataName);
 }
 
 template <class L>

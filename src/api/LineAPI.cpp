@@ -36,11 +36,8 @@ TQ3Status Q3Line_EmptyData(TQ3LineData* lineData)
 
 TQ3Status Q3Line_GetVertexPosition(TQ3GeometryObject line, unsigned long index, TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        const Line& source = lookup<Line>(line, "line");
-        requireNonNull(position, "position");
-        *position = source.vertex(index).point;
-    });
+    return getValue<Line>(__func__, line, "line", position, "position",
+                          [&](const Line& source) { return source.vertex(index).point; });
 }
 
 TQ3Status Q3Line_SetVertexPosition(TQ3GeometryObject line, unsigned long index, const TQ3Point3D* position)
@@ -55,11 +52,8 @@ TQ3Status Q3Line_SetVertexPosition(TQ3GeometryObject line, unsigned long index, 
 TQ3Status Q3Line_GetVertexAttributeSet(TQ3GeometryObject line, unsigned long index,
                                        TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        const Line& source = lookup<Line>(line, "line");
-        requireNonNull(attributeSet, "attributeSet");
-        *attributeSet = attributeSetToHandle(source.vertexAttributeSet(index));
-    });
+    return getValue<Line>(__func__, line, "line", attributeSet, "attributeSet",
+                          [&](const Line& source) { return attributeSetToHandle(source.vertexAttributeSet(index)); });
 }
 
 TQ3Status Q3Line_SetVertexAttributeSet(TQ3GeometryObject line, unsigned long index,

@@ -36,25 +36,19 @@ TQ3Status Q3Marker_EmptyData(TQ3MarkerData* markerData)
 
 TQ3Status Q3Marker_GetPosition(TQ3GeometryObject marker, TQ3Point3D* location)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Marker>(marker, "marker", location, "location", [](const Marker& m) { return m.data().location; });
-    });
+    return getValue<Marker>(__func__, marker, "marker", location, "location",
+                            [](const Marker& m) { return m.data().location; });
 }
 
 TQ3Status Q3Marker_SetPosition(TQ3GeometryObject marker, const TQ3Point3D* location)
 {
-    return guardStatus(__func__, [&] {
-        Marker& target = lookup<Marker>(marker, "marker");
-        requireNonNull(location, "location");
-        target.setPosition(*location);
-    });
+    return setValue<Marker>(__func__, marker, "marker", location, "location", &Marker::setPosition);
 }
 
 TQ3Status Q3Marker_GetXOffset(TQ3GeometryObject marker, long* xOffset)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Marker>(marker, "marker", xOffset, "xOffset", [](const Marker& m) { return m.data().xOffset; });
-    });
+    return getValue<Marker>(__func__, marker, "marker", xOffset, "xOffset",
+                            [](const Marker& m) { return m.data().xOffset; });
 }
 
 TQ3Status Q3Marker_SetXOffset(TQ3GeometryObject marker, long xOffset)
@@ -64,9 +58,8 @@ TQ3Status Q3Marker_SetXOffset(TQ3GeometryObject marker, long xOffset)
 
 TQ3Status Q3Marker_GetYOffset(TQ3GeometryObject marker, long* yOffset)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Marker>(marker, "marker", yOffset, "yOffset", [](const Marker& m) { return m.data().yOffset; });
-    });
+    return getValue<Marker>(__func__, marker, "marker", yOffset, "yOffset",
+                            [](const Marker& m) { return m.data().yOffset; });
 }
 
 TQ3Status Q3Marker_SetYOffset(TQ3GeometryObject marker, long yOffset)
@@ -85,11 +78,7 @@ TQ3Status Q3Marker_GetBitmap(TQ3GeometryObject marker, TQ3Bitmap* bitmap)
 
 TQ3Status Q3Marker_SetBitmap(TQ3GeometryObject marker, const TQ3Bitmap* bitmap)
 {
-    return guardStatus(__func__, [&] {
-        Marker& target = lookup<Marker>(marker, "marker");
-        requireNonNull(bitmap, "bitmap");
-        target.setBitmap(*bitmap);
-    });
+    return setValue<Marker>(__func__, marker, "marker", bitmap, "bitmap", &Marker::setBitmap);
 }
 
 } // extern "C"

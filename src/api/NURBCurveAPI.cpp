@@ -47,11 +47,8 @@ TQ3Status Q3NURBCurve_SetControlPoint(TQ3GeometryObject curve, unsigned long poi
 TQ3Status Q3NURBCurve_GetControlPoint(TQ3GeometryObject curve, unsigned long pointIndex,
                                       TQ3RationalPoint4D* point4D)
 {
-    return guardStatus(__func__, [&] {
-        const NURBCurve& source = lookup<NURBCurve>(curve, "curve");
-        requireNonNull(point4D, "point4D");
-        *point4D = source.controlPoint(pointIndex);
-    });
+    return getValue<NURBCurve>(__func__, curve, "curve", point4D, "point4D",
+                               [&](const NURBCurve& source) { return source.controlPoint(pointIndex); });
 }
 
 TQ3Status Q3NURBCurve_SetKnot(TQ3GeometryObject curve, unsigned long knotIndex, float knotValue)
@@ -62,11 +59,8 @@ TQ3Status Q3NURBCurve_SetKnot(TQ3GeometryObject curve, unsigned long knotIndex, 
 
 TQ3Status Q3NURBCurve_GetKnot(TQ3GeometryObject curve, unsigned long knotIndex, float* knotValue)
 {
-    return guardStatus(__func__, [&] {
-        const NURBCurve& source = lookup<NURBCurve>(curve, "curve");
-        requireNonNull(knotValue, "knotValue");
-        *knotValue = source.knot(knotIndex);
-    });
+    return getValue<NURBCurve>(__func__, curve, "curve", knotValue, "knotValue",
+                               [&](const NURBCurve& source) { return source.knot(knotIndex); });
 }
 
 } // extern "C"

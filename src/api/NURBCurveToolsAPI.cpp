@@ -11,13 +11,36 @@
 // changing it. Pointers are checked left to right before the curve's rules.
 
 using namespace q3;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 namespace {
 
 nurbs::CurveRef retained(TQ3GeometryObject curve)
 {
     return lookup<NURBCurve>(curve, "curve").curve();
+}
+
+// The two forms of a tool with one result. The data form checks curveData,
+// then `out`, then the curve's rules; the object form looks the curve up, then
+// checks `out`. Then *out = tool(curve).
+template <class Out, class Tool>
+TQ3Status dataTool(const char* function, const TQ3NURBCurveData* curveData, Out* out, const char* outName, Tool tool)
+{
+    return guardStatus(function, [&] {
+        requireNonNull(curveData, "curveData");
+        requireNonNull(out, outName);
+        *out = tool(curvetools::checkedCurve(curveData));
+    });
+}
+
+template <class Out, class Tool>
+TQ3Status objectTool(const char* function, TQ3GeometryObject curve, Out* out, const char* outName, Tool tool)
+{
+    return guardStatus(function, [&] {
+        const nurbs::CurveRef ref = retained(curve);
+        requireNonNull(out, outName);
+        *out = tool(ref);
+    });
 }
 
 } // namespace
@@ -46,20 +69,14 @@ TQ3Status Q3NURBCurve_GetDomain(TQ3GeometryObject curve, float* start, float* en
 
 TQ3Status Q3NURBCurveData_Evaluate(const TQ3NURBCurveData* curveData, float t, TQ3Point3D* point)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(point, "point");
-        *point = curvetools::evaluate(curvetools::checkedCurve(curveData), t);
-    });
+    return dataTool(__func__, curveData, point, "point",
+                    [&](const nurbs::CurveRef& c) { return curvetools::evaluate(c, t); });
 }
 
 TQ3Status Q3NURBCurve_Evaluate(TQ3GeometryObject curve, float t, TQ3Point3D* point)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(point, "point");
-        *point = curvetools::evaluate(ref, t);
-    });
+    return objectTool(__func__, curve, point, "point",
+                      [&](const nurbs::CurveRef& c) { return curvetools::evaluate(c, t); });
 }
 
 TQ3Status Q3NURBCurveData_EvaluateDerivatives(const TQ3NURBCurveData* curveData, float t, TQ3Point3D* point,
@@ -89,57 +106,39 @@ TQ3Status Q3NURBCurve_EvaluateDerivatives(TQ3GeometryObject curve, float t, TQ3P
 
 TQ3Status Q3NURBCurveData_GetTangent(const TQ3NURBCurveData* curveData, float t, TQ3Vector3D* tangent)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(tangent, "tangent");
-        *tangent = curvetools::getTangent(curvetools::checkedCurve(curveData), t);
-    });
+    return dataTool(__func__, curveData, tangent, "tangent",
+                    [&](const nurbs::CurveRef& c) { return curvetools::getTangent(c, t); });
 }
 
 TQ3Status Q3NURBCurve_GetTangent(TQ3GeometryObject curve, float t, TQ3Vector3D* tangent)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(tangent, "tangent");
-        *tangent = curvetools::getTangent(ref, t);
-    });
+    return objectTool(__func__, curve, tangent, "tangent",
+                      [&](const nurbs::CurveRef& c) { return curvetools::getTangent(c, t); });
 }
 
 TQ3Status Q3NURBCurveData_GetCurvature(const TQ3NURBCurveData* curveData, float t, float* curvature)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(curvature, "curvature");
-        *curvature = curvetools::getCurvature(curvetools::checkedCurve(curveData), t);
-    });
+    return dataTool(__func__, curveData, curvature, "curvature",
+                    [&](const nurbs::CurveRef& c) { return curvetools::getCurvature(c, t); });
 }
 
 TQ3Status Q3NURBCurve_GetCurvature(TQ3GeometryObject curve, float t, float* curvature)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(curvature, "curvature");
-        *curvature = curvetools::getCurvature(ref, t);
-    });
+    return objectTool(__func__, curve, curvature, "curvature",
+                      [&](const nurbs::CurveRef& c) { return curvetools::getCurvature(c, t); });
 }
 
 TQ3Status Q3NURBCurveData_InsertKnot(const TQ3NURBCurveData* curveData, float knot, unsigned long times,
                                      TQ3NURBCurveData* result)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(result, "result");
-        *result = curvetools::insertKnot(curvetools::checkedCurve(curveData), knot, times);
-    });
+    return dataTool(__func__, curveData, result, "result",
+                    [&](const nurbs::CurveRef& c) { return curvetools::insertKnot(c, knot, times); });
 }
 
 TQ3Status Q3NURBCurve_InsertKnot(TQ3GeometryObject curve, float knot, unsigned long times, TQ3NURBCurveData* result)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(result, "result");
-        *result = curvetools::insertKnot(ref, knot, times);
-    });
+    return objectTool(__func__, curve, result, "result",
+                      [&](const nurbs::CurveRef& c) { return curvetools::insertKnot(c, knot, times); });
 }
 
 TQ3Status Q3NURBCurveData_RefineKnots(const TQ3NURBCurveData* curveData, unsigned long numKnots, const float* knots,
@@ -192,57 +191,39 @@ TQ3Status Q3NURBCurve_RemoveKnot(TQ3GeometryObject curve, unsigned long knotInde
 TQ3Status Q3NURBCurveData_ElevateDegree(const TQ3NURBCurveData* curveData, unsigned long times,
                                         TQ3NURBCurveData* result)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(result, "result");
-        *result = curvetools::elevateDegree(curvetools::checkedCurve(curveData), times);
-    });
+    return dataTool(__func__, curveData, result, "result",
+                    [&](const nurbs::CurveRef& c) { return curvetools::elevateDegree(c, times); });
 }
 
 TQ3Status Q3NURBCurve_ElevateDegree(TQ3GeometryObject curve, unsigned long times, TQ3NURBCurveData* result)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(result, "result");
-        *result = curvetools::elevateDegree(ref, times);
-    });
+    return objectTool(__func__, curve, result, "result",
+                      [&](const nurbs::CurveRef& c) { return curvetools::elevateDegree(c, times); });
 }
 
 TQ3Status Q3NURBCurveData_CountBezierPieces(const TQ3NURBCurveData* curveData, unsigned long* numPieces)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(numPieces, "numPieces");
-        *numPieces = curvetools::countBezierPieces(curvetools::checkedCurve(curveData));
-    });
+    return dataTool(__func__, curveData, numPieces, "numPieces",
+                    [&](const nurbs::CurveRef& c) { return curvetools::countBezierPieces(c); });
 }
 
 TQ3Status Q3NURBCurve_CountBezierPieces(TQ3GeometryObject curve, unsigned long* numPieces)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(numPieces, "numPieces");
-        *numPieces = curvetools::countBezierPieces(ref);
-    });
+    return objectTool(__func__, curve, numPieces, "numPieces",
+                      [&](const nurbs::CurveRef& c) { return curvetools::countBezierPieces(c); });
 }
 
 TQ3Status Q3NURBCurveData_GetBezierPiece(const TQ3NURBCurveData* curveData, unsigned long pieceIndex,
                                          TQ3NURBCurveData* piece)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(piece, "piece");
-        *piece = curvetools::getBezierPiece(curvetools::checkedCurve(curveData), pieceIndex);
-    });
+    return dataTool(__func__, curveData, piece, "piece",
+                    [&](const nurbs::CurveRef& c) { return curvetools::getBezierPiece(c, pieceIndex); });
 }
 
 TQ3Status Q3NURBCurve_GetBezierPiece(TQ3GeometryObject curve, unsigned long pieceIndex, TQ3NURBCurveData* piece)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(piece, "piece");
-        *piece = curvetools::getBezierPiece(ref, pieceIndex);
-    });
+    return objectTool(__func__, curve, piece, "piece",
+                      [&](const nurbs::CurveRef& c) { return curvetools::getBezierPiece(c, pieceIndex); });
 }
 
 TQ3Status Q3NURBCurveData_Split(const TQ3NURBCurveData* curveData, float t, TQ3NURBCurveData* left,
@@ -269,40 +250,32 @@ TQ3Status Q3NURBCurve_Split(TQ3GeometryObject curve, float t, TQ3NURBCurveData* 
 TQ3Status Q3NURBCurveData_GetArcLength(const TQ3NURBCurveData* curveData, float t0, float t1, float tolerance,
                                        float* length)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(length, "length");
-        *length = curvetools::getArcLength(curvetools::checkedCurve(curveData), t0, t1, tolerance);
-    });
+    return dataTool(__func__, curveData, length, "length",
+                    [&](const nurbs::CurveRef& c) { return curvetools::getArcLength(c, t0, t1, tolerance); });
 }
 
 TQ3Status Q3NURBCurve_GetArcLength(TQ3GeometryObject curve, float t0, float t1, float tolerance, float* length)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(length, "length");
-        *length = curvetools::getArcLength(ref, t0, t1, tolerance);
-    });
+    return objectTool(__func__, curve, length, "length",
+                      [&](const nurbs::CurveRef& c) { return curvetools::getArcLength(c, t0, t1, tolerance); });
 }
 
 TQ3Status Q3NURBCurveData_GetParameterAtLength(const TQ3NURBCurveData* curveData, float t0, float length,
                                                float tolerance, float* t)
 {
-    return guardStatus(__func__, [&] {
-        requireNonNull(curveData, "curveData");
-        requireNonNull(t, "t");
-        *t = curvetools::getParameterAtLength(curvetools::checkedCurve(curveData), t0, length, tolerance);
-    });
+    return dataTool(__func__, curveData, t, "t",
+                    [&](const nurbs::CurveRef& c) {
+                        return curvetools::getParameterAtLength(c, t0, length, tolerance);
+                    });
 }
 
 TQ3Status Q3NURBCurve_GetParameterAtLength(TQ3GeometryObject curve, float t0, float length, float tolerance,
                                            float* t)
 {
-    return guardStatus(__func__, [&] {
-        const nurbs::CurveRef ref = retained(curve);
-        requireNonNull(t, "t");
-        *t = curvetools::getParameterAtLength(ref, t0, length, tolerance);
-    });
+    return objectTool(__func__, curve, t, "t",
+                      [&](const nurbs::CurveRef& c) {
+                          return curvetools::getParameterAtLength(c, t0, length, tolerance);
+                      });
 }
 
 TQ3Status Q3NURBCurveData_GetClosestPoint(const TQ3NURBCurveData* curveData, const TQ3Point3D* point, float* t,

@@ -47,11 +47,8 @@ TQ3Status Q3NURBPatch_SetControlPoint(TQ3GeometryObject nurbPatch, unsigned long
 TQ3Status Q3NURBPatch_GetControlPoint(TQ3GeometryObject nurbPatch, unsigned long rowIndex, unsigned long columnIndex,
                                       TQ3RationalPoint4D* point4D)
 {
-    return guardStatus(__func__, [&] {
-        const NURBPatch& source = lookup<NURBPatch>(nurbPatch, "nurbPatch");
-        requireNonNull(point4D, "point4D");
-        *point4D = source.controlPoint(rowIndex, columnIndex);
-    });
+    return getValue<NURBPatch>(__func__, nurbPatch, "nurbPatch", point4D, "point4D",
+                               [&](const NURBPatch& source) { return source.controlPoint(rowIndex, columnIndex); });
 }
 
 TQ3Status Q3NURBPatch_SetUKnot(TQ3GeometryObject nurbPatch, unsigned long knotIndex, float knotValue)
@@ -66,20 +63,14 @@ TQ3Status Q3NURBPatch_SetVKnot(TQ3GeometryObject nurbPatch, unsigned long knotIn
 
 TQ3Status Q3NURBPatch_GetUKnot(TQ3GeometryObject nurbPatch, unsigned long knotIndex, float* knotValue)
 {
-    return guardStatus(__func__, [&] {
-        const NURBPatch& source = lookup<NURBPatch>(nurbPatch, "nurbPatch");
-        requireNonNull(knotValue, "knotValue");
-        *knotValue = source.uKnot(knotIndex);
-    });
+    return getValue<NURBPatch>(__func__, nurbPatch, "nurbPatch", knotValue, "knotValue",
+                               [&](const NURBPatch& source) { return source.uKnot(knotIndex); });
 }
 
 TQ3Status Q3NURBPatch_GetVKnot(TQ3GeometryObject nurbPatch, unsigned long knotIndex, float* knotValue)
 {
-    return guardStatus(__func__, [&] {
-        const NURBPatch& source = lookup<NURBPatch>(nurbPatch, "nurbPatch");
-        requireNonNull(knotValue, "knotValue");
-        *knotValue = source.vKnot(knotIndex);
-    });
+    return getValue<NURBPatch>(__func__, nurbPatch, "nurbPatch", knotValue, "knotValue",
+                               [&](const NURBPatch& source) { return source.vKnot(knotIndex); });
 }
 
 } // extern "C"

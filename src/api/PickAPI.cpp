@@ -8,11 +8,10 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
-using q3::api::readInto;
+using namespace q3::api;
 
 namespace {
 
@@ -25,9 +24,38 @@ TQ3PickObject newPick(const char* function, const Data* data)
     });
 }
 
-constexpr const char* kPointName = "a window-point pick";
-constexpr const char* kRectName = "a window-rect pick";
-constexpr const char* kRayName = "a world-ray pick";
+// A pick kind and how errors name it.
+struct KindOf {
+    Pick::Kind kind;
+    const char* name;
+};
+
+constexpr KindOf kPoint{Pick::Kind::kWindowPoint, "a window-point pick"};
+constexpr KindOf kRect{Pick::Kind::kWindowRect, "a window-rect pick"};
+constexpr KindOf kRay{Pick::Kind::kWorldRay, "a world-ray pick"};
+
+// The Get and Set of one kind's value: the pick (of that kind), then the
+// pointer, then *out = read(pick) or write(pick, *in).
+template <class Value, class Read>
+TQ3Status getOfKind(const char* function, TQ3PickObject pick, KindOf kind, Value* out, const char* outName, Read read)
+{
+    return guardStatus(function, [&] {
+        const Pick& source = Pick::ofKind(pick, kind.kind, kind.name);
+        requireNonNull(out, outName);
+        *out = std::invoke(read, source);
+    });
+}
+
+template <class Value>
+TQ3Status setOfKind(const char* function, TQ3PickObject pick, KindOf kind, const Value* in, const char* inName,
+                    void (Pick::*write)(const Value&))
+{
+    return guardStatus(function, [&] {
+        Pick& target = Pick::ofKind(pick, kind.kind, kind.name);
+        requireNonNull(in, inName);
+        (target.*write)(*in);
+    });
+}
 
 // Writes one detail of a hit to detailData, as its type.
 void writeDetail(const PickHit& hit, TQ3PickDetail detail, void* detailData)
@@ -93,33 +121,24 @@ TQ3ObjectType Q3Pick_GetType(TQ3PickObject pick)
 
 TQ3Status Q3Pick_GetData(TQ3PickObject pick, TQ3PickData* data)
 {
-    return guardStatus(__func__,
-                       [&] { readInto<Pick>(pick, "pick", data, "data", [](const Pick& p) { return p.data(); }); });
+    return getValue<Pick>(__func__, pick, "pick", data, "data", [](const Pick& p) { return p.data(); });
 }
 
 TQ3Status Q3Pick_SetData(TQ3PickObject pick, const TQ3PickData* data)
 {
-    return guardStatus(__func__, [&] {
-        Pick& target = lookup<Pick>(pick, "pick");
-        requireNonNull(data, "data");
-        target.setData(*data);
-    });
+    return setValue<Pick>(__func__, pick, "pick", data, "data", &Pick::setData);
 }
 
 TQ3Status Q3Pick_GetVertexTolerance(TQ3PickObject pick, float* vertexTolerance)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Pick>(pick, "pick", vertexTolerance, "vertexTolerance",
-                       [](const Pick& p) { return p.vertexTolerance(); });
-    });
+    return getValue<Pick>(__func__, pick, "pick", vertexTolerance, "vertexTolerance",
+                          [](const Pick& p) { return p.vertexTolerance(); });
 }
 
 TQ3Status Q3Pick_GetEdgeTolerance(TQ3PickObject pick, float* edgeTolerance)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Pick>(pick, "pick", edgeTolerance, "edgeTolerance",
-                       [](const Pick& p) { return p.edgeTolerance(); });
-    });
+    return getValue<Pick>(__func__, pick, "pick", edgeTolerance, "edgeTolerance",
+                          [](const Pick& p) { return p.edgeTolerance(); });
 }
 
 TQ3Status Q3Pick_SetVertexTolerance(TQ3PickObject pick, float vertexTolerance)
@@ -134,9 +153,8 @@ TQ3Status Q3Pick_SetEdgeTolerance(TQ3PickObject pick, float edgeTolerance)
 
 TQ3Status Q3Pick_GetNumHits(TQ3PickObject pick, unsigned long* numHits)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Pick>(pick, "pick", numHits, "numHits", [](const Pick& p) { return static_cast<unsigned long>(p.hitCount()); });
-    });
+    return getValue<Pick>(__func__, pick, "pick", numHits, "numHits",
+                          [](const Pick& p) { return static_cast<unsigned long>(p.hitCount()); });
 }
 
 TQ3Status Q3Pick_EmptyHitList(TQ3PickObject pick)
@@ -146,11 +164,8 @@ TQ3Status Q3Pick_EmptyHitList(TQ3PickObject pick)
 
 TQ3Status Q3Pick_GetPickDetailValidMask(TQ3PickObject pick, unsigned long index, TQ3PickDetail* pickDetailValidMask)
 {
-    return guardStatus(__func__, [&] {
-        const Pick& source = lookup<Pick>(pick, "pick");
-        requireNonNull(pickDetailValidMask, "pickDetailValidMask");
-        *pickDetailValidMask = source.hit(index).valid;
-    });
+    return getValue<Pick>(__func__, pick, "pick", pickDetailValidMask, "pickDetailValidMask",
+                          [&](const Pick& source) { return source.hit(index).valid; });
 }
 
 TQ3Status Q3Pick_GetPickDetailData(TQ3PickObject pick, unsigned long index, TQ3PickDetail pickDetailValue,
@@ -194,38 +209,22 @@ TQ3PickObject Q3WindowPointPick_New(const TQ3WindowPointPickData* data)
 
 TQ3Status Q3WindowPointPick_GetPoint(TQ3PickObject pick, TQ3Point2D* point)
 {
-    return guardStatus(__func__, [&] {
-        const Pick& source = Pick::ofKind(pick, Pick::Kind::kWindowPoint, kPointName);
-        requireNonNull(point, "point");
-        *point = source.windowPoint().point;
-    });
+    return getOfKind(__func__, pick, kPoint, point, "point", [](const Pick& p) { return p.windowPoint().point; });
 }
 
 TQ3Status Q3WindowPointPick_SetPoint(TQ3PickObject pick, const TQ3Point2D* point)
 {
-    return guardStatus(__func__, [&] {
-        Pick& target = Pick::ofKind(pick, Pick::Kind::kWindowPoint, kPointName);
-        requireNonNull(point, "point");
-        target.setPoint(*point);
-    });
+    return setOfKind(__func__, pick, kPoint, point, "point", &Pick::setPoint);
 }
 
 TQ3Status Q3WindowPointPick_GetData(TQ3PickObject pick, TQ3WindowPointPickData* data)
 {
-    return guardStatus(__func__, [&] {
-        const Pick& source = Pick::ofKind(pick, Pick::Kind::kWindowPoint, kPointName);
-        requireNonNull(data, "data");
-        *data = source.windowPoint();
-    });
+    return getOfKind(__func__, pick, kPoint, data, "data", &Pick::windowPoint);
 }
 
 TQ3Status Q3WindowPointPick_SetData(TQ3PickObject pick, const TQ3WindowPointPickData* data)
 {
-    return guardStatus(__func__, [&] {
-        Pick& target = Pick::ofKind(pick, Pick::Kind::kWindowPoint, kPointName);
-        requireNonNull(data, "data");
-        target.setWindowPoint(*data);
-    });
+    return setOfKind(__func__, pick, kPoint, data, "data", &Pick::setWindowPoint);
 }
 
 TQ3PickObject Q3WindowRectPick_New(const TQ3WindowRectPickData* data)
@@ -235,38 +234,22 @@ TQ3PickObject Q3WindowRectPick_New(const TQ3WindowRectPickData* data)
 
 TQ3Status Q3WindowRectPick_GetRect(TQ3PickObject pick, TQ3Area* rect)
 {
-    return guardStatus(__func__, [&] {
-        const Pick& source = Pick::ofKind(pick, Pick::Kind::kWindowRect, kRectName);
-        requireNonNull(rect, "rect");
-        *rect = source.windowRect().rect;
-    });
+    return getOfKind(__func__, pick, kRect, rect, "rect", [](const Pick& p) { return p.windowRect().rect; });
 }
 
 TQ3Status Q3WindowRectPick_SetRect(TQ3PickObject pick, const TQ3Area* rect)
 {
-    return guardStatus(__func__, [&] {
-        Pick& target = Pick::ofKind(pick, Pick::Kind::kWindowRect, kRectName);
-        requireNonNull(rect, "rect");
-        target.setRect(*rect);
-    });
+    return setOfKind(__func__, pick, kRect, rect, "rect", &Pick::setRect);
 }
 
 TQ3Status Q3WindowRectPick_GetData(TQ3PickObject pick, TQ3WindowRectPickData* data)
 {
-    return guardStatus(__func__, [&] {
-        const Pick& source = Pick::ofKind(pick, Pick::Kind::kWindowRect, kRectName);
-        requireNonNull(data, "data");
-        *data = source.windowRect();
-    });
+    return getOfKind(__func__, pick, kRect, data, "data", &Pick::windowRect);
 }
 
 TQ3Status Q3WindowRectPick_SetData(TQ3PickObject pick, const TQ3WindowRectPickData* data)
 {
-    return guardStatus(__func__, [&] {
-        Pick& target = Pick::ofKind(pick, Pick::Kind::kWindowRect, kRectName);
-        requireNonNull(data, "data");
-        target.setWindowRect(*data);
-    });
+    return setOfKind(__func__, pick, kRect, data, "data", &Pick::setWindowRect);
 }
 
 TQ3PickObject Q3WorldRayPick_New(const TQ3WorldRayPickData* data)
@@ -276,38 +259,22 @@ TQ3PickObject Q3WorldRayPick_New(const TQ3WorldRayPickData* data)
 
 TQ3Status Q3WorldRayPick_GetRay(TQ3PickObject pick, TQ3Ray3D* ray)
 {
-    return guardStatus(__func__, [&] {
-        const Pick& source = Pick::ofKind(pick, Pick::Kind::kWorldRay, kRayName);
-        requireNonNull(ray, "ray");
-        *ray = source.worldRay().ray;
-    });
+    return getOfKind(__func__, pick, kRay, ray, "ray", [](const Pick& p) { return p.worldRay().ray; });
 }
 
 TQ3Status Q3WorldRayPick_SetRay(TQ3PickObject pick, const TQ3Ray3D* ray)
 {
-    return guardStatus(__func__, [&] {
-        Pick& target = Pick::ofKind(pick, Pick::Kind::kWorldRay, kRayName);
-        requireNonNull(ray, "ray");
-        target.setRay(*ray);
-    });
+    return setOfKind(__func__, pick, kRay, ray, "ray", &Pick::setRay);
 }
 
 TQ3Status Q3WorldRayPick_GetData(TQ3PickObject pick, TQ3WorldRayPickData* data)
 {
-    return guardStatus(__func__, [&] {
-        const Pick& source = Pick::ofKind(pick, Pick::Kind::kWorldRay, kRayName);
-        requireNonNull(data, "data");
-        *data = source.worldRay();
-    });
+    return getOfKind(__func__, pick, kRay, data, "data", &Pick::worldRay);
 }
 
 TQ3Status Q3WorldRayPick_SetData(TQ3PickObject pick, const TQ3WorldRayPickData* data)
 {
-    return guardStatus(__func__, [&] {
-        Pick& target = Pick::ofKind(pick, Pick::Kind::kWorldRay, kRayName);
-        requireNonNull(data, "data");
-        target.setWorldRay(*data);
-    });
+    return setOfKind(__func__, pick, kRay, data, "data", &Pick::setWorldRay);
 }
 
 } // extern "C"

@@ -36,27 +36,20 @@ TQ3Status Q3PixmapMarker_EmptyData(TQ3PixmapMarkerData* pixmapMarkerData)
 
 TQ3Status Q3PixmapMarker_GetPosition(TQ3GeometryObject pixmapMarker, TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        readInto<PixmapMarker>(pixmapMarker, "pixmapMarker", position, "position",
-                               [](const PixmapMarker& m) { return m.data().position; });
-    });
+    return getValue<PixmapMarker>(__func__, pixmapMarker, "pixmapMarker", position, "position",
+                                  [](const PixmapMarker& m) { return m.data().position; });
 }
 
 TQ3Status Q3PixmapMarker_SetPosition(TQ3GeometryObject pixmapMarker, const TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        PixmapMarker& target = lookup<PixmapMarker>(pixmapMarker, "pixmapMarker");
-        requireNonNull(position, "position");
-        target.setPosition(*position);
-    });
+    return setValue<PixmapMarker>(__func__, pixmapMarker, "pixmapMarker", position, "position",
+                                  &PixmapMarker::setPosition);
 }
 
 TQ3Status Q3PixmapMarker_GetXOffset(TQ3GeometryObject pixmapMarker, long* xOffset)
 {
-    return guardStatus(__func__, [&] {
-        readInto<PixmapMarker>(pixmapMarker, "pixmapMarker", xOffset, "xOffset",
-                               [](const PixmapMarker& m) { return m.data().xOffset; });
-    });
+    return getValue<PixmapMarker>(__func__, pixmapMarker, "pixmapMarker", xOffset, "xOffset",
+                                  [](const PixmapMarker& m) { return m.data().xOffset; });
 }
 
 TQ3Status Q3PixmapMarker_SetXOffset(TQ3GeometryObject pixmapMarker, long xOffset)
@@ -66,10 +59,8 @@ TQ3Status Q3PixmapMarker_SetXOffset(TQ3GeometryObject pixmapMarker, long xOffset
 
 TQ3Status Q3PixmapMarker_GetYOffset(TQ3GeometryObject pixmapMarker, long* yOffset)
 {
-    return guardStatus(__func__, [&] {
-        readInto<PixmapMarker>(pixmapMarker, "pixmapMarker", yOffset, "yOffset",
-                               [](const PixmapMarker& m) { return m.data().yOffset; });
-    });
+    return getValue<PixmapMarker>(__func__, pixmapMarker, "pixmapMarker", yOffset, "yOffset",
+                                  [](const PixmapMarker& m) { return m.data().yOffset; });
 }
 
 TQ3Status Q3PixmapMarker_SetYOffset(TQ3GeometryObject pixmapMarker, long yOffset)
@@ -88,11 +79,7 @@ TQ3Status Q3PixmapMarker_GetPixmap(TQ3GeometryObject pixmapMarker, TQ3StoragePix
 
 TQ3Status Q3PixmapMarker_SetPixmap(TQ3GeometryObject pixmapMarker, const TQ3StoragePixmap* pixmap)
 {
-    return guardStatus(__func__, [&] {
-        PixmapMarker& target = lookup<PixmapMarker>(pixmapMarker, "pixmapMarker");
-        requireNonNull(pixmap, "pixmap");
-        target.setPixmap(*pixmap);
-    });
+    return setValue<PixmapMarker>(__func__, pixmapMarker, "pixmapMarker", pixmap, "pixmap", &PixmapMarker::setPixmap);
 }
 
 } // extern "C"

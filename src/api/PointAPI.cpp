@@ -36,18 +36,12 @@ TQ3Status Q3Point_EmptyData(TQ3PointData* pointData)
 
 TQ3Status Q3Point_SetPosition(TQ3GeometryObject point, const TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        Point& target = lookup<Point>(point, "point");
-        requireNonNull(position, "position");
-        target.setPosition(*position);
-    });
+    return setValue<Point>(__func__, point, "point", position, "position", &Point::setPosition);
 }
 
 TQ3Status Q3Point_GetPosition(TQ3GeometryObject point, TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Point>(point, "point", position, "position", [](const Point& p) { return p.point(); });
-    });
+    return getValue<Point>(__func__, point, "point", position, "position", [](const Point& p) { return p.point(); });
 }
 
 } // extern "C"

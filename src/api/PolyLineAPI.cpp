@@ -37,11 +37,8 @@ TQ3Status Q3PolyLine_EmptyData(TQ3PolyLineData* polyLineData)
 TQ3Status Q3PolyLine_GetVertexPosition(TQ3GeometryObject polyLine, unsigned long index,
                                        TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        const PolyLine& source = lookup<PolyLine>(polyLine, "polyLine");
-        requireNonNull(position, "position");
-        *position = source.vertex(index).point;
-    });
+    return getValue<PolyLine>(__func__, polyLine, "polyLine", position, "position",
+                              [&](const PolyLine& source) { return source.vertex(index).point; });
 }
 
 TQ3Status Q3PolyLine_SetVertexPosition(TQ3GeometryObject polyLine, unsigned long index,

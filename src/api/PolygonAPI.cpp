@@ -36,10 +36,8 @@ TQ3Status Q3Polygon_EmptyData(TQ3PolygonData* polygonData)
 
 TQ3Status Q3Polygon_GetVertexPosition(TQ3GeometryObject polygon, unsigned long index, TQ3Point3D* point)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Polygon>(polygon, "polygon", point, "point",
-                           [&](const Polygon& t) { return t.vertex(index).point; });
-    });
+    return getValue<Polygon>(__func__, polygon, "polygon", point, "point",
+                             [&](const Polygon& t) { return t.vertex(index).point; });
 }
 
 TQ3Status Q3Polygon_SetVertexPosition(TQ3GeometryObject polygon, unsigned long index, const TQ3Point3D* point)
@@ -54,10 +52,8 @@ TQ3Status Q3Polygon_SetVertexPosition(TQ3GeometryObject polygon, unsigned long i
 TQ3Status Q3Polygon_GetVertexAttributeSet(TQ3GeometryObject polygon, unsigned long index,
                                            TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Polygon>(polygon, "polygon", attributeSet, "attributeSet", [&](const Polygon& t) {
-            return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
-        });
+    return getValue<Polygon>(__func__, polygon, "polygon", attributeSet, "attributeSet", [&](const Polygon& t) {
+        return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
     });
 }
 

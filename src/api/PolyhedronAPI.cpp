@@ -45,10 +45,8 @@ TQ3Status Q3Polyhedron_SetVertexPosition(TQ3GeometryObject polyhedron, unsigned 
 
 TQ3Status Q3Polyhedron_GetVertexPosition(TQ3GeometryObject polyhedron, unsigned long index, TQ3Point3D* point)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Polyhedron>(polyhedron, "polyhedron", point, "point",
-                             [&](const Polyhedron& p) { return p.vertex(index).point; });
-    });
+    return getValue<Polyhedron>(__func__, polyhedron, "polyhedron", point, "point",
+                                [&](const Polyhedron& p) { return p.vertex(index).point; });
 }
 
 TQ3Status Q3Polyhedron_SetVertexAttributeSet(TQ3GeometryObject polyhedron, unsigned long index,
@@ -73,10 +71,8 @@ TQ3Status Q3Polyhedron_GetVertexAttributeSet(TQ3GeometryObject polyhedron, unsig
 TQ3Status Q3Polyhedron_GetTriangleData(TQ3GeometryObject polyhedron, unsigned long triangleIndex,
                                        TQ3PolyhedronTriangleData* triangleData)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Polyhedron>(polyhedron, "polyhedron", triangleData, "triangleData",
-                             [&](const Polyhedron& p) { return p.triangle(triangleIndex); });
-    });
+    return getValue<Polyhedron>(__func__, polyhedron, "polyhedron", triangleData, "triangleData",
+                                [&](const Polyhedron& p) { return p.triangle(triangleIndex); });
 }
 
 TQ3Status Q3Polyhedron_SetTriangleData(TQ3GeometryObject polyhedron, unsigned long triangleIndex,
@@ -92,10 +88,8 @@ TQ3Status Q3Polyhedron_SetTriangleData(TQ3GeometryObject polyhedron, unsigned lo
 TQ3Status Q3Polyhedron_GetEdgeData(TQ3GeometryObject polyhedron, unsigned long edgeIndex,
                                    TQ3PolyhedronEdgeData* edgeData)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Polyhedron>(polyhedron, "polyhedron", edgeData, "edgeData",
-                             [&](const Polyhedron& p) { return p.edge(edgeIndex); });
-    });
+    return getValue<Polyhedron>(__func__, polyhedron, "polyhedron", edgeData, "edgeData",
+                                [&](const Polyhedron& p) { return p.edge(edgeIndex); });
 }
 
 TQ3Status Q3Polyhedron_SetEdgeData(TQ3GeometryObject polyhedron, unsigned long edgeIndex,

@@ -6,9 +6,7 @@
 #include "view/View.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
-using q3::api::readInto;
+using namespace q3::api;
 
 extern "C" {
 
@@ -28,19 +26,13 @@ TQ3Status Q3Shader_Submit(TQ3ShaderObject shader, TQ3ViewObject view)
 
 TQ3Status Q3Shader_SetUVTransform(TQ3ShaderObject shader, const TQ3Matrix3x3* uvTransform)
 {
-    return guardStatus(__func__, [&] {
-        Shader& target = lookup<Shader>(shader, "shader");
-        requireNonNull(uvTransform, "uvTransform");
-        target.setUVTransform(*uvTransform);
-    });
+    return setValue<Shader>(__func__, shader, "shader", uvTransform, "uvTransform", &Shader::setUVTransform);
 }
 
 TQ3Status Q3Shader_GetUVTransform(TQ3ShaderObject shader, TQ3Matrix3x3* uvTransform)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Shader>(shader, "shader", uvTransform, "uvTransform",
-                         [](const Shader& source) { return source.uvTransform(); });
-    });
+    return getValue<Shader>(__func__, shader, "shader", uvTransform, "uvTransform",
+                            [](const Shader& source) { return source.uvTransform(); });
 }
 
 TQ3Status Q3Shader_SetUBoundary(TQ3ShaderObject shader, TQ3ShaderUVBoundary uBoundary)
@@ -55,18 +47,14 @@ TQ3Status Q3Shader_SetVBoundary(TQ3ShaderObject shader, TQ3ShaderUVBoundary vBou
 
 TQ3Status Q3Shader_GetUBoundary(TQ3ShaderObject shader, TQ3ShaderUVBoundary* uBoundary)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Shader>(shader, "shader", uBoundary, "uBoundary",
-                         [](const Shader& source) { return source.uBoundary(); });
-    });
+    return getValue<Shader>(__func__, shader, "shader", uBoundary, "uBoundary",
+                            [](const Shader& source) { return source.uBoundary(); });
 }
 
 TQ3Status Q3Shader_GetVBoundary(TQ3ShaderObject shader, TQ3ShaderUVBoundary* vBoundary)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Shader>(shader, "shader", vBoundary, "vBoundary",
-                         [](const Shader& source) { return source.vBoundary(); });
-    });
+    return getValue<Shader>(__func__, shader, "shader", vBoundary, "vBoundary",
+                            [](const Shader& source) { return source.vBoundary(); });
 }
 
 } // extern "C"

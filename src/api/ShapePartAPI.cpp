@@ -6,8 +6,7 @@
 #include "geometry/ShapePart.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 namespace {
 
@@ -29,11 +28,8 @@ extern "C" {
 
 TQ3Status Q3ShapePart_GetShape(TQ3ShapePartObject shapePartObject, TQ3ShapeObject* shapeObject)
 {
-    return guardStatus(__func__, [&] {
-        const ShapePart& part = lookup<ShapePart>(shapePartObject, "shapePartObject");
-        requireNonNull(shapeObject, "shapeObject");
-        *shapeObject = Ref<Geometry>::retain(&part.shape()).detach();
-    });
+    return getValue<ShapePart>(__func__, shapePartObject, "shapePartObject", shapeObject, "shapeObject",
+                               [&](const ShapePart& part) { return Ref<Geometry>::retain(&part.shape()).detach(); });
 }
 
 TQ3ObjectType Q3ShapePart_GetType(TQ3ShapePartObject shapePartObject)

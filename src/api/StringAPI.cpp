@@ -27,10 +27,8 @@ TQ3StringObject Q3CString_New(const char* str)
 
 TQ3Status Q3CString_GetLength(TQ3StringObject stringObj, unsigned long* length)
 {
-    return guardStatus(__func__, [&] {
-        readInto<CString>(stringObj, "stringObj", length, "length",
-                          [](const CString& s) { return static_cast<unsigned long>(s.text().size()); });
-    });
+    return getValue<CString>(__func__, stringObj, "stringObj", length, "length",
+                             [](const CString& s) { return static_cast<unsigned long>(s.text().size()); });
 }
 
 TQ3Status Q3CString_SetString(TQ3StringObject stringObj, const char* str)

@@ -53,10 +53,7 @@ TQ3Status setStyle(const char* function, TQ3StyleObject style, const char* style
 template <class S>
 TQ3StyleObject newStyle(const char* function, const typename S::Value* data)
 {
-    return guard(function, TQ3StyleObject{nullptr}, [&]() -> TQ3StyleObject {
-        requireNonNull(data, "data");
-        return makeShared<S>(*data).detach();
-    });
+    return newShared<S>(function, data, "data");
 }
 
 template <class S>

@@ -6,17 +6,13 @@
 #include "view/View.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 extern "C" {
 
 TQ3StyleObject Q3SubdivisionStyle_New(const TQ3SubdivisionStyleData* data)
 {
-    return guard(__func__, TQ3StyleObject{nullptr}, [&]() -> TQ3StyleObject {
-        requireNonNull(data, "data");
-        return makeShared<SubdivisionStyle>(*data).detach();
-    });
+    return newShared<SubdivisionStyle>(__func__, data, "data");
 }
 
 TQ3Status Q3SubdivisionStyle_Submit(const TQ3SubdivisionStyleData* data, TQ3ViewObject view)
@@ -31,20 +27,13 @@ TQ3Status Q3SubdivisionStyle_Submit(const TQ3SubdivisionStyleData* data, TQ3View
 
 TQ3Status Q3SubdivisionStyle_SetData(TQ3StyleObject subdiv, const TQ3SubdivisionStyleData* data)
 {
-    return guardStatus(__func__, [&] {
-        SubdivisionStyle& style = lookup<SubdivisionStyle>(subdiv, "subdiv");
-        requireNonNull(data, "data");
-        style.setData(*data);
-    });
+    return setValue<SubdivisionStyle>(__func__, subdiv, "subdiv", data, "data", &SubdivisionStyle::setData);
 }
 
 TQ3Status Q3SubdivisionStyle_GetData(TQ3StyleObject subdiv, TQ3SubdivisionStyleData* data)
 {
-    return guardStatus(__func__, [&] {
-        const SubdivisionStyle& style = lookup<SubdivisionStyle>(subdiv, "subdiv");
-        requireNonNull(data, "data");
-        *data = style.data();
-    });
+    return getValue<SubdivisionStyle>(__func__, subdiv, "subdiv", data, "data",
+                                      [&](const SubdivisionStyle& style) { return style.data(); });
 }
 
 } // extern "C"

@@ -9,22 +9,7 @@
 #include "shader/Texture.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
-using q3::api::readInto;
-
-namespace {
-
-template <class T, class Data>
-TQ3TextureObject newTexture(const char* function, const Data* data, const char* name)
-{
-    return guard(function, TQ3TextureObject{nullptr}, [&]() -> TQ3TextureObject {
-        requireNonNull(data, name);
-        return makeShared<T>(*data).detach();
-    });
-}
-
-} // namespace
+using namespace q3::api;
 
 extern "C" {
 
@@ -36,61 +21,46 @@ TQ3ObjectType Q3Texture_GetType(TQ3TextureObject texture)
 
 TQ3Status Q3Texture_GetWidth(TQ3TextureObject texture, unsigned long* width)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Texture>(texture, "texture", width, "width", [](const Texture& source) { return source.width(); });
-    });
+    return getValue<Texture>(__func__, texture, "texture", width, "width",
+                             [](const Texture& source) { return source.width(); });
 }
 
 TQ3Status Q3Texture_GetHeight(TQ3TextureObject texture, unsigned long* height)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Texture>(texture, "texture", height, "height",
-                          [](const Texture& source) { return source.height(); });
-    });
+    return getValue<Texture>(__func__, texture, "texture", height, "height",
+                             [](const Texture& source) { return source.height(); });
 }
 
 TQ3TextureObject Q3PixmapTexture_New(const TQ3StoragePixmap* pixmap)
 {
-    return newTexture<PixmapTexture>(__func__, pixmap, "pixmap");
+    return newShared<PixmapTexture>(__func__, pixmap, "pixmap");
 }
 
 TQ3Status Q3PixmapTexture_GetPixmap(TQ3TextureObject texture, TQ3StoragePixmap* pixmap)
 {
-    return guardStatus(__func__, [&] {
-        readInto<PixmapTexture>(texture, "texture", pixmap, "pixmap",
-                                [](const PixmapTexture& source) { return source.pixmap(); });
-    });
+    return getValue<PixmapTexture>(__func__, texture, "texture", pixmap, "pixmap",
+                                   [](const PixmapTexture& source) { return source.pixmap(); });
 }
 
 TQ3Status Q3PixmapTexture_SetPixmap(TQ3TextureObject texture, const TQ3StoragePixmap* pixmap)
 {
-    return guardStatus(__func__, [&] {
-        PixmapTexture& target = lookup<PixmapTexture>(texture, "texture");
-        requireNonNull(pixmap, "pixmap");
-        target.setPixmap(*pixmap);
-    });
+    return setValue<PixmapTexture>(__func__, texture, "texture", pixmap, "pixmap", &PixmapTexture::setPixmap);
 }
 
 TQ3TextureObject Q3MipmapTexture_New(const TQ3Mipmap* mipmap)
 {
-    return newTexture<MipmapTexture>(__func__, mipmap, "mipmap");
+    return newShared<MipmapTexture>(__func__, mipmap, "mipmap");
 }
 
 TQ3Status Q3MipmapTexture_GetMipmap(TQ3TextureObject texture, TQ3Mipmap* mipmap)
 {
-    return guardStatus(__func__, [&] {
-        readInto<MipmapTexture>(texture, "texture", mipmap, "mipmap",
-                                [](const MipmapTexture& source) { return source.mipmap(); });
-    });
+    return getValue<MipmapTexture>(__func__, texture, "texture", mipmap, "mipmap",
+                                   [](const MipmapTexture& source) { return source.mipmap(); });
 }
 
 TQ3Status Q3MipmapTexture_SetMipmap(TQ3TextureObject texture, const TQ3Mipmap* mipmap)
 {
-    return guardStatus(__func__, [&] {
-        MipmapTexture& target = lookup<MipmapTexture>(texture, "texture");
-        requireNonNull(mipmap, "mipmap");
-        target.setMipmap(*mipmap);
-    });
+    return setValue<MipmapTexture>(__func__, texture, "texture", mipmap, "mipmap", &MipmapTexture::setMipmap);
 }
 
 } // extern "C"

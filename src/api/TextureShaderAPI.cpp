@@ -8,8 +8,7 @@
 #include "shader/TextureShader.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 extern "C" {
 
@@ -28,10 +27,8 @@ TQ3ShaderObject Q3TextureShader_New(TQ3TextureObject texture)
 
 TQ3Status Q3TextureShader_GetTexture(TQ3ShaderObject shader, TQ3TextureObject* texture)
 {
-    return guardStatus(__func__, [&] {
-        const TextureShader& source = lookup<TextureShader>(shader, "shader");
-        requireNonNull(texture, "texture");
-        *texture = Ref<Texture>(source.texture()).detach();
+    return getValue<TextureShader>(__func__, shader, "shader", texture, "texture", [&](const TextureShader& source) {
+        return Ref<Texture>(source.texture()).detach();
     });
 }
 

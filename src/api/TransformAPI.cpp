@@ -8,9 +8,7 @@
 #include <cstring>
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
-using q3::api::readInto;
+using namespace q3::api;
 
 namespace {
 
@@ -65,10 +63,7 @@ TQ3Status Q3Transform_Submit(TQ3TransformObject transform, TQ3ViewObject view)
 
 TQ3TransformObject Q3MatrixTransform_New(const TQ3Matrix4x4* matrix)
 {
-    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
-        requireNonNull(matrix, "matrix");
-        return makeShared<MatrixTransform>(*matrix).detach();
-    });
+    return newShared<MatrixTransform>(__func__, matrix, "matrix");
 }
 
 TQ3Status Q3MatrixTransform_Submit(const TQ3Matrix4x4* matrix, TQ3ViewObject view)
@@ -78,27 +73,18 @@ TQ3Status Q3MatrixTransform_Submit(const TQ3Matrix4x4* matrix, TQ3ViewObject vie
 
 TQ3Status Q3MatrixTransform_Set(TQ3TransformObject transform, const TQ3Matrix4x4* matrix)
 {
-    return guardStatus(__func__, [&] {
-        MatrixTransform& target = lookup<MatrixTransform>(transform, "transform");
-        requireNonNull(matrix, "matrix");
-        target.setMatrix(*matrix);
-    });
+    return setValue<MatrixTransform>(__func__, transform, "transform", matrix, "matrix", &MatrixTransform::setMatrix);
 }
 
 TQ3Status Q3MatrixTransform_Get(TQ3TransformObject transform, TQ3Matrix4x4* matrix)
 {
-    return guardStatus(__func__, [&] {
-        readInto<MatrixTransform>(transform, "transform", matrix, "matrix",
-                                  [](const MatrixTransform& t) { return t.matrix(); });
-    });
+    return getValue<MatrixTransform>(__func__, transform, "transform", matrix, "matrix",
+                                     [](const MatrixTransform& t) { return t.matrix(); });
 }
 
 TQ3TransformObject Q3TranslateTransform_New(const TQ3Vector3D* translate)
 {
-    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
-        requireNonNull(translate, "translate");
-        return makeShared<TranslateTransform>(*translate).detach();
-    });
+    return newShared<TranslateTransform>(__func__, translate, "translate");
 }
 
 TQ3Status Q3TranslateTransform_Submit(const TQ3Vector3D* translate, TQ3ViewObject view)
@@ -109,27 +95,19 @@ TQ3Status Q3TranslateTransform_Submit(const TQ3Vector3D* translate, TQ3ViewObjec
 
 TQ3Status Q3TranslateTransform_Set(TQ3TransformObject transform, const TQ3Vector3D* translate)
 {
-    return guardStatus(__func__, [&] {
-        TranslateTransform& target = lookup<TranslateTransform>(transform, "transform");
-        requireNonNull(translate, "translate");
-        target.setTranslate(*translate);
-    });
+    return setValue<TranslateTransform>(__func__, transform, "transform", translate, "translate",
+                                        &TranslateTransform::setTranslate);
 }
 
 TQ3Status Q3TranslateTransform_Get(TQ3TransformObject transform, TQ3Vector3D* translate)
 {
-    return guardStatus(__func__, [&] {
-        readInto<TranslateTransform>(transform, "transform", translate, "translate",
-                                     [](const TranslateTransform& t) { return t.translate(); });
-    });
+    return getValue<TranslateTransform>(__func__, transform, "transform", translate, "translate",
+                                        [](const TranslateTransform& t) { return t.translate(); });
 }
 
 TQ3TransformObject Q3ScaleTransform_New(const TQ3Vector3D* scale)
 {
-    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
-        requireNonNull(scale, "scale");
-        return makeShared<ScaleTransform>(*scale).detach();
-    });
+    return newShared<ScaleTransform>(__func__, scale, "scale");
 }
 
 TQ3Status Q3ScaleTransform_Submit(const TQ3Vector3D* scale, TQ3ViewObject view)
@@ -139,27 +117,18 @@ TQ3Status Q3ScaleTransform_Submit(const TQ3Vector3D* scale, TQ3ViewObject view)
 
 TQ3Status Q3ScaleTransform_Set(TQ3TransformObject transform, const TQ3Vector3D* scale)
 {
-    return guardStatus(__func__, [&] {
-        ScaleTransform& target = lookup<ScaleTransform>(transform, "transform");
-        requireNonNull(scale, "scale");
-        target.setScale(*scale);
-    });
+    return setValue<ScaleTransform>(__func__, transform, "transform", scale, "scale", &ScaleTransform::setScale);
 }
 
 TQ3Status Q3ScaleTransform_Get(TQ3TransformObject transform, TQ3Vector3D* scale)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ScaleTransform>(transform, "transform", scale, "scale",
-                                 [](const ScaleTransform& t) { return t.scale(); });
-    });
+    return getValue<ScaleTransform>(__func__, transform, "transform", scale, "scale",
+                                    [](const ScaleTransform& t) { return t.scale(); });
 }
 
 TQ3TransformObject Q3RotateTransform_New(const TQ3RotateTransformData* data)
 {
-    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
-        requireNonNull(data, "data");
-        return makeShared<RotateTransform>(*data).detach();
-    });
+    return newShared<RotateTransform>(__func__, data, "data");
 }
 
 TQ3Status Q3RotateTransform_Submit(const TQ3RotateTransformData* data, TQ3ViewObject view)
@@ -170,19 +139,13 @@ TQ3Status Q3RotateTransform_Submit(const TQ3RotateTransformData* data, TQ3ViewOb
 TQ3Status Q3RotateTransform_SetData(TQ3TransformObject transform,
                                     const TQ3RotateTransformData* data)
 {
-    return guardStatus(__func__, [&] {
-        RotateTransform& target = lookup<RotateTransform>(transform, "transform");
-        requireNonNull(data, "data");
-        target.setData(*data);
-    });
+    return setValue<RotateTransform>(__func__, transform, "transform", data, "data", &RotateTransform::setData);
 }
 
 TQ3Status Q3RotateTransform_GetData(TQ3TransformObject transform, TQ3RotateTransformData* data)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateTransform>(transform, "transform", data, "data",
-                                  [](const RotateTransform& t) { return t.data(); });
-    });
+    return getValue<RotateTransform>(__func__, transform, "transform", data, "data",
+                                     [](const RotateTransform& t) { return t.data(); });
 }
 
 TQ3Status Q3RotateTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
@@ -194,10 +157,8 @@ TQ3Status Q3RotateTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
 
 TQ3Status Q3RotateTransform_GetAxis(TQ3TransformObject transform, TQ3Axis* axis)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateTransform>(transform, "transform", axis, "axis",
-                                  [](const RotateTransform& t) { return t.data().axis; });
-    });
+    return getValue<RotateTransform>(__func__, transform, "transform", axis, "axis",
+                                     [](const RotateTransform& t) { return t.data().axis; });
 }
 
 TQ3Status Q3RotateTransform_SetAngle(TQ3TransformObject transform, float radians)
@@ -208,18 +169,13 @@ TQ3Status Q3RotateTransform_SetAngle(TQ3TransformObject transform, float radians
 
 TQ3Status Q3RotateTransform_GetAngle(TQ3TransformObject transform, float* radians)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateTransform>(transform, "transform", radians, "radians",
-                                  [](const RotateTransform& t) { return t.data().radians; });
-    });
+    return getValue<RotateTransform>(__func__, transform, "transform", radians, "radians",
+                                     [](const RotateTransform& t) { return t.data().radians; });
 }
 
 TQ3TransformObject Q3QuaternionTransform_New(const TQ3Quaternion* quaternion)
 {
-    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
-        requireNonNull(quaternion, "quaternion");
-        return makeShared<QuaternionTransform>(*quaternion).detach();
-    });
+    return newShared<QuaternionTransform>(__func__, quaternion, "quaternion");
 }
 
 TQ3Status Q3QuaternionTransform_Submit(const TQ3Quaternion* quaternion, TQ3ViewObject view)
@@ -230,27 +186,19 @@ TQ3Status Q3QuaternionTransform_Submit(const TQ3Quaternion* quaternion, TQ3ViewO
 
 TQ3Status Q3QuaternionTransform_Set(TQ3TransformObject transform, const TQ3Quaternion* quaternion)
 {
-    return guardStatus(__func__, [&] {
-        QuaternionTransform& target = lookup<QuaternionTransform>(transform, "transform");
-        requireNonNull(quaternion, "quaternion");
-        target.setQuaternion(*quaternion);
-    });
+    return setValue<QuaternionTransform>(__func__, transform, "transform", quaternion, "quaternion",
+                                         &QuaternionTransform::setQuaternion);
 }
 
 TQ3Status Q3QuaternionTransform_Get(TQ3TransformObject transform, TQ3Quaternion* quaternion)
 {
-    return guardStatus(__func__, [&] {
-        readInto<QuaternionTransform>(transform, "transform", quaternion, "quaternion",
-                                      [](const QuaternionTransform& t) { return t.quaternion(); });
-    });
+    return getValue<QuaternionTransform>(__func__, transform, "transform", quaternion, "quaternion",
+                                         [](const QuaternionTransform& t) { return t.quaternion(); });
 }
 
 TQ3TransformObject Q3RotateAboutPointTransform_New(const TQ3RotateAboutPointTransformData* data)
 {
-    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
-        requireNonNull(data, "data");
-        return makeShared<RotateAboutPointTransform>(*data).detach();
-    });
+    return newShared<RotateAboutPointTransform>(__func__, data, "data");
 }
 
 TQ3Status Q3RotateAboutPointTransform_Submit(const TQ3RotateAboutPointTransformData* data, TQ3ViewObject view)
@@ -261,19 +209,14 @@ TQ3Status Q3RotateAboutPointTransform_Submit(const TQ3RotateAboutPointTransformD
 TQ3Status Q3RotateAboutPointTransform_SetData(TQ3TransformObject transform,
                                               const TQ3RotateAboutPointTransformData* data)
 {
-    return guardStatus(__func__, [&] {
-        RotateAboutPointTransform& target = lookup<RotateAboutPointTransform>(transform, "transform");
-        requireNonNull(data, "data");
-        target.setData(*data);
-    });
+    return setValue<RotateAboutPointTransform>(__func__, transform, "transform", data, "data",
+                                               &RotateAboutPointTransform::setData);
 }
 
 TQ3Status Q3RotateAboutPointTransform_GetData(TQ3TransformObject transform, TQ3RotateAboutPointTransformData* data)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateAboutPointTransform>(transform, "transform", data, "data",
-                                            [](const RotateAboutPointTransform& t) { return t.data(); });
-    });
+    return getValue<RotateAboutPointTransform>(__func__, transform, "transform", data, "data",
+                                               [](const RotateAboutPointTransform& t) { return t.data(); });
 }
 
 TQ3Status Q3RotateAboutPointTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
@@ -287,10 +230,8 @@ TQ3Status Q3RotateAboutPointTransform_SetAxis(TQ3TransformObject transform, TQ3A
 
 TQ3Status Q3RotateAboutPointTransform_GetAxis(TQ3TransformObject transform, TQ3Axis* axis)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateAboutPointTransform>(transform, "transform", axis, "axis",
-                                            [](const RotateAboutPointTransform& t) { return t.data().axis; });
-    });
+    return getValue<RotateAboutPointTransform>(__func__, transform, "transform", axis, "axis",
+                                               [](const RotateAboutPointTransform& t) { return t.data().axis; });
 }
 
 TQ3Status Q3RotateAboutPointTransform_SetAngle(TQ3TransformObject transform, float radians)
@@ -303,10 +244,8 @@ TQ3Status Q3RotateAboutPointTransform_SetAngle(TQ3TransformObject transform, flo
 
 TQ3Status Q3RotateAboutPointTransform_GetAngle(TQ3TransformObject transform, float* radians)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateAboutPointTransform>(transform, "transform", radians, "radians",
-                                            [](const RotateAboutPointTransform& t) { return t.data().radians; });
-    });
+    return getValue<RotateAboutPointTransform>(__func__, transform, "transform", radians, "radians",
+                                               [](const RotateAboutPointTransform& t) { return t.data().radians; });
 }
 
 TQ3Status Q3RotateAboutPointTransform_SetAboutPoint(TQ3TransformObject transform, const TQ3Point3D* about)
@@ -321,18 +260,13 @@ TQ3Status Q3RotateAboutPointTransform_SetAboutPoint(TQ3TransformObject transform
 
 TQ3Status Q3RotateAboutPointTransform_GetAboutPoint(TQ3TransformObject transform, TQ3Point3D* about)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateAboutPointTransform>(transform, "transform", about, "about",
-                                            [](const RotateAboutPointTransform& t) { return t.data().about; });
-    });
+    return getValue<RotateAboutPointTransform>(__func__, transform, "transform", about, "about",
+                                               [](const RotateAboutPointTransform& t) { return t.data().about; });
 }
 
 TQ3TransformObject Q3RotateAboutAxisTransform_New(const TQ3RotateAboutAxisTransformData* data)
 {
-    return guard(__func__, TQ3TransformObject{nullptr}, [&]() -> TQ3TransformObject {
-        requireNonNull(data, "data");
-        return makeShared<RotateAboutAxisTransform>(*data).detach();
-    });
+    return newShared<RotateAboutAxisTransform>(__func__, data, "data");
 }
 
 TQ3Status Q3RotateAboutAxisTransform_Submit(const TQ3RotateAboutAxisTransformData* data, TQ3ViewObject view)
@@ -343,19 +277,14 @@ TQ3Status Q3RotateAboutAxisTransform_Submit(const TQ3RotateAboutAxisTransformDat
 TQ3Status Q3RotateAboutAxisTransform_SetData(TQ3TransformObject transform,
                                              const TQ3RotateAboutAxisTransformData* data)
 {
-    return guardStatus(__func__, [&] {
-        RotateAboutAxisTransform& target = lookup<RotateAboutAxisTransform>(transform, "transform");
-        requireNonNull(data, "data");
-        target.setData(*data);
-    });
+    return setValue<RotateAboutAxisTransform>(__func__, transform, "transform", data, "data",
+                                              &RotateAboutAxisTransform::setData);
 }
 
 TQ3Status Q3RotateAboutAxisTransform_GetData(TQ3TransformObject transform, TQ3RotateAboutAxisTransformData* data)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateAboutAxisTransform>(transform, "transform", data, "data",
-                                           [](const RotateAboutAxisTransform& t) { return t.data(); });
-    });
+    return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", data, "data",
+                                              [](const RotateAboutAxisTransform& t) { return t.data(); });
 }
 
 TQ3Status Q3RotateAboutAxisTransform_SetOrientation(TQ3TransformObject transform, const TQ3Vector3D* axis)
@@ -370,10 +299,8 @@ TQ3Status Q3RotateAboutAxisTransform_SetOrientation(TQ3TransformObject transform
 
 TQ3Status Q3RotateAboutAxisTransform_GetOrientation(TQ3TransformObject transform, TQ3Vector3D* axis)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateAboutAxisTransform>(transform, "transform", axis, "axis",
-                                           [](const RotateAboutAxisTransform& t) { return t.data().orientation; });
-    });
+    return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", axis, "axis",
+                                              [](const RotateAboutAxisTransform& t) { return t.data().orientation; });
 }
 
 TQ3Status Q3RotateAboutAxisTransform_SetAngle(TQ3TransformObject transform, float radians)
@@ -386,10 +313,8 @@ TQ3Status Q3RotateAboutAxisTransform_SetAngle(TQ3TransformObject transform, floa
 
 TQ3Status Q3RotateAboutAxisTransform_GetAngle(TQ3TransformObject transform, float* radians)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateAboutAxisTransform>(transform, "transform", radians, "radians",
-                                           [](const RotateAboutAxisTransform& t) { return t.data().radians; });
-    });
+    return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", radians, "radians",
+                                              [](const RotateAboutAxisTransform& t) { return t.data().radians; });
 }
 
 TQ3Status Q3RotateAboutAxisTransform_SetOrigin(TQ3TransformObject transform, const TQ3Point3D* origin)
@@ -404,10 +329,8 @@ TQ3Status Q3RotateAboutAxisTransform_SetOrigin(TQ3TransformObject transform, con
 
 TQ3Status Q3RotateAboutAxisTransform_GetOrigin(TQ3TransformObject transform, TQ3Point3D* origin)
 {
-    return guardStatus(__func__, [&] {
-        readInto<RotateAboutAxisTransform>(transform, "transform", origin, "origin",
-                                           [](const RotateAboutAxisTransform& t) { return t.data().origin; });
-    });
+    return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", origin, "origin",
+                                              [](const RotateAboutAxisTransform& t) { return t.data().origin; });
 }
 
 TQ3TransformObject Q3ResetTransform_New(void)

@@ -37,10 +37,8 @@ TQ3Status Q3TriGrid_EmptyData(TQ3TriGridData* triGridData)
 TQ3Status Q3TriGrid_GetVertexPosition(TQ3GeometryObject triGrid, unsigned long rowIndex, unsigned long columnIndex,
                                       TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        readInto<TriGrid>(triGrid, "triGrid", position, "position",
-                          [&](const TriGrid& g) { return g.vertex(rowIndex, columnIndex).point; });
-    });
+    return getValue<TriGrid>(__func__, triGrid, "triGrid", position, "position",
+                             [&](const TriGrid& g) { return g.vertex(rowIndex, columnIndex).point; });
 }
 
 TQ3Status Q3TriGrid_SetVertexPosition(TQ3GeometryObject triGrid, unsigned long rowIndex, unsigned long columnIndex,
@@ -56,10 +54,8 @@ TQ3Status Q3TriGrid_SetVertexPosition(TQ3GeometryObject triGrid, unsigned long r
 TQ3Status Q3TriGrid_GetVertexAttributeSet(TQ3GeometryObject triGrid, unsigned long rowIndex,
                                           unsigned long columnIndex, TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<TriGrid>(triGrid, "triGrid", attributeSet, "attributeSet", [&](const TriGrid& g) {
-            return attributeSetToHandle(heldAttributeSet(g.vertex(rowIndex, columnIndex).attributeSet));
-        });
+    return getValue<TriGrid>(__func__, triGrid, "triGrid", attributeSet, "attributeSet", [&](const TriGrid& g) {
+        return attributeSetToHandle(heldAttributeSet(g.vertex(rowIndex, columnIndex).attributeSet));
     });
 }
 
@@ -75,10 +71,8 @@ TQ3Status Q3TriGrid_SetVertexAttributeSet(TQ3GeometryObject triGrid, unsigned lo
 TQ3Status Q3TriGrid_GetFacetAttributeSet(TQ3GeometryObject triGrid, unsigned long faceIndex,
                                          TQ3AttributeSet* facetAttributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<TriGrid>(triGrid, "triGrid", facetAttributeSet, "facetAttributeSet",
-                          [&](const TriGrid& g) { return attributeSetToHandle(g.facetSet(faceIndex)); });
-    });
+    return getValue<TriGrid>(__func__, triGrid, "triGrid", facetAttributeSet, "facetAttributeSet",
+                             [&](const TriGrid& g) { return attributeSetToHandle(g.facetSet(faceIndex)); });
 }
 
 TQ3Status Q3TriGrid_SetFacetAttributeSet(TQ3GeometryObject triGrid, unsigned long faceIndex,

@@ -36,10 +36,8 @@ TQ3Status Q3Triangle_EmptyData(TQ3TriangleData* triangleData)
 
 TQ3Status Q3Triangle_GetVertexPosition(TQ3GeometryObject triangle, unsigned long index, TQ3Point3D* point)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Triangle>(triangle, "triangle", point, "point",
-                           [&](const Triangle& t) { return t.vertex(index).point; });
-    });
+    return getValue<Triangle>(__func__, triangle, "triangle", point, "point",
+                              [&](const Triangle& t) { return t.vertex(index).point; });
 }
 
 TQ3Status Q3Triangle_SetVertexPosition(TQ3GeometryObject triangle, unsigned long index, const TQ3Point3D* point)
@@ -54,10 +52,8 @@ TQ3Status Q3Triangle_SetVertexPosition(TQ3GeometryObject triangle, unsigned long
 TQ3Status Q3Triangle_GetVertexAttributeSet(TQ3GeometryObject triangle, unsigned long index,
                                            TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Triangle>(triangle, "triangle", attributeSet, "attributeSet", [&](const Triangle& t) {
-            return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
-        });
+    return getValue<Triangle>(__func__, triangle, "triangle", attributeSet, "attributeSet", [&](const Triangle& t) {
+        return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
     });
 }
 

@@ -13,19 +13,6 @@
 using namespace q3;
 using namespace q3::api;
 
-namespace {
-
-char* copyOf(const std::string& text)
-{
-    char* copy = static_cast<char*>(std::malloc(text.size() + 1));
-    if (copy == nullptr)
-        throw std::bad_alloc();
-    std::memcpy(copy, text.c_str(), text.size() + 1);
-    return copy;
-}
-
-} // namespace
-
 TQ3ObjectType Q3Unknown_GetType(TQ3UnknownObject unknownObject)
 {
     return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
@@ -34,10 +21,8 @@ TQ3ObjectType Q3Unknown_GetType(TQ3UnknownObject unknownObject)
 
 TQ3Status Q3Unknown_GetDirtyState(TQ3UnknownObject unknownObject, TQ3Boolean* isDirty)
 {
-    return guardStatus(__func__, [&] {
-        readInto<UnknownObject>(unknownObject, "unknownObject", isDirty, "isDirty",
-                                [](const UnknownObject& o) { return o.dirty() ? kQ3True : kQ3False; });
-    });
+    return getValue<UnknownObject>(__func__, unknownObject, "unknownObject", isDirty, "isDirty",
+                                   [](const UnknownObject& o) { return o.dirty() ? kQ3True : kQ3False; });
 }
 
 TQ3Status Q3Unknown_SetDirtyState(TQ3UnknownObject unknownObject, TQ3Boolean isDirty)
@@ -52,10 +37,10 @@ TQ3Status Q3UnknownText_GetData(TQ3UnknownObject unknownObject, TQ3UnknownTextDa
     return guardStatus(__func__, [&] {
         const UnknownText& source = lookup<UnknownText>(unknownObject, "unknownObject");
         requireNonNull(unknownTextData, "unknownTextData");
-        char* name = copyOf(source.name());
+        char* name = mallocCopy(source.name());
         char* contents = nullptr;
         try {
-            contents = copyOf(source.contents());
+            contents = mallocCopy(source.contents());
         } catch (...) {
             std::free(name);
             throw;

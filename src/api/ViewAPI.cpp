@@ -15,17 +15,9 @@
 #include "view/View.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 namespace {
-
-// A new reference for the caller, or NULL when the view holds none.
-template <class T>
-TQ3Object handOut(const Ref<T>& held)
-{
-    return Ref<T>(held).detach();
-}
 
 // The graphics state Get calls: the view (which must run a loop), then the
 // output pointer, then *out = read(state). Nothing is written on failure.
@@ -79,19 +71,12 @@ TQ3Status Q3View_SetRendererByType(TQ3ViewObject view, TQ3ObjectType theType)
 
 TQ3Status Q3View_SetRenderer(TQ3ViewObject view, TQ3RendererObject renderer)
 {
-    return guardStatus(__func__, [&] {
-        View& target = lookup<View>(view, "view");
-        target.setRenderer(lookupRef<Renderer>(renderer, "renderer"));
-    });
+    return setHeld(__func__, view, "view", renderer, "renderer", &View::setRenderer);
 }
 
 TQ3Status Q3View_GetRenderer(TQ3ViewObject view, TQ3RendererObject* renderer)
 {
-    return guardStatus(__func__, [&] {
-        const View& source = lookup<View>(view, "view");
-        requireNonNull(renderer, "renderer");
-        *renderer = handOut(source.renderer());
-    });
+    return getHeld(__func__, view, "view", renderer, "renderer", &View::renderer);
 }
 
 TQ3Status Q3View_StartRendering(TQ3ViewObject view)
@@ -154,36 +139,22 @@ TQ3ViewStatus Q3View_EndPicking(TQ3ViewObject view)
 
 TQ3Status Q3View_GetCamera(TQ3ViewObject view, TQ3CameraObject* camera)
 {
-    return guardStatus(__func__, [&] {
-        const View& source = lookup<View>(view, "view");
-        requireNonNull(camera, "camera");
-        *camera = handOut(source.camera());
-    });
+    return getHeld(__func__, view, "view", camera, "camera", &View::camera);
 }
 
 TQ3Status Q3View_SetCamera(TQ3ViewObject view, TQ3CameraObject camera)
 {
-    return guardStatus(__func__, [&] {
-        View& target = lookup<View>(view, "view");
-        target.setCamera(lookupRef<Camera>(camera, "camera"));
-    });
+    return setHeld(__func__, view, "view", camera, "camera", &View::setCamera);
 }
 
 TQ3Status Q3View_SetDrawContext(TQ3ViewObject view, TQ3DrawContextObject drawContext)
 {
-    return guardStatus(__func__, [&] {
-        View& target = lookup<View>(view, "view");
-        target.setDrawContext(lookupRef<DrawContext>(drawContext, "drawContext"));
-    });
+    return setHeld(__func__, view, "view", drawContext, "drawContext", &View::setDrawContext);
 }
 
 TQ3Status Q3View_GetDrawContext(TQ3ViewObject view, TQ3DrawContextObject* drawContext)
 {
-    return guardStatus(__func__, [&] {
-        const View& source = lookup<View>(view, "view");
-        requireNonNull(drawContext, "drawContext");
-        *drawContext = handOut(source.drawContext());
-    });
+    return getHeld(__func__, view, "view", drawContext, "drawContext", &View::drawContext);
 }
 
 TQ3Status Q3View_GetLocalToWorldMatrixState(TQ3ViewObject view, TQ3Matrix4x4* matrix)
@@ -217,19 +188,12 @@ TQ3Status Q3Pop_Submit(TQ3ViewObject view)
 
 TQ3Status Q3View_SetLightGroup(TQ3ViewObject view, TQ3GroupObject lightGroup)
 {
-    return guardStatus(__func__, [&] {
-        View& target = lookup<View>(view, "view");
-        target.setLightGroup(Ref<Group>::retain(lookupOptional<Group>(lightGroup, "lightGroup")));
-    });
+    return setHeldOptional(__func__, view, "view", lightGroup, "lightGroup", &View::setLightGroup);
 }
 
 TQ3Status Q3View_GetLightGroup(TQ3ViewObject view, TQ3GroupObject* lightGroup)
 {
-    return guardStatus(__func__, [&] {
-        const View& source = lookup<View>(view, "view");
-        requireNonNull(lightGroup, "lightGroup");
-        *lightGroup = handOut(source.lightGroup());
-    });
+    return getHeld(__func__, view, "view", lightGroup, "lightGroup", &View::lightGroup);
 }
 
 TQ3Status Q3View_Flush(TQ3ViewObject view)
@@ -312,11 +276,8 @@ TQ3Status Q3View_GetAntiAliasStyleState(TQ3ViewObject view, TQ3AntiAliasStyleDat
 
 TQ3Status Q3View_GetDefaultAttributeSet(TQ3ViewObject view, TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        const View& source = lookup<View>(view, "view");
-        requireNonNull(attributeSet, "attributeSet");
-        *attributeSet = source.defaultAttributeSet().detach();
-    });
+    return getValue<View>(__func__, view, "view", attributeSet, "attributeSet",
+                          [&](const View& source) { return source.defaultAttributeSet().detach(); });
 }
 
 TQ3Status Q3View_SetDefaultAttributeSet(TQ3ViewObject view, TQ3AttributeSet attributeSet)

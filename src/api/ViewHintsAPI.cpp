@@ -10,18 +10,9 @@
 #include "view/ViewHints.h"
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
-using q3::api::readInto;
+using namespace q3::api;
 
 namespace {
-
-// A new reference for the caller, or NULL when the hints hold none.
-template <class T>
-TQ3Object handOut(const Ref<T>& held)
-{
-    return Ref<T>(held).detach();
-}
 
 } // namespace
 
@@ -36,66 +27,42 @@ TQ3ViewHintsObject Q3ViewHints_New(TQ3ViewObject view)
 
 TQ3Status Q3ViewHints_SetRenderer(TQ3ViewHintsObject viewHints, TQ3RendererObject renderer)
 {
-    return guardStatus(__func__, [&] {
-        ViewHints& target = lookup<ViewHints>(viewHints, "viewHints");
-        target.setRenderer(lookupRef<Renderer>(renderer, "renderer"));
-    });
+    return setHeld(__func__, viewHints, "viewHints", renderer, "renderer", &ViewHints::setRenderer);
 }
 
 TQ3Status Q3ViewHints_GetRenderer(TQ3ViewHintsObject viewHints, TQ3RendererObject* renderer)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewHints>(viewHints, "viewHints", renderer, "renderer",
-                            [](const ViewHints& hints) { return handOut(hints.renderer()); });
-    });
+    return getHeld(__func__, viewHints, "viewHints", renderer, "renderer", &ViewHints::renderer);
 }
 
 TQ3Status Q3ViewHints_SetCamera(TQ3ViewHintsObject viewHints, TQ3CameraObject camera)
 {
-    return guardStatus(__func__, [&] {
-        ViewHints& target = lookup<ViewHints>(viewHints, "viewHints");
-        target.setCamera(lookupRef<Camera>(camera, "camera"));
-    });
+    return setHeld(__func__, viewHints, "viewHints", camera, "camera", &ViewHints::setCamera);
 }
 
 TQ3Status Q3ViewHints_GetCamera(TQ3ViewHintsObject viewHints, TQ3CameraObject* camera)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewHints>(viewHints, "viewHints", camera, "camera",
-                            [](const ViewHints& hints) { return handOut(hints.camera()); });
-    });
+    return getHeld(__func__, viewHints, "viewHints", camera, "camera", &ViewHints::camera);
 }
 
 TQ3Status Q3ViewHints_SetLightGroup(TQ3ViewHintsObject viewHints, TQ3GroupObject lightGroup)
 {
-    return guardStatus(__func__, [&] {
-        ViewHints& target = lookup<ViewHints>(viewHints, "viewHints");
-        target.setLightGroup(Ref<Group>::retain(lookupOptional<Group>(lightGroup, "lightGroup")));
-    });
+    return setHeldOptional(__func__, viewHints, "viewHints", lightGroup, "lightGroup", &ViewHints::setLightGroup);
 }
 
 TQ3Status Q3ViewHints_GetLightGroup(TQ3ViewHintsObject viewHints, TQ3GroupObject* lightGroup)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewHints>(viewHints, "viewHints", lightGroup, "lightGroup",
-                            [](const ViewHints& hints) { return handOut(hints.lightGroup()); });
-    });
+    return getHeld(__func__, viewHints, "viewHints", lightGroup, "lightGroup", &ViewHints::lightGroup);
 }
 
 TQ3Status Q3ViewHints_SetAttributeSet(TQ3ViewHintsObject viewHints, TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        ViewHints& target = lookup<ViewHints>(viewHints, "viewHints");
-        target.setAttributeSet(Ref<AttributeSet>::retain(lookupOptional<AttributeSet>(attributeSet, "attributeSet")));
-    });
+    return setHeldOptional(__func__, viewHints, "viewHints", attributeSet, "attributeSet", &ViewHints::setAttributeSet);
 }
 
 TQ3Status Q3ViewHints_GetAttributeSet(TQ3ViewHintsObject viewHints, TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewHints>(viewHints, "viewHints", attributeSet, "attributeSet",
-                            [](const ViewHints& hints) { return handOut(hints.attributeSet()); });
-    });
+    return getHeld(__func__, viewHints, "viewHints", attributeSet, "attributeSet", &ViewHints::attributeSet);
 }
 
 TQ3Status Q3ViewHints_SetDimensionsState(TQ3ViewHintsObject viewHints, TQ3Boolean isValid)
@@ -105,10 +72,8 @@ TQ3Status Q3ViewHints_SetDimensionsState(TQ3ViewHintsObject viewHints, TQ3Boolea
 
 TQ3Status Q3ViewHints_GetDimensionsState(TQ3ViewHintsObject viewHints, TQ3Boolean* isValid)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewHints>(viewHints, "viewHints", isValid, "isValid",
-                            [](const ViewHints& hints) { return hints.dimensionsState(); });
-    });
+    return getValue<ViewHints>(__func__, viewHints, "viewHints", isValid, "isValid",
+                               [](const ViewHints& hints) { return hints.dimensionsState(); });
 }
 
 TQ3Status Q3ViewHints_SetDimensions(TQ3ViewHintsObject viewHints, unsigned long width, unsigned long height)
@@ -134,19 +99,13 @@ TQ3Status Q3ViewHints_SetMaskState(TQ3ViewHintsObject viewHints, TQ3Boolean isVa
 
 TQ3Status Q3ViewHints_GetMaskState(TQ3ViewHintsObject viewHints, TQ3Boolean* isValid)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewHints>(viewHints, "viewHints", isValid, "isValid",
-                            [](const ViewHints& hints) { return hints.maskState(); });
-    });
+    return getValue<ViewHints>(__func__, viewHints, "viewHints", isValid, "isValid",
+                               [](const ViewHints& hints) { return hints.maskState(); });
 }
 
 TQ3Status Q3ViewHints_SetMask(TQ3ViewHintsObject viewHints, const TQ3Bitmap* mask)
 {
-    return guardStatus(__func__, [&] {
-        ViewHints& target = lookup<ViewHints>(viewHints, "viewHints");
-        requireNonNull(mask, "mask");
-        target.setMask(*mask);
-    });
+    return setValue<ViewHints>(__func__, viewHints, "viewHints", mask, "mask", &ViewHints::setMask);
 }
 
 TQ3Status Q3ViewHints_GetMask(TQ3ViewHintsObject viewHints, TQ3Bitmap* mask)
@@ -165,27 +124,19 @@ TQ3Status Q3ViewHints_SetClearImageMethod(TQ3ViewHintsObject viewHints, TQ3DrawC
 
 TQ3Status Q3ViewHints_GetClearImageMethod(TQ3ViewHintsObject viewHints, TQ3DrawContextClearImageMethod* clearMethod)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewHints>(viewHints, "viewHints", clearMethod, "clearMethod",
-                            [](const ViewHints& hints) { return hints.clearMethod(); });
-    });
+    return getValue<ViewHints>(__func__, viewHints, "viewHints", clearMethod, "clearMethod",
+                               [](const ViewHints& hints) { return hints.clearMethod(); });
 }
 
 TQ3Status Q3ViewHints_SetClearImageColor(TQ3ViewHintsObject viewHints, const TQ3ColorARGB* color)
 {
-    return guardStatus(__func__, [&] {
-        ViewHints& target = lookup<ViewHints>(viewHints, "viewHints");
-        requireNonNull(color, "color");
-        target.setClearColor(*color);
-    });
+    return setValue<ViewHints>(__func__, viewHints, "viewHints", color, "color", &ViewHints::setClearColor);
 }
 
 TQ3Status Q3ViewHints_GetClearImageColor(TQ3ViewHintsObject viewHints, TQ3ColorARGB* color)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewHints>(viewHints, "viewHints", color, "color",
-                            [](const ViewHints& hints) { return hints.clearColor(); });
-    });
+    return getValue<ViewHints>(__func__, viewHints, "viewHints", color, "color",
+                               [](const ViewHints& hints) { return hints.clearColor(); });
 }
 
 } // extern "C"

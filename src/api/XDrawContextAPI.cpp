@@ -18,8 +18,7 @@ struct OpaqueTQ3XBufferObject {
 };
 
 using namespace q3;
-using q3::api::guard;
-using q3::api::guardStatus;
+using namespace q3::api;
 
 namespace {
 
@@ -112,11 +111,7 @@ TQ3Status Q3XDrawContext_SetDisplay(TQ3DrawContextObject drawContext, const Disp
 
 TQ3Status Q3XDrawContext_GetDisplay(TQ3DrawContextObject drawContext, Display** display)
 {
-    return guardStatus(__func__, [&] {
-        const X11DrawContext& source = lookup<X11DrawContext>(drawContext, "drawContext");
-        requireNonNull(display, "display");
-        *display = source.display();
-    });
+    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", display, "display", &X11DrawContext::display);
 }
 
 TQ3Status Q3XDrawContext_SetDrawable(TQ3DrawContextObject drawContext, Drawable drawable)
@@ -127,11 +122,8 @@ TQ3Status Q3XDrawContext_SetDrawable(TQ3DrawContextObject drawContext, Drawable 
 
 TQ3Status Q3XDrawContext_GetDrawable(TQ3DrawContextObject drawContext, Drawable* drawable)
 {
-    return guardStatus(__func__, [&] {
-        const X11DrawContext& source = lookup<X11DrawContext>(drawContext, "drawContext");
-        requireNonNull(drawable, "drawable");
-        *drawable = source.drawable();
-    });
+    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", drawable, "drawable",
+                                    &X11DrawContext::drawable);
 }
 
 TQ3Status Q3XDrawContext_SetVisual(TQ3DrawContextObject drawContext, const Visual* visual)
@@ -145,11 +137,7 @@ TQ3Status Q3XDrawContext_SetVisual(TQ3DrawContextObject drawContext, const Visua
 
 TQ3Status Q3XDrawContext_GetVisual(TQ3DrawContextObject drawContext, Visual** visual)
 {
-    return guardStatus(__func__, [&] {
-        const X11DrawContext& source = lookup<X11DrawContext>(drawContext, "drawContext");
-        requireNonNull(visual, "visual");
-        *visual = source.visual();
-    });
+    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", visual, "visual", &X11DrawContext::visual);
 }
 
 TQ3Status Q3XDrawContext_SetColormap(TQ3DrawContextObject drawContext, Colormap colormap)
@@ -160,29 +148,20 @@ TQ3Status Q3XDrawContext_SetColormap(TQ3DrawContextObject drawContext, Colormap 
 
 TQ3Status Q3XDrawContext_GetColormap(TQ3DrawContextObject drawContext, Colormap* colormap)
 {
-    return guardStatus(__func__, [&] {
-        const X11DrawContext& source = lookup<X11DrawContext>(drawContext, "drawContext");
-        requireNonNull(colormap, "colormap");
-        *colormap = source.colormap();
-    });
+    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", colormap, "colormap",
+                                    &X11DrawContext::colormap);
 }
 
 TQ3Status Q3XDrawContext_SetColormapData(TQ3DrawContextObject drawContext, const TQ3XColormapData* colormapData)
 {
-    return guardStatus(__func__, [&] {
-        X11DrawContext& target = lookup<X11DrawContext>(drawContext, "drawContext");
-        requireNonNull(colormapData, "colormapData");
-        target.setColormapData(*colormapData);
-    });
+    return setValue<X11DrawContext>(__func__, drawContext, "drawContext", colormapData, "colormapData",
+                                    &X11DrawContext::setColormapData);
 }
 
 TQ3Status Q3XDrawContext_GetColormapData(TQ3DrawContextObject drawContext, TQ3XColormapData* colormapData)
 {
-    return guardStatus(__func__, [&] {
-        const X11DrawContext& source = lookup<X11DrawContext>(drawContext, "drawContext");
-        requireNonNull(colormapData, "colormapData");
-        *colormapData = source.colormapData();
-    });
+    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", colormapData, "colormapData",
+                                    &X11DrawContext::colormapData);
 }
 
 } // extern "C"

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace q3::math {
 
@@ -74,6 +75,37 @@ TQ3BoundingSphere merged(const glm::dvec3& c1, double r1, const glm::dvec3& c2, 
     return sphereFrom(c1 + (c2 - c1) * along, radius);
 }
 
+// The corners of the box around count > 0 points, NaN kept.
+std::pair<glm::dvec3, glm::dvec3> extentOf(std::size_t count, const std::function<glm::dvec3(std::size_t)>& point)
+{
+    glm::dvec3 low = point(0);
+    glm::dvec3 high = low;
+    for (std::size_t i = 1; i < count; ++i) {
+        const glm::dvec3 p = point(i);
+        low = lower(low, p);
+        high = higher(high, p);
+    }
+    return {low, high};
+}
+
+// The union of two bounds (boxes or spheres) either of which may be empty;
+// `merge` unites two that are not.
+template <class B, class Merge>
+B uniteEither(const B& b1, const B& b2, const B& empty, Merge merge)
+{
+    if (isEmpty(b1))
+        return isEmpty(b2) ? empty : asNotEmpty(b2);
+    if (isEmpty(b2))
+        return asNotEmpty(b1);
+    return merge();
+}
+
+// An isEmpty read from the caller as kQ3True or kQ3False.
+TQ3Boolean emptyFlag(const TQ3Boolean& isEmpty)
+{
+    return enumValue(isEmpty) != kQ3False ? kQ3True : kQ3False;
+}
+
 } // namespace
 
 float roundDown(double value)
@@ -95,7 +127,7 @@ TQ3BoundingBox emptyBox()
 
 TQ3BoundingBox makeBox(const TQ3Point3D& min, const TQ3Point3D& max, const TQ3Boolean& isEmpty)
 {
-    return TQ3BoundingBox{min, max, enumValue(isEmpty) != kQ3False ? kQ3True : kQ3False};
+    return TQ3BoundingBox{min, max, emptyFlag(isEmpty)};
 }
 
 bool isEmpty(const TQ3BoundingBox& box)
@@ -105,11 +137,9 @@ bool isEmpty(const TQ3BoundingBox& box)
 
 TQ3BoundingBox unite(const TQ3BoundingBox& b1, const TQ3BoundingBox& b2)
 {
-    if (isEmpty(b1))
-        return isEmpty(b2) ? emptyBox() : asNotEmpty(b2);
-    if (isEmpty(b2))
-        return asNotEmpty(b1);
-    return boxFrom(lower(toDouble(b1.min), toDouble(b2.min)), higher(toDouble(b1.max), toDouble(b2.max)));
+    return uniteEither(b1, b2, emptyBox(), [&] {
+        return boxFrom(lower(toDouble(b1.min), toDouble(b2.min)), higher(toDouble(b1.max), toDouble(b2.max)));
+    });
 }
 
 TQ3BoundingBox unite(const TQ3BoundingBox& box, const glm::dvec3& point)
@@ -123,13 +153,7 @@ TQ3BoundingBox boxOf(std::size_t count, const std::function<glm::dvec3(std::size
 {
     if (count == 0)
         return emptyBox();
-    glm::dvec3 low = point(0);
-    glm::dvec3 high = low;
-    for (std::size_t i = 1; i < count; ++i) {
-        const glm::dvec3 p = point(i);
-        low = lower(low, p);
-        high = higher(high, p);
-    }
+    const auto [low, high] = extentOf(count, point);
     return boxFrom(low, high);
 }
 
@@ -140,7 +164,7 @@ TQ3BoundingSphere emptySphere()
 
 TQ3BoundingSphere makeSphere(const TQ3Point3D& origin, float radius, const TQ3Boolean& isEmpty)
 {
-    return TQ3BoundingSphere{origin, radius, enumValue(isEmpty) != kQ3False ? kQ3True : kQ3False};
+    return TQ3BoundingSphere{origin, radius, emptyFlag(isEmpty)};
 }
 
 bool isEmpty(const TQ3BoundingSphere& sphere)
@@ -150,18 +174,16 @@ bool isEmpty(const TQ3BoundingSphere& sphere)
 
 TQ3BoundingSphere unite(const TQ3BoundingSphere& s1, const TQ3BoundingSphere& s2)
 {
-    if (isEmpty(s1))
-        return isEmpty(s2) ? emptySphere() : asNotEmpty(s2);
-    if (isEmpty(s2))
-        return asNotEmpty(s1);
-    const glm::dvec3 c1 = toDouble(s1.origin), c2 = toDouble(s2.origin);
-    const double r1 = s1.radius, r2 = s2.radius;
-    const double apart = glm::distance(c1, c2);
-    if (apart + r2 <= r1)
-        return asNotEmpty(s1);
-    if (apart + r1 <= r2)
-        return asNotEmpty(s2);
-    return merged(c1, r1, c2, r2);
+    return uniteEither(s1, s2, emptySphere(), [&] {
+        const glm::dvec3 c1 = toDouble(s1.origin), c2 = toDouble(s2.origin);
+        const double r1 = s1.radius, r2 = s2.radius;
+        const double apart = glm::distance(c1, c2);
+        if (apart + r2 <= r1)
+            return asNotEmpty(s1);
+        if (apart + r1 <= r2)
+            return asNotEmpty(s2);
+        return merged(c1, r1, c2, r2);
+    });
 }
 
 TQ3BoundingSphere unite(const TQ3BoundingSphere& sphere, const glm::dvec3& point)
@@ -178,13 +200,7 @@ TQ3BoundingSphere sphereOf(std::size_t count, const std::function<glm::dvec3(std
 {
     if (count == 0)
         return emptySphere();
-    glm::dvec3 low = point(0);
-    glm::dvec3 high = low;
-    for (std::size_t i = 1; i < count; ++i) {
-        const glm::dvec3 p = point(i);
-        low = lower(low, p);
-        high = higher(high, p);
-    }
+    const auto [low, high] = extentOf(count, point);
     const glm::dvec3 centre = (low + high) / 2.0;
     double radius = 0.0;
     for (std::size_t i = 0; i < count; ++i) {

@@ -10,6 +10,21 @@
 
 namespace q3 {
 
+/// A subdivision method as messages name it ("screen-space"); "unknown" for
+/// a value that is none of the three.
+inline const char* subdivisionMethodName(TQ3SubdivisionMethod method)
+{
+    switch (method) {
+    case kQ3SubdivisionMethodConstant:
+        return "constant";
+    case kQ3SubdivisionMethodWorldSpace:
+        return "world-space";
+    case kQ3SubdivisionMethodScreenSpace:
+        return "screen-space";
+    }
+    return "unknown";
+}
+
 /// What styles and shaders set in a traversal (QD3DStyle.h, QD3DShader.h):
 /// the part of the view's graphics state that Push saves and Pop restores
 /// besides the transform and the attributes. A style or shader submitted to

@@ -353,18 +353,10 @@ void releaseElements(E* elements, std::size_t count)
 // NULL), fill(dst, src, policy, path) (dst cleared, counts copied),
 // release(s), checkHandles(s, path), forEachHandle(s, f).
 
-template <class S, class T, bool Finite = false>
-struct ValueField {
-    const char* name;
-    T S::*member;
-
-    void check(const S& s, const Path& path, Pass pass) const
-    {
-        if constexpr (Finite)
-            if (pass == Pass::kValues)
-                checkFinite(s.*member, path.child(name));
-        (void)s, (void)path, (void)pass;
-    }
+/// The parts of a field kind that holds plain data only: nothing owned to
+/// clear, copy, release or walk for handles.
+template <class S>
+struct PlainDataField {
     void clear(S&) const {}
     template <class Policy>
     void fill(S&, const S&, Policy&, const Path&) const
@@ -378,10 +370,24 @@ struct ValueField {
     }
 };
 
+template <class S, class T, bool Finite = false>
+struct ValueField : PlainDataField<S> {
+    const char* name;
+    T S::*member;
+
+    void check(const S& s, const Path& path, Pass pass) const
+    {
+        if constexpr (Finite)
+            if (pass == Pass::kValues)
+                checkFinite(s.*member, path.child(name));
+        (void)s, (void)path, (void)pass;
+    }
+};
+
 /// A count field with a minimum (a polygon's three vertices): plain data,
 /// checked in the minimum pass.
 template <class S, class N>
-struct AtLeastField {
+struct AtLeastField : PlainDataField<S> {
     const char* name;
     N S::*member;
     unsigned long minimum;
@@ -392,17 +398,6 @@ struct AtLeastField {
             fail(kQ3ErrorGeometryInsufficientNumberOfPoints, path.child(name).str() + " is " +
                                                                  std::to_string(s.*member) + ", fewer than " +
                                                                  std::to_string(minimum));
-    }
-    void clear(S&) const {}
-    template <class Policy>
-    void fill(S&, const S&, Policy&, const Path&) const
-    {
-    }
-    void release(S&) const {}
-    void checkHandles(const S&, const Path&) const {}
-    template <class F>
-    void forEachHandle(const S&, F&) const
-    {
     }
 };
 
@@ -658,7 +653,7 @@ struct HandleArrayField {
 template <class S, class T>
 ValueField<S, T> value(const char* name, T S::*member)
 {
-    return {name, member};
+    return {{}, name, member};
 }
 
 /// A count that must be at least `minimum`:
@@ -666,14 +661,14 @@ ValueField<S, T> value(const char* name, T S::*member)
 template <class S, class N>
 AtLeastField<S, N> atLeast(const char* name, N S::*member, unsigned long minimum)
 {
-    return {name, member, minimum};
+    return {{}, name, member, minimum};
 }
 
 /// A value that must be finite: kQ3ErrorInvalidData in the values pass.
 template <class S, class T>
 ValueField<S, T, true> finite(const char* name, T S::*member)
 {
-    return {name, member};
+    return {{}, name, member};
 }
 
 template <class C, class S>

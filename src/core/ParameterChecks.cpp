@@ -5,6 +5,7 @@
 #include "core/Error.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace q3 {
@@ -22,7 +23,31 @@ void checkComponent(float value, const char* name, const char* component)
         invalid(std::string(name) + "." + component + " is not a finite number");
 }
 
+// Points and vectors; RGB and ARGB colours (a checked first).
+template <class XYZ>
+void checkXYZ(const XYZ& v, const char* name)
+{
+    checkComponent(v.x, name, "x");
+    checkComponent(v.y, name, "y");
+    checkComponent(v.z, name, "z");
+}
+
+template <class Color>
+void checkRGB(const Color& color, const char* name)
+{
+    checkComponent(color.r, name, "r");
+    checkComponent(color.g, name, "g");
+    checkComponent(color.b, name, "b");
+}
+
 } // namespace
+
+std::string numberText(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
 
 void checkFinite(float value, const char* name)
 {
@@ -32,31 +57,23 @@ void checkFinite(float value, const char* name)
 
 void checkFinite(const TQ3Point3D& point, const char* name)
 {
-    checkComponent(point.x, name, "x");
-    checkComponent(point.y, name, "y");
-    checkComponent(point.z, name, "z");
+    checkXYZ(point, name);
 }
 
 void checkFinite(const TQ3Vector3D& vector, const char* name)
 {
-    checkComponent(vector.x, name, "x");
-    checkComponent(vector.y, name, "y");
-    checkComponent(vector.z, name, "z");
+    checkXYZ(vector, name);
 }
 
 void checkFinite(const TQ3ColorRGB& color, const char* name)
 {
-    checkComponent(color.r, name, "r");
-    checkComponent(color.g, name, "g");
-    checkComponent(color.b, name, "b");
+    checkRGB(color, name);
 }
 
 void checkFinite(const TQ3ColorARGB& color, const char* name)
 {
     checkComponent(color.a, name, "a");
-    checkComponent(color.r, name, "r");
-    checkComponent(color.g, name, "g");
-    checkComponent(color.b, name, "b");
+    checkRGB(color, name);
 }
 
 long checkEnumRange(long value, long first, long last, const char* name, const char* names)

@@ -6,12 +6,16 @@
 #include "core/EnumValue.h"
 
 #include <cstring>
+#include <string>
 
 namespace q3 {
 
 // The value rules that styles, shaders and lights share (QD3DStyle.h,
 // QD3DShader.h, QD3DLight.h). Each check throws kQ3ErrorInvalidParameter
 // naming the value (`name`, e.g. "data->fogStart") and what was wrong.
+
+/// A number as the messages write it (printf's %g: 0.5, 1e+30, nan).
+std::string numberText(double value);
 
 void checkFinite(float value, const char* name);
 void checkFinite(const TQ3Point3D& point, const char* name);

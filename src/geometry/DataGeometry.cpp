@@ -45,12 +45,17 @@ std::uint32_t addVertices(Mesh& mesh, const TQ3Vertex3D* vertices, std::size_t c
 {
     const std::uint32_t first = static_cast<std::uint32_t>(mesh.vertexCount());
     mesh.reserveVertices(mesh.vertexCount() + count);
-    for (std::size_t i = 0; i < count; ++i) {
-        VertexAttributes attributes;
-        attributes.inheritFrom(heldAttributeSet(vertices[i].attributeSet));
-        mesh.addVertex(vertices[i].point, attributes);
-    }
+    for (std::size_t i = 0; i < count; ++i)
+        addVertex(mesh, vertices[i], nullptr);
     return first;
+}
+
+std::uint32_t addVertex(Mesh& mesh, const TQ3Vertex3D& vertex, const AttributeSet* part)
+{
+    VertexAttributes attributes;
+    attributes.inheritFrom(heldAttributeSet(vertex.attributeSet));
+    attributes.inheritFrom(part);
+    return mesh.addVertex(vertex.point, attributes);
 }
 
 void checkIndex(std::size_t index, std::size_t count, const char* what, const char* owner)

@@ -145,6 +145,9 @@ void replaceVertexSet(TQ3Vertex3D* vertices, std::size_t count, std::size_t inde
 /// of the first.
 void appendVertexSetKeys(std::vector<double>& key, const TQ3Vertex3D* vertices, std::size_t count);
 std::uint32_t addVertices(Mesh& mesh, const TQ3Vertex3D* vertices, std::size_t count);
+/// One vertex with its own attributes over those of the part it belongs to
+/// (a face's or an edge's set; null for none); returns its index.
+std::uint32_t addVertex(Mesh& mesh, const TQ3Vertex3D& vertex, const AttributeSet* part);
 
 /// kQ3ErrorParameterOutOfRange unless index < count; `what` names the index
 /// ("vertex index") and `owner` the geometry ("the triangle") in the message.

@@ -2,9 +2,9 @@
 // Copyright (c) 2026 The Q3 authors
 #include "geometry/Decompose.h"
 
+#include "base/DrawState.h"
 #include "core/ErrorManager.h"
-
-#include <cstdio>
+#include "core/ParameterChecks.h"
 
 namespace q3 {
 
@@ -25,36 +25,12 @@ std::vector<double> SubdivisionMeasure::key() const
     return values;
 }
 
-namespace {
-
-std::string number(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
-const char* methodName(TQ3SubdivisionMethod method)
-{
-    switch (method) {
-    case kQ3SubdivisionMethodConstant:
-        return "constant";
-    case kQ3SubdivisionMethodWorldSpace:
-        return "world-space";
-    case kQ3SubdivisionMethodScreenSpace:
-        break;
-    }
-    return "screen-space";
-}
-
-} // namespace
-
 std::string subdivisionWarning(const SubdivisionMeasure& measure, const SubdivisionShortfall& shortfall)
 {
-    std::string message = std::string(methodName(measure.method)) + " subdivision of " + shortfall.shape +
-                          " with c1 = " + number(measure.options.c1);
+    std::string message = std::string(subdivisionMethodName(measure.method)) + " subdivision of " + shortfall.shape +
+                          " with c1 = " + numberText(measure.options.c1);
     if (shortfall.withC2)
-        message += " and c2 = " + number(measure.options.c2);
+        message += " and c2 = " + numberText(measure.options.c2);
     message += " would need more than " + shortfall.limit + "; " + shortfall.used;
     return message;
 }

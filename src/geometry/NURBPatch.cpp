@@ -3,12 +3,12 @@
 #include "geometry/NURBPatch.h"
 
 #include "core/ErrorManager.h"
+#include "core/ParameterChecks.h"
 #include "geometry/DataGeometryImpl.h"
+#include "geometry/nurbs/ToolResult.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -64,19 +64,11 @@ template class DataGeometry<NURBPatch, TQ3NURBPatchData>;
 
 namespace {
 
-std::string format(const char* pattern, ...)
-{
-    char buffer[512];
-    va_list args;
-    va_start(args, pattern);
-    std::vsnprintf(buffer, sizeof buffer, pattern, args);
-    va_end(args);
-    return buffer;
-}
+using nurbs::formatMessage;
 
 std::string num(double value)
 {
-    return format("%g", value);
+    return numberText(value);
 }
 
 // a + b and a * b of counts, saturating.
@@ -115,21 +107,21 @@ void checkKnotVector(const float* knots, unsigned long numPoints, unsigned long 
     case nurbs::KnotRule::kValid:
         return;
     case nurbs::KnotRule::kNotFinite:
-        fail(kQ3ErrorInvalidData, format("%s[%zu] is %s; knots must be finite", path.c_str(), i,
-                                         num(knots[i]).c_str()));
+        fail(kQ3ErrorInvalidData, formatMessage("%s[%zu] is %s; knots must be finite", path.c_str(), i,
+                                                num(knots[i]).c_str()));
     case nurbs::KnotRule::kDecreasing:
-        fail(kQ3ErrorInvalidData, format("%s[%zu] = %s is less than %s[%zu] = %s; knots must never decrease",
-                                         path.c_str(), i, num(knots[i]).c_str(), name.c_str(), i - 1,
-                                         num(knots[i - 1]).c_str()));
+        fail(kQ3ErrorInvalidData, formatMessage("%s[%zu] = %s is less than %s[%zu] = %s; knots must never decrease",
+                                                path.c_str(), i, num(knots[i]).c_str(), name.c_str(), i - 1,
+                                                num(knots[i - 1]).c_str()));
     case nurbs::KnotRule::kRunTooLong:
         fail(kQ3ErrorInvalidData,
-             format("%s[%zu..%zu] are all %s: %zu equal knots where at most %zu are allowed (order - 1 inside "
-                    "the vector, order at either end)",
-                    path.c_str(), i, i + check.run - 1, num(knots[i]).c_str(), check.run, check.limit));
+             formatMessage("%s[%zu..%zu] are all %s: %zu equal knots where at most %zu are allowed (order - 1 inside "
+                           "the vector, order at either end)",
+                           path.c_str(), i, i + check.run - 1, num(knots[i]).c_str(), check.run, check.limit));
     case nurbs::KnotRule::kEmptyDomain:
         fail(kQ3ErrorInvalidData,
-             format("%s[%zu] and %s[%lu] are both %s, so the domain is empty", path.c_str(), i, name.c_str(),
-                    numPoints, num(knots[numPoints]).c_str()));
+             formatMessage("%s[%zu] and %s[%lu] are both %s, so the domain is empty", path.c_str(), i, name.c_str(),
+                           numPoints, num(knots[numPoints]).c_str()));
     }
 }
 
@@ -147,11 +139,12 @@ void checkTrimCurve(const TQ3NURBPatchTrimCurveData& curve, const std::string& p
                     const nurbs::SurfaceDomain& domain, double tolerance)
 {
     if (curve.order < nurbs::kMinOrder || curve.order > nurbs::kMaxOrder)
-        fail(kQ3ErrorParameterOutOfRange, format("%s.order %lu is outside 2 to %u (kQ3NURBCurveMaxOrder)",
-                                                 path.c_str(), curve.order, nurbs::kMaxOrder));
+        fail(kQ3ErrorParameterOutOfRange, formatMessage("%s.order %lu is outside 2 to %u (kQ3NURBCurveMaxOrder)",
+                                                        path.c_str(), curve.order, nurbs::kMaxOrder));
     if (curve.numPoints < curve.order)
         fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
-             format("%s.numPoints %lu is less than its order %lu", path.c_str(), curve.numPoints, curve.order));
+             formatMessage("%s.numPoints %lu is less than its order %lu", path.c_str(), curve.numPoints,
+                           curve.order));
     requireCount(sum(curve.numPoints, curve.order), path + ".numPoints + order");
     requirePresent(curve.controlPoints, path + ".controlPoints");
     requirePresent(curve.knots, path + ".knots");
@@ -159,13 +152,13 @@ void checkTrimCurve(const TQ3NURBPatchTrimCurveData& curve, const std::string& p
     for (unsigned long i = 0; i < curve.numPoints; ++i) {
         const TQ3RationalPoint3D& p = curve.controlPoints[i];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.w))
-            fail(kQ3ErrorInvalidData, format("%s.controlPoints[%lu] = (%s, %s, %s) has a value that is not "
-                                             "finite; control points must be finite",
-                                             path.c_str(), i, num(p.x).c_str(), num(p.y).c_str(),
-                                             num(p.w).c_str()));
+            fail(kQ3ErrorInvalidData, formatMessage("%s.controlPoints[%lu] = (%s, %s, %s) has a value that is not "
+                                                    "finite; control points must be finite",
+                                                    path.c_str(), i, num(p.x).c_str(), num(p.y).c_str(),
+                                                    num(p.w).c_str()));
         if (!(p.w > 0.0f))
-            fail(kQ3ErrorInvalidData, format("%s.controlPoints[%lu] has w = %s; weights must be positive",
-                                             path.c_str(), i, num(p.w).c_str()));
+            fail(kQ3ErrorInvalidData, formatMessage("%s.controlPoints[%lu] has w = %s; weights must be positive",
+                                                    path.c_str(), i, num(p.w).c_str()));
     }
     for (unsigned long i = 0; i < curve.numPoints; ++i) {
         const TQ3RationalPoint3D& p = curve.controlPoints[i];
@@ -173,10 +166,10 @@ void checkTrimCurve(const TQ3NURBPatchTrimCurveData& curve, const std::string& p
         if (u < domain.u0 - tolerance || u > domain.u1 + tolerance || v < domain.v0 - tolerance ||
             v > domain.v1 + tolerance)
             fail(kQ3ErrorInvalidData,
-                 format("%s.controlPoints[%lu] is at (u, v) = (%s, %s), outside the patch's domain [%s, %s] x "
-                        "[%s, %s]; trim curves must lie in the domain",
-                        path.c_str(), i, num(u).c_str(), num(v).c_str(), num(domain.u0).c_str(),
-                        num(domain.u1).c_str(), num(domain.v0).c_str(), num(domain.v1).c_str()));
+                 formatMessage("%s.controlPoints[%lu] is at (u, v) = (%s, %s), outside the patch's domain [%s, %s] x "
+                               "[%s, %s]; trim curves must lie in the domain",
+                               path.c_str(), i, num(u).c_str(), num(v).c_str(), num(domain.u0).c_str(),
+                               num(domain.u1).c_str(), num(domain.v0).c_str(), num(domain.v1).c_str()));
     }
 }
 
@@ -207,11 +200,11 @@ void checkTrimLoop(const TQ3NURBPatchTrimLoopData& loop, unsigned long index, co
         const double gap = std::hypot(there.startU - here.endU, there.startV - here.endV);
         if (!(gap <= tolerance))
             fail(kQ3ErrorInvalidData,
-                 format("%s is not closed: trimCurves[%lu] ends at (u, v) = (%s, %s) but trimCurves[%lu] starts "
-                        "at (%s, %s), %s away (the tolerance is %s)",
-                        path.c_str(), c, num(here.endU).c_str(), num(here.endV).c_str(), next,
-                        num(there.startU).c_str(), num(there.startV).c_str(), num(gap).c_str(),
-                        num(tolerance).c_str()));
+                 formatMessage("%s is not closed: trimCurves[%lu] ends at (u, v) = (%s, %s) but trimCurves[%lu] "
+                               "starts at (%s, %s), %s away (the tolerance is %s)",
+                               path.c_str(), c, num(here.endU).c_str(), num(here.endV).c_str(), next,
+                               num(there.startU).c_str(), num(there.startV).c_str(), num(gap).c_str(),
+                               num(tolerance).c_str()));
     }
 }
 
@@ -229,15 +222,16 @@ void validateNURBPatchData(const TQ3NURBPatchData* data)
     const TQ3NURBPatchData& d = *data;
     for (const auto& [order, name] : {std::pair{d.uOrder, "uOrder"}, std::pair{d.vOrder, "vOrder"}})
         if (order < nurbs::kMinPatchOrder || order > nurbs::kMaxPatchOrder)
-            fail(kQ3ErrorParameterOutOfRange, format("%s %lu is outside 2 to %u (kQ3NURBPatchMaxOrder)", name, order,
-                                                     nurbs::kMaxPatchOrder));
+            fail(kQ3ErrorParameterOutOfRange, formatMessage("%s %lu is outside 2 to %u (kQ3NURBPatchMaxOrder)", name,
+                                                            order, nurbs::kMaxPatchOrder));
     if (d.numColumns < d.uOrder)
         fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
-             format("numColumns %lu is less than uOrder %lu: a row needs at least uOrder control points",
-                    d.numColumns, d.uOrder));
+             formatMessage("numColumns %lu is less than uOrder %lu: a row needs at least uOrder control points",
+                           d.numColumns, d.uOrder));
     if (d.numRows < d.vOrder)
         fail(kQ3ErrorGeometryInsufficientNumberOfPoints,
-             format("numRows %lu is less than vOrder %lu: there must be at least vOrder rows", d.numRows, d.vOrder));
+             formatMessage("numRows %lu is less than vOrder %lu: there must be at least vOrder rows", d.numRows,
+                           d.vOrder));
     requireCount(product(d.numRows, d.numColumns), "numRows * numColumns");
     requireCount(sum(d.uOrder, d.numColumns), "uOrder + numColumns");
     requireCount(sum(d.vOrder, d.numRows), "vOrder + numRows");
@@ -254,14 +248,14 @@ void validateNURBPatchData(const TQ3NURBPatchData* data)
         const TQ3RationalPoint4D& p = d.controlPoints[i];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(p.w))
             fail(kQ3ErrorInvalidData,
-                 format("controlPoints[%lu] (row %lu, column %lu) = (%s, %s, %s, %s) has a value that is not "
-                        "finite; control points must be finite",
-                        i, i / d.numColumns, i % d.numColumns, num(p.x).c_str(), num(p.y).c_str(), num(p.z).c_str(),
-                        num(p.w).c_str()));
+                 formatMessage("controlPoints[%lu] (row %lu, column %lu) = (%s, %s, %s, %s) has a value that is not "
+                               "finite; control points must be finite",
+                               i, i / d.numColumns, i % d.numColumns, num(p.x).c_str(), num(p.y).c_str(),
+                               num(p.z).c_str(), num(p.w).c_str()));
         if (!(p.w > 0.0f))
-            fail(kQ3ErrorInvalidData, format("controlPoints[%lu] (row %lu, column %lu) has w = %s; weights must be "
-                                             "positive",
-                                             i, i / d.numColumns, i % d.numColumns, num(p.w).c_str()));
+            fail(kQ3ErrorInvalidData,
+                 formatMessage("controlPoints[%lu] (row %lu, column %lu) has w = %s; weights must be positive", i,
+                               i / d.numColumns, i % d.numColumns, num(p.w).c_str()));
     }
     const nurbs::SurfaceDomain domain = nurbs::surfaceDomain(surfaceRefOf(d));
     const double tolerance = trimTolerance(domain);
@@ -310,7 +304,8 @@ std::string warningFor(const SubdivisionMeasure& measure, const nurbs::Tessellat
     shortfall.limit =
         "kQ3SubdivisionMaxTrianglesPerPatch (" + std::to_string(limits::kMaxTrianglesPerPatch) + ") triangles";
     if (constant)
-        shortfall.used = format("%u x %u segments per pair of spans are used", result.uSegments, result.vSegments);
+        shortfall.used =
+            formatMessage("%u x %u segments per pair of spans are used", result.uSegments, result.vSegments);
     else if (result.substituted)
         shortfall.used = "edges up to " + num(result.effectiveValue) + " long are used";
     else {
@@ -387,8 +382,8 @@ TQ3RationalPoint4D NURBPatch::controlPoint(unsigned long row, unsigned long colu
 void NURBPatch::setControlPoint(unsigned long row, unsigned long column, const TQ3RationalPoint4D& point)
 {
     controlPoint(row, column);
-    const std::string where = format("controlPoints[%lu] (row %lu, column %lu)", row * data().numColumns + column,
-                                     row, column);
+    const std::string where =
+        formatMessage("controlPoints[%lu] (row %lu, column %lu)", row * data().numColumns + column, row, column);
     if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z) || !std::isfinite(point.w))
         fail(kQ3ErrorInvalidParameter, "the new " + where + " has a value that is not finite");
     if (!(point.w > 0.0f))
@@ -437,8 +432,8 @@ void NURBPatch::setKnot(bool inU, unsigned long index, float value)
     try {
         validateNURBPatchData(&changed);
     } catch (const Error& error) {
-        fail(kQ3ErrorInvalidParameter, format("setting %s[%lu] to %s would break a rule: ", inU ? "uKnots" : "vKnots",
-                                              index, num(value).c_str()) +
+        fail(kQ3ErrorInvalidParameter, formatMessage("setting %s[%lu] to %s would break a rule: ",
+                                                     inU ? "uKnots" : "vKnots", index, num(value).c_str()) +
                                            error.what());
     }
     (inU ? editableData().uKnots : editableData().vKnots)[index] = value;

@@ -110,13 +110,8 @@ void Polyhedron::decompose(const DecomposeContext&, PrimitiveSink& sink) const
                 const TQ3PolyhedronTriangleData& triangle = d.triangles[t];
                 const AttributeSet* face = heldAttributeSet(triangle.triangleAttributeSet);
                 std::uint32_t corner[3];
-                for (int k = 0; k < 3; ++k) {
-                    const TQ3Vertex3D& v = d.vertices[triangle.vertexIndices[k]];
-                    VertexAttributes attributes;
-                    attributes.inheritFrom(heldAttributeSet(v.attributeSet));
-                    attributes.inheritFrom(face);
-                    corner[k] = mesh.addVertex(v.point, attributes);
-                }
+                for (int k = 0; k < 3; ++k)
+                    corner[k] = addVertex(mesh, d.vertices[triangle.vertexIndices[k]], face);
                 mesh.addTriangle(corner[0], corner[1], corner[2]);
                 for (int k = 0; k < 3; ++k)
                     if ((triangle.edgeFlag & (1ul << k)) != 0)
@@ -126,13 +121,8 @@ void Polyhedron::decompose(const DecomposeContext&, PrimitiveSink& sink) const
                 const TQ3PolyhedronEdgeData& edge = d.edges[e];
                 const AttributeSet* own = heldAttributeSet(edge.edgeAttributeSet);
                 std::uint32_t end[2];
-                for (int k = 0; k < 2; ++k) {
-                    const TQ3Vertex3D& v = d.vertices[edge.vertexIndices[k]];
-                    VertexAttributes attributes;
-                    attributes.inheritFrom(heldAttributeSet(v.attributeSet));
-                    attributes.inheritFrom(own);
-                    end[k] = mesh.addVertex(v.point, attributes);
-                }
+                for (int k = 0; k < 2; ++k)
+                    end[k] = addVertex(mesh, d.vertices[edge.vertexIndices[k]], own);
                 mesh.addEdge(end[0], end[1]);
             }
         },

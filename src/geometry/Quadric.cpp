@@ -3,13 +3,13 @@
 #include "geometry/Quadric.h"
 
 #include "core/AttributeSet.h"
+#include "core/ParameterChecks.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -18,17 +18,6 @@ namespace q3 {
 static_assert(unsigned(kQ3EndCapMaskTop) == quadric::kCapTop && unsigned(kQ3EndCapMaskBottom) == quadric::kCapBottom &&
                   unsigned(kQ3EndCapMaskInterior) == quadric::kCapInterior,
               "quadric::Caps are QuickDraw 3D's TQ3EndCapMasks");
-
-namespace {
-
-std::string number(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
-} // namespace
 
 void requireWithinFloatRange(const TQ3Point3D& origin, std::initializer_list<TQ3Vector3D> vectors, double lastScale)
 {
@@ -39,21 +28,22 @@ void requireWithinFloatRange(const TQ3Point3D& origin, std::initializer_list<TQ3
     const double largest =
         std::max({std::fabs(double(origin.x)), std::fabs(double(origin.y)), std::fabs(double(origin.z))});
     if (!(largest + reach <= double(FLT_MAX)))
-        fail(kQ3ErrorInvalidData, "the shape reaches " + number(largest + reach) +
-                                      " from the local origin, beyond the range of float (" + number(FLT_MAX) + ")");
+        fail(kQ3ErrorInvalidData, "the shape reaches " + numberText(largest + reach) +
+                                      " from the local origin, beyond the range of float (" + numberText(FLT_MAX) +
+                                      ")");
 }
 
 void requireUnitParameter(float value, const char* name)
 {
     if (!(value >= 0.0f && value <= 1.0f))
-        fail(kQ3ErrorInvalidData, std::string(name) + " is " + number(value) + ", outside 0 to 1");
+        fail(kQ3ErrorInvalidData, std::string(name) + " is " + numberText(value) + ", outside 0 to 1");
 }
 
 void requireOrdered(float min, float max, const char* minName, const char* maxName)
 {
     if (min > max)
         fail(kQ3ErrorInvalidData,
-             std::string(minName) + " (" + number(min) + ") is above " + maxName + " (" + number(max) + ")");
+             std::string(minName) + " (" + numberText(min) + ") is above " + maxName + " (" + numberText(max) + ")");
 }
 
 void requireCapBits(TQ3EndCap caps)
@@ -83,14 +73,15 @@ std::string emptyAngle(float min, float max, const char* minName, const char* ma
 {
     if (min != max && !(min == 1.0f && max == 0.0f))
         return {};
-    return std::string(minName) + " " + number(min) + " and " + maxName + " " + number(max) + " select no angle";
+    return std::string(minName) + " " + numberText(min) + " and " + maxName + " " + numberText(max) +
+           " select no angle";
 }
 
 std::string emptyRange(float min, float max, const char* minName, const char* maxName)
 {
     if (min != max)
         return {};
-    return std::string(minName) + " and " + maxName + " are both " + number(min) + ": the range is empty";
+    return std::string(minName) + " and " + maxName + " are both " + numberText(min) + ": the range is empty";
 }
 
 std::string firstCase(std::initializer_list<std::string> cases)
@@ -147,9 +138,9 @@ std::string buildSurface(Mesh& mesh, const quadric::Patches& patches, const Subd
     shortfall.limit =
         "kQ3SubdivisionMaxTrianglesPerSurface (" + std::to_string(limits::kMaxTrianglesPerSurface) + ") triangles";
     shortfall.withC2 = measure.options.method == nurbs::Method::kConstant;
-    shortfall.used = shortfall.withC2 ? "c1 = " + number(t.effectiveC1) + " and c2 = " + number(t.effectiveC2) +
+    shortfall.used = shortfall.withC2 ? "c1 = " + numberText(t.effectiveC1) + " and c2 = " + numberText(t.effectiveC2) +
                                             " are used"
-                                      : "edges up to " + number(t.effectiveC1) + " long are used";
+                                      : "edges up to " + numberText(t.effectiveC1) + " long are used";
     return subdivisionWarning(measure, shortfall);
 }
 

@@ -72,13 +72,8 @@ void TriGrid::decompose(const DecomposeContext&, PrimitiveSink& sink) const
                                                                          : nullptr;
                 const std::array<std::size_t, 3> corners = facetVertices(d.numColumns, f);
                 std::uint32_t added[3];
-                for (int k = 0; k < 3; ++k) {
-                    const TQ3Vertex3D& v = d.vertices[corners[k]];
-                    VertexAttributes attributes;
-                    attributes.inheritFrom(heldAttributeSet(v.attributeSet));
-                    attributes.inheritFrom(face);
-                    added[k] = mesh.addVertex(v.point, attributes);
-                }
+                for (int k = 0; k < 3; ++k)
+                    added[k] = addVertex(mesh, d.vertices[corners[k]], face);
                 mesh.addTriangle(added[0], added[1], added[2]);
                 for (int k = 0; k < 3; ++k)
                     mesh.addEdge(added[k], added[(k + 1) % 3]);

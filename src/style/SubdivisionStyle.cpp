@@ -16,19 +16,6 @@ const ClassInfo kSubdivisionStyleClass{kQ3StyleTypeSubdivision, &kStyleClass, "s
 
 namespace {
 
-const char* methodName(TQ3SubdivisionMethod method)
-{
-    switch (method) {
-    case kQ3SubdivisionMethodConstant:
-        return "constant";
-    case kQ3SubdivisionMethodWorldSpace:
-        return "world-space";
-    case kQ3SubdivisionMethodScreenSpace:
-        return "screen-space";
-    }
-    return "unknown";
-}
-
 // One parameter (c1 or c2) under QD3DStyle.h's substitution rule: returns the
 // value to use and appends to `report` when it replaced an unreasonable one.
 float checkParameter(TQ3SubdivisionMethod method, float value, const char* name, std::string& report)
@@ -57,7 +44,7 @@ float checkParameter(TQ3SubdivisionMethod method, float value, const char* name,
         if (!report.empty())
             report += "; ";
         report += std::string(name) + " = " + std::to_string(value) + " " + why + " for the " +
-                  methodName(method) + " method, so " + std::to_string(result) + " is used";
+                  subdivisionMethodName(method) + " method, so " + std::to_string(result) + " is used";
     }
     return result;
 }

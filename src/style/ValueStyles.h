@@ -23,85 +23,63 @@ extern const ClassInfo kOrientationStyleClass;
 extern const ClassInfo kAntiAliasStyleClass;
 extern const ClassInfo kFogStyleClass;
 
-struct PickIDRule {
-    using Value = unsigned long;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypePickID;
-    static constexpr Value DrawState::*kField = &DrawState::pickID;
-    static const ClassInfo& classInfo() { return kPickIDStyleClass; }
+/// What every rule below shares: the value's type, the style's type code,
+/// the DrawState field it sets and its class.
+template <class V, TQ3ObjectType Type, V DrawState::*Field, const ClassInfo& Info>
+struct ValueStyleRule {
+    using Value = V;
+    static constexpr TQ3ObjectType kType = Type;
+    static constexpr Value DrawState::*kField = Field;
+    static const ClassInfo& classInfo() { return Info; }
+};
+
+struct PickIDRule : ValueStyleRule<unsigned long, kQ3StyleTypePickID, &DrawState::pickID, kPickIDStyleClass> {
     /// Every ID is valid.
     static Value check(const Value& id) { return id; }
 };
 
-struct PickPartsRule {
-    using Value = TQ3PickParts;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypePickParts;
-    static constexpr Value DrawState::*kField = &DrawState::pickParts;
-    static const ClassInfo& classInfo() { return kPickPartsStyleClass; }
+struct PickPartsRule
+    : ValueStyleRule<TQ3PickParts, kQ3StyleTypePickParts, &DrawState::pickParts, kPickPartsStyleClass> {
     /// kQ3PickPartsObject or any combination of the three masks.
     static Value check(const Value& parts);
 };
 
-struct CastShadowsRule {
-    using Value = TQ3Boolean;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypeCastShadows;
-    static constexpr Value DrawState::*kField = &DrawState::castShadows;
-    static const ClassInfo& classInfo() { return kCastShadowsStyleClass; }
+struct CastShadowsRule
+    : ValueStyleRule<TQ3Boolean, kQ3StyleTypeCastShadows, &DrawState::castShadows, kCastShadowsStyleClass> {
     static Value check(const Value& casts);
 };
 
-struct ReceiveShadowsRule {
-    using Value = TQ3Boolean;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypeReceiveShadows;
-    static constexpr Value DrawState::*kField = &DrawState::receiveShadows;
-    static const ClassInfo& classInfo() { return kReceiveShadowsStyleClass; }
+struct ReceiveShadowsRule
+    : ValueStyleRule<TQ3Boolean, kQ3StyleTypeReceiveShadows, &DrawState::receiveShadows, kReceiveShadowsStyleClass> {
     static Value check(const Value& receives);
 };
 
-struct FillRule {
-    using Value = TQ3FillStyle;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypeFill;
-    static constexpr Value DrawState::*kField = &DrawState::fill;
-    static const ClassInfo& classInfo() { return kFillStyleClass; }
+struct FillRule : ValueStyleRule<TQ3FillStyle, kQ3StyleTypeFill, &DrawState::fill, kFillStyleClass> {
     static Value check(const Value& fill);
 };
 
-struct BackfacingRule {
-    using Value = TQ3BackfacingStyle;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypeBackfacing;
-    static constexpr Value DrawState::*kField = &DrawState::backfacing;
-    static const ClassInfo& classInfo() { return kBackfacingStyleClass; }
+struct BackfacingRule
+    : ValueStyleRule<TQ3BackfacingStyle, kQ3StyleTypeBackfacing, &DrawState::backfacing, kBackfacingStyleClass> {
     static Value check(const Value& backfacing);
 };
 
-struct InterpolationRule {
-    using Value = TQ3InterpolationStyle;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypeInterpolation;
-    static constexpr Value DrawState::*kField = &DrawState::interpolation;
-    static const ClassInfo& classInfo() { return kInterpolationStyleClass; }
+struct InterpolationRule
+    : ValueStyleRule<TQ3InterpolationStyle, kQ3StyleTypeInterpolation, &DrawState::interpolation,
+                     kInterpolationStyleClass> {
     static Value check(const Value& interpolation);
 };
 
-struct OrientationRule {
-    using Value = TQ3OrientationStyle;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypeOrientation;
-    static constexpr Value DrawState::*kField = &DrawState::orientation;
-    static const ClassInfo& classInfo() { return kOrientationStyleClass; }
+struct OrientationRule
+    : ValueStyleRule<TQ3OrientationStyle, kQ3StyleTypeOrientation, &DrawState::orientation, kOrientationStyleClass> {
     static Value check(const Value& orientation);
 };
 
-struct AntiAliasRule {
-    using Value = TQ3AntiAliasStyleData;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypeAntiAlias;
-    static constexpr Value DrawState::*kField = &DrawState::antiAlias;
-    static const ClassInfo& classInfo() { return kAntiAliasStyleClass; }
+struct AntiAliasRule
+    : ValueStyleRule<TQ3AntiAliasStyleData, kQ3StyleTypeAntiAlias, &DrawState::antiAlias, kAntiAliasStyleClass> {
     static Value check(const Value& data);
 };
 
-struct FogRule {
-    using Value = TQ3FogStyleData;
-    static constexpr TQ3ObjectType kType = kQ3StyleTypeFog;
-    static constexpr Value DrawState::*kField = &DrawState::fog;
-    static const ClassInfo& classInfo() { return kFogStyleClass; }
+struct FogRule : ValueStyleRule<TQ3FogStyleData, kQ3StyleTypeFog, &DrawState::fog, kFogStyleClass> {
     static Value check(const Value& data);
 };
 

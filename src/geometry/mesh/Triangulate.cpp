@@ -166,19 +166,11 @@ public:
             const double turn = cross(at(m_nodes[v.prev].point), at(v.point), at(m_nodes[v.next].point));
             const bool flat = turn == 0.0;
             const bool stuck = sinceLastCut > remaining;
-            if (flat || (turn > 0.0 && (stuck || isEar(current)))) {
+            const bool ear = flat || (turn > 0.0 && (stuck || isEar(current)));
+            // Past two laps without a cut the polygon is not simple and not a
+            // single convex vertex is left: the vertex is cut as it is.
+            if (ear || (stuck && sinceLastCut > 2 * remaining)) {
                 if (!flat)
-                    emit(v.prev, current, v.next);
-                const std::uint32_t prev = v.prev;
-                removeNode(current);
-                --remaining;
-                sinceLastCut = 0;
-                current = prev;
-                continue;
-            }
-            if (stuck && sinceLastCut > 2 * remaining) {
-                // Not simple and not a single convex vertex left: cut as is.
-                if (turn != 0.0)
                     emit(v.prev, current, v.next);
                 const std::uint32_t prev = v.prev;
                 removeNode(current);

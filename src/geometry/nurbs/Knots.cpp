@@ -16,23 +16,13 @@
 // non-empty span so that evaluation is defined on the closed domain.
 
 #include "geometry/nurbs/Knots.h"
+#include "geometry/nurbs/ToolResult.h"
 
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 
 namespace q3::nurbs {
 namespace {
-
-std::string format(const char* pattern, ...)
-{
-    char buffer[256];
-    va_list args;
-    va_start(args, pattern);
-    std::vsnprintf(buffer, sizeof buffer, pattern, args);
-    va_end(args);
-    return buffer;
-}
 
 CurveValidation fail(CurveRule rule, std::size_t index, std::string message)
 {
@@ -101,11 +91,11 @@ CurveValidation validateCurve(const CurveRef& curve)
     const std::size_t n = curve.numPoints;
     if (k < kMinOrder || k > kMaxOrder) {
         return fail(CurveRule::kOrderOutOfRange, 0,
-                    format("order %u is outside %u..%u", k, kMinOrder, kMaxOrder));
+                    formatMessage("order %u is outside %u..%u", k, kMinOrder, kMaxOrder));
     }
     if (n < k) {
         return fail(CurveRule::kTooFewPoints, 0,
-                    format("%zu control points is fewer than the order %u", n, k));
+                    formatMessage("%zu control points is fewer than the order %u", n, k));
     }
     if (curve.points == nullptr || curve.knots == nullptr) {
         return fail(CurveRule::kMissingArray, 0,
@@ -118,14 +108,14 @@ CurveValidation validateCurve(const CurveRef& curve)
     for (std::size_t i = 0; i < numKnots; ++i) {
         if (!std::isfinite(x[i])) {
             return fail(CurveRule::kKnotNotFinite, i,
-                        format("knot %zu is %g; knots must be finite", i, double(x[i])));
+                        formatMessage("knot %zu is %g; knots must be finite", i, double(x[i])));
         }
     }
     for (std::size_t i = 1; i < numKnots; ++i) {
         if (x[i] < x[i - 1]) {
             return fail(CurveRule::kKnotDecreasing, i,
-                        format("knot %zu (%g) is less than knot %zu (%g); knots must be nondecreasing",
-                               i, double(x[i]), i - 1, double(x[i - 1])));
+                        formatMessage("knot %zu (%g) is less than knot %zu (%g); knots must be nondecreasing",
+                                      i, double(x[i]), i - 1, double(x[i - 1])));
         }
     }
     for (std::size_t start = 0; start < numKnots;) {
@@ -138,9 +128,9 @@ CurveValidation validateCurve(const CurveRef& curve)
         const std::size_t limit = atEnd ? k : k - 1;
         if (length > limit) {
             return fail(CurveRule::kKnotRunTooLong, start,
-                        format("knots %zu..%zu are all %g: %zu equal knots where at most %zu are "
-                               "allowed (order - 1 inside the vector, order at either end)",
-                               start, stop - 1, double(x[start]), length, limit));
+                        formatMessage("knots %zu..%zu are all %g: %zu equal knots where at most %zu are "
+                                      "allowed (order - 1 inside the vector, order at either end)",
+                                      start, stop - 1, double(x[start]), length, limit));
         }
         start = stop;
     }
@@ -150,23 +140,23 @@ CurveValidation validateCurve(const CurveRef& curve)
         for (int c = 0; c < 4; ++c) {
             if (!std::isfinite(p[4 * i + c])) {
                 return fail(CurveRule::kPointNotFinite, i,
-                            format("control point %zu has a component that is %g; "
-                                   "control points must be finite",
-                                   i, double(p[4 * i + c])));
+                            formatMessage("control point %zu has a component that is %g; "
+                                          "control points must be finite",
+                                          i, double(p[4 * i + c])));
             }
         }
     }
     for (std::size_t i = 0; i < n; ++i) {
         if (!(p[4 * i + 3] > 0.0f)) {
             return fail(CurveRule::kWeightNotPositive, i,
-                        format("control point %zu has w = %g; w must be positive",
-                               i, double(p[4 * i + 3])));
+                        formatMessage("control point %zu has w = %g; w must be positive",
+                                      i, double(p[4 * i + 3])));
         }
     }
     if (!(x[k - 1] < x[n])) {
         return fail(CurveRule::kEmptyDomain, k - 1,
-                    format("knot %u and knot %zu are both %g, so the curve's domain is empty",
-                           k - 1, n, double(x[n])));
+                    formatMessage("knot %u and knot %zu are both %g, so the curve's domain is empty",
+                                  k - 1, n, double(x[n])));
     }
     return CurveValidation{};
 }

@@ -427,24 +427,8 @@ private:
         double dhi = chord(from, hi);
         const double accept = (1.0 - kStepTolerance) * s;
         const double target = (1.0 - 0.5 * kStepTolerance) * s;
-        if (lo.u < guess && guess < hi.u && dlo < accept) {
-            const RowPoint p = sample(guess);
-            const double d = chord(from, p);
-            if (d <= s) {
-                lo = p;
-                dlo = d;
-            } else {
-                hi = p;
-                dhi = d;
-            }
-        }
-        for (unsigned iteration = 0; iteration < kMaxIterations && dlo < accept; ++iteration) {
-            double f = 0.5;
-            if (iteration % 3 != 2 && std::isfinite(dhi))
-                f = std::min(0.95, std::max(0.05, (target - dlo) / (dhi - dlo)));
-            const double u = lo.u + (hi.u - lo.u) * f;
-            if (!(lo.u < u && u < hi.u))
-                break;
+        // Samples u and keeps it as the end of the bracket on its side of s.
+        const auto narrow = [&](double u) {
             const RowPoint p = sample(u);
             const double d = chord(from, p);
             if (d <= s) {
@@ -454,6 +438,17 @@ private:
                 hi = p;
                 dhi = d;
             }
+        };
+        if (lo.u < guess && guess < hi.u && dlo < accept)
+            narrow(guess);
+        for (unsigned iteration = 0; iteration < kMaxIterations && dlo < accept; ++iteration) {
+            double f = 0.5;
+            if (iteration % 3 != 2 && std::isfinite(dhi))
+                f = std::min(0.95, std::max(0.05, (target - dlo) / (dhi - dlo)));
+            const double u = lo.u + (hi.u - lo.u) * f;
+            if (!(lo.u < u && u < hi.u))
+                break;
+            narrow(u);
         }
         if (lo.u > from.u)
             return lo;
