@@ -27,15 +27,6 @@ namespace {
 
 using namespace q3test;
 
-TQ3GeometryObject newBox()
-{
-    TQ3BoxData data{};
-    data.orientation = {1, 0, 0};
-    data.majorAxis = {0, 1, 0};
-    data.minorAxis = {0, 0, 1};
-    return Q3Box_New(&data);
-}
-
 // ---- A shape class: a float, a count and a label, with an optional
 // sub-object (written after its data, in a container).
 

@@ -29,16 +29,6 @@ namespace {
 
 using namespace q3test;
 
-// A unit box.
-TQ3GeometryObject newBox()
-{
-    TQ3BoxData data{};
-    data.orientation = {1, 0, 0};
-    data.majorAxis = {0, 1, 0};
-    data.minorAxis = {0, 0, 1};
-    return Q3Box_New(&data);
-}
-
 // A counter element: the application passes an int, the set keeps it
 // doubled, Get gives it back halved; every method counts its calls.
 struct Counts {

@@ -22,16 +22,6 @@ namespace {
 
 using namespace q3test;
 
-// A unit box.
-TQ3GeometryObject newBox()
-{
-    TQ3BoxData data{};
-    data.orientation = {1, 0, 0};
-    data.majorAxis = {0, 1, 0};
-    data.minorAxis = {0, 0, 1};
-    return Q3Box_New(&data);
-}
-
 // A shape class keeping a number and a reference to a sub-object.
 struct Counted {
     int value;

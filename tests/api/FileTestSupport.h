@@ -7,6 +7,7 @@
 
 #include "QD3D.h"
 #include "QD3DErrors.h"
+#include "QD3DGeometry.h"
 #include "QD3DIO.h"
 #include "QD3DSet.h"
 #include "QD3DStorage.h"
@@ -21,6 +22,17 @@
 #include <vector>
 
 namespace q3test {
+
+/// A unit box at the origin, the object the file and custom-class tests
+/// write and attach things to.
+inline TQ3GeometryObject newBox()
+{
+    TQ3BoxData data{};
+    data.orientation = {1, 0, 0};
+    data.majorAxis = {0, 1, 0};
+    data.minorAxis = {0, 0, 1};
+    return Q3Box_New(&data);
+}
 
 /// The bytes of a file written in `mode` by a writing loop whose every pass
 /// calls `submit(view)`.
