@@ -9,6 +9,7 @@
 // the application with Q3's picture in the middle, checked against a pixmap
 // draw context's.
 
+#include "BoxAndTriangle.h"
 #include "Q3ApiTest.h"
 #include "RenderTestSupport.h"
 
@@ -218,26 +219,7 @@ protected:
         return status;
     }
 
-    static void submitScene(TQ3ViewObject view)
-    {
-        TQ3BoxData box{};
-        box.origin = {-0.6f, -0.6f, -0.6f};
-        box.orientation = {0.0f, 1.2f, 0.0f};
-        box.majorAxis = {0.0f, 0.0f, 1.2f};
-        box.minorAxis = {1.2f, 0.0f, 0.0f};
-        Q3Box_Submit(&box, view);
-        TQ3Vertex3D vertices[3] = {{{-1.5f, -1.0f, 0.8f}, nullptr}, {{1.5f, -1.0f, 0.8f}, nullptr},
-                                   {{0.0f, 1.4f, 0.8f}, nullptr}};
-        const TQ3ColorRGB colours[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        for (int i = 0; i < 3; ++i) {
-            vertices[i].attributeSet = Q3AttributeSet_New();
-            Q3AttributeSet_Add(vertices[i].attributeSet, kQ3AttributeTypeDiffuseColor, &colours[i]);
-        }
-        const TQ3TriangleData triangle{{vertices[0], vertices[1], vertices[2]}, nullptr};
-        Q3Triangle_Submit(&triangle, view);
-        for (TQ3Vertex3D& vertex : vertices)
-            Q3Object_Dispose(vertex.attributeSet);
-    }
+    static void submitScene(TQ3ViewObject view) { q3test::submitBoxAndTriangle(view); }
 
     // The scene through a pixmap draw context of the same data, the pixmap
     // first filled with the application's background.

@@ -12,6 +12,7 @@
 // whose names Xlib's macros would break: src/CMakeLists.txt).
 #undef WINDOW_SYSTEM_X11
 #define WINDOW_SYSTEM_X11 1
+#include "BoxAndTriangle.h"
 #include "RenderTestSupport.h"
 #include "XvfbServer.h"
 
@@ -99,26 +100,7 @@ protected:
 
     // The test scene: a lit box and a triangle with a colour per vertex,
     // seen in perspective.
-    static void submitScene(TQ3ViewObject view)
-    {
-        TQ3BoxData box{};
-        box.origin = {-0.6f, -0.6f, -0.6f};
-        box.orientation = {0.0f, 1.2f, 0.0f};
-        box.majorAxis = {0.0f, 0.0f, 1.2f};
-        box.minorAxis = {1.2f, 0.0f, 0.0f};
-        Q3Box_Submit(&box, view);
-        TQ3Vertex3D vertices[3] = {{{-1.5f, -1.0f, 0.8f}, nullptr}, {{1.5f, -1.0f, 0.8f}, nullptr},
-                                   {{0.0f, 1.4f, 0.8f}, nullptr}};
-        const TQ3ColorRGB colours[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        for (int i = 0; i < 3; ++i) {
-            vertices[i].attributeSet = Q3AttributeSet_New();
-            Q3AttributeSet_Add(vertices[i].attributeSet, kQ3AttributeTypeDiffuseColor, &colours[i]);
-        }
-        const TQ3TriangleData triangle{{vertices[0], vertices[1], vertices[2]}, nullptr};
-        Q3Triangle_Submit(&triangle, view);
-        for (TQ3Vertex3D& vertex : vertices)
-            Q3Object_Dispose(vertex.attributeSet);
-    }
+    static void submitScene(TQ3ViewObject view) { q3test::submitBoxAndTriangle(view); }
 
     // Renders the scene through a view with `context`, a perspective camera
     // for width x height and a directional light.
