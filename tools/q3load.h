@@ -5,13 +5,15 @@
 
 /* Reading every object of a 3DMF file, and printing the library's warnings,
  * shared by q3render, q3convert and q3view; fitting a file's camera to an
- * image and measuring a model, shared by q3render and q3view. */
+ * image and measuring a model, and the --size and --renderer options,
+ * shared by q3render and q3view. */
 
 #include "QD3D.h"
 #include "QD3DCamera.h"
 #include "QD3DErrors.h"
 #include "QD3DGroup.h"
 #include "QD3DIO.h"
+#include "QD3DRenderer.h"
 #include "QD3DStorage.h"
 #include "QD3DView.h"
 
@@ -19,6 +21,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* The objects of the file at path, in order, in *objects (free with
  * q3load_free); the number read, or -1 after printing why the file cannot
@@ -177,6 +180,25 @@ static inline void q3load_readHints(TQ3ViewHintsObject hints, TQ3CameraObject *c
         background->a = 1.0f;
         *hasBackground = 1;
     }
+}
+
+/* --size WIDTHxHEIGHT: 1 to 8192 each; 1 when value is one, 0 otherwise. */
+static inline int q3load_parseSize(const char *value, unsigned long *width, unsigned long *height)
+{
+    return sscanf(value, "%lux%lu", width, height) == 2 && *width >= 1 && *height >= 1 && *width <= 8192 &&
+           *height <= 8192;
+}
+
+/* --renderer interactive | wireframe: 1 with *type set, 0 for another name. */
+static inline int q3load_parseRenderer(const char *value, TQ3ObjectType *type)
+{
+    if (strcmp(value, "interactive") == 0)
+        *type = kQ3RendererTypeInteractive;
+    else if (strcmp(value, "wireframe") == 0)
+        *type = kQ3RendererTypeWireFrame;
+    else
+        return 0;
+    return 1;
 }
 
 #endif /* Q3LOAD_H */

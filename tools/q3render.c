@@ -167,16 +167,11 @@ int main(int argc, char **argv)
             out = value;
             ++arg;
         } else if (strcmp(a, "--size") == 0 && value != NULL) {
-            if (sscanf(value, "%lux%lu", &width, &height) != 2 || width < 1 || height < 1 || width > 8192 ||
-                height > 8192)
+            if (!q3load_parseSize(value, &width, &height))
                 return usage();
             ++arg;
         } else if (strcmp(a, "--renderer") == 0 && value != NULL) {
-            if (strcmp(value, "interactive") == 0)
-                renderer = kQ3RendererTypeInteractive;
-            else if (strcmp(value, "wireframe") == 0)
-                renderer = kQ3RendererTypeWireFrame;
-            else
+            if (!q3load_parseRenderer(value, &renderer))
                 return usage();
             ++arg;
         } else if (strcmp(a, "--subdivision") == 0 && value != NULL) {
