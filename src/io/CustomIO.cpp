@@ -6,8 +6,10 @@
 #include "core/CustomObject.h"
 #include "core/ErrorManager.h"
 #include "io/ClassIO.h"
+#include "io/CustomElements.h"
 #include "io/File.h"
 
+#include <algorithm>
 #include <string>
 
 namespace q3::io {
@@ -247,7 +249,7 @@ Ref<SharedObject> readCustomObject(ReadContext& context, const Node& node, const
     }
     File& file = readingFile(context);
     TQ3Object made = nullptr;
-    file.readNode(node, [&] { made = read(&file); });
+    const std::size_t unread = file.readNode(node, [&] { made = read(&file); });
     if (made == nullptr)
         fail(kQ3ErrorInvalidMetafileObject, "the read method of the class \"" + objectClass.name() + "\" failed");
     Object& object = lookupObject(made, "the object the read method returned");
@@ -257,7 +259,29 @@ Ref<SharedObject> readCustomObject(ReadContext& context, const Node& node, const
                                                 "\" returned a " + object.classInfo().name +
                                                 ", which is no shared object");
     }
-    return Ref<SharedObject>::adopt(static_cast<SharedObject*>(&object));
+    Ref<SharedObject> result = Ref<SharedObject>::adopt(static_cast<SharedObject*>(&object));
+    // Elements the read method left in its container belong to its object,
+    // as they do to every other object whose container holds them (what
+    // Q3Object_AddElement gave it comes back so).
+    if (node.type == kTypeContainer) {
+        std::vector<std::unique_ptr<CustomElement>> elements;
+        for (std::size_t i = std::max<std::size_t>(unread, 1); i < node.children.size(); ++i)
+            readCustomElement(context, node.children[i], elements);
+        for (std::unique_ptr<CustomElement>& element : elements)
+            result->elements().ownSet().addCustomElement(std::move(element));
+    }
+    return result;
+}
+
+Ref<SharedObject> readElementAsSet(ReadContext& context, const Node& node)
+{
+    std::vector<std::unique_ptr<CustomElement>> elements;
+    if (!readCustomElement(context, node, elements))
+        return {};
+    Ref<Set> set = makeShared<Set>();
+    for (std::unique_ptr<CustomElement>& element : elements)
+        set->addCustomElement(std::move(element));
+    return Ref<SharedObject>(std::move(set));
 }
 
 bool readCustomElementData(ReadContext& context, const Node& node, const CustomClass& elementClass,

@@ -95,6 +95,14 @@ CustomWrite& activeCustomWrite(TQ3ViewObject view);
 /// an unknown object, with kQ3WarningNoObjectSupportForReadMethod posted
 /// here). Throws kQ3ErrorInvalidMetafileObject when the method fails.
 Ref<SharedObject> readCustomObject(ReadContext& context, const Node& node, const CustomClass& objectClass);
+/// Q3File_ReadObject of an element of a registered element or attribute
+/// class (an application's, or Apple's name and URL elements): a new set
+/// (kQ3SharedTypeSet) holding it, as QuickDraw 3D's and Quesa's readers
+/// give it to a read method going through its container. Null when the
+/// node is no such element (or its class has no read-data method, which
+/// posts kQ3WarningNoObjectSupportForReadMethod: it is then an unknown
+/// object).
+Ref<SharedObject> readElementAsSet(ReadContext& context, const Node& node);
 /// The elements the read-data method of an element class made from the
 /// node; false (and nothing made) when the class has none
 /// (kQ3WarningNoObjectSupportForReadMethod posted). Throws

@@ -5,6 +5,7 @@
 #include "core/ErrorManager.h"
 #include "geometry/Geometry.h"
 #include "group/Group.h"
+#include "io/CustomIO.h"
 #include "io/ExternalReference.h"
 #include "io/StringObject.h"
 #include "shader/Shader.h"
@@ -243,7 +244,9 @@ TQ3ObjectType File::typeOfNode(const io::Node& first) const
             break;
         }
     }
-    return io::classOfType(node->type) != nullptr ? node->type : kQ3ShapeTypeUnknown;
+    return io::classOfType(node->type) != nullptr || (node->type != 0 && findCustomClass(node->type))
+               ? node->type
+               : kQ3ShapeTypeUnknown;
 }
 
 bool File::isNextObjectOfType(TQ3ObjectType type) const
@@ -271,6 +274,10 @@ Ref<SharedObject> File::readObject()
         // A subobject of the container primitive reads started on.
         std::size_t index = m_data->nextChild;
         try {
+            if (Ref<SharedObject> set = io::readElementAsSet(*m_reader, m_data->container->children[index])) {
+                m_data->nextChild = index + 1;
+                return set;
+            }
             Ref<SharedObject> object = m_reader->sequenceItem(m_data->container->children, index);
             m_data->nextChild = index;
             return object;
@@ -296,6 +303,10 @@ Ref<SharedObject> File::readObject()
     // On failure the item is skipped, so the next call reads the one after.
     std::size_t index = m_next;
     try {
+        if (Ref<SharedObject> set = io::readElementAsSet(*m_reader, node)) {
+            m_next = index + 1;
+            return set;
+        }
         Ref<SharedObject> object = m_reader->sequenceItem(m_file->objects, index);
         m_next = index;
         return object;
@@ -368,7 +379,7 @@ const io::Node* dataNodeOf(const io::Node& node)
 
 } // namespace
 
-void File::readNode(const io::Node& node, const std::function<void()>& body)
+std::size_t File::readNode(const io::Node& node, const std::function<void()>& body)
 {
     requireReading();
     const io::Node* data = dataNodeOf(node);
@@ -391,6 +402,7 @@ void File::readNode(const io::Node& node, const std::function<void()>& body)
         }
     } restore{*this, state};
     body();
+    return m_data->container != nullptr ? m_data->nextChild : 0;
 }
 
 io::DataReader& File::dataReader()

@@ -74,7 +74,9 @@ public:
     /// ReadObject, SkipObject and the end tests going through the
     /// container's subobjects and no further (the end of the file past
     /// them). What primitive reads were reading before comes back after.
-    void readNode(const io::Node& node, const std::function<void()>& body);
+    /// Returns the index among the container's children of the first
+    /// subobject `body` neither read nor skipped (0 for a lone object).
+    std::size_t readNode(const io::Node& node, const std::function<void()>& body);
 
     /// Primitive reads (Q3Uns32_Read, ...) read the data of one object in
     /// order: the object a primitive read started on, which is then consumed

@@ -12,6 +12,7 @@
 
 #include "OwningApiTest.h"
 
+#include "QD3DCustomElements.h"
 #include "QD3DExtension.h"
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
@@ -27,6 +28,12 @@ namespace {
 
 using namespace q3test;
 
+// An attribute class's data: a weight and flags (Test:Weight, below).
+struct Weight {
+    float weight;
+    TQ3Uns32 flags;
+};
+
 // ---- A shape class: a float, a count and a label, with an optional
 // sub-object (written after its data, in a container).
 
@@ -35,6 +42,8 @@ struct Spot {
     TQ3Uns32 count;
     char label[32];
     TQ3Object child; // a reference, or NULL
+    Weight weight;   // what a set among its subobjects held, when hasWeight
+    bool hasWeight;
 };
 
 struct SpotBehaviour {
@@ -44,6 +53,7 @@ struct SpotBehaviour {
     bool wrongSize = false;
     bool skipWrite = false; // the traverse method writes nothing
     bool subObjectData = false; // the traverse method adds a Test:Weight
+    bool leaveElements = false; // the read method reads geometries only
     int deletes = 0;        // calls of the data delete method
 };
 SpotBehaviour g_spot;
@@ -131,9 +141,19 @@ TQ3Object spotRead(TQ3FileObject file)
         return nullptr;
     std::strncpy(spot.label, label, sizeof spot.label - 1);
     while (Q3File_IsEndOfContainer(file, nullptr) == kQ3False) {
+        if (g_spot.leaveElements && Q3File_IsNextObjectOfType(file, kQ3ShapeTypeGeometry) == kQ3False)
+            break;
         TQ3Object sub = Q3File_ReadObject(file);
         if (sub == nullptr)
             return nullptr;
+        // An element comes as a set holding it (an attribute set is a child).
+        if (Q3Object_IsType(sub, kQ3SharedTypeSet) == kQ3True && Q3Object_IsType(sub, kQ3SetTypeAttribute) == kQ3False) {
+            if (Q3Set_Contains(sub, g_weightType) == kQ3True &&
+                Q3Set_Get(sub, g_weightType, &spot.weight) == kQ3Success)
+                spot.hasWeight = true;
+            Q3Object_Dispose(sub);
+            continue;
+        }
         if (spot.child != nullptr)
             Q3Object_Dispose(spot.child);
         spot.child = sub;
@@ -164,12 +184,8 @@ TQ3XFunctionPointer spotMetaHandler(TQ3XMethodType type)
     }
 }
 
-// ---- An attribute class: a weight and flags.
+// ---- An attribute class: Weight's data.
 
-struct Weight {
-    float weight;
-    TQ3Uns32 flags;
-};
 bool g_failReadData = false;
 
 TQ3Status weightTraverse(TQ3Object object, void* data, TQ3ViewObject view)
@@ -260,11 +276,7 @@ protected:
         OwningApiTest::SetUp();
         g_spot = SpotBehaviour{};
         g_failReadData = false;
-        TQ3ObjectType type = 0;
-        g_spotClass = Q3XObjectHierarchy_RegisterClass(kQ3SharedTypeShape, &type, const_cast<char*>("Test:Spot"),
-                                                       spotMetaHandler, nullptr, 0, sizeof(Spot));
-        ASSERT_NE(g_spotClass, nullptr);
-        m_spotType = type;
+        ASSERT_NO_FATAL_FAILURE(registerSpot());
         g_weightType = 0;
         m_weightClass = Q3XAttributeClass_Register(&g_weightType, "Test:Weight", sizeof(Weight), weightMetaHandler);
         ASSERT_NE(m_weightClass, nullptr);
@@ -278,6 +290,23 @@ protected:
             EXPECT_EQ(Q3XObjectHierarchy_UnregisterClass(g_spotClass), kQ3Success);
         g_spotClass = nullptr;
         OwningApiTest::TearDown();
+    }
+
+    /// Registers Test:Spot (again, after a test unregistered it).
+    void registerSpot()
+    {
+        TQ3ObjectType type = 0;
+        g_spotClass = Q3XObjectHierarchy_RegisterClass(kQ3SharedTypeShape, &type, const_cast<char*>("Test:Spot"),
+                                                       spotMetaHandler, nullptr, 0, sizeof(Spot));
+        ASSERT_NE(g_spotClass, nullptr);
+        m_spotType = type;
+    }
+    /// Unregisters Test:Spot, its objects disposed first.
+    void unregisterSpot()
+    {
+        disposeOwned();
+        ASSERT_EQ(Q3XObjectHierarchy_UnregisterClass(g_spotClass), kQ3Success);
+        g_spotClass = nullptr;
     }
 
     TQ3Object newSpot(float size, TQ3Uns32 count, const char* label, TQ3Object child = nullptr)
@@ -301,6 +330,16 @@ protected:
     {
         m_mine.push_back(object);
         return object;
+    }
+    /// Reads the one object `bytes` hold (kept: disposed with the test's
+    /// objects); null, with a failure, when they hold another number.
+    TQ3Object readOne(const std::vector<unsigned char>& bytes)
+    {
+        std::vector<TQ3Object> read = readAll(bytes);
+        for (TQ3Object object : read)
+            keep(object);
+        EXPECT_EQ(read.size(), 1u);
+        return read.size() == 1 ? read[0] : nullptr;
     }
     void disposeOwned()
     {
@@ -339,16 +378,15 @@ TEST_F(CustomClassFileTest, ACustomObjectRoundTripsThroughEveryEncoding)
         SCOPED_TRACE(mode);
         TQ3Object spot = newSpot(2.5f, 7, "seven");
         const std::vector<unsigned char> bytes = writeObjects({spot}, mode);
-        std::vector<TQ3Object> read = readAll(bytes);
-        ASSERT_EQ(read.size(), 1u);
-        EXPECT_EQ(Q3Object_GetLeafType(read[0]), m_spotType);
-        EXPECT_EQ(Q3XObject_GetClass(read[0]), g_spotClass);
-        const Spot& back = spotOf(read[0]);
+        TQ3Object readBack = readOne(bytes);
+        ASSERT_NE(readBack, nullptr);
+        EXPECT_EQ(Q3Object_GetLeafType(readBack), m_spotType);
+        EXPECT_EQ(Q3XObject_GetClass(readBack), g_spotClass);
+        const Spot& back = spotOf(readBack);
         EXPECT_EQ(back.size, 2.5f);
         EXPECT_EQ(back.count, 7u);
         EXPECT_STREQ(back.label, "seven");
         EXPECT_EQ(back.child, nullptr);
-        disposeAll(read);
     }
     // The data's delete method ran once after each write.
     EXPECT_EQ(g_spot.deletes, 4);
@@ -372,13 +410,12 @@ TEST_F(CustomClassFileTest, SubmittedSubObjectsFollowTheDataInAContainer)
             EXPECT_LT(container, object);
             EXPECT_LT(object, boxAt);
         }
-        std::vector<TQ3Object> read = readAll(bytes);
-        ASSERT_EQ(read.size(), 1u);
-        const Spot& back = spotOf(read[0]);
+        TQ3Object readBack = readOne(bytes);
+        ASSERT_NE(readBack, nullptr);
+        const Spot& back = spotOf(readBack);
         EXPECT_EQ(back.count, 3u);
         ASSERT_NE(back.child, nullptr);
         EXPECT_EQ(Q3Object_GetLeafType(back.child), kQ3GeometryTypeBox);
-        disposeAll(read);
     }
 }
 
@@ -414,16 +451,15 @@ TEST_F(CustomClassFileTest, ACustomObjectInAGroupRoundTrips)
     TQ3Object spot = newSpot(4.0f, 9, "in a group");
     ASSERT_NE(Q3Group_AddObject(group, spot), nullptr);
     for (TQ3FileMode mode : {kQ3FileModeNormal, kQ3FileModeText}) {
-        std::vector<TQ3Object> read = readAll(writeObjects({group}, mode));
-        ASSERT_EQ(read.size(), 1u);
+        TQ3Object readBack = readOne(writeObjects({group}, mode));
+        ASSERT_NE(readBack, nullptr);
         TQ3GroupPosition position = nullptr;
-        ASSERT_EQ(Q3Group_GetFirstPosition(read[0], &position), kQ3Success);
+        ASSERT_EQ(Q3Group_GetFirstPosition(readBack, &position), kQ3Success);
         TQ3Object member = nullptr;
-        ASSERT_EQ(Q3Group_GetPositionObject(read[0], position, &member), kQ3Success);
+        ASSERT_EQ(Q3Group_GetPositionObject(readBack, position, &member), kQ3Success);
         EXPECT_EQ(spotOf(member).count, 9u);
         EXPECT_STREQ(spotOf(member).label, "in a group");
         Q3Object_Dispose(member);
-        disposeAll(read);
     }
 }
 
@@ -443,20 +479,19 @@ TEST_F(CustomClassFileTest, ACustomAttributeRoundTripsInAnAttributeSetAndOnAShap
             EXPECT_NE(find(bytes, "Test:Weight ( 0.25 165 )"), std::string::npos) << textOf(bytes);
         else
             EXPECT_NE(find(bytes, "Test:Weight"), std::string::npos); // its Type object
-        std::vector<TQ3Object> read = readAll(bytes);
-        ASSERT_EQ(read.size(), 1u);
+        TQ3Object readBack = readOne(bytes);
+        ASSERT_NE(readBack, nullptr);
         Weight back{};
-        ASSERT_EQ(Q3Shape_GetElement(read[0], g_weightType, &back), kQ3Success);
+        ASSERT_EQ(Q3Shape_GetElement(readBack, g_weightType, &back), kQ3Success);
         EXPECT_EQ(back.weight, 8.0f);
         EXPECT_EQ(back.flags, 3u);
         TQ3AttributeSet readSet = nullptr;
-        ASSERT_EQ(Q3Geometry_GetAttributeSet(read[0], &readSet), kQ3Success);
+        ASSERT_EQ(Q3Geometry_GetAttributeSet(readBack, &readSet), kQ3Success);
         ASSERT_NE(readSet, nullptr);
         ASSERT_EQ(Q3AttributeSet_Get(readSet, g_weightType, &back), kQ3Success);
         EXPECT_EQ(back.weight, 0.25f);
         EXPECT_EQ(back.flags, 0xA5u);
         Q3Object_Dispose(readSet);
-        disposeAll(read);
     }
 }
 
@@ -467,10 +502,8 @@ TEST_F(CustomClassFileTest, AnUnregisteredClassReadsAsAnUnknownObjectAndIsWritte
         TQ3Object spot = newSpot(3.0f, 2, "orphan");
         binary = writeObjects({spot}, kQ3FileModeNormal);
         text = writeObjects({spot}, kQ3FileModeText);
-        disposeOwned();
     }
-    ASSERT_EQ(Q3XObjectHierarchy_UnregisterClass(g_spotClass), kQ3Success);
-    g_spotClass = nullptr;
+    ASSERT_NO_FATAL_FAILURE(unregisterSpot());
 
     std::vector<TQ3Object> read;
     EXPECT_Q3_WARNING(read = readAll(binary), kQ3WarningUnknownObject);
@@ -491,10 +524,7 @@ TEST_F(CustomClassFileTest, AnUnregisteredClassReadsAsAnUnknownObjectAndIsWritte
     disposeAll(read);
 
     // Registered again, the class reads the file the unknown object wrote.
-    TQ3ObjectType type = 0;
-    g_spotClass = Q3XObjectHierarchy_RegisterClass(kQ3SharedTypeShape, &type, const_cast<char*>("Test:Spot"),
-                                                   spotMetaHandler, nullptr, 0, sizeof(Spot));
-    ASSERT_NE(g_spotClass, nullptr);
+    ASSERT_NO_FATAL_FAILURE(registerSpot());
     read = readAll(binary);
     ASSERT_EQ(read.size(), 1u);
     EXPECT_STREQ(spotOf(read[0]).label, "orphan");
@@ -508,10 +538,8 @@ TEST_F(CustomClassFileTest, AnUnregisteredObjectWithSubObjectsKeepsItsClassNameI
         TQ3Object box = keep(newBox());
         TQ3Object spot = newSpot(3.0f, 2, "parent", box);
         binary = writeObjects({spot}, kQ3FileModeNormal);
-        disposeOwned();
     }
-    ASSERT_EQ(Q3XObjectHierarchy_UnregisterClass(g_spotClass), kQ3Success);
-    g_spotClass = nullptr;
+    ASSERT_NO_FATAL_FAILURE(unregisterSpot());
     std::vector<TQ3Object> read;
     EXPECT_Q3_WARNING(read = readAll(binary), kQ3WarningUnknownObject);
     ASSERT_EQ(read.size(), 1u);
@@ -525,14 +553,11 @@ TEST_F(CustomClassFileTest, AnUnregisteredObjectWithSubObjectsKeepsItsClassNameI
     ASSERT_EQ(Q3Shape_AddElement(box, g_weightType, &weight), kQ3Success);
     const std::vector<unsigned char> mixed = writeObjects({box, read[0]}, kQ3FileModeNormal);
     disposeAll(read);
-    TQ3ObjectType type = 0;
-    g_spotClass = Q3XObjectHierarchy_RegisterClass(kQ3SharedTypeShape, &type, const_cast<char*>("Test:Spot"),
-                                                   spotMetaHandler, nullptr, 0, sizeof(Spot));
-    ASSERT_NE(g_spotClass, nullptr);
+    ASSERT_NO_FATAL_FAILURE(registerSpot());
     read = readAll(mixed);
     ASSERT_EQ(read.size(), 2u);
     EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3GeometryTypeBox);
-    ASSERT_EQ(Q3Object_GetLeafType(read[1]), type);
+    ASSERT_EQ(Q3Object_GetLeafType(read[1]), m_spotType);
     EXPECT_STREQ(spotOf(read[1]).label, "parent");
     ASSERT_NE(spotOf(read[1]).child, nullptr);
     EXPECT_EQ(Q3Object_GetLeafType(spotOf(read[1]).child), kQ3GeometryTypeBox);
@@ -698,6 +723,113 @@ TEST_F(CustomClassFileTest, AnAttachMethodGetsTheObjectWhoseContainerHoldsIt)
     disposeAll(read);
     EXPECT_EQ(Q3XObjectHierarchy_UnregisterClass(g_tagClass), kQ3Success);
     g_tagClass = nullptr;
+}
+
+TEST_F(CustomClassFileTest, SubObjectElementDataComesBackToTheReadMethodAsASet)
+{
+    g_spot.subObjectData = true; // the traverse method submits a Test:Weight ( 0.5 7 )
+    for (TQ3FileMode mode : kModes) {
+        SCOPED_TRACE(mode);
+        TQ3Object readBack = readOne(writeObjects({newSpot(1.0f, 2, "weighed")}, mode));
+        ASSERT_NE(readBack, nullptr);
+        const Spot& back = spotOf(readBack);
+        EXPECT_TRUE(back.hasWeight);
+        EXPECT_EQ(back.weight.weight, 0.5f);
+        EXPECT_EQ(back.weight.flags, 7u);
+        EXPECT_EQ(back.child, nullptr); // the set was no child
+    }
+}
+
+TEST_F(CustomClassFileTest, AnAttributeSetSubObjectComesBackAsAnAttributeSet)
+{
+    TQ3AttributeSet set = keep(Q3AttributeSet_New());
+    const TQ3ColorRGB red{1.0f, 0.0f, 0.0f};
+    ASSERT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &red), kQ3Success);
+    const Weight inSet{2.0f, 9u};
+    ASSERT_EQ(Q3AttributeSet_Add(set, g_weightType, &inSet), kQ3Success);
+    TQ3Object spot = newSpot(1.0f, 1, "coloured", set);
+    for (TQ3FileMode mode : {kQ3FileModeNormal, kQ3FileModeText}) {
+        SCOPED_TRACE(mode);
+        TQ3Object readBack = readOne(writeObjects({spot}, mode));
+        ASSERT_NE(readBack, nullptr);
+        TQ3Object child = spotOf(readBack).child;
+        ASSERT_NE(child, nullptr);
+        EXPECT_EQ(Q3Object_GetLeafType(child), kQ3SetTypeAttribute);
+        TQ3ColorRGB color{};
+        ASSERT_EQ(Q3AttributeSet_Get(child, kQ3AttributeTypeDiffuseColor, &color), kQ3Success);
+        EXPECT_EQ(color.r, 1.0f);
+        EXPECT_EQ(color.g, 0.0f);
+        Weight weight{};
+        ASSERT_EQ(Q3AttributeSet_Get(child, g_weightType, &weight), kQ3Success);
+        EXPECT_EQ(weight.weight, 2.0f);
+        EXPECT_EQ(weight.flags, 9u);
+    }
+}
+
+TEST_F(CustomClassFileTest, ElementsAddedToACustomObjectRoundTrip)
+{
+    TQ3Object spot = newSpot(1.0f, 4, "tagged");
+    const Weight weight{3.5f, 11u};
+    ASSERT_EQ(Q3Object_AddElement(spot, g_weightType, &weight), kQ3Success);
+    ASSERT_EQ(CENameElement_SetData(spot, "the spot"), kQ3Success);
+    for (TQ3FileMode mode : kModes) {
+        SCOPED_TRACE(mode);
+        const std::vector<unsigned char> bytes = writeObjects({spot}, mode);
+        // A read method that leaves the elements: they are its object's.
+        g_spot.leaveElements = true;
+        TQ3Object readBack = readOne(bytes);
+        ASSERT_NE(readBack, nullptr);
+        EXPECT_FALSE(spotOf(readBack).hasWeight);
+        Weight back{};
+        ASSERT_EQ(Q3Object_GetElement(readBack, g_weightType, &back), kQ3Success);
+        EXPECT_EQ(back.weight, 3.5f);
+        EXPECT_EQ(back.flags, 11u);
+        char* name = nullptr;
+        ASSERT_EQ(CENameElement_GetData(readBack, &name), kQ3Success);
+        ASSERT_NE(name, nullptr);
+        EXPECT_STREQ(name, "the spot");
+        EXPECT_EQ(CENameElement_EmptyData(&name), kQ3Success);
+        // A read method that reads them gets each as a set.
+        g_spot.leaveElements = false;
+        readBack = readOne(bytes);
+        ASSERT_NE(readBack, nullptr);
+        EXPECT_TRUE(spotOf(readBack).hasWeight);
+        EXPECT_EQ(spotOf(readBack).weight.flags, 11u);
+        EXPECT_EQ(Q3Object_ContainsElement(readBack, g_weightType), kQ3False);
+    }
+}
+
+TEST_F(CustomClassFileTest, AnElementReadOnItsOwnIsASetHoldingIt)
+{
+    const std::string text = "3DMetafile ( 1 6 Normal )\nTest:Weight ( 0.75 3 )\n";
+    TQ3FileObject file = openBytes(bytesOf(text));
+    ASSERT_NE(file, nullptr);
+    EXPECT_EQ(Q3File_GetNextObjectType(file), g_weightType);
+    TQ3Object set = Q3File_ReadObject(file);
+    ASSERT_NE(set, nullptr);
+    EXPECT_EQ(Q3Object_GetLeafType(set), kQ3SharedTypeSet);
+    Weight back{};
+    ASSERT_EQ(Q3Set_Get(set, g_weightType, &back), kQ3Success);
+    EXPECT_EQ(back.weight, 0.75f);
+    EXPECT_EQ(back.flags, 3u);
+    Q3Object_Dispose(set);
+    EXPECT_EQ(Q3File_IsEndOfFile(file), kQ3True);
+    Q3File_Close(file);
+    Q3Object_Dispose(file);
+
+    // Truncated element data fail the read; the file goes on after it.
+    const std::string truncated =
+        "3DMetafile ( 1 6 Normal )\nTest:Weight ( 0.75 )\nBox ( 1 0 0 0 1 0 0 0 1 0 0 0 )\n";
+    file = openBytes(bytesOf(truncated));
+    ASSERT_NE(file, nullptr);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3File_ReadObject(file), nullptr), kQ3ErrorInvalidMetafileObject);
+    consume(Kind::Error, kQ3ErrorReadMoreThanSize, "the read-data method's Q3Uns32_Read", __FILE__, __LINE__);
+    TQ3Object box = Q3File_ReadObject(file);
+    ASSERT_NE(box, nullptr);
+    EXPECT_EQ(Q3Object_GetLeafType(box), kQ3GeometryTypeBox);
+    Q3Object_Dispose(box);
+    Q3File_Close(file);
+    Q3Object_Dispose(file);
 }
 
 } // namespace
