@@ -288,11 +288,18 @@ Ref<SharedObject> customObjectFrom(ReadContext& context, const Node& node, TQ3Ob
     return readCustomObject(context, node, *custom);
 }
 
-// A type a binary file declares with a Type object for a class nobody
-// registered (the parser resolves the others to their class's type).
-void warnUnregistered(const Node& root)
+// An object of an application's class nobody registered: in binary, a
+// type the file declares with a Type object (the parser resolves
+// registered names to their class's type); in text, an unknown name of the
+// form such classes take, "Vendor:Class" (Apple's own "Apple Computer,
+// Inc.:NameElement"), which no 3DMF keyword has. Other unknown objects (a
+// reserved type or keyword Q3 has no class for) are read without a word.
+void warnUnregistered(const Metafile& file, const Node& root)
 {
-    if (isCustomType(root.type) && !root.name.empty() && !findCustomClass(root.type))
+    const bool declared = isCustomType(root.type) && !root.name.empty() && !findCustomClass(root.type);
+    const bool named = file.encoding == Encoding::kText && root.type == 0 &&
+                       root.name.find(':') != std::string::npos;
+    if (declared || named)
         errors::postWarning(kQ3WarningUnknownObject, "no class named \"" + root.name +
                                                          "\" is registered; the object is read as an unknown "
                                                          "object and written back unchanged");
@@ -365,7 +372,7 @@ Ref<SharedObject> ReadContext::build(const Node& node)
         if (entry == nullptr) { // the whole container: its subobjects belong to the root
             if (Ref<SharedObject> custom = customObjectFrom(*this, node, root.type))
                 return custom;
-            warnUnregistered(root);
+            warnUnregistered(m_file, root);
             return unknownFrom(m_file, node);
         }
         Extras extras = takeExtras(*this, parts);
@@ -377,7 +384,7 @@ Ref<SharedObject> ReadContext::build(const Node& node)
     if (entry == nullptr) {
         if (Ref<SharedObject> custom = customObjectFrom(*this, node, node.type))
             return custom;
-        warnUnregistered(node);
+        warnUnregistered(m_file, node);
         return unknownFrom(m_file, node);
     }
     return entry->read(*this, Parts{node, {}, &m_file});

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -358,6 +359,16 @@ std::string textOf(const std::vector<unsigned char>& bytes)
     return std::string(bytes.begin(), bytes.end());
 }
 
+// The text's words, each followed by one space: the text without its layout.
+std::string wordsOf(const std::vector<unsigned char>& bytes)
+{
+    std::istringstream in(textOf(bytes));
+    std::string words, word;
+    while (in >> word)
+        words += word + ' ';
+    return words;
+}
+
 // Where `needle` occurs in the bytes (npos when nowhere).
 std::size_t find(const std::vector<unsigned char>& bytes, const std::string& needle)
 {
@@ -517,10 +528,22 @@ TEST_F(CustomClassFileTest, AnUnregisteredClassReadsAsAnUnknownObjectAndIsWritte
     EXPECT_EQ(writeObjects({read[0]}, kQ3FileModeNormal), binary);
     disposeAll(read);
 
-    read = readAll(text);
+    // Text as binary: the same warning, an unknown (text) object written
+    // back unchanged.
+    EXPECT_Q3_WARNING(read = readAll(text), kQ3WarningUnknownObject);
     ASSERT_EQ(read.size(), 1u);
     EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3UnknownTypeText);
+    TQ3UnknownTextData unknown{};
+    ASSERT_EQ(Q3UnknownText_GetData(read[0], &unknown), kQ3Success);
+    EXPECT_STREQ(unknown.objectName, "Test:Spot");
+    EXPECT_STREQ(unknown.contents, "3 2 \"orphan\"");
+    EXPECT_EQ(Q3UnknownText_EmptyData(&unknown), kQ3Success);
     EXPECT_EQ(writeObjects({read[0]}, kQ3FileModeText), text);
+    disposeAll(read);
+    // A name of no such form (a keyword Q3 has no class for) reads silently.
+    read = readAll(bytesOf("3DMetafile ( 1 6 Normal )\nSpotThing ( 1 )\n"));
+    ASSERT_EQ(read.size(), 1u);
+    EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3UnknownTypeText);
     disposeAll(read);
 
     // Registered again, the class reads the file the unknown object wrote.
@@ -533,14 +556,22 @@ TEST_F(CustomClassFileTest, AnUnregisteredClassReadsAsAnUnknownObjectAndIsWritte
 
 TEST_F(CustomClassFileTest, AnUnregisteredObjectWithSubObjectsKeepsItsClassNameInANewFile)
 {
-    std::vector<unsigned char> binary;
+    std::vector<unsigned char> binary, text;
     {
         TQ3Object box = keep(newBox());
         TQ3Object spot = newSpot(3.0f, 2, "parent", box);
         binary = writeObjects({spot}, kQ3FileModeNormal);
+        text = writeObjects({spot}, kQ3FileModeText);
     }
     ASSERT_NO_FATAL_FAILURE(unregisterSpot());
     std::vector<TQ3Object> read;
+    EXPECT_Q3_WARNING(read = readAll(text), kQ3WarningUnknownObject);
+    ASSERT_EQ(read.size(), 1u);
+    EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3UnknownTypeText);
+    // The same objects and words; an unknown text container keeps its
+    // contents as one text, laid out on one line.
+    EXPECT_EQ(wordsOf(writeObjects({read[0]}, kQ3FileModeText)), wordsOf(text));
+    disposeAll(read);
     EXPECT_Q3_WARNING(read = readAll(binary), kQ3WarningUnknownObject);
     ASSERT_EQ(read.size(), 1u);
     EXPECT_EQ(Q3Object_GetLeafType(read[0]), kQ3UnknownTypeBinary);
