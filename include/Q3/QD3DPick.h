@@ -36,6 +36,9 @@
  *                       geometry; valid only when it was inside one.
  *   Object              TQ3Object: a new reference to the geometry; valid
  *                       only for retained (not immediate-mode) geometry.
+ *                       For what a custom object's submit method submits
+ *                       (QD3DExtension.h): the custom object, whose hits
+ *                       these are (and whose path Path gives).
  *   LocalToWorldMatrix  TQ3Matrix4x4 in force for the geometry.
  *   XYZ                 TQ3Point3D: the world point hit (point, ray picks).
  *   Distance            float: its distance from the pick ray's origin

@@ -77,7 +77,7 @@ void writeDetail(const PickHit& hit, TQ3PickDetail detail, void* detailData)
         return;
     }
     case kQ3PickDetailMaskObject: {
-        TQ3Object object = Ref<Geometry>(hit.object).detach();
+        TQ3Object object = Ref<SharedObject>(hit.object).detach();
         std::memcpy(detailData, &object, sizeof object);
         return;
     }

@@ -4,6 +4,7 @@
 
 #include "QD3DExtension.h"
 #include "core/Limits.h"
+#include "core/ShapeVisitor.h"
 
 #include <cstring>
 
@@ -30,14 +31,21 @@ public:
                leaf.method(kQ3XMethodTypeObjectSubmitPick) != nullptr ||
                leaf.method(kQ3XMethodTypeObjectSubmitBounds) != nullptr;
     }
-    void accept(ShapeVisitor&) const override
+    void accept(ShapeVisitor& visitor) const override
     {
         // The object draws, picks and bounds through its class's submit
         // methods, which submit to the view (and so reach the visitor).
         if (!isDrawable())
             fail(kQ3ErrorInvalidObjectType, "a " + customClass().name() +
                                                 " cannot be submitted (its class is not drawable)");
-        submitThroughMethod(const_cast<CustomObject*>(this));
+        visitor.beginCustomObject(*this);
+        try {
+            submitThroughMethod(const_cast<CustomObject*>(this));
+        } catch (...) {
+            visitor.endCustomObject(*this, false);
+            throw;
+        }
+        visitor.endCustomObject(*this, true);
     }
     Object* duplicate() const override;
 };

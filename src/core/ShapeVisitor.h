@@ -8,6 +8,7 @@ namespace q3 {
 
 class AttributeSet;
 class DisplayGroup;
+class Object;
 class Geometry;
 class Shader;
 class Style;
@@ -46,6 +47,12 @@ public:
     /// Inside a display group, just before each object it submits: that
     /// object's position in the group (picking records hit paths from it).
     virtual void atGroupPosition(OpaqueTQ3GroupPosition* /*position*/) {}
+    /// Around a custom object's submit method (QD3DExtension.h), which
+    /// submits what stands for the object: picking names the object, not
+    /// what it submits, in the hits. `submitted` is false when the method
+    /// failed (the submit fails).
+    virtual void beginCustomObject(const Object& /*object*/) {}
+    virtual void endCustomObject(const Object& /*object*/, bool /*submitted*/) {}
 };
 
 } // namespace q3

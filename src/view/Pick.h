@@ -25,7 +25,9 @@ struct PickHit {
     unsigned long pickID = 0;
     Ref<Group> rootGroup;
     std::vector<TQ3GroupPosition> positions;
-    Ref<Geometry> object;
+    /// The object submitted: a geometry, or a custom object (its class's
+    /// submit method submitted the geometries hit).
+    Ref<SharedObject> object;
     TQ3Matrix4x4 localToWorld{};
     TQ3Point3D xyz{};
     float distance = 0.0f;

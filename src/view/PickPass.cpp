@@ -158,9 +158,46 @@ void PickPass::visitGeometry(const Geometry& geometry)
         c = Candidate{};
     geometry.decompose(*this, *this);
 
+    if (m_custom.depth > 0) {
+        // Part of a custom object: the nearest of each kind over all it submits.
+        for (int slot = 0; slot < kSlots; ++slot) {
+            const Candidate& c = m_best[slot];
+            Candidate& best = m_custom.best[slot];
+            if (c.found && (!best.found || c.distance < best.distance))
+                best = c;
+        }
+        return;
+    }
     const GraphicsState& s = state();
+    addHits(m_best, Source{geometry.isRetained() ? &geometry : nullptr, geometry.isRetained() ? &geometry : nullptr,
+                           s.draw.pickParts, s.draw.pickID, s.localToWorld});
+}
+
+void PickPass::beginCustomObject(const Object&)
+{
+    if (m_custom.depth++ > 0)
+        return;
+    const GraphicsState& s = state();
+    m_custom.pickParts = s.draw.pickParts;
+    m_custom.pickID = s.draw.pickID;
+    m_custom.localToWorld = s.localToWorld;
+    for (Candidate& c : m_custom.best)
+        c = Candidate{};
+}
+
+void PickPass::endCustomObject(const Object& object, bool submitted)
+{
+    if (--m_custom.depth > 0 || !submitted)
+        return;
+    const SharedObject* shared =
+        object.isType(kQ3ObjectTypeShared) ? static_cast<const SharedObject*>(&object) : nullptr;
+    addHits(m_custom.best, Source{shared, nullptr, m_custom.pickParts, m_custom.pickID, m_custom.localToWorld});
+}
+
+void PickPass::addHits(const Candidate (&best)[kSlots], const Source& source)
+{
     const TQ3PickDetail mask = m_data.mask;
-    const TQ3PickParts parts = s.draw.pickParts;
+    const TQ3PickParts parts = source.pickParts;
     const struct {
         Slot slot;
         TQ3PickParts part;
@@ -169,13 +206,13 @@ void PickPass::visitGeometry(const Geometry& geometry)
                  {kEdge, kQ3PickPartsMaskEdge},
                  {kVertex, kQ3PickPartsMaskVertex}};
     for (const auto& kind : kinds) {
-        const Candidate& c = m_best[kind.slot];
+        const Candidate& c = best[kind.slot];
         if (!c.found || (kind.slot == kObject) != (parts == kQ3PickPartsObject))
             continue;
         PickHit hit;
         hit.valid = mask & (kQ3PickDetailMaskPickID | kQ3PickDetailMaskLocalToWorldMatrix | kQ3PickDetailMaskPickPart);
-        hit.pickID = s.draw.pickID;
-        hit.localToWorld = toQ3(s.localToWorld);
+        hit.pickID = source.pickID;
+        hit.localToWorld = toQ3(source.localToWorld);
         hit.part = kind.part;
         if ((mask & kQ3PickDetailMaskPath) != 0 && !m_path.empty()) {
             hit.valid |= kQ3PickDetailMaskPath;
@@ -183,9 +220,9 @@ void PickPass::visitGeometry(const Geometry& geometry)
             for (const Level& level : m_path)
                 hit.positions.push_back(level.position);
         }
-        if ((mask & kQ3PickDetailMaskObject) != 0 && geometry.isRetained()) {
+        if ((mask & kQ3PickDetailMaskObject) != 0 && source.object != nullptr) {
             hit.valid |= kQ3PickDetailMaskObject;
-            hit.object = Ref<Geometry>::retain(const_cast<Geometry*>(&geometry));
+            hit.object = Ref<SharedObject>::retain(const_cast<SharedObject*>(source.object));
         }
         if (m_kind != Pick::Kind::kWindowRect) {
             hit.valid |= mask & (kQ3PickDetailMaskXYZ | kQ3PickDetailMaskDistance);
@@ -204,12 +241,12 @@ void PickPass::visitGeometry(const Geometry& geometry)
         // The shape part: where the hit lies in the geometry's own
         // coordinates, asked of the geometry (a mesh names its face, edge or
         // vertex there). Window-rect hits have no point to ask about.
-        if ((mask & kQ3PickDetailMaskShapePart) != 0 && kind.slot != kObject && geometry.isRetained() &&
+        if ((mask & kQ3PickDetailMaskShapePart) != 0 && kind.slot != kObject && source.parts != nullptr &&
             m_kind != Pick::Kind::kWindowRect) {
-            const glm::dvec4 h = transformPoint(glm::inverse(m_toWorld), c.xyz);
+            const glm::dvec4 h = transformPoint(glm::inverse(source.localToWorld), c.xyz);
             const glm::dvec3 local = glm::dvec3(h) / h.w;
             if (finite(local)) {
-                hit.shapePart = geometry.shapePartAt(kind.part, toPoint(local));
+                hit.shapePart = source.parts->shapePartAt(kind.part, toPoint(local));
                 if (hit.shapePart)
                     hit.valid |= kQ3PickDetailMaskShapePart;
             }

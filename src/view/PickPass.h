@@ -37,6 +37,14 @@ public:
     bool beginGroup(const DisplayGroup& group) override;
     void endGroup(const DisplayGroup& group) override;
     void atGroupPosition(OpaqueTQ3GroupPosition* position) override;
+    /// What a custom object's submit method submits is picked as that
+    /// object: its hits (the nearest of each kind over everything it
+    /// submitted) name it, with the path to it, its pick ID and its
+    /// local-to-world; no shape part (QD3DPick.h's shape parts are a
+    /// mesh's). Custom objects a submit method submits are part of the
+    /// outermost one.
+    void beginCustomObject(const Object& object) override;
+    void endCustomObject(const Object& object, bool submitted) override;
 
     /// The hits found so far, in submission order.
     std::vector<PickHit>& hits() { return m_hits; }
@@ -62,6 +70,16 @@ private:
     void testScreenRect(const MeshView& mesh, std::uint32_t anchor, long xOffset, long yOffset,
                         std::uint32_t width, std::uint32_t height);
     bool wants(Slot slot) const;
+    /// What the hits of one submission name.
+    struct Source {
+        const SharedObject* object; ///< the hit's object (null: none, immediate mode)
+        const Geometry* parts;      ///< asked for shape parts (null: none)
+        TQ3PickParts pickParts;
+        unsigned long pickID;
+        Matrix localToWorld;
+    };
+    /// Adds the hits `best` holds for one submission, with the current path.
+    void addHits(const Candidate (&best)[kSlots], const Source& source);
 
     glm::dvec3 world(const MeshView& mesh, std::uint32_t v) const;
     glm::dvec4 clip(const MeshView& mesh, std::uint32_t v) const;
@@ -91,6 +109,17 @@ private:
         OpaqueTQ3GroupPosition* position;
     };
     std::vector<Level> m_path;
+    /// The outermost custom object being submitted, and how deep its
+    /// submit methods nest.
+    struct Custom {
+        const Object* object = nullptr;
+        std::size_t depth = 0;
+        Candidate best[kSlots];
+        TQ3PickParts pickParts = kQ3PickPartsObject;
+        unsigned long pickID = 0;
+        Matrix localToWorld{1.0};
+    };
+    Custom m_custom;
     std::vector<PickHit> m_hits;
     std::vector<glm::dvec4> m_polygon;
 };

@@ -3,9 +3,10 @@
 //
 // QD3DExtension.h's submit methods (Q3 extension, Quesa's names): a custom
 // shape whose class submits two triangles draws, bounds and picks exactly
-// as the same triangles submitted directly, alone and inside a group; a
-// failing submit method fails the submit; a class without the loop's
-// method adds nothing.
+// as the same triangles submitted directly, alone and inside a group; its
+// pick hits name it, with the path to it, not what it submits; a failing
+// submit method fails the submit; a class without the loop's method adds
+// nothing.
 
 #include "Q3ApiTest.h"
 #include "RenderTestSupport.h"
@@ -17,6 +18,7 @@
 #include "QD3DSet.h"
 #include "QD3DTransform.h"
 
+#include <array>
 #include <memory>
 
 namespace {
@@ -55,6 +57,7 @@ TQ3Status submitQuad(const Quad& quad, TQ3ViewObject view)
 
 struct Behaviour {
     bool fail = false;
+    TQ3Object submits = nullptr; // submitted in place of the square's triangles when set
     int calls = 0;
     TQ3ObjectType typeSeen = 0;
 };
@@ -66,6 +69,8 @@ TQ3Status quadSubmit(TQ3ViewObject view, TQ3ObjectType objectType, TQ3Object, co
     g_quad.typeSeen = objectType;
     if (g_quad.fail)
         return kQ3Failure;
+    if (g_quad.submits != nullptr)
+        return Q3Object_Submit(g_quad.submits, view);
     return submitQuad(*static_cast<const Quad*>(data), view);
 }
 
@@ -167,6 +172,17 @@ protected:
         return count;
     }
 
+    /// Runs a picking loop of `pick` around `submit`; the pick keeps the hits.
+    void pickWith(TQ3PickObject pick, const std::function<void(TQ3ViewObject)>& submit)
+    {
+        Pixmap pixels(kWidth, kHeight);
+        TestView view(pixels.pixmap());
+        ASSERT_EQ(Q3View_StartPicking(view.view(), pick), kQ3Success);
+        do
+            submit(view.view());
+        while (Q3View_EndPicking(view.view()) == kQ3ViewStatusRetraverse);
+    }
+
     TQ3Object newQuad(const Quad& quad) { return own(Q3XObjectHierarchy_NewObject(m_class, const_cast<Quad*>(&quad))); }
 
     TQ3XObjectClass m_class = nullptr;
@@ -209,8 +225,8 @@ TEST_F(CustomShapeRenderTest, ACustomShapeBoundsAndPicksAsItsSubmissions)
 
     const auto custom = [&](TQ3ViewObject v) { EXPECT_EQ(Q3Object_Submit(quad, v), kQ3Success); };
     const auto direct = [](TQ3ViewObject v) { submitQuad(kQuad, v); };
-    EXPECT_EQ(hits(1.3f, 0.8f, custom), hits(1.3f, 0.8f, direct));
-    EXPECT_GE(hits(1.3f, 0.8f, custom), 1u);
+    EXPECT_EQ(hits(1.3f, 0.8f, direct), 1u);
+    EXPECT_EQ(hits(1.3f, 0.8f, custom), 1u);
     EXPECT_EQ(hits(3.0f, 0.8f, custom), 0u);
 }
 
@@ -241,6 +257,85 @@ TEST_F(CustomShapeRenderTest, AClassWithoutTheLoopsMethodAddsNothingToIt)
     EXPECT_EQ(g_quad.calls, 1);
     Q3Object_Dispose(quad);
     EXPECT_EQ(Q3XObjectHierarchy_UnregisterClass(renderOnly), kQ3Success);
+}
+
+TEST_F(CustomShapeRenderTest, APickHitNamesTheCustomObjectNotWhatItSubmits)
+{
+    // The class submits a group of its own holding two retained triangles
+    // that cover the square; the application submits a group holding the
+    // custom object.
+    TQ3GroupObject inner = own(Q3DisplayGroup_New());
+    const TQ3Point3D c[4] = {{1.0f, 0.0f, 0}, {2.0f, 0.0f, 0}, {2.0f, 1.0f, 0}, {1.0f, 1.0f, 0}};
+    for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+        TQ3TriangleData data{};
+        for (int k = 0; k < 3; ++k)
+            data.vertices[k].point = c[t[k]];
+        TQ3GeometryObject triangle = Q3Triangle_New(&data);
+        ASSERT_NE(triangle, nullptr);
+        ASSERT_NE(Q3Group_AddObject(inner, triangle), nullptr);
+        Q3Object_Dispose(triangle);
+    }
+    g_quad.submits = inner;
+    TQ3Object quad = newQuad(kQuad);
+    TQ3GroupObject outer = own(Q3DisplayGroup_New());
+    TQ3StyleObject faces = own(Q3PickPartsStyle_New(kQ3PickPartsMaskFace));
+    ASSERT_NE(Q3Group_AddObject(outer, faces), nullptr);
+    const TQ3GroupPosition quadAt = Q3Group_AddObject(outer, quad);
+    ASSERT_NE(quadAt, nullptr);
+
+    const TQ3PickDetail mask = kQ3PickDetailMaskObject | kQ3PickDetailMaskPath | kQ3PickDetailMaskXYZ |
+                               kQ3PickDetailMaskPickPart | kQ3PickDetailMaskShapePart;
+    TQ3WindowPointPickData point{};
+    point.data = {kQ3PickSortNearToFar, mask, kQ3ReturnAllHits};
+    // World (1.3, 0.8) in the 80 x 60 pane of the listing's camera.
+    point.point = {float((1.3 - 1.5 + 2.0) / 4.0 * kWidth), float((1.5 - (0.8 - 0.5)) / 3.0 * kHeight)};
+    TQ3WorldRayPickData ray{};
+    ray.data = point.data;
+    ray.ray = {{1.3f, 0.8f, 5.0f}, {0.0f, 0.0f, -1.0f}};
+    for (TQ3PickObject pick : {Q3WindowPointPick_New(&point), Q3WorldRayPick_New(&ray)}) {
+        ASSERT_NE(pick, nullptr);
+        pickWith(pick, [&](TQ3ViewObject v) { EXPECT_EQ(Q3Object_Submit(outer, v), kQ3Success); });
+        unsigned long count = 0;
+        ASSERT_EQ(Q3Pick_GetNumHits(pick, &count), kQ3Success);
+        ASSERT_EQ(count, 1u); // one submission, one face hit
+        TQ3PickDetail valid = 0;
+        ASSERT_EQ(Q3Pick_GetPickDetailValidMask(pick, 0, &valid), kQ3Success);
+        EXPECT_EQ(valid & kQ3PickDetailMaskShapePart, 0u); // a custom object has no mesh parts
+        TQ3Object object = nullptr;
+        ASSERT_EQ(Q3Pick_GetPickDetailData(pick, 0, kQ3PickDetailMaskObject, &object), kQ3Success);
+        EXPECT_EQ(object, quad);
+        if (object != nullptr)
+            Q3Object_Dispose(object);
+        TQ3HitPath path{};
+        ASSERT_EQ(Q3Pick_GetPickDetailData(pick, 0, kQ3PickDetailMaskPath, &path), kQ3Success);
+        EXPECT_EQ(path.rootGroup, outer);
+        ASSERT_EQ(path.depth, 1u); // the class's own group is no part of the path
+        EXPECT_EQ(path.positions[0], quadAt);
+        EXPECT_EQ(Q3HitPath_EmptyData(&path), kQ3Success);
+        TQ3PickParts part = 0;
+        ASSERT_EQ(Q3Pick_GetPickDetailData(pick, 0, kQ3PickDetailMaskPickPart, &part), kQ3Success);
+        EXPECT_EQ(part, kQ3PickPartsMaskFace);
+        TQ3Point3D xyz{};
+        ASSERT_EQ(Q3Pick_GetPickDetailData(pick, 0, kQ3PickDetailMaskXYZ, &xyz), kQ3Success);
+        EXPECT_NEAR(xyz.x, 1.3f, 0.03f); // a window point is a pixel centre
+        EXPECT_NEAR(xyz.y, 0.8f, 0.03f);
+        EXPECT_NEAR(xyz.z, 0.0f, 1e-5f);
+        Q3Object_Dispose(pick);
+    }
+
+    // Submitted directly, the same group's triangles are the hits' objects.
+    TQ3PickObject pick = Q3WorldRayPick_New(&ray);
+    pickWith(pick, [&](TQ3ViewObject v) { EXPECT_EQ(Q3Object_Submit(inner, v), kQ3Success); });
+    unsigned long count = 0;
+    ASSERT_EQ(Q3Pick_GetNumHits(pick, &count), kQ3Success);
+    ASSERT_EQ(count, 1u);
+    TQ3Object object = nullptr;
+    ASSERT_EQ(Q3Pick_GetPickDetailData(pick, 0, kQ3PickDetailMaskObject, &object), kQ3Success);
+    ASSERT_NE(object, nullptr);
+    EXPECT_EQ(Q3Object_GetLeafType(object), kQ3GeometryTypeTriangle);
+    Q3Object_Dispose(object);
+    Q3Object_Dispose(pick);
+    g_quad.submits = nullptr;
 }
 
 } // namespace
