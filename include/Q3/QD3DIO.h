@@ -136,8 +136,20 @@ typedef unsigned long TQ3FileVersion;
  * own object, Q3File_ReadObject fails with kQ3ErrorEndOfFile. A subobject
  * that is an object of a registered class with kQ3XMethodTypeObjectAttach,
  * in the container of an object whose reader does not take it, is read and
- * given to that method with the object it belongs to.
+ * given to that method with the object it belongs to. Going through its
+ * container, a read method gets an element of a registered element or
+ * attribute class as a new set (kQ3SharedTypeSet) holding it; elements it
+ * leaves unread there are its object's.
+ *
+ * kQ3XMethodTypeObjectFileVersion: the 3DMF version (a TQ3FileVersion,
+ * Q3FileVersion(major, minor)) of the format the class's read and write
+ * methods read and write, which the metahandler returns cast to a
+ * TQ3XFunctionPointer, as it returns kQ3XMethodTypeObjectClassVersion (no
+ * answer: the current version). A version newer than kQ3FileVersionCurrent,
+ * which Q3's files cannot carry, fails the class's registration with
+ * kQ3ErrorInvalidParameter.
  */
+#define kQ3XMethodTypeObjectFileVersion Q3_METHOD_TYPE('v', 'e', 'r', 's')
 #define kQ3XMethodTypeObjectTraverse Q3_METHOD_TYPE('t', 'r', 'v', 's')
 #define kQ3XMethodTypeObjectTraverseData Q3_METHOD_TYPE('t', 'r', 'v', 'd')
 #define kQ3XMethodTypeObjectWrite Q3_METHOD_TYPE('w', 'r', 'i', 't')

@@ -6,7 +6,9 @@
 #include "QD3DIO.h"
 #include "QD3DSet.h"
 
+#include <cstdint>
 #include <cstring>
+#include <string>
 #include <mutex>
 #include <vector>
 
@@ -25,6 +27,7 @@ const TQ3XMethodType kKnownMethodTypes[] = {
     kQ3XMethodTypeObjectTraverse,       kQ3XMethodTypeObjectTraverseData,  kQ3XMethodTypeObjectWrite,
     kQ3XMethodTypeObjectRead,           kQ3XMethodTypeObjectReadData,      kQ3XMethodTypeObjectAttach,
     kQ3XMethodTypeObjectSubmitRender,   kQ3XMethodTypeObjectSubmitPick,    kQ3XMethodTypeObjectSubmitBounds,
+    kQ3XMethodTypeObjectFileVersion,
 };
 const std::size_t kKnownMethodTypeCount = sizeof kKnownMethodTypes / sizeof kKnownMethodTypes[0];
 
@@ -73,6 +76,12 @@ CustomClass::CustomClass(Kind kind, TQ3ObjectType type, const ClassInfo* parent,
             if (TQ3XFunctionPointer method = metaHandler(methodType))
                 m_methods[methodType] = method;
     }
+    const std::uintptr_t fileVersion = reinterpret_cast<std::uintptr_t>(method(kQ3XMethodTypeObjectFileVersion));
+    if (fileVersion > kQ3FileVersionCurrent)
+        fail(kQ3ErrorInvalidParameter,
+             "the class \"" + m_name + "\" reads and writes 3DMF " + std::to_string(fileVersion >> 16) + "." +
+                 std::to_string(fileVersion & 0xFFFF) + " (kQ3XMethodTypeObjectFileVersion), newer than the 1.6 Q3 "
+                                                        "reads and writes");
 }
 
 TQ3XFunctionPointer CustomClass::method(TQ3XMethodType type) const

@@ -21,6 +21,7 @@
 #include "FileTestSupport.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -861,6 +862,56 @@ TEST_F(CustomClassFileTest, AnElementReadOnItsOwnIsASetHoldingIt)
     Q3Object_Dispose(box);
     Q3File_Close(file);
     Q3Object_Dispose(file);
+}
+
+// Test:Versioned's file version, which its metahandler answers.
+TQ3FileVersion g_fileVersion = 0;
+
+TQ3XFunctionPointer versionedMetaHandler(TQ3XMethodType type)
+{
+    if (type == kQ3XMethodTypeObjectFileVersion)
+        return reinterpret_cast<TQ3XFunctionPointer>(static_cast<std::uintptr_t>(g_fileVersion));
+    return spotMetaHandler(type);
+}
+
+TEST_F(CustomClassFileTest, AClassFileVersionNewerThanQ3sFilesIsRefused)
+{
+    EXPECT_EQ(kQ3XMethodTypeObjectFileVersion, Q3_METHOD_TYPE('v', 'e', 'r', 's'));
+    char name[] = "Test:Versioned";
+    // 1.7, and a major version past 1: 3DMF formats Q3's 1.6 files cannot carry.
+    for (TQ3FileVersion newer : {TQ3FileVersion(Q3FileVersion(1, 7)), TQ3FileVersion(Q3FileVersion(2, 0))}) {
+        g_fileVersion = newer;
+        TQ3ObjectType type = 77;
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3XObjectHierarchy_RegisterClass(kQ3SharedTypeShape, &type, name,
+                                                                   versionedMetaHandler, nullptr, 0, sizeof(Spot)),
+                                  nullptr),
+                        kQ3ErrorInvalidParameter);
+        EXPECT_EQ(type, 77);
+        EXPECT_EQ(Q3ObjectHierarchy_IsNameRegistered(name), kQ3False);
+    }
+    // The current version and older ones register, and their objects
+    // round-trip through text and binary files.
+    for (TQ3FileVersion version : {TQ3FileVersion(kQ3FileVersionCurrent), TQ3FileVersion(Q3FileVersion(1, 5))}) {
+        g_fileVersion = version;
+        TQ3ObjectType type = 0;
+        TQ3XObjectClass versioned = Q3XObjectHierarchy_RegisterClass(kQ3SharedTypeShape, &type, name,
+                                                                     versionedMetaHandler, nullptr, 0, sizeof(Spot));
+        ASSERT_NE(versioned, nullptr);
+        Spot data{};
+        data.size = 1.0f;
+        data.count = version & 0xFFFF;
+        TQ3Object object = Q3XObjectHierarchy_NewObject(versioned, &data);
+        ASSERT_NE(object, nullptr);
+        for (TQ3FileMode mode : {kQ3FileModeNormal, kQ3FileModeText}) {
+            std::vector<TQ3Object> read = readAll(writeObjects({object}, mode));
+            ASSERT_EQ(read.size(), 1u);
+            // Test:Versioned's read method is Test:Spot's, which makes a spot.
+            EXPECT_EQ(spotOf(read[0]).count, version & 0xFFFF);
+            disposeAll(read);
+        }
+        Q3Object_Dispose(object);
+        EXPECT_EQ(Q3XObjectHierarchy_UnregisterClass(versioned), kQ3Success);
+    }
 }
 
 } // namespace

@@ -102,6 +102,8 @@ static TQ3XFunctionPointer MyShape_MetaHandler(TQ3XMethodType methodType)
         return (TQ3XFunctionPointer)MyShape_Read;
     case kQ3XMethodTypeObjectClassVersion:
         return (TQ3XFunctionPointer)Q3_OBJECT_CLASS_VERSION(1, 2);
+    case kQ3XMethodTypeObjectFileVersion:
+        return (TQ3XFunctionPointer)kQ3FileVersionCurrent;
     default:
         return NULL;
     }
