@@ -5,6 +5,8 @@
 
 #include "FuzzSession.h"
 
+#include <cstdint>
+
 namespace q3fuzz {
 
 void Session::checkStyle(const char* call, TQ3Status status, bool replaced)
@@ -586,7 +588,7 @@ void Session::elements()
     for (float& f : data)
         f = m_in.value();
     const bool handleType = type == kQ3AttributeTypeSurfaceShader || type == kQ3ElementTypeSet;
-    switch (m_in.u8() % 11) {
+    switch (m_in.u8() % 12) {
     case 0:
         STATUS(Q3Object_AddElement(target, type, m_in.u8() == 0 ? nullptr : data));
         break;
@@ -641,6 +643,26 @@ void Session::elements()
         STATUS(Q3XView_SubmitSubObjectData(target, Q3XObjectHierarchy_FindClassByType(type), m_in.u32(), data,
                                            nullptr));
         break;
+    // A class answering kQ3XMethodTypeObjectFileVersion with any version:
+    // one newer than 1.6 is refused, any other registers (QD3DIO.h).
+    case 11: {
+        static thread_local TQ3FileVersion s_version = 0;
+        s_version = m_in.u8() < 128 ? TQ3FileVersion(m_in.u32()) : TQ3FileVersion(Q3FileVersion(1, m_in.u8() % 9));
+        const TQ3XMetaHandler handler = [](TQ3XMethodType method) -> TQ3XFunctionPointer {
+            return method == kQ3XMethodTypeObjectFileVersion
+                       ? reinterpret_cast<TQ3XFunctionPointer>(static_cast<std::uintptr_t>(s_version))
+                       : nullptr;
+        };
+        TQ3ObjectType registered = 0;
+        char name[] = "Fuzz:Versioned";
+        TQ3XObjectClass made = POINTER(
+            Q3XObjectHierarchy_RegisterClass(kQ3ObjectTypeShared, &registered, name, handler, nullptr, 0, 4));
+        require((made == nullptr) == (s_version > kQ3FileVersionCurrent), "Q3XObjectHierarchy_RegisterClass",
+                "a class's file version newer than 1.6 must be refused, any other accepted");
+        if (made != nullptr)
+            STATUS(Q3XObjectHierarchy_UnregisterClass(made));
+        break;
+    }
     }
 }
 
