@@ -35,10 +35,11 @@ HEADERS = [
 ]
 # Whole headers that exist only on one platform.
 PLATFORM_HEADERS = {"QD3DViewer.h": "the Mac viewer", "QD3DWinViewer.h": "the Windows viewer"}
-# A condition naming one of these guards a Mac-only or Windows-only part.
+# A condition naming one of these guards a Mac-only or Windows-only part, or
+# (XDC_OLD) the obsolete X draw context calls Apple's header leaves out.
 PLATFORM_CONDITION = re.compile(
     r"TARGET_OS_MAC|TARGET_OS_WIN32|TARGET_API_MAC|WINDOW_SYSTEM_MACINTOSH|WINDOW_SYSTEM_WIN32|OS_MACINTOSH"
-    r"|QD3D_NO_DIRECTDRAW")
+    r"|QD3D_NO_DIRECTDRAW|XDC_OLD")
 
 IDENT = r"[A-Za-z_][A-Za-z0-9_]*"
 
