@@ -646,6 +646,17 @@ Q3_EXTERN_API_C(TQ3Status) Q3ShapePart_GetShape(TQ3ShapePartObject shapePartObje
 Q3_EXTERN_API_C(TQ3ObjectType) Q3ShapePart_GetType(TQ3ShapePartObject shapePartObject);
 
 /**
+ * The mesh part's type below kQ3ShapePartTypeMeshPart: the face part
+ * (kQ3MeshPartTypeMeshFacePart), edge part (kQ3MeshPartTypeMeshEdgePart)
+ * or vertex part (kQ3MeshPartTypeMeshVertexPart) a pick gave.
+ *
+ * Errors: kQ3ErrorNULLParameter, kQ3ErrorInvalidObject,
+ * kQ3ErrorInvalidObjectType (meshPartObject: not a mesh part); then
+ * kQ3ObjectTypeInvalid.
+ */
+Q3_EXTERN_API_C(TQ3ObjectType) Q3MeshPart_GetType(TQ3MeshPartObject meshPartObject);
+
+/**
  * The mesh component (QD3DGeometry.h) the part's face, edge or vertex
  * belongs to, as Q3Mesh_FirstMeshComponent names it.
  *

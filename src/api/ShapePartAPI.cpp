@@ -39,6 +39,13 @@ TQ3ObjectType Q3ShapePart_GetType(TQ3ShapePartObject shapePartObject)
     });
 }
 
+TQ3ObjectType Q3MeshPart_GetType(TQ3MeshPartObject meshPartObject)
+{
+    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid}, [&] {
+        return lookup<MeshPartObject>(meshPartObject, "meshPartObject").classInfo().typeAtLevel(4);
+    });
+}
+
 TQ3Status Q3MeshPart_GetComponent(TQ3MeshPartObject meshPartObject, TQ3MeshComponent* component)
 {
     return readPart<MeshPartObject>(__func__, meshPartObject, "meshPartObject", component, "component",

@@ -140,6 +140,7 @@ TEST_F(PickShapePartApiTest, FacePartNamesTheFaceTheRayPassesThrough)
         ASSERT_NE(part, nullptr) << c.x << ", " << c.y;
         EXPECT_EQ(Q3Object_GetLeafType(part), kQ3MeshPartTypeMeshFacePart);
         EXPECT_EQ(Q3ShapePart_GetType(part), kQ3ShapePartTypeMeshPart);
+        EXPECT_EQ(Q3MeshPart_GetType(part), kQ3MeshPartTypeMeshFacePart);
         EXPECT_EQ(faceOf(part), c.face) << c.x << ", " << c.y;
         TQ3ShapeObject shape = nullptr;
         ASSERT_EQ(Q3ShapePart_GetShape(part, &shape), kQ3Success);
@@ -297,6 +298,12 @@ TEST_F(PickShapePartApiTest, CallsRejectBadInput)
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3ShapePart_GetShape(face, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3ShapePart_GetType(nullptr), kQ3ObjectTypeInvalid), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3ShapePart_GetType(m_view), kQ3ObjectTypeInvalid), kQ3ErrorInvalidObjectType);
+    EXPECT_EQ(Q3MeshPart_GetType(face), kQ3MeshPartTypeMeshFacePart);
+    EXPECT_EQ(Q3MeshPart_GetType(edge), kQ3MeshPartTypeMeshEdgePart);
+    EXPECT_EQ(Q3MeshPart_GetType(vertex), kQ3MeshPartTypeMeshVertexPart);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3MeshPart_GetType(nullptr), kQ3ObjectTypeInvalid), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3MeshPart_GetType(m_mesh), kQ3ObjectTypeInvalid), kQ3ErrorInvalidObjectType);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3MeshPart_GetType(m_view), kQ3ObjectTypeInvalid), kQ3ErrorInvalidObjectType);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3MeshPart_GetComponent(nullptr, &component), kQ3Failure), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3MeshPart_GetComponent(m_mesh, &component), kQ3Failure), kQ3ErrorInvalidObjectType);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3MeshPart_GetComponent(face, nullptr), kQ3Failure), kQ3ErrorNULLParameter);
@@ -323,6 +330,7 @@ TEST_F(PickShapePartApiTest, CallsRejectBadInput)
 
     Q3Object_Dispose(face);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3ShapePart_GetType(face), kQ3ObjectTypeInvalid), kQ3ErrorInvalidObject);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3MeshPart_GetType(face), kQ3ObjectTypeInvalid), kQ3ErrorInvalidObject);
     Q3Object_Dispose(edge);
     Q3Object_Dispose(vertex);
 }

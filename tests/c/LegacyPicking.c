@@ -253,6 +253,7 @@ int main(void)
         EXPECT(numHits == 1);
         CHECK(Q3Pick_GetPickDetailData(rayPick, 0, kQ3PickDetailMaskShapePart, &part));
         EXPECT(Q3ShapePart_GetType(part) == kQ3ShapePartTypeMeshPart);
+        EXPECT(Q3MeshPart_GetType(part) == kQ3MeshPartTypeMeshFacePart);
         EXPECT(Q3Object_GetLeafType(part) == kQ3MeshPartTypeMeshFacePart);
         CHECK(Q3MeshFacePart_GetFace(part, &partFace));
         EXPECT(partFace == face);

@@ -174,6 +174,10 @@ void Session::picking()
             require(QUERY(Q3ShapePart_GetType(out.object), TQ3ObjectType{kQ3ObjectTypeInvalid}) ==
                         kQ3ShapePartTypeMeshPart,
                     "Q3ShapePart_GetType", "a part that is not a mesh part");
+            const TQ3ObjectType meshPart = QUERY(Q3MeshPart_GetType(out.object), TQ3ObjectType{kQ3ObjectTypeInvalid});
+            require(meshPart == kQ3MeshPartTypeMeshFacePart || meshPart == kQ3MeshPartTypeMeshEdgePart ||
+                        meshPart == kQ3MeshPartTypeMeshVertexPart,
+                    "Q3MeshPart_GetType", "a mesh part that is no face, edge or vertex part");
             TQ3MeshComponent component = nullptr;
             TQ3MeshFace face = nullptr;
             TQ3MeshEdge edge = nullptr;
