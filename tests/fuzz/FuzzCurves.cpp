@@ -423,8 +423,11 @@ void Session::checkQuadricDecomposed(Kind kind, TQ3Object result)
     hold(result, Kind::kTriMesh);
     TQ3TriMeshData mesh{};
     STATUS(Q3TriMesh_GetData(result, &mesh));
-    require(mesh.numTriangles >= 1 && mesh.numTriangles <= (unsigned long)kQ3SubdivisionMaxTrianglesPerSurface,
-            call, "a shape's trimesh has no triangles or more than the cap");
+    // A degenerate shape (QD3DGeometry.h: dependent vectors, an empty
+    // range, a torus's ratio of 0) "gives a TriMesh of no points".
+    require(mesh.numTriangles <= (unsigned long)kQ3SubdivisionMaxTrianglesPerSurface, call,
+            "a shape's trimesh has more triangles than the cap");
+    require(mesh.numTriangles >= 1 || mesh.numPoints == 0, call, "a shape's trimesh has points but no triangles");
     for (unsigned long i = 0; i < mesh.numPoints; ++i)
         require(std::isfinite(mesh.points[i].x) && std::isfinite(mesh.points[i].y) &&
                     std::isfinite(mesh.points[i].z),
