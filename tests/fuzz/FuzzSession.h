@@ -957,8 +957,16 @@ private:
     void quadricDecompose(Kind kind);
 
     // A shape gives a trimesh within kQ3SubdivisionMaxTrianglesPerSurface,
-    // an ellipse a closed or open polyline within the curve cap; finite.
-    void checkQuadricDecomposed(Kind kind, TQ3Object result);
+    // an ellipse a closed or open polyline within the curve cap; finite. A
+    // degenerate shape (the new generator makes them) gives a TriMesh of no
+    // points, and only a shape that may be degenerate gives none.
+    void checkQuadricDecomposed(Kind kind, TQ3Object geometry, TQ3Object result);
+
+    // Whether the held quadric is clearly not degenerate (FuzzCurves.cpp).
+    bool quadricClearlyDrawable(TQ3Object geometry, Kind kind);
+    template <class Data>
+    bool quadricClearlyDrawable(TQ3Object geometry, TQ3Status (*getData)(TQ3GeometryObject, Data*),
+                                TQ3Status (*emptyData)(Data*));
 
     // The math helpers with arbitrary values, results aliasing inputs. Cases
     // 9 and up are QuickDraw 3D 1.6's other QD3DMath.h calls, by family.
