@@ -794,6 +794,24 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kQuadrics).u8(6).u8(1).u8(1).quadricData(6, {{14, 0.75f}}).held();
         s.scene(2).startRendering().submitHeld(kTorus).submitHeld(kCone).endRendering();
     }
+    // Described data at its edges (FuzzInput.h): counts past
+    // kQ3GeometryMaxArrayCount with a one-element decoy array or NULL, a
+    // NULL vertex array, a polyline's segment sets, a stray vertex set (all
+    // refused but the segment sets); a degenerate torus (ratio 0) kept,
+    // drawn and decomposed to nothing.
+    {
+        Seed& s = add("described-data-edges");
+        s.op(Op::kSurfaces).u8(1).u8(0).u8(1).null().u8(232).noSet().u8(0);        // limit + 1, decoy
+        s.op(Op::kSurfaces).u8(1).u8(0).u8(1).null().u8(244).noSet().u8(1);        // ULONG_MAX, NULL
+        s.op(Op::kNewOtherGeometry).u8(2).null().count(3).noSet().noArray().noArray(); // NULL vertices
+        s.op(Op::kNewOtherGeometry).u8(2).null().count(2).noSet().array().vertex(0, 0, 0).vertex(1, 0, 0);
+        s.array().noSet();                                                          // one segment set
+        s.op(Op::kSurfaces).u8(0).u8(0).u8(1).null().vertex(0, 0, 0).xyz(1, 0, 0).u8(240).stray();
+        s.vertex(0, 1, 0).noSet();                                                  // a stray set
+        s.op(Op::kQuadrics).u8(6).u8(0).u8(1).quadricData(6, {{12, 0.0f}});        // torus, ratio 0
+        s.scene(2).startRendering().submitHeld(kTorus).endRendering();
+        s.startRendering().op(Op::kQuadrics).u8(6).u8(5).u8(1).held().held().endRendering();
+    }
     // A mesh: a square with a square hole (FaceToContour) and a triangle on
     // its right edge, walked, checked against its counts, drawn, bounded,
     // decomposed, edited with a deleted face, a made-up handle and a NaN
