@@ -406,7 +406,108 @@ void Session::quadricDecompose(Kind kind)
     checkDecomposition(geometry, view);
 }
 
-void Session::checkQuadricDecomposed(Kind kind, TQ3Object result)
+namespace {
+
+// Whether a quadric is clearly not degenerate by QD3DGeometry.h's tests
+// (dependent vectors: |x . (y x z)| <= 1e-6 |x| |y| |z|, |x x y| <= 1e-6
+// |x| |y|; an empty range; a torus's ratio of 0), with margins: vectors of
+// lengths far from float's limits, products above 1e-4 of the lengths',
+// ranges at least 1e-4 wide and not 1 to 0, a ratio above 1e-4. Computed
+// in double, from the header's formulas.
+double length(const TQ3Vector3D& v)
+{
+    return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+}
+
+bool moderate(const TQ3Vector3D& v)
+{
+    const double l = length(v);
+    return l > 1e-10 && l < 1e10;
+}
+
+bool moderate(const TQ3Point3D& p)
+{
+    return moderate(TQ3Vector3D{p.x, p.y, p.z}) || (p.x == 0.0f && p.y == 0.0f && p.z == 0.0f);
+}
+
+struct Cross {
+    double x, y, z;
+};
+
+Cross cross(const TQ3Vector3D& a, const TQ3Vector3D& b)
+{
+    return Cross{double(a.y) * b.z - double(a.z) * b.y, double(a.z) * b.x - double(a.x) * b.z,
+                 double(a.x) * b.y - double(a.y) * b.x};
+}
+
+bool clearlyIndependent(const TQ3Vector3D& a, const TQ3Vector3D& b)
+{
+    const Cross c = cross(a, b);
+    return moderate(a) && moderate(b) && std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z) > 1e-4 * length(a) * length(b);
+}
+
+bool clearlyIndependent(const TQ3Vector3D& a, const TQ3Vector3D& b, const TQ3Vector3D& c)
+{
+    const Cross bc = cross(b, c);
+    const double triple = a.x * bc.x + a.y * bc.y + a.z * bc.z;
+    return moderate(a) && moderate(b) && moderate(c) && std::fabs(triple) > 1e-4 * length(a) * length(b) * length(c);
+}
+
+bool clearlyNonEmpty(float low, float high)
+{
+    return std::fabs(double(high) - low) > 1e-4 && !(std::fabs(low - 1.0) < 1e-4 && std::fabs(double(high)) < 1e-4);
+}
+
+bool clearlyDrawable(const TQ3BoxData& d)
+{
+    return moderate(d.origin) && clearlyIndependent(d.orientation, d.majorAxis, d.minorAxis);
+}
+
+template <class D>
+bool clearlyDrawableSolid(const D& d)
+{
+    return moderate(d.origin) && clearlyIndependent(d.orientation, d.majorRadius, d.minorRadius) &&
+           clearlyNonEmpty(d.uMin, d.uMax) && clearlyNonEmpty(d.vMin, d.vMax);
+}
+bool clearlyDrawable(const TQ3ConeData& d) { return clearlyDrawableSolid(d); }
+bool clearlyDrawable(const TQ3CylinderData& d) { return clearlyDrawableSolid(d); }
+bool clearlyDrawable(const TQ3EllipsoidData& d) { return clearlyDrawableSolid(d); }
+bool clearlyDrawable(const TQ3TorusData& d) { return clearlyDrawableSolid(d) && d.ratio > 1e-4f; }
+
+bool clearlyDrawable(const TQ3DiskData& d)
+{
+    return moderate(d.origin) && clearlyIndependent(d.majorRadius, d.minorRadius) &&
+           clearlyNonEmpty(d.uMin, d.uMax) && clearlyNonEmpty(d.vMin, d.vMax);
+}
+
+} // namespace
+
+template <class Data>
+bool Session::quadricClearlyDrawable(TQ3Object geometry, TQ3Status (*getData)(TQ3GeometryObject, Data*),
+                                     TQ3Status (*emptyData)(Data*))
+{
+    Data data{};
+    if (STATUS(getData(geometry, &data)) != kQ3Success)
+        return false;
+    const bool drawable = clearlyDrawable(data);
+    STATUS(emptyData(&data));
+    return drawable;
+}
+
+bool Session::quadricClearlyDrawable(TQ3Object geometry, Kind kind)
+{
+    switch (kind) {
+    case Kind::kBox: return quadricClearlyDrawable(geometry, Q3Box_GetData, Q3Box_EmptyData);
+    case Kind::kCone: return quadricClearlyDrawable(geometry, Q3Cone_GetData, Q3Cone_EmptyData);
+    case Kind::kCylinder: return quadricClearlyDrawable(geometry, Q3Cylinder_GetData, Q3Cylinder_EmptyData);
+    case Kind::kDisk: return quadricClearlyDrawable(geometry, Q3Disk_GetData, Q3Disk_EmptyData);
+    case Kind::kEllipsoid: return quadricClearlyDrawable(geometry, Q3Ellipsoid_GetData, Q3Ellipsoid_EmptyData);
+    case Kind::kTorus: return quadricClearlyDrawable(geometry, Q3Torus_GetData, Q3Torus_EmptyData);
+    default: return false;
+    }
+}
+
+void Session::checkQuadricDecomposed(Kind kind, TQ3Object geometry, TQ3Object result)
 {
     const char* call = "Q3Geometry_GetDecomposed";
     if (kind == Kind::kEllipse) {
@@ -423,8 +524,13 @@ void Session::checkQuadricDecomposed(Kind kind, TQ3Object result)
     hold(result, Kind::kTriMesh);
     TQ3TriMeshData mesh{};
     STATUS(Q3TriMesh_GetData(result, &mesh));
-    require(mesh.numTriangles >= 1 && mesh.numTriangles <= (unsigned long)kQ3SubdivisionMaxTrianglesPerSurface,
-            call, "a shape's trimesh has no triangles or more than the cap");
+    // A degenerate shape (QD3DGeometry.h: dependent vectors, an empty
+    // range, a torus's ratio of 0) "gives a TriMesh of no points".
+    require(mesh.numTriangles <= (unsigned long)kQ3SubdivisionMaxTrianglesPerSurface, call,
+            "a shape's trimesh has more triangles than the cap");
+    require(mesh.numTriangles >= 1 || mesh.numPoints == 0, call, "a shape's trimesh has points but no triangles");
+    if (mesh.numTriangles == 0)
+        require(!quadricClearlyDrawable(geometry, kind), call, "a shape that is not degenerate drew nothing");
     for (unsigned long i = 0; i < mesh.numPoints; ++i)
         require(std::isfinite(mesh.points[i].x) && std::isfinite(mesh.points[i].y) &&
                     std::isfinite(mesh.points[i].z),

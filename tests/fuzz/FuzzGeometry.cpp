@@ -9,36 +9,14 @@ namespace q3fuzz {
 
 void Session::otherGeometry()
 {
-    const std::uint8_t which = m_in.u8() % 3;
-    TQ3AttributeSet sets[3] = {nullptr, nullptr, nullptr};
-    const std::uint8_t withSets = m_in.u8();
-    for (int i = 0; i < 3; ++i)
-        if (withSets & (1 << i))
-            sets[i] = pick(Kind::kAttributeSet);
-    TQ3Object geometry = nullptr;
-    Kind kind = Kind::kPoint;
-    if (which == 0) {
-        const TQ3PointData data{point3(), sets[0]};
-        geometry = OBJECT(Q3Point_New(&data));
-    } else if (which == 1) {
-        const TQ3LineData data{{{point3(), sets[0]}, {point3(), sets[1]}}, sets[2]};
-        geometry = OBJECT(Q3Line_New(&data));
-        kind = Kind::kLine;
-    } else {
-        std::vector<TQ3Vertex3D> vertices(m_in.u8() % 17);
-        for (TQ3Vertex3D& v : vertices)
-            v = TQ3Vertex3D{point3(), nullptr};
-        std::vector<TQ3AttributeSet> segmentSets(vertices.empty() ? 0 : vertices.size() - 1, sets[0]);
-        TQ3PolyLineData data{};
-        data.numVertices = vertices.size();
-        data.vertices = vertices.empty() ? nullptr : vertices.data();
-        data.segmentAttributeSet = (withSets & 8) && !segmentSets.empty() ? segmentSets.data() : nullptr;
-        data.polyLineAttributeSet = sets[1];
-        geometry = OBJECT(Q3PolyLine_New(&data));
-        kind = Kind::kPolyLine;
+    switch (m_in.u8() % 3) {
+    case 0: newDescribed<TQ3PointData>(Kind::kPoint, Q3Point_New, Q3Point_GetData, Q3Point_EmptyData, Q3Point_Submit); break;
+    case 1: newDescribed<TQ3LineData>(Kind::kLine, Q3Line_New, Q3Line_GetData, Q3Line_EmptyData, Q3Line_Submit); break;
+    default:
+        newDescribed<TQ3PolyLineData>(Kind::kPolyLine, Q3PolyLine_New, Q3PolyLine_GetData, Q3PolyLine_EmptyData,
+                                      Q3PolyLine_Submit);
+        break;
     }
-    if (geometry != nullptr)
-        hold(geometry, kind);
 }
 
 void Session::accessors()
@@ -183,55 +161,45 @@ void Session::cameraField(bool set, bool nullArg)
     checkStatus(field.name, status);
 }
 
+// Action 0 GetData and EmptyData twice, 1 SetData (checked as
+// surfaceAction checks it), 2 EmptyData(NULL); the data from the
+// description, read whatever the action.
 void Session::otherGeometryEdit()
 {
     const std::uint8_t family = m_in.u8() % 3;
-    const TQ3Object geometry = pick(family == 0 ? Kind::kPoint : family == 1 ? Kind::kLine : Kind::kPolyLine);
     const std::uint8_t action = m_in.u8() % 3;
-    const TQ3AttributeSet set = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
     const bool nullData = m_in.u8() == 0;
+    // The first three surfaceAction actions, in this operation's order.
+    const std::uint8_t shared = action == 0 ? 2 : 1;
+    DataArena arena;
     if (family == 0) {
-        TQ3PointData data{point3(), set};
-        if (action == 0) {
-            if (STATUS(Q3Point_GetData(geometry, nullData ? nullptr : &data)) == kQ3Success) {
-                STATUS(Q3Point_EmptyData(&data));
-                STATUS(Q3Point_EmptyData(&data));
-            }
-        } else if (action == 1) {
-            STATUS(Q3Point_SetData(geometry, nullData ? nullptr : &data));
-        } else {
+        TQ3PointData data{};
+        readDescribed(data, arena);
+        if (action == 2)
             STATUS(Q3Point_EmptyData(nullptr));
-        }
+        else
+            surfaceAction<TQ3PointData>(shared, Kind::kPoint, nullData ? nullptr : &data, Q3Point_New,
+                                        Q3Point_SetData, Q3Point_GetData, Q3Point_EmptyData, Q3Point_Submit,
+                                        [](const TQ3PointData& a, const TQ3PointData& b) { return sameData(a, b); });
     } else if (family == 1) {
-        TQ3LineData data{{{point3(), nullptr}, {point3(), set}}, set};
-        if (action == 0) {
-            if (STATUS(Q3Line_GetData(geometry, nullData ? nullptr : &data)) == kQ3Success) {
-                STATUS(Q3Line_EmptyData(&data));
-                STATUS(Q3Line_EmptyData(&data));
-            }
-        } else if (action == 1) {
-            STATUS(Q3Line_SetData(geometry, nullData ? nullptr : &data));
-        } else {
+        TQ3LineData data{};
+        readDescribed(data, arena);
+        if (action == 2)
             STATUS(Q3Line_EmptyData(nullptr));
-        }
+        else
+            surfaceAction<TQ3LineData>(shared, Kind::kLine, nullData ? nullptr : &data, Q3Line_New, Q3Line_SetData,
+                                       Q3Line_GetData, Q3Line_EmptyData, Q3Line_Submit,
+                                       [](const TQ3LineData& a, const TQ3LineData& b) { return sameData(a, b); });
     } else {
-        std::vector<TQ3Vertex3D> vertices(m_in.u8() % 9);
-        for (TQ3Vertex3D& v : vertices)
-            v = TQ3Vertex3D{point3(), (m_in.u8() & 1) ? set : nullptr};
-        std::vector<TQ3AttributeSet> segmentSets(vertices.empty() ? 0 : vertices.size() - 1, set);
-        TQ3PolyLineData data{vertices.size(), vertices.empty() ? nullptr : vertices.data(),
-                             segmentSets.empty() ? nullptr : segmentSets.data(), set};
-        if (action == 0) {
-            if (STATUS(Q3PolyLine_GetData(geometry, nullData ? nullptr : &data)) == kQ3Success) {
-                STATUS(Q3PolyLine_EmptyData(&data));
-                STATUS(Q3PolyLine_EmptyData(&data));
-            }
-        } else if (action == 1) {
-            if (drawAllowed())
-                STATUS(Q3PolyLine_SetData(geometry, nullData ? nullptr : &data));
-        } else {
+        TQ3PolyLineData data{};
+        readDescribed(data, arena);
+        if (action == 2)
             STATUS(Q3PolyLine_EmptyData(nullptr));
-        }
+        else if (action == 0 || drawAllowed())
+            surfaceAction<TQ3PolyLineData>(
+                shared, Kind::kPolyLine, nullData ? nullptr : &data, Q3PolyLine_New, Q3PolyLine_SetData,
+                Q3PolyLine_GetData, Q3PolyLine_EmptyData, Q3PolyLine_Submit,
+                [](const TQ3PolyLineData& a, const TQ3PolyLineData& b) { return sameData(a, b); });
     }
 }
 
@@ -240,47 +208,33 @@ void Session::surfaces()
     const std::uint8_t family = m_in.u8() % 3;
     const std::uint8_t action = m_in.u8() % 5;
     const Kind kind = family == 0 ? Kind::kTriangle : family == 1 ? Kind::kPolygon : Kind::kTriMesh;
-    const TQ3AttributeSet set = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
-    const bool nullData = m_in.u8() == 0;
+    DataArena arena;
     if (family == 0) {
+        const bool nullData = m_in.u8() == 0;
         TQ3TriangleData data{};
-        for (TQ3Vertex3D& v : data.vertices)
-            v = TQ3Vertex3D{point3(), (m_in.u8() & 1) ? set : nullptr};
-        data.triangleAttributeSet = set;
+        const TQ3AttributeSet set = readDescribed(data, arena);
         surfaceAction<TQ3TriangleData>(action, kind, nullData ? nullptr : &data, Q3Triangle_New, Q3Triangle_SetData,
                                        Q3Triangle_GetData, Q3Triangle_EmptyData, Q3Triangle_Submit,
-                                       [&](const TQ3TriangleData& a, const TQ3TriangleData& b) {
-                                           for (int i = 0; i < 3; ++i)
-                                               if (!sameBytes(a.vertices[i], b.vertices[i]))
-                                                   return false;
-                                           return a.triangleAttributeSet == b.triangleAttributeSet;
-                                       });
+                                       [](const TQ3TriangleData& a, const TQ3TriangleData& b) { return sameData(a, b); });
         if (action == 4)
             vertexCalls(kind, 3, set, Q3Triangle_GetVertexPosition, Q3Triangle_SetVertexPosition,
                         Q3Triangle_GetVertexAttributeSet, Q3Triangle_SetVertexAttributeSet);
     } else if (family == 1) {
-        std::vector<TQ3Vertex3D> vertices(m_in.u8() % 12);
-        for (TQ3Vertex3D& v : vertices)
-            v = TQ3Vertex3D{point3(), (m_in.u8() & 1) ? set : nullptr};
-        TQ3PolygonData data{vertices.size(), vertices.empty() ? nullptr : vertices.data(), set};
-        if (m_in.u8() == 0) {
-            data.numVertices = ~0UL - m_in.u8();
-            data.vertices = nullptr;
-        }
+        const bool nullData = m_in.u8() == 0;
+        TQ3PolygonData data{};
+        const TQ3AttributeSet set = readDescribed(data, arena);
         surfaceAction<TQ3PolygonData>(action, kind, nullData ? nullptr : &data, Q3Polygon_New, Q3Polygon_SetData,
                                       Q3Polygon_GetData, Q3Polygon_EmptyData, Q3Polygon_Submit,
-                                      [&](const TQ3PolygonData& a, const TQ3PolygonData& b) {
-                                          if (a.numVertices != b.numVertices)
-                                              return false;
-                                          for (unsigned long i = 0; i < a.numVertices; ++i)
-                                              if (!sameBytes(a.vertices[i], b.vertices[i]))
-                                                  return false;
-                                          return a.polygonAttributeSet == b.polygonAttributeSet;
-                                      });
+                                      [](const TQ3PolygonData& a, const TQ3PolygonData& b) { return sameData(a, b); });
         if (action == 4)
             vertexCalls(kind, 12, set, Q3Polygon_GetVertexPosition, Q3Polygon_SetVertexPosition,
                         Q3Polygon_GetVertexAttributeSet, Q3Polygon_SetVertexAttributeSet);
     } else {
+        // TriMeshes keep their hand-written generator: their description is
+        // private to TriMesh.cpp, and the indices it cannot describe (each
+        // below numPoints or numTriangles) are what reach the renderer.
+        const TQ3AttributeSet set = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
+        const bool nullData = m_in.u8() == 0;
         TriMeshBuffers mesh;
         readTriMesh(mesh, set);
         surfaceAction<TQ3TriMeshData>(action, kind, nullData ? nullptr : &mesh.data, Q3TriMesh_New,
@@ -382,54 +336,33 @@ void Session::quadrics()
     if (action == 5)
         return quadricDecompose(kind);
     switch (type) {
-    case 0: {
-        TQ3BoxData data{};
-        TQ3AttributeSet faces[6] = {};
-        if (m_in.u8() & 1) {
-            for (TQ3AttributeSet& face : faces)
-                face = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
-            data.faceAttributeSet = faces;
-        }
-        quadricData(action, kind, data, nullData, Q3Box_New, Q3Box_SetData, Q3Box_GetData, Q3Box_EmptyData,
-                    Q3Box_Submit);
+    case 0:
+        quadricData(action, kind, nullData, Q3Box_New, Q3Box_SetData, Q3Box_GetData, Q3Box_EmptyData, Q3Box_Submit);
         break;
-    }
-    case 1: {
-        TQ3ConeData data{};
-        quadricData(action, kind, data, nullData, Q3Cone_New, Q3Cone_SetData, Q3Cone_GetData,
-                    Q3Cone_EmptyData, Q3Cone_Submit);
+    case 1:
+        quadricData(action, kind, nullData, Q3Cone_New, Q3Cone_SetData, Q3Cone_GetData, Q3Cone_EmptyData,
+                    Q3Cone_Submit);
         break;
-    }
-    case 2: {
-        TQ3CylinderData data{};
-        quadricData(action, kind, data, nullData, Q3Cylinder_New, Q3Cylinder_SetData, Q3Cylinder_GetData,
+    case 2:
+        quadricData(action, kind, nullData, Q3Cylinder_New, Q3Cylinder_SetData, Q3Cylinder_GetData,
                     Q3Cylinder_EmptyData, Q3Cylinder_Submit);
         break;
-    }
-    case 3: {
-        TQ3DiskData data{};
-        quadricData(action, kind, data, nullData, Q3Disk_New, Q3Disk_SetData, Q3Disk_GetData,
-                    Q3Disk_EmptyData, Q3Disk_Submit);
+    case 3:
+        quadricData(action, kind, nullData, Q3Disk_New, Q3Disk_SetData, Q3Disk_GetData, Q3Disk_EmptyData,
+                    Q3Disk_Submit);
         break;
-    }
-    case 4: {
-        TQ3EllipseData data{};
-        quadricData(action, kind, data, nullData, Q3Ellipse_New, Q3Ellipse_SetData, Q3Ellipse_GetData,
+    case 4:
+        quadricData(action, kind, nullData, Q3Ellipse_New, Q3Ellipse_SetData, Q3Ellipse_GetData,
                     Q3Ellipse_EmptyData, Q3Ellipse_Submit);
         break;
-    }
-    case 5: {
-        TQ3EllipsoidData data{};
-        quadricData(action, kind, data, nullData, Q3Ellipsoid_New, Q3Ellipsoid_SetData, Q3Ellipsoid_GetData,
+    case 5:
+        quadricData(action, kind, nullData, Q3Ellipsoid_New, Q3Ellipsoid_SetData, Q3Ellipsoid_GetData,
                     Q3Ellipsoid_EmptyData, Q3Ellipsoid_Submit);
         break;
-    }
-    default: {
-        TQ3TorusData data{};
-        quadricData(action, kind, data, nullData, Q3Torus_New, Q3Torus_SetData, Q3Torus_GetData,
-                    Q3Torus_EmptyData, Q3Torus_Submit);
+    default:
+        quadricData(action, kind, nullData, Q3Torus_New, Q3Torus_SetData, Q3Torus_GetData, Q3Torus_EmptyData,
+                    Q3Torus_Submit);
         break;
-    }
     }
 }
 

@@ -22,6 +22,25 @@
 //   index     one tag byte, then: tag % 8 == 0: four raw bytes (UINT32_MAX
 //             and friends); == 1: the last valid index; == 2: one past it;
 //             otherwise a byte modulo the count + 2.
+//
+// Described data (FuzzData.h): a geometry's data struct read by walking the
+// library's description of it. First a handle, the palette; then every field
+// but the malloc'ed arrays, in the description's order; then those arrays,
+// in that order. An element of an array that is itself described (a
+// TQ3Vertex3D) is read the same way, its own arrays after its other fields.
+//   float     a value; points and vectors three, rational points four.
+//   integer   or enumeration: one byte t, < 224: t % 16; else four raw bytes.
+//   count     (a count with a minimum): one byte t, < 200: t % 13; < 232:
+//             13 + one more byte; < 244: kQ3GeometryMaxArrayCount + 1 +
+//             (t - 232); else ULONG_MAX - (t - 244).
+//   handle    one byte, < 128: NULL; < 240: the palette; else a handle
+//             (two more bytes, as above).
+//   array     one shape byte s. For a count past kQ3GeometryMaxArrayCount no
+//             element follows, and the array is NULL (s odd) or a decoy of
+//             one element. Otherwise s % 16 == 15 or a count past the
+//             generator's element budget: NULL, nothing follows; else the
+//             count's elements follow (an array of none is NULL when s &
+//             0x10). Arrays are never shorter than their counts claim.
 
 #include <cstddef>
 #include <cstdint>
@@ -231,6 +250,14 @@ public:
     Self& null() { return u8(200).u8(0); }
     Self& stale(std::uint8_t which = 0) { return u8(220).u8(which); }
     Self& stray(std::uint8_t which = 0) { return u8(240).u8(which); }
+    /// Described data (see above): a field's pieces.
+    Self& xyz(float x, float y, float z) { return value(x).value(y).value(z); }
+    Self& count(std::uint8_t n) { return u8(n); } ///< n <= 12
+    Self& noSet() { return u8(0); }
+    Self& paletteSet() { return u8(128); }
+    Self& vertex(float x, float y, float z, bool set = false) { return xyz(x, y, z).u8(set ? 128 : 0); }
+    Self& array() { return u8(0); }   ///< the elements follow
+    Self& noArray() { return u8(15); } ///< NULL, nothing follows
     /// An index given as a plain byte (tag 3), or as four raw bytes.
     Self& smallIndex(std::uint8_t i) { return u8(3).u8(i); }
     Self& rawIndex(std::uint32_t i) { return u8(0).u32(i); }

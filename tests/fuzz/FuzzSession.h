@@ -8,6 +8,7 @@
 // Fuzz<Family>.cpp.
 
 #include "CCaller.h"
+#include "FuzzData.h"
 #include "FuzzInput.h"
 
 #include "Q3NURBCurveTools.h"
@@ -423,6 +424,10 @@ private:
         return granted;
     }
 
+    // Hand-written, not from the description (FuzzData.h): the NURB rules
+    // that make a curve drawable (order <= numPoints, knots nondecreasing
+    // and clamped) are in no description, and only valid curves reach the
+    // tessellator; the generated modes build them and then patch values.
     void readCurve(CurveBuffers& c)
     {
         const std::uint8_t flags = m_in.u8();
@@ -499,6 +504,31 @@ private:
         c.data.controlPoints = (flags & kCurveNullPoints) || c.points.empty() ? nullptr : c.points.data();
         c.data.knots = (flags & kCurveNullKnots) || c.knots.empty() ? nullptr : c.knots.data();
         c.data.curveAttributeSet = (flags & kCurveAttributes) ? pick(Kind::kAttributeSet) : nullptr;
+    }
+
+    // Fills a geometry's data struct from the input by walking the library's
+    // description of it (FuzzData.h): first the palette (one picked
+    // attribute set the struct's handle fields mostly share), then the
+    // fields. The arrays live in `arena`. Returns the palette.
+    template <class S>
+    TQ3AttributeSet readDescribed(S& data, DataArena& arena)
+    {
+        const TQ3AttributeSet palette = pick(Kind::kAttributeSet);
+        DataGenerator generator(m_in, arena, [this] { return pick(Kind::kAttributeSet); }, palette);
+        generator.fill(data);
+        return palette;
+    }
+
+    // New for a described type, checked to read back; the kind it is held as.
+    template <class S>
+    void newDescribed(Kind kind, TQ3GeometryObject (*create)(const S*), TQ3Status (*getData)(TQ3GeometryObject, S*),
+                      TQ3Status (*emptyData)(S*), TQ3Status (*submit)(const S*, TQ3ViewObject))
+    {
+        DataArena arena;
+        S data{};
+        readDescribed(data, arena);
+        surfaceAction<S>(0, kind, &data, create, nullptr, getData, emptyData, submit,
+                         [](const S& a, const S& b) { return sameData(a, b); });
     }
 
     struct CurveShape {
@@ -643,8 +673,15 @@ private:
         switch (action) {
         case 0: {
             const TQ3Object geometry = OBJECT(create(data));
-            if (geometry != nullptr)
-                hold(geometry, kind);
+            if (geometry == nullptr)
+                break;
+            hold(geometry, kind);
+            require(data != nullptr, "New", "accepted NULL data");
+            Data got{};
+            if (STATUS(getData(geometry, &got)) == kQ3Success) {
+                require(same(got, *data), "GetData", "the data read back differs from what New was given");
+                STATUS(emptyData(&got));
+            }
             break;
         }
         case 1: {
@@ -702,75 +739,23 @@ private:
 
     // Boxes, cones, cylinders, disks, ellipses, ellipsoids and tori: New,
     // SetData, GetData with EmptyData (twice), immediate Submit, every
-    // per-field call and the decomposition. The data starts as a valid shape
-    // whose floats an input may overwrite with anything (NaN, infinities,
-    // zero or parallel axes, ranges outside [0, 1], a ratio <= 0), with any
-    // caps bits and attribute sets (dead, foreign, a box's six face sets).
-    struct QuadricFields {
-        float* floats; // origin, then the vectors, the torus's ratio, the ranges
-        int floatCount;
-        TQ3EndCap* caps;       // NULL if the type has none
-        TQ3AttributeSet* sets; // the part sets and then the geometry's, consecutive
-        int setCount;
-    };
-    static QuadricFields fieldsOf(TQ3BoxData& d) { return {&d.origin.x, 12, nullptr, &d.boxAttributeSet, 1}; }
-    static QuadricFields fieldsOf(TQ3ConeData& d) { return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 4}; }
-    static QuadricFields fieldsOf(TQ3CylinderData& d) { return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 5}; }
-    static QuadricFields fieldsOf(TQ3DiskData& d) { return {&d.origin.x, 13, nullptr, &d.diskAttributeSet, 1}; }
-    static QuadricFields fieldsOf(TQ3EllipseData& d) { return {&d.origin.x, 11, nullptr, &d.ellipseAttributeSet, 1}; }
-    static QuadricFields fieldsOf(TQ3EllipsoidData& d)
-    {
-        return {&d.origin.x, 16, &d.caps, &d.interiorAttributeSet, 2};
-    }
-    static QuadricFields fieldsOf(TQ3TorusData& d) { return {&d.origin.x, 17, &d.caps, &d.interiorAttributeSet, 2}; }
-
+    // per-field call and the decomposition. The data comes from the input
+    // through the type's description (readDescribed): any floats (NaN,
+    // infinities, zero or parallel axes, ranges outside [0, 1], a ratio <=
+    // 0), any caps bits, attribute sets (dead, foreign, a box's six face sets).
     template <class Data>
-    static bool sameQuadric(const Data& a, const Data& b)
-    {
-        const QuadricFields x = fieldsOf(const_cast<Data&>(a));
-        const QuadricFields y = fieldsOf(const_cast<Data&>(b));
-        return std::memcmp(x.floats, y.floats, std::size_t(x.floatCount) * sizeof(float)) == 0 &&
-               (x.caps == nullptr || *x.caps == *y.caps) &&
-               std::memcmp(x.sets, y.sets, std::size_t(x.setCount) * sizeof(TQ3AttributeSet)) == 0;
-    }
-    static bool sameQuadric(const TQ3BoxData& a, const TQ3BoxData& b)
-    {
-        const bool faces = a.faceAttributeSet == nullptr || b.faceAttributeSet == nullptr
-                               ? a.faceAttributeSet == b.faceAttributeSet
-                               : std::memcmp(a.faceAttributeSet, b.faceAttributeSet, 6 * sizeof(TQ3AttributeSet)) == 0;
-        return faces && sameQuadric<TQ3BoxData>(a, b);
-    }
-
-    template <class Data>
-    void quadricData(std::uint8_t action, Kind kind, Data& data, bool nullData,
-                     TQ3GeometryObject (*create)(const Data*),
+    void quadricData(std::uint8_t action, Kind kind, bool nullData, TQ3GeometryObject (*create)(const Data*),
                      TQ3Status (*setData)(TQ3GeometryObject, const Data*),
                      TQ3Status (*getData)(TQ3GeometryObject, Data*), TQ3Status (*emptyData)(Data*),
                      TQ3Status (*submit)(const Data*, TQ3ViewObject))
     {
-        // A valid shape: unit axes along y, z and x (a torus's tube half as
-        // thick), full ranges; disks and ellipses take the last two axes.
-        static const float kShape[] = {0, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, 1};
-        static const float kTorus[] = {0, 0, 0, 0, 0.5f, 0, 0, 0, 1, 1, 0, 0, 0.5f, 0, 1, 0, 1};
-        const QuadricFields f = fieldsOf(data);
-        if (f.floatCount == 17)
-            std::copy(kTorus, kTorus + 17, f.floats);
-        else if (f.floatCount == 12 || f.floatCount == 16)
-            std::copy(kShape, kShape + f.floatCount, f.floats);
-        else
-            std::copy(kShape + 6, kShape + 3 + f.floatCount, f.floats + 3);
-        for (int n = m_in.u8() % 4; n > 0; --n)
-            f.floats[m_in.u8() % f.floatCount] = m_in.value();
-        if (f.caps != nullptr)
-            *f.caps = TQ3EndCap(enumValue(7));
-        const std::uint8_t withSets = m_in.u8();
-        for (int i = 0; i < f.setCount; ++i)
-            if (withSets & (1 << i))
-                f.sets[i] = pick(Kind::kAttributeSet);
+        DataArena arena;
+        Data data{};
+        readDescribed(data, arena);
         if (action == 3 && !drawAllowed())
             return;
         surfaceAction<Data>(action, kind, nullData ? nullptr : &data, create, setData, getData, emptyData, submit,
-                            [](const Data& a, const Data& b) { return sameQuadric(a, b); });
+                            [](const Data& a, const Data& b) { return sameData(a, b); });
     }
 
     void quadrics();
@@ -787,6 +772,11 @@ private:
         return true;
     }
 
+    // Hand-written: these four descriptions are private to their classes'
+    // .cpp files, and what reaches the triangulators is data the
+    // descriptions cannot state (indices below the counts they index,
+    // contours that share the vertex budget, a bitmap's image as large as
+    // rowBytes * height).
     void polygons2();
 
     void polygons2Field(std::uint8_t type, Kind kind);
@@ -801,6 +791,9 @@ private:
         TQ3Object made = nullptr;
     };
 
+    // Hand-written: the pixmap marker's description is private to
+    // PixmapMarker.cpp, and its image must be a storage object made here
+    // with the pixmap's byte size, which no description says.
     StoragePixmapArgs storagePixmap();
 
     void releaseStorage(StoragePixmapArgs& a);
@@ -912,7 +905,8 @@ private:
         return knots;
     }
 
-    // The patch flag byte: bit 0 raw uOrder, bit 1 raw vOrder, bit 2 a huge
+    // Hand-written, as readCurve is (the NURB rules are in no description,
+    // and the trim loops nest three arrays deep). The patch flag byte: bit 0 raw uOrder, bit 1 raw vOrder, bit 2 a huge
     // numTrimLoops, bit 3 a huge numRows, bit 4 a huge numColumns, bit 5 an
     // attribute set, bit 6 NULL control points, bit 7 NULL knots. Then a
     // shape byte, the scale, value overwrites, the trim loops.
@@ -963,8 +957,16 @@ private:
     void quadricDecompose(Kind kind);
 
     // A shape gives a trimesh within kQ3SubdivisionMaxTrianglesPerSurface,
-    // an ellipse a closed or open polyline within the curve cap; finite.
-    void checkQuadricDecomposed(Kind kind, TQ3Object result);
+    // an ellipse a closed or open polyline within the curve cap; finite. A
+    // degenerate shape (the new generator makes them) gives a TriMesh of no
+    // points, and only a shape that may be degenerate gives none.
+    void checkQuadricDecomposed(Kind kind, TQ3Object geometry, TQ3Object result);
+
+    // Whether the held quadric is clearly not degenerate (FuzzCurves.cpp).
+    bool quadricClearlyDrawable(TQ3Object geometry, Kind kind);
+    template <class Data>
+    bool quadricClearlyDrawable(TQ3Object geometry, TQ3Status (*getData)(TQ3GeometryObject, Data*),
+                                TQ3Status (*emptyData)(Data*));
 
     // The math helpers with arbitrary values, results aliasing inputs. Cases
     // 9 and up are QuickDraw 3D 1.6's other QD3DMath.h calls, by family.

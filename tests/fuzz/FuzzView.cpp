@@ -888,7 +888,7 @@ void Session::checkDecomposition(TQ3Object geometry, TQ3Object view)
     const Held* entry = heldEntry(geometry);
     if (entry != nullptr && isQuadric(entry->kind)) {
         require(!posted, "Q3Geometry_GetDecomposed", "posted an error but decomposed");
-        checkQuadricDecomposed(entry->kind, polyline);
+        checkQuadricDecomposed(entry->kind, geometry, polyline);
         return;
     }
     if (entry != nullptr && entry->kind == Kind::kPatch) {

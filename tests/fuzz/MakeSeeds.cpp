@@ -34,6 +34,62 @@ struct Patch {
 // Each method writes one operation exactly as ApiFuzzer.cpp reads it.
 class Seed : public q3fuzz::BasicWriter<Seed> {
 public:
+    // Described data (FuzzInput.h), with the palette NULL and no sets.
+    Seed& newPoint(float x, float y, float z) { return op(Op::kNewOtherGeometry).u8(0).null().xyz(x, y, z).noSet(); }
+    Seed& newLine(float x0, float y0, float z0, float x1, float y1, float z1)
+    {
+        return op(Op::kNewOtherGeometry).u8(1).null().vertex(x0, y0, z0).vertex(x1, y1, z1).noSet();
+    }
+    // xyz: the vertices' coordinates; no segment sets.
+    Seed& newPolyLine(const std::vector<float>& xyz)
+    {
+        op(Op::kNewOtherGeometry).u8(2).null().count(std::uint8_t(xyz.size() / 3)).noSet().array();
+        for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+            vertex(xyz[i], xyz[i + 1], xyz[i + 2]);
+        return noArray();
+    }
+    // surfaces(): the family (0 triangle, 1 polygon), the action, the
+    // non-null byte, the data (vertices from xyz, no sets).
+    Seed& surface(std::uint8_t family, std::uint8_t action, const std::vector<float>& xyz)
+    {
+        op(Op::kSurfaces).u8(family).u8(action).u8(1).null();
+        if (family == 1)
+            count(std::uint8_t(xyz.size() / 3)).noSet().array();
+        for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+            vertex(xyz[i], xyz[i + 1], xyz[i + 2]);
+        return family == 0 ? noSet() : *this;
+    }
+    // A quadric's described data: a valid shape (axes along y, z and x, a
+    // torus's tube half as thick, full ranges, every cap) with the floats
+    // `changes` names (index in the struct's float fields) replaced, no
+    // sets (a box's six face sets an array of NULLs).
+    Seed& quadricData(std::uint8_t type, const std::vector<std::pair<int, float>>& changes = {})
+    {
+        std::vector<float> floats = {0, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, 1};
+        if (type == 3 || type == 4) // no orientation; an ellipse no v range
+            floats.erase(floats.begin() + 3, floats.begin() + 6);
+        if (type == 4)
+            floats.resize(11);
+        if (type == 6)
+            floats = {0, 0, 0, 0, 0.5f, 0, 0, 0, 1, 1, 0, 0, 0.5f, 0, 1, 0, 1};
+        for (const auto& [index, v] : changes)
+            floats[std::size_t(index)] = v;
+        null();
+        for (float v : floats)
+            value(v);
+        static const std::uint8_t kSets[] = {1, 4, 5, 1, 1, 2, 2};
+        if (type == 1 || type == 2 || type == 5 || type == 6)
+            u8(7);
+        for (int i = 0; i < kSets[type]; ++i)
+            noSet();
+        if (type == 0) {
+            array();
+            for (int i = 0; i < 6; ++i)
+                noSet();
+        }
+        return *this;
+    }
+
     Seed& listing1Curve(const std::vector<Patch>& patches = {}, std::uint8_t flags = 0)
     {
         u8(q3fuzz::kCurveListing1 | flags).u8(3);
@@ -487,12 +543,9 @@ std::vector<std::pair<std::string, Seed>> seeds()
     // Points, lines and polylines next to the curves.
     {
         Seed& s = add("other-geometry");
-        s.op(Op::kNewOtherGeometry).u8(0).u8(0).value(1).value(1).value(1);
-        s.op(Op::kNewOtherGeometry).u8(1).u8(0).value(0).value(0).value(0).value(1).value(1).value(0);
-        s.op(Op::kNewOtherGeometry).u8(2).u8(0).u8(3).value(0).value(0).value(0).value(1).value(0).value(0);
-        s.value(1).value(1).value(0);
-        s.op(Op::kNewOtherGeometry).u8(2).u8(0).u8(1).value(0).value(0).value(0);
-        s.op(Op::kNewOtherGeometry).u8(0).u8(0).special(0).value(1).value(1);
+        s.newPoint(1, 1, 1).newLine(0, 0, 0, 1, 1, 0).newPolyLine({0, 0, 0, 1, 0, 0, 1, 1, 0});
+        s.newPolyLine({0, 0, 0}); // one vertex: refused
+        s.op(Op::kNewOtherGeometry).u8(0).null().special(0).value(1).value(1).noSet(); // NaN: refused
         s.scene().startRendering().submitHeld(kPoint).submitHeld(kLine).submitHeld(kPolyLine);
         s.decompose(0).op(Op::kDecompose).u8(0).u8(1).held();
         s.op(Op::kSubmitTransformImmediate).held().u8(1).u8(4);
@@ -508,10 +561,7 @@ std::vector<std::pair<std::string, Seed>> seeds()
     // and cameras: good values, NaN, indices at the ends and beyond.
     {
         Seed& s = add("accessors");
-        s.op(Op::kNewOtherGeometry).u8(0).u8(0).value(1).value(1).value(1);
-        s.op(Op::kNewOtherGeometry).u8(1).u8(0).value(0).value(0).value(0).value(1).value(1).value(0);
-        s.op(Op::kNewOtherGeometry).u8(2).u8(0).u8(3).value(0).value(0).value(0).value(1).value(0).value(0);
-        s.value(1).value(1).value(0);
+        s.newPoint(1, 1, 1).newLine(0, 0, 0, 1, 1, 0).newPolyLine({0, 0, 0, 1, 0, 0, 1, 1, 0});
         s.op(Op::kNewTransform).u8(1).value(1).value(2).value(3).u8(1);
         s.scene(2);
         // accessors(): null-argument byte, set/get byte, attribute-set byte, a position, the family.
@@ -543,20 +593,10 @@ std::vector<std::pair<std::string, Seed>> seeds()
     // NaN, emptied twice.
     {
         Seed& s = add("surfaces");
-        auto vertex = [&s](float x, float y, float z) -> Seed& { return s.value(x).value(y).value(z).u8(0); };
-        // surfaces(): family, action, attribute-set byte, non-null byte, the data.
-        s.op(Op::kSurfaces).u8(0).u8(0).u8(0).u8(1);
-        vertex(0, 0, 0);
-        vertex(1, 0, 0);
-        vertex(0, 1, 0);
-        s.op(Op::kSurfaces).u8(1).u8(0).u8(0).u8(1).u8(5);
-        vertex(0, 0, 0);
-        vertex(2, 0, 0);
-        vertex(2, 2, 0);
-        vertex(1, 0.5f, 0); // concave
-        vertex(0, 2, 0);
-        s.u8(1);
-        // A trimesh of 4 points and 2 triangles with per-vertex diffuse colours.
+        const std::vector<float> triangle{0, 0, 0, 1, 0, 0, 0, 1, 0};
+        s.surface(0, 0, triangle).surface(1, 0, {0, 0, 0, 2, 0, 0, 2, 2, 0, 1, 0.5f, 0, 0, 2, 0}); // concave
+        // A trimesh of 4 points and 2 triangles with per-vertex diffuse colours
+        // (family, action, attribute-set byte, non-null byte, readTriMesh's data).
         s.op(Op::kSurfaces).u8(2).u8(0).u8(0).u8(1).u8(4);
         for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f})
             s.value(v);
@@ -571,23 +611,11 @@ std::vector<std::pair<std::string, Seed>> seeds()
         // triangle (NULL) and the polygon (a trimesh).
         s.startRendering().op(Op::kDecompose).held(0).held().op(Op::kDecompose).held(1).held().endRendering();
         // vertexCalls(): the geometry, an index, the null byte, a position, the call.
-        s.op(Op::kSurfaces).u8(0).u8(4).u8(0).u8(1);
-        vertex(0, 0, 0);
-        vertex(1, 0, 0);
-        vertex(0, 1, 0);
-        s.held().smallIndex(2).u8(1).value(5).value(5).value(5).u8(1);  // SetVertexPosition, last vertex
-        s.op(Op::kSurfaces).u8(0).u8(4).u8(0).u8(1);
-        vertex(0, 0, 0);
-        vertex(1, 0, 0);
-        vertex(0, 1, 0);
-        s.held().smallIndex(3).u8(1).special(0).value(0).value(0).u8(1); // one past the end, NaN
+        s.surface(0, 4, triangle).held().smallIndex(2).u8(1).value(5).value(5).value(5).u8(1); // last vertex
+        s.surface(0, 4, triangle).held().smallIndex(3).u8(1).special(0).value(0).value(0).u8(1); // past it, NaN
         // SetData with a NaN vertex, then GetData and EmptyData twice.
-        s.op(Op::kSurfaces).u8(0).u8(1).u8(0).u8(1);
-        vertex(0, 0, 0);
-        s.special(0).value(0).value(0).u8(0);
-        vertex(0, 1, 0);
-        s.held();
-        s.op(Op::kSurfaces).u8(1).u8(2).u8(0).u8(1).u8(0).u8(1).held();
+        s.surface(0, 1, {0, 0, 0, kNaN, 0, 0, 0, 1, 0}).held();
+        s.surface(1, 2, {}).held();
         s.startRendering().submitHeld(kPolygon).endRendering();
     }
     // Groups: a display group holding a triangle inside an ordered group,
@@ -595,12 +623,8 @@ std::vector<std::pair<std::string, Seed>> seeds()
     // from while walked, duplicated; a push / pop pair met in the group.
     {
         Seed& s = add("groups");
-        auto vertex = [&s](float x, float y, float z) -> Seed& { return s.value(x).value(y).value(z).u8(0); };
         s.scene();
-        s.op(Op::kSurfaces).u8(0).u8(0).u8(0).u8(1);
-        vertex(0, 0, 0);
-        vertex(1, 0, 0);
-        vertex(0, 1, 0);
+        s.surface(0, 0, {0, 0, 0, 1, 0, 0, 0, 1, 0});
         // groups(): the action, the group, then what the action reads.
         s.op(Op::kGroups).u8(0).held().u8(1);                     // display group (group 0)
         s.op(Op::kGroups).u8(0).held().u8(2);                     // ordered display group (group 1)
@@ -724,16 +748,9 @@ std::vector<std::pair<std::string, Seed>> seeds()
     // and SetData with a NaN; three inputs, as each may draw 12 times.
     auto newQuadrics = [](Seed& s) -> Seed& {
         // quadrics(): type, action, non-null byte; New and SetData read the
-        // box's face byte, the patches, the caps, the sets byte.
-        for (std::uint8_t type = 0; type < 7; ++type) {
-            s.op(Op::kQuadrics).u8(type).u8(0).u8(1);
-            if (type == 0)
-                s.u8(1).u8(0).u8(0).u8(0).u8(0).u8(0).u8(0);
-            s.u8(0);
-            if (type == 1 || type == 2 || type == 5 || type == 6)
-                s.u8(7);
-            s.u8(0);
-        }
+        // described data.
+        for (std::uint8_t type = 0; type < 7; ++type)
+            s.op(Op::kQuadrics).u8(type).u8(0).u8(1).quadricData(type);
         return s;
     };
     {
@@ -772,10 +789,28 @@ std::vector<std::pair<std::string, Seed>> seeds()
         field(6, 3, 0).value(0).value(0).value(0).special(0).u8(0).u8(0).smallIndex(0);
         field(6, 3, 0).value(0).value(0).value(0).value(0.25f).u8(0).u8(0).smallIndex(0);
         field(3, 1, 2).value(0).value(0).value(3).value(1).u8(0).u8(0).smallIndex(0);
-        // Cone SetData with a NaN vMax (float 15), then a partial torus.
-        s.op(Op::kQuadrics).u8(1).u8(1).u8(1).u8(1).u8(15).special(0).u8(7).u8(0).held();
-        s.op(Op::kQuadrics).u8(6).u8(1).u8(1).u8(1).u8(14).value(0.75f).u8(7).u8(0).held();
+        // Cone SetData with a NaN vMax (float 15), then a partial torus (uMax).
+        s.op(Op::kQuadrics).u8(1).u8(1).u8(1).quadricData(1, {{15, kNaN}}).held();
+        s.op(Op::kQuadrics).u8(6).u8(1).u8(1).quadricData(6, {{14, 0.75f}}).held();
         s.scene(2).startRendering().submitHeld(kTorus).submitHeld(kCone).endRendering();
+    }
+    // Described data at its edges (FuzzInput.h): counts past
+    // kQ3GeometryMaxArrayCount with a one-element decoy array or NULL, a
+    // NULL vertex array, a polyline's segment sets, a stray vertex set (all
+    // refused but the segment sets); a degenerate torus (ratio 0) kept,
+    // drawn and decomposed to nothing.
+    {
+        Seed& s = add("described-data-edges");
+        s.op(Op::kSurfaces).u8(1).u8(0).u8(1).null().u8(232).noSet().u8(0);        // limit + 1, decoy
+        s.op(Op::kSurfaces).u8(1).u8(0).u8(1).null().u8(244).noSet().u8(1);        // ULONG_MAX, NULL
+        s.op(Op::kNewOtherGeometry).u8(2).null().count(3).noSet().noArray().noArray(); // NULL vertices
+        s.op(Op::kNewOtherGeometry).u8(2).null().count(2).noSet().array().vertex(0, 0, 0).vertex(1, 0, 0);
+        s.array().noSet();                                                          // one segment set
+        s.op(Op::kSurfaces).u8(0).u8(0).u8(1).null().vertex(0, 0, 0).xyz(1, 0, 0).u8(240).stray();
+        s.vertex(0, 1, 0).noSet();                                                  // a stray set
+        s.op(Op::kQuadrics).u8(6).u8(0).u8(1).quadricData(6, {{12, 0.0f}});        // torus, ratio 0
+        s.scene(2).startRendering().submitHeld(kTorus).endRendering();
+        s.startRendering().op(Op::kQuadrics).u8(6).u8(5).u8(1).held().held().endRendering();
     }
     // A mesh: a square with a square hole (FaceToContour) and a triangle on
     // its right edge, walked, checked against its counts, drawn, bounded,
@@ -1138,8 +1173,7 @@ std::vector<std::pair<std::string, Seed>> seeds()
     {
         Seed& s = add("picking");
         s.scene();
-        s.op(Op::kNewOtherGeometry).u8(0).u8(0).value(0).value(0).value(0);
-        s.op(Op::kNewOtherGeometry).u8(1).u8(0).value(-1).value(0).value(0).value(1).value(0).value(0);
+        s.newPoint(0, 0, 0).newLine(-1, 0, 0, 1, 0, 0);
         s.op(Op::kPicking).u8(0).u8(1).u8(1).u8(0).u32(0x3FF).u8(0).u8(2);
         s.value(0).value(0).value(5).value(0).value(0).value(-1).value(0.5f).value(0.5f);
         s.op(Op::kPicking).u8(0).u8(1).u8(1).u8(0).u32(0x3FF).u8(0).u8(0).value(32).value(32).value(1000).value(1000);
