@@ -41,6 +41,7 @@
     X(BlendFuncSeparate) \
     X(BlitFramebuffer) \
     X(BufferData) \
+    X(BufferSubData) \
     X(CheckFramebufferStatus) \
     X(Clear) \
     X(ClearColor) \

@@ -33,7 +33,8 @@ namespace q3 {
 namespace {
 
 // The first source strings: the version, then the variant's switches
-// (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY, ONE_SIDED), both before anything else as
+// (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY, ONE_SIDED,
+// OPAQUE, PLAIN_VARYINGS), both before anything else as
 // GLSL requires.
 constexpr const char* kVersion = "#version 120\n";
 // The variant's switches (LitProgram::variant), after the version line.
@@ -50,6 +51,10 @@ std::string switches(int variant)
         text += "#define DIRECTIONAL_ONLY 1\n";
     if ((variant & 16) != 0)
         text += "#define ONE_SIDED 1\n";
+    if ((variant & 64) != 0)
+        text += "#define OPAQUE 1\n";
+    if (LitProgram::usesPlainVaryings(variant))
+        text += "#define PLAIN_VARYINGS 1\n";
     return text;
 }
 
@@ -79,6 +84,17 @@ varying vec3 worldPosition;
 varying vec3 worldNormal;
 #ifdef TEXTURED
 uniform sampler2D surfaceTexture;
+#endif
+#ifdef PLAIN_VARYINGS
+// The ambient and diffuse light (times the diffuse colour, or the whole
+// light untextured) and the specular light, each clamped to 0..1 as OpenGL
+// clamps gl_FrontColor and gl_FrontSecondaryColor; the texture coordinate.
+varying vec3 q3Lit;
+varying vec3 q3Specular;
+varying vec2 q3St;
+#define Q3_ST q3St
+#else
+#define Q3_ST gl_TexCoord[0].st
 #endif
 
 // Light i at p: the unit vector l towards it and its attenuation f (with a
@@ -191,7 +207,11 @@ void main()
     // diffuse light (with Od = gl_Color) goes in the primary colour, to be
     // multiplied by the texel; the specular light (shade with Od = 0) in the
     // secondary colour, added after.
+#ifdef PLAIN_VARYINGS
+    q3St = gl_MultiTexCoord0.st;
+#else
     gl_TexCoord[0] = gl_MultiTexCoord0;
+#endif
 #ifdef PER_PIXEL
     gl_FrontColor = gl_Color;
 #ifndef ONE_SIDED
@@ -202,8 +222,13 @@ void main()
     vec3 lit;
     vec3 specular;
     shadeTwo(worldPosition, n, gl_Color.rgb, lit, specular);
+#ifdef PLAIN_VARYINGS
+    q3Lit = clamp(lit - specular, 0.0, 1.0);
+    q3Specular = clamp(specular, 0.0, 1.0);
+#else
     gl_FrontColor = vec4(lit - specular, 1.0);
     gl_FrontSecondaryColor = vec4(specular, 1.0);
+#endif
 #ifndef ONE_SIDED
     if (flipBack == 1) {
         vec3 backLit;
@@ -225,7 +250,11 @@ void main()
 #endif
 #else
     vec3 n = normalize(worldNormal);
+#ifdef PLAIN_VARYINGS
+    q3Lit = clamp(shade(worldPosition, n, gl_Color.rgb), 0.0, 1.0);
+#else
     gl_FrontColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+#endif
 #ifndef ONE_SIDED
     gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
 #endif
@@ -239,13 +268,15 @@ constexpr const char* kFragment = R"(
 void main()
 {
 #ifdef TEXTURED
-    vec4 texelColor = texture2D(surfaceTexture, gl_TexCoord[0].st);
+    vec4 texelColor = texture2D(surfaceTexture, Q3_ST);
     vec3 texel = texelColor.rgb;
 #ifdef PER_PIXEL
     vec3 n = normalize(worldNormal);
     if (flipBack == 1 && !gl_FrontFacing)
         n = -n;
     gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
+#elif defined(PLAIN_VARYINGS)
+    gl_FragColor = vec4(q3Lit * texel + q3Specular, 1.0);
 #else
     gl_FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
 #endif
@@ -255,6 +286,8 @@ void main()
     if (flipBack == 1 && !gl_FrontFacing)
         n = -n;
     gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+#elif defined(PLAIN_VARYINGS)
+    gl_FragColor = vec4(q3Lit, 1.0);
 #else
     gl_FragColor = gl_Color;
 #endif

@@ -34,16 +34,32 @@ public:
     /// with GL_VERTEX_PROGRAM_TWO_SIDE off, every face taking the front
     /// colours, which the two-sided program gives back faces anyway when
     /// they are not flipped.
-    static constexpr int kVariants = 32;
+    ///
+    /// Two more switches serve the rasterizer, whose work per pixel grows
+    /// with every value interpolated across a triangle (the built-in colour
+    /// and texture-coordinate varyings have four components each). Flat
+    /// shading (interpolation 0) keeps the built-in colours, which
+    /// glShadeModel makes flat; a one-sided variant lit at the vertices and
+    /// interpolated passes its colours and texture coordinate in varyings of
+    /// three and two components instead (usesPlainVaryings), clamped to 0..1
+    /// as OpenGL clamps the built-in ones, so the pixels are the same. And
+    /// the opaque variant (the opaque primitives: every vertex's opacity 1)
+    /// interpolates no opacity. Together they made the rasterizer threads'
+    /// work that of a program written for the scene (benchmarks/RESULTS.md,
+    /// ModelFrame).
+    static constexpr int kVariants = 128;
     static bool isOneSided(int variant) { return (variant & 16) != 0; }
-    static int variant(bool textured, const SurfaceShading& shading, bool fogged, const LightingSetup& lighting)
+    static bool usesPlainVaryings(int variant) { return (variant & (16 | 32 | 2)) == 16; }
+    static int variant(bool textured, const SurfaceShading& shading, bool fogged, const LightingSetup& lighting,
+                       bool opaque)
     {
         bool directionalOnly = true;
         for (const RenderLight& light : lighting.lights)
             directionalOnly = directionalOnly && (light.kind == RenderLight::Kind::kAmbient ||
                                                   light.kind == RenderLight::Kind::kDirectional);
         return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0) +
-               (directionalOnly ? 8 : 0) + (shading.flipBackFaces ? 0 : 16);
+               (directionalOnly ? 8 : 0) + (shading.flipBackFaces ? 0 : 16) +
+               (shading.interpolation == 0 ? 32 : 0) + (opaque ? 64 : 0);
     }
     /// Compiles and links variant `variant` in the current context; false
     /// (with the log in error) if the driver refuses it.

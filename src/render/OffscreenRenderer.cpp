@@ -377,8 +377,9 @@ private:
     RenderResult drawSplit(const DrawRequest& request, bool textured);
     std::uint32_t translucentState(const DrawRequest& request, bool textured, bool onlyTranslucentTexels);
     // After the batch loop's program choice for a run: the unlit program
-    // for fogged unlit runs, and the fog uniforms of the program in use.
-    bool loadFog(const DrawCommand& head, FogLoad& loaded, RenderResult& result);
+    // for fogged unlit runs, and the fog uniforms of the program in use
+    // (`variant`, the lit variant the loop chose; -1 unlit).
+    bool loadFog(const DrawCommand& head, int variant, FogLoad& loaded, RenderResult& result);
     // Opaque runs of an alpha texture draw only its opaque texels.
     void loadOpaqueAlphaTest(std::uint32_t texture, bool& loaded);
     void drawTranslucent(RenderResult& result);
@@ -507,6 +508,9 @@ private:
     // (benchmarks/RESULTS.md, ModelFrame: most of the main thread's time).
     enum StreamBuffer { kStreamVertices, kStreamPositions, kStreamIndices, kStreamOpacity, kStreamBufferCount };
     GLuint m_streamBuffers[kStreamBufferCount] = {0, 0, 0, 0};
+    // The bytes each stream buffer's store holds (it only grows: see
+    // uploadStream).
+    std::size_t m_streamCapacity[kStreamBufferCount] = {0, 0, 0, 0};
     // Uploads `bytes` into stream buffer `which`, leaving it bound to `target`.
     void uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes);
 };
@@ -532,6 +536,7 @@ struct IdleContext {
     LitProgram litPrograms[LitProgram::kVariants];
     UnlitProgram unlitPrograms[2];
     GLuint streamBuffers[4] = {0, 0, 0, 0};
+    std::size_t streamCapacity[4] = {0, 0, 0, 0};
     GLuint msFramebuffer = 0, msColor = 0, msDepth = 0, copyProgram = 0;
 };
 
@@ -575,6 +580,7 @@ bool OffscreenRenderer::Impl::adoptContext(std::uint32_t width, std::uint32_t he
     m_unlitPrograms[0] = taken->unlitPrograms[0];
     m_unlitPrograms[1] = taken->unlitPrograms[1];
     std::copy(std::begin(taken->streamBuffers), std::end(taken->streamBuffers), std::begin(m_streamBuffers));
+    std::copy(std::begin(taken->streamCapacity), std::end(taken->streamCapacity), std::begin(m_streamCapacity));
     m_msFramebuffer = taken->msFramebuffer;
     m_msColor = taken->msColor;
     m_msDepth = taken->msDepth;
@@ -652,6 +658,7 @@ void OffscreenRenderer::Impl::destroyContext(bool park)
         idle->unlitPrograms[0] = m_unlitPrograms[0];
         idle->unlitPrograms[1] = m_unlitPrograms[1];
         std::copy(std::begin(m_streamBuffers), std::end(m_streamBuffers), std::begin(idle->streamBuffers));
+        std::copy(std::begin(m_streamCapacity), std::end(m_streamCapacity), std::begin(idle->streamCapacity));
         idle->msFramebuffer = m_msFramebuffer;
         idle->msColor = m_msColor;
         idle->msDepth = m_msDepth;
@@ -676,6 +683,7 @@ void OffscreenRenderer::Impl::destroyContext(bool park)
     m_unlitPrograms[0].forget();
     m_unlitPrograms[1].forget();
     std::fill(std::begin(m_streamBuffers), std::end(m_streamBuffers), 0u);
+    std::fill(std::begin(m_streamCapacity), std::end(m_streamCapacity), std::size_t(0));
     // The context's textures went with it.
     m_textureNames.clear();
     m_staleTextureNames.clear();
@@ -1088,7 +1096,10 @@ void OffscreenRenderer::Impl::startFrameInGl()
         glClear(GL_COLOR_BUFFER_BIT);
     }
     // The scissor also keeps wide points near the pane's edge inside it.
-    glEnable(GL_SCISSOR_TEST);
+    if (coversImage)
+        glDisable(GL_SCISSOR_TEST);
+    else
+        glEnable(GL_SCISSOR_TEST);
     if (empty)
         glScissor(0, 0, 0, 0);
     else
@@ -1121,9 +1132,21 @@ void OffscreenRenderer::Impl::uploadStream(StreamBuffer which, GLenum target, co
     if (m_streamBuffers[which] == 0)
         glGenBuffers(1, &m_streamBuffers[which]);
     glBindBuffer(target, m_streamBuffers[which]);
-    // A new store each time (orphaning): the driver need not wait for
-    // draws that still read the previous contents.
-    glBufferData(target, GLsizeiptr(bytes), data, GL_STREAM_DRAW);
+    // The store is kept and overwritten, and made anew only to grow (by
+    // half again, so a frame that grows a little each time does not make
+    // one each frame). A new store every flush (orphaning) made Mesa free
+    // and allocate the batch's size each frame, and the C library gave the
+    // memory back to the kernel and took it again: page faults and page
+    // clearing were a sixth of the main thread's time
+    // (benchmarks/RESULTS.md, ModelFrame). llvmpipe reads the vertices and
+    // indices during the draw call, so nothing waits for the overwrite.
+    std::size_t& capacity = m_streamCapacity[which];
+    if (bytes > capacity) {
+        capacity = std::max(bytes, capacity + capacity / 2);
+        glBufferData(target, GLsizeiptr(capacity), nullptr, GL_STREAM_DRAW);
+    }
+    if (bytes > 0)
+        glBufferSubData(target, 0, GLsizeiptr(bytes), data);
 }
 
 namespace {
@@ -1253,7 +1276,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 const bool texturedProgram = head.texture != kUntextured;
                 const int variant = head.shading == kUnlit ? -1
                                                            : LitProgram::variant(texturedProgram, m_shadings[head.shading],
-                                                                                 head.fog != kNoFog, m_lighting);
+                                                                                 head.fog != kNoFog, m_lighting, true);
                 if (head.shading != loadedSurface || variant != loadedVariant) {
                     if (head.shading == kUnlit) {
                         glUseProgram(0);
@@ -1272,7 +1295,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     loadedVariant = variant;
                     loadedSurface = head.shading;
                 }
-                if (!loadFog(head, fogLoad, result))
+                if (!loadFog(head, variant, fogLoad, result))
                     break;
                 if (end - i == 1) {
                     if (head.indexed)
@@ -1981,7 +2004,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     return draw(rest);
 }
 
-bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, RenderResult& result)
+bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, int variant, FogLoad& loaded, RenderResult& result)
 {
     const bool textured = head.texture != kUntextured;
     if (head.shading == kUnlit) {
@@ -2012,7 +2035,6 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, FogLoad& loaded, 
     }
     // The batch loop has made the lit program current.
     loaded.unlit = -1;
-    const int variant = LitProgram::variant(textured, m_shadings[head.shading], head.fog != kNoFog, m_lighting);
     std::uint32_t& set = loaded.fog[variant];
     if (set != head.fog) {
         m_litPrograms[variant].finish().setFog(fogOf(head.fog));
@@ -2202,7 +2224,7 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
             program.finish().setFog(fogOf(state.fog));
         } else {
             const SurfaceShading& shading = m_translucentShadings[state.shading];
-            const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog, m_lighting);
+            const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog, m_lighting, false);
             LitProgram* program = litProgram(variant, result);
             if (program == nullptr)
                 break;

@@ -26,7 +26,9 @@ varying float q3FogW;
 
 void q3FinishVertex()
 {
+#ifndef OPAQUE
     q3VertexOpacity = q3Opacity;
+#endif
     q3FogDepth = dot(gl_Position, q3FogDepthPlane);
     q3FogW = dot(gl_Position, q3FogWPlane);
 }
@@ -44,7 +46,11 @@ varying float q3FogW;
 
 vec4 q3FinishFragment(vec4 color, float texelAlpha)
 {
+#ifdef OPAQUE
+    float a = texelAlpha; // every vertex's opacity is 1
+#else
     float a = q3VertexOpacity * texelAlpha;
+#endif
     color.a = a;
 #ifdef FOG
     if (q3FogMode != 0) {
