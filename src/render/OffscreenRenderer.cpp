@@ -394,7 +394,7 @@ private:
     std::uint32_t m_currentFog = kNoFog;
     OpacitySetup m_opacity;
     std::vector<Vertex> m_translucentVertices;
-    std::vector<float> m_translucentOpacity;
+    std::vector<float> m_translucentOpacity; // r g b and their mean per vertex
     std::vector<TranslucentState> m_translucentStates;
     std::vector<SurfaceShading> m_translucentShadings;
     std::vector<TranslucentTriangle> m_translucentTriangles;
@@ -857,7 +857,8 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
                 return invalid("index " + std::to_string(r.indices[i]) + " is not below the vertex count " +
                                std::to_string(r.vertexCount));
     if (r.primitive == Primitive::kTriangles && !r.opaquePart &&
-        (m_opacity.alpha != nullptr || m_opacity.uniform < 1.0f ||
+        (m_opacity.rgb != nullptr || m_opacity.uniform.r < 1.0f || m_opacity.uniform.g < 1.0f ||
+         m_opacity.uniform.b < 1.0f ||
          (textured && m_textures[m_currentTexture].hasAlpha)))
         return drawSplit(r, textured);
 
@@ -1861,7 +1862,8 @@ RenderResult OffscreenRenderer::Impl::setOpacity(const OpacitySetup& opacity)
 {
     if (!m_inFrame)
         return RenderResult::failure(RenderStatus::kWrongState, "setOpacity called outside a frame");
-    if (!(opacity.uniform >= 0.0f && opacity.uniform <= 1.0f))
+    const RgbColor& u = opacity.uniform;
+    if (!(u.r >= 0.0f && u.r <= 1.0f && u.g >= 0.0f && u.g <= 1.0f && u.b >= 0.0f && u.b <= 1.0f))
         return invalid("opacity must lie in 0..1");
     m_opacity = opacity;
     return RenderResult::success();
@@ -1905,14 +1907,34 @@ std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bo
     return std::uint32_t(m_translucentStates.size() - 1);
 }
 
+namespace {
+
+// A vertex's opacity as the translucent programs take it (SurfaceFinish.h):
+// r, g, b clamped to 0..1, and their mean, the opacity of the alpha channel.
+// A grey one has the mean in all four, so that grey transparency blends with
+// the very value it did when Q3 drew every pixel with the mean alone.
+std::array<float, 4> opacityOf(const float* rgb)
+{
+    std::array<float, 4> o;
+    for (int c = 0; c < 3; ++c)
+        o[c] = std::clamp(rgb[c], 0.0f, 1.0f);
+    o[3] = (o[0] + o[1] + o[2]) / 3.0f;
+    if (o[0] == o[1] && o[1] == o[2])
+        o[0] = o[1] = o[2] = o[3];
+    return o;
+}
+
+} // namespace
+
 RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textured)
 {
-    const float* alpha = m_opacity.alpha;
-    if (alpha != nullptr && m_opacity.count != r.vertexCount)
+    const float* rgb = m_opacity.rgb;
+    if (rgb != nullptr && m_opacity.count != r.vertexCount)
         return invalid("the opacity array has " + std::to_string(m_opacity.count) + " values for " +
                        std::to_string(r.vertexCount) + " vertices");
-    if (alpha != nullptr && !allFinite(alpha, r.vertexCount))
+    if (rgb != nullptr && !allFinite(rgb, 3 * r.vertexCount))
         return invalid("a vertex opacity is NaN or infinite");
+    const float uniform[3] = {m_opacity.uniform.r, m_opacity.uniform.g, m_opacity.uniform.b};
     const bool alphaTexture = textured && m_textures[m_currentTexture].hasAlpha;
     const std::size_t count = r.indexed ? r.indexCount : r.vertexCount;
     const std::array<float, 16>& m = m_matrices[m_currentMatrix];
@@ -1924,12 +1946,12 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     m_splitVertices.assign(r.vertexCount, kNoState);
     for (std::size_t t = 0; t + 2 < count; t += 3) {
         std::uint32_t v[3];
-        float a[3];
+        std::array<float, 4> a[3];
         bool allOpaque = true;
         for (int k = 0; k < 3; ++k) {
             v[k] = r.indexed ? r.indices[t + k] : std::uint32_t(t + k);
-            a[k] = std::clamp(alpha != nullptr ? alpha[v[k]] : m_opacity.uniform, 0.0f, 1.0f);
-            allOpaque = allOpaque && a[k] >= 1.0f;
+            a[k] = opacityOf(rgb != nullptr ? rgb + 3 * std::size_t(v[k]) : uniform);
+            allOpaque = allOpaque && a[k][3] >= 1.0f;
         }
         if (allOpaque)
             opaque.insert(opaque.end(), v, v + 3);
@@ -1965,7 +1987,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
             out.s = textured ? r.st[2 * std::size_t(v[k])] : 0.0f;
             out.t = textured ? r.st[2 * std::size_t(v[k]) + 1] : 0.0f;
             m_translucentVertices.push_back(out);
-            m_translucentOpacity.push_back(a[k]);
+            m_translucentOpacity.insert(m_translucentOpacity.end(), a[k].begin(), a[k].end());
         }
         // A centre behind the eye sorts farthest.
         triangle.depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
@@ -2153,11 +2175,15 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     uploadStream(kStreamOpacity, GL_ARRAY_BUFFER, m_translucentOpacity.data(),
                  m_translucentOpacity.size() * sizeof(float));
     glEnableVertexAttribArray(kOpacityAttribute);
-    glVertexAttribPointer(kOpacityAttribute, 1, GL_FLOAT, GL_FALSE, 0, bufferOffset(0));
+    glVertexAttribPointer(kOpacityAttribute, 4, GL_FLOAT, GL_FALSE, 0, bufferOffset(0));
     uploadStream(kStreamIndices, GL_ELEMENT_ARRAY_BUFFER, m_translucentIndices.data(),
                  m_translucentIndices.size() * sizeof(GLuint));
+    // Each colour channel by its own opacity, the programs' second output
+    // (dual-source blending, SurfaceFinish.h); alpha by the mean, output 0's
+    // alpha. The factors are complementary, so llvmpipe blends colour as it
+    // did with (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) for the same values.
     glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glBlendFuncSeparate(GL_SRC1_COLOR, GL_ONE_MINUS_SRC1_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
 
     bool lightsLoaded[LitProgram::kVariants] = {};

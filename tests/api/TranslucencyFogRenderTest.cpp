@@ -7,11 +7,10 @@
 // Translucency (the QD3D Book, "Transparency": a transparency colour of
 // (1, 1, 1) is opaque, (0, 0, 0) wholly transparent; QuickDraw 3D multiplies
 // it by the object's colour). A translucent surface of colour C and
-// transparency colour T over what lies behind it, B, gives
-//     a = (T.r + T.g + T.b) / 3,   pixel = a C + (1 - a) B
-// (one opacity per pixel, the mean of T, as Quesa's interactive renderer
-// takes it; for a grey T this is the book's per-channel product exactly),
-// with a times the texel's alpha under a texture. Translucent surfaces are
+// transparency colour T over what lies behind it, B, gives, channel by
+// channel,
+//     pixel.c = T.c C.c + (1 - T.c) B.c      for c = r, g, b
+// with T times the texel's alpha under a texture. Translucent surfaces are
 // drawn after the opaque ones, farthest first.
 //
 // Fog (QD3DStyle.h): at eye distance z (along the viewing direction), the
@@ -51,6 +50,13 @@ struct Color {
 Color mix(const Color& front, const Color& behind, double a)
 {
     return {a * front.r + (1 - a) * behind.r, a * front.g + (1 - a) * behind.g, a * front.b + (1 - a) * behind.b};
+}
+
+// The book's rule channel by channel: transparency colour t.
+Color mix(const Color& front, const Color& behind, const Color& t)
+{
+    return {t.r * front.r + (1 - t.r) * behind.r, t.g * front.g + (1 - t.g) * behind.g,
+            t.b * front.b + (1 - t.b) * behind.b};
 }
 
 int toByte(double v)
@@ -151,7 +157,7 @@ const Color kFront{0.9, 0.3, 0.1};
 TEST_F(TranslucencyFogRenderTest, TranslucentSurfaceBlendsOverTheOpaqueOneWhateverTheOrder)
 {
     const Color grey{0.25, 0.25, 0.25};
-    const Color tinted{0.2, 0.5, 0.8}; // mean 0.5
+    const Color tinted{0.2, 0.5, 0.8};
     TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
     TQ3GeometryObject left = rect(-3, 0, -3, 3, 1, 1, colorSet(kFront, &grey));
     TQ3GeometryObject right = rect(0, 3, -3, 3, 1, 1, colorSet(kFront, &tinted));
@@ -167,9 +173,73 @@ TEST_F(TranslucencyFogRenderTest, TranslucentSurfaceBlendsOverTheOpaqueOneWhatev
         const std::string order = translucentFirst ? "translucent first" : "opaque first";
         expectColumns(image, 0, kSize / 2, [&](unsigned long) { return mix(kFront, kBehind, 0.25); },
                       "grey transparency, " + order);
-        expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return mix(kFront, kBehind, 0.5); },
+        expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return mix(kFront, kBehind, tinted); },
                       "tinted transparency, " + order);
     }
+}
+
+TEST_F(TranslucencyFogRenderTest, TintedTransparencyBlendsEachChannelByItsOwnOpacity)
+{
+    // Green passing only green, and an orange tint, unlit and lit (Lambert
+    // under an ambient light of 1, so the lit colour is the diffuse one).
+    const Color green{0, 1, 0};
+    const Color orange{1, 0.5, 0.25};
+    const Color front{0.8, 0.4, 0.6};
+    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
+    TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
+    TQ3GeometryObject left = rect(-3, 0, -3, 3, 1, 1, colorSet(front, &green));
+    TQ3GeometryObject right = rect(0, 3, -3, 3, 1, 1, colorSet(front, &orange));
+    for (bool lit : {false, true}) {
+        const Pixmap image = render(
+            [&](TQ3ViewObject v) {
+                if (lit)
+                    Q3Shader_Submit(lambert, v);
+                Q3Geometry_Submit(left, v);
+                Q3Geometry_Submit(right, v);
+                Q3Geometry_Submit(back, v);
+            },
+            nullptr, lit);
+        const std::string how = lit ? "lit" : "unlit";
+        // (0, 1, 0): red and blue are what lies behind, green the front's.
+        expectColumns(image, 0, kSize / 2, [&](unsigned long) { return Color{kBehind.r, front.g, kBehind.b}; },
+                      "green tint, " + how);
+        expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return mix(front, kBehind, orange); },
+                      "orange tint, " + how);
+    }
+}
+
+TEST_F(TranslucencyFogRenderTest, PerVertexTintsAreInterpolatedChannelByChannel)
+{
+    // Transparency (1, 0, 0.5) at the left edge (x = -2), (0, 1, 0.5) at the
+    // right (x = 2): across the square each channel's opacity is linear in x.
+    const Color leftT{1, 0, 0.5}, rightT{0, 1, 0.5};
+    const Color front{0.9, 0.8, 0.1};
+    TQ3AttributeSet leftSet = own(Q3AttributeSet_New());
+    TQ3AttributeSet rightSet = own(Q3AttributeSet_New());
+    const TQ3ColorRGB l{float(leftT.r), float(leftT.g), float(leftT.b)};
+    const TQ3ColorRGB r{float(rightT.r), float(rightT.g), float(rightT.b)};
+    ASSERT_EQ(Q3AttributeSet_Add(leftSet, kQ3AttributeTypeTransparencyColor, &l), kQ3Success);
+    ASSERT_EQ(Q3AttributeSet_Add(rightSet, kQ3AttributeTypeTransparencyColor, &r), kQ3Success);
+    std::vector<TQ3Vertex3D> v{{{-2.0f, -2.0f, 1.0f}, leftSet},
+                               {{2.0f, -2.0f, 1.0f}, rightSet},
+                               {{2.0f, 2.0f, 1.0f}, rightSet},
+                               {{-2.0f, 2.0f, 1.0f}, leftSet}};
+    const TQ3PolygonData data{4, v.data(), colorSet(front)};
+    TQ3GeometryObject square = own(Q3Polygon_New(&data));
+    TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
+    const Pixmap image = render([&](TQ3ViewObject view) {
+        Q3Geometry_Submit(back, view);
+        Q3Geometry_Submit(square, view);
+    });
+    expectColumns(
+        image, 0, kSize,
+        [&](unsigned long i) {
+            const double f = (worldX(i) + kHalf) / (2 * kHalf);
+            const Color t{leftT.r + f * (rightT.r - leftT.r), leftT.g + f * (rightT.g - leftT.g),
+                          leftT.b + f * (rightT.b - leftT.b)};
+            return mix(front, kBehind, t);
+        },
+        "interpolated tint");
 }
 
 TEST_F(TranslucencyFogRenderTest, TranslucentSurfacesAreBlendedFarthestFirst)
