@@ -178,13 +178,10 @@ struct FaceOptions {
 /// (the filled mode). An anti-aliased primitive is rasterized at
 /// kAntiAliasSamples sample points in every pixel, each covered sample
 /// taking its colour and depth, and the pixel is the mean of its samples
-/// (OpenGL multisampling, resolved into the image at endFrame). The batch
-/// (the draws since the last flush) that holds the frame's first such draw,
-/// and every later one, is multisampled whole, anti-aliased draws or not:
-/// llvmpipe keeps a single-sampled primitive's depth in one sample only, so
-/// it would not hide what is drawn behind it later. What earlier batches
-/// drew keeps its pixels. In a frame that flushes only at endFrame (a
-/// typical one), any anti-aliased draw smooths everything drawn.
+/// (OpenGL multisampling). Only those draws are: the others give exactly
+/// the pixels they give in a frame without anti-aliasing, before and after
+/// the anti-aliased ones, and are hidden by them where these are nearer
+/// (a pixel's depth after an anti-aliased draw is one of its samples').
 struct AntiAliasOptions {
     bool lines = false;
     bool triangles = false;
@@ -378,11 +375,8 @@ public:
     /// How the following triangles are rasterized (kWrongState outside a
     /// frame).
     virtual RenderResult setFaceOptions(const FaceOptions& faces) = 0;
-    /// Which of the following draws are anti-aliased (none at beginFrame).
-    /// A frame that anti-aliases anything is drawn multisampled from the
-    /// first batch holding such a draw to its end (what an earlier batch drew
-    /// is kept, every sample of a pixel alike). Errors: kWrongState outside
-    /// a frame.
+    /// Which of the following draws are anti-aliased (none at beginFrame;
+    /// AntiAliasOptions). Errors: kWrongState outside a frame.
     virtual RenderResult setAntiAlias(const AntiAliasOptions& options) = 0;
     /// Shading's "no texture" (kept here for the backend's own calls).
     static constexpr std::uint32_t kNoTexture = q3::kNoTexture;

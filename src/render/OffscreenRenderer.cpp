@@ -327,11 +327,15 @@ private:
     // Drops the frame's textures (their OpenGL names are deleted by the next
     // flush, when the context is current).
     void forgetTextures();
-    // Anti-aliasing (see setAntiAlias). Before a flush draws: makes the
-    // frame's multisample framebuffer the one drawn into once the batch
-    // holds an anti-aliased command, copying what the image holds into it
-    // the first time; false with `error` set when OpenGL cannot make it.
+    // Anti-aliasing (see setAntiAlias). Before a flush draws: binds the
+    // multisample framebuffer again if the frame was left in it.
     bool prepareMultisample(std::string& error);
+    // Before a run of commands: draws into the multisample framebuffer
+    // (`on`, what the image holds copied into it) or back into the image
+    // (the samples resolved into it, colour and depth); false with `error`
+    // set when OpenGL cannot make the framebuffer. The GL state of the batch
+    // loop is kept, except the program in use and texture unit 0's binding.
+    bool useMultisample(bool on, std::string& error);
     // At endFrame: resolves the multisample framebuffer into the image.
     void resolveMultisample();
     // Forgets the multisample objects (gone with the context).
@@ -357,6 +361,7 @@ private:
         FaceOptions faces;
         bool smooth;
         bool onlyTranslucentTexels; // alpha-tested: the texels below 1
+        bool multisample;           // anti-aliased (AntiAliasOptions::triangles)
     };
     struct TranslucentTriangle {
         double depth; // of its centre in clip space (z / w), larger is farther
@@ -1192,6 +1197,17 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 std::size_t end = i + 1;
                 while (end < commandCount && m_commands[end].drawsLike(head))
                     ++end;
+                if (head.multisample != m_multisampling) {
+                    std::string error;
+                    if (!useMultisample(head.multisample, error)) {
+                        result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+                        break;
+                    }
+                    // The switch used a program of its own and texture unit 0.
+                    loadedVariant = -2;
+                    loadedTexture = kUntextured - 1;
+                    fogLoad.unlit = -1;
+                }
                 if (int(head.plain) != loadedArrays) {
                     if (head.plain) {
                         glDisableClientState(GL_COLOR_ARRAY);
@@ -1707,28 +1723,48 @@ GLuint compileCopyProgram(std::string& error)
 
 } // namespace
 
-// The frame switches to multisampling at the first flush that draws an
-// anti-aliased command, and stays there to its end. Up to then it was drawn
-// into the window-system framebuffer (at least cleared), so that image,
-// colour and depth, is copied into every sample of the multisample one; a
-// frame without anti-aliasing never leaves the window-system framebuffer and
-// draws exactly as before. From the switch on every primitive is
-// multisampled, anti-aliased or not: with GL_MULTISAMPLE off, llvmpipe (Mesa
-// 22.3, measured) writes a fragment's colour to all of a pixel's samples but
-// its depth to one only, so a primitive drawn so would not hide what is
-// drawn behind it later.
-bool OffscreenRenderer::Impl::prepareMultisample(std::string& error)
+// Only the commands drawn under an anti-alias style are multisampled; the
+// image (the window-system framebuffer) holds the frame everywhere else.
+// A run of anti-aliased commands is drawn into the multisample framebuffer,
+// into which the image, colour and depth, is first copied (every sample of
+// a pixel alike); when a command that is not anti-aliased follows, the
+// samples are resolved back into the image: colour as the mean of a
+// pixel's samples, depth as one sample's (glBlitFramebuffer's rule for
+// depth), so that later primitives are hidden by the smoothed ones. The
+// aliased commands are thus drawn exactly as in a frame without
+// anti-aliasing. (They cannot be drawn into the multisample framebuffer with
+// GL_MULTISAMPLE off: llvmpipe, Mesa 22.3, measured, then writes a
+// fragment's colour to all of a pixel's samples but its depth to one only,
+// so such a primitive would not hide what is drawn behind it later.)
+bool OffscreenRenderer::Impl::prepareMultisample(std::string&)
 {
     if (m_multisampling) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
         glEnable(GL_MULTISAMPLE);
+    }
+    return true;
+}
+
+bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
+{
+    if (on == m_multisampling)
+        return true;
+    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+    if (!on) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_msFramebuffer);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glDisable(GL_SCISSOR_TEST);
+        glBlitFramebuffer(0, 0, GLint(m_width), GLint(m_height), 0, 0, GLint(m_width), GLint(m_height),
+                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitFramebuffer(0, 0, GLint(m_width), GLint(m_height), 0, 0, GLint(m_width), GLint(m_height),
+                          GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (scissor)
+            glEnable(GL_SCISSOR_TEST);
+        glDisable(GL_MULTISAMPLE);
+        m_multisampling = false;
         return true;
     }
-    bool needed = false;
-    for (const DrawCommand& command : m_commands)
-        needed = needed || command.multisample;
-    if (!needed)
-        return true;
     // Made once per context, which has one size.
     if (m_msFramebuffer == 0) {
         glGenFramebuffers(1, &m_msFramebuffer);
@@ -1771,13 +1807,23 @@ bool OffscreenRenderer::Impl::prepareMultisample(std::string& error)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, GLsizei(m_width), GLsizei(m_height), 0);
 
-    // Drawn over the whole multisample image, every sample written.
+    // Drawn over the whole multisample image, every sample written, with
+    // whatever the caller's run had set that would drop or blend a
+    // fragment of the copy put aside.
     GLint viewport[4];
     glGetIntegerv(GL_VIEWPORT, viewport);
-    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
     const GLboolean depthTest = glIsEnabled(GL_DEPTH_TEST);
+    const GLboolean alphaTest = glIsEnabled(GL_ALPHA_TEST);
+    const GLboolean blend = glIsEnabled(GL_BLEND);
+    const GLboolean cull = glIsEnabled(GL_CULL_FACE);
+    GLint depthMask = GL_TRUE;
+    glGetIntegerv(GL_DEPTH_WRITEMASK, &depthMask);
     glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
     glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDepthMask(GL_TRUE);
     glEnable(GL_MULTISAMPLE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
@@ -1795,6 +1841,13 @@ bool OffscreenRenderer::Impl::prepareMultisample(std::string& error)
         glDisable(GL_DEPTH_TEST);
     if (scissor)
         glEnable(GL_SCISSOR_TEST);
+    if (alphaTest)
+        glEnable(GL_ALPHA_TEST);
+    if (blend)
+        glEnable(GL_BLEND);
+    if (cull)
+        glEnable(GL_CULL_FACE);
+    glDepthMask(depthMask != 0 ? GL_TRUE : GL_FALSE);
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -1903,6 +1956,7 @@ std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bo
     state.faces = m_faces;
     state.smooth = r.smooth;
     state.onlyTranslucentTexels = onlyTranslucentTexels;
+    state.multisample = m_antiAlias.triangles;
     m_translucentStates.push_back(state);
     return std::uint32_t(m_translucentStates.size() - 1);
 }
@@ -2195,6 +2249,13 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
         while (end < count && m_translucentTriangles[end].state == stateIndex)
             ++end;
         const TranslucentState& state = m_translucentStates[stateIndex];
+        if (state.multisample != m_multisampling) {
+            std::string error;
+            if (!useMultisample(state.multisample, error)) {
+                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+                break;
+            }
+        }
         glLoadMatrixf(state.matrix.data());
         glShadeModel(state.smooth ? GL_SMOOTH : GL_FLAT);
         if (state.faces.cullBack)

@@ -202,3 +202,72 @@ TEST_F(AntiAliasRenderTest, AStyleSubmittedAfterOtherDrawingKeepsThatDrawing)
 }
 
 } // namespace
+
+TEST_F(AntiAliasRenderTest, OnlyWhatIsDrawnUnderTheStyleIsSmoothed)
+{
+    // Left of the red quad a blue triangle, right of it a green one, both
+    // with slanted edges, and a yellow quad behind the red one (z -1)
+    // reaching out below and right of it: the blue drawn before the style,
+    // the red under it (filled mode), the yellow and green after a style
+    // that turns it off. Only the red quad's side edges, columns 8 and 40,
+    // may differ from the same frame drawn without any anti-aliasing
+    // (the yellow quad's pixels on column 40 depend on the depth of one of
+    // the pixel's samples); everything else is the very same bytes, and the
+    // red quad still hides the yellow one drawn after it.
+    TQ3GeometryObject quad = redQuad();
+    const auto triangle = [&](TQ3Point3D a, TQ3Point3D b, TQ3Point3D c, float r, float g, float bl) {
+        const TQ3TriangleData data{{{a, nullptr}, {b, nullptr}, {c, nullptr}}, own(colorSet(r, g, bl))};
+        return own(Q3Triangle_New(&data));
+    };
+    TQ3GeometryObject blue = triangle({-0.45f, -0.9f, 0}, {-0.1f, 1.9f, 0}, {-0.45f, 1.9f, 0}, 0, 0, 1);
+    TQ3GeometryObject green = triangle({2.6f, 0.6f, 0}, {3.4f, 0.6f, 0}, {3.4f, 1.9f, 0}, 0, 1, 0);
+    TQ3Vertex3D behind[4] = {{{1.5f, -0.9f, -1.0f}, nullptr},
+                             {{2.6f, -0.9f, -1.0f}, nullptr},
+                             {{2.6f, 0.5f, -1.0f}, nullptr},
+                             {{1.5f, 0.5f, -1.0f}, nullptr}};
+    TQ3PolygonData data{4, behind, own(colorSet(1, 1, 0))};
+    TQ3GeometryObject yellow = own(Q3Polygon_New(&data));
+    const TQ3AntiAliasStyleData on{kQ3On, kQ3AntiAliasModeMaskFilled, 1.0f};
+    const TQ3AntiAliasStyleData off{kQ3Off, kQ3AntiAliasModeMaskFilled, 1.0f};
+    const auto draw = [&](bool smooth) {
+        return render([&](TQ3ViewObject v) {
+            Q3Geometry_Submit(blue, v);
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&on, v);
+            Q3Geometry_Submit(quad, v);
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&off, v);
+            Q3Geometry_Submit(yellow, v);
+            Q3Geometry_Submit(green, v);
+        });
+    };
+    const Pixmap aliased = draw(false);
+    const Pixmap mixed = draw(true);
+    // The red quad's edges smoothed: the shares of its samples.
+    for (int row : {8, 20})
+        expectRow(mixed, row, 0.25, 0.75, "the anti-aliased quad");
+    expectRow(aliased, 20, 0.0, 1.0, "the same quad aliased");
+    int differing = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const Rgba a = aliased.at(x, y), m = mixed.at(x, y);
+            const bool same = a.r == m.r && a.g == m.g && a.b == m.b && a.a == m.a;
+            if ((x == 8 || x == 40) && y >= 8 && y < 40)
+                continue;
+            differing += same ? 0 : 1;
+            EXPECT_TRUE(same) << "pixel (" << x << ", " << y << ") differs from the aliased frame";
+            if (differing > 5)
+                FAIL() << "more differing pixels";
+        }
+    // The triangles are drawn (their slanted edges, aliased, are among the
+    // pixels compared above).
+    EXPECT_EQ(mixed.at(2, 2).b, 255);
+    EXPECT_EQ(mixed.at(60, 12).g, 255);
+    // The yellow quad: hidden by the red one, seen right of it.
+    EXPECT_EQ(mixed.at(30, 36).r, 255);
+    EXPECT_EQ(mixed.at(30, 36).g, 0);
+    EXPECT_EQ(mixed.at(45, 36).r, 255);
+    EXPECT_EQ(mixed.at(45, 36).g, 255);
+    // The same pixels every time.
+    EXPECT_EQ(mixed.bytes(), draw(true).bytes());
+}
