@@ -271,3 +271,81 @@ TEST_F(AntiAliasRenderTest, OnlyWhatIsDrawnUnderTheStyleIsSmoothed)
     // The same pixels every time.
     EXPECT_EQ(mixed.bytes(), draw(true).bytes());
 }
+
+TEST_F(AntiAliasRenderTest, LinesAndTranslucentTrianglesKeepTheMarkTheyWereDrawnUnder)
+{
+    // A line under the edges mode, then, under a kQ3Off style, another line
+    // and a half-transparent triangle (translucent triangles are drawn at
+    // the end of the frame, after the style is long gone); then a
+    // half-transparent quad under the filled mode. Only the first line and
+    // the translucent quad's side edges are smoothed: every other pixel is
+    // that of the frame drawn without the style.
+    const auto lineOf = [&](TQ3Point3D a, TQ3Point3D b) {
+        TQ3LineData data{{{a, nullptr}, {b, nullptr}}, own(colorSet(1, 1, 1))};
+        return own(Q3Line_New(&data));
+    };
+    TQ3GeometryObject smoothLine = lineOf({-0.4f, 1.8f, 0}, {3.4f, 1.65f, 0});
+    TQ3GeometryObject plainLine = lineOf({-0.4f, -0.6f, 0}, {3.4f, -0.85f, 0});
+    TQ3AttributeSet half = own(colorSet(0, 0, 1));
+    const TQ3ColorRGB halfT{0.5f, 0.5f, 0.5f};
+    ASSERT_EQ(Q3AttributeSet_Add(half, kQ3AttributeTypeTransparencyColor, &halfT), kQ3Success);
+    const TQ3TriangleData triangleData{{{{2.3f, -0.4f, 0}, nullptr}, {{3.4f, -0.4f, 0}, nullptr},
+                                        {{3.4f, 1.4f, 0}, nullptr}},
+                                       half};
+    TQ3GeometryObject triangle = own(Q3Triangle_New(&triangleData));
+    TQ3AttributeSet redHalf = own(colorSet(1, 0, 0));
+    ASSERT_EQ(Q3AttributeSet_Add(redHalf, kQ3AttributeTypeTransparencyColor, &halfT), kQ3Success);
+    TQ3Vertex3D corners[4] = {{{kLeft, kBottom, 0}, nullptr},
+                              {{kRight, kBottom, 0}, nullptr},
+                              {{kRight, kTop, 0}, nullptr},
+                              {{kLeft, kTop, 0}, nullptr}};
+    TQ3PolygonData quadData{4, corners, redHalf};
+    TQ3GeometryObject quad = own(Q3Polygon_New(&quadData));
+    const TQ3AntiAliasStyleData edges{kQ3On, kQ3AntiAliasModeMaskEdges, 1.0f};
+    const TQ3AntiAliasStyleData filled{kQ3On, kQ3AntiAliasModeMaskFilled, 1.0f};
+    const TQ3AntiAliasStyleData off{kQ3Off, kQ3AntiAliasModeMaskEdges, 1.0f};
+    const auto draw = [&](bool smooth) {
+        return render([&](TQ3ViewObject v) {
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&edges, v);
+            Q3Geometry_Submit(smoothLine, v);
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&off, v);
+            Q3Geometry_Submit(plainLine, v);
+            Q3Geometry_Submit(triangle, v);
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&filled, v);
+            Q3Geometry_Submit(quad, v);
+        });
+    };
+    const Pixmap aliased = draw(false);
+    const Pixmap mixed = draw(true);
+    // The first line (rows 2 to 6) has shades between white and black; the
+    // second one none.
+    int shadedFirst = 0, shadedSecond = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const Rgba p = mixed.at(x, y);
+            const bool shaded = p.r == p.g && p.g == p.b && p.r > 0 && p.r < 255;
+            (y < 8 ? shadedFirst : shadedSecond) += shaded ? 1 : 0;
+        }
+    EXPECT_GT(shadedFirst, 20);
+    EXPECT_EQ(shadedSecond, 0);
+    // The translucent quad's side columns: half red over black, by its
+    // samples' shares (a quarter and three quarters).
+    EXPECT_NEAR(mixed.at(8, 20).r, 0.25 * 127.5, 1.5);
+    EXPECT_NEAR(mixed.at(40, 20).r, 0.75 * 127.5, 1.5);
+    int differing = 0;
+    for (int y = 8; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            if ((x == 8 || x == 40) && y < 40)
+                continue;
+            const Rgba a = aliased.at(x, y), m = mixed.at(x, y);
+            const bool same = a.r == m.r && a.g == m.g && a.b == m.b && a.a == m.a;
+            differing += same ? 0 : 1;
+            EXPECT_TRUE(same) << "pixel (" << x << ", " << y << ") differs from the aliased frame";
+            if (differing > 5)
+                FAIL() << "more differing pixels";
+        }
+    EXPECT_EQ(mixed.bytes(), draw(true).bytes());
+}
