@@ -386,6 +386,56 @@ TEST_F(TranslucencyFogRenderTest, TextureAlphaCutsOutAndOpaqueTexelsHideWhatIsBe
     quadrant(kSize / 2, kSize / 2, blue, "opaque texel hides what is behind");
 }
 
+TEST_F(TranslucencyFogRenderTest, TintTimesTexelAlphaChannelByChannel)
+{
+    // The 2 x 2 ARGB32 texture of the test above (opaque red, alpha 0,
+    // alpha 128 green, opaque blue) on a square whose transparency colour
+    // is (0, 1, 0.5): each channel's opacity is that channel of T times the
+    // texel's alpha. The grey rectangle behind is drawn after it.
+    std::vector<unsigned char> texels{255, 255, 0, 0, 0, 255, 255, 255, 128, 0, 255, 0, 255, 0, 0, 255};
+    TQ3StorageObject storage = own(Q3MemoryStorage_New(texels.data(), static_cast<unsigned long>(texels.size())));
+    const TQ3StoragePixmap pixmap{storage, 2, 2, 8, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
+    TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
+    const float h = 2.0f;
+    TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    std::vector<TQ3Vertex3D> v(4);
+    const TQ3Point3D corners[4] = {{-h, -h, 1}, {h, -h, 1}, {h, h, 1}, {-h, h, 1}};
+    for (int k = 0; k < 4; ++k) {
+        TQ3AttributeSet set = own(Q3AttributeSet_New());
+        EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]), kQ3Success);
+        v[k] = TQ3Vertex3D{corners[k], set};
+    }
+    const Color tint{0, 1, 0.5};
+    const TQ3PolygonData data{4, v.data(), colorSet(Color{1, 1, 1}, &tint)};
+    TQ3GeometryObject textured = own(Q3Polygon_New(&data));
+    const Color middle{0.3, 0.3, 0.3};
+    TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle));
+    const Pixmap image = render([&](TQ3ViewObject v) {
+        Q3Push_Submit(v);
+        Q3Shader_Submit(shader, v);
+        Q3Geometry_Submit(textured, v);
+        Q3Pop_Submit(v);
+        Q3Geometry_Submit(between, v);
+    });
+    const auto times = [](const Color& t, double a) { return Color{t.r * a, t.g * a, t.b * a}; };
+    const Color red{1, 0, 0}, green{0, 1, 0}, blue{0, 0, 1};
+    const double a = 128.0 / 255.0;
+    const auto quadrant = [&](unsigned long i0, unsigned long j0, const Color& expected, const std::string& what) {
+        int wrong = 0;
+        for (unsigned long j = j0 + 1; j < j0 + kSize / 2 - 1; ++j)
+            for (unsigned long i = i0 + 1; i < i0 + kSize / 2 - 1; ++i) {
+                const Rgba got = image.at(i, j);
+                wrong += std::abs(got.r - toByte(expected.r)) > 1 || std::abs(got.g - toByte(expected.g)) > 1 ||
+                         std::abs(got.b - toByte(expected.b)) > 1;
+            }
+        EXPECT_EQ(wrong, 0) << what;
+    };
+    quadrant(0, 0, mix(red, middle, tint), "opaque red texel");
+    quadrant(kSize / 2, 0, middle, "alpha 0");
+    quadrant(0, kSize / 2, mix(green, middle, times(tint, a)), "alpha 128 green texel");
+    quadrant(kSize / 2, kSize / 2, mix(blue, middle, tint), "opaque blue texel");
+}
+
 TEST_F(TranslucencyFogRenderTest, Argb16AlphaBitCutsOut)
 {
     // Two ARGB16 texels, big-endian: red with the alpha bit, green without.
