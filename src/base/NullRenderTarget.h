@@ -5,6 +5,7 @@
 #include "base/RenderTarget.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace q3 {
@@ -25,6 +26,10 @@ public:
         Shading::Fill fill = Shading::Fill::kFilled;
         bool lit = false;
         bool edgesAlone = false;
+        /// The shading's opacity: its uniform value, and r g b per vertex
+        /// when it had an array (OpacitySetup).
+        RgbColor opacity{1.0f, 1.0f, 1.0f};
+        std::vector<float> opacityRgb;
     };
     /// The draw calls made so far, in order.
     const std::vector<DrawRecord>& draws() const { return m_draws; }
@@ -50,11 +55,16 @@ public:
     }
     RenderResult setMatrix(const float[16]) override { return record("setMatrix"); }
     RenderResult setMatrix(const double[16]) override { return record("setMatrix"); }
-    /// Records "draw" and keeps the mesh's counts and the shading's fill.
+    /// Records "draw" and keeps the mesh's counts, the shading's fill and
+    /// its opacity.
     RenderResult draw(const MeshView& mesh, const Shading& shading) override
     {
-        m_draws.push_back(DrawRecord{mesh.triangleCount, mesh.lineCount, mesh.pointCount, mesh.edgeCount, shading.fill,
-                                     shading.lit, shading.edgesAlone});
+        DrawRecord drawn{mesh.triangleCount, mesh.lineCount, mesh.pointCount, mesh.edgeCount, shading.fill,
+                          shading.lit, shading.edgesAlone};
+        drawn.opacity = shading.opacity.uniform;
+        if (shading.opacity.rgb != nullptr)
+            drawn.opacityRgb.assign(shading.opacity.rgb, shading.opacity.rgb + 3 * shading.opacity.count);
+        m_draws.push_back(std::move(drawn));
         return record("draw");
     }
     RenderResult drawBitmap(const float*, const BitmapImage&, const RgbColor&) override

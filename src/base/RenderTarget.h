@@ -178,13 +178,10 @@ struct FaceOptions {
 /// (the filled mode). An anti-aliased primitive is rasterized at
 /// kAntiAliasSamples sample points in every pixel, each covered sample
 /// taking its colour and depth, and the pixel is the mean of its samples
-/// (OpenGL multisampling, resolved into the image at endFrame). The batch
-/// (the draws since the last flush) that holds the frame's first such draw,
-/// and every later one, is multisampled whole, anti-aliased draws or not:
-/// llvmpipe keeps a single-sampled primitive's depth in one sample only, so
-/// it would not hide what is drawn behind it later. What earlier batches
-/// drew keeps its pixels. In a frame that flushes only at endFrame (a
-/// typical one), any anti-aliased draw smooths everything drawn.
+/// (OpenGL multisampling). Only those draws are: the others give exactly
+/// the pixels they give in a frame without anti-aliasing, before and after
+/// the anti-aliased ones, and are hidden by them where these are nearer
+/// (a pixel's depth after an anti-aliased draw is one of its samples').
 struct AntiAliasOptions {
     bool lines = false;
     bool triangles = false;
@@ -222,24 +219,28 @@ struct FogSetup {
 };
 
 /// The opacity of the vertices of a draw's filled triangles (its Shading;
-/// the backend's setOpacity): `alpha` holds one value per vertex (`count`
-/// of them), or is null, when every vertex has `uniform`. 1 is opaque, 0 invisible; the triangle's pixels are
-/// blended over what is behind them as
-///     result = a * colour + (1 - a) * behind      (alpha: a + (1 - a) * behind)
-/// with a the interpolated opacity times the texel's alpha. Triangles with
-/// a vertex below 1, or textured with a texture that has a texel below 1,
-/// are translucent: they are drawn after every opaque primitive of the
-/// frame, sorted back to front by the depth of their centres (in clip
-/// space under their own matrix), depth-tested but without writing depth.
-/// Where such a texture's texel is opaque (alpha 1) on an opaque triangle,
-/// the pixel is drawn with the opaque primitives and writes depth (an alpha
-/// test), so cut-outs hide what lies behind them exactly. Translucent lit
-/// triangles are lit by the frame's lights as they are at endFrame (the
-/// view sets them once per frame). Lines and points are drawn opaque.
+/// the backend's setOpacity), per colour channel: QuickDraw 3D's
+/// transparency colour T. `rgb` holds r g b per vertex (`count` vertices,
+/// 3 * count floats), or is null, when every vertex has `uniform`. 1 is
+/// opaque, 0 invisible; each channel of the triangle's pixels is blended over
+/// what is behind it as (the QD3D Book's rule)
+///     result.c = t.c * colour.c + (1 - t.c) * behind.c     for c = r, g, b
+///     result.alpha = a + (1 - a) * behind.alpha,  a = (t.r + t.g + t.b) / 3
+/// with t the interpolated opacity times the texel's alpha. Triangles with
+/// a vertex below 1 in some channel, or textured with a texture that has a
+/// texel below 1, are translucent: they are drawn after every opaque
+/// primitive of the frame, sorted back to front by the depth of their
+/// centres (in clip space under their own matrix), depth-tested but without
+/// writing depth. Where such a texture's texel is opaque (alpha 1) on an
+/// opaque triangle, the pixel is drawn with the opaque primitives and writes
+/// depth (an alpha test), so cut-outs hide what lies behind them exactly.
+/// Translucent lit triangles are lit by the frame's lights as they are at
+/// endFrame (the view sets them once per frame). Lines and points are drawn
+/// opaque.
 struct OpacitySetup {
-    const float* alpha = nullptr;
+    const float* rgb = nullptr;
     std::size_t count = 0;
-    float uniform = 1.0f;
+    RgbColor uniform{1.0f, 1.0f, 1.0f};
 };
 
 /// Shading's "no texture".
@@ -284,8 +285,8 @@ struct Shading {
     /// kNoTexture: untextured.
     const float* st = nullptr;
     std::uint32_t texture = kNoTexture;
-    /// The opacity of the filled triangles' vertices (OpacitySetup: `alpha`
-    /// null or one value per vertex of the mesh).
+    /// The opacity of the filled triangles' vertices (OpacitySetup: `rgb`
+    /// null or r g b per vertex of the mesh).
     OpacitySetup opacity;
 };
 
@@ -374,11 +375,8 @@ public:
     /// How the following triangles are rasterized (kWrongState outside a
     /// frame).
     virtual RenderResult setFaceOptions(const FaceOptions& faces) = 0;
-    /// Which of the following draws are anti-aliased (none at beginFrame).
-    /// A frame that anti-aliases anything is drawn multisampled from the
-    /// first batch holding such a draw to its end (what an earlier batch drew
-    /// is kept, every sample of a pixel alike). Errors: kWrongState outside
-    /// a frame.
+    /// Which of the following draws are anti-aliased (none at beginFrame;
+    /// AntiAliasOptions). Errors: kWrongState outside a frame.
     virtual RenderResult setAntiAlias(const AntiAliasOptions& options) = 0;
     /// Shading's "no texture" (kept here for the backend's own calls).
     static constexpr std::uint32_t kNoTexture = q3::kNoTexture;

@@ -35,6 +35,7 @@
     X(Begin) \
     X(BindAttribLocation) \
     X(BindBuffer) \
+    X(BindFragDataLocationIndexed) \
     X(BindFramebuffer) \
     X(BindRenderbuffer) \
     X(BindTexture) \
@@ -118,7 +119,7 @@
     X(UniformMatrix4fv) \
     X(UseProgram) \
     X(Vertex2f) \
-    X(VertexAttrib1f) \
+    X(VertexAttrib4f) \
     X(VertexAttribPointer) \
     X(VertexPointer) \
     X(Viewport)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 
-// Lighting in GLSL 1.20 (the compatibility profile's built-in attributes:
+// Lighting in GLSL 1.30 (the compatibility profile's built-in attributes:
 // gl_Vertex local position, gl_Normal local normal, gl_Color diffuse
 // colour; gl_ModelViewProjectionMatrix local to clip). The equations are
 // the QD3D Book's ("Illumination Models"), written once in shade():
@@ -36,7 +36,7 @@ namespace {
 // (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY, ONE_SIDED,
 // OPAQUE, PLAIN_VARYINGS), both before anything else as
 // GLSL requires.
-constexpr const char* kVersion = "#version 120\n";
+constexpr const char* kVersion = "#version 130\n";
 // The variant's switches (LitProgram::variant), after the version line.
 std::string switches(int variant)
 {
@@ -274,28 +274,28 @@ void main()
     vec3 n = normalize(worldNormal);
     if (flipBack == 1 && !gl_FrontFacing)
         n = -n;
-    gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
+    q3FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
 #elif defined(PLAIN_VARYINGS)
-    gl_FragColor = vec4(q3Lit * texel + q3Specular, 1.0);
+    q3FragColor = vec4(q3Lit * texel + q3Specular, 1.0);
 #else
-    gl_FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
+    q3FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
 #endif
 #else
 #ifdef PER_PIXEL
     vec3 n = normalize(worldNormal);
     if (flipBack == 1 && !gl_FrontFacing)
         n = -n;
-    gl_FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+    q3FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
 #elif defined(PLAIN_VARYINGS)
-    gl_FragColor = vec4(q3Lit, 1.0);
+    q3FragColor = vec4(q3Lit, 1.0);
 #else
-    gl_FragColor = gl_Color;
+    q3FragColor = gl_Color;
 #endif
 #endif
 #ifdef TEXTURED
-    gl_FragColor = q3FinishFragment(gl_FragColor, texelColor.a);
+    q3FragColor = q3FinishFragment(q3FragColor, texelColor.a);
 #else
-    gl_FragColor = q3FinishFragment(gl_FragColor, 1.0);
+    q3FragColor = q3FinishFragment(q3FragColor, 1.0);
 #endif
 }
 )";

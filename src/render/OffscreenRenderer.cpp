@@ -327,11 +327,15 @@ private:
     // Drops the frame's textures (their OpenGL names are deleted by the next
     // flush, when the context is current).
     void forgetTextures();
-    // Anti-aliasing (see setAntiAlias). Before a flush draws: makes the
-    // frame's multisample framebuffer the one drawn into once the batch
-    // holds an anti-aliased command, copying what the image holds into it
-    // the first time; false with `error` set when OpenGL cannot make it.
+    // Anti-aliasing (see setAntiAlias). Before a flush draws: binds the
+    // multisample framebuffer again if the frame was left in it.
     bool prepareMultisample(std::string& error);
+    // Before a run of commands: draws into the multisample framebuffer
+    // (`on`, what the image holds copied into it) or back into the image
+    // (the samples resolved into it, colour and depth); false with `error`
+    // set when OpenGL cannot make the framebuffer. The GL state of the batch
+    // loop is kept, except the program in use and texture unit 0's binding.
+    bool useMultisample(bool on, std::string& error);
     // At endFrame: resolves the multisample framebuffer into the image.
     void resolveMultisample();
     // Forgets the multisample objects (gone with the context).
@@ -357,6 +361,7 @@ private:
         FaceOptions faces;
         bool smooth;
         bool onlyTranslucentTexels; // alpha-tested: the texels below 1
+        bool multisample;           // anti-aliased (AntiAliasOptions::triangles)
     };
     struct TranslucentTriangle {
         double depth; // of its centre in clip space (z / w), larger is farther
@@ -395,7 +400,7 @@ private:
     std::uint32_t m_currentFog = kNoFog;
     OpacitySetup m_opacity;
     std::vector<Vertex> m_translucentVertices;
-    std::vector<float> m_translucentOpacity;
+    std::vector<float> m_translucentOpacity; // r g b and their mean per vertex
     std::vector<TranslucentState> m_translucentStates;
     std::vector<SurfaceShading> m_translucentShadings;
     std::vector<TranslucentTriangle> m_translucentTriangles;
@@ -865,7 +870,8 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
                 return invalid("index " + std::to_string(r.indices[i]) + " is not below the vertex count " +
                                std::to_string(r.vertexCount));
     if (r.primitive == Primitive::kTriangles && !r.opaquePart &&
-        (m_opacity.alpha != nullptr || m_opacity.uniform < 1.0f ||
+        (m_opacity.rgb != nullptr || m_opacity.uniform.r < 1.0f || m_opacity.uniform.g < 1.0f ||
+         m_opacity.uniform.b < 1.0f ||
          (textured && m_textures[m_currentTexture].hasAlpha)))
         return drawSplit(r, textured);
 
@@ -1214,6 +1220,17 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                 std::size_t end = i + 1;
                 while (end < commandCount && m_commands[end].drawsLike(head))
                     ++end;
+                if (head.multisample != m_multisampling) {
+                    std::string error;
+                    if (!useMultisample(head.multisample, error)) {
+                        result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+                        break;
+                    }
+                    // The switch used a program of its own and texture unit 0.
+                    loadedVariant = -2;
+                    loadedTexture = kUntextured - 1;
+                    fogLoad.unlit = -1;
+                }
                 if (int(head.plain) != loadedArrays) {
                     if (head.plain) {
                         glDisableClientState(GL_COLOR_ARRAY);
@@ -1729,28 +1746,48 @@ GLuint compileCopyProgram(std::string& error)
 
 } // namespace
 
-// The frame switches to multisampling at the first flush that draws an
-// anti-aliased command, and stays there to its end. Up to then it was drawn
-// into the window-system framebuffer (at least cleared), so that image,
-// colour and depth, is copied into every sample of the multisample one; a
-// frame without anti-aliasing never leaves the window-system framebuffer and
-// draws exactly as before. From the switch on every primitive is
-// multisampled, anti-aliased or not: with GL_MULTISAMPLE off, llvmpipe (Mesa
-// 22.3, measured) writes a fragment's colour to all of a pixel's samples but
-// its depth to one only, so a primitive drawn so would not hide what is
-// drawn behind it later.
-bool OffscreenRenderer::Impl::prepareMultisample(std::string& error)
+// Only the commands drawn under an anti-alias style are multisampled; the
+// image (the window-system framebuffer) holds the frame everywhere else.
+// A run of anti-aliased commands is drawn into the multisample framebuffer,
+// into which the image, colour and depth, is first copied (every sample of
+// a pixel alike); when a command that is not anti-aliased follows, the
+// samples are resolved back into the image: colour as the mean of a
+// pixel's samples, depth as one sample's (glBlitFramebuffer's rule for
+// depth), so that later primitives are hidden by the smoothed ones. The
+// aliased commands are thus drawn exactly as in a frame without
+// anti-aliasing. (They cannot be drawn into the multisample framebuffer with
+// GL_MULTISAMPLE off: llvmpipe, Mesa 22.3, measured, then writes a
+// fragment's colour to all of a pixel's samples but its depth to one only,
+// so such a primitive would not hide what is drawn behind it later.)
+bool OffscreenRenderer::Impl::prepareMultisample(std::string&)
 {
     if (m_multisampling) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
         glEnable(GL_MULTISAMPLE);
+    }
+    return true;
+}
+
+bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
+{
+    if (on == m_multisampling)
+        return true;
+    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+    if (!on) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_msFramebuffer);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glDisable(GL_SCISSOR_TEST);
+        glBlitFramebuffer(0, 0, GLint(m_width), GLint(m_height), 0, 0, GLint(m_width), GLint(m_height),
+                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitFramebuffer(0, 0, GLint(m_width), GLint(m_height), 0, 0, GLint(m_width), GLint(m_height),
+                          GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (scissor)
+            glEnable(GL_SCISSOR_TEST);
+        glDisable(GL_MULTISAMPLE);
+        m_multisampling = false;
         return true;
     }
-    bool needed = false;
-    for (const DrawCommand& command : m_commands)
-        needed = needed || command.multisample;
-    if (!needed)
-        return true;
     // Made once per context, which has one size.
     if (m_msFramebuffer == 0) {
         glGenFramebuffers(1, &m_msFramebuffer);
@@ -1793,13 +1830,23 @@ bool OffscreenRenderer::Impl::prepareMultisample(std::string& error)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, GLsizei(m_width), GLsizei(m_height), 0);
 
-    // Drawn over the whole multisample image, every sample written.
+    // Drawn over the whole multisample image, every sample written, with
+    // whatever the caller's run had set that would drop or blend a
+    // fragment of the copy put aside.
     GLint viewport[4];
     glGetIntegerv(GL_VIEWPORT, viewport);
-    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
     const GLboolean depthTest = glIsEnabled(GL_DEPTH_TEST);
+    const GLboolean alphaTest = glIsEnabled(GL_ALPHA_TEST);
+    const GLboolean blend = glIsEnabled(GL_BLEND);
+    const GLboolean cull = glIsEnabled(GL_CULL_FACE);
+    GLint depthMask = GL_TRUE;
+    glGetIntegerv(GL_DEPTH_WRITEMASK, &depthMask);
     glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
     glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDepthMask(GL_TRUE);
     glEnable(GL_MULTISAMPLE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
@@ -1817,6 +1864,13 @@ bool OffscreenRenderer::Impl::prepareMultisample(std::string& error)
         glDisable(GL_DEPTH_TEST);
     if (scissor)
         glEnable(GL_SCISSOR_TEST);
+    if (alphaTest)
+        glEnable(GL_ALPHA_TEST);
+    if (blend)
+        glEnable(GL_BLEND);
+    if (cull)
+        glEnable(GL_CULL_FACE);
+    glDepthMask(depthMask != 0 ? GL_TRUE : GL_FALSE);
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -1884,7 +1938,8 @@ RenderResult OffscreenRenderer::Impl::setOpacity(const OpacitySetup& opacity)
 {
     if (!m_inFrame)
         return RenderResult::failure(RenderStatus::kWrongState, "setOpacity called outside a frame");
-    if (!(opacity.uniform >= 0.0f && opacity.uniform <= 1.0f))
+    const RgbColor& u = opacity.uniform;
+    if (!(u.r >= 0.0f && u.r <= 1.0f && u.g >= 0.0f && u.g <= 1.0f && u.b >= 0.0f && u.b <= 1.0f))
         return invalid("opacity must lie in 0..1");
     m_opacity = opacity;
     return RenderResult::success();
@@ -1924,18 +1979,39 @@ std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bo
     state.faces = m_faces;
     state.smooth = r.smooth;
     state.onlyTranslucentTexels = onlyTranslucentTexels;
+    state.multisample = m_antiAlias.triangles;
     m_translucentStates.push_back(state);
     return std::uint32_t(m_translucentStates.size() - 1);
 }
 
+namespace {
+
+// A vertex's opacity as the translucent programs take it (SurfaceFinish.h):
+// r, g, b clamped to 0..1, and their mean, the opacity of the alpha channel.
+// A grey one has the mean in all four, so that grey transparency blends with
+// the very value it did when Q3 drew every pixel with the mean alone.
+std::array<float, 4> opacityOf(const float* rgb)
+{
+    std::array<float, 4> o;
+    for (int c = 0; c < 3; ++c)
+        o[c] = std::clamp(rgb[c], 0.0f, 1.0f);
+    o[3] = (o[0] + o[1] + o[2]) / 3.0f;
+    if (o[0] == o[1] && o[1] == o[2])
+        o[0] = o[1] = o[2] = o[3];
+    return o;
+}
+
+} // namespace
+
 RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textured)
 {
-    const float* alpha = m_opacity.alpha;
-    if (alpha != nullptr && m_opacity.count != r.vertexCount)
+    const float* rgb = m_opacity.rgb;
+    if (rgb != nullptr && m_opacity.count != r.vertexCount)
         return invalid("the opacity array has " + std::to_string(m_opacity.count) + " values for " +
                        std::to_string(r.vertexCount) + " vertices");
-    if (alpha != nullptr && !allFinite(alpha, r.vertexCount))
+    if (rgb != nullptr && !allFinite(rgb, 3 * r.vertexCount))
         return invalid("a vertex opacity is NaN or infinite");
+    const float uniform[3] = {m_opacity.uniform.r, m_opacity.uniform.g, m_opacity.uniform.b};
     const bool alphaTexture = textured && m_textures[m_currentTexture].hasAlpha;
     const std::size_t count = r.indexed ? r.indexCount : r.vertexCount;
     const std::array<float, 16>& m = m_matrices[m_currentMatrix];
@@ -1947,12 +2023,12 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     m_splitVertices.assign(r.vertexCount, kNoState);
     for (std::size_t t = 0; t + 2 < count; t += 3) {
         std::uint32_t v[3];
-        float a[3];
+        std::array<float, 4> a[3];
         bool allOpaque = true;
         for (int k = 0; k < 3; ++k) {
             v[k] = r.indexed ? r.indices[t + k] : std::uint32_t(t + k);
-            a[k] = std::clamp(alpha != nullptr ? alpha[v[k]] : m_opacity.uniform, 0.0f, 1.0f);
-            allOpaque = allOpaque && a[k] >= 1.0f;
+            a[k] = opacityOf(rgb != nullptr ? rgb + 3 * std::size_t(v[k]) : uniform);
+            allOpaque = allOpaque && a[k][3] >= 1.0f;
         }
         if (allOpaque)
             opaque.insert(opaque.end(), v, v + 3);
@@ -1988,7 +2064,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
             out.s = textured ? r.st[2 * std::size_t(v[k])] : 0.0f;
             out.t = textured ? r.st[2 * std::size_t(v[k]) + 1] : 0.0f;
             m_translucentVertices.push_back(out);
-            m_translucentOpacity.push_back(a[k]);
+            m_translucentOpacity.insert(m_translucentOpacity.end(), a[k].begin(), a[k].end());
         }
         // A centre behind the eye sorts farthest.
         triangle.depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
@@ -2175,11 +2251,15 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     uploadStream(kStreamOpacity, GL_ARRAY_BUFFER, m_translucentOpacity.data(),
                  m_translucentOpacity.size() * sizeof(float));
     glEnableVertexAttribArray(kOpacityAttribute);
-    glVertexAttribPointer(kOpacityAttribute, 1, GL_FLOAT, GL_FALSE, 0, bufferOffset(0));
+    glVertexAttribPointer(kOpacityAttribute, 4, GL_FLOAT, GL_FALSE, 0, bufferOffset(0));
     uploadStream(kStreamIndices, GL_ELEMENT_ARRAY_BUFFER, m_translucentIndices.data(),
                  m_translucentIndices.size() * sizeof(GLuint));
+    // Each colour channel by its own opacity, the programs' second output
+    // (dual-source blending, SurfaceFinish.h); alpha by the mean, output 0's
+    // alpha. The factors are complementary, so llvmpipe blends colour as it
+    // did with (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) for the same values.
     glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glBlendFuncSeparate(GL_SRC1_COLOR, GL_ONE_MINUS_SRC1_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
 
     bool lightsLoaded[LitProgram::kVariants] = {};
@@ -2191,6 +2271,13 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
         while (end < count && m_translucentTriangles[end].state == stateIndex)
             ++end;
         const TranslucentState& state = m_translucentStates[stateIndex];
+        if (state.multisample != m_multisampling) {
+            std::string error;
+            if (!useMultisample(state.multisample, error)) {
+                result = RenderResult::failure(RenderStatus::kGraphicsError, error);
+                break;
+            }
+        }
         glLoadMatrixf(state.matrix.data());
         glShadeModel(state.smooth ? GL_SMOOTH : GL_FLAT);
         if (state.faces.cullBack)

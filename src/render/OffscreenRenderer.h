@@ -227,7 +227,7 @@ private:
     std::vector<float> m_litPositions;
     std::vector<float> m_litColors;
     std::vector<float> m_litST;
-    std::vector<float> m_litAlpha;
+    std::vector<float> m_litOpacity;
 };
 
 } // namespace q3

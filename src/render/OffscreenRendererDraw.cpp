@@ -208,15 +208,16 @@ RenderResult OffscreenRenderer::drawLit(const MeshView& mesh, const Shading& sha
         }
     }
     const OpacitySetup& opacity = shading.opacity;
-    if (opacity.alpha != nullptr) {
+    if (opacity.rgb != nullptr) {
         if (opacity.count != mesh.vertexCount)
             return RenderResult::failure(RenderStatus::kInvalidArgument,
                                          "the opacity array's length is not the vertex count");
         // The opacity follows the vertices to their corners.
-        m_litAlpha.resize(corners);
+        m_litOpacity.resize(3 * corners);
         for (std::size_t corner = 0; corner < corners; ++corner)
-            m_litAlpha[corner] = opacity.alpha[mesh.triangles[corner]];
-        const RenderResult set = setOpacity(OpacitySetup{m_litAlpha.data(), corners, opacity.uniform});
+            for (std::size_t c = 0; c < 3; ++c)
+                m_litOpacity[3 * corner + c] = opacity.rgb[3 * std::size_t(mesh.triangles[corner]) + c];
+        const RenderResult set = setOpacity(OpacitySetup{m_litOpacity.data(), corners, opacity.uniform});
         if (!set)
             return set;
     }

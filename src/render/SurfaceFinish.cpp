@@ -17,10 +17,10 @@
 namespace q3 {
 
 const char* const kFinishVertexGlsl = R"(
-attribute float q3Opacity;
+attribute vec4 q3Opacity;
 uniform vec4 q3FogDepthPlane;
 uniform vec4 q3FogWPlane;
-varying float q3VertexOpacity;
+varying vec4 q3VertexOpacity;
 varying float q3FogDepth;
 varying float q3FogW;
 
@@ -40,17 +40,21 @@ uniform float q3FogStart;
 uniform float q3FogEnd;
 uniform float q3FogDensity;
 uniform vec3 q3FogColor;
-varying float q3VertexOpacity;
+varying vec4 q3VertexOpacity;
 varying float q3FogDepth;
 varying float q3FogW;
+out vec4 q3FragColor;
+out vec4 q3FragOpacity;
 
 vec4 q3FinishFragment(vec4 color, float texelAlpha)
 {
 #ifdef OPAQUE
-    float a = texelAlpha; // every vertex's opacity is 1
+    vec4 opacity = vec4(texelAlpha); // every vertex's opacity is 1
 #else
-    float a = q3VertexOpacity * texelAlpha;
+    vec4 opacity = q3VertexOpacity * texelAlpha;
 #endif
+    q3FragOpacity = opacity;
+    float a = opacity.a;
     color.a = a;
 #ifdef FOG
     if (q3FogMode != 0) {
@@ -74,7 +78,7 @@ vec4 q3FinishFragment(vec4 color, float texelAlpha)
 
 namespace {
 
-constexpr const char* kVersion = "#version 120\n";
+constexpr const char* kVersion = "#version 130\n";
 // The unlit program always has the fog code (its draws may be fogged or
 // not; the uniform q3FogMode says).
 constexpr const char* kUnlitSwitches[2] = {"#define FOG 1\n", "#define FOG 1\n#define TEXTURED 1\n"};
@@ -105,9 +109,9 @@ void main()
 #ifdef TEXTURED
     vec4 texel = texture2D(surfaceTexture, gl_TexCoord[0].st);
     color.rgb *= texel.rgb;
-    gl_FragColor = q3FinishFragment(color, texel.a);
+    q3FragColor = q3FinishFragment(color, texel.a);
 #else
-    gl_FragColor = q3FinishFragment(color, 1.0);
+    q3FragColor = q3FinishFragment(color, 1.0);
 #endif
 }
 )";
@@ -138,11 +142,13 @@ GLuint compileUnlit(GLenum kind, bool textured, std::string& error)
 void bindFinishAttributes(GLuint program)
 {
     glBindAttribLocation(program, kOpacityAttribute, "q3Opacity");
+    glBindFragDataLocationIndexed(program, 0, 0, "q3FragColor");
+    glBindFragDataLocationIndexed(program, 0, 1, "q3FragOpacity");
 }
 
 void setDefaultOpacity()
 {
-    glVertexAttrib1f(kOpacityAttribute, 1.0f);
+    glVertexAttrib4f(kOpacityAttribute, 1.0f, 1.0f, 1.0f, 1.0f);
 }
 
 void FinishUniforms::locate(GLuint program)

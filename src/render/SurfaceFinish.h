@@ -10,11 +10,17 @@
 // current OpenGL context.
 //
 //   vertex stage:   q3FinishVertex() after gl_Position is written
-//   fragment stage: gl_FragColor = q3FinishFragment(colour, texel alpha or 1)
+//   fragment stage: q3FragColor = q3FinishFragment(colour, texel alpha or 1)
 //
-// The opacity of a vertex is the generic attribute kOpacityAttribute (1
-// when no array is bound: setDefaultOpacity), times the texel's alpha in a
-// textured program. The fog's distance is an affine function of the world
+// The opacity of a vertex is the generic attribute kOpacityAttribute, a vec4
+// of the r, g, b opacities and their mean (1, 1, 1, 1 when no array is bound:
+// setDefaultOpacity), times the texel's alpha in a textured program. The
+// programs are GLSL 1.30 (compatibility profile) with two fragment outputs
+// for dual-source blending (OpenGL 3.3, ARB_blend_func_extended):
+// q3FragColor (index 0) is the colour with the mean opacity as alpha,
+// q3FragOpacity (index 1) the per-channel opacity, which the translucent
+// triangles blend with as (GL_SRC1_COLOR, GL_ONE_MINUS_SRC1_COLOR); opaque
+// draws do not blend, and index 1 is then unused. The fog's distance is an affine function of the world
 // point, so it is interpolated exactly across a triangle as the ratio of two
 // perspective-correct varyings (FogSetup says which).
 
@@ -32,13 +38,16 @@ constexpr GLuint kOpacityAttribute = 7;
 
 /// The vertex stage's block: the opacity attribute and the fog's varyings.
 extern const char* const kFinishVertexGlsl;
-/// The fragment stage's block: opacity times the texel's alpha (the
-/// caller's one sample of the texture, 1 untextured), then, when FOG is
+/// The fragment stage's block: declares the outputs q3FragColor and
+/// q3FragOpacity; q3FinishFragment writes q3FragOpacity (opacity times the
+/// texel's alpha: the caller's one sample of the texture, 1 untextured) and
+/// returns the colour with the mean opacity as alpha, then, when FOG is
 /// defined, the fog the uniforms say (a program drawn only unfogged leaves
 /// the code out: llvmpipe runs a branch on a uniform in every fragment).
 extern const char* const kFinishFragmentGlsl;
 
-/// Binds q3Opacity to kOpacityAttribute; call before linking.
+/// Binds q3Opacity to kOpacityAttribute and the two fragment outputs to
+/// colour 0, indices 0 and 1; call before linking.
 void bindFinishAttributes(GLuint program);
 
 /// Makes vertices without an opacity array opaque (the current value of

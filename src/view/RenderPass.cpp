@@ -141,34 +141,41 @@ void RenderPass::loadFog()
 
 namespace {
 
-// QuickDraw 3D's transparency colour as one opacity: the mean of its
-// channels (as Quesa's interactive renderer takes it), clamped to 0..1.
-float opacityOf(float r, float g, float b)
+// A channel of QuickDraw 3D's transparency colour as an opacity, clamped to
+// 0..1 (NaN: 0).
+float opacityOf(float channel)
 {
-    const float mean = (r + g + b) / 3.0f;
-    return mean >= 1.0f ? 1.0f : mean > 0.0f ? mean : 0.0f;
+    return channel >= 1.0f ? 1.0f : channel > 0.0f ? channel : 0.0f;
 }
 
 } // namespace
 
+// The transparency colour is kept per channel (OpacitySetup): the QD3D Book
+// blends each of r, g, b with its own opacity.
 void RenderPass::prepareOpacity(const MeshView& mesh, const AttributeValues& attributes,
                                 bool highlightTransparency)
 {
     const TQ3ColorRGB all = attributes.transparencyColor().value_or(TQ3ColorRGB{1.0f, 1.0f, 1.0f});
     m_opacity = OpacitySetup{};
-    m_opacity.uniform = opacityOf(all.r, all.g, all.b);
+    m_opacity.uniform = RgbColor{opacityOf(all.r), opacityOf(all.g), opacityOf(all.b)};
     if (mesh.transparency == nullptr || highlightTransparency)
         return;
-    m_alpha.resize(mesh.vertexCount);
+    m_opacityRgb.resize(3 * mesh.vertexCount);
+    const float uniform[3] = {m_opacity.uniform.r, m_opacity.uniform.g, m_opacity.uniform.b};
     bool varies = false;
     for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
         const float* t = mesh.transparency + 3 * i;
-        m_alpha[i] = t[0] == t[0] ? opacityOf(t[0], t[1], t[2]) : m_opacity.uniform;
-        varies = varies || m_alpha[i] != m_opacity.uniform;
+        // A vertex without its own transparency (NaN) takes the uniform one.
+        const bool own = t[0] == t[0];
+        for (int c = 0; c < 3; ++c) {
+            const float value = own ? opacityOf(t[c]) : uniform[c];
+            m_opacityRgb[3 * i + c] = value;
+            varies = varies || value != uniform[c];
+        }
     }
     if (!varies)
         return;
-    m_opacity.alpha = m_alpha.data();
+    m_opacity.rgb = m_opacityRgb.data();
     m_opacity.count = mesh.vertexCount;
 }
 

@@ -133,9 +133,9 @@ private:
     /// The eye distance as a function of clip coordinates (FogSetup's
     /// planes), computed when fog is first drawn.
     std::optional<FogSetup> m_fogPlanes;
-    /// The opacity of the mesh being drawn (alpha in m_alpha, per vertex).
+    /// The opacity of the mesh being drawn (r g b per vertex in m_opacityRgb).
     OpacitySetup m_opacity;
-    std::vector<float> m_alpha;
+    std::vector<float> m_opacityRgb;
     bool m_lightsLoaded = false;
     std::vector<float> m_colors;
     std::vector<float> m_st;

@@ -202,3 +202,150 @@ TEST_F(AntiAliasRenderTest, AStyleSubmittedAfterOtherDrawingKeepsThatDrawing)
 }
 
 } // namespace
+
+TEST_F(AntiAliasRenderTest, OnlyWhatIsDrawnUnderTheStyleIsSmoothed)
+{
+    // Left of the red quad a blue triangle, right of it a green one, both
+    // with slanted edges, and a yellow quad behind the red one (z -1)
+    // reaching out below and right of it: the blue drawn before the style,
+    // the red under it (filled mode), the yellow and green after a style
+    // that turns it off. Only the red quad's side edges, columns 8 and 40,
+    // may differ from the same frame drawn without any anti-aliasing
+    // (the yellow quad's pixels on column 40 depend on the depth of one of
+    // the pixel's samples); everything else is the very same bytes, and the
+    // red quad still hides the yellow one drawn after it.
+    TQ3GeometryObject quad = redQuad();
+    const auto triangle = [&](TQ3Point3D a, TQ3Point3D b, TQ3Point3D c, float r, float g, float bl) {
+        const TQ3TriangleData data{{{a, nullptr}, {b, nullptr}, {c, nullptr}}, own(colorSet(r, g, bl))};
+        return own(Q3Triangle_New(&data));
+    };
+    TQ3GeometryObject blue = triangle({-0.45f, -0.9f, 0}, {-0.1f, 1.9f, 0}, {-0.45f, 1.9f, 0}, 0, 0, 1);
+    TQ3GeometryObject green = triangle({2.6f, 0.6f, 0}, {3.4f, 0.6f, 0}, {3.4f, 1.9f, 0}, 0, 1, 0);
+    TQ3Vertex3D behind[4] = {{{1.5f, -0.9f, -1.0f}, nullptr},
+                             {{2.6f, -0.9f, -1.0f}, nullptr},
+                             {{2.6f, 0.5f, -1.0f}, nullptr},
+                             {{1.5f, 0.5f, -1.0f}, nullptr}};
+    TQ3PolygonData data{4, behind, own(colorSet(1, 1, 0))};
+    TQ3GeometryObject yellow = own(Q3Polygon_New(&data));
+    const TQ3AntiAliasStyleData on{kQ3On, kQ3AntiAliasModeMaskFilled, 1.0f};
+    const TQ3AntiAliasStyleData off{kQ3Off, kQ3AntiAliasModeMaskFilled, 1.0f};
+    const auto draw = [&](bool smooth) {
+        return render([&](TQ3ViewObject v) {
+            Q3Geometry_Submit(blue, v);
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&on, v);
+            Q3Geometry_Submit(quad, v);
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&off, v);
+            Q3Geometry_Submit(yellow, v);
+            Q3Geometry_Submit(green, v);
+        });
+    };
+    const Pixmap aliased = draw(false);
+    const Pixmap mixed = draw(true);
+    // The red quad's edges smoothed: the shares of its samples.
+    for (int row : {8, 20})
+        expectRow(mixed, row, 0.25, 0.75, "the anti-aliased quad");
+    expectRow(aliased, 20, 0.0, 1.0, "the same quad aliased");
+    int differing = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const Rgba a = aliased.at(x, y), m = mixed.at(x, y);
+            const bool same = a.r == m.r && a.g == m.g && a.b == m.b && a.a == m.a;
+            if ((x == 8 || x == 40) && y >= 8 && y < 40)
+                continue;
+            differing += same ? 0 : 1;
+            EXPECT_TRUE(same) << "pixel (" << x << ", " << y << ") differs from the aliased frame";
+            if (differing > 5)
+                FAIL() << "more differing pixels";
+        }
+    // The triangles are drawn (their slanted edges, aliased, are among the
+    // pixels compared above).
+    EXPECT_EQ(mixed.at(2, 2).b, 255);
+    EXPECT_EQ(mixed.at(60, 12).g, 255);
+    // The yellow quad: hidden by the red one, seen right of it.
+    EXPECT_EQ(mixed.at(30, 36).r, 255);
+    EXPECT_EQ(mixed.at(30, 36).g, 0);
+    EXPECT_EQ(mixed.at(45, 36).r, 255);
+    EXPECT_EQ(mixed.at(45, 36).g, 255);
+    // The same pixels every time.
+    EXPECT_EQ(mixed.bytes(), draw(true).bytes());
+}
+
+TEST_F(AntiAliasRenderTest, LinesAndTranslucentTrianglesKeepTheMarkTheyWereDrawnUnder)
+{
+    // A line under the edges mode, then, under a kQ3Off style, another line
+    // and a half-transparent triangle (translucent triangles are drawn at
+    // the end of the frame, after the style is long gone); then a
+    // half-transparent quad under the filled mode. Only the first line and
+    // the translucent quad's side edges are smoothed: every other pixel is
+    // that of the frame drawn without the style.
+    const auto lineOf = [&](TQ3Point3D a, TQ3Point3D b) {
+        TQ3LineData data{{{a, nullptr}, {b, nullptr}}, own(colorSet(1, 1, 1))};
+        return own(Q3Line_New(&data));
+    };
+    TQ3GeometryObject smoothLine = lineOf({-0.4f, 1.8f, 0}, {3.4f, 1.65f, 0});
+    TQ3GeometryObject plainLine = lineOf({-0.4f, -0.6f, 0}, {3.4f, -0.85f, 0});
+    TQ3AttributeSet half = own(colorSet(0, 0, 1));
+    const TQ3ColorRGB halfT{0.5f, 0.5f, 0.5f};
+    ASSERT_EQ(Q3AttributeSet_Add(half, kQ3AttributeTypeTransparencyColor, &halfT), kQ3Success);
+    const TQ3TriangleData triangleData{{{{2.3f, -0.4f, 0}, nullptr}, {{3.4f, -0.4f, 0}, nullptr},
+                                        {{3.4f, 1.4f, 0}, nullptr}},
+                                       half};
+    TQ3GeometryObject triangle = own(Q3Triangle_New(&triangleData));
+    TQ3AttributeSet redHalf = own(colorSet(1, 0, 0));
+    ASSERT_EQ(Q3AttributeSet_Add(redHalf, kQ3AttributeTypeTransparencyColor, &halfT), kQ3Success);
+    TQ3Vertex3D corners[4] = {{{kLeft, kBottom, 0}, nullptr},
+                              {{kRight, kBottom, 0}, nullptr},
+                              {{kRight, kTop, 0}, nullptr},
+                              {{kLeft, kTop, 0}, nullptr}};
+    TQ3PolygonData quadData{4, corners, redHalf};
+    TQ3GeometryObject quad = own(Q3Polygon_New(&quadData));
+    const TQ3AntiAliasStyleData edges{kQ3On, kQ3AntiAliasModeMaskEdges, 1.0f};
+    const TQ3AntiAliasStyleData filled{kQ3On, kQ3AntiAliasModeMaskFilled, 1.0f};
+    const TQ3AntiAliasStyleData off{kQ3Off, kQ3AntiAliasModeMaskEdges, 1.0f};
+    const auto draw = [&](bool smooth) {
+        return render([&](TQ3ViewObject v) {
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&edges, v);
+            Q3Geometry_Submit(smoothLine, v);
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&off, v);
+            Q3Geometry_Submit(plainLine, v);
+            Q3Geometry_Submit(triangle, v);
+            if (smooth)
+                Q3AntiAliasStyle_Submit(&filled, v);
+            Q3Geometry_Submit(quad, v);
+        });
+    };
+    const Pixmap aliased = draw(false);
+    const Pixmap mixed = draw(true);
+    // The first line (rows 2 to 6) has shades between white and black; the
+    // second one none.
+    int shadedFirst = 0, shadedSecond = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const Rgba p = mixed.at(x, y);
+            const bool shaded = p.r == p.g && p.g == p.b && p.r > 0 && p.r < 255;
+            (y < 8 ? shadedFirst : shadedSecond) += shaded ? 1 : 0;
+        }
+    EXPECT_GT(shadedFirst, 20);
+    EXPECT_EQ(shadedSecond, 0);
+    // The translucent quad's side columns: half red over black, by its
+    // samples' shares (a quarter and three quarters).
+    EXPECT_NEAR(mixed.at(8, 20).r, 0.25 * 127.5, 1.5);
+    EXPECT_NEAR(mixed.at(40, 20).r, 0.75 * 127.5, 1.5);
+    int differing = 0;
+    for (int y = 8; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            if ((x == 8 || x == 40) && y < 40)
+                continue;
+            const Rgba a = aliased.at(x, y), m = mixed.at(x, y);
+            const bool same = a.r == m.r && a.g == m.g && a.b == m.b && a.a == m.a;
+            differing += same ? 0 : 1;
+            EXPECT_TRUE(same) << "pixel (" << x << ", " << y << ") differs from the aliased frame";
+            if (differing > 5)
+                FAIL() << "more differing pixels";
+        }
+    EXPECT_EQ(mixed.bytes(), draw(true).bytes());
+}

@@ -7,11 +7,10 @@
 // Translucency (the QD3D Book, "Transparency": a transparency colour of
 // (1, 1, 1) is opaque, (0, 0, 0) wholly transparent; QuickDraw 3D multiplies
 // it by the object's colour). A translucent surface of colour C and
-// transparency colour T over what lies behind it, B, gives
-//     a = (T.r + T.g + T.b) / 3,   pixel = a C + (1 - a) B
-// (one opacity per pixel, the mean of T, as Quesa's interactive renderer
-// takes it; for a grey T this is the book's per-channel product exactly),
-// with a times the texel's alpha under a texture. Translucent surfaces are
+// transparency colour T over what lies behind it, B, gives, channel by
+// channel,
+//     pixel.c = T.c C.c + (1 - T.c) B.c      for c = r, g, b
+// with T times the texel's alpha under a texture. Translucent surfaces are
 // drawn after the opaque ones, farthest first.
 //
 // Fog (QD3DStyle.h): at eye distance z (along the viewing direction), the
@@ -51,6 +50,13 @@ struct Color {
 Color mix(const Color& front, const Color& behind, double a)
 {
     return {a * front.r + (1 - a) * behind.r, a * front.g + (1 - a) * behind.g, a * front.b + (1 - a) * behind.b};
+}
+
+// The book's rule channel by channel: transparency colour t.
+Color mix(const Color& front, const Color& behind, const Color& t)
+{
+    return {t.r * front.r + (1 - t.r) * behind.r, t.g * front.g + (1 - t.g) * behind.g,
+            t.b * front.b + (1 - t.b) * behind.b};
 }
 
 int toByte(double v)
@@ -151,7 +157,7 @@ const Color kFront{0.9, 0.3, 0.1};
 TEST_F(TranslucencyFogRenderTest, TranslucentSurfaceBlendsOverTheOpaqueOneWhateverTheOrder)
 {
     const Color grey{0.25, 0.25, 0.25};
-    const Color tinted{0.2, 0.5, 0.8}; // mean 0.5
+    const Color tinted{0.2, 0.5, 0.8};
     TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
     TQ3GeometryObject left = rect(-3, 0, -3, 3, 1, 1, colorSet(kFront, &grey));
     TQ3GeometryObject right = rect(0, 3, -3, 3, 1, 1, colorSet(kFront, &tinted));
@@ -167,9 +173,73 @@ TEST_F(TranslucencyFogRenderTest, TranslucentSurfaceBlendsOverTheOpaqueOneWhatev
         const std::string order = translucentFirst ? "translucent first" : "opaque first";
         expectColumns(image, 0, kSize / 2, [&](unsigned long) { return mix(kFront, kBehind, 0.25); },
                       "grey transparency, " + order);
-        expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return mix(kFront, kBehind, 0.5); },
+        expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return mix(kFront, kBehind, tinted); },
                       "tinted transparency, " + order);
     }
+}
+
+TEST_F(TranslucencyFogRenderTest, TintedTransparencyBlendsEachChannelByItsOwnOpacity)
+{
+    // Green passing only green, and an orange tint, unlit and lit (Lambert
+    // under an ambient light of 1, so the lit colour is the diffuse one).
+    const Color green{0, 1, 0};
+    const Color orange{1, 0.5, 0.25};
+    const Color front{0.8, 0.4, 0.6};
+    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
+    TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
+    TQ3GeometryObject left = rect(-3, 0, -3, 3, 1, 1, colorSet(front, &green));
+    TQ3GeometryObject right = rect(0, 3, -3, 3, 1, 1, colorSet(front, &orange));
+    for (bool lit : {false, true}) {
+        const Pixmap image = render(
+            [&](TQ3ViewObject v) {
+                if (lit)
+                    Q3Shader_Submit(lambert, v);
+                Q3Geometry_Submit(left, v);
+                Q3Geometry_Submit(right, v);
+                Q3Geometry_Submit(back, v);
+            },
+            nullptr, lit);
+        const std::string how = lit ? "lit" : "unlit";
+        // (0, 1, 0): red and blue are what lies behind, green the front's.
+        expectColumns(image, 0, kSize / 2, [&](unsigned long) { return Color{kBehind.r, front.g, kBehind.b}; },
+                      "green tint, " + how);
+        expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return mix(front, kBehind, orange); },
+                      "orange tint, " + how);
+    }
+}
+
+TEST_F(TranslucencyFogRenderTest, PerVertexTintsAreInterpolatedChannelByChannel)
+{
+    // Transparency (1, 0, 0.5) at the left edge (x = -2), (0, 1, 0.5) at the
+    // right (x = 2): across the square each channel's opacity is linear in x.
+    const Color leftT{1, 0, 0.5}, rightT{0, 1, 0.5};
+    const Color front{0.9, 0.8, 0.1};
+    TQ3AttributeSet leftSet = own(Q3AttributeSet_New());
+    TQ3AttributeSet rightSet = own(Q3AttributeSet_New());
+    const TQ3ColorRGB l{float(leftT.r), float(leftT.g), float(leftT.b)};
+    const TQ3ColorRGB r{float(rightT.r), float(rightT.g), float(rightT.b)};
+    ASSERT_EQ(Q3AttributeSet_Add(leftSet, kQ3AttributeTypeTransparencyColor, &l), kQ3Success);
+    ASSERT_EQ(Q3AttributeSet_Add(rightSet, kQ3AttributeTypeTransparencyColor, &r), kQ3Success);
+    std::vector<TQ3Vertex3D> v{{{-2.0f, -2.0f, 1.0f}, leftSet},
+                               {{2.0f, -2.0f, 1.0f}, rightSet},
+                               {{2.0f, 2.0f, 1.0f}, rightSet},
+                               {{-2.0f, 2.0f, 1.0f}, leftSet}};
+    const TQ3PolygonData data{4, v.data(), colorSet(front)};
+    TQ3GeometryObject square = own(Q3Polygon_New(&data));
+    TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
+    const Pixmap image = render([&](TQ3ViewObject view) {
+        Q3Geometry_Submit(back, view);
+        Q3Geometry_Submit(square, view);
+    });
+    expectColumns(
+        image, 0, kSize,
+        [&](unsigned long i) {
+            const double f = (worldX(i) + kHalf) / (2 * kHalf);
+            const Color t{leftT.r + f * (rightT.r - leftT.r), leftT.g + f * (rightT.g - leftT.g),
+                          leftT.b + f * (rightT.b - leftT.b)};
+            return mix(front, kBehind, t);
+        },
+        "interpolated tint");
 }
 
 TEST_F(TranslucencyFogRenderTest, TranslucentSurfacesAreBlendedFarthestFirst)
@@ -314,6 +384,56 @@ TEST_F(TranslucencyFogRenderTest, TextureAlphaCutsOutAndOpaqueTexelsHideWhatIsBe
     quadrant(kSize / 2, 0, middle, "alpha 0: what lies behind, drawn later");
     quadrant(0, kSize / 2, mix(green, middle, a), "alpha 128: blended");
     quadrant(kSize / 2, kSize / 2, blue, "opaque texel hides what is behind");
+}
+
+TEST_F(TranslucencyFogRenderTest, TintTimesTexelAlphaChannelByChannel)
+{
+    // The 2 x 2 ARGB32 texture of the test above (opaque red, alpha 0,
+    // alpha 128 green, opaque blue) on a square whose transparency colour
+    // is (0, 1, 0.5): each channel's opacity is that channel of T times the
+    // texel's alpha. The grey rectangle behind is drawn after it.
+    std::vector<unsigned char> texels{255, 255, 0, 0, 0, 255, 255, 255, 128, 0, 255, 0, 255, 0, 0, 255};
+    TQ3StorageObject storage = own(Q3MemoryStorage_New(texels.data(), static_cast<unsigned long>(texels.size())));
+    const TQ3StoragePixmap pixmap{storage, 2, 2, 8, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
+    TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
+    const float h = 2.0f;
+    TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    std::vector<TQ3Vertex3D> v(4);
+    const TQ3Point3D corners[4] = {{-h, -h, 1}, {h, -h, 1}, {h, h, 1}, {-h, h, 1}};
+    for (int k = 0; k < 4; ++k) {
+        TQ3AttributeSet set = own(Q3AttributeSet_New());
+        EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]), kQ3Success);
+        v[k] = TQ3Vertex3D{corners[k], set};
+    }
+    const Color tint{0, 1, 0.5};
+    const TQ3PolygonData data{4, v.data(), colorSet(Color{1, 1, 1}, &tint)};
+    TQ3GeometryObject textured = own(Q3Polygon_New(&data));
+    const Color middle{0.3, 0.3, 0.3};
+    TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle));
+    const Pixmap image = render([&](TQ3ViewObject v) {
+        Q3Push_Submit(v);
+        Q3Shader_Submit(shader, v);
+        Q3Geometry_Submit(textured, v);
+        Q3Pop_Submit(v);
+        Q3Geometry_Submit(between, v);
+    });
+    const auto times = [](const Color& t, double a) { return Color{t.r * a, t.g * a, t.b * a}; };
+    const Color red{1, 0, 0}, green{0, 1, 0}, blue{0, 0, 1};
+    const double a = 128.0 / 255.0;
+    const auto quadrant = [&](unsigned long i0, unsigned long j0, const Color& expected, const std::string& what) {
+        int wrong = 0;
+        for (unsigned long j = j0 + 1; j < j0 + kSize / 2 - 1; ++j)
+            for (unsigned long i = i0 + 1; i < i0 + kSize / 2 - 1; ++i) {
+                const Rgba got = image.at(i, j);
+                wrong += std::abs(got.r - toByte(expected.r)) > 1 || std::abs(got.g - toByte(expected.g)) > 1 ||
+                         std::abs(got.b - toByte(expected.b)) > 1;
+            }
+        EXPECT_EQ(wrong, 0) << what;
+    };
+    quadrant(0, 0, mix(red, middle, tint), "opaque red texel");
+    quadrant(kSize / 2, 0, middle, "alpha 0");
+    quadrant(0, kSize / 2, mix(green, middle, times(tint, a)), "alpha 128 green texel");
+    quadrant(kSize / 2, kSize / 2, mix(blue, middle, tint), "opaque blue texel");
 }
 
 TEST_F(TranslucencyFogRenderTest, Argb16AlphaBitCutsOut)

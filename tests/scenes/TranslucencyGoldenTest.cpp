@@ -3,7 +3,7 @@
 
 // Translucency, fog and highlighting drawn by the interactive renderer and
 // compared with tests/golden/NAME.png (tolerance: tests/golden/README.md):
-// a translucent box over an opaque one, a row of spheres each under another
+// a translucent box over an opaque one (grey, and tinted), a row of spheres each under another
 // fog mode, a texture with alpha cut-outs over a box, and a highlighted
 // box beside a plain one. Exact pixels against the formulas are checked in
 // tests/api/TranslucencyFogRenderTest.cpp; here a few facts a golden blessed
@@ -119,6 +119,30 @@ TEST_F(TranslucencyGoldenTest, TranslucentBoxOverAnOpaqueOne)
         for (int x = 0; x < kWidth; ++x) {
             const unsigned char* p = image.at(x, y);
             through += p[0] > 90 && p[2] > 90;
+        }
+    EXPECT_GT(through, 200);
+}
+
+TEST_F(TranslucencyGoldenTest, TintedTranslucentBoxOverAnOpaqueOne)
+{
+    // Green glass: transparency (0.2, 0.9, 0.3) lets the red box's red
+    // channel through and takes the glass's own green (the QD3D Book's
+    // per-channel rule).
+    const TQ3ColorRGB glass{0.2f, 0.9f, 0.3f};
+    TQ3GeometryObject opaque = box({-1.2f, -0.8f, -1.5f}, 1.6f, colors({0.9f, 0.3f, 0.2f}));
+    TQ3GeometryObject translucent = box({-0.6f, -1.0f, -0.2f}, 1.8f, colors({0.3f, 0.9f, 0.4f}, &glass));
+    const q3test::RgbaImage image = render({2.0f, 2.5f, 6.0f}, {0, 0, 0}, [&](TQ3ViewObject v) {
+        Q3Geometry_Submit(translucent, v);
+        Q3Geometry_Submit(opaque, v);
+    });
+    EXPECT_TRUE(q3test::matchesGolden("translucent_box_tinted", image));
+    // Somewhere the red box shows through the green glass: red well above
+    // the background's and above the glass's own green share of it.
+    int through = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const unsigned char* p = image.at(x, y);
+            through += p[0] > 90 && p[1] > 90;
         }
     EXPECT_GT(through, 200);
 }

@@ -168,12 +168,12 @@ TEST_F(OffscreenMeshDraw, BadMeshesAreRefused)
         EXPECT_EQ(m_renderer.draw(strip, shading).status, RenderStatus::kInvalidArgument);
 
         // Lit flat, so every corner is copied: the opacity array must have
-        // one value per vertex.
-        const float alpha[] = {0.5f, 0.5f};
+        // one r g b per vertex.
+        const float rgb[] = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f};
         Shading lit;
         lit.lit = true;
         lit.surface.interpolation = 0;
-        lit.opacity.alpha = alpha;
+        lit.opacity.rgb = rgb;
         lit.opacity.count = 2;
         EXPECT_EQ(m_renderer.draw(square(), lit).status, RenderStatus::kInvalidArgument);
 

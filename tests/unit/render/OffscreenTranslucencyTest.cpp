@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -105,11 +106,15 @@ TEST(OffscreenTranslucency, BadOpacityIsRefused)
 {
     OffscreenRenderer renderer;
     ASSERT_TRUE(renderer.beginFrame(kSize, kSize, kClear, PixelRect{0, 0, kSize, kSize}));
-    for (float uniform : {-0.1f, 1.5f, std::numeric_limits<float>::quiet_NaN()})
-        EXPECT_EQ(renderer.setOpacity(OpacitySetup{nullptr, 0, uniform}).status, RenderStatus::kInvalidArgument);
+    for (float uniform : {-0.1f, 1.5f, std::numeric_limits<float>::quiet_NaN()}) {
+        EXPECT_EQ(renderer.setOpacity(OpacitySetup{nullptr, 0, RgbColor{uniform, 1, 1}}).status,
+                  RenderStatus::kInvalidArgument);
+        EXPECT_EQ(renderer.setOpacity(OpacitySetup{nullptr, 0, RgbColor{1, 1, uniform}}).status,
+                  RenderStatus::kInvalidArgument);
+    }
     // An array of the wrong length fails the draw, which draws nothing.
-    const float alpha[3] = {0.5f, 0.5f, 0.5f};
-    ASSERT_TRUE(renderer.setOpacity(OpacitySetup{alpha, 3, 1.0f}));
+    const float rgb[9] = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f};
+    ASSERT_TRUE(renderer.setOpacity(OpacitySetup{rgb, 3, RgbColor{1, 1, 1}}));
     const std::array<float, 16> m = pixelOrtho();
     ASSERT_TRUE(renderer.setMatrix(m.data()));
     const std::vector<float> all = quad(0, kSize, 0.0f);
@@ -128,7 +133,7 @@ TEST(OffscreenTranslucency, TranslucentTrianglesWaitForTheEndOfTheFrameAcrossAFl
     ASSERT_TRUE(renderer.setMatrix(m.data()));
     // Nearer (z -0.5) and translucent, submitted first; setLighting flushes
     // the batch before the opaque one behind it (z 0.5) comes.
-    ASSERT_TRUE(renderer.setOpacity(OpacitySetup{nullptr, 0, 0.25f}));
+    ASSERT_TRUE(renderer.setOpacity(OpacitySetup{nullptr, 0, RgbColor{0.25f, 0.25f, 0.25f}}));
     const std::vector<float> front = quad(0, kSize, -0.5f);
     ASSERT_TRUE(renderer.drawTriangles(front.data(), 6, kFront));
     ASSERT_TRUE(renderer.setOpacity(OpacitySetup{}));
@@ -154,11 +159,12 @@ TEST(OffscreenTranslucency, OneDrawSplitsIntoOpaqueAndTranslucentTriangles)
     std::vector<float> front = quad(0, kSize / 2, -0.5f);
     const std::vector<float> right = quad(kSize / 2, kSize, -0.5f);
     front.insert(front.end(), right.begin(), right.end());
-    const float alpha[12] = {1, 1, 1, 1, 1, 1, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f};
+    std::vector<float> rgb(3 * 12, 1.0f);
+    std::fill(rgb.begin() + 3 * 6, rgb.end(), 0.5f);
     std::vector<std::uint32_t> indices(12);
     for (std::uint32_t i = 0; i < 12; ++i)
         indices[i] = i;
-    ASSERT_TRUE(renderer.setOpacity(OpacitySetup{alpha, 12, 1.0f}));
+    ASSERT_TRUE(renderer.setOpacity(OpacitySetup{rgb.data(), 12, RgbColor{1, 1, 1}}));
     ASSERT_TRUE(renderer.drawElements(DrawMode::kTriangles, front.data(), nullptr, 12, indices.data(), 12, kFront,
                                       false));
     ASSERT_TRUE(renderer.endFrame());

@@ -6,6 +6,7 @@
 // without any rendering backend, and the calls it makes can be read back.
 
 #include "QD3DGeometry.h"
+#include "QD3DSet.h"
 #include "base/NullRenderTarget.h"
 #include "geometry/Geometry.h"
 #include "view/RenderPass.h"
@@ -91,6 +92,45 @@ TEST_F(RenderPassTest, TheWireframeRendererAsksForATrianglesEdges)
     EXPECT_TRUE(draws[0].edgesAlone);
     EXPECT_EQ(m_target.count("setFaceOptions"), 0u);
     EXPECT_EQ(draws[1].points, 1u);
+}
+
+TEST_F(RenderPassTest, TheTransparencyColourReachesTheTargetChannelByChannel)
+{
+    // The triangle's set: transparency (0.2, 0.9, 0.3); its first vertex's
+    // own: (1, 0, 0.5); the other two take the triangle's. Out-of-range
+    // channels are clamped to 0..1 one by one.
+    const TQ3ColorRGB shared{0.2f, 0.9f, 0.3f}, own{1.5f, -1.0f, 0.5f};
+    TQ3AttributeSet set = Q3AttributeSet_New();
+    TQ3AttributeSet first = Q3AttributeSet_New();
+    ASSERT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeTransparencyColor, &shared), kQ3Success);
+    ASSERT_EQ(Q3AttributeSet_Add(first, kQ3AttributeTypeTransparencyColor, &own), kQ3Success);
+    const TQ3TriangleData data{{{{0, 0, 0}, first}, {{1, 0, 0}, nullptr}, {{0, 1, 0}, nullptr}}, set};
+    TQ3GeometryObject tinted = Q3Triangle_New(&data);
+    ASSERT_NE(tinted, nullptr);
+    {
+        RenderStyle style;
+        style.fillTriangles = true;
+        RenderPass pass(m_target, Window{Matrix(1.0), PixelRect{0, 0, 8, 8}}, defaultAttributes(nullptr), style);
+        pass.visitGeometry(geometry(tinted));
+        pass.visitGeometry(geometry(m_triangle));
+    }
+    Q3Object_Dispose(tinted);
+    Q3Object_Dispose(first);
+    Q3Object_Dispose(set);
+    const std::vector<NullRenderTarget::DrawRecord>& draws = m_target.draws();
+    ASSERT_EQ(draws.size(), 2u);
+    EXPECT_FLOAT_EQ(draws[0].opacity.r, 0.2f);
+    EXPECT_FLOAT_EQ(draws[0].opacity.g, 0.9f);
+    EXPECT_FLOAT_EQ(draws[0].opacity.b, 0.3f);
+    ASSERT_EQ(draws[0].opacityRgb.size(), 9u);
+    const float expected[9] = {1.0f, 0.0f, 0.5f, 0.2f, 0.9f, 0.3f, 0.2f, 0.9f, 0.3f};
+    for (int i = 0; i < 9; ++i)
+        EXPECT_FLOAT_EQ(draws[0].opacityRgb[std::size_t(i)], expected[i]) << "value " << i;
+    // Without a transparency colour: opaque, no array.
+    EXPECT_FLOAT_EQ(draws[1].opacity.r, 1.0f);
+    EXPECT_FLOAT_EQ(draws[1].opacity.g, 1.0f);
+    EXPECT_FLOAT_EQ(draws[1].opacity.b, 1.0f);
+    EXPECT_TRUE(draws[1].opacityRgb.empty());
 }
 
 } // namespace
