@@ -124,6 +124,15 @@ protected:
     /// adds to it: cached under the edit indices of the vertices' sets.
     void drawVertexMesh(const TQ3Vertex3D* vertices, std::size_t count, const std::function<void(Mesh&)>& connect,
                         PrimitiveSink& sink) const;
+    /// Draws into `sink`, with the geometry's attribute set, `mesh` (whose
+    /// point, bitmap or pixmap the caller has set) as its one vertex at
+    /// `position`.
+    void drawAt(const TQ3Point3D& position, MeshView& mesh, PrimitiveSink& sink) const
+    {
+        mesh.positions = &position.x;
+        mesh.vertexCount = 1;
+        sink.draw(mesh, attributeSet());
+    }
 
 private:
     Data m_data;
