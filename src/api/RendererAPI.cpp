@@ -44,8 +44,7 @@ TQ3RendererObject Q3Renderer_NewFromType(TQ3ObjectType rendererObjectType)
 
 TQ3ObjectType Q3Renderer_GetType(TQ3RendererObject renderer)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Renderer>(renderer, "renderer").leafType(); });
+    return api::getLeafType<Renderer>(__func__, renderer, "renderer");
 }
 
 TQ3Boolean Q3Renderer_IsInteractive(TQ3RendererObject renderer)

@@ -40,8 +40,7 @@ extern "C" {
 
 TQ3ObjectType Q3Transform_GetType(TQ3TransformObject transform)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Transform>(transform, "transform").leafType(); });
+    return api::getLeafType<Transform>(__func__, transform, "transform");
 }
 
 TQ3Matrix4x4* Q3Transform_GetMatrix(TQ3TransformObject transform, TQ3Matrix4x4* matrix)
