@@ -11,8 +11,7 @@ extern "C" {
 
 TQ3ObjectType Q3Camera_GetType(TQ3CameraObject camera)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Camera>(camera, "camera").leafType(); });
+    return api::getLeafType<Camera>(__func__, camera, "camera");
 }
 
 TQ3Status Q3Camera_SetData(TQ3CameraObject camera, const TQ3CameraData* cameraData)

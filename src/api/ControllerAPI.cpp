@@ -26,6 +26,17 @@ TQ3Status withController(const char* function, TQ3ControllerRef ref, Body&& body
     });
 }
 
+// A Get of one value of a controller, in the order every Get checks: the
+// ref, then the pointer, then *out = read(controller), under the lock.
+template <class Value, class Read>
+TQ3Status readController(const char* function, TQ3ControllerRef ref, Value* out, const char* outName, Read read)
+{
+    return withController(function, ref, [&](Controller& c) {
+        requireNonNull(out, outName);
+        *out = read(c);
+    });
+}
+
 TQ3Boolean boolean(bool value)
 {
     return value ? kQ3True : kQ3False;
@@ -80,10 +91,8 @@ TQ3Status Q3Controller_SetActivation(TQ3ControllerRef controllerRef, TQ3Boolean 
 
 TQ3Status Q3Controller_GetActivation(TQ3ControllerRef controllerRef, TQ3Boolean* active)
 {
-    return withController(__func__, controllerRef, [&](Controller& c) {
-        requireNonNull(active, "active");
-        *active = boolean(c.active());
-    });
+    return readController(__func__, controllerRef, active, "active",
+                          [&](Controller& c) { return boolean(c.active()); });
 }
 
 TQ3Status Q3Controller_GetSignature(TQ3ControllerRef controllerRef, char* signature, unsigned long numChars)
@@ -114,10 +123,8 @@ TQ3Status Q3Controller_GetChannel(TQ3ControllerRef controllerRef, unsigned long 
 
 TQ3Status Q3Controller_GetValueCount(TQ3ControllerRef controllerRef, unsigned long* valueCount)
 {
-    return withController(__func__, controllerRef, [&](Controller& c) {
-        requireNonNull(valueCount, "valueCount");
-        *valueCount = c.valueCount();
-    });
+    return readController(__func__, controllerRef, valueCount, "valueCount",
+                          [&](Controller& c) { return c.valueCount(); });
 }
 
 TQ3Status Q3Controller_SetTracker(TQ3ControllerRef controllerRef, TQ3TrackerObject tracker)
@@ -128,34 +135,31 @@ TQ3Status Q3Controller_SetTracker(TQ3ControllerRef controllerRef, TQ3TrackerObje
 
 TQ3Status Q3Controller_HasTracker(TQ3ControllerRef controllerRef, TQ3Boolean* hasTracker)
 {
-    return withController(__func__, controllerRef, [&](Controller& c) {
-        requireNonNull(hasTracker, "hasTracker");
-        *hasTracker = boolean(c.active() && c.ownTracker() != nullptr && c.ownTracker()->active());
-    });
+    return readController(__func__, controllerRef, hasTracker, "hasTracker",
+                          [&](Controller& c) {
+                              return boolean(c.active() && c.ownTracker() != nullptr && c.ownTracker()->active());
+                          });
 }
 
 TQ3Status Q3Controller_Track2DCursor(TQ3ControllerRef controllerRef, TQ3Boolean* track2DCursor)
 {
-    return withController(__func__, controllerRef, [&](Controller& c) {
-        requireNonNull(track2DCursor, "track2DCursor");
-        *track2DCursor = boolean(c.active() && c.ownTracker() == nullptr && !controllers::trackDeltas());
-    });
+    return readController(__func__, controllerRef, track2DCursor, "track2DCursor",
+                          [&](Controller& c) {
+                              return boolean(c.active() && c.ownTracker() == nullptr && !controllers::trackDeltas());
+                          });
 }
 
 TQ3Status Q3Controller_Track3DCursor(TQ3ControllerRef controllerRef, TQ3Boolean* track3DCursor)
 {
-    return withController(__func__, controllerRef, [&](Controller& c) {
-        requireNonNull(track3DCursor, "track3DCursor");
-        *track3DCursor = boolean(c.active() && c.ownTracker() == nullptr && controllers::trackDeltas());
-    });
+    return readController(__func__, controllerRef, track3DCursor, "track3DCursor",
+                          [&](Controller& c) {
+                              return boolean(c.active() && c.ownTracker() == nullptr && controllers::trackDeltas());
+                          });
 }
 
 TQ3Status Q3Controller_GetButtons(TQ3ControllerRef controllerRef, unsigned long* buttons)
 {
-    return withController(__func__, controllerRef, [&](Controller& c) {
-        requireNonNull(buttons, "buttons");
-        *buttons = c.buttons();
-    });
+    return readController(__func__, controllerRef, buttons, "buttons", [&](Controller& c) { return c.buttons(); });
 }
 
 TQ3Status Q3Controller_SetButtons(TQ3ControllerRef controllerRef, unsigned long buttons)
@@ -165,10 +169,8 @@ TQ3Status Q3Controller_SetButtons(TQ3ControllerRef controllerRef, unsigned long 
 
 TQ3Status Q3Controller_GetTrackerPosition(TQ3ControllerRef controllerRef, TQ3Point3D* position)
 {
-    return withController(__func__, controllerRef, [&](Controller& c) {
-        requireNonNull(position, "position");
-        *position = c.tracker().currentPosition();
-    });
+    return readController(__func__, controllerRef, position, "position",
+                          [&](Controller& c) { return c.tracker().currentPosition(); });
 }
 
 TQ3Status Q3Controller_SetTrackerPosition(TQ3ControllerRef controllerRef, const TQ3Point3D* position)
@@ -193,10 +195,8 @@ TQ3Status Q3Controller_MoveTrackerPosition(TQ3ControllerRef controllerRef, const
 
 TQ3Status Q3Controller_GetTrackerOrientation(TQ3ControllerRef controllerRef, TQ3Quaternion* orientation)
 {
-    return withController(__func__, controllerRef, [&](Controller& c) {
-        requireNonNull(orientation, "orientation");
-        *orientation = c.tracker().currentOrientation();
-    });
+    return readController(__func__, controllerRef, orientation, "orientation",
+                          [&](Controller& c) { return c.tracker().currentOrientation(); });
 }
 
 TQ3Status Q3Controller_SetTrackerOrientation(TQ3ControllerRef controllerRef, const TQ3Quaternion* orientation)

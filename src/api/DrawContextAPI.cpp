@@ -11,8 +11,7 @@ extern "C" {
 
 TQ3ObjectType Q3DrawContext_GetType(TQ3DrawContextObject drawContext)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<DrawContext>(drawContext, "drawContext").leafType(); });
+    return api::getLeafType<DrawContext>(__func__, drawContext, "drawContext");
 }
 
 TQ3Status Q3DrawContext_SetData(TQ3DrawContextObject context, const TQ3DrawContextData* contextData)

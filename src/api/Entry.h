@@ -75,6 +75,16 @@ void readInto(TQ3Object handle, const char* handleName, Value* out, const char* 
     *out = std::invoke(read, source);
 }
 
+/// A whole Q3<Family>_GetType entry point: the leaf type of the T that
+/// `handle` is (called `handleName` in errors), or kQ3ObjectTypeInvalid when
+/// it is none.
+template <class T>
+TQ3ObjectType getLeafType(const char* function, TQ3Object handle, const char* handleName) noexcept
+{
+    return guard(function, TQ3ObjectType{kQ3ObjectTypeInvalid},
+                 [&] { return lookup<T>(handle, handleName).leafType(); });
+}
+
 /// A whole New entry point of a shared T made from one value given through a
 /// pointer (`dataName` in errors); T's constructor checks the value. The
 /// caller owns the one reference of the new object.

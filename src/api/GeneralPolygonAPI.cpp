@@ -37,39 +37,29 @@ TQ3Status Q3GeneralPolygon_EmptyData(TQ3GeneralPolygonData* generalPolygonData)
 TQ3Status Q3GeneralPolygon_GetVertexPosition(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
                                              unsigned long pointIndex, TQ3Point3D* position)
 {
-    return getValue<GeneralPolygon>(__func__, generalPolygon, "generalPolygon", position, "position",
-                                    [&](const GeneralPolygon& p) { return p.vertex(contourIndex, pointIndex).point; });
+    return getVertexPosition<GeneralPolygon>(__func__, generalPolygon, "generalPolygon",
+                                             position, "position", contourIndex, pointIndex);
 }
 
 TQ3Status Q3GeneralPolygon_SetVertexPosition(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
                                              unsigned long pointIndex, const TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        GeneralPolygon& target = lookup<GeneralPolygon>(generalPolygon, "generalPolygon");
-        requireNonNull(position, "position");
-        target.setVertexPosition(contourIndex, pointIndex, *position);
-    });
+    return setVertexPosition<GeneralPolygon>(__func__, generalPolygon, "generalPolygon",
+                                             position, "position", contourIndex, pointIndex);
 }
 
 TQ3Status Q3GeneralPolygon_GetVertexAttributeSet(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
                                                  unsigned long pointIndex, TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<GeneralPolygon>(generalPolygon, "generalPolygon", attributeSet, "attributeSet",
-                                 [&](const GeneralPolygon& p) {
-                                     return attributeSetToHandle(
-                                         heldAttributeSet(p.vertex(contourIndex, pointIndex).attributeSet));
-                                 });
-    });
+    return getVertexAttributeSet<GeneralPolygon>(__func__, generalPolygon, "generalPolygon",
+                                                 attributeSet, contourIndex, pointIndex);
 }
 
 TQ3Status Q3GeneralPolygon_SetVertexAttributeSet(TQ3GeometryObject generalPolygon, unsigned long contourIndex,
                                                  unsigned long pointIndex, TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        GeneralPolygon& target = lookup<GeneralPolygon>(generalPolygon, "generalPolygon");
-        target.setVertexAttributeSet(contourIndex, pointIndex, attributeSetFromHandle(attributeSet, "attributeSet"));
-    });
+    return setVertexAttributeSet<GeneralPolygon>(__func__, generalPolygon, "generalPolygon",
+                                                 attributeSet, contourIndex, pointIndex);
 }
 
 TQ3Status Q3GeneralPolygon_SetShapeHint(TQ3GeometryObject generalPolygon, TQ3GeneralPolygonShapeHint shapeHint)

@@ -12,8 +12,7 @@ extern "C" {
 
 TQ3ObjectType Q3Geometry_GetType(TQ3GeometryObject geometry)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Geometry>(geometry, "geometry").leafType(); });
+    return api::getLeafType<Geometry>(__func__, geometry, "geometry");
 }
 
 TQ3Status Q3Geometry_GetAttributeSet(TQ3GeometryObject geometry, TQ3AttributeSet* attributeSet)

@@ -3,7 +3,8 @@
 #pragma once
 
 // The five entry points every geometry with a data structure has (New,
-// Submit, GetData, SetData, EmptyData), written once for any DataGeometry T.
+// Submit, GetData, SetData, EmptyData), written once for any DataGeometry T,
+// and the four per-vertex calls of the geometries with vertices.
 // Each checks in the order QD3DGeometry.h states: the handle, then the
 // pointer, then the data's rules.
 
@@ -61,6 +62,49 @@ TQ3Status emptyGeometryData(const char* function, typename T::DataType* data)
     return guardStatus(function, [&] {
         requireNonNull(data, T::kDataName);
         T::emptyData(*data);
+    });
+}
+
+/// Apple's four per-vertex calls of a geometry T whose vertex(index...) is a
+/// TQ3Vertex3D (one index, or a contour's or a row's and a column's), written
+/// once: the handle (called `handleName` in errors), then the pointer
+/// (`valueName`), then T's index and value checks. Get of an attribute set
+/// hands out a new reference (NULL for none); Set takes its own.
+template <class T, class... Index>
+TQ3Status getVertexPosition(const char* function, TQ3GeometryObject geometry, const char* handleName,
+                            TQ3Point3D* position, const char* valueName, Index... index)
+{
+    return getValue<T>(function, geometry, handleName, position, valueName,
+                       [&](const T& source) { return source.vertex(index...).point; });
+}
+
+template <class T, class... Index>
+TQ3Status setVertexPosition(const char* function, TQ3GeometryObject geometry, const char* handleName,
+                            const TQ3Point3D* position, const char* valueName, Index... index)
+{
+    return guardStatus(function, [&] {
+        T& target = lookup<T>(geometry, handleName);
+        requireNonNull(position, valueName);
+        target.setVertexPosition(index..., *position);
+    });
+}
+
+template <class T, class... Index>
+TQ3Status getVertexAttributeSet(const char* function, TQ3GeometryObject geometry, const char* handleName,
+                                TQ3AttributeSet* attributeSet, Index... index)
+{
+    return getValue<T>(function, geometry, handleName, attributeSet, "attributeSet", [&](const T& source) {
+        return attributeSetToHandle(heldAttributeSet(source.vertex(index...).attributeSet));
+    });
+}
+
+template <class T, class... Index>
+TQ3Status setVertexAttributeSet(const char* function, TQ3GeometryObject geometry, const char* handleName,
+                                TQ3AttributeSet attributeSet, Index... index)
+{
+    return guardStatus(function, [&] {
+        T& target = lookup<T>(geometry, handleName);
+        target.setVertexAttributeSet(index..., attributeSetFromHandle(attributeSet, "attributeSet"));
     });
 }
 

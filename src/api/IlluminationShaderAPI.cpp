@@ -26,8 +26,7 @@ extern "C" {
 
 TQ3ObjectType Q3IlluminationShader_GetType(TQ3ShaderObject shader)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<IlluminationShader>(shader, "shader").leafType(); });
+    return api::getLeafType<IlluminationShader>(__func__, shader, "shader");
 }
 
 TQ3ShaderObject Q3PhongIllumination_New(void)

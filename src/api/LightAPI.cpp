@@ -36,8 +36,7 @@ extern "C" {
 
 TQ3ObjectType Q3Light_GetType(TQ3LightObject light)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Light>(light, "light").leafType(); });
+    return api::getLeafType<Light>(__func__, light, "light");
 }
 
 TQ3Status Q3Light_GetState(TQ3LightObject light, TQ3Boolean* isOn)

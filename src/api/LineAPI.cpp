@@ -36,33 +36,24 @@ TQ3Status Q3Line_EmptyData(TQ3LineData* lineData)
 
 TQ3Status Q3Line_GetVertexPosition(TQ3GeometryObject line, unsigned long index, TQ3Point3D* position)
 {
-    return getValue<Line>(__func__, line, "line", position, "position",
-                          [&](const Line& source) { return source.vertex(index).point; });
+    return getVertexPosition<Line>(__func__, line, "line", position, "position", index);
 }
 
 TQ3Status Q3Line_SetVertexPosition(TQ3GeometryObject line, unsigned long index, const TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        Line& target = lookup<Line>(line, "line");
-        requireNonNull(position, "position");
-        target.setVertexPosition(index, *position);
-    });
+    return setVertexPosition<Line>(__func__, line, "line", position, "position", index);
 }
 
 TQ3Status Q3Line_GetVertexAttributeSet(TQ3GeometryObject line, unsigned long index,
                                        TQ3AttributeSet* attributeSet)
 {
-    return getValue<Line>(__func__, line, "line", attributeSet, "attributeSet",
-                          [&](const Line& source) { return attributeSetToHandle(source.vertexAttributeSet(index)); });
+    return getVertexAttributeSet<Line>(__func__, line, "line", attributeSet, index);
 }
 
 TQ3Status Q3Line_SetVertexAttributeSet(TQ3GeometryObject line, unsigned long index,
                                        TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        Line& target = lookup<Line>(line, "line");
-        target.setVertexAttributeSet(index, attributeSetFromHandle(attributeSet, "attributeSet"));
-    });
+    return setVertexAttributeSet<Line>(__func__, line, "line", attributeSet, index);
 }
 
 } // extern "C"

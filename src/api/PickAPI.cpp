@@ -115,8 +115,7 @@ extern "C" {
 
 TQ3ObjectType Q3Pick_GetType(TQ3PickObject pick)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Pick>(pick, "pick").leafType(); });
+    return api::getLeafType<Pick>(__func__, pick, "pick");
 }
 
 TQ3Status Q3Pick_GetData(TQ3PickObject pick, TQ3PickData* data)

@@ -37,37 +37,25 @@ TQ3Status Q3PolyLine_EmptyData(TQ3PolyLineData* polyLineData)
 TQ3Status Q3PolyLine_GetVertexPosition(TQ3GeometryObject polyLine, unsigned long index,
                                        TQ3Point3D* position)
 {
-    return getValue<PolyLine>(__func__, polyLine, "polyLine", position, "position",
-                              [&](const PolyLine& source) { return source.vertex(index).point; });
+    return getVertexPosition<PolyLine>(__func__, polyLine, "polyLine", position, "position", index);
 }
 
 TQ3Status Q3PolyLine_SetVertexPosition(TQ3GeometryObject polyLine, unsigned long index,
                                        const TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        PolyLine& target = lookup<PolyLine>(polyLine, "polyLine");
-        requireNonNull(position, "position");
-        target.setVertexPosition(index, *position);
-    });
+    return setVertexPosition<PolyLine>(__func__, polyLine, "polyLine", position, "position", index);
 }
 
 TQ3Status Q3PolyLine_GetVertexAttributeSet(TQ3GeometryObject polyLine, unsigned long index,
                                            TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        const PolyLine& source = lookup<PolyLine>(polyLine, "polyLine");
-        requireNonNull(attributeSet, "attributeSet");
-        *attributeSet = attributeSetToHandle(source.vertexAttributeSet(index));
-    });
+    return getVertexAttributeSet<PolyLine>(__func__, polyLine, "polyLine", attributeSet, index);
 }
 
 TQ3Status Q3PolyLine_SetVertexAttributeSet(TQ3GeometryObject polyLine, unsigned long index,
                                            TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        PolyLine& target = lookup<PolyLine>(polyLine, "polyLine");
-        target.setVertexAttributeSet(index, attributeSetFromHandle(attributeSet, "attributeSet"));
-    });
+    return setVertexAttributeSet<PolyLine>(__func__, polyLine, "polyLine", attributeSet, index);
 }
 
 TQ3Status Q3PolyLine_GetSegmentAttributeSet(TQ3GeometryObject polyLine, unsigned long index,

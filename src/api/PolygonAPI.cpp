@@ -36,34 +36,24 @@ TQ3Status Q3Polygon_EmptyData(TQ3PolygonData* polygonData)
 
 TQ3Status Q3Polygon_GetVertexPosition(TQ3GeometryObject polygon, unsigned long index, TQ3Point3D* point)
 {
-    return getValue<Polygon>(__func__, polygon, "polygon", point, "point",
-                             [&](const Polygon& t) { return t.vertex(index).point; });
+    return getVertexPosition<Polygon>(__func__, polygon, "polygon", point, "point", index);
 }
 
 TQ3Status Q3Polygon_SetVertexPosition(TQ3GeometryObject polygon, unsigned long index, const TQ3Point3D* point)
 {
-    return guardStatus(__func__, [&] {
-        Polygon& target = lookup<Polygon>(polygon, "polygon");
-        requireNonNull(point, "point");
-        target.setVertexPosition(index, *point);
-    });
+    return setVertexPosition<Polygon>(__func__, polygon, "polygon", point, "point", index);
 }
 
 TQ3Status Q3Polygon_GetVertexAttributeSet(TQ3GeometryObject polygon, unsigned long index,
                                            TQ3AttributeSet* attributeSet)
 {
-    return getValue<Polygon>(__func__, polygon, "polygon", attributeSet, "attributeSet", [&](const Polygon& t) {
-        return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
-    });
+    return getVertexAttributeSet<Polygon>(__func__, polygon, "polygon", attributeSet, index);
 }
 
 TQ3Status Q3Polygon_SetVertexAttributeSet(TQ3GeometryObject polygon, unsigned long index,
                                            TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        Polygon& target = lookup<Polygon>(polygon, "polygon");
-        target.setVertexAttributeSet(index, attributeSetFromHandle(attributeSet, "attributeSet"));
-    });
+    return setVertexAttributeSet<Polygon>(__func__, polygon, "polygon", attributeSet, index);
 }
 
 } // extern "C"

@@ -36,36 +36,24 @@ TQ3Status Q3Polyhedron_EmptyData(TQ3PolyhedronData* polyhedronData)
 
 TQ3Status Q3Polyhedron_SetVertexPosition(TQ3GeometryObject polyhedron, unsigned long index, const TQ3Point3D* point)
 {
-    return guardStatus(__func__, [&] {
-        Polyhedron& target = lookup<Polyhedron>(polyhedron, "polyhedron");
-        requireNonNull(point, "point");
-        target.setVertexPosition(index, *point);
-    });
+    return setVertexPosition<Polyhedron>(__func__, polyhedron, "polyhedron", point, "point", index);
 }
 
 TQ3Status Q3Polyhedron_GetVertexPosition(TQ3GeometryObject polyhedron, unsigned long index, TQ3Point3D* point)
 {
-    return getValue<Polyhedron>(__func__, polyhedron, "polyhedron", point, "point",
-                                [&](const Polyhedron& p) { return p.vertex(index).point; });
+    return getVertexPosition<Polyhedron>(__func__, polyhedron, "polyhedron", point, "point", index);
 }
 
 TQ3Status Q3Polyhedron_SetVertexAttributeSet(TQ3GeometryObject polyhedron, unsigned long index,
                                              TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        Polyhedron& target = lookup<Polyhedron>(polyhedron, "polyhedron");
-        target.setVertexAttributeSet(index, attributeSetFromHandle(attributeSet, "attributeSet"));
-    });
+    return setVertexAttributeSet<Polyhedron>(__func__, polyhedron, "polyhedron", attributeSet, index);
 }
 
 TQ3Status Q3Polyhedron_GetVertexAttributeSet(TQ3GeometryObject polyhedron, unsigned long index,
                                              TQ3AttributeSet* attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        readInto<Polyhedron>(polyhedron, "polyhedron", attributeSet, "attributeSet", [&](const Polyhedron& p) {
-            return attributeSetToHandle(heldAttributeSet(p.vertex(index).attributeSet));
-        });
-    });
+    return getVertexAttributeSet<Polyhedron>(__func__, polyhedron, "polyhedron", attributeSet, index);
 }
 
 TQ3Status Q3Polyhedron_GetTriangleData(TQ3GeometryObject polyhedron, unsigned long triangleIndex,

@@ -11,6 +11,28 @@ using namespace q3;
 using q3::api::guard;
 using q3::api::guardStatus;
 
+namespace {
+
+using Settings = InteractiveRenderer::Settings;
+
+// A Get of one interactive renderer setting: the handle, then the pointer.
+template <class Value>
+TQ3Status getSetting(const char* function, TQ3RendererObject renderer, Value* out, const char* outName,
+                     Value Settings::*field)
+{
+    return api::getValue<InteractiveRenderer>(function, renderer, "renderer", out, outName,
+                                              [&](const InteractiveRenderer& r) { return r.settings().*field; });
+}
+
+// A Set of one interactive renderer setting: the handle, then the setter.
+template <class Write>
+TQ3Status setSetting(const char* function, TQ3RendererObject renderer, Write write)
+{
+    return guardStatus(function, [&] { write(lookup<InteractiveRenderer>(renderer, "renderer")); });
+}
+
+} // namespace
+
 extern "C" {
 
 TQ3RendererObject Q3Renderer_NewFromType(TQ3ObjectType rendererObjectType)
@@ -22,8 +44,7 @@ TQ3RendererObject Q3Renderer_NewFromType(TQ3ObjectType rendererObjectType)
 
 TQ3ObjectType Q3Renderer_GetType(TQ3RendererObject renderer)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Renderer>(renderer, "renderer").leafType(); });
+    return api::getLeafType<Renderer>(__func__, renderer, "renderer");
 }
 
 TQ3Boolean Q3Renderer_IsInteractive(TQ3RendererObject renderer)
@@ -53,26 +74,18 @@ TQ3Status Q3RendererClass_GetNickNameString(TQ3ObjectType rendererClassType,
 
 TQ3Status Q3InteractiveRenderer_SetCSGEquation(TQ3RendererObject renderer, TQ3CSGEquation equation)
 {
-    return guardStatus(__func__, [&] {
-        lookup<InteractiveRenderer>(renderer, "renderer").setCSGEquation(equation);
-    });
+    return setSetting(__func__, renderer, [&](InteractiveRenderer& r) { r.setCSGEquation(equation); });
 }
 
 TQ3Status Q3InteractiveRenderer_GetCSGEquation(TQ3RendererObject renderer, TQ3CSGEquation* equation)
 {
-    return guardStatus(__func__, [&] {
-        const InteractiveRenderer& source = lookup<InteractiveRenderer>(renderer, "renderer");
-        requireNonNull(equation, "equation");
-        *equation = source.settings().csgEquation;
-    });
+    return getSetting(__func__, renderer, equation, "equation", &Settings::csgEquation);
 }
 
 TQ3Status Q3InteractiveRenderer_SetPreferences(TQ3RendererObject renderer, long vendorID,
                                                long engineID)
 {
-    return guardStatus(__func__, [&] {
-        lookup<InteractiveRenderer>(renderer, "renderer").setPreferences(vendorID, engineID);
-    });
+    return setSetting(__func__, renderer, [&](InteractiveRenderer& r) { r.setPreferences(vendorID, engineID); });
 }
 
 TQ3Status Q3InteractiveRenderer_GetPreferences(TQ3RendererObject renderer, long* vendorID,
@@ -89,54 +102,39 @@ TQ3Status Q3InteractiveRenderer_GetPreferences(TQ3RendererObject renderer, long*
 
 TQ3Status Q3InteractiveRenderer_SetDoubleBufferBypass(TQ3RendererObject renderer, TQ3Boolean bypass)
 {
-    return guardStatus(__func__, [&] {
-        lookup<InteractiveRenderer>(renderer, "renderer").setDoubleBufferBypass(bypass);
-    });
+    return setSetting(__func__, renderer, [&](InteractiveRenderer& r) { r.setDoubleBufferBypass(bypass); });
 }
 
 TQ3Status Q3InteractiveRenderer_GetDoubleBufferBypass(TQ3RendererObject renderer, TQ3Boolean* bypass)
 {
-    return guardStatus(__func__, [&] {
-        const InteractiveRenderer& source = lookup<InteractiveRenderer>(renderer, "renderer");
-        requireNonNull(bypass, "bypass");
-        *bypass = source.settings().doubleBufferBypass;
-    });
+    return getSetting(__func__, renderer, bypass, "bypass", &Settings::doubleBufferBypass);
 }
 
 TQ3Status Q3InteractiveRenderer_SetRAVEContextHints(TQ3RendererObject renderer,
                                                     unsigned long RAVEContextHints)
 {
-    return guardStatus(__func__, [&] {
-        lookup<InteractiveRenderer>(renderer, "renderer").setRAVEContextHints(RAVEContextHints);
-    });
+    return setSetting(__func__, renderer,
+                      [&](InteractiveRenderer& r) { r.setRAVEContextHints(RAVEContextHints); });
 }
 
 TQ3Status Q3InteractiveRenderer_GetRAVEContextHints(TQ3RendererObject renderer,
                                                     unsigned long* RAVEContextHints)
 {
-    return guardStatus(__func__, [&] {
-        const InteractiveRenderer& source = lookup<InteractiveRenderer>(renderer, "renderer");
-        requireNonNull(RAVEContextHints, "RAVEContextHints");
-        *RAVEContextHints = source.settings().raveContextHints;
-    });
+    return getSetting(__func__, renderer, RAVEContextHints, "RAVEContextHints", &Settings::raveContextHints);
 }
 
 TQ3Status Q3InteractiveRenderer_SetRAVETextureFilter(TQ3RendererObject renderer,
                                                      unsigned long RAVEtextureFilterValue)
 {
-    return guardStatus(__func__, [&] {
-        lookup<InteractiveRenderer>(renderer, "renderer").setRAVETextureFilter(RAVEtextureFilterValue);
-    });
+    return setSetting(__func__, renderer,
+                      [&](InteractiveRenderer& r) { r.setRAVETextureFilter(RAVEtextureFilterValue); });
 }
 
 TQ3Status Q3InteractiveRenderer_GetRAVETextureFilter(TQ3RendererObject renderer,
                                                      unsigned long* RAVEtextureFilterValue)
 {
-    return guardStatus(__func__, [&] {
-        const InteractiveRenderer& source = lookup<InteractiveRenderer>(renderer, "renderer");
-        requireNonNull(RAVEtextureFilterValue, "RAVEtextureFilterValue");
-        *RAVEtextureFilterValue = source.settings().raveTextureFilter;
-    });
+    return getSetting(__func__, renderer, RAVEtextureFilterValue, "RAVEtextureFilterValue",
+                      &Settings::raveTextureFilter);
 }
 
 TQ3Status Q3InteractiveRenderer_CountRAVEDrawContexts(TQ3RendererObject renderer, unsigned long* numRAVEContexts)

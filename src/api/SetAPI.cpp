@@ -20,8 +20,7 @@ TQ3SetObject Q3Set_New(void)
 
 TQ3ObjectType Q3Set_GetType(TQ3SetObject theSet)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Set>(theSet, "theSet").leafType(); });
+    return api::getLeafType<Set>(__func__, theSet, "theSet");
 }
 
 TQ3Status Q3Set_Add(TQ3SetObject theSet, TQ3ElementType theType, const void* data)

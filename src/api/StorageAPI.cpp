@@ -10,8 +10,7 @@ using namespace q3::api;
 
 TQ3ObjectType Q3Storage_GetType(TQ3StorageObject storage)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Storage>(storage, "storage").leafType(); });
+    return api::getLeafType<Storage>(__func__, storage, "storage");
 }
 
 TQ3Status Q3Storage_GetSize(TQ3StorageObject storage, unsigned long* size)

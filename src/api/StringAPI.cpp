@@ -13,8 +13,7 @@ using namespace q3::api;
 
 TQ3ObjectType Q3String_GetType(TQ3StringObject stringObj)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<CString>(stringObj, "stringObj").leafType(); });
+    return api::getLeafType<CString>(__func__, stringObj, "stringObj");
 }
 
 TQ3StringObject Q3CString_New(const char* str)

@@ -13,8 +13,7 @@ extern "C" {
 
 TQ3ObjectType Q3Style_GetType(TQ3StyleObject style)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Style>(style, "style").leafType(); });
+    return api::getLeafType<Style>(__func__, style, "style");
 }
 
 TQ3Status Q3Style_Submit(TQ3StyleObject style, TQ3ViewObject view)

@@ -34,14 +34,49 @@ void changeData(TQ3TransformObject transform, Change change)
     target.setData(data);
 }
 
+using PointData = TQ3RotateAboutPointTransformData;
+using AxisData = TQ3RotateAboutAxisTransformData;
+
+// A Get of one field of a transform's data: the handle, then the pointer.
+template <class T, class Data, class Value>
+TQ3Status getField(const char* function, TQ3TransformObject transform, Value* out, const char* outName,
+                   Value Data::*field)
+{
+    return getValue<T>(function, transform, "transform", out, outName,
+                       [&](const T& source) { return source.data().*field; });
+}
+
+// A Set of one field given by value, through changeData. Copied as bytes: a
+// C caller may pass any int for an enumeration (core/EnumValue.h), which
+// the class's checks then refuse.
+template <class T, class Data, class Value>
+TQ3Status setField(const char* function, TQ3TransformObject transform, const Value& value, Value Data::*field)
+{
+    return guardStatus(function, [&] {
+        changeData<T>(transform, [&](Data& d) { std::memcpy(&(d.*field), &value, sizeof value); });
+    });
+}
+
+// A Set of one field given through a pointer: the handle, then the pointer,
+// then changeData.
+template <class T, class Data, class Value>
+TQ3Status setFieldFrom(const char* function, TQ3TransformObject transform, const Value* in, const char* inName,
+                       Value Data::*field)
+{
+    return guardStatus(function, [&] {
+        lookup<T>(transform, "transform");
+        requireNonNull(in, inName);
+        changeData<T>(transform, [&](Data& d) { d.*field = *in; });
+    });
+}
+
 } // namespace
 
 extern "C" {
 
 TQ3ObjectType Q3Transform_GetType(TQ3TransformObject transform)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<Transform>(transform, "transform").leafType(); });
+    return api::getLeafType<Transform>(__func__, transform, "transform");
 }
 
 TQ3Matrix4x4* Q3Transform_GetMatrix(TQ3TransformObject transform, TQ3Matrix4x4* matrix)
@@ -221,47 +256,32 @@ TQ3Status Q3RotateAboutPointTransform_GetData(TQ3TransformObject transform, TQ3R
 
 TQ3Status Q3RotateAboutPointTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
 {
-    return guardStatus(__func__, [&] {
-        // Copied as bytes: a C caller may pass any int (core/EnumValue.h).
-        changeData<RotateAboutPointTransform>(
-            transform, [&](TQ3RotateAboutPointTransformData& d) { std::memcpy(&d.axis, &axis, sizeof axis); });
-    });
+    return setField<RotateAboutPointTransform>(__func__, transform, axis, &PointData::axis);
 }
 
 TQ3Status Q3RotateAboutPointTransform_GetAxis(TQ3TransformObject transform, TQ3Axis* axis)
 {
-    return getValue<RotateAboutPointTransform>(__func__, transform, "transform", axis, "axis",
-                                               [](const RotateAboutPointTransform& t) { return t.data().axis; });
+    return getField<RotateAboutPointTransform>(__func__, transform, axis, "axis", &PointData::axis);
 }
 
 TQ3Status Q3RotateAboutPointTransform_SetAngle(TQ3TransformObject transform, float radians)
 {
-    return guardStatus(__func__, [&] {
-        changeData<RotateAboutPointTransform>(transform,
-                                              [&](TQ3RotateAboutPointTransformData& d) { d.radians = radians; });
-    });
+    return setField<RotateAboutPointTransform>(__func__, transform, radians, &PointData::radians);
 }
 
 TQ3Status Q3RotateAboutPointTransform_GetAngle(TQ3TransformObject transform, float* radians)
 {
-    return getValue<RotateAboutPointTransform>(__func__, transform, "transform", radians, "radians",
-                                               [](const RotateAboutPointTransform& t) { return t.data().radians; });
+    return getField<RotateAboutPointTransform>(__func__, transform, radians, "radians", &PointData::radians);
 }
 
 TQ3Status Q3RotateAboutPointTransform_SetAboutPoint(TQ3TransformObject transform, const TQ3Point3D* about)
 {
-    return guardStatus(__func__, [&] {
-        lookup<RotateAboutPointTransform>(transform, "transform");
-        requireNonNull(about, "about");
-        changeData<RotateAboutPointTransform>(transform,
-                                              [&](TQ3RotateAboutPointTransformData& d) { d.about = *about; });
-    });
+    return setFieldFrom<RotateAboutPointTransform>(__func__, transform, about, "about", &PointData::about);
 }
 
 TQ3Status Q3RotateAboutPointTransform_GetAboutPoint(TQ3TransformObject transform, TQ3Point3D* about)
 {
-    return getValue<RotateAboutPointTransform>(__func__, transform, "transform", about, "about",
-                                               [](const RotateAboutPointTransform& t) { return t.data().about; });
+    return getField<RotateAboutPointTransform>(__func__, transform, about, "about", &PointData::about);
 }
 
 TQ3TransformObject Q3RotateAboutAxisTransform_New(const TQ3RotateAboutAxisTransformData* data)
@@ -289,48 +309,32 @@ TQ3Status Q3RotateAboutAxisTransform_GetData(TQ3TransformObject transform, TQ3Ro
 
 TQ3Status Q3RotateAboutAxisTransform_SetOrientation(TQ3TransformObject transform, const TQ3Vector3D* axis)
 {
-    return guardStatus(__func__, [&] {
-        lookup<RotateAboutAxisTransform>(transform, "transform");
-        requireNonNull(axis, "axis");
-        changeData<RotateAboutAxisTransform>(transform,
-                                             [&](TQ3RotateAboutAxisTransformData& d) { d.orientation = *axis; });
-    });
+    return setFieldFrom<RotateAboutAxisTransform>(__func__, transform, axis, "axis", &AxisData::orientation);
 }
 
 TQ3Status Q3RotateAboutAxisTransform_GetOrientation(TQ3TransformObject transform, TQ3Vector3D* axis)
 {
-    return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", axis, "axis",
-                                              [](const RotateAboutAxisTransform& t) { return t.data().orientation; });
+    return getField<RotateAboutAxisTransform>(__func__, transform, axis, "axis", &AxisData::orientation);
 }
 
 TQ3Status Q3RotateAboutAxisTransform_SetAngle(TQ3TransformObject transform, float radians)
 {
-    return guardStatus(__func__, [&] {
-        changeData<RotateAboutAxisTransform>(transform,
-                                             [&](TQ3RotateAboutAxisTransformData& d) { d.radians = radians; });
-    });
+    return setField<RotateAboutAxisTransform>(__func__, transform, radians, &AxisData::radians);
 }
 
 TQ3Status Q3RotateAboutAxisTransform_GetAngle(TQ3TransformObject transform, float* radians)
 {
-    return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", radians, "radians",
-                                              [](const RotateAboutAxisTransform& t) { return t.data().radians; });
+    return getField<RotateAboutAxisTransform>(__func__, transform, radians, "radians", &AxisData::radians);
 }
 
 TQ3Status Q3RotateAboutAxisTransform_SetOrigin(TQ3TransformObject transform, const TQ3Point3D* origin)
 {
-    return guardStatus(__func__, [&] {
-        lookup<RotateAboutAxisTransform>(transform, "transform");
-        requireNonNull(origin, "origin");
-        changeData<RotateAboutAxisTransform>(transform,
-                                             [&](TQ3RotateAboutAxisTransformData& d) { d.origin = *origin; });
-    });
+    return setFieldFrom<RotateAboutAxisTransform>(__func__, transform, origin, "origin", &AxisData::origin);
 }
 
 TQ3Status Q3RotateAboutAxisTransform_GetOrigin(TQ3TransformObject transform, TQ3Point3D* origin)
 {
-    return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", origin, "origin",
-                                              [](const RotateAboutAxisTransform& t) { return t.data().origin; });
+    return getField<RotateAboutAxisTransform>(__func__, transform, origin, "origin", &AxisData::origin);
 }
 
 TQ3TransformObject Q3ResetTransform_New(void)

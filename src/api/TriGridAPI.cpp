@@ -37,35 +37,25 @@ TQ3Status Q3TriGrid_EmptyData(TQ3TriGridData* triGridData)
 TQ3Status Q3TriGrid_GetVertexPosition(TQ3GeometryObject triGrid, unsigned long rowIndex, unsigned long columnIndex,
                                       TQ3Point3D* position)
 {
-    return getValue<TriGrid>(__func__, triGrid, "triGrid", position, "position",
-                             [&](const TriGrid& g) { return g.vertex(rowIndex, columnIndex).point; });
+    return getVertexPosition<TriGrid>(__func__, triGrid, "triGrid", position, "position", rowIndex, columnIndex);
 }
 
 TQ3Status Q3TriGrid_SetVertexPosition(TQ3GeometryObject triGrid, unsigned long rowIndex, unsigned long columnIndex,
                                       const TQ3Point3D* position)
 {
-    return guardStatus(__func__, [&] {
-        TriGrid& target = lookup<TriGrid>(triGrid, "triGrid");
-        requireNonNull(position, "position");
-        target.setVertexPosition(rowIndex, columnIndex, *position);
-    });
+    return setVertexPosition<TriGrid>(__func__, triGrid, "triGrid", position, "position", rowIndex, columnIndex);
 }
 
 TQ3Status Q3TriGrid_GetVertexAttributeSet(TQ3GeometryObject triGrid, unsigned long rowIndex,
                                           unsigned long columnIndex, TQ3AttributeSet* attributeSet)
 {
-    return getValue<TriGrid>(__func__, triGrid, "triGrid", attributeSet, "attributeSet", [&](const TriGrid& g) {
-        return attributeSetToHandle(heldAttributeSet(g.vertex(rowIndex, columnIndex).attributeSet));
-    });
+    return getVertexAttributeSet<TriGrid>(__func__, triGrid, "triGrid", attributeSet, rowIndex, columnIndex);
 }
 
 TQ3Status Q3TriGrid_SetVertexAttributeSet(TQ3GeometryObject triGrid, unsigned long rowIndex,
                                           unsigned long columnIndex, TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        TriGrid& target = lookup<TriGrid>(triGrid, "triGrid");
-        target.setVertexAttributeSet(rowIndex, columnIndex, attributeSetFromHandle(attributeSet, "attributeSet"));
-    });
+    return setVertexAttributeSet<TriGrid>(__func__, triGrid, "triGrid", attributeSet, rowIndex, columnIndex);
 }
 
 TQ3Status Q3TriGrid_GetFacetAttributeSet(TQ3GeometryObject triGrid, unsigned long faceIndex,

@@ -36,34 +36,24 @@ TQ3Status Q3Triangle_EmptyData(TQ3TriangleData* triangleData)
 
 TQ3Status Q3Triangle_GetVertexPosition(TQ3GeometryObject triangle, unsigned long index, TQ3Point3D* point)
 {
-    return getValue<Triangle>(__func__, triangle, "triangle", point, "point",
-                              [&](const Triangle& t) { return t.vertex(index).point; });
+    return getVertexPosition<Triangle>(__func__, triangle, "triangle", point, "point", index);
 }
 
 TQ3Status Q3Triangle_SetVertexPosition(TQ3GeometryObject triangle, unsigned long index, const TQ3Point3D* point)
 {
-    return guardStatus(__func__, [&] {
-        Triangle& target = lookup<Triangle>(triangle, "triangle");
-        requireNonNull(point, "point");
-        target.setVertexPosition(index, *point);
-    });
+    return setVertexPosition<Triangle>(__func__, triangle, "triangle", point, "point", index);
 }
 
 TQ3Status Q3Triangle_GetVertexAttributeSet(TQ3GeometryObject triangle, unsigned long index,
                                            TQ3AttributeSet* attributeSet)
 {
-    return getValue<Triangle>(__func__, triangle, "triangle", attributeSet, "attributeSet", [&](const Triangle& t) {
-        return attributeSetToHandle(heldAttributeSet(t.vertex(index).attributeSet));
-    });
+    return getVertexAttributeSet<Triangle>(__func__, triangle, "triangle", attributeSet, index);
 }
 
 TQ3Status Q3Triangle_SetVertexAttributeSet(TQ3GeometryObject triangle, unsigned long index,
                                            TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        Triangle& target = lookup<Triangle>(triangle, "triangle");
-        target.setVertexAttributeSet(index, attributeSetFromHandle(attributeSet, "attributeSet"));
-    });
+    return setVertexAttributeSet<Triangle>(__func__, triangle, "triangle", attributeSet, index);
 }
 
 } // extern "C"

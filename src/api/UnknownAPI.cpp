@@ -15,8 +15,7 @@ using namespace q3::api;
 
 TQ3ObjectType Q3Unknown_GetType(TQ3UnknownObject unknownObject)
 {
-    return guard(__func__, TQ3ObjectType{kQ3ObjectTypeInvalid},
-                 [&] { return lookup<UnknownObject>(unknownObject, "unknownObject").leafType(); });
+    return api::getLeafType<UnknownObject>(__func__, unknownObject, "unknownObject");
 }
 
 TQ3Status Q3Unknown_GetDirtyState(TQ3UnknownObject unknownObject, TQ3Boolean* isDirty)

@@ -10,6 +10,9 @@
 // results within one rounding of the exact ones.
 
 #include "QD3D.h"
+#include "core/Error.h"
+
+#include <glm/geometric.hpp>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -83,6 +86,18 @@ inline glm::dvec3 dehomogenize(const glm::dvec4& p)
 {
     const double w = p.w == 0.0 ? 1.0 : p.w;
     return glm::dvec3(p.x / w, p.y / w, p.z / w);
+}
+
+/// The vector scaled to length 1, computed in double; kQ3ErrorVector3DZeroLength
+/// (QuickDraw 3D has no 2-D code) when its length is 0.
+template <class T>
+T normalizedOf(const T& vector)
+{
+    const auto v = toDouble(vector);
+    const double size = glm::length(v);
+    if (size == 0.0)
+        fail(kQ3ErrorVector3DZeroLength, "the vector has length 0, so it has no direction");
+    return toFloat<T>(v / size);
 }
 
 } // namespace q3::math

@@ -105,6 +105,17 @@ void requireFloatEntries(const M& inverse, int size)
                                                       std::to_string(j) + "] is too large for a float");
 }
 
+// The inverse of a QuickDraw 3D matrix of `size` rows, checked as above.
+template <class Q3Matrix>
+Q3Matrix checkedInverse(const Q3Matrix& matrix, int size)
+{
+    const auto m = fromQ3(matrix);
+    requireInvertible(glm::determinant(m));
+    const auto inverse = glm::inverse(m);
+    requireFloatEntries(inverse, size);
+    return toQ3(inverse);
+}
+
 } // namespace
 
 float length(const TQ3Vector3D& vector)
@@ -119,11 +130,7 @@ float distance(const TQ3Point3D& p1, const TQ3Point3D& p2)
 
 TQ3Vector3D normalize(const TQ3Vector3D& vector)
 {
-    const glm::dvec3 v = toDouble(vector);
-    const double size = glm::length(v);
-    if (size == 0.0)
-        fail(kQ3ErrorVector3DZeroLength, "the vector has length 0, so it has no direction");
-    return toFloat<TQ3Vector3D>(v / size);
+    return normalizedOf(vector);
 }
 
 TQ3Vector3D cross(const TQ3Vector3D& v1, const TQ3Vector3D& v2)
@@ -282,11 +289,7 @@ TQ3Matrix4x4 multiply(const TQ3Matrix4x4& a, const TQ3Matrix4x4& b)
 
 TQ3Matrix4x4 invert(const TQ3Matrix4x4& matrix)
 {
-    const Matrix m = fromQ3(matrix);
-    requireInvertible(glm::determinant(m));
-    const Matrix inverse = glm::inverse(m);
-    requireFloatEntries(inverse, 4);
-    return toQ3(inverse);
+    return checkedInverse(matrix, 4);
 }
 
 TQ3Matrix4x4 transpose(const TQ3Matrix4x4& matrix)
@@ -341,11 +344,7 @@ TQ3Matrix3x3 multiply(const TQ3Matrix3x3& a, const TQ3Matrix3x3& b)
 
 TQ3Matrix3x3 invert(const TQ3Matrix3x3& matrix)
 {
-    const Matrix3 m = fromQ3(matrix);
-    requireInvertible(glm::determinant(m));
-    const Matrix3 inverse = glm::inverse(m);
-    requireFloatEntries(inverse, 3);
-    return toQ3(inverse);
+    return checkedInverse(matrix, 3);
 }
 
 // Entry (j, i) of the adjoint is the cofactor of entry (i, j): the 2x2

@@ -65,35 +65,32 @@ struct Strip {
     std::uint32_t count = 0;
 };
 
-/// A bitmap drawn in screen space at the image of one vertex (a marker):
-/// `height` rows of `rowBytes` bytes, top row first; pixel x of a row is bit
-/// x % 8 of byte x / 8, from the most significant bit unless lsbFirst. Its
-/// top left pixel is xOffset pixels right of and yOffset pixels below the
-/// pixel the vertex projects to. Set bits are drawn in the vertex's colour.
-struct ScreenBitmap {
+/// The placement and size of an image drawn in screen space at the image of
+/// one vertex: `height` rows of `rowBytes` bytes, top row first. Its top
+/// left pixel is xOffset pixels right of and yOffset pixels below the pixel
+/// the vertex projects to.
+struct ScreenImage {
     std::uint32_t vertex = 0;
     long xOffset = 0;
     long yOffset = 0;
     std::uint32_t width = 0;
     std::uint32_t height = 0;
     std::size_t rowBytes = 0;
+};
+
+/// A bitmap (a marker): pixel x of a row is bit x % 8 of byte x / 8, from
+/// the most significant bit unless lsbFirst. Set bits are drawn in the
+/// vertex's colour.
+struct ScreenBitmap : ScreenImage {
     const unsigned char* bits = nullptr;
     bool lsbFirst = false;
 };
 
-/// A colour image drawn in screen space at the image of one vertex (a pixmap
-/// marker): `height` rows of `rowBytes` bytes, top row first, each pixel a
-/// word of pixelType's layout (QD3DDrawContext.h) stored in byteOrder. Its
-/// top left pixel is xOffset pixels right of and yOffset pixels below the
-/// pixel the vertex projects to. Pixels keep their own colours; one whose
-/// alpha is 0 is not drawn. The fields are valid (PixmapMarker's rules).
-struct ScreenPixmap {
-    std::uint32_t vertex = 0;
-    long xOffset = 0;
-    long yOffset = 0;
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-    std::size_t rowBytes = 0;
+/// A colour image (a pixmap marker): each pixel a word of pixelType's layout
+/// (QD3DDrawContext.h) stored in byteOrder. Pixels keep their own colours;
+/// one whose alpha is 0 is not drawn. The fields are valid (PixmapMarker's
+/// rules).
+struct ScreenPixmap : ScreenImage {
     TQ3PixelType pixelType = kQ3PixelTypeARGB32;
     TQ3Endian byteOrder = kQ3EndianBig;
     const unsigned char* bytes = nullptr;

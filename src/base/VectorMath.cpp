@@ -67,11 +67,7 @@ float length(const TQ3Vector2D& vector)
 
 TQ3Vector2D normalize(const TQ3Vector2D& vector)
 {
-    const glm::dvec2 v = toDouble(vector);
-    const double size = glm::length(v);
-    if (size == 0.0)
-        fail(kQ3ErrorVector3DZeroLength, "the vector has length 0, so it has no direction");
-    return toFloat<TQ3Vector2D>(v / size);
+    return normalizedOf(vector);
 }
 
 float dot(const TQ3Vector2D& v1, const TQ3Vector2D& v2)

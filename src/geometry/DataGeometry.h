@@ -35,7 +35,10 @@
 #include "geometry/Geometry.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace q3 {
 
@@ -116,6 +119,20 @@ protected:
     Data& editableData() { return m_data; }
     /// True for an immediate-mode geometry (BorrowData).
     bool borrowed() const { return m_borrowed; }
+    /// Draws into `sink`, with the geometry's attribute set, the mesh of
+    /// `count` vertices with their own attributes joined by what `connect`
+    /// adds to it: cached under the edit indices of the vertices' sets.
+    void drawVertexMesh(const TQ3Vertex3D* vertices, std::size_t count, const std::function<void(Mesh&)>& connect,
+                        PrimitiveSink& sink) const;
+    /// Draws into `sink`, with the geometry's attribute set, `mesh` (whose
+    /// point, bitmap or pixmap the caller has set) as its one vertex at
+    /// `position`.
+    void drawAt(const TQ3Point3D& position, MeshView& mesh, PrimitiveSink& sink) const
+    {
+        mesh.positions = &position.x;
+        mesh.vertexCount = 1;
+        sink.draw(mesh, attributeSet());
+    }
 
 private:
     Data m_data;
@@ -148,6 +165,21 @@ std::uint32_t addVertices(Mesh& mesh, const TQ3Vertex3D* vertices, std::size_t c
 /// One vertex with its own attributes over those of the part it belongs to
 /// (a face's or an edge's set; null for none); returns its index.
 std::uint32_t addVertex(Mesh& mesh, const TQ3Vertex3D& vertex, const AttributeSet* part);
+
+template <class Derived, class Data>
+void DataGeometry<Derived, Data>::drawVertexMesh(const TQ3Vertex3D* vertices, std::size_t count,
+                                                 const std::function<void(Mesh&)>& connect, PrimitiveSink& sink) const
+{
+    std::vector<double> key;
+    appendVertexSetKeys(key, vertices, count);
+    withMesh(
+        std::move(key),
+        [&](Mesh& mesh) {
+            addVertices(mesh, vertices, count);
+            connect(mesh);
+        },
+        [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
+}
 
 /// kQ3ErrorParameterOutOfRange unless index < count; `what` names the index
 /// ("vertex index") and `owner` the geometry ("the triangle") in the message.

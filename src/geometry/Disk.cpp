@@ -12,9 +12,7 @@ template class DataGeometry<Disk, TQ3DiskData>;
 
 void Disk::check(const TQ3DiskData& d)
 {
-    requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius});
-    requireUnitParameter(d.uMin, "uMin");
-    requireUnitParameter(d.uMax, "uMax");
+    checkEllipseData(d);
     requireUnitParameter(d.vMin, "vMin");
     requireUnitParameter(d.vMax, "vMax");
     requireOrdered(d.vMin, d.vMax, "vMin", "vMax");

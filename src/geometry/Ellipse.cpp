@@ -12,9 +12,7 @@ template class DataGeometry<Ellipse, TQ3EllipseData>;
 
 void Ellipse::check(const TQ3EllipseData& d)
 {
-    requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius});
-    requireUnitParameter(d.uMin, "uMin");
-    requireUnitParameter(d.uMax, "uMax");
+    checkEllipseData(d);
 }
 
 std::string Ellipse::degeneracy(const TQ3EllipseData& d)

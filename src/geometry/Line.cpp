@@ -12,16 +12,7 @@ template class DataGeometry<Line, TQ3LineData>;
 
 void Line::decompose(const DecomposeContext&, PrimitiveSink& sink) const
 {
-    const TQ3Vertex3D* ends = data().vertices;
-    std::vector<double> key;
-    appendVertexSetKeys(key, ends, 2);
-    withMesh(
-        std::move(key),
-        [&](Mesh& mesh) {
-            addVertices(mesh, ends, 2);
-            mesh.addLine(0, 1);
-        },
-        [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
+    drawVertexMesh(data().vertices, 2, [](Mesh& mesh) { mesh.addLine(0, 1); }, sink);
 }
 
 void Line::checkEnd(unsigned long index)

@@ -71,11 +71,9 @@ void Marker::decompose(const DecomposeContext&, PrimitiveSink& sink) const
     bitmap.bits = d.bitmap.image;
     bitmap.lsbFirst = enumValue(d.bitmap.bitOrder) == kQ3EndianLittle;
     MeshView mesh;
-    mesh.positions = &d.location.x;
-    mesh.vertexCount = 1;
     mesh.bitmaps = &bitmap;
     mesh.bitmapCount = 1;
-    sink.draw(mesh, attributeSet());
+    drawAt(d.location, mesh, sink);
 }
 
 void Marker::setPosition(const TQ3Point3D& location)

@@ -113,11 +113,9 @@ void PixmapMarker::decompose(const DecomposeContext&, PrimitiveSink& sink) const
     pixmap.byteOrder = d.pixmap.byteOrder;
     pixmap.bytes = pixels.data();
     MeshView mesh;
-    mesh.positions = &d.position.x;
-    mesh.vertexCount = 1;
     mesh.pixmaps = &pixmap;
     mesh.pixmapCount = 1;
-    sink.draw(mesh, attributeSet());
+    drawAt(d.position, mesh, sink);
 }
 
 void PixmapMarker::bound(const DecomposeContext&, std::vector<glm::dvec3>& points) const

@@ -14,11 +14,9 @@ void Point::decompose(const DecomposeContext&, PrimitiveSink& sink) const
 {
     static const std::uint32_t kFirst = 0;
     MeshView mesh;
-    mesh.positions = &data().point.x;
-    mesh.vertexCount = 1;
     mesh.points = &kFirst;
     mesh.pointCount = 1;
-    sink.draw(mesh, attributeSet());
+    drawAt(data().point, mesh, sink);
 }
 
 void Point::setPosition(const TQ3Point3D& position)

@@ -99,6 +99,16 @@ std::string buildSurface(Mesh& mesh, const quadric::Patches& patches, const Subd
 void ellipseBoxCorners(const quadric::Vec3& centre, const quadric::Vec3& x, const quadric::Vec3& y,
                        std::vector<glm::dvec3>& points);
 
+/// The rules an ellipse and a disk share (TQ3EllipseData, TQ3DiskData: the
+/// same leading fields), in QD3DGeometry.h's order: the frame within float's
+/// range, then uMin and uMax in 0 to 1.
+template <class D> void checkEllipseData(const D& d)
+{
+    requireWithinFloatRange(d.origin, {d.majorRadius, d.minorRadius});
+    requireUnitParameter(d.uMin, "uMin");
+    requireUnitParameter(d.uMax, "uMax");
+}
+
 /// The rules of the shapes revolved around an orientation (TQ3ConeData,
 /// TQ3CylinderData, TQ3EllipsoidData: the same fields), in QD3DGeometry.h's
 /// order, after their descriptions have found every float finite.

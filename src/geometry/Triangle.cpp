@@ -12,17 +12,13 @@ template class DataGeometry<Triangle, TQ3TriangleData>;
 
 void Triangle::decompose(const DecomposeContext&, PrimitiveSink& sink) const
 {
-    const TQ3Vertex3D* corners = data().vertices;
-    std::vector<double> key;
-    appendVertexSetKeys(key, corners, 3);
-    withMesh(
-        std::move(key),
-        [&](Mesh& mesh) {
-            addVertices(mesh, corners, 3);
+    drawVertexMesh(
+        data().vertices, 3,
+        [](Mesh& mesh) {
             mesh.addTriangle(0, 1, 2);
             mesh.edgesFromTriangles();
         },
-        [&](const Mesh& mesh) { sink.draw(mesh.view(), attributeSet()); });
+        sink);
 }
 
 const TQ3Vertex3D& Triangle::vertex(unsigned long index) const

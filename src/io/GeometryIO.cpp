@@ -76,31 +76,17 @@ void writeIndex(Encoder& out, std::size_t bytes, std::uint32_t index)
 
 constexpr TQ3ObjectType kTypeAttributeArray = Q3_OBJECT_TYPE('a', 't', 'a', 'r');
 
-// Words (floats, or one 32-bit switch) of one value of an attribute type;
-// none for the surface shader, whose values are objects after the array.
+// Words (floats, or one 32-bit switch) of one value of an attribute type,
+// as the attribute set stores it; none for the surface shader, whose values
+// are objects after the array.
 std::size_t wordsOf(TQ3AttributeType type)
 {
-    switch (type) {
-    case kQ3AttributeTypeSurfaceShader:
-        return 0;
-    case kQ3AttributeTypeSurfaceUV:
-    case kQ3AttributeTypeShadingUV:
-        return 2;
-    case kQ3AttributeTypeNormal:
-    case kQ3AttributeTypeDiffuseColor:
-    case kQ3AttributeTypeSpecularColor:
-    case kQ3AttributeTypeTransparencyColor:
-        return 3;
-    case kQ3AttributeTypeAmbientCoefficient:
-    case kQ3AttributeTypeSpecularControl:
-    case kQ3AttributeTypeHighlightState:
-        return 1;
-    case kQ3AttributeTypeSurfaceTangent:
-        return 6;
-    default:
+    if (type < Set::kFirstType || type > Set::kLastStoredType)
         fail(kQ3ErrorInvalidMetafileObject,
              "a TriMesh attribute array of type " + std::to_string(type) + ", which Q3 does not store");
-    }
+    if (type == kQ3AttributeTypeSurfaceShader)
+        return 0;
+    return Set::dataSize(type) / sizeof(std::uint32_t);
 }
 
 struct ArrayStore {

@@ -138,29 +138,11 @@ void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type,
     out.end();
 }
 
-void writePlainGroup(WriteContext& c, const Object& o)
+// The writer of a group of class `Type`, under the text name of its row.
+template <TQ3ObjectType Type>
+void writeGroupOf(WriteContext& context, const Object& object)
 {
-    writeGroup(c, o, kQ3ShapeTypeGroup, "Group");
-}
-void writeDisplayGroup(WriteContext& c, const Object& o)
-{
-    writeGroup(c, o, kQ3GroupTypeDisplay, "DisplayGroup");
-}
-void writeOrderedGroup(WriteContext& c, const Object& o)
-{
-    writeGroup(c, o, kQ3DisplayGroupTypeOrdered, "OrderedDisplayGroup");
-}
-void writeIOProxyGroup(WriteContext& c, const Object& o)
-{
-    writeGroup(c, o, kQ3DisplayGroupTypeIOProxy, "IOProxyDisplayGroup");
-}
-void writeLightGroup(WriteContext& c, const Object& o)
-{
-    writeGroup(c, o, kQ3GroupTypeLight, "LightGroup");
-}
-void writeInfoGroup(WriteContext& c, const Object& o)
-{
-    writeGroup(c, o, kQ3GroupTypeInfo, "InfoGroup");
+    writeGroup(context, object, Type, classOfType(Type)->name);
 }
 
 Ref<SharedObject> readUnknownTag(ReadContext&, const Parts& parts)
@@ -225,18 +207,18 @@ void addGroupClasses(std::vector<ClassIO>& table)
 {
     table.insert(table.end(),
                  {
-                     {kQ3ShapeTypeGroup, "Group", readGroup<Group>, writePlainGroup},
+                     {kQ3ShapeTypeGroup, "Group", readGroup<Group>, writeGroupOf<kQ3ShapeTypeGroup>},
                      // Apple's 1995 metafile parser (MF3D, kMF3DObjGroup)
                      // types a plain group 'grop'; QD3D.h's kQ3ShapeTypeGroup
                      // is 'grup', which Q3 writes. Read both.
-                     {Q3_OBJECT_TYPE('g', 'r', 'o', 'p'), "Group", readGroup<Group>, writePlainGroup},
-                     {kQ3GroupTypeDisplay, "DisplayGroup", readGroup<DisplayGroup>, writeDisplayGroup},
+                     {Q3_OBJECT_TYPE('g', 'r', 'o', 'p'), "Group", readGroup<Group>, writeGroupOf<kQ3ShapeTypeGroup>},
+                     {kQ3GroupTypeDisplay, "DisplayGroup", readGroup<DisplayGroup>, writeGroupOf<kQ3GroupTypeDisplay>},
                      {kQ3DisplayGroupTypeOrdered, "OrderedDisplayGroup", readGroup<OrderedDisplayGroup>,
-                      writeOrderedGroup},
+                      writeGroupOf<kQ3DisplayGroupTypeOrdered>},
                      {kQ3DisplayGroupTypeIOProxy, "IOProxyDisplayGroup", readGroup<IOProxyDisplayGroup>,
-                      writeIOProxyGroup},
-                     {kQ3GroupTypeLight, "LightGroup", readGroup<LightGroup>, writeLightGroup},
-                     {kQ3GroupTypeInfo, "InfoGroup", readGroup<InfoGroup>, writeInfoGroup},
+                      writeGroupOf<kQ3DisplayGroupTypeIOProxy>},
+                     {kQ3GroupTypeLight, "LightGroup", readGroup<LightGroup>, writeGroupOf<kQ3GroupTypeLight>},
+                     {kQ3GroupTypeInfo, "InfoGroup", readGroup<InfoGroup>, writeGroupOf<kQ3GroupTypeInfo>},
                      {kTypeGroupState, "DisplayGroupState", refuseState, [](WriteContext&, const Object&) {}},
                      {kQ3UnknownTypeText, "UnknownText", readUnknownTag, writeUnknownText},
                      {kQ3UnknownTypeBinary, "UnknownBinary", readUnknownTag, writeUnknownBinary},

@@ -756,49 +756,31 @@ std::string DataReader::rawData(std::size_t n)
     return out;
 }
 
+// A braced list evaluates its elements in order, so the fields are read in
+// the file's order.
 TQ3Point3D DataReader::point3D()
 {
-    TQ3Point3D p;
-    p.x = f32();
-    p.y = f32();
-    p.z = f32();
-    return p;
+    return {f32(), f32(), f32()};
 }
 
 TQ3Vector3D DataReader::vector3D()
 {
-    TQ3Vector3D v;
-    v.x = f32();
-    v.y = f32();
-    v.z = f32();
-    return v;
+    return {f32(), f32(), f32()};
 }
 
 TQ3ColorRGB DataReader::color()
 {
-    TQ3ColorRGB c;
-    c.r = f32();
-    c.g = f32();
-    c.b = f32();
-    return c;
+    return {f32(), f32(), f32()};
 }
 
 TQ3Param2D DataReader::param2D()
 {
-    TQ3Param2D p;
-    p.u = f32();
-    p.v = f32();
-    return p;
+    return {f32(), f32()};
 }
 
 TQ3RationalPoint4D DataReader::point4D()
 {
-    TQ3RationalPoint4D p;
-    p.x = f32();
-    p.y = f32();
-    p.z = f32();
-    p.w = f32();
-    return p;
+    return {f32(), f32(), f32(), f32()};
 }
 
 std::uint32_t DataReader::choice(const std::vector<std::pair<const char*, std::uint32_t>>& names)
@@ -1098,37 +1080,32 @@ void Encoder::newLine()
 
 void Encoder::point3D(const TQ3Point3D& p)
 {
-    f32(p.x);
-    f32(p.y);
-    f32(p.z);
+    for (const float f : {p.x, p.y, p.z})
+        f32(f);
 }
 
 void Encoder::vector3D(const TQ3Vector3D& v)
 {
-    f32(v.x);
-    f32(v.y);
-    f32(v.z);
+    for (const float f : {v.x, v.y, v.z})
+        f32(f);
 }
 
 void Encoder::color(const TQ3ColorRGB& c)
 {
-    f32(c.r);
-    f32(c.g);
-    f32(c.b);
+    for (const float f : {c.r, c.g, c.b})
+        f32(f);
 }
 
 void Encoder::param2D(const TQ3Param2D& p)
 {
-    f32(p.u);
-    f32(p.v);
+    for (const float f : {p.u, p.v})
+        f32(f);
 }
 
 void Encoder::point4D(const TQ3RationalPoint4D& p)
 {
-    f32(p.x);
-    f32(p.y);
-    f32(p.z);
-    f32(p.w);
+    for (const float f : {p.x, p.y, p.z, p.w})
+        f32(f);
 }
 
 void Encoder::choice(const std::vector<std::pair<const char*, std::uint32_t>>& names, std::uint32_t value)

@@ -15,6 +15,7 @@
 
 #include "io/ClassIO.h"
 #include "io/GeometryIOSupport.h"
+#include "io/PixmapIO.h"
 
 #include "geometry/PixmapMarker.h"
 #include "base/Storage.h"
@@ -26,12 +27,6 @@
 namespace q3::io {
 namespace {
 
-const std::vector<std::pair<const char*, std::uint32_t>> kPixelTypes = {
-    {"RGB32", kQ3PixelTypeRGB32},   {"ARGB32", kQ3PixelTypeARGB32},       {"RGB16", kQ3PixelTypeRGB16},
-    {"ARGB16", kQ3PixelTypeARGB16}, {"RGB16_565", kQ3PixelTypeRGB16_565}, {"RGB24", kQ3PixelTypeRGB24}};
-const std::vector<std::pair<const char*, std::uint32_t>> kEndians = {{"BigEndian", kQ3EndianBig},
-                                                                     {"LittleEndian", kQ3EndianLittle}};
-
 Ref<SharedObject> readPixmapMarker(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
@@ -40,22 +35,10 @@ Ref<SharedObject> readPixmapMarker(ReadContext& context, const Parts& parts)
     data.xOffset = in.i32();
     data.yOffset = in.i32();
     TQ3StoragePixmap& pixmap = data.pixmap;
-    pixmap.width = in.u32();
-    pixmap.height = in.u32();
-    pixmap.rowBytes = in.u32();
-    pixmap.pixelSize = in.u32();
-    pixmap.pixelType = static_cast<TQ3PixelType>(in.choice(kPixelTypes));
-    pixmap.bitOrder = static_cast<TQ3Endian>(in.choice(kEndians));
-    pixmap.byteOrder = static_cast<TQ3Endian>(in.choice(kEndians));
-    const std::uint64_t size = std::uint64_t{pixmap.height} * pixmap.rowBytes;
-    // Refuses an image larger than the API allows or than the binary data
-    // holds before anything is allocated; in text, rawData checks the token.
-    in.requireRoom(size, 1, 0, "image bytes");
-    const std::string image = in.rawData(static_cast<std::size_t>(size));
+    const std::string image = readPixmapFields(in, pixmap);
     if (!in.atEnd())
         fail(kQ3ErrorInvalidMetafileObject, "a PixmapMarker has more data than its image");
-    Ref<MemoryStorage> storage =
-        makeShared<MemoryStorage>(reinterpret_cast<const unsigned char*>(image.data()), image.size());
+    Ref<MemoryStorage> storage = storageOf(image);
     pixmap.image = storage.get();
     Ref<AttributeSet> own = context.attributeSet(parts);
     data.pixmapMarkerAttributeSet = own.get();
@@ -80,14 +63,7 @@ void writePixmapMarker(WriteContext& context, const Object& object)
         out.point3D(data.position);
         out.i32(static_cast<std::int32_t>(data.xOffset));
         out.i32(static_cast<std::int32_t>(data.yOffset));
-        out.u32(static_cast<std::uint32_t>(pixmap.width));
-        out.u32(static_cast<std::uint32_t>(pixmap.height));
-        out.u32(static_cast<std::uint32_t>(pixmap.rowBytes));
-        out.u32(static_cast<std::uint32_t>(pixmap.pixelSize));
-        out.choice(kPixelTypes, static_cast<std::uint32_t>(pixmap.pixelType));
-        out.choice(kEndians, static_cast<std::uint32_t>(pixmap.bitOrder));
-        out.choice(kEndians, static_cast<std::uint32_t>(pixmap.byteOrder));
-        out.rawData(image.data(), image.size());
+        writePixmapFields(out, pixmap, image);
         out.end();
         context.attributeSet(own);
     });

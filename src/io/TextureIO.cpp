@@ -23,6 +23,7 @@
 // class's checks, so a file cannot make a texture the API would refuse.
 
 #include "io/ClassIO.h"
+#include "io/PixmapIO.h"
 
 #include "core/Limits.h"
 #include "base/Storage.h"
@@ -40,11 +41,6 @@ namespace {
 constexpr TQ3ObjectType kTypeShaderData = Q3_OBJECT_TYPE('s', 'h', 'd', 'r');
 constexpr TQ3ObjectType kTypeShaderUVTransform = Q3_OBJECT_TYPE('s', 'd', 'u', 'v');
 
-const std::vector<std::pair<const char*, std::uint32_t>> kPixelTypes = {
-    {"RGB32", kQ3PixelTypeRGB32},   {"ARGB32", kQ3PixelTypeARGB32},       {"RGB16", kQ3PixelTypeRGB16},
-    {"ARGB16", kQ3PixelTypeARGB16}, {"RGB16_565", kQ3PixelTypeRGB16_565}, {"RGB24", kQ3PixelTypeRGB24}};
-const std::vector<std::pair<const char*, std::uint32_t>> kEndians = {{"BigEndian", kQ3EndianBig},
-                                                                     {"LittleEndian", kQ3EndianLittle}};
 const std::vector<std::pair<const char*, std::uint32_t>> kBooleans = {{"False", kQ3False}, {"True", kQ3True}};
 const std::vector<std::pair<const char*, std::uint32_t>> kBoundaries = {{"Wrap", kQ3ShaderUVBoundaryWrap},
                                                                         {"Clamp", kQ3ShaderUVBoundaryClamp}};
@@ -71,11 +67,6 @@ Ref<SharedObject> build(const char* what, const Data& data)
     }
 }
 
-Ref<MemoryStorage> storageOf(const std::string& bytes)
-{
-    return makeShared<MemoryStorage>(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
-}
-
 // `size` bytes of a texture's storage from `offset`.
 std::vector<unsigned char> readStorage(TQ3StorageObject image, std::size_t offset, std::size_t size)
 {
@@ -90,17 +81,7 @@ Ref<SharedObject> readPixmapTexture(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
     TQ3StoragePixmap pixmap{};
-    pixmap.width = in.u32();
-    pixmap.height = in.u32();
-    pixmap.rowBytes = in.u32();
-    pixmap.pixelSize = in.u32();
-    pixmap.pixelType = static_cast<TQ3PixelType>(in.choice(kPixelTypes));
-    pixmap.bitOrder = static_cast<TQ3Endian>(in.choice(kEndians));
-    pixmap.byteOrder = static_cast<TQ3Endian>(in.choice(kEndians));
-    const std::uint64_t size = std::uint64_t{pixmap.height} * pixmap.rowBytes;
-    // Refused before anything is allocated when the data cannot hold it.
-    in.requireRoom(size, 1, 0, "image bytes");
-    const std::string image = in.rawData(static_cast<std::size_t>(size));
+    const std::string image = readPixmapFields(in, pixmap);
     requireEnd(in, "PixmapTexture");
     Ref<MemoryStorage> storage = storageOf(image);
     pixmap.image = storage.get();
@@ -114,14 +95,7 @@ void writePixmapTexture(WriteContext& context, const Object& object)
     const std::vector<unsigned char> image = readStorage(pixmap.image, 0, std::size_t{pixmap.rowBytes} * pixmap.height);
     Encoder& out = context.out();
     out.begin(kQ3TextureTypePixmap, "PixmapTexture");
-    out.u32(static_cast<std::uint32_t>(pixmap.width));
-    out.u32(static_cast<std::uint32_t>(pixmap.height));
-    out.u32(static_cast<std::uint32_t>(pixmap.rowBytes));
-    out.u32(static_cast<std::uint32_t>(pixmap.pixelSize));
-    out.choice(kPixelTypes, static_cast<std::uint32_t>(pixmap.pixelType));
-    out.choice(kEndians, static_cast<std::uint32_t>(pixmap.bitOrder));
-    out.choice(kEndians, static_cast<std::uint32_t>(pixmap.byteOrder));
-    out.rawData(image.data(), image.size());
+    writePixmapFields(out, pixmap, image);
     out.end();
 }
 

@@ -10,9 +10,7 @@ const ClassInfo kDirectionalLightClass{kQ3LightTypeDirectional, &kLightClass, "d
 
 TQ3DirectionalLightData DirectionalLight::check(const TQ3DirectionalLightData& data)
 {
-    TQ3DirectionalLightData result;
-    result.lightData = checkLightData(data.lightData);
-    result.castsShadows = booleanOf(data.castsShadows);
+    TQ3DirectionalLightData result = checkedShadowingLight(data);
     result.direction = checkDirection(data.direction);
     return result;
 }

@@ -16,4 +16,27 @@ TQ3AttenuationType checkAttenuation(const TQ3AttenuationType& attenuation);
 /// The source's type and the values of the common part.
 LightSource commonSource(TQ3ObjectType type, const TQ3LightData& data);
 
+/// The checked fields every light with a direction or a position starts
+/// with: lightData and castsShadows. The rest is left for the caller.
+template <class Data>
+Data checkedShadowingLight(const Data& data)
+{
+    Data result;
+    result.lightData = checkLightData(data.lightData);
+    result.castsShadows = booleanOf(data.castsShadows);
+    return result;
+}
+
+/// The same and the fields of a light at a position (a point or spot
+/// light): attenuation, then location.
+template <class Data>
+Data checkedPositionalLight(const Data& data)
+{
+    Data result = checkedShadowingLight(data);
+    result.attenuation = checkAttenuation(data.attenuation);
+    checkFinite(data.location, "location");
+    result.location = data.location;
+    return result;
+}
+
 } // namespace q3

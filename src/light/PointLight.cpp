@@ -10,13 +10,7 @@ const ClassInfo kPointLightClass{kQ3LightTypePoint, &kLightClass, "point light"}
 
 TQ3PointLightData PointLight::check(const TQ3PointLightData& data)
 {
-    TQ3PointLightData result;
-    result.lightData = checkLightData(data.lightData);
-    result.castsShadows = booleanOf(data.castsShadows);
-    result.attenuation = checkAttenuation(data.attenuation);
-    checkFinite(data.location, "location");
-    result.location = data.location;
-    return result;
+    return checkedPositionalLight(data);
 }
 
 LightSource PointLight::source() const

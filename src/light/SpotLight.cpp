@@ -28,12 +28,7 @@ void checkAngle(float angle, const char* name)
 
 TQ3SpotLightData SpotLight::check(const TQ3SpotLightData& data)
 {
-    TQ3SpotLightData result;
-    result.lightData = checkLightData(data.lightData);
-    result.castsShadows = booleanOf(data.castsShadows);
-    result.attenuation = checkAttenuation(data.attenuation);
-    checkFinite(data.location, "location");
-    result.location = data.location;
+    TQ3SpotLightData result = checkedPositionalLight(data);
     result.direction = checkDirection(data.direction);
     checkAngle(data.hotAngle, "hotAngle");
     checkAngle(data.outerAngle, "outerAngle");

@@ -259,32 +259,46 @@ RenderResult currentContext(CurrentContext& current)
     return RenderResult::success();
 }
 
-/// Sets four pixel-store parameters and puts the previous values back.
+/// The pixel-store parameters of one direction: reading pixels back (pack)
+/// or sending them (unpack), and the buffer binding that would redirect them.
+struct PixelStore {
+    GLenum bufferBinding;
+    GLenum buffer;
+    GLenum names[4]; ///< alignment, row length, skip rows, skip pixels
+};
+constexpr PixelStore kPack{GL_PIXEL_PACK_BUFFER_BINDING,
+                           GL_PIXEL_PACK_BUFFER,
+                           {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS}};
+constexpr PixelStore kUnpack{GL_PIXEL_UNPACK_BUFFER_BINDING,
+                             GL_PIXEL_UNPACK_BUFFER,
+                             {GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS}};
+
+/// Sets one direction's pixel store to tightly packed rows of the client's
+/// memory (alignment 4, no row length, no skips, no buffer bound) and puts
+/// the previous values back.
 class PixelStoreScope {
 public:
-    PixelStoreScope(GLenum bufferBinding, GLenum buffer, const GLenum (&names)[4], const GLint (&values)[4])
-        : m_buffer(buffer), m_savedBuffer(integer(bufferBinding))
+    explicit PixelStoreScope(const PixelStore& store) : m_store(store), m_savedBuffer(integer(store.bufferBinding))
     {
+        const GLint values[4] = {4, 0, 0, 0};
         for (int i = 0; i < 4; ++i) {
-            m_names[i] = names[i];
-            m_saved[i] = integer(names[i]);
-            glPixelStorei(names[i], values[i]);
+            m_saved[i] = integer(store.names[i]);
+            glPixelStorei(store.names[i], values[i]);
         }
-        glBindBuffer(buffer, 0);
+        glBindBuffer(store.buffer, 0);
     }
     ~PixelStoreScope()
     {
-        glBindBuffer(m_buffer, GLuint(m_savedBuffer));
+        glBindBuffer(m_store.buffer, GLuint(m_savedBuffer));
         for (int i = 3; i >= 0; --i)
-            glPixelStorei(m_names[i], m_saved[i]);
+            glPixelStorei(m_store.names[i], m_saved[i]);
     }
     PixelStoreScope(const PixelStoreScope&) = delete;
     PixelStoreScope& operator=(const PixelStoreScope&) = delete;
 
 private:
-    GLenum m_buffer;
+    const PixelStore& m_store;
     GLint m_savedBuffer;
-    GLenum m_names[4];
     GLint m_saved[4];
 };
 
@@ -391,10 +405,7 @@ RenderResult readGlFramebuffer(const PixelRect& rect, std::uint32_t framebufferH
             if (glCheckFramebufferStatus(GL_READ_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
                 result = contextFailure("the bound framebuffer is not complete");
             } else {
-                const GLenum names[4] = {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,
-                                         GL_PACK_SKIP_PIXELS};
-                const GLint values[4] = {4, 0, 0, 0};
-                PixelStoreScope store(GL_PIXEL_PACK_BUFFER_BINDING, GL_PIXEL_PACK_BUFFER, names, values);
+                const PixelStoreScope store(kPack);
                 glReadPixels(rect.x, glBottom(rect, framebufferHeight), rect.width, rect.height, GL_RGBA,
                              GL_UNSIGNED_BYTE, rgba.data());
             }
@@ -440,10 +451,7 @@ RenderResult writeGlFramebuffer(const PixelRect& rect, std::uint32_t framebuffer
     glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_2D, texture);
     {
-        const GLenum names[4] = {GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS,
-                                 GL_UNPACK_SKIP_PIXELS};
-        const GLint values[4] = {4, 0, 0, 0};
-        PixelStoreScope store(GL_PIXEL_UNPACK_BUFFER_BINDING, GL_PIXEL_UNPACK_BUFFER, names, values);
+        const PixelStoreScope store(kUnpack);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rect.width, rect.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                      rgba.data());
     }

@@ -195,119 +195,135 @@ RenderResult windowAttributes(const XlibApi& api, Display* display, Window windo
     return RenderResult::success();
 }
 
-} // namespace
+// A window opened for one request: its display, the attributes Q3 checked,
+// and the red, green and blue channels of its visual.
+struct OpenWindow {
+    const XlibApi& api;
+    Display* display;
+    Window drawable;
+    const XWindowAttributes& attributes;
+    ErrorTrap& trap;
 
-RenderResult windowSize(const NativeWindow& window, std::uint32_t& width, std::uint32_t& height)
+    Channel red() const { return Channel(attributes.visual->red_mask); }
+    Channel green() const { return Channel(attributes.visual->green_mask); }
+    Channel blue() const { return Channel(attributes.visual->blue_mask); }
+};
+
+// Opens the window the way every request does: the library, then (when a
+// rect is given) nothing to do for an empty one, then the error trap and
+// the window's attributes; runs use(OpenWindow&) while the trap is set.
+template <class Use>
+RenderResult withWindow(const NativeWindow& window, const PixelRect* rect, Use&& use)
 {
     const XlibApi* api = xlib();
     if (api == nullptr)
         return missingLibrary();
+    if (rect != nullptr && (rect->width <= 0 || rect->height <= 0))
+        return RenderResult::success();
     Display* display = static_cast<Display*>(window.display);
     ErrorTrap trap(*api, display);
     XWindowAttributes attributes{};
-    RenderResult result = windowAttributes(*api, display, window.drawable, attributes, trap);
+    const RenderResult result = windowAttributes(*api, display, window.drawable, attributes, trap);
     if (!result)
         return result;
-    width = std::uint32_t(attributes.width);
-    height = std::uint32_t(attributes.height);
-    return RenderResult::success();
+    OpenWindow open{*api, display, window.drawable, attributes, trap};
+    return use(open);
+}
+
+} // namespace
+
+RenderResult windowSize(const NativeWindow& window, std::uint32_t& width, std::uint32_t& height)
+{
+    return withWindow(window, nullptr, [&](OpenWindow& open) {
+        width = std::uint32_t(open.attributes.width);
+        height = std::uint32_t(open.attributes.height);
+        return RenderResult::success();
+    });
 }
 
 RenderResult readWindow(const NativeWindow& window, const PixelRect& rect, std::uint32_t* pixels,
                         std::size_t rowPixels)
 {
-    const XlibApi* api = xlib();
-    if (api == nullptr)
-        return missingLibrary();
-    if (rect.width <= 0 || rect.height <= 0)
-        return RenderResult::success();
-    Display* display = static_cast<Display*>(window.display);
-    ErrorTrap trap(*api, display);
-    XWindowAttributes attributes{};
-    RenderResult result = windowAttributes(*api, display, window.drawable, attributes, trap);
-    if (!result)
-        return result;
-    XImage* image = api->getImage(display, window.drawable, rect.x, rect.y, unsigned(rect.width),
-                                  unsigned(rect.height), AllPlanes, ZPixmap);
-    result = trap.check("XGetImage");
-    if (!result || image == nullptr) {
-        if (image != nullptr)
-            XDestroyImage(image);
-        return result ? RenderResult::failure(RenderStatus::kContextFailure, "XGetImage returned nothing")
-                      : result;
-    }
-    const Channel red(attributes.visual->red_mask), green(attributes.visual->green_mask),
-        blue(attributes.visual->blue_mask);
-    for (int y = 0; y < rect.height; ++y)
-        for (int x = 0; x < rect.width; ++x) {
-            const unsigned long pixel = XGetPixel(image, x, y);
-            pixels[std::size_t(rect.y + y) * rowPixels + std::size_t(rect.x + x)] =
-                red.decode(pixel) << 16 | green.decode(pixel) << 8 | blue.decode(pixel);
+    return withWindow(window, &rect, [&](OpenWindow& open) {
+        XImage* image = open.api.getImage(open.display, open.drawable, rect.x, rect.y, unsigned(rect.width),
+                                          unsigned(rect.height), AllPlanes, ZPixmap);
+        const RenderResult result = open.trap.check("XGetImage");
+        if (!result || image == nullptr) {
+            if (image != nullptr)
+                XDestroyImage(image);
+            return result ? RenderResult::failure(RenderStatus::kContextFailure, "XGetImage returned nothing")
+                          : result;
         }
-    XDestroyImage(image);
-    return RenderResult::success();
+        const Channel red = open.red(), green = open.green(), blue = open.blue();
+        for (int y = 0; y < rect.height; ++y)
+            for (int x = 0; x < rect.width; ++x) {
+                const unsigned long pixel = XGetPixel(image, x, y);
+                pixels[std::size_t(rect.y + y) * rowPixels + std::size_t(rect.x + x)] =
+                    red.decode(pixel) << 16 | green.decode(pixel) << 8 | blue.decode(pixel);
+            }
+        XDestroyImage(image);
+        return RenderResult::success();
+    });
 }
+
+namespace {
+
+// Sends `image` to the rect's place in the window.
+void sendImage(OpenWindow& open, XImage* image, const PixelRect& rect)
+{
+    GC gc = open.api.createGC(open.display, open.drawable, 0, nullptr);
+    open.api.putImage(open.display, open.drawable, gc, image, 0, 0, rect.x, rect.y, unsigned(rect.width),
+                      unsigned(rect.height));
+    open.api.freeGC(open.display, gc);
+}
+
+} // namespace
 
 RenderResult writeWindow(const NativeWindow& window, const PixelRect& rect, const std::uint32_t* pixels,
                          std::size_t rowPixels)
 {
-    const XlibApi* api = xlib();
-    if (api == nullptr)
-        return missingLibrary();
-    if (rect.width <= 0 || rect.height <= 0)
-        return RenderResult::success();
-    Display* display = static_cast<Display*>(window.display);
-    ErrorTrap trap(*api, display);
-    XWindowAttributes attributes{};
-    RenderResult result = windowAttributes(*api, display, window.drawable, attributes, trap);
-    if (!result)
-        return result;
-    if (holdsHostPixels(*attributes.visual, attributes.depth)) {
-        // The frame's 0xAARRGGBB words are the window's pixels as they are
-        // (the server ignores the top byte at depth 24): XPutImage sends
-        // them from where they lie, with no copy or conversion (a copy
-        // through XPutPixel took a third of an 800 x 600 frame's time).
-        const std::uint32_t* first = pixels + std::size_t(rect.y) * rowPixels + std::size_t(rect.x);
-        XImage* direct = api->createImage(display, attributes.visual, unsigned(attributes.depth), ZPixmap, 0,
-                                          reinterpret_cast<char*>(const_cast<std::uint32_t*>(first)),
-                                          unsigned(rect.width), unsigned(rect.height), 32, int(rowPixels * 4));
-        if (direct == nullptr)
-            return RenderResult::failure(RenderStatus::kOutOfMemory, "XCreateImage failed");
-        if (direct->bits_per_pixel == 32 && direct->byte_order == kHostByteOrder) {
-            GC gc = api->createGC(display, window.drawable, 0, nullptr);
-            api->putImage(display, window.drawable, gc, direct, 0, 0, rect.x, rect.y, unsigned(rect.width),
-                          unsigned(rect.height));
-            api->freeGC(display, gc);
+    return withWindow(window, &rect, [&](OpenWindow& open) {
+        const XWindowAttributes& attributes = open.attributes;
+        if (holdsHostPixels(*attributes.visual, attributes.depth)) {
+            // The frame's 0xAARRGGBB words are the window's pixels as they are
+            // (the server ignores the top byte at depth 24): XPutImage sends
+            // them from where they lie, with no copy or conversion (a copy
+            // through XPutPixel took a third of an 800 x 600 frame's time).
+            const std::uint32_t* first = pixels + std::size_t(rect.y) * rowPixels + std::size_t(rect.x);
+            XImage* direct = open.api.createImage(open.display, attributes.visual, unsigned(attributes.depth),
+                                                  ZPixmap, 0, reinterpret_cast<char*>(const_cast<std::uint32_t*>(first)),
+                                                  unsigned(rect.width), unsigned(rect.height), 32, int(rowPixels * 4));
+            if (direct == nullptr)
+                return RenderResult::failure(RenderStatus::kOutOfMemory, "XCreateImage failed");
+            const bool sendable = direct->bits_per_pixel == 32 && direct->byte_order == kHostByteOrder;
+            if (sendable)
+                sendImage(open, direct, rect);
             direct->data = nullptr; // the caller's pixels: not XDestroyImage's to free
             XDestroyImage(direct);
-            return trap.check("XPutImage");
+            if (sendable)
+                return open.trap.check("XPutImage");
         }
-        direct->data = nullptr;
-        XDestroyImage(direct);
-    }
-    XImage* image = api->createImage(display, attributes.visual, unsigned(attributes.depth), ZPixmap, 0, nullptr,
-                                     unsigned(rect.width), unsigned(rect.height), 32, 0);
-    if (image == nullptr)
-        return RenderResult::failure(RenderStatus::kOutOfMemory, "XCreateImage failed");
-    // XDestroyImage frees the data with free().
-    image->data = static_cast<char*>(std::malloc(std::size_t(image->bytes_per_line) * std::size_t(rect.height)));
-    if (image->data == nullptr) {
+        XImage* image = open.api.createImage(open.display, attributes.visual, unsigned(attributes.depth), ZPixmap, 0,
+                                             nullptr, unsigned(rect.width), unsigned(rect.height), 32, 0);
+        if (image == nullptr)
+            return RenderResult::failure(RenderStatus::kOutOfMemory, "XCreateImage failed");
+        // XDestroyImage frees the data with free().
+        image->data = static_cast<char*>(std::malloc(std::size_t(image->bytes_per_line) * std::size_t(rect.height)));
+        if (image->data == nullptr) {
+            XDestroyImage(image);
+            return RenderResult::failure(RenderStatus::kOutOfMemory, "no memory for the window's image");
+        }
+        const Channel red = open.red(), green = open.green(), blue = open.blue();
+        for (int y = 0; y < rect.height; ++y)
+            for (int x = 0; x < rect.width; ++x) {
+                const std::uint32_t rgb = pixels[std::size_t(rect.y + y) * rowPixels + std::size_t(rect.x + x)];
+                XPutPixel(image, x, y,
+                          red.encode(rgb >> 16 & 0xFF) | green.encode(rgb >> 8 & 0xFF) | blue.encode(rgb & 0xFF));
+            }
+        sendImage(open, image, rect);
         XDestroyImage(image);
-        return RenderResult::failure(RenderStatus::kOutOfMemory, "no memory for the window's image");
-    }
-    const Channel red(attributes.visual->red_mask), green(attributes.visual->green_mask),
-        blue(attributes.visual->blue_mask);
-    for (int y = 0; y < rect.height; ++y)
-        for (int x = 0; x < rect.width; ++x) {
-            const std::uint32_t rgb = pixels[std::size_t(rect.y + y) * rowPixels + std::size_t(rect.x + x)];
-            XPutPixel(image, x, y, red.encode(rgb >> 16 & 0xFF) | green.encode(rgb >> 8 & 0xFF) | blue.encode(rgb & 0xFF));
-        }
-    GC gc = api->createGC(display, window.drawable, 0, nullptr);
-    api->putImage(display, window.drawable, gc, image, 0, 0, rect.x, rect.y, unsigned(rect.width),
-                  unsigned(rect.height));
-    api->freeGC(display, gc);
-    XDestroyImage(image);
-    return trap.check("XPutImage");
+        return open.trap.check("XPutImage");
+    });
 }
 
 RenderResult flushDisplay(void* display)

@@ -108,45 +108,11 @@ void PixmapTexture::check(const TQ3StoragePixmap& pixmap)
     checkImage(pixmap.width, pixmap.height, pixmap.rowBytes, 0, bits, storage.size(), "pixmap");
 }
 
-PixmapTexture::PixmapTexture(const TQ3StoragePixmap& pixmap)
-{
-    check(pixmap);
-    m_pixmap = pixmap;
-    m_pixmap.image = retained(pixmap.image);
-}
-
-PixmapTexture::~PixmapTexture()
-{
-    release(m_pixmap.image);
-}
-
-Object* PixmapTexture::duplicate() const
-{
-    // The copy shares the storage, as a duplicated pixmap marker does.
-    return makeShared<PixmapTexture>(m_pixmap).detach();
-}
-
 TexturePixels PixmapTexture::readImage() const
 {
-    return readPixels(m_pixmap.image, 0, m_pixmap.width, m_pixmap.height, m_pixmap.rowBytes, m_pixmap.pixelType,
-                      m_pixmap.byteOrder);
-}
-
-TQ3StoragePixmap PixmapTexture::pixmap() const
-{
-    TQ3StoragePixmap copy = m_pixmap;
-    copy.image = retained(m_pixmap.image);
-    return copy;
-}
-
-void PixmapTexture::setPixmap(const TQ3StoragePixmap& pixmap)
-{
-    check(pixmap);
-    const TQ3StorageObject old = m_pixmap.image;
-    m_pixmap = pixmap;
-    m_pixmap.image = retained(pixmap.image);
-    release(old);
-    markEdited();
+    const TQ3StoragePixmap& pixmap = held();
+    return readPixels(pixmap.image, 0, pixmap.width, pixmap.height, pixmap.rowBytes, pixmap.pixelType,
+                      pixmap.byteOrder);
 }
 
 unsigned MipmapTexture::imageCount(const TQ3Mipmap& mipmap)
@@ -192,57 +158,67 @@ void MipmapTexture::check(const TQ3Mipmap& mipmap)
     }
 }
 
-MipmapTexture::MipmapTexture(const TQ3Mipmap& mipmap)
-{
-    check(mipmap);
-    m_mipmap = mipmap;
-    m_mipmap.image = retained(mipmap.image);
-}
-
-MipmapTexture::~MipmapTexture()
-{
-    release(m_mipmap.image);
-}
-
-Object* MipmapTexture::duplicate() const
-{
-    return makeShared<MipmapTexture>(m_mipmap).detach();
-}
-
 TexturePixels MipmapTexture::readImage() const
 {
-    const TQ3MipmapImage& first = m_mipmap.mipmaps[0];
-    return readPixels(m_mipmap.image, first.offset, first.width, first.height, first.rowBytes, m_mipmap.pixelType,
-                      m_mipmap.byteOrder);
+    const TQ3Mipmap& mipmap = held();
+    const TQ3MipmapImage& first = mipmap.mipmaps[0];
+    return readPixels(mipmap.image, first.offset, first.width, first.height, first.rowBytes, mipmap.pixelType,
+                      mipmap.byteOrder);
 }
 
 std::vector<TexturePixels> MipmapTexture::readMipmaps() const
 {
     std::vector<TexturePixels> images;
-    const unsigned count = imageCount(m_mipmap);
+    const TQ3Mipmap& mipmap = held();
+    const unsigned count = imageCount(mipmap);
     for (unsigned i = 1; i < count; ++i) {
-        const TQ3MipmapImage& image = m_mipmap.mipmaps[i];
-        images.push_back(readPixels(m_mipmap.image, image.offset, image.width, image.height, image.rowBytes,
-                                    m_mipmap.pixelType, m_mipmap.byteOrder));
+        const TQ3MipmapImage& image = mipmap.mipmaps[i];
+        images.push_back(readPixels(mipmap.image, image.offset, image.width, image.height, image.rowBytes,
+                                    mipmap.pixelType, mipmap.byteOrder));
     }
     return images;
 }
 
-TQ3Mipmap MipmapTexture::mipmap() const
+template <class Derived, class Description>
+StorageTexture<Derived, Description>::StorageTexture(const Description& description)
 {
-    TQ3Mipmap copy = m_mipmap;
-    copy.image = retained(m_mipmap.image);
+    Derived::check(description);
+    m_description = description;
+    m_description.image = retained(description.image);
+}
+
+template <class Derived, class Description>
+StorageTexture<Derived, Description>::~StorageTexture()
+{
+    release(m_description.image);
+}
+
+template <class Derived, class Description>
+Object* StorageTexture<Derived, Description>::duplicate() const
+{
+    return makeShared<Derived>(m_description).detach();
+}
+
+template <class Derived, class Description>
+Description StorageTexture<Derived, Description>::described() const
+{
+    Description copy = m_description;
+    copy.image = retained(m_description.image);
     return copy;
 }
 
-void MipmapTexture::setMipmap(const TQ3Mipmap& mipmap)
+template <class Derived, class Description>
+void StorageTexture<Derived, Description>::describe(const Description& description)
 {
-    check(mipmap);
-    const TQ3StorageObject old = m_mipmap.image;
-    m_mipmap = mipmap;
-    m_mipmap.image = retained(mipmap.image);
+    Derived::check(description);
+    const TQ3StorageObject old = m_description.image;
+    m_description = description;
+    m_description.image = retained(description.image);
     release(old);
     markEdited();
 }
+
+template class StorageTexture<PixmapTexture, TQ3StoragePixmap>;
+template class StorageTexture<MipmapTexture, TQ3Mipmap>;
 
 } // namespace q3

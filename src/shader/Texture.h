@@ -55,47 +55,61 @@ protected:
     Texture() = default;
 };
 
+/// A texture kept as its QD3DShader.h description (a TQ3StoragePixmap, a
+/// TQ3Mipmap), whose `image` is the storage holding its pixels. Invariant:
+/// the description passed Derived::check, and the texture holds one
+/// reference to its storage.
+template <class Derived, class Description>
+class StorageTexture : public Texture {
+public:
+    /// Checks, then references description.image.
+    explicit StorageTexture(const Description& description);
+    ~StorageTexture() override;
+
+    /// A copy sharing the storage, as a duplicated pixmap marker does.
+    Object* duplicate() const override;
+
+protected:
+    const Description& held() const { return m_description; }
+    /// The description with a new reference to the storage.
+    Description described() const;
+    /// Checks, references the new storage, releases the old one.
+    void describe(const Description& description);
+
+private:
+    Description m_description;
+};
+
 /// A texture of one image (Q3PixmapTexture_).
-class PixmapTexture final : public Texture {
+class PixmapTexture final : public StorageTexture<PixmapTexture, TQ3StoragePixmap> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3TextureTypePixmap;
 
     /// QD3DShader.h's data rules for a pixmap, in their order.
     static void check(const TQ3StoragePixmap& pixmap);
-    /// Checks, then references pixmap.image.
-    explicit PixmapTexture(const TQ3StoragePixmap& pixmap);
-    ~PixmapTexture() override;
+    using StorageTexture::StorageTexture;
 
     const ClassInfo& classInfo() const override { return kPixmapTextureClass; }
-    Object* duplicate() const override;
-    unsigned long width() const override { return m_pixmap.width; }
-    unsigned long height() const override { return m_pixmap.height; }
+    unsigned long width() const override { return held().width; }
+    unsigned long height() const override { return held().height; }
     TexturePixels readImage() const override;
 
-    /// The description with a new reference to the storage.
-    TQ3StoragePixmap pixmap() const;
-    /// Checks, references the new storage, releases the old one.
-    void setPixmap(const TQ3StoragePixmap& pixmap);
-
-private:
-    TQ3StoragePixmap m_pixmap;
+    TQ3StoragePixmap pixmap() const { return described(); }
+    void setPixmap(const TQ3StoragePixmap& pixmap) { describe(pixmap); }
 };
 
 /// A texture of one image or a chain of halving images (Q3MipmapTexture_).
-class MipmapTexture final : public Texture {
+class MipmapTexture final : public StorageTexture<MipmapTexture, TQ3Mipmap> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3TextureTypeMipmap;
 
     /// QD3DShader.h's data rules for a mipmap, in their order.
     static void check(const TQ3Mipmap& mipmap);
-    /// Checks, then references mipmap.image.
-    explicit MipmapTexture(const TQ3Mipmap& mipmap);
-    ~MipmapTexture() override;
+    using StorageTexture::StorageTexture;
 
     const ClassInfo& classInfo() const override { return kMipmapTextureClass; }
-    Object* duplicate() const override;
-    unsigned long width() const override { return m_mipmap.mipmaps[0].width; }
-    unsigned long height() const override { return m_mipmap.mipmaps[0].height; }
+    unsigned long width() const override { return held().mipmaps[0].width; }
+    unsigned long height() const override { return held().mipmaps[0].height; }
     TexturePixels readImage() const override;
     /// With useMipmapping, mipmaps[1] onwards.
     std::vector<TexturePixels> readMipmaps() const override;
@@ -103,13 +117,8 @@ public:
     /// How many images the data rules read: 1, or with useMipmapping one
     /// more than log2 of the first image's larger side.
     static unsigned imageCount(const TQ3Mipmap& mipmap);
-    /// The description with a new reference to the storage.
-    TQ3Mipmap mipmap() const;
-    /// Checks, references the new storage, releases the old one.
-    void setMipmap(const TQ3Mipmap& mipmap);
-
-private:
-    TQ3Mipmap m_mipmap;
+    TQ3Mipmap mipmap() const { return described(); }
+    void setMipmap(const TQ3Mipmap& mipmap) { describe(mipmap); }
 };
 
 } // namespace q3

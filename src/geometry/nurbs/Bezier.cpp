@@ -30,6 +30,7 @@
 // s = u/(1-u) (or (1-u)/u past the midpoint, so |s| <= 1), O(k) per point.
 
 #include "geometry/nurbs/Bezier.h"
+#include "geometry/nurbs/Lanes.h"
 
 #include <algorithm>
 #include <atomic>
@@ -58,39 +59,11 @@ constexpr Binomials kBinomials;
 // instantiated twice: with 128-bit vectors (SSE2, the x86-64 baseline, or the target's
 // own 128-bit unit) and, on x86, with 256-bit vectors inside functions compiled for
 // AVX2 and chosen at run time. Each lane does exactly the scalar arithmetic, in the
-// same order, and nothing enables FMA, so both paths give the same bits.
-//
-// The generic pieces are always_inline so that each one is compiled inside the entry
-// function that uses it, with that function's instruction set; they take vectors by
-// reference, never by value, so no function boundary depends on the vector ABI.
-
-#if !defined(__GNUC__)
-#error "Q3's NURBS kernels use GCC/Clang vector extensions"
-#endif
-
-#define Q3_ALWAYS_INLINE inline __attribute__((always_inline))
-
-#if defined(__x86_64__) || defined(__i386__)
-#define Q3_KERNEL_AVX2 1
-#define Q3_TARGET_AVX2 __attribute__((target("avx2")))
-#else
-#define Q3_KERNEL_AVX2 0
-#endif
-
-typedef double Double2 __attribute__((vector_size(16)));
-typedef double Double4 __attribute__((vector_size(32)));
+// same order, and nothing enables FMA, so both paths give the same bits. The vector
+// types and the pieces both kernels share are in Lanes.h.
 
 template <typename V>
-constexpr unsigned kLanes = sizeof(V) / sizeof(double);
-
-template <typename V>
-Q3_ALWAYS_INLINE void load(V& v, const double* p)
-{
-    std::memcpy(&v, p, sizeof v);
-}
-
-template <typename V>
-Q3_ALWAYS_INLINE void splat(V& v, double value)
+Q3_LANES_INLINE void splat(V& v, double value)
 {
     for (unsigned i = 0; i < kLanes<V>; ++i)
         v[i] = value;
@@ -99,7 +72,7 @@ Q3_ALWAYS_INLINE void splat(V& v, double value)
 // out = (1 - alpha) a + alpha b, per coordinate as (1 - alpha) * a + alpha * b, on
 // 4 / N vectors.
 template <typename V>
-Q3_ALWAYS_INLINE void lerpInto(const Point4& a, const Point4& b, double alpha, Point4& out)
+Q3_LANES_INLINE void lerpInto(const Point4& a, const Point4& b, double alpha, Point4& out)
 {
     static_assert(sizeof(Point4) == 4 * sizeof(double), "Point4 is four packed doubles");
     const double beta = 1.0 - alpha;
@@ -120,7 +93,7 @@ Q3_ALWAYS_INLINE void lerpInto(const Point4& a, const Point4& b, double alpha, P
 
 // Divides N homogeneous samples by their w and writes them as N (x, y, z) triples.
 template <typename V, typename Out>
-Q3_ALWAYS_INLINE void storeProjected(const V& x, const V& y, const V& z, const V& w, Out* out)
+Q3_LANES_INLINE void storeProjected(const V& x, const V& y, const V& z, const V& w, Out* out)
 {
     const V inv = 1.0 / w;
     const V px = x * inv;
@@ -137,7 +110,7 @@ Q3_ALWAYS_INLINE void storeProjected(const V& x, const V& y, const V& z, const V
 // then one at a time. Every lane (and the scalar tail) computes
 // ((0 + b_0 P_0) + b_1 P_1) + ... for each coordinate, then multiplies by 1 / w.
 template <unsigned K, typename Out, typename V>
-Q3_ALWAYS_INLINE void sampleLanes(const Point4* points, const BernsteinTable& table,
+Q3_LANES_INLINE void sampleLanes(const Point4* points, const BernsteinTable& table,
                                   std::uint32_t first, std::uint32_t count, Out* xyz)
 {
     constexpr unsigned N = kLanes<V>;
@@ -156,8 +129,8 @@ Q3_ALWAYS_INLINE void sampleLanes(const Point4* points, const BernsteinTable& ta
         V x0 = {}, x1 = {}, y0 = {}, y1 = {}, z0 = {}, z1 = {}, w0 = {}, w1 = {};
         for (unsigned r = 0; r < K; ++r) {
             V b0, b1;
-            load(b0, column[r] + j);
-            load(b1, column[r] + j + N);
+            loadLanes(b0, column[r] + j);
+            loadLanes(b1, column[r] + j + N);
             x0 += b0 * cx[r];
             x1 += b1 * cx[r];
             y0 += b0 * cy[r];
@@ -175,7 +148,7 @@ Q3_ALWAYS_INLINE void sampleLanes(const Point4* points, const BernsteinTable& ta
         V x = {}, y = {}, z = {}, w = {};
         for (unsigned r = 0; r < K; ++r) {
             V b;
-            load(b, column[r] + j);
+            loadLanes(b, column[r] + j);
             x += b * cx[r];
             y += b * cy[r];
             z += b * cz[r];
@@ -204,7 +177,7 @@ Q3_ALWAYS_INLINE void sampleLanes(const Point4* points, const BernsteinTable& ta
 }
 
 template <typename V, typename Out>
-Q3_ALWAYS_INLINE void sampleAnyOrder(const Point4* points, const BernsteinTable& table,
+Q3_LANES_INLINE void sampleAnyOrder(const Point4* points, const BernsteinTable& table,
                                      std::uint32_t first, std::uint32_t count, Out* xyz)
 {
     switch (table.order()) {
@@ -230,7 +203,7 @@ Q3_ALWAYS_INLINE void sampleAnyOrder(const Point4* points, const BernsteinTable&
 // The span's left-clamped polygon f(a^{p-m}, x_{l+1} .. x_{l+m}): de Boor's
 // triangle at a = x_l (the first triangle of spanToBezier).
 template <typename V>
-Q3_ALWAYS_INLINE void leftClamped(const CurveRef& curve, std::size_t l, Point4* out)
+Q3_LANES_INLINE void leftClamped(const CurveRef& curve, std::size_t l, Point4* out)
 {
     const unsigned deg = curve.order - 1;
     const float* x = curve.knots;
@@ -255,7 +228,7 @@ Q3_ALWAYS_INLINE void leftClamped(const CurveRef& curve, std::size_t l, Point4* 
 // One step of the sweep (Piegl & Tiller A5.6 for span l): `left` holds the
 // left-clamped polygon of knot index `next` when l == next.
 template <typename V>
-Q3_ALWAYS_INLINE void sweepConvert(const CurveRef& curve, std::size_t l, Point4* left,
+Q3_LANES_INLINE void sweepConvert(const CurveRef& curve, std::size_t l, Point4* left,
                                    std::size_t& next, Point4* out)
 {
     const unsigned p = curve.order - 1;
@@ -314,9 +287,9 @@ __attribute__((noinline)) void convertBaseline(const CurveRef& curve, std::size_
     sweepConvert<Double2>(curve, l, left, next, out);
 }
 
-#if Q3_KERNEL_AVX2
+#if Q3_LANES_AVX2
 template <typename Out>
-Q3_TARGET_AVX2 __attribute__((noinline)) void sampleAvx2(const Point4* points,
+Q3_LANES_TARGET_AVX2 __attribute__((noinline)) void sampleAvx2(const Point4* points,
                                                          const BernsteinTable& table,
                                                          std::uint32_t first,
                                                          std::uint32_t count, Out* xyz)
@@ -324,7 +297,7 @@ Q3_TARGET_AVX2 __attribute__((noinline)) void sampleAvx2(const Point4* points,
     sampleAnyOrder<Double4>(points, table, first, count, xyz);
 }
 
-Q3_TARGET_AVX2 __attribute__((noinline)) void convertAvx2(const CurveRef& curve, std::size_t l,
+Q3_LANES_TARGET_AVX2 __attribute__((noinline)) void convertAvx2(const CurveRef& curve, std::size_t l,
                                                           Point4* left, std::size_t& next,
                                                           Point4* out)
 {
@@ -334,7 +307,7 @@ Q3_TARGET_AVX2 __attribute__((noinline)) void convertAvx2(const CurveRef& curve,
 
 KernelIsa detectKernelIsa()
 {
-#if Q3_KERNEL_AVX2
+#if Q3_LANES_AVX2
     // __builtin_cpu_supports also requires the OS to save the YMM registers.
     __builtin_cpu_init();
     if (__builtin_cpu_supports("avx2"))
@@ -353,7 +326,7 @@ template <typename Out>
 void sampleDispatch(const Point4* points, const BernsteinTable& table, std::uint32_t first,
                     std::uint32_t count, Out* xyz)
 {
-#if Q3_KERNEL_AVX2
+#if Q3_LANES_AVX2
     if (activeIsa().load(std::memory_order_relaxed) == int(KernelIsa::kAvx2)) {
         sampleAvx2(points, table, first, count, xyz);
         return;
@@ -431,7 +404,7 @@ bool forceKernelIsa(KernelIsa isa)
 
 void BezierSweep::convert(std::size_t l, Point4* out)
 {
-#if Q3_KERNEL_AVX2
+#if Q3_LANES_AVX2
     if (activeIsa().load(std::memory_order_relaxed) == int(KernelIsa::kAvx2)) {
         convertAvx2(m_curve, l, m_left, m_next, out);
         return;

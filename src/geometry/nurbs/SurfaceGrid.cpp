@@ -28,6 +28,7 @@
 #include "geometry/nurbs/SurfaceGrid.h"
 
 #include "geometry/nurbs/Bezier.h"
+#include "geometry/nurbs/Lanes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,22 +38,6 @@
 
 namespace q3::nurbs {
 namespace {
-
-#if !defined(__GNUC__)
-#error "Q3's NURBS kernels use GCC/Clang vector extensions"
-#endif
-
-#define Q3_GRID_INLINE inline __attribute__((always_inline))
-
-#if defined(__x86_64__) || defined(__i386__)
-#define Q3_GRID_AVX2 1
-#define Q3_GRID_TARGET_AVX2 __attribute__((target("avx2")))
-#else
-#define Q3_GRID_AVX2 0
-#endif
-
-typedef double Double2 __attribute__((vector_size(16)));
-typedef double Double4 __attribute__((vector_size(32)));
 
 constexpr unsigned kMaxLanes = 4;
 
@@ -77,19 +62,10 @@ struct GridInput {
     float* normals;
 };
 
-template <typename V>
-constexpr unsigned kLanes = sizeof(V) / sizeof(double);
-
-template <typename V>
-Q3_GRID_INLINE void loadLanes(V& v, const double* p)
-{
-    std::memcpy(&v, p, sizeof v);
-}
-
 // Rows r0 .. r0 + kLanes<V> - 1 (the last repeated past the grid's end), all
 // columns.
 template <typename V>
-Q3_GRID_INLINE void gridRows(const GridInput& in, std::size_t r0)
+Q3_LANES_INLINE void gridRows(const GridInput& in, std::size_t r0)
 {
     constexpr unsigned L = kLanes<V>;
     const SurfaceRef& s = *in.surface;
@@ -215,8 +191,8 @@ void gridBaseline(const GridInput& in)
         gridRows<Double2>(in, r0);
 }
 
-#if Q3_GRID_AVX2
-Q3_GRID_TARGET_AVX2 void gridAvx2(const GridInput& in)
+#if Q3_LANES_AVX2
+Q3_LANES_TARGET_AVX2 void gridAvx2(const GridInput& in)
 {
     for (std::size_t r0 = 0; r0 < in.rows; r0 += kLanes<Double4>)
         gridRows<Double4>(in, r0);
@@ -250,7 +226,7 @@ void evaluateGrid(const SurfaceRef& surface, const double* us, std::size_t colum
     }
     in.uSpan = spans.data();
     in.uBasis = basis.data();
-#if Q3_GRID_AVX2
+#if Q3_LANES_AVX2
     if (activeKernelIsa() == KernelIsa::kAvx2) {
         gridAvx2(in);
         return;
