@@ -94,3 +94,21 @@ TQ3CameraObject MyNewOrthographicCamera(float z, float hither, float yon, float 
     cameraData.bottom = bottom;
     return Q3OrthographicCamera_New(&cameraData);
 }
+
+TQ3CameraObject MyNewViewAngleCamera(float z, float hither, float yon, float fov)
+{
+    TQ3ViewAngleAspectCameraData cameraData;
+
+    memset(&cameraData, 0, sizeof cameraData);
+    Q3Point3D_Set(&cameraData.cameraData.placement.cameraLocation, 0.0f, 0.0f, z);
+    Q3Vector3D_Set(&cameraData.cameraData.placement.upVector, 0.0f, 1.0f, 0.0f);
+    cameraData.cameraData.range.hither = hither;
+    cameraData.cameraData.range.yon = yon;
+    cameraData.cameraData.viewPort.origin.x = -1.0f;
+    cameraData.cameraData.viewPort.origin.y = 1.0f;
+    cameraData.cameraData.viewPort.width = 2.0f;
+    cameraData.cameraData.viewPort.height = 2.0f;
+    cameraData.fov = fov;
+    cameraData.aspectRatioXToY = 1.0f;
+    return Q3ViewAngleAspectCamera_New(&cameraData);
+}
