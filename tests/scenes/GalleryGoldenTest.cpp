@@ -35,7 +35,6 @@ namespace {
 
 class GalleryTest : public q3test::SessionTest<> {
 protected:
-
     static q3test::RgbaImage render(unsigned long index, bool lit)
     {
         q3test::RgbaImage image(Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT);
@@ -58,6 +57,23 @@ protected:
             for (int x = 0; x < image.width; ++x)
                 n += isDrawn(image, x, y) ? 1 : 0;
         return n;
+    }
+
+    // What the gallery draws for geometry `index`: a display group holding a
+    // Phong illumination shader, then the geometry; NULL if the gallery
+    // made no geometry.
+    static TQ3GroupObject phongModel(unsigned long index)
+    {
+        TQ3GeometryObject geometry = q3gallery_new(index);
+        if (geometry == nullptr)
+            return nullptr;
+        TQ3GroupObject model = Q3DisplayGroup_New();
+        TQ3ShaderObject phong = Q3PhongIllumination_New();
+        Q3Group_AddObject(model, phong);
+        Q3Group_AddObject(model, geometry);
+        Q3Object_Dispose(phong);
+        Q3Object_Dispose(geometry);
+        return model;
     }
 };
 
@@ -140,14 +156,8 @@ TEST_P(GalleryGltfGolden, TheLitPictureOfTheGlbCopyMatchesTheGolden)
     // What the gallery draws: a Phong illumination shader, then the geometry
     // (exported alone, it would be unlit, as QuickDraw 3D draws a geometry
     // under no illumination shader).
-    TQ3GeometryObject geometry = q3gallery_new(index);
-    ASSERT_NE(geometry, nullptr);
-    TQ3GroupObject model = Q3DisplayGroup_New();
-    TQ3ShaderObject phong = Q3PhongIllumination_New();
-    Q3Group_AddObject(model, phong);
-    Q3Group_AddObject(model, geometry);
-    Q3Object_Dispose(phong);
-    Q3Object_Dispose(geometry);
+    TQ3GroupObject model = phongModel(index);
+    ASSERT_NE(model, nullptr);
     const std::string path = ::testing::TempDir() + "q3gallery-" + GetParam() + ".glb";
     ASSERT_EQ(Q3Exchange_Write(model, path.c_str(), nullptr), kQ3Success);
     Q3Object_Dispose(model);
@@ -204,14 +214,8 @@ TEST_P(GalleryGltfViewGolden, TheLitPictureOfTheCopyExportedUnderTheGalleryViewM
     Q3Object_Dispose(context);
     Q3Object_Dispose(camera);
 
-    TQ3GeometryObject geometry = q3gallery_new(index);
-    ASSERT_NE(geometry, nullptr);
-    TQ3GroupObject model = Q3DisplayGroup_New();
-    TQ3ShaderObject phong = Q3PhongIllumination_New();
-    Q3Group_AddObject(model, phong);
-    Q3Group_AddObject(model, geometry);
-    Q3Object_Dispose(phong);
-    Q3Object_Dispose(geometry);
+    TQ3GroupObject model = phongModel(index);
+    ASSERT_NE(model, nullptr);
     TQ3ExchangeOptions options;
     ASSERT_EQ(Q3Exchange_InitOptions(&options), kQ3Success);
     options.subdivisionFromSize = kQ3False;
