@@ -26,10 +26,6 @@ using namespace q3test;
 
 namespace {
 
-const TQ3FileMode kModes[] = {kQ3FileModeNormal, kQ3FileModeNormal | kQ3FileModeText,
-                              kQ3FileModeStream, kQ3FileModeStream | kQ3FileModeText,
-                              kQ3FileModeDatabase, kQ3FileModeDatabase | kQ3FileModeText};
-
 std::vector<unsigned char> dataFile(const char* name)
 {
     std::ifstream in(std::string(Q3_TEST_DATA_DIR) + "/" + name, std::ios::binary);
@@ -478,11 +474,7 @@ bool samePolyLine(TQ3Object a, TQ3Object b)
 
 // ---- the cases ----------------------------------------------------------------
 
-struct Case {
-    std::string name;
-    std::function<TQ3Object()> make;
-    std::function<bool(TQ3Object, TQ3Object)> same;
-};
+using Case = q3test::RoundTripCase;
 
 std::vector<Case> cases()
 {
@@ -502,14 +494,6 @@ std::vector<Case> cases()
 }
 
 // Whether an image has any pixel other than the first (the background).
-bool drawsSomething(const std::vector<std::uint32_t>& words)
-{
-    for (std::uint32_t w : words)
-        if (w != words.front())
-            return true;
-    return false;
-}
-
 class FileGeometryRoundTripTest : public Q3ApiTest, public ::testing::WithParamInterface<std::size_t> {};
 class FileGeometryTest : public Q3ApiTest {
 protected:
@@ -551,31 +535,7 @@ protected:
 
 TEST_P(FileGeometryRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataAndImage)
 {
-    const Case c = cases()[GetParam()];
-    SCOPED_TRACE(c.name);
-    TQ3Object original = c.make();
-    ASSERT_NE(original, nullptr);
-    const auto expected = renderedWords(original);
-    EXPECT_TRUE(drawsSomething(expected));
-    for (TQ3FileMode mode : kModes) {
-        SCOPED_TRACE(mode);
-        const auto bytes = writeObjects({original}, mode);
-        TQ3FileMode readMode = 0;
-        TQ3FileObject file = openBytes(bytes, &readMode);
-        ASSERT_NE(file, nullptr);
-        EXPECT_EQ(readMode, mode);
-        EXPECT_EQ(Q3File_GetNextObjectType(file), Q3Object_GetLeafType(original));
-        TQ3Object back = Q3File_ReadObject(file);
-        ASSERT_NE(back, nullptr);
-        EXPECT_EQ(Q3File_IsEndOfFile(file), kQ3True);
-        Q3File_Close(file);
-        Q3Object_Dispose(file);
-        EXPECT_EQ(Q3Object_GetLeafType(back), Q3Object_GetLeafType(original));
-        EXPECT_TRUE(c.same(original, back));
-        EXPECT_TRUE(renderedWords(back) == expected);
-        Q3Object_Dispose(back);
-    }
-    Q3Object_Dispose(original);
+    expectRoundTripInEveryMode(cases()[GetParam()], /*isGeometry=*/false, /*mustDraw=*/true);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryClass, FileGeometryRoundTripTest, ::testing::Range<std::size_t>(0, cases().size()),
