@@ -152,6 +152,17 @@ void collectTriMeshes(TQ3Object object, std::vector<TQ3Object>& out)
     collectOfTypes(object, {kQ3GeometryTypeTriMesh}, out);
 }
 
+// Every triangle of every TriMesh inside a group.
+Triangles trianglesIn(TQ3Object group)
+{
+    std::vector<TQ3Object> meshes;
+    collectTriMeshes(group, meshes);
+    Triangles all;
+    for (TQ3Object mesh : meshes)
+        all.add(mesh);
+    return all;
+}
+
 double relative(double a, double b)
 {
     return std::fabs(a - b) / std::max(1.0, std::max(std::fabs(a), std::fabs(b)));
@@ -303,11 +314,7 @@ TEST_F(ExchangeApiTest, EveryGeometryOfTheTestFilesKeepsItsDecomposition)
                 continue; // curves and points: no triangles to compare
             TQ3GroupObject back = roundTrip(object, std::to_string(k) + "-" + name + ".glb");
             ASSERT_NE(back, nullptr) << what;
-            std::vector<TQ3Object> meshes;
-            collectTriMeshes(back, meshes);
-            Triangles read;
-            for (TQ3Object mesh : meshes)
-                read.add(mesh);
+            const Triangles read = trianglesIn(back);
             expectSame(original, read, what);
             Q3Object_Dispose(back);
             ++checked;
@@ -675,12 +682,10 @@ TEST_F(ExchangeModelTest, ObjKeepsTheModelFlattenedWithItsMaterialAndTexture)
     EXPECT_NEAR(b.max.x, a.max.x, 1e-5);
     EXPECT_NEAR(b.min.z, a.min.z, 1e-5);
     EXPECT_NEAR(b.max.z, a.max.z, 1e-5);
+    const Triangles read = trianglesIn(back);
+    EXPECT_EQ(read.triangles.size(), 4u);
     std::vector<TQ3Object> meshes;
     collectTriMeshes(back, meshes);
-    Triangles read;
-    for (TQ3Object mesh : meshes)
-        read.add(mesh);
-    EXPECT_EQ(read.triangles.size(), 4u);
     ASSERT_FALSE(meshes.empty());
     TQ3TriMeshData data{};
     ASSERT_EQ(Q3TriMesh_GetData(meshes[0], &data), kQ3Success);
@@ -714,11 +719,7 @@ TEST_F(ExchangeModelTest, StlKeepsTheTrianglesFlattened)
     ASSERT_EQ(Q3Exchange_Write(m_group, path.c_str(), nullptr), kQ3Success);
     TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
     ASSERT_NE(back, nullptr);
-    std::vector<TQ3Object> meshes;
-    collectTriMeshes(back, meshes);
-    Triangles read;
-    for (TQ3Object mesh : meshes)
-        read.add(mesh);
+    const Triangles read = trianglesIn(back);
     EXPECT_EQ(read.triangles.size(), 4u);
     const TQ3BoundingBox a = bounds(m_group);
     const TQ3BoundingBox b = bounds(back);
@@ -751,11 +752,7 @@ TEST_F(ExchangeApiTest, EveryGeometryKeepsItsTriangleCountThroughStlAndObj)
                 ASSERT_EQ(Q3Exchange_Write(objects[k], path.c_str(), &options), kQ3Success) << path;
                 TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
                 ASSERT_NE(back, nullptr) << path;
-                std::vector<TQ3Object> meshes;
-                collectTriMeshes(back, meshes);
-                Triangles read;
-                for (TQ3Object mesh : meshes)
-                    read.add(mesh);
+                const Triangles read = trianglesIn(back);
                 EXPECT_EQ(read.triangles.size(), original.triangles.size()) << name << " " << k << ext;
                 Q3Object_Dispose(back);
             }

@@ -59,6 +59,19 @@ protected:
         return n;
     }
 
+    // Reads the file at `path` (and removes it) and renders what it holds lit
+    // into `image`; false if nothing was read.
+    static bool readAndRenderLit(const std::string& path, q3test::RgbaImage* image)
+    {
+        TQ3GroupObject copy = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
+        std::remove(path.c_str());
+        if (copy == nullptr)
+            return false;
+        EXPECT_EQ(q3gallery_render_object(copy, 1, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT, image->pixels.data()), 0);
+        Q3Object_Dispose(copy);
+        return true;
+    }
+
     // What the gallery draws for geometry `index`: a display group holding a
     // Phong illumination shader, then the geometry; NULL if the gallery
     // made no geometry.
@@ -161,12 +174,8 @@ TEST_P(GalleryGltfGolden, TheLitPictureOfTheGlbCopyMatchesTheGolden)
     const std::string path = ::testing::TempDir() + "q3gallery-" + GetParam() + ".glb";
     ASSERT_EQ(Q3Exchange_Write(model, path.c_str(), nullptr), kQ3Success);
     Q3Object_Dispose(model);
-    TQ3GroupObject copy = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
-    std::remove(path.c_str());
-    ASSERT_NE(copy, nullptr);
     q3test::RgbaImage image(Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT);
-    EXPECT_EQ(q3gallery_render_object(copy, 1, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT, image.pixels.data()), 0);
-    Q3Object_Dispose(copy);
+    ASSERT_TRUE(readAndRenderLit(path, &image));
     EXPECT_TRUE(q3test::matchesGolden(std::string("geometry_") + GetParam() + "_lit", image));
 }
 
@@ -226,12 +235,8 @@ TEST_P(GalleryGltfViewGolden, TheLitPictureOfTheCopyExportedUnderTheGalleryViewM
     ASSERT_EQ(Q3Exchange_Write(model, path.c_str(), &options), kQ3Success);
     Q3Object_Dispose(model);
     Q3Object_Dispose(view);
-    TQ3GroupObject copy = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
-    std::remove(path.c_str());
-    ASSERT_NE(copy, nullptr);
     q3test::RgbaImage image(Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT);
-    EXPECT_EQ(q3gallery_render_object(copy, 1, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT, image.pixels.data()), 0);
-    Q3Object_Dispose(copy);
+    ASSERT_TRUE(readAndRenderLit(path, &image));
     EXPECT_TRUE(q3test::matchesGolden("geometry_" + name + "_lit", image));
 }
 
