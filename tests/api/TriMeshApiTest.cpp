@@ -367,11 +367,6 @@ TEST_F(TriMeshApiTest, EmptyMeshesAreAccepted)
 
 // ---- The TQ3TriMeshData rules, in their order ---------------------------------------
 
-TEST_F(TriMeshApiTest, NewRejectsNullData)
-{
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3TriMesh_New(nullptr), nullptr), kQ3ErrorNULLParameter);
-}
-
 // The six arrays and the counts that size them.
 struct ArrayField {
     const char* name;
