@@ -11,6 +11,7 @@
 
 #include "FileTestSupport.h"
 #include "RenderTestSupport.h"
+#include "TextureTestSupport.h"
 
 #include "Q3Exchange.h"
 #include "QD3DCamera.h"
@@ -342,13 +343,8 @@ protected:
             m_pixels.push_back(static_cast<unsigned char>(i * i));
         }
         TQ3StorageObject storage = Q3MemoryStorage_New(m_pixels.data(), static_cast<unsigned long>(m_pixels.size()));
-        TQ3Mipmap mipmap{};
-        mipmap.image = storage;
-        mipmap.useMipmapping = kQ3False;
-        mipmap.pixelType = kQ3PixelTypeARGB32;
-        mipmap.bitOrder = kQ3EndianBig;
-        mipmap.byteOrder = kQ3EndianBig;
-        mipmap.mipmaps[0] = TQ3MipmapImage{kWidth, kHeight, kWidth * 4, 0};
+        const TQ3Mipmap mipmap =
+            q3test::bigEndianMipmap(storage, kQ3PixelTypeARGB32, false, {{kWidth, kHeight, kWidth * 4, 0}});
         TQ3TextureObject texture = Q3MipmapTexture_New(&mipmap);
         Q3Object_Dispose(storage);
         TQ3ShaderObject shader = Q3TextureShader_New(texture);
