@@ -4,6 +4,7 @@
 // The pixmap draw context: data round trips, the TQ3DrawContextData and
 // TQ3Pixmap rules in their order, and that failures change nothing.
 
+#include "DrawContextTestSupport.h"
 #include "RenderTestSupport.h"
 
 #include "QD3DSet.h"
@@ -21,42 +22,8 @@ using namespace q3test;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-class DrawContextApiTest : public Q3ApiTest {
+class DrawContextApiTest : public PixmapContextApiTest {
 protected:
-    void SetUp() override
-    {
-        Q3ApiTest::SetUp();
-        const TQ3PixmapDrawContextData data = pixmapContextData(m_image.pixmap());
-        m_context = Q3PixmapDrawContext_New(&data);
-        ASSERT_NE(m_context, nullptr);
-    }
-    void TearDown() override
-    {
-        Q3Object_Dispose(m_context);
-        Q3ApiTest::TearDown();
-    }
-
-    struct Snapshot {
-        TQ3DrawContextData data;
-        TQ3Pixmap pixmap;
-        unsigned long editIndex;
-    };
-    Snapshot snapshot()
-    {
-        Snapshot s{};
-        EXPECT_EQ(Q3DrawContext_GetData(m_context, &s.data), kQ3Success);
-        EXPECT_EQ(Q3PixmapDrawContext_GetPixmap(m_context, &s.pixmap), kQ3Success);
-        s.editIndex = Q3Shared_GetEditIndex(m_context);
-        return s;
-    }
-    void expectUnchanged(const Snapshot& before)
-    {
-        const Snapshot now = snapshot();
-        EXPECT_EQ(std::memcmp(&now.data, &before.data, sizeof now.data), 0);
-        EXPECT_EQ(std::memcmp(&now.pixmap, &before.pixmap, sizeof now.pixmap), 0);
-        EXPECT_EQ(now.editIndex, before.editIndex);
-    }
-
     // One broken TQ3Pixmap rule and the error it must give.
     struct BrokenPixmap {
         const char* name;
@@ -105,9 +72,6 @@ protected:
             {"width beyond 32 bits", [](TQ3Pixmap& p) { p.width = ~0UL; }, kQ3ErrorInvalidData},
         };
     }
-
-    Pixmap m_image{16, 8};
-    TQ3DrawContextObject m_context = nullptr;
 };
 
 TEST_F(DrawContextApiTest, NewStoresTheDataAsGiven)

@@ -5,6 +5,7 @@
 // (a failed Set leaves the draw context and its edit index unchanged), and
 // the mask deciding which pixmap pixels Q3View_EndRendering writes.
 
+#include "DrawContextTestSupport.h"
 #include "RenderTestSupport.h"
 
 #include "QD3DGeometry.h"
@@ -17,48 +18,24 @@ namespace {
 
 using namespace q3test;
 
-class DrawContextMaskApiTest : public Q3ApiTest {
+class DrawContextMaskApiTest : public PixmapContextApiTest {
 protected:
     void SetUp() override
     {
-        Q3ApiTest::SetUp();
-        const TQ3PixmapDrawContextData data = pixmapContextData(m_image.pixmap());
-        m_context = Q3PixmapDrawContext_New(&data);
-        ASSERT_NE(m_context, nullptr);
+        PixmapContextApiTest::SetUp();
         m_renderer = Q3Renderer_NewFromType(kQ3RendererTypeInteractive);
     }
     void TearDown() override
     {
-        Q3Object_Dispose(m_context);
         Q3Object_Dispose(m_renderer);
-        Q3ApiTest::TearDown();
+        PixmapContextApiTest::TearDown();
     }
 
-    struct Snapshot {
-        TQ3DrawContextData data;
-        unsigned long editIndex;
-    };
-    Snapshot snapshot()
-    {
-        Snapshot s{};
-        EXPECT_EQ(Q3DrawContext_GetData(m_context, &s.data), kQ3Success);
-        s.editIndex = Q3Shared_GetEditIndex(m_context);
-        return s;
-    }
-    void expectUnchanged(const Snapshot& before)
-    {
-        const Snapshot now = snapshot();
-        EXPECT_EQ(std::memcmp(&now.data, &before.data, sizeof now.data), 0);
-        EXPECT_EQ(now.editIndex, before.editIndex);
-    }
-
-    Pixmap m_image{16, 8};
     // A 16 x 8 mask, 2 bytes a row: the left half of every row selected
     // (big-endian bits: the first byte's bits are pixels 0-7).
     unsigned char m_bits[16] = {0xFF, 0x00, 0xFF, 0x00, 0xFF, 0x00, 0xFF, 0x00,
                                 0xFF, 0x00, 0xFF, 0x00, 0xFF, 0x00, 0xFF, 0x00};
     TQ3Bitmap m_mask{m_bits, 16, 8, 2, kQ3EndianBig};
-    TQ3DrawContextObject m_context = nullptr;
     TQ3RendererObject m_renderer = nullptr;
 };
 

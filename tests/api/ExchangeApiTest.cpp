@@ -9,7 +9,9 @@
 // file written passes the Khronos glTF validator (scripts/gltf-validate.js)
 // with no errors; broken inputs are clear errors that leave nothing behind.
 
+#include "FileTestSupport.h"
 #include "RenderTestSupport.h"
+#include "TextureTestSupport.h"
 
 #include "Q3Exchange.h"
 #include "QD3DCamera.h"
@@ -33,6 +35,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -112,13 +115,15 @@ struct Triangles {
     }
 };
 
-// Every TriMesh inside a group, depth first, in order.
-void collectTriMeshes(TQ3Object object, std::vector<TQ3Object>& out)
+// Every object of one of `types` inside a group (or the object itself),
+// depth first, in order; the group keeps the references.
+void collectOfTypes(TQ3Object object, std::initializer_list<TQ3ObjectType> types, std::vector<TQ3Object>& out)
 {
-    if (Q3Object_IsType(object, kQ3GeometryTypeTriMesh) == kQ3True) {
-        out.push_back(object);
-        return;
-    }
+    for (TQ3ObjectType type : types)
+        if (Q3Object_IsType(object, type) == kQ3True) {
+            out.push_back(object);
+            return;
+        }
     if (Q3Object_IsType(object, kQ3ShapeTypeGroup) != kQ3True)
         return;
     TQ3GroupPosition position = nullptr;
@@ -126,10 +131,37 @@ void collectTriMeshes(TQ3Object object, std::vector<TQ3Object>& out)
     while (position != nullptr) {
         TQ3Object child = nullptr;
         Q3Group_GetPositionObject(object, position, &child);
-        collectTriMeshes(child, out);
+        collectOfTypes(child, types, out);
         Q3Object_Dispose(child);
         Q3Group_GetNextPosition(object, &position);
     }
+}
+
+// The first object of `type` in `group` (a new reference), or NULL.
+TQ3Object firstOfType(TQ3GroupObject group, TQ3ObjectType type)
+{
+    TQ3GroupPosition position = nullptr;
+    TQ3Object object = nullptr;
+    if (Q3Group_GetFirstPositionOfType(group, type, &position) == kQ3Success && position != nullptr)
+        Q3Group_GetPositionObject(group, position, &object);
+    return object;
+}
+
+// Every TriMesh inside a group, depth first, in order.
+void collectTriMeshes(TQ3Object object, std::vector<TQ3Object>& out)
+{
+    collectOfTypes(object, {kQ3GeometryTypeTriMesh}, out);
+}
+
+// Every triangle of every TriMesh inside a group.
+Triangles trianglesIn(TQ3Object group)
+{
+    std::vector<TQ3Object> meshes;
+    collectTriMeshes(group, meshes);
+    Triangles all;
+    for (TQ3Object mesh : meshes)
+        all.add(mesh);
+    return all;
 }
 
 double relative(double a, double b)
@@ -139,22 +171,13 @@ double relative(double a, double b)
 
 std::vector<TQ3Object> readFile(const std::string& path)
 {
-    std::vector<TQ3Object> objects;
     TQ3StorageObject storage = Q3UnixPathStorage_New(path.c_str());
     TQ3FileObject file = Q3File_New();
     TQ3FileMode mode = 0;
     EXPECT_EQ(Q3File_SetStorage(file, storage), kQ3Success);
-    EXPECT_EQ(Q3File_OpenRead(file, &mode), kQ3Success) << path;
-    while (Q3File_IsEndOfFile(file) == kQ3False) {
-        TQ3Object object = Q3File_ReadObject(file);
-        if (object == nullptr)
-            break;
-        objects.push_back(object);
-    }
-    Q3File_Close(file);
-    Q3Object_Dispose(file);
     Q3Object_Dispose(storage);
-    return objects;
+    EXPECT_EQ(Q3File_OpenRead(file, &mode), kQ3Success) << path;
+    return readAllAndClose(file);
 }
 
 class ExchangeApiTest : public Q3ApiTest {
@@ -292,11 +315,7 @@ TEST_F(ExchangeApiTest, EveryGeometryOfTheTestFilesKeepsItsDecomposition)
                 continue; // curves and points: no triangles to compare
             TQ3GroupObject back = roundTrip(object, std::to_string(k) + "-" + name + ".glb");
             ASSERT_NE(back, nullptr) << what;
-            std::vector<TQ3Object> meshes;
-            collectTriMeshes(back, meshes);
-            Triangles read;
-            for (TQ3Object mesh : meshes)
-                read.add(mesh);
+            const Triangles read = trianglesIn(back);
             expectSame(original, read, what);
             Q3Object_Dispose(back);
             ++checked;
@@ -324,13 +343,8 @@ protected:
             m_pixels.push_back(static_cast<unsigned char>(i * i));
         }
         TQ3StorageObject storage = Q3MemoryStorage_New(m_pixels.data(), static_cast<unsigned long>(m_pixels.size()));
-        TQ3Mipmap mipmap{};
-        mipmap.image = storage;
-        mipmap.useMipmapping = kQ3False;
-        mipmap.pixelType = kQ3PixelTypeARGB32;
-        mipmap.bitOrder = kQ3EndianBig;
-        mipmap.byteOrder = kQ3EndianBig;
-        mipmap.mipmaps[0] = TQ3MipmapImage{kWidth, kHeight, kWidth * 4, 0};
+        const TQ3Mipmap mipmap =
+            q3test::bigEndianMipmap(storage, kQ3PixelTypeARGB32, false, {{kWidth, kHeight, kWidth * 4, 0}});
         TQ3TextureObject texture = Q3MipmapTexture_New(&mipmap);
         Q3Object_Dispose(storage);
         TQ3ShaderObject shader = Q3TextureShader_New(texture);
@@ -664,12 +678,10 @@ TEST_F(ExchangeModelTest, ObjKeepsTheModelFlattenedWithItsMaterialAndTexture)
     EXPECT_NEAR(b.max.x, a.max.x, 1e-5);
     EXPECT_NEAR(b.min.z, a.min.z, 1e-5);
     EXPECT_NEAR(b.max.z, a.max.z, 1e-5);
+    const Triangles read = trianglesIn(back);
+    EXPECT_EQ(read.triangles.size(), 4u);
     std::vector<TQ3Object> meshes;
     collectTriMeshes(back, meshes);
-    Triangles read;
-    for (TQ3Object mesh : meshes)
-        read.add(mesh);
-    EXPECT_EQ(read.triangles.size(), 4u);
     ASSERT_FALSE(meshes.empty());
     TQ3TriMeshData data{};
     ASSERT_EQ(Q3TriMesh_GetData(meshes[0], &data), kQ3Success);
@@ -703,11 +715,7 @@ TEST_F(ExchangeModelTest, StlKeepsTheTrianglesFlattened)
     ASSERT_EQ(Q3Exchange_Write(m_group, path.c_str(), nullptr), kQ3Success);
     TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
     ASSERT_NE(back, nullptr);
-    std::vector<TQ3Object> meshes;
-    collectTriMeshes(back, meshes);
-    Triangles read;
-    for (TQ3Object mesh : meshes)
-        read.add(mesh);
+    const Triangles read = trianglesIn(back);
     EXPECT_EQ(read.triangles.size(), 4u);
     const TQ3BoundingBox a = bounds(m_group);
     const TQ3BoundingBox b = bounds(back);
@@ -740,11 +748,7 @@ TEST_F(ExchangeApiTest, EveryGeometryKeepsItsTriangleCountThroughStlAndObj)
                 ASSERT_EQ(Q3Exchange_Write(objects[k], path.c_str(), &options), kQ3Success) << path;
                 TQ3GroupObject back = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
                 ASSERT_NE(back, nullptr) << path;
-                std::vector<TQ3Object> meshes;
-                collectTriMeshes(back, meshes);
-                Triangles read;
-                for (TQ3Object mesh : meshes)
-                    read.add(mesh);
+                const Triangles read = trianglesIn(back);
                 EXPECT_EQ(read.triangles.size(), original.triangles.size()) << name << " " << k << ext;
                 Q3Object_Dispose(back);
             }
@@ -813,19 +817,15 @@ TEST_F(ExchangeApiTest, CamerasAndLightsSurviveGlb)
     unsigned long count = 0;
     Q3Group_CountObjects(readLights, &count);
     EXPECT_EQ(count, 2u);
-    Q3Group_GetFirstPositionOfType(readLights, kQ3LightTypeDirectional, &position);
-    ASSERT_NE(position, nullptr);
-    TQ3Object readSun = nullptr;
-    Q3Group_GetPositionObject(readLights, position, &readSun);
+    TQ3Object readSun = firstOfType(readLights, kQ3LightTypeDirectional);
+    ASSERT_NE(readSun, nullptr);
     TQ3Vector3D direction{};
     Q3DirectionalLight_GetDirection(readSun, &direction);
     EXPECT_NEAR(direction.x, 0, 1e-5);
     EXPECT_NEAR(direction.y, -std::sqrt(0.5), 1e-5);
     EXPECT_NEAR(direction.z, -std::sqrt(0.5), 1e-5);
-    Q3Group_GetFirstPositionOfType(readLights, kQ3LightTypePoint, &position);
-    ASSERT_NE(position, nullptr);
-    TQ3Object readBulb = nullptr;
-    Q3Group_GetPositionObject(readLights, position, &readBulb);
+    TQ3Object readBulb = firstOfType(readLights, kQ3LightTypePoint);
+    ASSERT_NE(readBulb, nullptr);
     TQ3Point3D location{};
     Q3PointLight_GetLocation(readBulb, &location);
     EXPECT_NEAR(location.x, 1, 1e-5);
@@ -874,25 +874,7 @@ TEST_F(ExchangeApiTest, CurvesAndPointsComeBackAsPolyLinesAndPoints)
     TQ3GroupObject back = roundTrip(group, "curves-points.glb");
     ASSERT_NE(back, nullptr);
     std::vector<TQ3Object> found;
-    std::function<void(TQ3Object)> gather = [&](TQ3Object object) {
-        if (Q3Object_IsType(object, kQ3GeometryTypePoint) == kQ3True ||
-            Q3Object_IsType(object, kQ3GeometryTypePolyLine) == kQ3True) {
-            found.push_back(object);
-            return;
-        }
-        if (Q3Object_IsType(object, kQ3ShapeTypeGroup) != kQ3True)
-            return;
-        TQ3GroupPosition position = nullptr;
-        Q3Group_GetFirstPosition(object, &position);
-        while (position != nullptr) {
-            TQ3Object child = nullptr;
-            Q3Group_GetPositionObject(object, position, &child);
-            gather(child);
-            Q3Object_Dispose(child);
-            Q3Group_GetNextPosition(object, &position);
-        }
-    };
-    gather(back);
+    collectOfTypes(back, {kQ3GeometryTypePoint, kQ3GeometryTypePolyLine}, found);
     ASSERT_EQ(found.size(), 2u);
     int points = 0, polyLines = 0;
     for (TQ3Object object : found) {

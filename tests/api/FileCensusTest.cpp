@@ -12,6 +12,7 @@
 #include "FileCensus.h"
 #include "FileTestSupport.h"
 #include "Q3ApiTest.h"
+#include "TextureTestSupport.h"
 
 #include "QD3DCamera.h"
 #include "QD3DGroup.h"
@@ -67,15 +68,8 @@ TQ3ShaderObject mipmapShader()
     for (std::size_t i = 0; i < chain.size(); ++i)
         chain[i] = static_cast<unsigned char>(29 * i + 7);
     TQ3StorageObject storage = Q3MemoryStorage_New(chain.data(), static_cast<unsigned long>(chain.size()));
-    TQ3Mipmap mipmap{};
-    mipmap.image = storage;
-    mipmap.useMipmapping = kQ3True;
-    mipmap.pixelType = kQ3PixelTypeRGB16;
-    mipmap.bitOrder = kQ3EndianBig;
-    mipmap.byteOrder = kQ3EndianBig;
-    mipmap.mipmaps[0] = TQ3MipmapImage{4, 4, 8, 0};
-    mipmap.mipmaps[1] = TQ3MipmapImage{2, 2, 4, 32};
-    mipmap.mipmaps[2] = TQ3MipmapImage{1, 1, 2, 40};
+    const TQ3Mipmap mipmap =
+        q3test::bigEndianMipmap(storage, kQ3PixelTypeRGB16, true, {{4, 4, 8, 0}, {2, 2, 4, 32}, {1, 1, 2, 40}});
     TQ3TextureObject texture = Q3MipmapTexture_New(&mipmap);
     TQ3ShaderObject shader = Q3TextureShader_New(texture);
     Q3Object_Dispose(texture);

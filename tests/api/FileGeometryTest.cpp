@@ -19,16 +19,13 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <initializer_list>
 #include <iterator>
 #include <string>
 
 using namespace q3test;
 
 namespace {
-
-const TQ3FileMode kModes[] = {kQ3FileModeNormal, kQ3FileModeNormal | kQ3FileModeText,
-                              kQ3FileModeStream, kQ3FileModeStream | kQ3FileModeText,
-                              kQ3FileModeDatabase, kQ3FileModeDatabase | kQ3FileModeText};
 
 std::vector<unsigned char> dataFile(const char* name)
 {
@@ -478,11 +475,7 @@ bool samePolyLine(TQ3Object a, TQ3Object b)
 
 // ---- the cases ----------------------------------------------------------------
 
-struct Case {
-    std::string name;
-    std::function<TQ3Object()> make;
-    std::function<bool(TQ3Object, TQ3Object)> same;
-};
+using Case = q3test::RoundTripCase;
 
 std::vector<Case> cases()
 {
@@ -502,14 +495,6 @@ std::vector<Case> cases()
 }
 
 // Whether an image has any pixel other than the first (the background).
-bool drawsSomething(const std::vector<std::uint32_t>& words)
-{
-    for (std::uint32_t w : words)
-        if (w != words.front())
-            return true;
-    return false;
-}
-
 class FileGeometryRoundTripTest : public Q3ApiTest, public ::testing::WithParamInterface<std::size_t> {};
 class FileGeometryTest : public Q3ApiTest {
 protected:
@@ -523,6 +508,21 @@ protected:
         if (at != std::string::npos)
             out.replace(at, from.size(), to);
         return bytesOf(out);
+    }
+
+    // One change to a text file: its first `from` replaced by `to`, and the
+    // error reading the changed file must give.
+    struct Change {
+        std::string from, to;
+        TQ3Error error;
+    };
+    // Each change makes a file whose reading fails with the change's error.
+    void expectEachChangeFails(const std::string& text, std::initializer_list<Change> changes)
+    {
+        for (const Change& c : changes) {
+            SCOPED_TRACE(c.to);
+            EXPECT_READ_ERROR(replaced(text, c.from, c.to), c.error);
+        }
     }
 
     // Every `step`th cut of a binary file is a file error, never a crash; a
@@ -551,31 +551,7 @@ protected:
 
 TEST_P(FileGeometryRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataAndImage)
 {
-    const Case c = cases()[GetParam()];
-    SCOPED_TRACE(c.name);
-    TQ3Object original = c.make();
-    ASSERT_NE(original, nullptr);
-    const auto expected = renderedWords(original);
-    EXPECT_TRUE(drawsSomething(expected));
-    for (TQ3FileMode mode : kModes) {
-        SCOPED_TRACE(mode);
-        const auto bytes = writeObjects({original}, mode);
-        TQ3FileMode readMode = 0;
-        TQ3FileObject file = openBytes(bytes, &readMode);
-        ASSERT_NE(file, nullptr);
-        EXPECT_EQ(readMode, mode);
-        EXPECT_EQ(Q3File_GetNextObjectType(file), Q3Object_GetLeafType(original));
-        TQ3Object back = Q3File_ReadObject(file);
-        ASSERT_NE(back, nullptr);
-        EXPECT_EQ(Q3File_IsEndOfFile(file), kQ3True);
-        Q3File_Close(file);
-        Q3Object_Dispose(file);
-        EXPECT_EQ(Q3Object_GetLeafType(back), Q3Object_GetLeafType(original));
-        EXPECT_TRUE(c.same(original, back));
-        EXPECT_TRUE(renderedWords(back) == expected);
-        Q3Object_Dispose(back);
-    }
-    Q3Object_Dispose(original);
+    expectRoundTripInEveryMode(cases()[GetParam()], /*isGeometry=*/false, /*mustDraw=*/true);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryClass, FileGeometryRoundTripTest, ::testing::Range<std::size_t>(0, cases().size()),
@@ -620,25 +596,25 @@ TEST_F(FileGeometryTest, MalformedPatchFilesAreFileErrorsNeverCrashes)
     // Truncated in the middle of the patch.
     EXPECT_READ_ERROR(bytesOf(text.substr(0, text.find("0 0 0 0.5"))), kQ3ErrorInvalidMetafile);
     // Counts that would need gigabytes.
-    EXPECT_READ_ERROR(replaced(text, "3 3 3 4", "3 3 65536 65536"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "NURBCurve2D ( 2 5", "NURBCurve2D ( 2 4000000000"), kQ3ErrorInvalidMetafileObject);
-    // A malformed number.
-    EXPECT_READ_ERROR(replaced(text, "0 0 0 0.5 1 1 1", "0 0 0 0.5.5 1 1 1"), kQ3ErrorInvalidMetafilePrimitive);
-    // More data than the counts announce.
-    EXPECT_READ_ERROR(replaced(text, "0 0 0 1 1 1\n", "0 0 0 1 1 1 7\n"), kQ3ErrorInvalidMetafileObject);
-    // Something other than a 2-D NURB curve in a trim loop.
-    EXPECT_READ_ERROR(replaced(text, "NURBCurve2D ( 2 3", "Point ( 0 0 0 ) NURBCurve2D ( 2 3"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    // A trim loop with no curve at all.
-    EXPECT_READ_ERROR(replaced(text, "Container (\n    TrimLoop ( )\n    NURBCurve2D ( 2 5 0.1 0.1 1  0.9 0.1 1  0.9 0.9 1  "
-                               "0.1 0.9 1  0.1 0.1 1  0 0 1 2 3 4 4 )\n  )",
-                               "TrimLoop ( )"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    // An open trim loop, decreasing knots, a zero weight: the patch's rules.
-    EXPECT_READ_ERROR(replaced(text, "0.1 0.9 1  0.1 0.1 1  0 0", "0.1 0.9 1  0.2 0.1 1  0 0"),
-                      kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "0 0 0 0.5 1 1 1", "0 0 0 0.5 0.25 1 1"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "-1 0 2 2", "-1 0 2 0"), kQ3ErrorInvalidMetafileObject);
+    expectEachChangeFails(text, {
+        {"3 3 3 4", "3 3 65536 65536", kQ3ErrorInvalidMetafileObject},
+        {"NURBCurve2D ( 2 5", "NURBCurve2D ( 2 4000000000", kQ3ErrorInvalidMetafileObject},
+        // A malformed number.
+        {"0 0 0 0.5 1 1 1", "0 0 0 0.5.5 1 1 1", kQ3ErrorInvalidMetafilePrimitive},
+        // More data than the counts announce.
+        {"0 0 0 1 1 1\n", "0 0 0 1 1 1 7\n", kQ3ErrorInvalidMetafileObject},
+        // Something other than a 2-D NURB curve in a trim loop.
+        {"NURBCurve2D ( 2 3", "Point ( 0 0 0 ) NURBCurve2D ( 2 3", kQ3ErrorInvalidMetafileSubObject},
+        // A trim loop with no curve at all.
+        {"Container (\n    TrimLoop ( )\n    NURBCurve2D ( 2 5 0.1 0.1 1  0.9 0.1 1  0.9 0.9 1  "
+         "0.1 0.9 1  0.1 0.1 1  0 0 1 2 3 4 4 )\n  )",
+         "TrimLoop ( )",
+         kQ3ErrorInvalidMetafileSubObject},
+        // An open trim loop, decreasing knots, a zero weight: the patch's rules.
+        {"0.1 0.9 1  0.1 0.1 1  0 0", "0.1 0.9 1  0.2 0.1 1  0 0", kQ3ErrorInvalidMetafileObject},
+        {"0 0 0 0.5 1 1 1", "0 0 0 0.5 0.25 1 1", kQ3ErrorInvalidMetafileObject},
+        {"-1 0 2 2", "-1 0 2 0", kQ3ErrorInvalidMetafileObject},
+    });
     // The reader goes on after a failed object.
     TQ3FileObject file = openBytes(bytesOf(text + "\nPoint ( 1 2 3 )\n"));
     ASSERT_NE(file, nullptr);
@@ -696,33 +672,32 @@ TEST_F(FileGeometryTest, MalformedMeshFilesAreFileErrorsNeverCrashes)
     ASSERT_FALSE(text.empty());
     EXPECT_READ_ERROR(bytesOf(text.substr(0, text.find("-4 4 7"))), kQ3ErrorInvalidMetafile);
     // Counts that would need gigabytes.
-    EXPECT_READ_ERROR(replaced(text, "    9\n", "    4000000000\n"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "2 1            #", "2000000000 2000000000 #"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "3 1 8 2", "2147483647 1 8 2"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "-4 4 7 6 5", "-2147483648 4 7 6 5"), kQ3ErrorInvalidMetafileObject);
-    // A vertex index past the end; a contour before any face; fewer faces
-    // than announced; a face the mesh refuses (two vertices).
-    EXPECT_READ_ERROR(replaced(text, "3 1 8 2", "3 1 9 2"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "4 0 1 2 3\n    -4 4 7 6 5", "-4 4 7 6 5\n    4 0 1 2 3"),
-                      kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "2 1            #", "3 0 #"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "3 1 8 2", "2 1 8"), kQ3ErrorInvalidMetafileObject);
+    expectEachChangeFails(text, {
+        {"    9\n", "    4000000000\n", kQ3ErrorInvalidMetafileObject},
+        {"2 1            #", "2000000000 2000000000 #", kQ3ErrorInvalidMetafileObject},
+        {"3 1 8 2", "2147483647 1 8 2", kQ3ErrorInvalidMetafileObject},
+        {"-4 4 7 6 5", "-2147483648 4 7 6 5", kQ3ErrorInvalidMetafileObject},
+        // A vertex index past the end; a contour before any face; fewer faces
+        // than announced; a face the mesh refuses (two vertices).
+        {"3 1 8 2", "3 1 9 2", kQ3ErrorInvalidMetafileObject},
+        {"4 0 1 2 3\n    -4 4 7 6 5", "-4 4 7 6 5\n    4 0 1 2 3", kQ3ErrorInvalidMetafileObject},
+        {"2 1            #", "3 0 #", kQ3ErrorInvalidMetafileObject},
+        {"3 1 8 2", "2 1 8", kQ3ErrorInvalidMetafileObject},
+    });
     // A face through one vertex twice is degenerate, not malformed: it reads
     // (docs/3dmf.md, Tolerances).
     EXPECT_EQ(readError(replaced(text, "3 1 8 2", "3 1 8 1")), kQ3ErrorNone);
     // A malformed number.
-    EXPECT_READ_ERROR(replaced(text, "1.5 0 0.5", "1.5 0 0.5e"), kQ3ErrorInvalidMetafilePrimitive);
-    // Subobjects that do not fit: a corner on a face the mesh lacks, a corner
-    // list without its sets, a face set list for another count.
-    EXPECT_READ_ERROR(replaced(text, "MeshCorners ( 1  1 2 2 0 )", "MeshCorners ( 1  1 2 2 1 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "MeshCorners ( 1  1 2 2 0 )", "MeshCorners ( 2  1 2 2 0  2 1 0 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "FaceAttributeSetList ( 3", "FaceAttributeSetList ( 4"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    // A corner at a vertex its face does not have.
-    EXPECT_READ_ERROR(replaced(text, "MeshCorners ( 1  1 2 2 0 )", "MeshCorners ( 1  8 1 0 )"),
-                      kQ3ErrorInvalidMetafileObject);
+    expectEachChangeFails(text, {
+        {"1.5 0 0.5", "1.5 0 0.5e", kQ3ErrorInvalidMetafilePrimitive},
+        // Subobjects that do not fit: a corner on a face the mesh lacks, a corner
+        // list without its sets, a face set list for another count.
+        {"MeshCorners ( 1  1 2 2 0 )", "MeshCorners ( 1  1 2 2 1 )", kQ3ErrorInvalidMetafileSubObject},
+        {"MeshCorners ( 1  1 2 2 0 )", "MeshCorners ( 2  1 2 2 0  2 1 0 )", kQ3ErrorInvalidMetafileSubObject},
+        {"FaceAttributeSetList ( 3", "FaceAttributeSetList ( 4", kQ3ErrorInvalidMetafileSubObject},
+        // A corner at a vertex its face does not have.
+        {"MeshCorners ( 1  1 2 2 0 )", "MeshCorners ( 1  8 1 0 )", kQ3ErrorInvalidMetafileObject},
+    });
     EXPECT_READ_ERROR(bytesOf("3DMetafile ( 1 6 Normal )\nMeshCorners ( 0 )\n"), kQ3ErrorInvalidMetafileObject);
 
     const auto binary = dataFile("mesh_be.3dmf");
@@ -776,48 +751,48 @@ TEST_F(FileGeometryTest, MalformedPolygonFilesAreFileErrorsNeverCrashes)
     const std::string text(bytes.begin(), bytes.end());
     ASSERT_FALSE(text.empty());
     // Counts that would need gigabytes.
-    EXPECT_READ_ERROR(replaced(text, "    2\n    4  -2", "    4000000000\n    4  -2"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "    3  -0.5", "    300000000  -0.5"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "TriGrid ( 2 3", "TriGrid ( 65536 65536"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "4 2                                 #", "4 2000000000 #"),
-                      kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "10 5 2 LittleEndian", "10 100000 100000 LittleEndian"),
-                      kQ3ErrorInvalidMetafileObject);
-    // Bad words and numbers.
-    EXPECT_READ_ERROR(replaced(text, "GeneralPolygonHint ( Concave )", "GeneralPolygonHint ( Wobbly )"),
-                      kQ3ErrorInvalidMetafilePrimitive);
-    EXPECT_READ_ERROR(replaced(text, "LittleEndian", "MiddleEndian"), kQ3ErrorInvalidMetafilePrimitive);
-    EXPECT_READ_ERROR(replaced(text, "1 0 3 0 255 3", "1 0 3 0 256 3"), kQ3ErrorInvalidMetafilePrimitive);
-    EXPECT_READ_ERROR(replaced(text, "0 1.5 0\n", "0 1.5 0x\n"), kQ3ErrorInvalidMetafilePrimitive);
-    // Data their classes refuse: a contour of two vertices, a grid of one row,
-    // a triangle naming a vertex past the end, an edge flag out of range, a
-    // marker row too short for its width.
-    EXPECT_READ_ERROR(replaced(text, "    3  -0.5 -0.5 0  0 0.75 0  0.5 -0.5 0", "    2  -0.5 -0.5 0  0 0.75 0"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "TriGrid ( 2 3", "TriGrid ( 1 6"), kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "0 2 1 7  0 1 3", "0 2 9 7  0 1 3"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "0 2 1 7  0 1 3", "0 2 1 8  0 1 3"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "10 5 2 LittleEndian  1 0 3 0 255 3 3 0 1 0", "17 5 2 LittleEndian  1 0 3 0 255 3 3 0 1 0"),
-                      kQ3ErrorInvalidMetafileObject);
-    // More data than the counts announce, and attribute set lists that do
-    // not fit.
-    EXPECT_READ_ERROR(replaced(text, "0 1 0.5  2 1 0 )", "0 1 0.5  2 1 0 1 )"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "FaceAttributeSetList ( 4 Include 1  1 )", "FaceAttributeSetList ( 6 Include 1  1 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "VertexAttributeSetList ( 7 Include 2  0 5 )",
-                               "VertexAttributeSetList ( 7 Include 2  0 7 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    // The polyhedron's edge sets: a list for three edges of two, one naming
-    // an edge past the end, one listing a set it does not hold.
-    EXPECT_READ_ERROR(replaced(text, "GeometryAttributeSetList ( 2 Include 1  1 )",
-                               "GeometryAttributeSetList ( 3 Include 1  1 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "GeometryAttributeSetList ( 2 Include 1  1 )",
-                               "GeometryAttributeSetList ( 2 Include 1  2 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "GeometryAttributeSetList ( 2 Include 1  1 )",
-                               "GeometryAttributeSetList ( 2 Include 2  0 1 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
+    expectEachChangeFails(text, {
+        {"    2\n    4  -2", "    4000000000\n    4  -2", kQ3ErrorInvalidMetafileObject},
+        {"    3  -0.5", "    300000000  -0.5", kQ3ErrorInvalidMetafileObject},
+        {"TriGrid ( 2 3", "TriGrid ( 65536 65536", kQ3ErrorInvalidMetafileObject},
+        {"4 2                                 #", "4 2000000000 #", kQ3ErrorInvalidMetafileObject},
+        {"10 5 2 LittleEndian", "10 100000 100000 LittleEndian", kQ3ErrorInvalidMetafileObject},
+        // Bad words and numbers.
+        {"GeneralPolygonHint ( Concave )", "GeneralPolygonHint ( Wobbly )", kQ3ErrorInvalidMetafilePrimitive},
+        {"LittleEndian", "MiddleEndian", kQ3ErrorInvalidMetafilePrimitive},
+        {"1 0 3 0 255 3", "1 0 3 0 256 3", kQ3ErrorInvalidMetafilePrimitive},
+        {"0 1.5 0\n", "0 1.5 0x\n", kQ3ErrorInvalidMetafilePrimitive},
+        // Data their classes refuse: a contour of two vertices, a grid of one row,
+        // a triangle naming a vertex past the end, an edge flag out of range, a
+        // marker row too short for its width.
+        {"    3  -0.5 -0.5 0  0 0.75 0  0.5 -0.5 0", "    2  -0.5 -0.5 0  0 0.75 0", kQ3ErrorInvalidMetafileSubObject},
+        {"TriGrid ( 2 3", "TriGrid ( 1 6", kQ3ErrorInvalidMetafileSubObject},
+        {"0 2 1 7  0 1 3", "0 2 9 7  0 1 3", kQ3ErrorInvalidMetafileObject},
+        {"0 2 1 7  0 1 3", "0 2 1 8  0 1 3", kQ3ErrorInvalidMetafileObject},
+        {"10 5 2 LittleEndian  1 0 3 0 255 3 3 0 1 0",
+         "17 5 2 LittleEndian  1 0 3 0 255 3 3 0 1 0",
+         kQ3ErrorInvalidMetafileObject},
+        // More data than the counts announce, and attribute set lists that do
+        // not fit.
+        {"0 1 0.5  2 1 0 )", "0 1 0.5  2 1 0 1 )", kQ3ErrorInvalidMetafileObject},
+        {"FaceAttributeSetList ( 4 Include 1  1 )",
+         "FaceAttributeSetList ( 6 Include 1  1 )",
+         kQ3ErrorInvalidMetafileSubObject},
+        {"VertexAttributeSetList ( 7 Include 2  0 5 )",
+         "VertexAttributeSetList ( 7 Include 2  0 7 )",
+         kQ3ErrorInvalidMetafileSubObject},
+        // The polyhedron's edge sets: a list for three edges of two, one naming
+        // an edge past the end, one listing a set it does not hold.
+        {"GeometryAttributeSetList ( 2 Include 1  1 )",
+         "GeometryAttributeSetList ( 3 Include 1  1 )",
+         kQ3ErrorInvalidMetafileSubObject},
+        {"GeometryAttributeSetList ( 2 Include 1  1 )",
+         "GeometryAttributeSetList ( 2 Include 1  2 )",
+         kQ3ErrorInvalidMetafileSubObject},
+        {"GeometryAttributeSetList ( 2 Include 1  1 )",
+         "GeometryAttributeSetList ( 2 Include 2  0 1 )",
+         kQ3ErrorInvalidMetafileSubObject},
+    });
 
     for (const char* name : {"polygons_be.3dmf", "polygons_le.3dmf"}) {
         SCOPED_TRACE(name);
@@ -974,18 +949,16 @@ TEST_F(FileGeometryTest, MalformedPartSetFilesAreFileErrorsNeverCrashes)
     const std::string text(bytes.begin(), bytes.end());
     ASSERT_FALSE(text.empty());
     // Lists for another count; a cap set without its set, or with a point.
-    EXPECT_READ_ERROR(replaced(text, "FaceAttributeSetList ( 6", "FaceAttributeSetList ( 5"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "GeometryAttributeSetList ( 3", "GeometryAttributeSetList ( 4"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "TopCapAttributeSet ( ) Container ( AttributeSet ( ) DiffuseColor ( 1 0 0 ) )",
-                               "TopCapAttributeSet ( )"),
-                      kQ3ErrorInvalidMetafileSubObject);
-    EXPECT_READ_ERROR(replaced(text, "TopCapAttributeSet ( ) Container ( AttributeSet ( ) DiffuseColor ( 1 0 0 ) )",
-                               "TopCapAttributeSet ( ) Point ( 0 0 0 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
+    expectEachChangeFails(text, {
+        {"FaceAttributeSetList ( 6", "FaceAttributeSetList ( 5", kQ3ErrorInvalidMetafileSubObject},
+        {"GeometryAttributeSetList ( 3", "GeometryAttributeSetList ( 4", kQ3ErrorInvalidMetafileSubObject},
+        {"TopCapAttributeSet ( ) Container ( AttributeSet ( ) DiffuseColor ( 1 0 0 ) )",
+         "TopCapAttributeSet ( )",
+         kQ3ErrorInvalidMetafileSubObject},
+        {"TopCapAttributeSet ( ) Container ( AttributeSet ( ) DiffuseColor ( 1 0 0 ) )",
+         "TopCapAttributeSet ( ) Point ( 0 0 0 )",
+         kQ3ErrorInvalidMetafileSubObject},
+    });
     EXPECT_READ_ERROR(bytesOf("3DMetafile ( 1 6 Normal )\nTopCapAttributeSet ( )\n"), kQ3ErrorInvalidMetafileObject);
-    EXPECT_READ_ERROR(replaced(text, "GeometryAttributeSetList ( 3 Include 2  0 2 )",
-                               "GeometryAttributeSetList ( 3 Include 2  0 3 )"),
-                      kQ3ErrorInvalidMetafileSubObject);
+    EXPECT_READ_ERROR(replaced(text, "GeometryAttributeSetList ( 3 Include 2  0 2 )", "GeometryAttributeSetList ( 3 Include 2  0 3 )"), kQ3ErrorInvalidMetafileSubObject);
 }

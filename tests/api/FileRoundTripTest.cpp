@@ -23,10 +23,6 @@ using namespace q3test;
 
 namespace {
 
-const TQ3FileMode kModes[] = {kQ3FileModeNormal, kQ3FileModeNormal | kQ3FileModeText,
-                              kQ3FileModeStream, kQ3FileModeStream | kQ3FileModeText,
-                              kQ3FileModeDatabase, kQ3FileModeDatabase | kQ3FileModeText};
-
 TQ3AttributeSet colorSet(float r, float g, float b)
 {
     TQ3AttributeSet set = Q3AttributeSet_New();
@@ -40,11 +36,7 @@ bool sameVector(const TQ3Vector3D& a, const TQ3Vector3D& b)
     return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
-struct Case {
-    std::string name;
-    std::function<TQ3Object()> make;
-    std::function<bool(TQ3Object, TQ3Object)> same;
-};
+using Case = q3test::RoundTripCase;
 
 template <class Data, class Get, class Empty, class Compare>
 std::function<bool(TQ3Object, TQ3Object)> byData(Get get, Empty empty, Compare compare)
@@ -349,31 +341,7 @@ class FileRoundTripTest : public Q3ApiTest, public ::testing::WithParamInterface
 
 TEST_P(FileRoundTripTest, WrittenAndReadBackInEveryModeGivesTheSameDataAndImage)
 {
-    const Case c = cases()[GetParam()];
-    SCOPED_TRACE(c.name);
-    TQ3Object original = c.make();
-    ASSERT_NE(original, nullptr);
-    const auto expected = renderedWords(original);
-    for (TQ3FileMode mode : kModes) {
-        SCOPED_TRACE(mode);
-        const auto bytes = writeObjects({original}, mode);
-        TQ3FileMode readMode = 0;
-        TQ3FileObject file = openBytes(bytes, &readMode);
-        ASSERT_NE(file, nullptr);
-        EXPECT_EQ(readMode, mode);
-        EXPECT_EQ(Q3File_GetNextObjectType(file), Q3Object_GetLeafType(original));
-        EXPECT_EQ(Q3File_IsNextObjectOfType(file, kQ3ShapeTypeGeometry), kQ3True);
-        TQ3Object back = Q3File_ReadObject(file);
-        ASSERT_NE(back, nullptr);
-        EXPECT_EQ(Q3File_IsEndOfFile(file), kQ3True);
-        Q3File_Close(file);
-        Q3Object_Dispose(file);
-        EXPECT_EQ(Q3Object_GetLeafType(back), Q3Object_GetLeafType(original));
-        EXPECT_TRUE(c.same(original, back));
-        EXPECT_TRUE(renderedWords(back) == expected);
-        Q3Object_Dispose(back);
-    }
-    Q3Object_Dispose(original);
+    expectRoundTripInEveryMode(cases()[GetParam()], /*isGeometry=*/true, /*mustDraw=*/false);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryClass, FileRoundTripTest, ::testing::Range<std::size_t>(0, 14),

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -108,13 +109,11 @@ inline std::vector<unsigned char> bytesOf(const std::string& text)
     return std::vector<unsigned char>(text.begin(), text.end());
 }
 
-/// Every object of the file (stops at the first failure).
-inline std::vector<TQ3Object> readAll(const std::vector<unsigned char>& bytes)
+/// Every object of a file open for reading (stops at the first failure);
+/// closes and disposes the file.
+inline std::vector<TQ3Object> readAllAndClose(TQ3FileObject file)
 {
     std::vector<TQ3Object> objects;
-    TQ3FileObject file = openBytes(bytes);
-    if (file == nullptr)
-        return objects;
     while (Q3File_IsEndOfFile(file) == kQ3False) {
         TQ3Object object = Q3File_ReadObject(file);
         if (object == nullptr)
@@ -124,6 +123,15 @@ inline std::vector<TQ3Object> readAll(const std::vector<unsigned char>& bytes)
     Q3File_Close(file);
     Q3Object_Dispose(file);
     return objects;
+}
+
+/// Every object of the file (stops at the first failure).
+inline std::vector<TQ3Object> readAll(const std::vector<unsigned char>& bytes)
+{
+    TQ3FileObject file = openBytes(bytes);
+    if (file == nullptr)
+        return {};
+    return readAllAndClose(file);
 }
 
 inline void disposeAll(const std::vector<TQ3Object>& objects)
@@ -299,6 +307,65 @@ inline std::vector<std::uint32_t> renderedWords(TQ3Object object)
         for (unsigned long x = 0; x < image.width(); ++x)
             words.push_back(image.word(x, y));
     return words;
+}
+
+/// The six ways a file is written: Normal, Stream and Database, each binary
+/// and text.
+const TQ3FileMode kEveryFileMode[] = {kQ3FileModeNormal,   kQ3FileModeNormal | kQ3FileModeText,
+                                      kQ3FileModeStream,   kQ3FileModeStream | kQ3FileModeText,
+                                      kQ3FileModeDatabase, kQ3FileModeDatabase | kQ3FileModeText};
+
+/// Whether an image (renderedWords) has more than one colour.
+inline bool drawsSomething(const std::vector<std::uint32_t>& words)
+{
+    for (std::uint32_t w : words)
+        if (w != words.front())
+            return true;
+    return false;
+}
+
+/// An object a round-trip test writes, and how to tell whether what is read
+/// back holds the same.
+struct RoundTripCase {
+    std::string name;
+    std::function<TQ3Object()> make;
+    std::function<bool(TQ3Object, TQ3Object)> same;
+};
+
+/// Writes the case's object alone in each of kEveryFileMode and reads it
+/// back: the file opens in that mode, names the object's type first (a
+/// geometry, if `isGeometry`) and holds that one object, which is of the same
+/// leaf type, the same by the case's comparison, and drawn to the same
+/// pixels; if `mustDraw`, the object draws something at all.
+inline void expectRoundTripInEveryMode(const RoundTripCase& c, bool isGeometry, bool mustDraw)
+{
+    SCOPED_TRACE(c.name);
+    TQ3Object original = c.make();
+    ASSERT_NE(original, nullptr);
+    const auto expected = renderedWords(original);
+    if (mustDraw)
+        EXPECT_TRUE(drawsSomething(expected));
+    for (TQ3FileMode mode : kEveryFileMode) {
+        SCOPED_TRACE(mode);
+        const auto bytes = writeObjects({original}, mode);
+        TQ3FileMode readMode = 0;
+        TQ3FileObject file = openBytes(bytes, &readMode);
+        ASSERT_NE(file, nullptr);
+        EXPECT_EQ(readMode, mode);
+        EXPECT_EQ(Q3File_GetNextObjectType(file), Q3Object_GetLeafType(original));
+        if (isGeometry)
+            EXPECT_EQ(Q3File_IsNextObjectOfType(file, kQ3ShapeTypeGeometry), kQ3True);
+        TQ3Object back = Q3File_ReadObject(file);
+        ASSERT_NE(back, nullptr);
+        EXPECT_EQ(Q3File_IsEndOfFile(file), kQ3True);
+        Q3File_Close(file);
+        Q3Object_Dispose(file);
+        EXPECT_EQ(Q3Object_GetLeafType(back), Q3Object_GetLeafType(original));
+        EXPECT_TRUE(c.same(original, back));
+        EXPECT_TRUE(renderedWords(back) == expected);
+        Q3Object_Dispose(back);
+    }
+    Q3Object_Dispose(original);
 }
 
 } // namespace q3test

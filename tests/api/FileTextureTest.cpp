@@ -11,6 +11,7 @@
 
 #include "FileTestSupport.h"
 #include "Q3ApiTest.h"
+#include "TextureTestSupport.h"
 
 #include "QD3DSet.h"
 #include "QD3DShader.h"
@@ -159,15 +160,8 @@ struct Made {
         for (std::size_t i = 0; i < chain.size(); ++i)
             chain[i] = static_cast<unsigned char>(29 * i + 7);
         mipmapStorage = Q3MemoryStorage_New(chain.data(), 100);
-        TQ3Mipmap mipmap{};
-        mipmap.image = mipmapStorage;
-        mipmap.useMipmapping = kQ3True;
-        mipmap.pixelType = kQ3PixelTypeARGB16;
-        mipmap.bitOrder = kQ3EndianBig;
-        mipmap.byteOrder = kQ3EndianBig;
-        mipmap.mipmaps[0] = TQ3MipmapImage{4, 4, 10, 2};
-        mipmap.mipmaps[1] = TQ3MipmapImage{2, 2, 6, 50};
-        mipmap.mipmaps[2] = TQ3MipmapImage{1, 1, 2, 90};
+        const TQ3Mipmap mipmap = q3test::bigEndianMipmap(mipmapStorage, kQ3PixelTypeARGB16, true,
+                                                         {{4, 4, 10, 2}, {2, 2, 6, 50}, {1, 1, 2, 90}});
         mipmapTexture = Q3MipmapTexture_New(&mipmap);
         mipmapShader = Q3TextureShader_New(mipmapTexture);
         Q3Shader_SetVBoundary(mipmapShader, kQ3ShaderUVBoundaryClamp);

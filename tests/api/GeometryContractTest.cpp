@@ -947,6 +947,9 @@ TYPED_TEST(GeometryContractTest, TheGeometryAttributeSetIsTheLastSlot)
     const auto before = this->stateOf(geometry);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_SetAttributeSet(geometry, this->view()), kQ3Failure),
                     kQ3ErrorInvalidObjectType);
+    // A shared object of another class, the geometry itself, is no set either.
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_SetAttributeSet(geometry, geometry), kQ3Failure),
+                    kQ3ErrorInvalidObjectType);
     this->expectSameState(before, this->stateOf(geometry));
     ASSERT_EQ(Q3Geometry_SetAttributeSet(geometry, nullptr), kQ3Success);
     ASSERT_EQ(Q3Geometry_GetAttributeSet(geometry, &got), kQ3Success);

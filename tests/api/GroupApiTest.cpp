@@ -23,6 +23,30 @@ using namespace q3test;
 
 class GroupApiTest : public OwningApiTest {
 protected:
+    /// The objects of `type` in `group`, first to last (`forwards`) or last
+    /// to first, through the ...PositionOfType calls; the group keeps the
+    /// references.
+    static std::vector<TQ3Object> walkOfType(TQ3GroupObject group, TQ3ObjectType type, bool forwards)
+    {
+        std::vector<TQ3Object> objects;
+        TQ3GroupPosition position = nullptr;
+        if (forwards)
+            Q3Group_GetFirstPositionOfType(group, type, &position);
+        else
+            Q3Group_GetLastPositionOfType(group, type, &position);
+        while (position != nullptr) {
+            TQ3Object object = nullptr;
+            Q3Group_GetPositionObject(group, position, &object);
+            objects.push_back(object);
+            Q3Object_Dispose(object);
+            if (forwards)
+                Q3Group_GetNextPositionOfType(group, type, &position);
+            else
+                Q3Group_GetPreviousPositionOfType(group, type, &position);
+        }
+        return objects;
+    }
+
     TQ3GeometryObject point(float x)
     {
         const TQ3PointData data{{x, 0.0f, 0.0f}, nullptr};
@@ -274,29 +298,10 @@ TEST_F(GroupApiTest, OfTypeCallsSeeOnlyThatTypeAndItsSubclasses)
     EXPECT_EQ(count(group, kQ3ShapeTypeStyle), 1u);
     EXPECT_EQ(count(group, kQ3SharedTypeShape), 5u);
 
-    std::vector<TQ3Object> transforms;
+    EXPECT_EQ(walkOfType(group, kQ3ShapeTypeTransform, true), (std::vector<TQ3Object>{t1, t2}));
+    EXPECT_EQ(walkOfType(group, kQ3ShapeTypeGeometry, false), (std::vector<TQ3Object>{p2, p1}));
+
     TQ3GroupPosition position = nullptr;
-    Q3Group_GetFirstPositionOfType(group, kQ3ShapeTypeTransform, &position);
-    while (position != nullptr) {
-        TQ3Object object = nullptr;
-        Q3Group_GetPositionObject(group, position, &object);
-        transforms.push_back(object);
-        Q3Object_Dispose(object);
-        Q3Group_GetNextPositionOfType(group, kQ3ShapeTypeTransform, &position);
-    }
-    EXPECT_EQ(transforms, (std::vector<TQ3Object>{t1, t2}));
-
-    std::vector<TQ3Object> backwards;
-    Q3Group_GetLastPositionOfType(group, kQ3ShapeTypeGeometry, &position);
-    while (position != nullptr) {
-        TQ3Object object = nullptr;
-        Q3Group_GetPositionObject(group, position, &object);
-        backwards.push_back(object);
-        Q3Object_Dispose(object);
-        Q3Group_GetPreviousPositionOfType(group, kQ3ShapeTypeGeometry, &position);
-    }
-    EXPECT_EQ(backwards, (std::vector<TQ3Object>{p2, p1}));
-
     Q3Group_GetFirstPositionOfType(group, kQ3ShapeTypeShader, &position);
     EXPECT_EQ(position, nullptr);
 

@@ -150,14 +150,7 @@ class LightingRenderTest : public q3test::OwningApiTest {
 protected:
     TQ3CameraObject camera()
     {
-        TQ3OrthographicCameraData data{};
-        data.cameraData.placement = {{0, 0, 10}, {0, 0, 0}, {0, 1, 0}};
-        data.cameraData.range = {1.0f, 100.0f};
-        data.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
-        data.left = float(-kHalf);
-        data.right = float(kHalf);
-        data.top = float(kHalf);
-        data.bottom = float(-kHalf);
+        const TQ3OrthographicCameraData data = q3test::orthographicCameraAt(0, 0, float(kHalf), float(kHalf));
         return own(Q3OrthographicCamera_New(&data));
     }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
+#include "MathTestSupport.h"
 #include "Q3ApiTest.h"
 
 #include "QD3DMath.h"
@@ -21,13 +22,7 @@ constexpr float kTolerance = 1e-6f;
 
 TQ3Matrix4x4 matrixOf(std::initializer_list<float> rowMajor)
 {
-    TQ3Matrix4x4 m{};
-    int k = 0;
-    for (float v : rowMajor) {
-        m.value[k / 4][k % 4] = v;
-        ++k;
-    }
-    return m;
+    return q3test::matrix4x4Of(rowMajor);
 }
 
 TQ3Matrix4x4 filled(float value)

@@ -19,10 +19,29 @@
 namespace {
 
 using namespace q3test;
-using MathTransformArrayApiTest = Q3ApiTest;
 
 // Rotation, scale, translation and a perspective column together.
 const TQ3Matrix4x4 kMatrix = matrix4x4Of({0.5f, 1, 0, 0.1f, -2, 0.25f, 1, 0, 0, 3, 2, -0.2f, 7, -4, 1.5f, 1});
+
+class MathTransformArrayApiTest : public Q3ApiTest {
+protected:
+    // Each of the three array calls on one point (in to out, in to out4, in4 to
+    // out4) refuses `count` as out of range.
+    void expectCountRejected(long count, const TQ3Point3D& in, const TQ3RationalPoint4D& in4, TQ3Point3D& out,
+                             TQ3RationalPoint4D& out4)
+    {
+        EXPECT_Q3_ERROR(
+            EXPECT_EQ(Q3Point3D_To3DTransformArray(&in, &kMatrix, &out, count, sizeof in, sizeof out), kQ3Failure),
+            kQ3ErrorParameterOutOfRange);
+        EXPECT_Q3_ERROR(
+            EXPECT_EQ(Q3Point3D_To4DTransformArray(&in, &kMatrix, &out4, count, sizeof in, sizeof out4), kQ3Failure),
+            kQ3ErrorParameterOutOfRange);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_To4DTransformArray(&in4, &kMatrix, &out4, count, sizeof in4,
+                                                                       sizeof out4),
+                                  kQ3Failure),
+                        kQ3ErrorParameterOutOfRange);
+    }
+};
 
 // The points sit inside a larger vertex, as in legacy vertex arrays.
 struct Vertex {
@@ -238,18 +257,8 @@ TEST_F(MathTransformArrayApiTest, NegativeCountsAreRejected)
     const TQ3RationalPoint4D in4{1, 2, 3, 1};
     TQ3Point3D out = filledWith<TQ3Point3D>(7);
     TQ3RationalPoint4D out4 = filledWith<TQ3RationalPoint4D>(7);
-    for (long count : {-1L, -2L, LONG_MIN}) {
-        EXPECT_Q3_ERROR(
-            EXPECT_EQ(Q3Point3D_To3DTransformArray(&in, &kMatrix, &out, count, sizeof in, sizeof out), kQ3Failure),
-            kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(
-            EXPECT_EQ(Q3Point3D_To4DTransformArray(&in, &kMatrix, &out4, count, sizeof in, sizeof out4), kQ3Failure),
-            kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_To4DTransformArray(&in4, &kMatrix, &out4, count, sizeof in4,
-                                                                       sizeof out4),
-                                  kQ3Failure),
-                        kQ3ErrorParameterOutOfRange);
-    }
+    for (long count : {-1L, -2L, LONG_MIN})
+        expectCountRejected(count, in, in4, out, out4);
     EXPECT_TRUE(sameBits(out, filledWith<TQ3Point3D>(7)));
     EXPECT_TRUE(sameBits(out4, filledWith<TQ3RationalPoint4D>(7)));
 }
@@ -262,18 +271,8 @@ TEST_F(MathTransformArrayApiTest, CountsNoArrayCouldHoldAreRejectedBeforeAnythin
     const TQ3RationalPoint4D in4{1, 2, 3, 1};
     TQ3Point3D out = filledWith<TQ3Point3D>(7);
     TQ3RationalPoint4D out4 = filledWith<TQ3RationalPoint4D>(7);
-    for (long count : {LONG_MAX, LONG_MAX / 12 + 1, 1L << 62, 1L << 60}) {
-        EXPECT_Q3_ERROR(
-            EXPECT_EQ(Q3Point3D_To3DTransformArray(&in, &kMatrix, &out, count, sizeof in, sizeof out), kQ3Failure),
-            kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(
-            EXPECT_EQ(Q3Point3D_To4DTransformArray(&in, &kMatrix, &out4, count, sizeof in, sizeof out4), kQ3Failure),
-            kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_To4DTransformArray(&in4, &kMatrix, &out4, count, sizeof in4,
-                                                                       sizeof out4),
-                                  kQ3Failure),
-                        kQ3ErrorParameterOutOfRange);
-    }
+    for (long count : {LONG_MAX, LONG_MAX / 12 + 1, 1L << 62, 1L << 60})
+        expectCountRejected(count, in, in4, out, out4);
     // Two points at a stride that reaches past the end of the address space.
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_To3DTransformArray(&in, &kMatrix, &out, 2, ULONG_MAX, sizeof out), kQ3Failure),
                     kQ3ErrorParameterOutOfRange);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
+#include "NURBCurveTestSupport.h"
 #include "Q3ApiTest.h"
 
 #include "QD3DGeometry.h"
@@ -18,32 +19,9 @@ using q3test::Q3ApiTest;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// A curve under test, owning its arrays so each test can break one thing.
-struct CurveArrays {
-    std::vector<TQ3RationalPoint4D> points;
-    std::vector<float> knots;
-    unsigned long order;
-    TQ3AttributeSet attributes = nullptr;
-
-    TQ3NURBCurveData data()
-    {
-        return TQ3NURBCurveData{order, points.size(), points.data(), knots.data(), attributes};
-    }
-};
-
-// The article's Listing 1: a cubic Bezier curve.
-CurveArrays listing1()
-{
-    return {{{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}}, {0, 0, 0, 0, 1, 1, 1, 1}, 4};
-}
-
-// A quadratic with six points and interior knots, the article's Figure 13 shape.
-CurveArrays sixPointQuadratic()
-{
-    return {{{0, 0, 0, 1}, {1, 2, 0, 1}, {2, 0, 0, 1}, {3, 2, 0, 1}, {4, 0, 0, 1}, {5, 2, 0, 1}},
-            {0, 0, 0, 1, 2, 3, 4, 4, 4},
-            3};
-}
+using q3test::CurveArrays;
+using q3test::listing1;
+using q3test::sixPointQuadratic;
 
 class NURBCurveApiTest : public Q3ApiTest {
 protected:

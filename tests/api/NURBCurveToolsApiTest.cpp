@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
+#include "NURBCurveTestSupport.h"
 #include "OwningApiTest.h"
 
 #include "Q3NURBCurveTools.h"
@@ -25,35 +26,9 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // ---- Curves the tests own -------------------------------------------------------
 
-struct CurveArrays {
-    std::vector<TQ3RationalPoint4D> points;
-    std::vector<float> knots;
-    unsigned long order;
-
-    TQ3NURBCurveData data()
-    {
-        return TQ3NURBCurveData{order, points.size(), points.data(), knots.data(), nullptr};
-    }
-    bool operator==(const CurveArrays& o) const
-    {
-        return order == o.order && knots == o.knots && points.size() == o.points.size() &&
-               std::memcmp(points.data(), o.points.data(), points.size() * sizeof(TQ3RationalPoint4D)) == 0;
-    }
-};
-
-// The article's Listing 1: a cubic Bezier curve on [0, 1].
-CurveArrays listing1()
-{
-    return {{{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}}, {0, 0, 0, 0, 1, 1, 1, 1}, 4};
-}
-
-// A quadratic with six points and interior knots 1, 2, 3 (domain [0, 4]).
-CurveArrays sixPointQuadratic()
-{
-    return {{{0, 0, 0, 1}, {1, 2, 0, 1}, {2, 0, 0, 1}, {3, 2, 0, 1}, {4, 0, 0, 1}, {5, 2, 0, 1}},
-            {0, 0, 0, 1, 2, 3, 4, 4, 4},
-            3};
-}
+using q3test::CurveArrays;
+using q3test::listing1;
+using q3test::sixPointQuadratic;
 
 // Figure 9's curve (uniform knots, domain [2, 5]) with B2's weight 3 (Figure 16).
 CurveArrays figure16()

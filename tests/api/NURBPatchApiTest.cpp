@@ -346,7 +346,6 @@ TEST_F(NURBPatchApiTest, NullArraysAreRefused)
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3NURBPatch_New(&data), nullptr), kQ3ErrorNULLParameter);
         EXPECT_NE(std::string(Q3Error_GetMessage()).find(name), std::string::npos);
     }
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3NURBPatch_New(nullptr), nullptr), kQ3ErrorNULLParameter);
 }
 
 TEST_F(NURBPatchApiTest, KnotRulesNameTheKnotAndItsValue)

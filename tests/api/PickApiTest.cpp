@@ -797,6 +797,18 @@ const Colored kColors[] = {{1, {1, 0, 0}}, {2, {0, 1, 0}}, {3, {0, 0, 1}}, {4, {
 
 class PickRenderTest : public PickApiTest {
 protected:
+    /// Triangle `k` of a scene: under kColors[k]'s pick ID, in its colour.
+    static void submitColoredTriangle(TQ3ViewObject v, int k, const TQ3Point3D (&corners)[3])
+    {
+        Q3PickIDStyle_Submit(kColors[k].id, v);
+        TQ3AttributeSet set = Q3AttributeSet_New();
+        Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &kColors[k].color);
+        TQ3TriangleData data = triangleData(corners[0], corners[1], corners[2]);
+        data.triangleAttributeSet = set;
+        Q3Triangle_Submit(&data, v);
+        Q3Object_Dispose(set);
+    }
+
     /// Overlapping triangles at different depths, each in its own colour
     /// under its own pick ID; unlit, so each pixel shows one colour exactly.
     void submitScene(TQ3ViewObject v)
@@ -806,15 +818,8 @@ protected:
                                          {{-0.4f, 1.9f, -0.5f}, {1.5f, 0.2f, 2.0f}, {3.0f, 1.5f, -0.5f}},
                                          {{1.0f, -0.9f, 3.0f}, {1.6f, -0.9f, 3.0f}, {1.3f, 0.4f, 3.0f}},
                                          {{2.6f, -0.9f, -3.0f}, {3.4f, -0.9f, -3.0f}, {3.4f, 1.9f, -3.0f}}};
-        for (int k = 0; k < 5; ++k) {
-            Q3PickIDStyle_Submit(kColors[k].id, v);
-            TQ3AttributeSet set = Q3AttributeSet_New();
-            Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &kColors[k].color);
-            TQ3TriangleData data = triangleData(corners[k][0], corners[k][1], corners[k][2]);
-            data.triangleAttributeSet = set;
-            Q3Triangle_Submit(&data, v);
-            Q3Object_Dispose(set);
-        }
+        for (int k = 0; k < 5; ++k)
+            submitColoredTriangle(v, k, corners[k]);
     }
 
     static unsigned long idOf(const Rgba& c)
@@ -882,15 +887,8 @@ TEST_F(PickRenderTest, WindowRectPickFindsWhatIsDrawnInTheRectangle)
         const TQ3Point3D corners[][3] = {{{-0.4f, -0.9f, 0}, {0.6f, -0.9f, 0}, {0.1f, 1.9f, 0}},
                                          {{0.8f, -0.9f, 0}, {1.8f, -0.9f, 0}, {1.3f, 1.9f, 0}},
                                          {{2.0f, -0.9f, 0}, {3.4f, -0.9f, 0}, {2.7f, 1.9f, 0}}};
-        for (int k = 0; k < 3; ++k) {
-            Q3PickIDStyle_Submit(kColors[k].id, v);
-            TQ3AttributeSet set = Q3AttributeSet_New();
-            Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &kColors[k].color);
-            TQ3TriangleData data = triangleData(corners[k][0], corners[k][1], corners[k][2]);
-            data.triangleAttributeSet = set;
-            Q3Triangle_Submit(&data, v);
-            Q3Object_Dispose(set);
-        }
+        for (int k = 0; k < 3; ++k)
+            submitColoredTriangle(v, k, corners[k]);
     };
     ASSERT_EQ(tv.render(scene), kQ3ViewStatusDone);
     auto colorsIn = [&](int x0, int y0, int x1, int y1) {

@@ -235,15 +235,40 @@ protected:
         return variants;
     }
 
+    /// Submits `geometry` inside the loop of `v` and returns its
+    /// decomposition, expected to exist (NULL if it does not).
+    static TQ3GeometryObject submitAndDecompose(TQ3GeometryObject geometry, TQ3ViewObject v, const std::string& what)
+    {
+        EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success) << what;
+        TQ3GeometryObject result = Q3Geometry_GetDecomposed(geometry, v);
+        EXPECT_NE(result, nullptr) << what;
+        return result;
+    }
+
+    /// The interactive and the wireframe renderer each finish drawing
+    /// `geometry` alone into a 64 x 48 image, which `check` then looks at.
+    void expectBothRenderersFinish(TQ3GeometryObject geometry, const std::string& what,
+                                   const std::function<void(const Pixmap&)>& check)
+    {
+        for (TQ3ObjectType renderer : {kQ3RendererTypeInteractive, kQ3RendererTypeWireFrame}) {
+            Pixmap image(64, 48);
+            TestView drawing(image.pixmap(), renderer);
+            EXPECT_EQ(drawing.render([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success); }),
+                      kQ3ViewStatusDone)
+                << what;
+            check(image);
+        }
+    }
+
     /// A degenerate shape draws nothing (docs/3dmf.md, Tolerances): its bounds are empty, its
     /// decomposition holds no point, and the interactive and wireframe
     /// renderers finish drawing it (Quesa's reading: it draws nothing).
     void expectDrawsNothing(TQ3GeometryObject geometry, const std::string& what)
     {
         const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
-            EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success) << what;
-            TQ3GeometryObject result = Q3Geometry_GetDecomposed(geometry, v);
-            ASSERT_NE(result, nullptr) << what;
+            TQ3GeometryObject result = submitAndDecompose(geometry, v, what);
+            if (result == nullptr)
+                return;
             EXPECT_EQ(Q3Geometry_GetType(result), kQ3GeometryTypeTriMesh) << what;
             TQ3TriMeshData mesh{};
             EXPECT_EQ(Q3TriMesh_GetData(result, &mesh), kQ3Success);
@@ -253,16 +278,11 @@ protected:
             Q3Object_Dispose(result);
         });
         EXPECT_EQ(box.isEmpty, kQ3True) << what;
-        for (TQ3ObjectType renderer : {kQ3RendererTypeInteractive, kQ3RendererTypeWireFrame}) {
-            Pixmap image(64, 48);
-            TestView drawing(image.pixmap(), renderer);
-            EXPECT_EQ(drawing.render([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success); }),
-                      kQ3ViewStatusDone)
-                << what;
+        expectBothRenderersFinish(geometry, what, [&](const Pixmap& image) {
             for (unsigned long y = 0; y < image.height(); ++y)
                 for (unsigned long x = 0; x < image.width(); ++x)
                     EXPECT_FALSE(image.lit(x, y)) << what << " lights pixel " << x << ", " << y;
-        }
+        });
     }
 
     /// An ellipse whose radii are zero or parallel is a segment (or a
@@ -271,9 +291,9 @@ protected:
     void expectDrawsASegment(TQ3GeometryObject geometry, const std::string& what)
     {
         const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) {
-            EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success) << what;
-            TQ3GeometryObject result = Q3Geometry_GetDecomposed(geometry, v);
-            ASSERT_NE(result, nullptr) << what;
+            TQ3GeometryObject result = submitAndDecompose(geometry, v, what);
+            if (result == nullptr)
+                return;
             ASSERT_EQ(Q3Geometry_GetType(result), kQ3GeometryTypePolyLine) << what;
             TQ3PolyLineData line{};
             EXPECT_EQ(Q3PolyLine_GetData(result, &line), kQ3Success);
@@ -288,13 +308,7 @@ protected:
         ASSERT_EQ(box.isEmpty, kQ3False) << what;
         for (float c : {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z})
             EXPECT_TRUE(std::isfinite(c)) << what;
-        for (TQ3ObjectType renderer : {kQ3RendererTypeInteractive, kQ3RendererTypeWireFrame}) {
-            Pixmap image(64, 48);
-            TestView drawing(image.pixmap(), renderer);
-            EXPECT_EQ(drawing.render([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(geometry, v), kQ3Success); }),
-                      kQ3ViewStatusDone)
-                << what;
-        }
+        expectBothRenderersFinish(geometry, what, [](const Pixmap&) {});
     }
 
     /// What a degenerate variant draws: nothing, but for an ellipse's

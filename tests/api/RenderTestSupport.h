@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -180,19 +181,27 @@ inline Point3 listing1At(double t)
 /// A world point's position in pixels (x right, y down from the pixmap's top).
 using Projection = std::function<Point3(const Point3&)>;
 
+/// An orthographic camera looking down -z from (x, y, 10) at (x, y, 0), y
+/// up, range 1 to 100, showing halfWidth either side of x and halfHeight
+/// above and below y.
+inline TQ3OrthographicCameraData orthographicCameraAt(float x, float y, float halfWidth, float halfHeight)
+{
+    TQ3OrthographicCameraData data{};
+    data.cameraData.placement = {{x, y, 10.0f}, {x, y, 0.0f}, {0.0f, 1.0f, 0.0f}};
+    data.cameraData.range = {1.0f, 100.0f};
+    data.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
+    data.left = -halfWidth;
+    data.right = halfWidth;
+    data.top = halfHeight;
+    data.bottom = -halfHeight;
+    return data;
+}
+
 /// The orthographic camera the rendering tests use: looking down -z at the
 /// centre (1.5, 0.5) of Listing 1, showing x -0.5..3.5 and y -1..2.
 inline TQ3OrthographicCameraData listing1OrthographicCamera()
 {
-    TQ3OrthographicCameraData data{};
-    data.cameraData.placement = {{1.5f, 0.5f, 10.0f}, {1.5f, 0.5f, 0.0f}, {0.0f, 1.0f, 0.0f}};
-    data.cameraData.range = {1.0f, 100.0f};
-    data.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
-    data.left = -2.0f;
-    data.right = 2.0f;
-    data.top = 1.5f;
-    data.bottom = -1.5f;
-    return data;
+    return orthographicCameraAt(1.5f, 0.5f, 2.0f, 1.5f);
 }
 
 /// Where listing1OrthographicCamera puts a world point inside a pane of
@@ -315,6 +324,28 @@ private:
     TQ3DrawContextObject m_context = nullptr;
     TQ3CameraObject m_camera = nullptr;
     TQ3RendererObject m_renderer = nullptr;
+};
+
+/// An API test drawing through a TestView into a width x height pixmap of
+/// its own, made for each test.
+class TestViewApiTest : public Q3ApiTest {
+protected:
+    TestViewApiTest(unsigned long width, unsigned long height) : m_image(width, height) {}
+    void SetUp() override
+    {
+        Q3ApiTest::SetUp();
+        m_view = std::make_unique<TestView>(m_image.pixmap());
+    }
+    void TearDown() override
+    {
+        m_view.reset();
+        Q3ApiTest::TearDown();
+    }
+
+    TQ3ViewObject view() const { return m_view->view(); }
+
+    Pixmap m_image;
+    std::unique_ptr<TestView> m_view;
 };
 
 /// What checkCurveImage found.

@@ -8,6 +8,7 @@
 // FileStateRoundTripTest.
 
 #include "Q3ApiTest.h"
+#include "TransformTestSupport.h"
 
 #include "QD3DGeometry.h"
 #include "QD3DMath.h"
@@ -45,39 +46,7 @@ void setRawAxis(TQ3Axis& field, int value)
     std::memcpy(&field, &value, sizeof value);
 }
 
-class RotateAboutTransformApiTest : public Q3ApiTest {
-protected:
-    void TearDown() override
-    {
-        if (m_view != nullptr)
-            Q3Object_Dispose(m_view);
-        Q3ApiTest::TearDown();
-    }
-    TQ3ViewObject view()
-    {
-        if (m_view == nullptr)
-            m_view = Q3View_New();
-        return m_view;
-    }
-    /// One bounding loop around `scene`: the local-to-world matrix it leaves
-    /// and the box of what it submitted.
-    TQ3Matrix4x4 stateAfter(const std::function<void(TQ3ViewObject)>& scene, TQ3BoundingBox* box = nullptr)
-    {
-        TQ3Matrix4x4 state{};
-        TQ3BoundingBox bounds{};
-        EXPECT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
-        do {
-            scene(view());
-            EXPECT_EQ(Q3View_GetLocalToWorldMatrixState(view(), &state), kQ3Success);
-        } while (Q3View_EndBoundingBox(view(), &bounds) == kQ3ViewStatusRetraverse);
-        if (box != nullptr)
-            *box = bounds;
-        return state;
-    }
-
-private:
-    TQ3ViewObject m_view = nullptr;
-};
+class RotateAboutTransformApiTest : public q3test::TransformStateTest {};
 
 const TQ3Quaternion kQuaternion{0.5f, -0.5f, 0.25f, 2.0f};
 const TQ3RotateAboutPointTransformData kAboutPoint{kQ3AxisY, 0.75f, {1.0f, 2.0f, -3.0f}};

@@ -22,6 +22,7 @@
 #include "OwningApiTest.h"
 #include "QuadMesh.h"
 #include "RenderTestSupport.h"
+#include "TextureTestSupport.h"
 
 #include "QD3DRenderer.h"
 #include "QD3DShader.h"
@@ -115,12 +116,7 @@ protected:
                                           3ul * images[0].w, 24, kQ3PixelTypeRGB24, kQ3EndianBig, kQ3EndianBig};
             texture = own(Q3PixmapTexture_New(&pixmap));
         } else {
-            TQ3Mipmap mipmap{};
-            mipmap.image = storage;
-            mipmap.useMipmapping = kQ3True;
-            mipmap.pixelType = kQ3PixelTypeRGB24;
-            mipmap.bitOrder = kQ3EndianBig;
-            mipmap.byteOrder = kQ3EndianBig;
+            TQ3Mipmap mipmap = q3test::bigEndianMipmap(storage, kQ3PixelTypeRGB24, true, {});
             for (std::size_t i = 0; i < images.size(); ++i)
                 mipmap.mipmaps[i] = TQ3MipmapImage{(unsigned long)images[i].w, (unsigned long)images[i].h,
                                                    3ul * images[i].w, offsets[i]};
@@ -314,13 +310,7 @@ TEST_F(TextureFilterRenderTest, AMipmapWithoutUseMipmappingIsOneImageUnderBest)
     for (const Colour& c : chain[0].texels)
         bytes.insert(bytes.end(), {(unsigned char)c.r, (unsigned char)c.g, (unsigned char)c.b});
     TQ3StorageObject storage = own(Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size())));
-    TQ3Mipmap mipmap{};
-    mipmap.image = storage;
-    mipmap.useMipmapping = kQ3False;
-    mipmap.pixelType = kQ3PixelTypeRGB24;
-    mipmap.bitOrder = kQ3EndianBig;
-    mipmap.byteOrder = kQ3EndianBig;
-    mipmap.mipmaps[0] = TQ3MipmapImage{64, 64, 192, 0};
+    const TQ3Mipmap mipmap = q3test::bigEndianMipmap(storage, kQ3PixelTypeRGB24, false, {{64, 64, 192, 0}});
     TQ3TextureObject texture = own(Q3MipmapTexture_New(&mipmap));
     ASSERT_NE(texture, nullptr);
     TQ3ShaderObject shader = own(Q3TextureShader_New(texture));

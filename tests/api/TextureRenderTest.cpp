@@ -13,6 +13,7 @@
 #include "OwningApiTest.h"
 #include "QuadMesh.h"
 #include "RenderTestSupport.h"
+#include "TextureTestSupport.h"
 
 #include "QD3DGroup.h"
 #include "QD3DLight.h"
@@ -292,15 +293,8 @@ TEST_F(TextureRenderTest, AMipmapTextureShowsItsFirstImage)
     bytes.insert(bytes.end(), first.begin(), first.end());
     bytes.insert(bytes.end(), 9, 0x77);
     TQ3StorageObject storage = own(Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size())));
-    TQ3Mipmap mipmap{};
-    mipmap.image = storage;
-    mipmap.useMipmapping = kQ3True;
-    mipmap.pixelType = kQ3PixelTypeRGB24;
-    mipmap.bitOrder = kQ3EndianBig;
-    mipmap.byteOrder = kQ3EndianBig;
-    mipmap.mipmaps[0] = TQ3MipmapImage{kTexW, kTexH, 3 * kTexW, 5};
-    mipmap.mipmaps[1] = TQ3MipmapImage{2, 1, 6, 5 + 24};
-    mipmap.mipmaps[2] = TQ3MipmapImage{1, 1, 3, 5 + 30};
+    const TQ3Mipmap mipmap = q3test::bigEndianMipmap(storage, kQ3PixelTypeRGB24, true,
+                                                     {{kTexW, kTexH, 3 * kTexW, 5}, {2, 1, 6, 5 + 24}, {1, 1, 3, 5 + 30}});
     TQ3TextureObject texture = own(Q3MipmapTexture_New(&mipmap));
     ASSERT_NE(texture, nullptr);
     TQ3ShaderObject shader = own(Q3TextureShader_New(texture));

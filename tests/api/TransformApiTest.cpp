@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "Q3ApiTest.h"
+#include "TransformTestSupport.h"
 
 #include "QD3DGeometry.h"
 #include "QD3DMath.h"
@@ -56,36 +57,8 @@ void expectMatrixNear(const TQ3Matrix4x4& actual, const TQ3Matrix4x4& expected, 
                 << what << ": value[" << i << "][" << j << "]";
 }
 
-class TransformApiTest : public Q3ApiTest {
+class TransformApiTest : public q3test::TransformStateTest {
 protected:
-    void TearDown() override
-    {
-        if (m_view != nullptr)
-            Q3Object_Dispose(m_view);
-        Q3ApiTest::TearDown();
-    }
-
-    TQ3ViewObject view()
-    {
-        if (m_view == nullptr)
-            m_view = Q3View_New();
-        return m_view;
-    }
-
-    /// Runs one bounding loop, calling `scene` in every traversal, and
-    /// returns the local-to-world matrix it leaves.
-    TQ3Matrix4x4 stateAfter(const std::function<void(TQ3ViewObject)>& scene)
-    {
-        TQ3Matrix4x4 state = identity();
-        TQ3BoundingBox box{};
-        EXPECT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
-        do {
-            scene(view());
-            EXPECT_EQ(Q3View_GetLocalToWorldMatrixState(view(), &state), kQ3Success);
-        } while (Q3View_EndBoundingBox(view(), &box) == kQ3ViewStatusRetraverse);
-        return state;
-    }
-
     /// Every check a _New makes on its object: type chain, drawable,
     /// duplicable. Disposes it.
     void expectTransformOfType(TQ3TransformObject transform, TQ3ObjectType leafType)
@@ -104,9 +77,6 @@ protected:
         Q3Object_Dispose(copy);
         Q3Object_Dispose(transform);
     }
-
-private:
-    TQ3ViewObject m_view = nullptr;
 };
 
 // ---- Creating transforms ----------------------------------------------------

@@ -72,16 +72,25 @@ double worldX(unsigned long i)
 
 class TranslucencyFogRenderTest : public q3test::OwningApiTest {
 protected:
+    /// A polygon filling x and y -2..2 at z = 1, the texture's (0, 0) to
+    /// (1, 1) across it (a uv on each corner).
+    TQ3GeometryObject texturedSquare()
+    {
+        const TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        const TQ3Point3D corners[4] = {{-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}};
+        std::vector<TQ3Vertex3D> v(4);
+        for (int k = 0; k < 4; ++k) {
+            TQ3AttributeSet set = own(Q3AttributeSet_New());
+            EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]), kQ3Success);
+            v[k] = TQ3Vertex3D{corners[k], set};
+        }
+        const TQ3PolygonData data{4, v.data(), nullptr};
+        return own(Q3Polygon_New(&data));
+    }
+
     TQ3CameraObject orthographic()
     {
-        TQ3OrthographicCameraData data{};
-        data.cameraData.placement = {{0, 0, 10}, {0, 0, 0}, {0, 1, 0}};
-        data.cameraData.range = {1.0f, 100.0f};
-        data.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
-        data.left = float(-kHalf);
-        data.right = float(kHalf);
-        data.top = float(kHalf);
-        data.bottom = float(-kHalf);
+        const TQ3OrthographicCameraData data = q3test::orthographicCameraAt(0, 0, float(kHalf), float(kHalf));
         return own(Q3OrthographicCamera_New(&data));
     }
 
@@ -348,17 +357,7 @@ TEST_F(TranslucencyFogRenderTest, TextureAlphaCutsOutAndOpaqueTexelsHideWhatIsBe
     const TQ3StoragePixmap pixmap{storage, 2, 2, 8, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
     TQ3TextureObject texture = own(Q3PixmapTexture_New(&pixmap));
     TQ3ShaderObject shader = own(Q3TextureShader_New(texture));
-    const float h = 2.0f;
-    TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    std::vector<TQ3Vertex3D> v(4);
-    const TQ3Point3D corners[4] = {{-h, -h, 1}, {h, -h, 1}, {h, h, 1}, {-h, h, 1}};
-    for (int k = 0; k < 4; ++k) {
-        TQ3AttributeSet set = own(Q3AttributeSet_New());
-        EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]), kQ3Success);
-        v[k] = TQ3Vertex3D{corners[k], set};
-    }
-    const TQ3PolygonData data{4, v.data(), nullptr};
-    TQ3GeometryObject textured = own(Q3Polygon_New(&data));
+    TQ3GeometryObject textured = texturedSquare();
     const Color middle{0.3, 0.3, 0.3};
     TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle));
     const Pixmap image = render([&](TQ3ViewObject v) {
@@ -443,16 +442,7 @@ TEST_F(TranslucencyFogRenderTest, Argb16AlphaBitCutsOut)
     TQ3StorageObject storage = own(Q3MemoryStorage_New(texels.data(), static_cast<unsigned long>(texels.size())));
     const TQ3StoragePixmap pixmap{storage, 2, 1, 4, 16, kQ3PixelTypeARGB16, kQ3EndianBig, kQ3EndianBig};
     TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
-    TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    const TQ3Point3D corners[4] = {{-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}};
-    std::vector<TQ3Vertex3D> v(4);
-    for (int k = 0; k < 4; ++k) {
-        TQ3AttributeSet set = own(Q3AttributeSet_New());
-        EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]), kQ3Success);
-        v[k] = TQ3Vertex3D{corners[k], set};
-    }
-    const TQ3PolygonData data{4, v.data(), nullptr};
-    TQ3GeometryObject textured = own(Q3Polygon_New(&data));
+    TQ3GeometryObject textured = texturedSquare();
     TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
     const Pixmap image = render([&](TQ3ViewObject v) {
         Q3Geometry_Submit(back, v);

@@ -367,11 +367,6 @@ TEST_F(TriMeshApiTest, EmptyMeshesAreAccepted)
 
 // ---- The TQ3TriMeshData rules, in their order ---------------------------------------
 
-TEST_F(TriMeshApiTest, NewRejectsNullData)
-{
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3TriMesh_New(nullptr), nullptr), kQ3ErrorNULLParameter);
-}
-
 // The six arrays and the counts that size them.
 struct ArrayField {
     const char* name;
@@ -898,35 +893,6 @@ TEST_F(TriMeshApiTest, BoundsHoldEveryPointWhateverTheAttributeArrays)
         }
         Q3TriMesh_EmptyData(&out);
     }
-}
-
-// ---- Q3Geometry_* on a trimesh -------------------------------------------------------
-
-TEST_F(TriMeshApiTest, TheGeometryAttributeSetIsTheTriMeshAttributeSet)
-{
-    TQ3AttributeSet first = own(Q3AttributeSet_New());
-    TQ3AttributeSet second = own(Q3AttributeSet_New());
-    TQ3TriMeshData data = plainData();
-    data.triMeshAttributeSet = first;
-    TQ3GeometryObject triMesh = own(Q3TriMesh_New(&data));
-    TQ3AttributeSet got = nullptr;
-    ASSERT_EQ(Q3Geometry_GetAttributeSet(triMesh, &got), kQ3Success);
-    EXPECT_EQ(got, first);
-    Q3Object_Dispose(got);
-    const unsigned long edit = Q3Shared_GetEditIndex(triMesh);
-    ASSERT_EQ(Q3Geometry_SetAttributeSet(triMesh, second), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(triMesh), edit);
-    TQ3TriMeshData out{};
-    ASSERT_EQ(Q3TriMesh_GetData(triMesh, &out), kQ3Success);
-    EXPECT_EQ(out.triMeshAttributeSet, second);
-    Q3TriMesh_EmptyData(&out);
-    EXPECT_EQ(referenceCount(first), 1u);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_SetAttributeSet(triMesh, triMesh), kQ3Failure),
-                    kQ3ErrorInvalidObjectType);
-    ASSERT_EQ(Q3Geometry_SetAttributeSet(triMesh, nullptr), kQ3Success);
-    ASSERT_EQ(Q3Geometry_GetAttributeSet(triMesh, &got), kQ3Success);
-    EXPECT_EQ(got, nullptr);
-    EXPECT_EQ(referenceCount(second), 1u);
 }
 
 TEST(TriMeshApiUninitialized, EveryFunctionFailsWithNotInitialized)

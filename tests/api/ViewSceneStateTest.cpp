@@ -20,20 +20,26 @@ namespace {
 
 using namespace q3test;
 
-class ViewSceneStateTest : public Q3ApiTest {
+class ViewSceneStateTest : public TestViewApiTest {
 protected:
-    void SetUp() override
-    {
-        Q3ApiTest::SetUp();
-        m_view = std::make_unique<TestView>(m_image.pixmap());
-    }
-    void TearDown() override
-    {
-        m_view.reset();
-        Q3ApiTest::TearDown();
-    }
+    ViewSceneStateTest() : TestViewApiTest(40, 30) {}
 
-    TQ3ViewObject view() const { return m_view->view(); }
+    /// Reads every style state of the view (inside a loop), each call
+    /// succeeding.
+    void readStyleStates(TQ3BackfacingStyle& backfacing, TQ3InterpolationStyle& interpolation, TQ3FillStyle& fill,
+                         TQ3OrientationStyle& orientation, TQ3Boolean& receives, unsigned long& pickID,
+                         TQ3PickParts& parts, TQ3AntiAliasStyleData& antiAlias, TQ3AttributeSet& highlight)
+    {
+        EXPECT_EQ(Q3View_GetBackfacingStyleState(view(), &backfacing), kQ3Success);
+        EXPECT_EQ(Q3View_GetInterpolationStyleState(view(), &interpolation), kQ3Success);
+        EXPECT_EQ(Q3View_GetFillStyleState(view(), &fill), kQ3Success);
+        EXPECT_EQ(Q3View_GetOrientationStyleState(view(), &orientation), kQ3Success);
+        EXPECT_EQ(Q3View_GetReceiveShadowsStyleState(view(), &receives), kQ3Success);
+        EXPECT_EQ(Q3View_GetPickIDStyleState(view(), &pickID), kQ3Success);
+        EXPECT_EQ(Q3View_GetPickPartsStyleState(view(), &parts), kQ3Success);
+        EXPECT_EQ(Q3View_GetAntiAliasStyleState(view(), &antiAlias), kQ3Success);
+        EXPECT_EQ(Q3View_GetHighlightStyleState(view(), &highlight), kQ3Success);
+    }
 
     static void expectColor(const TQ3ColorRGB& c, float r, float g, float b)
     {
@@ -52,9 +58,6 @@ protected:
                 out[j] += in[i] * m.value[i][j];
         }
     }
-
-    Pixmap m_image{40, 30};
-    std::unique_ptr<TestView> m_view;
 };
 
 TEST_F(ViewSceneStateTest, StyleStatesStartAtQuickDraw3DsDefaults)
@@ -73,15 +76,7 @@ TEST_F(ViewSceneStateTest, StyleStatesStartAtQuickDraw3DsDefaults)
         TQ3PickParts parts = 99;
         TQ3AntiAliasStyleData antiAlias{kQ3On, kQ3AntiAliasModeMaskFilled, 0.25f};
         TQ3AttributeSet highlight = reinterpret_cast<TQ3AttributeSet>(this);
-        EXPECT_EQ(Q3View_GetBackfacingStyleState(view(), &backfacing), kQ3Success);
-        EXPECT_EQ(Q3View_GetInterpolationStyleState(view(), &interpolation), kQ3Success);
-        EXPECT_EQ(Q3View_GetFillStyleState(view(), &fill), kQ3Success);
-        EXPECT_EQ(Q3View_GetOrientationStyleState(view(), &orientation), kQ3Success);
-        EXPECT_EQ(Q3View_GetReceiveShadowsStyleState(view(), &receives), kQ3Success);
-        EXPECT_EQ(Q3View_GetPickIDStyleState(view(), &pickID), kQ3Success);
-        EXPECT_EQ(Q3View_GetPickPartsStyleState(view(), &parts), kQ3Success);
-        EXPECT_EQ(Q3View_GetAntiAliasStyleState(view(), &antiAlias), kQ3Success);
-        EXPECT_EQ(Q3View_GetHighlightStyleState(view(), &highlight), kQ3Success);
+        readStyleStates(backfacing, interpolation, fill, orientation, receives, pickID, parts, antiAlias, highlight);
         EXPECT_EQ(backfacing, kQ3BackfacingStyleBoth);
         EXPECT_EQ(interpolation, kQ3InterpolationStyleVertex);
         EXPECT_EQ(fill, kQ3FillStyleFilled);
@@ -133,15 +128,7 @@ TEST_F(ViewSceneStateTest, StyleStatesFollowSubmittedStylesAndPopBack)
     TQ3PickParts parts = 0;
     TQ3AntiAliasStyleData antiAlias{};
     TQ3AttributeSet highlight = nullptr;
-    EXPECT_EQ(Q3View_GetBackfacingStyleState(view(), &backfacing), kQ3Success);
-    EXPECT_EQ(Q3View_GetInterpolationStyleState(view(), &interpolation), kQ3Success);
-    EXPECT_EQ(Q3View_GetFillStyleState(view(), &fill), kQ3Success);
-    EXPECT_EQ(Q3View_GetOrientationStyleState(view(), &orientation), kQ3Success);
-    EXPECT_EQ(Q3View_GetReceiveShadowsStyleState(view(), &receives), kQ3Success);
-    EXPECT_EQ(Q3View_GetPickIDStyleState(view(), &pickID), kQ3Success);
-    EXPECT_EQ(Q3View_GetPickPartsStyleState(view(), &parts), kQ3Success);
-    EXPECT_EQ(Q3View_GetAntiAliasStyleState(view(), &antiAlias), kQ3Success);
-    EXPECT_EQ(Q3View_GetHighlightStyleState(view(), &highlight), kQ3Success);
+    readStyleStates(backfacing, interpolation, fill, orientation, receives, pickID, parts, antiAlias, highlight);
     EXPECT_EQ(backfacing, kQ3BackfacingStyleFlip);
     EXPECT_EQ(interpolation, kQ3InterpolationStyleNone);
     EXPECT_EQ(fill, kQ3FillStyleEdges);

@@ -16,20 +16,9 @@ namespace {
 
 using namespace q3test;
 
-class ViewStateTest : public Q3ApiTest {
+class ViewStateTest : public TestViewApiTest {
 protected:
-    void SetUp() override
-    {
-        Q3ApiTest::SetUp();
-        m_view = std::make_unique<TestView>(m_image.pixmap());
-    }
-    void TearDown() override
-    {
-        m_view.reset();
-        Q3ApiTest::TearDown();
-    }
-
-    TQ3ViewObject view() const { return m_view->view(); }
+    ViewStateTest() : TestViewApiTest(32, 24) {}
 
     TQ3Matrix4x4 matrixState()
     {
@@ -58,9 +47,6 @@ protected:
         EXPECT_EQ(style.c1, float(kQ3ViewDefaultSubdivisionC1));
         EXPECT_EQ(style.c2, float(kQ3ViewDefaultSubdivisionC2));
     }
-
-    Pixmap m_image{32, 24};
-    std::unique_ptr<TestView> m_view;
 };
 
 TEST_F(ViewStateTest, EveryLoopStartsFromTheDefaultState)

@@ -74,23 +74,41 @@ TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, uns
     return Q3PixmapDrawContext_New(&contextData);
 }
 
+/* Camera data at (0, 0, z) looking down -z (the point of interest the
+ * origin, as zeroed), up +y, the whole view port, hither and yon as given. */
+static void MySetFrontCamera(TQ3CameraData *camera, float z, float hither, float yon)
+{
+    Q3Point3D_Set(&camera->placement.cameraLocation, 0.0f, 0.0f, z);
+    Q3Vector3D_Set(&camera->placement.upVector, 0.0f, 1.0f, 0.0f);
+    camera->range.hither = hither;
+    camera->range.yon = yon;
+    camera->viewPort.origin.x = -1.0f;
+    camera->viewPort.origin.y = 1.0f;
+    camera->viewPort.width = 2.0f;
+    camera->viewPort.height = 2.0f;
+}
+
 TQ3CameraObject MyNewOrthographicCamera(float z, float hither, float yon, float left, float top, float right,
                                         float bottom)
 {
     TQ3OrthographicCameraData cameraData;
 
     memset(&cameraData, 0, sizeof cameraData);
-    Q3Point3D_Set(&cameraData.cameraData.placement.cameraLocation, 0.0f, 0.0f, z);
-    Q3Vector3D_Set(&cameraData.cameraData.placement.upVector, 0.0f, 1.0f, 0.0f);
-    cameraData.cameraData.range.hither = hither;
-    cameraData.cameraData.range.yon = yon;
-    cameraData.cameraData.viewPort.origin.x = -1.0f;
-    cameraData.cameraData.viewPort.origin.y = 1.0f;
-    cameraData.cameraData.viewPort.width = 2.0f;
-    cameraData.cameraData.viewPort.height = 2.0f;
+    MySetFrontCamera(&cameraData.cameraData, z, hither, yon);
     cameraData.left = left;
     cameraData.top = top;
     cameraData.right = right;
     cameraData.bottom = bottom;
     return Q3OrthographicCamera_New(&cameraData);
+}
+
+TQ3CameraObject MyNewViewAngleCamera(float z, float hither, float yon, float fov)
+{
+    TQ3ViewAngleAspectCameraData cameraData;
+
+    memset(&cameraData, 0, sizeof cameraData);
+    MySetFrontCamera(&cameraData.cameraData, z, hither, yon);
+    cameraData.fov = fov;
+    cameraData.aspectRatioXToY = 1.0f;
+    return Q3ViewAngleAspectCamera_New(&cameraData);
 }

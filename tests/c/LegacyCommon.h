@@ -45,4 +45,8 @@ TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, uns
 TQ3CameraObject MyNewOrthographicCamera(float z, float hither, float yon, float left, float top, float right,
                                         float bottom);
 
+/* A view angle aspect camera at (0, 0, z) looking down -z, up +y, square,
+ * with the field of view and hither and yon as given. */
+TQ3CameraObject MyNewViewAngleCamera(float z, float hither, float yon, float fov);
+
 #endif

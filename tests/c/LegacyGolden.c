@@ -37,7 +37,6 @@ static unsigned short gImage[kWidth * kHeight];
 static TQ3ViewObject MyNewView(TQ3DrawContextObject *drawContext)
 {
     TQ3PixmapDrawContextData contextData;
-    TQ3OrthographicCameraData cameraData;
     TQ3ViewObject view;
     TQ3CameraObject camera;
     TQ3RendererObject renderer;
@@ -58,20 +57,7 @@ static TQ3ViewObject MyNewView(TQ3DrawContextObject *drawContext)
     contextData.pixmap.byteOrder = kQ3EndianLittle;
     *drawContext = Q3PixmapDrawContext_New(&contextData);
 
-    memset(&cameraData, 0, sizeof cameraData);
-    cameraData.cameraData.placement.cameraLocation.z = 10.0f;
-    cameraData.cameraData.placement.upVector.y = 1.0f;
-    cameraData.cameraData.range.hither = 1.0f;
-    cameraData.cameraData.range.yon = 100.0f;
-    cameraData.cameraData.viewPort.origin.x = -1.0f;
-    cameraData.cameraData.viewPort.origin.y = 1.0f;
-    cameraData.cameraData.viewPort.width = 2.0f;
-    cameraData.cameraData.viewPort.height = 2.0f;
-    cameraData.left = -0.5f;
-    cameraData.top = 1.5f;
-    cameraData.right = 3.5f;
-    cameraData.bottom = -0.5f;
-    camera = Q3OrthographicCamera_New(&cameraData);
+    camera = MyNewOrthographicCamera(10.0f, 1.0f, 100.0f, -0.5f, 1.5f, 3.5f, -0.5f);
     renderer = Q3Renderer_NewFromType(kQ3RendererTypeWireFrame);
 
     view = Q3View_New();

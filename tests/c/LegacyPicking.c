@@ -55,7 +55,6 @@ static TQ3ViewObject MyNewView(TQ3Pixmap *pixmap)
 {
     TQ3ViewObject view;
     TQ3PixmapDrawContextData contextData;
-    TQ3OrthographicCameraData cameraData;
     TQ3DrawContextObject context;
     TQ3CameraObject camera;
 
@@ -74,29 +73,10 @@ static TQ3ViewObject MyNewView(TQ3Pixmap *pixmap)
     contextData.pixmap = *pixmap;
 
     /* The camera looks down -z at the origin and shows x and y in -4..4. */
-    cameraData.cameraData.placement.cameraLocation.x = 0.0f;
-    cameraData.cameraData.placement.cameraLocation.y = 0.0f;
-    cameraData.cameraData.placement.cameraLocation.z = 10.0f;
-    cameraData.cameraData.placement.pointOfInterest.x = 0.0f;
-    cameraData.cameraData.placement.pointOfInterest.y = 0.0f;
-    cameraData.cameraData.placement.pointOfInterest.z = 0.0f;
-    cameraData.cameraData.placement.upVector.x = 0.0f;
-    cameraData.cameraData.placement.upVector.y = 1.0f;
-    cameraData.cameraData.placement.upVector.z = 0.0f;
-    cameraData.cameraData.range.hither = 1.0f;
-    cameraData.cameraData.range.yon = 100.0f;
-    cameraData.cameraData.viewPort.origin.x = -1.0f;
-    cameraData.cameraData.viewPort.origin.y = 1.0f;
-    cameraData.cameraData.viewPort.width = 2.0f;
-    cameraData.cameraData.viewPort.height = 2.0f;
-    cameraData.left = -4.0f;
-    cameraData.right = 4.0f;
-    cameraData.top = 4.0f;
-    cameraData.bottom = -4.0f;
 
     view = Q3View_New();
     context = Q3PixmapDrawContext_New(&contextData);
-    camera = Q3OrthographicCamera_New(&cameraData);
+    camera = MyNewOrthographicCamera(10.0f, 1.0f, 100.0f, -4.0f, 4.0f, 4.0f, -4.0f);
     CHECK(Q3View_SetDrawContext(view, context));
     CHECK(Q3View_SetCamera(view, camera));
     CHECK(Q3View_SetRendererByType(view, kQ3RendererTypeInteractive));

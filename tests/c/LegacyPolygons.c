@@ -297,7 +297,6 @@ static TQ3GeometryObject MyPixmapMarker(void)
  * pixels. */
 static void MyDrawMarker(TQ3GeometryObject marker, long expected)
 {
-    TQ3ViewAngleAspectCameraData cameraData;
     TQ3DrawContextObject context;
     TQ3CameraObject camera;
     TQ3ViewObject view;
@@ -307,18 +306,7 @@ static void MyDrawMarker(TQ3GeometryObject marker, long expected)
     pixels = (unsigned char *)calloc(64 * 64, 4);
     view = Q3View_New();
     context = MyNewARGBDrawContext(pixels, 64, 64);
-    memset(&cameraData, 0, sizeof cameraData);
-    Q3Point3D_Set(&cameraData.cameraData.placement.cameraLocation, 0.0f, 0.0f, 5.0f);
-    Q3Vector3D_Set(&cameraData.cameraData.placement.upVector, 0.0f, 1.0f, 0.0f);
-    cameraData.cameraData.range.hither = 0.5f;
-    cameraData.cameraData.range.yon = 20.0f;
-    cameraData.cameraData.viewPort.origin.x = -1.0f;
-    cameraData.cameraData.viewPort.origin.y = 1.0f;
-    cameraData.cameraData.viewPort.width = 2.0f;
-    cameraData.cameraData.viewPort.height = 2.0f;
-    cameraData.fov = 0.75f;
-    cameraData.aspectRatioXToY = 1.0f;
-    camera = Q3ViewAngleAspectCamera_New(&cameraData);
+    camera = MyNewViewAngleCamera(5.0f, 0.5f, 20.0f, 0.75f);
     if (pixels == NULL || view == NULL || context == NULL || camera == NULL) {
         gFailures++;
         return;

@@ -52,15 +52,8 @@ protected:
     void SetUp() override
     {
         PixmapViewTest::SetUp();
-        // The eye at the origin looking down -z.
-        m_camera.cameraData.placement = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}};
-        m_camera.cameraData.range = {kHither, 100.0f};
-        m_camera.cameraData.viewPort = {{-1, 1}, 2, 2};
-        m_camera.fov = 1.2f;
-        m_camera.aspectRatioXToY = float(kWidth) / float(kHeight);
-        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&m_camera);
-        ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-        Q3Object_Dispose(camera);
+        m_camera = eyeAtOrigin(kHither);
+        useCamera(Q3ViewAngleAspectCamera_New(&m_camera));
     }
 
     // Draws the patch (retained and immediate) and decomposes it, in one

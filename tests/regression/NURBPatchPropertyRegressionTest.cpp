@@ -80,6 +80,8 @@ using q3test::subdivision::Matrix4;
 using q3test::subdivision::ScreenMap;
 using q3test::subdivision::TransformStack;
 using q3test::subdivision::kFloatRoundoff;
+using q3test::subdivision::lookAt;
+using q3test::subdivision::randomDirection;
 
 constexpr unsigned long kWidth = 160;
 constexpr unsigned long kHeight = 120;
@@ -97,35 +99,14 @@ int envInt(const char* name, int fallback)
     return text != nullptr ? std::atoi(text) : fallback;
 }
 
-struct Scene {
+struct Scene : q3test::subdivision::SceneCamera {
     Patch patch;
     int trimKind = 0;
     TransformStack transforms;
-    bool perspective = false;
-    TQ3OrthographicCameraData orthographic{};
-    TQ3ViewAngleAspectCameraData viewAngle{};
 
-    ScreenMap screen() const
-    {
-        const TQ3Area pane = {{0, 0}, {float(kWidth), float(kHeight)}};
-        return perspective ? ScreenMap(viewAngle, pane) : ScreenMap(orthographic, pane);
-    }
+    Scene() { pane = {{0, 0}, {float(kWidth), float(kHeight)}}; }
+
 };
-
-Vec3 randomDirection(std::mt19937& rng)
-{
-    std::normal_distribution<double> normal;
-    for (;;) {
-        const Vec3 v{normal(rng), normal(rng), normal(rng)};
-        if (q3test::subdivision::norm(v) > 1e-3L)
-            return q3test::subdivision::unit(v);
-    }
-}
-
-TQ3Point3D toPoint(const Vec3& v)
-{
-    return {float(v.x), float(v.y), float(v.z)};
-}
 
 // Patch `index`: u and v orders cycle through 2..11 (v offset by 3), clamped
 // knots except every fourth patch, repeated interior knots in half of them,
@@ -146,39 +127,22 @@ Scene makeScene(std::mt19937& rng, int index)
     scene.transforms = q3test::subdivision::randomTransforms(rng, index % 4);
     scene.perspective = index % 2 == 1;
 
-    const Matrix4 toWorld = scene.transforms.localToWorld();
-    Vec3 lo{1e30L, 1e30L, 1e30L}, hi{-1e30L, -1e30L, -1e30L};
-    for (const TQ3RationalPoint4D& p : scene.patch.points) {
-        const Vec3 w = toWorld.point({Real(p.x) / p.w, Real(p.y) / p.w, Real(p.z) / p.w});
-        lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
-        hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
-    }
-    const Vec3 centre = 0.5L * (lo + hi);
-    const Real radius = std::max(q3test::subdivision::distance(lo, hi) / 2, Real(1e-3));
+    const q3test::subdivision::ControlBox box(scene.patch.points, scene.transforms.localToWorld());
+    const Vec3 centre = box.centre();
+    const Real radius = box.radius();
     const Vec3 direction = randomDirection(rng);
     Vec3 up = randomDirection(rng);
     while (q3test::subdivision::norm(q3test::subdivision::cross(up, direction)) < 0.3L)
         up = randomDirection(rng);
-    TQ3CameraData camera{};
-    camera.placement.pointOfInterest = toPoint(centre);
-    camera.placement.upVector = {float(up.x), float(up.y), float(up.z)};
-    camera.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
     if (scene.perspective) {
         const Real away = radius * (2.5L + 2.5L * Real(u(rng)));
-        camera.placement.cameraLocation = toPoint(centre + away * direction);
-        camera.range = {float(0.05L * radius), float(100 * radius)};
-        scene.viewAngle.cameraData = camera;
-        scene.viewAngle.fov = float(0.4 + 1.0 * u(rng));
-        scene.viewAngle.aspectRatioXToY = float(kWidth) / float(kHeight);
+        const Real fov = 0.4 + 1.0 * u(rng);
+        scene.setPerspective(lookAt(centre + away * direction, centre, up, 0.05L * radius, 100 * radius), fov,
+                             Real(float(kWidth) / float(kHeight)));
     } else {
-        camera.placement.cameraLocation = toPoint(centre + 3 * radius * direction);
-        camera.range = {float(0.1L * radius), float(100 * radius)};
-        scene.orthographic.cameraData = camera;
         const Real half = radius * (0.8L + 0.6L * Real(u(rng)));
-        scene.orthographic.left = float(-half);
-        scene.orthographic.right = float(half);
-        scene.orthographic.top = float(half * kHeight / kWidth);
-        scene.orthographic.bottom = float(-half * kHeight / kWidth);
+        scene.setOrthographic(lookAt(centre + 3 * radius * direction, centre, up, 0.1L * radius, 100 * radius),
+                              half, half * kHeight / kWidth);
     }
     return scene;
 }
@@ -258,14 +222,6 @@ protected:
         m_seed = unsigned(envInt("Q3_PATCH_SEED", int(kDefaultSeed)));
         m_cases = envInt("Q3_PATCH_CASES", kDefaultCases);
         std::printf("[ patches ] %d random patches from seed %u (Q3_PATCH_CASES, Q3_PATCH_SEED)\n", m_cases, m_seed);
-    }
-    void aim(const Scene& scene)
-    {
-        TQ3CameraObject camera = scene.perspective ? Q3ViewAngleAspectCamera_New(&scene.viewAngle)
-                                                   : Q3OrthographicCamera_New(&scene.orthographic);
-        ASSERT_NE(camera, nullptr);
-        ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-        Q3Object_Dispose(camera);
     }
 
     Mesh decompose(const Scene& scene, TQ3GeometryObject patch, const TQ3SubdivisionStyleData& style)
@@ -547,7 +503,7 @@ TEST_F(NURBPatchPropertyRegressionTest, RandomPatchesKeepEveryPromiseUnderEveryM
         TQ3NURBPatchData data = p.data();
         TQ3GeometryObject patch = Q3NURBPatch_New(&data);
         ASSERT_NE(patch, nullptr) << what;
-        aim(scene);
+        useCamera(scene.newObject());
         const Mesh meshes[3] = {decompose(scene, patch, styles[0]), decompose(scene, patch, styles[1]),
                                 decompose(scene, patch, styles[2])};
         Q3Object_Dispose(patch);
@@ -607,8 +563,7 @@ TEST_F(NURBPatchPropertyRegressionTest, RandomPatchesKeepEveryPromiseUnderEveryM
             screen, what + " screen", [&](const Vec3& a) {
                 // Outside the view volume: nearer than hither, or off the pane.
                 const Vec3 w = toWorld.point(a);
-                const Real hither = scene.perspective ? scene.viewAngle.cameraData.range.hither
-                                                      : scene.orthographic.cameraData.range.hither;
+                const Real hither = scene.hither();
                 unsigned mask = map.depth(w) < hither ? 1u : 0u;
                 Real x = 0, y = 0;
                 if (map.map(w, x, y))

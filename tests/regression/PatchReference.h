@@ -39,6 +39,17 @@ struct TrimCurve {
     unsigned long order = 2;
     std::vector<TQ3RationalPoint3D> points;
     std::vector<float> knots;
+
+    /// The same curve in the (u, v) plane (z = 0) as a reference curve.
+    subdivision::Curve asCurve() const
+    {
+        subdivision::Curve c;
+        c.order = order;
+        for (const TQ3RationalPoint3D& q : points)
+            c.points.push_back({q.x, q.y, 0.0f, q.w});
+        c.knots = knots;
+        return c;
+    }
 };
 
 /// A patch that owns its arrays.
@@ -85,18 +96,7 @@ struct Patch {
 
     /// The control points' extent (bounding-box diagonal or largest
     /// coordinate, whichever is larger): no surface coordinate exceeds it.
-    Real size() const
-    {
-        Vec3 lo{1e30L, 1e30L, 1e30L}, hi{-1e30L, -1e30L, -1e30L};
-        Real largest = 0;
-        for (const TQ3RationalPoint4D& p : points) {
-            const Vec3 v{Real(p.x) / p.w, Real(p.y) / p.w, Real(p.z) / p.w};
-            lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-            hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-            largest = std::max(largest, subdivision::maxAbs(v));
-        }
-        return std::max(subdivision::distance(lo, hi), largest);
-    }
+    Real size() const { return subdivision::ControlBox(points).extent(); }
 };
 
 /// The order-k basis functions non-zero on the span holding t (the last span
@@ -329,12 +329,7 @@ inline std::vector<std::vector<std::pair<Real, Real>>> densePolygons(const Patch
     for (const std::vector<TrimCurve>& loop : p.loops) {
         out.emplace_back();
         for (const TrimCurve& t : loop) {
-            subdivision::Curve c;
-            c.order = t.order;
-            for (const TQ3RationalPoint3D& q : t.points)
-                c.points.push_back({q.x, q.y, 0.0f, q.w});
-            c.knots = t.knots;
-            const subdivision::DenseSamples samples = subdivision::denseSamples(c, perSpan);
+            const subdivision::DenseSamples samples = subdivision::denseSamples(t.asCurve(), perSpan);
             for (std::size_t i = 0; i + 1 < samples.local.size(); ++i)
                 out.back().emplace_back(samples.local[i].x, samples.local[i].y);
         }
@@ -428,11 +423,7 @@ public:
     {
         for (const std::vector<TrimCurve>& loop : p.loops)
             for (const TrimCurve& t : loop) {
-                subdivision::Curve c;
-                c.order = t.order;
-                for (const TQ3RationalPoint3D& q : t.points)
-                    c.points.push_back({q.x, q.y, 0.0f, q.w});
-                c.knots = t.knots;
+                subdivision::Curve c = t.asCurve();
                 m_samples.push_back(subdivision::denseSamples(c, perSpan));
                 m_curves.push_back(std::move(c));
             }

@@ -8,6 +8,7 @@
 
 #include "Q3ApiTest.h"
 
+#include "QD3DCamera.h"
 #include "QD3DDrawContext.h"
 #include "QD3DRenderer.h"
 #include "QD3DView.h"
@@ -15,6 +16,34 @@
 #include <vector>
 
 namespace q3test {
+
+/// A pixmap draw context's data: `memory` as a big-endian ARGB32 image of
+/// width x height, cleared to opaque black.
+inline TQ3PixmapDrawContextData argb32ContextData(std::vector<unsigned char>& memory, unsigned long width,
+                                                  unsigned long height)
+{
+    TQ3PixmapDrawContextData data{};
+    data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
+    data.drawContextData.clearImageColor = {1, 0, 0, 0};
+    data.pixmap = {memory.data(), width, height, width * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
+    return data;
+}
+
+/// An orthographic camera at (0, 0, 10) looking at the origin, y up,
+/// range 1 to 100, showing x from -halfWidth to halfWidth and y from
+/// -halfHeight to halfHeight.
+inline TQ3OrthographicCameraData frontOrthographic(float halfWidth, float halfHeight)
+{
+    TQ3OrthographicCameraData data{};
+    data.cameraData.placement = {{0, 0, 10}, {0, 0, 0}, {0, 1, 0}};
+    data.cameraData.range = {1, 100};
+    data.cameraData.viewPort = {{-1, 1}, 2, 2};
+    data.left = -halfWidth;
+    data.right = halfWidth;
+    data.top = halfHeight;
+    data.bottom = -halfHeight;
+    return data;
+}
 
 class PixmapViewTest : public Q3ApiTest {
 protected:
@@ -24,11 +53,7 @@ protected:
     {
         Q3ApiTest::SetUp();
         m_memory.assign(m_width * m_height * 4, 0);
-        TQ3PixmapDrawContextData data{};
-        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        data.drawContextData.clearImageColor = {1, 0, 0, 0};
-        data.pixmap = {m_memory.data(), m_width, m_height, m_width * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
-                       kQ3EndianBig};
+        const TQ3PixmapDrawContextData data = argb32ContextData(m_memory, m_width, m_height);
         m_context = Q3PixmapDrawContext_New(&data);
         m_view = Q3View_New();
         ASSERT_NE(m_context, nullptr);
@@ -42,6 +67,27 @@ protected:
         Q3Object_Dispose(m_view);
         Q3Object_Dispose(m_context);
         Q3ApiTest::TearDown();
+    }
+
+    /// Makes `camera` the view's camera and disposes the caller's reference.
+    void useCamera(TQ3CameraObject camera)
+    {
+        ASSERT_NE(camera, nullptr);
+        ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
+        Q3Object_Dispose(camera);
+    }
+
+    /// A view angle aspect camera with the eye at the origin looking down -z,
+    /// y up, range hither to 100, fov 1.2, the pixmap's aspect ratio.
+    TQ3ViewAngleAspectCameraData eyeAtOrigin(float hither) const
+    {
+        TQ3ViewAngleAspectCameraData data{};
+        data.cameraData.placement = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}};
+        data.cameraData.range = {hither, 100.0f};
+        data.cameraData.viewPort = {{-1, 1}, 2, 2};
+        data.fov = 1.2f;
+        data.aspectRatioXToY = float(m_width) / float(m_height);
+        return data;
     }
 
     std::vector<unsigned char> m_memory;

@@ -30,6 +30,7 @@
 // the reference within 1e-5. Edge lengths are compared with c1 (1 + 1e-4)
 // (float vertices, against Q3's double arithmetic).
 
+#include "PixmapViewTest.h"
 #include "Q3ApiTest.h"
 #include "SubdivisionReference.h"
 
@@ -96,10 +97,6 @@ const char* nameOf(Kind kind)
 }
 
 TQ3Vector3D toVector(const Vec3& v)
-{
-    return {float(v.x), float(v.y), float(v.z)};
-}
-TQ3Point3D toPoint(const Vec3& v)
 {
     return {float(v.x), float(v.y), float(v.z)};
 }
@@ -502,24 +499,16 @@ Mesh readMesh(TQ3GeometryObject triMesh)
 }
 
 /// One random shape with everything it is drawn under.
-struct Scene {
+struct Scene : SceneCamera {
     Shape shape;
     TransformStack transforms;
     bool screen = false;
-    bool perspective = false;
-    TQ3OrthographicCameraData orthographic{};
-    TQ3ViewAngleAspectCameraData viewAngle{};
     float c1 = 1;
 
-    ScreenMap map() const
-    {
-        const TQ3Area pane{{0, 0}, {float(kWidth), float(kHeight)}};
-        return perspective ? ScreenMap(viewAngle, pane) : ScreenMap(orthographic, pane);
-    }
-    Real hither() const
-    {
-        return perspective ? viewAngle.cameraData.range.hither : orthographic.cameraData.range.hither;
-    }
+    Scene() { pane = {{0, 0}, {float(kWidth), float(kHeight)}}; }
+    /// The screen map (the `screen` member says whether the scene is drawn).
+    ScreenMap map() const { return SceneCamera::screen(); }
+
 };
 
 /// A camera looking at the shape from a random direction; a perspective one
@@ -539,27 +528,16 @@ void aimAt(std::mt19937& rng, Scene& scene)
     Vec3 up = randomVector(rng, 1, 1);
     while (norm(cross(up, direction)) < 0.3L)
         up = randomVector(rng, 1, 1);
-    TQ3CameraData camera{};
-    camera.placement.pointOfInterest = toPoint(centre);
-    camera.placement.upVector = toVector(up);
-    camera.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
     scene.perspective = u(rng) < 0.5;
     if (scene.perspective) {
         const Real away = radius * Real(0.8 + 2.5 * u(rng));
-        camera.placement.cameraLocation = toPoint(centre + away * direction);
-        camera.range = {float(0.05L * radius), float(100 * radius)};
-        scene.viewAngle.cameraData = camera;
-        scene.viewAngle.fov = float(0.5 + 0.8 * u(rng));
-        scene.viewAngle.aspectRatioXToY = float(kWidth) / float(kHeight);
+        const Real fov = 0.5 + 0.8 * u(rng);
+        scene.setPerspective(lookAt(centre + away * direction, centre, up, 0.05L * radius, 100 * radius), fov,
+                             Real(float(kWidth) / float(kHeight)));
     } else {
-        camera.placement.cameraLocation = toPoint(centre + 3 * radius * direction);
-        camera.range = {float(0.1L * radius), float(100 * radius)};
-        scene.orthographic.cameraData = camera;
         const Real half = radius * Real(0.6 + 0.8 * u(rng));
-        scene.orthographic.left = float(-half * 4 / 3);
-        scene.orthographic.right = float(half * 4 / 3);
-        scene.orthographic.top = float(half);
-        scene.orthographic.bottom = float(-half);
+        scene.setOrthographic(lookAt(centre + 3 * radius * direction, centre, up, 0.1L * radius, 100 * radius),
+                              half * 4 / 3, half);
     }
 }
 
@@ -634,29 +612,9 @@ struct Totals {
     Real longestEdge = 0; ///< as a fraction of c1
 };
 
-class QuadricPropertyTest : public q3test::Q3ApiTest {
+class QuadricPropertyTest : public q3test::PixmapViewTest {
 protected:
-    void SetUp() override
-    {
-        Q3ApiTest::SetUp();
-        m_memory.assign(kWidth * kHeight * 4, 0);
-        TQ3PixmapDrawContextData data{};
-        data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-        data.drawContextData.clearImageColor = {1, 0, 0, 0};
-        data.pixmap = {m_memory.data(),    kWidth,       kHeight,     kWidth * 4, 32,
-                       kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
-        m_context = Q3PixmapDrawContext_New(&data);
-        m_view = Q3View_New();
-        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
-        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
-    }
-
-    void TearDown() override
-    {
-        Q3Object_Dispose(m_view);
-        Q3Object_Dispose(m_context);
-        Q3ApiTest::TearDown();
-    }
+    QuadricPropertyTest() : PixmapViewTest(kWidth, kHeight) {}
 
     /// The decomposition of `geometry` under the style and the scene's
     /// transforms: in a rendering loop through the scene's camera (screen
@@ -666,10 +624,7 @@ protected:
         Mesh mesh;
         const bool render = scene.screen;
         if (render) {
-            TQ3CameraObject camera = scene.perspective ? Q3ViewAngleAspectCamera_New(&scene.viewAngle)
-                                                       : Q3OrthographicCamera_New(&scene.orthographic);
-            EXPECT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-            Q3Object_Dispose(camera);
+            useCamera(scene.newObject());
             EXPECT_EQ(Q3View_StartRendering(m_view), kQ3Success);
         } else {
             EXPECT_EQ(Q3View_StartBoundingBox(m_view, kQ3ComputeBoundsExact), kQ3Success);
@@ -851,9 +806,6 @@ protected:
         }
     }
 
-    std::vector<unsigned char> m_memory;
-    TQ3DrawContextObject m_context = nullptr;
-    TQ3ViewObject m_view = nullptr;
 };
 
 TEST_F(QuadricPropertyTest, WorldAndScreenSpaceTrianglesLieOnTheShapeAndRespectC1)
@@ -980,10 +932,7 @@ TEST_F(QuadricPropertyTest, AnEllipseIsANearMinimalPolylineOnTheEllipse)
             scene.screen ? kQ3SubdivisionMethodScreenSpace : kQ3SubdivisionMethodWorldSpace, scene.c1, scene.c1};
         std::vector<Vec3> points;
         if (scene.screen) {
-            TQ3CameraObject camera = scene.perspective ? Q3ViewAngleAspectCamera_New(&scene.viewAngle)
-                                                       : Q3OrthographicCamera_New(&scene.orthographic);
-            Q3View_SetCamera(m_view, camera);
-            Q3Object_Dispose(camera);
+            useCamera(scene.newObject());
             ASSERT_EQ(Q3View_StartRendering(m_view), kQ3Success);
         } else {
             ASSERT_EQ(Q3View_StartBoundingBox(m_view, kQ3ComputeBoundsExact), kQ3Success);

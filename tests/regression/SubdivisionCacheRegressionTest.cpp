@@ -26,6 +26,7 @@
 // are not repeated. Immediate-mode curves are subdivided at every submit,
 // which the image shows when the caller edits the data in place.
 
+#include "PixmapViewTest.h"
 #include "Q3ApiTest.h"
 
 #include "QD3DCamera.h"
@@ -50,22 +51,13 @@ using FrameSetup = std::function<void(TQ3ViewObject)>;
 constexpr unsigned long kWidth = 128;
 constexpr unsigned long kHeight = 96;
 
-TQ3PixmapDrawContextData contextData(std::vector<unsigned char>& memory, unsigned long width, unsigned long height)
-{
-    TQ3PixmapDrawContextData data{};
-    data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-    data.drawContextData.clearImageColor = {1, 0, 0, 0};
-    data.pixmap = {memory.data(), width, height, width * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
-    return data;
-}
-
 class SubdivisionCacheRegressionTest : public q3test::Q3ApiTest {
 protected:
     void SetUp() override
     {
         Q3ApiTest::SetUp();
         m_memory.assign(kWidth * kHeight * 4, 0);
-        const TQ3PixmapDrawContextData data = contextData(m_memory, kWidth, kHeight);
+        const TQ3PixmapDrawContextData data = q3test::argb32ContextData(m_memory, kWidth, kHeight);
         m_context = Q3PixmapDrawContext_New(&data);
         m_perspective.cameraData.placement = {{1.5f, -3.0f, 2.5f}, {1.5f, 0.5f, 0.0f}, {0, 0, 1}};
         m_perspective.cameraData.range = {0.5f, 50.0f};
@@ -309,10 +301,10 @@ TEST_F(SubdivisionCacheRegressionTest, WorldSpaceRebuildsForEveryChangeOfTheLoca
     // The pane sets world space's segment cap in a view
     // (kQ3SubdivisionViewSegmentsPerPixel), so its size is part of the key.
     std::vector<unsigned char> small(64 * 48 * 4, 0);
-    const TQ3PixmapDrawContextData smallData = contextData(small, 64, 48);
+    const TQ3PixmapDrawContextData smallData = q3test::argb32ContextData(small, 64, 48);
     ASSERT_EQ(Q3PixmapDrawContext_SetPixmap(m_context, &smallData.pixmap), kQ3Success);
     expectRebuilt(stretched, "a pane size change under world space");
-    const TQ3PixmapDrawContextData whole = contextData(m_memory, kWidth, kHeight);
+    const TQ3PixmapDrawContextData whole = q3test::argb32ContextData(m_memory, kWidth, kHeight);
     ASSERT_EQ(Q3PixmapDrawContext_SetPixmap(m_context, &whole.pixmap), kQ3Success);
 }
 
@@ -369,11 +361,11 @@ TEST_F(SubdivisionCacheRegressionTest, ScreenSpaceRebuildsForEveryCameraAndPaneC
     expectRebuilt(screen, "back to the perspective camera");
 
     std::vector<unsigned char> small(64 * 48 * 4, 0), other(kWidth * kHeight * 4, 0);
-    const TQ3PixmapDrawContextData smallData = contextData(small, 64, 48);
+    const TQ3PixmapDrawContextData smallData = q3test::argb32ContextData(small, 64, 48);
     ASSERT_EQ(Q3PixmapDrawContext_SetPixmap(m_context, &smallData.pixmap), kQ3Success);
     expectRebuilt(screen, "a smaller pixmap");
-    const TQ3PixmapDrawContextData otherData = contextData(other, kWidth, kHeight);
-    const TQ3PixmapDrawContextData whole = contextData(m_memory, kWidth, kHeight);
+    const TQ3PixmapDrawContextData otherData = q3test::argb32ContextData(other, kWidth, kHeight);
+    const TQ3PixmapDrawContextData whole = q3test::argb32ContextData(m_memory, kWidth, kHeight);
     ASSERT_EQ(Q3PixmapDrawContext_SetPixmap(m_context, &otherData.pixmap), kQ3Success);
     expectRebuilt(screen, "a pixmap of the first size");
     ASSERT_EQ(Q3PixmapDrawContext_SetPixmap(m_context, &whole.pixmap), kQ3Success);
@@ -441,14 +433,7 @@ TEST_F(SubdivisionCacheRegressionTest, ImmediateModeCurvesAreSubdividedAtEverySu
 {
     // Looking down -z at the origin: x -2..2 and y -1.5..1.5 fill the image,
     // 32 pixels per unit, so y = 0.75 is pixel row 24 and y = -0.75 row 72.
-    TQ3OrthographicCameraData camera{};
-    camera.cameraData.placement = {{0, 0, 10}, {0, 0, 0}, {0, 1, 0}};
-    camera.cameraData.range = {1, 100};
-    camera.cameraData.viewPort = {{-1, 1}, 2, 2};
-    camera.left = -2;
-    camera.right = 2;
-    camera.top = 1.5f;
-    camera.bottom = -1.5f;
+    const TQ3OrthographicCameraData camera = q3test::frontOrthographic(2, 1.5f);
     TQ3CameraObject flat = Q3OrthographicCamera_New(&camera);
     ASSERT_EQ(Q3View_SetCamera(m_view, flat), kQ3Success);
     Q3Object_Dispose(flat);

@@ -45,6 +45,18 @@ std::size_t probesPerSpan(unsigned long order)
     return std::max<std::size_t>(order, 8);
 }
 
+/// Random curve `index` around the eye: every order in turn, clamped every
+/// other one, knots repeated with probability 0.3, extent 4.
+RandomCurveOptions aroundTheEye(int index)
+{
+    RandomCurveOptions options;
+    options.order = 2 + unsigned(index % 15);
+    options.clamped = index % 2 == 0;
+    options.repeatProbability = 0.3L;
+    options.extent = 4;
+    return options;
+}
+
 class SubdivisionPerspectiveRegressionTest : public q3test::PixmapViewTest {
 protected:
     SubdivisionPerspectiveRegressionTest() : PixmapViewTest(kWidth, kHeight) {}
@@ -52,16 +64,8 @@ protected:
     void SetUp() override
     {
         PixmapViewTest::SetUp();
-        // The eye at the origin looking down -z.
-        m_camera.cameraData.placement = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}};
-        m_camera.cameraData.range = {kHither, 100.0f};
-        m_camera.cameraData.viewPort = {{-1, 1}, 2, 2};
-        m_camera.fov = 1.2f;
-        m_camera.aspectRatioXToY = float(kWidth) / float(kHeight);
-        TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&m_camera);
-        ASSERT_NE(camera, nullptr);
-        ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-        Q3Object_Dispose(camera);
+        m_camera = eyeAtOrigin(kHither);
+        useCamera(Q3ViewAngleAspectCamera_New(&m_camera));
     }
 
     ScreenMap screen() const { return ScreenMap(m_camera, {{0, 0}, {float(kWidth), float(kHeight)}}); }
@@ -279,12 +283,7 @@ TEST_F(SubdivisionPerspectiveRegressionTest, RandomCurvesAroundTheEyeStayBounded
     std::mt19937 rng(kSeed + 1);
     std::size_t largest = 0;
     for (int index = 0; index < 60; ++index) {
-        RandomCurveOptions options;
-        options.order = 2 + unsigned(index % 15);
-        options.clamped = index % 2 == 0;
-        options.repeatProbability = 0.3L;
-        options.extent = 4;
-        Curve curve = randomCurve(rng, options);
+        Curve curve = randomCurve(rng, aroundTheEye(index));
         const float c1 = index % 3 == 0 ? 0.5f : index % 3 == 1 ? 4.0f : 20.0f;
         const std::string what = "curve " + std::to_string(index) + " order " + std::to_string(curve.order);
         const std::vector<Vec3> v = render(curve, c1);
@@ -314,12 +313,7 @@ TEST_F(SubdivisionPerspectiveRegressionTest, TheVisiblePieceOfEverySegmentIsAtMo
     curves.push_back(arc);
     std::mt19937 rng(kSeed + 2);
     for (int index = 0; index < 400; ++index) {
-        RandomCurveOptions options;
-        options.order = 2 + unsigned(index % 15);
-        options.clamped = index % 2 == 0;
-        options.repeatProbability = 0.3L;
-        options.extent = 4;
-        curves.push_back(randomCurve(rng, options));
+        curves.push_back(randomCurve(rng, aroundTheEye(index)));
     }
     const ScreenMap map = screen();
     std::size_t crossing = 0;

@@ -81,39 +81,11 @@ unsigned seed()
 }
 
 /// One random curve with everything it is drawn under.
-struct Scene {
+struct Scene : SceneCamera {
     Curve curve;
     TransformStack transforms;
-    bool perspective = false;
-    TQ3OrthographicCameraData orthographic{};
-    TQ3ViewAngleAspectCameraData viewAngle{};
-    TQ3Area pane{};
     bool paneOn = false;
-
-    ScreenMap screen() const
-    {
-        return perspective ? ScreenMap(viewAngle, pane) : ScreenMap(orthographic, pane);
-    }
-    Real hither() const
-    {
-        return perspective ? viewAngle.cameraData.range.hither : orthographic.cameraData.range.hither;
-    }
 };
-
-Vec3 randomDirection(std::mt19937& rng)
-{
-    std::normal_distribution<double> normal;
-    for (;;) {
-        const Vec3 v{normal(rng), normal(rng), normal(rng)};
-        if (norm(v) > 1e-3L)
-            return unit(v);
-    }
-}
-
-TQ3Point3D toPoint(const Vec3& v)
-{
-    return {float(v.x), float(v.y), float(v.z)};
-}
 
 /// Curve `index` of a run: orders cycle through 2..16, ends alternate
 /// between clamped and not every 15 curves, knot repetition rises every 30,
@@ -134,49 +106,36 @@ Scene makeScene(std::mt19937& rng, int index)
     scene.perspective = (index + index / 30) % 2 == 1;
 
     // The world-space bounding sphere of the control points holds the curve.
-    const Matrix4 toWorld = scene.transforms.localToWorld();
-    Vec3 lo{1e30L, 1e30L, 1e30L}, hi{-1e30L, -1e30L, -1e30L};
-    for (const TQ3RationalPoint4D& p : scene.curve.points) {
-        const Vec3 w = toWorld.point({Real(p.x) / p.w, Real(p.y) / p.w, Real(p.z) / p.w});
-        lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
-        hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
-    }
-    const Vec3 centre = 0.5L * (lo + hi);
-    const Real radius = std::max(distance(lo, hi) / 2, Real(1e-3));
+    const ControlBox box(scene.curve.points, scene.transforms.localToWorld());
+    const Vec3 centre = box.centre();
+    const Real radius = box.radius();
 
     const Vec3 direction = randomDirection(rng);
     Vec3 up = randomDirection(rng);
     while (norm(cross(up, direction)) < 0.3L)
         up = randomDirection(rng);
-    TQ3CameraData camera{};
-    camera.placement.pointOfInterest = toPoint(centre);
-    camera.placement.upVector = {float(up.x), float(up.y), float(up.z)};
-    camera.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
+    TQ3CameraViewPort viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
     if (u(rng) < 0.5) {
-        camera.viewPort.width = float(0.6 + 1.4 * u(rng));
-        camera.viewPort.height = float(0.6 + 1.4 * u(rng));
-        camera.viewPort.origin = {float(-1.2 + 1.2 * u(rng)), float(1.2 * u(rng))};
+        viewPort.width = float(0.6 + 1.4 * u(rng));
+        viewPort.height = float(0.6 + 1.4 * u(rng));
+        viewPort.origin = {float(-1.2 + 1.2 * u(rng)), float(1.2 * u(rng))};
     }
     if (scene.perspective) {
         // Every curve point is at least 1.5 radii in front of the eye.
         const Real away = radius * (2.5L + 2.5L * Real(u(rng)));
-        camera.placement.cameraLocation = toPoint(centre + away * direction);
-        camera.range = {float(0.05L * radius), float(100 * radius)};
-        scene.viewAngle.cameraData = camera;
-        scene.viewAngle.fov = float(0.4 + 1.0 * u(rng));
-        scene.viewAngle.aspectRatioXToY = float(0.7 + 0.9 * u(rng));
+        TQ3CameraData camera = lookAt(centre + away * direction, centre, up, 0.05L * radius, 100 * radius);
+        camera.viewPort = viewPort;
+        const Real fov = 0.4 + 1.0 * u(rng);
+        const Real aspect = 0.7 + 0.9 * u(rng);
+        scene.setPerspective(camera, fov, aspect);
     } else {
-        camera.placement.cameraLocation = toPoint(centre + 3 * radius * direction);
-        camera.range = {float(0.1L * radius), float(100 * radius)};
-        scene.orthographic.cameraData = camera;
+        TQ3CameraData camera = lookAt(centre + 3 * radius * direction, centre, up, 0.1L * radius, 100 * radius);
+        camera.viewPort = viewPort;
         const Real halfWidth = radius * (0.6L + 0.9L * Real(u(rng)));
         const Real halfHeight = halfWidth * (0.6L + 0.6L * Real(u(rng)));
         const Real shiftX = radius * (0.6L * Real(u(rng)) - 0.3L);
         const Real shiftY = radius * (0.6L * Real(u(rng)) - 0.3L);
-        scene.orthographic.left = float(shiftX - halfWidth);
-        scene.orthographic.right = float(shiftX + halfWidth);
-        scene.orthographic.top = float(shiftY + halfHeight);
-        scene.orthographic.bottom = float(shiftY - halfHeight);
+        scene.setOrthographic(camera, halfWidth, halfHeight, shiftX, shiftY);
     }
     // Whole-pixel edges: Q3 rounds a pane to pixels, so this is the pane it uses.
     scene.pane = {{0, 0}, {float(kWidth), float(kHeight)}};
@@ -298,11 +257,7 @@ protected:
     /// Points the view at a scene: its camera and pane.
     void aim(const Scene& scene)
     {
-        TQ3CameraObject camera = scene.perspective ? Q3ViewAngleAspectCamera_New(&scene.viewAngle)
-                                                   : Q3OrthographicCamera_New(&scene.orthographic);
-        ASSERT_NE(camera, nullptr);
-        ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-        Q3Object_Dispose(camera);
+        useCamera(scene.newObject());
         if (scene.paneOn)
             ASSERT_EQ(Q3DrawContext_SetPane(m_context, &scene.pane), kQ3Success);
         ASSERT_EQ(Q3DrawContext_SetPaneState(m_context, scene.paneOn ? kQ3True : kQ3False), kQ3Success);

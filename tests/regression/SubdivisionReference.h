@@ -87,18 +87,7 @@ struct Curve {
     /// The larger of the control points' bounding-box diagonal and their
     /// largest coordinate: the curve lies in the hull of its control points,
     /// so no coordinate of a curve point exceeds it.
-    Real scale() const
-    {
-        Vec3 lo{1e30L, 1e30L, 1e30L}, hi{-1e30L, -1e30L, -1e30L};
-        Real largest = 0;
-        for (const TQ3RationalPoint4D& p : points) {
-            const Vec3 v{Real(p.x) / p.w, Real(p.y) / p.w, Real(p.z) / p.w};
-            lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-            hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-            largest = std::max(largest, maxAbs(v));
-        }
-        return std::max(distance(lo, hi), largest);
-    }
+    Real scale() const;
 };
 
 /// The curve point at t by Cox-de Boor. The span is the last non-empty
@@ -540,6 +529,105 @@ private:
     Real m_paneX = 0, m_paneY = 0, m_paneWidth = 1, m_paneHeight = 1;
 
 };
+
+/// A point of the long-double reference as the float point the API takes.
+inline TQ3Point3D toPoint(const Vec3& v)
+{
+    return {float(v.x), float(v.y), float(v.z)};
+}
+
+/// A random unit vector: three normal deviates, drawn again while their
+/// length is below 1e-3, then normalised.
+inline Vec3 randomDirection(std::mt19937& rng)
+{
+    std::normal_distribution<double> normal;
+    for (;;) {
+        const Vec3 v{normal(rng), normal(rng), normal(rng)};
+        if (norm(v) > 1e-3L)
+            return unit(v);
+    }
+}
+
+/// The axis-aligned box of rational control points (each divided by its w),
+/// each first mapped by `toWorld`.
+struct ControlBox {
+    Vec3 lo{1e30L, 1e30L, 1e30L};
+    Vec3 hi{-1e30L, -1e30L, -1e30L};
+    Real largest = 0; ///< the largest coordinate's magnitude
+
+    ControlBox(const std::vector<TQ3RationalPoint4D>& points, const Matrix4& toWorld = Matrix4::identity())
+    {
+        for (const TQ3RationalPoint4D& p : points) {
+            const Vec3 w = toWorld.point({Real(p.x) / p.w, Real(p.y) / p.w, Real(p.z) / p.w});
+            lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
+            hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
+            largest = std::max(largest, maxAbs(w));
+        }
+    }
+    Vec3 centre() const { return 0.5L * (lo + hi); }
+    /// Half the diagonal, at least 1e-3.
+    Real radius() const { return std::max(distance(lo, hi) / 2, Real(1e-3)); }
+    /// The larger of the diagonal and the largest coordinate: no point of a
+    /// curve or surface in the hull of the points has a larger coordinate.
+    Real extent() const { return std::max(distance(lo, hi), largest); }
+};
+
+/// The camera data of an eye at `eye` looking at `target` with `up`, the
+/// view port the whole square, the range hither to yon.
+inline TQ3CameraData lookAt(const Vec3& eye, const Vec3& target, const Vec3& up, Real hither, Real yon)
+{
+    TQ3CameraData camera{};
+    camera.placement.cameraLocation = toPoint(eye);
+    camera.placement.pointOfInterest = toPoint(target);
+    camera.placement.upVector = {float(up.x), float(up.y), float(up.z)};
+    camera.range = {float(hither), float(yon)};
+    camera.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
+    return camera;
+}
+
+/// The camera a random scene is seen through: an orthographic or a view
+/// angle aspect one, with the screen map computed from its data.
+struct SceneCamera {
+    bool perspective = false;
+    TQ3OrthographicCameraData orthographic{};
+    TQ3ViewAngleAspectCameraData viewAngle{};
+    TQ3Area pane{}; ///< the draw context's pane the camera's view port maps to
+
+    void setPerspective(const TQ3CameraData& camera, Real fov, Real aspectRatioXToY)
+    {
+        perspective = true;
+        viewAngle.cameraData = camera;
+        viewAngle.fov = float(fov);
+        viewAngle.aspectRatioXToY = float(aspectRatioXToY);
+    }
+    /// An orthographic camera showing halfWidth either side of x = shiftX
+    /// and halfHeight above and below y = shiftY (camera coordinates).
+    void setOrthographic(const TQ3CameraData& camera, Real halfWidth, Real halfHeight, Real shiftX = 0,
+                         Real shiftY = 0)
+    {
+        perspective = false;
+        orthographic.cameraData = camera;
+        orthographic.left = float(shiftX - halfWidth);
+        orthographic.right = float(shiftX + halfWidth);
+        orthographic.top = float(shiftY + halfHeight);
+        orthographic.bottom = float(shiftY - halfHeight);
+    }
+    ScreenMap screen() const { return perspective ? ScreenMap(viewAngle, pane) : ScreenMap(orthographic, pane); }
+    Real hither() const
+    {
+        return perspective ? viewAngle.cameraData.range.hither : orthographic.cameraData.range.hither;
+    }
+    /// A new camera object (the caller disposes it).
+    TQ3CameraObject newObject() const
+    {
+        return perspective ? Q3ViewAngleAspectCamera_New(&viewAngle) : Q3OrthographicCamera_New(&orthographic);
+    }
+};
+
+inline Real Curve::scale() const
+{
+    return ControlBox(points).extent();
+}
 
 /// Dense samples of a curve: `perSpan` intervals of equal parameter width
 /// in every non-empty span, shared span ends kept once.

@@ -42,21 +42,11 @@ constexpr unsigned long kSide = 128;
 constexpr int kCurves = 60;
 constexpr Real kMargin = 1e-5L;
 
-struct Scene {
+struct Scene : SceneCamera {
     Curve curve;
-    bool perspective = false;
-    TQ3OrthographicCameraData orthographic{};
-    TQ3ViewAngleAspectCameraData viewAngle{};
-    TQ3Area pane{{0, 0}, {float(kSide), float(kSide)}};
-    Real hither = 0;
 
-    ScreenMap screen() const { return perspective ? ScreenMap(viewAngle, pane) : ScreenMap(orthographic, pane); }
+    Scene() { pane = {{0, 0}, {float(kSide), float(kSide)}}; }
 };
-
-TQ3Point3D toPoint(const Vec3& v)
-{
-    return {float(v.x), float(v.y), float(v.z)};
-}
 
 // A curve of extent 10 seen through a view a few times narrower than it, so
 // that most of it is outside; every point at least 1.5 radii in front of the
@@ -72,13 +62,7 @@ Scene makeScene(std::mt19937& rng, int index)
     scene.curve = randomCurve(rng, options);
     scene.perspective = index % 2 == 1;
 
-    Vec3 lo{1e30L, 1e30L, 1e30L}, hi{-1e30L, -1e30L, -1e30L};
-    for (const TQ3RationalPoint4D& p : scene.curve.points) {
-        const Vec3 w{Real(p.x) / p.w, Real(p.y) / p.w, Real(p.z) / p.w};
-        lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
-        hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
-    }
-    const Real radius = std::max(distance(lo, hi) / 2, Real(1e-3));
+    const Real radius = ControlBox(scene.curve.points).radius();
     // Look at a curve point near the middle, from a random direction.
     const Vec3 target = evaluate(scene.curve, scene.curve.domainStart() +
                                                   (0.3L + 0.4L * Real(u(rng))) *
@@ -89,27 +73,17 @@ Scene makeScene(std::mt19937& rng, int index)
     Vec3 up{0, 1, 0};
     if (norm(cross(up, direction)) < 0.3L)
         up = Vec3{1, 0, 0};
-    TQ3CameraData camera{};
-    camera.placement.pointOfInterest = toPoint(target);
-    camera.placement.upVector = {float(up.x), float(up.y), float(up.z)};
-    camera.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
     // Every curve point is within 2 radii of the target, so at least half a
     // radius in front of the eye.
     const Real away = radius * (2.5L + 2.0L * Real(u(rng)));
-    camera.placement.cameraLocation = toPoint(target + away * direction);
-    camera.range = {float(0.05L * radius), float(100 * (away + radius))};
-    scene.hither = camera.range.hither;
+    const TQ3CameraData camera =
+        lookAt(target + away * direction, target, up, 0.05L * radius, 100 * (away + radius));
     if (scene.perspective) {
-        scene.viewAngle.cameraData = camera;
-        scene.viewAngle.fov = float(0.15 + 0.3 * u(rng));
-        scene.viewAngle.aspectRatioXToY = 1.0f;
+        const Real fov = 0.15 + 0.3 * u(rng);
+        scene.setPerspective(camera, fov, 1);
     } else {
-        scene.orthographic.cameraData = camera;
         const Real half = radius * (0.25L + 0.35L * Real(u(rng)));
-        scene.orthographic.left = float(-half);
-        scene.orthographic.right = float(half);
-        scene.orthographic.top = float(half);
-        scene.orthographic.bottom = float(-half);
+        scene.setOrthographic(camera, half, half);
     }
     return scene;
 }
@@ -117,15 +91,6 @@ Scene makeScene(std::mt19937& rng, int index)
 class SubdivisionVisibleRegressionTest : public q3test::PixmapViewTest {
 protected:
     SubdivisionVisibleRegressionTest() : PixmapViewTest(kSide, kSide) {}
-
-    void aim(const Scene& scene)
-    {
-        TQ3CameraObject camera = scene.perspective ? Q3ViewAngleAspectCamera_New(&scene.viewAngle)
-                                                   : Q3OrthographicCamera_New(&scene.orthographic);
-        ASSERT_NE(camera, nullptr);
-        ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-        Q3Object_Dispose(camera);
-    }
 
     /// The polyline Q3Geometry_GetDecomposed gives for `curve` under `style`
     /// inside a rendering loop (a warning, if `warns`, is expected once per
@@ -198,7 +163,7 @@ TEST_F(SubdivisionVisibleRegressionTest, VisibleSegmentsObeyC1WhileHiddenSpansGe
         TQ3NURBCurveData data = copy.data();
         TQ3GeometryObject curve = Q3NURBCurve_New(&data);
         ASSERT_NE(curve, nullptr);
-        aim(scene);
+        useCamera(scene.newObject());
         const std::vector<Vec3> byScreen = decompose(curve, screen);
         const std::vector<Vec3> byWorld = decompose(curve, world);
         const std::vector<Vec3> byConstant = decompose(curve, constant);
@@ -207,7 +172,7 @@ TEST_F(SubdivisionVisibleRegressionTest, VisibleSegmentsObeyC1WhileHiddenSpansGe
         const auto check = [&](const std::vector<Vec3>& v, int kind, Real c1, const char* name) {
             ASSERT_GE(v.size(), 2u) << what << " " << name;
             for (std::size_t i = 1; i < v.size(); ++i) {
-                const bool visible = map.segmentVisible(v[i - 1], v[i], scene.hither, kMargin);
+                const bool visible = map.segmentVisible(v[i - 1], v[i], scene.hither(), kMargin);
                 const Real length = kind == 0 ? pixelDistance(map, v[i - 1], v[i]) : distance(v[i - 1], v[i]);
                 const Real allowed = kind == 0 ? c1 * (1 + 1e-4L) + 1e-4L : c1 * (1 + 1e-4L) + 1e-6L * c.scale();
                 if (visible) {
@@ -264,17 +229,8 @@ TEST_F(SubdivisionVisibleRegressionTest, ScreenSpaceBelowTheFloorIsReplacedWithA
     Q3Object_Dispose(style);
 
     // Submitted in a loop: the state says what curves are drawn with.
-    TQ3OrthographicCameraData ortho{};
-    ortho.cameraData.placement = {{0, 0, 10}, {0, 0, 0}, {0, 1, 0}};
-    ortho.cameraData.range = {1, 100};
-    ortho.cameraData.viewPort = {{-1, 1}, 2, 2};
-    ortho.left = -2;
-    ortho.right = 2;
-    ortho.top = 2;
-    ortho.bottom = -2;
-    TQ3CameraObject camera = Q3OrthographicCamera_New(&ortho);
-    ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-    Q3Object_Dispose(camera);
+    const TQ3OrthographicCameraData ortho = q3test::frontOrthographic(2, 2);
+    useCamera(Q3OrthographicCamera_New(&ortho));
     ASSERT_EQ(Q3View_StartRendering(m_view), kQ3Success);
     TQ3ViewStatus status;
     do {
@@ -295,17 +251,8 @@ TEST_F(SubdivisionVisibleRegressionTest, TheViewCapsAdaptiveSegmentsWithAWarning
 {
     EXPECT_EQ(kQ3SubdivisionViewSegmentsPerPixel, 16);
     const std::size_t cap = std::size_t(kQ3SubdivisionViewSegmentsPerPixel) * (kSide + kSide);
-    TQ3OrthographicCameraData ortho{};
-    ortho.cameraData.placement = {{0, 0, 10}, {0, 0, 0}, {0, 1, 0}};
-    ortho.cameraData.range = {1, 100};
-    ortho.cameraData.viewPort = {{-1, 1}, 2, 2};
-    ortho.left = -2;
-    ortho.right = 2;
-    ortho.top = 2;
-    ortho.bottom = -2;
-    TQ3CameraObject camera = Q3OrthographicCamera_New(&ortho);
-    ASSERT_EQ(Q3View_SetCamera(m_view, camera), kQ3Success);
-    Q3Object_Dispose(camera);
+    const TQ3OrthographicCameraData ortho = q3test::frontOrthographic(2, 2);
+    useCamera(Q3OrthographicCamera_New(&ortho));
     // A cubic Bezier inside the view, about 4 units (128 pixels) long.
     TQ3RationalPoint4D points[4] = {{-1.8f, -1, 0, 1}, {-0.6f, 1.5f, 0, 1}, {0.6f, -1.5f, 0, 1}, {1.8f, 1, 0, 1}};
     float knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};

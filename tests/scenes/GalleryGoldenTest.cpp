@@ -35,7 +35,6 @@ namespace {
 
 class GalleryTest : public q3test::SessionTest<> {
 protected:
-
     static q3test::RgbaImage render(unsigned long index, bool lit)
     {
         q3test::RgbaImage image(Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT);
@@ -58,6 +57,36 @@ protected:
             for (int x = 0; x < image.width; ++x)
                 n += isDrawn(image, x, y) ? 1 : 0;
         return n;
+    }
+
+    // Reads the file at `path` (and removes it) and renders what it holds lit
+    // into `image`; false if nothing was read.
+    static bool readAndRenderLit(const std::string& path, q3test::RgbaImage* image)
+    {
+        TQ3GroupObject copy = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
+        std::remove(path.c_str());
+        if (copy == nullptr)
+            return false;
+        EXPECT_EQ(q3gallery_render_object(copy, 1, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT, image->pixels.data()), 0);
+        Q3Object_Dispose(copy);
+        return true;
+    }
+
+    // What the gallery draws for geometry `index`: a display group holding a
+    // Phong illumination shader, then the geometry; NULL if the gallery
+    // made no geometry.
+    static TQ3GroupObject phongModel(unsigned long index)
+    {
+        TQ3GeometryObject geometry = q3gallery_new(index);
+        if (geometry == nullptr)
+            return nullptr;
+        TQ3GroupObject model = Q3DisplayGroup_New();
+        TQ3ShaderObject phong = Q3PhongIllumination_New();
+        Q3Group_AddObject(model, phong);
+        Q3Group_AddObject(model, geometry);
+        Q3Object_Dispose(phong);
+        Q3Object_Dispose(geometry);
+        return model;
     }
 };
 
@@ -140,23 +169,13 @@ TEST_P(GalleryGltfGolden, TheLitPictureOfTheGlbCopyMatchesTheGolden)
     // What the gallery draws: a Phong illumination shader, then the geometry
     // (exported alone, it would be unlit, as QuickDraw 3D draws a geometry
     // under no illumination shader).
-    TQ3GeometryObject geometry = q3gallery_new(index);
-    ASSERT_NE(geometry, nullptr);
-    TQ3GroupObject model = Q3DisplayGroup_New();
-    TQ3ShaderObject phong = Q3PhongIllumination_New();
-    Q3Group_AddObject(model, phong);
-    Q3Group_AddObject(model, geometry);
-    Q3Object_Dispose(phong);
-    Q3Object_Dispose(geometry);
+    TQ3GroupObject model = phongModel(index);
+    ASSERT_NE(model, nullptr);
     const std::string path = ::testing::TempDir() + "q3gallery-" + GetParam() + ".glb";
     ASSERT_EQ(Q3Exchange_Write(model, path.c_str(), nullptr), kQ3Success);
     Q3Object_Dispose(model);
-    TQ3GroupObject copy = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
-    std::remove(path.c_str());
-    ASSERT_NE(copy, nullptr);
     q3test::RgbaImage image(Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT);
-    EXPECT_EQ(q3gallery_render_object(copy, 1, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT, image.pixels.data()), 0);
-    Q3Object_Dispose(copy);
+    ASSERT_TRUE(readAndRenderLit(path, &image));
     EXPECT_TRUE(q3test::matchesGolden(std::string("geometry_") + GetParam() + "_lit", image));
 }
 
@@ -204,14 +223,8 @@ TEST_P(GalleryGltfViewGolden, TheLitPictureOfTheCopyExportedUnderTheGalleryViewM
     Q3Object_Dispose(context);
     Q3Object_Dispose(camera);
 
-    TQ3GeometryObject geometry = q3gallery_new(index);
-    ASSERT_NE(geometry, nullptr);
-    TQ3GroupObject model = Q3DisplayGroup_New();
-    TQ3ShaderObject phong = Q3PhongIllumination_New();
-    Q3Group_AddObject(model, phong);
-    Q3Group_AddObject(model, geometry);
-    Q3Object_Dispose(phong);
-    Q3Object_Dispose(geometry);
+    TQ3GroupObject model = phongModel(index);
+    ASSERT_NE(model, nullptr);
     TQ3ExchangeOptions options;
     ASSERT_EQ(Q3Exchange_InitOptions(&options), kQ3Success);
     options.subdivisionFromSize = kQ3False;
@@ -222,12 +235,8 @@ TEST_P(GalleryGltfViewGolden, TheLitPictureOfTheCopyExportedUnderTheGalleryViewM
     ASSERT_EQ(Q3Exchange_Write(model, path.c_str(), &options), kQ3Success);
     Q3Object_Dispose(model);
     Q3Object_Dispose(view);
-    TQ3GroupObject copy = Q3Exchange_Read(path.c_str(), kQ3ExchangeFormatAny);
-    std::remove(path.c_str());
-    ASSERT_NE(copy, nullptr);
     q3test::RgbaImage image(Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT);
-    EXPECT_EQ(q3gallery_render_object(copy, 1, Q3GALLERY_WIDTH, Q3GALLERY_HEIGHT, image.pixels.data()), 0);
-    Q3Object_Dispose(copy);
+    ASSERT_TRUE(readAndRenderLit(path, &image));
     EXPECT_TRUE(q3test::matchesGolden("geometry_" + name + "_lit", image));
 }
 

@@ -39,26 +39,27 @@ T filledWith(float value)
     return result;
 }
 
-inline TQ3Matrix4x4 matrix4x4Of(std::initializer_list<float> rowMajor)
+/// An N x N matrix from its entries row by row.
+template <class Matrix, int N>
+Matrix matrixOfRows(std::initializer_list<float> rowMajor)
 {
-    TQ3Matrix4x4 m{};
+    Matrix m{};
     int k = 0;
     for (float v : rowMajor) {
-        m.value[k / 4][k % 4] = v;
+        m.value[k / N][k % N] = v;
         ++k;
     }
     return m;
 }
 
+inline TQ3Matrix4x4 matrix4x4Of(std::initializer_list<float> rowMajor)
+{
+    return matrixOfRows<TQ3Matrix4x4, 4>(rowMajor);
+}
+
 inline TQ3Matrix3x3 matrix3x3Of(std::initializer_list<float> rowMajor)
 {
-    TQ3Matrix3x3 m{};
-    int k = 0;
-    for (float v : rowMajor) {
-        m.value[k / 3][k % 3] = v;
-        ++k;
-    }
-    return m;
+    return matrixOfRows<TQ3Matrix3x3, 3>(rowMajor);
 }
 
 inline const TQ3Matrix4x4 kIdentity4x4 = matrix4x4Of({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});

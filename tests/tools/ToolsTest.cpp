@@ -604,6 +604,18 @@ INSTANTIATE_TEST_SUITE_P(Tools, ManPage,
 
 namespace {
 
+// A test's name from its model's file name: the part before the dot, with
+// every character GoogleTest does not allow made an underscore.
+std::string modelTestName(const ::testing::TestParamInfo<const char*>& info)
+{
+    std::string name = info.param;
+    name = name.substr(0, name.find('.'));
+    for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch)))
+            ch = '_';
+    return name;
+}
+
 // Every text 3DMF file of tests/data, written by hand to hold one of each
 // thing Q3 reads (unknown.3dmf aside: its unknown text object has no binary
 // form, and a binary file leaves it out, docs/3dmf.md).
@@ -644,15 +656,7 @@ TEST_P(ConvertCensus, TextToBinaryToTextLosesNothing)
         std::remove(path.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(TestData, ConvertCensus, ::testing::ValuesIn(kTextModels),
-                         [](const ::testing::TestParamInfo<const char*>& info) {
-                             std::string name = info.param;
-                             name = name.substr(0, name.find('.'));
-                             for (char& ch : name)
-                                 if (!std::isalnum(static_cast<unsigned char>(ch)))
-                                     ch = '_';
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(TestData, ConvertCensus, ::testing::ValuesIn(kTextModels), modelTestName);
 
 // Every text 3DMF file of tests/data converts to .glb and .gltf that the
 // Khronos validator passes with no errors, and reads back.
@@ -675,12 +679,4 @@ TEST_P(ConvertGltf, EveryTestModelGivesAValidGlbAndGltf)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(TestData, ConvertGltf, ::testing::ValuesIn(kTextModels),
-                         [](const ::testing::TestParamInfo<const char*>& info) {
-                             std::string name = info.param;
-                             name = name.substr(0, name.find('.'));
-                             for (char& ch : name)
-                                 if (!std::isalnum(static_cast<unsigned char>(ch)))
-                                     ch = '_';
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(TestData, ConvertGltf, ::testing::ValuesIn(kTextModels), modelTestName);

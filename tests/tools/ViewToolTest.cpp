@@ -393,6 +393,32 @@ q3test::RgbaImage windowImage(Display* display, Window window)
 
 } // namespace
 
+// Presses S and reads back the picture the viewer saves.
+bool saveShot(Input& input, Viewer& viewer, q3test::RgbaImage* image)
+{
+    input.key(XK_s);
+    return readSaved(viewer.waitFor("saved "), image);
+}
+
+// Presses R; the viewer's line about its camera.
+std::string resetCamera(Input& input, Viewer& viewer)
+{
+    input.key(XK_r);
+    return viewer.waitFor("camera");
+}
+
+// Presses Q, expects a clean exit, and removes the model and the `shots`
+// pictures saved under `prefix`.
+void quitAndRemove(Input& input, Viewer& viewer, const std::string& model, const std::string& prefix, int shots)
+{
+    input.key(XK_q);
+    EXPECT_EQ(viewer.exitStatus(), 0);
+    EXPECT_EQ(viewer.errors(), "");
+    std::remove(model.c_str());
+    for (int n = 1; n <= shots; ++n)
+        std::remove((prefix + "-" + std::to_string(n) + ".png").c_str());
+}
+
 TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
 {
     q3test::XvfbServer server;
@@ -445,33 +471,28 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     // (pi/400 a pixel) as if grabbed: its left side (yellow) comes to face
     // the camera.
     input.drag(1, 60, 120, 260, 120);
-    input.key(XK_s);
     q3test::RgbaImage turned;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &turned));
+    ASSERT_TRUE(saveShot(input, viewer, &turned));
     EXPECT_TRUE(is(pixel(turned, 160, 120), 255, 255, 0));
     EXPECT_EQ(redRun(turned, 120), 0);
     // ... and the same drag back gives the first picture again.
     input.drag(1, 260, 120, 60, 120);
-    input.key(XK_s);
     q3test::RgbaImage back;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &back));
+    ASSERT_TRUE(saveShot(input, viewer, &back));
     EXPECT_EQ(q3test::countDifferingPixels(first, back), 0);
 
     // Dragging 160 pixels down tips the top toward the camera by 0.4 pi: the
     // eye is then at 4 (0, sin 0.4pi, cos 0.4pi), and the ray through the
     // centre meets the top face (cyan) at z = 0.5 / tan(0.4 pi) < 0.5.
     input.drag(1, 160, 40, 160, 200);
-    input.key(XK_s);
     q3test::RgbaImage tipped;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &tipped));
+    ASSERT_TRUE(saveShot(input, viewer, &tipped));
     EXPECT_TRUE(is(pixel(tipped, 160, 120), 0, 255, 255));
 
     // Reset: the first picture exactly.
-    input.key(XK_r);
-    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
-    input.key(XK_s);
+    ASSERT_EQ(resetCamera(input, viewer), "camera reset");
     q3test::RgbaImage reset;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &reset));
+    ASSERT_TRUE(saveShot(input, viewer, &reset));
     EXPECT_EQ(q3test::countDifferingPixels(first, reset), 0);
 
     // One wheel step up brings the eye to 0.9 x 4 = 3.6 from the centre:
@@ -479,52 +500,43 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     input.move(160, 120);
     input.button(Button4, true);
     input.button(Button4, false);
-    input.key(XK_s);
     q3test::RgbaImage zoomed;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &zoomed));
+    ASSERT_TRUE(saveShot(input, viewer, &zoomed));
     const double zoomedSide = pixelsPerUnit(240, 0.9 * kEyeDistance - 0.5);
     EXPECT_NEAR(redRun(zoomed, 120), zoomedSide, 1.5);
     EXPECT_NEAR(redColumn(zoomed, 160), zoomedSide, 1.5);
 
     // A right drag of 48 pixels moves the point of interest's plane 48
     // pixels; the front face, nearer (3.5 against 4), moves 48 x 4 / 3.5.
-    input.key(XK_r);
-    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
+    ASSERT_EQ(resetCamera(input, viewer), "camera reset");
     input.drag(3, 100, 120, 148, 120);
-    input.key(XK_s);
     q3test::RgbaImage panned;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &panned));
+    ASSERT_TRUE(saveShot(input, viewer, &panned));
     int before = 0, after = 0;
     redRun(first, 120, &before);
     redRun(panned, 120, &after);
     EXPECT_NEAR(after - before, 48.0 * kEyeDistance / (kEyeDistance - 0.5), 1.0);
     EXPECT_NEAR(redRun(panned, 120), side, 1.5);
     // The middle button, and the left one with Shift, move it the same.
-    input.key(XK_r);
-    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
+    ASSERT_EQ(resetCamera(input, viewer), "camera reset");
     input.drag(2, 100, 120, 148, 120);
-    input.key(XK_s);
     q3test::RgbaImage middle;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &middle));
+    ASSERT_TRUE(saveShot(input, viewer, &middle));
     EXPECT_EQ(q3test::countDifferingPixels(panned, middle), 0);
-    input.key(XK_r);
-    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
+    ASSERT_EQ(resetCamera(input, viewer), "camera reset");
     input.modifier(XK_Shift_L, ShiftMask, true);
     input.drag(1, 100, 120, 148, 120);
     input.modifier(XK_Shift_L, ShiftMask, false);
-    input.key(XK_s);
     q3test::RgbaImage shifted;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &shifted));
+    ASSERT_TRUE(saveShot(input, viewer, &shifted));
     EXPECT_EQ(q3test::countDifferingPixels(panned, shifted), 0);
-    input.key(XK_r);
-    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
+    ASSERT_EQ(resetCamera(input, viewer), "camera reset");
 
     // The wireframe renderer: edges only, the centre is background.
     input.key(XK_w);
     ASSERT_EQ(viewer.waitFor("renderer"), "renderer wireframe");
-    input.key(XK_s);
     q3test::RgbaImage wire;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &wire));
+    ASSERT_TRUE(saveShot(input, viewer, &wire));
     EXPECT_GT(q3test::countDifferingPixels(first, wire), 1000);
     EXPECT_TRUE(isBackground(pixel(wire, 160, 120)));
     EXPECT_GT(redPixels(wire), 0);
@@ -533,17 +545,15 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     ASSERT_EQ(viewer.waitFor("renderer"), "renderer interactive");
     input.key(XK_e);
     ASSERT_EQ(viewer.waitFor("fill"), "fill edges");
-    input.key(XK_s);
     q3test::RgbaImage edges;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &edges));
+    ASSERT_TRUE(saveShot(input, viewer, &edges));
     EXPECT_TRUE(isBackground(pixel(edges, 160, 120)));
     EXPECT_GT(redPixels(edges), 0);
     // Points: the vertices alone.
     input.key(XK_p);
     ASSERT_EQ(viewer.waitFor("fill"), "fill points");
-    input.key(XK_s);
     q3test::RgbaImage points;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &points));
+    ASSERT_TRUE(saveShot(input, viewer, &points));
     EXPECT_TRUE(isBackground(pixel(points, 160, 120)));
     EXPECT_EQ(redRun(points, 120), 0);
     long drawn = 0;
@@ -557,9 +567,8 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     // Lights on again: shaded, so the picture changes.
     input.key(XK_l);
     ASSERT_EQ(viewer.waitFor("lights"), "lights on");
-    input.key(XK_s);
     q3test::RgbaImage lit;
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &lit));
+    ASSERT_TRUE(saveShot(input, viewer, &lit));
     EXPECT_FALSE(is(pixel(lit, 160, 120), 255, 0, 0));
     EXPECT_GT(pixel(lit, 160, 120).r, pixel(lit, 160, 120).g);
     input.key(XK_l);
@@ -583,12 +592,7 @@ TEST(Q3View, MouseAndKeysChangeThePictureAsComputed)
     EXPECT_NEAR(redColumn(resized, 200), resizedSide, 1.5);
     EXPECT_TRUE(isBackground(pixel(resized, 398, 298)));
 
-    input.key(XK_q);
-    EXPECT_EQ(viewer.exitStatus(), 0);
-    EXPECT_EQ(viewer.errors(), "");
-    std::remove(model.c_str());
-    for (int n = 1; n <= 16; ++n)
-        std::remove((prefix + "-" + std::to_string(n) + ".png").c_str());
+    quitAndRemove(input, viewer, model, prefix, 16);
 }
 
 TEST(Q3View, TheWheelScalesAnOrthographicCamerasRectangle)
@@ -614,27 +618,19 @@ TEST(Q3View, TheWheelScalesAnOrthographicCamerasRectangle)
     input.move(160, 120);
     input.button(Button4, true);
     input.button(Button4, false);
-    input.key(XK_s);
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &zoomed));
+    ASSERT_TRUE(saveShot(input, viewer, &zoomed));
     EXPECT_NEAR(redRun(zoomed, 120), 80.0 / 0.9, 1.0);
     EXPECT_NEAR(redColumn(zoomed, 160), 80.0 / 0.9, 1.0);
     // Moving it: every depth moves as far as the mouse.
-    input.key(XK_r);
-    ASSERT_EQ(viewer.waitFor("camera"), "camera reset");
+    ASSERT_EQ(resetCamera(input, viewer), "camera reset");
     input.drag(3, 100, 120, 148, 100);
-    input.key(XK_s);
-    ASSERT_TRUE(readSaved(viewer.waitFor("saved "), &panned));
+    ASSERT_TRUE(saveShot(input, viewer, &panned));
     int before = 0, after = 0;
     redRun(first, 120, &before);
     redRun(panned, 100, &after);
     EXPECT_NEAR(after - before, 48, 1);
     EXPECT_NEAR(redColumn(panned, 160 + 48) - redColumn(first, 160), 0, 1);
-    input.key(XK_q);
-    EXPECT_EQ(viewer.exitStatus(), 0);
-    EXPECT_EQ(viewer.errors(), "");
-    std::remove(model.c_str());
-    for (int n = 1; n <= 3; ++n)
-        std::remove((prefix + "-" + std::to_string(n) + ".png").c_str());
+    quitAndRemove(input, viewer, model, prefix, 3);
 }
 
 TEST(Q3View, TheFilesCameraIsUsedUnlessFitCameraIsAsked)

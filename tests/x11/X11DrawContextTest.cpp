@@ -153,6 +153,25 @@ protected:
         return pixels;
     }
 
+    // After a frame into `window`: the same frame drawn into a pixmap with
+    // `contextData` (starting black, as a new window does, if `fromBlack`)
+    // matches the window pixel for pixel. Returns the window's pixels.
+    std::vector<std::uint32_t> expectWindowMatchesPixmap(Window window, const TQ3DrawContextData& contextData,
+                                                         unsigned width, unsigned height, bool fromBlack)
+    {
+        XSync(m_display, False);
+        Image pixmap(width, height);
+        if (fromBlack)
+            pixmap.fill(0);
+        TQ3PixmapDrawContextData pixmapData{contextData, pixmap.pixmap()};
+        TQ3DrawContextObject pixmapContext = Q3PixmapDrawContext_New(&pixmapData);
+        render(pixmapContext, width, height);
+        Q3Object_Dispose(pixmapContext);
+        const std::vector<std::uint32_t> shown = readWindow(window, width, height);
+        expectSamePicture(shown, rgbOf(pixmap));
+        return shown;
+    }
+
     // How many pixels differ, and that the picture is not one colour.
     static void expectSamePicture(const std::vector<std::uint32_t>& window, const std::vector<std::uint32_t>& pixmap)
     {
@@ -180,15 +199,8 @@ TEST_F(X11DrawContextTest, WindowShowsThePixmapPicture)
     ASSERT_NE(context, nullptr);
     EXPECT_EQ(Q3DrawContext_GetType(context), kQ3DrawContextTypeX11);
     render(context, width, height);
-    XSync(m_display, False);
-
-    Image pixmap(width, height);
-    TQ3PixmapDrawContextData pixmapData{contextData(), pixmap.pixmap()};
-    TQ3DrawContextObject pixmapContext = Q3PixmapDrawContext_New(&pixmapData);
-    render(pixmapContext, width, height);
-    expectSamePicture(readWindow(window, width, height), rgbOf(pixmap));
+    expectWindowMatchesPixmap(window, contextData(), width, height, false);
     Q3Object_Dispose(context);
-    Q3Object_Dispose(pixmapContext);
 }
 
 TEST_F(X11DrawContextTest, PaneAndNoClearLeaveTheRestOfTheWindow)
@@ -202,22 +214,13 @@ TEST_F(X11DrawContextTest, PaneAndNoClearLeaveTheRestOfTheWindow)
     TQ3DrawContextObject context = Q3XDrawContext_New(&data);
     ASSERT_NE(context, nullptr);
     render(context, width, height);
-    XSync(m_display, False);
-
     // The pixmap starts as the window did: black.
-    Image pixmap(width, height);
-    pixmap.fill(0);
-    TQ3PixmapDrawContextData pixmapData{data.contextData, pixmap.pixmap()};
-    TQ3DrawContextObject pixmapContext = Q3PixmapDrawContext_New(&pixmapData);
-    render(pixmapContext, width, height);
-    const std::vector<std::uint32_t> shown = readWindow(window, width, height);
-    expectSamePicture(shown, rgbOf(pixmap));
+    const std::vector<std::uint32_t> shown = expectWindowMatchesPixmap(window, data.contextData, width, height, true);
     // Outside the pane the window is still black.
     ASSERT_EQ(shown.size(), std::size_t(width) * height);
     EXPECT_EQ(shown[5 * width + 5], 0u);
     EXPECT_EQ(shown[150 * width + 190], 0u);
     Q3Object_Dispose(context);
-    Q3Object_Dispose(pixmapContext);
 }
 
 TEST_F(X11DrawContextTest, MaskKeepsTheWindowWhereItsBitsAreClear)
@@ -236,21 +239,12 @@ TEST_F(X11DrawContextTest, MaskKeepsTheWindowWhereItsBitsAreClear)
     TQ3DrawContextObject context = Q3XDrawContext_New(&data);
     ASSERT_NE(context, nullptr);
     render(context, width, height);
-    XSync(m_display, False);
-
-    Image pixmap(width, height);
-    pixmap.fill(0);
-    TQ3PixmapDrawContextData pixmapData{data.contextData, pixmap.pixmap()};
-    TQ3DrawContextObject pixmapContext = Q3PixmapDrawContext_New(&pixmapData);
-    render(pixmapContext, width, height);
-    const std::vector<std::uint32_t> shown = readWindow(window, width, height);
-    expectSamePicture(shown, rgbOf(pixmap));
+    const std::vector<std::uint32_t> shown = expectWindowMatchesPixmap(window, data.contextData, width, height, true);
     ASSERT_EQ(shown.size(), std::size_t(width) * height);
     EXPECT_EQ(shown[0], 0x339966u);              // masked in: the clear colour
     EXPECT_EQ(shown[width - 1], 0u);             // masked out: still black
     EXPECT_EQ(shown[(height - 1) * width + width / 2], 0u);
     Q3Object_Dispose(context);
-    Q3Object_Dispose(pixmapContext);
 }
 
 TEST_F(X11DrawContextTest, NextFrameFillsAResizedWindow)
@@ -268,19 +262,11 @@ TEST_F(X11DrawContextTest, NextFrameFillsAResizedWindow)
         XWindowEvent(m_display, window, StructureNotifyMask, &event);
     while (event.type != ConfigureNotify || event.xconfigure.width != int(width));
     render(context, width, height);
-    XSync(m_display, False);
-
-    Image pixmap(width, height);
-    TQ3PixmapDrawContextData pixmapData{contextData(), pixmap.pixmap()};
-    TQ3DrawContextObject pixmapContext = Q3PixmapDrawContext_New(&pixmapData);
-    render(pixmapContext, width, height);
-    const std::vector<std::uint32_t> shown = readWindow(window, width, height);
-    expectSamePicture(shown, rgbOf(pixmap));
+    const std::vector<std::uint32_t> shown = expectWindowMatchesPixmap(window, contextData(), width, height, false);
     // The clear colour reaches the far corner: the frame fills the window.
     ASSERT_FALSE(shown.empty());
     EXPECT_EQ(shown.back(), 0x339966u); // (0.2, 0.6, 0.4) * 255
     Q3Object_Dispose(context);
-    Q3Object_Dispose(pixmapContext);
 }
 
 TEST_F(X11DrawContextTest, PicksAndViewHintsUseTheWindowsSize)

@@ -39,6 +39,14 @@ std::array<float, 16> pixelOrtho(int width, int height)
             -1, 1, 0, 1};
 }
 
+// Starts a frame of width x height pixels, all of it the pane, drawn in
+// pixel coordinates.
+bool beginPixelFrame(OffscreenRenderer& renderer, int width, int height)
+{
+    return renderer.beginFrame(width, height, kClear, PixelRect{0, 0, width, height}) &&
+           renderer.setMatrix(pixelOrtho(width, height).data());
+}
+
 Pixel pixelAt(const OffscreenRenderer& renderer, int x, int y)
 {
     const std::uint8_t* p = renderer.pixels() + renderer.rowBytes() * std::size_t(y) + std::size_t(x) * 4;
@@ -117,8 +125,7 @@ void renderScene(OffscreenRenderer& renderer, int variant, std::uint32_t width =
 TEST(RenderOffscreen, DrawsHorizontalLineAtExpectedRow)
 {
     OffscreenRenderer renderer;
-    ASSERT_TRUE(renderer.beginFrame(24, 16, kClear, PixelRect{0, 0, 24, 16}));
-    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(24, 16).data()));
+    ASSERT_TRUE(beginPixelFrame(renderer, 24, 16));
     // From the centre of pixel (2, 5) to the centre of pixel (12, 5): the
     // diamond-exit rule lights the first pixel and not the last.
     const float line[] = {2.5f, 5.5f, 0.0f, 12.5f, 5.5f, 0.0f};
@@ -133,8 +140,7 @@ TEST(RenderOffscreen, DrawsHorizontalLineAtExpectedRow)
 TEST(RenderOffscreen, DrawsVerticalLineAtExpectedColumnTopDown)
 {
     OffscreenRenderer renderer;
-    ASSERT_TRUE(renderer.beginFrame(16, 20, kClear, PixelRect{0, 0, 16, 20}));
-    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(16, 20).data()));
+    ASSERT_TRUE(beginPixelFrame(renderer, 16, 20));
     // Down the image from the centre of pixel (7, 1) to that of (7, 9). The
     // diamond-exit rule would light rows 1..8; llvmpipe leaves out the first
     // row of this y-major line, which OpenGL allows (the fragment count may
@@ -228,8 +234,7 @@ TEST(RenderOffscreen, PaneReachingOutsideImageKeepsItsMapping)
 TEST(RenderOffscreen, FillsTrianglesAndPointsOnExactPixels)
 {
     OffscreenRenderer renderer;
-    ASSERT_TRUE(renderer.beginFrame(32, 24, kClear, PixelRect{0, 0, 32, 24}));
-    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(32, 24).data()));
+    ASSERT_TRUE(beginPixelFrame(renderer, 32, 24));
     // Two triangles covering [2, 6) x [3, 8) with edges on pixel boundaries.
     const float quad[] = {2, 3, 0, 6, 3, 0, 6, 8, 0, 2, 3, 0, 6, 8, 0, 2, 8, 0};
     ASSERT_TRUE(renderer.drawTriangles(quad, 6, kWhite));
@@ -252,8 +257,7 @@ TEST(RenderOffscreen, FillsTrianglesAndPointsOnExactPixels)
 TEST(RenderOffscreen, LaterPrimitivesPaintOverEarlierOnes)
 {
     OffscreenRenderer renderer;
-    ASSERT_TRUE(renderer.beginFrame(16, 16, kClear, PixelRect{0, 0, 16, 16}));
-    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(16, 16).data()));
+    ASSERT_TRUE(beginPixelFrame(renderer, 16, 16));
     const float line[] = {1.5f, 4.5f, 0.0f, 9.5f, 4.5f, 0.0f};
     const float quad[] = {0, 0, 0, 16, 0, 0, 16, 16, 0, 0, 0, 0, 16, 16, 0, 0, 16, 0};
     ASSERT_TRUE(renderer.drawLineStrip(line, 2, kWhite));
@@ -270,8 +274,7 @@ TEST(RenderOffscreen, LaterPrimitivesPaintOverEarlierOnes)
 TEST(RenderOffscreen, SingleColouredAndPerVertexColouredDrawsKeepTheirColours)
 {
     OffscreenRenderer renderer;
-    ASSERT_TRUE(renderer.beginFrame(16, 16, kClear, PixelRect{0, 0, 16, 16}));
-    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(16, 16).data()));
+    ASSERT_TRUE(beginPixelFrame(renderer, 16, 16));
     const float row1[] = {1.5f, 1.5f, 0.0f, 9.5f, 1.5f, 0.0f};
     const float row3[] = {1.5f, 3.5f, 0.0f, 9.5f, 3.5f, 0.0f};
     const float row5[] = {1.5f, 5.5f, 0.0f, 9.5f, 5.5f, 0.0f};
@@ -505,8 +508,7 @@ TEST(RenderOffscreen, BadDrawArgumentsAreRejectedAndDrawNothing)
 TEST(RenderOffscreen, DrawBitmapPlacesEachSetBitOnOnePixel)
 {
     OffscreenRenderer renderer;
-    ASSERT_TRUE(renderer.beginFrame(24, 16, kClear, PixelRect{0, 0, 24, 16}));
-    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(24, 16).data()));
+    ASSERT_TRUE(beginPixelFrame(renderer, 24, 16));
     const unsigned char bits[] = {0xA0, 0x00, 0x40, 0x01}; // 9 x 2, two bytes a row
     BitmapImage image;
     image.bits = bits;
@@ -542,8 +544,7 @@ TEST(RenderOffscreen, DrawBitmapChecksItsArgumentsAndSkipsAnchorsOutsideTheDepth
     image.height = 1;
     const float anchor[] = {4.5f, 4.5f, 0.0f};
     EXPECT_EQ(renderer.drawBitmap(anchor, image, kWhite).status, RenderStatus::kWrongState);
-    ASSERT_TRUE(renderer.beginFrame(16, 16, kClear, PixelRect{0, 0, 16, 16}));
-    ASSERT_TRUE(renderer.setMatrix(pixelOrtho(16, 16).data()));
+    ASSERT_TRUE(beginPixelFrame(renderer, 16, 16));
     EXPECT_EQ(renderer.drawBitmap(nullptr, image, kWhite).status, RenderStatus::kInvalidArgument);
     image.width = 9;
     EXPECT_EQ(renderer.drawBitmap(anchor, image, kWhite).status, RenderStatus::kInvalidArgument);

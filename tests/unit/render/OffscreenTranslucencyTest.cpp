@@ -123,14 +123,21 @@ TEST(OffscreenTranslucency, BadOpacityIsRefused)
     expectColumns(renderer, 0, kSize, 0, 0, 0, "nothing drawn");
 }
 
+// Starts a depth-tested frame over the whole kSize x kSize image, drawn in
+// pixel coordinates.
+bool beginDepthTestedFrame(OffscreenRenderer& renderer)
+{
+    FrameOptions options;
+    options.depthTest = true;
+    const std::array<float, 16> m = pixelOrtho();
+    return renderer.beginFrame(kSize, kSize, kClear, PixelRect{0, 0, kSize, kSize}, options) &&
+           renderer.setMatrix(m.data());
+}
+
 TEST(OffscreenTranslucency, TranslucentTrianglesWaitForTheEndOfTheFrameAcrossAFlush)
 {
     OffscreenRenderer renderer;
-    FrameOptions options;
-    options.depthTest = true;
-    ASSERT_TRUE(renderer.beginFrame(kSize, kSize, kClear, PixelRect{0, 0, kSize, kSize}, options));
-    const std::array<float, 16> m = pixelOrtho();
-    ASSERT_TRUE(renderer.setMatrix(m.data()));
+    ASSERT_TRUE(beginDepthTestedFrame(renderer));
     // Nearer (z -0.5) and translucent, submitted first; setLighting flushes
     // the batch before the opaque one behind it (z 0.5) comes.
     ASSERT_TRUE(renderer.setOpacity(OpacitySetup{nullptr, 0, RgbColor{0.25f, 0.25f, 0.25f}}));
@@ -148,11 +155,7 @@ TEST(OffscreenTranslucency, TranslucentTrianglesWaitForTheEndOfTheFrameAcrossAFl
 TEST(OffscreenTranslucency, OneDrawSplitsIntoOpaqueAndTranslucentTriangles)
 {
     OffscreenRenderer renderer;
-    FrameOptions options;
-    options.depthTest = true;
-    ASSERT_TRUE(renderer.beginFrame(kSize, kSize, kClear, PixelRect{0, 0, kSize, kSize}, options));
-    const std::array<float, 16> m = pixelOrtho();
-    ASSERT_TRUE(renderer.setMatrix(m.data()));
+    ASSERT_TRUE(beginDepthTestedFrame(renderer));
     const std::vector<float> back = quad(0, kSize, 0.5f);
     ASSERT_TRUE(renderer.drawTriangles(back.data(), 6, kBehind));
     // The left half's two triangles opaque, the right half's at 0.5.

@@ -23,14 +23,22 @@ std::string name(PixelType type, ByteOrder order)
     return "type " + std::to_string(std::uint32_t(type)) + (order == ByteOrder::kBig ? " big" : " little");
 }
 
-std::vector<std::uint8_t> bytesOfPixel(PixelType type, ByteOrder order, Rgba8 color)
+// A pixmap layout of `type` and `order`, width x height, each row padded
+// by `pad` bytes.
+PixmapLayout layoutOf(PixelType type, ByteOrder order, std::uint32_t width, std::uint32_t height, std::uint32_t pad)
 {
     PixmapLayout layout;
-    layout.width = 1;
-    layout.height = 1;
-    layout.rowBytes = bytesPerPixel(type);
+    layout.width = width;
+    layout.height = height;
+    layout.rowBytes = width * bytesPerPixel(type) + pad;
     layout.pixelType = type;
     layout.byteOrder = order;
+    return layout;
+}
+
+std::vector<std::uint8_t> bytesOfPixel(PixelType type, ByteOrder order, Rgba8 color)
+{
+    const PixmapLayout layout = layoutOf(type, order, 1, 1, 0);
     const std::uint8_t rgba[4] = {color.r, color.g, color.b, color.a};
     std::vector<std::uint8_t> bytes(layout.rowBytes, 0);
     EXPECT_TRUE(writeRgba8ToPixmap(Rgba8ImageView{rgba, 1, 1, 4}, PixelRect{0, 0, 1, 1}, bytes.data(), layout, 0, 0));
@@ -129,12 +137,7 @@ TEST(RenderPixelConvert, EveryTypeAndByteOrderRoundTrips)
     for (PixelType type : kAllTypes) {
         for (ByteOrder order : kAllOrders) {
             SCOPED_TRACE(name(type, order));
-            PixmapLayout layout;
-            layout.width = width;
-            layout.height = height;
-            layout.rowBytes = width * bytesPerPixel(type) + 5; // padded rows
-            layout.pixelType = type;
-            layout.byteOrder = order;
+            const PixmapLayout layout = layoutOf(type, order, width, height, 5); // padded rows
             std::vector<std::uint8_t> pixmap(std::size_t(layout.rowBytes) * height, 0);
             ASSERT_TRUE(writeRgba8ToPixmap(view, PixelRect{0, 0, int(width), int(height)}, pixmap.data(), layout,
                                            0, 0));
@@ -171,12 +174,7 @@ TEST(RenderPixelConvert, WritesOnlyTheDestinationRectangle)
     for (PixelType type : kAllTypes) {
         for (ByteOrder order : kAllOrders) {
             SCOPED_TRACE(name(type, order));
-            PixmapLayout layout;
-            layout.width = 16;
-            layout.height = 12;
-            layout.rowBytes = 16 * bytesPerPixel(type) + 3;
-            layout.pixelType = type;
-            layout.byteOrder = order;
+            const PixmapLayout layout = layoutOf(type, order, 16, 12, 3);
             const std::uint32_t bpp = bytesPerPixel(type);
             std::vector<std::uint8_t> pixmap(std::size_t(layout.rowBytes) * layout.height, 0xAB);
             const PixelRect from{4, 2, 6, 5};
@@ -279,12 +277,7 @@ TEST(RenderPixelConvert, RenderedPaneLandsInEveryPixmapFormat)
     for (PixelType type : kAllTypes) {
         for (ByteOrder order : kAllOrders) {
             SCOPED_TRACE(name(type, order));
-            PixmapLayout layout;
-            layout.width = 20;
-            layout.height = 14;
-            layout.rowBytes = 20 * bytesPerPixel(type) + 2;
-            layout.pixelType = type;
-            layout.byteOrder = order;
+            const PixmapLayout layout = layoutOf(type, order, 20, 14, 2);
             std::vector<std::uint8_t> pixmap(std::size_t(layout.rowBytes) * layout.height, 0);
             ASSERT_TRUE(writeRgba8ToPixmap(image, pane, pixmap.data(), layout, pane.x, pane.y));
             const Rgba8 yellow = readPixmapPixel(pixmap.data(), layout, 3 + 4, 2 + 4);

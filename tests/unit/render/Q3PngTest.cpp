@@ -119,46 +119,44 @@ TEST(PngFile, RewritingIdenticalPixelsIsByteIdentical)
     EXPECT_EQ(text.find("gAMA"), std::string::npos);
 }
 
+// Writes a PNG of one row, `width` pixels of `bitDepth` and `colorType`,
+// directly with libpng; `chunks` adds what the type needs before the row.
+template <class Chunks>
+bool writeOneRowPng(const char* path, png_uint_32 width, int bitDepth, int colorType, unsigned char* row, Chunks chunks)
+{
+    FILE* out = std::fopen(path, "wb");
+    if (out == nullptr)
+        return false;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    png_init_io(png, out);
+    png_set_IHDR(png, info, width, 1, bitDepth, colorType, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                 PNG_FILTER_TYPE_DEFAULT);
+    chunks(png, info);
+    png_write_info(png, info);
+    png_write_row(png, row);
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    std::fclose(out);
+    return true;
+}
+
 TEST(PngFile, ReadsGrayAndPalettePngsAsRgba)
 {
     ScopedFile gray(tempPath("gray.png"));
     ScopedFile palette(tempPath("palette.png"));
-    {
-        // 16-bit gray written directly with libpng: read keeps the high byte.
-        FILE* out = std::fopen(gray.c_str(), "wb");
-        ASSERT_NE(out, nullptr);
-        png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-        png_infop info = png_create_info_struct(png);
-        png_init_io(png, out);
-        png_set_IHDR(png, info, 2, 1, 16, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                     PNG_FILTER_TYPE_DEFAULT);
-        png_write_info(png, info);
-        unsigned char row[4] = {0x12, 0x34, 0xFE, 0xDC};
-        png_write_row(png, row);
-        png_write_end(png, nullptr);
-        png_destroy_write_struct(&png, &info);
-        std::fclose(out);
-    }
-    {
-        // 2-bit palette with a transparent entry.
-        FILE* out = std::fopen(palette.c_str(), "wb");
-        ASSERT_NE(out, nullptr);
-        png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-        png_infop info = png_create_info_struct(png);
-        png_init_io(png, out);
-        png_set_IHDR(png, info, 3, 1, 2, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                     PNG_FILTER_TYPE_DEFAULT);
-        png_color colors[3] = {{10, 20, 30}, {40, 50, 60}, {70, 80, 90}};
-        png_set_PLTE(png, info, colors, 3);
-        png_byte alpha[2] = {255, 0};
-        png_set_tRNS(png, info, alpha, 2, nullptr);
-        png_write_info(png, info);
-        unsigned char row[1] = {static_cast<unsigned char>((2 << 6) | (1 << 4) | (0 << 2))};
-        png_write_row(png, row);
-        png_write_end(png, nullptr);
-        png_destroy_write_struct(&png, &info);
-        std::fclose(out);
-    }
+    // 16-bit gray written directly with libpng: read keeps the high byte.
+    unsigned char grayRow[4] = {0x12, 0x34, 0xFE, 0xDC};
+    ASSERT_TRUE(writeOneRowPng(gray.c_str(), 2, 16, PNG_COLOR_TYPE_GRAY, grayRow, [](png_structp, png_infop) {}));
+    // 2-bit palette with a transparent entry.
+    unsigned char paletteRow[1] = {static_cast<unsigned char>((2 << 6) | (1 << 4) | (0 << 2))};
+    ASSERT_TRUE(writeOneRowPng(palette.c_str(), 3, 2, PNG_COLOR_TYPE_PALETTE, paletteRow,
+                               [](png_structp png, png_infop info) {
+                                   png_color colors[3] = {{10, 20, 30}, {40, 50, 60}, {70, 80, 90}};
+                                   png_set_PLTE(png, info, colors, 3);
+                                   png_byte alpha[2] = {255, 0};
+                                   png_set_tRNS(png, info, alpha, 2, nullptr);
+                               }));
 
     unsigned char* read = nullptr;
     int width = 0;

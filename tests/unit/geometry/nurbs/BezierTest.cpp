@@ -108,10 +108,7 @@ TEST(NurbsBezier, FormAgreesWithDeBoorForEveryOrder)
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int trial = 0; trial < 450; ++trial) {
         const unsigned k = 2 + trial % 15;
-        test::RandomCurveOptions options;
-        options.clamped = trial % 2 == 0;
-        options.repeatProbability = trial % 3 == 0 ? 0.5 : 0.1;
-        const TestCurve curve = test::randomCurve(rng, k, options);
+        const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, trial % 3 == 0 ? 0.5 : 0.1, 12});
         const CurveRef ref = curve.ref();
         const double tolerance = 1e-12 * test::curveScale(curve);
         const BezierForm form(ref);
@@ -221,10 +218,7 @@ TEST(NurbsBezier, Avx2KernelsGiveTheBaselineBitsForEveryOrder)
     std::mt19937 rng(2024);
     for (int trial = 0; trial < 120; ++trial) {
         const unsigned k = 2 + trial % 15;
-        test::RandomCurveOptions options;
-        options.clamped = trial % 2 == 0;
-        options.repeatProbability = trial % 3 == 0 ? 0.5 : 0.1;
-        const TestCurve curve = test::randomCurve(rng, k, options);
+        const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, trial % 3 == 0 ? 0.5 : 0.1, 12});
         ASSERT_TRUE(forceKernelIsa(KernelIsa::kBaseline));
         const KernelOutput baseline = runKernels(curve.ref());
         TessellationOptions thirteen;

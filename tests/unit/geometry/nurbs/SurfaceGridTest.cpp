@@ -225,6 +225,17 @@ TEST(SurfaceHull, APieceCalledOutsideHasEveryPointOutsideOnePlaneAndOneCalledIns
                 std::swap(u0, u1);
             if (v1 < v0)
                 std::swap(v0, v1);
+            // The five clip-plane values (inside where >= 0) of the surface
+            // point at sample (i, j) of a 6 x 6 grid over the rectangle.
+            const auto planeValues = [&](int i, int j) {
+                double point[3];
+                referencePoint(p, u0 + (u1 - u0) * i / 5.0, v0 + (v1 - v0) * j / 5.0, point);
+                double f[4];
+                for (int k = 0; k < 4; ++k)
+                    f[k] = clip[4 * k] * point[0] + clip[4 * k + 1] * point[1] + clip[4 * k + 2] * point[2] +
+                           clip[4 * k + 3];
+                return std::array<double, 5>{f[3] + f[0], f[3] - f[0], f[3] + f[1], f[3] - f[1], -f[2]};
+            };
             ++total;
             if (hull.inside(u0, u1, v0, v1)) {
                 // Every point of the piece inside every plane, and so no
@@ -232,17 +243,9 @@ TEST(SurfaceHull, APieceCalledOutsideHasEveryPointOutsideOnePlaneAndOneCalledIns
                 ++insideCount;
                 EXPECT_FALSE(hull.outside(u0, u1, v0, v1)) << "trial " << trial << " rectangle " << r;
                 for (int i = 0; i <= 5; ++i)
-                    for (int j = 0; j <= 5; ++j) {
-                        double point[3];
-                        referencePoint(p, u0 + (u1 - u0) * i / 5.0, v0 + (v1 - v0) * j / 5.0, point);
-                        double f[4];
-                        for (int k = 0; k < 4; ++k)
-                            f[k] = clip[4 * k] * point[0] + clip[4 * k + 1] * point[1] +
-                                   clip[4 * k + 2] * point[2] + clip[4 * k + 3];
-                        const double values[5] = {f[3] + f[0], f[3] - f[0], f[3] + f[1], f[3] - f[1], -f[2]};
-                        for (double value : values)
+                    for (int j = 0; j <= 5; ++j)
+                        for (double value : planeValues(i, j))
                             EXPECT_GE(value, -1e-9) << "trial " << trial << " rectangle " << r;
-                    }
             }
             if (!hull.outside(u0, u1, v0, v1))
                 continue;
@@ -250,13 +253,7 @@ TEST(SurfaceHull, APieceCalledOutsideHasEveryPointOutsideOnePlaneAndOneCalledIns
             unsigned common = 31u;
             for (int i = 0; i <= 5; ++i)
                 for (int j = 0; j <= 5; ++j) {
-                    double point[3];
-                    referencePoint(p, u0 + (u1 - u0) * i / 5.0, v0 + (v1 - v0) * j / 5.0, point);
-                    double f[4];
-                    for (int k = 0; k < 4; ++k)
-                        f[k] = clip[4 * k] * point[0] + clip[4 * k + 1] * point[1] + clip[4 * k + 2] * point[2] +
-                               clip[4 * k + 3];
-                    const double values[5] = {f[3] + f[0], f[3] - f[0], f[3] + f[1], f[3] - f[1], -f[2]};
+                    const std::array<double, 5> values = planeValues(i, j);
                     for (unsigned plane = 0; plane < 5; ++plane)
                         if (!(values[plane] < 0.0))
                             common &= ~(1u << plane);

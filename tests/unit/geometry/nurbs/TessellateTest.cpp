@@ -220,10 +220,7 @@ TEST(NurbsTessellate, ConstantGivesMSegmentsPerSpanOnRandomCurves)
     std::mt19937 rng(1);
     for (int trial = 0; trial < 300; ++trial) {
         const unsigned k = 2 + trial % 15;
-        test::RandomCurveOptions options;
-        options.clamped = trial % 2 == 0;
-        options.repeatProbability = trial % 4 == 0 ? 0.5 : 0.0;
-        const TestCurve curve = test::randomCurve(rng, k, options);
+        const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, trial % 4 == 0 ? 0.5 : 0.0, 12});
         const std::uint32_t m = 1 + std::uint32_t(trial % 9);
         const TessellatedCurve result = constantOf(curve.ref(), m);
         const std::vector<Span> spans = nonEmptySpans(curve.ref());
@@ -382,10 +379,7 @@ TEST(NurbsTessellate, WorldSpaceChordsAreShortAndFewOnRandomCurves)
     double worstRatio = 0.0;
     for (int trial = 0; trial < 300; ++trial) {
         const unsigned k = 2 + trial % 15;
-        test::RandomCurveOptions options;
-        options.clamped = trial % 2 == 0;
-        options.repeatProbability = trial % 3 == 0 ? 0.5 : 0.0;
-        const TestCurve curve = test::randomCurve(rng, k, options);
+        const TestCurve curve = test::randomCurve(rng, k, {trial % 2 == 0, trial % 3 == 0 ? 0.5 : 0.0, 12});
         const AffineMap affine = randomAffine(rng);
         const PointMapping mapping = affine;
         const double length = mappedLength(curve, mapping, 400);
