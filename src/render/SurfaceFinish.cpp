@@ -44,7 +44,9 @@ varying vec4 q3VertexOpacity;
 varying float q3FogDepth;
 varying float q3FogW;
 out vec4 q3FragColor;
+#ifndef OPAQUE
 out vec4 q3FragOpacity;
+#endif
 
 vec4 q3FinishFragment(vec4 color, float texelAlpha)
 {
@@ -53,7 +55,9 @@ vec4 q3FinishFragment(vec4 color, float texelAlpha)
 #else
     vec4 opacity = q3VertexOpacity * texelAlpha;
 #endif
-    q3FragOpacity = opacity;
+#ifndef OPAQUE
+    q3FragOpacity = opacity; // the blend's second source (opaque draws do not blend)
+#endif
     float a = opacity.a;
     color.a = a;
 #ifdef FOG
