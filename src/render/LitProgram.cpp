@@ -138,34 +138,9 @@ bool lightAt(int i, vec3 p, out vec3 l, out float f)
     return true;
 }
 
-vec3 shade(vec3 p, vec3 n, vec3 od)
-{
-    vec3 result = ambientCoefficient * ambientLight * od;
-    vec3 toEye = orthographic == 1 ? -viewDirection : normalize(eye - p);
-    for (int i = 0; i < MAX_LIGHTS; ++i) {
-        if (i >= lightCount)
-            break;
-        vec3 l;
-        float f;
-        if (!lightAt(i, p, l, f))
-            continue;
-        float nl = dot(n, l);
-        if (nl <= 0.0)
-            continue;
-        result += f * nl * lightColor[i] * od;
-        if (illumination == 2) {
-            vec3 r = 2.0 * nl * n - l;
-            float rv = dot(r, toEye);
-            if (rv > 0.0)
-                result += f * lightColor[i] * specularColor * pow(rv, specularControl);
-        }
-    }
-    return result;
-}
-
-// shade(p, n, od) in `lit` and shade(p, n, vec3(0.0)), the specular light
-// alone, in `specular`, in one pass over the lights: the same operations
-// on the same values as two calls, the lights' vectors found once.
+// The light at p with normal n and diffuse colour od (the equations above)
+// in `lit`, and the specular light alone (the same with od = 0) in
+// `specular`, in one pass over the lights, the lights' vectors found once.
 void shadeTwo(vec3 p, vec3 n, vec3 od, out vec3 lit, out vec3 specular)
 {
     lit = ambientCoefficient * ambientLight * od;
@@ -192,6 +167,16 @@ void shadeTwo(vec3 p, vec3 n, vec3 od, out vec3 lit, out vec3 specular)
             }
         }
     }
+}
+
+// The light at p alone (shadeTwo's `lit`; the compiler drops the specular
+// sum nothing reads).
+vec3 shade(vec3 p, vec3 n, vec3 od)
+{
+    vec3 lit;
+    vec3 specular;
+    shadeTwo(p, n, od, lit, specular);
+    return lit;
 }
 )";
 
@@ -300,55 +285,17 @@ void main()
 }
 )";
 
-GLuint compile(GLenum kind, const char* body, int variant, std::string& error)
-{
-    const GLuint shader = glCreateShader(kind);
-    const char* finish = kind == GL_VERTEX_SHADER ? kFinishVertexGlsl : kFinishFragmentGlsl;
-    const std::string header = switches(variant);
-    const char* sources[5] = {kVersion, header.c_str(), kShade, finish, body};
-    glShaderSource(shader, 5, sources, nullptr);
-    glCompileShader(shader);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        char log[2048] = {0};
-        glGetShaderInfoLog(shader, sizeof log - 1, nullptr, log);
-        error = std::string("compiling the lighting shader failed: ") + log;
-        glDeleteShader(shader);
-        return 0;
-    }
-    return shader;
-}
-
 } // namespace
 
 bool LitProgram::build(std::string& error, int variant)
 {
     const bool textured = (variant & 1) != 0;
-    const GLuint vertex = compile(GL_VERTEX_SHADER, kVertex, variant, error);
-    if (vertex == 0)
+    const std::string header = switches(variant);
+    const char* const vertex[5] = {kVersion, header.c_str(), kShade, kFinishVertexGlsl, kVertex};
+    const char* const fragment[5] = {kVersion, header.c_str(), kShade, kFinishFragmentGlsl, kFragment};
+    m_program = buildFinishProgram(vertex, fragment, 5, "lighting", error);
+    if (m_program == 0)
         return false;
-    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragment, variant, error);
-    if (fragment == 0) {
-        glDeleteShader(vertex);
-        return false;
-    }
-    m_program = glCreateProgram();
-    glAttachShader(m_program, vertex);
-    glAttachShader(m_program, fragment);
-    bindFinishAttributes(m_program);
-    glLinkProgram(m_program);
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(m_program, GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        char log[2048] = {0};
-        glGetProgramInfoLog(m_program, sizeof log - 1, nullptr, log);
-        error = std::string("linking the lighting shader failed: ") + log;
-        release();
-        return false;
-    }
     const auto at = [this](const char* name) { return glGetUniformLocation(m_program, name); };
     m_lightCount = at("lightCount");
     m_lightKind = at("lightKind");

@@ -449,6 +449,11 @@ private:
     // The variant a shading is drawn with, built if it is not yet (null,
     // with `result` set, when the driver refuses it).
     LitProgram* litProgram(int variant, RenderResult& result);
+    // Makes variant `variant` current for `shading`: built if need be, its
+    // two-sidedness set, the frame's lights loaded the first time this flush
+    // uses it (lightsLoaded, one flag per variant). Null, with `result` set,
+    // when the driver refuses the program.
+    LitProgram* useLitProgram(int variant, const SurfaceShading& shading, bool* lightsLoaded, RenderResult& result);
     // Two-sided colours for a lit variant that writes them (on between uses:
     // the unlit programs write both).
     static void setTwoSided(int variant)
@@ -1120,6 +1125,22 @@ void OffscreenRenderer::Impl::startFrameInGl()
     }
 }
 
+LitProgram* OffscreenRenderer::Impl::useLitProgram(int variant, const SurfaceShading& shading, bool* lightsLoaded,
+                                                   RenderResult& result)
+{
+    LitProgram* program = litProgram(variant, result);
+    if (program == nullptr)
+        return nullptr;
+    program->use();
+    setTwoSided(variant);
+    if (!lightsLoaded[variant]) {
+        program->setLighting(m_lighting);
+        lightsLoaded[variant] = true;
+    }
+    program->setShading(shading);
+    return program;
+}
+
 LitProgram* OffscreenRenderer::Impl::litProgram(int variant, RenderResult& result)
 {
     LitProgram& program = m_litPrograms[variant];
@@ -1298,16 +1319,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     if (head.shading == kUnlit) {
                         glUseProgram(0);
                     } else {
-                        LitProgram* program = litProgram(variant, result);
-                        if (program == nullptr)
+                        if (useLitProgram(variant, m_shadings[head.shading], lightsLoaded, result) == nullptr)
                             break;
-                        program->use();
-                        setTwoSided(variant);
-                        if (!lightsLoaded[variant]) {
-                            program->setLighting(m_lighting);
-                            lightsLoaded[variant] = true;
-                        }
-                        program->setShading(m_shadings[head.shading]);
                     }
                     loadedVariant = variant;
                     loadedSurface = head.shading;
@@ -2312,16 +2325,9 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
         } else {
             const SurfaceShading& shading = m_translucentShadings[state.shading];
             const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog, m_lighting, false);
-            LitProgram* program = litProgram(variant, result);
+            LitProgram* program = useLitProgram(variant, shading, lightsLoaded, result);
             if (program == nullptr)
                 break;
-            program->use();
-            setTwoSided(variant);
-            if (!lightsLoaded[variant]) {
-                program->setLighting(m_lighting);
-                lightsLoaded[variant] = true;
-            }
-            program->setShading(shading);
             program->finish().setFog(fogOf(state.fog));
         }
         glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - i)), GL_UNSIGNED_INT, bufferOffset(sizeof(GLuint) * 3 * i));

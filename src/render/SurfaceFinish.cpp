@@ -120,21 +120,17 @@ void main()
 }
 )";
 
-GLuint compileUnlit(GLenum kind, bool textured, std::string& error)
+GLuint compileShader(GLenum kind, const char* const* sources, int count, const char* what, std::string& error)
 {
     const GLuint shader = glCreateShader(kind);
-    const bool vertex = kind == GL_VERTEX_SHADER;
-    const char* sources[5] = {kVersion, kUnlitSwitches[textured ? 1 : 0], kUnlitDeclarations,
-                              vertex ? kFinishVertexGlsl : kFinishFragmentGlsl,
-                              vertex ? kUnlitVertex : kUnlitFragment};
-    glShaderSource(shader, 5, sources, nullptr);
+    glShaderSource(shader, count, sources, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (ok != GL_TRUE) {
         char log[2048] = {0};
         glGetShaderInfoLog(shader, sizeof log - 1, nullptr, log);
-        error = std::string("compiling the unlit shader failed: ") + log;
+        error = std::string("compiling the ") + what + " shader failed: " + log;
         glDeleteShader(shader);
         return 0;
     }
@@ -143,11 +139,36 @@ GLuint compileUnlit(GLenum kind, bool textured, std::string& error)
 
 } // namespace
 
-void bindFinishAttributes(GLuint program)
+GLuint buildFinishProgram(const char* const* vertexSources, const char* const* fragmentSources, int count,
+                          const char* what, std::string& error)
 {
+    const GLuint vertex = compileShader(GL_VERTEX_SHADER, vertexSources, count, what, error);
+    if (vertex == 0)
+        return 0;
+    const GLuint fragment = compileShader(GL_FRAGMENT_SHADER, fragmentSources, count, what, error);
+    if (fragment == 0) {
+        glDeleteShader(vertex);
+        return 0;
+    }
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, vertex);
+    glAttachShader(program, fragment);
     glBindAttribLocation(program, kOpacityAttribute, "q3Opacity");
     glBindFragDataLocationIndexed(program, 0, 0, "q3FragColor");
     glBindFragDataLocationIndexed(program, 0, 1, "q3FragOpacity");
+    glLinkProgram(program);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        char log[2048] = {0};
+        glGetProgramInfoLog(program, sizeof log - 1, nullptr, log);
+        error = std::string("linking the ") + what + " shader failed: " + log;
+        glDeleteProgram(program);
+        return 0;
+    }
+    return program;
 }
 
 void setDefaultOpacity()
@@ -198,30 +219,12 @@ void FinishUniforms::setFog(const FogSetup& fog) const
 
 bool UnlitProgram::build(std::string& error, bool textured)
 {
-    const GLuint vertex = compileUnlit(GL_VERTEX_SHADER, textured, error);
-    if (vertex == 0)
+    const char* const switches = kUnlitSwitches[textured ? 1 : 0];
+    const char* const vertex[5] = {kVersion, switches, kUnlitDeclarations, kFinishVertexGlsl, kUnlitVertex};
+    const char* const fragment[5] = {kVersion, switches, kUnlitDeclarations, kFinishFragmentGlsl, kUnlitFragment};
+    m_program = buildFinishProgram(vertex, fragment, 5, "unlit", error);
+    if (m_program == 0)
         return false;
-    const GLuint fragment = compileUnlit(GL_FRAGMENT_SHADER, textured, error);
-    if (fragment == 0) {
-        glDeleteShader(vertex);
-        return false;
-    }
-    m_program = glCreateProgram();
-    glAttachShader(m_program, vertex);
-    glAttachShader(m_program, fragment);
-    bindFinishAttributes(m_program);
-    glLinkProgram(m_program);
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(m_program, GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        char log[2048] = {0};
-        glGetProgramInfoLog(m_program, sizeof log - 1, nullptr, log);
-        error = std::string("linking the unlit shader failed: ") + log;
-        release();
-        return false;
-    }
     m_finish.locate(m_program);
     if (textured) {
         glUseProgram(m_program);

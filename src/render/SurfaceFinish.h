@@ -46,9 +46,14 @@ extern const char* const kFinishVertexGlsl;
 /// the code out: llvmpipe runs a branch on a uniform in every fragment).
 extern const char* const kFinishFragmentGlsl;
 
-/// Binds q3Opacity to kOpacityAttribute and the two fragment outputs to
-/// colour 0, indices 0 and 1; call before linking.
-void bindFinishAttributes(GLuint program);
+/// Compiles a vertex and a fragment shader, each from `count` source
+/// strings (the blocks above among them), and links them into a program
+/// with q3Opacity bound to kOpacityAttribute and the two fragment outputs to
+/// colour 0, indices 0 and 1. 0, with `error` naming the step that failed
+/// for the `what` shader and the driver's log, if one fails (nothing is
+/// left behind).
+GLuint buildFinishProgram(const char* const* vertexSources, const char* const* fragmentSources, int count,
+                          const char* what, std::string& error);
 
 /// Makes vertices without an opacity array opaque (the current value of
 /// kOpacityAttribute, which OpenGL starts at 0).
