@@ -188,21 +188,23 @@ void main()
     worldPosition = w.xyz / w.w;
     worldNormal = normalToWorld * gl_Normal;
 #ifdef TEXTURED
-    // The texel takes the place of the diffuse colour: the ambient and
-    // diffuse light (with Od = gl_Color) goes in the primary colour, to be
-    // multiplied by the texel; the specular light (shade with Od = 0) in the
-    // secondary colour, added after.
 #ifdef PLAIN_VARYINGS
     q3St = gl_MultiTexCoord0.st;
 #else
     gl_TexCoord[0] = gl_MultiTexCoord0;
 #endif
+#endif
 #ifdef PER_PIXEL
+    // Lit in the fragment stage from the interpolated diffuse colour.
     gl_FrontColor = gl_Color;
 #ifndef ONE_SIDED
     gl_BackColor = gl_Color;
 #endif
-#else
+#elif defined(TEXTURED)
+    // The texel takes the place of the diffuse colour: the ambient and
+    // diffuse light (with Od = gl_Color) goes in the primary colour, to be
+    // multiplied by the texel; the specular light (shade with Od = 0) in the
+    // secondary colour, added after.
     vec3 n = normalize(worldNormal);
     vec3 lit;
     vec3 specular;
@@ -226,13 +228,6 @@ void main()
         gl_BackSecondaryColor = gl_FrontSecondaryColor;
     }
 #endif
-#endif
-#else
-#ifdef PER_PIXEL
-    gl_FrontColor = gl_Color;
-#ifndef ONE_SIDED
-    gl_BackColor = gl_Color;
-#endif
 #else
     vec3 n = normalize(worldNormal);
 #ifdef PLAIN_VARYINGS
@@ -242,7 +237,6 @@ void main()
 #endif
 #ifndef ONE_SIDED
     gl_BackColor = flipBack == 1 ? vec4(shade(worldPosition, -n, gl_Color.rgb), 1.0) : gl_FrontColor;
-#endif
 #endif
 #endif
     q3FinishVertex();
@@ -255,33 +249,29 @@ void main()
 #ifdef TEXTURED
     vec4 texelColor = texture2D(surfaceTexture, Q3_ST);
     vec3 texel = texelColor.rgb;
-#ifdef PER_PIXEL
-    vec3 n = normalize(worldNormal);
-    if (flipBack == 1 && !gl_FrontFacing)
-        n = -n;
-    q3FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
-#elif defined(PLAIN_VARYINGS)
-    q3FragColor = vec4(q3Lit * texel + q3Specular, 1.0);
+    float texelAlpha = texelColor.a;
 #else
-    q3FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
+    float texelAlpha = 1.0;
 #endif
-#else
 #ifdef PER_PIXEL
     vec3 n = normalize(worldNormal);
     if (flipBack == 1 && !gl_FrontFacing)
         n = -n;
+#ifdef TEXTURED
+    q3FragColor = vec4(shade(worldPosition, n, gl_Color.rgb * texel), 1.0);
+#else
     q3FragColor = vec4(shade(worldPosition, n, gl_Color.rgb), 1.0);
+#endif
+#elif defined(TEXTURED) && defined(PLAIN_VARYINGS)
+    q3FragColor = vec4(q3Lit * texel + q3Specular, 1.0);
+#elif defined(TEXTURED)
+    q3FragColor = vec4(gl_Color.rgb * texel + gl_SecondaryColor.rgb, 1.0);
 #elif defined(PLAIN_VARYINGS)
     q3FragColor = vec4(q3Lit, 1.0);
 #else
     q3FragColor = gl_Color;
 #endif
-#endif
-#ifdef TEXTURED
-    q3FragColor = q3FinishFragment(q3FragColor, texelColor.a);
-#else
-    q3FragColor = q3FinishFragment(q3FragColor, 1.0);
-#endif
+    q3FragColor = q3FinishFragment(q3FragColor, texelAlpha);
 }
 )";
 
