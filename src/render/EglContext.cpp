@@ -117,12 +117,7 @@ const EglLibrary& egl()
             l.error = "libEGL.so.1 does not resolve eglQueryDevicesEXT";
             return l;
         }
-        const char* missing = nullptr;
-        if (!l.gl.load(eglProc, &l, missing)) {
-            l.error = std::string("eglGetProcAddress does not know ") + missing;
-            return l;
-        }
-        l.loaded = true;
+        l.loaded = detail::loadGlEntryPoints(l.gl, eglProc, &l, "eglGetProcAddress", l.error);
         return l;
     }();
     return library;
@@ -336,20 +331,9 @@ RenderResult createEglContext(std::uint32_t width, std::uint32_t height, std::ui
         }
     }
     auto context = std::make_unique<EglContext>(display, raw, surface, width, height);
-    if (!context->makeCurrent(image)) {
-        const std::string why = eglErrorText(l);
-        context->restorePrevious();
-        return RenderResult::failure(RenderStatus::kContextFailure, "eglMakeCurrent failed" + why);
-    }
-    RenderResult result;
-    {
-        GlApiScope api(&l.gl);
-        result = checkRenderer(reinterpret_cast<const char*>(glGetString(GL_RENDERER)), software, "EGL");
-    }
-    context->restorePrevious();
-    if (result)
-        out = std::move(context);
-    return result;
+    return finishNewContext(
+        std::move(context), image, software, "EGL", [] {}, [&] { return "eglMakeCurrent failed" + eglErrorText(l); },
+        out);
 }
 
 } // namespace detail

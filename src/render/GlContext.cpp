@@ -19,6 +19,8 @@
 
 #include "render/GlContext.h"
 
+#include "render/GlApi.h"
+
 #include <cstdlib>
 #include <cstring>
 
@@ -65,6 +67,18 @@ void pinMesaEnvironmentLocked()
     pinned = true;
 }
 
+bool loadGlEntryPoints(GlApi& gl, void* (*proc)(const char*, void*), void* library, const char* procName,
+                       std::string& error)
+{
+    const char* missing = nullptr;
+    if (gl.load(proc, library, missing))
+        return true;
+    error = std::string(procName) + " does not know " + missing;
+    return false;
+}
+
+namespace {
+
 RenderResult checkRenderer(const char* renderer, bool softwareExpected, const char* backend)
 {
     if (renderer == nullptr)
@@ -77,6 +91,29 @@ RenderResult checkRenderer(const char* renderer, bool softwareExpected, const ch
                 "for reproducible images, but Mesa chose its driver earlier (a " + backend +
                 " context created before Q3's?)");
     return RenderResult::success();
+}
+
+} // namespace
+
+RenderResult finishNewContext(std::unique_ptr<GlContext> context, std::uint8_t* image, bool softwareExpected,
+                              const char* backend, const std::function<void()>& prepare,
+                              const std::function<std::string()>& whyNotCurrent, std::unique_ptr<GlContext>& out)
+{
+    if (!context->makeCurrent(image)) {
+        const std::string why = whyNotCurrent();
+        context->restorePrevious();
+        return RenderResult::failure(RenderStatus::kContextFailure, why);
+    }
+    RenderResult result;
+    {
+        GlApiScope api(&context->api());
+        prepare();
+        result = checkRenderer(reinterpret_cast<const char*>(glGetString(GL_RENDERER)), softwareExpected, backend);
+    }
+    context->restorePrevious();
+    if (result)
+        out = std::move(context);
+    return result;
 }
 
 #if !Q3_HAVE_OSMESA

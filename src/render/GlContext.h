@@ -11,6 +11,7 @@
 #include "base/RenderResult.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -96,8 +97,18 @@ RenderResult createOsMesaContext(std::uint32_t width, std::uint32_t height, std:
                                  std::unique_ptr<GlContext>& context);
 RenderResult createEglContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image,
                               std::unique_ptr<GlContext>& context);
-// The renderer check both share: GL_RENDERER of the current context.
-RenderResult checkRenderer(const char* renderer, bool softwareExpected, const char* backend);
+// The last step of loading a backend's library: every GL entry point of
+// `gl` through `proc` (with `library`); false, with `error` naming the one
+// `procName` does not know.
+bool loadGlEntryPoints(GlApi& gl, void* (*proc)(const char*, void*), void* library, const char* procName,
+                       std::string& error);
+// The last step both factories share: the new context made current on
+// `image` (else kContextFailure, `whyNotCurrent()` saying why), `prepare()`
+// run in it, GL_RENDERER checked (llvmpipe when `softwareExpected`, else
+// kWrongRenderer), then released; `out` takes it only if all went well.
+RenderResult finishNewContext(std::unique_ptr<GlContext> context, std::uint8_t* image, bool softwareExpected,
+                              const char* backend, const std::function<void()>& prepare,
+                              const std::function<std::string()>& whyNotCurrent, std::unique_ptr<GlContext>& out);
 } // namespace detail
 
 } // namespace q3

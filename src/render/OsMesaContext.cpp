@@ -62,12 +62,7 @@ const OsMesaLibrary& osMesa()
             l.error = file.error();
             return l;
         }
-        const char* missing = nullptr;
-        if (!l.gl.load(osMesaProc, &l, missing)) {
-            l.error = std::string("OSMesaGetProcAddress does not know ") + missing;
-            return l;
-        }
-        l.loaded = true;
+        l.loaded = detail::loadGlEntryPoints(l.gl, osMesaProc, &l, "OSMesaGetProcAddress", l.error);
         return l;
     }();
     return library;
@@ -165,22 +160,14 @@ RenderResult createOsMesaContext(std::uint32_t width, std::uint32_t height, std:
         return RenderResult::failure(RenderStatus::kContextFailure,
                                      "OSMesaCreateContextAttribs failed for an RGBA compatibility context");
     auto context = std::make_unique<OsMesaContext>(raw, width, height);
-    if (!context->makeCurrent(image)) {
-        context->restorePrevious();
-        return RenderResult::failure(RenderStatus::kContextFailure,
-                                     "OSMesaMakeCurrent failed for a " + std::to_string(width) + " x " +
-                                         std::to_string(height) + " RGBA8 buffer");
-    }
-    RenderResult result;
-    {
-        GlApiScope api(&l.gl);
-        context->setRowsTopFirst();
-        result = checkRenderer(reinterpret_cast<const char*>(glGetString(GL_RENDERER)), true, "OSMesa");
-    }
-    context->restorePrevious();
-    if (result)
-        out = std::move(context);
-    return result;
+    OsMesaContext* made = context.get();
+    return finishNewContext(
+        std::move(context), image, true, "OSMesa", [made] { made->setRowsTopFirst(); },
+        [&] {
+            return "OSMesaMakeCurrent failed for a " + std::to_string(width) + " x " + std::to_string(height) +
+                   " RGBA8 buffer";
+        },
+        out);
 }
 
 } // namespace detail
