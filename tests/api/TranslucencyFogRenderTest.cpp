@@ -74,7 +74,9 @@ class TranslucencyFogRenderTest : public q3test::OwningApiTest {
 protected:
     /// A polygon filling x and y -2..2 at z = 1, the texture's (0, 0) to
     /// (1, 1) across it (a uv on each corner).
-    TQ3GeometryObject texturedSquare()
+    // The square x, y in -2..2 at z = 1 with uv 0..1 across it, and `set`
+    // (may be null) as its own.
+    TQ3GeometryObject texturedSquare(TQ3AttributeSet set = nullptr)
     {
         const TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
         const TQ3Point3D corners[4] = {{-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}};
@@ -84,9 +86,37 @@ protected:
             EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]), kQ3Success);
             v[k] = TQ3Vertex3D{corners[k], set};
         }
-        const TQ3PolygonData data{4, v.data(), nullptr};
+        const TQ3PolygonData data{4, v.data(), set};
         return own(Q3Polygon_New(&data));
     }
+
+    // A texture shader of the 2 x 2 ARGB32 texture the alpha tests use:
+    // opaque red, alpha 0, alpha 128 green, opaque blue (top row first).
+    TQ3ShaderObject alphaTextureShader()
+    {
+        m_alphaTexels = {255, 255, 0, 0, 0, 255, 255, 255, 128, 0, 255, 0, 255, 0, 0, 255};
+        TQ3StorageObject storage =
+            own(Q3MemoryStorage_New(m_alphaTexels.data(), static_cast<unsigned long>(m_alphaTexels.size())));
+        const TQ3StoragePixmap pixmap{storage, 2, 2, 8, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
+        return own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
+    }
+
+    // Every pixel of the image's quadrant at (i0, j0), but its border,
+    // against `expected` within 1 per channel.
+    void expectQuadrant(const Pixmap& image, unsigned long i0, unsigned long j0, const Color& expected,
+                        const std::string& what)
+    {
+        int wrong = 0;
+        for (unsigned long j = j0 + 1; j < j0 + kSize / 2 - 1; ++j)
+            for (unsigned long i = i0 + 1; i < i0 + kSize / 2 - 1; ++i) {
+                const Rgba got = image.at(i, j);
+                wrong += std::abs(got.r - toByte(expected.r)) > 1 || std::abs(got.g - toByte(expected.g)) > 1 ||
+                         std::abs(got.b - toByte(expected.b)) > 1;
+            }
+        EXPECT_EQ(wrong, 0) << what;
+    }
+
+    std::vector<unsigned char> m_alphaTexels;
 
     TQ3CameraObject orthographic()
     {
@@ -352,11 +382,7 @@ TEST_F(TranslucencyFogRenderTest, TextureAlphaCutsOutAndOpaqueTexelsHideWhatIsBe
     // A 2 x 2 ARGB32 texture: opaque red, alpha 0, alpha 128 green, opaque
     // blue (top row first), over the whole view, nearest; behind it a
     // square drawn after it, and the opaque background.
-    std::vector<unsigned char> texels{255, 255, 0, 0, 0, 255, 255, 255, 128, 0, 255, 0, 255, 0, 0, 255};
-    TQ3StorageObject storage = own(Q3MemoryStorage_New(texels.data(), static_cast<unsigned long>(texels.size())));
-    const TQ3StoragePixmap pixmap{storage, 2, 2, 8, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
-    TQ3TextureObject texture = own(Q3PixmapTexture_New(&pixmap));
-    TQ3ShaderObject shader = own(Q3TextureShader_New(texture));
+    TQ3ShaderObject shader = alphaTextureShader();
     TQ3GeometryObject textured = texturedSquare();
     const Color middle{0.3, 0.3, 0.3};
     TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle));
@@ -369,20 +395,10 @@ TEST_F(TranslucencyFogRenderTest, TextureAlphaCutsOutAndOpaqueTexelsHideWhatIsBe
     });
     const Color red{1, 0, 0}, green{0, 1, 0}, blue{0, 0, 1};
     const double a = 128.0 / 255.0;
-    const auto quadrant = [&](unsigned long i0, unsigned long j0, const Color& expected, const std::string& what) {
-        int wrong = 0;
-        for (unsigned long j = j0 + 1; j < j0 + kSize / 2 - 1; ++j)
-            for (unsigned long i = i0 + 1; i < i0 + kSize / 2 - 1; ++i) {
-                const Rgba got = image.at(i, j);
-                wrong += std::abs(got.r - toByte(expected.r)) > 1 || std::abs(got.g - toByte(expected.g)) > 1 ||
-                         std::abs(got.b - toByte(expected.b)) > 1;
-            }
-        EXPECT_EQ(wrong, 0) << what;
-    };
-    quadrant(0, 0, red, "opaque texel");
-    quadrant(kSize / 2, 0, middle, "alpha 0: what lies behind, drawn later");
-    quadrant(0, kSize / 2, mix(green, middle, a), "alpha 128: blended");
-    quadrant(kSize / 2, kSize / 2, blue, "opaque texel hides what is behind");
+    expectQuadrant(image, 0, 0, red, "opaque texel");
+    expectQuadrant(image, kSize / 2, 0, middle, "alpha 0: what lies behind, drawn later");
+    expectQuadrant(image, 0, kSize / 2, mix(green, middle, a), "alpha 128: blended");
+    expectQuadrant(image, kSize / 2, kSize / 2, blue, "opaque texel hides what is behind");
 }
 
 TEST_F(TranslucencyFogRenderTest, TintTimesTexelAlphaChannelByChannel)
@@ -391,22 +407,9 @@ TEST_F(TranslucencyFogRenderTest, TintTimesTexelAlphaChannelByChannel)
     // alpha 128 green, opaque blue) on a square whose transparency colour
     // is (0, 1, 0.5): each channel's opacity is that channel of T times the
     // texel's alpha. The grey rectangle behind is drawn after it.
-    std::vector<unsigned char> texels{255, 255, 0, 0, 0, 255, 255, 255, 128, 0, 255, 0, 255, 0, 0, 255};
-    TQ3StorageObject storage = own(Q3MemoryStorage_New(texels.data(), static_cast<unsigned long>(texels.size())));
-    const TQ3StoragePixmap pixmap{storage, 2, 2, 8, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
-    TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
-    const float h = 2.0f;
-    TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    std::vector<TQ3Vertex3D> v(4);
-    const TQ3Point3D corners[4] = {{-h, -h, 1}, {h, -h, 1}, {h, h, 1}, {-h, h, 1}};
-    for (int k = 0; k < 4; ++k) {
-        TQ3AttributeSet set = own(Q3AttributeSet_New());
-        EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[k]), kQ3Success);
-        v[k] = TQ3Vertex3D{corners[k], set};
-    }
+    TQ3ShaderObject shader = alphaTextureShader();
     const Color tint{0, 1, 0.5};
-    const TQ3PolygonData data{4, v.data(), colorSet(Color{1, 1, 1}, &tint)};
-    TQ3GeometryObject textured = own(Q3Polygon_New(&data));
+    TQ3GeometryObject textured = texturedSquare(colorSet(Color{1, 1, 1}, &tint));
     const Color middle{0.3, 0.3, 0.3};
     TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle));
     const Pixmap image = render([&](TQ3ViewObject v) {
@@ -419,20 +422,10 @@ TEST_F(TranslucencyFogRenderTest, TintTimesTexelAlphaChannelByChannel)
     const auto times = [](const Color& t, double a) { return Color{t.r * a, t.g * a, t.b * a}; };
     const Color red{1, 0, 0}, green{0, 1, 0}, blue{0, 0, 1};
     const double a = 128.0 / 255.0;
-    const auto quadrant = [&](unsigned long i0, unsigned long j0, const Color& expected, const std::string& what) {
-        int wrong = 0;
-        for (unsigned long j = j0 + 1; j < j0 + kSize / 2 - 1; ++j)
-            for (unsigned long i = i0 + 1; i < i0 + kSize / 2 - 1; ++i) {
-                const Rgba got = image.at(i, j);
-                wrong += std::abs(got.r - toByte(expected.r)) > 1 || std::abs(got.g - toByte(expected.g)) > 1 ||
-                         std::abs(got.b - toByte(expected.b)) > 1;
-            }
-        EXPECT_EQ(wrong, 0) << what;
-    };
-    quadrant(0, 0, mix(red, middle, tint), "opaque red texel");
-    quadrant(kSize / 2, 0, middle, "alpha 0");
-    quadrant(0, kSize / 2, mix(green, middle, times(tint, a)), "alpha 128 green texel");
-    quadrant(kSize / 2, kSize / 2, mix(blue, middle, tint), "opaque blue texel");
+    expectQuadrant(image, 0, 0, mix(red, middle, tint), "opaque red texel");
+    expectQuadrant(image, kSize / 2, 0, middle, "alpha 0");
+    expectQuadrant(image, 0, kSize / 2, mix(green, middle, times(tint, a)), "alpha 128 green texel");
+    expectQuadrant(image, kSize / 2, kSize / 2, mix(blue, middle, tint), "opaque blue texel");
 }
 
 TEST_F(TranslucencyFogRenderTest, Argb16AlphaBitCutsOut)
