@@ -101,6 +101,23 @@ protected:
         return own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
     }
 
+    // The square of texturedSquare with `squareSet`, under the alpha
+    // texture shader, then behind it (z = 0.5) a wider rectangle of
+    // diffuse colour `behind`, drawn after it.
+    Pixmap renderAlphaTextureOver(TQ3AttributeSet squareSet, const Color& behind)
+    {
+        TQ3ShaderObject shader = alphaTextureShader();
+        TQ3GeometryObject textured = texturedSquare(squareSet);
+        TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(behind));
+        return render([&](TQ3ViewObject v) {
+            Q3Push_Submit(v);
+            Q3Shader_Submit(shader, v);
+            Q3Geometry_Submit(textured, v);
+            Q3Pop_Submit(v);
+            Q3Geometry_Submit(between, v);
+        });
+    }
+
     // Every pixel of the image's quadrant at (i0, j0), but its border,
     // against `expected` within 1 per channel.
     void expectQuadrant(const Pixmap& image, unsigned long i0, unsigned long j0, const Color& expected,
@@ -382,17 +399,8 @@ TEST_F(TranslucencyFogRenderTest, TextureAlphaCutsOutAndOpaqueTexelsHideWhatIsBe
     // A 2 x 2 ARGB32 texture: opaque red, alpha 0, alpha 128 green, opaque
     // blue (top row first), over the whole view, nearest; behind it a
     // square drawn after it, and the opaque background.
-    TQ3ShaderObject shader = alphaTextureShader();
-    TQ3GeometryObject textured = texturedSquare();
     const Color middle{0.3, 0.3, 0.3};
-    TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle));
-    const Pixmap image = render([&](TQ3ViewObject v) {
-        Q3Push_Submit(v);
-        Q3Shader_Submit(shader, v);
-        Q3Geometry_Submit(textured, v);
-        Q3Pop_Submit(v);
-        Q3Geometry_Submit(between, v);
-    });
+    const Pixmap image = renderAlphaTextureOver(nullptr, middle);
     const Color red{1, 0, 0}, green{0, 1, 0}, blue{0, 0, 1};
     const double a = 128.0 / 255.0;
     expectQuadrant(image, 0, 0, red, "opaque texel");
@@ -407,18 +415,9 @@ TEST_F(TranslucencyFogRenderTest, TintTimesTexelAlphaChannelByChannel)
     // alpha 128 green, opaque blue) on a square whose transparency colour
     // is (0, 1, 0.5): each channel's opacity is that channel of T times the
     // texel's alpha. The grey rectangle behind is drawn after it.
-    TQ3ShaderObject shader = alphaTextureShader();
     const Color tint{0, 1, 0.5};
-    TQ3GeometryObject textured = texturedSquare(colorSet(Color{1, 1, 1}, &tint));
     const Color middle{0.3, 0.3, 0.3};
-    TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle));
-    const Pixmap image = render([&](TQ3ViewObject v) {
-        Q3Push_Submit(v);
-        Q3Shader_Submit(shader, v);
-        Q3Geometry_Submit(textured, v);
-        Q3Pop_Submit(v);
-        Q3Geometry_Submit(between, v);
-    });
+    const Pixmap image = renderAlphaTextureOver(colorSet(Color{1, 1, 1}, &tint), middle);
     const auto times = [](const Color& t, double a) { return Color{t.r * a, t.g * a, t.b * a}; };
     const Color red{1, 0, 0}, green{0, 1, 0}, blue{0, 0, 1};
     const double a = 128.0 / 255.0;
