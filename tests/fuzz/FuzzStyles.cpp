@@ -639,10 +639,13 @@ void Session::elements()
     case 9:
         STATUS(Q3XView_SubmitWriteData(target, m_in.u32(), data, nullptr));
         break;
-    case 10:
-        STATUS(Q3XView_SubmitSubObjectData(target, Q3XObjectHierarchy_FindClassByType(type), m_in.u32(), data,
-                                           nullptr));
+    case 10: {
+        // The class is looked up first, on its own: a lookup that posts (an
+        // unknown type, or after Q3Exit) must not count as the submit's post.
+        const TQ3XObjectClass objectClass = Q3XObjectHierarchy_FindClassByType(type);
+        STATUS(Q3XView_SubmitSubObjectData(target, objectClass, m_in.u32(), data, nullptr));
         break;
+    }
     // A class answering kQ3XMethodTypeObjectFileVersion with any version:
     // one newer than 1.6 is refused, any other registers (QD3DIO.h).
     case 11: {
