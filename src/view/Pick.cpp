@@ -206,6 +206,11 @@ void Pick::setHits(std::vector<PickHit> hits)
         });
     if (m_data.numHitsToReturn != kQ3ReturnAllHits && hits.size() > m_data.numHitsToReturn)
         hits.resize(m_data.numHitsToReturn);
+    // The pick's data as it is now rules, as for the sort and the count: a
+    // Q3Pick_SetData during the picking loop may have dropped details the
+    // loop's start asked for, and a hit reports only what the pick asks.
+    for (PickHit& hit : hits)
+        hit.valid &= m_data.mask;
     m_hits = std::move(hits);
 }
 

@@ -604,6 +604,33 @@ TEST_F(PickApiTest, DetailsOfAHit)
     EXPECT_FLOAT_EQ(detail<TQ3Vector3D>(w2, 0, kQ3PickDetailMaskNormal).z, -1.0f);
 }
 
+// Found by the fuzzer: a Q3Pick_SetData during the picking loop changes the
+// details the hits report, as it changes their sort and count: a hit
+// reports only the details the pick asks for when the loop ends.
+TEST_F(PickApiTest, DataSetDuringTheLoopRulesTheHitsDetails)
+{
+    TQ3ViewObject view = own(Q3View_New());
+    TQ3GeometryObject tri = square(0, 0, 0);
+    TQ3WorldRayPickData ray = rayData({0.5f, 0.5f, 3}, {0, 0, -1});
+    ray.data.mask = kQ3PickDetailMaskPickID | kQ3PickDetailMaskLocalToWorldMatrix | kQ3PickDetailMaskObject;
+    TQ3PickObject w = own(Q3WorldRayPick_New(&ray));
+    TQ3PickData narrower = ray.data;
+    narrower.mask = kQ3PickDetailMaskObject | kQ3PickDetailMaskDistance;
+    ASSERT_EQ(pick(view, w,
+                   [&](TQ3ViewObject v) {
+                       EXPECT_EQ(Q3Pick_SetData(w, &narrower), kQ3Success);
+                       Q3Object_Submit(tri, v);
+                   }),
+              kQ3ViewStatusDone);
+    ASSERT_EQ(hits(w), 1u);
+    TQ3PickDetail valid = 0;
+    ASSERT_EQ(Q3Pick_GetPickDetailValidMask(w, 0, &valid), kQ3Success);
+    // Asked at the start and still asked; never a detail no longer asked.
+    EXPECT_EQ(valid, TQ3PickDetail(kQ3PickDetailMaskObject));
+    unsigned long id = 0;
+    EXPECT_Q3_ERROR(Q3Pick_GetPickDetailData(w, 0, kQ3PickDetailMaskPickID, &id), kQ3ErrorDataNotAvailable);
+}
+
 TEST_F(PickApiTest, HitPathThroughNestedGroups)
 {
     TQ3ViewObject view = own(Q3View_New());
