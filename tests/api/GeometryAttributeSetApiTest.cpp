@@ -237,13 +237,7 @@ TEST_F(GeometryAttributeSetApiTest, ColorsSetAfterCreationAreDrawn)
         EXPECT_EQ(status, kQ3ViewStatusDone);
     }
     const Projection pixelOf = orthographicProjection(0, 0, 200, 150);
-    auto colorNear = [&](const Point3& p) {
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx)
-                if (image.lit(unsigned(p.x) + dx, unsigned(p.y) + dy))
-                    return image.at(unsigned(p.x) + dx, unsigned(p.y) + dy);
-        return Rgba{};
-    };
+    auto colorNear = [&](const Point3& p) { return image.litNear(unsigned(p.x), unsigned(p.y)); };
     const Rgba first = colorNear(pixelOf({0.5, 0.5, 0}));
     const Rgba second = colorNear(pixelOf({1.5, 0.5, 0}));
     EXPECT_EQ(first.g, 255);

@@ -86,13 +86,7 @@ TEST_F(RenderPrimitivesTest, SegmentColorsWinOverThePolylineColor)
         TestView view(image.pixmap());
         view.render([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(object, v), kQ3Success); });
     }
-    auto colorNear = [&](const Point3& p) {
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx)
-                if (image.lit(unsigned(p.x) + dx, unsigned(p.y) + dy))
-                    return image.at(unsigned(p.x) + dx, unsigned(p.y) + dy);
-        return Rgba{};
-    };
+    auto colorNear = [&](const Point3& p) { return image.litNear(unsigned(p.x), unsigned(p.y)); };
     const Rgba first = colorNear(pixelOf(0.5, 0.5));
     const Rgba second = colorNear(pixelOf(1.5, 0.5));
     EXPECT_EQ(first.g, 255);

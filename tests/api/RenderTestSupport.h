@@ -137,6 +137,18 @@ public:
         return c.r > 127 || c.g > 127 || c.b > 127;
     }
 
+    /// The first lit pixel (lit()) of the 3 x 3 block around (x, y), row by
+    /// row from the top left; all zero when none is (a thin line drawn near
+    /// a point may miss its pixel by one).
+    Rgba litNear(unsigned long x, unsigned long y) const
+    {
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                if (lit(x + dx, y + dy))
+                    return at(x + dx, y + dy);
+        return Rgba{};
+    }
+
     /// The image as 8-bit RGBA, for writing a PNG when a check fails.
     std::vector<unsigned char> rgba() const
     {
