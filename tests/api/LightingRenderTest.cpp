@@ -154,6 +154,27 @@ protected:
         return own(Q3OrthographicCamera_New(&data));
     }
 
+    // The back-face tests' scene: a directional light along `direction`,
+    // a Lambert shader and a surface of diffuse colour (0.9, 0.5, 0.2).
+    struct BackFaceScene {
+        Light light;
+        Surface surface;
+        TQ3LightObject object;
+        TQ3ShaderObject lambert;
+        TQ3AttributeSet set;
+    };
+    BackFaceScene backFaceScene(const Vec& direction)
+    {
+        BackFaceScene scene;
+        scene.light.kind = Light::kDirectional;
+        scene.light.direction = direction;
+        scene.surface.diffuse = {0.9, 0.5, 0.2};
+        scene.object = newLight(scene.light);
+        scene.lambert = own(Q3LambertIllumination_New());
+        scene.set = surfaceSet(scene.surface);
+        return scene;
+    }
+
     TQ3LightObject newLight(const Light& light)
     {
         TQ3LightData base{kQ3True, float(light.brightness),
@@ -403,14 +424,13 @@ TEST_F(LightingRenderTest, ALightThatIsOffOrDimmedLightsAccordingly)
 
 TEST_F(LightingRenderTest, FlippedBackFacesAreLitWithTheReversedNormal)
 {
-    Light directional;
-    directional.kind = Light::kDirectional;
-    directional.direction = {0.5, 0, -1}; // towards the square, from the camera's side
-    Surface s;
-    s.diffuse = {0.9, 0.5, 0.2};
-    TQ3LightObject d = newLight(directional);
-    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
-    TQ3AttributeSet set = surfaceSet(s);
+    // Towards the square, from the camera's side.
+    const BackFaceScene scene = backFaceScene({0.5, 0, -1});
+    const Light& directional = scene.light;
+    const Surface& s = scene.surface;
+    TQ3LightObject d = scene.object;
+    TQ3ShaderObject lambert = scene.lambert;
+    TQ3AttributeSet set = scene.set;
     // Facing away, its normal is -z: the light is behind it, nothing lights it.
     expectLit(render({d}, lambert, set, kQ3BackfacingStyleBoth, true), {directional}, s, {0, 0, -1},
               "back face, both");
@@ -429,14 +449,13 @@ TEST_F(LightingRenderTest, FlippedBackFacesAreLitWithTheReversedNormal)
 // (behind it, seen from the camera) lights it, and flipping turns it away.
 TEST_F(LightingRenderTest, BackFacesUnderBothKeepTheirNormalAsTheBookSays)
 {
-    Light directional;
-    directional.kind = Light::kDirectional;
-    directional.direction = {0.5, 0, 1}; // from behind the square, towards the camera
-    Surface s;
-    s.diffuse = {0.9, 0.5, 0.2};
-    TQ3LightObject d = newLight(directional);
-    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
-    TQ3AttributeSet set = surfaceSet(s);
+    // From behind the square, towards the camera.
+    const BackFaceScene scene = backFaceScene({0.5, 0, 1});
+    const Light& directional = scene.light;
+    const Surface& s = scene.surface;
+    TQ3LightObject d = scene.object;
+    TQ3ShaderObject lambert = scene.lambert;
+    TQ3AttributeSet set = scene.set;
     // Facing away, its normal -z points at the light: lit by it.
     expectLit(render({d}, lambert, set, kQ3BackfacingStyleBoth, true), {directional}, s, {0, 0, -1},
               "back face lit from behind, both");
