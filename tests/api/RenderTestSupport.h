@@ -8,6 +8,7 @@
 // article's Listing 1 curve with its Bezier formula, and checks that an image
 // shows a curve and nothing else.
 
+#include "CameraTestSupport.h"
 #include "Q3ApiTest.h"
 
 #include "QD3DCamera.h"
@@ -192,22 +193,6 @@ inline Point3 listing1At(double t)
 
 /// A world point's position in pixels (x right, y down from the pixmap's top).
 using Projection = std::function<Point3(const Point3&)>;
-
-/// An orthographic camera looking down -z from (x, y, 10) at (x, y, 0), y
-/// up, range 1 to 100, showing halfWidth either side of x and halfHeight
-/// above and below y.
-inline TQ3OrthographicCameraData orthographicCameraAt(float x, float y, float halfWidth, float halfHeight)
-{
-    TQ3OrthographicCameraData data{};
-    data.cameraData.placement = {{x, y, 10.0f}, {x, y, 0.0f}, {0.0f, 1.0f, 0.0f}};
-    data.cameraData.range = {1.0f, 100.0f};
-    data.cameraData.viewPort = {{-1.0f, 1.0f}, 2.0f, 2.0f};
-    data.left = -halfWidth;
-    data.right = halfWidth;
-    data.top = halfHeight;
-    data.bottom = -halfHeight;
-    return data;
-}
 
 /// The orthographic camera the rendering tests use: looking down -z at the
 /// centre (1.5, 0.5) of Listing 1, showing x -0.5..3.5 and y -1..2.

@@ -6,6 +6,7 @@
 // interactive renderer into an ARGB32 pixmap of their size, cleared to opaque
 // black. Each test gives the view its own camera.
 
+#include "CameraTestSupport.h"
 #include "Q3ApiTest.h"
 
 #include "QD3DCamera.h"
@@ -26,22 +27,6 @@ inline TQ3PixmapDrawContextData argb32ContextData(std::vector<unsigned char>& me
     data.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
     data.drawContextData.clearImageColor = {1, 0, 0, 0};
     data.pixmap = {memory.data(), width, height, width * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig, kQ3EndianBig};
-    return data;
-}
-
-/// An orthographic camera at (0, 0, 10) looking at the origin, y up,
-/// range 1 to 100, showing x from -halfWidth to halfWidth and y from
-/// -halfHeight to halfHeight.
-inline TQ3OrthographicCameraData frontOrthographic(float halfWidth, float halfHeight)
-{
-    TQ3OrthographicCameraData data{};
-    data.cameraData.placement = {{0, 0, 10}, {0, 0, 0}, {0, 1, 0}};
-    data.cameraData.range = {1, 100};
-    data.cameraData.viewPort = {{-1, 1}, 2, 2};
-    data.left = -halfWidth;
-    data.right = halfWidth;
-    data.top = halfHeight;
-    data.bottom = -halfHeight;
     return data;
 }
 

@@ -433,7 +433,7 @@ TEST_F(SubdivisionCacheRegressionTest, ImmediateModeCurvesAreSubdividedAtEverySu
 {
     // Looking down -z at the origin: x -2..2 and y -1.5..1.5 fill the image,
     // 32 pixels per unit, so y = 0.75 is pixel row 24 and y = -0.75 row 72.
-    const TQ3OrthographicCameraData camera = q3test::frontOrthographic(2, 1.5f);
+    const TQ3OrthographicCameraData camera = q3test::orthographicCameraAt(0, 0, 2, 1.5f);
     TQ3CameraObject flat = Q3OrthographicCamera_New(&camera);
     ASSERT_EQ(Q3View_SetCamera(m_view, flat), kQ3Success);
     Q3Object_Dispose(flat);

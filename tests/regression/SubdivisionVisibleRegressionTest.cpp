@@ -229,7 +229,7 @@ TEST_F(SubdivisionVisibleRegressionTest, ScreenSpaceBelowTheFloorIsReplacedWithA
     Q3Object_Dispose(style);
 
     // Submitted in a loop: the state says what curves are drawn with.
-    const TQ3OrthographicCameraData ortho = q3test::frontOrthographic(2, 2);
+    const TQ3OrthographicCameraData ortho = q3test::orthographicCameraAt(0, 0, 2, 2);
     useCamera(Q3OrthographicCamera_New(&ortho));
     ASSERT_EQ(Q3View_StartRendering(m_view), kQ3Success);
     TQ3ViewStatus status;
@@ -251,7 +251,7 @@ TEST_F(SubdivisionVisibleRegressionTest, TheViewCapsAdaptiveSegmentsWithAWarning
 {
     EXPECT_EQ(kQ3SubdivisionViewSegmentsPerPixel, 16);
     const std::size_t cap = std::size_t(kQ3SubdivisionViewSegmentsPerPixel) * (kSide + kSide);
-    const TQ3OrthographicCameraData ortho = q3test::frontOrthographic(2, 2);
+    const TQ3OrthographicCameraData ortho = q3test::orthographicCameraAt(0, 0, 2, 2);
     useCamera(Q3OrthographicCamera_New(&ortho));
     // A cubic Bezier inside the view, about 4 units (128 pixels) long.
     TQ3RationalPoint4D points[4] = {{-1.8f, -1, 0, 1}, {-0.6f, 1.5f, 0, 1}, {0.6f, -1.5f, 0, 1}, {1.8f, 1, 0, 1}};
