@@ -328,8 +328,9 @@ private:
     // flush, when the context is current).
     void forgetTextures();
     // Anti-aliasing (see setAntiAlias). Before a flush draws: binds the
-    // multisample framebuffer again if the frame was left in it.
-    bool prepareMultisample(std::string& error);
+    // framebuffer the frame is in, the multisample one (with multisampling
+    // on) when a run of anti-aliased commands left it there, else the image.
+    void bindFrameFramebuffer();
     // Before a run of commands: draws into the multisample framebuffer
     // (`on`, what the image holds copied into it) or back into the image
     // (the samples resolved into it, colour and depth); false with `error`
@@ -1196,15 +1197,11 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             resetBatch();
             return RenderResult::failure(RenderStatus::kContextFailure, "making the OpenGL context current failed");
         }
-        if (!m_multisampling)
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        bindFrameFramebuffer();
         if (!m_clearedInGl) {
             startFrameInGl();
             m_clearedInGl = true;
         }
-        std::string multisampleError;
-        if (!prepareMultisample(multisampleError))
-            result = RenderResult::failure(RenderStatus::kGraphicsError, multisampleError);
         if (!m_staleTextureNames.empty()) {
             glDeleteTextures(GLsizei(m_staleTextureNames.size()), m_staleTextureNames.data());
             m_staleTextureNames.clear();
@@ -1772,13 +1769,14 @@ GLuint compileCopyProgram(std::string& error)
 // GL_MULTISAMPLE off: llvmpipe, Mesa 22.3, measured, then writes a
 // fragment's colour to all of a pixel's samples but its depth to one only,
 // so such a primitive would not hide what is drawn behind it later.)
-bool OffscreenRenderer::Impl::prepareMultisample(std::string&)
+void OffscreenRenderer::Impl::bindFrameFramebuffer()
 {
-    if (m_multisampling) {
-        glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
-        glEnable(GL_MULTISAMPLE);
+    if (!m_multisampling) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return;
     }
-    return true;
+    glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
+    glEnable(GL_MULTISAMPLE);
 }
 
 bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
