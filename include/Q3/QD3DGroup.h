@@ -259,6 +259,151 @@ Q3_EXTERN_API_C(TQ3Status) Q3DisplayGroup_RemoveBoundingBox(TQ3GroupObject group
 Q3_EXTERN_API_C(TQ3Status) Q3DisplayGroup_CalcAndUseBoundingBox(TQ3GroupObject group, TQ3ComputeBounds computeBounds,
                                                                TQ3ViewObject view);
 
+/*
+ * Group classes (QD3DExtension.h's Q3XObjectHierarchy_RegisterClass with a
+ * group class as parentType: kQ3ShapeTypeGroup, kQ3GroupTypeDisplay,
+ * kQ3DisplayGroupTypeOrdered, kQ3DisplayGroupTypeIOProxy,
+ * kQ3GroupTypeLight, kQ3GroupTypeInfo, or a group class registered under
+ * one). An object of such a class (Q3XObjectHierarchy_NewObject) is a group
+ * of its parent's kind: every Q3Group_ call works on it, and it draws,
+ * picks, bounds, duplicates and is read and written as its parent, under
+ * its own class name. Its class's metahandler may give these methods; each
+ * is optional, and Q3 calls it as follows.
+ *
+ * The search and edit methods replace the Q3Group_ call of the same name
+ * (Q3Group_AddObject, ..., Q3Group_GetPreviousObjectPosition; the calls
+ * without "OfType" use the OfType method with kQ3ObjectTypeShared, which
+ * every object in a group is). Q3 checks the group handle and the output
+ * pointer, then returns what the method returns. A method that calls the
+ * Q3Group_ function it replaces, on the same group, gets Q3's own
+ * behaviour (the parent class's): that is how a method adds to what Q3
+ * does. Positions stay Q3's: a method hands out positions Q3 made. A method
+ * that fails posts its own error (Q3XError_Post).
+ *
+ * kQ3XMethodType_GroupAcceptObject decides which objects the group holds
+ * (in place of the parent's rule; a group still holds shared objects only
+ * and never itself): kQ3False gives kQ3ErrorInvalidObjectForGroup.
+ *
+ * Position methods: a class that returns a size from
+ * kQ3XMethodType_GroupPositionSize (cast to TQ3XFunctionPointer; at most
+ * 65536 bytes), or gives kQ3XMethodType_GroupPositionNew, keeps data for
+ * each position: a zeroed block of that size, filled by the new method
+ * (gPos the block, object the object at the position, initData the group's
+ * instance data for the class), copied by the copy method when the group is
+ * duplicated (a byte copy without one) and given to the delete method when
+ * the position goes (removed, emptied, or the group disposed). Setting a
+ * position's object keeps the position and its data. A failing new or copy
+ * method fails the call with kQ3ErrorInvalidParameter.
+ * Q3XGroup_GetPositionPrivate returns the block.
+ *
+ * Drawing helpers: a display group whose class gives both
+ * kQ3XMethodType_GroupStartIterate and kQ3XMethodType_GroupEndIterate draws
+ * (and picks and bounds) what they pass back instead of its objects: the
+ * start method passes back the first object to draw (NULL: none, and the
+ * end method is not called); the end method gets the object just drawn
+ * (the class releases it, if it should) and passes back the next, NULL
+ * after the last. *iterator is the class's own iteration state; when it
+ * holds one of the group's positions, pick hits name it. A failing method
+ * fails the submit with kQ3ErrorInvalidParameter.
+ *
+ * kQ3XMethodType_GroupEndRead is called when a file has given a group of
+ * the class all its objects; kQ3Failure fails the read
+ * (kQ3ErrorInvalidMetafileObject).
+ */
+#define kQ3XMethodType_GroupAcceptObject Q3_METHOD_TYPE('g', 'a', 'c', 'o')
+typedef TQ3Boolean(QD3D_CALLBACK *TQ3XGroupAcceptObjectMethod)(TQ3GroupObject group, TQ3Object object);
+
+#define kQ3XMethodType_GroupAddObject Q3_METHOD_TYPE('g', 'a', 'd', 'o')
+typedef TQ3GroupPosition(QD3D_CALLBACK *TQ3XGroupAddObjectMethod)(TQ3GroupObject group, TQ3Object object);
+
+#define kQ3XMethodType_GroupAddObjectBefore Q3_METHOD_TYPE('g', 'a', 'o', 'b')
+typedef TQ3GroupPosition(QD3D_CALLBACK *TQ3XGroupAddObjectBeforeMethod)(TQ3GroupObject group,
+                                                                        TQ3GroupPosition position, TQ3Object object);
+
+#define kQ3XMethodType_GroupAddObjectAfter Q3_METHOD_TYPE('g', 'a', 'o', 'a')
+typedef TQ3GroupPosition(QD3D_CALLBACK *TQ3XGroupAddObjectAfterMethod)(TQ3GroupObject group,
+                                                                       TQ3GroupPosition position, TQ3Object object);
+
+#define kQ3XMethodType_GroupSetPositionObject Q3_METHOD_TYPE('g', 's', 'p', 'o')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupSetPositionObjectMethod)(TQ3GroupObject group, TQ3GroupPosition gPos,
+                                                                   TQ3Object obj);
+
+#define kQ3XMethodType_GroupRemovePosition Q3_METHOD_TYPE('g', 'r', 'm', 'p')
+typedef TQ3Object(QD3D_CALLBACK *TQ3XGroupRemovePositionMethod)(TQ3GroupObject group, TQ3GroupPosition position);
+
+#define kQ3XMethodType_GroupGetFirstPositionOfType Q3_METHOD_TYPE('g', 'f', 'r', 't')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupGetFirstPositionOfTypeMethod)(TQ3GroupObject group, TQ3ObjectType isType,
+                                                                        TQ3GroupPosition *gPos);
+
+#define kQ3XMethodType_GroupGetLastPositionOfType Q3_METHOD_TYPE('g', 'l', 's', 't')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupGetLastPositionOfTypeMethod)(TQ3GroupObject group, TQ3ObjectType isType,
+                                                                       TQ3GroupPosition *gPos);
+
+#define kQ3XMethodType_GroupGetNextPositionOfType Q3_METHOD_TYPE('g', 'n', 'x', 't')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupGetNextPositionOfTypeMethod)(TQ3GroupObject group, TQ3ObjectType isType,
+                                                                       TQ3GroupPosition *gPos);
+
+#define kQ3XMethodType_GroupGetPrevPositionOfType Q3_METHOD_TYPE('g', 'p', 'v', 't')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupGetPrevPositionOfTypeMethod)(TQ3GroupObject group, TQ3ObjectType isType,
+                                                                       TQ3GroupPosition *gPos);
+
+#define kQ3XMethodType_GroupCountObjectsOfType Q3_METHOD_TYPE('g', 'c', 'n', 't')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupCountObjectsOfTypeMethod)(TQ3GroupObject group, TQ3ObjectType isType,
+                                                                    unsigned long *nObjects);
+
+#define kQ3XMethodType_GroupEmptyObjectsOfType Q3_METHOD_TYPE('g', 'e', 'o', 't')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupEmptyObjectsOfTypeMethod)(TQ3GroupObject group, TQ3ObjectType isType);
+
+#define kQ3XMethodType_GroupGetFirstObjectPosition Q3_METHOD_TYPE('g', 'f', 'o', 'p')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupGetFirstObjectPositionMethod)(TQ3GroupObject group, TQ3Object object,
+                                                                        TQ3GroupPosition *gPos);
+
+#define kQ3XMethodType_GroupGetLastObjectPosition Q3_METHOD_TYPE('g', 'l', 'o', 'p')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupGetLastObjectPositionMethod)(TQ3GroupObject group, TQ3Object object,
+                                                                       TQ3GroupPosition *gPos);
+
+#define kQ3XMethodType_GroupGetNextObjectPosition Q3_METHOD_TYPE('g', 'n', 'o', 'p')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupGetNextObjectPositionMethod)(TQ3GroupObject group, TQ3Object object,
+                                                                       TQ3GroupPosition *gPos);
+
+#define kQ3XMethodType_GroupGetPrevObjectPosition Q3_METHOD_TYPE('g', 'p', 'o', 'p')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupGetPrevObjectPositionMethod)(TQ3GroupObject group, TQ3Object object,
+                                                                       TQ3GroupPosition *gPos);
+
+#define kQ3XMethodType_GroupPositionSize Q3_METHOD_TYPE('g', 'g', 'p', 'z')
+typedef unsigned long TQ3XMethodTypeGroupPositionSize;
+
+#define kQ3XMethodType_GroupPositionNew Q3_METHOD_TYPE('g', 'g', 'p', 'n')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupPositionNewMethod)(void *gPos, TQ3Object object, const void *initData);
+
+#define kQ3XMethodType_GroupPositionCopy Q3_METHOD_TYPE('g', 'g', 'p', 'c')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupPositionCopyMethod)(void *srcGPos, void *dstGPos);
+
+#define kQ3XMethodType_GroupPositionDelete Q3_METHOD_TYPE('g', 'g', 'p', 'd')
+typedef void(QD3D_CALLBACK *TQ3XGroupPositionDeleteMethod)(void *gPos);
+
+#define kQ3XMethodType_GroupStartIterate Q3_METHOD_TYPE('g', 's', 't', 'd')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupStartIterateMethod)(TQ3GroupObject group, TQ3GroupPosition *iterator,
+                                                              TQ3Object *object, TQ3ViewObject view);
+
+#define kQ3XMethodType_GroupEndIterate Q3_METHOD_TYPE('g', 'i', 't', 'd')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupEndIterateMethod)(TQ3GroupObject group, TQ3GroupPosition *iterator,
+                                                            TQ3Object *object, TQ3ViewObject view);
+
+#define kQ3XMethodType_GroupEndRead Q3_METHOD_TYPE('g', 'e', 'r', 'd')
+typedef TQ3Status(QD3D_CALLBACK *TQ3XGroupEndReadMethod)(TQ3GroupObject group);
+
+/**
+ * The private data of one of a group's positions, kept for the group's
+ * class (see "Group classes" above).
+ *
+ * Errors (besides the shared ones): kQ3ErrorNULLParameter for a NULL
+ * position; kQ3ErrorInvalidPositionForGroup for a position not of the
+ * group; kQ3ErrorInvalidObjectClass when the group's class keeps no data
+ * per position (every class Q3 defines).
+ */
+Q3_EXTERN_API_C(void *) Q3XGroup_GetPositionPrivate(TQ3GroupObject group, TQ3GroupPosition position);
+
 #ifdef __cplusplus
 }
 #endif

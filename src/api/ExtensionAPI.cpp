@@ -23,19 +23,16 @@ using q3::api::guardStatus;
 namespace {
 
 // The parents an object class may have: those Q3 can make an object of
-// without methods of its own (TQ3Object, a shared object, a shape), and the
-// object classes registered under them.
+// without methods of its own (TQ3Object, a shared object, a shape, a group
+// class), and the object classes registered under them.
 void requireObjectParent(TQ3ObjectType parentType)
 {
-    if (parentType == kQ3ObjectTypeInvalid || parentType == kQ3ObjectTypeShared || parentType == kQ3SharedTypeShape)
-        return;
-    const std::shared_ptr<CustomClass> parent = findCustomClass(parentType);
-    if (parent && parent->kind() == CustomClass::Kind::kObject)
+    if (acceptsCustomSubclasses(parentType))
         return;
     fail(kQ3ErrorInvalidObjectClass,
          "parentType " + std::to_string(parentType) +
-             " is no class Q3 registers objects under (0, kQ3ObjectTypeShared, kQ3SharedTypeShape or a registered "
-             "object class)");
+             " is no class Q3 registers objects under (0, kQ3ObjectTypeShared, kQ3SharedTypeShape, a group class "
+             "or a registered object class)");
 }
 
 struct Libraries {

@@ -2,8 +2,11 @@
 // Copyright (c) 2026 The Q3 authors
 #include "QD3DGroup.h"
 #include "api/Entry.h"
+#include "group/CustomGroup.h"
 #include "group/Group.h"
 #include "view/View.h"
+
+#include <optional>
 
 using namespace q3;
 using namespace q3::api;
@@ -25,14 +28,89 @@ TQ3GroupObject newGroup(const char* function, Make make)
     return guard(function, TQ3GroupObject{nullptr}, [&]() -> TQ3GroupObject { return make().detach(); });
 }
 
-// The position walks: *position replaced by what `step` gives.
-template <class Step>
-TQ3Status walk(const char* function, TQ3GroupObject group, TQ3GroupPosition* position, Step step)
+// What the method `type` of the group's class returns when it gives one
+// (group/CustomGroup.h): it then replaces Q3's own code for the call.
+template <class Method, class Call>
+auto byClass(const Group& group, TQ3XMethodType type, Call call)
+    -> std::optional<decltype(call(std::declval<Method>()))>
 {
-    return guardStatus(function, [&] {
+    const auto method = reinterpret_cast<Method>(groupMethod(group, type));
+    if (method == nullptr)
+        return std::nullopt;
+    GroupMethodCall running(group, type);
+    return call(method);
+}
+
+// The entry points that return a position or an object: the class's method,
+// else `own`.
+template <class Method, class Result, class Call, class Own>
+Result replaceable(const char* function, TQ3GroupObject group, TQ3XMethodType type, Call call, Own own)
+{
+    return guard(function, Result{nullptr}, [&]() -> Result {
+        Group& target = lookup<Group>(group, "group");
+        if (const auto done = byClass<Method>(target, type, call))
+            return *done;
+        return own(target);
+    });
+}
+
+// The position walks and counts: *out replaced by what `step` gives, or
+// by the class's method.
+template <class Method, class Out, class Call, class Step>
+TQ3Status walk(const char* function, TQ3GroupObject group, Out* out, const char* outName, TQ3XMethodType type,
+               Call call, Step step)
+{
+    return guard(function, kQ3Failure, [&] {
         const Group& target = lookup<Group>(group, "group");
-        requireNonNull(position, "position");
-        *position = step(target);
+        requireNonNull(out, outName);
+        if (const auto done = byClass<Method>(target, type, call))
+            return *done;
+        *out = step(target);
+        return kQ3Success;
+    });
+}
+
+// The position walks over objects of a type.
+template <class Method, class Step>
+TQ3Status walkOfType(const char* function, TQ3GroupObject group, TQ3ObjectType isType, TQ3GroupPosition* position,
+                     TQ3XMethodType type, Step step)
+{
+    return walk<Method>(
+        function, group, position, "position", type, [&](Method m) { return m(group, isType, position); }, step);
+}
+
+// The position walks over one object's positions.
+template <class Method, class Step>
+TQ3Status walkOfObject(const char* function, TQ3GroupObject group, TQ3Object object, TQ3GroupPosition* position,
+                       TQ3XMethodType type, Step step)
+{
+    return walk<Method>(
+        function, group, position, "position", type, [&](Method m) { return m(group, object, position); },
+        [&](const Group& g) { return step(g, lookupObject(object, "object")); });
+}
+
+// Counting (of a type): the class's method or Q3's.
+TQ3Status countOfType(const char* function, TQ3GroupObject group, TQ3ObjectType isType, TQ3ObjectType ownType,
+                      unsigned long* nObjects)
+{
+    using Method = TQ3XGroupCountObjectsOfTypeMethod;
+    return walk<Method>(
+        function, group, nObjects, "nObjects", kQ3XMethodType_GroupCountObjectsOfType,
+        [&](Method m) { return m(group, isType, nObjects); },
+        [&](const Group& g) { return static_cast<unsigned long>(g.count(ownType)); });
+}
+
+// Emptying (of a type): the class's method or Q3's.
+TQ3Status emptyOfType(const char* function, TQ3GroupObject group, TQ3ObjectType isType, TQ3ObjectType ownType)
+{
+    return guard(function, kQ3Failure, [&] {
+        Group& target = lookup<Group>(group, "group");
+        if (const auto done = byClass<TQ3XGroupEmptyObjectsOfTypeMethod>(
+                target, kQ3XMethodType_GroupEmptyObjectsOfType,
+                [&](TQ3XGroupEmptyObjectsOfTypeMethod m) { return m(group, isType); }))
+            return *done;
+        target.empty(ownType);
+        return kQ3Success;
     });
 }
 
@@ -78,26 +156,26 @@ TQ3ObjectType Q3Group_GetType(TQ3GroupObject group)
 
 TQ3GroupPosition Q3Group_AddObject(TQ3GroupObject group, TQ3Object object)
 {
-    return guard(__func__, TQ3GroupPosition{nullptr}, [&] {
-        Group& target = lookup<Group>(group, "group");
-        return target.add(member(object));
-    });
+    using Method = TQ3XGroupAddObjectMethod;
+    return replaceable<Method, TQ3GroupPosition>(
+        __func__, group, kQ3XMethodType_GroupAddObject, [&](Method m) { return m(group, object); },
+        [&](Group& g) { return g.add(member(object)); });
 }
 
 TQ3GroupPosition Q3Group_AddObjectBefore(TQ3GroupObject group, TQ3GroupPosition position, TQ3Object object)
 {
-    return guard(__func__, TQ3GroupPosition{nullptr}, [&] {
-        Group& target = lookup<Group>(group, "group");
-        return target.addBefore(position, member(object));
-    });
+    using Method = TQ3XGroupAddObjectBeforeMethod;
+    return replaceable<Method, TQ3GroupPosition>(
+        __func__, group, kQ3XMethodType_GroupAddObjectBefore, [&](Method m) { return m(group, position, object); },
+        [&](Group& g) { return g.addBefore(position, member(object)); });
 }
 
 TQ3GroupPosition Q3Group_AddObjectAfter(TQ3GroupObject group, TQ3GroupPosition position, TQ3Object object)
 {
-    return guard(__func__, TQ3GroupPosition{nullptr}, [&] {
-        Group& target = lookup<Group>(group, "group");
-        return target.addAfter(position, member(object));
-    });
+    using Method = TQ3XGroupAddObjectAfterMethod;
+    return replaceable<Method, TQ3GroupPosition>(
+        __func__, group, kQ3XMethodType_GroupAddObjectAfter, [&](Method m) { return m(group, position, object); },
+        [&](Group& g) { return g.addAfter(position, member(object)); });
 }
 
 TQ3Status Q3Group_GetPositionObject(TQ3GroupObject group, TQ3GroupPosition position, TQ3Object* object)
@@ -109,104 +187,131 @@ TQ3Status Q3Group_GetPositionObject(TQ3GroupObject group, TQ3GroupPosition posit
 
 TQ3Status Q3Group_SetPositionObject(TQ3GroupObject group, TQ3GroupPosition position, TQ3Object object)
 {
-    return guardStatus(__func__, [&] {
+    using Method = TQ3XGroupSetPositionObjectMethod;
+    return guard(__func__, kQ3Failure, [&] {
         Group& target = lookup<Group>(group, "group");
+        if (const auto done = byClass<Method>(target, kQ3XMethodType_GroupSetPositionObject,
+                                              [&](Method m) { return m(group, position, object); }))
+            return *done;
         target.setObjectAt(position, member(object));
+        return kQ3Success;
     });
 }
 
 TQ3Object Q3Group_RemovePosition(TQ3GroupObject group, TQ3GroupPosition position)
 {
-    return guard(__func__, TQ3Object{nullptr}, [&]() -> TQ3Object {
-        return lookup<Group>(group, "group").remove(position).detach();
-    });
+    using Method = TQ3XGroupRemovePositionMethod;
+    return replaceable<Method, TQ3Object>(
+        __func__, group, kQ3XMethodType_GroupRemovePosition, [&](Method m) { return m(group, position); },
+        [&](Group& g) -> TQ3Object { return g.remove(position).detach(); });
 }
+
+// The calls without a type are the OfType calls for kQ3ObjectTypeShared
+// (every object in a group is one): a class's OfType method answers both.
 
 TQ3Status Q3Group_GetFirstPosition(TQ3GroupObject group, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position, [&](const Group& g) { return g.first(); });
+    return walkOfType<TQ3XGroupGetFirstPositionOfTypeMethod>(
+        __func__, group, kQ3ObjectTypeShared, position, kQ3XMethodType_GroupGetFirstPositionOfType,
+        [&](const Group& g) { return g.first(); });
 }
 
 TQ3Status Q3Group_GetLastPosition(TQ3GroupObject group, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position, [&](const Group& g) { return g.last(); });
+    return walkOfType<TQ3XGroupGetLastPositionOfTypeMethod>(
+        __func__, group, kQ3ObjectTypeShared, position, kQ3XMethodType_GroupGetLastPositionOfType,
+        [&](const Group& g) { return g.last(); });
 }
 
 TQ3Status Q3Group_GetNextPosition(TQ3GroupObject group, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position, [&](const Group& g) { return g.next(*position); });
+    return walkOfType<TQ3XGroupGetNextPositionOfTypeMethod>(
+        __func__, group, kQ3ObjectTypeShared, position, kQ3XMethodType_GroupGetNextPositionOfType,
+        [&](const Group& g) { return g.next(*position); });
 }
 
 TQ3Status Q3Group_GetPreviousPosition(TQ3GroupObject group, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position, [&](const Group& g) { return g.previous(*position); });
+    return walkOfType<TQ3XGroupGetPrevPositionOfTypeMethod>(
+        __func__, group, kQ3ObjectTypeShared, position, kQ3XMethodType_GroupGetPrevPositionOfType,
+        [&](const Group& g) { return g.previous(*position); });
 }
 
 TQ3Status Q3Group_CountObjects(TQ3GroupObject group, unsigned long* nObjects)
 {
-    return getValue<Group>(__func__, group, "group", nObjects, "nObjects",
-                           [](const Group& g) { return static_cast<unsigned long>(g.count()); });
+    return countOfType(__func__, group, kQ3ObjectTypeShared, kQ3ObjectTypeInvalid, nObjects);
 }
 
 TQ3Status Q3Group_CountObjectsOfType(TQ3GroupObject group, TQ3ObjectType isType, unsigned long* nObjects)
 {
-    return getValue<Group>(__func__, group, "group", nObjects, "nObjects",
-                           [&](const Group& g) { return static_cast<unsigned long>(g.count(isType)); });
+    return countOfType(__func__, group, isType, isType, nObjects);
 }
 
 TQ3Status Q3Group_EmptyObjects(TQ3GroupObject group)
 {
-    return guardStatus(__func__, [&] { lookup<Group>(group, "group").empty(); });
+    return emptyOfType(__func__, group, kQ3ObjectTypeShared, kQ3ObjectTypeInvalid);
 }
 
 TQ3Status Q3Group_EmptyObjectsOfType(TQ3GroupObject group, TQ3ObjectType isType)
 {
-    return guardStatus(__func__, [&] { lookup<Group>(group, "group").empty(isType); });
+    return emptyOfType(__func__, group, isType, isType);
 }
 
 TQ3Status Q3Group_GetFirstPositionOfType(TQ3GroupObject group, TQ3ObjectType isType, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position, [&](const Group& g) { return g.first(isType); });
+    return walkOfType<TQ3XGroupGetFirstPositionOfTypeMethod>(__func__, group, isType, position,
+                                                             kQ3XMethodType_GroupGetFirstPositionOfType,
+                                                             [&](const Group& g) { return g.first(isType); });
 }
 
 TQ3Status Q3Group_GetLastPositionOfType(TQ3GroupObject group, TQ3ObjectType isType, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position, [&](const Group& g) { return g.last(isType); });
+    return walkOfType<TQ3XGroupGetLastPositionOfTypeMethod>(__func__, group, isType, position,
+                                                            kQ3XMethodType_GroupGetLastPositionOfType,
+                                                            [&](const Group& g) { return g.last(isType); });
 }
 
 TQ3Status Q3Group_GetNextPositionOfType(TQ3GroupObject group, TQ3ObjectType isType, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position, [&](const Group& g) { return g.next(*position, isType); });
+    return walkOfType<TQ3XGroupGetNextPositionOfTypeMethod>(
+        __func__, group, isType, position, kQ3XMethodType_GroupGetNextPositionOfType,
+        [&](const Group& g) { return g.next(*position, isType); });
 }
 
 TQ3Status Q3Group_GetPreviousPositionOfType(TQ3GroupObject group, TQ3ObjectType isType,
                                             TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position, [&](const Group& g) { return g.previous(*position, isType); });
+    return walkOfType<TQ3XGroupGetPrevPositionOfTypeMethod>(
+        __func__, group, isType, position, kQ3XMethodType_GroupGetPrevPositionOfType,
+        [&](const Group& g) { return g.previous(*position, isType); });
 }
 
 TQ3Status Q3Group_GetFirstObjectPosition(TQ3GroupObject group, TQ3Object object, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position,
-                [&](const Group& g) { return g.firstOf(lookupObject(object, "object")); });
+    return walkOfObject<TQ3XGroupGetFirstObjectPositionMethod>(
+        __func__, group, object, position, kQ3XMethodType_GroupGetFirstObjectPosition,
+        [&](const Group& g, const Object& o) { return g.firstOf(o); });
 }
 
 TQ3Status Q3Group_GetLastObjectPosition(TQ3GroupObject group, TQ3Object object, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position,
-                [&](const Group& g) { return g.lastOf(lookupObject(object, "object")); });
+    return walkOfObject<TQ3XGroupGetLastObjectPositionMethod>(
+        __func__, group, object, position, kQ3XMethodType_GroupGetLastObjectPosition,
+        [&](const Group& g, const Object& o) { return g.lastOf(o); });
 }
 
 TQ3Status Q3Group_GetNextObjectPosition(TQ3GroupObject group, TQ3Object object, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position,
-                [&](const Group& g) { return g.nextOf(*position, lookupObject(object, "object")); });
+    return walkOfObject<TQ3XGroupGetNextObjectPositionMethod>(
+        __func__, group, object, position, kQ3XMethodType_GroupGetNextObjectPosition,
+        [&](const Group& g, const Object& o) { return g.nextOf(*position, o); });
 }
 
 TQ3Status Q3Group_GetPreviousObjectPosition(TQ3GroupObject group, TQ3Object object, TQ3GroupPosition* position)
 {
-    return walk(__func__, group, position,
-                [&](const Group& g) { return g.previousOf(*position, lookupObject(object, "object")); });
+    return walkOfObject<TQ3XGroupGetPrevObjectPositionMethod>(
+        __func__, group, object, position, kQ3XMethodType_GroupGetPrevObjectPosition,
+        [&](const Group& g, const Object& o) { return g.previousOf(*position, o); });
 }
 
 TQ3ObjectType Q3DisplayGroup_GetType(TQ3GroupObject group)
@@ -263,6 +368,12 @@ TQ3Status Q3DisplayGroup_CalcAndUseBoundingBox(TQ3GroupObject group, TQ3ComputeB
         View& bounding = lookup<View>(view, "view");
         target.setBoundingBox(bounding.boundingBoxOf(target, computeBounds));
     });
+}
+
+void* Q3XGroup_GetPositionPrivate(TQ3GroupObject group, TQ3GroupPosition position)
+{
+    return guard(__func__, static_cast<void*>(nullptr),
+                 [&] { return positionPrivate(lookup<Group>(group, "group"), position); });
 }
 
 } // extern "C"

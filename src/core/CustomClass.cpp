@@ -3,6 +3,7 @@
 #include "core/CustomClass.h"
 
 #include "QD3DExtension.h"
+#include "QD3DGroup.h"
 #include "QD3DIO.h"
 #include "QD3DSet.h"
 
@@ -28,6 +29,17 @@ const TQ3XMethodType kKnownMethodTypes[] = {
     kQ3XMethodTypeObjectRead,           kQ3XMethodTypeObjectReadData,      kQ3XMethodTypeObjectAttach,
     kQ3XMethodTypeObjectSubmitRender,   kQ3XMethodTypeObjectSubmitPick,    kQ3XMethodTypeObjectSubmitBounds,
     kQ3XMethodTypeObjectFileVersion,
+    // QD3DGroup.h's group class methods (group/CustomGroup.h).
+    kQ3XMethodType_GroupAcceptObject,   kQ3XMethodType_GroupAddObject,     kQ3XMethodType_GroupAddObjectBefore,
+    kQ3XMethodType_GroupAddObjectAfter, kQ3XMethodType_GroupSetPositionObject, kQ3XMethodType_GroupRemovePosition,
+    kQ3XMethodType_GroupGetFirstPositionOfType, kQ3XMethodType_GroupGetLastPositionOfType,
+    kQ3XMethodType_GroupGetNextPositionOfType,  kQ3XMethodType_GroupGetPrevPositionOfType,
+    kQ3XMethodType_GroupCountObjectsOfType,     kQ3XMethodType_GroupEmptyObjectsOfType,
+    kQ3XMethodType_GroupGetFirstObjectPosition, kQ3XMethodType_GroupGetLastObjectPosition,
+    kQ3XMethodType_GroupGetNextObjectPosition,  kQ3XMethodType_GroupGetPrevObjectPosition,
+    kQ3XMethodType_GroupPositionSize,   kQ3XMethodType_GroupPositionNew,   kQ3XMethodType_GroupPositionCopy,
+    kQ3XMethodType_GroupPositionDelete, kQ3XMethodType_GroupStartIterate,  kQ3XMethodType_GroupEndIterate,
+    kQ3XMethodType_GroupEndRead,
 };
 const std::size_t kKnownMethodTypeCount = sizeof kKnownMethodTypes / sizeof kKnownMethodTypes[0];
 

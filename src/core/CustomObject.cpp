@@ -7,6 +7,8 @@
 #include "core/ShapeVisitor.h"
 
 #include <cstring>
+#include <map>
+#include <mutex>
 
 namespace q3 {
 
@@ -146,11 +148,75 @@ void CustomInstance::copyInto(TQ3Object self, CustomInstance& to, TQ3Object toHa
     }
 }
 
+namespace {
+
+struct Factories {
+    std::mutex mutex;
+    std::map<TQ3ObjectType, CustomBaseFactory> byBase;
+};
+
+Factories& factories()
+{
+    static auto* instance = new Factories;
+    return *instance;
+}
+
+CustomBaseFactory factoryFor(TQ3ObjectType base)
+{
+    Factories& all = factories();
+    std::lock_guard<std::mutex> lock(all.mutex);
+    const auto found = all.byBase.find(base);
+    return found == all.byBase.end() ? nullptr : found->second;
+}
+
+} // namespace
+
+bool registerCustomBase(TQ3ObjectType base, CustomBaseFactory factory)
+{
+    Factories& all = factories();
+    std::lock_guard<std::mutex> lock(all.mutex);
+    all.byBase[base] = factory;
+    return true;
+}
+
+const ClassInfo& builtInBaseOf(const CustomClass& leaf)
+{
+    const ClassInfo* info = &leaf.info();
+    while (info->parent != nullptr) {
+        const std::shared_ptr<CustomClass> custom = findCustomClass(info->type);
+        if (!custom || &custom->info() != info)
+            break;
+        info = info->parent;
+    }
+    return *info;
+}
+
+bool acceptsCustomSubclasses(TQ3ObjectType parentType)
+{
+    if (parentType == kQ3ObjectTypeInvalid || parentType == kQ3ObjectTypeShared || parentType == kQ3SharedTypeShape)
+        return true;
+    if (const std::shared_ptr<CustomClass> parent = findCustomClass(parentType))
+        return parent->kind() == CustomClass::Kind::kObject;
+    return factoryFor(parentType) != nullptr;
+}
+
+void* CustomInstance::leafData() const
+{
+    return m_blocks.empty() ? nullptr : m_blocks.back().second.get();
+}
+
 Object* CustomInstance::make(const std::shared_ptr<CustomClass>& leaf, void* parameters)
 {
     if (leaf->kind() != CustomClass::Kind::kObject)
         fail(kQ3ErrorInvalidObjectClass,
              "the class \"" + leaf->name() + "\" is an element class: Q3Set_Add makes its elements");
+    if (CustomBaseFactory factory = factoryFor(builtInBaseOf(*leaf).type)) {
+        std::unique_ptr<Object, void (*)(Object*)> made{factory(leaf), [](Object* object) { object->dispose(); }};
+        customInstanceOf(*made)->construct(made.get(), parameters);
+        if (made->isType(kQ3ObjectTypeShared))
+            static_cast<SharedObject&>(*made).clearEditTracking();
+        return made.release();
+    }
     if (leaf->info().isA(kQ3ObjectTypeShared)) {
         auto made = fresh<SharedObject>(leaf);
         static_cast<CustomObject<SharedObject>&>(*made).construct(made.get(), parameters);
@@ -196,7 +262,7 @@ void CustomInstance::submitThroughMethod(TQ3Object self) const
     if (t_submit.depth >= limits::kMaxGroupNesting)
         fail(kQ3ErrorInvalidObject, "a " + m_leaf->name() + " submits objects nested deeper than " +
                                         std::to_string(limits::kMaxGroupNesting) + " levels");
-    const void* data = m_blocks.empty() ? nullptr : m_blocks.back().second.get();
+    const void* data = leafData();
     ++t_submit.depth;
     TQ3Status status;
     try {
@@ -208,6 +274,11 @@ void CustomInstance::submitThroughMethod(TQ3Object self) const
     --t_submit.depth;
     if (status != kQ3Success)
         fail(kQ3ErrorInvalidParameter, "the submit method of the class \"" + m_leaf->name() + "\" failed");
+}
+
+TQ3Object customSubmitView()
+{
+    return t_submit.method == 0 ? nullptr : t_submit.view;
 }
 
 CustomInstance* customInstanceOf(Object& object)

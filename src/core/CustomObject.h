@@ -32,8 +32,12 @@ public:
 
     /// Makes an object of a registered object class and runs the new
     /// methods; throws kQ3ErrorInvalidParameter when one fails (the object
-    /// is gone again).
+    /// is gone again). A class under a class Q3 defines that has a factory
+    /// (registerCustomBase) is made by that factory.
     static Object* make(const std::shared_ptr<CustomClass>& leaf, void* parameters);
+
+    /// The instance data of the leaf class (null for size 0).
+    void* leafData() const;
 
 protected:
     explicit CustomInstance(std::shared_ptr<CustomClass> leaf);
@@ -57,6 +61,25 @@ private:
 /// The custom object found from a handle, or null when the object is of a
 /// class Q3 defines.
 CustomInstance* customInstanceOf(Object& object);
+
+/// Makes a bare object (registered live, no new method run yet) of a custom
+/// class whose nearest class Q3 defines is the one the factory was
+/// registered for; CustomInstance::make runs the new methods.
+using CustomBaseFactory = Object* (*)(std::shared_ptr<CustomClass> leaf);
+/// Lets applications register classes under the class of type `base` (one
+/// an upper layer defines, as group/ does for its groups); called once per
+/// class at static initialisation, so no list names them (a type, not a
+/// ClassInfo: another file's ClassInfo may not be constructed yet).
+bool registerCustomBase(TQ3ObjectType base, CustomBaseFactory factory);
+/// Whether an object class may be registered under parentType: TQ3Object,
+/// kQ3ObjectTypeShared, kQ3SharedTypeShape, a class with a factory, or a
+/// registered object class under one of them.
+bool acceptsCustomSubclasses(TQ3ObjectType parentType);
+/// The nearest class of the chain that no application registered.
+const ClassInfo& builtInBaseOf(const CustomClass& leaf);
+
+/// The view a CustomSubmitScope on this thread submits to, or null.
+TQ3Object customSubmitView();
 
 /// While a view submits a retained object (View::submit): the view's handle
 /// and the submit method type its loop calls (kQ3XMethodTypeObjectSubmitRender,

@@ -2,8 +2,6 @@
 // Copyright (c) 2026 The Q3 authors
 #include "group/Group.h"
 
-#include <unordered_map>
-
 #include "core/EnumValue.h"
 #include "core/Limits.h"
 #include "core/ShapeVisitor.h"
@@ -96,6 +94,13 @@ void Group::copyFrom(const Group& source)
             auto it = m_nodes.emplace(m_nodes.end(), copy);
             it->self = it;
             m_live.insert(&*it);
+            try {
+                positionCopied(node, *it);
+            } catch (...) {
+                m_live.erase(&*it);
+                m_nodes.erase(it);
+                throw;
+            }
         }
     } catch (...) {
         if (--depth == 0)
@@ -172,6 +177,13 @@ TQ3GroupPosition Group::insert(std::list<Node>::iterator where, Ref<SharedObject
     auto it = m_nodes.emplace(where, std::move(object));
     it->self = it;
     m_live.insert(&*it);
+    try {
+        positionAdded(*it);
+    } catch (...) {
+        m_live.erase(&*it);
+        m_nodes.erase(it);
+        throw;
+    }
     markEdited();
     return &*it;
 }
@@ -210,6 +222,7 @@ void Group::setObjectAt(TQ3GroupPosition position, Ref<SharedObject> object)
     const auto where = find(position);
     check(*object);
     checkPlace(where, *object, true);
+    // The position stays, with its private data.
     where->object = std::move(object);
     markEdited();
 }
@@ -217,6 +230,7 @@ void Group::setObjectAt(TQ3GroupPosition position, Ref<SharedObject> object)
 Ref<SharedObject> Group::remove(TQ3GroupPosition position)
 {
     const auto where = find(position);
+    positionRemoving(*where);
     Ref<SharedObject> object = std::move(where->object);
     m_live.erase(&*where);
     m_nodes.erase(where);
@@ -308,6 +322,7 @@ void Group::empty(TQ3ObjectType type)
     std::vector<Ref<SharedObject>> released;
     for (auto it = m_nodes.begin(); it != m_nodes.end();) {
         if (matches(*it->object, type)) {
+            positionRemoving(*it);
             released.push_back(std::move(it->object));
             m_live.erase(&*it);
             it = m_nodes.erase(it);

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <list>
+#include <memory>
 #include <optional>
 #include <unordered_set>
 #include <vector>
@@ -40,6 +41,9 @@ public:
         explicit Node(Ref<SharedObject> o) : object(std::move(o)) {}
         Ref<SharedObject> object;
         std::list<Node>::iterator self; ///< where the node is in its list
+        /// The position's private data, for a group class an application
+        /// registered with kQ3XMethodType_GroupPositionSize (else null).
+        std::unique_ptr<unsigned char[]> privateData;
     };
 
     Group() = default;
@@ -94,8 +98,24 @@ public:
     void addOtherElement(Ref<SharedObject> element) { m_others.push_back(std::move(element)); }
     /// Whether `object` is this group or inside it, at any depth.
     bool reaches(const Object& object) const;
+    /// The node a position names; kQ3ErrorInvalidPositionForGroup unless it
+    /// is one of this group's.
+    Node& nodeAt(TQ3GroupPosition position) { return *find(position); }
+    /// Whether the position is one of this group's.
+    bool owns(TQ3GroupPosition position) const { return m_live.count(position) != 0; }
+
+    /// Called when a file has given the group all its objects (a group class
+    /// an application registered validates itself then).
+    virtual void endRead() {}
 
 protected:
+    /// A position was made (`node` holds its object, already in the list),
+    /// is about to go, or was copied from another group's in a duplicate.
+    /// A group class an application registers keeps its position data so;
+    /// positionAdded may throw (the position is taken out again).
+    virtual void positionAdded(Node&) {}
+    virtual void positionRemoving(Node&) noexcept {}
+    virtual void positionCopied(const Node&, Node&) {}
     /// Where a new object of this kind goes when added without a position.
     virtual std::list<Node>::iterator insertionPoint(const Object& object);
     /// Whether object may stand at `where` (ordered groups check its kind).
@@ -158,7 +178,7 @@ private:
 /// A display group kept in QuickDraw 3D's order of kinds: transforms,
 /// styles, attribute sets, shaders, cameras, lights, geometries, groups,
 /// unknown objects (QD3DGroup.h); within a kind, in the order added.
-class OrderedDisplayGroup final : public DisplayGroup {
+class OrderedDisplayGroup : public DisplayGroup {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3DisplayGroupTypeOrdered;
 
@@ -175,7 +195,7 @@ protected:
 
 /// Alternative representations of one object, the most preferred first:
 /// drawing uses the first that is not an unknown object.
-class IOProxyDisplayGroup final : public DisplayGroup {
+class IOProxyDisplayGroup : public DisplayGroup {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3DisplayGroupTypeIOProxy;
 
@@ -185,7 +205,7 @@ public:
 };
 
 /// The lights a view is lit by (Q3View_SetLightGroup). Holds lights only.
-class LightGroup final : public Group {
+class LightGroup : public Group {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3GroupTypeLight;
 
@@ -195,7 +215,7 @@ public:
 };
 
 /// Strings describing a model. Holds string objects only.
-class InfoGroup final : public Group {
+class InfoGroup : public Group {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3GroupTypeInfo;
 

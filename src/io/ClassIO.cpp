@@ -278,6 +278,17 @@ void attachExtras(SharedObject& object, Extras extras)
         target.addCustomElement(std::move(element));
 }
 
+Ref<SharedObject> newCustomGroup(ReadContext& context, const Node& node, const std::shared_ptr<CustomClass>& custom)
+{
+    const Node& root = node.type == kTypeContainer && !node.children.empty() ? node.children.front() : node;
+    if (node.type == kTypeContainer || !context.reader(root).atEnd())
+        errors::postWarning(kQ3WarningNoObjectSupportForReadMethod,
+                            "the group class \"" + custom->name() +
+                                "\" has no read method (kQ3XMethodTypeObjectRead): the data of its own it holds in "
+                                "the file are left out");
+    return Ref<SharedObject>::adopt(static_cast<SharedObject*>(CustomInstance::make(custom, nullptr)));
+}
+
 // An object of an application's class, read by its read method; null when
 // it is none or cannot be read so (then it is an unknown object).
 Ref<SharedObject> customObjectFrom(ReadContext& context, const Node& node, TQ3ObjectType type)
@@ -285,6 +296,10 @@ Ref<SharedObject> customObjectFrom(ReadContext& context, const Node& node, TQ3Ob
     const std::shared_ptr<CustomClass> custom = type != 0 ? findCustomClass(type) : nullptr;
     if (!custom || custom->kind() != CustomClass::Kind::kObject)
         return {};
+    // A group class without a read method is a group with no data of its
+    // own: made as Q3XObjectHierarchy_NewObject makes it.
+    if (custom->info().isA(kQ3ShapeTypeGroup) && custom->method(kQ3XMethodTypeObjectRead) == nullptr)
+        return newCustomGroup(context, node, custom);
     return readCustomObject(context, node, *custom);
 }
 
@@ -429,6 +444,7 @@ Ref<SharedObject> ReadContext::sequenceItem(const std::vector<Node>& nodes, std:
         }
         group->add(std::move(member));
     }
+    group->endRead();
     m_done.emplace(&node, Ref<SharedObject>(group));
     return Ref<SharedObject>(std::move(group));
 }
@@ -444,15 +460,31 @@ Ref<SharedObject> ReadContext::groupOf(const Node& beginGroup)
         fail(kQ3ErrorInvalidMetafileObject, "a BeginGroup holds no group");
     const Node& first = children.front();
     if (children.size() == 1 || first.type == kTypeContainer || first.type == kTypeReference)
-        return Ref<SharedObject>(objectAs<Group>(first, "the object a BeginGroup holds"));
+        return groupObject(first);
     const ClassIO* entry = classOfType(first.type);
+    if (entry == nullptr) {
+        // A group class an application registered (or one nobody did): the
+        // group, then its state and the objects beside it.
+        Ref<SharedObject> read = groupObject(first);
+        auto& group = static_cast<Group&>(*read);
+        for (std::size_t i = 1; i < children.size(); ++i) {
+            if (children[i].type == kTypeDisplayGroupState) {
+                applyGroupState(*this, group, children[i]);
+                continue;
+            }
+            Ref<SharedObject> other = object(children[i]);
+            if (other->isType(kQ3ShapeTypeUnknown))
+                group.addOtherElement(std::move(other));
+            else
+                errors::postWarning(kQ3WarningInvalidSubObjectForObject,
+                                    std::string("a ") + group.classInfo().name + " holds a " +
+                                        other->classInfo().name + ", which is no part of a group; it is left out");
+        }
+        return read;
+    }
     Parts parts{first, {}, &m_file, &children};
     for (std::size_t i = 1; i < children.size(); ++i)
         parts.subobjects.push_back(&children[i]);
-    if (entry == nullptr)
-        fail(kQ3ErrorInvalidMetafileSubObject, "the object a BeginGroup holds is a " +
-                                                   (first.name.empty() ? typeName(first.type) : first.name) +
-                                                   ", no group");
     DepthGuard guard(m_depth);
     Extras extras = takeExtras(*this, parts);
     Ref<SharedObject> read = entry->read(*this, parts);
@@ -461,6 +493,26 @@ Ref<SharedObject> ReadContext::groupOf(const Node& beginGroup)
         fail(kQ3ErrorInvalidMetafileSubObject,
              std::string("the object a BeginGroup holds is a ") + read->classInfo().name + ", no group");
     return read;
+}
+
+Ref<SharedObject> ReadContext::groupObject(const Node& node)
+{
+    Ref<SharedObject> read = object(node);
+    if (read->isType(kQ3ShapeTypeGroup))
+        return read;
+    // A group of a class nobody registered (the warning said so): its
+    // objects go into a display group, which keeps the unknown object and
+    // writes it back.
+    if (read->isType(kQ3ShapeTypeUnknown)) {
+        errors::postWarning(kQ3WarningInvalidSubObjectForObject,
+                            "the group's class is unknown; its objects are read into a display group, which keeps "
+                            "the unknown object");
+        Ref<DisplayGroup> group = makeShared<DisplayGroup>();
+        group->addOtherElement(std::move(read));
+        return Ref<SharedObject>(std::move(group));
+    }
+    fail(kQ3ErrorInvalidMetafileSubObject,
+         std::string("the object a BeginGroup holds is a ") + read->classInfo().name + ", no group");
 }
 
 std::size_t ReadContext::groupStateAfter(SharedObject& group, const std::vector<Node>& nodes, std::size_t index,
@@ -533,7 +585,8 @@ void WriteContext::object(const Object& object)
     const CustomClass* custom = customWriterOf(object);
     const ClassIO customEntry{custom ? custom->type() : 0, custom ? custom->name().c_str() : "", nullptr,
                               writeCustomObject};
-    if (custom != nullptr)
+    // A group class writes as its parent group, under its own name (GroupIO).
+    if (custom != nullptr && !isGroup)
         entry = &customEntry;
     if (entry == nullptr) {
         errors::postWarning(kQ3WarningNoObjectSupportForWriteMethod,

@@ -141,6 +141,9 @@ public:
     Ref<SharedObject> sequenceItem(const std::vector<Node>& nodes, std::size_t& index);
     /// The (empty) group a BeginGroup node opens, with its state.
     Ref<SharedObject> groupOf(const Node& beginGroup);
+    /// The group object a BeginGroup starts with (an unknown one: a display
+    /// group keeping it, with a warning).
+    Ref<SharedObject> groupObject(const Node& node);
     /// Applies the DisplayGroupState objects that stand first among a
     /// group's members (from `index`, before `end`) to the group; returns
     /// the index of the first member after them.

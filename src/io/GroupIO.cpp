@@ -8,9 +8,11 @@
 
 #include "io/ClassIO.h"
 
+#include "core/CustomObject.h"
 #include "core/ErrorManager.h"
 #include "group/Group.h"
 #include "io/CustomElements.h"
+#include "io/CustomIO.h"
 #include "io/Unknown.h"
 
 #include <type_traits>
@@ -116,8 +118,16 @@ void writeGroup(WriteContext& context, const Object& object, TQ3ObjectType type,
         flags = fileFlags(state);
     }
     out.begin(kTypeBeginGroup, "BeginGroup");
-    out.begin(type, name);
-    out.end();
+    // A group class an application registered: its own name, and its data
+    // when its class writes any (its traverse method).
+    const CustomInstance* custom = customInstanceOf(const_cast<Object&>(object));
+    if (custom != nullptr && customWriterOf(object) != nullptr) {
+        writeCustomObject(context, object);
+    } else {
+        out.begin(custom ? custom->customClass().type() : type,
+                  custom ? custom->customClass().name().c_str() : name);
+        out.end();
+    }
     if (flags != 0) {
         out.begin(kTypeGroupState, "DisplayGroupState");
         out.flags(kStateFlags, flags);

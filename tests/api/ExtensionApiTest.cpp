@@ -269,11 +269,10 @@ TEST_F(ExtensionApiTest, RegistrationRefusesBadInput)
                                                                0, 0),
                               nullptr),
                     kQ3ErrorInvalidParameter);
-    // Geometries, renderers and groups cannot be subclassed (porting.md: no
-    // plug-in renderer or group class methods).
+    // Geometries and renderers cannot be subclassed (porting.md: no
+    // plug-in renderer methods); groups can (CustomGroupApiTest.cpp).
     for (TQ3ObjectType parent : {TQ3ObjectType(kQ3ShapeTypeGeometry), TQ3ObjectType(kQ3SharedTypeRenderer),
-                                 TQ3ObjectType(kQ3ShapeTypeGroup), TQ3ObjectType(kQ3GroupTypeDisplay),
-                                 TQ3ObjectType(Q3_OBJECT_TYPE('n', 'o', 'n', 'e'))})
+                                 TQ3ObjectType(kQ3ShapeTypeLight), TQ3ObjectType(Q3_OBJECT_TYPE('n', 'o', 'n', 'e'))})
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3XObjectHierarchy_RegisterClass(parent, &type, name, nullptr, nullptr, 0, 0),
                                   nullptr),
                         kQ3ErrorInvalidObjectClass);
