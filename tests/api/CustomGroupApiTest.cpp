@@ -16,6 +16,7 @@
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
 #include "QD3DLight.h"
+#include "QD3DPick.h"
 #include "QD3DString.h"
 
 #include <cstring>
@@ -523,6 +524,50 @@ TEST_F(CustomGroupApiTest, ADisplayGroupClassDrawsWhatItsIterateMethodsPassBack)
     Q3Object_Dispose(plain);
     unregister(lastOnly);
     unregister(plainClass);
+}
+
+TEST_F(CustomGroupApiTest, PickHitsNameThePositionTheIterateMethodsDrew)
+{
+    TQ3XObjectClass lastOnly = registerClass(kQ3GroupTypeDisplay, "Test:PickLast", lastOnlyMetaHandler);
+    TQ3Object chooser = Q3XObjectHierarchy_NewObject(lastOnly, nullptr);
+    ASSERT_NE(chooser, nullptr);
+    // Two triangles on the ray's line (the z axis through x = y = 0.25):
+    // only the last is drawn, so only it is hit.
+    TQ3GeometryObject first = own(newTriangle(0));
+    TQ3GeometryObject last = own(newTriangle(0));
+    EXPECT_NE(Q3Group_AddObject(chooser, first), nullptr);
+    const TQ3GroupPosition lastPosition = Q3Group_AddObject(chooser, last);
+    ASSERT_NE(lastPosition, nullptr);
+    TQ3WorldRayPickData ray{};
+    ray.data.sort = kQ3PickSortNearToFar;
+    ray.data.mask = kQ3PickDetailMaskObject | kQ3PickDetailMaskPath;
+    ray.data.numHitsToReturn = kQ3ReturnAllHits;
+    ray.ray.origin = {0.25f, 0.25f, 5};
+    ray.ray.direction = {0, 0, -1};
+    TQ3PickObject pick = Q3WorldRayPick_New(&ray); // its hits hold the group: disposed before unregistering
+    ASSERT_EQ(Q3View_StartPicking(view(), pick), kQ3Success);
+    TQ3ViewStatus status;
+    do {
+        Q3Object_Submit(chooser, view());
+        status = Q3View_EndPicking(view());
+    } while (status == kQ3ViewStatusRetraverse);
+    EXPECT_EQ(status, kQ3ViewStatusDone);
+    unsigned long hits = 0;
+    ASSERT_EQ(Q3Pick_GetNumHits(pick, &hits), kQ3Success);
+    ASSERT_EQ(hits, 1u);
+    TQ3Object hit = nullptr;
+    ASSERT_EQ(Q3Pick_GetPickDetailData(pick, 0, kQ3PickDetailMaskObject, &hit), kQ3Success);
+    EXPECT_EQ(hit, last);
+    Q3Object_Dispose(hit);
+    TQ3HitPath path{};
+    ASSERT_EQ(Q3Pick_GetPickDetailData(pick, 0, kQ3PickDetailMaskPath, &path), kQ3Success);
+    EXPECT_EQ(path.rootGroup, chooser);
+    ASSERT_EQ(path.depth, 1u);
+    EXPECT_EQ(path.positions[0], lastPosition);
+    EXPECT_EQ(Q3HitPath_EmptyData(&path), kQ3Success);
+    Q3Object_Dispose(pick);
+    Q3Object_Dispose(chooser);
+    unregister(lastOnly);
 }
 
 TEST_F(CustomGroupApiTest, AGroupClassRoundTripsThrough3DMFUnderItsName)
