@@ -141,7 +141,7 @@ Ref<SharedObject> readOrthographic(ReadContext& context, const Parts& parts)
 
 void writeOrthographic(WriteContext& context, const Object& object)
 {
-    const TQ3OrthographicCameraData data = static_cast<const OrthographicCamera&>(object).orthographicData();
+    const TQ3OrthographicCameraData data = static_cast<const OrthographicCamera&>(object).kindData();
     maybeContainer(context, true, [&] {
         Encoder& out = context.out();
         out.begin(kQ3CameraTypeOrthographic, "OrthographicCamera");
@@ -170,7 +170,7 @@ Ref<SharedObject> readViewPlane(ReadContext& context, const Parts& parts)
 
 void writeViewPlane(WriteContext& context, const Object& object)
 {
-    const TQ3ViewPlaneCameraData data = static_cast<const ViewPlaneCamera&>(object).viewPlaneData();
+    const TQ3ViewPlaneCameraData data = static_cast<const ViewPlaneCamera&>(object).kindData();
     maybeContainer(context, true, [&] {
         Encoder& out = context.out();
         out.begin(kQ3CameraTypeViewPlane, "ViewPlaneCamera");
@@ -198,7 +198,7 @@ Ref<SharedObject> readViewAngleAspect(ReadContext& context, const Parts& parts)
 void writeViewAngleAspect(WriteContext& context, const Object& object)
 {
     const TQ3ViewAngleAspectCameraData data =
-        static_cast<const ViewAngleAspectCamera&>(object).viewAngleAspectData();
+        static_cast<const ViewAngleAspectCamera&>(object).kindData();
     maybeContainer(context, true, [&] {
         Encoder& out = context.out();
         out.begin(kQ3CameraTypeViewAngleAspect, "ViewAngleAspectCamera");

@@ -207,50 +207,17 @@ void OrthographicCamera::validate(const TQ3OrthographicCameraData& data)
         invalid("top equals bottom, so the visible rectangle has no height");
 }
 
-OrthographicCamera::OrthographicCamera(const TQ3OrthographicCameraData& data)
-    : Camera(data.cameraData), m_left(data.left), m_top(data.top), m_right(data.right),
-      m_bottom(data.bottom)
-{
-}
-
-Object* OrthographicCamera::duplicate() const
-{
-    return makeShared<OrthographicCamera>(orthographicData()).detach();
-}
-
-TQ3OrthographicCameraData OrthographicCamera::orthographicData() const
-{
-    return {data(), m_left, m_top, m_right, m_bottom};
-}
-
-void OrthographicCamera::setOrthographicData(const TQ3OrthographicCameraData& data)
-{
-    validate(data);
-    assignCommon(data.cameraData);
-    m_left = data.left;
-    m_top = data.top;
-    m_right = data.right;
-    m_bottom = data.bottom;
-    markEdited();
-}
-
-void OrthographicCamera::setField(float TQ3OrthographicCameraData::*field, float value)
-{
-    TQ3OrthographicCameraData data = orthographicData();
-    data.*field = value;
-    setOrthographicData(data);
-}
-
 Matrix OrthographicCamera::projection() const
 {
-    const double width = double(m_right) - double(m_left);
-    const double height = double(m_top) - double(m_bottom);
+    const TQ3OrthographicCameraData& bounds = kind();
+    const double width = double(bounds.right) - double(bounds.left);
+    const double height = double(bounds.top) - double(bounds.bottom);
     const double depth = double(data().range.yon) - double(data().range.hither);
     Matrix m(1.0);
     m[0][0] = 2.0 / width;
-    m[3][0] = -(double(m_right) + double(m_left)) / width;
+    m[3][0] = -(double(bounds.right) + double(bounds.left)) / width;
     m[1][1] = 2.0 / height;
-    m[3][1] = -(double(m_top) + double(m_bottom)) / height;
+    m[3][1] = -(double(bounds.top) + double(bounds.bottom)) / height;
     m[2][2] = 1.0 / depth;
     m[3][2] = double(data().range.hither) / depth;
     return m;
@@ -270,49 +237,14 @@ void ViewPlaneCamera::validate(const TQ3ViewPlaneCameraData& data)
         invalid("halfWidthAtViewPlane and halfHeightAtViewPlane must be greater than 0");
 }
 
-ViewPlaneCamera::ViewPlaneCamera(const TQ3ViewPlaneCameraData& data)
-    : Camera(data.cameraData), m_viewPlane(data.viewPlane), m_halfWidth(data.halfWidthAtViewPlane),
-      m_halfHeight(data.halfHeightAtViewPlane), m_centerX(data.centerXOnViewPlane),
-      m_centerY(data.centerYOnViewPlane)
-{
-}
-
-Object* ViewPlaneCamera::duplicate() const
-{
-    return makeShared<ViewPlaneCamera>(viewPlaneData()).detach();
-}
-
-TQ3ViewPlaneCameraData ViewPlaneCamera::viewPlaneData() const
-{
-    return {data(), m_viewPlane, m_halfWidth, m_halfHeight, m_centerX, m_centerY};
-}
-
-void ViewPlaneCamera::setViewPlaneData(const TQ3ViewPlaneCameraData& data)
-{
-    validate(data);
-    assignCommon(data.cameraData);
-    m_viewPlane = data.viewPlane;
-    m_halfWidth = data.halfWidthAtViewPlane;
-    m_halfHeight = data.halfHeightAtViewPlane;
-    m_centerX = data.centerXOnViewPlane;
-    m_centerY = data.centerYOnViewPlane;
-    markEdited();
-}
-
-void ViewPlaneCamera::setField(float TQ3ViewPlaneCameraData::*field, float value)
-{
-    TQ3ViewPlaneCameraData data = viewPlaneData();
-    data.*field = value;
-    setViewPlaneData(data);
-}
-
 Matrix ViewPlaneCamera::projection() const
 {
+    const TQ3ViewPlaneCameraData& plane = kind();
     Matrix m = perspectiveDepth(data().range);
-    m[0][0] = double(m_viewPlane) / m_halfWidth;
-    m[2][0] = double(m_centerX) / m_halfWidth;
-    m[1][1] = double(m_viewPlane) / m_halfHeight;
-    m[2][1] = double(m_centerY) / m_halfHeight;
+    m[0][0] = double(plane.viewPlane) / plane.halfWidthAtViewPlane;
+    m[2][0] = double(plane.centerXOnViewPlane) / plane.halfWidthAtViewPlane;
+    m[1][1] = double(plane.viewPlane) / plane.halfHeightAtViewPlane;
+    m[2][1] = double(plane.centerYOnViewPlane) / plane.halfHeightAtViewPlane;
     return m;
 }
 
@@ -327,43 +259,12 @@ void ViewAngleAspectCamera::validate(const TQ3ViewAngleAspectCameraData& data)
         invalid("aspectRatioXToY must be greater than 0");
 }
 
-ViewAngleAspectCamera::ViewAngleAspectCamera(const TQ3ViewAngleAspectCameraData& data)
-    : Camera(data.cameraData), m_fov(data.fov), m_aspect(data.aspectRatioXToY)
-{
-}
-
-Object* ViewAngleAspectCamera::duplicate() const
-{
-    return makeShared<ViewAngleAspectCamera>(viewAngleAspectData()).detach();
-}
-
-TQ3ViewAngleAspectCameraData ViewAngleAspectCamera::viewAngleAspectData() const
-{
-    return {data(), m_fov, m_aspect};
-}
-
-void ViewAngleAspectCamera::setViewAngleAspectData(const TQ3ViewAngleAspectCameraData& data)
-{
-    validate(data);
-    assignCommon(data.cameraData);
-    m_fov = data.fov;
-    m_aspect = data.aspectRatioXToY;
-    markEdited();
-}
-
-void ViewAngleAspectCamera::setField(float TQ3ViewAngleAspectCameraData::*field, float value)
-{
-    TQ3ViewAngleAspectCameraData data = viewAngleAspectData();
-    data.*field = value;
-    setViewAngleAspectData(data);
-}
-
 Matrix ViewAngleAspectCamera::projection() const
 {
     // fov spans the narrower dimension: vertical when the view is at least as
     // wide as it is high.
-    const double across = cotangent(double(m_fov) / 2.0);
-    const double aspect = m_aspect;
+    const double across = cotangent(double(kind().fov) / 2.0);
+    const double aspect = kind().aspectRatioXToY;
     Matrix m = perspectiveDepth(data().range);
     m[0][0] = aspect >= 1.0 ? across / aspect : across;
     m[1][1] = aspect >= 1.0 ? across : across * aspect;
