@@ -29,6 +29,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace q3 {
@@ -59,6 +60,14 @@ void requireFinite(float value, const char* name)
 {
     if (!std::isfinite(value))
         invalid(std::string(name) + " is not a finite number");
+}
+
+// A camera kind's own fields, each finite, in their order.
+template <class Data, std::size_t N>
+void requireFinite(const Data& data, const CameraField<Data> (&fields)[N])
+{
+    for (const CameraField<Data>& field : fields)
+        requireFinite(data.*field.member, field.name);
 }
 
 glm::dvec3 toVec(const TQ3Point3D& p)
@@ -197,10 +206,7 @@ Matrix Camera::viewToFrustum() const
 void OrthographicCamera::validate(const TQ3OrthographicCameraData& data)
 {
     validateCameraData(data.cameraData, false);
-    requireFinite(data.left, "left");
-    requireFinite(data.top, "top");
-    requireFinite(data.right, "right");
-    requireFinite(data.bottom, "bottom");
+    requireFinite(data, kFields);
     if (data.left == data.right)
         invalid("left equals right, so the visible rectangle has no width");
     if (data.top == data.bottom)
@@ -226,11 +232,7 @@ Matrix OrthographicCamera::projection() const
 void ViewPlaneCamera::validate(const TQ3ViewPlaneCameraData& data)
 {
     validateCameraData(data.cameraData, true);
-    requireFinite(data.viewPlane, "viewPlane");
-    requireFinite(data.halfWidthAtViewPlane, "halfWidthAtViewPlane");
-    requireFinite(data.halfHeightAtViewPlane, "halfHeightAtViewPlane");
-    requireFinite(data.centerXOnViewPlane, "centerXOnViewPlane");
-    requireFinite(data.centerYOnViewPlane, "centerYOnViewPlane");
+    requireFinite(data, kFields);
     if (!(data.viewPlane > 0.0f))
         invalid("viewPlane must be greater than 0");
     if (!(data.halfWidthAtViewPlane > 0.0f) || !(data.halfHeightAtViewPlane > 0.0f))
@@ -251,8 +253,7 @@ Matrix ViewPlaneCamera::projection() const
 void ViewAngleAspectCamera::validate(const TQ3ViewAngleAspectCameraData& data)
 {
     validateCameraData(data.cameraData, true);
-    requireFinite(data.fov, "fov");
-    requireFinite(data.aspectRatioXToY, "aspectRatioXToY");
+    requireFinite(data, kFields);
     if (!(data.fov > 0.0f) || !(double(data.fov) < kPi))
         invalid("fov " + std::to_string(data.fov) + " is not between 0 and pi radians");
     if (!(data.aspectRatioXToY > 0.0f))

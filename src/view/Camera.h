@@ -66,6 +66,16 @@ private:
     TQ3CameraData m_data;
 };
 
+/// One of a camera kind's own fields, all floats, and its name in
+/// QD3DCamera.h. A kind lists them in its struct's order (Self::kFields):
+/// validation checks each to be finite in that order, and a 3DMF camera object
+/// holds them in that order (io/CameraIO.cpp).
+template <class Data>
+struct CameraField {
+    float Data::*member;
+    const char* name;
+};
+
 /// What every kind of camera shares: its whole data struct (Data, whose
 /// first field is the common TQ3CameraData) read and replaced as one, and one
 /// float field replaced through the same checks. Self::validate(const Data&)
@@ -123,6 +133,9 @@ private:
 class OrthographicCamera final : public CameraKind<OrthographicCamera, TQ3OrthographicCameraData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3CameraTypeOrthographic;
+    using Data = TQ3OrthographicCameraData;
+    static constexpr CameraField<Data> kFields[] = {
+        {&Data::left, "left"}, {&Data::top, "top"}, {&Data::right, "right"}, {&Data::bottom, "bottom"}};
 
     /// Throws kQ3ErrorInvalidCameraValues on data that break a rule.
     static void validate(const TQ3OrthographicCameraData& data);
@@ -142,6 +155,12 @@ protected:
 class ViewPlaneCamera final : public CameraKind<ViewPlaneCamera, TQ3ViewPlaneCameraData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3CameraTypeViewPlane;
+    using Data = TQ3ViewPlaneCameraData;
+    static constexpr CameraField<Data> kFields[] = {{&Data::viewPlane, "viewPlane"},
+                                                    {&Data::halfWidthAtViewPlane, "halfWidthAtViewPlane"},
+                                                    {&Data::halfHeightAtViewPlane, "halfHeightAtViewPlane"},
+                                                    {&Data::centerXOnViewPlane, "centerXOnViewPlane"},
+                                                    {&Data::centerYOnViewPlane, "centerYOnViewPlane"}};
 
     static void validate(const TQ3ViewPlaneCameraData& data);
     explicit ViewPlaneCamera(const TQ3ViewPlaneCameraData& data) : CameraKind(data) {}
@@ -159,6 +178,9 @@ protected:
 class ViewAngleAspectCamera final : public CameraKind<ViewAngleAspectCamera, TQ3ViewAngleAspectCameraData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3CameraTypeViewAngleAspect;
+    using Data = TQ3ViewAngleAspectCameraData;
+    static constexpr CameraField<Data> kFields[] = {{&Data::fov, "fov"},
+                                                    {&Data::aspectRatioXToY, "aspectRatioXToY"}};
 
     static void validate(const TQ3ViewAngleAspectCameraData& data);
     explicit ViewAngleAspectCamera(const TQ3ViewAngleAspectCameraData& data) : CameraKind(data) {}
