@@ -411,7 +411,7 @@ Ref<SharedObject> readTranslate(ReadContext& context, const Parts& parts)
 void writeTranslate(WriteContext& context, const Object& object)
 {
     context.out().begin(kQ3TransformTypeTranslate, "Translate");
-    context.out().vector3D(static_cast<const TranslateTransform&>(object).translate());
+    context.out().vector3D(static_cast<const TranslateTransform&>(object).value());
     context.out().end();
 }
 
@@ -424,7 +424,7 @@ Ref<SharedObject> readScale(ReadContext& context, const Parts& parts)
 void writeScale(WriteContext& context, const Object& object)
 {
     context.out().begin(kQ3TransformTypeScale, "Scale");
-    context.out().vector3D(static_cast<const ScaleTransform&>(object).scale());
+    context.out().vector3D(static_cast<const ScaleTransform&>(object).value());
     context.out().end();
 }
 
@@ -439,7 +439,7 @@ Ref<SharedObject> readRotate(ReadContext& context, const Parts& parts)
 
 void writeRotate(WriteContext& context, const Object& object)
 {
-    const TQ3RotateTransformData& data = static_cast<const RotateTransform&>(object).data();
+    const TQ3RotateTransformData& data = static_cast<const RotateTransform&>(object).value();
     context.out().begin(kQ3TransformTypeRotate, "Rotate");
     context.out().choice(kAxis, static_cast<std::uint32_t>(data.axis));
     context.out().f32(data.radians);
@@ -459,7 +459,7 @@ Ref<SharedObject> readQuaternion(ReadContext& context, const Parts& parts)
 
 void writeQuaternion(WriteContext& context, const Object& object)
 {
-    const TQ3Quaternion& q = static_cast<const QuaternionTransform&>(object).quaternion();
+    const TQ3Quaternion& q = static_cast<const QuaternionTransform&>(object).value();
     Encoder& out = context.out();
     out.begin(kQ3TransformTypeQuaternion, "Quaternion");
     out.f32(q.w);
@@ -481,7 +481,7 @@ Ref<SharedObject> readRotateAboutPoint(ReadContext& context, const Parts& parts)
 
 void writeRotateAboutPoint(WriteContext& context, const Object& object)
 {
-    const TQ3RotateAboutPointTransformData& data = static_cast<const RotateAboutPointTransform&>(object).data();
+    const TQ3RotateAboutPointTransformData& data = static_cast<const RotateAboutPointTransform&>(object).value();
     Encoder& out = context.out();
     out.begin(kQ3TransformTypeRotateAboutPoint, "RotateAboutPoint");
     out.choice(kAxis, static_cast<std::uint32_t>(data.axis));
@@ -502,7 +502,7 @@ Ref<SharedObject> readRotateAboutAxis(ReadContext& context, const Parts& parts)
 
 void writeRotateAboutAxis(WriteContext& context, const Object& object)
 {
-    const TQ3RotateAboutAxisTransformData& data = static_cast<const RotateAboutAxisTransform&>(object).data();
+    const TQ3RotateAboutAxisTransformData& data = static_cast<const RotateAboutAxisTransform&>(object).value();
     Encoder& out = context.out();
     out.begin(kQ3TransformTypeRotateAboutAxis, "RotateAboutAxis");
     out.point3D(data.origin);
