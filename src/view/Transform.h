@@ -62,6 +62,8 @@ protected:
 template <class Self, class Value, void (*Validate)(const Value&)>
 class ValueTransform : public Transform {
 public:
+    using ValueType = Value;
+
     /// Throws as Validate.
     explicit ValueTransform(const Value& value) : m_value(value) { Validate(value); }
 
