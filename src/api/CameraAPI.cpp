@@ -7,6 +7,54 @@
 using namespace q3;
 using namespace q3::api;
 
+namespace {
+
+// The calls every camera kind C (view/Camera.h's CameraKind) has, in
+// QD3DCamera.h's order: the handle, then the pointer, then the kind's rules.
+
+template <class C>
+TQ3CameraObject newCamera(const char* function, const typename C::DataType* data, const char* dataName)
+{
+    return guard(function, TQ3CameraObject{nullptr}, [&]() -> TQ3CameraObject {
+        requireNonNull(data, dataName);
+        C::validate(*data);
+        return makeShared<C>(*data).detach();
+    });
+}
+
+template <class C>
+TQ3Status getCameraData(const char* function, TQ3CameraObject camera, typename C::DataType* data)
+{
+    return getValue<C>(function, camera, "camera", data, "cameraData", &C::kindData);
+}
+
+template <class C>
+TQ3Status setCameraData(const char* function, TQ3CameraObject camera, const typename C::DataType* data)
+{
+    return setValue<C>(function, camera, "camera", data, "cameraData", &C::setKindData);
+}
+
+template <class C>
+TQ3Status getCameraField(const char* function, TQ3CameraObject camera, float* value, const char* valueName,
+                         float C::DataType::*field)
+{
+    return getValue<C>(function, camera, "camera", value, valueName,
+                       [&](const C& source) { return source.kindData().*field; });
+}
+
+/// Through C::setField: the whole data's checks, nothing changed on failure.
+template <class C>
+TQ3Status setCameraField(const char* function, TQ3CameraObject camera, float value, float C::DataType::*field)
+{
+    return guardStatus(function, [&] { lookup<C>(camera, "camera").setField(field, value); });
+}
+
+using OrthographicData = TQ3OrthographicCameraData;
+using ViewPlaneData = TQ3ViewPlaneCameraData;
+using ViewAngleAspectData = TQ3ViewAngleAspectCameraData;
+
+} // namespace
+
 extern "C" {
 
 TQ3ObjectType Q3Camera_GetType(TQ3CameraObject camera)
@@ -77,227 +125,168 @@ TQ3Status Q3Camera_GetWorldToFrustum(TQ3CameraObject camera, TQ3Matrix4x4* world
 
 TQ3CameraObject Q3OrthographicCamera_New(const TQ3OrthographicCameraData* orthographicData)
 {
-    return guard(__func__, TQ3CameraObject{nullptr}, [&]() -> TQ3CameraObject {
-        requireNonNull(orthographicData, "orthographicData");
-        OrthographicCamera::validate(*orthographicData);
-        return makeShared<OrthographicCamera>(*orthographicData).detach();
-    });
+    return newCamera<OrthographicCamera>(__func__, orthographicData, "orthographicData");
 }
 
 TQ3Status Q3OrthographicCamera_GetData(TQ3CameraObject camera, TQ3OrthographicCameraData* cameraData)
 {
-    return getValue<OrthographicCamera>(__func__, camera, "camera", cameraData, "cameraData",
-                                        &OrthographicCamera::orthographicData);
+    return getCameraData<OrthographicCamera>(__func__, camera, cameraData);
 }
 
 TQ3Status Q3OrthographicCamera_SetData(TQ3CameraObject camera,
                                        const TQ3OrthographicCameraData* cameraData)
 {
-    return setValue<OrthographicCamera>(__func__, camera, "camera", cameraData, "cameraData",
-                                        &OrthographicCamera::setOrthographicData);
+    return setCameraData<OrthographicCamera>(__func__, camera, cameraData);
 }
 
 TQ3Status Q3OrthographicCamera_SetLeft(TQ3CameraObject camera, float left)
 {
-    return guardStatus(__func__, [&] {
-        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
-        target.setField(&TQ3OrthographicCameraData::left, left);
-    });
+    return setCameraField<OrthographicCamera>(__func__, camera, left, &OrthographicData::left);
 }
 
 TQ3Status Q3OrthographicCamera_GetLeft(TQ3CameraObject camera, float* left)
 {
-    return getValue<OrthographicCamera>(__func__, camera, "camera", left, "left",
-                                        [](const OrthographicCamera& c) { return c.orthographicData().left; });
+    return getCameraField<OrthographicCamera>(__func__, camera, left, "left", &OrthographicData::left);
 }
 
 TQ3Status Q3OrthographicCamera_SetTop(TQ3CameraObject camera, float top)
 {
-    return guardStatus(__func__, [&] {
-        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
-        target.setField(&TQ3OrthographicCameraData::top, top);
-    });
+    return setCameraField<OrthographicCamera>(__func__, camera, top, &OrthographicData::top);
 }
 
 TQ3Status Q3OrthographicCamera_GetTop(TQ3CameraObject camera, float* top)
 {
-    return getValue<OrthographicCamera>(__func__, camera, "camera", top, "top",
-                                        [](const OrthographicCamera& c) { return c.orthographicData().top; });
+    return getCameraField<OrthographicCamera>(__func__, camera, top, "top", &OrthographicData::top);
 }
 
 TQ3Status Q3OrthographicCamera_SetRight(TQ3CameraObject camera, float right)
 {
-    return guardStatus(__func__, [&] {
-        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
-        target.setField(&TQ3OrthographicCameraData::right, right);
-    });
+    return setCameraField<OrthographicCamera>(__func__, camera, right, &OrthographicData::right);
 }
 
 TQ3Status Q3OrthographicCamera_GetRight(TQ3CameraObject camera, float* right)
 {
-    return getValue<OrthographicCamera>(__func__, camera, "camera", right, "right",
-                                        [](const OrthographicCamera& c) { return c.orthographicData().right; });
+    return getCameraField<OrthographicCamera>(__func__, camera, right, "right", &OrthographicData::right);
 }
 
 TQ3Status Q3OrthographicCamera_SetBottom(TQ3CameraObject camera, float bottom)
 {
-    return guardStatus(__func__, [&] {
-        OrthographicCamera& target = lookup<OrthographicCamera>(camera, "camera");
-        target.setField(&TQ3OrthographicCameraData::bottom, bottom);
-    });
+    return setCameraField<OrthographicCamera>(__func__, camera, bottom, &OrthographicData::bottom);
 }
 
 TQ3Status Q3OrthographicCamera_GetBottom(TQ3CameraObject camera, float* bottom)
 {
-    return getValue<OrthographicCamera>(__func__, camera, "camera", bottom, "bottom",
-                                        [](const OrthographicCamera& c) { return c.orthographicData().bottom; });
+    return getCameraField<OrthographicCamera>(__func__, camera, bottom, "bottom", &OrthographicData::bottom);
 }
 
 TQ3CameraObject Q3ViewPlaneCamera_New(const TQ3ViewPlaneCameraData* cameraData)
 {
-    return guard(__func__, TQ3CameraObject{nullptr}, [&]() -> TQ3CameraObject {
-        requireNonNull(cameraData, "cameraData");
-        ViewPlaneCamera::validate(*cameraData);
-        return makeShared<ViewPlaneCamera>(*cameraData).detach();
-    });
+    return newCamera<ViewPlaneCamera>(__func__, cameraData, "cameraData");
 }
 
 TQ3Status Q3ViewPlaneCamera_GetData(TQ3CameraObject camera, TQ3ViewPlaneCameraData* cameraData)
 {
-    return getValue<ViewPlaneCamera>(__func__, camera, "camera", cameraData, "cameraData",
-                                     &ViewPlaneCamera::viewPlaneData);
+    return getCameraData<ViewPlaneCamera>(__func__, camera, cameraData);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetData(TQ3CameraObject camera, const TQ3ViewPlaneCameraData* cameraData)
 {
-    return setValue<ViewPlaneCamera>(__func__, camera, "camera", cameraData, "cameraData",
-                                     &ViewPlaneCamera::setViewPlaneData);
+    return setCameraData<ViewPlaneCamera>(__func__, camera, cameraData);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetViewPlane(TQ3CameraObject camera, float viewPlane)
 {
-    return guardStatus(__func__, [&] {
-        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
-        target.setField(&TQ3ViewPlaneCameraData::viewPlane, viewPlane);
-    });
+    return setCameraField<ViewPlaneCamera>(__func__, camera, viewPlane, &ViewPlaneData::viewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_GetViewPlane(TQ3CameraObject camera, float* viewPlane)
 {
-    return getValue<ViewPlaneCamera>(__func__, camera, "camera", viewPlane, "viewPlane",
-                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().viewPlane; });
+    return getCameraField<ViewPlaneCamera>(__func__, camera, viewPlane, "viewPlane", &ViewPlaneData::viewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetHalfWidth(TQ3CameraObject camera, float halfWidthAtViewPlane)
 {
-    return guardStatus(__func__, [&] {
-        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
-        target.setField(&TQ3ViewPlaneCameraData::halfWidthAtViewPlane, halfWidthAtViewPlane);
-    });
+    return setCameraField<ViewPlaneCamera>(__func__, camera, halfWidthAtViewPlane,
+                                           &ViewPlaneData::halfWidthAtViewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_GetHalfWidth(TQ3CameraObject camera, float* halfWidthAtViewPlane)
 {
-    return getValue<ViewPlaneCamera>(__func__, camera, "camera", halfWidthAtViewPlane, "halfWidthAtViewPlane",
-                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().halfWidthAtViewPlane; });
+    return getCameraField<ViewPlaneCamera>(__func__, camera, halfWidthAtViewPlane, "halfWidthAtViewPlane",
+                                           &ViewPlaneData::halfWidthAtViewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetHalfHeight(TQ3CameraObject camera, float halfHeightAtViewPlane)
 {
-    return guardStatus(__func__, [&] {
-        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
-        target.setField(&TQ3ViewPlaneCameraData::halfHeightAtViewPlane, halfHeightAtViewPlane);
-    });
+    return setCameraField<ViewPlaneCamera>(__func__, camera, halfHeightAtViewPlane,
+                                           &ViewPlaneData::halfHeightAtViewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_GetHalfHeight(TQ3CameraObject camera, float* halfHeightAtViewPlane)
 {
-    return getValue<ViewPlaneCamera>(__func__, camera, "camera", halfHeightAtViewPlane, "halfHeightAtViewPlane",
-                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().halfHeightAtViewPlane; });
+    return getCameraField<ViewPlaneCamera>(__func__, camera, halfHeightAtViewPlane, "halfHeightAtViewPlane",
+                                           &ViewPlaneData::halfHeightAtViewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetCenterX(TQ3CameraObject camera, float centerXOnViewPlane)
 {
-    return guardStatus(__func__, [&] {
-        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
-        target.setField(&TQ3ViewPlaneCameraData::centerXOnViewPlane, centerXOnViewPlane);
-    });
+    return setCameraField<ViewPlaneCamera>(__func__, camera, centerXOnViewPlane, &ViewPlaneData::centerXOnViewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_GetCenterX(TQ3CameraObject camera, float* centerXOnViewPlane)
 {
-    return getValue<ViewPlaneCamera>(__func__, camera, "camera", centerXOnViewPlane, "centerXOnViewPlane",
-                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().centerXOnViewPlane; });
+    return getCameraField<ViewPlaneCamera>(__func__, camera, centerXOnViewPlane, "centerXOnViewPlane",
+                                           &ViewPlaneData::centerXOnViewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_SetCenterY(TQ3CameraObject camera, float centerYOnViewPlane)
 {
-    return guardStatus(__func__, [&] {
-        ViewPlaneCamera& target = lookup<ViewPlaneCamera>(camera, "camera");
-        target.setField(&TQ3ViewPlaneCameraData::centerYOnViewPlane, centerYOnViewPlane);
-    });
+    return setCameraField<ViewPlaneCamera>(__func__, camera, centerYOnViewPlane, &ViewPlaneData::centerYOnViewPlane);
 }
 
 TQ3Status Q3ViewPlaneCamera_GetCenterY(TQ3CameraObject camera, float* centerYOnViewPlane)
 {
-    return getValue<ViewPlaneCamera>(__func__, camera, "camera", centerYOnViewPlane, "centerYOnViewPlane",
-                                     [](const ViewPlaneCamera& c) { return c.viewPlaneData().centerYOnViewPlane; });
+    return getCameraField<ViewPlaneCamera>(__func__, camera, centerYOnViewPlane, "centerYOnViewPlane",
+                                           &ViewPlaneData::centerYOnViewPlane);
 }
 
 TQ3CameraObject Q3ViewAngleAspectCamera_New(const TQ3ViewAngleAspectCameraData* cameraData)
 {
-    return guard(__func__, TQ3CameraObject{nullptr}, [&]() -> TQ3CameraObject {
-        requireNonNull(cameraData, "cameraData");
-        ViewAngleAspectCamera::validate(*cameraData);
-        return makeShared<ViewAngleAspectCamera>(*cameraData).detach();
-    });
+    return newCamera<ViewAngleAspectCamera>(__func__, cameraData, "cameraData");
 }
 
 TQ3Status Q3ViewAngleAspectCamera_GetData(TQ3CameraObject camera,
                                           TQ3ViewAngleAspectCameraData* cameraData)
 {
-    return guardStatus(__func__, [&] {
-        const ViewAngleAspectCamera& source = lookup<ViewAngleAspectCamera>(camera, "camera");
-        requireNonNull(cameraData, "cameraData");
-        *cameraData = source.viewAngleAspectData();
-    });
+    return getCameraData<ViewAngleAspectCamera>(__func__, camera, cameraData);
 }
 
 TQ3Status Q3ViewAngleAspectCamera_SetData(TQ3CameraObject camera,
                                           const TQ3ViewAngleAspectCameraData* cameraData)
 {
-    return setValue<ViewAngleAspectCamera>(__func__, camera, "camera", cameraData, "cameraData",
-                                           &ViewAngleAspectCamera::setViewAngleAspectData);
+    return setCameraData<ViewAngleAspectCamera>(__func__, camera, cameraData);
 }
 
 TQ3Status Q3ViewAngleAspectCamera_SetFOV(TQ3CameraObject camera, float fov)
 {
-    return guardStatus(__func__, [&] {
-        ViewAngleAspectCamera& target = lookup<ViewAngleAspectCamera>(camera, "camera");
-        target.setField(&TQ3ViewAngleAspectCameraData::fov, fov);
-    });
+    return setCameraField<ViewAngleAspectCamera>(__func__, camera, fov, &ViewAngleAspectData::fov);
 }
 
 TQ3Status Q3ViewAngleAspectCamera_GetFOV(TQ3CameraObject camera, float* fov)
 {
-    return getValue<ViewAngleAspectCamera>(__func__, camera, "camera", fov, "fov",
-                                           [](const ViewAngleAspectCamera& c) { return c.viewAngleAspectData().fov; });
+    return getCameraField<ViewAngleAspectCamera>(__func__, camera, fov, "fov", &ViewAngleAspectData::fov);
 }
 
 TQ3Status Q3ViewAngleAspectCamera_SetAspectRatio(TQ3CameraObject camera, float aspectRatioXToY)
 {
-    return guardStatus(__func__, [&] {
-        ViewAngleAspectCamera& target = lookup<ViewAngleAspectCamera>(camera, "camera");
-        target.setField(&TQ3ViewAngleAspectCameraData::aspectRatioXToY, aspectRatioXToY);
-    });
+    return setCameraField<ViewAngleAspectCamera>(__func__, camera, aspectRatioXToY,
+                                                 &ViewAngleAspectData::aspectRatioXToY);
 }
 
 TQ3Status Q3ViewAngleAspectCamera_GetAspectRatio(TQ3CameraObject camera, float* aspectRatioXToY)
 {
-    return guardStatus(__func__, [&] {
-        readInto<ViewAngleAspectCamera>(camera, "camera", aspectRatioXToY, "aspectRatioXToY",
-            [](const ViewAngleAspectCamera& c) { return c.viewAngleAspectData().aspectRatioXToY; });
-    });
+    return getCameraField<ViewAngleAspectCamera>(__func__, camera, aspectRatioXToY, "aspectRatioXToY",
+                                                 &ViewAngleAspectData::aspectRatioXToY);
 }
 
 } // extern "C"

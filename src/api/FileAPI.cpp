@@ -16,20 +16,12 @@ TQ3FileObject Q3File_New(void)
 
 TQ3Status Q3File_GetStorage(TQ3FileObject theFile, TQ3StorageObject* storage)
 {
-    return guardStatus(__func__, [&] {
-        const File& file = lookup<File>(theFile, "theFile");
-        requireNonNull(storage, "storage");
-        *storage = file.storage() ? Ref<Storage>(file.storage()).detach() : nullptr;
-    });
+    return getHeld(__func__, theFile, "theFile", storage, "storage", &File::storage);
 }
 
 TQ3Status Q3File_SetStorage(TQ3FileObject theFile, TQ3StorageObject storage)
 {
-    return guardStatus(__func__, [&] {
-        File& file = lookup<File>(theFile, "theFile");
-        Storage* given = lookupOptional<Storage>(storage, "storage");
-        file.setStorage(given != nullptr ? Ref<Storage>::retain(given) : Ref<Storage>());
-    });
+    return setHeldOptional(__func__, theFile, "theFile", storage, "storage", &File::setStorage);
 }
 
 TQ3Status Q3File_OpenRead(TQ3FileObject theFile, TQ3FileMode* mode)

@@ -41,19 +41,14 @@ TQ3Status Q3HighlightStyle_Submit(TQ3AttributeSet highlightAttribute, TQ3ViewObj
 
 TQ3Status Q3HighlightStyle_Get(TQ3StyleObject highlight, TQ3AttributeSet* highlightAttribute)
 {
-    return guardStatus(__func__, [&] {
-        const HighlightStyle& source = lookup<HighlightStyle>(highlight, "highlight");
-        requireNonNull(highlightAttribute, "highlightAttribute");
-        *highlightAttribute = Ref<AttributeSet>(source.attributes()).detach();
-    });
+    return api::getHeld(__func__, highlight, "highlight", highlightAttribute, "highlightAttribute",
+                        &HighlightStyle::attributes);
 }
 
 TQ3Status Q3HighlightStyle_Set(TQ3StyleObject highlight, TQ3AttributeSet highlightAttribute)
 {
-    return guardStatus(__func__, [&] {
-        HighlightStyle& target = lookup<HighlightStyle>(highlight, "highlight");
-        target.setAttributes(optionalSet(highlightAttribute));
-    });
+    return api::setHeldOptional(__func__, highlight, "highlight", highlightAttribute, "highlightAttribute",
+                                &HighlightStyle::setAttributes);
 }
 
 } // extern "C"

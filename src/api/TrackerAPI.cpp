@@ -28,6 +28,47 @@ TQ3Boolean boolean(bool value)
     return value ? kQ3True : kQ3False;
 }
 
+// The value a Set or Move call stores, once checked: a finite position or
+// delta, or a rotation (checkedRotation).
+template <class Value>
+Value checked(const Value& value, const char* name)
+{
+    checkFinite(value, name);
+    return value;
+}
+
+TQ3Quaternion checked(const TQ3Quaternion& value, const char* name)
+{
+    return checkedRotation(value, name);
+}
+
+// The Get of the position or the orientation: the tracker, then the value
+// and `changed` pointers (delta and serialNumber may be NULL).
+template <class Value, class Delta>
+TQ3Status readChange(const char* function, TQ3TrackerObject handle, Value* value, const char* name, Delta* delta,
+                     TQ3Boolean* changed, unsigned long* serialNumber,
+                     bool (Tracker::*read)(Value&, Delta*, unsigned long*))
+{
+    return withTracker(function, handle, [&](Tracker& t) {
+        requireNonNull(value, name);
+        requireNonNull(changed, "changed");
+        *changed = boolean((t.*read)(*value, delta, serialNumber));
+    });
+}
+
+// The Set and Move calls: the tracker, the controller (NULL allowed), the
+// pointer, the value's check, then change(controllerRef, value).
+template <class Value>
+TQ3Status change(const char* function, TQ3TrackerObject handle, TQ3ControllerRef controllerRef, const Value* value,
+                 const char* name, void (Tracker::*apply)(TQ3ControllerRef, const Value&))
+{
+    return withTracker(function, handle, [&](Tracker& t) {
+        controllers::lookupOptional(controllerRef, "controllerRef");
+        requireNonNull(value, name);
+        (t.*apply)(controllerRef, checked(*value, name));
+    });
+}
+
 } // namespace
 
 extern "C" {
@@ -89,63 +130,39 @@ TQ3Status Q3Tracker_ChangeButtons(TQ3TrackerObject trackerObject, TQ3ControllerR
 TQ3Status Q3Tracker_GetPosition(TQ3TrackerObject trackerObject, TQ3Point3D* position, TQ3Vector3D* delta,
                                 TQ3Boolean* changed, unsigned long* serialNumber)
 {
-    return withTracker(__func__, trackerObject, [&](Tracker& t) {
-        requireNonNull(position, "position");
-        requireNonNull(changed, "changed");
-        *changed = boolean(t.readPosition(*position, delta, serialNumber));
-    });
+    return readChange(__func__, trackerObject, position, "position", delta, changed, serialNumber,
+                      &Tracker::readPosition);
 }
 
 TQ3Status Q3Tracker_SetPosition(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
                                 const TQ3Point3D* position)
 {
-    return withTracker(__func__, trackerObject, [&](Tracker& t) {
-        controllers::lookupOptional(controllerRef, "controllerRef");
-        requireNonNull(position, "position");
-        checkFinite(*position, "position");
-        t.setPosition(controllerRef, *position);
-    });
+    return change(__func__, trackerObject, controllerRef, position, "position", &Tracker::setPosition);
 }
 
 TQ3Status Q3Tracker_MovePosition(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
                                  const TQ3Vector3D* delta)
 {
-    return withTracker(__func__, trackerObject, [&](Tracker& t) {
-        controllers::lookupOptional(controllerRef, "controllerRef");
-        requireNonNull(delta, "delta");
-        checkFinite(*delta, "delta");
-        t.movePosition(controllerRef, *delta);
-    });
+    return change(__func__, trackerObject, controllerRef, delta, "delta", &Tracker::movePosition);
 }
 
 TQ3Status Q3Tracker_GetOrientation(TQ3TrackerObject trackerObject, TQ3Quaternion* orientation,
                                    TQ3Quaternion* delta, TQ3Boolean* changed, unsigned long* serialNumber)
 {
-    return withTracker(__func__, trackerObject, [&](Tracker& t) {
-        requireNonNull(orientation, "orientation");
-        requireNonNull(changed, "changed");
-        *changed = boolean(t.readOrientation(*orientation, delta, serialNumber));
-    });
+    return readChange(__func__, trackerObject, orientation, "orientation", delta, changed, serialNumber,
+                      &Tracker::readOrientation);
 }
 
 TQ3Status Q3Tracker_SetOrientation(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
                                    const TQ3Quaternion* orientation)
 {
-    return withTracker(__func__, trackerObject, [&](Tracker& t) {
-        controllers::lookupOptional(controllerRef, "controllerRef");
-        requireNonNull(orientation, "orientation");
-        t.setOrientation(controllerRef, checkedRotation(*orientation, "orientation"));
-    });
+    return change(__func__, trackerObject, controllerRef, orientation, "orientation", &Tracker::setOrientation);
 }
 
 TQ3Status Q3Tracker_MoveOrientation(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
                                     const TQ3Quaternion* delta)
 {
-    return withTracker(__func__, trackerObject, [&](Tracker& t) {
-        controllers::lookupOptional(controllerRef, "controllerRef");
-        requireNonNull(delta, "delta");
-        t.moveOrientation(controllerRef, checkedRotation(*delta, "delta"));
-    });
+    return change(__func__, trackerObject, controllerRef, delta, "delta", &Tracker::moveOrientation);
 }
 
 TQ3Status Q3Tracker_SetEventCoordinates(TQ3TrackerObject trackerObject, unsigned long timeStamp,

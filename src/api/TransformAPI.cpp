@@ -29,9 +29,9 @@ template <class T, class Change>
 void changeData(TQ3TransformObject transform, Change change)
 {
     T& target = lookup<T>(transform, "transform");
-    auto data = target.data();
+    auto data = target.value();
     change(data);
-    target.setData(data);
+    target.setValue(data);
 }
 
 using PointData = TQ3RotateAboutPointTransformData;
@@ -43,7 +43,7 @@ TQ3Status getField(const char* function, TQ3TransformObject transform, Value* ou
                    Value Data::*field)
 {
     return getValue<T>(function, transform, "transform", out, outName,
-                       [&](const T& source) { return source.data().*field; });
+                       [&](const T& source) { return source.value().*field; });
 }
 
 // A Set of one field given by value, through changeData. Copied as bytes: a
@@ -108,13 +108,13 @@ TQ3Status Q3MatrixTransform_Submit(const TQ3Matrix4x4* matrix, TQ3ViewObject vie
 
 TQ3Status Q3MatrixTransform_Set(TQ3TransformObject transform, const TQ3Matrix4x4* matrix)
 {
-    return setValue<MatrixTransform>(__func__, transform, "transform", matrix, "matrix", &MatrixTransform::setMatrix);
+    return setValue<MatrixTransform>(__func__, transform, "transform", matrix, "matrix", &MatrixTransform::setValue);
 }
 
 TQ3Status Q3MatrixTransform_Get(TQ3TransformObject transform, TQ3Matrix4x4* matrix)
 {
     return getValue<MatrixTransform>(__func__, transform, "transform", matrix, "matrix",
-                                     [](const MatrixTransform& t) { return t.matrix(); });
+                                     &MatrixTransform::value);
 }
 
 TQ3TransformObject Q3TranslateTransform_New(const TQ3Vector3D* translate)
@@ -131,13 +131,13 @@ TQ3Status Q3TranslateTransform_Submit(const TQ3Vector3D* translate, TQ3ViewObjec
 TQ3Status Q3TranslateTransform_Set(TQ3TransformObject transform, const TQ3Vector3D* translate)
 {
     return setValue<TranslateTransform>(__func__, transform, "transform", translate, "translate",
-                                        &TranslateTransform::setTranslate);
+                                        &TranslateTransform::setValue);
 }
 
 TQ3Status Q3TranslateTransform_Get(TQ3TransformObject transform, TQ3Vector3D* translate)
 {
     return getValue<TranslateTransform>(__func__, transform, "transform", translate, "translate",
-                                        [](const TranslateTransform& t) { return t.translate(); });
+                                        &TranslateTransform::value);
 }
 
 TQ3TransformObject Q3ScaleTransform_New(const TQ3Vector3D* scale)
@@ -152,13 +152,13 @@ TQ3Status Q3ScaleTransform_Submit(const TQ3Vector3D* scale, TQ3ViewObject view)
 
 TQ3Status Q3ScaleTransform_Set(TQ3TransformObject transform, const TQ3Vector3D* scale)
 {
-    return setValue<ScaleTransform>(__func__, transform, "transform", scale, "scale", &ScaleTransform::setScale);
+    return setValue<ScaleTransform>(__func__, transform, "transform", scale, "scale", &ScaleTransform::setValue);
 }
 
 TQ3Status Q3ScaleTransform_Get(TQ3TransformObject transform, TQ3Vector3D* scale)
 {
     return getValue<ScaleTransform>(__func__, transform, "transform", scale, "scale",
-                                    [](const ScaleTransform& t) { return t.scale(); });
+                                    &ScaleTransform::value);
 }
 
 TQ3TransformObject Q3RotateTransform_New(const TQ3RotateTransformData* data)
@@ -174,13 +174,13 @@ TQ3Status Q3RotateTransform_Submit(const TQ3RotateTransformData* data, TQ3ViewOb
 TQ3Status Q3RotateTransform_SetData(TQ3TransformObject transform,
                                     const TQ3RotateTransformData* data)
 {
-    return setValue<RotateTransform>(__func__, transform, "transform", data, "data", &RotateTransform::setData);
+    return setValue<RotateTransform>(__func__, transform, "transform", data, "data", &RotateTransform::setValue);
 }
 
 TQ3Status Q3RotateTransform_GetData(TQ3TransformObject transform, TQ3RotateTransformData* data)
 {
     return getValue<RotateTransform>(__func__, transform, "transform", data, "data",
-                                     [](const RotateTransform& t) { return t.data(); });
+                                     &RotateTransform::value);
 }
 
 TQ3Status Q3RotateTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
@@ -193,7 +193,7 @@ TQ3Status Q3RotateTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
 TQ3Status Q3RotateTransform_GetAxis(TQ3TransformObject transform, TQ3Axis* axis)
 {
     return getValue<RotateTransform>(__func__, transform, "transform", axis, "axis",
-                                     [](const RotateTransform& t) { return t.data().axis; });
+                                     [](const RotateTransform& t) { return t.value().axis; });
 }
 
 TQ3Status Q3RotateTransform_SetAngle(TQ3TransformObject transform, float radians)
@@ -205,7 +205,7 @@ TQ3Status Q3RotateTransform_SetAngle(TQ3TransformObject transform, float radians
 TQ3Status Q3RotateTransform_GetAngle(TQ3TransformObject transform, float* radians)
 {
     return getValue<RotateTransform>(__func__, transform, "transform", radians, "radians",
-                                     [](const RotateTransform& t) { return t.data().radians; });
+                                     [](const RotateTransform& t) { return t.value().radians; });
 }
 
 TQ3TransformObject Q3QuaternionTransform_New(const TQ3Quaternion* quaternion)
@@ -222,13 +222,13 @@ TQ3Status Q3QuaternionTransform_Submit(const TQ3Quaternion* quaternion, TQ3ViewO
 TQ3Status Q3QuaternionTransform_Set(TQ3TransformObject transform, const TQ3Quaternion* quaternion)
 {
     return setValue<QuaternionTransform>(__func__, transform, "transform", quaternion, "quaternion",
-                                         &QuaternionTransform::setQuaternion);
+                                         &QuaternionTransform::setValue);
 }
 
 TQ3Status Q3QuaternionTransform_Get(TQ3TransformObject transform, TQ3Quaternion* quaternion)
 {
     return getValue<QuaternionTransform>(__func__, transform, "transform", quaternion, "quaternion",
-                                         [](const QuaternionTransform& t) { return t.quaternion(); });
+                                         &QuaternionTransform::value);
 }
 
 TQ3TransformObject Q3RotateAboutPointTransform_New(const TQ3RotateAboutPointTransformData* data)
@@ -245,13 +245,13 @@ TQ3Status Q3RotateAboutPointTransform_SetData(TQ3TransformObject transform,
                                               const TQ3RotateAboutPointTransformData* data)
 {
     return setValue<RotateAboutPointTransform>(__func__, transform, "transform", data, "data",
-                                               &RotateAboutPointTransform::setData);
+                                               &RotateAboutPointTransform::setValue);
 }
 
 TQ3Status Q3RotateAboutPointTransform_GetData(TQ3TransformObject transform, TQ3RotateAboutPointTransformData* data)
 {
     return getValue<RotateAboutPointTransform>(__func__, transform, "transform", data, "data",
-                                               [](const RotateAboutPointTransform& t) { return t.data(); });
+                                               &RotateAboutPointTransform::value);
 }
 
 TQ3Status Q3RotateAboutPointTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
@@ -298,13 +298,13 @@ TQ3Status Q3RotateAboutAxisTransform_SetData(TQ3TransformObject transform,
                                              const TQ3RotateAboutAxisTransformData* data)
 {
     return setValue<RotateAboutAxisTransform>(__func__, transform, "transform", data, "data",
-                                              &RotateAboutAxisTransform::setData);
+                                              &RotateAboutAxisTransform::setValue);
 }
 
 TQ3Status Q3RotateAboutAxisTransform_GetData(TQ3TransformObject transform, TQ3RotateAboutAxisTransformData* data)
 {
     return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", data, "data",
-                                              [](const RotateAboutAxisTransform& t) { return t.data(); });
+                                              &RotateAboutAxisTransform::value);
 }
 
 TQ3Status Q3RotateAboutAxisTransform_SetOrientation(TQ3TransformObject transform, const TQ3Vector3D* axis)

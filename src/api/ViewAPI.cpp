@@ -282,11 +282,7 @@ TQ3Status Q3View_GetDefaultAttributeSet(TQ3ViewObject view, TQ3AttributeSet* att
 
 TQ3Status Q3View_SetDefaultAttributeSet(TQ3ViewObject view, TQ3AttributeSet attributeSet)
 {
-    return guardStatus(__func__, [&] {
-        View& target = lookup<View>(view, "view");
-        target.setDefaultAttributeSet(
-            Ref<AttributeSet>::retain(lookupOptional<AttributeSet>(attributeSet, "attributeSet")));
-    });
+    return setHeldOptional(__func__, view, "view", attributeSet, "attributeSet", &View::setDefaultAttributeSet);
 }
 
 TQ3Status Q3View_GetAttributeSetState(TQ3ViewObject view, TQ3AttributeSet* attributeSet)

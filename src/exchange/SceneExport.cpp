@@ -279,11 +279,11 @@ public:
         out.znear = data.range.hither;
         out.zfar = data.range.yon;
         if (const auto* angle = dynamic_cast<const ViewAngleAspectCamera*>(&camera)) {
-            const TQ3ViewAngleAspectCameraData d = angle->viewAngleAspectData();
+            const TQ3ViewAngleAspectCameraData d = angle->kindData();
             out.aspect = d.aspectRatioXToY;
             out.yfov = d.aspectRatioXToY >= 1.0f ? d.fov : 2.0 * std::atan(std::tan(d.fov / 2.0) / d.aspectRatioXToY);
         } else if (const auto* ortho = dynamic_cast<const OrthographicCamera*>(&camera)) {
-            const TQ3OrthographicCameraData d = ortho->orthographicData();
+            const TQ3OrthographicCameraData d = ortho->kindData();
             out.perspective = false;
             out.xmag = std::fabs(d.right - d.left) / 2.0;
             out.ymag = std::fabs(d.top - d.bottom) / 2.0;

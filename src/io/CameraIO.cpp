@@ -126,84 +126,29 @@ Ref<SharedObject> build(const char* what, const Data& data)
     return Ref<SharedObject>(makeShared<T>(data));
 }
 
-Ref<SharedObject> readOrthographic(ReadContext& context, const Parts& parts)
+// A camera of kind C: its own fields (C::kFields, floats in order), then,
+// in its container, the common data.
+template <class C>
+Ref<SharedObject> readCamera(ReadContext& context, const Parts& parts)
 {
     DataReader in = context.reader(parts.root);
-    TQ3OrthographicCameraData data{};
-    data.left = in.f32();
-    data.top = in.f32();
-    data.right = in.f32();
-    data.bottom = in.f32();
+    typename C::DataType data{};
+    for (const CameraField<typename C::DataType>& field : C::kFields)
+        data.*field.member = in.f32();
     requireEnd(in, parts.root);
     data.cameraData = readCommon(context, parts);
-    return build<OrthographicCamera>("orthographic camera", data);
+    return build<C>(findClass(C::kClassType)->name, data);
 }
 
-void writeOrthographic(WriteContext& context, const Object& object)
+template <class C>
+void writeCamera(WriteContext& context, const Object& object)
 {
-    const TQ3OrthographicCameraData data = static_cast<const OrthographicCamera&>(object).orthographicData();
+    const typename C::DataType data = static_cast<const C&>(object).kindData();
     maybeContainer(context, true, [&] {
         Encoder& out = context.out();
-        out.begin(kQ3CameraTypeOrthographic, "OrthographicCamera");
-        out.f32(data.left);
-        out.f32(data.top);
-        out.f32(data.right);
-        out.f32(data.bottom);
-        out.end();
-        writeCommon(out, data.cameraData);
-    });
-}
-
-Ref<SharedObject> readViewPlane(ReadContext& context, const Parts& parts)
-{
-    DataReader in = context.reader(parts.root);
-    TQ3ViewPlaneCameraData data{};
-    data.viewPlane = in.f32();
-    data.halfWidthAtViewPlane = in.f32();
-    data.halfHeightAtViewPlane = in.f32();
-    data.centerXOnViewPlane = in.f32();
-    data.centerYOnViewPlane = in.f32();
-    requireEnd(in, parts.root);
-    data.cameraData = readCommon(context, parts);
-    return build<ViewPlaneCamera>("view plane camera", data);
-}
-
-void writeViewPlane(WriteContext& context, const Object& object)
-{
-    const TQ3ViewPlaneCameraData data = static_cast<const ViewPlaneCamera&>(object).viewPlaneData();
-    maybeContainer(context, true, [&] {
-        Encoder& out = context.out();
-        out.begin(kQ3CameraTypeViewPlane, "ViewPlaneCamera");
-        out.f32(data.viewPlane);
-        out.f32(data.halfWidthAtViewPlane);
-        out.f32(data.halfHeightAtViewPlane);
-        out.f32(data.centerXOnViewPlane);
-        out.f32(data.centerYOnViewPlane);
-        out.end();
-        writeCommon(out, data.cameraData);
-    });
-}
-
-Ref<SharedObject> readViewAngleAspect(ReadContext& context, const Parts& parts)
-{
-    DataReader in = context.reader(parts.root);
-    TQ3ViewAngleAspectCameraData data{};
-    data.fov = in.f32();
-    data.aspectRatioXToY = in.f32();
-    requireEnd(in, parts.root);
-    data.cameraData = readCommon(context, parts);
-    return build<ViewAngleAspectCamera>("view angle aspect camera", data);
-}
-
-void writeViewAngleAspect(WriteContext& context, const Object& object)
-{
-    const TQ3ViewAngleAspectCameraData data =
-        static_cast<const ViewAngleAspectCamera&>(object).viewAngleAspectData();
-    maybeContainer(context, true, [&] {
-        Encoder& out = context.out();
-        out.begin(kQ3CameraTypeViewAngleAspect, "ViewAngleAspectCamera");
-        out.f32(data.fov);
-        out.f32(data.aspectRatioXToY);
+        out.begin(C::kClassType, classOfType(C::kClassType)->name);
+        for (const CameraField<typename C::DataType>& field : C::kFields)
+            out.f32(data.*field.member);
         out.end();
         writeCommon(out, data.cameraData);
     });
@@ -221,11 +166,12 @@ void writeNothing(WriteContext&, const Object&) {}
 void addCameraClasses(std::vector<ClassIO>& table)
 {
     table.insert(table.end(), {
-                                  {kQ3CameraTypeOrthographic, "OrthographicCamera", readOrthographic,
-                                   writeOrthographic},
-                                  {kQ3CameraTypeViewPlane, "ViewPlaneCamera", readViewPlane, writeViewPlane},
-                                  {kQ3CameraTypeViewAngleAspect, "ViewAngleAspectCamera", readViewAngleAspect,
-                                   writeViewAngleAspect},
+                                  {kQ3CameraTypeOrthographic, "OrthographicCamera", readCamera<OrthographicCamera>,
+                                   writeCamera<OrthographicCamera>},
+                                  {kQ3CameraTypeViewPlane, "ViewPlaneCamera", readCamera<ViewPlaneCamera>,
+                                   writeCamera<ViewPlaneCamera>},
+                                  {kQ3CameraTypeViewAngleAspect, "ViewAngleAspectCamera",
+                                   readCamera<ViewAngleAspectCamera>, writeCamera<ViewAngleAspectCamera>},
                                   {kTypePlacement, "CameraPlacement", refuseCameraPart, writeNothing},
                                   {kTypeRange, "CameraRange", refuseCameraPart, writeNothing},
                                   {kTypeViewPort, "CameraViewPort", refuseCameraPart, writeNothing},

@@ -381,133 +381,105 @@ void writeSpotLight(WriteContext& context, const Object& object)
 
 // ---- transforms ------------------------------------------------------------------
 
-Ref<SharedObject> readMatrix(ReadContext& context, const Parts& parts)
+// The value of each transform but reset, in the 3D Metafile Reference's
+// order of its fields.
+
+void readValue(DataReader& in, TQ3Matrix4x4& m)
 {
-    DataReader in = context.reader(parts.root);
-    TQ3Matrix4x4 m;
     for (auto& row : m.value)
         for (float& v : row)
             v = in.f32();
-    return build<MatrixTransform>("matrix transform", m);
 }
 
-void writeMatrix(WriteContext& context, const Object& object)
+void writeValue(Encoder& out, const TQ3Matrix4x4& m)
 {
-    const TQ3Matrix4x4 m = static_cast<const MatrixTransform&>(object).matrix();
-    Encoder& out = context.out();
-    out.begin(kQ3TransformTypeMatrix, "Matrix");
     for (const auto& row : m.value)
         for (float v : row)
             out.f32(v);
-    out.end();
 }
 
-Ref<SharedObject> readTranslate(ReadContext& context, const Parts& parts)
+// Translate and Scale.
+void readValue(DataReader& in, TQ3Vector3D& v)
 {
-    DataReader in = context.reader(parts.root);
-    return build<TranslateTransform>("translate transform", in.vector3D());
+    v = in.vector3D();
 }
 
-void writeTranslate(WriteContext& context, const Object& object)
+void writeValue(Encoder& out, const TQ3Vector3D& v)
 {
-    context.out().begin(kQ3TransformTypeTranslate, "Translate");
-    context.out().vector3D(static_cast<const TranslateTransform&>(object).translate());
-    context.out().end();
+    out.vector3D(v);
 }
 
-Ref<SharedObject> readScale(ReadContext& context, const Parts& parts)
+void readValue(DataReader& in, TQ3RotateTransformData& data)
 {
-    DataReader in = context.reader(parts.root);
-    return build<ScaleTransform>("scale transform", in.vector3D());
-}
-
-void writeScale(WriteContext& context, const Object& object)
-{
-    context.out().begin(kQ3TransformTypeScale, "Scale");
-    context.out().vector3D(static_cast<const ScaleTransform&>(object).scale());
-    context.out().end();
-}
-
-Ref<SharedObject> readRotate(ReadContext& context, const Parts& parts)
-{
-    DataReader in = context.reader(parts.root);
-    TQ3RotateTransformData data{};
     data.axis = static_cast<TQ3Axis>(in.choice(kAxis));
     data.radians = in.f32();
-    return build<RotateTransform>("rotate transform", data);
 }
 
-void writeRotate(WriteContext& context, const Object& object)
+void writeValue(Encoder& out, const TQ3RotateTransformData& data)
 {
-    const TQ3RotateTransformData& data = static_cast<const RotateTransform&>(object).data();
-    context.out().begin(kQ3TransformTypeRotate, "Rotate");
-    context.out().choice(kAxis, static_cast<std::uint32_t>(data.axis));
-    context.out().f32(data.radians);
-    context.out().end();
+    out.choice(kAxis, static_cast<std::uint32_t>(data.axis));
+    out.f32(data.radians);
 }
 
-Ref<SharedObject> readQuaternion(ReadContext& context, const Parts& parts)
+void readValue(DataReader& in, TQ3Quaternion& q)
 {
-    DataReader in = context.reader(parts.root);
-    TQ3Quaternion q;
     q.w = in.f32();
     q.x = in.f32();
     q.y = in.f32();
     q.z = in.f32();
-    return build<QuaternionTransform>("quaternion transform", q);
 }
 
-void writeQuaternion(WriteContext& context, const Object& object)
+void writeValue(Encoder& out, const TQ3Quaternion& q)
 {
-    const TQ3Quaternion& q = static_cast<const QuaternionTransform&>(object).quaternion();
-    Encoder& out = context.out();
-    out.begin(kQ3TransformTypeQuaternion, "Quaternion");
-    out.f32(q.w);
-    out.f32(q.x);
-    out.f32(q.y);
-    out.f32(q.z);
-    out.end();
+    for (float v : {q.w, q.x, q.y, q.z})
+        out.f32(v);
 }
 
-Ref<SharedObject> readRotateAboutPoint(ReadContext& context, const Parts& parts)
+void readValue(DataReader& in, TQ3RotateAboutPointTransformData& data)
 {
-    DataReader in = context.reader(parts.root);
-    TQ3RotateAboutPointTransformData data{};
     data.axis = static_cast<TQ3Axis>(in.choice(kAxis));
     data.radians = in.f32();
     data.about = in.point3D();
-    return build<RotateAboutPointTransform>("rotate about point transform", data);
 }
 
-void writeRotateAboutPoint(WriteContext& context, const Object& object)
+void writeValue(Encoder& out, const TQ3RotateAboutPointTransformData& data)
 {
-    const TQ3RotateAboutPointTransformData& data = static_cast<const RotateAboutPointTransform&>(object).data();
-    Encoder& out = context.out();
-    out.begin(kQ3TransformTypeRotateAboutPoint, "RotateAboutPoint");
     out.choice(kAxis, static_cast<std::uint32_t>(data.axis));
     out.f32(data.radians);
     out.point3D(data.about);
-    out.end();
 }
 
-Ref<SharedObject> readRotateAboutAxis(ReadContext& context, const Parts& parts)
+void readValue(DataReader& in, TQ3RotateAboutAxisTransformData& data)
 {
-    DataReader in = context.reader(parts.root);
-    TQ3RotateAboutAxisTransformData data{};
     data.origin = in.point3D();
     data.orientation = in.vector3D();
     data.radians = in.f32();
-    return build<RotateAboutAxisTransform>("rotate about axis transform", data);
 }
 
-void writeRotateAboutAxis(WriteContext& context, const Object& object)
+void writeValue(Encoder& out, const TQ3RotateAboutAxisTransformData& data)
 {
-    const TQ3RotateAboutAxisTransformData& data = static_cast<const RotateAboutAxisTransform&>(object).data();
-    Encoder& out = context.out();
-    out.begin(kQ3TransformTypeRotateAboutAxis, "RotateAboutAxis");
     out.point3D(data.origin);
     out.vector3D(data.orientation);
     out.f32(data.radians);
+}
+
+// A transform whose state is one value (view/Transform.h's ValueTransform),
+// read through the class's checks.
+template <class T>
+Ref<SharedObject> readTransform(ReadContext& context, const Parts& parts)
+{
+    DataReader in = context.reader(parts.root);
+    typename T::ValueType value{};
+    readValue(in, value);
+    return build<T>(findClass(T::kClassType)->name, value);
+}
+
+template <class T>
+void writeTransform(WriteContext& context, const Object& object)
+{
+    Encoder& out = context.out();
+    out.begin(T::kClassType, classOfType(T::kClassType)->name);
+    writeValue(out, static_cast<const T&>(object).value());
     out.end();
 }
 
@@ -555,13 +527,17 @@ void addStateClasses(std::vector<ClassIO>& table)
             {kQ3LightTypePoint, "PointLight", readPointLight, writePointLight},
             {kQ3LightTypeSpot, "SpotLight", readSpotLight, writeSpotLight},
             {kTypeLightData, "LightData", refuseLightData, [](WriteContext&, const Object&) {}},
-            {kQ3TransformTypeMatrix, "Matrix", readMatrix, writeMatrix},
-            {kQ3TransformTypeTranslate, "Translate", readTranslate, writeTranslate},
-            {kQ3TransformTypeScale, "Scale", readScale, writeScale},
-            {kQ3TransformTypeRotate, "Rotate", readRotate, writeRotate},
-            {kQ3TransformTypeQuaternion, "Quaternion", readQuaternion, writeQuaternion},
-            {kQ3TransformTypeRotateAboutPoint, "RotateAboutPoint", readRotateAboutPoint, writeRotateAboutPoint},
-            {kQ3TransformTypeRotateAboutAxis, "RotateAboutAxis", readRotateAboutAxis, writeRotateAboutAxis},
+            {kQ3TransformTypeMatrix, "Matrix", readTransform<MatrixTransform>, writeTransform<MatrixTransform>},
+            {kQ3TransformTypeTranslate, "Translate", readTransform<TranslateTransform>,
+             writeTransform<TranslateTransform>},
+            {kQ3TransformTypeScale, "Scale", readTransform<ScaleTransform>, writeTransform<ScaleTransform>},
+            {kQ3TransformTypeRotate, "Rotate", readTransform<RotateTransform>, writeTransform<RotateTransform>},
+            {kQ3TransformTypeQuaternion, "Quaternion", readTransform<QuaternionTransform>,
+             writeTransform<QuaternionTransform>},
+            {kQ3TransformTypeRotateAboutPoint, "RotateAboutPoint", readTransform<RotateAboutPointTransform>,
+             writeTransform<RotateAboutPointTransform>},
+            {kQ3TransformTypeRotateAboutAxis, "RotateAboutAxis", readTransform<RotateAboutAxisTransform>,
+             writeTransform<RotateAboutAxisTransform>},
             {kQ3TransformTypeReset, "Reset", readReset,
              [](WriteContext& c, const Object&) { writeEmpty<kQ3TransformTypeReset>(c, "Reset"); }},
         });

@@ -29,6 +29,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace q3 {
@@ -59,6 +60,14 @@ void requireFinite(float value, const char* name)
 {
     if (!std::isfinite(value))
         invalid(std::string(name) + " is not a finite number");
+}
+
+// A camera kind's own fields, each finite, in their order.
+template <class Data, std::size_t N>
+void requireFinite(const Data& data, const CameraField<Data> (&fields)[N])
+{
+    for (const CameraField<Data>& field : fields)
+        requireFinite(data.*field.member, field.name);
 }
 
 glm::dvec3 toVec(const TQ3Point3D& p)
@@ -197,60 +206,24 @@ Matrix Camera::viewToFrustum() const
 void OrthographicCamera::validate(const TQ3OrthographicCameraData& data)
 {
     validateCameraData(data.cameraData, false);
-    requireFinite(data.left, "left");
-    requireFinite(data.top, "top");
-    requireFinite(data.right, "right");
-    requireFinite(data.bottom, "bottom");
+    requireFinite(data, kFields);
     if (data.left == data.right)
         invalid("left equals right, so the visible rectangle has no width");
     if (data.top == data.bottom)
         invalid("top equals bottom, so the visible rectangle has no height");
 }
 
-OrthographicCamera::OrthographicCamera(const TQ3OrthographicCameraData& data)
-    : Camera(data.cameraData), m_left(data.left), m_top(data.top), m_right(data.right),
-      m_bottom(data.bottom)
-{
-}
-
-Object* OrthographicCamera::duplicate() const
-{
-    return makeShared<OrthographicCamera>(orthographicData()).detach();
-}
-
-TQ3OrthographicCameraData OrthographicCamera::orthographicData() const
-{
-    return {data(), m_left, m_top, m_right, m_bottom};
-}
-
-void OrthographicCamera::setOrthographicData(const TQ3OrthographicCameraData& data)
-{
-    validate(data);
-    assignCommon(data.cameraData);
-    m_left = data.left;
-    m_top = data.top;
-    m_right = data.right;
-    m_bottom = data.bottom;
-    markEdited();
-}
-
-void OrthographicCamera::setField(float TQ3OrthographicCameraData::*field, float value)
-{
-    TQ3OrthographicCameraData data = orthographicData();
-    data.*field = value;
-    setOrthographicData(data);
-}
-
 Matrix OrthographicCamera::projection() const
 {
-    const double width = double(m_right) - double(m_left);
-    const double height = double(m_top) - double(m_bottom);
+    const TQ3OrthographicCameraData& bounds = kind();
+    const double width = double(bounds.right) - double(bounds.left);
+    const double height = double(bounds.top) - double(bounds.bottom);
     const double depth = double(data().range.yon) - double(data().range.hither);
     Matrix m(1.0);
     m[0][0] = 2.0 / width;
-    m[3][0] = -(double(m_right) + double(m_left)) / width;
+    m[3][0] = -(double(bounds.right) + double(bounds.left)) / width;
     m[1][1] = 2.0 / height;
-    m[3][1] = -(double(m_top) + double(m_bottom)) / height;
+    m[3][1] = -(double(bounds.top) + double(bounds.bottom)) / height;
     m[2][2] = 1.0 / depth;
     m[3][2] = double(data().range.hither) / depth;
     return m;
@@ -259,111 +232,40 @@ Matrix OrthographicCamera::projection() const
 void ViewPlaneCamera::validate(const TQ3ViewPlaneCameraData& data)
 {
     validateCameraData(data.cameraData, true);
-    requireFinite(data.viewPlane, "viewPlane");
-    requireFinite(data.halfWidthAtViewPlane, "halfWidthAtViewPlane");
-    requireFinite(data.halfHeightAtViewPlane, "halfHeightAtViewPlane");
-    requireFinite(data.centerXOnViewPlane, "centerXOnViewPlane");
-    requireFinite(data.centerYOnViewPlane, "centerYOnViewPlane");
+    requireFinite(data, kFields);
     if (!(data.viewPlane > 0.0f))
         invalid("viewPlane must be greater than 0");
     if (!(data.halfWidthAtViewPlane > 0.0f) || !(data.halfHeightAtViewPlane > 0.0f))
         invalid("halfWidthAtViewPlane and halfHeightAtViewPlane must be greater than 0");
 }
 
-ViewPlaneCamera::ViewPlaneCamera(const TQ3ViewPlaneCameraData& data)
-    : Camera(data.cameraData), m_viewPlane(data.viewPlane), m_halfWidth(data.halfWidthAtViewPlane),
-      m_halfHeight(data.halfHeightAtViewPlane), m_centerX(data.centerXOnViewPlane),
-      m_centerY(data.centerYOnViewPlane)
-{
-}
-
-Object* ViewPlaneCamera::duplicate() const
-{
-    return makeShared<ViewPlaneCamera>(viewPlaneData()).detach();
-}
-
-TQ3ViewPlaneCameraData ViewPlaneCamera::viewPlaneData() const
-{
-    return {data(), m_viewPlane, m_halfWidth, m_halfHeight, m_centerX, m_centerY};
-}
-
-void ViewPlaneCamera::setViewPlaneData(const TQ3ViewPlaneCameraData& data)
-{
-    validate(data);
-    assignCommon(data.cameraData);
-    m_viewPlane = data.viewPlane;
-    m_halfWidth = data.halfWidthAtViewPlane;
-    m_halfHeight = data.halfHeightAtViewPlane;
-    m_centerX = data.centerXOnViewPlane;
-    m_centerY = data.centerYOnViewPlane;
-    markEdited();
-}
-
-void ViewPlaneCamera::setField(float TQ3ViewPlaneCameraData::*field, float value)
-{
-    TQ3ViewPlaneCameraData data = viewPlaneData();
-    data.*field = value;
-    setViewPlaneData(data);
-}
-
 Matrix ViewPlaneCamera::projection() const
 {
+    const TQ3ViewPlaneCameraData& plane = kind();
     Matrix m = perspectiveDepth(data().range);
-    m[0][0] = double(m_viewPlane) / m_halfWidth;
-    m[2][0] = double(m_centerX) / m_halfWidth;
-    m[1][1] = double(m_viewPlane) / m_halfHeight;
-    m[2][1] = double(m_centerY) / m_halfHeight;
+    m[0][0] = double(plane.viewPlane) / plane.halfWidthAtViewPlane;
+    m[2][0] = double(plane.centerXOnViewPlane) / plane.halfWidthAtViewPlane;
+    m[1][1] = double(plane.viewPlane) / plane.halfHeightAtViewPlane;
+    m[2][1] = double(plane.centerYOnViewPlane) / plane.halfHeightAtViewPlane;
     return m;
 }
 
 void ViewAngleAspectCamera::validate(const TQ3ViewAngleAspectCameraData& data)
 {
     validateCameraData(data.cameraData, true);
-    requireFinite(data.fov, "fov");
-    requireFinite(data.aspectRatioXToY, "aspectRatioXToY");
+    requireFinite(data, kFields);
     if (!(data.fov > 0.0f) || !(double(data.fov) < kPi))
         invalid("fov " + std::to_string(data.fov) + " is not between 0 and pi radians");
     if (!(data.aspectRatioXToY > 0.0f))
         invalid("aspectRatioXToY must be greater than 0");
 }
 
-ViewAngleAspectCamera::ViewAngleAspectCamera(const TQ3ViewAngleAspectCameraData& data)
-    : Camera(data.cameraData), m_fov(data.fov), m_aspect(data.aspectRatioXToY)
-{
-}
-
-Object* ViewAngleAspectCamera::duplicate() const
-{
-    return makeShared<ViewAngleAspectCamera>(viewAngleAspectData()).detach();
-}
-
-TQ3ViewAngleAspectCameraData ViewAngleAspectCamera::viewAngleAspectData() const
-{
-    return {data(), m_fov, m_aspect};
-}
-
-void ViewAngleAspectCamera::setViewAngleAspectData(const TQ3ViewAngleAspectCameraData& data)
-{
-    validate(data);
-    assignCommon(data.cameraData);
-    m_fov = data.fov;
-    m_aspect = data.aspectRatioXToY;
-    markEdited();
-}
-
-void ViewAngleAspectCamera::setField(float TQ3ViewAngleAspectCameraData::*field, float value)
-{
-    TQ3ViewAngleAspectCameraData data = viewAngleAspectData();
-    data.*field = value;
-    setViewAngleAspectData(data);
-}
-
 Matrix ViewAngleAspectCamera::projection() const
 {
     // fov spans the narrower dimension: vertical when the view is at least as
     // wide as it is high.
-    const double across = cotangent(double(m_fov) / 2.0);
-    const double aspect = m_aspect;
+    const double across = cotangent(double(kind().fov) / 2.0);
+    const double aspect = kind().aspectRatioXToY;
     Matrix m = perspectiveDepth(data().range);
     m[0][0] = aspect >= 1.0 ? across / aspect : across;
     m[1][1] = aspect >= 1.0 ? across : across * aspect;

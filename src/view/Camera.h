@@ -66,95 +66,130 @@ private:
     TQ3CameraData m_data;
 };
 
+/// One of a camera kind's own fields, all floats, and its name in
+/// QD3DCamera.h. A kind lists them in its struct's order (Self::kFields):
+/// validation checks each to be finite in that order, and a 3DMF camera object
+/// holds them in that order (io/CameraIO.cpp).
+template <class Data>
+struct CameraField {
+    float Data::*member;
+    const char* name;
+};
+
+/// What every kind of camera shares: its whole data struct (Data, whose
+/// first field is the common TQ3CameraData) read and replaced as one, and one
+/// float field replaced through the same checks. Self::validate(const Data&)
+/// states the kind's rules. Invariant: m_kind holds the kind's own fields and
+/// a zeroed cameraData (Camera holds the common data).
+template <class Self, class Data>
+class CameraKind : public Camera {
+public:
+    using DataType = Data;
+
+    Object* duplicate() const override { return makeShared<Self>(kindData()).detach(); }
+
+    /// The whole data, the common part included.
+    Data kindData() const
+    {
+        Data whole = m_kind;
+        whole.cameraData = data();
+        return whole;
+    }
+    /// Validates first (Self::validate) and changes nothing on failure.
+    void setKindData(const Data& whole)
+    {
+        Self::validate(whole);
+        assignCommon(whole.cameraData);
+        m_kind = ownFields(whole);
+        markEdited();
+    }
+    /// Replaces one field through setKindData, so a single-field setter
+    /// checks exactly what SetData checks and changes nothing on failure.
+    void setField(float Data::*field, float value)
+    {
+        Data whole = kindData();
+        whole.*field = value;
+        setKindData(whole);
+    }
+
+protected:
+    /// Takes validated data.
+    explicit CameraKind(const Data& whole) : Camera(whole.cameraData), m_kind(ownFields(whole)) {}
+    const Data& kind() const { return m_kind; }
+
+private:
+    static Data ownFields(Data whole)
+    {
+        whole.cameraData = TQ3CameraData{};
+        return whole;
+    }
+
+    Data m_kind;
+};
+
 /// A parallel projection of a rectangle of view space. Invariant: the data
 /// obey the TQ3OrthographicCameraData rules (finite bounds, left != right,
 /// top != bottom).
-class OrthographicCamera final : public Camera {
+class OrthographicCamera final : public CameraKind<OrthographicCamera, TQ3OrthographicCameraData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3CameraTypeOrthographic;
+    using Data = TQ3OrthographicCameraData;
+    static constexpr CameraField<Data> kFields[] = {
+        {&Data::left, "left"}, {&Data::top, "top"}, {&Data::right, "right"}, {&Data::bottom, "bottom"}};
 
     /// Throws kQ3ErrorInvalidCameraValues on data that break a rule.
     static void validate(const TQ3OrthographicCameraData& data);
     /// Takes validated data.
-    explicit OrthographicCamera(const TQ3OrthographicCameraData& data);
+    explicit OrthographicCamera(const TQ3OrthographicCameraData& data) : CameraKind(data) {}
 
     const ClassInfo& classInfo() const override { return kOrthographicCameraClass; }
-    Object* duplicate() const override;
     bool isPerspective() const override { return false; }
-
-    TQ3OrthographicCameraData orthographicData() const;
-    void setOrthographicData(const TQ3OrthographicCameraData& data);
-    /// Replaces one field through setOrthographicData, so a single-field setter
-    /// checks exactly what SetData checks and changes nothing on failure.
-    void setField(float TQ3OrthographicCameraData::*field, float value);
 
 protected:
     Matrix projection() const override;
-
-private:
-    float m_left;
-    float m_top;
-    float m_right;
-    float m_bottom;
 };
 
 /// A perspective projection through a rectangle on a plane in front of the
 /// camera (possibly off-axis). Invariant: the data obey the
 /// TQ3ViewPlaneCameraData rules.
-class ViewPlaneCamera final : public Camera {
+class ViewPlaneCamera final : public CameraKind<ViewPlaneCamera, TQ3ViewPlaneCameraData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3CameraTypeViewPlane;
+    using Data = TQ3ViewPlaneCameraData;
+    static constexpr CameraField<Data> kFields[] = {{&Data::viewPlane, "viewPlane"},
+                                                    {&Data::halfWidthAtViewPlane, "halfWidthAtViewPlane"},
+                                                    {&Data::halfHeightAtViewPlane, "halfHeightAtViewPlane"},
+                                                    {&Data::centerXOnViewPlane, "centerXOnViewPlane"},
+                                                    {&Data::centerYOnViewPlane, "centerYOnViewPlane"}};
 
     static void validate(const TQ3ViewPlaneCameraData& data);
-    explicit ViewPlaneCamera(const TQ3ViewPlaneCameraData& data);
+    explicit ViewPlaneCamera(const TQ3ViewPlaneCameraData& data) : CameraKind(data) {}
 
     const ClassInfo& classInfo() const override { return kViewPlaneCameraClass; }
-    Object* duplicate() const override;
     bool isPerspective() const override { return true; }
-
-    TQ3ViewPlaneCameraData viewPlaneData() const;
-    void setViewPlaneData(const TQ3ViewPlaneCameraData& data);
-    /// Replaces one field through setViewPlaneData, so a single-field setter
-    /// checks exactly what SetData checks and changes nothing on failure.
-    void setField(float TQ3ViewPlaneCameraData::*field, float value);
 
 protected:
     Matrix projection() const override;
-
-private:
-    float m_viewPlane;
-    float m_halfWidth;
-    float m_halfHeight;
-    float m_centerX;
-    float m_centerY;
 };
 
 /// A symmetric perspective projection given by a field of view and an aspect
 /// ratio. Invariant: the data obey the TQ3ViewAngleAspectCameraData rules
 /// (0 < fov < pi, aspect ratio finite and positive).
-class ViewAngleAspectCamera final : public Camera {
+class ViewAngleAspectCamera final : public CameraKind<ViewAngleAspectCamera, TQ3ViewAngleAspectCameraData> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3CameraTypeViewAngleAspect;
+    using Data = TQ3ViewAngleAspectCameraData;
+    static constexpr CameraField<Data> kFields[] = {{&Data::fov, "fov"},
+                                                    {&Data::aspectRatioXToY, "aspectRatioXToY"}};
 
     static void validate(const TQ3ViewAngleAspectCameraData& data);
-    explicit ViewAngleAspectCamera(const TQ3ViewAngleAspectCameraData& data);
+    explicit ViewAngleAspectCamera(const TQ3ViewAngleAspectCameraData& data) : CameraKind(data) {}
 
     const ClassInfo& classInfo() const override { return kViewAngleAspectCameraClass; }
-    Object* duplicate() const override;
     bool isPerspective() const override { return true; }
-
-    TQ3ViewAngleAspectCameraData viewAngleAspectData() const;
-    void setViewAngleAspectData(const TQ3ViewAngleAspectCameraData& data);
-    /// Replaces one field through setViewAngleAspectData, so a single-field setter
-    /// checks exactly what SetData checks and changes nothing on failure.
-    void setField(float TQ3ViewAngleAspectCameraData::*field, float value);
 
 protected:
     Matrix projection() const override;
-
-private:
-    float m_fov;
-    float m_aspect;
 };
 
 } // namespace q3

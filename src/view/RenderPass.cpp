@@ -148,6 +148,21 @@ float opacityOf(float channel)
     return channel >= 1.0f ? 1.0f : channel > 0.0f ? channel : 0.0f;
 }
 
+// One level of a texture as the render target reads it: the pixels where
+// they are, and their layout with the checked values of its enumerations (the
+// texture's data rules).
+TextureLevel levelOf(const TexturePixels& pixels)
+{
+    TextureLevel level;
+    level.pixels = pixels.bytes.data();
+    level.layout.width = pixels.width;
+    level.layout.height = pixels.height;
+    level.layout.rowBytes = std::uint32_t(pixels.rowBytes);
+    level.layout.pixelType = PixelType(pixels.pixelType);
+    level.layout.byteOrder = ByteOrder(pixels.byteOrder);
+    return level;
+}
+
 } // namespace
 
 // The transparency colour is kept per channel (OpacitySetup): the QD3D Book
@@ -214,27 +229,15 @@ std::uint32_t RenderPass::loadTexture(const TextureChoice& choice)
         const TexturePixels pixels = texture.readImage();
         const std::vector<TexturePixels> mipmaps =
             m_style.textureFilter == TextureFilter::kTrilinear ? texture.readMipmaps() : std::vector<TexturePixels>{};
+        const TextureLevel top = levelOf(pixels);
         TextureImage image;
-        image.pixels = pixels.bytes.data();
-        image.layout.width = pixels.width;
-        image.layout.height = pixels.height;
-        image.layout.rowBytes = std::uint32_t(pixels.rowBytes);
-        // Checked values of their enumerations (the texture's data rules).
-        image.layout.pixelType = PixelType(pixels.pixelType);
-        image.layout.byteOrder = ByteOrder(pixels.byteOrder);
+        image.pixels = top.pixels;
+        image.layout = top.layout;
         image.clampS = choice.clampS;
         image.clampT = choice.clampT;
         image.filter = m_style.textureFilter;
-        for (const TexturePixels& mipmap : mipmaps) {
-            TextureLevel level;
-            level.pixels = mipmap.bytes.data();
-            level.layout.width = mipmap.width;
-            level.layout.height = mipmap.height;
-            level.layout.rowBytes = std::uint32_t(mipmap.rowBytes);
-            level.layout.pixelType = PixelType(mipmap.pixelType);
-            level.layout.byteOrder = ByteOrder(mipmap.byteOrder);
-            image.mipmaps.push_back(level);
-        }
+        for (const TexturePixels& mipmap : mipmaps)
+            image.mipmaps.push_back(levelOf(mipmap));
         LoadedTexture entry;
         entry.texture = Ref<SharedObject>::retain(const_cast<Texture*>(&texture));
         entry.edit = texture.editIndex();

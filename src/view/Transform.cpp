@@ -33,12 +33,6 @@ void requireFinite(const TQ3Vector3D& v, const char* name)
         fail(kQ3ErrorInvalidParameter, std::string(name) + " has a component that is not finite");
 }
 
-template <class T, class... Args>
-Object* duplicateOf(Args&&... args)
-{
-    return makeShared<T>(std::forward<Args>(args)...).detach();
-}
-
 } // namespace
 
 void validateMatrixTransform(const TQ3Matrix4x4& matrix)
@@ -124,183 +118,67 @@ void Transform::accept(ShapeVisitor& visitor) const
     visitor.visitTransform(*this);
 }
 
-MatrixTransform::MatrixTransform(const TQ3Matrix4x4& matrix) : m_matrix(matrix)
-{
-    validateMatrixTransform(matrix);
-}
-
-Object* MatrixTransform::duplicate() const
-{
-    return duplicateOf<MatrixTransform>(m_matrix);
-}
-
-void MatrixTransform::setMatrix(const TQ3Matrix4x4& matrix)
-{
-    validateMatrixTransform(matrix);
-    m_matrix = matrix;
-    markEdited();
-}
-
-TranslateTransform::TranslateTransform(const TQ3Vector3D& translate) : m_translate(translate)
-{
-    validateTranslateTransform(translate);
-}
-
-Object* TranslateTransform::duplicate() const
-{
-    return duplicateOf<TranslateTransform>(m_translate);
-}
-
-void TranslateTransform::setTranslate(const TQ3Vector3D& translate)
-{
-    validateTranslateTransform(translate);
-    m_translate = translate;
-    markEdited();
-}
-
 TQ3Matrix4x4 TranslateTransform::matrix() const
 {
-    return math::translation(m_translate.x, m_translate.y, m_translate.z);
-}
-
-ScaleTransform::ScaleTransform(const TQ3Vector3D& scale) : m_scale(scale)
-{
-    validateScaleTransform(scale);
-}
-
-Object* ScaleTransform::duplicate() const
-{
-    return duplicateOf<ScaleTransform>(m_scale);
-}
-
-void ScaleTransform::setScale(const TQ3Vector3D& scale)
-{
-    validateScaleTransform(scale);
-    m_scale = scale;
-    markEdited();
+    return math::translation(value().x, value().y, value().z);
 }
 
 TQ3Matrix4x4 ScaleTransform::matrix() const
 {
-    return math::scaling(m_scale.x, m_scale.y, m_scale.z);
-}
-
-RotateTransform::RotateTransform(const TQ3RotateTransformData& data) : m_data(data)
-{
-    validateRotateTransform(data);
-}
-
-Object* RotateTransform::duplicate() const
-{
-    return duplicateOf<RotateTransform>(m_data);
-}
-
-void RotateTransform::setData(const TQ3RotateTransformData& data)
-{
-    validateRotateTransform(data);
-    m_data = data;
-    markEdited();
+    return math::scaling(value().x, value().y, value().z);
 }
 
 void RotateTransform::setAxis(const TQ3Axis& axis)
 {
-    TQ3RotateTransformData data = m_data;
+    TQ3RotateTransformData data = value();
     std::memcpy(&data.axis, &axis, sizeof axis);
-    setData(data);
+    setValue(data);
 }
 
 void RotateTransform::setAngle(float radians)
 {
-    TQ3RotateTransformData data = m_data;
+    TQ3RotateTransformData data = value();
     data.radians = radians;
-    setData(data);
+    setValue(data);
 }
 
 TQ3Matrix4x4 RotateTransform::matrix() const
 {
-    switch (m_data.axis) {
+    const TQ3RotateTransformData& data = value();
+    switch (data.axis) {
     case kQ3AxisX:
-        return math::rotationX(m_data.radians);
+        return math::rotationX(data.radians);
     case kQ3AxisY:
-        return math::rotationY(m_data.radians);
+        return math::rotationY(data.radians);
     case kQ3AxisZ:
         break;
     }
-    return math::rotationZ(m_data.radians);
-}
-
-QuaternionTransform::QuaternionTransform(const TQ3Quaternion& quaternion) : m_quaternion(quaternion)
-{
-    validateQuaternionTransform(quaternion);
-}
-
-Object* QuaternionTransform::duplicate() const
-{
-    return duplicateOf<QuaternionTransform>(m_quaternion);
-}
-
-void QuaternionTransform::setQuaternion(const TQ3Quaternion& quaternion)
-{
-    validateQuaternionTransform(quaternion);
-    m_quaternion = quaternion;
-    markEdited();
+    return math::rotationZ(data.radians);
 }
 
 TQ3Matrix4x4 QuaternionTransform::matrix() const
 {
-    return math::matrixFromQuaternion(math::normalize(m_quaternion));
-}
-
-RotateAboutPointTransform::RotateAboutPointTransform(const TQ3RotateAboutPointTransformData& data) : m_data(data)
-{
-    validateRotateAboutPointTransform(data);
-}
-
-Object* RotateAboutPointTransform::duplicate() const
-{
-    return duplicateOf<RotateAboutPointTransform>(m_data);
-}
-
-void RotateAboutPointTransform::setData(const TQ3RotateAboutPointTransformData& data)
-{
-    validateRotateAboutPointTransform(data);
-    m_data = data;
-    markEdited();
+    return math::matrixFromQuaternion(math::normalize(value()));
 }
 
 TQ3Matrix4x4 RotateAboutPointTransform::matrix() const
 {
-    const float x = m_data.axis == kQ3AxisX ? m_data.radians : 0.0f;
-    const float y = m_data.axis == kQ3AxisY ? m_data.radians : 0.0f;
-    const float z = m_data.axis == kQ3AxisZ ? m_data.radians : 0.0f;
-    return math::rotationAboutPoint(m_data.about, x, y, z);
-}
-
-RotateAboutAxisTransform::RotateAboutAxisTransform(const TQ3RotateAboutAxisTransformData& data) : m_data(data)
-{
-    validateRotateAboutAxisTransform(data);
-}
-
-Object* RotateAboutAxisTransform::duplicate() const
-{
-    return duplicateOf<RotateAboutAxisTransform>(m_data);
-}
-
-void RotateAboutAxisTransform::setData(const TQ3RotateAboutAxisTransformData& data)
-{
-    validateRotateAboutAxisTransform(data);
-    m_data = data;
-    markEdited();
+    const TQ3RotateAboutPointTransformData& data = value();
+    const float x = data.axis == kQ3AxisX ? data.radians : 0.0f;
+    const float y = data.axis == kQ3AxisY ? data.radians : 0.0f;
+    const float z = data.axis == kQ3AxisZ ? data.radians : 0.0f;
+    return math::rotationAboutPoint(data.about, x, y, z);
 }
 
 TQ3Matrix4x4 RotateAboutAxisTransform::matrix() const
 {
-    return math::rotationAboutAxis(m_data.origin, m_data.orientation, m_data.radians);
+    const TQ3RotateAboutAxisTransformData& data = value();
+    return math::rotationAboutAxis(data.origin, data.orientation, data.radians);
 }
 
 Object* ResetTransform::duplicate() const
 {
-    return duplicateOf<ResetTransform>();
+    return makeShared<ResetTransform>().detach();
 }
 
 TQ3Matrix4x4 ResetTransform::matrix() const

@@ -55,148 +55,119 @@ protected:
     Transform() = default;
 };
 
-/// An arbitrary matrix. Invariant: every entry is finite.
-class MatrixTransform final : public Transform {
+/// A transform whose whole state is one QD3DTransform.h value (a matrix, a
+/// vector, a quaternion or a data struct), kept as given and checked by
+/// Validate, the one routine behind the kind's _New, _Submit and setters.
+/// Invariant: Validate(value()) does not throw.
+template <class Self, class Value, void (*Validate)(const Value&)>
+class ValueTransform : public Transform {
 public:
-    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeMatrix;
+    using ValueType = Value;
 
-    /// Throws as validateMatrixTransform.
-    explicit MatrixTransform(const TQ3Matrix4x4& matrix);
+    /// Throws as Validate.
+    explicit ValueTransform(const Value& value) : m_value(value) { Validate(value); }
 
-    const ClassInfo& classInfo() const override { return kMatrixTransformClass; }
-    Object* duplicate() const override;
-    TQ3Matrix4x4 matrix() const override { return m_matrix; }
-    /// Throws as validateMatrixTransform and then changes nothing.
-    void setMatrix(const TQ3Matrix4x4& matrix);
+    Object* duplicate() const override { return makeShared<Self>(m_value).detach(); }
+    const Value& value() const { return m_value; }
+    /// Throws as Validate and then changes nothing.
+    void setValue(const Value& value)
+    {
+        Validate(value);
+        m_value = value;
+        markEdited();
+    }
 
 private:
-    TQ3Matrix4x4 m_matrix;
+    Value m_value;
+};
+
+/// An arbitrary matrix. Invariant: every entry is finite.
+class MatrixTransform final : public ValueTransform<MatrixTransform, TQ3Matrix4x4, validateMatrixTransform> {
+public:
+    static constexpr TQ3ObjectType kClassType = kQ3TransformTypeMatrix;
+    using ValueTransform::ValueTransform;
+
+    const ClassInfo& classInfo() const override { return kMatrixTransformClass; }
+    TQ3Matrix4x4 matrix() const override { return value(); }
 };
 
 /// A translation. Invariant: the offset is finite.
-class TranslateTransform final : public Transform {
+class TranslateTransform final
+    : public ValueTransform<TranslateTransform, TQ3Vector3D, validateTranslateTransform> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3TransformTypeTranslate;
-
-    /// Throws as validateTranslateTransform.
-    explicit TranslateTransform(const TQ3Vector3D& translate);
+    using ValueTransform::ValueTransform;
 
     const ClassInfo& classInfo() const override { return kTranslateTransformClass; }
-    Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
-    const TQ3Vector3D& translate() const { return m_translate; }
-    /// Throws as validateTranslateTransform and then changes nothing.
-    void setTranslate(const TQ3Vector3D& translate);
-
-private:
-    TQ3Vector3D m_translate;
 };
 
 /// A scale about the local origin. Invariant: the factors are finite (zero
 /// and negative factors are allowed).
-class ScaleTransform final : public Transform {
+class ScaleTransform final : public ValueTransform<ScaleTransform, TQ3Vector3D, validateScaleTransform> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3TransformTypeScale;
-
-    /// Throws as validateScaleTransform.
-    explicit ScaleTransform(const TQ3Vector3D& scale);
+    using ValueTransform::ValueTransform;
 
     const ClassInfo& classInfo() const override { return kScaleTransformClass; }
-    Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
-    const TQ3Vector3D& scale() const { return m_scale; }
-    /// Throws as validateScaleTransform and then changes nothing.
-    void setScale(const TQ3Vector3D& scale);
-
-private:
-    TQ3Vector3D m_scale;
 };
 
 /// A rotation about a coordinate axis. Invariant: the axis is X, Y or Z and
 /// the angle is finite.
-class RotateTransform final : public Transform {
+class RotateTransform final
+    : public ValueTransform<RotateTransform, TQ3RotateTransformData, validateRotateTransform> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3TransformTypeRotate;
-
-    /// Throws as validateRotateTransform.
-    explicit RotateTransform(const TQ3RotateTransformData& data);
+    using ValueTransform::ValueTransform;
 
     const ClassInfo& classInfo() const override { return kRotateTransformClass; }
-    Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
-    const TQ3RotateTransformData& data() const { return m_data; }
     /// Each throws as validateRotateTransform (on the whole data, with the
     /// one field replaced) and then changes nothing. The axis is taken by
     /// reference because a C caller may pass any int: it is read as bytes
     /// until validated (core/EnumValue.h).
-    void setData(const TQ3RotateTransformData& data);
     void setAxis(const TQ3Axis& axis);
     void setAngle(float radians);
-
-private:
-    TQ3RotateTransformData m_data;
 };
 
 /// A rotation given as a quaternion. Invariant: the quaternion is finite and
 /// not zero; it is kept as set and normalized only to build the matrix.
-class QuaternionTransform final : public Transform {
+class QuaternionTransform final
+    : public ValueTransform<QuaternionTransform, TQ3Quaternion, validateQuaternionTransform> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3TransformTypeQuaternion;
-
-    /// Throws as validateQuaternionTransform.
-    explicit QuaternionTransform(const TQ3Quaternion& quaternion);
+    using ValueTransform::ValueTransform;
 
     const ClassInfo& classInfo() const override { return kQuaternionTransformClass; }
-    Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
-    const TQ3Quaternion& quaternion() const { return m_quaternion; }
-    /// Throws as validateQuaternionTransform and then changes nothing.
-    void setQuaternion(const TQ3Quaternion& quaternion);
-
-private:
-    TQ3Quaternion m_quaternion;
 };
 
 /// A rotation about the line through a point parallel to a coordinate axis.
-/// Invariant: the data obey validateRotateAboutPointTransform.
-class RotateAboutPointTransform final : public Transform {
+/// Invariant: the data obey validateRotateAboutPointTransform. Field setters
+/// go through setValue.
+class RotateAboutPointTransform final
+    : public ValueTransform<RotateAboutPointTransform, TQ3RotateAboutPointTransformData,
+                            validateRotateAboutPointTransform> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3TransformTypeRotateAboutPoint;
-
-    /// Throws as validateRotateAboutPointTransform.
-    explicit RotateAboutPointTransform(const TQ3RotateAboutPointTransformData& data);
+    using ValueTransform::ValueTransform;
 
     const ClassInfo& classInfo() const override { return kRotateAboutPointTransformClass; }
-    Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
-    const TQ3RotateAboutPointTransformData& data() const { return m_data; }
-    /// Throws as validateRotateAboutPointTransform (on the whole data) and
-    /// then changes nothing. Field setters go through it.
-    void setData(const TQ3RotateAboutPointTransformData& data);
-
-private:
-    TQ3RotateAboutPointTransformData m_data;
 };
 
 /// A rotation about an arbitrary line. Invariant: the data obey
-/// validateRotateAboutAxisTransform.
-class RotateAboutAxisTransform final : public Transform {
+/// validateRotateAboutAxisTransform. Field setters go through setValue.
+class RotateAboutAxisTransform final
+    : public ValueTransform<RotateAboutAxisTransform, TQ3RotateAboutAxisTransformData,
+                            validateRotateAboutAxisTransform> {
 public:
     static constexpr TQ3ObjectType kClassType = kQ3TransformTypeRotateAboutAxis;
-
-    /// Throws as validateRotateAboutAxisTransform.
-    explicit RotateAboutAxisTransform(const TQ3RotateAboutAxisTransformData& data);
+    using ValueTransform::ValueTransform;
 
     const ClassInfo& classInfo() const override { return kRotateAboutAxisTransformClass; }
-    Object* duplicate() const override;
     TQ3Matrix4x4 matrix() const override;
-    const TQ3RotateAboutAxisTransformData& data() const { return m_data; }
-    /// Throws as validateRotateAboutAxisTransform (on the whole data) and
-    /// then changes nothing. Field setters go through it.
-    void setData(const TQ3RotateAboutAxisTransformData& data);
-
-private:
-    TQ3RotateAboutAxisTransformData m_data;
 };
 
 /// The reset transform: no data. Invariant: matrix() is the identity and

@@ -101,14 +101,10 @@ Q3_LANES_INLINE void gridRows(const GridInput& in, std::size_t r0)
                 for (unsigned r = 0; r < kv; ++r) {
                     const float* p = s.points + 4 * ((firstRow[l] + r) * numColumns + firstColumn + j);
                     const double n = nv[l][r], dn = dnv[l][r];
-                    q[0] += n * p[0];
-                    q[1] += n * p[1];
-                    q[2] += n * p[2];
-                    q[3] += n * p[3];
-                    q[4] += dn * p[0];
-                    q[5] += dn * p[1];
-                    q[6] += dn * p[2];
-                    q[7] += dn * p[3];
+                    for (unsigned c = 0; c < 4; ++c) {
+                        q[c] += n * p[c];
+                        q[4 + c] += dn * p[c];
+                    }
                 }
                 for (unsigned c = 0; c < 8; ++c)
                     block[j][c][l] = q[c];
@@ -117,38 +113,26 @@ Q3_LANES_INLINE void gridRows(const GridInput& in, std::size_t r0)
         for (std::size_t i = i0; i < i1; ++i) {
             const double* n = in.uBasis + 2 * std::size_t(ku) * i;
             const double* dn = n + ku;
-            V hx = {}, hy = {}, hz = {}, hw = {};
-            V ux = {}, uy = {}, uz = {}, uw = {};
-            V vx = {}, vy = {}, vz = {}, vw = {};
+            // The homogeneous point h and its partials hu and hv, x y z w each.
+            V h[4] = {}, hu[4] = {}, hv[4] = {};
             for (unsigned j = 0; j < ku; ++j) {
-                V qx, qy, qz, qw, dx, dy, dz, dw;
-                loadLanes(qx, block[j][0]);
-                loadLanes(qy, block[j][1]);
-                loadLanes(qz, block[j][2]);
-                loadLanes(qw, block[j][3]);
-                loadLanes(dx, block[j][4]);
-                loadLanes(dy, block[j][5]);
-                loadLanes(dz, block[j][6]);
-                loadLanes(dw, block[j][7]);
                 const double a = n[j], b = dn[j];
-                hx += a * qx;
-                hy += a * qy;
-                hz += a * qz;
-                hw += a * qw;
-                ux += b * qx;
-                uy += b * qy;
-                uz += b * qz;
-                uw += b * qw;
-                vx += a * dx;
-                vy += a * dy;
-                vz += a * dz;
-                vw += a * dw;
+                for (unsigned c = 0; c < 4; ++c) {
+                    V q, d;
+                    loadLanes(q, block[j][c]);
+                    loadLanes(d, block[j][4 + c]);
+                    h[c] += a * q;
+                    hu[c] += b * q;
+                    hv[c] += a * d;
+                }
             }
             // The rational point and partials (Surface.cpp's finish).
-            const V inverseW = 1.0 / hw;
-            const V px = hx * inverseW, py = hy * inverseW, pz = hz * inverseW;
-            const V dux = (ux - px * uw) * inverseW, duy = (uy - py * uw) * inverseW, duz = (uz - pz * uw) * inverseW;
-            const V dvx = (vx - px * vw) * inverseW, dvy = (vy - py * vw) * inverseW, dvz = (vz - pz * vw) * inverseW;
+            const V inverseW = 1.0 / h[3];
+            const V px = h[0] * inverseW, py = h[1] * inverseW, pz = h[2] * inverseW;
+            const V dux = (hu[0] - px * hu[3]) * inverseW, duy = (hu[1] - py * hu[3]) * inverseW,
+                    duz = (hu[2] - pz * hu[3]) * inverseW;
+            const V dvx = (hv[0] - px * hv[3]) * inverseW, dvy = (hv[1] - py * hv[3]) * inverseW,
+                    dvz = (hv[2] - pz * hv[3]) * inverseW;
             // The unit normal (Surface.cpp's unitNormal).
             const V nx = duy * dvz - duz * dvy, ny = duz * dvx - dux * dvz, nz = dux * dvy - duy * dvx;
             const V n2 = nx * nx + ny * ny + nz * nz;
