@@ -77,6 +77,17 @@ protected:
         Q3Object_Dispose(copy);
         Q3Object_Dispose(transform);
     }
+
+    /// A quarter turn about z: the state takes (1, 0, 0) to (0, 1, 0).
+    static void expectTakesXToY(const TQ3Matrix4x4& state)
+    {
+        const TQ3Point3D x{1, 0, 0};
+        TQ3Point3D p{};
+        Q3Point3D_Transform(&x, &state, &p);
+        EXPECT_NEAR(p.x, 0.0f, 1e-6f);
+        EXPECT_NEAR(p.y, 1.0f, 1e-6f);
+        EXPECT_NEAR(p.z, 0.0f, 1e-6f);
+    }
 };
 
 // ---- Creating transforms ----------------------------------------------------
@@ -353,12 +364,7 @@ TEST_F(TransformApiTest, RotateTransformQuarterTurnAboutZTakesXToY)
     const TQ3RotateTransformData data{kQ3AxisZ, kQ3PiOver2};
     const TQ3Matrix4x4 state =
         stateAfter([&](TQ3ViewObject v) { EXPECT_EQ(Q3RotateTransform_Submit(&data, v), kQ3Success); });
-    const TQ3Point3D x{1, 0, 0};
-    TQ3Point3D p{};
-    Q3Point3D_Transform(&x, &state, &p);
-    EXPECT_NEAR(p.x, 0.0f, 1e-6f);
-    EXPECT_NEAR(p.y, 1.0f, 1e-6f);
-    EXPECT_NEAR(p.z, 0.0f, 1e-6f);
+    expectTakesXToY(state);
 }
 
 TEST_F(TransformApiTest, ResetTransformRestoresTheIdentity)
@@ -652,12 +658,7 @@ TEST_F(TransformApiTest, RotateTransformSettersReplaceDataAxisAndAngle)
     // The view applies the new rotation: a quarter turn about z takes x to y.
     const TQ3Matrix4x4 state =
         stateAfter([&](TQ3ViewObject v) { EXPECT_EQ(Q3Object_Submit(transform, v), kQ3Success); });
-    const TQ3Point3D x{1, 0, 0};
-    TQ3Point3D p{};
-    Q3Point3D_Transform(&x, &state, &p);
-    EXPECT_NEAR(p.x, 0.0f, 1e-6f);
-    EXPECT_NEAR(p.y, 1.0f, 1e-6f);
-    EXPECT_NEAR(p.z, 0.0f, 1e-6f);
+    expectTakesXToY(state);
     Q3Object_Dispose(transform);
 }
 

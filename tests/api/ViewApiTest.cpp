@@ -16,6 +16,22 @@ using namespace q3test;
 
 class ViewApiTest : public Q3ApiTest {
 protected:
+    // Listing 1's curve, an empty attribute set and a constant subdivision
+    // style (as data and as an object), disposed of at the end of the test.
+    struct Submittables {
+        Listing1 listing;
+        TQ3NURBCurveData data = listing.data();
+        TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+        TQ3AttributeSet set = Q3AttributeSet_New();
+        TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 4, 4};
+        TQ3StyleObject styleObject = Q3SubdivisionStyle_New(&style);
+        ~Submittables()
+        {
+            for (TQ3Object object : {curve, set, styleObject})
+                Q3Object_Dispose(object);
+        }
+    };
+
     void SetUp() override
     {
         Q3ApiTest::SetUp();
@@ -350,12 +366,8 @@ TEST_F(ViewApiTest, ASecondFrameReusesTheViewAndRedrawsFromTheClear)
 TEST_F(ViewApiTest, SubmittingOutsideALoopFailsWithViewNotStarted)
 {
     configure();
-    Listing1 listing;
-    const TQ3NURBCurveData data = listing.data();
-    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
-    TQ3AttributeSet set = Q3AttributeSet_New();
-    const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 4, 4};
-    TQ3StyleObject styleObject = Q3SubdivisionStyle_New(&style);
+    const Submittables submittables;
+    const auto& [listing, data, curve, set, style, styleObject] = submittables;
     const TQ3Vector3D offset = {1, 0, 0};
     for (int when = 0; when < 2; ++when) {
         if (when == 1) {
@@ -378,20 +390,13 @@ TEST_F(ViewApiTest, SubmittingOutsideALoopFailsWithViewNotStarted)
         EXPECT_Q3_ERROR(Q3View_GetSubdivisionStyleState(m_view, &state), kQ3ErrorViewNotStarted);
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_GetDecomposed(curve, m_view), nullptr), kQ3ErrorViewNotStarted);
     }
-    Q3Object_Dispose(curve);
-    Q3Object_Dispose(set);
-    Q3Object_Dispose(styleObject);
 }
 
 TEST_F(ViewApiTest, ObjectSubmitTakesEveryDrawableAndRejectsOthers)
 {
     configure();
-    Listing1 listing;
-    const TQ3NURBCurveData data = listing.data();
-    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
-    TQ3AttributeSet set = Q3AttributeSet_New();
-    const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 4, 4};
-    TQ3StyleObject styleObject = Q3SubdivisionStyle_New(&style);
+    const Submittables submittables;
+    const auto& [listing, data, curve, set, style, styleObject] = submittables;
     const TQ3Vector3D offset = {0.5f, 0, 0};
     TQ3TransformObject transform = Q3TranslateTransform_New(&offset);
 
@@ -417,8 +422,7 @@ TEST_F(ViewApiTest, ObjectSubmitTakesEveryDrawableAndRejectsOthers)
     EXPECT_Q3_ERROR(Q3Object_Submit(deadHandle(), m_view), kQ3ErrorInvalidObject);
     EXPECT_Q3_ERROR(Q3Object_Submit(curve, deadHandle()), kQ3ErrorInvalidObject);
     EXPECT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
-    for (TQ3Object object : {curve, set, styleObject, transform})
-        Q3Object_Dispose(object);
+    Q3Object_Dispose(transform);
 }
 
 TEST_F(ViewApiTest, CancelEndsTheLoopWithCancelledAndIgnoresLaterSubmits)

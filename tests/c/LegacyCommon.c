@@ -33,6 +33,26 @@ TQ3AttributeSet MyNewColorSet(float r, float g, float b)
     return set;
 }
 
+int MyStartBounding(TQ3ViewObject *view, TQ3AttributeSet *red)
+{
+    if (Q3Initialize() != kQ3Success)
+        return 1;
+    *view = Q3View_New();
+    *red = MyNewColorSet(1.0f, 0.0f, 0.0f);
+    return *view == NULL || *red == NULL ? 2 : 0;
+}
+
+int MyFinishBounding(TQ3ViewObject view, TQ3AttributeSet red, const char *summary)
+{
+    Q3Object_Dispose(red);
+    Q3Object_Dispose(view);
+    if (Q3Exit() != kQ3Success)
+        gFailures++;
+    if (gFailures == 0)
+        printf("%s: %s\n", gMyProgramName, summary);
+    return gFailures == 0 ? 0 : 3;
+}
+
 void MyCheckAndDisposeSet(TQ3AttributeSet set, TQ3AttributeSet expected, const char *what)
 {
     Check((TQ3Boolean)(set == expected), what);

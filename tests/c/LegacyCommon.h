@@ -26,6 +26,16 @@ void Check(TQ3Boolean ok, const char *what);
 #define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
 #define EXPECT(condition) Check((TQ3Boolean)((condition) != 0), #condition)
 
+/* Initializes QuickDraw 3D and makes a view and a red attribute set for a
+ * program that bounds its geometries; returns 0, or the exit status to end
+ * with (1: Q3Initialize failed, 2: no view or set). */
+int MyStartBounding(TQ3ViewObject *view, TQ3AttributeSet *red);
+
+/* Disposes of what MyStartBounding made, exits QuickDraw 3D (a failure if
+ * that fails) and returns the exit status: 0 with `summary` printed when no
+ * check failed, 3 otherwise. */
+int MyFinishBounding(TQ3ViewObject view, TQ3AttributeSet red, const char *summary);
+
 /* A new attribute set holding a diffuse colour. */
 TQ3AttributeSet MyNewColorSet(float r, float g, float b);
 
