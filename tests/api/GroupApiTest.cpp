@@ -64,34 +64,20 @@ protected:
     }
     TQ3AttributeSet attributes() { return own(Q3AttributeSet_New()); }
 
-    /// The objects of the group from first to last, through the positions.
-    std::vector<TQ3Object> walk(TQ3GroupObject group)
+    /// The objects of the group from first to last, through the positions:
+    /// walked from the first forwards, or from the last back when `backwards`.
+    std::vector<TQ3Object> walk(TQ3GroupObject group, bool backwards = false)
     {
         std::vector<TQ3Object> objects;
         TQ3GroupPosition position = nullptr;
-        EXPECT_EQ(Q3Group_GetFirstPosition(group, &position), kQ3Success);
+        EXPECT_EQ((backwards ? Q3Group_GetLastPosition : Q3Group_GetFirstPosition)(group, &position), kQ3Success);
         while (position != nullptr) {
             TQ3Object object = nullptr;
             EXPECT_EQ(Q3Group_GetPositionObject(group, position, &object), kQ3Success);
-            objects.push_back(object);
+            objects.insert(backwards ? objects.begin() : objects.end(), object);
             Q3Object_Dispose(object);
-            EXPECT_EQ(Q3Group_GetNextPosition(group, &position), kQ3Success);
-        }
-        return objects;
-    }
-
-    /// The same, from last to first.
-    std::vector<TQ3Object> walkBack(TQ3GroupObject group)
-    {
-        std::vector<TQ3Object> objects;
-        TQ3GroupPosition position = nullptr;
-        EXPECT_EQ(Q3Group_GetLastPosition(group, &position), kQ3Success);
-        while (position != nullptr) {
-            TQ3Object object = nullptr;
-            EXPECT_EQ(Q3Group_GetPositionObject(group, position, &object), kQ3Success);
-            objects.insert(objects.begin(), object);
-            Q3Object_Dispose(object);
-            EXPECT_EQ(Q3Group_GetPreviousPosition(group, &position), kQ3Success);
+            EXPECT_EQ((backwards ? Q3Group_GetPreviousPosition : Q3Group_GetNextPosition)(group, &position),
+                      kQ3Success);
         }
         return objects;
     }
@@ -155,7 +141,7 @@ TEST_F(GroupApiTest, AddKeepsTheOrderAndWalksBothWays)
     ASSERT_NE(pd, nullptr);
     const std::vector<TQ3Object> expected{a, b, c, d};
     EXPECT_EQ(walk(group), expected);
-    EXPECT_EQ(walkBack(group), expected);
+    EXPECT_EQ(walk(group, true), expected);
     EXPECT_EQ(count(group), 4u);
 
     TQ3GroupPosition last = nullptr;

@@ -8,6 +8,7 @@
 // macros, duplicates, bounds, and the even-odd fill of holed faces checked
 // against a point-in-contours test written here.
 
+#include "DiffuseColor.h"
 #include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
@@ -993,9 +994,7 @@ TEST_F(MeshApiTest, DuplicateCopiesEverythingWithNewHandlesAndSets)
     EXPECT_NE(s0, red);
     EXPECT_EQ(s0, s1); // shared in the original, shared in the copy
     EXPECT_EQ(se, s0);
-    TQ3ColorRGB color{};
-    EXPECT_EQ(Q3AttributeSet_Get(s0, kQ3AttributeTypeDiffuseColor, &color), kQ3Success);
-    EXPECT_EQ(color.r, 1);
+    EXPECT_EQ(expectDiffuseColor(s0).r, 1);
     Q3Object_Dispose(s0);
     Q3Object_Dispose(s1);
     Q3Object_Dispose(se);

@@ -42,6 +42,18 @@ TQ3CameraObject newCamera()
 
 class ViewHintsApiTest : public Q3ApiTest {
 protected:
+    // `get` hands back `expected`, the object the hints hold, with a new
+    // reference (given back here).
+    static void expectHintsHold(TQ3Status (*get)(TQ3ViewHintsObject, TQ3Object*), TQ3ViewHintsObject hints,
+                                TQ3Object expected)
+    {
+        TQ3Object got = nullptr;
+        EXPECT_EQ(get(hints, &got), kQ3Success);
+        EXPECT_EQ(got, expected);
+        if (got != nullptr)
+            Q3Object_Dispose(got);
+    }
+
     void SetUp() override
     {
         Q3ApiTest::SetUp();
@@ -159,19 +171,10 @@ TEST_F(ViewHintsApiTest, NewCopiesTheViewsConfiguration)
 
     TQ3ViewHintsObject hints = Q3ViewHints_New(m_view);
     ASSERT_NE(hints, nullptr);
-    TQ3Object got = nullptr;
-    EXPECT_EQ(Q3ViewHints_GetCamera(hints, &got), kQ3Success);
-    EXPECT_EQ(got, camera);
-    Q3Object_Dispose(got);
-    EXPECT_EQ(Q3ViewHints_GetRenderer(hints, &got), kQ3Success);
-    EXPECT_EQ(got, renderer);
-    Q3Object_Dispose(got);
-    EXPECT_EQ(Q3ViewHints_GetLightGroup(hints, &got), kQ3Success);
-    EXPECT_EQ(got, lights);
-    Q3Object_Dispose(got);
-    EXPECT_EQ(Q3ViewHints_GetAttributeSet(hints, &got), kQ3Success);
-    EXPECT_EQ(got, set);
-    Q3Object_Dispose(got);
+    expectHintsHold(Q3ViewHints_GetCamera, hints, camera);
+    expectHintsHold(Q3ViewHints_GetRenderer, hints, renderer);
+    expectHintsHold(Q3ViewHints_GetLightGroup, hints, lights);
+    expectHintsHold(Q3ViewHints_GetAttributeSet, hints, set);
     expectImageHints(hints, 40, 30, contextData.drawContextData.mask, contextData.drawContextData.clearImageColor);
 
     // A pane gives the dimensions instead of the pixmap.
@@ -284,10 +287,7 @@ TEST_F(ViewHintsApiTest, DuplicateSharesTheObjectsAndCopiesTheValues)
     ASSERT_NE(copy, nullptr);
     EXPECT_NE(copy, m_hints);
     EXPECT_EQ(Q3Object_IsType(copy, kQ3SharedTypeViewHints), kQ3True);
-    TQ3Object got = nullptr;
-    EXPECT_EQ(Q3ViewHints_GetCamera(copy, &got), kQ3Success);
-    EXPECT_EQ(got, camera);
-    Q3Object_Dispose(got);
+    expectHintsHold(Q3ViewHints_GetCamera, copy, camera);
     unsigned long width = 0, height = 0;
     EXPECT_EQ(Q3ViewHints_GetDimensions(copy, &width, &height), kQ3Success);
     EXPECT_EQ(width, 3ul);
