@@ -89,7 +89,7 @@ std::vector<unsigned char> textureBytes(TexelOf texelOf)
 // Which texture a pixel's uv should show: A, B, or (0) none decided here.
 using Region = std::function<TexelOf(double u, double v)>;
 
-class AttributeTextureRenderTest : public OwningApiTest {
+class AttributeTextureRenderTest : public OwningApiTest, protected InteractiveRendering<kWidth, kHeight> {
 protected:
     void SetUp() override
     {
@@ -158,14 +158,6 @@ protected:
         return polygon;
     }
 
-    static Pixmap render(const std::function<void(TQ3ViewObject)>& submit)
-    {
-        return renderInteractive(kWidth, kHeight, submit);
-    }
-    static Pixmap renderUnder(TQ3ShaderObject shader, TQ3GeometryObject geometry)
-    {
-        return renderUnderShader(kWidth, kHeight, shader, geometry);
-    }
 
     // Every decidable pixel shows the texel of the texture `region` names
     // for its uv; returns how many pixels were checked.

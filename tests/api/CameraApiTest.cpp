@@ -7,6 +7,7 @@
 // expected values are worked out by hand in each test.
 
 #include "RenderTestSupport.h"
+#include "SetThenGet.h"
 
 #include "QD3DCamera.h"
 #include "QD3DSet.h"
@@ -262,12 +263,7 @@ TEST_F(CameraApiTest, CommonDataAndItsPartsRoundTrip)
     data.placement = {{1, 2, 3}, {4, 5, 6}, {0, 0, 1}};
     data.range = {0.5f, 99};
     data.viewPort = {{-0.5f, 0.5f}, 1, 1};
-    const unsigned long edit = Q3Shared_GetEditIndex(camera);
-    EXPECT_EQ(Q3Camera_SetData(camera, &data), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(camera), edit);
-    TQ3CameraData out{};
-    EXPECT_EQ(Q3Camera_GetData(camera, &out), kQ3Success);
-    EXPECT_EQ(std::memcmp(&out, &data, sizeof data), 0);
+    q3test::expectSetThenGet(camera, Q3Camera_SetData, Q3Camera_GetData, data);
 
     const TQ3CameraPlacement placement = {{0, 3, 0}, {0, 0, 0}, {1, 0, 0}};
     EXPECT_EQ(Q3Camera_SetPlacement(camera, &placement), kQ3Success);

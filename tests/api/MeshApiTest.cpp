@@ -9,6 +9,7 @@
 // against a point-in-contours test written here.
 
 #include "DiffuseColor.h"
+#include "GeometryTestSupport.h"
 #include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
@@ -29,9 +30,6 @@
 namespace {
 
 using namespace q3test;
-
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr float kInf = std::numeric_limits<float>::infinity();
 
 class MeshApiTest : public OwningApiTest {
 protected:

@@ -96,7 +96,7 @@ bool expectedTexel(int px, int py, const UVMap& map, Rgba& out)
     return true;
 }
 
-class TextureRenderTest : public OwningApiTest {
+class TextureRenderTest : public OwningApiTest, protected InteractiveRendering<kWidth, kHeight> {
 protected:
     void SetUp() override
     {
@@ -123,14 +123,6 @@ protected:
         return mesh;
     }
 
-    static Pixmap render(const std::function<void(TQ3ViewObject)>& submit)
-    {
-        return renderInteractive(kWidth, kHeight, submit);
-    }
-    static Pixmap renderUnder(TQ3ShaderObject shader, TQ3GeometryObject geometry)
-    {
-        return renderUnderShader(kWidth, kHeight, shader, geometry);
-    }
 
     // Every pixel the rule decides shows its texel scaled by `scale` (within
     // `tolerance` per channel); returns how many were checked.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "Q3ApiTest.h"
+#include "SetThenGet.h"
 #include "TransformTestSupport.h"
 
 #include "QD3DGeometry.h"
@@ -612,12 +613,7 @@ TEST_F(TransformApiTest, ScaleTransformSetAcceptsZeroAndNegativeFactorsAndTakesE
 {
     const TQ3Vector3D first{2, 2, 2}, second{0, -1, 3};
     TQ3TransformObject transform = Q3ScaleTransform_New(&first);
-    const unsigned long edit = Q3Shared_GetEditIndex(transform);
-    EXPECT_EQ(Q3ScaleTransform_Set(transform, &second), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(transform), edit);
-    TQ3Vector3D out{};
-    EXPECT_EQ(Q3ScaleTransform_Get(transform, &out), kQ3Success);
-    EXPECT_EQ(std::memcmp(&out, &second, sizeof out), 0);
+    q3test::expectSetThenGet(transform, Q3ScaleTransform_Set, Q3ScaleTransform_Get, second);
     TQ3Matrix4x4 expected{};
     Q3Matrix4x4_SetScale(&expected, 0, -1, 3);
     expectMatrixNear(stateAfter([&](TQ3ViewObject v) { Q3Object_Submit(transform, v); }), expected,

@@ -44,6 +44,16 @@ class ViewHintsApiTest : public Q3ApiTest {
 protected:
     // `get` hands back `expected`, the object the hints hold, with a new
     // reference (given back here).
+    // `get` refuses a NULL result pointer on the hints, and a handle of
+    // another type.
+    template <class T>
+    void expectGetRefuses(TQ3Status (*get)(TQ3ViewHintsObject, T*), TQ3Object wrongType)
+    {
+        EXPECT_Q3_ERROR(get(m_hints, nullptr), kQ3ErrorNULLParameter);
+        T out{};
+        EXPECT_Q3_ERROR(get(wrongType, &out), kQ3ErrorInvalidObjectType);
+    }
+
     static void expectHintsHold(TQ3Status (*get)(TQ3ViewHintsObject, TQ3Object*), TQ3ViewHintsObject hints,
                                 TQ3Object expected)
     {
@@ -313,10 +323,7 @@ TEST_F(ViewHintsApiTest, BadHandlesAreErrorsAndChangeNothing)
     ASSERT_EQ(Q3ViewHints_SetCamera(m_hints, camera), kQ3Success);
     const Snapshot before = snapshot();
     TQ3Object out = nullptr;
-    TQ3Boolean state;
     unsigned long w, h;
-    TQ3Bitmap mask;
-    TQ3DrawContextClearImageMethod method;
     TQ3ColorARGB color{1, 0, 0, 0};
 
     EXPECT_Q3_ERROR(Q3ViewHints_New(nullptr), kQ3ErrorNULLParameter);
@@ -349,24 +356,17 @@ TEST_F(ViewHintsApiTest, BadHandlesAreErrorsAndChangeNothing)
     EXPECT_Q3_ERROR(Q3ViewHints_GetCamera(m_hints, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3ViewHints_GetRenderer(m_hints, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3ViewHints_GetRenderer(nullptr, &out), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetLightGroup(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetLightGroup(camera, &out), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetAttributeSet(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetAttributeSet(camera, &out), kQ3ErrorInvalidObjectType);
+    expectGetRefuses(Q3ViewHints_GetLightGroup, camera);
+    expectGetRefuses(Q3ViewHints_GetAttributeSet, camera);
     EXPECT_EQ(out, camera);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetDimensionsState(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetDimensionsState(camera, &state), kQ3ErrorInvalidObjectType);
+    expectGetRefuses(Q3ViewHints_GetDimensionsState, camera);
     EXPECT_Q3_ERROR(Q3ViewHints_GetDimensions(m_hints, nullptr, &h), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3ViewHints_GetDimensions(m_hints, &w, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3ViewHints_GetDimensions(camera, &w, &h), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetMaskState(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetMaskState(display, &state), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetMask(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetMask(display, &mask), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetClearImageMethod(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetClearImageMethod(display, &method), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetClearImageColor(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetClearImageColor(display, &color), kQ3ErrorInvalidObjectType);
+    expectGetRefuses(Q3ViewHints_GetMaskState, display);
+    expectGetRefuses(Q3ViewHints_GetMask, display);
+    expectGetRefuses(Q3ViewHints_GetClearImageMethod, display);
+    expectGetRefuses(Q3ViewHints_GetClearImageColor, display);
     expectUnchanged(before);
     Q3Object_Dispose(camera);
     Q3Object_Dispose(display);
