@@ -13,6 +13,7 @@
 // Exact texels against uv are checked in tests/api/TextureRenderTest.cpp.
 
 #include "Golden.h"
+#include "MemoryFile.h"
 #include "SceneRender.h"
 #include "SessionTest.h"
 #include "QuadMesh.h"
@@ -46,18 +47,16 @@ constexpr int kWidth = 160, kHeight = 120;
 // The objects written to a 3DMF file in memory in `mode` and read back.
 std::vector<TQ3Object> throughFile(const std::vector<TQ3Object>& objects, TQ3FileMode mode)
 {
-    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
+    const std::vector<unsigned char> bytes = q3test::writeMemoryFile(
+        mode,
+        [&](TQ3ViewObject view) {
+            for (TQ3Object object : objects)
+                EXPECT_EQ(Q3Object_Submit(object, view), kQ3Success);
+        },
+        [](bool ok, const char* what) { EXPECT_TRUE(ok) << what; });
+    TQ3StorageObject storage = Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size()));
     TQ3FileObject file = Q3File_New();
-    TQ3ViewObject view = Q3View_New();
     Q3File_SetStorage(file, storage);
-    Q3File_OpenWrite(file, mode);
-    Q3View_StartWriting(view, file);
-    do {
-        for (TQ3Object object : objects)
-            Q3Object_Submit(object, view);
-    } while (Q3View_EndWriting(view) == kQ3ViewStatusRetraverse);
-    Q3File_Close(file);
-    Q3Object_Dispose(view);
     std::vector<TQ3Object> read;
     TQ3FileMode opened = 0;
     if (Q3File_OpenRead(file, &opened) == kQ3Success) {

@@ -15,16 +15,17 @@
 
 namespace q3test {
 
-/// The bytes of a file written in `mode` into a new memory storage by a
-/// writing loop whose every pass calls `submit(view)`. Each step's outcome
-/// goes to `check(ok, what)`, which may count it or stop the program.
+/// The bytes of a file written in `mode` into a new memory storage through
+/// `view` by a writing loop whose every pass calls `submit(view)`. Each
+/// step's outcome goes to `check(ok, what)`, which may count it or stop the
+/// program.
 template <class Submit, class Check>
-std::vector<unsigned char> writeMemoryFile(TQ3FileMode mode, Submit&& submit, Check&& check)
+std::vector<unsigned char> writeMemoryFileThrough(TQ3ViewObject view, TQ3FileMode mode, Submit&& submit,
+                                                  Check&& check)
 {
     std::vector<unsigned char> bytes;
     TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
     TQ3FileObject file = Q3File_New();
-    TQ3ViewObject view = Q3View_New();
     check(Q3File_SetStorage(file, storage) == kQ3Success, "Q3File_SetStorage");
     check(Q3File_OpenWrite(file, mode) == kQ3Success, "Q3File_OpenWrite");
     check(Q3View_StartWriting(view, file) == kQ3Success, "Q3View_StartWriting");
@@ -40,9 +41,18 @@ std::vector<unsigned char> writeMemoryFile(TQ3FileMode mode, Submit&& submit, Ch
     check(Q3MemoryStorage_GetBuffer(storage, &buffer, &size, nullptr) == kQ3Success, "Q3MemoryStorage_GetBuffer");
     if (buffer != nullptr)
         bytes.assign(buffer, buffer + size);
-    Q3Object_Dispose(view);
     Q3Object_Dispose(file);
     Q3Object_Dispose(storage);
+    return bytes;
+}
+
+/// The same through a new view.
+template <class Submit, class Check>
+std::vector<unsigned char> writeMemoryFile(TQ3FileMode mode, Submit&& submit, Check&& check)
+{
+    TQ3ViewObject view = Q3View_New();
+    std::vector<unsigned char> bytes = writeMemoryFileThrough(view, mode, submit, check);
+    Q3Object_Dispose(view);
     return bytes;
 }
 
