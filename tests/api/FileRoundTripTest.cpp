@@ -139,19 +139,10 @@ std::vector<Case> cases()
                        static TQ3TriMeshAttributeData faces[1] = {
                            {kQ3AttributeTypeDiffuseColor, faceColors, faceUse}};
                        static TQ3TriMeshAttributeData vertices[1] = {{kQ3AttributeTypeNormal, normals, nullptr}};
-                       TQ3TriMeshData d{};
-                       d.numTriangleAttributeTypes = 1;
-                       d.triangleAttributeTypes = faces;
-                       d.numVertexAttributeTypes = 1;
-                       d.vertexAttributeTypes = vertices;
-                       d.triMeshAttributeSet = set;
-                       d.numTriangles = 2;
-                       d.triangles = t;
-                       d.numEdges = 1;
-                       d.edges = e;
-                       d.numPoints = 4;
-                       d.points = p;
-                       d.bBox = {{-2, -1, -1}, {2, 1.5f, 0}, kQ3False};
+                       // The set, two triangles with one attribute array,
+                       // one edge without, four points with one.
+                       TQ3TriMeshData d{set, 2, t, 1, faces, 1, e, 0, nullptr, 4, p, 1, vertices,
+                                        {{-2, -1, -1}, {2, 1.5f, 0}, kQ3False}};
                        TQ3Object o = Q3TriMesh_New(&d);
                        Q3Object_Dispose(set);
                        return o;

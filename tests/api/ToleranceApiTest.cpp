@@ -191,14 +191,9 @@ TEST_F(ToleranceApiTest, TriMeshesWithRepeatedIndicesOrOddTopologyAreKeptSilentl
     TQ3TriMeshTriangleData triangles[] = {{{0, 0, 1}}, {{3, 3, 3}}, {{0, 1, 2}}, {{0, 2, 4}}, {{2, 0, 5}},
                                           {{0, 2, 3}}};
     TQ3TriMeshEdgeData edges[] = {{{1, 1}, {0, 0}}};
-    TQ3TriMeshData data{};
-    data.numTriangles = 6;
-    data.triangles = triangles;
-    data.numEdges = 1;
-    data.edges = edges;
-    data.numPoints = 6;
-    data.points = points;
-    data.bBox = {{0, 0, -1}, {1, 1, 1}, kQ3False};
+    // No set, six triangles, one edge, six points, no attribute arrays.
+    TQ3TriMeshData data{nullptr, 6, triangles, 0, nullptr, 1, edges, 0, nullptr, 6, points, 0, nullptr,
+                        {{0, 0, -1}, {1, 1, 1}, kQ3False}};
     TQ3GeometryObject mesh = own(Q3TriMesh_New(&data));
     ASSERT_NE(mesh, nullptr);
     TQ3TriMeshData out{};
