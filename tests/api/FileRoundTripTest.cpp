@@ -221,17 +221,21 @@ std::vector<Case> cases()
                    })});
     all.push_back({"Cone",
                    [] {
-                       TQ3ConeData d{};
-                       d.origin = {0, -1, 0};
-                       d.orientation = {0, 2, 0};
-                       d.majorRadius = {1, 0, 0};
-                       d.minorRadius = {0, 0, 1};
-                       d.uMin = 0;
-                       d.uMax = 0.75f;
-                       d.vMin = 0;
-                       d.vMax = 1;
-                       d.caps = kQ3EndCapMaskBottom | kQ3EndCapMaskInterior;
-                       d.coneAttributeSet = colorSet(1, 0.5f, 0);
+                       // Radius 1 about +y from y = -1 to 1, a quarter cut
+                       // away, the bottom and the cut closed, an orange set.
+                       TQ3ConeData d{{0, -1, 0},
+                                     {0, 2, 0},
+                                     {1, 0, 0},
+                                     {0, 0, 1},
+                                     0,
+                                     0.75f,
+                                     0,
+                                     1,
+                                     kQ3EndCapMaskBottom | kQ3EndCapMaskInterior,
+                                     nullptr,
+                                     nullptr,
+                                     nullptr,
+                                     colorSet(1, 0.5f, 0)};
                        TQ3Object o = Q3Cone_New(&d);
                        Q3Object_Dispose(d.coneAttributeSet);
                        return o;

@@ -15,6 +15,7 @@
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 
+#include <utility>
 #include <vector>
 
 namespace {
@@ -292,13 +293,13 @@ TEST_F(GroupApiTest, OfTypeCallsSeeOnlyThatTypeAndItsSubclasses)
     TQ3Object p1 = point(1), t1 = translate(1), p2 = point(2), s = fillStyle(), t2 = translate(2);
     for (TQ3Object object : {p1, t1, p2, s, t2})
         ASSERT_NE(Q3Group_AddObject(group, object), nullptr);
-    EXPECT_EQ(count(group, kQ3ShapeTypeGeometry), 2u);
-    EXPECT_EQ(count(group, kQ3GeometryTypePoint), 2u);
-    EXPECT_EQ(count(group, kQ3ShapeTypeTransform), 2u);
-    EXPECT_EQ(count(group, kQ3TransformTypeTranslate), 2u);
-    EXPECT_EQ(count(group, kQ3TransformTypeScale), 0u);
-    EXPECT_EQ(count(group, kQ3ShapeTypeStyle), 1u);
-    EXPECT_EQ(count(group, kQ3SharedTypeShape), 5u);
+    // Each type and how many of the five objects are of it.
+    const std::pair<TQ3ObjectType, unsigned long> counts[] = {
+        {kQ3ShapeTypeGeometry, 2},      {kQ3GeometryTypePoint, 2},  {kQ3ShapeTypeTransform, 2},
+        {kQ3TransformTypeTranslate, 2}, {kQ3TransformTypeScale, 0}, {kQ3ShapeTypeStyle, 1},
+        {kQ3SharedTypeShape, 5}};
+    for (const auto& [type, expected] : counts)
+        EXPECT_EQ(count(group, type), expected) << "type " << type;
 
     EXPECT_EQ(walkOfType(group, kQ3ShapeTypeTransform, true), (std::vector<TQ3Object>{t1, t2}));
     EXPECT_EQ(walkOfType(group, kQ3ShapeTypeGeometry, false), (std::vector<TQ3Object>{p2, p1}));

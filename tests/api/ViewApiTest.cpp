@@ -10,6 +10,8 @@
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 
+#include <utility>
+
 namespace {
 
 using namespace q3test;
@@ -84,15 +86,14 @@ TEST(ViewApiUninitialized, NewBeforeInitializeFailsWithNotInitialized)
 
 TEST_F(ViewApiTest, NewViewHasNoRendererCameraOrDrawContext)
 {
-    TQ3Object out = m_camera;
-    EXPECT_EQ(Q3View_GetCamera(m_view, &out), kQ3Success);
-    EXPECT_EQ(out, nullptr);
-    out = m_renderer;
-    EXPECT_EQ(Q3View_GetRenderer(m_view, &out), kQ3Success);
-    EXPECT_EQ(out, nullptr);
-    out = m_context;
-    EXPECT_EQ(Q3View_GetDrawContext(m_view, &out), kQ3Success);
-    EXPECT_EQ(out, nullptr);
+    // Each getter overwrites a handle it is given with NULL.
+    const std::pair<TQ3Status (*)(TQ3ViewObject, TQ3Object*), TQ3Object> getters[] = {
+        {Q3View_GetCamera, m_camera}, {Q3View_GetRenderer, m_renderer}, {Q3View_GetDrawContext, m_context}};
+    for (const auto& [get, before] : getters) {
+        TQ3Object out = before;
+        EXPECT_EQ(get(m_view, &out), kQ3Success);
+        EXPECT_EQ(out, nullptr);
+    }
     EXPECT_EQ(Q3Object_GetType(m_view), kQ3ObjectTypeView);
 }
 
