@@ -261,15 +261,8 @@ std::vector<Case> cases()
                    })});
     all.push_back({"Disk",
                    [] {
-                       TQ3DiskData d{};
-                       d.origin = {0, 0, 0};
-                       d.majorRadius = {2, 0, 0};
-                       d.minorRadius = {0, 1.5f, 0};
-                       d.uMin = 0.25f;
-                       d.uMax = 1;
-                       d.vMin = 0;
-                       d.vMax = 1;
-                       d.diskAttributeSet = colorSet(0, 1, 1);
+                       // u from a quarter round to the end, all of v, a cyan set.
+                       TQ3DiskData d{{0, 0, 0}, {2, 0, 0}, {0, 1.5f, 0}, 0.25f, 1, 0, 1, colorSet(0, 1, 1)};
                        TQ3Object o = Q3Disk_New(&d);
                        Q3Object_Dispose(d.diskAttributeSet);
                        return o;
@@ -281,11 +274,7 @@ std::vector<Case> cases()
                    })});
     all.push_back({"Ellipse",
                    [] {
-                       TQ3EllipseData d{};
-                       d.majorRadius = {2, 0, 0};
-                       d.minorRadius = {0, 1, 0};
-                       d.uMin = 0;
-                       d.uMax = 0.5f;
+                       TQ3EllipseData d{{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, 0, 0.5f, nullptr}; // half of it
                        TQ3Object o = Q3Ellipse_New(&d);
                        return o;
                    },

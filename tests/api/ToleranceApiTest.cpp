@@ -320,12 +320,8 @@ TEST_F(ToleranceApiTest, ADegenerateQuadricIsWrittenAsItIsAndReadsBackWithTheWar
 {
     // A cone whose orientation lies in its base's plane, in text and in both
     // binary byte orders.
-    TQ3ConeData data{};
-    data.orientation = {1, 0, 0};
-    data.majorRadius = {1, 0, 0};
-    data.minorRadius = {0, 0.5f, 0};
-    data.uMax = 1;
-    data.vMax = 1;
+    TQ3ConeData data{{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0, 0.5f, 0}, 0, 1, 0, 1, kQ3EndCapNone,
+                     nullptr, nullptr, nullptr, nullptr};
     TQ3GeometryObject cone = nullptr;
     EXPECT_Q3_WARNING(cone = own(Q3Cone_New(&data)), kQ3WarningInconsistentData);
     ASSERT_NE(cone, nullptr);

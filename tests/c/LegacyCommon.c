@@ -76,7 +76,8 @@ void MyBoundAndDispose(TQ3ViewObject view, TQ3GeometryObject geometry)
     Q3Object_Dispose(geometry);
 }
 
-TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, unsigned long height)
+TQ3DrawContextObject MyNewPixmapDrawContext(void *pixels, unsigned long width, unsigned long height,
+                                            unsigned long pixelSize, TQ3PixelType pixelType, TQ3Endian order)
 {
     TQ3PixmapDrawContextData contextData;
 
@@ -86,12 +87,17 @@ TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, uns
     contextData.pixmap.image = pixels;
     contextData.pixmap.width = width;
     contextData.pixmap.height = height;
-    contextData.pixmap.rowBytes = width * 4;
-    contextData.pixmap.pixelSize = 32;
-    contextData.pixmap.pixelType = kQ3PixelTypeARGB32;
-    contextData.pixmap.bitOrder = kQ3EndianBig;
-    contextData.pixmap.byteOrder = kQ3EndianBig;
+    contextData.pixmap.rowBytes = width * (pixelSize / 8);
+    contextData.pixmap.pixelSize = pixelSize;
+    contextData.pixmap.pixelType = pixelType;
+    contextData.pixmap.bitOrder = order;
+    contextData.pixmap.byteOrder = order;
     return Q3PixmapDrawContext_New(&contextData);
+}
+
+TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, unsigned long height)
+{
+    return MyNewPixmapDrawContext(pixels, width, height, 32, kQ3PixelTypeARGB32, kQ3EndianBig);
 }
 
 /* Camera data at (0, 0, z) looking down -z (the point of interest the

@@ -46,8 +46,13 @@ void MyCheckAndDisposeSet(TQ3AttributeSet set, TQ3AttributeSet expected, const c
  * disposes of the geometry. */
 void MyBoundAndDispose(TQ3ViewObject view, TQ3GeometryObject geometry);
 
-/* A pixmap draw context over `pixels` (width x height, ARGB32 big-endian),
- * cleared to opaque black. */
+/* A pixmap draw context over `pixels` (width x height, rows without
+ * padding, pixelSize bits a pixel of pixelType, bits and bytes in `order`),
+ * cleared to opaque black; no pane, no mask, single-buffered. */
+TQ3DrawContextObject MyNewPixmapDrawContext(void *pixels, unsigned long width, unsigned long height,
+                                            unsigned long pixelSize, TQ3PixelType pixelType, TQ3Endian order);
+
+/* The same for ARGB32 big-endian. */
 TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, unsigned long height);
 
 /* An orthographic camera at (0, 0, z) looking down -z, up +y, showing
