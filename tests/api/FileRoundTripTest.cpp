@@ -245,14 +245,10 @@ std::vector<Case> cases()
                    })});
     all.push_back({"Cylinder",
                    [] {
-                       TQ3CylinderData d{};
-                       d.origin = {0, -1, 0};
-                       d.orientation = {0, 2, 0};
-                       d.majorRadius = {1, 0, 0};
-                       d.minorRadius = {0, 0, 0.5f};
-                       d.uMax = 1;
-                       d.vMax = 1;
-                       d.caps = kQ3EndCapMaskTop | kQ3EndCapMaskBottom;
+                       // Elliptic, about +y from y = -1 to 1, whole, both ends
+                       // closed, no sets.
+                       TQ3CylinderData d{{0, -1, 0}, {0, 2, 0}, {1, 0, 0}, {0, 0, 0.5f}, 0, 1, 0, 1,
+                                         kQ3EndCapMaskTop | kQ3EndCapMaskBottom};
                        TQ3Object o = Q3Cylinder_New(&d);
                        return o;
                    },
