@@ -25,6 +25,18 @@ using namespace q3test;
 
 class ToleranceApiTest : public OwningApiTest {
 protected:
+    /// GetData gives back all `count` vertices `object` was made of, as given.
+    template <class Data>
+    static void expectVerticesKept(TQ3GeometryObject object, TQ3Status (*get)(TQ3GeometryObject, Data*),
+                                   TQ3Status (*empty)(Data*), const TQ3Vertex3D* given, unsigned long count)
+    {
+        Data out{};
+        ASSERT_EQ(get(object, &out), kQ3Success);
+        EXPECT_EQ(out.numVertices, count);
+        EXPECT_TRUE(sameVertices(out.vertices, given, count));
+        empty(&out);
+    }
+
     /// Draws `geometry` with `renderer` in the rendering tests' orthographic
     /// scene; the loop must finish. Returns the number of lit pixels.
     std::size_t litPixels(TQ3GeometryObject geometry, TQ3ObjectType renderer)
@@ -115,11 +127,7 @@ TEST_F(ToleranceApiTest, PolygonsWithRepeatedOrCollinearPointsAreKeptSilently)
     const TQ3PolygonData repeated = {5, square, nullptr};
     TQ3GeometryObject polygon = own(Q3Polygon_New(&repeated));
     ASSERT_NE(polygon, nullptr);
-    TQ3PolygonData out{};
-    ASSERT_EQ(Q3Polygon_GetData(polygon, &out), kQ3Success);
-    EXPECT_EQ(out.numVertices, 5u);
-    EXPECT_TRUE(sameVertices(out.vertices, square, 5));
-    Q3Polygon_EmptyData(&out);
+    expectVerticesKept(polygon, Q3Polygon_GetData, Q3Polygon_EmptyData, square, 5);
     EXPECT_GT(litPixels(polygon, kQ3RendererTypeInteractive), 0u);
     expectFiniteDrawing(polygon, "polygon with a repeated corner");
 
@@ -166,11 +174,7 @@ TEST_F(ToleranceApiTest, ALineWhoseEndsCoincideAndAPolyLineWithRepeatedPointsAre
     const TQ3PolyLineData data = {6, vertices, nullptr, nullptr};
     TQ3GeometryObject polyLine = own(Q3PolyLine_New(&data));
     ASSERT_NE(polyLine, nullptr);
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    EXPECT_EQ(out.numVertices, 6u);
-    EXPECT_TRUE(sameVertices(out.vertices, vertices, 6));
-    Q3PolyLine_EmptyData(&out);
+    expectVerticesKept(polyLine, Q3PolyLine_GetData, Q3PolyLine_EmptyData, vertices, 6);
     EXPECT_GT(litPixels(polyLine, kQ3RendererTypeWireFrame), 0u);
     expectFiniteDrawing(polyLine, "polyline");
     // Every point the same: a polyline of no length.

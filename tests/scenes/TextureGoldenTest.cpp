@@ -137,6 +137,14 @@ protected:
         return n;
     }
 
+    // Each checker colour (scaled by minScale..maxScale) shows in more than
+    // `atLeast` pixels.
+    static void expectBothColours(const q3test::RgbaImage& image, double minScale, double maxScale, int atLeast)
+    {
+        EXPECT_GT(pixelsLike(image, kLight, minScale, maxScale), atLeast) << "light";
+        EXPECT_GT(pixelsLike(image, kDark, minScale, maxScale), atLeast) << "dark";
+    }
+
     std::vector<unsigned char> m_texels;
     TQ3StorageObject m_storage = nullptr;
     TQ3TextureObject m_texture = nullptr;
@@ -155,8 +163,7 @@ TEST_F(TextureGoldenTest, TriMeshInPerspectiveWrapsTheCheckerboardTwice)
     Q3Object_Dispose(mesh);
     EXPECT_TRUE(q3test::matchesGolden("texture_trimesh_perspective", image));
     // Unlit: the texels' own colours, both of them, over large areas.
-    EXPECT_GT(pixelsLike(image, kLight, 0.99, 1.01), 2000);
-    EXPECT_GT(pixelsLike(image, kDark, 0.99, 1.01), 2000);
+    expectBothColours(image, 0.99, 1.01, 2000);
 }
 
 TEST_F(TextureGoldenTest, BoxLitPerPixelShowsTheCheckerboardOnEachFace)
@@ -178,8 +185,7 @@ TEST_F(TextureGoldenTest, BoxLitPerPixelShowsTheCheckerboardOnEachFace)
     EXPECT_TRUE(q3test::matchesGolden("texture_box_lit", image));
     // Lit: scaled checker colours, never brighter than 1.1 times the texel
     // (0.3 ambient + 0.8 at most), and both colours show.
-    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 1000);
-    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 1000);
+    expectBothColours(image, 0.25, 1.11, 1000);
 }
 
 TEST_F(TextureGoldenTest, PatchLitPerVertexWithPhongHighlights)
@@ -208,8 +214,7 @@ TEST_F(TextureGoldenTest, PatchLitPerVertexWithPhongHighlights)
     Q3Object_Dispose(phong);
     Q3Object_Dispose(patch);
     EXPECT_TRUE(q3test::matchesGolden("texture_patch_phong", image));
-    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 500);
-    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 500);
+    expectBothColours(image, 0.25, 1.11, 500);
 }
 
 TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
@@ -304,8 +309,7 @@ TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
         Q3Object_Dispose(object);
     EXPECT_TRUE(q3test::matchesGolden("attribute_texture", image));
     // Every texture shows, lit (0.3 ambient + 0.8 at most).
-    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 300);
-    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 300);
+    expectBothColours(image, 0.25, 1.11, 300);
     EXPECT_GT(pixelsLike(image, kRed, 0.25, 1.11), 100);
     EXPECT_GT(pixelsLike(image, kGreen, 0.25, 1.11), 100);
     EXPECT_GT(pixelsLike(image, kMagenta, 0.25, 1.11), 100);
