@@ -137,10 +137,12 @@ protected:
         return n;
     }
 
-    // Each checker colour (scaled by minScale..maxScale) shows in more than
-    // `atLeast` pixels.
-    static void expectBothColours(const q3test::RgbaImage& image, double minScale, double maxScale, int atLeast)
+    // The image matches the golden `name`, and each checker colour (scaled
+    // by minScale..maxScale) shows in more than `atLeast` pixels.
+    static void expectGoldenWithBothColours(const char* name, const q3test::RgbaImage& image, double minScale,
+                                            double maxScale, int atLeast)
     {
+        EXPECT_TRUE(q3test::matchesGolden(name, image));
         EXPECT_GT(pixelsLike(image, kLight, minScale, maxScale), atLeast) << "light";
         EXPECT_GT(pixelsLike(image, kDark, minScale, maxScale), atLeast) << "dark";
     }
@@ -161,9 +163,8 @@ TEST_F(TextureGoldenTest, TriMeshInPerspectiveWrapsTheCheckerboardTwice)
         Q3Geometry_Submit(mesh, v);
     });
     Q3Object_Dispose(mesh);
-    EXPECT_TRUE(q3test::matchesGolden("texture_trimesh_perspective", image));
     // Unlit: the texels' own colours, both of them, over large areas.
-    expectBothColours(image, 0.99, 1.01, 2000);
+    expectGoldenWithBothColours("texture_trimesh_perspective", image, 0.99, 1.01, 2000);
 }
 
 TEST_F(TextureGoldenTest, BoxLitPerPixelShowsTheCheckerboardOnEachFace)
@@ -182,10 +183,9 @@ TEST_F(TextureGoldenTest, BoxLitPerPixelShowsTheCheckerboardOnEachFace)
     Q3Object_Dispose(pixel);
     Q3Object_Dispose(lambert);
     Q3Object_Dispose(box);
-    EXPECT_TRUE(q3test::matchesGolden("texture_box_lit", image));
     // Lit: scaled checker colours, never brighter than 1.1 times the texel
     // (0.3 ambient + 0.8 at most), and both colours show.
-    expectBothColours(image, 0.25, 1.11, 1000);
+    expectGoldenWithBothColours("texture_box_lit", image, 0.25, 1.11, 1000);
 }
 
 TEST_F(TextureGoldenTest, PatchLitPerVertexWithPhongHighlights)
@@ -213,8 +213,7 @@ TEST_F(TextureGoldenTest, PatchLitPerVertexWithPhongHighlights)
     Q3Object_Dispose(style);
     Q3Object_Dispose(phong);
     Q3Object_Dispose(patch);
-    EXPECT_TRUE(q3test::matchesGolden("texture_patch_phong", image));
-    expectBothColours(image, 0.25, 1.11, 500);
+    expectGoldenWithBothColours("texture_patch_phong", image, 0.25, 1.11, 500);
 }
 
 TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
@@ -307,9 +306,8 @@ TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
     }
     for (TQ3Object object : owned)
         Q3Object_Dispose(object);
-    EXPECT_TRUE(q3test::matchesGolden("attribute_texture", image));
     // Every texture shows, lit (0.3 ambient + 0.8 at most).
-    expectBothColours(image, 0.25, 1.11, 300);
+    expectGoldenWithBothColours("attribute_texture", image, 0.25, 1.11, 300);
     EXPECT_GT(pixelsLike(image, kRed, 0.25, 1.11), 100);
     EXPECT_GT(pixelsLike(image, kGreen, 0.25, 1.11), 100);
     EXPECT_GT(pixelsLike(image, kMagenta, 0.25, 1.11), 100);
