@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -25,14 +26,16 @@ using namespace q3test;
 
 class ToleranceApiTest : public OwningApiTest {
 protected:
-    /// GetData gives back all `count` vertices `object` was made of, as given.
+    /// GetData gives back all `count` vertices `object` was made of, as given
+    /// (and says there are `count`, where the data counts them).
     template <class Data>
     static void expectVerticesKept(TQ3GeometryObject object, TQ3Status (*get)(TQ3GeometryObject, Data*),
                                    TQ3Status (*empty)(Data*), const TQ3Vertex3D* given, unsigned long count)
     {
         Data out{};
         ASSERT_EQ(get(object, &out), kQ3Success);
-        EXPECT_EQ(out.numVertices, count);
+        if constexpr (!std::is_same_v<Data, TQ3TriangleData> && !std::is_same_v<Data, TQ3LineData>)
+            EXPECT_EQ(out.numVertices, count);
         EXPECT_TRUE(sameVertices(out.vertices, given, count));
         empty(&out);
     }
@@ -109,10 +112,7 @@ TEST_F(ToleranceApiTest, ATriangleWithNoAreaIsKeptSilentlyAndFillsNothing)
     for (const TQ3TriangleData& data : cases) {
         TQ3GeometryObject triangle = own(Q3Triangle_New(&data));
         ASSERT_NE(triangle, nullptr);
-        TQ3TriangleData out{};
-        ASSERT_EQ(Q3Triangle_GetData(triangle, &out), kQ3Success);
-        EXPECT_TRUE(sameVertices(out.vertices, data.vertices, 3));
-        Q3Triangle_EmptyData(&out);
+        expectVerticesKept(triangle, Q3Triangle_GetData, Q3Triangle_EmptyData, data.vertices, 3);
         EXPECT_EQ(litPixels(triangle, kQ3RendererTypeInteractive), 0u);
         litPixels(triangle, kQ3RendererTypeWireFrame);
         expectFiniteDrawing(triangle, "triangle");
@@ -161,10 +161,7 @@ TEST_F(ToleranceApiTest, ALineWhoseEndsCoincideAndAPolyLineWithRepeatedPointsAre
     const TQ3LineData point = {{{{1, 1, 0}, nullptr}, {{1, 1, 0}, nullptr}}, nullptr};
     TQ3GeometryObject line = own(Q3Line_New(&point));
     ASSERT_NE(line, nullptr);
-    TQ3LineData lineOut{};
-    ASSERT_EQ(Q3Line_GetData(line, &lineOut), kQ3Success);
-    EXPECT_TRUE(sameVertices(lineOut.vertices, point.vertices, 2));
-    Q3Line_EmptyData(&lineOut);
+    expectVerticesKept(line, Q3Line_GetData, Q3Line_EmptyData, point.vertices, 2);
     litPixels(line, kQ3RendererTypeWireFrame);
     litPixels(line, kQ3RendererTypeInteractive);
     expectFiniteDrawing(line, "line");

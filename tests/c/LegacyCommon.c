@@ -19,6 +19,19 @@ void Check(TQ3Boolean ok, const char *what)
     }
 }
 
+TQ3NURBCurveData MyBezierCurveData(TQ3RationalPoint4D *points)
+{
+    static float knots[8] = {0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f};
+    TQ3NURBCurveData curveData;
+
+    curveData.order = 4;
+    curveData.numPoints = 4;
+    curveData.controlPoints = points;
+    curveData.knots = knots;
+    curveData.curveAttributeSet = NULL;
+    return curveData;
+}
+
 TQ3AttributeSet MyNewColorSet(float r, float g, float b)
 {
     TQ3AttributeSet set;

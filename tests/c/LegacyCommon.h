@@ -13,6 +13,7 @@
 #include <QD3D.h>
 #include <QD3DCamera.h>
 #include <QD3DDrawContext.h>
+#include <QD3DGeometry.h>
 #include <QD3DSet.h>
 #include <QD3DView.h>
 
@@ -35,6 +36,10 @@ int MyStartBounding(TQ3ViewObject *view, TQ3AttributeSet *red);
  * that fails) and returns the exit status: 0 with `summary` printed when no
  * check failed, 3 otherwise. */
 int MyFinishBounding(TQ3ViewObject view, TQ3AttributeSet red, const char *summary);
+
+/* A cubic Bezier span over four `points`: order 4, knots 0 0 0 0 1 1 1 1,
+ * no attribute set. */
+TQ3NURBCurveData MyBezierCurveData(TQ3RationalPoint4D *points);
 
 /* A new attribute set holding a diffuse colour. */
 TQ3AttributeSet MyNewColorSet(float r, float g, float b);

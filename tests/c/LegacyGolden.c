@@ -57,15 +57,9 @@ static TQ3ViewObject MyNewView(TQ3DrawContextObject *drawContext)
 static void MyDrawListing1(TQ3ViewObject view)
 {
     static TQ3RationalPoint4D points[4] = {{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}};
-    static float knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
-    TQ3NURBCurveData curveData;
+    TQ3NURBCurveData curveData = MyBezierCurveData(points);
     TQ3ViewStatus status;
 
-    curveData.order = 4;
-    curveData.numPoints = 4;
-    curveData.controlPoints = points;
-    curveData.knots = knots;
-    curveData.curveAttributeSet = NULL;
     CHECK(Q3View_StartRendering(view));
     do {
         CHECK(Q3NURBCurve_Submit(&curveData, view));
