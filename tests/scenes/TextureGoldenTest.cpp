@@ -105,11 +105,7 @@ protected:
     // ambient light (0.3) and a directional light (0.8) when lit.
     q3test::RgbaImage render(const TQ3Point3D& eye, bool lit, const std::function<void(TQ3ViewObject)>& submit)
     {
-        q3test::SceneSetup setup;
-        setup.width = kWidth;
-        setup.height = kHeight;
-        setup.clear = {1.0f, 0.1f, 0.1f, 0.12f};
-        setup.eye = eye;
+        q3test::SceneSetup setup = q3test::sceneLookingAt(kWidth, kHeight, {1.0f, 0.1f, 0.1f, 0.12f}, eye);
         setup.ambient = lit ? 0.3f : 0.0f;
         setup.sun = lit;
         return q3test::renderScene(setup, submit);
