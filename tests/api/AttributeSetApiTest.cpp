@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
+#include "DiffuseColor.h"
 #include "GeometryTestSupport.h"
 #include "OwningApiTest.h"
 #include "SetTestSupport.h"
@@ -104,9 +105,7 @@ TEST_F(AttributeSetApiTest, DuplicateCopiesValuesIndependently)
     ASSERT_NE(copy, nullptr);
     ASSERT_NE(copy, set);
     Q3AttributeSet_Clear(set, kQ3AttributeTypeDiffuseColor);
-    TQ3ColorRGB got{};
-    EXPECT_EQ(Q3AttributeSet_Get(copy, kQ3AttributeTypeDiffuseColor, &got), kQ3Success);
-    EXPECT_EQ(got.r, 1.0f);
+    EXPECT_EQ(expectDiffuseColor(copy).r, 1.0f);
     Q3Object_Dispose(copy);
     Q3Object_Dispose(set);
 }

@@ -14,6 +14,7 @@
 // rasterizer's rounding, not the rule, decides.
 
 #include "GeometryTestSupport.h"
+#include "InteractiveRender.h"
 #include "OwningApiTest.h"
 #include "QuadMesh.h"
 #include "RenderTestSupport.h"
@@ -88,7 +89,7 @@ std::vector<unsigned char> textureBytes(TexelOf texelOf)
 // Which texture a pixel's uv should show: A, B, or (0) none decided here.
 using Region = std::function<TexelOf(double u, double v)>;
 
-class AttributeTextureRenderTest : public OwningApiTest {
+class AttributeTextureRenderTest : public OwningApiTest, protected InteractiveRendering<kWidth, kHeight> {
 protected:
     void SetUp() override
     {
@@ -157,13 +158,6 @@ protected:
         return polygon;
     }
 
-    Pixmap render(const std::function<void(TQ3ViewObject)>& submit)
-    {
-        Pixmap image(kWidth, kHeight);
-        TestView view(image.pixmap(), kQ3RendererTypeInteractive);
-        EXPECT_EQ(view.render(submit), kQ3ViewStatusDone);
-        return image;
-    }
 
     // Every decidable pixel shows the texel of the texture `region` names
     // for its uv; returns how many pixels were checked.
@@ -216,20 +210,14 @@ TEST_F(AttributeTextureRenderTest, ShaderInTheGeometrysSetTexturesIt)
 TEST_F(AttributeTextureRenderTest, ShaderInTheGeometrysSetOverridesTheViewsShader)
 {
     TQ3GeometryObject mesh = quadMesh(setWith(m_shaderA));
-    const Pixmap image = render([&](TQ3ViewObject v) {
-        Q3Shader_Submit(m_shaderB, v);
-        Q3Geometry_Submit(mesh, v);
-    });
+    const Pixmap image = renderUnder(m_shaderB, mesh);
     EXPECT_GT(expectTexels(image, all(texelA), "the geometry's shader over the view's"), 300);
 }
 
 TEST_F(AttributeTextureRenderTest, ViewsShaderTexturesAGeometryWhoseSetHasNone)
 {
     TQ3GeometryObject mesh = quadMesh(setWith(nullptr));
-    const Pixmap image = render([&](TQ3ViewObject v) {
-        Q3Shader_Submit(m_shaderB, v);
-        Q3Geometry_Submit(mesh, v);
-    });
+    const Pixmap image = renderUnder(m_shaderB, mesh);
     EXPECT_GT(expectTexels(image, all(texelB), "the view's shader"), 300);
 }
 
@@ -311,10 +299,7 @@ TEST_F(AttributeTextureRenderTest, FaceShaderOverridesTheGeometrysAndAFaceWithou
     TQ3SurfaceShaderObject faces[2] = {m_shaderB, reinterpret_cast<TQ3SurfaceShaderObject>(std::uintptr_t(0x10))};
     char use[2] = {1, 0};
     TQ3GeometryObject mesh = quadMesh(setWith(m_shaderA), faces, use);
-    const Pixmap image = render([&](TQ3ViewObject v) {
-        Q3Shader_Submit(m_shaderA, v);
-        Q3Geometry_Submit(mesh, v);
-    });
+    const Pixmap image = renderUnder(m_shaderA, mesh);
     EXPECT_GT(expectTexels(image, split(texelB, texelA), "face over geometry"), 250);
 }
 

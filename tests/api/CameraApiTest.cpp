@@ -7,6 +7,7 @@
 // expected values are worked out by hand in each test.
 
 #include "RenderTestSupport.h"
+#include "SetThenGet.h"
 
 #include "QD3DCamera.h"
 #include "QD3DSet.h"
@@ -52,6 +53,17 @@ TQ3ViewAngleAspectCameraData viewAngleData()
 {
     return {commonData(), float(kPi / 2), 2};
 }
+
+// One camera of each kind, made from the data above, with that data; the
+// test disposes of the cameras.
+struct OneOfEachKind {
+    TQ3OrthographicCameraData ortho = orthographicData();
+    TQ3ViewPlaneCameraData plane = viewPlaneData();
+    TQ3ViewAngleAspectCameraData angle = viewAngleData();
+    TQ3CameraObject a = Q3OrthographicCamera_New(&ortho);
+    TQ3CameraObject b = Q3ViewPlaneCamera_New(&plane);
+    TQ3CameraObject c = Q3ViewAngleAspectCamera_New(&angle);
+};
 
 struct Homogeneous {
     double x, y, z, w;
@@ -217,12 +229,7 @@ protected:
 
 TEST_F(CameraApiTest, EachKindIsCreatedAndReadBack)
 {
-    const TQ3OrthographicCameraData ortho = orthographicData();
-    const TQ3ViewPlaneCameraData plane = viewPlaneData();
-    const TQ3ViewAngleAspectCameraData angle = viewAngleData();
-    TQ3CameraObject a = Q3OrthographicCamera_New(&ortho);
-    TQ3CameraObject b = Q3ViewPlaneCamera_New(&plane);
-    TQ3CameraObject c = Q3ViewAngleAspectCamera_New(&angle);
+    const auto [ortho, plane, angle, a, b, c] = OneOfEachKind();
     ASSERT_TRUE(a && b && c);
     EXPECT_EQ(Q3Camera_GetType(a), kQ3CameraTypeOrthographic);
     EXPECT_EQ(Q3Camera_GetType(b), kQ3CameraTypeViewPlane);
@@ -256,12 +263,7 @@ TEST_F(CameraApiTest, CommonDataAndItsPartsRoundTrip)
     data.placement = {{1, 2, 3}, {4, 5, 6}, {0, 0, 1}};
     data.range = {0.5f, 99};
     data.viewPort = {{-0.5f, 0.5f}, 1, 1};
-    const unsigned long edit = Q3Shared_GetEditIndex(camera);
-    EXPECT_EQ(Q3Camera_SetData(camera, &data), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(camera), edit);
-    TQ3CameraData out{};
-    EXPECT_EQ(Q3Camera_GetData(camera, &out), kQ3Success);
-    EXPECT_EQ(std::memcmp(&out, &data, sizeof data), 0);
+    q3test::expectSetThenGet(camera, Q3Camera_SetData, Q3Camera_GetData, data);
 
     const TQ3CameraPlacement placement = {{0, 3, 0}, {0, 0, 0}, {1, 0, 0}};
     EXPECT_EQ(Q3Camera_SetPlacement(camera, &placement), kQ3Success);
@@ -418,46 +420,42 @@ void forEachNonFiniteField(const Data& good, const std::function<void(const Data
 
 TEST_F(CameraApiTest, EveryFloatFieldRejectsNaNAndInfinities)
 {
-    const TQ3OrthographicCameraData ortho = orthographicData();
-    const TQ3ViewPlaneCameraData plane = viewPlaneData();
-    const TQ3ViewAngleAspectCameraData angle = viewAngleData();
-    TQ3CameraObject a = Q3OrthographicCamera_New(&ortho);
-    TQ3CameraObject b = Q3ViewPlaneCamera_New(&plane);
-    TQ3CameraObject c = Q3ViewAngleAspectCamera_New(&angle);
+    const OneOfEachKind kinds;
+    const auto& [ortho, plane, angle, a, b, c] = kinds;
     forEachNonFiniteField<TQ3OrthographicCameraData>(ortho, [&](const TQ3OrthographicCameraData& d, const std::string& what) {
         SCOPED_TRACE(what);
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3OrthographicCamera_New(&d), nullptr), kQ3ErrorInvalidCameraValues);
-        EXPECT_Q3_ERROR(Q3OrthographicCamera_SetData(a, &d), kQ3ErrorInvalidCameraValues);
+        EXPECT_Q3_ERROR(Q3OrthographicCamera_SetData(kinds.a, &d), kQ3ErrorInvalidCameraValues);
     });
     forEachNonFiniteField<TQ3ViewPlaneCameraData>(plane, [&](const TQ3ViewPlaneCameraData& d, const std::string& what) {
         SCOPED_TRACE(what);
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3ViewPlaneCamera_New(&d), nullptr), kQ3ErrorInvalidCameraValues);
-        EXPECT_Q3_ERROR(Q3ViewPlaneCamera_SetData(b, &d), kQ3ErrorInvalidCameraValues);
+        EXPECT_Q3_ERROR(Q3ViewPlaneCamera_SetData(kinds.b, &d), kQ3ErrorInvalidCameraValues);
     });
     forEachNonFiniteField<TQ3ViewAngleAspectCameraData>(
         angle, [&](const TQ3ViewAngleAspectCameraData& d, const std::string& what) {
             SCOPED_TRACE(what);
             EXPECT_Q3_ERROR(EXPECT_EQ(Q3ViewAngleAspectCamera_New(&d), nullptr), kQ3ErrorInvalidCameraValues);
-            EXPECT_Q3_ERROR(Q3ViewAngleAspectCamera_SetData(c, &d), kQ3ErrorInvalidCameraValues);
+            EXPECT_Q3_ERROR(Q3ViewAngleAspectCamera_SetData(kinds.c, &d), kQ3ErrorInvalidCameraValues);
         });
     forEachNonFiniteField<TQ3CameraData>(commonData(), [&](const TQ3CameraData& d, const std::string& what) {
         SCOPED_TRACE(what);
-        EXPECT_Q3_ERROR(Q3Camera_SetData(c, &d), kQ3ErrorInvalidCameraValues);
+        EXPECT_Q3_ERROR(Q3Camera_SetData(kinds.c, &d), kQ3ErrorInvalidCameraValues);
     });
     forEachNonFiniteField<TQ3CameraPlacement>(commonData().placement,
                                               [&](const TQ3CameraPlacement& d, const std::string& what) {
                                                   SCOPED_TRACE(what);
-                                                  EXPECT_Q3_ERROR(Q3Camera_SetPlacement(a, &d),
+                                                  EXPECT_Q3_ERROR(Q3Camera_SetPlacement(kinds.a, &d),
                                                                   kQ3ErrorInvalidCameraValues);
                                               });
     forEachNonFiniteField<TQ3CameraRange>(commonData().range, [&](const TQ3CameraRange& d, const std::string& what) {
         SCOPED_TRACE(what);
-        EXPECT_Q3_ERROR(Q3Camera_SetRange(a, &d), kQ3ErrorInvalidCameraValues);
+        EXPECT_Q3_ERROR(Q3Camera_SetRange(kinds.a, &d), kQ3ErrorInvalidCameraValues);
     });
     forEachNonFiniteField<TQ3CameraViewPort>(commonData().viewPort,
                                              [&](const TQ3CameraViewPort& d, const std::string& what) {
                                                  SCOPED_TRACE(what);
-                                                 EXPECT_Q3_ERROR(Q3Camera_SetViewPort(b, &d),
+                                                 EXPECT_Q3_ERROR(Q3Camera_SetViewPort(kinds.b, &d),
                                                                  kQ3ErrorInvalidCameraValues);
                                              });
     TQ3OrthographicCameraData after{};
@@ -469,12 +467,7 @@ TEST_F(CameraApiTest, EveryFloatFieldRejectsNaNAndInfinities)
 
 TEST_F(CameraApiTest, KindSpecificCallsRejectOtherKindsAndBadPointers)
 {
-    const TQ3OrthographicCameraData ortho = orthographicData();
-    const TQ3ViewPlaneCameraData plane = viewPlaneData();
-    const TQ3ViewAngleAspectCameraData angle = viewAngleData();
-    TQ3CameraObject a = Q3OrthographicCamera_New(&ortho);
-    TQ3CameraObject b = Q3ViewPlaneCamera_New(&plane);
-    TQ3CameraObject c = Q3ViewAngleAspectCamera_New(&angle);
+    const auto [ortho, plane, angle, a, b, c] = OneOfEachKind();
     TQ3OrthographicCameraData orthoOut;
     TQ3ViewPlaneCameraData planeOut;
     TQ3ViewAngleAspectCameraData angleOut;
@@ -719,12 +712,7 @@ TEST_F(CameraApiTest, ViewAngleAspectFieldSettersCheckWhatSetDataChecks)
 
 TEST_F(CameraApiTest, FieldAccessorsRejectBadHandlesOtherKindsAndNullPointers)
 {
-    const TQ3OrthographicCameraData ortho = orthographicData();
-    const TQ3ViewPlaneCameraData plane = viewPlaneData();
-    const TQ3ViewAngleAspectCameraData angle = viewAngleData();
-    TQ3CameraObject a = Q3OrthographicCamera_New(&ortho);
-    TQ3CameraObject b = Q3ViewPlaneCamera_New(&plane);
-    TQ3CameraObject c = Q3ViewAngleAspectCamera_New(&angle);
+    const auto [ortho, plane, angle, a, b, c] = OneOfEachKind();
     TQ3CameraObject dead = Q3OrthographicCamera_New(&ortho);
     Q3Object_Dispose(dead);
     const TQ3Vector3D offset{1, 2, 3};

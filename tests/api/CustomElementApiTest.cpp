@@ -7,6 +7,7 @@
 // text and binary 3DMF files.
 
 #include "FileTestSupport.h"
+#include "DiffuseColor.h"
 #include "Q3ApiTest.h"
 
 #include "QD3DCustomElements.h"
@@ -479,6 +480,21 @@ TEST_F(CustomElementApiTest, NamesComeBackAndGo)
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Shape_AddElement(box, type, &notAString), kQ3Failure), kQ3ErrorInvalidParameter);
 }
 
+// The object's URL element, expected to hold `url` and `description` with
+// kCEUrlOptionUseMap; NULL, a failure, when it has none. The caller empties it.
+TCEUrlData* expectUrlUsingAMap(TQ3Object object, const char* url, const char* description)
+{
+    TCEUrlData* back = nullptr;
+    EXPECT_EQ(CEUrlElement_GetData(object, &back), kQ3Success);
+    EXPECT_NE(back, nullptr);
+    if (back != nullptr) {
+        EXPECT_STREQ(back->url, url);
+        EXPECT_STREQ(back->description, description);
+        EXPECT_EQ(back->options, kCEUrlOptionUseMap);
+    }
+    return back;
+}
+
 TEST_F(CustomElementApiTest, UrlsComeBackWithTheirDescriptionAndOptions)
 {
     TQ3GroupObject group = own(Q3DisplayGroup_New());
@@ -486,12 +502,8 @@ TEST_F(CustomElementApiTest, UrlsComeBackWithTheirDescriptionAndOptions)
     char description[] = "the model";
     TCEUrlData data{url, description, kCEUrlOptionUseMap};
     EXPECT_EQ(CEUrlElement_SetData(group, &data), kQ3Success);
-    TCEUrlData* back = nullptr;
-    EXPECT_EQ(CEUrlElement_GetData(group, &back), kQ3Success);
+    TCEUrlData* back = expectUrlUsingAMap(group, url, description);
     ASSERT_NE(back, nullptr);
-    EXPECT_STREQ(back->url, url);
-    EXPECT_STREQ(back->description, description);
-    EXPECT_EQ(back->options, kCEUrlOptionUseMap);
     EXPECT_NE(back->url, url);
     EXPECT_EQ(CEUrlElement_EmptyData(&back), kQ3Success);
     EXPECT_EQ(back, nullptr);
@@ -560,21 +572,15 @@ TEST_F(CustomElementApiTest, NamesAndUrlsRoundTripThroughTextAndBinaryFiles)
         ASSERT_EQ(Q3Group_GetNextPosition(read[0], &position), kQ3Success);
         ASSERT_EQ(Q3Group_GetPositionObject(read[0], position, &second), kQ3Success);
         EXPECT_EQ(nameOf(first), "a plain box");
-        TCEUrlData* back = nullptr;
-        EXPECT_EQ(CEUrlElement_GetData(first, &back), kQ3Success);
+        TCEUrlData* back = expectUrlUsingAMap(first, url, description);
         ASSERT_NE(back, nullptr);
-        EXPECT_STREQ(back->url, url);
-        EXPECT_STREQ(back->description, description);
-        EXPECT_EQ(back->options, kCEUrlOptionUseMap);
         CEUrlElement_EmptyData(&back);
         EXPECT_EQ(nameOf(second), "a green box");
         TQ3AttributeSet readSet = nullptr;
         ASSERT_EQ(Q3Geometry_GetAttributeSet(second, &readSet), kQ3Success);
         ASSERT_NE(readSet, nullptr);
         EXPECT_EQ(nameOf(readSet), "green");
-        TQ3ColorRGB color{};
-        EXPECT_EQ(Q3AttributeSet_Get(readSet, kQ3AttributeTypeDiffuseColor, &color), kQ3Success);
-        EXPECT_EQ(color.g, 1.0f);
+        EXPECT_EQ(expectDiffuseColor(readSet).g, 1.0f);
         Q3Object_Dispose(readSet);
         Q3Object_Dispose(first);
         Q3Object_Dispose(second);

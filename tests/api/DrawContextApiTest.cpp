@@ -5,6 +5,7 @@
 // TQ3Pixmap rules in their order, and that failures change nothing.
 
 #include "DrawContextTestSupport.h"
+#include "GeometryTestSupport.h"
 #include "RenderTestSupport.h"
 
 #include "QD3DSet.h"
@@ -18,9 +19,6 @@
 namespace {
 
 using namespace q3test;
-
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr float kInf = std::numeric_limits<float>::infinity();
 
 class DrawContextApiTest : public PixmapContextApiTest {
 protected:

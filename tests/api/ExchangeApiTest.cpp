@@ -367,15 +367,10 @@ protected:
         TQ3TriMeshAttributeData vertex[3] = {{kQ3AttributeTypeNormal, normals, nullptr},
                                              {kQ3AttributeTypeSurfaceUV, uvs, nullptr},
                                              {kQ3AttributeTypeDiffuseColor, colors, nullptr}};
-        TQ3TriMeshData data{};
-        data.triMeshAttributeSet = set;
-        data.numTriangles = 2;
-        data.triangles = triangles;
-        data.numPoints = 4;
-        data.points = points;
-        data.numVertexAttributeTypes = 3;
-        data.vertexAttributeTypes = vertex;
-        data.bBox = TQ3BoundingBox{{0, 0, 0}, {2, 1, 0.5f}, kQ3False};
+        // The set, two triangles, no triangle or edge attributes, no edges,
+        // four points with three attribute arrays.
+        TQ3TriMeshData data{set, 2, triangles, 0, nullptr, 0, nullptr, 0, nullptr, 4, points, 3, vertex,
+                            {{0, 0, 0}, {2, 1, 0.5f}, kQ3False}};
         TQ3GeometryObject mesh = Q3TriMesh_New(&data);
         Q3Object_Dispose(set);
         ASSERT_NE(mesh, nullptr);

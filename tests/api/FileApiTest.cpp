@@ -166,27 +166,14 @@ TEST_F(FileApiTest, AGroupNestedPastTheLimitIsNotWrittenAndLeavesTheFileWhole)
         Q3Object_Dispose(inner);
         inner = outer;
     }
-    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
-    TQ3FileObject file = Q3File_New();
-    TQ3ViewObject view = Q3View_New();
-    Q3File_SetStorage(file, storage);
-    Q3File_OpenWrite(file, kQ3FileModeNormal);
-    Q3View_StartWriting(view, file);
-    ASSERT_EQ(Q3Object_Submit(point, view), kQ3Success);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Object_Submit(inner, view), kQ3Failure), kQ3ErrorInvalidMetafile);
-    ASSERT_EQ(Q3Object_Submit(point, view), kQ3Success); // a reference to the first
-    EXPECT_EQ(Q3View_EndWriting(view), kQ3ViewStatusDone);
-    ASSERT_EQ(Q3File_Close(file), kQ3Success);
-    unsigned char* buffer = nullptr;
-    unsigned long size = 0;
-    Q3MemoryStorage_GetBuffer(storage, &buffer, &size, nullptr);
-    const auto objects = readAll(std::vector<unsigned char>(buffer, buffer + size));
+    const auto objects = readAll(writeFileWith(kQ3FileModeNormal, [&](TQ3ViewObject view) {
+        EXPECT_EQ(Q3Object_Submit(point, view), kQ3Success);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Object_Submit(inner, view), kQ3Failure), kQ3ErrorInvalidMetafile);
+        EXPECT_EQ(Q3Object_Submit(point, view), kQ3Success); // a reference to the first
+    }));
     ASSERT_EQ(objects.size(), 2u);
     EXPECT_EQ(objects[0], objects[1]); // the reference gives the same point
     disposeAll(objects);
-    Q3Object_Dispose(view);
-    Q3Object_Dispose(file);
-    Q3Object_Dispose(storage);
     Q3Object_Dispose(inner);
     Q3Object_Dispose(point);
 }

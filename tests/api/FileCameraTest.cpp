@@ -400,26 +400,15 @@ TEST_F(FileCameraTest, AWritingLoopWritesWhatIsSubmittedNotTheViewsCamera)
     TQ3CameraObject camera = Q3ViewAngleAspectCamera_New(&viewAngle);
     TQ3PointData point = {{1, 2, 3}, nullptr};
     TQ3GeometryObject geometry = Q3Point_New(&point);
-    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
-    TQ3FileObject file = Q3File_New();
     TQ3ViewObject view = Q3View_New();
     ASSERT_EQ(Q3View_SetCamera(view, camera), kQ3Success);
-    ASSERT_EQ(Q3File_SetStorage(file, storage), kQ3Success);
-    ASSERT_EQ(Q3File_OpenWrite(file, kQ3FileModeNormal), kQ3Success);
-    ASSERT_EQ(Q3View_StartWriting(view, file), kQ3Success);
-    EXPECT_EQ(Q3Object_Submit(geometry, view), kQ3Success);
-    EXPECT_EQ(Q3View_EndWriting(view), kQ3ViewStatusDone);
-    ASSERT_EQ(Q3File_Close(file), kQ3Success);
-    unsigned char* buffer = nullptr;
-    unsigned long size = 0;
-    ASSERT_EQ(Q3MemoryStorage_GetBuffer(storage, &buffer, &size, nullptr), kQ3Success);
-    const auto objects = readAll(std::vector<unsigned char>(buffer, buffer + size));
+    const auto objects = readAll(writeMemoryFileThrough(
+        view, kQ3FileModeNormal, [&](TQ3ViewObject v) { EXPECT_EQ(Q3Object_Submit(geometry, v), kQ3Success); },
+        [](bool ok, const char* what) { EXPECT_TRUE(ok) << what; }));
     ASSERT_EQ(objects.size(), 1u);
     EXPECT_EQ(Q3Object_GetLeafType(objects[0]), kQ3GeometryTypePoint);
     disposeAll(objects);
     Q3Object_Dispose(view);
-    Q3Object_Dispose(file);
-    Q3Object_Dispose(storage);
     Q3Object_Dispose(geometry);
     Q3Object_Dispose(camera);
 }

@@ -133,14 +133,9 @@ void addGeometries(TQ3GroupObject group, bool shaderInSet)
         Q3Object_Dispose(v.attributeSet);
     Q3Object_Dispose(triangle.triangleAttributeSet);
 
-    TQ3EllipsoidData ellipsoid{};
-    ellipsoid.origin = {3, 0, 0};
-    ellipsoid.orientation = {0, 1, 0};
-    ellipsoid.majorRadius = {0, 0, 1};
-    ellipsoid.minorRadius = {1, 0, 0};
-    ellipsoid.uMax = 1;
-    ellipsoid.vMax = 1;
-    ellipsoid.ellipsoidAttributeSet = colourSet(0.9f, 0.9f, 0.1f);
+    // A whole unit sphere at (3, 0, 0), no caps, a yellow set.
+    TQ3EllipsoidData ellipsoid{{3, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}, 0, 1, 0, 1, kQ3EndCapNone, nullptr,
+                               colourSet(0.9f, 0.9f, 0.1f)};
     if (shaderInSet) {
         TQ3ShaderObject shader = pixmapShader();
         Q3AttributeSet_Add(ellipsoid.ellipsoidAttributeSet, kQ3AttributeTypeSurfaceShader, &shader);

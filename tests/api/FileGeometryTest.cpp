@@ -378,15 +378,23 @@ bool sameBox(TQ3Object a, TQ3Object b)
     return same;
 }
 
-TQ3Object makeCylinderWithCaps()
+// The frame the cylinder and the cone share: radius 1 about +y from y = -1
+// to 1, a quarter of the way round cut away.
+template <class QuadricData>
+void setUprightQuarterCut(QuadricData& d)
 {
-    TQ3CylinderData d{};
     d.origin = {0, -1, 0};
     d.orientation = {0, 2, 0};
     d.majorRadius = {1, 0, 0};
     d.minorRadius = {0, 0, 1};
     d.uMax = 0.75f;
     d.vMax = 1;
+}
+
+TQ3Object makeCylinderWithCaps()
+{
+    TQ3CylinderData d{};
+    setUprightQuarterCut(d);
     d.caps = kQ3EndCapMaskTop | kQ3EndCapMaskBottom | kQ3EndCapMaskInterior;
     d.topAttributeSet = colorSet(1, 0, 0);
     d.bottomAttributeSet = colorSet(0, 1, 0);
@@ -417,12 +425,7 @@ bool sameCylinder(TQ3Object a, TQ3Object b)
 TQ3Object makeConeWithCaps()
 {
     TQ3ConeData d{};
-    d.origin = {0, -1, 0};
-    d.orientation = {0, 2, 0};
-    d.majorRadius = {1, 0, 0};
-    d.minorRadius = {0, 0, 1};
-    d.uMax = 0.75f;
-    d.vMax = 1;
+    setUprightQuarterCut(d);
     d.caps = kQ3EndCapMaskBottom | kQ3EndCapMaskInterior;
     d.bottomAttributeSet = colorSet(0, 1, 0);
     d.faceAttributeSet = colorSet(0, 0, 1);

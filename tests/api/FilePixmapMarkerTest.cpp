@@ -65,6 +65,18 @@ TQ3GeometryObject makeMarker(const std::vector<unsigned char>& image, unsigned l
     return marker;
 }
 
+// Everything of two storage pixmaps but their storage.
+void expectSameLayout(const TQ3StoragePixmap& a, const TQ3StoragePixmap& b)
+{
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    EXPECT_EQ(a.rowBytes, b.rowBytes);
+    EXPECT_EQ(a.pixelSize, b.pixelSize);
+    EXPECT_EQ(a.pixelType, b.pixelType);
+    EXPECT_EQ(a.bitOrder, b.bitOrder);
+    EXPECT_EQ(a.byteOrder, b.byteOrder);
+}
+
 void expectSameMarker(TQ3Object read, TQ3Object original)
 {
     ASSERT_NE(read, nullptr);
@@ -75,13 +87,7 @@ void expectSameMarker(TQ3Object read, TQ3Object original)
     EXPECT_TRUE(samePoint(a.position, b.position));
     EXPECT_EQ(a.xOffset, b.xOffset);
     EXPECT_EQ(a.yOffset, b.yOffset);
-    EXPECT_EQ(a.pixmap.width, b.pixmap.width);
-    EXPECT_EQ(a.pixmap.height, b.pixmap.height);
-    EXPECT_EQ(a.pixmap.rowBytes, b.pixmap.rowBytes);
-    EXPECT_EQ(a.pixmap.pixelSize, b.pixmap.pixelSize);
-    EXPECT_EQ(a.pixmap.pixelType, b.pixmap.pixelType);
-    EXPECT_EQ(a.pixmap.bitOrder, b.pixmap.bitOrder);
-    EXPECT_EQ(a.pixmap.byteOrder, b.pixmap.byteOrder);
+    expectSameLayout(a.pixmap, b.pixmap);
     EXPECT_EQ(storageBytes(a.pixmap.image), storageBytes(b.pixmap.image));
     EXPECT_TRUE(sameSet(a.pixmapMarkerAttributeSet, b.pixmapMarkerAttributeSet));
     EXPECT_NE(a.pixmapMarkerAttributeSet, nullptr);
@@ -162,13 +168,7 @@ TEST_F(FilePixmapMarkerTest, HandWrittenFilesReadInTextAndBothByteOrders)
         EXPECT_TRUE(samePoint(data.position, TQ3Point3D{0.5f, -0.25f, 1}));
         EXPECT_EQ(data.xOffset, -2);
         EXPECT_EQ(data.yOffset, 3);
-        EXPECT_EQ(data.pixmap.width, 3u);
-        EXPECT_EQ(data.pixmap.height, 2u);
-        EXPECT_EQ(data.pixmap.rowBytes, 12u);
-        EXPECT_EQ(data.pixmap.pixelSize, 24u);
-        EXPECT_EQ(data.pixmap.pixelType, kQ3PixelTypeRGB24);
-        EXPECT_EQ(data.pixmap.bitOrder, kQ3EndianBig);
-        EXPECT_EQ(data.pixmap.byteOrder, kQ3EndianBig);
+        expectSameLayout(data.pixmap, {nullptr, 3, 2, 12, 24, kQ3PixelTypeRGB24, kQ3EndianBig, kQ3EndianBig});
         EXPECT_EQ(storageBytes(data.pixmap.image), image);
         TQ3ColorRGB color = {};
         ASSERT_NE(data.pixmapMarkerAttributeSet, nullptr);

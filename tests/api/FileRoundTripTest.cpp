@@ -139,19 +139,10 @@ std::vector<Case> cases()
                        static TQ3TriMeshAttributeData faces[1] = {
                            {kQ3AttributeTypeDiffuseColor, faceColors, faceUse}};
                        static TQ3TriMeshAttributeData vertices[1] = {{kQ3AttributeTypeNormal, normals, nullptr}};
-                       TQ3TriMeshData d{};
-                       d.numTriangleAttributeTypes = 1;
-                       d.triangleAttributeTypes = faces;
-                       d.numVertexAttributeTypes = 1;
-                       d.vertexAttributeTypes = vertices;
-                       d.triMeshAttributeSet = set;
-                       d.numTriangles = 2;
-                       d.triangles = t;
-                       d.numEdges = 1;
-                       d.edges = e;
-                       d.numPoints = 4;
-                       d.points = p;
-                       d.bBox = {{-2, -1, -1}, {2, 1.5f, 0}, kQ3False};
+                       // The set, two triangles with one attribute array,
+                       // one edge without, four points with one.
+                       TQ3TriMeshData d{set, 2, t, 1, faces, 1, e, 0, nullptr, 4, p, 1, vertices,
+                                        {{-2, -1, -1}, {2, 1.5f, 0}, kQ3False}};
                        TQ3Object o = Q3TriMesh_New(&d);
                        Q3Object_Dispose(set);
                        return o;
@@ -230,17 +221,21 @@ std::vector<Case> cases()
                    })});
     all.push_back({"Cone",
                    [] {
-                       TQ3ConeData d{};
-                       d.origin = {0, -1, 0};
-                       d.orientation = {0, 2, 0};
-                       d.majorRadius = {1, 0, 0};
-                       d.minorRadius = {0, 0, 1};
-                       d.uMin = 0;
-                       d.uMax = 0.75f;
-                       d.vMin = 0;
-                       d.vMax = 1;
-                       d.caps = kQ3EndCapMaskBottom | kQ3EndCapMaskInterior;
-                       d.coneAttributeSet = colorSet(1, 0.5f, 0);
+                       // Radius 1 about +y from y = -1 to 1, a quarter cut
+                       // away, the bottom and the cut closed, an orange set.
+                       TQ3ConeData d{{0, -1, 0},
+                                     {0, 2, 0},
+                                     {1, 0, 0},
+                                     {0, 0, 1},
+                                     0,
+                                     0.75f,
+                                     0,
+                                     1,
+                                     kQ3EndCapMaskBottom | kQ3EndCapMaskInterior,
+                                     nullptr,
+                                     nullptr,
+                                     nullptr,
+                                     colorSet(1, 0.5f, 0)};
                        TQ3Object o = Q3Cone_New(&d);
                        Q3Object_Dispose(d.coneAttributeSet);
                        return o;
@@ -250,14 +245,10 @@ std::vector<Case> cases()
                    })});
     all.push_back({"Cylinder",
                    [] {
-                       TQ3CylinderData d{};
-                       d.origin = {0, -1, 0};
-                       d.orientation = {0, 2, 0};
-                       d.majorRadius = {1, 0, 0};
-                       d.minorRadius = {0, 0, 0.5f};
-                       d.uMax = 1;
-                       d.vMax = 1;
-                       d.caps = kQ3EndCapMaskTop | kQ3EndCapMaskBottom;
+                       // Elliptic, about +y from y = -1 to 1, whole, both ends
+                       // closed, no sets.
+                       TQ3CylinderData d{{0, -1, 0}, {0, 2, 0}, {1, 0, 0}, {0, 0, 0.5f}, 0, 1, 0, 1,
+                                         kQ3EndCapMaskTop | kQ3EndCapMaskBottom};
                        TQ3Object o = Q3Cylinder_New(&d);
                        return o;
                    },
@@ -266,15 +257,8 @@ std::vector<Case> cases()
                    })});
     all.push_back({"Disk",
                    [] {
-                       TQ3DiskData d{};
-                       d.origin = {0, 0, 0};
-                       d.majorRadius = {2, 0, 0};
-                       d.minorRadius = {0, 1.5f, 0};
-                       d.uMin = 0.25f;
-                       d.uMax = 1;
-                       d.vMin = 0;
-                       d.vMax = 1;
-                       d.diskAttributeSet = colorSet(0, 1, 1);
+                       // u from a quarter round to the end, all of v, a cyan set.
+                       TQ3DiskData d{{0, 0, 0}, {2, 0, 0}, {0, 1.5f, 0}, 0.25f, 1, 0, 1, colorSet(0, 1, 1)};
                        TQ3Object o = Q3Disk_New(&d);
                        Q3Object_Dispose(d.diskAttributeSet);
                        return o;
@@ -286,11 +270,7 @@ std::vector<Case> cases()
                    })});
     all.push_back({"Ellipse",
                    [] {
-                       TQ3EllipseData d{};
-                       d.majorRadius = {2, 0, 0};
-                       d.minorRadius = {0, 1, 0};
-                       d.uMin = 0;
-                       d.uMax = 0.5f;
+                       TQ3EllipseData d{{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, 0, 0.5f, nullptr}; // half of it
                        TQ3Object o = Q3Ellipse_New(&d);
                        return o;
                    },

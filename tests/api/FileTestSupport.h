@@ -12,6 +12,7 @@
 #include "QD3DSet.h"
 #include "QD3DStorage.h"
 #include "QD3DView.h"
+#include "MemoryFile.h"
 #include "RenderTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,7 @@
 #include <cstring>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace q3test {
@@ -40,29 +42,7 @@ inline TQ3GeometryObject newBox()
 template <class Submit>
 std::vector<unsigned char> writeFileWith(TQ3FileMode mode, Submit&& submit)
 {
-    std::vector<unsigned char> bytes;
-    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
-    TQ3FileObject file = Q3File_New();
-    TQ3ViewObject view = Q3View_New();
-    EXPECT_EQ(Q3File_SetStorage(file, storage), kQ3Success);
-    EXPECT_EQ(Q3File_OpenWrite(file, mode), kQ3Success);
-    EXPECT_EQ(Q3View_StartWriting(view, file), kQ3Success);
-    TQ3ViewStatus status;
-    do {
-        submit(view);
-        status = Q3View_EndWriting(view);
-    } while (status == kQ3ViewStatusRetraverse);
-    EXPECT_EQ(status, kQ3ViewStatusDone);
-    EXPECT_EQ(Q3File_Close(file), kQ3Success);
-    unsigned char* buffer = nullptr;
-    unsigned long size = 0;
-    EXPECT_EQ(Q3MemoryStorage_GetBuffer(storage, &buffer, &size, nullptr), kQ3Success);
-    if (buffer != nullptr)
-        bytes.assign(buffer, buffer + size);
-    Q3Object_Dispose(view);
-    Q3Object_Dispose(file);
-    Q3Object_Dispose(storage);
-    return bytes;
+    return writeMemoryFile(mode, std::forward<Submit>(submit), [](bool ok, const char* what) { EXPECT_TRUE(ok) << what; });
 }
 
 /// The bytes of a file holding `objects`, written in `mode`.

@@ -28,6 +28,18 @@ namespace {
 
 class FileViewHintsTest : public Q3ApiTest {};
 
+// The hints' mask has `order` and its first two bytes are `first`, `second`.
+void expectMaskBytes(TQ3ViewHintsObject hints, TQ3Endian order, unsigned char first, unsigned char second)
+{
+    TQ3Bitmap mask{};
+    ASSERT_EQ(Q3ViewHints_GetMask(hints, &mask), kQ3Success);
+    ASSERT_NE(mask.image, nullptr);
+    EXPECT_EQ(mask.bitOrder, order);
+    EXPECT_EQ(mask.image[0], first);
+    EXPECT_EQ(mask.image[1], second);
+    Q3Bitmap_Empty(&mask);
+}
+
 const TQ3FileMode kModes[] = {kQ3FileModeNormal,   kQ3FileModeText,   kQ3FileModeStream | kQ3FileModeText,
                               kQ3FileModeDatabase, kQ3FileModeStream, kQ3FileModeSwap};
 
@@ -285,12 +297,7 @@ TEST_F(FileViewHintsTest, WhatTheFileCannotHoldIsLeftOutAndLittleEndianMasksTurn
         ASSERT_EQ(Q3ViewHints_SetClearImageMethod(hints, kQ3ClearMethodWithColor), kQ3Success);
         objects = readAll(writeObjects({hints}, mode));
         ASSERT_EQ(objects.size(), 1u);
-        ASSERT_EQ(Q3ViewHints_GetMask(objects[0], &mask), kQ3Success);
-        ASSERT_NE(mask.image, nullptr);
-        EXPECT_EQ(mask.bitOrder, kQ3EndianBig);
-        EXPECT_EQ(mask.image[0], 0x80);
-        EXPECT_EQ(mask.image[1], 0x01);
-        Q3Bitmap_Empty(&mask);
+        expectMaskBytes(objects[0], kQ3EndianBig, 0x80, 0x01);
         TQ3ColorARGB got{};
         EXPECT_EQ(Q3ViewHints_GetClearImageColor(objects[0], &got), kQ3Success);
         EXPECT_EQ(got.a, 1.0f);
@@ -309,13 +316,7 @@ TEST_F(FileViewHintsTest, TextMaskWithTheExamplesBitOrderAndARendererKeptAsUnkno
     const auto objects = readAll(bytesOf(textFile("Container ( ViewHints ( ) InteractiveRenderer ( )\n"
                                                   "  ImageMask ( 8 2 1 LittleEndian 0x0180 ) )")));
     ASSERT_EQ(objects.size(), 1u);
-    TQ3Bitmap mask{};
-    ASSERT_EQ(Q3ViewHints_GetMask(objects[0], &mask), kQ3Success);
-    ASSERT_NE(mask.image, nullptr);
-    EXPECT_EQ(mask.bitOrder, kQ3EndianLittle);
-    EXPECT_EQ(mask.image[0], 0x01);
-    EXPECT_EQ(mask.image[1], 0x80);
-    Q3Bitmap_Empty(&mask);
+    expectMaskBytes(objects[0], kQ3EndianLittle, 0x01, 0x80);
     TQ3Object renderer = objects[0];
     EXPECT_EQ(Q3ViewHints_GetRenderer(objects[0], &renderer), kQ3Success);
     EXPECT_EQ(renderer, nullptr);

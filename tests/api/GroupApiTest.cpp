@@ -15,6 +15,7 @@
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 
+#include <utility>
 #include <vector>
 
 namespace {
@@ -64,36 +65,38 @@ protected:
     }
     TQ3AttributeSet attributes() { return own(Q3AttributeSet_New()); }
 
-    /// The objects of the group from first to last, through the positions.
-    std::vector<TQ3Object> walk(TQ3GroupObject group)
+    /// The objects of the group from first to last, through the positions:
+    /// walked from the first forwards, or from the last back when `backwards`.
+    std::vector<TQ3Object> walk(TQ3GroupObject group, bool backwards = false)
     {
         std::vector<TQ3Object> objects;
         TQ3GroupPosition position = nullptr;
-        EXPECT_EQ(Q3Group_GetFirstPosition(group, &position), kQ3Success);
+        EXPECT_EQ((backwards ? Q3Group_GetLastPosition : Q3Group_GetFirstPosition)(group, &position), kQ3Success);
         while (position != nullptr) {
             TQ3Object object = nullptr;
             EXPECT_EQ(Q3Group_GetPositionObject(group, position, &object), kQ3Success);
-            objects.push_back(object);
+            objects.insert(backwards ? objects.begin() : objects.end(), object);
             Q3Object_Dispose(object);
-            EXPECT_EQ(Q3Group_GetNextPosition(group, &position), kQ3Success);
+            EXPECT_EQ((backwards ? Q3Group_GetPreviousPosition : Q3Group_GetNextPosition)(group, &position),
+                      kQ3Success);
         }
         return objects;
     }
 
-    /// The same, from last to first.
-    std::vector<TQ3Object> walkBack(TQ3GroupObject group)
+    /// The positions of `object` in the group in the order the object
+    /// position calls give them: from the first on, or from the last back
+    /// when `backwards`, until they give NULL (at most 100).
+    std::vector<TQ3GroupPosition> objectPositions(TQ3GroupObject group, TQ3Object object, bool backwards)
     {
-        std::vector<TQ3Object> objects;
+        std::vector<TQ3GroupPosition> positions;
         TQ3GroupPosition position = nullptr;
-        EXPECT_EQ(Q3Group_GetLastPosition(group, &position), kQ3Success);
-        while (position != nullptr) {
-            TQ3Object object = nullptr;
-            EXPECT_EQ(Q3Group_GetPositionObject(group, position, &object), kQ3Success);
-            objects.insert(objects.begin(), object);
-            Q3Object_Dispose(object);
-            EXPECT_EQ(Q3Group_GetPreviousPosition(group, &position), kQ3Success);
+        EXPECT_EQ((backwards ? Q3Group_GetLastObjectPosition : Q3Group_GetFirstObjectPosition)(group, object, &position),
+                  kQ3Success);
+        while (position != nullptr && positions.size() < 100) {
+            positions.push_back(position);
+            (backwards ? Q3Group_GetPreviousObjectPosition : Q3Group_GetNextObjectPosition)(group, object, &position);
         }
-        return objects;
+        return positions;
     }
 
     unsigned long count(TQ3GroupObject group, TQ3ObjectType type = kQ3ObjectTypeInvalid)
@@ -155,7 +158,7 @@ TEST_F(GroupApiTest, AddKeepsTheOrderAndWalksBothWays)
     ASSERT_NE(pd, nullptr);
     const std::vector<TQ3Object> expected{a, b, c, d};
     EXPECT_EQ(walk(group), expected);
-    EXPECT_EQ(walkBack(group), expected);
+    EXPECT_EQ(walk(group, true), expected);
     EXPECT_EQ(count(group), 4u);
 
     TQ3GroupPosition last = nullptr;
@@ -290,13 +293,13 @@ TEST_F(GroupApiTest, OfTypeCallsSeeOnlyThatTypeAndItsSubclasses)
     TQ3Object p1 = point(1), t1 = translate(1), p2 = point(2), s = fillStyle(), t2 = translate(2);
     for (TQ3Object object : {p1, t1, p2, s, t2})
         ASSERT_NE(Q3Group_AddObject(group, object), nullptr);
-    EXPECT_EQ(count(group, kQ3ShapeTypeGeometry), 2u);
-    EXPECT_EQ(count(group, kQ3GeometryTypePoint), 2u);
-    EXPECT_EQ(count(group, kQ3ShapeTypeTransform), 2u);
-    EXPECT_EQ(count(group, kQ3TransformTypeTranslate), 2u);
-    EXPECT_EQ(count(group, kQ3TransformTypeScale), 0u);
-    EXPECT_EQ(count(group, kQ3ShapeTypeStyle), 1u);
-    EXPECT_EQ(count(group, kQ3SharedTypeShape), 5u);
+    // Each type and how many of the five objects are of it.
+    const std::pair<TQ3ObjectType, unsigned long> counts[] = {
+        {kQ3ShapeTypeGeometry, 2},      {kQ3GeometryTypePoint, 2},  {kQ3ShapeTypeTransform, 2},
+        {kQ3TransformTypeTranslate, 2}, {kQ3TransformTypeScale, 0}, {kQ3ShapeTypeStyle, 1},
+        {kQ3SharedTypeShape, 5}};
+    for (const auto& [type, expected] : counts)
+        EXPECT_EQ(count(group, type), expected) << "type " << type;
 
     EXPECT_EQ(walkOfType(group, kQ3ShapeTypeTransform, true), (std::vector<TQ3Object>{t1, t2}));
     EXPECT_EQ(walkOfType(group, kQ3ShapeTypeGeometry, false), (std::vector<TQ3Object>{p2, p1}));
@@ -321,25 +324,11 @@ TEST_F(GroupApiTest, ObjectPositionCallsFindEveryPlaceAnObjectIs)
     Q3Group_AddObject(group, b);
     TQ3GroupPosition p4 = Q3Group_AddObject(group, a);
 
+    using Positions = std::vector<TQ3GroupPosition>;
+    EXPECT_EQ(objectPositions(group, a, false), (Positions{p0, p2, p4}));
+    EXPECT_EQ(objectPositions(group, a, true), (Positions{p4, p2, p0}));
+
     TQ3GroupPosition position = nullptr;
-    ASSERT_EQ(Q3Group_GetFirstObjectPosition(group, a, &position), kQ3Success);
-    EXPECT_EQ(position, p0);
-    Q3Group_GetNextObjectPosition(group, a, &position);
-    EXPECT_EQ(position, p2);
-    Q3Group_GetNextObjectPosition(group, a, &position);
-    EXPECT_EQ(position, p4);
-    Q3Group_GetNextObjectPosition(group, a, &position);
-    EXPECT_EQ(position, nullptr);
-
-    ASSERT_EQ(Q3Group_GetLastObjectPosition(group, a, &position), kQ3Success);
-    EXPECT_EQ(position, p4);
-    Q3Group_GetPreviousObjectPosition(group, a, &position);
-    EXPECT_EQ(position, p2);
-    Q3Group_GetPreviousObjectPosition(group, a, &position);
-    EXPECT_EQ(position, p0);
-    Q3Group_GetPreviousObjectPosition(group, a, &position);
-    EXPECT_EQ(position, nullptr);
-
     TQ3Object absent = point(7);
     Q3Group_GetFirstObjectPosition(group, absent, &position);
     EXPECT_EQ(position, nullptr);

@@ -142,8 +142,7 @@ int toByte(double v)
 // The world point at the centre of pixel (i, j) on the plane z = 0.
 Vec worldAt(unsigned long i, unsigned long j)
 {
-    const double step = 2 * kHalf / double(kSize);
-    return {-kHalf + (double(i) + 0.5) * step, kHalf - (double(j) + 0.5) * step, 0};
+    return {q3test::pixelCentre(i, kSize, kHalf), -q3test::pixelCentre(j, kSize, kHalf), 0};
 }
 
 class LightingRenderTest : public q3test::OwningApiTest {
@@ -425,12 +424,7 @@ TEST_F(LightingRenderTest, ALightThatIsOffOrDimmedLightsAccordingly)
 TEST_F(LightingRenderTest, FlippedBackFacesAreLitWithTheReversedNormal)
 {
     // Towards the square, from the camera's side.
-    const BackFaceScene scene = backFaceScene({0.5, 0, -1});
-    const Light& directional = scene.light;
-    const Surface& s = scene.surface;
-    TQ3LightObject d = scene.object;
-    TQ3ShaderObject lambert = scene.lambert;
-    TQ3AttributeSet set = scene.set;
+    const auto [directional, s, d, lambert, set] = backFaceScene({0.5, 0, -1});
     // Facing away, its normal is -z: the light is behind it, nothing lights it.
     expectLit(render({d}, lambert, set, kQ3BackfacingStyleBoth, true), {directional}, s, {0, 0, -1},
               "back face, both");
@@ -450,12 +444,7 @@ TEST_F(LightingRenderTest, FlippedBackFacesAreLitWithTheReversedNormal)
 TEST_F(LightingRenderTest, BackFacesUnderBothKeepTheirNormalAsTheBookSays)
 {
     // From behind the square, towards the camera.
-    const BackFaceScene scene = backFaceScene({0.5, 0, 1});
-    const Light& directional = scene.light;
-    const Surface& s = scene.surface;
-    TQ3LightObject d = scene.object;
-    TQ3ShaderObject lambert = scene.lambert;
-    TQ3AttributeSet set = scene.set;
+    const auto [directional, s, d, lambert, set] = backFaceScene({0.5, 0, 1});
     // Facing away, its normal -z points at the light: lit by it.
     expectLit(render({d}, lambert, set, kQ3BackfacingStyleBoth, true), {directional}, s, {0, 0, -1},
               "back face lit from behind, both");

@@ -108,14 +108,20 @@ TEST_F(MathApiTest, Vector3DSetRejectsNull)
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Set(nullptr, 1, 2, 3), nullptr), kQ3ErrorNULLParameter);
 }
 
+// Each coordinate of p is exactly the value given.
+void expectRationalPoint(const TQ3RationalPoint4D& p, float x, float y, float z, float w)
+{
+    EXPECT_EQ(p.x, x);
+    EXPECT_EQ(p.y, y);
+    EXPECT_EQ(p.z, z);
+    EXPECT_EQ(p.w, w);
+}
+
 TEST_F(MathApiTest, RationalPoint4DSetStoresCoordinatesAndWeight)
 {
     TQ3RationalPoint4D p{};
     EXPECT_EQ(Q3RationalPoint4D_Set(&p, 1, 2, 3, 0.5f), &p);
-    EXPECT_EQ(p.x, 1.0f);
-    EXPECT_EQ(p.y, 2.0f);
-    EXPECT_EQ(p.z, 3.0f);
-    EXPECT_EQ(p.w, 0.5f);
+    expectRationalPoint(p, 1, 2, 3, 0.5f);
     EXPECT_EQ(Q3RationalPoint4D_Set(&p, kNaN, kInf, -kInf, kNaN), &p);
     EXPECT_TRUE(std::isnan(p.x));
     EXPECT_EQ(p.y, kInf);
@@ -134,10 +140,7 @@ TEST_F(MathApiTest, ArticleAliasTQ3RationalPoint4DSetIsQ3RationalPoint4DSet)
     // The develop article's Listing 3 spells it this way.
     TQ3RationalPoint4D p{};
     EXPECT_EQ(TQ3RationalPoint4D_Set(&p, 4, 5, 6, 1.0), &p);
-    EXPECT_EQ(p.x, 4.0f);
-    EXPECT_EQ(p.y, 5.0f);
-    EXPECT_EQ(p.z, 6.0f);
-    EXPECT_EQ(p.w, 1.0f);
+    expectRationalPoint(p, 4, 5, 6, 1);
 }
 
 // ---- Lengths, distances and products --------------------------------------

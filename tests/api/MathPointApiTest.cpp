@@ -19,6 +19,22 @@ namespace {
 using namespace q3test;
 using MathPointApiTest = Q3ApiTest;
 
+// One point of each kind the affine combinations take, each with weight 1,
+// and a zeroed result of each kind.
+struct OnePointOfEachKind {
+    TQ3Point2D p2[1] = {{1, 2}};
+    TQ3Param2D u[1] = {{1, 2}};
+    TQ3RationalPoint3D r3[1] = {{1, 2, 1}};
+    TQ3Point3D p3[1] = {{1, 2, 3}};
+    TQ3RationalPoint4D r4[1] = {{1, 2, 3, 1}};
+    float w[1] = {1};
+    TQ3Point2D o2{};
+    TQ3Param2D ou{};
+    TQ3RationalPoint3D o3{};
+    TQ3Point3D op3{};
+    TQ3RationalPoint4D o4{};
+};
+
 // Angles come from sines and cosines rounded to float: a few ulps at 2 pi.
 constexpr float kAngleTolerance = 2e-6f;
 
@@ -619,17 +635,7 @@ TEST_F(MathPointApiTest, AffineCombinationsRejectWeightsSummingToZeroAndNoPoints
 
 TEST_F(MathPointApiTest, AffineCombinationsRejectNullArraysForOneOrMorePointsAndNullResults)
 {
-    const TQ3Point2D p2[] = {{1, 2}};
-    const TQ3Param2D u[] = {{1, 2}};
-    const TQ3RationalPoint3D r3[] = {{1, 2, 1}};
-    const TQ3Point3D p3[] = {{1, 2, 3}};
-    const TQ3RationalPoint4D r4[] = {{1, 2, 3, 1}};
-    const float w[] = {1};
-    TQ3Point2D o2{};
-    TQ3Param2D ou{};
-    TQ3RationalPoint3D o3{};
-    TQ3Point3D op3{};
-    TQ3RationalPoint4D o4{};
+    auto [p2, u, r3, p3, r4, w, o2, ou, o3, op3, o4] = OnePointOfEachKind();
     for (unsigned long count : {1UL, ULONG_MAX}) {
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_AffineComb(nullptr, w, count, &o2), nullptr), kQ3ErrorNULLParameter);
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_AffineComb(p2, nullptr, count, &o2), nullptr), kQ3ErrorNULLParameter);
@@ -657,17 +663,8 @@ TEST_F(MathPointApiTest, AffineCombinationsRejectNullArraysForOneOrMorePointsAnd
 // fail before anything is read (AddressSanitizer would see a read past them).
 TEST_F(MathPointApiTest, AffineCombinationsRejectCountsNoArrayCouldHoldBeforeReading)
 {
-    const TQ3Point2D p2[] = {{1, 2}};
-    const TQ3Param2D u[] = {{1, 2}};
-    const TQ3RationalPoint3D r3[] = {{1, 2, 1}};
-    const TQ3Point3D p3[] = {{1, 2, 3}};
-    const TQ3RationalPoint4D r4[] = {{1, 2, 3, 1}};
-    const float w[] = {1};
-    TQ3Point3D out = filledWith<TQ3Point3D>(7);
-    TQ3Point2D o2{};
-    TQ3Param2D ou{};
-    TQ3RationalPoint3D o3{};
-    TQ3RationalPoint4D o4{};
+    auto [p2, u, r3, p3, r4, w, o2, ou, o3, out, o4] = OnePointOfEachKind();
+    out = filledWith<TQ3Point3D>(7);
     for (unsigned long count : {ULONG_MAX, ULONG_MAX / 4 + 1, 1UL << 62, (unsigned long)LONG_MAX}) {
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_AffineComb(p3, w, count, &out), nullptr), kQ3ErrorParameterOutOfRange);
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_AffineComb(p2, w, count, &o2), nullptr), kQ3ErrorParameterOutOfRange);

@@ -111,18 +111,6 @@ TEST_F(MathVectorApiTest, ScaleFollowsIEEEForNonFiniteValues)
     EXPECT_EQ(r2.y, 10.0f);
 }
 
-TEST_F(MathVectorApiTest, ScaleRejectsNull)
-{
-    const TQ3Vector2D v2{1, 2};
-    const TQ3Vector3D v3{1, 2, 3};
-    TQ3Vector2D r2{};
-    TQ3Vector3D r3{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector2D_Scale(nullptr, 2, &r2), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector2D_Scale(&v2, 2, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Scale(nullptr, 2, &r3), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Scale(&v3, 2, nullptr), nullptr), kQ3ErrorNULLParameter);
-}
-
 TEST_F(MathVectorApiTest, Vector2DLengthIsEuclideanAndDoesNotOverflow)
 {
     const TQ3Vector2D v{-5, 12}, zero{0, 0}, huge{3e30f, 4e30f};
@@ -321,12 +309,16 @@ TEST_F(MathVectorApiTest, TransformsFollowIEEEForNonFiniteValues)
     EXPECT_EQ(r2.y, 1.0f);
 }
 
-TEST_F(MathVectorApiTest, TransformsRejectNull)
+TEST_F(MathVectorApiTest, ScaleAndTransformsRejectNull)
 {
     const TQ3Vector2D v2{1, 2};
     const TQ3Vector3D v3{1, 2, 3};
     TQ3Vector2D r2{};
     TQ3Vector3D r3{};
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector2D_Scale(nullptr, 2, &r2), nullptr), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector2D_Scale(&v2, 2, nullptr), nullptr), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Scale(nullptr, 2, &r3), nullptr), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Vector3D_Scale(&v3, 2, nullptr), nullptr), kQ3ErrorNULLParameter);
     expectEachNullRejected("Q3Vector2D_Transform", Q3Vector2D_Transform, &v2, &kIdentity3x3, &r2);
     expectEachNullRejected("Q3Vector3D_Transform", Q3Vector3D_Transform, &v3, &kIdentity4x4, &r3);
 }

@@ -8,6 +8,8 @@
 // macros, duplicates, bounds, and the even-odd fill of holed faces checked
 // against a point-in-contours test written here.
 
+#include "DiffuseColor.h"
+#include "GeometryTestSupport.h"
 #include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
@@ -28,9 +30,6 @@
 namespace {
 
 using namespace q3test;
-
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr float kInf = std::numeric_limits<float>::infinity();
 
 class MeshApiTest : public OwningApiTest {
 protected:
@@ -993,9 +992,7 @@ TEST_F(MeshApiTest, DuplicateCopiesEverythingWithNewHandlesAndSets)
     EXPECT_NE(s0, red);
     EXPECT_EQ(s0, s1); // shared in the original, shared in the copy
     EXPECT_EQ(se, s0);
-    TQ3ColorRGB color{};
-    EXPECT_EQ(Q3AttributeSet_Get(s0, kQ3AttributeTypeDiffuseColor, &color), kQ3Success);
-    EXPECT_EQ(color.r, 1);
+    EXPECT_EQ(expectDiffuseColor(s0).r, 1);
     Q3Object_Dispose(s0);
     Q3Object_Dispose(s1);
     Q3Object_Dispose(se);

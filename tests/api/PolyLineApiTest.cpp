@@ -222,32 +222,30 @@ TEST_F(PolyLineApiTest, IndexedAttributeSetCallsRejectBadIndicesAndChangeNothing
     ASSERT_NE(polyLine, nullptr);
     const PolyLineState before = stateOf(polyLine);
 
-    std::vector<unsigned long> badVertices = {3};
-    badVertices.insert(badVertices.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
-    for (unsigned long index : badVertices) {
-        TQ3AttributeSet got = set;
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, index, &got), kQ3Failure),
-                        kQ3ErrorParameterOutOfRange);
-        EXPECT_EQ(got, set); // unchanged on failure
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, index, nullptr), kQ3Failure),
-                        kQ3ErrorParameterOutOfRange);
-    }
-    std::vector<unsigned long> badSegments = {2}; // one past the last segment
-    badSegments.insert(badSegments.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
-    for (unsigned long index : badSegments) {
-        TQ3AttributeSet got = set;
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetSegmentAttributeSet(polyLine, index, &got), kQ3Failure),
-                        kQ3ErrorParameterOutOfRange);
-        EXPECT_EQ(got, set);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, index, set), kQ3Failure),
-                        kQ3ErrorParameterOutOfRange);
-    }
+    // One past the end and the huge indices.
+    const auto pastTheEnd = [](unsigned long onePast) {
+        std::vector<unsigned long> bad = {onePast};
+        bad.insert(bad.end(), std::begin(kHugeIndices), std::end(kHugeIndices));
+        return bad;
+    };
+    // Past the end, the get leaves its result as it was and the set (of
+    // `value`) is refused too.
+    const auto expectPastTheEndRefused = [&](auto get, auto put, unsigned long onePast, TQ3AttributeSet value) {
+        for (unsigned long index : pastTheEnd(onePast)) {
+            TQ3AttributeSet got = set;
+            EXPECT_Q3_ERROR(EXPECT_EQ(get(polyLine, index, &got), kQ3Failure), kQ3ErrorParameterOutOfRange);
+            EXPECT_EQ(got, set); // unchanged on failure
+            EXPECT_Q3_ERROR(EXPECT_EQ(put(polyLine, index, value), kQ3Failure), kQ3ErrorParameterOutOfRange);
+        }
+    };
+    expectPastTheEndRefused(Q3PolyLine_GetVertexAttributeSet, Q3PolyLine_SetVertexAttributeSet, 3, nullptr);
+    expectPastTheEndRefused(Q3PolyLine_GetSegmentAttributeSet, Q3PolyLine_SetSegmentAttributeSet, 2, set);
     expectSameState(before, stateOf(polyLine));
 
     // Without a segment array the segment count still bounds the index.
     m_data.segmentAttributeSet = nullptr;
     TQ3GeometryObject plain = own(Q3PolyLine_New(&m_data));
-    for (unsigned long index : badSegments) {
+    for (unsigned long index : pastTheEnd(2)) {
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(plain, index, set), kQ3Failure),
                         kQ3ErrorParameterOutOfRange);
     }

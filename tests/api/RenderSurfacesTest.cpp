@@ -413,16 +413,11 @@ TEST_F(RenderSurfacesTest, VertexBeatsFaceBeatsGeometryBeatsStateColorInATriMesh
         {kQ3AttributeTypeDiffuseColor, pointColors.data(), pointUse.data()}};
     TQ3TriMeshAttributeData triangleAttributes[1] = {
         {kQ3AttributeTypeDiffuseColor, triangleColors.data(), triangleUse.data()}};
-    TQ3TriMeshData data{};
-    data.triMeshAttributeSet = color(0, 0, 1);
-    data.numTriangles = triangles.size();
-    data.triangles = triangles.data();
-    data.numTriangleAttributeTypes = 1;
-    data.triangleAttributeTypes = triangleAttributes;
-    data.numPoints = points.size();
-    data.points = points.data();
-    data.numVertexAttributeTypes = 1;
-    data.vertexAttributeTypes = vertexAttributes;
+    // A blue set, the triangles with one attribute array, no edges, the
+    // points with one.
+    TQ3TriMeshData data{color(0, 0, 1), static_cast<unsigned long>(triangles.size()), triangles.data(), 1,
+                        triangleAttributes, 0, nullptr, 0, nullptr, static_cast<unsigned long>(points.size()),
+                        points.data(), 1, vertexAttributes, TQ3BoundingBox{}};
 
     std::vector<TQ3Point3D> lonePoints{{0.5f, 0.8f, 0}, {1.5f, 0.8f, 0}, {1.0f, 1.8f, 0}};
     TQ3TriMeshTriangleData lone[1] = {{{0, 1, 2}}};

@@ -22,6 +22,22 @@ using namespace q3test;
 class SetApiTest : public OwningApiTest {
 protected:
     TQ3SetObject newSet() { return own(Q3Set_New()); }
+
+    // A new set holding one diffuse colour, with that colour's bytes, the
+    // set's contents and its edit index after the Add.
+    struct HeldColor {
+        TQ3SetObject set;
+        AttributeBytes color;
+        SetContents before;
+        unsigned long edit;
+    };
+    HeldColor setHoldingAColor()
+    {
+        TQ3SetObject set = newSet();
+        const AttributeBytes color = attributeValue(kQ3AttributeTypeDiffuseColor, 0.5f);
+        EXPECT_EQ(Q3Set_Add(set, kQ3AttributeTypeDiffuseColor, color.data()), kQ3Success);
+        return {set, color, contentsOf(set), Q3Shared_GetEditIndex(set)};
+    }
     TQ3Object deadSet()
     {
         TQ3SetObject set = Q3Set_New();
@@ -123,11 +139,7 @@ TEST_F(SetApiTest, GetNextElementTypeWalksInTypeOrder)
 
 TEST_F(SetApiTest, ElementTypesWithoutAClassAreRefusedAndChangeNothing)
 {
-    TQ3SetObject set = newSet();
-    const AttributeBytes color = attributeValue(kQ3AttributeTypeDiffuseColor, 0.5f);
-    ASSERT_EQ(Q3Set_Add(set, kQ3AttributeTypeDiffuseColor, color.data()), kQ3Success);
-    const SetContents before = contentsOf(set);
-    const unsigned long edit = Q3Shared_GetEditIndex(set);
+    const auto [set, color, before, edit] = setHoldingAColor();
     for (TQ3ElementType type : kUnknownTypes) {
         AttributeBytes data = color;
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Set_Add(set, type, data.data()), kQ3Failure), kQ3ErrorUnknownElementType);
@@ -142,11 +154,7 @@ TEST_F(SetApiTest, ElementTypesWithoutAClassAreRefusedAndChangeNothing)
 
 TEST_F(SetApiTest, BadValuesAndMissingElementsChangeNothing)
 {
-    TQ3SetObject set = newSet();
-    const AttributeBytes color = attributeValue(kQ3AttributeTypeDiffuseColor, 0.5f);
-    ASSERT_EQ(Q3Set_Add(set, kQ3AttributeTypeDiffuseColor, color.data()), kQ3Success);
-    const SetContents before = contentsOf(set);
-    const unsigned long edit = Q3Shared_GetEditIndex(set);
+    const auto [set, color, before, edit] = setHoldingAColor();
 
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Set_Add(set, kQ3AttributeTypeDiffuseColor, nullptr), kQ3Failure),
                     kQ3ErrorNULLParameter);

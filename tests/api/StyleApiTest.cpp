@@ -6,6 +6,7 @@
 // value (driven from one table), the highlight style, and the anti-alias
 // and fog styles with their data rules.
 
+#include "DiffuseColor.h"
 #include "OwningApiTest.h"
 #include "RenderTestSupport.h"
 
@@ -398,9 +399,7 @@ TEST_F(StyleApiTest, HighlightStyleHoldsAReferenceToItsSet)
     TQ3StyleObject holder = own(Q3HighlightStyle_New(loose));
     Q3Object_Dispose(loose);
     ASSERT_EQ(Q3HighlightStyle_Get(holder, &got), kQ3Success);
-    TQ3ColorRGB color{};
-    EXPECT_EQ(Q3AttributeSet_Get(got, kQ3AttributeTypeDiffuseColor, &color), kQ3Success);
-    EXPECT_EQ(color.r, 1.0f);
+    EXPECT_EQ(q3test::expectDiffuseColor(got).r, 1.0f);
     Q3Object_Dispose(got);
 }
 
@@ -488,9 +487,7 @@ TEST_F(StyleApiTest, HighlightStyleDuplicateCopiesTheSet)
     ASSERT_EQ(Q3HighlightStyle_Get(copy, &copied), kQ3Success);
     ASSERT_NE(copied, nullptr);
     EXPECT_NE(copied, set);
-    TQ3ColorRGB color{};
-    EXPECT_EQ(Q3AttributeSet_Get(copied, kQ3AttributeTypeDiffuseColor, &color), kQ3Success);
-    EXPECT_EQ(color.g, 1.0f);
+    EXPECT_EQ(q3test::expectDiffuseColor(copied).g, 1.0f);
     Q3Object_Dispose(copied);
     TQ3StyleObject empty = own(Q3HighlightStyle_New(nullptr));
     TQ3StyleObject emptyCopy = own(Q3Object_Duplicate(empty));

@@ -8,6 +8,7 @@
 
 #include "GeometryTestSupport.h"
 #include "OwningApiTest.h"
+#include "TextureTestSupport.h"
 
 #include "QD3DSet.h"
 #include "QD3DShader.h"
@@ -34,6 +35,11 @@ bool sameRGB(const TQ3ColorRGB& c, float r, float g, float b)
     return c.r == r && c.g == g && c.b == b;
 }
 
+bool sameARGB(const TQ3ColorARGB& c, float a, float r, float g, float b)
+{
+    return c.a == a && sameRGB({c.r, c.g, c.b}, r, g, b);
+}
+
 TEST_F(ColorApiTest, SetFillsEveryChannelAndReturnsTheColour)
 {
     TQ3ColorRGB rgb{};
@@ -41,10 +47,7 @@ TEST_F(ColorApiTest, SetFillsEveryChannelAndReturnsTheColour)
     EXPECT_TRUE(sameRGB(rgb, 0.25f, -1.0f, 7.0f));
     TQ3ColorARGB argb{};
     EXPECT_EQ(Q3ColorARGB_Set(&argb, 0.5f, 0.25f, 0.125f, 1.0f), &argb);
-    EXPECT_EQ(argb.a, 0.5f);
-    EXPECT_EQ(argb.r, 0.25f);
-    EXPECT_EQ(argb.g, 0.125f);
-    EXPECT_EQ(argb.b, 1.0f);
+    EXPECT_TRUE(sameARGB(argb, 0.5f, 0.25f, 0.125f, 1.0f));
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3ColorRGB_Set(nullptr, 0, 0, 0), nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3ColorARGB_Set(nullptr, 0, 0, 0, 0), nullptr), kQ3ErrorNULLParameter);
 }
@@ -171,17 +174,8 @@ protected:
     // An 8 x 2 RGB16 chain: 8x2, 4x1, 2x1, 1x1, packed one after another.
     TQ3Mipmap goodMipmap() const
     {
-        TQ3Mipmap m{};
-        m.image = m_storage;
-        m.useMipmapping = kQ3True;
-        m.pixelType = kQ3PixelTypeRGB16;
-        m.bitOrder = kQ3EndianBig;
-        m.byteOrder = kQ3EndianBig;
-        m.reserved = 0;
-        m.mipmaps[0] = TQ3MipmapImage{8, 2, 16, 0};
-        m.mipmaps[1] = TQ3MipmapImage{4, 1, 8, 32};
-        m.mipmaps[2] = TQ3MipmapImage{2, 1, 4, 40};
-        m.mipmaps[3] = TQ3MipmapImage{1, 1, 2, 44};
+        TQ3Mipmap m = bigEndianMipmap(m_storage, kQ3PixelTypeRGB16, true,
+                                      {{8, 2, 16, 0}, {4, 1, 8, 32}, {2, 1, 4, 40}, {1, 1, 2, 44}});
         // Not read: one past the chain's end.
         m.mipmaps[4] = TQ3MipmapImage{ULONG_MAX, 0, 0, ULONG_MAX};
         return m;

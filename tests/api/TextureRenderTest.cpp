@@ -10,6 +10,7 @@
 // there the rasterizer's rounding, not the rule, decides.
 
 #include "GeometryTestSupport.h"
+#include "InteractiveRender.h"
 #include "OwningApiTest.h"
 #include "QuadMesh.h"
 #include "RenderTestSupport.h"
@@ -95,7 +96,7 @@ bool expectedTexel(int px, int py, const UVMap& map, Rgba& out)
     return true;
 }
 
-class TextureRenderTest : public OwningApiTest {
+class TextureRenderTest : public OwningApiTest, protected InteractiveRendering<kWidth, kHeight> {
 protected:
     void SetUp() override
     {
@@ -122,13 +123,6 @@ protected:
         return mesh;
     }
 
-    Pixmap render(const std::function<void(TQ3ViewObject)>& submit)
-    {
-        Pixmap image(kWidth, kHeight);
-        TestView view(image.pixmap(), kQ3RendererTypeInteractive);
-        EXPECT_EQ(view.render(submit), kQ3ViewStatusDone);
-        return image;
-    }
 
     // Every pixel the rule decides shows its texel scaled by `scale` (within
     // `tolerance` per channel); returns how many were checked.
@@ -207,37 +201,25 @@ TEST_F(TextureRenderTest, UVTransformScalesAndTranslatesTheTexture)
         for (int j = 0; j < 3; ++j)
             matrix.value[i][j] = map.m[i][j];
     ASSERT_EQ(Q3Shader_SetUVTransform(m_shader, &matrix), kQ3Success);
-    const Pixmap image = render([&](TQ3ViewObject v) {
-        Q3Shader_Submit(m_shader, v);
-        Q3Geometry_Submit(mesh, v);
-    });
+    const Pixmap image = renderUnder(m_shader, mesh);
     EXPECT_GT(expectTexels(image, map, "wrapped"), 200);
 
     // Clamped in u: right of u' = 1 the last column repeats; v still wraps.
     map.clampU = true;
     ASSERT_EQ(Q3Shader_SetUBoundary(m_shader, kQ3ShaderUVBoundaryClamp), kQ3Success);
-    const Pixmap clampedU = render([&](TQ3ViewObject v) {
-        Q3Shader_Submit(m_shader, v);
-        Q3Geometry_Submit(mesh, v);
-    });
+    const Pixmap clampedU = renderUnder(m_shader, mesh);
     EXPECT_GT(expectTexels(clampedU, map, "clamped in u"), 200);
 
     map.clampV = true;
     ASSERT_EQ(Q3Shader_SetVBoundary(m_shader, kQ3ShaderUVBoundaryClamp), kQ3Success);
-    const Pixmap clamped = render([&](TQ3ViewObject v) {
-        Q3Shader_Submit(m_shader, v);
-        Q3Geometry_Submit(mesh, v);
-    });
+    const Pixmap clamped = renderUnder(m_shader, mesh);
     EXPECT_GT(expectTexels(clamped, map, "clamped in u and v"), 200);
 }
 
 TEST_F(TextureRenderTest, ShadingUVServesWhereThereIsNoSurfaceUV)
 {
     TQ3GeometryObject mesh = quad(kQ3AttributeTypeShadingUV);
-    const Pixmap image = render([&](TQ3ViewObject v) {
-        Q3Shader_Submit(m_shader, v);
-        Q3Geometry_Submit(mesh, v);
-    });
+    const Pixmap image = renderUnder(m_shader, mesh);
     EXPECT_GT(expectTexels(image, UVMap{}, "shading uv"), 300);
 }
 

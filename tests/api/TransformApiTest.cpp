@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "Q3ApiTest.h"
+#include "SetThenGet.h"
 #include "TransformTestSupport.h"
 
 #include "QD3DGeometry.h"
@@ -76,6 +77,17 @@ protected:
         EXPECT_EQ(Q3Object_GetLeafType(copy), leafType);
         Q3Object_Dispose(copy);
         Q3Object_Dispose(transform);
+    }
+
+    /// A quarter turn about z: the state takes (1, 0, 0) to (0, 1, 0).
+    static void expectTakesXToY(const TQ3Matrix4x4& state)
+    {
+        const TQ3Point3D x{1, 0, 0};
+        TQ3Point3D p{};
+        Q3Point3D_Transform(&x, &state, &p);
+        EXPECT_NEAR(p.x, 0.0f, 1e-6f);
+        EXPECT_NEAR(p.y, 1.0f, 1e-6f);
+        EXPECT_NEAR(p.z, 0.0f, 1e-6f);
     }
 };
 
@@ -353,12 +365,7 @@ TEST_F(TransformApiTest, RotateTransformQuarterTurnAboutZTakesXToY)
     const TQ3RotateTransformData data{kQ3AxisZ, kQ3PiOver2};
     const TQ3Matrix4x4 state =
         stateAfter([&](TQ3ViewObject v) { EXPECT_EQ(Q3RotateTransform_Submit(&data, v), kQ3Success); });
-    const TQ3Point3D x{1, 0, 0};
-    TQ3Point3D p{};
-    Q3Point3D_Transform(&x, &state, &p);
-    EXPECT_NEAR(p.x, 0.0f, 1e-6f);
-    EXPECT_NEAR(p.y, 1.0f, 1e-6f);
-    EXPECT_NEAR(p.z, 0.0f, 1e-6f);
+    expectTakesXToY(state);
 }
 
 TEST_F(TransformApiTest, ResetTransformRestoresTheIdentity)
@@ -606,12 +613,7 @@ TEST_F(TransformApiTest, ScaleTransformSetAcceptsZeroAndNegativeFactorsAndTakesE
 {
     const TQ3Vector3D first{2, 2, 2}, second{0, -1, 3};
     TQ3TransformObject transform = Q3ScaleTransform_New(&first);
-    const unsigned long edit = Q3Shared_GetEditIndex(transform);
-    EXPECT_EQ(Q3ScaleTransform_Set(transform, &second), kQ3Success);
-    EXPECT_NE(Q3Shared_GetEditIndex(transform), edit);
-    TQ3Vector3D out{};
-    EXPECT_EQ(Q3ScaleTransform_Get(transform, &out), kQ3Success);
-    EXPECT_EQ(std::memcmp(&out, &second, sizeof out), 0);
+    q3test::expectSetThenGet(transform, Q3ScaleTransform_Set, Q3ScaleTransform_Get, second);
     TQ3Matrix4x4 expected{};
     Q3Matrix4x4_SetScale(&expected, 0, -1, 3);
     expectMatrixNear(stateAfter([&](TQ3ViewObject v) { Q3Object_Submit(transform, v); }), expected,
@@ -652,12 +654,7 @@ TEST_F(TransformApiTest, RotateTransformSettersReplaceDataAxisAndAngle)
     // The view applies the new rotation: a quarter turn about z takes x to y.
     const TQ3Matrix4x4 state =
         stateAfter([&](TQ3ViewObject v) { EXPECT_EQ(Q3Object_Submit(transform, v), kQ3Success); });
-    const TQ3Point3D x{1, 0, 0};
-    TQ3Point3D p{};
-    Q3Point3D_Transform(&x, &state, &p);
-    EXPECT_NEAR(p.x, 0.0f, 1e-6f);
-    EXPECT_NEAR(p.y, 1.0f, 1e-6f);
-    EXPECT_NEAR(p.z, 0.0f, 1e-6f);
+    expectTakesXToY(state);
     Q3Object_Dispose(transform);
 }
 

@@ -38,7 +38,6 @@ namespace {
 
 using q3test::Pixmap;
 using q3test::Rgba;
-using q3test::TestView;
 
 constexpr unsigned long kSize = 64; // pixels each way
 constexpr double kHalf = 2.0;       // the camera shows x and y in [-2, 2]
@@ -67,7 +66,7 @@ int toByte(double v)
 // The world x and y at the centre of pixel (i, j) (orthographic camera).
 double worldX(unsigned long i)
 {
-    return -kHalf + (double(i) + 0.5) * (2 * kHalf / double(kSize));
+    return q3test::pixelCentre(i, kSize, kHalf);
 }
 
 class TranslucencyFogRenderTest : public q3test::OwningApiTest {
@@ -171,7 +170,7 @@ protected:
                   bool ambientLight = false)
     {
         Pixmap image(kSize, kSize);
-        TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera != nullptr ? camera : orthographic());
+        q3test::TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera != nullptr ? camera : orthographic());
         if (ambientLight) {
             TQ3GroupObject group = own(Q3LightGroup_New());
             const TQ3LightData data{kQ3True, 1.0f, {1.0f, 1.0f, 1.0f}};

@@ -63,22 +63,22 @@ protected:
     /// The full mesh, with a bBox that is wrong on purpose (Q3 ignores it).
     TQ3TriMeshData fullData()
     {
-        TQ3TriMeshData data{};
-        data.triMeshAttributeSet = nullptr;
-        data.numTriangles = m_triangles.size();
-        data.triangles = m_triangles.data();
-        data.numTriangleAttributeTypes = 1;
-        data.triangleAttributeTypes = m_triangleAttributes;
-        data.numEdges = m_edges.size();
-        data.edges = m_edges.data();
-        data.numEdgeAttributeTypes = 1;
-        data.edgeAttributeTypes = m_edgeAttributes;
-        data.numPoints = m_points.size();
-        data.points = m_points.data();
-        data.numVertexAttributeTypes = 2;
-        data.vertexAttributeTypes = m_vertexAttributes;
-        data.bBox = TQ3BoundingBox{{-100, -100, -100}, {-99, -99, -99}, kQ3True};
-        return data;
+        // No set; triangles and edges with one attribute array each; points
+        // with two.
+        return TQ3TriMeshData{nullptr,
+                              static_cast<unsigned long>(m_triangles.size()),
+                              m_triangles.data(),
+                              1,
+                              m_triangleAttributes,
+                              static_cast<unsigned long>(m_edges.size()),
+                              m_edges.data(),
+                              1,
+                              m_edgeAttributes,
+                              static_cast<unsigned long>(m_points.size()),
+                              m_points.data(),
+                              2,
+                              m_vertexAttributes,
+                              TQ3BoundingBox{{-100, -100, -100}, {-99, -99, -99}, kQ3True}};
     }
 
     /// Only the points and the triangles.

@@ -10,12 +10,30 @@
 #include "QD3DStyle.h"
 #include "QD3DTransform.h"
 
+#include <utility>
+
 namespace {
 
 using namespace q3test;
 
 class ViewApiTest : public Q3ApiTest {
 protected:
+    // Listing 1's curve, an empty attribute set and a constant subdivision
+    // style (as data and as an object), disposed of at the end of the test.
+    struct Submittables {
+        Listing1 listing;
+        TQ3NURBCurveData data = listing.data();
+        TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+        TQ3AttributeSet set = Q3AttributeSet_New();
+        TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 4, 4};
+        TQ3StyleObject styleObject = Q3SubdivisionStyle_New(&style);
+        ~Submittables()
+        {
+            for (TQ3Object object : {curve, set, styleObject})
+                Q3Object_Dispose(object);
+        }
+    };
+
     void SetUp() override
     {
         Q3ApiTest::SetUp();
@@ -68,15 +86,14 @@ TEST(ViewApiUninitialized, NewBeforeInitializeFailsWithNotInitialized)
 
 TEST_F(ViewApiTest, NewViewHasNoRendererCameraOrDrawContext)
 {
-    TQ3Object out = m_camera;
-    EXPECT_EQ(Q3View_GetCamera(m_view, &out), kQ3Success);
-    EXPECT_EQ(out, nullptr);
-    out = m_renderer;
-    EXPECT_EQ(Q3View_GetRenderer(m_view, &out), kQ3Success);
-    EXPECT_EQ(out, nullptr);
-    out = m_context;
-    EXPECT_EQ(Q3View_GetDrawContext(m_view, &out), kQ3Success);
-    EXPECT_EQ(out, nullptr);
+    // Each getter overwrites a handle it is given with NULL.
+    const std::pair<TQ3Status (*)(TQ3ViewObject, TQ3Object*), TQ3Object> getters[] = {
+        {Q3View_GetCamera, m_camera}, {Q3View_GetRenderer, m_renderer}, {Q3View_GetDrawContext, m_context}};
+    for (const auto& [get, before] : getters) {
+        TQ3Object out = before;
+        EXPECT_EQ(get(m_view, &out), kQ3Success);
+        EXPECT_EQ(out, nullptr);
+    }
     EXPECT_EQ(Q3Object_GetType(m_view), kQ3ObjectTypeView);
 }
 
@@ -350,12 +367,8 @@ TEST_F(ViewApiTest, ASecondFrameReusesTheViewAndRedrawsFromTheClear)
 TEST_F(ViewApiTest, SubmittingOutsideALoopFailsWithViewNotStarted)
 {
     configure();
-    Listing1 listing;
-    const TQ3NURBCurveData data = listing.data();
-    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
-    TQ3AttributeSet set = Q3AttributeSet_New();
-    const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 4, 4};
-    TQ3StyleObject styleObject = Q3SubdivisionStyle_New(&style);
+    const Submittables submittables;
+    const auto& [listing, data, curve, set, style, styleObject] = submittables;
     const TQ3Vector3D offset = {1, 0, 0};
     for (int when = 0; when < 2; ++when) {
         if (when == 1) {
@@ -378,20 +391,13 @@ TEST_F(ViewApiTest, SubmittingOutsideALoopFailsWithViewNotStarted)
         EXPECT_Q3_ERROR(Q3View_GetSubdivisionStyleState(m_view, &state), kQ3ErrorViewNotStarted);
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_GetDecomposed(curve, m_view), nullptr), kQ3ErrorViewNotStarted);
     }
-    Q3Object_Dispose(curve);
-    Q3Object_Dispose(set);
-    Q3Object_Dispose(styleObject);
 }
 
 TEST_F(ViewApiTest, ObjectSubmitTakesEveryDrawableAndRejectsOthers)
 {
     configure();
-    Listing1 listing;
-    const TQ3NURBCurveData data = listing.data();
-    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
-    TQ3AttributeSet set = Q3AttributeSet_New();
-    const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 4, 4};
-    TQ3StyleObject styleObject = Q3SubdivisionStyle_New(&style);
+    const Submittables submittables;
+    const auto& [listing, data, curve, set, style, styleObject] = submittables;
     const TQ3Vector3D offset = {0.5f, 0, 0};
     TQ3TransformObject transform = Q3TranslateTransform_New(&offset);
 
@@ -417,8 +423,7 @@ TEST_F(ViewApiTest, ObjectSubmitTakesEveryDrawableAndRejectsOthers)
     EXPECT_Q3_ERROR(Q3Object_Submit(deadHandle(), m_view), kQ3ErrorInvalidObject);
     EXPECT_Q3_ERROR(Q3Object_Submit(curve, deadHandle()), kQ3ErrorInvalidObject);
     EXPECT_EQ(Q3View_EndRendering(m_view), kQ3ViewStatusDone);
-    for (TQ3Object object : {curve, set, styleObject, transform})
-        Q3Object_Dispose(object);
+    Q3Object_Dispose(transform);
 }
 
 TEST_F(ViewApiTest, CancelEndsTheLoopWithCancelledAndIgnoresLaterSubmits)

@@ -42,6 +42,28 @@ TQ3CameraObject newCamera()
 
 class ViewHintsApiTest : public Q3ApiTest {
 protected:
+    // `get` hands back `expected`, the object the hints hold, with a new
+    // reference (given back here).
+    // `get` refuses a NULL result pointer on the hints, and a handle of
+    // another type.
+    template <class T>
+    void expectGetRefuses(TQ3Status (*get)(TQ3ViewHintsObject, T*), TQ3Object wrongType)
+    {
+        EXPECT_Q3_ERROR(get(m_hints, nullptr), kQ3ErrorNULLParameter);
+        T out{};
+        EXPECT_Q3_ERROR(get(wrongType, &out), kQ3ErrorInvalidObjectType);
+    }
+
+    static void expectHintsHold(TQ3Status (*get)(TQ3ViewHintsObject, TQ3Object*), TQ3ViewHintsObject hints,
+                                TQ3Object expected)
+    {
+        TQ3Object got = nullptr;
+        EXPECT_EQ(get(hints, &got), kQ3Success);
+        EXPECT_EQ(got, expected);
+        if (got != nullptr)
+            Q3Object_Dispose(got);
+    }
+
     void SetUp() override
     {
         Q3ApiTest::SetUp();
@@ -159,19 +181,10 @@ TEST_F(ViewHintsApiTest, NewCopiesTheViewsConfiguration)
 
     TQ3ViewHintsObject hints = Q3ViewHints_New(m_view);
     ASSERT_NE(hints, nullptr);
-    TQ3Object got = nullptr;
-    EXPECT_EQ(Q3ViewHints_GetCamera(hints, &got), kQ3Success);
-    EXPECT_EQ(got, camera);
-    Q3Object_Dispose(got);
-    EXPECT_EQ(Q3ViewHints_GetRenderer(hints, &got), kQ3Success);
-    EXPECT_EQ(got, renderer);
-    Q3Object_Dispose(got);
-    EXPECT_EQ(Q3ViewHints_GetLightGroup(hints, &got), kQ3Success);
-    EXPECT_EQ(got, lights);
-    Q3Object_Dispose(got);
-    EXPECT_EQ(Q3ViewHints_GetAttributeSet(hints, &got), kQ3Success);
-    EXPECT_EQ(got, set);
-    Q3Object_Dispose(got);
+    expectHintsHold(Q3ViewHints_GetCamera, hints, camera);
+    expectHintsHold(Q3ViewHints_GetRenderer, hints, renderer);
+    expectHintsHold(Q3ViewHints_GetLightGroup, hints, lights);
+    expectHintsHold(Q3ViewHints_GetAttributeSet, hints, set);
     expectImageHints(hints, 40, 30, contextData.drawContextData.mask, contextData.drawContextData.clearImageColor);
 
     // A pane gives the dimensions instead of the pixmap.
@@ -284,10 +297,7 @@ TEST_F(ViewHintsApiTest, DuplicateSharesTheObjectsAndCopiesTheValues)
     ASSERT_NE(copy, nullptr);
     EXPECT_NE(copy, m_hints);
     EXPECT_EQ(Q3Object_IsType(copy, kQ3SharedTypeViewHints), kQ3True);
-    TQ3Object got = nullptr;
-    EXPECT_EQ(Q3ViewHints_GetCamera(copy, &got), kQ3Success);
-    EXPECT_EQ(got, camera);
-    Q3Object_Dispose(got);
+    expectHintsHold(Q3ViewHints_GetCamera, copy, camera);
     unsigned long width = 0, height = 0;
     EXPECT_EQ(Q3ViewHints_GetDimensions(copy, &width, &height), kQ3Success);
     EXPECT_EQ(width, 3ul);
@@ -313,10 +323,7 @@ TEST_F(ViewHintsApiTest, BadHandlesAreErrorsAndChangeNothing)
     ASSERT_EQ(Q3ViewHints_SetCamera(m_hints, camera), kQ3Success);
     const Snapshot before = snapshot();
     TQ3Object out = nullptr;
-    TQ3Boolean state;
     unsigned long w, h;
-    TQ3Bitmap mask;
-    TQ3DrawContextClearImageMethod method;
     TQ3ColorARGB color{1, 0, 0, 0};
 
     EXPECT_Q3_ERROR(Q3ViewHints_New(nullptr), kQ3ErrorNULLParameter);
@@ -349,24 +356,17 @@ TEST_F(ViewHintsApiTest, BadHandlesAreErrorsAndChangeNothing)
     EXPECT_Q3_ERROR(Q3ViewHints_GetCamera(m_hints, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3ViewHints_GetRenderer(m_hints, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3ViewHints_GetRenderer(nullptr, &out), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetLightGroup(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetLightGroup(camera, &out), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetAttributeSet(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetAttributeSet(camera, &out), kQ3ErrorInvalidObjectType);
+    expectGetRefuses(Q3ViewHints_GetLightGroup, camera);
+    expectGetRefuses(Q3ViewHints_GetAttributeSet, camera);
     EXPECT_EQ(out, camera);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetDimensionsState(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetDimensionsState(camera, &state), kQ3ErrorInvalidObjectType);
+    expectGetRefuses(Q3ViewHints_GetDimensionsState, camera);
     EXPECT_Q3_ERROR(Q3ViewHints_GetDimensions(m_hints, nullptr, &h), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3ViewHints_GetDimensions(m_hints, &w, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3ViewHints_GetDimensions(camera, &w, &h), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetMaskState(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetMaskState(display, &state), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetMask(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetMask(display, &mask), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetClearImageMethod(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetClearImageMethod(display, &method), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetClearImageColor(m_hints, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3ViewHints_GetClearImageColor(display, &color), kQ3ErrorInvalidObjectType);
+    expectGetRefuses(Q3ViewHints_GetMaskState, display);
+    expectGetRefuses(Q3ViewHints_GetMask, display);
+    expectGetRefuses(Q3ViewHints_GetClearImageMethod, display);
+    expectGetRefuses(Q3ViewHints_GetClearImageColor, display);
     expectUnchanged(before);
     Q3Object_Dispose(camera);
     Q3Object_Dispose(display);

@@ -42,16 +42,10 @@ static TQ3GroupObject MyMakeScene(void)
 {
     static TQ3RationalPoint4D points[4] = {
         {-1.0f, -1.0f, 0.0f, 1.0f}, {-0.5f, 1.0f, 0.0f, 1.0f}, {0.5f, -1.0f, 0.0f, 1.0f}, {1.0f, 1.0f, 0.0f, 1.0f}};
-    static float knots[8] = {0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f};
-    TQ3NURBCurveData curveData;
+    TQ3NURBCurveData curveData = MyBezierCurveData(points);
     TQ3GroupObject outer, inner;
     TQ3GeometryObject curve;
 
-    curveData.order = 4;
-    curveData.numPoints = 4;
-    curveData.controlPoints = points;
-    curveData.knots = knots;
-    curveData.curveAttributeSet = NULL;
     curve = Q3NURBCurve_New(&curveData);
     outer = Q3DisplayGroup_New();
     inner = Q3DisplayGroup_New();

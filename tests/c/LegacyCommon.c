@@ -19,6 +19,19 @@ void Check(TQ3Boolean ok, const char *what)
     }
 }
 
+TQ3NURBCurveData MyBezierCurveData(TQ3RationalPoint4D *points)
+{
+    static float knots[8] = {0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f};
+    TQ3NURBCurveData curveData;
+
+    curveData.order = 4;
+    curveData.numPoints = 4;
+    curveData.controlPoints = points;
+    curveData.knots = knots;
+    curveData.curveAttributeSet = NULL;
+    return curveData;
+}
+
 TQ3AttributeSet MyNewColorSet(float r, float g, float b)
 {
     TQ3AttributeSet set;
@@ -31,6 +44,26 @@ TQ3AttributeSet MyNewColorSet(float r, float g, float b)
     if (set != NULL)
         Q3AttributeSet_Add(set, kQ3AttributeTypeDiffuseColor, &color);
     return set;
+}
+
+int MyStartBounding(TQ3ViewObject *view, TQ3AttributeSet *red)
+{
+    if (Q3Initialize() != kQ3Success)
+        return 1;
+    *view = Q3View_New();
+    *red = MyNewColorSet(1.0f, 0.0f, 0.0f);
+    return *view == NULL || *red == NULL ? 2 : 0;
+}
+
+int MyFinishBounding(TQ3ViewObject view, TQ3AttributeSet red, const char *summary)
+{
+    Q3Object_Dispose(red);
+    Q3Object_Dispose(view);
+    if (Q3Exit() != kQ3Success)
+        gFailures++;
+    if (gFailures == 0)
+        printf("%s: %s\n", gMyProgramName, summary);
+    return gFailures == 0 ? 0 : 3;
 }
 
 void MyCheckAndDisposeSet(TQ3AttributeSet set, TQ3AttributeSet expected, const char *what)
@@ -56,7 +89,8 @@ void MyBoundAndDispose(TQ3ViewObject view, TQ3GeometryObject geometry)
     Q3Object_Dispose(geometry);
 }
 
-TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, unsigned long height)
+TQ3DrawContextObject MyNewPixmapDrawContext(void *pixels, unsigned long width, unsigned long height,
+                                            unsigned long pixelSize, TQ3PixelType pixelType, TQ3Endian order)
 {
     TQ3PixmapDrawContextData contextData;
 
@@ -66,12 +100,17 @@ TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, uns
     contextData.pixmap.image = pixels;
     contextData.pixmap.width = width;
     contextData.pixmap.height = height;
-    contextData.pixmap.rowBytes = width * 4;
-    contextData.pixmap.pixelSize = 32;
-    contextData.pixmap.pixelType = kQ3PixelTypeARGB32;
-    contextData.pixmap.bitOrder = kQ3EndianBig;
-    contextData.pixmap.byteOrder = kQ3EndianBig;
+    contextData.pixmap.rowBytes = width * (pixelSize / 8);
+    contextData.pixmap.pixelSize = pixelSize;
+    contextData.pixmap.pixelType = pixelType;
+    contextData.pixmap.bitOrder = order;
+    contextData.pixmap.byteOrder = order;
     return Q3PixmapDrawContext_New(&contextData);
+}
+
+TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, unsigned long height)
+{
+    return MyNewPixmapDrawContext(pixels, width, height, 32, kQ3PixelTypeARGB32, kQ3EndianBig);
 }
 
 /* Camera data at (0, 0, z) looking down -z (the point of interest the

@@ -13,6 +13,7 @@
 #include <QD3D.h>
 #include <QD3DCamera.h>
 #include <QD3DDrawContext.h>
+#include <QD3DGeometry.h>
 #include <QD3DSet.h>
 #include <QD3DView.h>
 
@@ -26,6 +27,20 @@ void Check(TQ3Boolean ok, const char *what);
 #define CHECK(call) Check((TQ3Boolean)((call) == kQ3Success), #call)
 #define EXPECT(condition) Check((TQ3Boolean)((condition) != 0), #condition)
 
+/* Initializes QuickDraw 3D and makes a view and a red attribute set for a
+ * program that bounds its geometries; returns 0, or the exit status to end
+ * with (1: Q3Initialize failed, 2: no view or set). */
+int MyStartBounding(TQ3ViewObject *view, TQ3AttributeSet *red);
+
+/* Disposes of what MyStartBounding made, exits QuickDraw 3D (a failure if
+ * that fails) and returns the exit status: 0 with `summary` printed when no
+ * check failed, 3 otherwise. */
+int MyFinishBounding(TQ3ViewObject view, TQ3AttributeSet red, const char *summary);
+
+/* A cubic Bezier span over four `points`: order 4, knots 0 0 0 0 1 1 1 1,
+ * no attribute set. */
+TQ3NURBCurveData MyBezierCurveData(TQ3RationalPoint4D *points);
+
 /* A new attribute set holding a diffuse colour. */
 TQ3AttributeSet MyNewColorSet(float r, float g, float b);
 
@@ -36,8 +51,13 @@ void MyCheckAndDisposeSet(TQ3AttributeSet set, TQ3AttributeSet expected, const c
  * disposes of the geometry. */
 void MyBoundAndDispose(TQ3ViewObject view, TQ3GeometryObject geometry);
 
-/* A pixmap draw context over `pixels` (width x height, ARGB32 big-endian),
- * cleared to opaque black. */
+/* A pixmap draw context over `pixels` (width x height, rows without
+ * padding, pixelSize bits a pixel of pixelType, bits and bytes in `order`),
+ * cleared to opaque black; no pane, no mask, single-buffered. */
+TQ3DrawContextObject MyNewPixmapDrawContext(void *pixels, unsigned long width, unsigned long height,
+                                            unsigned long pixelSize, TQ3PixelType pixelType, TQ3Endian order);
+
+/* The same for ARGB32 big-endian. */
 TQ3DrawContextObject MyNewARGBDrawContext(void *pixels, unsigned long width, unsigned long height);
 
 /* An orthographic camera at (0, 0, z) looking down -z, up +y, showing

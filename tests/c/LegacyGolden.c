@@ -36,26 +36,11 @@ static unsigned short gImage[kWidth * kHeight];
 
 static TQ3ViewObject MyNewView(TQ3DrawContextObject *drawContext)
 {
-    TQ3PixmapDrawContextData contextData;
     TQ3ViewObject view;
     TQ3CameraObject camera;
     TQ3RendererObject renderer;
 
-    memset(&contextData, 0, sizeof contextData);
-    contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
-    contextData.drawContextData.clearImageColor.a = 1.0f;
-    contextData.drawContextData.paneState = kQ3False;
-    contextData.drawContextData.maskState = kQ3False;
-    contextData.drawContextData.doubleBufferState = kQ3False;
-    contextData.pixmap.image = gImage;
-    contextData.pixmap.width = kWidth;
-    contextData.pixmap.height = kHeight;
-    contextData.pixmap.rowBytes = kWidth * 2;
-    contextData.pixmap.pixelSize = 16;
-    contextData.pixmap.pixelType = kQ3PixelTypeRGB16_565;
-    contextData.pixmap.bitOrder = kQ3EndianLittle;
-    contextData.pixmap.byteOrder = kQ3EndianLittle;
-    *drawContext = Q3PixmapDrawContext_New(&contextData);
+    *drawContext = MyNewPixmapDrawContext(gImage, kWidth, kHeight, 16, kQ3PixelTypeRGB16_565, kQ3EndianLittle);
 
     camera = MyNewOrthographicCamera(10.0f, 1.0f, 100.0f, -0.5f, 1.5f, 3.5f, -0.5f);
     renderer = Q3Renderer_NewFromType(kQ3RendererTypeWireFrame);
@@ -72,15 +57,9 @@ static TQ3ViewObject MyNewView(TQ3DrawContextObject *drawContext)
 static void MyDrawListing1(TQ3ViewObject view)
 {
     static TQ3RationalPoint4D points[4] = {{0, 0, 0, 1}, {1, 1, 0, 1}, {2, 0, 0, 1}, {3, 1, 0, 1}};
-    static float knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
-    TQ3NURBCurveData curveData;
+    TQ3NURBCurveData curveData = MyBezierCurveData(points);
     TQ3ViewStatus status;
 
-    curveData.order = 4;
-    curveData.numPoints = 4;
-    curveData.controlPoints = points;
-    curveData.knots = knots;
-    curveData.curveAttributeSet = NULL;
     CHECK(Q3View_StartRendering(view));
     do {
         CHECK(Q3NURBCurve_Submit(&curveData, view));

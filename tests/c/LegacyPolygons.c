@@ -332,14 +332,12 @@ int main(void)
 {
     TQ3ViewObject view;
     TQ3AttributeSet red;
+    int status;
     TQ3GeometryObject marker;
 
-    if (Q3Initialize() != kQ3Success)
-        return 1;
-    view = Q3View_New();
-    red = MyNewColorSet(1.0f, 0.0f, 0.0f);
-    if (view == NULL || red == NULL)
-        return 2;
+    status = MyStartBounding(&view, &red);
+    if (status != 0)
+        return status;
 
     MyGeneralPolygon(view, red);
     MyPolyhedron(view, red);
@@ -355,12 +353,6 @@ int main(void)
         MyBoundAndDispose(view, marker);
     }
 
-    Q3Object_Dispose(red);
-    Q3Object_Dispose(view);
-    if (Q3Exit() != kQ3Success)
-        gFailures++;
-    if (gFailures == 0)
-        printf("LegacyPolygons: every 1.6 general polygon, polyhedron, trigrid, marker and pixmap marker call "
-               "worked\n");
-    return gFailures == 0 ? 0 : 3;
+    return MyFinishBounding(view, red,
+                            "every 1.6 general polygon, polyhedron, trigrid, marker and pixmap marker call worked");
 }

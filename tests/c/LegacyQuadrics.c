@@ -342,13 +342,11 @@ int main(void)
 {
     TQ3ViewObject view;
     TQ3AttributeSet red;
+    int status;
 
-    if (Q3Initialize() != kQ3Success)
-        return 1;
-    view = Q3View_New();
-    red = MyNewColorSet(1.0f, 0.0f, 0.0f);
-    if (view == NULL || red == NULL)
-        return 2;
+    status = MyStartBounding(&view, &red);
+    if (status != 0)
+        return status;
 
     MyBox(view, red);
     MyCone(view, red);
@@ -356,11 +354,5 @@ int main(void)
     MyDiskAndEllipse(view);
     MyEllipsoidAndTorus(view, red);
 
-    Q3Object_Dispose(red);
-    Q3Object_Dispose(view);
-    if (Q3Exit() != kQ3Success)
-        gFailures++;
-    if (gFailures == 0)
-        printf("LegacyQuadrics: every 1.6 quadric call worked\n");
-    return gFailures == 0 ? 0 : 3;
+    return MyFinishBounding(view, red, "every 1.6 quadric call worked");
 }

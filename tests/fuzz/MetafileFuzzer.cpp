@@ -17,6 +17,8 @@
 #include "QD3DStorage.h"
 #include "QD3DView.h"
 
+#include "../support/MemoryFile.h"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -109,26 +111,11 @@ void readPrimitives(const unsigned char* data, std::size_t size)
 
 std::vector<unsigned char> writeAll(const std::vector<TQ3Object>& objects, TQ3FileMode mode)
 {
-    std::vector<unsigned char> bytes;
-    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
-    TQ3FileObject file = Q3File_New();
-    TQ3ViewObject view = Q3View_New();
-    Q3File_SetStorage(file, storage);
-    require(Q3File_OpenWrite(file, mode) == kQ3Success, "OpenWrite failed");
-    require(Q3View_StartWriting(view, file) == kQ3Success, "StartWriting failed");
-    for (TQ3Object object : objects)
-        require(Q3Object_Submit(object, view) == kQ3Success, "a read object cannot be written");
-    require(Q3View_EndWriting(view) == kQ3ViewStatusDone, "EndWriting failed");
-    require(Q3File_Close(file) == kQ3Success, "Close after writing failed");
-    unsigned char* buffer = nullptr;
-    unsigned long size = 0;
-    Q3MemoryStorage_GetBuffer(storage, &buffer, &size, nullptr);
-    if (buffer != nullptr)
-        bytes.assign(buffer, buffer + size);
-    Q3Object_Dispose(view);
-    Q3Object_Dispose(file);
-    Q3Object_Dispose(storage);
-    return bytes;
+    const auto submitAll = [&](TQ3ViewObject view) {
+        for (TQ3Object object : objects)
+            require(Q3Object_Submit(object, view) == kQ3Success, "a read object cannot be written");
+    };
+    return q3test::writeMemoryFile(mode, submitAll, [](bool ok, const char* what) { require(ok, what); });
 }
 
 void disposeAll(const std::vector<TQ3Object>& objects)

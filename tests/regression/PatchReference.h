@@ -20,6 +20,7 @@
 //     count over finely sampled loops (plus one for the domain itself when
 //     no outermost loop runs counterclockwise).
 
+#include "GoldenSection.h"
 #include "SubdivisionReference.h"
 
 #include "QD3DGeometry.h"
@@ -451,25 +452,7 @@ public:
             const Vec3 q = subdivision::evaluate(m_curves[c], t);
             return std::hypot(q.x - u, q.y - v);
         };
-        const Real g = (std::sqrt(5.0L) - 1) / 2;
-        Real x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-        Real f1 = at(x1), f2 = at(x2);
-        for (int iteration = 0; iteration < 50; ++iteration) {
-            if (f1 < f2) {
-                hi = x2;
-                x2 = x1;
-                f2 = f1;
-                x1 = hi - g * (hi - lo);
-                f1 = at(x1);
-            } else {
-                lo = x1;
-                x1 = x2;
-                f1 = f2;
-                x2 = lo + g * (hi - lo);
-                f2 = at(x2);
-            }
-        }
-        return std::min({best, f1, f2});
+        return std::min(best, q3test::goldenSectionMinimum(at, lo, hi, 50));
     }
 
 private:

@@ -51,26 +51,21 @@ using FrameSetup = std::function<void(TQ3ViewObject)>;
 constexpr unsigned long kWidth = 128;
 constexpr unsigned long kHeight = 96;
 
-class SubdivisionCacheRegressionTest : public q3test::Q3ApiTest {
+class SubdivisionCacheRegressionTest : public q3test::PixmapViewTest {
 protected:
+    SubdivisionCacheRegressionTest() : PixmapViewTest(kWidth, kHeight) {}
+
     void SetUp() override
     {
-        Q3ApiTest::SetUp();
-        m_memory.assign(kWidth * kHeight * 4, 0);
-        const TQ3PixmapDrawContextData data = q3test::argb32ContextData(m_memory, kWidth, kHeight);
-        m_context = Q3PixmapDrawContext_New(&data);
+        PixmapViewTest::SetUp();
         m_perspective.cameraData.placement = {{1.5f, -3.0f, 2.5f}, {1.5f, 0.5f, 0.0f}, {0, 0, 1}};
         m_perspective.cameraData.range = {0.5f, 50.0f};
         m_perspective.cameraData.viewPort = {{-1, 1}, 2, 2};
         m_perspective.fov = 1.0f;
         m_perspective.aspectRatioXToY = 4.0f / 3.0f;
         m_camera = Q3ViewAngleAspectCamera_New(&m_perspective);
-        m_view = Q3View_New();
-        ASSERT_NE(m_context, nullptr);
         ASSERT_NE(m_camera, nullptr);
-        ASSERT_EQ(Q3View_SetDrawContext(m_view, m_context), kQ3Success);
         ASSERT_EQ(Q3View_SetCamera(m_view, m_camera), kQ3Success);
-        ASSERT_EQ(Q3View_SetRendererByType(m_view, kQ3RendererTypeInteractive), kQ3Success);
         const TQ3NURBCurveData curve = {4, 6, m_points, m_knots, nullptr};
         m_curve = Q3NURBCurve_New(&curve);
         ASSERT_NE(m_curve, nullptr);
@@ -78,9 +73,9 @@ protected:
 
     void TearDown() override
     {
-        for (TQ3Object object : {m_curve, m_view, m_camera, m_context})
+        for (TQ3Object object : {m_curve, m_camera})
             Q3Object_Dispose(object);
-        Q3ApiTest::TearDown();
+        PixmapViewTest::TearDown();
     }
 
     std::uint64_t builds() const { return q3::lookup<q3::NURBCurve>(m_curve, "curve").tessellations(); }
@@ -170,14 +165,11 @@ protected:
         };
     }
 
-    std::vector<unsigned char> m_memory;
     TQ3RationalPoint4D m_points[6] = {{0, 0, 0, 1}, {0.6f, 1.2f, 0, 1}, {1.2f, -0.6f, 0, 1},
                                       {1.8f, 1.4f, 0, 1}, {2.4f, 0, 0, 1}, {3, 1, 0, 1}};
     float m_knots[10] = {0, 0, 0, 0, 1, 2, 3, 3, 3, 3};
     TQ3ViewAngleAspectCameraData m_perspective{};
-    TQ3DrawContextObject m_context = nullptr;
     TQ3CameraObject m_camera = nullptr;
-    TQ3ViewObject m_view = nullptr;
     TQ3GeometryObject m_curve = nullptr;
     std::vector<TQ3Point3D> m_last;
 };

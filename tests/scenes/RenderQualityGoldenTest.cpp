@@ -56,12 +56,7 @@ protected:
     q3test::RgbaImage render(const TQ3Point3D& eye, const TQ3Point3D& target, TQ3ObjectType type,
                              unsigned long filter, const std::function<void(TQ3ViewObject)>& submit)
     {
-        q3test::SceneSetup setup;
-        setup.width = kWidth;
-        setup.height = kHeight;
-        setup.clear = {1.0f, 0.08f, 0.1f, 0.16f};
-        setup.eye = eye;
-        setup.target = target;
+        q3test::SceneSetup setup = q3test::sceneLookingAt(kWidth, kHeight, {1.0f, 0.08f, 0.1f, 0.16f}, eye, target);
         setup.hither = 0.2f;
         setup.yon = 100.0f;
         setup.fov = 0.9f;

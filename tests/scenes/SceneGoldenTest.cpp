@@ -31,6 +31,25 @@ protected:
         EXPECT_EQ(q3scene_render(scene, Q3SCENE_WIDTH, Q3SCENE_HEIGHT, image.pixels.data()), 0) << scene->name;
         return image;
     }
+
+    // The scenes NAME_interactive and NAME_wireframe and their images; the
+    // images stay empty when either scene is missing.
+    struct FilledAndOutlined {
+        const Q3Scene* filled = nullptr;
+        const Q3Scene* outlined = nullptr;
+        q3test::RgbaImage a, b;
+    };
+    static FilledAndOutlined renderBoth(const std::string& name)
+    {
+        FilledAndOutlined both;
+        both.filled = q3scene_find((name + "_interactive").c_str());
+        both.outlined = q3scene_find((name + "_wireframe").c_str());
+        if (both.filled != nullptr && both.outlined != nullptr) {
+            both.a = render(both.filled);
+            both.b = render(both.outlined);
+        }
+        return both;
+    }
 };
 
 struct Pixel {
@@ -69,11 +88,9 @@ using ScenePixels = SceneTest;
 // the rim: filled, the middle of the image is lit; in wireframe it is not.
 TEST_F(ScenePixels, TheInteractiveRendererFillsWhatTheWireframeOutlines)
 {
-    const Q3Scene* filled = q3scene_find("trimesh_interactive");
-    const Q3Scene* outlined = q3scene_find("trimesh_wireframe");
+    const FilledAndOutlined both = renderBoth("trimesh");
+    const auto& [filled, outlined, a, b] = both;
     ASSERT_TRUE(filled != nullptr && outlined != nullptr);
-    const q3test::RgbaImage a = render(filled);
-    const q3test::RgbaImage b = render(outlined);
     int filledCount = 0, outlinedCount = 0;
     for (int y = 0; y < Q3SCENE_HEIGHT; ++y)
         for (int x = 0; x < Q3SCENE_WIDTH; ++x) {
@@ -170,11 +187,9 @@ TEST_F(ScenePixels, TheConesShowTheirBottomsAndTheCut)
 // set), not the vertex's yellow; the shared edge white in the wireframe.
 TEST_F(ScenePixels, TheMeshShowsItsHoleCornerAndSharedEdge)
 {
-    const Q3Scene* filled = q3scene_find("mesh_interactive");
-    const Q3Scene* outlined = q3scene_find("mesh_wireframe");
+    const FilledAndOutlined both = renderBoth("mesh");
+    const auto& [filled, outlined, a, b] = both;
     ASSERT_TRUE(filled != nullptr && outlined != nullptr);
-    const q3test::RgbaImage a = render(filled);
-    const q3test::RgbaImage b = render(outlined);
     EXPECT_TRUE(isBackground(a, 109, 120, filled->background));
     EXPECT_TRUE(isBackground(b, 109, 120, outlined->background));
     EXPECT_GT(countNear(a, 242, 140, 38), 12000);

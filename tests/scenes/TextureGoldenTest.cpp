@@ -13,6 +13,7 @@
 // Exact texels against uv are checked in tests/api/TextureRenderTest.cpp.
 
 #include "Golden.h"
+#include "MemoryFile.h"
 #include "SceneRender.h"
 #include "SessionTest.h"
 #include "QuadMesh.h"
@@ -46,18 +47,16 @@ constexpr int kWidth = 160, kHeight = 120;
 // The objects written to a 3DMF file in memory in `mode` and read back.
 std::vector<TQ3Object> throughFile(const std::vector<TQ3Object>& objects, TQ3FileMode mode)
 {
-    TQ3StorageObject storage = Q3MemoryStorage_New(nullptr, 0);
+    const std::vector<unsigned char> bytes = q3test::writeMemoryFile(
+        mode,
+        [&](TQ3ViewObject view) {
+            for (TQ3Object object : objects)
+                EXPECT_EQ(Q3Object_Submit(object, view), kQ3Success);
+        },
+        [](bool ok, const char* what) { EXPECT_TRUE(ok) << what; });
+    TQ3StorageObject storage = Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size()));
     TQ3FileObject file = Q3File_New();
-    TQ3ViewObject view = Q3View_New();
     Q3File_SetStorage(file, storage);
-    Q3File_OpenWrite(file, mode);
-    Q3View_StartWriting(view, file);
-    do {
-        for (TQ3Object object : objects)
-            Q3Object_Submit(object, view);
-    } while (Q3View_EndWriting(view) == kQ3ViewStatusRetraverse);
-    Q3File_Close(file);
-    Q3Object_Dispose(view);
     std::vector<TQ3Object> read;
     TQ3FileMode opened = 0;
     if (Q3File_OpenRead(file, &opened) == kQ3Success) {
@@ -106,11 +105,7 @@ protected:
     // ambient light (0.3) and a directional light (0.8) when lit.
     q3test::RgbaImage render(const TQ3Point3D& eye, bool lit, const std::function<void(TQ3ViewObject)>& submit)
     {
-        q3test::SceneSetup setup;
-        setup.width = kWidth;
-        setup.height = kHeight;
-        setup.clear = {1.0f, 0.1f, 0.1f, 0.12f};
-        setup.eye = eye;
+        q3test::SceneSetup setup = q3test::sceneLookingAt(kWidth, kHeight, {1.0f, 0.1f, 0.1f, 0.12f}, eye);
         setup.ambient = lit ? 0.3f : 0.0f;
         setup.sun = lit;
         return q3test::renderScene(setup, submit);
@@ -138,6 +133,16 @@ protected:
         return n;
     }
 
+    // The image matches the golden `name`, and each checker colour (scaled
+    // by minScale..maxScale) shows in more than `atLeast` pixels.
+    static void expectGoldenWithBothColours(const char* name, const q3test::RgbaImage& image, double minScale,
+                                            double maxScale, int atLeast)
+    {
+        EXPECT_TRUE(q3test::matchesGolden(name, image));
+        EXPECT_GT(pixelsLike(image, kLight, minScale, maxScale), atLeast) << "light";
+        EXPECT_GT(pixelsLike(image, kDark, minScale, maxScale), atLeast) << "dark";
+    }
+
     std::vector<unsigned char> m_texels;
     TQ3StorageObject m_storage = nullptr;
     TQ3TextureObject m_texture = nullptr;
@@ -154,10 +159,8 @@ TEST_F(TextureGoldenTest, TriMeshInPerspectiveWrapsTheCheckerboardTwice)
         Q3Geometry_Submit(mesh, v);
     });
     Q3Object_Dispose(mesh);
-    EXPECT_TRUE(q3test::matchesGolden("texture_trimesh_perspective", image));
     // Unlit: the texels' own colours, both of them, over large areas.
-    EXPECT_GT(pixelsLike(image, kLight, 0.99, 1.01), 2000);
-    EXPECT_GT(pixelsLike(image, kDark, 0.99, 1.01), 2000);
+    expectGoldenWithBothColours("texture_trimesh_perspective", image, 0.99, 1.01, 2000);
 }
 
 TEST_F(TextureGoldenTest, BoxLitPerPixelShowsTheCheckerboardOnEachFace)
@@ -176,11 +179,9 @@ TEST_F(TextureGoldenTest, BoxLitPerPixelShowsTheCheckerboardOnEachFace)
     Q3Object_Dispose(pixel);
     Q3Object_Dispose(lambert);
     Q3Object_Dispose(box);
-    EXPECT_TRUE(q3test::matchesGolden("texture_box_lit", image));
     // Lit: scaled checker colours, never brighter than 1.1 times the texel
     // (0.3 ambient + 0.8 at most), and both colours show.
-    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 1000);
-    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 1000);
+    expectGoldenWithBothColours("texture_box_lit", image, 0.25, 1.11, 1000);
 }
 
 TEST_F(TextureGoldenTest, PatchLitPerVertexWithPhongHighlights)
@@ -208,9 +209,7 @@ TEST_F(TextureGoldenTest, PatchLitPerVertexWithPhongHighlights)
     Q3Object_Dispose(style);
     Q3Object_Dispose(phong);
     Q3Object_Dispose(patch);
-    EXPECT_TRUE(q3test::matchesGolden("texture_patch_phong", image));
-    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 500);
-    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 500);
+    expectGoldenWithBothColours("texture_patch_phong", image, 0.25, 1.11, 500);
 }
 
 TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
@@ -303,10 +302,8 @@ TEST_F(TextureGoldenTest, ShadersInGeometryFaceAndVertexSets)
     }
     for (TQ3Object object : owned)
         Q3Object_Dispose(object);
-    EXPECT_TRUE(q3test::matchesGolden("attribute_texture", image));
     // Every texture shows, lit (0.3 ambient + 0.8 at most).
-    EXPECT_GT(pixelsLike(image, kLight, 0.25, 1.11), 300);
-    EXPECT_GT(pixelsLike(image, kDark, 0.25, 1.11), 300);
+    expectGoldenWithBothColours("attribute_texture", image, 0.25, 1.11, 300);
     EXPECT_GT(pixelsLike(image, kRed, 0.25, 1.11), 100);
     EXPECT_GT(pixelsLike(image, kGreen, 0.25, 1.11), 100);
     EXPECT_GT(pixelsLike(image, kMagenta, 0.25, 1.11), 100);

@@ -87,12 +87,7 @@ protected:
     q3test::RgbaImage render(const TQ3Point3D& eye, const TQ3Point3D& target,
                              const std::function<void(TQ3ViewObject)>& submit)
     {
-        q3test::SceneSetup setup;
-        setup.width = kWidth;
-        setup.height = kHeight;
-        setup.clear = {1.0f, 0.15f, 0.15f, 0.2f};
-        setup.eye = eye;
-        setup.target = target;
+        q3test::SceneSetup setup = q3test::sceneLookingAt(kWidth, kHeight, {1.0f, 0.15f, 0.15f, 0.2f}, eye, target);
         setup.yon = 60.0f;
         setup.phong = true;
         setup.keepAlpha = true;

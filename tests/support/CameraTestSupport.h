@@ -24,4 +24,11 @@ inline TQ3OrthographicCameraData orthographicCameraAt(float x, float y, float ha
     return data;
 }
 
+/// The world coordinate at the centre of pixel i of `size` pixels across an
+/// orthographic view showing -half..half, counted from the -half side.
+inline double pixelCentre(unsigned long i, unsigned long size, double half)
+{
+    return -half + (double(i) + 0.5) * (2 * half / double(size));
+}
+
 } // namespace q3test

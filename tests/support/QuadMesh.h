@@ -32,19 +32,14 @@ struct QuadMesh {
         std::copy(cornerUvs, cornerUvs + 4, uvs);
         triangles[0] = clockwise ? TQ3TriMeshTriangleData{{0, 2, 1}} : TQ3TriMeshTriangleData{{0, 1, 2}};
         triangles[1] = clockwise ? TQ3TriMeshTriangleData{{0, 3, 2}} : TQ3TriMeshTriangleData{{0, 2, 3}};
-        data.numTriangles = 2;
-        data.triangles = triangles;
-        data.numPoints = 4;
-        data.points = points;
-        data.numVertexAttributeTypes = 1;
-        data.vertexAttributeTypes = &uvArray;
-        data.bBox = TQ3BoundingBox{points[0], points[0], kQ3False};
+        TQ3BoundingBox box{points[0], points[0], kQ3False};
         for (const TQ3Point3D& p : points) {
-            data.bBox.min = {std::min(data.bBox.min.x, p.x), std::min(data.bBox.min.y, p.y),
-                             std::min(data.bBox.min.z, p.z)};
-            data.bBox.max = {std::max(data.bBox.max.x, p.x), std::max(data.bBox.max.y, p.y),
-                             std::max(data.bBox.max.z, p.z)};
+            box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y), std::min(box.min.z, p.z)};
+            box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y), std::max(box.max.z, p.z)};
         }
+        // No set, two triangles, no triangle or edge attributes, no edges,
+        // four points with one attribute array.
+        data = TQ3TriMeshData{nullptr, 2, triangles, 0, nullptr, 0, nullptr, 0, nullptr, 4, points, 1, &uvArray, box};
     }
     QuadMesh(const QuadMesh&) = delete;
     QuadMesh& operator=(const QuadMesh&) = delete;

@@ -15,9 +15,7 @@
 namespace q3test {
 
 struct RefPoint {
-    double x = 0.0;
-    double y = 0.0;
-    double z = 0.0;
+    double x = 0.0, y = 0.0, z = 0.0;
 };
 
 /// The curve's domain [x(k-1), x(n)] (order k, n control points).

@@ -49,6 +49,20 @@ struct SceneSetup {
     bool keepAlpha = false;
 };
 
+/// A width x height setup cleared to `clear`, the eye at `eye` looking at
+/// `target`; the rest as SceneSetup's defaults.
+inline SceneSetup sceneLookingAt(int width, int height, const TQ3ColorARGB& clear, const TQ3Point3D& eye,
+                                 const TQ3Point3D& target = {0.0f, 0.0f, 0.0f})
+{
+    SceneSetup setup;
+    setup.width = width;
+    setup.height = height;
+    setup.clear = clear;
+    setup.eye = eye;
+    setup.target = target;
+    return setup;
+}
+
 /// Renders what `submit` submits (once per pass) under `setup`; expects the
 /// frame to start and end without error.
 inline RgbaImage renderScene(const SceneSetup& setup, const std::function<void(TQ3ViewObject)>& submit)

@@ -311,20 +311,28 @@ TEST(MetafileEncoding, ACountTheDataCannotHoldIsRefusedBeforeAnythingIsAllocated
     EXPECT_EQ(codeOf([&] { tokens.count(0, 2, "items"); }), kQ3ErrorInvalidMetafileObject);
 }
 
+// A binary file holding a container that claims `containerSize` bytes of
+// data and holds a point (1, 2, 3): 8 bytes of header and 12 of data.
+std::vector<unsigned char> containedPoint(bool little, std::uint32_t containerSize)
+{
+    BinaryWriter w(little);
+    w.header();
+    w.object(kTypeContainer, containerSize);
+    w.object(kPointType, 12);
+    w.f32(1);
+    w.f32(2);
+    w.f32(3);
+    return w.bytes();
+}
+
 TEST(MetafileEncoding, SizesMustStayInsideTheirContainer)
 {
     for (bool little : {false, true}) {
         SCOPED_TRACE(little ? "little" : "big");
         // A container of 16 bytes holding an object that claims 12 bytes of
         // data: 8 + 12 overruns it.
-        BinaryWriter w(little);
-        w.header();
-        w.object(kTypeContainer, 16);
-        w.object(kPointType, 12);
-        w.f32(1);
-        w.f32(2);
-        w.f32(3); // beyond the container, inside the file
-        EXPECT_EQ(codeOf([&] { parse(w.bytes(), names); }), kQ3ErrorInvalidMetafile);
+        // The point's third coordinate lies beyond the container, inside the file.
+        EXPECT_EQ(codeOf([&] { parse(containedPoint(little, 16), names); }), kQ3ErrorInvalidMetafile);
         // A truncated last object (its size overruns the file).
         BinaryWriter t(little);
         t.header();
@@ -332,14 +340,7 @@ TEST(MetafileEncoding, SizesMustStayInsideTheirContainer)
         t.f32(1);
         EXPECT_EQ(codeOf([&] { parse(t.bytes(), names); }), kQ3ErrorInvalidMetafile);
         // A well-formed container: the child is found.
-        BinaryWriter ok(little);
-        ok.header();
-        ok.object(kTypeContainer, 20);
-        ok.object(kPointType, 12);
-        ok.f32(1);
-        ok.f32(2);
-        ok.f32(3);
-        const auto file = parse(ok.bytes(), names);
+        const auto file = parse(containedPoint(little, 20), names);
         ASSERT_EQ(file->objects.size(), 1u);
         ASSERT_EQ(file->objects[0].children.size(), 1u);
         EXPECT_EQ(file->objects[0].children[0].offset, 32u);

@@ -54,6 +54,24 @@ private:
     std::string m_path;
 };
 
+// The file read with q3png_read_rgba8, which must succeed with a width x
+// height image: its width * height * 4 bytes, or none when it fails.
+std::vector<unsigned char> readRgba(const ScopedFile& file, int width, int height)
+{
+    unsigned char* read = nullptr;
+    int readWidth = 0;
+    int readHeight = 0;
+    EXPECT_EQ(q3png_read_rgba8(file.c_str(), &read, &readWidth, &readHeight), Q3PNG_OK);
+    EXPECT_NE(read, nullptr);
+    EXPECT_EQ(readWidth, width);
+    EXPECT_EQ(readHeight, height);
+    std::vector<unsigned char> pixels;
+    if (read != nullptr && readWidth == width && readHeight == height)
+        pixels.assign(read, read + std::size_t(width) * height * 4);
+    std::free(read);
+    return pixels;
+}
+
 TEST(PngFile, RgbaWriteThenReadRoundTrips)
 {
     const int width = 17;
@@ -63,17 +81,11 @@ TEST(PngFile, RgbaWriteThenReadRoundTrips)
     ScopedFile file(tempPath("rgba.png"));
     ASSERT_EQ(q3png_write_rgba8(file.c_str(), pixels.data(), width, height, rowBytes), Q3PNG_OK);
 
-    unsigned char* read = nullptr;
-    int readWidth = 0;
-    int readHeight = 0;
-    ASSERT_EQ(q3png_read_rgba8(file.c_str(), &read, &readWidth, &readHeight), Q3PNG_OK);
-    ASSERT_NE(read, nullptr);
-    EXPECT_EQ(readWidth, width);
-    EXPECT_EQ(readHeight, height);
+    const std::vector<unsigned char> read = readRgba(file, width, height);
+    ASSERT_EQ(read.size(), std::size_t(width) * height * 4);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width * 4; ++x)
             ASSERT_EQ(read[y * width * 4 + x], pixels[std::size_t(y) * rowBytes + x]) << x << "," << y;
-    std::free(read);
 }
 
 TEST(PngFile, RgbWriteReadsBackOpaque)
@@ -86,19 +98,14 @@ TEST(PngFile, RgbWriteReadsBackOpaque)
     ScopedFile file(tempPath("rgb.png"));
     ASSERT_EQ(q3png_write_rgb8(file.c_str(), rgb.data(), width, height, width * 3), Q3PNG_OK);
 
-    unsigned char* read = nullptr;
-    int readWidth = 0;
-    int readHeight = 0;
-    ASSERT_EQ(q3png_read_rgba8(file.c_str(), &read, &readWidth, &readHeight), Q3PNG_OK);
-    ASSERT_EQ(readWidth, width);
-    ASSERT_EQ(readHeight, height);
+    const std::vector<unsigned char> read = readRgba(file, width, height);
+    ASSERT_EQ(read.size(), std::size_t(width) * height * 4);
     for (int i = 0; i < width * height; ++i) {
         EXPECT_EQ(read[i * 4 + 0], rgb[i * 3 + 0]);
         EXPECT_EQ(read[i * 4 + 1], rgb[i * 3 + 1]);
         EXPECT_EQ(read[i * 4 + 2], rgb[i * 3 + 2]);
         EXPECT_EQ(read[i * 4 + 3], 255);
     }
-    std::free(read);
 }
 
 TEST(PngFile, RewritingIdenticalPixelsIsByteIdentical)

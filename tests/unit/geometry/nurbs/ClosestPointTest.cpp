@@ -3,6 +3,7 @@
 #include "geometry/nurbs/ClosestPoint.h"
 
 #include "CurveToolsTestSupport.h"
+#include "GoldenSection.h"
 
 #include <gtest/gtest.h>
 
@@ -81,25 +82,7 @@ double oracleDistance(const TestCurve& curve, const Point3& target, int perSpan)
                 continue;
             double lo = ts[std::max(i - 1, 0)];
             double hi = ts[std::min(i + 1, perSpan)];
-            constexpr double kInverseGolden = 0.6180339887498949;
-            double c = hi - kInverseGolden * (hi - lo), d = lo + kInverseGolden * (hi - lo);
-            double fc = f(c), fd = f(d);
-            for (int step = 0; step < 80; ++step) {
-                if (fc < fd) {
-                    hi = d;
-                    d = c;
-                    fd = fc;
-                    c = hi - kInverseGolden * (hi - lo);
-                    fc = f(c);
-                } else {
-                    lo = c;
-                    c = d;
-                    fc = fd;
-                    d = lo + kInverseGolden * (hi - lo);
-                    fd = f(d);
-                }
-            }
-            best = std::min(best, std::min(fc, fd));
+            best = std::min(best, q3test::goldenSectionMinimum(f, lo, hi, 80));
         }
     }
     return best;

@@ -106,6 +106,19 @@ const PointMapping kIdentity = [](const Point3& p, Point3& out) {
     return true;
 };
 
+// The patch tessellated adaptively to world-space edges of at most c1 (the
+// identity mapping).
+TessellatedSurface adaptive(const TestPatch& p, double c1)
+{
+    TessellationOptions how;
+    how.method = Method::kAdaptive;
+    how.c1 = c1;
+    how.customMapping = kIdentity;
+    TessellatedSurface s;
+    tessellateSurface(p.ref(), how, s);
+    return s;
+}
+
 double length(const TessellatedSurface& s, std::uint32_t a, std::uint32_t b)
 {
     const float* p = &s.positions[3 * a];
@@ -153,12 +166,7 @@ TEST(SurfaceTessellate, ConstantGivesTwoTrianglesPerCellAndCoversTheDomain)
 TEST(SurfaceTessellate, WorldSpaceEdgesAreWithinTheBound)
 {
     const TestPatch p = bump();
-    TessellationOptions how;
-    how.method = Method::kAdaptive;
-    how.c1 = 0.1;
-    how.customMapping = kIdentity;
-    TessellatedSurface s;
-    tessellateSurface(p.ref(), how, s);
+    const TessellatedSurface s = adaptive(p, 0.1);
     EXPECT_NEAR(expectValidMesh(s), 1.0, 1e-12);
     double longest = 0.0;
     for (std::size_t t = 0; t < s.triangleCount(); ++t)
@@ -190,12 +198,7 @@ TEST(SurfaceTessellate, AHoleAndAnIslandKeepTheRightArea)
     p.addPolygon({{0.1f, 0.1f}, {0.9f, 0.1f}, {0.9f, 0.9f}, {0.1f, 0.9f}}); // outer, counterclockwise
     p.addCircle(0.5f, 0.5f, 0.3f, true);                                    // hole
     p.addCircle(0.5f, 0.5f, 0.1f, false);                                   // island
-    TessellationOptions how;
-    how.method = Method::kAdaptive;
-    how.c1 = 0.05;
-    how.customMapping = kIdentity;
-    TessellatedSurface s;
-    tessellateSurface(p.ref(), how, s);
+    const TessellatedSurface s = adaptive(p, 0.05);
     ASSERT_FALSE(s.crossing);
     const double pi = 3.14159265358979;
     const double expected = 0.64 - pi * 0.09 + pi * 0.01;
