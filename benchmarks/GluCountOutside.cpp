@@ -50,12 +50,15 @@ int main()
     gluNurbsProperty(nurbs, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE);
     gluNurbsProperty(nurbs, GLU_U_STEP, float((q3bench::kSegmentsPerSpan - 0.5) / q3bench::kKnotSpacing));
 
+    q3bench::CallTimes times;
     const q3bench::ProcessClock clock;
     for (int call = 0; call < q3bench::kOutsideCalls; ++call) {
+        times.start();
         gluBeginCurve(nurbs);
         gluNurbsCurve(nurbs, GLint(curve.knots.size()), const_cast<float*>(curve.knots.data()), 4,
                       const_cast<float*>(curve.points.data()), GLint(curve.order), GL_MAP1_VERTEX_4);
         gluEndCurve(nurbs);
+        times.stop();
     }
     const q3bench::ProcessClock::Elapsed elapsed = clock.elapsed();
     gluDeleteNurbsRenderer(nurbs);
@@ -66,6 +69,6 @@ int main()
                      static_cast<unsigned long long>(expected * q3bench::kOutsideCalls));
         return 1;
     }
-    q3bench::printOutsideResult("glu", q3bench::kOutsideCalls, expected, elapsed);
+    q3bench::printOutsideResult("glu", q3bench::kOutsideCalls, expected, elapsed, times);
     return 0;
 }

@@ -35,8 +35,10 @@ int main()
 
     std::uint64_t delivered = 0;
     int failures = 0;
+    q3bench::CallTimes times;
     const q3bench::ProcessClock clock;
     for (int call = 0; call < q3bench::kOutsideCalls; ++call) {
+        times.start();
         TQ3GeometryObject decomposed = Q3Geometry_GetDecomposed(nurb, view.view());
         TQ3PolyLineData polyLine{};
         if (decomposed != nullptr && Q3PolyLine_GetData(decomposed, &polyLine) == kQ3Success) {
@@ -47,6 +49,7 @@ int main()
         }
         if (decomposed != nullptr)
             Q3Object_Dispose(decomposed);
+        times.stop();
     }
     const q3bench::ProcessClock::Elapsed elapsed = clock.elapsed();
 
@@ -58,6 +61,6 @@ int main()
                      static_cast<unsigned long long>(expected * q3bench::kOutsideCalls));
         return 1;
     }
-    q3bench::printOutsideResult("q3", q3bench::kOutsideCalls, expected, elapsed);
+    q3bench::printOutsideResult("q3", q3bench::kOutsideCalls, expected, elapsed, times);
     return 0;
 }
