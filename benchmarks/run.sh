@@ -16,7 +16,9 @@
 # Each round runs every benchmark executable once with
 # --benchmark_repetitions=N and random interleaving of the repetitions; the
 # Q3 and GLU tessellation processes alternate, so both see the same machine.
-# ratios.py pools all repetitions of all rounds and reports medians.
+# ratios.py pools all repetitions of all rounds and reports medians. Then
+# outside.py runs issue 30's two outside programs (q3_bench_public_outside,
+# q3_bench_glu_count) in turns, 5 runs each per round.
 #
 # Usage: benchmarks/run.sh [--build-dir DIR] [--repetitions N] [--rounds R]
 #   defaults: <checkout>/build-bench, 5 repetitions, 2 rounds.
@@ -52,7 +54,8 @@ fi
 cmake --build "$build_dir" --target benchmarks
 
 bin="$build_dir/benchmarks"
-for exe in q3_bench_tessellate q3_bench_glu q3_bench_glu_patch q3_bench_frame q3_bench_memory q3_bench_mesh q3_bench_model; do
+for exe in q3_bench_tessellate q3_bench_glu q3_bench_glu_patch q3_bench_frame q3_bench_memory q3_bench_mesh q3_bench_model \
+           q3_bench_public_outside q3_bench_glu_count; do
   if [ ! -x "$bin/$exe" ]; then
     echo "run.sh: $bin/$exe was not built (is libglu1-mesa-dev installed? see scripts/setup.sh)" >&2
     exit 1
@@ -79,6 +82,9 @@ for round in $(seq 1 "$rounds"); do
   run q3_bench_model "$round"
 done
 run q3_bench_memory 1
+# Issue 30's outside comparison: its two programs in turns, 5 runs each per round.
+echo "  outside.py" >&2
+python3 "$here/outside.py" "$build_dir" --runs $((5 * rounds)) > "$results/outside.md"
 
 {
   echo "Date: $(date -u '+%Y-%m-%d %H:%M UTC')"
@@ -88,4 +94,8 @@ run q3_bench_memory 1
   echo "Raw results: $results"
   echo
   python3 "$here/ratios.py" "$results"/*.json
+  echo
+  echo "### The public path against GLU, measured from outside (issue 30; benchmarks/outside.py)"
+  echo
+  cat "$results/outside.md"
 } | tee "$results/ratios.md"

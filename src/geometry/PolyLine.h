@@ -30,6 +30,7 @@ public:
     }
 
     using DataGeometry::DataGeometry;
+    ~PolyLine() override;
 
     /// A polyline through `count` points given as x y z triples, without
     /// vertex or segment attribute sets; `attributes` (may be null) becomes
@@ -38,6 +39,13 @@ public:
     /// kQ3ErrorGeometryInsufficientNumberOfPoints (count < 2) or
     /// kQ3ErrorInvalidData (a coordinate is not finite).
     static Ref<PolyLine> fromPoints(const float* xyz, std::size_t count, const AttributeSet* attributes = nullptr);
+
+    /// Q3PolyLine_GetData: DataGeometry::getData's copy, made with one
+    /// memcpy of the vertices while they are known to hold no attribute sets.
+    void getData(TQ3PolyLineData& out) const;
+    /// Q3PolyLine_EmptyData: DataGeometry::emptyData (every handle checked,
+    /// then released), with one pass over vertices that hold no sets.
+    static void emptyData(TQ3PolyLineData& data);
 
     const ClassInfo& classInfo() const override { return kPolyLineClass; }
     void decompose(const DecomposeContext& context, PrimitiveSink& sink) const override;
@@ -67,6 +75,14 @@ public:
 
 private:
     void checkSegmentIndex(std::size_t index) const;
+    /// Whether no vertex holds an attribute set: so since fromPoints made the
+    /// polyline, until its first edit (every change of the data bumps the
+    /// edit index).
+    bool verticesWithoutSets() const { return m_verticesWithoutSetsAt == editIndex(); }
+
+    /// The edit index at which fromPoints made the polyline, 0 (no index) for
+    /// one made any other way.
+    unsigned long m_verticesWithoutSetsAt = 0;
 };
 
 // The data description (core/DataLayout.h), with the 3DMF form its reader

@@ -5,6 +5,7 @@
 // a NURB curve under its current state, and through it the subdivision
 // methods and the retained-mode cache's invalidation, observed from outside.
 
+#include "GeometryTestSupport.h"
 #include "RenderTestSupport.h"
 
 #include "QD3DSet.h"
@@ -327,6 +328,109 @@ TEST_F(ViewDecomposeTest, TheSegmentCapPostsAWarningEveryTimeTheCurveIsDrawn)
                           kQ3WarningParameterOutOfRange);
         EXPECT_EQ(Q3View_EndRendering(view()), kQ3ViewStatusDone);
     }
+    Q3Object_Dispose(curve);
+}
+
+// What GetDecomposed hands out is the program's own object (issue 30: the
+// polyline is made and copied on the public path's fast track, while no
+// vertex has an attribute set): every GetData is a fresh copy, an edit of a
+// copy changes nothing else, and once the program gives the polyline vertex
+// sets, GetData, EmptyData and Dispose hold and release them in balance.
+TEST_F(ViewDecomposeTest, TheDecomposedPolylineIsTheProgramsOwnToCopyAndEdit)
+{
+    const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 5, 5};
+    ASSERT_EQ(Q3View_StartRendering(view()), kQ3Success);
+    Q3SubdivisionStyle_Submit(&style, view());
+    TQ3GeometryObject polyLine = Q3Geometry_GetDecomposed(m_curve, view());
+    EXPECT_EQ(Q3View_EndRendering(view()), kQ3ViewStatusDone);
+    ASSERT_NE(polyLine, nullptr);
+
+    TQ3PolyLineData first{}, second{};
+    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &first), kQ3Success);
+    ASSERT_EQ(first.numVertices, 6u);
+    EXPECT_EQ(first.segmentAttributeSet, nullptr);
+    EXPECT_EQ(first.polyLineAttributeSet, nullptr);
+    for (unsigned long i = 0; i < first.numVertices; ++i) {
+        const Point3 expected = listing1At(double(i) / 5.0);
+        EXPECT_NEAR(first.vertices[i].point.x, expected.x, 1e-5);
+        EXPECT_NEAR(first.vertices[i].point.y, expected.y, 1e-5);
+        EXPECT_EQ(first.vertices[i].attributeSet, nullptr);
+        first.vertices[i].point = {-9, -9, -9};
+    }
+    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &second), kQ3Success);
+    EXPECT_NE(second.vertices, first.vertices);
+    EXPECT_NEAR(second.vertices[5].point.x, 3.0, 1e-5);
+    EXPECT_EQ(Q3PolyLine_EmptyData(&first), kQ3Success);
+    EXPECT_EQ(first.vertices, nullptr);
+    EXPECT_EQ(Q3PolyLine_EmptyData(&second), kQ3Success);
+
+    // The program's vertex set: one reference held by the polyline, one more
+    // by each GetData copy until EmptyData.
+    TQ3AttributeSet set = Q3AttributeSet_New();
+    const TQ3Point3D moved = {7, 8, 9};
+    ASSERT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 2, set), kQ3Success);
+    ASSERT_EQ(Q3PolyLine_SetVertexPosition(polyLine, 4, &moved), kQ3Success);
+    EXPECT_EQ(q3test::referenceCount(set), 2u);
+    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &first), kQ3Success);
+    EXPECT_EQ(first.vertices[2].attributeSet, set);
+    EXPECT_EQ(first.vertices[4].point.x, 7.0f);
+    EXPECT_EQ(first.vertices[3].attributeSet, nullptr);
+    EXPECT_EQ(q3test::referenceCount(set), 3u);
+    EXPECT_EQ(Q3PolyLine_EmptyData(&first), kQ3Success);
+    EXPECT_EQ(q3test::referenceCount(set), 2u);
+    EXPECT_EQ(Q3Object_Dispose(polyLine), kQ3Success);
+    EXPECT_EQ(q3test::referenceCount(set), 1u);
+    Q3Object_Dispose(set);
+}
+
+// EmptyData checks every handle before it releases any, whether or not the
+// vertices hold sets: a bad polyline set fails it and leaves the data as it was.
+TEST_F(ViewDecomposeTest, EmptyDataOfADecompositionReleasesItsSetOrNothing)
+{
+    TQ3AttributeSet set = Q3AttributeSet_New();
+    const TQ3NURBCurveData data = m_listing.data(set);
+    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+    ASSERT_EQ(Q3View_StartRendering(view()), kQ3Success);
+    TQ3GeometryObject polyLine = Q3Geometry_GetDecomposed(curve, view());
+    EXPECT_EQ(Q3View_EndRendering(view()), kQ3ViewStatusDone);
+    ASSERT_NE(polyLine, nullptr);
+    const unsigned long held = q3test::referenceCount(set);
+
+    TQ3PolyLineData out{};
+    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
+    EXPECT_EQ(out.polyLineAttributeSet, set);
+    EXPECT_EQ(q3test::referenceCount(set), held + 1);
+    // A handle that is not an attribute set in its place: nothing released.
+    TQ3AttributeSet own = out.polyLineAttributeSet;
+    TQ3Vertex3D* vertices = out.vertices;
+    out.polyLineAttributeSet = curve;
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_EmptyData(&out), kQ3Failure), kQ3ErrorInvalidObjectType);
+    EXPECT_EQ(out.vertices, vertices);
+    EXPECT_EQ(out.polyLineAttributeSet, curve);
+    EXPECT_NEAR(out.vertices[out.numVertices - 1].point.x, 3.0, 1e-5);
+    out.polyLineAttributeSet = own;
+    EXPECT_EQ(Q3PolyLine_EmptyData(&out), kQ3Success);
+    EXPECT_EQ(out.vertices, nullptr);
+    EXPECT_EQ(out.polyLineAttributeSet, nullptr);
+    EXPECT_EQ(q3test::referenceCount(set), held);
+    Q3Object_Dispose(polyLine);
+    Q3Object_Dispose(curve);
+    EXPECT_EQ(q3test::referenceCount(set), 1u);
+    Q3Object_Dispose(set);
+}
+
+// A curve whose points are finite but whose projection x / w overflows float
+// has no polyline: GetDecomposed posts kQ3ErrorInvalidData and gives NULL.
+TEST_F(ViewDecomposeTest, ACurveThatProjectsOutsideFloatHasNoDecomposition)
+{
+    TQ3RationalPoint4D points[2] = {{0, 0, 0, 1}, {3.0e38f, 0, 0, 0.25f}};
+    float knots[4] = {0, 0, 1, 1};
+    const TQ3NURBCurveData data = {2, 2, points, knots, nullptr};
+    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+    ASSERT_NE(curve, nullptr);
+    ASSERT_EQ(Q3View_StartRendering(view()), kQ3Success);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_GetDecomposed(curve, view()), nullptr), kQ3ErrorInvalidData);
+    EXPECT_EQ(Q3View_EndRendering(view()), kQ3ViewStatusDone);
     Q3Object_Dispose(curve);
 }
 

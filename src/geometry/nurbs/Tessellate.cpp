@@ -164,16 +164,25 @@ struct ViewLimits {
     const SpanCulling& hidden;
 };
 
-// Empties a result but keeps its storage for reuse.
-void reset(TessellatedCurve& out)
+// Clears a result's flags and counts; its arrays are left for the method to
+// size (the constant method writes every element it keeps, so growing the
+// arrays from their old size rather than from empty saves zeroing them: a
+// view re-tessellates into one result every frame).
+void resetReport(TessellatedCurve& out)
 {
-    out.vertices.clear();
-    out.parameters.clear();
     out.substituted = false;
     out.effectiveValue = 0.0;
     out.capped = false;
     out.unmeasuredSegments = 0;
     out.hiddenSpans = 0;
+}
+
+// Empties a result but keeps its storage for reuse.
+void reset(TessellatedCurve& out)
+{
+    out.vertices.clear();
+    out.parameters.clear();
+    resetReport(out);
 }
 
 std::size_t segmentCap(const ViewLimits& limits)
@@ -184,9 +193,11 @@ std::size_t segmentCap(const ViewLimits& limits)
 template <typename Spans>
 void constantImpl(Spans& spans, double requested, TessellatedCurve& out, const ViewLimits& limits)
 {
-    reset(out);
+    resetReport(out);
     const std::size_t spanCount = spans.count();
     if (spanCount == 0) {
+        out.vertices.clear();
+        out.parameters.clear();
         return;
     }
     std::uint32_t m = clampedSegments(requested);
@@ -1451,8 +1462,8 @@ void tessellate(const BezierForm& form, const TessellationOptions& options, Tess
 
 void tessellate(const CurveRef& curve, const TessellationOptions& options, TessellatedCurve& out)
 {
-    reset(out);
     if (!validateCurve(curve).ok()) {
+        reset(out);
         return;
     }
     if (options.method == Method::kAdaptive && fitsWholeBezierForm(curve)) {
@@ -1464,6 +1475,7 @@ void tessellate(const CurveRef& curve, const TessellationOptions& options, Tesse
         if (options.method == Method::kConstant) {
             constantImpl(spans, options.c1, out, limits);
         } else {
+            reset(out);
             adaptiveImpl(spans, options, limits, out);
         }
     });
