@@ -199,3 +199,17 @@ TQ3Status setHeldOptional(const char* function, TQ3Object handle, const char* ha
     {                                                                                                           \
         return q3::api::getValue<Class>(__func__, handle, #handle, param, #param, &Class::param);               \
     }
+
+/// Prefix_Set<Field> and _Get<Field> of an object the Class holds (a Type
+/// called `param`): Set through `store` (setHeld, or setHeldOptional where
+/// NULL clears it) and Class::set<Field>, Get through getHeld and
+/// Class::<param>().
+#define Q3_HELD_ENTRY_POINTS(Prefix, Class, HandleType, handle, Field, Type, param, store)                      \
+    TQ3Status Prefix##_Set##Field(HandleType handle, Type param)                                                \
+    {                                                                                                           \
+        return q3::api::store(__func__, handle, #handle, param, #param, &Class::set##Field);                    \
+    }                                                                                                           \
+    TQ3Status Prefix##_Get##Field(HandleType handle, Type* param)                                               \
+    {                                                                                                           \
+        return q3::api::getHeld(__func__, handle, #handle, param, #param, &Class::param);                       \
+    }

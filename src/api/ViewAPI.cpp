@@ -55,23 +55,7 @@ TQ3ViewStatus endBounds(const char* function, TQ3ViewObject view, Bounds* result
 
 } // namespace
 
-// A C entry point cannot come from a template, so the two families below are
-// written once each as a macro that defines them through the templates above.
-
-/// Q3View_Set<Field> and _Get<Field> of an object the view holds (a Type called
-/// `param` in QD3DView.h), set through `store` (setHeld, or setHeldOptional
-/// where NULL clears it) and View::set<Field>, read through View::<param>().
-#define Q3_VIEW_HELD_ENTRY_POINTS(Field, Type, param, store)                                                    \
-    TQ3Status Q3View_Set##Field(TQ3ViewObject view, Type param)                                                 \
-    {                                                                                                           \
-        return store(__func__, view, "view", param, #param, &View::set##Field);                                 \
-    }                                                                                                           \
-    TQ3Status Q3View_Get##Field(TQ3ViewObject view, Type* param)                                                \
-    {                                                                                                           \
-        return getHeld(__func__, view, "view", param, #param, &View::param);                                    \
-    }
-
-// The Get calls of the style
+// A C entry point cannot come from a template, so the Get calls of the style
 // states are written once as a macro that defines them through readState:
 // Q3View_Get<Style>StyleState of the DrawState member `member`, a Type called
 // `param` in QD3DView.h (the error messages name it as every other call does).
@@ -118,7 +102,7 @@ TQ3Status Q3View_SetRendererByType(TQ3ViewObject view, TQ3ObjectType theType)
     return guardStatus(__func__, [&] { lookup<View>(view, "view").setRendererByType(theType); });
 }
 
-Q3_VIEW_HELD_ENTRY_POINTS(Renderer, TQ3RendererObject, renderer, setHeld)
+Q3_HELD_ENTRY_POINTS(Q3View, View, TQ3ViewObject, view, Renderer, TQ3RendererObject, renderer, setHeld)
 
 TQ3Status Q3View_StartRendering(TQ3ViewObject view)
 {
@@ -168,9 +152,9 @@ TQ3ViewStatus Q3View_EndPicking(TQ3ViewObject view)
     return guard(__func__, kQ3ViewStatusError, [&] { return lookup<View>(view, "view").endPicking(); });
 }
 
-Q3_VIEW_HELD_ENTRY_POINTS(Camera, TQ3CameraObject, camera, setHeld)
+Q3_HELD_ENTRY_POINTS(Q3View, View, TQ3ViewObject, view, Camera, TQ3CameraObject, camera, setHeld)
 
-Q3_VIEW_HELD_ENTRY_POINTS(DrawContext, TQ3DrawContextObject, drawContext, setHeld)
+Q3_HELD_ENTRY_POINTS(Q3View, View, TQ3ViewObject, view, DrawContext, TQ3DrawContextObject, drawContext, setHeld)
 
 TQ3Status Q3View_GetLocalToWorldMatrixState(TQ3ViewObject view, TQ3Matrix4x4* matrix)
 {
@@ -192,7 +176,7 @@ TQ3Status Q3Pop_Submit(TQ3ViewObject view)
     return guardStatus(__func__, [&] { lookup<View>(view, "view").pop(); });
 }
 
-Q3_VIEW_HELD_ENTRY_POINTS(LightGroup, TQ3GroupObject, lightGroup, setHeldOptional)
+Q3_HELD_ENTRY_POINTS(Q3View, View, TQ3ViewObject, view, LightGroup, TQ3GroupObject, lightGroup, setHeldOptional)
 
 TQ3Status Q3View_Flush(TQ3ViewObject view)
 {
@@ -303,5 +287,4 @@ TQ3Status Q3StateOperator_Submit(TQ3StateOperatorObject stateOperator, TQ3ViewOb
 
 } // extern "C"
 
-#undef Q3_VIEW_HELD_ENTRY_POINTS
 #undef Q3_VIEW_STYLE_STATE_ENTRY_POINT
