@@ -32,6 +32,26 @@ float cross(const TQ3Vector2D& v1, const TQ3Vector2D& v2);
 /// (p2 - p1) x (p3 - p1): normal to the triangle, counterclockwise positive.
 TQ3Vector3D crossProductTri(const TQ3Point3D& p1, const TQ3Point3D& p2, const TQ3Point3D& p3);
 
+/// Changes of dimension, as QuickDraw 3D defines them: going up appends a
+/// last coordinate of 1; going down divides by the last coordinate and drops
+/// it (undivided when it is 0).
+TQ3Point3D to3D(const TQ3Point2D& point);
+TQ3Point2D to2D(const TQ3RationalPoint3D& point);
+TQ3RationalPoint4D to4D(const TQ3Point3D& point);
+TQ3Point3D to3D(const TQ3RationalPoint4D& point);
+TQ3Vector3D to3D(const TQ3Vector2D& vector);
+TQ3Vector2D to2D(const TQ3Vector3D& vector);
+
+/// r the distance from the origin; theta counterclockwise from +x, in
+/// [0, 2 pi) before rounding. The origin gives (0, 0).
+TQ3PolarPoint toPolar(const TQ3Point2D& point);
+TQ3Point2D toCartesian(const TQ3PolarPoint& point);
+/// rho the distance from the origin; theta as for toPolar, of the
+/// projection onto the xy plane (0 on the z axis); phi from +z, in [0, pi].
+/// The origin gives (0, 0, 0).
+TQ3SphericalPoint toSpherical(const TQ3Point3D& point);
+TQ3Point3D toCartesian(const TQ3SphericalPoint& point);
+
 // The arithmetic below is written once for every dimension: a template over
 // the QD3DMath.h type, which is what tells the dimension.
 
@@ -133,25 +153,5 @@ T affineCombination(const T* points, const float* weights, std::size_t count)
         fail(kQ3ErrorInvalidParameter, "the weights sum to 0, so they combine no point");
     return toFloat<T>(sum / totalWeight);
 }
-
-/// Changes of dimension, as QuickDraw 3D defines them: going up appends a
-/// last coordinate of 1; going down divides by the last coordinate and drops
-/// it (undivided when it is 0).
-TQ3Point3D to3D(const TQ3Point2D& point);
-TQ3Point2D to2D(const TQ3RationalPoint3D& point);
-TQ3RationalPoint4D to4D(const TQ3Point3D& point);
-TQ3Point3D to3D(const TQ3RationalPoint4D& point);
-TQ3Vector3D to3D(const TQ3Vector2D& vector);
-TQ3Vector2D to2D(const TQ3Vector3D& vector);
-
-/// r the distance from the origin; theta counterclockwise from +x, in
-/// [0, 2 pi) before rounding. The origin gives (0, 0).
-TQ3PolarPoint toPolar(const TQ3Point2D& point);
-TQ3Point2D toCartesian(const TQ3PolarPoint& point);
-/// rho the distance from the origin; theta as for toPolar, of the
-/// projection onto the xy plane (0 on the z axis); phi from +z, in [0, pi].
-/// The origin gives (0, 0, 0).
-TQ3SphericalPoint toSpherical(const TQ3Point3D& point);
-TQ3Point3D toCartesian(const TQ3SphericalPoint& point);
 
 } // namespace q3::math
