@@ -4,19 +4,11 @@
 #include "api/QuadricEntry.h"
 #include "geometry/Cone.h"
 
-using namespace q3;
-using namespace q3::api;
-
 extern "C" {
 
 Q3_DATA_GEOMETRY_ENTRY_POINTS(Cone)
 
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Cone, Origin, TQ3Point3D, origin)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Cone, Orientation, TQ3Vector3D, orientation)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Cone, MajorRadius, TQ3Vector3D, majorRadius)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Cone, MinorRadius, TQ3Vector3D, minorRadius)
-Q3_QUADRIC_VALUE_FIELD_ENTRY_POINTS(Cone, Caps, TQ3EndCap, caps)
-Q3_QUADRIC_PART_SET_ENTRY_POINTS(Cone, BottomAttributeSet, bottomAttributeSet)
-Q3_QUADRIC_PART_SET_ENTRY_POINTS(Cone, FaceAttributeSet, faceAttributeSet)
+Q3_QUADRIC_FRAME_ENTRY_POINTS(Cone)
+Q3_QUADRIC_CAPS_ENTRY_POINTS(Cone)
 
 } // extern "C"

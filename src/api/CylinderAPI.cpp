@@ -4,20 +4,12 @@
 #include "api/QuadricEntry.h"
 #include "geometry/Cylinder.h"
 
-using namespace q3;
-using namespace q3::api;
-
 extern "C" {
 
 Q3_DATA_GEOMETRY_ENTRY_POINTS(Cylinder)
 
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Cylinder, Origin, TQ3Point3D, origin)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Cylinder, Orientation, TQ3Vector3D, orientation)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Cylinder, MajorRadius, TQ3Vector3D, majorRadius)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Cylinder, MinorRadius, TQ3Vector3D, minorRadius)
-Q3_QUADRIC_VALUE_FIELD_ENTRY_POINTS(Cylinder, Caps, TQ3EndCap, caps)
+Q3_QUADRIC_FRAME_ENTRY_POINTS(Cylinder)
+Q3_QUADRIC_CAPS_ENTRY_POINTS(Cylinder)
 Q3_QUADRIC_PART_SET_ENTRY_POINTS(Cylinder, TopAttributeSet, topAttributeSet)
-Q3_QUADRIC_PART_SET_ENTRY_POINTS(Cylinder, BottomAttributeSet, bottomAttributeSet)
-Q3_QUADRIC_PART_SET_ENTRY_POINTS(Cylinder, FaceAttributeSet, faceAttributeSet)
 
 } // extern "C"

@@ -4,16 +4,10 @@
 #include "api/QuadricEntry.h"
 #include "geometry/Ellipsoid.h"
 
-using namespace q3;
-using namespace q3::api;
-
 extern "C" {
 
 Q3_DATA_GEOMETRY_ENTRY_POINTS(Ellipsoid)
 
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Ellipsoid, Origin, TQ3Point3D, origin)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Ellipsoid, Orientation, TQ3Vector3D, orientation)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Ellipsoid, MajorRadius, TQ3Vector3D, majorRadius)
-Q3_QUADRIC_FIELD_ENTRY_POINTS(Ellipsoid, MinorRadius, TQ3Vector3D, minorRadius)
+Q3_QUADRIC_FRAME_ENTRY_POINTS(Ellipsoid)
 
 } // extern "C"

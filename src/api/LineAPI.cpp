@@ -4,9 +4,6 @@
 #include "api/GeometryEntry.h"
 #include "geometry/Line.h"
 
-using namespace q3;
-using namespace q3::api;
-
 extern "C" {
 
 Q3_DATA_GEOMETRY_ENTRY_POINTS(Line)

@@ -94,6 +94,19 @@ TQ3Status setPartSet(const char* function, TQ3GeometryObject geometry, TQ3Attrib
         return q3::api::getField<q3::Name>(__func__, geometry, &TQ3##Name##Data::field, field, #field);         \
     }
 
+/// The frame of a planar quadric (disk, ellipse): Q3<Name>_Get/SetOrigin,
+/// _Get/SetMajorRadius and _Get/SetMinorRadius.
+#define Q3_QUADRIC_PLANE_ENTRY_POINTS(Name)                                                                     \
+    Q3_QUADRIC_FIELD_ENTRY_POINTS(Name, Origin, TQ3Point3D, origin)                                             \
+    Q3_QUADRIC_FIELD_ENTRY_POINTS(Name, MajorRadius, TQ3Vector3D, majorRadius)                                  \
+    Q3_QUADRIC_FIELD_ENTRY_POINTS(Name, MinorRadius, TQ3Vector3D, minorRadius)
+
+/// The frame of a solid quadric (cone, cylinder, ellipsoid, torus): the
+/// planar frame and Q3<Name>_Get/SetOrientation.
+#define Q3_QUADRIC_FRAME_ENTRY_POINTS(Name)                                                                     \
+    Q3_QUADRIC_PLANE_ENTRY_POINTS(Name)                                                                         \
+    Q3_QUADRIC_FIELD_ENTRY_POINTS(Name, Orientation, TQ3Vector3D, orientation)
+
 /// Q3<Name>_Set<Part> and _Get<Part> of the attribute set of a part (the
 /// face, a cap): Set takes a reference of its own (NULL removes the set), Get
 /// hands out a new one (NULL for none).
@@ -106,3 +119,11 @@ TQ3Status setPartSet(const char* function, TQ3GeometryObject geometry, TQ3Attrib
     {                                                                                                           \
         return q3::api::getPartSet<q3::Name>(__func__, geometry, &TQ3##Name##Data::field, field, #field);       \
     }
+
+/// The caps of a cone or cylinder: Q3<Name>_Get/SetCaps and the attribute
+/// sets of its bottom and its face (_Get/SetBottomAttributeSet,
+/// _Get/SetFaceAttributeSet).
+#define Q3_QUADRIC_CAPS_ENTRY_POINTS(Name)                                                                      \
+    Q3_QUADRIC_VALUE_FIELD_ENTRY_POINTS(Name, Caps, TQ3EndCap, caps)                                            \
+    Q3_QUADRIC_PART_SET_ENTRY_POINTS(Name, BottomAttributeSet, bottomAttributeSet)                              \
+    Q3_QUADRIC_PART_SET_ENTRY_POINTS(Name, FaceAttributeSet, faceAttributeSet)
