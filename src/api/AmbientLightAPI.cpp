@@ -4,24 +4,8 @@
 #include "api/LightEntry.h"
 #include "light/AmbientLight.h"
 
-using namespace q3;
-using namespace q3::api;
-
 extern "C" {
 
-TQ3LightObject Q3AmbientLight_New(const TQ3LightData* lightData)
-{
-    return newLight<AmbientLight>(__func__, lightData, "lightData");
-}
-
-TQ3Status Q3AmbientLight_GetData(TQ3LightObject light, TQ3LightData* lightData)
-{
-    return getLightData<AmbientLight>(__func__, light, lightData, "lightData");
-}
-
-TQ3Status Q3AmbientLight_SetData(TQ3LightObject light, const TQ3LightData* lightData)
-{
-    return setLightData<AmbientLight>(__func__, light, lightData, "lightData");
-}
+Q3_LIGHT_DATA_ENTRY_POINTS(Ambient, TQ3LightData, lightData)
 
 } // extern "C"

@@ -49,18 +49,65 @@ TQ3Status setCameraField(const char* function, TQ3CameraObject camera, float val
     return guardStatus(function, [&] { lookup<C>(camera, "camera").setField(field, value); });
 }
 
-using OrthographicData = TQ3OrthographicCameraData;
-using ViewPlaneData = TQ3ViewPlaneCameraData;
-using ViewAngleAspectData = TQ3ViewAngleAspectCameraData;
-
 } // namespace
 
-extern "C" {
+// A C entry point cannot come from a template, so each family of entry points
+// below is written once as a macro that defines them through the templates
+// above. Kind names the class (q3::<Kind>Camera), its data
+// (TQ3<Kind>CameraData) and the C prefix (Q3<Kind>Camera_); the parameter
+// names are QD3DCamera.h's, so the error messages name them as every other
+// call does.
 
-TQ3ObjectType Q3Camera_GetType(TQ3CameraObject camera)
-{
-    return api::getLeafType<Camera>(__func__, camera, "camera");
-}
+/// Q3Camera_Set<Field> and _Get<Field> of the member `member` of every
+/// camera's TQ3CameraData, a Type given through a pointer and set through
+/// Camera::set<Field>.
+#define Q3_CAMERA_MEMBER_ENTRY_POINTS(Field, Type, member)                                                      \
+    TQ3Status Q3Camera_Set##Field(TQ3CameraObject camera, const Type* member)                                   \
+    {                                                                                                           \
+        return setValue<Camera>(__func__, camera, "camera", member, #member, &Camera::set##Field);              \
+    }                                                                                                           \
+    TQ3Status Q3Camera_Get##Field(TQ3CameraObject camera, Type* member)                                         \
+    {                                                                                                           \
+        return getValue<Camera>(__func__, camera, "camera", member, #member,                                    \
+                                [&](const Camera& source) { return source.data().member; });                    \
+    }
+
+/// Q3Camera_Get<Matrix>, the matrix Camera::<member>() computes.
+#define Q3_CAMERA_MATRIX_ENTRY_POINT(Matrix, member)                                                            \
+    TQ3Status Q3Camera_Get##Matrix(TQ3CameraObject camera, TQ3Matrix4x4* member)                                \
+    {                                                                                                           \
+        return getValue<Camera>(__func__, camera, "camera", member, #member,                                    \
+                                [&](const Camera& source) { return toQ3(source.member()); });                   \
+    }
+
+/// Q3<Kind>Camera_New (its data called `newData`), _GetData and _SetData.
+#define Q3_CAMERA_KIND_ENTRY_POINTS(Kind, newData)                                                              \
+    TQ3CameraObject Q3##Kind##Camera_New(const TQ3##Kind##CameraData* newData)                                  \
+    {                                                                                                           \
+        return newCamera<Kind##Camera>(__func__, newData, #newData);                                            \
+    }                                                                                                           \
+    TQ3Status Q3##Kind##Camera_GetData(TQ3CameraObject camera, TQ3##Kind##CameraData* cameraData)               \
+    {                                                                                                           \
+        return getCameraData<Kind##Camera>(__func__, camera, cameraData);                                       \
+    }                                                                                                           \
+    TQ3Status Q3##Kind##Camera_SetData(TQ3CameraObject camera, const TQ3##Kind##CameraData* cameraData)         \
+    {                                                                                                           \
+        return setCameraData<Kind##Camera>(__func__, camera, cameraData);                                       \
+    }
+
+/// Q3<Kind>Camera_Set<Field> and _Get<Field> of the float `member` of
+/// TQ3<Kind>CameraData.
+#define Q3_CAMERA_FIELD_ENTRY_POINTS(Kind, Field, member)                                                       \
+    TQ3Status Q3##Kind##Camera_Set##Field(TQ3CameraObject camera, float member)                                 \
+    {                                                                                                           \
+        return setCameraField<Kind##Camera>(__func__, camera, member, &TQ3##Kind##CameraData::member);          \
+    }                                                                                                           \
+    TQ3Status Q3##Kind##Camera_Get##Field(TQ3CameraObject camera, float* member)                                \
+    {                                                                                                           \
+        return getCameraField<Kind##Camera>(__func__, camera, member, #member, &TQ3##Kind##CameraData::member); \
+    }
+
+extern "C" {
 
 TQ3Status Q3Camera_SetData(TQ3CameraObject camera, const TQ3CameraData* cameraData)
 {
@@ -72,221 +119,39 @@ TQ3Status Q3Camera_GetData(TQ3CameraObject camera, TQ3CameraData* cameraData)
     return getValue<Camera>(__func__, camera, "camera", cameraData, "cameraData", &Camera::data);
 }
 
-TQ3Status Q3Camera_SetPlacement(TQ3CameraObject camera, const TQ3CameraPlacement* placement)
+TQ3ObjectType Q3Camera_GetType(TQ3CameraObject camera)
 {
-    return setValue<Camera>(__func__, camera, "camera", placement, "placement", &Camera::setPlacement);
+    return api::getLeafType<Camera>(__func__, camera, "camera");
 }
 
-TQ3Status Q3Camera_GetPlacement(TQ3CameraObject camera, TQ3CameraPlacement* placement)
-{
-    return getValue<Camera>(__func__, camera, "camera", placement, "placement",
-                            [&](const Camera& source) { return source.data().placement; });
-}
+Q3_CAMERA_MEMBER_ENTRY_POINTS(Placement, TQ3CameraPlacement, placement)
+Q3_CAMERA_MEMBER_ENTRY_POINTS(Range, TQ3CameraRange, range)
+Q3_CAMERA_MEMBER_ENTRY_POINTS(ViewPort, TQ3CameraViewPort, viewPort)
 
-TQ3Status Q3Camera_SetRange(TQ3CameraObject camera, const TQ3CameraRange* range)
-{
-    return setValue<Camera>(__func__, camera, "camera", range, "range", &Camera::setRange);
-}
+Q3_CAMERA_MATRIX_ENTRY_POINT(WorldToView, worldToView)
+Q3_CAMERA_MATRIX_ENTRY_POINT(ViewToFrustum, viewToFrustum)
+Q3_CAMERA_MATRIX_ENTRY_POINT(WorldToFrustum, worldToFrustum)
 
-TQ3Status Q3Camera_GetRange(TQ3CameraObject camera, TQ3CameraRange* range)
-{
-    return getValue<Camera>(__func__, camera, "camera", range, "range",
-                            [&](const Camera& source) { return source.data().range; });
-}
+Q3_CAMERA_KIND_ENTRY_POINTS(Orthographic, orthographicData)
+Q3_CAMERA_FIELD_ENTRY_POINTS(Orthographic, Left, left)
+Q3_CAMERA_FIELD_ENTRY_POINTS(Orthographic, Top, top)
+Q3_CAMERA_FIELD_ENTRY_POINTS(Orthographic, Right, right)
+Q3_CAMERA_FIELD_ENTRY_POINTS(Orthographic, Bottom, bottom)
 
-TQ3Status Q3Camera_SetViewPort(TQ3CameraObject camera, const TQ3CameraViewPort* viewPort)
-{
-    return setValue<Camera>(__func__, camera, "camera", viewPort, "viewPort", &Camera::setViewPort);
-}
+Q3_CAMERA_KIND_ENTRY_POINTS(ViewAngleAspect, cameraData)
+Q3_CAMERA_FIELD_ENTRY_POINTS(ViewAngleAspect, FOV, fov)
+Q3_CAMERA_FIELD_ENTRY_POINTS(ViewAngleAspect, AspectRatio, aspectRatioXToY)
 
-TQ3Status Q3Camera_GetViewPort(TQ3CameraObject camera, TQ3CameraViewPort* viewPort)
-{
-    return getValue<Camera>(__func__, camera, "camera", viewPort, "viewPort",
-                            [&](const Camera& source) { return source.data().viewPort; });
-}
-
-TQ3Status Q3Camera_GetWorldToView(TQ3CameraObject camera, TQ3Matrix4x4* worldToView)
-{
-    return getValue<Camera>(__func__, camera, "camera", worldToView, "worldToView",
-                            [&](const Camera& source) { return toQ3(source.worldToView()); });
-}
-
-TQ3Status Q3Camera_GetViewToFrustum(TQ3CameraObject camera, TQ3Matrix4x4* viewToFrustum)
-{
-    return getValue<Camera>(__func__, camera, "camera", viewToFrustum, "viewToFrustum",
-                            [&](const Camera& source) { return toQ3(source.viewToFrustum()); });
-}
-
-TQ3Status Q3Camera_GetWorldToFrustum(TQ3CameraObject camera, TQ3Matrix4x4* worldToFrustum)
-{
-    return getValue<Camera>(__func__, camera, "camera", worldToFrustum, "worldToFrustum",
-                            [&](const Camera& source) { return toQ3(source.worldToFrustum()); });
-}
-
-TQ3CameraObject Q3OrthographicCamera_New(const TQ3OrthographicCameraData* orthographicData)
-{
-    return newCamera<OrthographicCamera>(__func__, orthographicData, "orthographicData");
-}
-
-TQ3Status Q3OrthographicCamera_GetData(TQ3CameraObject camera, TQ3OrthographicCameraData* cameraData)
-{
-    return getCameraData<OrthographicCamera>(__func__, camera, cameraData);
-}
-
-TQ3Status Q3OrthographicCamera_SetData(TQ3CameraObject camera,
-                                       const TQ3OrthographicCameraData* cameraData)
-{
-    return setCameraData<OrthographicCamera>(__func__, camera, cameraData);
-}
-
-TQ3Status Q3OrthographicCamera_SetLeft(TQ3CameraObject camera, float left)
-{
-    return setCameraField<OrthographicCamera>(__func__, camera, left, &OrthographicData::left);
-}
-
-TQ3Status Q3OrthographicCamera_GetLeft(TQ3CameraObject camera, float* left)
-{
-    return getCameraField<OrthographicCamera>(__func__, camera, left, "left", &OrthographicData::left);
-}
-
-TQ3Status Q3OrthographicCamera_SetTop(TQ3CameraObject camera, float top)
-{
-    return setCameraField<OrthographicCamera>(__func__, camera, top, &OrthographicData::top);
-}
-
-TQ3Status Q3OrthographicCamera_GetTop(TQ3CameraObject camera, float* top)
-{
-    return getCameraField<OrthographicCamera>(__func__, camera, top, "top", &OrthographicData::top);
-}
-
-TQ3Status Q3OrthographicCamera_SetRight(TQ3CameraObject camera, float right)
-{
-    return setCameraField<OrthographicCamera>(__func__, camera, right, &OrthographicData::right);
-}
-
-TQ3Status Q3OrthographicCamera_GetRight(TQ3CameraObject camera, float* right)
-{
-    return getCameraField<OrthographicCamera>(__func__, camera, right, "right", &OrthographicData::right);
-}
-
-TQ3Status Q3OrthographicCamera_SetBottom(TQ3CameraObject camera, float bottom)
-{
-    return setCameraField<OrthographicCamera>(__func__, camera, bottom, &OrthographicData::bottom);
-}
-
-TQ3Status Q3OrthographicCamera_GetBottom(TQ3CameraObject camera, float* bottom)
-{
-    return getCameraField<OrthographicCamera>(__func__, camera, bottom, "bottom", &OrthographicData::bottom);
-}
-
-TQ3CameraObject Q3ViewPlaneCamera_New(const TQ3ViewPlaneCameraData* cameraData)
-{
-    return newCamera<ViewPlaneCamera>(__func__, cameraData, "cameraData");
-}
-
-TQ3Status Q3ViewPlaneCamera_GetData(TQ3CameraObject camera, TQ3ViewPlaneCameraData* cameraData)
-{
-    return getCameraData<ViewPlaneCamera>(__func__, camera, cameraData);
-}
-
-TQ3Status Q3ViewPlaneCamera_SetData(TQ3CameraObject camera, const TQ3ViewPlaneCameraData* cameraData)
-{
-    return setCameraData<ViewPlaneCamera>(__func__, camera, cameraData);
-}
-
-TQ3Status Q3ViewPlaneCamera_SetViewPlane(TQ3CameraObject camera, float viewPlane)
-{
-    return setCameraField<ViewPlaneCamera>(__func__, camera, viewPlane, &ViewPlaneData::viewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_GetViewPlane(TQ3CameraObject camera, float* viewPlane)
-{
-    return getCameraField<ViewPlaneCamera>(__func__, camera, viewPlane, "viewPlane", &ViewPlaneData::viewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_SetHalfWidth(TQ3CameraObject camera, float halfWidthAtViewPlane)
-{
-    return setCameraField<ViewPlaneCamera>(__func__, camera, halfWidthAtViewPlane,
-                                           &ViewPlaneData::halfWidthAtViewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_GetHalfWidth(TQ3CameraObject camera, float* halfWidthAtViewPlane)
-{
-    return getCameraField<ViewPlaneCamera>(__func__, camera, halfWidthAtViewPlane, "halfWidthAtViewPlane",
-                                           &ViewPlaneData::halfWidthAtViewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_SetHalfHeight(TQ3CameraObject camera, float halfHeightAtViewPlane)
-{
-    return setCameraField<ViewPlaneCamera>(__func__, camera, halfHeightAtViewPlane,
-                                           &ViewPlaneData::halfHeightAtViewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_GetHalfHeight(TQ3CameraObject camera, float* halfHeightAtViewPlane)
-{
-    return getCameraField<ViewPlaneCamera>(__func__, camera, halfHeightAtViewPlane, "halfHeightAtViewPlane",
-                                           &ViewPlaneData::halfHeightAtViewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_SetCenterX(TQ3CameraObject camera, float centerXOnViewPlane)
-{
-    return setCameraField<ViewPlaneCamera>(__func__, camera, centerXOnViewPlane, &ViewPlaneData::centerXOnViewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_GetCenterX(TQ3CameraObject camera, float* centerXOnViewPlane)
-{
-    return getCameraField<ViewPlaneCamera>(__func__, camera, centerXOnViewPlane, "centerXOnViewPlane",
-                                           &ViewPlaneData::centerXOnViewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_SetCenterY(TQ3CameraObject camera, float centerYOnViewPlane)
-{
-    return setCameraField<ViewPlaneCamera>(__func__, camera, centerYOnViewPlane, &ViewPlaneData::centerYOnViewPlane);
-}
-
-TQ3Status Q3ViewPlaneCamera_GetCenterY(TQ3CameraObject camera, float* centerYOnViewPlane)
-{
-    return getCameraField<ViewPlaneCamera>(__func__, camera, centerYOnViewPlane, "centerYOnViewPlane",
-                                           &ViewPlaneData::centerYOnViewPlane);
-}
-
-TQ3CameraObject Q3ViewAngleAspectCamera_New(const TQ3ViewAngleAspectCameraData* cameraData)
-{
-    return newCamera<ViewAngleAspectCamera>(__func__, cameraData, "cameraData");
-}
-
-TQ3Status Q3ViewAngleAspectCamera_GetData(TQ3CameraObject camera,
-                                          TQ3ViewAngleAspectCameraData* cameraData)
-{
-    return getCameraData<ViewAngleAspectCamera>(__func__, camera, cameraData);
-}
-
-TQ3Status Q3ViewAngleAspectCamera_SetData(TQ3CameraObject camera,
-                                          const TQ3ViewAngleAspectCameraData* cameraData)
-{
-    return setCameraData<ViewAngleAspectCamera>(__func__, camera, cameraData);
-}
-
-TQ3Status Q3ViewAngleAspectCamera_SetFOV(TQ3CameraObject camera, float fov)
-{
-    return setCameraField<ViewAngleAspectCamera>(__func__, camera, fov, &ViewAngleAspectData::fov);
-}
-
-TQ3Status Q3ViewAngleAspectCamera_GetFOV(TQ3CameraObject camera, float* fov)
-{
-    return getCameraField<ViewAngleAspectCamera>(__func__, camera, fov, "fov", &ViewAngleAspectData::fov);
-}
-
-TQ3Status Q3ViewAngleAspectCamera_SetAspectRatio(TQ3CameraObject camera, float aspectRatioXToY)
-{
-    return setCameraField<ViewAngleAspectCamera>(__func__, camera, aspectRatioXToY,
-                                                 &ViewAngleAspectData::aspectRatioXToY);
-}
-
-TQ3Status Q3ViewAngleAspectCamera_GetAspectRatio(TQ3CameraObject camera, float* aspectRatioXToY)
-{
-    return getCameraField<ViewAngleAspectCamera>(__func__, camera, aspectRatioXToY, "aspectRatioXToY",
-                                                 &ViewAngleAspectData::aspectRatioXToY);
-}
+Q3_CAMERA_KIND_ENTRY_POINTS(ViewPlane, cameraData)
+Q3_CAMERA_FIELD_ENTRY_POINTS(ViewPlane, ViewPlane, viewPlane)
+Q3_CAMERA_FIELD_ENTRY_POINTS(ViewPlane, HalfWidth, halfWidthAtViewPlane)
+Q3_CAMERA_FIELD_ENTRY_POINTS(ViewPlane, HalfHeight, halfHeightAtViewPlane)
+Q3_CAMERA_FIELD_ENTRY_POINTS(ViewPlane, CenterX, centerXOnViewPlane)
+Q3_CAMERA_FIELD_ENTRY_POINTS(ViewPlane, CenterY, centerYOnViewPlane)
 
 } // extern "C"
+
+#undef Q3_CAMERA_MEMBER_ENTRY_POINTS
+#undef Q3_CAMERA_MATRIX_ENTRY_POINT
+#undef Q3_CAMERA_KIND_ENTRY_POINTS
+#undef Q3_CAMERA_FIELD_ENTRY_POINTS

@@ -7,6 +7,39 @@
 using namespace q3;
 using namespace q3::api;
 
+// A C entry point cannot come from a template, so each family of entry points
+// below is written once as a macro that defines them through api/Entry.h's
+// templates; the parameter names are QD3DDrawContext.h's, so the error
+// messages name them as every other call does.
+
+/// Q3DrawContext_Set<Field> and _Get<Field> of the member `member` of
+/// TQ3DrawContextData, a Type given through a pointer (called `param`) and set
+/// through DrawContext::set<Field>.
+#define Q3_DRAW_CONTEXT_MEMBER_ENTRY_POINTS(Field, Type, param, member)                                         \
+    TQ3Status Q3DrawContext_Set##Field(TQ3DrawContextObject context, const Type* param)                         \
+    {                                                                                                           \
+        return setValue<DrawContext>(__func__, context, "context", param, #param, &DrawContext::set##Field);    \
+    }                                                                                                           \
+    TQ3Status Q3DrawContext_Get##Field(TQ3DrawContextObject context, Type* param)                               \
+    {                                                                                                           \
+        return getValue<DrawContext>(__func__, context, "context", param, #param,                               \
+                                     [&](const DrawContext& source) -> const Type& {                            \
+                                         return source.data().member;                                           \
+                                     });                                                                        \
+    }
+
+/// The same for a TQ3Boolean state given by value, called `state`.
+#define Q3_DRAW_CONTEXT_STATE_ENTRY_POINTS(Field, member)                                                       \
+    TQ3Status Q3DrawContext_Set##Field(TQ3DrawContextObject context, TQ3Boolean state)                          \
+    {                                                                                                           \
+        return setDirect<DrawContext>(__func__, context, "context", state, &DrawContext::set##Field);           \
+    }                                                                                                           \
+    TQ3Status Q3DrawContext_Get##Field(TQ3DrawContextObject context, TQ3Boolean* state)                         \
+    {                                                                                                           \
+        return getValue<DrawContext>(__func__, context, "context", state, "state",                              \
+                                     [&](const DrawContext& source) { return source.data().member; });          \
+    }
+
 extern "C" {
 
 TQ3ObjectType Q3DrawContext_GetType(TQ3DrawContextObject drawContext)
@@ -24,87 +57,24 @@ TQ3Status Q3DrawContext_GetData(TQ3DrawContextObject context, TQ3DrawContextData
     return getValue<DrawContext>(__func__, context, "context", contextData, "contextData", &DrawContext::data);
 }
 
-TQ3Status Q3DrawContext_SetClearImageColor(TQ3DrawContextObject context, const TQ3ColorARGB* color)
+Q3_DRAW_CONTEXT_MEMBER_ENTRY_POINTS(ClearImageColor, TQ3ColorARGB, color, clearImageColor)
+Q3_DRAW_CONTEXT_MEMBER_ENTRY_POINTS(Pane, TQ3Area, pane, pane)
+Q3_DRAW_CONTEXT_STATE_ENTRY_POINTS(PaneState, paneState)
+
+TQ3Status Q3DrawContext_SetClearImageMethod(TQ3DrawContextObject context, TQ3DrawContextClearImageMethod method)
 {
-    return setValue<DrawContext>(__func__, context, "context", color, "color", &DrawContext::setClearImageColor);
+    return setDirect<DrawContext>(__func__, context, "context", method, &DrawContext::setClearImageMethod);
 }
 
-TQ3Status Q3DrawContext_GetClearImageColor(TQ3DrawContextObject context, TQ3ColorARGB* color)
-{
-    return getValue<DrawContext>(__func__, context, "context", color, "color",
-                                 [&](const DrawContext& source) { return source.data().clearImageColor; });
-}
-
-TQ3Status Q3DrawContext_SetPane(TQ3DrawContextObject context, const TQ3Area* pane)
-{
-    return setValue<DrawContext>(__func__, context, "context", pane, "pane", &DrawContext::setPane);
-}
-
-TQ3Status Q3DrawContext_GetPane(TQ3DrawContextObject context, TQ3Area* pane)
-{
-    return getValue<DrawContext>(__func__, context, "context", pane, "pane",
-                                 [&](const DrawContext& source) { return source.data().pane; });
-}
-
-TQ3Status Q3DrawContext_SetPaneState(TQ3DrawContextObject context, TQ3Boolean state)
-{
-    return guardStatus(__func__,
-                       [&] { lookup<DrawContext>(context, "context").setPaneState(state); });
-}
-
-TQ3Status Q3DrawContext_GetPaneState(TQ3DrawContextObject context, TQ3Boolean* state)
-{
-    return getValue<DrawContext>(__func__, context, "context", state, "state",
-                                 [&](const DrawContext& source) { return source.data().paneState; });
-}
-
-TQ3Status Q3DrawContext_SetClearImageMethod(TQ3DrawContextObject context,
-                                            TQ3DrawContextClearImageMethod method)
-{
-    return guardStatus(__func__,
-                       [&] { lookup<DrawContext>(context, "context").setClearImageMethod(method); });
-}
-
-TQ3Status Q3DrawContext_GetClearImageMethod(TQ3DrawContextObject context,
-                                            TQ3DrawContextClearImageMethod* method)
+TQ3Status Q3DrawContext_GetClearImageMethod(TQ3DrawContextObject context, TQ3DrawContextClearImageMethod* method)
 {
     return getValue<DrawContext>(__func__, context, "context", method, "method",
                                  [&](const DrawContext& source) { return source.data().clearImageMethod; });
 }
 
-TQ3Status Q3DrawContext_SetMask(TQ3DrawContextObject context, const TQ3Bitmap* mask)
-{
-    return setValue<DrawContext>(__func__, context, "context", mask, "mask", &DrawContext::setMask);
-}
-
-TQ3Status Q3DrawContext_GetMask(TQ3DrawContextObject context, TQ3Bitmap* mask)
-{
-    return getValue<DrawContext>(__func__, context, "context", mask, "mask",
-                                 [&](const DrawContext& source) -> const TQ3Bitmap& { return source.data().mask; });
-}
-
-TQ3Status Q3DrawContext_SetMaskState(TQ3DrawContextObject context, TQ3Boolean state)
-{
-    return guardStatus(__func__, [&] { lookup<DrawContext>(context, "context").setMaskState(state); });
-}
-
-TQ3Status Q3DrawContext_GetMaskState(TQ3DrawContextObject context, TQ3Boolean* state)
-{
-    return getValue<DrawContext>(__func__, context, "context", state, "state",
-                                 [&](const DrawContext& source) { return source.data().maskState; });
-}
-
-TQ3Status Q3DrawContext_SetDoubleBufferState(TQ3DrawContextObject context, TQ3Boolean state)
-{
-    return guardStatus(__func__,
-                       [&] { lookup<DrawContext>(context, "context").setDoubleBufferState(state); });
-}
-
-TQ3Status Q3DrawContext_GetDoubleBufferState(TQ3DrawContextObject context, TQ3Boolean* state)
-{
-    return getValue<DrawContext>(__func__, context, "context", state, "state",
-                                 [&](const DrawContext& source) { return source.data().doubleBufferState; });
-}
+Q3_DRAW_CONTEXT_MEMBER_ENTRY_POINTS(Mask, TQ3Bitmap, mask, mask)
+Q3_DRAW_CONTEXT_STATE_ENTRY_POINTS(MaskState, maskState)
+Q3_DRAW_CONTEXT_STATE_ENTRY_POINTS(DoubleBufferState, doubleBufferState)
 
 TQ3DrawContextObject Q3PixmapDrawContext_New(const TQ3PixmapDrawContextData* contextData)
 {
@@ -115,16 +85,10 @@ TQ3DrawContextObject Q3PixmapDrawContext_New(const TQ3PixmapDrawContextData* con
     });
 }
 
-TQ3Status Q3PixmapDrawContext_SetPixmap(TQ3DrawContextObject drawContext, const TQ3Pixmap* pixmap)
-{
-    return setValue<PixmapDrawContext>(__func__, drawContext, "drawContext", pixmap, "pixmap",
-                                       &PixmapDrawContext::setPixmap);
-}
-
-TQ3Status Q3PixmapDrawContext_GetPixmap(TQ3DrawContextObject drawContext, TQ3Pixmap* pixmap)
-{
-    return getValue<PixmapDrawContext>(__func__, drawContext, "drawContext", pixmap, "pixmap",
-                                       &PixmapDrawContext::pixmap);
-}
+Q3_POINTER_VALUE_ENTRY_POINTS(Q3PixmapDrawContext, PixmapDrawContext, TQ3DrawContextObject, drawContext, Pixmap,
+                              TQ3Pixmap, pixmap)
 
 } // extern "C"
+
+#undef Q3_DRAW_CONTEXT_MEMBER_ENTRY_POINTS
+#undef Q3_DRAW_CONTEXT_STATE_ENTRY_POINTS

@@ -119,6 +119,17 @@ TQ3Status setValue(const char* function, TQ3Object handle, const char* handleNam
     });
 }
 
+/// A whole Set entry point of one value given by value (a Boolean, an
+/// enumeration, a handle): the handle (as a T), then write(object, value), a
+/// member function of T that checks the value. The value goes on by
+/// reference, so an enumeration may hold any int until write checks it.
+template <class T, class Value, class Write>
+TQ3Status setDirect(const char* function, TQ3Object handle, const char* handleName, const Value& value,
+                    Write write) noexcept
+{
+    return guardStatus(function, [&] { std::invoke(write, lookup<T>(handle, handleName), value); });
+}
+
 /// A new reference for the caller to an object held, or NULL when none is.
 template <class T>
 TQ3Object handOut(const Ref<T>& held)
@@ -159,3 +170,46 @@ TQ3Status setHeldOptional(const char* function, TQ3Object handle, const char* ha
 }
 
 } // namespace q3::api
+
+// A C entry point cannot come from a template, so the Get/Set pairs that
+// differ only in names are written once as the macros below, through the
+// templates above. Prefix is the C prefix (Q3XDrawContext), Class the q3 class
+// the handle must be, `handle` and `param` Apple's parameter names (the error
+// messages name them as every other call does); Set goes through
+// Class::set<Field> and Get reads Class::<param>().
+
+/// Prefix_Set<Field> and _Get<Field> of a Type given through a pointer.
+#define Q3_POINTER_VALUE_ENTRY_POINTS(Prefix, Class, HandleType, handle, Field, Type, param)                    \
+    TQ3Status Prefix##_Set##Field(HandleType handle, const Type* param)                                         \
+    {                                                                                                           \
+        return q3::api::setValue<Class>(__func__, handle, #handle, param, #param, &Class::set##Field);          \
+    }                                                                                                           \
+    TQ3Status Prefix##_Get##Field(HandleType handle, Type* param)                                               \
+    {                                                                                                           \
+        return q3::api::getValue<Class>(__func__, handle, #handle, param, #param, &Class::param);               \
+    }
+
+/// Prefix_Set<Field> and _Get<Field> of a Type given by value (setDirect).
+#define Q3_DIRECT_VALUE_ENTRY_POINTS(Prefix, Class, HandleType, handle, Field, Type, param)                     \
+    TQ3Status Prefix##_Set##Field(HandleType handle, Type param)                                                \
+    {                                                                                                           \
+        return q3::api::setDirect<Class>(__func__, handle, #handle, param, &Class::set##Field);                 \
+    }                                                                                                           \
+    TQ3Status Prefix##_Get##Field(HandleType handle, Type* param)                                               \
+    {                                                                                                           \
+        return q3::api::getValue<Class>(__func__, handle, #handle, param, #param, &Class::param);               \
+    }
+
+/// Prefix_Set<Field> and _Get<Field> of an object the Class holds (a Type
+/// called `param`): Set through `store` (setHeld, or setHeldOptional where
+/// NULL clears it) and Class::set<Field>, Get through getHeld and
+/// Class::<param>().
+#define Q3_HELD_ENTRY_POINTS(Prefix, Class, HandleType, handle, Field, Type, param, store)                      \
+    TQ3Status Prefix##_Set##Field(HandleType handle, Type param)                                                \
+    {                                                                                                           \
+        return q3::api::store(__func__, handle, #handle, param, #param, &Class::set##Field);                    \
+    }                                                                                                           \
+    TQ3Status Prefix##_Get##Field(HandleType handle, Type* param)                                               \
+    {                                                                                                           \
+        return q3::api::getHeld(__func__, handle, #handle, param, #param, &Class::param);                       \
+    }

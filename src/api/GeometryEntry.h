@@ -109,3 +109,54 @@ TQ3Status setVertexAttributeSet(const char* function, TQ3GeometryObject geometry
 }
 
 } // namespace q3::api
+
+// A C entry point cannot come from a template, so the entry points above are
+// also written once as macros that define them. Name names the class
+// (q3::<Name>), its data (TQ3<Name>Data) and the C prefix (Q3<Name>_).
+
+/// Q3<Name>_New, _Submit, _GetData, _SetData and _EmptyData.
+#define Q3_DATA_GEOMETRY_ENTRY_POINTS(Name)                                                                     \
+    TQ3GeometryObject Q3##Name##_New(const TQ3##Name##Data* data)                                               \
+    {                                                                                                           \
+        return q3::api::newGeometry<q3::Name>(__func__, data);                                                  \
+    }                                                                                                           \
+    TQ3Status Q3##Name##_Submit(const TQ3##Name##Data* data, TQ3ViewObject view)                                \
+    {                                                                                                           \
+        return q3::api::submitGeometry<q3::Name>(__func__, data, view);                                         \
+    }                                                                                                           \
+    TQ3Status Q3##Name##_GetData(TQ3GeometryObject geometry, TQ3##Name##Data* data)                             \
+    {                                                                                                           \
+        return q3::api::getGeometryData<q3::Name>(__func__, geometry, data);                                    \
+    }                                                                                                           \
+    TQ3Status Q3##Name##_SetData(TQ3GeometryObject geometry, const TQ3##Name##Data* data)                       \
+    {                                                                                                           \
+        return q3::api::setGeometryData<q3::Name>(__func__, geometry, data);                                    \
+    }                                                                                                           \
+    TQ3Status Q3##Name##_EmptyData(TQ3##Name##Data* data)                                                       \
+    {                                                                                                           \
+        return q3::api::emptyGeometryData<q3::Name>(__func__, data);                                            \
+    }
+
+/// Q3<Name>_Get/SetVertexPosition and _Get/SetVertexAttributeSet of a
+/// geometry whose vertices have one index; `handle` and `position` are
+/// Apple's parameter names (the error messages name them).
+#define Q3_INDEXED_VERTEX_ENTRY_POINTS(Name, handle, position)                                                  \
+    TQ3Status Q3##Name##_GetVertexPosition(TQ3GeometryObject handle, unsigned long index, TQ3Point3D* position) \
+    {                                                                                                           \
+        return q3::api::getVertexPosition<q3::Name>(__func__, handle, #handle, position, #position, index);     \
+    }                                                                                                           \
+    TQ3Status Q3##Name##_SetVertexPosition(TQ3GeometryObject handle, unsigned long index,                       \
+                                           const TQ3Point3D* position)                                          \
+    {                                                                                                           \
+        return q3::api::setVertexPosition<q3::Name>(__func__, handle, #handle, position, #position, index);     \
+    }                                                                                                           \
+    TQ3Status Q3##Name##_GetVertexAttributeSet(TQ3GeometryObject handle, unsigned long index,                   \
+                                               TQ3AttributeSet* attributeSet)                                   \
+    {                                                                                                           \
+        return q3::api::getVertexAttributeSet<q3::Name>(__func__, handle, #handle, attributeSet, index);        \
+    }                                                                                                           \
+    TQ3Status Q3##Name##_SetVertexAttributeSet(TQ3GeometryObject handle, unsigned long index,                   \
+                                               TQ3AttributeSet attributeSet)                                    \
+    {                                                                                                           \
+        return q3::api::setVertexAttributeSet<q3::Name>(__func__, handle, #handle, attributeSet, index);        \
+    }

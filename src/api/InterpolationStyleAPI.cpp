@@ -4,30 +4,8 @@
 #include "api/StyleEntry.h"
 #include "style/ValueStyles.h"
 
-using namespace q3;
-using namespace q3::api;
-
 extern "C" {
 
-TQ3StyleObject Q3InterpolationStyle_New(TQ3InterpolationStyle interpolationStyle)
-{
-    return newStyle<InterpolationStyle>(__func__, interpolationStyle);
-}
-
-TQ3Status Q3InterpolationStyle_Submit(TQ3InterpolationStyle interpolationStyle, TQ3ViewObject view)
-{
-    return submitStyle<InterpolationStyle>(__func__, interpolationStyle, view);
-}
-
-TQ3Status Q3InterpolationStyle_Get(TQ3StyleObject interpolationObject, TQ3InterpolationStyle* interpolationStyle)
-{
-    return getStyle<InterpolationStyle>(__func__, interpolationObject, "interpolationObject", interpolationStyle,
-                                        "interpolationStyle");
-}
-
-TQ3Status Q3InterpolationStyle_Set(TQ3StyleObject interpolationObject, TQ3InterpolationStyle interpolationStyle)
-{
-    return setStyle<InterpolationStyle>(__func__, interpolationObject, "interpolationObject", interpolationStyle);
-}
+Q3_VALUE_STYLE_ENTRY_POINTS(Interpolation, TQ3InterpolationStyle, interpolationObject, interpolationStyle)
 
 } // extern "C"

@@ -76,8 +76,7 @@ TQ3Status Q3Light_SetColor(TQ3LightObject light, const TQ3ColorRGB* color)
 
 TQ3Status Q3Light_GetData(TQ3LightObject light, TQ3LightData* lightData)
 {
-    return getValue<Light>(__func__, light, "light", lightData, "lightData",
-                           [](const Light& source) { return source.lightData(); });
+    return getValue<Light>(__func__, light, "light", lightData, "lightData", &Light::lightData);
 }
 
 TQ3Status Q3Light_SetData(TQ3LightObject light, const TQ3LightData* lightData)

@@ -111,6 +111,35 @@ void writeDetail(const PickHit& hit, TQ3PickDetail detail, void* detailData)
 
 } // namespace
 
+// A C entry point cannot come from a template, so the five entry points every
+// pick kind has are written once as a macro that defines them through the
+// templates above: Q3<Kind>Pick_New, _Get/Set<Field> and _GetData/SetData.
+// The kind's data is TQ3<Kind>PickData, read by Pick::<read>() and set by
+// Pick::set<Kind>; its one field is the Type `field`, set by Pick::set<Field>.
+// A handle of another kind is refused as `kindCheck` says.
+#define Q3_PICK_KIND_ENTRY_POINTS(Kind, read, kindCheck, Field, Type, field)                                    \
+    TQ3PickObject Q3##Kind##Pick_New(const TQ3##Kind##PickData* data)                                           \
+    {                                                                                                           \
+        return newPick(__func__, data);                                                                         \
+    }                                                                                                           \
+    TQ3Status Q3##Kind##Pick_Get##Field(TQ3PickObject pick, Type* field)                                        \
+    {                                                                                                           \
+        return getOfKind(__func__, pick, kindCheck, field, #field,                                              \
+                         [](const Pick& p) { return p.read().field; });                                         \
+    }                                                                                                           \
+    TQ3Status Q3##Kind##Pick_Set##Field(TQ3PickObject pick, const Type* field)                                  \
+    {                                                                                                           \
+        return setOfKind(__func__, pick, kindCheck, field, #field, &Pick::set##Field);                          \
+    }                                                                                                           \
+    TQ3Status Q3##Kind##Pick_GetData(TQ3PickObject pick, TQ3##Kind##PickData* data)                             \
+    {                                                                                                           \
+        return getOfKind(__func__, pick, kindCheck, data, "data", &Pick::read);                                 \
+    }                                                                                                           \
+    TQ3Status Q3##Kind##Pick_SetData(TQ3PickObject pick, const TQ3##Kind##PickData* data)                       \
+    {                                                                                                           \
+        return setOfKind(__func__, pick, kindCheck, data, "data", &Pick::set##Kind);                            \
+    }
+
 extern "C" {
 
 TQ3ObjectType Q3Pick_GetType(TQ3PickObject pick)
@@ -201,79 +230,10 @@ TQ3Status Q3HitPath_EmptyData(TQ3HitPath* hitPath)
     });
 }
 
-TQ3PickObject Q3WindowPointPick_New(const TQ3WindowPointPickData* data)
-{
-    return newPick(__func__, data);
-}
-
-TQ3Status Q3WindowPointPick_GetPoint(TQ3PickObject pick, TQ3Point2D* point)
-{
-    return getOfKind(__func__, pick, kPoint, point, "point", [](const Pick& p) { return p.windowPoint().point; });
-}
-
-TQ3Status Q3WindowPointPick_SetPoint(TQ3PickObject pick, const TQ3Point2D* point)
-{
-    return setOfKind(__func__, pick, kPoint, point, "point", &Pick::setPoint);
-}
-
-TQ3Status Q3WindowPointPick_GetData(TQ3PickObject pick, TQ3WindowPointPickData* data)
-{
-    return getOfKind(__func__, pick, kPoint, data, "data", &Pick::windowPoint);
-}
-
-TQ3Status Q3WindowPointPick_SetData(TQ3PickObject pick, const TQ3WindowPointPickData* data)
-{
-    return setOfKind(__func__, pick, kPoint, data, "data", &Pick::setWindowPoint);
-}
-
-TQ3PickObject Q3WindowRectPick_New(const TQ3WindowRectPickData* data)
-{
-    return newPick(__func__, data);
-}
-
-TQ3Status Q3WindowRectPick_GetRect(TQ3PickObject pick, TQ3Area* rect)
-{
-    return getOfKind(__func__, pick, kRect, rect, "rect", [](const Pick& p) { return p.windowRect().rect; });
-}
-
-TQ3Status Q3WindowRectPick_SetRect(TQ3PickObject pick, const TQ3Area* rect)
-{
-    return setOfKind(__func__, pick, kRect, rect, "rect", &Pick::setRect);
-}
-
-TQ3Status Q3WindowRectPick_GetData(TQ3PickObject pick, TQ3WindowRectPickData* data)
-{
-    return getOfKind(__func__, pick, kRect, data, "data", &Pick::windowRect);
-}
-
-TQ3Status Q3WindowRectPick_SetData(TQ3PickObject pick, const TQ3WindowRectPickData* data)
-{
-    return setOfKind(__func__, pick, kRect, data, "data", &Pick::setWindowRect);
-}
-
-TQ3PickObject Q3WorldRayPick_New(const TQ3WorldRayPickData* data)
-{
-    return newPick(__func__, data);
-}
-
-TQ3Status Q3WorldRayPick_GetRay(TQ3PickObject pick, TQ3Ray3D* ray)
-{
-    return getOfKind(__func__, pick, kRay, ray, "ray", [](const Pick& p) { return p.worldRay().ray; });
-}
-
-TQ3Status Q3WorldRayPick_SetRay(TQ3PickObject pick, const TQ3Ray3D* ray)
-{
-    return setOfKind(__func__, pick, kRay, ray, "ray", &Pick::setRay);
-}
-
-TQ3Status Q3WorldRayPick_GetData(TQ3PickObject pick, TQ3WorldRayPickData* data)
-{
-    return getOfKind(__func__, pick, kRay, data, "data", &Pick::worldRay);
-}
-
-TQ3Status Q3WorldRayPick_SetData(TQ3PickObject pick, const TQ3WorldRayPickData* data)
-{
-    return setOfKind(__func__, pick, kRay, data, "data", &Pick::setWorldRay);
-}
+Q3_PICK_KIND_ENTRY_POINTS(WindowPoint, windowPoint, kPoint, Point, TQ3Point2D, point)
+Q3_PICK_KIND_ENTRY_POINTS(WindowRect, windowRect, kRect, Rect, TQ3Area, rect)
+Q3_PICK_KIND_ENTRY_POINTS(WorldRay, worldRay, kRay, Ray, TQ3Ray3D, ray)
 
 } // extern "C"
+
+#undef Q3_PICK_KIND_ENTRY_POINTS

@@ -4,29 +4,8 @@
 #include "api/StyleEntry.h"
 #include "style/ValueStyles.h"
 
-using namespace q3;
-using namespace q3::api;
-
 extern "C" {
 
-TQ3StyleObject Q3PickPartsStyle_New(TQ3PickParts parts)
-{
-    return newStyle<PickPartsStyle>(__func__, parts);
-}
-
-TQ3Status Q3PickPartsStyle_Submit(TQ3PickParts parts, TQ3ViewObject view)
-{
-    return submitStyle<PickPartsStyle>(__func__, parts, view);
-}
-
-TQ3Status Q3PickPartsStyle_Get(TQ3StyleObject pickPartsObject, TQ3PickParts* parts)
-{
-    return getStyle<PickPartsStyle>(__func__, pickPartsObject, "pickPartsObject", parts, "parts");
-}
-
-TQ3Status Q3PickPartsStyle_Set(TQ3StyleObject pickPartsObject, TQ3PickParts parts)
-{
-    return setStyle<PickPartsStyle>(__func__, pickPartsObject, "pickPartsObject", parts);
-}
+Q3_VALUE_STYLE_ENTRY_POINTS(PickParts, TQ3PickParts, pickPartsObject, parts)
 
 } // extern "C"

@@ -9,30 +9,7 @@ using namespace q3::api;
 
 extern "C" {
 
-TQ3GeometryObject Q3Point_New(const TQ3PointData* pointData)
-{
-    return newGeometry<Point>(__func__, pointData);
-}
-
-TQ3Status Q3Point_Submit(const TQ3PointData* pointData, TQ3ViewObject view)
-{
-    return submitGeometry<Point>(__func__, pointData, view);
-}
-
-TQ3Status Q3Point_GetData(TQ3GeometryObject point, TQ3PointData* pointData)
-{
-    return getGeometryData<Point>(__func__, point, pointData);
-}
-
-TQ3Status Q3Point_SetData(TQ3GeometryObject point, const TQ3PointData* pointData)
-{
-    return setGeometryData<Point>(__func__, point, pointData);
-}
-
-TQ3Status Q3Point_EmptyData(TQ3PointData* pointData)
-{
-    return emptyGeometryData<Point>(__func__, pointData);
-}
+Q3_DATA_GEOMETRY_ENTRY_POINTS(Point)
 
 TQ3Status Q3Point_SetPosition(TQ3GeometryObject point, const TQ3Point3D* position)
 {

@@ -33,6 +33,22 @@ TQ3Status setSetting(const char* function, TQ3RendererObject renderer, Write wri
 
 } // namespace
 
+// A C entry point cannot come from a template, so the Get/Set pairs of the
+// interactive renderer's settings are written once as a macro that defines
+// them through the templates above: Q3InteractiveRenderer_Set<Field> through
+// InteractiveRenderer::set<Field>, _Get<Field> of the Settings member
+// `member`, a Type called `param` in QD3DRenderer.h (the error messages name
+// it as every other call does).
+#define Q3_INTERACTIVE_SETTING_ENTRY_POINTS(Field, Type, param, member)                                         \
+    TQ3Status Q3InteractiveRenderer_Set##Field(TQ3RendererObject renderer, Type param)                          \
+    {                                                                                                           \
+        return setSetting(__func__, renderer, [&](InteractiveRenderer& r) { r.set##Field(param); });            \
+    }                                                                                                           \
+    TQ3Status Q3InteractiveRenderer_Get##Field(TQ3RendererObject renderer, Type* param)                         \
+    {                                                                                                           \
+        return getSetting(__func__, renderer, param, #param, &Settings::member);                                \
+    }
+
 extern "C" {
 
 TQ3RendererObject Q3Renderer_NewFromType(TQ3ObjectType rendererObjectType)
@@ -72,15 +88,7 @@ TQ3Status Q3RendererClass_GetNickNameString(TQ3ObjectType rendererClassType,
     });
 }
 
-TQ3Status Q3InteractiveRenderer_SetCSGEquation(TQ3RendererObject renderer, TQ3CSGEquation equation)
-{
-    return setSetting(__func__, renderer, [&](InteractiveRenderer& r) { r.setCSGEquation(equation); });
-}
-
-TQ3Status Q3InteractiveRenderer_GetCSGEquation(TQ3RendererObject renderer, TQ3CSGEquation* equation)
-{
-    return getSetting(__func__, renderer, equation, "equation", &Settings::csgEquation);
-}
+Q3_INTERACTIVE_SETTING_ENTRY_POINTS(CSGEquation, TQ3CSGEquation, equation, csgEquation)
 
 TQ3Status Q3InteractiveRenderer_SetPreferences(TQ3RendererObject renderer, long vendorID,
                                                long engineID)
@@ -100,42 +108,11 @@ TQ3Status Q3InteractiveRenderer_GetPreferences(TQ3RendererObject renderer, long*
     });
 }
 
-TQ3Status Q3InteractiveRenderer_SetDoubleBufferBypass(TQ3RendererObject renderer, TQ3Boolean bypass)
-{
-    return setSetting(__func__, renderer, [&](InteractiveRenderer& r) { r.setDoubleBufferBypass(bypass); });
-}
+Q3_INTERACTIVE_SETTING_ENTRY_POINTS(DoubleBufferBypass, TQ3Boolean, bypass, doubleBufferBypass)
 
-TQ3Status Q3InteractiveRenderer_GetDoubleBufferBypass(TQ3RendererObject renderer, TQ3Boolean* bypass)
-{
-    return getSetting(__func__, renderer, bypass, "bypass", &Settings::doubleBufferBypass);
-}
+Q3_INTERACTIVE_SETTING_ENTRY_POINTS(RAVEContextHints, unsigned long, RAVEContextHints, raveContextHints)
 
-TQ3Status Q3InteractiveRenderer_SetRAVEContextHints(TQ3RendererObject renderer,
-                                                    unsigned long RAVEContextHints)
-{
-    return setSetting(__func__, renderer,
-                      [&](InteractiveRenderer& r) { r.setRAVEContextHints(RAVEContextHints); });
-}
-
-TQ3Status Q3InteractiveRenderer_GetRAVEContextHints(TQ3RendererObject renderer,
-                                                    unsigned long* RAVEContextHints)
-{
-    return getSetting(__func__, renderer, RAVEContextHints, "RAVEContextHints", &Settings::raveContextHints);
-}
-
-TQ3Status Q3InteractiveRenderer_SetRAVETextureFilter(TQ3RendererObject renderer,
-                                                     unsigned long RAVEtextureFilterValue)
-{
-    return setSetting(__func__, renderer,
-                      [&](InteractiveRenderer& r) { r.setRAVETextureFilter(RAVEtextureFilterValue); });
-}
-
-TQ3Status Q3InteractiveRenderer_GetRAVETextureFilter(TQ3RendererObject renderer,
-                                                     unsigned long* RAVEtextureFilterValue)
-{
-    return getSetting(__func__, renderer, RAVEtextureFilterValue, "RAVEtextureFilterValue",
-                      &Settings::raveTextureFilter);
-}
+Q3_INTERACTIVE_SETTING_ENTRY_POINTS(RAVETextureFilter, unsigned long, RAVEtextureFilterValue, raveTextureFilter)
 
 TQ3Status Q3InteractiveRenderer_CountRAVEDrawContexts(TQ3RendererObject renderer, unsigned long* numRAVEContexts)
 {
@@ -202,3 +179,5 @@ TQ3Status Q3Renderer_SetConfigurationData(TQ3RendererObject renderer, unsigned c
 }
 
 } // extern "C"
+
+#undef Q3_INTERACTIVE_SETTING_ENTRY_POINTS

@@ -78,3 +78,50 @@ TQ3Status setStyle(const char* function, TQ3StyleObject style, const typename S:
 }
 
 } // namespace q3::api
+
+// A C entry point cannot come from a template, so the four entry points of a
+// style whose data is one value are written once below as a macro that
+// defines them through the templates above. Name names the class
+// (q3::<Name>Style) and the C prefix (Q3<Name>Style_); the parameter names
+// are QD3DStyle.h's, so the error messages name them as every other call does.
+
+/// Q3<Name>Style_New, _Submit, _Get and _Set of a style whose value is a Type
+/// given by value (an enumeration, a Boolean, an ID), called `object` and
+/// `value` in Apple's Get and Set.
+#define Q3_VALUE_STYLE_ENTRY_POINTS(Name, Type, object, value)                                                   \
+    TQ3StyleObject Q3##Name##Style_New(Type value)                                                               \
+    {                                                                                                            \
+        return q3::api::newStyle<q3::Name##Style>(__func__, value);                                              \
+    }                                                                                                            \
+    TQ3Status Q3##Name##Style_Submit(Type value, TQ3ViewObject view)                                             \
+    {                                                                                                            \
+        return q3::api::submitStyle<q3::Name##Style>(__func__, value, view);                                     \
+    }                                                                                                            \
+    TQ3Status Q3##Name##Style_Get(TQ3StyleObject object, Type* value)                                            \
+    {                                                                                                            \
+        return q3::api::getStyle<q3::Name##Style>(__func__, object, #object, value, #value);                     \
+    }                                                                                                            \
+    TQ3Status Q3##Name##Style_Set(TQ3StyleObject object, Type value)                                             \
+    {                                                                                                            \
+        return q3::api::setStyle<q3::Name##Style>(__func__, object, #object, value);                             \
+    }
+
+/// Q3<Name>Style_New, _Submit, _GetData and _SetData of a style whose data is
+/// a DataType given through a pointer (anti-alias, fog).
+#define Q3_DATA_STYLE_ENTRY_POINTS(Name, DataType)                                                               \
+    TQ3StyleObject Q3##Name##Style_New(const DataType* data)                                                     \
+    {                                                                                                            \
+        return q3::api::newStyle<q3::Name##Style>(__func__, data);                                               \
+    }                                                                                                            \
+    TQ3Status Q3##Name##Style_Submit(const DataType* data, TQ3ViewObject view)                                   \
+    {                                                                                                            \
+        return q3::api::submitStyle<q3::Name##Style>(__func__, data, view);                                      \
+    }                                                                                                            \
+    TQ3Status Q3##Name##Style_GetData(TQ3StyleObject styleObject, DataType* data)                                \
+    {                                                                                                            \
+        return q3::api::getStyle<q3::Name##Style>(__func__, styleObject, "styleObject", data, "data");           \
+    }                                                                                                            \
+    TQ3Status Q3##Name##Style_SetData(TQ3StyleObject styleObject, const DataType* data)                          \
+    {                                                                                                            \
+        return q3::api::setStyle<q3::Name##Style>(__func__, styleObject, data);                                  \
+    }

@@ -21,14 +21,12 @@ TQ3ObjectType Q3Texture_GetType(TQ3TextureObject texture)
 
 TQ3Status Q3Texture_GetWidth(TQ3TextureObject texture, unsigned long* width)
 {
-    return getValue<Texture>(__func__, texture, "texture", width, "width",
-                             [](const Texture& source) { return source.width(); });
+    return getValue<Texture>(__func__, texture, "texture", width, "width", &Texture::width);
 }
 
 TQ3Status Q3Texture_GetHeight(TQ3TextureObject texture, unsigned long* height)
 {
-    return getValue<Texture>(__func__, texture, "texture", height, "height",
-                             [](const Texture& source) { return source.height(); });
+    return getValue<Texture>(__func__, texture, "texture", height, "height", &Texture::height);
 }
 
 TQ3TextureObject Q3PixmapTexture_New(const TQ3StoragePixmap* pixmap)
@@ -36,31 +34,14 @@ TQ3TextureObject Q3PixmapTexture_New(const TQ3StoragePixmap* pixmap)
     return newShared<PixmapTexture>(__func__, pixmap, "pixmap");
 }
 
-TQ3Status Q3PixmapTexture_GetPixmap(TQ3TextureObject texture, TQ3StoragePixmap* pixmap)
-{
-    return getValue<PixmapTexture>(__func__, texture, "texture", pixmap, "pixmap",
-                                   [](const PixmapTexture& source) { return source.pixmap(); });
-}
-
-TQ3Status Q3PixmapTexture_SetPixmap(TQ3TextureObject texture, const TQ3StoragePixmap* pixmap)
-{
-    return setValue<PixmapTexture>(__func__, texture, "texture", pixmap, "pixmap", &PixmapTexture::setPixmap);
-}
+Q3_POINTER_VALUE_ENTRY_POINTS(Q3PixmapTexture, PixmapTexture, TQ3TextureObject, texture, Pixmap, TQ3StoragePixmap,
+                              pixmap)
 
 TQ3TextureObject Q3MipmapTexture_New(const TQ3Mipmap* mipmap)
 {
     return newShared<MipmapTexture>(__func__, mipmap, "mipmap");
 }
 
-TQ3Status Q3MipmapTexture_GetMipmap(TQ3TextureObject texture, TQ3Mipmap* mipmap)
-{
-    return getValue<MipmapTexture>(__func__, texture, "texture", mipmap, "mipmap",
-                                   [](const MipmapTexture& source) { return source.mipmap(); });
-}
-
-TQ3Status Q3MipmapTexture_SetMipmap(TQ3TextureObject texture, const TQ3Mipmap* mipmap)
-{
-    return setValue<MipmapTexture>(__func__, texture, "texture", mipmap, "mipmap", &MipmapTexture::setMipmap);
-}
+Q3_POINTER_VALUE_ENTRY_POINTS(Q3MipmapTexture, MipmapTexture, TQ3TextureObject, texture, Mipmap, TQ3Mipmap, mipmap)
 
 } // extern "C"

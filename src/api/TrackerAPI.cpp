@@ -71,6 +71,30 @@ TQ3Status change(const char* function, TQ3TrackerObject handle, TQ3ControllerRef
 
 } // namespace
 
+// A C entry point cannot come from a template, so the three calls of a
+// tracker's position and of its orientation are written once as a macro that
+// defines them through readChange and change: Q3Tracker_Get<Field> (the
+// value, called `param`, with the change since the serial number),
+// _Set<Field> and _Move<Field> (by a Delta), through Tracker::read<Field>,
+// set<Field> and move<Field>.
+#define Q3_TRACKER_CHANGE_ENTRY_POINTS(Field, Type, Delta, param)                                               \
+    TQ3Status Q3Tracker_Get##Field(TQ3TrackerObject trackerObject, Type* param, Delta* delta,                   \
+                                   TQ3Boolean* changed, unsigned long* serialNumber)                            \
+    {                                                                                                           \
+        return readChange(__func__, trackerObject, param, #param, delta, changed, serialNumber,                 \
+                          &Tracker::read##Field);                                                               \
+    }                                                                                                           \
+    TQ3Status Q3Tracker_Set##Field(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,              \
+                                   const Type* param)                                                           \
+    {                                                                                                           \
+        return change(__func__, trackerObject, controllerRef, param, #param, &Tracker::set##Field);             \
+    }                                                                                                           \
+    TQ3Status Q3Tracker_Move##Field(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,             \
+                                    const Delta* delta)                                                         \
+    {                                                                                                           \
+        return change(__func__, trackerObject, controllerRef, delta, "delta", &Tracker::move##Field);           \
+    }
+
 extern "C" {
 
 TQ3TrackerObject Q3Tracker_New(TQ3TrackerNotifyFunc notifyFunc)
@@ -127,43 +151,9 @@ TQ3Status Q3Tracker_ChangeButtons(TQ3TrackerObject trackerObject, TQ3ControllerR
     });
 }
 
-TQ3Status Q3Tracker_GetPosition(TQ3TrackerObject trackerObject, TQ3Point3D* position, TQ3Vector3D* delta,
-                                TQ3Boolean* changed, unsigned long* serialNumber)
-{
-    return readChange(__func__, trackerObject, position, "position", delta, changed, serialNumber,
-                      &Tracker::readPosition);
-}
+Q3_TRACKER_CHANGE_ENTRY_POINTS(Position, TQ3Point3D, TQ3Vector3D, position)
 
-TQ3Status Q3Tracker_SetPosition(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
-                                const TQ3Point3D* position)
-{
-    return change(__func__, trackerObject, controllerRef, position, "position", &Tracker::setPosition);
-}
-
-TQ3Status Q3Tracker_MovePosition(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
-                                 const TQ3Vector3D* delta)
-{
-    return change(__func__, trackerObject, controllerRef, delta, "delta", &Tracker::movePosition);
-}
-
-TQ3Status Q3Tracker_GetOrientation(TQ3TrackerObject trackerObject, TQ3Quaternion* orientation,
-                                   TQ3Quaternion* delta, TQ3Boolean* changed, unsigned long* serialNumber)
-{
-    return readChange(__func__, trackerObject, orientation, "orientation", delta, changed, serialNumber,
-                      &Tracker::readOrientation);
-}
-
-TQ3Status Q3Tracker_SetOrientation(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
-                                   const TQ3Quaternion* orientation)
-{
-    return change(__func__, trackerObject, controllerRef, orientation, "orientation", &Tracker::setOrientation);
-}
-
-TQ3Status Q3Tracker_MoveOrientation(TQ3TrackerObject trackerObject, TQ3ControllerRef controllerRef,
-                                    const TQ3Quaternion* delta)
-{
-    return change(__func__, trackerObject, controllerRef, delta, "delta", &Tracker::moveOrientation);
-}
+Q3_TRACKER_CHANGE_ENTRY_POINTS(Orientation, TQ3Quaternion, TQ3Quaternion, orientation)
 
 TQ3Status Q3Tracker_SetEventCoordinates(TQ3TrackerObject trackerObject, unsigned long timeStamp,
                                         unsigned long buttons, const TQ3Point3D* position,
@@ -187,3 +177,5 @@ TQ3Status Q3Tracker_GetEventCoordinates(TQ3TrackerObject trackerObject, unsigned
 }
 
 } // extern "C"
+
+#undef Q3_TRACKER_CHANGE_ENTRY_POINTS

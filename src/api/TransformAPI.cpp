@@ -34,9 +34,6 @@ void changeData(TQ3TransformObject transform, Change change)
     target.setValue(data);
 }
 
-using PointData = TQ3RotateAboutPointTransformData;
-using AxisData = TQ3RotateAboutAxisTransformData;
-
 // A Get of one field of a transform's data: the handle, then the pointer.
 template <class T, class Data, class Value>
 TQ3Status getField(const char* function, TQ3TransformObject transform, Value* out, const char* outName,
@@ -70,7 +67,78 @@ TQ3Status setFieldFrom(const char* function, TQ3TransformObject transform, const
     });
 }
 
+// A Set of a rotate transform's axis or angle, through the member function
+// that checks it.
+template <class Value, class Param>
+TQ3Status setRotate(const char* function, TQ3TransformObject transform, const Value& value,
+                    void (RotateTransform::*write)(Param))
+{
+    return guardStatus(function, [&] { (lookup<RotateTransform>(transform, "transform").*write)(value); });
+}
+
 } // namespace
+
+// A C entry point cannot come from a template, so each family of entry points
+// below is written once as a macro that defines them through the templates
+// above. Name names the class (q3::<Name>Transform) and the C prefix
+// (Q3<Name>Transform_); the parameter names are QD3DTransform.h's, so the
+// error messages name them as every other call does.
+
+/// Q3<Name>Transform_New, _Submit, _Set and _Get of a transform whose state
+/// is one Type, called `param` in Apple's declarations.
+#define Q3_VALUE_TRANSFORM_ENTRY_POINTS(Name, Type, param)                                                      \
+    Q3_TRANSFORM_STATE_ENTRY_POINTS(Name, Set, Get, Type, param)
+
+/// Q3<Name>Transform_New, _Submit, _SetData and _GetData of a transform whose
+/// state is a TQ3<Name>TransformData, called `data`.
+#define Q3_DATA_TRANSFORM_ENTRY_POINTS(Name)                                                                    \
+    Q3_TRANSFORM_STATE_ENTRY_POINTS(Name, SetData, GetData, TQ3##Name##TransformData, data)
+
+#define Q3_TRANSFORM_STATE_ENTRY_POINTS(Name, Set, Get, Type, param)                                            \
+    TQ3TransformObject Q3##Name##Transform_New(const Type* param)                                               \
+    {                                                                                                           \
+        return newShared<Name##Transform>(__func__, param, #param);                                             \
+    }                                                                                                           \
+    TQ3Status Q3##Name##Transform_Submit(const Type* param, TQ3ViewObject view)                                 \
+    {                                                                                                           \
+        return guardStatus(__func__, [&] { submitTransient<Name##Transform>(param, #param, view); });          \
+    }                                                                                                           \
+    TQ3Status Q3##Name##Transform_##Set(TQ3TransformObject transform, const Type* param)                        \
+    {                                                                                                           \
+        return setValue<Name##Transform>(__func__, transform, "transform", param, #param,                       \
+                                         &Name##Transform::setValue);                                           \
+    }                                                                                                           \
+    TQ3Status Q3##Name##Transform_##Get(TQ3TransformObject transform, Type* param)                              \
+    {                                                                                                           \
+        return getValue<Name##Transform>(__func__, transform, "transform", param, #param,                       \
+                                         &Name##Transform::value);                                              \
+    }
+
+/// Q3<Name>Transform_Set<Field> and _Get<Field> of the member `member` of
+/// TQ3<Name>TransformData, a Type that Set takes by value (an axis, an
+/// angle), called `param` in Apple's declarations.
+#define Q3_TRANSFORM_VALUE_FIELD_ENTRY_POINTS(Name, Field, Type, param, member)                                 \
+    TQ3Status Q3##Name##Transform_Set##Field(TQ3TransformObject transform, Type param)                          \
+    {                                                                                                           \
+        return setField<Name##Transform>(__func__, transform, param, &TQ3##Name##TransformData::member);        \
+    }                                                                                                           \
+    TQ3Status Q3##Name##Transform_Get##Field(TQ3TransformObject transform, Type* param)                         \
+    {                                                                                                           \
+        return getField<Name##Transform>(__func__, transform, param, #param, &TQ3##Name##TransformData::member); \
+    }
+
+/// The same for a member that Set takes through a pointer (a point, a
+/// vector).
+#define Q3_TRANSFORM_POINTER_FIELD_ENTRY_POINTS(Name, Field, Type, param, member)                               \
+    TQ3Status Q3##Name##Transform_Set##Field(TQ3TransformObject transform, const Type* param)                   \
+    {                                                                                                           \
+        return setFieldFrom<Name##Transform>(__func__, transform, param, #param,                                \
+                                             &TQ3##Name##TransformData::member);                                \
+    }                                                                                                           \
+    TQ3Status Q3##Name##Transform_Get##Field(TQ3TransformObject transform, Type* param)                         \
+    {                                                                                                           \
+        return getField<Name##Transform>(__func__, transform, param, #param, &TQ3##Name##TransformData::member); \
+    }
 
 extern "C" {
 
@@ -96,246 +164,43 @@ TQ3Status Q3Transform_Submit(TQ3TransformObject transform, TQ3ViewObject view)
     });
 }
 
-TQ3TransformObject Q3MatrixTransform_New(const TQ3Matrix4x4* matrix)
-{
-    return newShared<MatrixTransform>(__func__, matrix, "matrix");
-}
+Q3_VALUE_TRANSFORM_ENTRY_POINTS(Matrix, TQ3Matrix4x4, matrix)
+Q3_VALUE_TRANSFORM_ENTRY_POINTS(Translate, TQ3Vector3D, translate)
+Q3_VALUE_TRANSFORM_ENTRY_POINTS(Scale, TQ3Vector3D, scale)
+Q3_VALUE_TRANSFORM_ENTRY_POINTS(Quaternion, TQ3Quaternion, quaternion)
+Q3_DATA_TRANSFORM_ENTRY_POINTS(Rotate)
 
-TQ3Status Q3MatrixTransform_Submit(const TQ3Matrix4x4* matrix, TQ3ViewObject view)
-{
-    return guardStatus(__func__, [&] { submitTransient<MatrixTransform>(matrix, "matrix", view); });
-}
-
-TQ3Status Q3MatrixTransform_Set(TQ3TransformObject transform, const TQ3Matrix4x4* matrix)
-{
-    return setValue<MatrixTransform>(__func__, transform, "transform", matrix, "matrix", &MatrixTransform::setValue);
-}
-
-TQ3Status Q3MatrixTransform_Get(TQ3TransformObject transform, TQ3Matrix4x4* matrix)
-{
-    return getValue<MatrixTransform>(__func__, transform, "transform", matrix, "matrix",
-                                     &MatrixTransform::value);
-}
-
-TQ3TransformObject Q3TranslateTransform_New(const TQ3Vector3D* translate)
-{
-    return newShared<TranslateTransform>(__func__, translate, "translate");
-}
-
-TQ3Status Q3TranslateTransform_Submit(const TQ3Vector3D* translate, TQ3ViewObject view)
-{
-    return guardStatus(__func__,
-                       [&] { submitTransient<TranslateTransform>(translate, "translate", view); });
-}
-
-TQ3Status Q3TranslateTransform_Set(TQ3TransformObject transform, const TQ3Vector3D* translate)
-{
-    return setValue<TranslateTransform>(__func__, transform, "transform", translate, "translate",
-                                        &TranslateTransform::setValue);
-}
-
-TQ3Status Q3TranslateTransform_Get(TQ3TransformObject transform, TQ3Vector3D* translate)
-{
-    return getValue<TranslateTransform>(__func__, transform, "transform", translate, "translate",
-                                        &TranslateTransform::value);
-}
-
-TQ3TransformObject Q3ScaleTransform_New(const TQ3Vector3D* scale)
-{
-    return newShared<ScaleTransform>(__func__, scale, "scale");
-}
-
-TQ3Status Q3ScaleTransform_Submit(const TQ3Vector3D* scale, TQ3ViewObject view)
-{
-    return guardStatus(__func__, [&] { submitTransient<ScaleTransform>(scale, "scale", view); });
-}
-
-TQ3Status Q3ScaleTransform_Set(TQ3TransformObject transform, const TQ3Vector3D* scale)
-{
-    return setValue<ScaleTransform>(__func__, transform, "transform", scale, "scale", &ScaleTransform::setValue);
-}
-
-TQ3Status Q3ScaleTransform_Get(TQ3TransformObject transform, TQ3Vector3D* scale)
-{
-    return getValue<ScaleTransform>(__func__, transform, "transform", scale, "scale",
-                                    &ScaleTransform::value);
-}
-
-TQ3TransformObject Q3RotateTransform_New(const TQ3RotateTransformData* data)
-{
-    return newShared<RotateTransform>(__func__, data, "data");
-}
-
-TQ3Status Q3RotateTransform_Submit(const TQ3RotateTransformData* data, TQ3ViewObject view)
-{
-    return guardStatus(__func__, [&] { submitTransient<RotateTransform>(data, "data", view); });
-}
-
-TQ3Status Q3RotateTransform_SetData(TQ3TransformObject transform,
-                                    const TQ3RotateTransformData* data)
-{
-    return setValue<RotateTransform>(__func__, transform, "transform", data, "data", &RotateTransform::setValue);
-}
-
-TQ3Status Q3RotateTransform_GetData(TQ3TransformObject transform, TQ3RotateTransformData* data)
-{
-    return getValue<RotateTransform>(__func__, transform, "transform", data, "data",
-                                     &RotateTransform::value);
-}
-
+// A rotate transform's axis and angle are set through its own checks (the
+// axis by reference: it may hold any int until setAxis checks it).
 TQ3Status Q3RotateTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
 {
-    // axis goes on by reference: it may hold any int until setAxis checks it.
-    return guardStatus(__func__,
-                       [&] { lookup<RotateTransform>(transform, "transform").setAxis(axis); });
+    return setRotate(__func__, transform, axis, &RotateTransform::setAxis);
 }
 
 TQ3Status Q3RotateTransform_GetAxis(TQ3TransformObject transform, TQ3Axis* axis)
 {
-    return getValue<RotateTransform>(__func__, transform, "transform", axis, "axis",
-                                     [](const RotateTransform& t) { return t.value().axis; });
+    return getField<RotateTransform>(__func__, transform, axis, "axis", &TQ3RotateTransformData::axis);
 }
 
 TQ3Status Q3RotateTransform_SetAngle(TQ3TransformObject transform, float radians)
 {
-    return guardStatus(__func__,
-                       [&] { lookup<RotateTransform>(transform, "transform").setAngle(radians); });
+    return setRotate(__func__, transform, radians, &RotateTransform::setAngle);
 }
 
 TQ3Status Q3RotateTransform_GetAngle(TQ3TransformObject transform, float* radians)
 {
-    return getValue<RotateTransform>(__func__, transform, "transform", radians, "radians",
-                                     [](const RotateTransform& t) { return t.value().radians; });
+    return getField<RotateTransform>(__func__, transform, radians, "radians", &TQ3RotateTransformData::radians);
 }
 
-TQ3TransformObject Q3QuaternionTransform_New(const TQ3Quaternion* quaternion)
-{
-    return newShared<QuaternionTransform>(__func__, quaternion, "quaternion");
-}
+Q3_DATA_TRANSFORM_ENTRY_POINTS(RotateAboutPoint)
+Q3_TRANSFORM_VALUE_FIELD_ENTRY_POINTS(RotateAboutPoint, Axis, TQ3Axis, axis, axis)
+Q3_TRANSFORM_VALUE_FIELD_ENTRY_POINTS(RotateAboutPoint, Angle, float, radians, radians)
+Q3_TRANSFORM_POINTER_FIELD_ENTRY_POINTS(RotateAboutPoint, AboutPoint, TQ3Point3D, about, about)
 
-TQ3Status Q3QuaternionTransform_Submit(const TQ3Quaternion* quaternion, TQ3ViewObject view)
-{
-    return guardStatus(__func__,
-                       [&] { submitTransient<QuaternionTransform>(quaternion, "quaternion", view); });
-}
-
-TQ3Status Q3QuaternionTransform_Set(TQ3TransformObject transform, const TQ3Quaternion* quaternion)
-{
-    return setValue<QuaternionTransform>(__func__, transform, "transform", quaternion, "quaternion",
-                                         &QuaternionTransform::setValue);
-}
-
-TQ3Status Q3QuaternionTransform_Get(TQ3TransformObject transform, TQ3Quaternion* quaternion)
-{
-    return getValue<QuaternionTransform>(__func__, transform, "transform", quaternion, "quaternion",
-                                         &QuaternionTransform::value);
-}
-
-TQ3TransformObject Q3RotateAboutPointTransform_New(const TQ3RotateAboutPointTransformData* data)
-{
-    return newShared<RotateAboutPointTransform>(__func__, data, "data");
-}
-
-TQ3Status Q3RotateAboutPointTransform_Submit(const TQ3RotateAboutPointTransformData* data, TQ3ViewObject view)
-{
-    return guardStatus(__func__, [&] { submitTransient<RotateAboutPointTransform>(data, "data", view); });
-}
-
-TQ3Status Q3RotateAboutPointTransform_SetData(TQ3TransformObject transform,
-                                              const TQ3RotateAboutPointTransformData* data)
-{
-    return setValue<RotateAboutPointTransform>(__func__, transform, "transform", data, "data",
-                                               &RotateAboutPointTransform::setValue);
-}
-
-TQ3Status Q3RotateAboutPointTransform_GetData(TQ3TransformObject transform, TQ3RotateAboutPointTransformData* data)
-{
-    return getValue<RotateAboutPointTransform>(__func__, transform, "transform", data, "data",
-                                               &RotateAboutPointTransform::value);
-}
-
-TQ3Status Q3RotateAboutPointTransform_SetAxis(TQ3TransformObject transform, TQ3Axis axis)
-{
-    return setField<RotateAboutPointTransform>(__func__, transform, axis, &PointData::axis);
-}
-
-TQ3Status Q3RotateAboutPointTransform_GetAxis(TQ3TransformObject transform, TQ3Axis* axis)
-{
-    return getField<RotateAboutPointTransform>(__func__, transform, axis, "axis", &PointData::axis);
-}
-
-TQ3Status Q3RotateAboutPointTransform_SetAngle(TQ3TransformObject transform, float radians)
-{
-    return setField<RotateAboutPointTransform>(__func__, transform, radians, &PointData::radians);
-}
-
-TQ3Status Q3RotateAboutPointTransform_GetAngle(TQ3TransformObject transform, float* radians)
-{
-    return getField<RotateAboutPointTransform>(__func__, transform, radians, "radians", &PointData::radians);
-}
-
-TQ3Status Q3RotateAboutPointTransform_SetAboutPoint(TQ3TransformObject transform, const TQ3Point3D* about)
-{
-    return setFieldFrom<RotateAboutPointTransform>(__func__, transform, about, "about", &PointData::about);
-}
-
-TQ3Status Q3RotateAboutPointTransform_GetAboutPoint(TQ3TransformObject transform, TQ3Point3D* about)
-{
-    return getField<RotateAboutPointTransform>(__func__, transform, about, "about", &PointData::about);
-}
-
-TQ3TransformObject Q3RotateAboutAxisTransform_New(const TQ3RotateAboutAxisTransformData* data)
-{
-    return newShared<RotateAboutAxisTransform>(__func__, data, "data");
-}
-
-TQ3Status Q3RotateAboutAxisTransform_Submit(const TQ3RotateAboutAxisTransformData* data, TQ3ViewObject view)
-{
-    return guardStatus(__func__, [&] { submitTransient<RotateAboutAxisTransform>(data, "data", view); });
-}
-
-TQ3Status Q3RotateAboutAxisTransform_SetData(TQ3TransformObject transform,
-                                             const TQ3RotateAboutAxisTransformData* data)
-{
-    return setValue<RotateAboutAxisTransform>(__func__, transform, "transform", data, "data",
-                                              &RotateAboutAxisTransform::setValue);
-}
-
-TQ3Status Q3RotateAboutAxisTransform_GetData(TQ3TransformObject transform, TQ3RotateAboutAxisTransformData* data)
-{
-    return getValue<RotateAboutAxisTransform>(__func__, transform, "transform", data, "data",
-                                              &RotateAboutAxisTransform::value);
-}
-
-TQ3Status Q3RotateAboutAxisTransform_SetOrientation(TQ3TransformObject transform, const TQ3Vector3D* axis)
-{
-    return setFieldFrom<RotateAboutAxisTransform>(__func__, transform, axis, "axis", &AxisData::orientation);
-}
-
-TQ3Status Q3RotateAboutAxisTransform_GetOrientation(TQ3TransformObject transform, TQ3Vector3D* axis)
-{
-    return getField<RotateAboutAxisTransform>(__func__, transform, axis, "axis", &AxisData::orientation);
-}
-
-TQ3Status Q3RotateAboutAxisTransform_SetAngle(TQ3TransformObject transform, float radians)
-{
-    return setField<RotateAboutAxisTransform>(__func__, transform, radians, &AxisData::radians);
-}
-
-TQ3Status Q3RotateAboutAxisTransform_GetAngle(TQ3TransformObject transform, float* radians)
-{
-    return getField<RotateAboutAxisTransform>(__func__, transform, radians, "radians", &AxisData::radians);
-}
-
-TQ3Status Q3RotateAboutAxisTransform_SetOrigin(TQ3TransformObject transform, const TQ3Point3D* origin)
-{
-    return setFieldFrom<RotateAboutAxisTransform>(__func__, transform, origin, "origin", &AxisData::origin);
-}
-
-TQ3Status Q3RotateAboutAxisTransform_GetOrigin(TQ3TransformObject transform, TQ3Point3D* origin)
-{
-    return getField<RotateAboutAxisTransform>(__func__, transform, origin, "origin", &AxisData::origin);
-}
+Q3_DATA_TRANSFORM_ENTRY_POINTS(RotateAboutAxis)
+Q3_TRANSFORM_POINTER_FIELD_ENTRY_POINTS(RotateAboutAxis, Orientation, TQ3Vector3D, axis, orientation)
+Q3_TRANSFORM_VALUE_FIELD_ENTRY_POINTS(RotateAboutAxis, Angle, float, radians, radians)
+Q3_TRANSFORM_POINTER_FIELD_ENTRY_POINTS(RotateAboutAxis, Origin, TQ3Point3D, origin, origin)
 
 TQ3TransformObject Q3ResetTransform_New(void)
 {
@@ -352,3 +217,9 @@ TQ3Status Q3ResetTransform_Submit(TQ3ViewObject view)
 }
 
 } // extern "C"
+
+#undef Q3_VALUE_TRANSFORM_ENTRY_POINTS
+#undef Q3_DATA_TRANSFORM_ENTRY_POINTS
+#undef Q3_TRANSFORM_STATE_ENTRY_POINTS
+#undef Q3_TRANSFORM_VALUE_FIELD_ENTRY_POINTS
+#undef Q3_TRANSFORM_POINTER_FIELD_ENTRY_POINTS

@@ -19,19 +19,52 @@ using namespace q3::api;
 
 namespace {
 
-// The graphics state Get calls: the view (which must run a loop), then the
-// output pointer, then *out = read(state). Nothing is written on failure.
+// The Get calls of what a view computes as it runs: the view, then the output
+// pointer, then *out = read(view), which may refuse a view outside a loop.
+// Nothing is written on failure.
 template <class Value, class Read>
-TQ3Status readState(const char* function, TQ3ViewObject view, Value* out, const char* outName, Read read)
+TQ3Status readView(const char* function, TQ3ViewObject view, Value* out, const char* outName, Read read)
 {
     return guardStatus(function, [&] {
         View& source = lookup<View>(view, "view");
         requireNonNull(out, outName);
-        *out = read(source.graphicsState());
+        *out = std::invoke(read, source);
+    });
+}
+
+// The graphics state Get calls: readView of the state (the view must run a
+// loop).
+template <class Value, class Read>
+TQ3Status readState(const char* function, TQ3ViewObject view, Value* out, const char* outName, Read read)
+{
+    return readView(function, view, out, outName, [&](View& source) { return read(source.graphicsState()); });
+}
+
+// A bounding loop's end: the view, then the result pointer, then end(view,
+// *result).
+template <class Bounds>
+TQ3ViewStatus endBounds(const char* function, TQ3ViewObject view, Bounds* result,
+                        TQ3ViewStatus (View::*end)(Bounds&))
+{
+    return guard(function, kQ3ViewStatusError, [&] {
+        View& target = lookup<View>(view, "view");
+        requireNonNull(result, "result");
+        return (target.*end)(*result);
     });
 }
 
 } // namespace
+
+// A C entry point cannot come from a template, so the Get calls of the style
+// states are written once as a macro that defines them through readState:
+// Q3View_Get<Style>StyleState of the DrawState member `member`, a Type called
+// `param` in QD3DView.h (the error messages name it as every other call does).
+#define Q3_VIEW_STYLE_STATE_ENTRY_POINT(Style, Type, param, member)                                             \
+    TQ3Status Q3View_Get##Style##StyleState(TQ3ViewObject view, Type* param)                                    \
+    {                                                                                                           \
+        return readState(__func__, view, param, #param,                                                         \
+                         [](const GraphicsState& state) { return state.draw.member; });                         \
+    }
 
 extern "C" {
 
@@ -69,15 +102,7 @@ TQ3Status Q3View_SetRendererByType(TQ3ViewObject view, TQ3ObjectType theType)
     return guardStatus(__func__, [&] { lookup<View>(view, "view").setRendererByType(theType); });
 }
 
-TQ3Status Q3View_SetRenderer(TQ3ViewObject view, TQ3RendererObject renderer)
-{
-    return setHeld(__func__, view, "view", renderer, "renderer", &View::setRenderer);
-}
-
-TQ3Status Q3View_GetRenderer(TQ3ViewObject view, TQ3RendererObject* renderer)
-{
-    return getHeld(__func__, view, "view", renderer, "renderer", &View::renderer);
-}
+Q3_HELD_ENTRY_POINTS(Q3View, View, TQ3ViewObject, view, Renderer, TQ3RendererObject, renderer, setHeld)
 
 TQ3Status Q3View_StartRendering(TQ3ViewObject view)
 {
@@ -96,32 +121,22 @@ TQ3Status Q3View_Sync(TQ3ViewObject view)
 
 TQ3Status Q3View_StartBoundingBox(TQ3ViewObject view, TQ3ComputeBounds computeBounds)
 {
-    return guardStatus(__func__,
-                       [&] { lookup<View>(view, "view").startBoundingBox(computeBounds); });
+    return setDirect<View>(__func__, view, "view", computeBounds, &View::startBoundingBox);
 }
 
 TQ3ViewStatus Q3View_EndBoundingBox(TQ3ViewObject view, TQ3BoundingBox* result)
 {
-    return guard(__func__, kQ3ViewStatusError, [&] {
-        View& target = lookup<View>(view, "view");
-        requireNonNull(result, "result");
-        return target.endBoundingBox(*result);
-    });
+    return endBounds(__func__, view, result, &View::endBoundingBox);
 }
 
 TQ3Status Q3View_StartBoundingSphere(TQ3ViewObject view, TQ3ComputeBounds computeBounds)
 {
-    return guardStatus(__func__,
-                       [&] { lookup<View>(view, "view").startBoundingSphere(computeBounds); });
+    return setDirect<View>(__func__, view, "view", computeBounds, &View::startBoundingSphere);
 }
 
 TQ3ViewStatus Q3View_EndBoundingSphere(TQ3ViewObject view, TQ3BoundingSphere* result)
 {
-    return guard(__func__, kQ3ViewStatusError, [&] {
-        View& target = lookup<View>(view, "view");
-        requireNonNull(result, "result");
-        return target.endBoundingSphere(*result);
-    });
+    return endBounds(__func__, view, result, &View::endBoundingSphere);
 }
 
 TQ3Status Q3View_StartPicking(TQ3ViewObject view, TQ3PickObject pick)
@@ -137,43 +152,18 @@ TQ3ViewStatus Q3View_EndPicking(TQ3ViewObject view)
     return guard(__func__, kQ3ViewStatusError, [&] { return lookup<View>(view, "view").endPicking(); });
 }
 
-TQ3Status Q3View_GetCamera(TQ3ViewObject view, TQ3CameraObject* camera)
-{
-    return getHeld(__func__, view, "view", camera, "camera", &View::camera);
-}
+Q3_HELD_ENTRY_POINTS(Q3View, View, TQ3ViewObject, view, Camera, TQ3CameraObject, camera, setHeld)
 
-TQ3Status Q3View_SetCamera(TQ3ViewObject view, TQ3CameraObject camera)
-{
-    return setHeld(__func__, view, "view", camera, "camera", &View::setCamera);
-}
-
-TQ3Status Q3View_SetDrawContext(TQ3ViewObject view, TQ3DrawContextObject drawContext)
-{
-    return setHeld(__func__, view, "view", drawContext, "drawContext", &View::setDrawContext);
-}
-
-TQ3Status Q3View_GetDrawContext(TQ3ViewObject view, TQ3DrawContextObject* drawContext)
-{
-    return getHeld(__func__, view, "view", drawContext, "drawContext", &View::drawContext);
-}
+Q3_HELD_ENTRY_POINTS(Q3View, View, TQ3ViewObject, view, DrawContext, TQ3DrawContextObject, drawContext, setHeld)
 
 TQ3Status Q3View_GetLocalToWorldMatrixState(TQ3ViewObject view, TQ3Matrix4x4* matrix)
 {
-    return guardStatus(__func__, [&] {
-        View& source = lookup<View>(view, "view");
-        requireNonNull(matrix, "matrix");
-        *matrix = source.localToWorldState();
-    });
+    return readView(__func__, view, matrix, "matrix", &View::localToWorldState);
 }
 
-TQ3Status Q3View_GetSubdivisionStyleState(TQ3ViewObject view,
-                                          TQ3SubdivisionStyleData* subdivisionStyle)
+TQ3Status Q3View_GetSubdivisionStyleState(TQ3ViewObject view, TQ3SubdivisionStyleData* subdivisionStyle)
 {
-    return guardStatus(__func__, [&] {
-        View& source = lookup<View>(view, "view");
-        requireNonNull(subdivisionStyle, "subdivisionStyle");
-        *subdivisionStyle = source.subdivisionStyleState();
-    });
+    return readView(__func__, view, subdivisionStyle, "subdivisionStyle", &View::subdivisionStyleState);
 }
 
 TQ3Status Q3Push_Submit(TQ3ViewObject view)
@@ -186,15 +176,7 @@ TQ3Status Q3Pop_Submit(TQ3ViewObject view)
     return guardStatus(__func__, [&] { lookup<View>(view, "view").pop(); });
 }
 
-TQ3Status Q3View_SetLightGroup(TQ3ViewObject view, TQ3GroupObject lightGroup)
-{
-    return setHeldOptional(__func__, view, "view", lightGroup, "lightGroup", &View::setLightGroup);
-}
-
-TQ3Status Q3View_GetLightGroup(TQ3ViewObject view, TQ3GroupObject* lightGroup)
-{
-    return getHeld(__func__, view, "view", lightGroup, "lightGroup", &View::lightGroup);
-}
+Q3_HELD_ENTRY_POINTS(Q3View, View, TQ3ViewObject, view, LightGroup, TQ3GroupObject, lightGroup, setHeldOptional)
 
 TQ3Status Q3View_Flush(TQ3ViewObject view)
 {
@@ -203,39 +185,19 @@ TQ3Status Q3View_Flush(TQ3ViewObject view)
 
 TQ3Status Q3View_GetWorldToFrustumMatrixState(TQ3ViewObject view, TQ3Matrix4x4* matrix)
 {
-    return guardStatus(__func__, [&] {
-        View& source = lookup<View>(view, "view");
-        requireNonNull(matrix, "matrix");
-        *matrix = source.worldToFrustumState();
-    });
+    return readView(__func__, view, matrix, "matrix", &View::worldToFrustumState);
 }
 
 TQ3Status Q3View_GetFrustumToWindowMatrixState(TQ3ViewObject view, TQ3Matrix4x4* matrix)
 {
-    return guardStatus(__func__, [&] {
-        View& source = lookup<View>(view, "view");
-        requireNonNull(matrix, "matrix");
-        *matrix = source.frustumToWindowState();
-    });
+    return readView(__func__, view, matrix, "matrix", &View::frustumToWindowState);
 }
 
-TQ3Status Q3View_GetBackfacingStyleState(TQ3ViewObject view, TQ3BackfacingStyle* backfacingStyle)
-{
-    return readState(__func__, view, backfacingStyle, "backfacingStyle",
-                     [](const GraphicsState& state) { return state.draw.backfacing; });
-}
+Q3_VIEW_STYLE_STATE_ENTRY_POINT(Backfacing, TQ3BackfacingStyle, backfacingStyle, backfacing)
 
-TQ3Status Q3View_GetInterpolationStyleState(TQ3ViewObject view, TQ3InterpolationStyle* interpolationType)
-{
-    return readState(__func__, view, interpolationType, "interpolationType",
-                     [](const GraphicsState& state) { return state.draw.interpolation; });
-}
+Q3_VIEW_STYLE_STATE_ENTRY_POINT(Interpolation, TQ3InterpolationStyle, interpolationType, interpolation)
 
-TQ3Status Q3View_GetFillStyleState(TQ3ViewObject view, TQ3FillStyle* fillStyle)
-{
-    return readState(__func__, view, fillStyle, "fillStyle",
-                     [](const GraphicsState& state) { return state.draw.fill; });
-}
+Q3_VIEW_STYLE_STATE_ENTRY_POINT(Fill, TQ3FillStyle, fillStyle, fill)
 
 TQ3Status Q3View_GetHighlightStyleState(TQ3ViewObject view, TQ3AttributeSet* highlightStyle)
 {
@@ -244,35 +206,15 @@ TQ3Status Q3View_GetHighlightStyleState(TQ3ViewObject view, TQ3AttributeSet* hig
     });
 }
 
-TQ3Status Q3View_GetOrientationStyleState(TQ3ViewObject view, TQ3OrientationStyle* fontFacingDirectionStyle)
-{
-    return readState(__func__, view, fontFacingDirectionStyle, "fontFacingDirectionStyle",
-                     [](const GraphicsState& state) { return state.draw.orientation; });
-}
+Q3_VIEW_STYLE_STATE_ENTRY_POINT(Orientation, TQ3OrientationStyle, fontFacingDirectionStyle, orientation)
 
-TQ3Status Q3View_GetReceiveShadowsStyleState(TQ3ViewObject view, TQ3Boolean* receives)
-{
-    return readState(__func__, view, receives, "receives",
-                     [](const GraphicsState& state) { return state.draw.receiveShadows; });
-}
+Q3_VIEW_STYLE_STATE_ENTRY_POINT(ReceiveShadows, TQ3Boolean, receives, receiveShadows)
 
-TQ3Status Q3View_GetPickIDStyleState(TQ3ViewObject view, unsigned long* pickIDStyle)
-{
-    return readState(__func__, view, pickIDStyle, "pickIDStyle",
-                     [](const GraphicsState& state) { return state.draw.pickID; });
-}
+Q3_VIEW_STYLE_STATE_ENTRY_POINT(PickID, unsigned long, pickIDStyle, pickID)
 
-TQ3Status Q3View_GetPickPartsStyleState(TQ3ViewObject view, TQ3PickParts* pickPartsStyle)
-{
-    return readState(__func__, view, pickPartsStyle, "pickPartsStyle",
-                     [](const GraphicsState& state) { return state.draw.pickParts; });
-}
+Q3_VIEW_STYLE_STATE_ENTRY_POINT(PickParts, TQ3PickParts, pickPartsStyle, pickParts)
 
-TQ3Status Q3View_GetAntiAliasStyleState(TQ3ViewObject view, TQ3AntiAliasStyleData* antiAliasData)
-{
-    return readState(__func__, view, antiAliasData, "antiAliasData",
-                     [](const GraphicsState& state) { return state.draw.antiAlias; });
-}
+Q3_VIEW_STYLE_STATE_ENTRY_POINT(AntiAlias, TQ3AntiAliasStyleData, antiAliasData, antiAlias)
 
 TQ3Status Q3View_GetDefaultAttributeSet(TQ3ViewObject view, TQ3AttributeSet* attributeSet)
 {
@@ -344,3 +286,5 @@ TQ3Status Q3StateOperator_Submit(TQ3StateOperatorObject stateOperator, TQ3ViewOb
 }
 
 } // extern "C"
+
+#undef Q3_VIEW_STYLE_STATE_ENTRY_POINT

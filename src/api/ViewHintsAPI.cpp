@@ -12,10 +12,6 @@
 using namespace q3;
 using namespace q3::api;
 
-namespace {
-
-} // namespace
-
 extern "C" {
 
 TQ3ViewHintsObject Q3ViewHints_New(TQ3ViewObject view)
@@ -25,55 +21,25 @@ TQ3ViewHintsObject Q3ViewHints_New(TQ3ViewObject view)
     });
 }
 
-TQ3Status Q3ViewHints_SetRenderer(TQ3ViewHintsObject viewHints, TQ3RendererObject renderer)
-{
-    return setHeld(__func__, viewHints, "viewHints", renderer, "renderer", &ViewHints::setRenderer);
-}
+Q3_HELD_ENTRY_POINTS(Q3ViewHints, ViewHints, TQ3ViewHintsObject, viewHints, Renderer, TQ3RendererObject, renderer,
+                     setHeld)
 
-TQ3Status Q3ViewHints_GetRenderer(TQ3ViewHintsObject viewHints, TQ3RendererObject* renderer)
-{
-    return getHeld(__func__, viewHints, "viewHints", renderer, "renderer", &ViewHints::renderer);
-}
+Q3_HELD_ENTRY_POINTS(Q3ViewHints, ViewHints, TQ3ViewHintsObject, viewHints, Camera, TQ3CameraObject, camera, setHeld)
 
-TQ3Status Q3ViewHints_SetCamera(TQ3ViewHintsObject viewHints, TQ3CameraObject camera)
-{
-    return setHeld(__func__, viewHints, "viewHints", camera, "camera", &ViewHints::setCamera);
-}
+Q3_HELD_ENTRY_POINTS(Q3ViewHints, ViewHints, TQ3ViewHintsObject, viewHints, LightGroup, TQ3GroupObject, lightGroup,
+                     setHeldOptional)
 
-TQ3Status Q3ViewHints_GetCamera(TQ3ViewHintsObject viewHints, TQ3CameraObject* camera)
-{
-    return getHeld(__func__, viewHints, "viewHints", camera, "camera", &ViewHints::camera);
-}
-
-TQ3Status Q3ViewHints_SetLightGroup(TQ3ViewHintsObject viewHints, TQ3GroupObject lightGroup)
-{
-    return setHeldOptional(__func__, viewHints, "viewHints", lightGroup, "lightGroup", &ViewHints::setLightGroup);
-}
-
-TQ3Status Q3ViewHints_GetLightGroup(TQ3ViewHintsObject viewHints, TQ3GroupObject* lightGroup)
-{
-    return getHeld(__func__, viewHints, "viewHints", lightGroup, "lightGroup", &ViewHints::lightGroup);
-}
-
-TQ3Status Q3ViewHints_SetAttributeSet(TQ3ViewHintsObject viewHints, TQ3AttributeSet attributeSet)
-{
-    return setHeldOptional(__func__, viewHints, "viewHints", attributeSet, "attributeSet", &ViewHints::setAttributeSet);
-}
-
-TQ3Status Q3ViewHints_GetAttributeSet(TQ3ViewHintsObject viewHints, TQ3AttributeSet* attributeSet)
-{
-    return getHeld(__func__, viewHints, "viewHints", attributeSet, "attributeSet", &ViewHints::attributeSet);
-}
+Q3_HELD_ENTRY_POINTS(Q3ViewHints, ViewHints, TQ3ViewHintsObject, viewHints, AttributeSet, TQ3AttributeSet, attributeSet,
+                     setHeldOptional)
 
 TQ3Status Q3ViewHints_SetDimensionsState(TQ3ViewHintsObject viewHints, TQ3Boolean isValid)
 {
-    return guardStatus(__func__, [&] { lookup<ViewHints>(viewHints, "viewHints").setDimensionsState(isValid); });
+    return setDirect<ViewHints>(__func__, viewHints, "viewHints", isValid, &ViewHints::setDimensionsState);
 }
 
 TQ3Status Q3ViewHints_GetDimensionsState(TQ3ViewHintsObject viewHints, TQ3Boolean* isValid)
 {
-    return getValue<ViewHints>(__func__, viewHints, "viewHints", isValid, "isValid",
-                               [](const ViewHints& hints) { return hints.dimensionsState(); });
+    return getValue<ViewHints>(__func__, viewHints, "viewHints", isValid, "isValid", &ViewHints::dimensionsState);
 }
 
 TQ3Status Q3ViewHints_SetDimensions(TQ3ViewHintsObject viewHints, unsigned long width, unsigned long height)
@@ -94,13 +60,12 @@ TQ3Status Q3ViewHints_GetDimensions(TQ3ViewHintsObject viewHints, unsigned long*
 
 TQ3Status Q3ViewHints_SetMaskState(TQ3ViewHintsObject viewHints, TQ3Boolean isValid)
 {
-    return guardStatus(__func__, [&] { lookup<ViewHints>(viewHints, "viewHints").setMaskState(isValid); });
+    return setDirect<ViewHints>(__func__, viewHints, "viewHints", isValid, &ViewHints::setMaskState);
 }
 
 TQ3Status Q3ViewHints_GetMaskState(TQ3ViewHintsObject viewHints, TQ3Boolean* isValid)
 {
-    return getValue<ViewHints>(__func__, viewHints, "viewHints", isValid, "isValid",
-                               [](const ViewHints& hints) { return hints.maskState(); });
+    return getValue<ViewHints>(__func__, viewHints, "viewHints", isValid, "isValid", &ViewHints::maskState);
 }
 
 TQ3Status Q3ViewHints_SetMask(TQ3ViewHintsObject viewHints, const TQ3Bitmap* mask)
@@ -117,17 +82,6 @@ TQ3Status Q3ViewHints_GetMask(TQ3ViewHintsObject viewHints, TQ3Bitmap* mask)
     });
 }
 
-TQ3Status Q3ViewHints_SetClearImageMethod(TQ3ViewHintsObject viewHints, TQ3DrawContextClearImageMethod clearMethod)
-{
-    return guardStatus(__func__, [&] { lookup<ViewHints>(viewHints, "viewHints").setClearMethod(clearMethod); });
-}
-
-TQ3Status Q3ViewHints_GetClearImageMethod(TQ3ViewHintsObject viewHints, TQ3DrawContextClearImageMethod* clearMethod)
-{
-    return getValue<ViewHints>(__func__, viewHints, "viewHints", clearMethod, "clearMethod",
-                               [](const ViewHints& hints) { return hints.clearMethod(); });
-}
-
 TQ3Status Q3ViewHints_SetClearImageColor(TQ3ViewHintsObject viewHints, const TQ3ColorARGB* color)
 {
     return setValue<ViewHints>(__func__, viewHints, "viewHints", color, "color", &ViewHints::setClearColor);
@@ -135,8 +89,17 @@ TQ3Status Q3ViewHints_SetClearImageColor(TQ3ViewHintsObject viewHints, const TQ3
 
 TQ3Status Q3ViewHints_GetClearImageColor(TQ3ViewHintsObject viewHints, TQ3ColorARGB* color)
 {
-    return getValue<ViewHints>(__func__, viewHints, "viewHints", color, "color",
-                               [](const ViewHints& hints) { return hints.clearColor(); });
+    return getValue<ViewHints>(__func__, viewHints, "viewHints", color, "color", &ViewHints::clearColor);
+}
+
+TQ3Status Q3ViewHints_SetClearImageMethod(TQ3ViewHintsObject viewHints, TQ3DrawContextClearImageMethod clearMethod)
+{
+    return setDirect<ViewHints>(__func__, viewHints, "viewHints", clearMethod, &ViewHints::setClearMethod);
+}
+
+TQ3Status Q3ViewHints_GetClearImageMethod(TQ3ViewHintsObject viewHints, TQ3DrawContextClearImageMethod* clearMethod)
+{
+    return getValue<ViewHints>(__func__, viewHints, "viewHints", clearMethod, "clearMethod", &ViewHints::clearMethod);
 }
 
 } // extern "C"

@@ -114,17 +114,8 @@ TQ3Status Q3XDrawContext_GetDisplay(TQ3DrawContextObject drawContext, Display** 
     return getValue<X11DrawContext>(__func__, drawContext, "drawContext", display, "display", &X11DrawContext::display);
 }
 
-TQ3Status Q3XDrawContext_SetDrawable(TQ3DrawContextObject drawContext, Drawable drawable)
-{
-    return guardStatus(__func__,
-                       [&] { lookup<X11DrawContext>(drawContext, "drawContext").setDrawable(drawable); });
-}
-
-TQ3Status Q3XDrawContext_GetDrawable(TQ3DrawContextObject drawContext, Drawable* drawable)
-{
-    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", drawable, "drawable",
-                                    &X11DrawContext::drawable);
-}
+Q3_DIRECT_VALUE_ENTRY_POINTS(Q3XDrawContext, X11DrawContext, TQ3DrawContextObject, drawContext, Drawable, Drawable,
+                             drawable)
 
 TQ3Status Q3XDrawContext_SetVisual(TQ3DrawContextObject drawContext, const Visual* visual)
 {
@@ -140,28 +131,10 @@ TQ3Status Q3XDrawContext_GetVisual(TQ3DrawContextObject drawContext, Visual** vi
     return getValue<X11DrawContext>(__func__, drawContext, "drawContext", visual, "visual", &X11DrawContext::visual);
 }
 
-TQ3Status Q3XDrawContext_SetColormap(TQ3DrawContextObject drawContext, Colormap colormap)
-{
-    return guardStatus(__func__,
-                       [&] { lookup<X11DrawContext>(drawContext, "drawContext").setColormap(colormap); });
-}
+Q3_DIRECT_VALUE_ENTRY_POINTS(Q3XDrawContext, X11DrawContext, TQ3DrawContextObject, drawContext, Colormap, Colormap,
+                             colormap)
 
-TQ3Status Q3XDrawContext_GetColormap(TQ3DrawContextObject drawContext, Colormap* colormap)
-{
-    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", colormap, "colormap",
-                                    &X11DrawContext::colormap);
-}
-
-TQ3Status Q3XDrawContext_SetColormapData(TQ3DrawContextObject drawContext, const TQ3XColormapData* colormapData)
-{
-    return setValue<X11DrawContext>(__func__, drawContext, "drawContext", colormapData, "colormapData",
-                                    &X11DrawContext::setColormapData);
-}
-
-TQ3Status Q3XDrawContext_GetColormapData(TQ3DrawContextObject drawContext, TQ3XColormapData* colormapData)
-{
-    return getValue<X11DrawContext>(__func__, drawContext, "drawContext", colormapData, "colormapData",
-                                    &X11DrawContext::colormapData);
-}
+Q3_POINTER_VALUE_ENTRY_POINTS(Q3XDrawContext, X11DrawContext, TQ3DrawContextObject, drawContext, ColormapData,
+                              TQ3XColormapData, colormapData)
 
 } // extern "C"

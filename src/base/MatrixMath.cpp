@@ -187,23 +187,29 @@ TQ3Matrix4x4 identity()
 // glm::translate and glm::scale, which multiply the identity through: that
 // turns the identity's zeros into -0 for a negative factor and into NaN
 // (0 * inf) for an infinite one, where QuickDraw 3D stores exactly what it
-// was given.
-TQ3Matrix4x4 translation(float x, float y, float z)
+// was given: x, y and z in the last row (translation) or on the diagonal
+// (scaling) of the identity.
+namespace {
+
+TQ3Matrix4x4 identityWith(float x, float y, float z, bool inLastRow)
 {
     TQ3Matrix4x4 m = identity();
-    m.value[3][0] = x;
-    m.value[3][1] = y;
-    m.value[3][2] = z;
+    const float values[3] = {x, y, z};
+    for (int i = 0; i < 3; ++i)
+        m.value[inLastRow ? 3 : i][i] = values[i];
     return m;
+}
+
+} // namespace
+
+TQ3Matrix4x4 translation(float x, float y, float z)
+{
+    return identityWith(x, y, z, true);
 }
 
 TQ3Matrix4x4 scaling(float x, float y, float z)
 {
-    TQ3Matrix4x4 m = identity();
-    m.value[0][0] = x;
-    m.value[1][1] = y;
-    m.value[2][2] = z;
-    return m;
+    return identityWith(x, y, z, false);
 }
 
 TQ3Matrix4x4 rotationX(float radians)

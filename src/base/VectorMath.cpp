@@ -26,6 +26,8 @@ double angleOf(double x, double y)
     return angle < 0.0 ? angle + kTwoPi : angle + 0.0;
 }
 
+} // namespace
+
 double ratioFraction(float r1, float r2)
 {
     const double sum = double(r1) + double(r2);
@@ -34,31 +36,6 @@ double ratioFraction(float r1, float r2)
              "r1 + r2 is 0 (r1 " + std::to_string(r1) + "), so the ratio r2 / (r1 + r2) is undefined");
     return double(r2) / sum;
 }
-
-template <class T>
-T relativeRatioOf(const T& p1, const T& p2, float r1, float r2)
-{
-    const auto a = toDouble(p1);
-    return toFloat<T>(a + (toDouble(p2) - a) * ratioFraction(r1, r2));
-}
-
-template <class T>
-T affineCombinationOf(const T* points, const float* weights, std::size_t count)
-{
-    if (count == 0)
-        fail(kQ3ErrorParameterOutOfRange, "there are no points to combine");
-    decltype(toDouble(points[0])) sum(0.0);
-    double totalWeight = 0.0;
-    for (std::size_t i = 0; i < count; ++i) {
-        sum += toDouble(points[i]) * double(weights[i]);
-        totalWeight += weights[i];
-    }
-    if (totalWeight == 0.0)
-        fail(kQ3ErrorInvalidParameter, "the weights sum to 0, so they combine no point");
-    return toFloat<T>(sum / totalWeight);
-}
-
-} // namespace
 
 float length(const TQ3Vector2D& vector)
 {
@@ -80,191 +57,10 @@ float cross(const TQ3Vector2D& v1, const TQ3Vector2D& v2)
     return static_cast<float>(double(v1.x) * v2.y - double(v1.y) * v2.x);
 }
 
-TQ3Vector2D add(const TQ3Vector2D& v1, const TQ3Vector2D& v2)
-{
-    return toFloat<TQ3Vector2D>(toDouble(v1) + toDouble(v2));
-}
-
-TQ3Vector3D add(const TQ3Vector3D& v1, const TQ3Vector3D& v2)
-{
-    return toFloat<TQ3Vector3D>(toDouble(v1) + toDouble(v2));
-}
-
-TQ3Vector2D subtract(const TQ3Vector2D& v1, const TQ3Vector2D& v2)
-{
-    return toFloat<TQ3Vector2D>(toDouble(v1) - toDouble(v2));
-}
-
-TQ3Vector3D subtract(const TQ3Vector3D& v1, const TQ3Vector3D& v2)
-{
-    return toFloat<TQ3Vector3D>(toDouble(v1) - toDouble(v2));
-}
-
-TQ3Vector2D scale(const TQ3Vector2D& vector, float scalar)
-{
-    return toFloat<TQ3Vector2D>(toDouble(vector) * double(scalar));
-}
-
-TQ3Vector3D scale(const TQ3Vector3D& vector, float scalar)
-{
-    return toFloat<TQ3Vector3D>(toDouble(vector) * double(scalar));
-}
-
-TQ3Vector2D negate(const TQ3Vector2D& vector)
-{
-    return TQ3Vector2D{-vector.x, -vector.y};
-}
-
-TQ3Vector3D negate(const TQ3Vector3D& vector)
-{
-    return TQ3Vector3D{-vector.x, -vector.y, -vector.z};
-}
-
-TQ3Vector2D subtract(const TQ3Point2D& p1, const TQ3Point2D& p2)
-{
-    return toFloat<TQ3Vector2D>(toDouble(p1) - toDouble(p2));
-}
-
-TQ3Vector2D subtract(const TQ3Param2D& p1, const TQ3Param2D& p2)
-{
-    return toFloat<TQ3Vector2D>(toDouble(p1) - toDouble(p2));
-}
-
-TQ3Vector3D subtract(const TQ3Point3D& p1, const TQ3Point3D& p2)
-{
-    return toFloat<TQ3Vector3D>(toDouble(p1) - toDouble(p2));
-}
-
-TQ3Point2D add(const TQ3Point2D& point, const TQ3Vector2D& vector)
-{
-    return toFloat<TQ3Point2D>(toDouble(point) + toDouble(vector));
-}
-
-TQ3Param2D add(const TQ3Param2D& param, const TQ3Vector2D& vector)
-{
-    return toFloat<TQ3Param2D>(toDouble(param) + toDouble(vector));
-}
-
-TQ3Point3D add(const TQ3Point3D& point, const TQ3Vector3D& vector)
-{
-    return toFloat<TQ3Point3D>(toDouble(point) + toDouble(vector));
-}
-
-TQ3Point2D subtract(const TQ3Point2D& point, const TQ3Vector2D& vector)
-{
-    return toFloat<TQ3Point2D>(toDouble(point) - toDouble(vector));
-}
-
-TQ3Param2D subtract(const TQ3Param2D& param, const TQ3Vector2D& vector)
-{
-    return toFloat<TQ3Param2D>(toDouble(param) - toDouble(vector));
-}
-
-TQ3Point3D subtract(const TQ3Point3D& point, const TQ3Vector3D& vector)
-{
-    return toFloat<TQ3Point3D>(toDouble(point) - toDouble(vector));
-}
-
 TQ3Vector3D crossProductTri(const TQ3Point3D& p1, const TQ3Point3D& p2, const TQ3Point3D& p3)
 {
     const glm::dvec3 a = toDouble(p1);
     return toFloat<TQ3Vector3D>(glm::cross(toDouble(p2) - a, toDouble(p3) - a));
-}
-
-float distance(const TQ3Point2D& p1, const TQ3Point2D& p2)
-{
-    return static_cast<float>(glm::distance(toDouble(p1), toDouble(p2)));
-}
-
-float distance(const TQ3Param2D& p1, const TQ3Param2D& p2)
-{
-    return static_cast<float>(glm::distance(toDouble(p1), toDouble(p2)));
-}
-
-float distance(const TQ3RationalPoint3D& p1, const TQ3RationalPoint3D& p2)
-{
-    return static_cast<float>(glm::distance(dehomogenize(toDouble(p1)), dehomogenize(toDouble(p2))));
-}
-
-float distance(const TQ3RationalPoint4D& p1, const TQ3RationalPoint4D& p2)
-{
-    return static_cast<float>(glm::distance(dehomogenize(toDouble(p1)), dehomogenize(toDouble(p2))));
-}
-
-float distanceSquared(const TQ3Point2D& p1, const TQ3Point2D& p2)
-{
-    const glm::dvec2 d = toDouble(p1) - toDouble(p2);
-    return static_cast<float>(glm::dot(d, d));
-}
-
-float distanceSquared(const TQ3Param2D& p1, const TQ3Param2D& p2)
-{
-    const glm::dvec2 d = toDouble(p1) - toDouble(p2);
-    return static_cast<float>(glm::dot(d, d));
-}
-
-float distanceSquared(const TQ3RationalPoint3D& p1, const TQ3RationalPoint3D& p2)
-{
-    const glm::dvec2 d = dehomogenize(toDouble(p1)) - dehomogenize(toDouble(p2));
-    return static_cast<float>(glm::dot(d, d));
-}
-
-float distanceSquared(const TQ3Point3D& p1, const TQ3Point3D& p2)
-{
-    const glm::dvec3 d = toDouble(p1) - toDouble(p2);
-    return static_cast<float>(glm::dot(d, d));
-}
-
-float distanceSquared(const TQ3RationalPoint4D& p1, const TQ3RationalPoint4D& p2)
-{
-    const glm::dvec3 d = dehomogenize(toDouble(p1)) - dehomogenize(toDouble(p2));
-    return static_cast<float>(glm::dot(d, d));
-}
-
-TQ3Point2D relativeRatio(const TQ3Point2D& p1, const TQ3Point2D& p2, float r1, float r2)
-{
-    return relativeRatioOf(p1, p2, r1, r2);
-}
-
-TQ3Param2D relativeRatio(const TQ3Param2D& p1, const TQ3Param2D& p2, float r1, float r2)
-{
-    return relativeRatioOf(p1, p2, r1, r2);
-}
-
-TQ3Point3D relativeRatio(const TQ3Point3D& p1, const TQ3Point3D& p2, float r1, float r2)
-{
-    return relativeRatioOf(p1, p2, r1, r2);
-}
-
-TQ3RationalPoint4D relativeRatio(const TQ3RationalPoint4D& p1, const TQ3RationalPoint4D& p2, float r1,
-                                 float r2)
-{
-    return relativeRatioOf(p1, p2, r1, r2);
-}
-
-TQ3Point2D affineCombination(const TQ3Point2D* points, const float* weights, std::size_t count)
-{
-    return affineCombinationOf(points, weights, count);
-}
-
-TQ3Param2D affineCombination(const TQ3Param2D* points, const float* weights, std::size_t count)
-{
-    return affineCombinationOf(points, weights, count);
-}
-
-TQ3RationalPoint3D affineCombination(const TQ3RationalPoint3D* points, const float* weights, std::size_t count)
-{
-    return affineCombinationOf(points, weights, count);
-}
-
-TQ3Point3D affineCombination(const TQ3Point3D* points, const float* weights, std::size_t count)
-{
-    return affineCombinationOf(points, weights, count);
-}
-
-TQ3RationalPoint4D affineCombination(const TQ3RationalPoint4D* points, const float* weights, std::size_t count)
-{
-    return affineCombinationOf(points, weights, count);
 }
 
 TQ3Point3D to3D(const TQ3Point2D& point)

@@ -72,24 +72,39 @@ using ProcAddress = void (*)();
 constexpr int kEglDraw = 0x3059; // EGL_DRAW
 constexpr int kEglRead = 0x305A; // EGL_READ
 
+// Each library's calls are listed once, as X(result, name, parameters):
+// the list declares a Calls struct's function pointers and binds each to the
+// library's symbol, kPrefix followed by its name.
+#define Q3_CALL_MEMBER(Result, Name, Parameters) Result(*Name) Parameters = nullptr;
+#define Q3_BIND_CALL(Result, Name, Parameters) file.bind(Name, (std::string(kPrefix) + #Name).c_str());
+
+#define Q3_EGL_CALLS(X)                                                                                         \
+    X(ProcAddress, GetProcAddress, (const char*)) X(void*, GetCurrentContext, ()) X(void*, GetCurrentDisplay, ()) \
+    X(void*, GetCurrentSurface, (int)) X(unsigned, MakeCurrent, (void*, void*, void*, void*))                   \
+    X(unsigned, QueryAPI, ()) X(unsigned, BindAPI, (unsigned))
+
 struct EglCalls {
-    ProcAddress (*GetProcAddress)(const char*) = nullptr;
-    void* (*GetCurrentContext)() = nullptr;
-    void* (*GetCurrentDisplay)() = nullptr;
-    void* (*GetCurrentSurface)(int) = nullptr;
-    unsigned (*MakeCurrent)(void*, void*, void*, void*) = nullptr;
-    unsigned (*QueryAPI)() = nullptr;
-    unsigned (*BindAPI)(unsigned) = nullptr;
+    static constexpr const char* kPrefix = "egl";
+    Q3_EGL_CALLS(Q3_CALL_MEMBER)
+    void bind(DynamicLibrary& file) { Q3_EGL_CALLS(Q3_BIND_CALL) }
 };
 
+#define Q3_GLX_CALLS(X)                                                                                         \
+    X(ProcAddress, GetProcAddressARB, (const unsigned char*)) X(void*, GetCurrentContext, ())                   \
+    X(void*, GetCurrentDisplay, ()) X(unsigned long, GetCurrentDrawable, ())                                    \
+    X(unsigned long, GetCurrentReadDrawable, ())                                                                \
+    X(int, MakeContextCurrent, (void*, unsigned long, unsigned long, void*))
+
 struct GlxCalls {
-    ProcAddress (*GetProcAddressARB)(const unsigned char*) = nullptr;
-    void* (*GetCurrentContext)() = nullptr;
-    void* (*GetCurrentDisplay)() = nullptr;
-    unsigned long (*GetCurrentDrawable)() = nullptr;
-    unsigned long (*GetCurrentReadDrawable)() = nullptr;
-    int (*MakeContextCurrent)(void*, unsigned long, unsigned long, void*) = nullptr;
+    static constexpr const char* kPrefix = "glX";
+    Q3_GLX_CALLS(Q3_CALL_MEMBER)
+    void bind(DynamicLibrary& file) { Q3_GLX_CALLS(Q3_BIND_CALL) }
 };
+
+#undef Q3_CALL_MEMBER
+#undef Q3_BIND_CALL
+#undef Q3_EGL_CALLS
+#undef Q3_GLX_CALLS
 
 /// A window-system library the application has loaded, with the GL table
 /// its loader resolves. Invariant once `ready`: every call and gl is bound,
@@ -165,16 +180,9 @@ const Loader<EglCalls>* eglLoader()
     static Loader<EglCalls> loader;
     return loaderOf(loader, [](Loader<EglCalls>& l) {
         DynamicLibrary file("libEGL.so.1", true);
-        EglCalls& c = l.calls;
-        file.bind(c.GetProcAddress, "eglGetProcAddress");
-        file.bind(c.GetCurrentContext, "eglGetCurrentContext");
-        file.bind(c.GetCurrentDisplay, "eglGetCurrentDisplay");
-        file.bind(c.GetCurrentSurface, "eglGetCurrentSurface");
-        file.bind(c.MakeCurrent, "eglMakeCurrent");
-        file.bind(c.QueryAPI, "eglQueryAPI");
-        file.bind(c.BindAPI, "eglBindAPI");
+        l.calls.bind(file);
         const char* missing = nullptr;
-        return file.ok() && l.gl.load(eglProc, &c, missing);
+        return file.ok() && l.gl.load(eglProc, &l.calls, missing);
     });
 }
 
@@ -186,15 +194,9 @@ const Loader<GlxCalls>* glxLoader()
         // of its own.
         for (const char* name : {"libGLX.so.0", "libGL.so.1"}) {
             DynamicLibrary file(name, true);
-            GlxCalls& c = l.calls;
-            file.bind(c.GetProcAddressARB, "glXGetProcAddressARB");
-            file.bind(c.GetCurrentContext, "glXGetCurrentContext");
-            file.bind(c.GetCurrentDisplay, "glXGetCurrentDisplay");
-            file.bind(c.GetCurrentDrawable, "glXGetCurrentDrawable");
-            file.bind(c.GetCurrentReadDrawable, "glXGetCurrentReadDrawable");
-            file.bind(c.MakeContextCurrent, "glXMakeContextCurrent");
+            l.calls.bind(file);
             const char* missing = nullptr;
-            if (file.ok() && l.gl.load(glxProc, &c, missing))
+            if (file.ok() && l.gl.load(glxProc, &l.calls, missing))
                 return true;
         }
         return false;

@@ -26,19 +26,18 @@
 namespace q3 {
 namespace {
 
+// Every Xlib function Q3 calls, named once: `member` is XlibApi's pointer to
+// `function`, which xlib() looks up by its name.
+#define Q3_XLIB_CALLS(X)                                                                                        \
+    X(setErrorHandler, XSetErrorHandler) X(sync, XSync) X(flush, XFlush)                                        \
+    X(getWindowAttributes, XGetWindowAttributes) X(createImage, XCreateImage) X(getImage, XGetImage)            \
+    X(putImage, XPutImage) X(createGC, XCreateGC) X(freeGC, XFreeGC) X(getVisualInfo, XGetVisualInfo)           \
+    X(screenNumberOfScreen, XScreenNumberOfScreen) X(getErrorText, XGetErrorText)
+
 struct XlibApi {
-    decltype(&XSetErrorHandler) setErrorHandler = nullptr;
-    decltype(&XSync) sync = nullptr;
-    decltype(&XFlush) flush = nullptr;
-    decltype(&XGetWindowAttributes) getWindowAttributes = nullptr;
-    decltype(&XCreateImage) createImage = nullptr;
-    decltype(&XGetImage) getImage = nullptr;
-    decltype(&XPutImage) putImage = nullptr;
-    decltype(&XCreateGC) createGC = nullptr;
-    decltype(&XFreeGC) freeGC = nullptr;
-    decltype(&XGetVisualInfo) getVisualInfo = nullptr;
-    decltype(&XScreenNumberOfScreen) screenNumberOfScreen = nullptr;
-    decltype(&XGetErrorText) getErrorText = nullptr;
+#define Q3_XLIB_MEMBER(member, function) decltype(&function) member = nullptr;
+    Q3_XLIB_CALLS(Q3_XLIB_MEMBER)
+#undef Q3_XLIB_MEMBER
 };
 
 template <class F>
@@ -56,21 +55,16 @@ const XlibApi* xlib()
         if (library == nullptr)
             return nullptr;
         static XlibApi loaded;
-        const bool complete = load(library, "XSetErrorHandler", loaded.setErrorHandler) &&
-                              load(library, "XSync", loaded.sync) && load(library, "XFlush", loaded.flush) &&
-                              load(library, "XGetWindowAttributes", loaded.getWindowAttributes) &&
-                              load(library, "XCreateImage", loaded.createImage) &&
-                              load(library, "XGetImage", loaded.getImage) &&
-                              load(library, "XPutImage", loaded.putImage) &&
-                              load(library, "XCreateGC", loaded.createGC) &&
-                              load(library, "XFreeGC", loaded.freeGC) &&
-                              load(library, "XGetVisualInfo", loaded.getVisualInfo) &&
-                              load(library, "XScreenNumberOfScreen", loaded.screenNumberOfScreen) &&
-                              load(library, "XGetErrorText", loaded.getErrorText);
+        bool complete = true;
+#define Q3_XLIB_LOAD(member, function) complete = complete && load(library, #function, loaded.member);
+        Q3_XLIB_CALLS(Q3_XLIB_LOAD)
+#undef Q3_XLIB_LOAD
         return complete ? &loaded : nullptr;
     }();
     return api;
 }
+
+#undef Q3_XLIB_CALLS
 
 std::mutex& trapMutex()
 {

@@ -230,19 +230,11 @@ std::uint32_t RenderPass::loadTexture(const TextureChoice& choice)
         const std::vector<TexturePixels> mipmaps =
             m_style.textureFilter == TextureFilter::kTrilinear ? texture.readMipmaps() : std::vector<TexturePixels>{};
         const TextureLevel top = levelOf(pixels);
-        TextureImage image;
-        image.pixels = top.pixels;
-        image.layout = top.layout;
-        image.clampS = choice.clampS;
-        image.clampT = choice.clampT;
-        image.filter = m_style.textureFilter;
+        TextureImage image{top.pixels, top.layout, choice.clampS, choice.clampT, m_style.textureFilter, {}};
         for (const TexturePixels& mipmap : mipmaps)
             image.mipmaps.push_back(levelOf(mipmap));
-        LoadedTexture entry;
-        entry.texture = Ref<SharedObject>::retain(const_cast<Texture*>(&texture));
-        entry.edit = texture.editIndex();
-        entry.clampS = choice.clampS;
-        entry.clampT = choice.clampT;
+        LoadedTexture entry{Ref<SharedObject>::retain(const_cast<Texture*>(&texture)), texture.editIndex(),
+                            choice.clampS, choice.clampT, 0};
         throwIfFailed(m_target.addTexture(image, entry.id), "setting the texture");
         m_textures.push_back(std::move(entry));
         loaded = &m_textures.back();
@@ -410,14 +402,8 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
     }
     for (std::size_t b = 0; b < mesh.bitmapCount; ++b) {
         const ScreenBitmap& bitmap = mesh.bitmaps[b];
-        BitmapImage image;
-        image.bits = bitmap.bits;
-        image.rowBytes = bitmap.rowBytes;
-        image.width = bitmap.width;
-        image.height = bitmap.height;
-        image.lsbFirst = bitmap.lsbFirst;
-        image.xOffset = bitmap.xOffset;
-        image.yOffset = bitmap.yOffset;
+        const BitmapImage image{bitmap.bits,     bitmap.rowBytes, bitmap.width,  bitmap.height,
+                                bitmap.lsbFirst, bitmap.xOffset,  bitmap.yOffset};
         const float* own = rgb != nullptr ? rgb + 3 * std::size_t(bitmap.vertex) : nullptr;
         const RgbColor ink = own != nullptr ? RgbColor{own[0], own[1], own[2]} : color;
         throwIfFailed(m_target.drawBitmap(mesh.positions + 3 * std::size_t(bitmap.vertex), image, ink),
