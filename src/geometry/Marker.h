@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
@@ -44,5 +45,27 @@ public:
     /// Checks bitmap, copies its bits, then frees the old ones.
     void setBitmap(const TQ3Bitmap& bitmap);
 };
+
+// The data description (core/DataLayout.h).
+namespace layout {
+template <>
+struct Describe<TQ3Bitmap> {
+    static auto fields()
+    {
+        return std::make_tuple(requiredArray("image", &TQ3Bitmap::image, countProduct(&TQ3Bitmap::rowBytes, &TQ3Bitmap::height)));
+    }
+};
+
+template <>
+struct Describe<TQ3MarkerData> {
+    static auto fields()
+    {
+        using D = TQ3MarkerData;
+        return std::make_tuple(finite("location", &D::location), value("xOffset", &D::xOffset),
+                               value("yOffset", &D::yOffset), nested("bitmap", &D::bitmap),
+                               handle<AttributeSet>("markerAttributeSet", &D::markerAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3
