@@ -52,7 +52,10 @@ template <>
 struct Describe<TQ3Bitmap> {
     static auto fields()
     {
-        return std::make_tuple(requiredArray("image", &TQ3Bitmap::image, countProduct(&TQ3Bitmap::rowBytes, &TQ3Bitmap::height)));
+        using B = TQ3Bitmap;
+        return std::make_tuple(requiredArray("image", &B::image, countProduct(&B::rowBytes, &B::height)),
+                               value("width", &B::width), value("height", &B::height),
+                               value("rowBytes", &B::rowBytes), value("bitOrder", &B::bitOrder));
     }
 };
 

@@ -60,7 +60,14 @@ public:
 namespace layout {
 template <>
 struct Describe<TQ3StoragePixmap> {
-    static auto fields() { return std::make_tuple(requiredHandle<Storage>("image", &TQ3StoragePixmap::image)); }
+    static auto fields()
+    {
+        using P = TQ3StoragePixmap;
+        return std::make_tuple(requiredHandle<Storage>("image", &P::image), value("width", &P::width),
+                               value("height", &P::height), value("rowBytes", &P::rowBytes),
+                               value("pixelSize", &P::pixelSize), value("pixelType", &P::pixelType),
+                               value("bitOrder", &P::bitOrder), value("byteOrder", &P::byteOrder));
+    }
 };
 
 template <>

@@ -161,13 +161,14 @@ struct Describe<TQ3TriMeshData> {
         using Attributes = TriMeshAttributeArraysField;
         return std::make_tuple(
             handle<AttributeSet>("triMeshAttributeSet", &D::triMeshAttributeSet),
-            array("triangles", &D::triangles, countOf(&D::numTriangles)),
+            value("numTriangles", &D::numTriangles), array("triangles", &D::triangles, countOf(&D::numTriangles)),
             Attributes{"triangleAttributeTypes", &D::triangleAttributeTypes, &D::numTriangleAttributeTypes,
                        &D::numTriangles},
-            array("edges", &D::edges, countOf(&D::numEdges)),
+            value("numEdges", &D::numEdges), array("edges", &D::edges, countOf(&D::numEdges)),
             Attributes{"edgeAttributeTypes", &D::edgeAttributeTypes, &D::numEdgeAttributeTypes, &D::numEdges},
             // The points after every attribute array, so that an unknown
             // attribute type is reported before a point that is not finite.
+            value("numPoints", &D::numPoints),
             Attributes{"vertexAttributeTypes", &D::vertexAttributeTypes, &D::numVertexAttributeTypes,
                        &D::numPoints},
             finiteElements(array("points", &D::points, countOf(&D::numPoints))), value("bBox", &D::bBox));
