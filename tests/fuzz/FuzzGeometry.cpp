@@ -589,10 +589,10 @@ void Session::polygons2Field(std::uint8_t type, Kind kind)
             break;
         }
         default: {
-            TQ3GeneralPolygonShapeHint hint = kQ3GeneralPolygonShapeHintComplex;
-            setRaw(hint, enumValue(3));
+            // From C: a hint outside the enumeration cannot be passed from C++.
+            const int hint = enumValue(3);
             edit = true;
-            status = STATUS(Q3GeneralPolygon_SetShapeHint(geometry, hint));
+            status = STATUS(q3fuzz_GeneralPolygon_SetShapeHint(geometry, hint));
             break;
         }
         }
