@@ -10,30 +10,6 @@ namespace q3 {
 
 const ClassInfo kGeneralPolygonClass{kQ3GeometryTypeGeneralPolygon, &kGeometryClass, "general polygon"};
 
-namespace layout {
-template <>
-struct Describe<TQ3GeneralPolygonContourData> {
-    static auto fields()
-    {
-        using C = TQ3GeneralPolygonContourData;
-        return std::make_tuple(atLeast("numVertices", &C::numVertices, 3),
-                               requiredArray("vertices", &C::vertices, countOf(&C::numVertices)));
-    }
-};
-
-template <>
-struct Describe<TQ3GeneralPolygonData> {
-    static auto fields()
-    {
-        using D = TQ3GeneralPolygonData;
-        return std::make_tuple(atLeast("numContours", &D::numContours, 1),
-                               requiredArray("contours", &D::contours, countOf(&D::numContours)),
-                               value("shapeHint", &D::shapeHint),
-                               handle<AttributeSet>("generalPolygonAttributeSet", &D::generalPolygonAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<GeneralPolygon, TQ3GeneralPolygonData>;
 
 void GeneralPolygon::checkShapeHint(const TQ3GeneralPolygonShapeHint& hint, TQ3Error code)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
@@ -44,5 +45,30 @@ public:
 private:
     const TQ3GeneralPolygonContourData& contour(unsigned long index) const;
 };
+
+// The data description (core/DataLayout.h).
+namespace layout {
+template <>
+struct Describe<TQ3GeneralPolygonContourData> {
+    static auto fields()
+    {
+        using C = TQ3GeneralPolygonContourData;
+        return std::make_tuple(atLeast("numVertices", &C::numVertices, 3),
+                               requiredArray("vertices", &C::vertices, countOf(&C::numVertices)));
+    }
+};
+
+template <>
+struct Describe<TQ3GeneralPolygonData> {
+    static auto fields()
+    {
+        using D = TQ3GeneralPolygonData;
+        return std::make_tuple(atLeast("numContours", &D::numContours, 1),
+                               requiredArray("contours", &D::contours, countOf(&D::numContours)),
+                               value("shapeHint", &D::shapeHint),
+                               handle<AttributeSet>("generalPolygonAttributeSet", &D::generalPolygonAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

@@ -12,27 +12,6 @@ namespace q3 {
 
 const ClassInfo kMarkerClass{kQ3GeometryTypeMarker, &kGeometryClass, "marker"};
 
-namespace layout {
-template <>
-struct Describe<TQ3Bitmap> {
-    static auto fields()
-    {
-        return std::make_tuple(requiredArray("image", &TQ3Bitmap::image, countProduct(&TQ3Bitmap::rowBytes, &TQ3Bitmap::height)));
-    }
-};
-
-template <>
-struct Describe<TQ3MarkerData> {
-    static auto fields()
-    {
-        using D = TQ3MarkerData;
-        return std::make_tuple(finite("location", &D::location), value("xOffset", &D::xOffset),
-                               value("yOffset", &D::yOffset), nested("bitmap", &D::bitmap),
-                               handle<AttributeSet>("markerAttributeSet", &D::markerAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Marker, TQ3MarkerData>;
 
 void Marker::checkBitmap(const TQ3Bitmap& bitmap)

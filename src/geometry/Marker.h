@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
@@ -44,5 +45,30 @@ public:
     /// Checks bitmap, copies its bits, then frees the old ones.
     void setBitmap(const TQ3Bitmap& bitmap);
 };
+
+// The data description (core/DataLayout.h).
+namespace layout {
+template <>
+struct Describe<TQ3Bitmap> {
+    static auto fields()
+    {
+        using B = TQ3Bitmap;
+        return std::make_tuple(requiredArray("image", &B::image, countProduct(&B::rowBytes, &B::height)),
+                               value("width", &B::width), value("height", &B::height),
+                               value("rowBytes", &B::rowBytes), value("bitOrder", &B::bitOrder));
+    }
+};
+
+template <>
+struct Describe<TQ3MarkerData> {
+    static auto fields()
+    {
+        using D = TQ3MarkerData;
+        return std::make_tuple(finite("location", &D::location), value("xOffset", &D::xOffset),
+                               value("yOffset", &D::yOffset), nested("bitmap", &D::bitmap),
+                               handle<AttributeSet>("markerAttributeSet", &D::markerAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

@@ -26,20 +26,6 @@ std::string describe(unsigned long index, unsigned long count, const char* what)
 
 } // namespace
 
-namespace layout {
-template <>
-struct Describe<TQ3NURBCurveData> {
-    static auto fields()
-    {
-        using D = TQ3NURBCurveData;
-        return std::make_tuple(value("order", &D::order), value("numPoints", &D::numPoints),
-                               array("controlPoints", &D::controlPoints, countOf(&D::numPoints)),
-                               array("knots", &D::knots, countSum(&D::order, &D::numPoints)),
-                               handle<AttributeSet>("curveAttributeSet", &D::curveAttributeSet));
-    }
-};
-} // namespace layout
-
 // The NURB rules, in QD3DGeometry.h's order, check the orders and counts
 // before the arrays: validateNURBCurveData runs before the description's
 // check.

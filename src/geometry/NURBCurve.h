@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 #include "geometry/Decompose.h"
 #include "geometry/nurbs/Curve.h"
@@ -88,5 +89,20 @@ private:
     };
     mutable Counter m_tessellations;
 };
+
+// The data description (core/DataLayout.h).
+namespace layout {
+template <>
+struct Describe<TQ3NURBCurveData> {
+    static auto fields()
+    {
+        using D = TQ3NURBCurveData;
+        return std::make_tuple(value("order", &D::order), value("numPoints", &D::numPoints),
+                               array("controlPoints", &D::controlPoints, countOf(&D::numPoints)),
+                               array("knots", &D::knots, countSum(&D::order, &D::numPoints)),
+                               handle<AttributeSet>("curveAttributeSet", &D::curveAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

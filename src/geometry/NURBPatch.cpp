@@ -16,45 +16,6 @@ namespace q3 {
 
 const ClassInfo kNURBPatchClass{kQ3GeometryTypeNURBPatch, &kGeometryClass, "NURB patch"};
 
-namespace layout {
-template <>
-struct Describe<TQ3NURBPatchTrimCurveData> {
-    static auto fields()
-    {
-        using D = TQ3NURBPatchTrimCurveData;
-        return std::make_tuple(value("order", &D::order), value("numPoints", &D::numPoints),
-                               array("controlPoints", &D::controlPoints, countOf(&D::numPoints)),
-                               array("knots", &D::knots, countSum(&D::order, &D::numPoints)));
-    }
-};
-
-template <>
-struct Describe<TQ3NURBPatchTrimLoopData> {
-    static auto fields()
-    {
-        using D = TQ3NURBPatchTrimLoopData;
-        return std::make_tuple(value("numTrimCurves", &D::numTrimCurves),
-                               array("trimCurves", &D::trimCurves, countOf(&D::numTrimCurves)));
-    }
-};
-
-template <>
-struct Describe<TQ3NURBPatchData> {
-    static auto fields()
-    {
-        using D = TQ3NURBPatchData;
-        return std::make_tuple(value("uOrder", &D::uOrder), value("vOrder", &D::vOrder),
-                               value("numRows", &D::numRows), value("numColumns", &D::numColumns),
-                               array("controlPoints", &D::controlPoints, countProduct(&D::numRows, &D::numColumns)),
-                               array("uKnots", &D::uKnots, countSum(&D::uOrder, &D::numColumns)),
-                               array("vKnots", &D::vKnots, countSum(&D::vOrder, &D::numRows)),
-                               value("numTrimLoops", &D::numTrimLoops),
-                               array("trimLoops", &D::trimLoops, countOf(&D::numTrimLoops)),
-                               handle<AttributeSet>("patchAttributeSet", &D::patchAttributeSet));
-    }
-};
-} // namespace layout
-
 // The NURB rules, in QD3DGeometry.h's order, check the orders and counts
 // before the arrays: validateNURBPatchData runs before the description's check.
 template <>

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 #include "geometry/nurbs/Surface.h"
 #include "geometry/nurbs/SurfaceTessellate.h"
@@ -66,5 +67,45 @@ private:
     /// used (guarded by the mesh lock, like the mesh).
     mutable std::string m_warning;
 };
+
+// The data description (core/DataLayout.h).
+namespace layout {
+template <>
+struct Describe<TQ3NURBPatchTrimCurveData> {
+    static auto fields()
+    {
+        using D = TQ3NURBPatchTrimCurveData;
+        return std::make_tuple(value("order", &D::order), value("numPoints", &D::numPoints),
+                               array("controlPoints", &D::controlPoints, countOf(&D::numPoints)),
+                               array("knots", &D::knots, countSum(&D::order, &D::numPoints)));
+    }
+};
+
+template <>
+struct Describe<TQ3NURBPatchTrimLoopData> {
+    static auto fields()
+    {
+        using D = TQ3NURBPatchTrimLoopData;
+        return std::make_tuple(value("numTrimCurves", &D::numTrimCurves),
+                               array("trimCurves", &D::trimCurves, countOf(&D::numTrimCurves)));
+    }
+};
+
+template <>
+struct Describe<TQ3NURBPatchData> {
+    static auto fields()
+    {
+        using D = TQ3NURBPatchData;
+        return std::make_tuple(value("uOrder", &D::uOrder), value("vOrder", &D::vOrder),
+                               value("numRows", &D::numRows), value("numColumns", &D::numColumns),
+                               array("controlPoints", &D::controlPoints, countProduct(&D::numRows, &D::numColumns)),
+                               array("uKnots", &D::uKnots, countSum(&D::uOrder, &D::numColumns)),
+                               array("vKnots", &D::vKnots, countSum(&D::vOrder, &D::numRows)),
+                               value("numTrimLoops", &D::numTrimLoops),
+                               array("trimLoops", &D::trimLoops, countOf(&D::numTrimLoops)),
+                               handle<AttributeSet>("patchAttributeSet", &D::patchAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

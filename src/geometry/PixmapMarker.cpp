@@ -17,24 +17,6 @@ namespace q3 {
 
 const ClassInfo kPixmapMarkerClass{kQ3GeometryTypePixmapMarker, &kGeometryClass, "pixmap marker"};
 
-namespace layout {
-template <>
-struct Describe<TQ3StoragePixmap> {
-    static auto fields() { return std::make_tuple(requiredHandle<Storage>("image", &TQ3StoragePixmap::image)); }
-};
-
-template <>
-struct Describe<TQ3PixmapMarkerData> {
-    static auto fields()
-    {
-        using D = TQ3PixmapMarkerData;
-        return std::make_tuple(finite("position", &D::position), value("xOffset", &D::xOffset),
-                               value("yOffset", &D::yOffset), nested("pixmap", &D::pixmap),
-                               handle<AttributeSet>("pixmapMarkerAttributeSet", &D::pixmapMarkerAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<PixmapMarker, TQ3PixmapMarkerData>;
 
 namespace {

@@ -3,9 +3,12 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
+
+class Storage;
 
 extern const ClassInfo kPixmapMarkerClass;
 
@@ -52,5 +55,31 @@ public:
     /// Checks pixmap, references its storage, then releases the old one.
     void setPixmap(const TQ3StoragePixmap& pixmap);
 };
+
+// The data description (core/DataLayout.h).
+namespace layout {
+template <>
+struct Describe<TQ3StoragePixmap> {
+    static auto fields()
+    {
+        using P = TQ3StoragePixmap;
+        return std::make_tuple(requiredHandle<Storage>("image", &P::image), value("width", &P::width),
+                               value("height", &P::height), value("rowBytes", &P::rowBytes),
+                               value("pixelSize", &P::pixelSize), value("pixelType", &P::pixelType),
+                               value("bitOrder", &P::bitOrder), value("byteOrder", &P::byteOrder));
+    }
+};
+
+template <>
+struct Describe<TQ3PixmapMarkerData> {
+    static auto fields()
+    {
+        using D = TQ3PixmapMarkerData;
+        return std::make_tuple(finite("position", &D::position), value("xOffset", &D::xOffset),
+                               value("yOffset", &D::yOffset), nested("pixmap", &D::pixmap),
+                               handle<AttributeSet>("pixmapMarkerAttributeSet", &D::pixmapMarkerAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

@@ -8,43 +8,6 @@ namespace q3 {
 
 const ClassInfo kPolyhedronClass{kQ3GeometryTypePolyhedron, &kGeometryClass, "polyhedron"};
 
-namespace layout {
-template <>
-struct Describe<TQ3PolyhedronEdgeData> {
-    static auto fields()
-    {
-        using E = TQ3PolyhedronEdgeData;
-        return std::make_tuple(value("vertexIndices", &E::vertexIndices), value("triangleIndices", &E::triangleIndices),
-                               handle<AttributeSet>("edgeAttributeSet", &E::edgeAttributeSet));
-    }
-};
-
-template <>
-struct Describe<TQ3PolyhedronTriangleData> {
-    static auto fields()
-    {
-        using T = TQ3PolyhedronTriangleData;
-        return std::make_tuple(value("vertexIndices", &T::vertexIndices), value("edgeFlag", &T::edgeFlag),
-                               handle<AttributeSet>("triangleAttributeSet", &T::triangleAttributeSet));
-    }
-};
-
-template <>
-struct Describe<TQ3PolyhedronData> {
-    static auto fields()
-    {
-        using D = TQ3PolyhedronData;
-        return std::make_tuple(atLeast("numVertices", &D::numVertices, 3),
-                               requiredArray("vertices", &D::vertices, countOf(&D::numVertices)),
-                               value("numEdges", &D::numEdges),
-                               array("edges", &D::edges, countOf(&D::numEdges)),
-                               atLeast("numTriangles", &D::numTriangles, 1),
-                               requiredArray("triangles", &D::triangles, countOf(&D::numTriangles)),
-                               handle<AttributeSet>("polyhedronAttributeSet", &D::polyhedronAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<Polyhedron, TQ3PolyhedronData>;
 
 namespace {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 namespace q3 {
@@ -41,5 +42,43 @@ public:
     TQ3PolyhedronEdgeData edge(unsigned long index) const;
     void setEdge(unsigned long index, const TQ3PolyhedronEdgeData& edge);
 };
+
+// The data description (core/DataLayout.h).
+namespace layout {
+template <>
+struct Describe<TQ3PolyhedronEdgeData> {
+    static auto fields()
+    {
+        using E = TQ3PolyhedronEdgeData;
+        return std::make_tuple(value("vertexIndices", &E::vertexIndices), value("triangleIndices", &E::triangleIndices),
+                               handle<AttributeSet>("edgeAttributeSet", &E::edgeAttributeSet));
+    }
+};
+
+template <>
+struct Describe<TQ3PolyhedronTriangleData> {
+    static auto fields()
+    {
+        using T = TQ3PolyhedronTriangleData;
+        return std::make_tuple(value("vertexIndices", &T::vertexIndices), value("edgeFlag", &T::edgeFlag),
+                               handle<AttributeSet>("triangleAttributeSet", &T::triangleAttributeSet));
+    }
+};
+
+template <>
+struct Describe<TQ3PolyhedronData> {
+    static auto fields()
+    {
+        using D = TQ3PolyhedronData;
+        return std::make_tuple(atLeast("numVertices", &D::numVertices, 3),
+                               requiredArray("vertices", &D::vertices, countOf(&D::numVertices)),
+                               value("numEdges", &D::numEdges),
+                               array("edges", &D::edges, countOf(&D::numEdges)),
+                               atLeast("numTriangles", &D::numTriangles, 1),
+                               requiredArray("triangles", &D::triangles, countOf(&D::numTriangles)),
+                               handle<AttributeSet>("polyhedronAttributeSet", &D::polyhedronAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

@@ -19,22 +19,6 @@ std::size_t TriGrid::facetCount(const TQ3TriGridData& data)
     return 2 * cells * columns;
 }
 
-namespace layout {
-template <>
-struct Describe<TQ3TriGridData> {
-    static auto fields()
-    {
-        using D = TQ3TriGridData;
-        return std::make_tuple(
-            atLeast("numRows", &D::numRows, 2), atLeast("numColumns", &D::numColumns, 2),
-            requiredArray("vertices", &D::vertices, countProduct(&D::numRows, &D::numColumns)),
-            optionalHandleArray<AttributeSet>("facetAttributeSet", &D::facetAttributeSet,
-                                              [](const D& d) { return d.facetAttributeSet != nullptr ? TriGrid::facetCount(d) : 0; }),
-            handle<AttributeSet>("triGridAttributeSet", &D::triGridAttributeSet));
-    }
-};
-} // namespace layout
-
 template class DataGeometry<TriGrid, TQ3TriGridData>;
 
 std::array<std::size_t, 3> TriGrid::facetVertices(std::size_t numColumns, std::size_t facet)

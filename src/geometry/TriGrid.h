@@ -3,6 +3,7 @@
 #pragma once
 
 #include "QD3DGeometry.h"
+#include "core/DataLayout.h"
 #include "geometry/DataGeometry.h"
 
 #include <array>
@@ -46,5 +47,22 @@ public:
 private:
     std::size_t vertexIndex(unsigned long row, unsigned long column) const;
 };
+
+// The data description (core/DataLayout.h).
+namespace layout {
+template <>
+struct Describe<TQ3TriGridData> {
+    static auto fields()
+    {
+        using D = TQ3TriGridData;
+        return std::make_tuple(
+            atLeast("numRows", &D::numRows, 2), atLeast("numColumns", &D::numColumns, 2),
+            requiredArray("vertices", &D::vertices, countProduct(&D::numRows, &D::numColumns)),
+            optionalHandleArray<AttributeSet>("facetAttributeSet", &D::facetAttributeSet,
+                                              [](const D& d) { return d.facetAttributeSet != nullptr ? TriGrid::facetCount(d) : 0; }),
+            handle<AttributeSet>("triGridAttributeSet", &D::triGridAttributeSet));
+    }
+};
+} // namespace layout
 
 } // namespace q3

@@ -26,180 +26,6 @@ bool isNullIndex(unsigned long index)
     return index == static_cast<unsigned long>(kQ3ArrayIndexNULL) || index == 0xFFFFFFFFUL;
 }
 
-// The handle a surface shader array holds for element `index`, or NULL (none,
-// or switched off by the use array, whose slot may hold anything).
-TQ3Object shaderAt(const TQ3TriMeshAttributeData& entry, std::size_t index)
-{
-    if (entry.attributeUseArray != nullptr && entry.attributeUseArray[index] == 0)
-        return nullptr;
-    TQ3Object handle;
-    std::memcpy(&handle, static_cast<const unsigned char*>(entry.data) + index * sizeof handle, sizeof handle);
-    return handle;
-}
-
-// A caller's surface shader, checked as Q3AttributeSet_Add checks one. The
-// class is found by its type code, so the geometry layer names no shader
-// class.
-SharedObject& lookupSurfaceShader(TQ3Object handle, const layout::Path& where)
-{
-    try {
-        Object& object = lookupObject(handle, "it");
-        if (!object.isType(kQ3ShaderTypeSurface))
-            fail(kQ3ErrorInvalidObjectType,
-                 std::string("it is a ") + object.classInfo().name + ", not a surface shader");
-        return static_cast<SharedObject&>(object);
-    } catch (const Error& error) {
-        fail(error.code(), where.str() + ": " + error.what());
-    }
-}
-
-// One attribute array (triangle, edge or vertex): numTypes entries, each with
-// a data block of `elementCount` values of its type and an optional
-// attributeUseArray of elementCount chars. Q3 knows the size of the standard
-// types it stores; any other type is refused (kQ3ErrorAttributeInvalidType).
-// A surface shader array (kQ3AttributeTypeSurfaceShader) holds a
-// TQ3SurfaceShaderObject per element, NULL for none: the copy holds one
-// reference to each shader an element uses (a live surface shader, checked
-// on New and SetData) and NULL in the elements the use array switches off.
-struct AttributeArraysField {
-    const char* name;
-    TQ3TriMeshAttributeData* D::*member;
-    unsigned long D::*typeCount;
-    unsigned long D::*elementCount;
-
-    static std::size_t valueSize(const TQ3TriMeshAttributeData& entry, const layout::Path& where)
-    {
-        try {
-            return AttributeSet::dataSize(entry.attributeType);
-        } catch (const Error& error) {
-            fail(error.code(), where.child("attributeType").str() + ": " + error.what());
-        }
-    }
-
-    // Presence: the entries, and each entry's data block unless there are
-    // no elements (entries are read only within the limit); maximum: the
-    // entries' count; values: each entry's type is one Q3 stores.
-    void check(const D& s, const layout::Path& path, layout::Pass pass) const
-    {
-        const layout::Path here = path.child(name);
-        const std::size_t n = s.*typeCount;
-        const TQ3TriMeshAttributeData* entries = s.*member;
-        switch (pass) {
-        case layout::Pass::kPresence:
-            if (entries == nullptr) {
-                if (n != 0)
-                    fail(kQ3ErrorNULLParameter,
-                         here.str() + " is NULL but should hold " + std::to_string(n) + " entries");
-                return;
-            }
-            if (n > limits::kMaxArrayCount || s.*elementCount == 0)
-                return;
-            for (std::size_t i = 0; i < n; ++i)
-                if (entries[i].data == nullptr)
-                    fail(kQ3ErrorNULLParameter, here.element(i).child("data").str() + " is NULL");
-            return;
-        case layout::Pass::kMinimum:
-            return;
-        case layout::Pass::kMaximum:
-            layout::checkCount(n, here);
-            return;
-        case layout::Pass::kValues:
-            if (entries != nullptr)
-                for (std::size_t i = 0; i < n; ++i)
-                    valueSize(entries[i], here.element(i));
-            return;
-        }
-    }
-    void clear(D& s) const { s.*member = nullptr; }
-    template <class Policy>
-    void fill(D& dst, const D& src, Policy& policy, const layout::Path& path) const
-    {
-        const TQ3TriMeshAttributeData* from = src.*member;
-        if (from == nullptr)
-            return;
-        const std::size_t n = src.*typeCount;
-        const std::size_t count = src.*elementCount;
-        TQ3TriMeshAttributeData* to = layout::allocate<TQ3TriMeshAttributeData>(n);
-        for (std::size_t i = 0; i < n; ++i)
-            to[i] = TQ3TriMeshAttributeData{from[i].attributeType, nullptr, nullptr};
-        dst.*member = to;
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t bytes = count * valueSize(from[i], path.child(name).element(i));
-            to[i].data = layout::allocate<unsigned char>(bytes);
-            if (from[i].attributeType == kQ3AttributeTypeSurfaceShader && count != 0)
-                std::memset(to[i].data, 0, bytes);
-            else if (bytes != 0)
-                std::memcpy(to[i].data, from[i].data, bytes);
-            if (from[i].attributeUseArray != nullptr && count != 0) {
-                to[i].attributeUseArray = layout::allocate<char>(count);
-                std::memcpy(to[i].attributeUseArray, from[i].attributeUseArray, count);
-            }
-            if (from[i].attributeType == kQ3AttributeTypeSurfaceShader)
-                takeShaders(to[i], from[i], count, policy, path.child(name).element(i));
-        }
-    }
-    // Fills a surface shader array's copy (all NULL) element by element, so
-    // that a failure leaves only taken references for release() to drop.
-    // New and SetData check each shader; GetData and Duplicate share them,
-    // as a duplicated attribute set shares its surface shader
-    // (AttributeSet::duplicate).
-    template <class Policy>
-    static void takeShaders(TQ3TriMeshAttributeData& to, const TQ3TriMeshAttributeData& from, std::size_t count,
-                            Policy&, const layout::Path& where)
-    {
-        TQ3Object* handles = static_cast<TQ3Object*>(to.data);
-        for (std::size_t e = 0; e < count; ++e) {
-            const TQ3Object handle = shaderAt(from, e);
-            if (handle == nullptr)
-                continue;
-            SharedObject* shader = std::is_same<Policy, layout::RetainChecked>::value
-                                       ? &lookupSurfaceShader(handle, where.child("data").element(e))
-                                       : layout::heldObject(handle);
-            handles[e] = Ref<SharedObject>::retain(shader).detach();
-        }
-    }
-    void release(D& s) const
-    {
-        TQ3TriMeshAttributeData* entries = std::exchange(s.*member, nullptr);
-        if (entries == nullptr)
-            return;
-        for (std::size_t i = 0; i < s.*typeCount; ++i) {
-            if (entries[i].attributeType == kQ3AttributeTypeSurfaceShader && entries[i].data != nullptr)
-                for (std::size_t e = 0; e < s.*elementCount; ++e)
-                    if (const TQ3Object handle = shaderAt(entries[i], e))
-                        layout::heldObject(handle)->releaseReference();
-            memory::release(entries[i].data);
-            memory::release(entries[i].attributeUseArray);
-        }
-        memory::release(entries);
-    }
-    void checkHandles(const D& s, const layout::Path& path) const
-    {
-        forEachShader(s, [&](TQ3Object handle, std::size_t i, std::size_t e) {
-            lookupSurfaceShader(handle, path.child(name).element(i).child("data").element(e));
-        });
-    }
-    template <class F>
-    void forEachHandle(const D& s, F& f) const
-    {
-        forEachShader(s, [&](TQ3Object handle, std::size_t, std::size_t) { f(handle); });
-    }
-    // Calls f(handle, entry, element) for every shader a surface shader array
-    // holds.
-    template <class F>
-    void forEachShader(const D& s, F&& f) const
-    {
-        const TQ3TriMeshAttributeData* entries = s.*member;
-        if (entries == nullptr)
-            return;
-        for (std::size_t i = 0; i < s.*typeCount; ++i)
-            if (entries[i].attributeType == kQ3AttributeTypeSurfaceShader && entries[i].data != nullptr)
-                for (std::size_t e = 0; e < s.*elementCount; ++e)
-                    if (const TQ3Object handle = shaderAt(entries[i], e))
-                        f(handle, i, e);
-    }
-};
-
 // Calls f(type, value) for every value element `index` has in an attribute
 // array (those its attributeUseArray does not switch off).
 template <class F>
@@ -233,28 +59,95 @@ void checkIndexValue(unsigned long value, unsigned long count, const std::string
 
 } // namespace
 
-namespace layout {
-template <>
-struct Describe<TQ3TriMeshData> {
-    static auto fields()
-    {
-        return std::make_tuple(
-            handle<AttributeSet>("triMeshAttributeSet", &D::triMeshAttributeSet),
-            array("triangles", &D::triangles, countOf(&D::numTriangles)),
-            AttributeArraysField{"triangleAttributeTypes", &D::triangleAttributeTypes, &D::numTriangleAttributeTypes,
-                                 &D::numTriangles},
-            array("edges", &D::edges, countOf(&D::numEdges)),
-            AttributeArraysField{"edgeAttributeTypes", &D::edgeAttributeTypes, &D::numEdgeAttributeTypes,
-                                 &D::numEdges},
-            // The points after every attribute array, so that an unknown
-            // attribute type is reported before a point that is not finite.
-            AttributeArraysField{"vertexAttributeTypes", &D::vertexAttributeTypes, &D::numVertexAttributeTypes,
-                                 &D::numPoints},
-            layout::finiteElements(array("points", &D::points, countOf(&D::numPoints))),
-            value("bBox", &D::bBox));
+TQ3Object TriMeshAttributeArraysField::shaderAt(const TQ3TriMeshAttributeData& entry, std::size_t index)
+{
+    if (entry.attributeUseArray != nullptr && entry.attributeUseArray[index] == 0)
+        return nullptr;
+    TQ3Object handle;
+    std::memcpy(&handle, static_cast<const unsigned char*>(entry.data) + index * sizeof handle, sizeof handle);
+    return handle;
+}
+
+// The class is found by its type code, so the geometry layer names no shader
+// class.
+SharedObject& TriMeshAttributeArraysField::lookupSurfaceShader(TQ3Object handle, const layout::Path& where)
+{
+    try {
+        Object& object = lookupObject(handle, "it");
+        if (!object.isType(kQ3ShaderTypeSurface))
+            fail(kQ3ErrorInvalidObjectType,
+                 std::string("it is a ") + object.classInfo().name + ", not a surface shader");
+        return static_cast<SharedObject&>(object);
+    } catch (const Error& error) {
+        fail(error.code(), where.str() + ": " + error.what());
     }
-};
-} // namespace layout
+}
+
+std::size_t TriMeshAttributeArraysField::valueSize(const TQ3TriMeshAttributeData& entry, const layout::Path& where)
+{
+    try {
+        return AttributeSet::dataSize(entry.attributeType);
+    } catch (const Error& error) {
+        fail(error.code(), where.child("attributeType").str() + ": " + error.what());
+    }
+}
+
+// Presence: the entries, and each entry's data block unless there are no
+// elements (entries are read only within the limit); maximum: the entries'
+// count; values: each entry's type is one Q3 stores.
+void TriMeshAttributeArraysField::check(const TQ3TriMeshData& s, const layout::Path& path, layout::Pass pass) const
+{
+    const layout::Path here = path.child(name);
+    const std::size_t n = s.*typeCount;
+    const TQ3TriMeshAttributeData* entries = s.*member;
+    switch (pass) {
+    case layout::Pass::kPresence:
+        if (entries == nullptr) {
+            if (n != 0)
+                fail(kQ3ErrorNULLParameter, here.str() + " is NULL but should hold " + std::to_string(n) + " entries");
+            return;
+        }
+        if (n > limits::kMaxArrayCount || s.*elementCount == 0)
+            return;
+        for (std::size_t i = 0; i < n; ++i)
+            if (entries[i].data == nullptr)
+                fail(kQ3ErrorNULLParameter, here.element(i).child("data").str() + " is NULL");
+        return;
+    case layout::Pass::kMinimum:
+        return;
+    case layout::Pass::kMaximum:
+        layout::checkCount(n, here);
+        return;
+    case layout::Pass::kValues:
+        if (entries != nullptr)
+            for (std::size_t i = 0; i < n; ++i)
+                valueSize(entries[i], here.element(i));
+        return;
+    }
+}
+
+void TriMeshAttributeArraysField::release(TQ3TriMeshData& s) const
+{
+    TQ3TriMeshAttributeData* entries = std::exchange(s.*member, nullptr);
+    if (entries == nullptr)
+        return;
+    for (std::size_t i = 0; i < s.*typeCount; ++i) {
+        if (entries[i].attributeType == kQ3AttributeTypeSurfaceShader && entries[i].data != nullptr)
+            for (std::size_t e = 0; e < s.*elementCount; ++e)
+                if (const TQ3Object handle = shaderAt(entries[i], e))
+                    layout::heldObject(handle)->releaseReference();
+        memory::release(entries[i].data);
+        memory::release(entries[i].attributeUseArray);
+    }
+    memory::release(entries);
+}
+
+void TriMeshAttributeArraysField::checkHandles(const TQ3TriMeshData& s, const layout::Path& path) const
+{
+    forEachShader(s, [&](TQ3Object handle, std::size_t i, std::size_t e) {
+        lookupSurfaceShader(handle, path.child(name).element(i).child("data").element(e));
+    });
+}
 
 template class DataGeometry<TriMesh, TQ3TriMeshData>;
 

@@ -111,6 +111,7 @@ void Session::step(Op op)
     case Op::kPicking: picking(); break;
     case Op::kControllers: controllers(); break;
     case Op::kElements: elements(); break;
+    case Op::kDescribed: described(); break;
     case Op::kCount: break;
     }
 }

@@ -3,6 +3,7 @@
 #include "CCaller.h"
 
 #include "QD3DDrawContext.h"
+#include "QD3DGeometry.h"
 #include "QD3DGroup.h"
 #include "QD3DIO.h"
 #include "QD3DMath.h"
@@ -31,6 +32,11 @@ TQ3Status q3fuzz_ViewHints_SetClearImageMethod(TQ3Object viewHints, int method)
 TQ3Status q3fuzz_SetDoubleBufferBypass(TQ3Object renderer, int bypass)
 {
     return Q3InteractiveRenderer_SetDoubleBufferBypass(renderer, (TQ3Boolean)bypass);
+}
+
+TQ3Status q3fuzz_GeneralPolygon_SetShapeHint(TQ3Object generalPolygon, int shapeHint)
+{
+    return Q3GeneralPolygon_SetShapeHint(generalPolygon, (TQ3GeneralPolygonShapeHint)shapeHint);
 }
 
 TQ3Status q3fuzz_StartBoundingBox(TQ3Object view, int computeBounds)

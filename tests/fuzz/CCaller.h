@@ -24,6 +24,7 @@ TQ3Status q3fuzz_StartBoundingBox(TQ3Object view, int computeBounds);
 TQ3Status q3fuzz_StartBoundingSphere(TQ3Object view, int computeBounds);
 TQ3Status q3fuzz_CalcAndUseBoundingBox(TQ3Object group, int computeBounds, TQ3Object view);
 TQ3Status q3fuzz_RotateTransform_SetAxis(TQ3Object transform, int axis);
+TQ3Status q3fuzz_GeneralPolygon_SetShapeHint(TQ3Object generalPolygon, int shapeHint);
 TQ3BoundingBox *q3fuzz_BoundingBox_Set(TQ3BoundingBox *bBox, const TQ3Point3D *min, const TQ3Point3D *max,
                                        int isEmpty);
 TQ3BoundingSphere *q3fuzz_BoundingSphere_Set(TQ3BoundingSphere *bSphere, const TQ3Point3D *origin, float radius,

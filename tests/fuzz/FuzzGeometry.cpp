@@ -230,9 +230,10 @@ void Session::surfaces()
             vertexCalls(kind, 12, set, Q3Polygon_GetVertexPosition, Q3Polygon_SetVertexPosition,
                         Q3Polygon_GetVertexAttributeSet, Q3Polygon_SetVertexAttributeSet);
     } else {
-        // TriMeshes keep their hand-written generator: their description is
-        // private to TriMesh.cpp, and the indices it cannot describe (each
-        // below numPoints or numTriangles) are what reach the renderer.
+        // TriMeshes keep a hand-written generator here (described() has the
+        // one from the description): the indices a description cannot
+        // state (each below numPoints or numTriangles) are what reach the
+        // renderer.
         const TQ3AttributeSet set = (m_in.u8() & 1) ? pick(Kind::kAttributeSet) : nullptr;
         const bool nullData = m_in.u8() == 0;
         TriMeshBuffers mesh;
@@ -363,6 +364,67 @@ void Session::quadrics()
         quadricData(action, kind, nullData, Q3Torus_New, Q3Torus_SetData, Q3Torus_GetData, Q3Torus_EmptyData,
                     Q3Torus_Submit);
         break;
+    }
+}
+
+void Session::described()
+{
+    const std::uint8_t type = m_in.u8() % 8;
+    const std::uint8_t action = m_in.u8() % 4;
+    const bool nullData = m_in.u8() == 0;
+    switch (type) {
+    case 0:
+        describedAction(action, Kind::kGeneralPolygon, nullData, Q3GeneralPolygon_New, Q3GeneralPolygon_SetData,
+                        Q3GeneralPolygon_GetData, Q3GeneralPolygon_EmptyData, Q3GeneralPolygon_Submit);
+        break;
+    case 1:
+        describedAction(action, Kind::kMarker, nullData, Q3Marker_New, Q3Marker_SetData, Q3Marker_GetData,
+                        Q3Marker_EmptyData, Q3Marker_Submit);
+        break;
+    case 2:
+        describedAction(action, Kind::kPixmapMarker, nullData, Q3PixmapMarker_New, Q3PixmapMarker_SetData,
+                        Q3PixmapMarker_GetData, Q3PixmapMarker_EmptyData, Q3PixmapMarker_Submit);
+        break;
+    case 3:
+        describedAction(action, Kind::kCurve, nullData, Q3NURBCurve_New, Q3NURBCurve_SetData, Q3NURBCurve_GetData,
+                        Q3NURBCurve_EmptyData, Q3NURBCurve_Submit);
+        refreshCurveShapes();
+        break;
+    case 4:
+        describedAction(action, Kind::kPatch, nullData, Q3NURBPatch_New, Q3NURBPatch_SetData, Q3NURBPatch_GetData,
+                        Q3NURBPatch_EmptyData, Q3NURBPatch_Submit);
+        break;
+    case 5:
+        describedAction(action, Kind::kPolyhedron, nullData, Q3Polyhedron_New, Q3Polyhedron_SetData,
+                        Q3Polyhedron_GetData, Q3Polyhedron_EmptyData, Q3Polyhedron_Submit);
+        break;
+    case 6:
+        describedAction(action, Kind::kTriGrid, nullData, Q3TriGrid_New, Q3TriGrid_SetData, Q3TriGrid_GetData,
+                        Q3TriGrid_EmptyData, Q3TriGrid_Submit);
+        break;
+    default:
+        // Q3 computes bBox from the points (QD3DGeometry.h), whatever the
+        // caller gave.
+        describedAction(action, Kind::kTriMesh, nullData, Q3TriMesh_New, Q3TriMesh_SetData, Q3TriMesh_GetData,
+                        Q3TriMesh_EmptyData, Q3TriMesh_Submit, [](const TQ3TriMeshData& got, const TQ3TriMeshData& set) {
+                            TQ3TriMeshData expected = set;
+                            expected.bBox = got.bBox;
+                            return sameData(got, expected);
+                        });
+        break;
+    }
+}
+
+void Session::refreshCurveShapes()
+{
+    for (const Held& h : m_held) {
+        if (h.kind != Kind::kCurve || m_initialized == 0)
+            continue;
+        TQ3NURBCurveData data{};
+        if (STATUS(Q3NURBCurve_GetData(h.handle, &data)) != kQ3Success)
+            continue;
+        m_curves[h.handle] = CurveShape{data.order, data.numPoints};
+        STATUS(Q3NURBCurve_EmptyData(&data));
     }
 }
 
@@ -527,10 +589,10 @@ void Session::polygons2Field(std::uint8_t type, Kind kind)
             break;
         }
         default: {
-            TQ3GeneralPolygonShapeHint hint = kQ3GeneralPolygonShapeHintComplex;
-            setRaw(hint, enumValue(3));
+            // From C: a hint outside the enumeration cannot be passed from C++.
+            const int hint = enumValue(3);
             edit = true;
-            status = STATUS(Q3GeneralPolygon_SetShapeHint(geometry, hint));
+            status = STATUS(q3fuzz_GeneralPolygon_SetShapeHint(geometry, hint));
             break;
         }
         }

@@ -28,19 +28,35 @@
 // but the malloc'ed arrays, in the description's order; then those arrays,
 // in that order. An element of an array that is itself described (a
 // TQ3Vertex3D) is read the same way, its own arrays after its other fields.
-//   float     a value; points and vectors three, rational points four.
+//   float     a value; points, vectors and rational 2D points three,
+//             rational points four; a fixed array (an edge's vertexIndices)
+//             or a plain struct (TQ3BoundingBox, a TriMesh triangle or
+//             edge) its members in order.
 //   integer   or enumeration: one byte t, < 224: t % 16; else four raw bytes.
 //   count     (a count with a minimum): one byte t, < 200: t % 13; < 232:
 //             13 + one more byte; < 244: kQ3GeometryMaxArrayCount + 1 +
 //             (t - 232); else ULONG_MAX - (t - 244).
 //   handle    one byte, < 128: NULL; < 240: the palette; else a handle
 //             (two more bytes, as above).
+//   storage   (a pixmap's image, read with the arrays): one byte t, < 32:
+//             NULL; < 48: a handle; else a new memory storage of t - 48
+//             bytes, or for t >= 240 of a u16 % 4097 bytes, followed by its
+//             first 16 bytes (the rest a pattern).
 //   array     one shape byte s. For a count past kQ3GeometryMaxArrayCount no
 //             element follows, and the array is NULL (s odd) or a decoy of
 //             one element. Otherwise s % 16 == 15 or a count past the
 //             generator's element budget: NULL, nothing follows; else the
 //             count's elements follow (an array of none is NULL when s &
 //             0x10). Arrays are never shorter than their counts claim.
+//   attribute arrays  (a TriMesh's, TriMeshAttributeArraysField): the
+//             number of types as a count with the other fields; with the
+//             arrays, an array of that many entries, each: one byte t, < 224:
+//             the type t % 13 (0 and 12 unknown), else four raw bytes; its
+//             data, an array of its type's values for every element (floats
+//             as values, a highlight state as an integer, a surface shader a
+//             byte < 128 for NULL, else a handle), or for an unknown type
+//             one byte, odd for NULL, else a one-word decoy; one byte, < 128
+//             for no use array, else an array of a char per element.
 
 #include <cstddef>
 #include <cstdint>
@@ -104,6 +120,7 @@ enum class Op : std::uint8_t {
     kPicking,
     kControllers,
     kElements,
+    kDescribed,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

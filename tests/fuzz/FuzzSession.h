@@ -509,12 +509,24 @@ private:
     // Fills a geometry's data struct from the input by walking the library's
     // description of it (FuzzData.h): first the palette (one picked
     // attribute set the struct's handle fields mostly share), then the
-    // fields. The arrays live in `arena`. Returns the palette.
+    // fields. The arrays live in `arena`, and the storage objects made for
+    // the struct are disposed of when it goes. Returns the palette.
     template <class S>
     TQ3AttributeSet readDescribed(S& data, DataArena& arena)
     {
         const TQ3AttributeSet palette = pick(Kind::kAttributeSet);
-        DataGenerator generator(m_in, arena, [this] { return pick(Kind::kAttributeSet); }, palette);
+        HandleSource source;
+        source.pick = [this](TQ3ObjectType type) {
+            return pick(type == kQ3ShaderTypeSurface ? Kind::kShader : Kind::kAttributeSet);
+        };
+        source.storage = [&arena](const std::vector<unsigned char>& bytes) {
+            const TQ3Object made = OBJECT(
+                Q3MemoryStorage_New(bytes.empty() ? nullptr : bytes.data(), static_cast<unsigned long>(bytes.size())));
+            if (made != nullptr)
+                arena.atEnd([made] { STATUS(Q3Object_Dispose(made)); });
+            return made;
+        };
+        DataGenerator generator(m_in, arena, std::move(source), palette);
         generator.fill(data);
         return palette;
     }
@@ -749,14 +761,45 @@ private:
                      TQ3Status (*getData)(TQ3GeometryObject, Data*), TQ3Status (*emptyData)(Data*),
                      TQ3Status (*submit)(const Data*, TQ3ViewObject))
     {
+        describedAction(action, kind, nullData, create, setData, getData, emptyData, submit);
+    }
+
+    // Whether GetData read back what was set, field by field as described.
+    struct SameDescribed {
+        template <class Data>
+        bool operator()(const Data& got, const Data& set) const
+        {
+            return sameData(got, set);
+        }
+    };
+
+    // One surfaceAction (0 New, 1 SetData, 2 GetData and EmptyData twice,
+    // 3 immediate Submit) with data read through the type's description
+    // (readDescribed); `same` compares what GetData gives with what was set.
+    template <class Data, class Same = SameDescribed>
+    void describedAction(std::uint8_t action, Kind kind, bool nullData, TQ3GeometryObject (*create)(const Data*),
+                         TQ3Status (*setData)(TQ3GeometryObject, const Data*),
+                         TQ3Status (*getData)(TQ3GeometryObject, Data*), TQ3Status (*emptyData)(Data*),
+                         TQ3Status (*submit)(const Data*, TQ3ViewObject), Same same = {})
+    {
         DataArena arena;
         Data data{};
         readDescribed(data, arena);
         if (action == 3 && !drawAllowed())
             return;
         surfaceAction<Data>(action, kind, nullData ? nullptr : &data, create, setData, getData, emptyData, submit,
-                            [](const Data& a, const Data& b) { return sameData(a, b); });
+                            same);
     }
+
+    // The types whose descriptions are not driven by another operation
+    // (general polygons, markers, pixmap markers, NURB curves and patches,
+    // polyhedra, triangle grids, TriMeshes): the type byte, the action byte
+    // (describedAction's), the non-null byte, the described data.
+    void described();
+
+    // After a described curve was made or set: every held curve's order and
+    // point count, as the curve operations expect to find them.
+    void refreshCurveShapes();
 
     void quadrics();
 
@@ -772,11 +815,11 @@ private:
         return true;
     }
 
-    // Hand-written: these four descriptions are private to their classes'
-    // .cpp files, and what reaches the triangulators is data the
-    // descriptions cannot state (indices below the counts they index,
-    // contours that share the vertex budget, a bitmap's image as large as
-    // rowBytes * height).
+    // Hand-written besides described() (which generates these types from
+    // their descriptions): what reaches the triangulators most often is data
+    // the descriptions cannot state (indices below the counts they index,
+    // contours that share the vertex budget, a bitmap's width that fits its
+    // rowBytes).
     void polygons2();
 
     void polygons2Field(std::uint8_t type, Kind kind);
@@ -791,9 +834,8 @@ private:
         TQ3Object made = nullptr;
     };
 
-    // Hand-written: the pixmap marker's description is private to
-    // PixmapMarker.cpp, and its image must be a storage object made here
-    // with the pixmap's byte size, which no description says.
+    // Hand-written besides described(): an image in a storage object of the
+    // pixmap's byte size, or a byte short, which no description says.
     StoragePixmapArgs storagePixmap();
 
     void releaseStorage(StoragePixmapArgs& a);

@@ -10,6 +10,7 @@
 #include "FuzzInput.h"
 
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -811,6 +812,91 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.op(Op::kQuadrics).u8(6).u8(0).u8(1).quadricData(6, {{12, 0.0f}});        // torus, ratio 0
         s.scene(2).startRendering().submitHeld(kTorus).endRendering();
         s.startRendering().op(Op::kQuadrics).u8(6).u8(5).u8(1).held().held().endRendering();
+    }
+    // described(): each of its eight types made from valid described data
+    // (FuzzInput.h), read back, set again, drawn and decomposed: a square
+    // general polygon, an 8 x 2 marker bitmap, a 2 x 2 RGB32 pixmap in a
+    // 16-byte memory storage, Listing 1's curve, a bilinear patch with a
+    // square trim loop, a tetrahedron, a 2 x 3 grid, a TriMesh triangle with
+    // vertex colours.
+    {
+        auto head = [](Seed& s, std::uint8_t type, std::uint8_t action) -> Seed& {
+            return s.op(Op::kDescribed).u8(type).u8(action).u8(1).null();
+        };
+        auto word = [](Seed& s, std::uint32_t v) -> Seed& { return v < 16 ? s.u8(std::uint8_t(v)) : s.u8(224).u32(v); };
+        const std::vector<std::function<void(Seed&)>> data = {
+            [&](Seed& s) { // general polygon: one contour of four vertices, complex
+                s.count(1).u8(0).noSet().array().count(4).array();
+                s.vertex(0, 0, 0).vertex(1, 0, 0).vertex(1, 1, 0).vertex(0, 1, 0);
+            },
+            [&](Seed& s) { // marker: 8 x 2 pixels, rows of 1 byte, big-endian bits
+                s.xyz(0, 0, 0).u8(0).u8(0);
+                word(s, 8).u8(2).u8(1).u8(0).array().u8(5).u8(10);
+                s.noSet();
+            },
+            [&](Seed& s) { // pixmap marker: 2 x 2 RGB32, rows of 8 bytes, 16 bytes of storage
+                s.xyz(0, 0, 0).u8(0).u8(0).u8(2).u8(2).u8(8);
+                word(s, 32).u8(0).u8(0).u8(0).u8(48 + 16);
+                for (int i = 0; i < 16; ++i)
+                    s.u8(std::uint8_t(i * 16));
+                s.noSet();
+            },
+            [&](Seed& s) { // NURB curve: Listing 1
+                s.u8(4).u8(4).noSet().array();
+                s.value(0).value(0).value(0).value(1).value(1).value(1).value(0).value(1);
+                s.value(2).value(0).value(0).value(1).value(3).value(1).value(0).value(1);
+                s.array();
+                for (float k : {0, 0, 0, 0, 1, 1, 1, 1})
+                    s.value(k);
+            },
+            [&](Seed& s) { // NURB patch: bilinear, 2 x 2, a square trim loop of order 2
+                s.u8(2).u8(2).u8(2).u8(2).u8(1).noSet().array();
+                s.value(0).value(0).value(0).value(1).value(1).value(0).value(0).value(1);
+                s.value(0).value(1).value(0).value(1).value(1).value(1).value(0).value(1);
+                s.array().value(0).value(0).value(1).value(1).array().value(0).value(0).value(1).value(1);
+                s.array().u8(1).array().u8(2).u8(5).array(); // one loop of one curve of 5 points
+                const float uv[5][2] = {{0.25f, 0.25f}, {0.75f, 0.25f}, {0.75f, 0.75f}, {0.25f, 0.75f}, {0.25f, 0.25f}};
+                for (const auto& p : uv)
+                    s.value(p[0]).value(p[1]).value(1);
+                s.array();
+                for (float k : {0, 0, 1, 2, 3, 4, 4})
+                    s.value(k);
+            },
+            [&](Seed& s) { // polyhedron: a tetrahedron, every side an edge
+                s.count(4).u8(0).count(4).noSet().array();
+                s.vertex(0, 0, 0).vertex(1, 0, 0).vertex(0, 1, 0).vertex(0, 0, 1).noArray().array();
+                const std::uint8_t faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+                for (const auto& f : faces)
+                    s.u8(f[0]).u8(f[1]).u8(f[2]).u8(7).noSet();
+            },
+            [&](Seed& s) { // triangle grid: 2 rows of 3, no facet sets
+                s.count(2).count(3).noSet().array();
+                for (int i = 0; i < 6; ++i)
+                    s.vertex(float(i % 3), float(i / 3), 0);
+                s.noArray();
+            },
+            [&](Seed& s) { // TriMesh: one triangle, its vertices' diffuse colours
+                s.noSet().u8(1).count(0).u8(0).count(0).u8(3).count(1);
+                s.xyz(0, 0, 0).xyz(1, 1, 0).u8(0);                   // bBox (Q3 computes its own)
+                s.array().u8(0).u8(1).u8(2).array().noArray().array(); // triangles, no attributes, no edges
+                s.array().u8(5).array(); // vertex colours (kQ3AttributeTypeDiffuseColor)
+                s.xyz(1, 0, 0).xyz(0, 1, 0).xyz(0, 0, 1).u8(0);
+                s.array().xyz(0, 0, 0).xyz(1, 0, 0).xyz(0, 1, 0);
+            },
+        };
+        static const Kind kKinds[] = {kGeneralPolygon, kMarker, kPixmapMarker, kCurve, kPatch, kPolyhedron, kTriGrid, kTriMesh};
+        static const char* const kNames[] = {"described-general-polygon", "described-marker", "described-pixmap-marker",
+                                             "described-curve", "described-patch", "described-polyhedron",
+                                             "described-trigrid", "described-trimesh"};
+        for (std::uint8_t type = 0; type < 8; ++type) {
+            Seed& s = add(kNames[type]);
+            data[type](head(s, type, 0));
+            data[type](head(s, type, 1));
+            s.held();
+            data[type](head(s, type, 2));
+            s.held();
+            s.scene(2).startRendering().submitHeld(kKinds[type]).endRendering().decompose();
+        }
     }
     // A mesh: a square with a square hole (FaceToContour) and a triangle on
     // its right edge, walked, checked against its counts, drawn, bounded,
