@@ -511,6 +511,23 @@ void Session::checkQuadricDecomposed(Kind kind, TQ3Object geometry, TQ3Object re
 {
     const char* call = "Q3Geometry_GetDecomposed";
     if (kind == Kind::kEllipse) {
+        // An empty arc (uMin == uMax, or 1 to 0) is nothing: "a TriMesh of
+        // no points" (QD3DGeometry.h); any other ellipse is a polyline.
+        TQ3EllipseData ellipse{};
+        const Posts saved = g_posts;
+        const bool emptyArc = Q3Ellipse_GetData(geometry, &ellipse) == kQ3Success &&
+                              (ellipse.uMin == ellipse.uMax || (ellipse.uMin == 1.0f && ellipse.uMax == 0.0f));
+        if (emptyArc)
+            Q3Ellipse_EmptyData(&ellipse);
+        g_posts = saved;
+        if (emptyArc && Q3Geometry_GetType(result) == kQ3GeometryTypeTriMesh) {
+            hold(result, Kind::kTriMesh);
+            TQ3TriMeshData mesh{};
+            STATUS(Q3TriMesh_GetData(result, &mesh));
+            require(mesh.numPoints == 0 && mesh.numTriangles == 0, call, "an empty arc gave a trimesh with points");
+            STATUS(Q3TriMesh_EmptyData(&mesh));
+            return;
+        }
         require(Q3Geometry_GetType(result) == kQ3GeometryTypePolyLine, call, "an ellipse gave no polyline");
         hold(result, Kind::kPolyLine);
         TQ3PolyLineData line{};

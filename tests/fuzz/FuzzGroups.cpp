@@ -5,7 +5,107 @@
 
 #include "FuzzSession.h"
 
+#include <cstdint>
+#include <cstdio>
+
 namespace q3fuzz {
+
+namespace {
+
+// Group classes (QD3DGroup.h): one per group class Q3 defines, registered
+// the first time a group of it is asked for and kept for the process. Their
+// methods check that each position's block goes through new, copy and
+// delete exactly as documented; a broken block is remembered and reported.
+constexpr std::uint32_t kLive = 0x51334750, kDeleted = 0xDEADDEAD;
+struct FuzzPosition {
+    std::uint32_t state;
+    std::uint32_t copies;
+};
+thread_local bool t_badBlock = false;
+
+TQ3Status fuzzPositionNew(void* gPos, TQ3Object, const void*)
+{
+    auto* block = static_cast<FuzzPosition*>(gPos);
+    t_badBlock |= block->state != 0 || block->copies != 0; // Q3 hands out zeroed blocks
+    block->state = kLive;
+    return kQ3Success;
+}
+
+TQ3Status fuzzPositionCopy(void* srcGPos, void* dstGPos)
+{
+    auto* from = static_cast<FuzzPosition*>(srcGPos);
+    auto* to = static_cast<FuzzPosition*>(dstGPos);
+    t_badBlock |= from->state != kLive || to->state != 0;
+    *to = *from;
+    ++to->copies;
+    return kQ3Success;
+}
+
+void fuzzPositionDelete(void* gPos)
+{
+    auto* block = static_cast<FuzzPosition*>(gPos);
+    t_badBlock |= block->state != kLive;
+    block->state = kDeleted;
+}
+
+// Refuses boxes, whatever the parent would say.
+TQ3Boolean fuzzAccept(TQ3GroupObject, TQ3Object object)
+{
+    return Q3Object_IsType(object, kQ3GeometryTypeBox) == kQ3True ? kQ3False : kQ3True;
+}
+
+// Draws the group's objects in order, through its positions.
+TQ3Status fuzzStartIterate(TQ3GroupObject group, TQ3GroupPosition* iterator, TQ3Object* object, TQ3ViewObject)
+{
+    *object = nullptr;
+    if (Q3Group_GetFirstPosition(group, iterator) != kQ3Success || *iterator == nullptr)
+        return kQ3Success;
+    return Q3Group_GetPositionObject(group, *iterator, object);
+}
+
+TQ3Status fuzzEndIterate(TQ3GroupObject group, TQ3GroupPosition* iterator, TQ3Object* object, TQ3ViewObject)
+{
+    Q3Object_Dispose(*object);
+    *object = nullptr;
+    if (Q3Group_GetNextPosition(group, iterator) != kQ3Success || *iterator == nullptr)
+        return kQ3Success;
+    return Q3Group_GetPositionObject(group, *iterator, object);
+}
+
+TQ3XFunctionPointer fuzzGroupMetaHandler(TQ3XMethodType type)
+{
+    switch (type) {
+    case kQ3XMethodType_GroupPositionSize:
+        return reinterpret_cast<TQ3XFunctionPointer>(static_cast<std::uintptr_t>(sizeof(FuzzPosition)));
+    case kQ3XMethodType_GroupPositionNew: return reinterpret_cast<TQ3XFunctionPointer>(&fuzzPositionNew);
+    case kQ3XMethodType_GroupPositionCopy: return reinterpret_cast<TQ3XFunctionPointer>(&fuzzPositionCopy);
+    case kQ3XMethodType_GroupPositionDelete: return reinterpret_cast<TQ3XFunctionPointer>(&fuzzPositionDelete);
+    case kQ3XMethodType_GroupAcceptObject: return reinterpret_cast<TQ3XFunctionPointer>(&fuzzAccept);
+    case kQ3XMethodType_GroupStartIterate: return reinterpret_cast<TQ3XFunctionPointer>(&fuzzStartIterate);
+    case kQ3XMethodType_GroupEndIterate: return reinterpret_cast<TQ3XFunctionPointer>(&fuzzEndIterate);
+    default: return nullptr;
+    }
+}
+
+// The class registered under parents[index], or null (not initialized).
+TQ3XObjectClass fuzzGroupClass(unsigned index)
+{
+    static const TQ3ObjectType kParents[] = {kQ3ShapeTypeGroup,         kQ3GroupTypeDisplay,
+                                             kQ3DisplayGroupTypeOrdered, kQ3DisplayGroupTypeIOProxy,
+                                             kQ3GroupTypeLight,         kQ3GroupTypeInfo};
+    static TQ3XObjectClass s_classes[6] = {};
+    index %= 6;
+    if (s_classes[index] == nullptr) {
+        char name[32];
+        std::snprintf(name, sizeof name, "Fuzz:Group%u", index);
+        TQ3ObjectType type = 0;
+        s_classes[index] =
+            Q3XObjectHierarchy_RegisterClass(kParents[index], &type, name, fuzzGroupMetaHandler, nullptr, 0, 0);
+    }
+    return s_classes[index];
+}
+
+} // namespace
 
 std::vector<TQ3Object> Session::objectsOf(TQ3Object group)
 {
@@ -123,12 +223,24 @@ void Session::checkGroup(TQ3Object group)
 
 void Session::groups()
 {
-    const std::uint8_t action = m_in.u8() % 10;
+    const std::uint8_t action = m_in.u8() % 11;
+    require(!t_badBlock, "a group class's position methods", "a position block was not made, copied or deleted once");
     const TQ3Object group = pick(Kind::kGroup);
     switch (action) {
     case 0: {
         TQ3Object made = nullptr;
-        switch (m_in.u8() % 8) {
+        switch (m_in.u8() % 9) {
+        case 8: {
+            // Registration (outside the call checked) fails only before
+            // Q3Initialize; the new object must come then.
+            const Posts saved = g_posts;
+            const TQ3XObjectClass groupClass = fuzzGroupClass(m_in.u8());
+            g_posts = saved;
+            made = OBJECT(Q3XObjectHierarchy_NewObject(groupClass, nullptr));
+            require((made != nullptr) == (groupClass != nullptr && m_initialized != 0),
+                    "Q3XObjectHierarchy_NewObject", "a registered group class made no group");
+            break;
+        }
         case 0: made = OBJECT(Q3Group_New()); break;
         case 1: made = OBJECT(Q3DisplayGroup_New()); break;
         case 2: made = OBJECT(Q3OrderedDisplayGroup_New()); break;
@@ -192,6 +304,12 @@ void Session::groups()
         break;
     }
     case 4: checkGroup(group); break;
+    case 10: {
+        // A block of the class's, or none (Q3's classes keep none).
+        const auto* block = static_cast<const FuzzPosition*>(POINTER(Q3XGroup_GetPositionPrivate(group, positionIn(group))));
+        require(block == nullptr || block->state == kLive, "Q3XGroup_GetPositionPrivate", "a block not made by the new method");
+        break;
+    }
     case 5: {
         const TQ3ObjectType type = typeToCount();
         if (m_in.u8() & 1)
