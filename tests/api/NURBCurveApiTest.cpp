@@ -15,15 +15,14 @@
 
 namespace {
 
+using q3test::CurveArrays;
 using q3test::expectShapeTypeChain;
+using q3test::listing1;
 using q3test::Q3ApiTest;
+using q3test::sixPointQuadratic;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
-
-using q3test::CurveArrays;
-using q3test::listing1;
-using q3test::sixPointQuadratic;
 
 class NURBCurveApiTest : public Q3ApiTest {
 protected:
