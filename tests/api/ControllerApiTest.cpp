@@ -37,6 +37,17 @@ struct Channels {
 };
 Channels g_channels;
 
+// What one of a controller's Boolean getters reports. It is read into a
+// False and into a True, which must agree: a call that wrote nothing fails.
+TQ3Boolean booleanOf(TQ3Status (*get)(TQ3ControllerRef, TQ3Boolean*), TQ3ControllerRef ref)
+{
+    TQ3Boolean fromFalse = kQ3False, fromTrue = kQ3True;
+    EXPECT_EQ(get(ref, &fromFalse), kQ3Success);
+    EXPECT_EQ(get(ref, &fromTrue), kQ3Success);
+    EXPECT_EQ(fromFalse, fromTrue) << "the call writes its result";
+    return fromTrue;
+}
+
 TQ3Status getChannel(TQ3ControllerRef ref, unsigned long channel, void* data, unsigned long* size)
 {
     g_channels.lastRef = ref;
@@ -166,9 +177,7 @@ Point3 rotate(const TQ3Quaternion& q, const Point3& v)
 TEST_F(ControllerApiTest, NewMakesAnInactiveControllerWithTheDriversDescription)
 {
     TQ3ControllerRef ref = makeDevice("Acme:Wand", false);
-    TQ3Boolean active = kQ3True;
-    ASSERT_EQ(Q3Controller_GetActivation(ref, &active), kQ3Success);
-    EXPECT_EQ(active, kQ3False);
+    EXPECT_EQ(booleanOf(Q3Controller_GetActivation, ref), kQ3False);
     unsigned long count = 0;
     ASSERT_EQ(Q3Controller_GetValueCount(ref, &count), kQ3Success);
     EXPECT_EQ(count, 3u);
@@ -178,9 +187,7 @@ TEST_F(ControllerApiTest, NewMakesAnInactiveControllerWithTheDriversDescription)
     unsigned long buttons = 99;
     ASSERT_EQ(Q3Controller_GetButtons(ref, &buttons), kQ3Success);
     EXPECT_EQ(buttons, 0u);
-    TQ3Boolean has = kQ3True;
-    ASSERT_EQ(Q3Controller_HasTracker(ref, &has), kQ3Success);
-    EXPECT_EQ(has, kQ3False);
+    EXPECT_EQ(booleanOf(Q3Controller_HasTracker, ref), kQ3False);
 }
 
 TEST_F(ControllerApiTest, NewRejectsBadData)
@@ -497,12 +504,8 @@ TEST_F(ControllerApiTest, TrackerButtonsAreTheOrOfItsControllers)
 
     // Disposing the tracker sends A and B back to the cursor tracker.
     ASSERT_EQ(Q3Object_Dispose(tracker), kQ3Success);
-    TQ3Boolean has = kQ3True;
-    ASSERT_EQ(Q3Controller_HasTracker(a, &has), kQ3Success);
-    EXPECT_EQ(has, kQ3False);
-    TQ3Boolean cursor = kQ3False;
-    ASSERT_EQ(Q3Controller_Track2DCursor(a, &cursor), kQ3Success);
-    EXPECT_EQ(cursor, kQ3True);
+    EXPECT_EQ(booleanOf(Q3Controller_HasTracker, a), kQ3False);
+    EXPECT_EQ(booleanOf(Q3Controller_Track2DCursor, a), kQ3True);
 }
 
 TEST_F(ControllerApiTest, ChangeButtonsMasksAndTrackerInactivityHoldsNotification)
@@ -537,9 +540,7 @@ TEST_F(ControllerApiTest, SetTrackerRejectsObjectsThatAreNotTrackers)
     TQ3TrackerObject dead = Q3Tracker_New(nullptr);
     Q3Object_Dispose(dead);
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Controller_SetTracker(ref, dead), kQ3Failure), kQ3ErrorInvalidObject);
-    TQ3Boolean cursor = kQ3False;
-    ASSERT_EQ(Q3Controller_Track2DCursor(ref, &cursor), kQ3Success);
-    EXPECT_EQ(cursor, kQ3True) << "still on the cursor tracker";
+    EXPECT_EQ(booleanOf(Q3Controller_Track2DCursor, ref), kQ3True) << "still on the cursor tracker";
     Q3Object_Dispose(geometry);
 }
 
@@ -1008,9 +1009,7 @@ TEST_F(ControllerApiTest, LastExitForgetsEveryControllerAndTheCursorSettings)
     ASSERT_EQ(Q3Controller_Next(nullptr, &first), kQ3Success);
     EXPECT_EQ(first, nullptr);
     TQ3ControllerRef ref = makeDevice("Fresh");
-    TQ3Boolean is2D = kQ3False;
-    ASSERT_EQ(Q3Controller_Track2DCursor(ref, &is2D), kQ3Success);
-    EXPECT_EQ(is2D, kQ3True) << "track deltas is back to its default";
+    EXPECT_EQ(booleanOf(Q3Controller_Track2DCursor, ref), kQ3True) << "track deltas is back to its default";
 }
 
 // ---- A camera driven by a tracker -----------------------------------------

@@ -189,6 +189,18 @@ protected:
         Q3ApiTest::TearDown();
     }
 
+    // A display group holding `objects` in order; it takes over the
+    // caller's reference to each.
+    static TQ3GroupObject displayGroupOf(std::initializer_list<TQ3Object> objects)
+    {
+        TQ3GroupObject group = Q3DisplayGroup_New();
+        for (TQ3Object object : objects) {
+            EXPECT_NE(Q3Group_AddObject(group, object), nullptr);
+            Q3Object_Dispose(object);
+        }
+        return group;
+    }
+
     // Writes object with constant subdivision, checks the file with the
     // validator, reads it back.
     TQ3GroupObject roundTrip(TQ3Object object, const std::string& name)
@@ -856,16 +868,10 @@ TEST_F(ExchangeApiTest, AnEmptyGroupWritesAValidFileThatReadsBackEmpty)
 // PolyLine of its line strip, a point as a Point.
 TEST_F(ExchangeApiTest, CurvesAndPointsComeBackAsPolyLinesAndPoints)
 {
-    TQ3GroupObject group = Q3DisplayGroup_New();
     TQ3PointData point{{1, 2, 3}, nullptr};
-    TQ3GeometryObject pointObject = Q3Point_New(&point);
     TQ3Vertex3D vertices[3] = {{{0, 0, 0}, nullptr}, {{1, 0, 0}, nullptr}, {{1, 1, 0}, nullptr}};
     TQ3PolyLineData polyLine{3, vertices, nullptr, nullptr};
-    TQ3GeometryObject polyLineObject = Q3PolyLine_New(&polyLine);
-    Q3Group_AddObject(group, pointObject);
-    Q3Group_AddObject(group, polyLineObject);
-    Q3Object_Dispose(pointObject);
-    Q3Object_Dispose(polyLineObject);
+    TQ3GroupObject group = displayGroupOf({Q3Point_New(&point), Q3PolyLine_New(&polyLine)});
     TQ3GroupObject back = roundTrip(group, "curves-points.glb");
     ASSERT_NE(back, nullptr);
     std::vector<TQ3Object> found;
@@ -930,14 +936,8 @@ TEST_F(ExchangeApiTest, AShearedGeometryIsWrittenInWorldSpace)
     Q3Matrix4x4_SetIdentity(&shear);
     shear.value[1][0] = 0.5f; // x += 0.5 y
     shear.value[3][2] = 2.0f; // then z += 2
-    TQ3TransformObject transform = Q3MatrixTransform_New(&shear);
     TQ3TriangleData triangle{{{{0, 0, 0}, nullptr}, {{1, 0, 0}, nullptr}, {{0, 1, 0}, nullptr}}, nullptr};
-    TQ3GeometryObject geometry = Q3Triangle_New(&triangle);
-    TQ3GroupObject group = Q3DisplayGroup_New();
-    Q3Group_AddObject(group, transform);
-    Q3Group_AddObject(group, geometry);
-    Q3Object_Dispose(transform);
-    Q3Object_Dispose(geometry);
+    TQ3GroupObject group = displayGroupOf({Q3MatrixTransform_New(&shear), Q3Triangle_New(&triangle)});
     TQ3GroupObject back = roundTrip(group, "shear.glb");
     ASSERT_NE(back, nullptr);
     std::vector<TQ3Object> meshes;

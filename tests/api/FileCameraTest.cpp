@@ -88,18 +88,29 @@ bool sameCommon(const TQ3CameraData& a, const TQ3CameraData& b)
            a.viewPort.height == b.viewPort.height;
 }
 
-void expectOrthographic(TQ3Object camera, const TQ3OrthographicCameraData& expected)
+// Checks that `camera` is a shared shape object, a camera of `type`, and
+// reads its data into `got` with `get`, checking the fields every camera has.
+template <class Data>
+void expectCameraOfType(TQ3Object camera, TQ3ObjectType type, TQ3Status (*get)(TQ3CameraObject, Data*),
+                        const Data& expected, Data& got)
 {
     ASSERT_NE(camera, nullptr);
     EXPECT_EQ(Q3Object_IsType(camera, kQ3ShapeTypeCamera), kQ3True);
     EXPECT_EQ(Q3Object_GetType(camera), kQ3ObjectTypeShared);
     EXPECT_EQ(Q3Shared_GetType(camera), kQ3SharedTypeShape);
     EXPECT_EQ(Q3Shape_GetType(camera), kQ3ShapeTypeCamera);
-    EXPECT_EQ(Q3Object_GetLeafType(camera), kQ3CameraTypeOrthographic);
-    EXPECT_EQ(Q3Camera_GetType(camera), kQ3CameraTypeOrthographic);
-    TQ3OrthographicCameraData got;
-    ASSERT_EQ(Q3OrthographicCamera_GetData(camera, &got), kQ3Success);
+    EXPECT_EQ(Q3Object_GetLeafType(camera), type);
+    EXPECT_EQ(Q3Camera_GetType(camera), type);
+    ASSERT_EQ(get(camera, &got), kQ3Success);
     EXPECT_TRUE(sameCommon(got.cameraData, expected.cameraData));
+}
+
+void expectOrthographic(TQ3Object camera, const TQ3OrthographicCameraData& expected)
+{
+    TQ3OrthographicCameraData got{};
+    expectCameraOfType(camera, kQ3CameraTypeOrthographic, Q3OrthographicCamera_GetData, expected, got);
+    if (::testing::Test::HasFatalFailure())
+        return;
     EXPECT_EQ(got.left, expected.left);
     EXPECT_EQ(got.top, expected.top);
     EXPECT_EQ(got.right, expected.right);
@@ -108,12 +119,10 @@ void expectOrthographic(TQ3Object camera, const TQ3OrthographicCameraData& expec
 
 void expectViewPlane(TQ3Object camera, const TQ3ViewPlaneCameraData& expected)
 {
-    ASSERT_NE(camera, nullptr);
-    EXPECT_EQ(Q3Object_IsType(camera, kQ3ShapeTypeCamera), kQ3True);
-    EXPECT_EQ(Q3Camera_GetType(camera), kQ3CameraTypeViewPlane);
-    TQ3ViewPlaneCameraData got;
-    ASSERT_EQ(Q3ViewPlaneCamera_GetData(camera, &got), kQ3Success);
-    EXPECT_TRUE(sameCommon(got.cameraData, expected.cameraData));
+    TQ3ViewPlaneCameraData got{};
+    expectCameraOfType(camera, kQ3CameraTypeViewPlane, Q3ViewPlaneCamera_GetData, expected, got);
+    if (::testing::Test::HasFatalFailure())
+        return;
     EXPECT_EQ(got.viewPlane, expected.viewPlane);
     EXPECT_EQ(got.halfWidthAtViewPlane, expected.halfWidthAtViewPlane);
     EXPECT_EQ(got.halfHeightAtViewPlane, expected.halfHeightAtViewPlane);
@@ -123,12 +132,10 @@ void expectViewPlane(TQ3Object camera, const TQ3ViewPlaneCameraData& expected)
 
 void expectViewAngle(TQ3Object camera, const TQ3ViewAngleAspectCameraData& expected)
 {
-    ASSERT_NE(camera, nullptr);
-    EXPECT_EQ(Q3Object_IsType(camera, kQ3ShapeTypeCamera), kQ3True);
-    EXPECT_EQ(Q3Camera_GetType(camera), kQ3CameraTypeViewAngleAspect);
-    TQ3ViewAngleAspectCameraData got;
-    ASSERT_EQ(Q3ViewAngleAspectCamera_GetData(camera, &got), kQ3Success);
-    EXPECT_TRUE(sameCommon(got.cameraData, expected.cameraData));
+    TQ3ViewAngleAspectCameraData got{};
+    expectCameraOfType(camera, kQ3CameraTypeViewAngleAspect, Q3ViewAngleAspectCamera_GetData, expected, got);
+    if (::testing::Test::HasFatalFailure())
+        return;
     EXPECT_EQ(got.fov, expected.fov);
     EXPECT_EQ(got.aspectRatioXToY, expected.aspectRatioXToY);
 }

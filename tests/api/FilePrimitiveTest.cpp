@@ -62,6 +62,25 @@ TQ3Status countingIdle(TQ3FileObject, const void* data)
     return counter->calls == counter->failAt ? kQ3Failure : kQ3Success;
 }
 
+// Reads one value with `read` and checks that it is `expected`.
+template <class T, class Expected>
+void expectRead(TQ3Status (*read)(T*, TQ3FileObject), TQ3FileObject file, Expected expected, const char* what)
+{
+    T value{};
+    ASSERT_EQ(read(&value, file), kQ3Success) << what;
+    EXPECT_EQ(value, expected) << what;
+}
+
+// Reads one 64-bit value with `read` and checks its two halves.
+template <class T, class Hi, class Lo>
+void expectReadHalves(TQ3Status (*read)(T*, TQ3FileObject), TQ3FileObject file, Hi hi, Lo lo, const char* what)
+{
+    T value{};
+    ASSERT_EQ(read(&value, file), kQ3Success) << what;
+    EXPECT_EQ(value.hi, hi) << what;
+    EXPECT_EQ(value.lo, lo) << what;
+}
+
 TQ3GeometryObject newPoint(float x)
 {
     const TQ3PointData data = {{x, 0, 0}, nullptr};
@@ -121,32 +140,14 @@ TEST_F(FilePrimitiveTest, BinaryObjectWrittenByHandHasTheExpectedBytesAndReadsBa
     ASSERT_NE(file, nullptr);
     EXPECT_EQ(Q3File_GetNextObjectType(file), kQ3ShapeTypeUnknown);
     EXPECT_EQ(Q3File_IsEndOfData(file), kQ3False);
-    TQ3Uns32 u32 = 0;
-    ASSERT_EQ(Q3Uns32_Read(&u32, file), kQ3Success);
-    EXPECT_EQ(u32, 7u);
-    TQ3Int16 i16 = 0;
-    ASSERT_EQ(Q3Int16_Read(&i16, file), kQ3Success);
-    EXPECT_EQ(i16, -2);
-    TQ3Int8 i8 = 0;
-    ASSERT_EQ(Q3Int8_Read(&i8, file), kQ3Success);
-    EXPECT_EQ(i8, -3);
-    TQ3Uns8 u8 = 0;
-    ASSERT_EQ(Q3Uns8_Read(&u8, file), kQ3Success);
-    EXPECT_EQ(u8, 200);
-    TQ3Float32 f32 = 0;
-    ASSERT_EQ(Q3Float32_Read(&f32, file), kQ3Success);
-    EXPECT_EQ(f32, 1.5f);
-    TQ3Float64 f64 = 0;
-    ASSERT_EQ(Q3Float64_Read(&f64, file), kQ3Success);
-    EXPECT_EQ(f64, -2.25);
-    TQ3Uns64 u64In = {};
-    ASSERT_EQ(Q3Uns64_Read(&u64In, file), kQ3Success);
-    EXPECT_EQ(u64In.hi, 1ul);
-    EXPECT_EQ(u64In.lo, 2ul);
-    TQ3Int64 i64In = {};
-    ASSERT_EQ(Q3Int64_Read(&i64In, file), kQ3Success);
-    EXPECT_EQ(i64In.hi, -1);
-    EXPECT_EQ(i64In.lo, 0xFFFFFFFBul);
+    expectRead(Q3Uns32_Read, file, 7u, "Q3Uns32_Read");
+    expectRead(Q3Int16_Read, file, -2, "Q3Int16_Read");
+    expectRead(Q3Int8_Read, file, -3, "Q3Int8_Read");
+    expectRead(Q3Uns8_Read, file, 200, "Q3Uns8_Read");
+    expectRead(Q3Float32_Read, file, 1.5f, "Q3Float32_Read");
+    expectRead(Q3Float64_Read, file, -2.25, "Q3Float64_Read");
+    expectReadHalves(Q3Uns64_Read, file, 1ul, 2ul, "Q3Uns64_Read");
+    expectReadHalves(Q3Int64_Read, file, -1, 0xFFFFFFFBul, "Q3Int64_Read");
     unsigned long length = 0;
     ASSERT_EQ(Q3String_Read(nullptr, &length, file), kQ3Success); // peeks
     EXPECT_EQ(length, 2ul);
@@ -164,6 +165,7 @@ TEST_F(FilePrimitiveTest, BinaryObjectWrittenByHandHasTheExpectedBytesAndReadsBa
     ASSERT_EQ(Q3Vector2D_Read(&vectorIn, file), kQ3Success);
     EXPECT_EQ(vectorIn.y, -0.5f);
     EXPECT_EQ(Q3File_IsEndOfData(file), kQ3True);
+    TQ3Uns8 u8 = 200;
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Uns8_Read(&u8, file), kQ3Failure), kQ3ErrorReadMoreThanSize);
     EXPECT_EQ(u8, 200);
     EXPECT_EQ(Q3File_IsEndOfContainer(file, nullptr), kQ3True);
@@ -195,32 +197,14 @@ TEST_F(FilePrimitiveTest, TextObjectReadsBackEveryKind)
                                            "Custom ( 4294967295 -32768 -128 255 0.25 1e300 18446744073709551615\n"
                                            "  -9223372036854775808 \"say \\\"hi\\\"\" 0x0A0b 1 2 3 4 5 6 7 8 9 )\n"));
     ASSERT_NE(file, nullptr);
-    TQ3Uns32 u32 = 0;
-    ASSERT_EQ(Q3Uns32_Read(&u32, file), kQ3Success);
-    EXPECT_EQ(u32, 4294967295ul);
-    TQ3Int16 i16 = 0;
-    ASSERT_EQ(Q3Int16_Read(&i16, file), kQ3Success);
-    EXPECT_EQ(i16, -32768);
-    TQ3Int8 i8 = 0;
-    ASSERT_EQ(Q3Int8_Read(&i8, file), kQ3Success);
-    EXPECT_EQ(i8, -128);
-    TQ3Uns8 u8 = 0;
-    ASSERT_EQ(Q3Uns8_Read(&u8, file), kQ3Success);
-    EXPECT_EQ(u8, 255);
-    TQ3Float32 f32 = 0;
-    ASSERT_EQ(Q3Float32_Read(&f32, file), kQ3Success);
-    EXPECT_EQ(f32, 0.25f);
-    TQ3Float64 f64 = 0;
-    ASSERT_EQ(Q3Float64_Read(&f64, file), kQ3Success);
-    EXPECT_EQ(f64, 1e300);
-    TQ3Uns64 u64 = {};
-    ASSERT_EQ(Q3Uns64_Read(&u64, file), kQ3Success);
-    EXPECT_EQ(u64.hi, 0xFFFFFFFFul);
-    EXPECT_EQ(u64.lo, 0xFFFFFFFFul);
-    TQ3Int64 i64 = {};
-    ASSERT_EQ(Q3Int64_Read(&i64, file), kQ3Success);
-    EXPECT_EQ(i64.hi, INT32_MIN);
-    EXPECT_EQ(i64.lo, 0ul);
+    expectRead(Q3Uns32_Read, file, 4294967295ul, "Q3Uns32_Read");
+    expectRead(Q3Int16_Read, file, -32768, "Q3Int16_Read");
+    expectRead(Q3Int8_Read, file, -128, "Q3Int8_Read");
+    expectRead(Q3Uns8_Read, file, 255, "Q3Uns8_Read");
+    expectRead(Q3Float32_Read, file, 0.25f, "Q3Float32_Read");
+    expectRead(Q3Float64_Read, file, 1e300, "Q3Float64_Read");
+    expectReadHalves(Q3Uns64_Read, file, 0xFFFFFFFFul, 0xFFFFFFFFul, "Q3Uns64_Read");
+    expectReadHalves(Q3Int64_Read, file, INT32_MIN, 0ul, "Q3Int64_Read");
     char text[kQ3StringMaximumLength];
     unsigned long length = 0;
     ASSERT_EQ(Q3String_Read(text, &length, file), kQ3Success);
@@ -313,9 +297,7 @@ TEST_F(FilePrimitiveTest, ContainerSubobjectsAreReadAfterTheRootsData)
     ASSERT_NE(file, nullptr);
     EXPECT_EQ(Q3File_IsEndOfContainer(file, nullptr), kQ3True); // no data read yet
     EXPECT_EQ(Q3File_IsEndOfData(file), kQ3False);
-    TQ3Uns32 value = 0;
-    ASSERT_EQ(Q3Uns32_Read(&value, file), kQ3Success);
-    EXPECT_EQ(value, 5u);
+    expectRead(Q3Uns32_Read, file, 5u, "Q3Uns32_Read");
     EXPECT_EQ(Q3File_IsEndOfData(file), kQ3True);
     EXPECT_EQ(Q3File_IsEndOfContainer(file, nullptr), kQ3False);
     EXPECT_EQ(Q3File_GetNextObjectType(file), kQ3GeometryTypePoint);
@@ -370,9 +352,7 @@ TEST_F(FilePrimitiveTest, ReadsOutsideAReadingFileOrPastTheDataFail)
     TQ3Int8 small = 7;
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Int8_Read(&small, file), kQ3Failure), kQ3ErrorInvalidMetafilePrimitive);
     EXPECT_EQ(small, 7);
-    TQ3Int16 wide = 0;
-    ASSERT_EQ(Q3Int16_Read(&wide, file), kQ3Success);
-    EXPECT_EQ(wide, 300);
+    expectRead(Q3Int16_Read, file, 300, "Q3Int16_Read");
     TQ3Point3D point = {9, 9, 9};
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Read(&point, file), kQ3Failure), kQ3ErrorReadMoreThanSize);
     EXPECT_EQ(point.x, 9.0f);

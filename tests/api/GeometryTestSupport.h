@@ -5,12 +5,17 @@
 // Helpers shared by the Triangle, Polygon and TriMesh API tests: the
 // non-finite floats every float input is tried with, the bad indices every
 // index-taking call is tried with, coloured attribute sets, an exact
-// reference count read through the public API, and handles that are not live
-// objects.
+// reference count read through the public API, handles that are not live
+// objects, and a geometry's decomposition.
 
 #include "QD3D.h"
+#include "QD3DGeometry.h"
 #include "QD3DSet.h"
+#include "QD3DView.h"
 
+#include <gtest/gtest.h>
+
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -77,6 +82,41 @@ inline TQ3Object strayHandle()
 {
     static int notAnObject = 0;
     return reinterpret_cast<TQ3Object>(&notAnObject);
+}
+
+/// What Q3Geometry_GetDecomposed returns for `geometry` inside an exact
+/// bounding loop of `view` (the call wants a started view); the caller
+/// disposes it.
+inline TQ3Object decomposedIn(TQ3ViewObject view, TQ3GeometryObject geometry)
+{
+    EXPECT_EQ(Q3View_StartBoundingBox(view, kQ3ComputeBoundsExact), kQ3Success);
+    TQ3Object result = Q3Geometry_GetDecomposed(geometry, view);
+    TQ3BoundingBox ignored;
+    EXPECT_EQ(Q3View_EndBoundingBox(view, &ignored), kQ3ViewStatusDone);
+    return result;
+}
+
+/// The triangles of `geometry`'s decomposition (a TriMesh), each as its
+/// three corner points in order; none, and a failure, when there is no mesh.
+inline std::vector<std::array<TQ3Point3D, 3>> decomposedTriangles(TQ3ViewObject view, TQ3GeometryObject geometry)
+{
+    std::vector<std::array<TQ3Point3D, 3>> triangles;
+    TQ3Object mesh = decomposedIn(view, geometry);
+    EXPECT_NE(mesh, nullptr);
+    TQ3TriMeshData data{};
+    if (mesh == nullptr || Q3TriMesh_GetData(mesh, &data) != kQ3Success) {
+        ADD_FAILURE() << "no TriMesh decomposition";
+        if (mesh != nullptr)
+            Q3Object_Dispose(mesh);
+        return triangles;
+    }
+    for (unsigned long t = 0; t < data.numTriangles; ++t) {
+        const unsigned long* corner = data.triangles[t].pointIndices;
+        triangles.push_back({data.points[corner[0]], data.points[corner[1]], data.points[corner[2]]});
+    }
+    Q3TriMesh_EmptyData(&data);
+    Q3Object_Dispose(mesh);
+    return triangles;
 }
 
 inline bool samePoint(const TQ3Point3D& a, const TQ3Point3D& b)

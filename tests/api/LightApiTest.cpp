@@ -6,6 +6,7 @@
 // SetData and every single-field setter.
 
 #include "OwningApiTest.h"
+#include "ShapeTypeChain.h"
 
 #include "QD3DLight.h"
 #include "QD3DMath.h"
@@ -22,6 +23,8 @@
 #include <vector>
 
 namespace {
+
+using q3test::expectShapeTypeChain;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -232,13 +235,8 @@ TEST_F(LightApiTest, EachKindHasItsTypeChainAndIsNotDrawable)
     for (const LightKind& kind : lightKinds()) {
         TQ3LightObject light = own(kind.create());
         ASSERT_NE(light, nullptr) << kind.name;
-        EXPECT_EQ(Q3Object_GetType(light), kQ3ObjectTypeShared) << kind.name;
-        EXPECT_EQ(Q3Shared_GetType(light), kQ3SharedTypeShape) << kind.name;
-        EXPECT_EQ(Q3Shape_GetType(light), kQ3ShapeTypeLight) << kind.name;
+        expectShapeTypeChain(light, kQ3ShapeTypeLight, kind.type, kQ3False, kind.name);
         EXPECT_EQ(Q3Light_GetType(light), kind.type) << kind.name;
-        EXPECT_EQ(Q3Object_GetLeafType(light), kind.type) << kind.name;
-        EXPECT_EQ(Q3Object_IsType(light, kQ3ShapeTypeLight), kQ3True) << kind.name;
-        EXPECT_EQ(Q3Object_IsDrawable(light), kQ3False) << kind.name;
     }
 }
 

@@ -7,6 +7,7 @@
 // the bound (the location). The drawing is checked by the markers scene.
 
 #include "GeometryTestSupport.h"
+#include "MarkerTestSupport.h"
 #include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
@@ -15,13 +16,14 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <vector>
 
 namespace {
 
 using namespace q3test;
 
-class MarkerApiTest : public OwningApiTest {
+class MarkerApiTest : public MarkerApiTestBase {
 protected:
     void SetUp() override
     {
@@ -83,33 +85,30 @@ TEST_F(MarkerApiTest, NewCopiesTheBitsThatGetDataAndGetBitmapReturn)
 
 TEST_F(MarkerApiTest, TheRulesAreCheckedInTheirOrder)
 {
+    // The fixture's data with one change; each case stands alone.
+    const auto refusedWith = [&](TQ3Error code, const std::function<void(TQ3MarkerData&)>& change) {
+        TQ3MarkerData data = m_data;
+        change(data);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), code);
+    };
+    for (float bad : kNonFinite)
+        refusedWith(kQ3ErrorInvalidData, [&](TQ3MarkerData& d) {
+            d.location.z = bad;
+            d.bitmap.width = 0;
+        });
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(nullptr), nullptr), kQ3ErrorNULLParameter);
+    refusedWith(kQ3ErrorNULLParameter, [](TQ3MarkerData& d) {
+        d.bitmap.image = nullptr;
+        d.location.x = kNaN;
+    });
+    refusedWith(kQ3ErrorInvalidData, [](TQ3MarkerData& d) { d.bitmap.width = 0; });
+    refusedWith(kQ3ErrorInvalidData, [](TQ3MarkerData& d) { d.bitmap.height = 0; });
+    refusedWith(kQ3ErrorInvalidData, [](TQ3MarkerData& d) { d.bitmap.width = 17; }); // needs three bytes a row
+    refusedWith(kQ3ErrorInvalidData, [](TQ3MarkerData& d) { d.bitmap.bitOrder = static_cast<TQ3Endian>(2); });
+    refusedWith(kQ3ErrorParameterOutOfRange, [](TQ3MarkerData& d) {
+        d.bitmap.rowBytes = kQ3GeometryMaxArrayCount; // times 3 rows: never read
+    });
     TQ3MarkerData data = m_data;
-    data.bitmap.image = nullptr;
-    data.location.x = kNaN;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), kQ3ErrorNULLParameter);
-    for (float bad : kNonFinite) {
-        data = m_data;
-        data.location.z = bad;
-        data.bitmap.width = 0;
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), kQ3ErrorInvalidData);
-    }
-    data = m_data;
-    data.bitmap.width = 0;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.bitmap.height = 0;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.bitmap.width = 17; // needs three bytes a row
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.bitmap.bitOrder = static_cast<TQ3Endian>(2);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.bitmap.rowBytes = kQ3GeometryMaxArrayCount; // times 3 rows: never read
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), kQ3ErrorParameterOutOfRange);
-    data = m_data;
     data.markerAttributeSet = view();
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Marker_New(&data), nullptr), kQ3ErrorInvalidObjectType);
     data.markerAttributeSet = deadObject();
@@ -127,56 +126,29 @@ TEST_F(MarkerApiTest, PerFieldCallsReadWriteAndChangeNothingOnFailure)
 {
     TQ3GeometryObject marker = own(Q3Marker_New(&m_data));
     const unsigned long edit = Q3Shared_GetEditIndex(marker);
-    TQ3Point3D p{};
-    long offset = 0;
-    ASSERT_EQ(Q3Marker_GetPosition(marker, &p), kQ3Success);
-    EXPECT_TRUE(samePoint(p, m_data.location));
-    ASSERT_EQ(Q3Marker_GetXOffset(marker, &offset), kQ3Success);
-    EXPECT_EQ(offset, -5);
-    ASSERT_EQ(Q3Marker_GetYOffset(marker, &offset), kQ3Success);
-    EXPECT_EQ(offset, 4);
-
-    for (float bad : kNonFinite) {
-        const TQ3Point3D q{bad, 0, 0};
-        EXPECT_Q3_ERROR(Q3Marker_SetPosition(marker, &q), kQ3ErrorInvalidData);
-    }
     TQ3Bitmap bad{m_bits.data(), 10, 3, 1, kQ3EndianBig};
     EXPECT_Q3_ERROR(Q3Marker_SetBitmap(marker, &bad), kQ3ErrorInvalidData);
     bad.image = nullptr;
     EXPECT_Q3_ERROR(Q3Marker_SetBitmap(marker, &bad), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3Marker_SetBitmap(marker, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3Marker_SetPosition(marker, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3Marker_GetPosition(marker, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3Marker_GetXOffset(marker, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3Marker_GetYOffset(marker, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3Marker_GetBitmap(marker, nullptr), kQ3ErrorNULLParameter);
+    EXPECT_Q3_ERROR(Q3Marker_EmptyData(nullptr), kQ3ErrorNULLParameter);
     for (TQ3Object wrong : notMarkers()) {
-        EXPECT_Q3_ERROR(Q3Marker_GetPosition(wrong, &p), kQ3ErrorInvalidObjectType);
-        EXPECT_Q3_ERROR(Q3Marker_SetXOffset(wrong, 1), kQ3ErrorInvalidObjectType);
-        EXPECT_Q3_ERROR(Q3Marker_SetYOffset(wrong, 1), kQ3ErrorInvalidObjectType);
         EXPECT_Q3_ERROR(Q3Marker_GetData(wrong, &m_data), kQ3ErrorInvalidObjectType);
         EXPECT_Q3_ERROR(Q3Marker_SetData(wrong, &m_data), kQ3ErrorInvalidObjectType);
     }
-    EXPECT_Q3_ERROR(Q3Marker_SetXOffset(nullptr, 1), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3Marker_SetYOffset(strayHandle(), 1), kQ3ErrorInvalidObject);
-    EXPECT_Q3_ERROR(Q3Marker_EmptyData(nullptr), kQ3ErrorNULLParameter);
     TQ3MarkerData badData = m_data;
     badData.bitmap.height = 0;
     EXPECT_Q3_ERROR(Q3Marker_SetData(marker, &badData), kQ3ErrorInvalidData);
     EXPECT_EQ(Q3Shared_GetEditIndex(marker), edit);
-    ASSERT_EQ(Q3Marker_GetPosition(marker, &p), kQ3Success);
-    EXPECT_TRUE(samePoint(p, m_data.location));
 
-    const TQ3Point3D moved{-1, -2, -3};
-    ASSERT_EQ(Q3Marker_SetPosition(marker, &moved), kQ3Success);
-    ASSERT_EQ(Q3Marker_SetXOffset(marker, -2147483647L - 1), kQ3Success);
-    ASSERT_EQ(Q3Marker_SetYOffset(marker, 77), kQ3Success);
+    expectPlacementCalls(kMarkerPlacement, marker, m_data.location, -5, 4, notMarkers(), -2147483647L - 1);
     const unsigned char one = 0x01;
     const TQ3Bitmap single{const_cast<unsigned char*>(&one), 8, 1, 1, kQ3EndianLittle};
     ASSERT_EQ(Q3Marker_SetBitmap(marker, &single), kQ3Success);
     TQ3MarkerData out{};
     ASSERT_EQ(Q3Marker_GetData(marker, &out), kQ3Success);
-    EXPECT_TRUE(samePoint(out.location, moved));
+    EXPECT_TRUE(samePoint(out.location, TQ3Point3D{-1, -2, -3}));
     EXPECT_EQ(out.xOffset, -2147483647L - 1);
     EXPECT_EQ(out.yOffset, 77);
     EXPECT_EQ(out.bitmap.width, 8u);
@@ -186,6 +158,7 @@ TEST_F(MarkerApiTest, PerFieldCallsReadWriteAndChangeNothingOnFailure)
     EXPECT_GT(Q3Shared_GetEditIndex(marker), edit);
 
     ASSERT_EQ(Q3Marker_SetData(marker, &m_data), kQ3Success);
+    long offset = 0;
     ASSERT_EQ(Q3Marker_GetXOffset(marker, &offset), kQ3Success);
     EXPECT_EQ(offset, -5);
 }
@@ -196,10 +169,7 @@ TEST_F(MarkerApiTest, TheBoundIsTheLocationAndAMarkerIsItsOwnDecomposition)
     const TQ3BoundingBox box = boundsOf([&](TQ3ViewObject v) { Q3Geometry_Submit(marker, v); });
     EXPECT_TRUE(samePoint(box.min, m_data.location));
     EXPECT_TRUE(samePoint(box.max, m_data.location));
-    ASSERT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
-    EXPECT_EQ(Q3Geometry_GetDecomposed(marker, view()), nullptr);
-    TQ3BoundingBox ignored;
-    EXPECT_EQ(Q3View_EndBoundingBox(view(), &ignored), kQ3ViewStatusDone);
+    EXPECT_EQ(decomposedIn(view(), marker), nullptr);
 }
 
 } // namespace

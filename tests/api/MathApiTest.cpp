@@ -375,10 +375,7 @@ TEST_F(MathApiTest, Point3DTransformRejectsNull)
 {
     const TQ3Point3D p{1, 2, 3};
     TQ3Point3D r{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Transform(nullptr, &kIdentity, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Transform(&p, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_Transform(&p, &kIdentity, nullptr), nullptr),
-                    kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Point3D_Transform", Q3Point3D_Transform, &p, &kIdentity, &r);
 }
 
 TEST_F(MathApiTest, RationalPoint4DTransformMultipliesWithoutDividing)
@@ -391,10 +388,7 @@ TEST_F(MathApiTest, RationalPoint4DTransformMultipliesWithoutDividing)
     const TQ3Matrix4x4 m = matrixOf({1, 0, 0, 1, 0, 2, 0, 0, 0, 0, 1, 0, 10, 20, 30, 1});
     TQ3RationalPoint4D p{1, 2, 3, 2};
     EXPECT_EQ(Q3RationalPoint4D_Transform(&p, &m, &p), &p);
-    EXPECT_FLOAT_EQ(p.x, 21);
-    EXPECT_FLOAT_EQ(p.y, 44);
-    EXPECT_FLOAT_EQ(p.z, 63);
-    EXPECT_FLOAT_EQ(p.w, 3);
+    expectRationalPoint(p, 21, 44, 63, 3);
 }
 
 TEST_F(MathApiTest, RationalPoint4DTransformKeepsAZeroWeight)
@@ -403,10 +397,7 @@ TEST_F(MathApiTest, RationalPoint4DTransformKeepsAZeroWeight)
     const TQ3RationalPoint4D direction{1, 2, 3, 0};
     TQ3RationalPoint4D r{};
     ASSERT_EQ(Q3RationalPoint4D_Transform(&direction, &m, &r), &r);
-    EXPECT_EQ(r.x, 1.0f);
-    EXPECT_EQ(r.y, 2.0f);
-    EXPECT_EQ(r.z, 3.0f);
-    EXPECT_EQ(r.w, 0.0f);
+    expectRationalPoint(r, 1, 2, 3, 0);
 }
 
 TEST_F(MathApiTest, RationalPoint4DTransformPropagatesNonFiniteValues)
@@ -425,12 +416,7 @@ TEST_F(MathApiTest, RationalPoint4DTransformRejectsNull)
 {
     const TQ3RationalPoint4D p{1, 2, 3, 1};
     TQ3RationalPoint4D r{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_Transform(nullptr, &kIdentity, &r), nullptr),
-                    kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_Transform(&p, nullptr, &r), nullptr),
-                    kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_Transform(&p, &kIdentity, nullptr), nullptr),
-                    kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3RationalPoint4D_Transform", Q3RationalPoint4D_Transform, &p, &kIdentity, &r);
 }
 
 // ---- Building matrices ------------------------------------------------------
@@ -664,10 +650,7 @@ TEST_F(MathApiTest, MultiplyPropagatesNonFiniteEntries)
 TEST_F(MathApiTest, MultiplyRejectsNull)
 {
     TQ3Matrix4x4 r{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Multiply(nullptr, &kIdentity, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Multiply(&kIdentity, nullptr, &r), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Matrix4x4_Multiply(&kIdentity, &kIdentity, nullptr), nullptr),
-                    kQ3ErrorNULLParameter);
+    expectEachNullRejected("Q3Matrix4x4_Multiply", Q3Matrix4x4_Multiply, &kIdentity, &kIdentity, &r);
 }
 
 TEST_F(MathApiTest, InvertTimesTheMatrixIsTheIdentity)

@@ -20,7 +20,31 @@
 namespace {
 
 using namespace q3test;
-using MathBoundsApiTest = Q3ApiTest;
+class MathBoundsApiTest : public Q3ApiTest {
+protected:
+    // Results filled with 7s, to see that a refused call leaves them alone.
+    TQ3BoundingBox m_box = filledWith<TQ3BoundingBox>(7);
+    TQ3BoundingSphere m_sphere = filledWith<TQ3BoundingSphere>(7);
+
+    // Each of the four array calls, into the members (NULL with nullResult),
+    // from `count` points of p or p4 at their own size, fails with `code`.
+    void expectArrayCallsFail(bool nullResult, const TQ3Point3D* p, const TQ3RationalPoint4D* p4, unsigned long count,
+                              TQ3Error code)
+    {
+        TQ3BoundingBox* b = nullResult ? nullptr : &m_box;
+        TQ3BoundingSphere* s = nullResult ? nullptr : &m_sphere;
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromPoints3D(b, p, count, sizeof *p), nullptr), code);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromRationalPoints4D(b, p4, count, sizeof *p4), nullptr), code);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromPoints3D(s, p, count, sizeof *p), nullptr), code);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromRationalPoints4D(s, p4, count, sizeof *p4), nullptr), code);
+    }
+
+    void expectResultsUntouched()
+    {
+        EXPECT_TRUE(sameBits(m_box, filledWith<TQ3BoundingBox>(7)));
+        EXPECT_TRUE(sameBits(m_sphere, filledWith<TQ3BoundingSphere>(7)));
+    }
+};
 
 TQ3BoundingBox box(TQ3Point3D min, TQ3Point3D max)
 {
@@ -410,30 +434,11 @@ TEST_F(MathBoundsApiTest, ArrayCallsRejectNullArraysWithPointsAndNullBounds)
 {
     const TQ3Point3D p{1, 2, 3};
     const TQ3RationalPoint4D p4{1, 2, 3, 1};
-    TQ3BoundingBox b = filledWith<TQ3BoundingBox>(7);
-    TQ3BoundingSphere s = filledWith<TQ3BoundingSphere>(7);
-    for (unsigned long count : {1UL, 2UL, ULONG_MAX}) {
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromPoints3D(&b, nullptr, count, sizeof p), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromRationalPoints4D(&b, nullptr, count, sizeof p4), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromPoints3D(&s, nullptr, count, sizeof p), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromRationalPoints4D(&s, nullptr, count, sizeof p4), nullptr),
-                        kQ3ErrorNULLParameter);
-    }
-    for (unsigned long count : {0UL, 1UL}) {
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromPoints3D(nullptr, &p, count, sizeof p), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromRationalPoints4D(nullptr, &p4, count, sizeof p4), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromPoints3D(nullptr, &p, count, sizeof p), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromRationalPoints4D(nullptr, &p4, count, sizeof p4), nullptr),
-                        kQ3ErrorNULLParameter);
-    }
-    EXPECT_TRUE(sameBits(b, filledWith<TQ3BoundingBox>(7)));
-    EXPECT_TRUE(sameBits(s, filledWith<TQ3BoundingSphere>(7)));
+    for (unsigned long count : {1UL, 2UL, ULONG_MAX})
+        expectArrayCallsFail(false, nullptr, nullptr, count, kQ3ErrorNULLParameter);
+    for (unsigned long count : {0UL, 1UL})
+        expectArrayCallsFail(true, &p, &p4, count, kQ3ErrorNULLParameter);
+    expectResultsUntouched();
 }
 
 // The arrays hold one point: counts beyond what any array could hold must
@@ -442,47 +447,33 @@ TEST_F(MathBoundsApiTest, ArrayCallsRejectCountsNoArrayCouldHoldBeforeReading)
 {
     const TQ3Point3D p{1, 2, 3};
     const TQ3RationalPoint4D p4{1, 2, 3, 1};
-    TQ3BoundingBox b = filledWith<TQ3BoundingBox>(7);
-    TQ3BoundingSphere s = filledWith<TQ3BoundingSphere>(7);
-    for (unsigned long count : {ULONG_MAX, ULONG_MAX / 12 + 1, 1UL << 62, (unsigned long)LONG_MAX}) {
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromPoints3D(&b, &p, count, sizeof p), nullptr),
-                        kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromRationalPoints4D(&b, &p4, count, sizeof p4), nullptr),
-                        kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromPoints3D(&s, &p, count, sizeof p), nullptr),
-                        kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromRationalPoints4D(&s, &p4, count, sizeof p4), nullptr),
-                        kQ3ErrorParameterOutOfRange);
-    }
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromPoints3D(&b, &p, 2, ULONG_MAX), nullptr),
+    for (unsigned long count : {ULONG_MAX, ULONG_MAX / 12 + 1, 1UL << 62, (unsigned long)LONG_MAX})
+        expectArrayCallsFail(false, &p, &p4, count, kQ3ErrorParameterOutOfRange);
+    EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromPoints3D(&m_box, &p, 2, ULONG_MAX), nullptr),
                     kQ3ErrorParameterOutOfRange);
-    EXPECT_TRUE(sameBits(b, filledWith<TQ3BoundingBox>(7)));
-    EXPECT_TRUE(sameBits(s, filledWith<TQ3BoundingSphere>(7)));
+    expectResultsUntouched();
 }
 
 TEST_F(MathBoundsApiTest, ArrayCallsRejectStridesSmallerThanAPointEvenForNoPoints)
 {
     const TQ3Point3D p[2] = {{1, 2, 3}, {4, 5, 6}};
     const TQ3RationalPoint4D p4[2] = {{1, 2, 3, 1}, {4, 5, 6, 1}};
-    TQ3BoundingBox b = filledWith<TQ3BoundingBox>(7);
-    TQ3BoundingSphere s = filledWith<TQ3BoundingSphere>(7);
     for (unsigned long count : {0UL, 1UL, 2UL}) {
         for (unsigned long stride : {0UL, 4UL, sizeof(TQ3Point3D) - 1}) {
-            EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromPoints3D(&b, p, count, stride), nullptr),
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromPoints3D(&m_box, p, count, stride), nullptr),
                             kQ3ErrorParameterOutOfRange);
-            EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromPoints3D(&s, p, count, stride), nullptr),
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromPoints3D(&m_sphere, p, count, stride), nullptr),
                             kQ3ErrorParameterOutOfRange);
         }
         // A TQ3Point3D's size is too small for a TQ3RationalPoint4D.
         for (unsigned long stride : {0UL, sizeof(TQ3Point3D), sizeof(TQ3RationalPoint4D) - 1}) {
-            EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromRationalPoints4D(&b, p4, count, stride), nullptr),
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingBox_SetFromRationalPoints4D(&m_box, p4, count, stride), nullptr),
                             kQ3ErrorParameterOutOfRange);
-            EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromRationalPoints4D(&s, p4, count, stride), nullptr),
+            EXPECT_Q3_ERROR(EXPECT_EQ(Q3BoundingSphere_SetFromRationalPoints4D(&m_sphere, p4, count, stride), nullptr),
                             kQ3ErrorParameterOutOfRange);
         }
     }
-    EXPECT_TRUE(sameBits(b, filledWith<TQ3BoundingBox>(7)));
-    EXPECT_TRUE(sameBits(s, filledWith<TQ3BoundingSphere>(7)));
+    expectResultsUntouched();
 }
 
 TEST_F(MathBoundsApiTest, ArrayPointsNeedNotBeAligned)

@@ -33,6 +33,18 @@ struct OnePointOfEachKind {
     TQ3RationalPoint3D o3{};
     TQ3Point3D op3{};
     TQ3RationalPoint4D o4{};
+
+    /// Calls check(affineComb, points, result) for each kind's
+    /// Q3*_AffineComb with its one point and its result.
+    template <class Check>
+    void forEachAffineComb(Check&& check)
+    {
+        check(Q3Point2D_AffineComb, p2, o2);
+        check(Q3Param2D_AffineComb, u, ou);
+        check(Q3RationalPoint3D_AffineComb, r3, o3);
+        check(Q3Point3D_AffineComb, p3, op3);
+        check(Q3RationalPoint4D_AffineComb, r4, o4);
+    }
 };
 
 // Angles come from sines and cosines rounded to float: a few ulps at 2 pi.
@@ -82,9 +94,7 @@ TEST_F(MathPointApiTest, GoingUpAppendsOne)
     const TQ3Point2D p2{3, -4};
     TQ3Point3D r3{};
     EXPECT_EQ(Q3Point2D_To3D(&p2, &r3), &r3);
-    EXPECT_EQ(r3.x, 3.0f);
-    EXPECT_EQ(r3.y, -4.0f);
-    EXPECT_EQ(r3.z, 1.0f);
+    EXPECT_TRUE(sameBits(r3, TQ3Point3D{3, -4, 1}));
     const TQ3Point3D p3{kNaN, kInf, 5};
     TQ3RationalPoint4D r4{};
     EXPECT_EQ(Q3Point3D_To4D(&p3, &r4), &r4);
@@ -621,60 +631,34 @@ TEST_F(MathPointApiTest, AffineCombinationsRejectWeightsSummingToZeroAndNoPoints
     // With no points the arrays may be NULL, but there is still nothing to combine.
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_AffineComb(nullptr, nullptr, 0, &r), nullptr), kQ3ErrorParameterOutOfRange);
     EXPECT_TRUE(sameBits(r, filledWith<TQ3Point3D>(7)));
-    TQ3Point2D r2{};
-    TQ3Param2D ru{};
-    TQ3RationalPoint3D rr3{};
-    TQ3RationalPoint4D rr4{};
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_AffineComb(nullptr, nullptr, 0, &r2), nullptr), kQ3ErrorParameterOutOfRange);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_AffineComb(nullptr, nullptr, 0, &ru), nullptr), kQ3ErrorParameterOutOfRange);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_AffineComb(nullptr, nullptr, 0, &rr3), nullptr),
-                    kQ3ErrorParameterOutOfRange);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_AffineComb(nullptr, nullptr, 0, &rr4), nullptr),
-                    kQ3ErrorParameterOutOfRange);
+    OnePointOfEachKind().forEachAffineComb([&](auto comb, auto, auto& out) {
+        EXPECT_Q3_ERROR(EXPECT_EQ(comb(nullptr, nullptr, 0, &out), nullptr), kQ3ErrorParameterOutOfRange);
+    });
 }
 
 TEST_F(MathPointApiTest, AffineCombinationsRejectNullArraysForOneOrMorePointsAndNullResults)
 {
-    auto [p2, u, r3, p3, r4, w, o2, ou, o3, op3, o4] = OnePointOfEachKind();
-    for (unsigned long count : {1UL, ULONG_MAX}) {
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_AffineComb(nullptr, w, count, &o2), nullptr), kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_AffineComb(p2, nullptr, count, &o2), nullptr), kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_AffineComb(nullptr, w, count, &ou), nullptr), kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_AffineComb(u, nullptr, count, &ou), nullptr), kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_AffineComb(nullptr, w, count, &o3), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_AffineComb(r3, nullptr, count, &o3), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_AffineComb(nullptr, w, count, &op3), nullptr), kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_AffineComb(p3, nullptr, count, &op3), nullptr), kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_AffineComb(nullptr, w, count, &o4), nullptr),
-                        kQ3ErrorNULLParameter);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_AffineComb(r4, nullptr, count, &o4), nullptr),
-                        kQ3ErrorNULLParameter);
-    }
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_AffineComb(p2, w, 1, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_AffineComb(u, w, 1, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_AffineComb(r3, w, 1, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_AffineComb(p3, w, 1, nullptr), nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_AffineComb(r4, w, 1, nullptr), nullptr), kQ3ErrorNULLParameter);
+    OnePointOfEachKind kinds;
+    kinds.forEachAffineComb([&](auto comb, auto points, auto& out) {
+        for (unsigned long count : {1UL, ULONG_MAX}) {
+            EXPECT_Q3_ERROR(EXPECT_EQ(comb(nullptr, kinds.w, count, &out), nullptr), kQ3ErrorNULLParameter);
+            EXPECT_Q3_ERROR(EXPECT_EQ(comb(points, nullptr, count, &out), nullptr), kQ3ErrorNULLParameter);
+        }
+        EXPECT_Q3_ERROR(EXPECT_EQ(comb(points, kinds.w, 1, nullptr), nullptr), kQ3ErrorNULLParameter);
+    });
 }
 
 // The arrays hold one point: a count beyond what any array could hold must
 // fail before anything is read (AddressSanitizer would see a read past them).
 TEST_F(MathPointApiTest, AffineCombinationsRejectCountsNoArrayCouldHoldBeforeReading)
 {
-    auto [p2, u, r3, p3, r4, w, o2, ou, o3, out, o4] = OnePointOfEachKind();
-    out = filledWith<TQ3Point3D>(7);
-    for (unsigned long count : {ULONG_MAX, ULONG_MAX / 4 + 1, 1UL << 62, (unsigned long)LONG_MAX}) {
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point3D_AffineComb(p3, w, count, &out), nullptr), kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Point2D_AffineComb(p2, w, count, &o2), nullptr), kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Param2D_AffineComb(u, w, count, &ou), nullptr), kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint3D_AffineComb(r3, w, count, &o3), nullptr),
-                        kQ3ErrorParameterOutOfRange);
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3RationalPoint4D_AffineComb(r4, w, count, &o4), nullptr),
-                        kQ3ErrorParameterOutOfRange);
-    }
-    EXPECT_TRUE(sameBits(out, filledWith<TQ3Point3D>(7)));
+    OnePointOfEachKind kinds;
+    kinds.op3 = filledWith<TQ3Point3D>(7);
+    for (unsigned long count : {ULONG_MAX, ULONG_MAX / 4 + 1, 1UL << 62, (unsigned long)LONG_MAX})
+        kinds.forEachAffineComb([&](auto comb, auto points, auto& out) {
+            EXPECT_Q3_ERROR(EXPECT_EQ(comb(points, kinds.w, count, &out), nullptr), kQ3ErrorParameterOutOfRange);
+        });
+    EXPECT_TRUE(sameBits(kinds.op3, filledWith<TQ3Point3D>(7)));
 }
 
 TEST_F(MathPointApiTest, AffineCombinationsPropagateNonFiniteValues)

@@ -36,9 +36,7 @@ TEST_F(MathVectorApiTest, Vector2DTo3DAppendsOne)
     const TQ3Vector2D v{3, -4};
     TQ3Vector3D r{};
     EXPECT_EQ(Q3Vector2D_To3D(&v, &r), &r);
-    EXPECT_EQ(r.x, 3.0f);
-    EXPECT_EQ(r.y, -4.0f);
-    EXPECT_EQ(r.z, 1.0f);
+    EXPECT_TRUE(sameBits(r, TQ3Vector3D{3, -4, 1}));
     const TQ3Vector2D bad{kNaN, kInf};
     Q3Vector2D_To3D(&bad, &r);
     EXPECT_TRUE(std::isnan(r.x));

@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "NURBCurveTestSupport.h"
 #include "Q3ApiTest.h"
+#include "ShapeTypeChain.h"
 
 #include "QD3DGeometry.h"
 #include "QD3DSet.h"
@@ -14,14 +15,14 @@
 
 namespace {
 
+using q3test::CurveArrays;
+using q3test::expectShapeTypeChain;
+using q3test::listing1;
 using q3test::Q3ApiTest;
+using q3test::sixPointQuadratic;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
-
-using q3test::CurveArrays;
-using q3test::listing1;
-using q3test::sixPointQuadratic;
 
 class NURBCurveApiTest : public Q3ApiTest {
 protected:
@@ -104,14 +105,9 @@ TEST_F(NURBCurveApiTest, NewCopiesTheCallersArrays)
 TEST_F(NURBCurveApiTest, ReportsQuickDraw3DTypesAtEveryLevel)
 {
     TQ3GeometryObject curve = newCurve(listing1());
-    EXPECT_EQ(Q3Object_GetType(curve), kQ3ObjectTypeShared);
-    EXPECT_EQ(Q3Shared_GetType(curve), kQ3SharedTypeShape);
-    EXPECT_EQ(Q3Shape_GetType(curve), kQ3ShapeTypeGeometry);
+    expectShapeTypeChain(curve, kQ3ShapeTypeGeometry, kQ3GeometryTypeNURBCurve, kQ3True);
     EXPECT_EQ(Q3Geometry_GetType(curve), kQ3GeometryTypeNURBCurve);
-    EXPECT_EQ(Q3Object_GetLeafType(curve), kQ3GeometryTypeNURBCurve);
-    EXPECT_EQ(Q3Object_IsType(curve, kQ3ShapeTypeGeometry), kQ3True);
     EXPECT_EQ(Q3Object_IsType(curve, kQ3SharedTypeSet), kQ3False);
-    EXPECT_EQ(Q3Object_IsDrawable(curve), kQ3True);
     Q3Object_Dispose(curve);
 }
 

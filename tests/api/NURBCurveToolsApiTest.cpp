@@ -128,6 +128,25 @@ P3 reference(const TQ3NURBCurveData& c, double t)
 double domainStart(const TQ3NURBCurveData& c) { return c.knots[c.order - 1]; }
 double domainEnd(const TQ3NURBCurveData& c) { return c.knots[c.numPoints]; }
 
+// A random trial's curve: order k = 2 + trial % 15 (2 to 16 in turn), clamped
+// on even trials (on odd ones with clampedOnOdd), its data and its domain.
+struct RandomTrial {
+    unsigned long k;
+    CurveArrays arrays;
+    TQ3NURBCurveData d;
+    double start, end;
+};
+
+RandomTrial randomTrial(std::mt19937& rng, int trial, bool clampedOnOdd = false)
+{
+    const unsigned long k = 2 + trial % 15;
+    RandomTrial r{k, randomCurve(rng, k, (trial % 2 == 1) == clampedOnOdd), {}, 0, 0};
+    r.d = r.arrays.data();
+    r.start = domainStart(r.d);
+    r.end = domainEnd(r.d);
+    return r;
+}
+
 // Largest projected control point coordinate (at least 1): what errors are relative to.
 double scaleOf(const TQ3NURBCurveData& c)
 {
@@ -779,11 +798,7 @@ TEST_F(NURBCurveToolsApiTest, InsertRefineElevateAndSplitKeepTheShapeOfRandomCur
     // combinations (~6e-8 of the curve's size); the issue asks for 1e-6.
     std::mt19937 rng(97);
     for (int trial = 0; trial < 150; ++trial) {
-        const unsigned long k = 2 + trial % 15;
-        CurveArrays arrays = randomCurve(rng, k, trial % 2 == 0);
-        const TQ3NURBCurveData d = arrays.data();
-        const double start = domainStart(d);
-        const double end = domainEnd(d);
+        auto [k, arrays, d, start, end] = randomTrial(rng, trial);
         const double tolerance = 1e-6 * scaleOf(d);
         float t = float(start + (end - start) * std::uniform_real_distribution<double>(0.05, 0.95)(rng));
         if (multiplicity(arrays, t) + 1 > k - 1)
@@ -824,11 +839,7 @@ TEST_F(NURBCurveToolsApiTest, RemovingWhatWasInsertedGivesTheCurveBack)
 {
     std::mt19937 rng(101);
     for (int trial = 0; trial < 60; ++trial) {
-        const unsigned long k = 2 + trial % 15;
-        CurveArrays arrays = randomCurve(rng, k, trial % 2 == 1);
-        const TQ3NURBCurveData d = arrays.data();
-        const double start = domainStart(d);
-        const double end = domainEnd(d);
+        auto [k, arrays, d, start, end] = randomTrial(rng, trial, true);
         const float t = float(start + (end - start) * 0.4375);
         const unsigned long existing = multiplicity(arrays, t);
         if (existing + 1 > k - 1)
@@ -852,9 +863,7 @@ TEST_F(NURBCurveToolsApiTest, DerivativesMatchFiniteDifferencesOfTheReference)
 {
     std::mt19937 rng(103);
     for (int trial = 0; trial < 60; ++trial) {
-        const unsigned long k = 2 + trial % 15;
-        CurveArrays arrays = randomCurve(rng, k, trial % 2 == 0);
-        const TQ3NURBCurveData d = arrays.data();
+        auto [k, arrays, d, start, end] = randomTrial(rng, trial);
         // A parameter in the middle of a non-empty span, steps well inside it.
         std::size_t span = k - 1;
         while (!(arrays.knots[span] < arrays.knots[span + 1]))
@@ -965,13 +974,9 @@ TEST_F(NURBCurveToolsApiTest, ArcLengthMatchesAFinePolylineAndItsInverse)
 {
     std::mt19937 rng(109);
     for (int trial = 0; trial < 30; ++trial) {
-        const unsigned long k = 2 + trial % 15;
-        CurveArrays arrays = randomCurve(rng, k, trial % 2 == 0);
-        const TQ3NURBCurveData d = arrays.data();
-        const double start = domainStart(d);
-        const double end = domainEnd(d);
+        auto [k, arrays, d, start, end] = randomTrial(rng, trial);
         // Polylines with m and 2m segments per span, Richardson-extrapolated.
-        const auto polyline = [&](int m) {
+        const auto polyline = [&d = d, k = k](int m) {
             double length = 0.0;
             for (unsigned long i = k - 1; i < d.numPoints; ++i) {
                 const double a = d.knots[i], b = d.knots[i + 1];
@@ -1018,9 +1023,7 @@ TEST_F(NURBCurveToolsApiTest, TheClosestPointIsNoFartherThanAnySampledPoint)
     std::mt19937 rng(113);
     std::uniform_real_distribution<float> coordinate(-15.0f, 15.0f);
     for (int trial = 0; trial < 40; ++trial) {
-        const unsigned long k = 2 + trial % 15;
-        CurveArrays arrays = randomCurve(rng, k, trial % 2 == 0);
-        const TQ3NURBCurveData d = arrays.data();
+        auto [k, arrays, d, start, end] = randomTrial(rng, trial);
         TQ3GeometryObject object = newCurve(arrays);
         const TQ3Point3D target{coordinate(rng), coordinate(rng), coordinate(rng)};
         float t = 0, tObject = 0;

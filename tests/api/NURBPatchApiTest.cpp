@@ -16,6 +16,7 @@
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -172,6 +173,21 @@ protected:
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3NURBPatch_Submit(&data, view.view()), kQ3Failure), code);
         Q3View_Cancel(view.view());
         EXPECT_EQ(Q3View_EndRendering(view.view()), kQ3ViewStatusCancelled);
+    }
+
+    // Runs `body` in a rendering loop of a size x size view under `style`
+    // (none: the view's default), then cancels the loop.
+    void whileRendering(const TQ3SubdivisionStyleData* style, unsigned long size,
+                        const std::function<void(TQ3ViewObject)>& body)
+    {
+        Pixmap image(size, size);
+        TestView view(image.pixmap());
+        ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
+        if (style != nullptr)
+            EXPECT_EQ(Q3SubdivisionStyle_Submit(style, view.view()), kQ3Success);
+        body(view.view());
+        Q3View_Cancel(view.view());
+        Q3View_EndRendering(view.view());
     }
 
     // Decomposes `patch` in a rendering loop under `style` (none: the
@@ -769,18 +785,15 @@ TEST_F(NURBPatchApiTest, CrossingTrimLoopsAreRefusedWhenDrawn)
     arrays.loops.push_back(polygon({{0.8f, 0.4f}, {1.9f, 0.4f}, {1.9f, 0.9f}, {0.8f, 0.9f}}));
     const TQ3NURBPatchData data = arrays.data();
     TQ3GeometryObject patch = newPatch(arrays); // not found when made
-    Pixmap image(32, 32);
-    TestView view(image.pixmap());
-    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(patch, view.view()), kQ3Failure), kQ3ErrorInvalidData);
-    EXPECT_NE(std::string(Q3Error_GetMessage()).find("trimLoops[0] and trimLoops[1] cross"), std::string::npos)
-        << Q3Error_GetMessage();
-    // Again: the refusal is not cached away.
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(patch, view.view()), kQ3Failure), kQ3ErrorInvalidData);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3NURBPatch_Submit(&data, view.view()), kQ3Failure), kQ3ErrorInvalidData);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_GetDecomposed(patch, view.view()), nullptr), kQ3ErrorInvalidData);
-    Q3View_Cancel(view.view());
-    Q3View_EndRendering(view.view());
+    whileRendering(nullptr, 32, [&](TQ3ViewObject view) {
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(patch, view), kQ3Failure), kQ3ErrorInvalidData);
+        EXPECT_NE(std::string(Q3Error_GetMessage()).find("trimLoops[0] and trimLoops[1] cross"), std::string::npos)
+            << Q3Error_GetMessage();
+        // Again: the refusal is not cached away.
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(patch, view), kQ3Failure), kQ3ErrorInvalidData);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3NURBPatch_Submit(&data, view), kQ3Failure), kQ3ErrorInvalidData);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_GetDecomposed(patch, view), nullptr), kQ3ErrorInvalidData);
+    });
     Q3Object_Dispose(patch);
 }
 
@@ -790,15 +803,12 @@ TEST_F(NURBPatchApiTest, ALoopCrossingItselfIsRefusedWhenDrawn)
     arrays.loops.push_back(polygon({{0.1f, 0.1f}, {1.5f, 0.9f}, {1.5f, 0.1f}, {0.1f, 0.9f}}));
     TQ3GeometryObject patch = newPatch(arrays);
     const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 2, 2};
-    Pixmap image(32, 32);
-    TestView view(image.pixmap());
-    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
-    EXPECT_EQ(Q3SubdivisionStyle_Submit(&style, view.view()), kQ3Success);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(patch, view.view()), kQ3Failure), kQ3ErrorInvalidData);
-    EXPECT_NE(std::string(Q3Error_GetMessage()).find("trimLoops[0] crosses or touches itself"), std::string::npos)
-        << Q3Error_GetMessage();
-    Q3View_Cancel(view.view());
-    Q3View_EndRendering(view.view());
+    whileRendering(&style, 32, [&](TQ3ViewObject view) {
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Geometry_Submit(patch, view), kQ3Failure), kQ3ErrorInvalidData);
+        EXPECT_NE(std::string(Q3Error_GetMessage()).find("trimLoops[0] crosses or touches itself"),
+                  std::string::npos)
+            << Q3Error_GetMessage();
+    });
     Q3Object_Dispose(patch);
 }
 
@@ -808,23 +818,19 @@ TEST_F(NURBPatchApiTest, MoreTrianglesThanTheCapWarnEveryTimeThePatchIsDrawn)
     TQ3GeometryObject patch = newPatch(arrays);
     // 2 spans x 1024 x 1024 x 2 triangles = 4 million, over the 2^20 cap.
     const TQ3SubdivisionStyleData style = {kQ3SubdivisionMethodConstant, 1024, 1024};
-    Pixmap image(16, 16);
-    TestView view(image.pixmap());
-    ASSERT_EQ(Q3View_StartRendering(view.view()), kQ3Success);
-    EXPECT_EQ(Q3SubdivisionStyle_Submit(&style, view.view()), kQ3Success);
-    EXPECT_Q3_WARNING(EXPECT_EQ(Q3Geometry_Submit(patch, view.view()), kQ3Success), kQ3WarningParameterOutOfRange);
-    EXPECT_Q3_WARNING(EXPECT_EQ(Q3Geometry_Submit(patch, view.view()), kQ3Success), kQ3WarningParameterOutOfRange);
-    TQ3GeometryObject mesh = nullptr;
-    EXPECT_Q3_WARNING(mesh = Q3Geometry_GetDecomposed(patch, view.view()), kQ3WarningParameterOutOfRange);
-    ASSERT_NE(mesh, nullptr);
-    TQ3TriMeshData data{};
-    EXPECT_EQ(Q3TriMesh_GetData(mesh, &data), kQ3Success);
-    EXPECT_LE(data.numTriangles, static_cast<unsigned long>(kQ3SubdivisionMaxTrianglesPerPatch));
-    EXPECT_GT(data.numTriangles, static_cast<unsigned long>(kQ3SubdivisionMaxTrianglesPerPatch) / 2);
-    Q3TriMesh_EmptyData(&data);
-    Q3Object_Dispose(mesh);
-    Q3View_Cancel(view.view());
-    Q3View_EndRendering(view.view());
+    whileRendering(&style, 16, [&](TQ3ViewObject view) {
+        EXPECT_Q3_WARNING(EXPECT_EQ(Q3Geometry_Submit(patch, view), kQ3Success), kQ3WarningParameterOutOfRange);
+        EXPECT_Q3_WARNING(EXPECT_EQ(Q3Geometry_Submit(patch, view), kQ3Success), kQ3WarningParameterOutOfRange);
+        TQ3GeometryObject mesh = nullptr;
+        EXPECT_Q3_WARNING(mesh = Q3Geometry_GetDecomposed(patch, view), kQ3WarningParameterOutOfRange);
+        ASSERT_NE(mesh, nullptr);
+        TQ3TriMeshData data{};
+        EXPECT_EQ(Q3TriMesh_GetData(mesh, &data), kQ3Success);
+        EXPECT_LE(data.numTriangles, static_cast<unsigned long>(kQ3SubdivisionMaxTrianglesPerPatch));
+        EXPECT_GT(data.numTriangles, static_cast<unsigned long>(kQ3SubdivisionMaxTrianglesPerPatch) / 2);
+        Q3TriMesh_EmptyData(&data);
+        Q3Object_Dispose(mesh);
+    });
     Q3Object_Dispose(patch);
 }
 

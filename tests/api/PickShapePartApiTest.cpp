@@ -233,26 +233,29 @@ TEST_F(PickShapePartApiTest, WindowPointPickGivesTheFaceUnderThePixel)
 
 TEST_F(PickShapePartApiTest, ComponentIsThePartsComponent)
 {
-    TQ3ShapePartObject inC = pickPart(5.2f, 0.2f, kQ3PickPartsMaskFace);
-    TQ3ShapePartObject edge = pickPart(1.02f, 0.5f, kQ3PickPartsMaskEdge);
-    TQ3ShapePartObject vertex = pickPart(0.0f, 0.01f, kQ3PickPartsMaskVertex);
-    ASSERT_TRUE(inC && edge && vertex);
-    TQ3MeshComponent c1 = nullptr, c2 = nullptr, c3 = nullptr, ab = nullptr, c = nullptr;
-    ASSERT_EQ(Q3MeshPart_GetComponent(inC, &c1), kQ3Success);
-    ASSERT_EQ(Q3MeshPart_GetComponent(edge, &c2), kQ3Success);
-    ASSERT_EQ(Q3MeshPart_GetComponent(vertex, &c3), kQ3Success);
+    TQ3MeshComponent ab = nullptr, c = nullptr;
     ASSERT_EQ(Q3Mesh_GetFaceComponent(m_mesh, m_a, &ab), kQ3Success);
     ASSERT_EQ(Q3Mesh_GetFaceComponent(m_mesh, m_c, &c), kQ3Success);
     EXPECT_NE(ab, c);
-    EXPECT_EQ(c1, c);
-    EXPECT_EQ(c2, ab);
-    EXPECT_EQ(c3, ab);
+    // A face inside C, and an edge and a vertex of A.
+    const struct {
+        float x, y;
+        TQ3PickParts mask;
+        TQ3MeshComponent component;
+    } picks[] = {{5.2f, 0.2f, kQ3PickPartsMaskFace, c},
+                 {1.02f, 0.5f, kQ3PickPartsMaskEdge, ab},
+                 {0.0f, 0.01f, kQ3PickPartsMaskVertex, ab}};
+    for (const auto& pick : picks) {
+        TQ3ShapePartObject part = pickPart(pick.x, pick.y, pick.mask);
+        ASSERT_NE(part, nullptr) << pick.mask;
+        TQ3MeshComponent component = nullptr;
+        EXPECT_EQ(Q3MeshPart_GetComponent(part, &component), kQ3Success) << pick.mask;
+        EXPECT_EQ(component, pick.component) << pick.mask;
+        Q3Object_Dispose(part);
+    }
     unsigned long n = 0;
-    ASSERT_EQ(Q3Mesh_GetComponentNumVertices(m_mesh, c1, &n), kQ3Success) << "a handle the mesh accepts";
+    ASSERT_EQ(Q3Mesh_GetComponentNumVertices(m_mesh, c, &n), kQ3Success) << "a handle the mesh accepts";
     EXPECT_EQ(n, 3u);
-    Q3Object_Dispose(inC);
-    Q3Object_Dispose(edge);
-    Q3Object_Dispose(vertex);
 }
 
 TEST_F(PickShapePartApiTest, NoShapePartWithoutPartsStyleOrForOtherGeometry)

@@ -8,6 +8,7 @@
 // PixmapMarkerRenderTest.cpp.
 
 #include "GeometryTestSupport.h"
+#include "MarkerTestSupport.h"
 #include "OwningApiTest.h"
 
 #include "QD3DGeometry.h"
@@ -16,13 +17,14 @@
 #include "QD3DView.h"
 
 #include <climits>
+#include <functional>
 #include <vector>
 
 namespace {
 
 using namespace q3test;
 
-class PixmapMarkerApiTest : public OwningApiTest {
+class PixmapMarkerApiTest : public MarkerApiTestBase {
 protected:
     void SetUp() override
     {
@@ -106,56 +108,50 @@ TEST_F(PixmapMarkerApiTest, NewReferencesTheStorageThatGetDataAndGetPixmapReturn
 TEST_F(PixmapMarkerApiTest, TheRulesAreCheckedInTheirOrder)
 {
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(nullptr), nullptr), kQ3ErrorNULLParameter);
+    // The fixture's data with one change.
+    const auto refusedWith = [&](TQ3Error code, const std::function<void(TQ3PixmapMarkerData&)>& change) {
+        TQ3PixmapMarkerData data = m_data;
+        change(data);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), code);
+    };
+    using Data = TQ3PixmapMarkerData;
+    refusedWith(kQ3ErrorNULLParameter, [](Data& d) {
+        d.pixmap.image = nullptr;
+        d.position.x = kNaN;
+    });
+    for (float bad : kNonFinite)
+        refusedWith(kQ3ErrorInvalidData, [&](Data& d) {
+            d.position.y = bad;
+            d.pixmap.pixelSize = 16; // a later rule with another code
+        });
+    for (int badType : {-1, 6, INT_MAX})
+        refusedWith(kQ3ErrorInvalidData, [&](Data& d) {
+            d.pixmap.pixelType = static_cast<TQ3PixelType>(badType);
+            d.pixmap.pixelSize = 7;
+        });
+    refusedWith(kQ3ErrorInvalidData, [](Data& d) {
+        d.pixmap.byteOrder = static_cast<TQ3Endian>(2);
+        d.pixmap.pixelSize = 7;
+    });
+    refusedWith(kQ3ErrorInvalidData, [](Data& d) {
+        d.pixmap.bitOrder = static_cast<TQ3Endian>(-1);
+        d.pixmap.pixelSize = 7;
+    });
+    for (unsigned long size : {0UL, 8UL, 16UL, 24UL, 33UL})
+        refusedWith(kQ3ErrorUnsupportedPixelDepth, [&](Data& d) {
+            d.pixmap.pixelSize = size;
+            d.pixmap.width = 0; // a later rule
+        });
+    refusedWith(kQ3ErrorInvalidData, [](Data& d) { d.pixmap.width = 0; });
+    refusedWith(kQ3ErrorInvalidData, [](Data& d) { d.pixmap.height = 0; });
+    refusedWith(kQ3ErrorInvalidData, [](Data& d) { d.pixmap.width = 5; });    // 20 bytes do not fit in 16
+    refusedWith(kQ3ErrorInvalidData, [](Data& d) { d.pixmap.width = ~0UL; }); // would overflow width * 4
+    refusedWith(kQ3ErrorParameterOutOfRange, [&](Data& d) {
+        d.pixmap.rowBytes = kQ3GeometryMaxArrayCount; // times 2 rows; the storage is never asked
+        d.pixmap.image = deadStorage();
+    });
+    refusedWith(kQ3ErrorParameterOutOfRange, [](Data& d) { d.pixmap.height = ~0UL; });
     TQ3PixmapMarkerData data = m_data;
-    data.pixmap.image = nullptr;
-    data.position.x = kNaN;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorNULLParameter);
-    for (float bad : kNonFinite) {
-        data = m_data;
-        data.position.y = bad;
-        data.pixmap.pixelSize = 16; // a later rule with another code
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidData);
-    }
-    for (int badType : {-1, 6, INT_MAX}) {
-        data = m_data;
-        data.pixmap.pixelType = static_cast<TQ3PixelType>(badType);
-        data.pixmap.pixelSize = 7;
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidData);
-    }
-    data = m_data;
-    data.pixmap.byteOrder = static_cast<TQ3Endian>(2);
-    data.pixmap.pixelSize = 7;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.pixmap.bitOrder = static_cast<TQ3Endian>(-1);
-    data.pixmap.pixelSize = 7;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidData);
-    for (unsigned long size : {0UL, 8UL, 16UL, 24UL, 33UL}) {
-        data = m_data;
-        data.pixmap.pixelSize = size;
-        data.pixmap.width = 0; // a later rule
-        EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorUnsupportedPixelDepth);
-    }
-    data = m_data;
-    data.pixmap.width = 0;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.pixmap.height = 0;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.pixmap.width = 5; // 20 bytes do not fit in 16
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.pixmap.width = ~0UL; // would overflow width * 4
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidData);
-    data = m_data;
-    data.pixmap.rowBytes = kQ3GeometryMaxArrayCount; // times 2 rows; the storage is never asked
-    data.pixmap.image = deadStorage();
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorParameterOutOfRange);
-    data = m_data;
-    data.pixmap.height = ~0UL;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorParameterOutOfRange);
-    data = m_data;
     data.pixmap.image = deadStorage();
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3PixmapMarker_New(&data), nullptr), kQ3ErrorInvalidObject);
     data.pixmap.image = strayHandle();
@@ -204,19 +200,6 @@ TEST_F(PixmapMarkerApiTest, PerFieldCallsReadWriteAndChangeNothingOnFailure)
 {
     TQ3GeometryObject marker = own(Q3PixmapMarker_New(&m_data));
     const unsigned long edit = Q3Shared_GetEditIndex(marker);
-    TQ3Point3D p{};
-    long offset = 0;
-    ASSERT_EQ(Q3PixmapMarker_GetPosition(marker, &p), kQ3Success);
-    EXPECT_TRUE(samePoint(p, m_data.position));
-    ASSERT_EQ(Q3PixmapMarker_GetXOffset(marker, &offset), kQ3Success);
-    EXPECT_EQ(offset, -5);
-    ASSERT_EQ(Q3PixmapMarker_GetYOffset(marker, &offset), kQ3Success);
-    EXPECT_EQ(offset, 4);
-
-    for (float bad : kNonFinite) {
-        const TQ3Point3D q{0, 0, bad};
-        EXPECT_Q3_ERROR(Q3PixmapMarker_SetPosition(marker, &q), kQ3ErrorInvalidData);
-    }
     TQ3StoragePixmap bad = m_data.pixmap;
     bad.rowBytes = 11;
     EXPECT_Q3_ERROR(Q3PixmapMarker_SetPixmap(marker, &bad), kQ3ErrorInvalidData);
@@ -234,21 +217,11 @@ TEST_F(PixmapMarkerApiTest, PerFieldCallsReadWriteAndChangeNothingOnFailure)
     bad.image = nullptr;
     EXPECT_Q3_ERROR(Q3PixmapMarker_SetPixmap(marker, &bad), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3PixmapMarker_SetPixmap(marker, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3PixmapMarker_SetPosition(marker, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3PixmapMarker_GetPosition(marker, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3PixmapMarker_GetXOffset(marker, nullptr), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3PixmapMarker_GetYOffset(marker, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3PixmapMarker_GetPixmap(marker, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3PixmapMarker_GetData(marker, nullptr), kQ3ErrorNULLParameter);
     EXPECT_Q3_ERROR(Q3PixmapMarker_SetData(marker, nullptr), kQ3ErrorNULLParameter);
     TQ3StoragePixmap pixmapOut{};
     for (TQ3Object wrong : notPixmapMarkers()) {
-        EXPECT_Q3_ERROR(Q3PixmapMarker_GetPosition(wrong, &p), kQ3ErrorInvalidObjectType);
-        EXPECT_Q3_ERROR(Q3PixmapMarker_SetPosition(wrong, &p), kQ3ErrorInvalidObjectType);
-        EXPECT_Q3_ERROR(Q3PixmapMarker_GetXOffset(wrong, &offset), kQ3ErrorInvalidObjectType);
-        EXPECT_Q3_ERROR(Q3PixmapMarker_SetXOffset(wrong, 1), kQ3ErrorInvalidObjectType);
-        EXPECT_Q3_ERROR(Q3PixmapMarker_GetYOffset(wrong, &offset), kQ3ErrorInvalidObjectType);
-        EXPECT_Q3_ERROR(Q3PixmapMarker_SetYOffset(wrong, 1), kQ3ErrorInvalidObjectType);
         EXPECT_Q3_ERROR(Q3PixmapMarker_GetPixmap(wrong, &pixmapOut), kQ3ErrorInvalidObjectType);
         EXPECT_Q3_ERROR(Q3PixmapMarker_SetPixmap(wrong, &m_data.pixmap), kQ3ErrorInvalidObjectType);
         EXPECT_Q3_ERROR(Q3PixmapMarker_GetData(wrong, &m_data), kQ3ErrorInvalidObjectType);
@@ -259,27 +232,20 @@ TEST_F(PixmapMarkerApiTest, PerFieldCallsReadWriteAndChangeNothingOnFailure)
     const TQ3MarkerData markerData{{0, 0, 0}, 0, 0, {const_cast<unsigned char*>(&bit), 1, 1, 1, kQ3EndianBig},
                                    nullptr};
     TQ3GeometryObject plain = own(Q3Marker_New(&markerData));
+    TQ3Point3D p{};
     EXPECT_Q3_ERROR(Q3PixmapMarker_GetPosition(plain, &p), kQ3ErrorInvalidObjectType);
     EXPECT_Q3_ERROR(Q3Marker_GetPosition(marker, &p), kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(Q3PixmapMarker_SetXOffset(nullptr, 1), kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(Q3PixmapMarker_SetYOffset(strayHandle(), 1), kQ3ErrorInvalidObject);
-    EXPECT_Q3_ERROR(Q3PixmapMarker_GetXOffset(deadObject(), &offset), kQ3ErrorInvalidObject);
     EXPECT_Q3_ERROR(Q3PixmapMarker_EmptyData(nullptr), kQ3ErrorNULLParameter);
     TQ3PixmapMarkerData badData = m_data;
     badData.pixmap.height = 0;
     EXPECT_Q3_ERROR(Q3PixmapMarker_SetData(marker, &badData), kQ3ErrorInvalidData);
     EXPECT_EQ(Q3Shared_GetEditIndex(marker), edit);
     EXPECT_EQ(referenceCount(m_storage), 2u);
-    ASSERT_EQ(Q3PixmapMarker_GetPosition(marker, &p), kQ3Success);
-    EXPECT_TRUE(samePoint(p, m_data.position));
     ASSERT_EQ(Q3PixmapMarker_GetPixmap(marker, &pixmapOut), kQ3Success);
     EXPECT_EQ(pixmapOut.height, 2u);
     Q3Object_Dispose(pixmapOut.image);
 
-    const TQ3Point3D moved{-1, -2, -3};
-    ASSERT_EQ(Q3PixmapMarker_SetPosition(marker, &moved), kQ3Success);
-    ASSERT_EQ(Q3PixmapMarker_SetXOffset(marker, LONG_MIN), kQ3Success);
-    ASSERT_EQ(Q3PixmapMarker_SetYOffset(marker, 77), kQ3Success);
+    expectPlacementCalls(kPixmapMarkerPlacement, marker, m_data.position, -5, 4, notPixmapMarkers(), LONG_MIN);
     const unsigned char rgb24[] = {10, 20, 30, 40, 50, 60};
     TQ3StorageObject other = own(Q3MemoryStorage_New(rgb24, 6));
     const TQ3StoragePixmap replacement{other, 2, 1, 6, 24, kQ3PixelTypeRGB24, kQ3EndianLittle, kQ3EndianBig};
@@ -288,7 +254,7 @@ TEST_F(PixmapMarkerApiTest, PerFieldCallsReadWriteAndChangeNothingOnFailure)
     EXPECT_EQ(referenceCount(other), 2u);
     TQ3PixmapMarkerData out{};
     ASSERT_EQ(Q3PixmapMarker_GetData(marker, &out), kQ3Success);
-    EXPECT_TRUE(samePoint(out.position, moved));
+    EXPECT_TRUE(samePoint(out.position, TQ3Point3D{-1, -2, -3}));
     EXPECT_EQ(out.xOffset, LONG_MIN);
     EXPECT_EQ(out.yOffset, 77);
     EXPECT_EQ(out.pixmap.image, other);
@@ -301,6 +267,7 @@ TEST_F(PixmapMarkerApiTest, PerFieldCallsReadWriteAndChangeNothingOnFailure)
     ASSERT_EQ(Q3PixmapMarker_SetData(marker, &m_data), kQ3Success);
     EXPECT_EQ(referenceCount(other), 1u);
     EXPECT_EQ(referenceCount(m_storage), 2u);
+    long offset = 0;
     ASSERT_EQ(Q3PixmapMarker_GetXOffset(marker, &offset), kQ3Success);
     EXPECT_EQ(offset, -5);
 }
@@ -339,10 +306,7 @@ TEST_F(PixmapMarkerApiTest, TheBoundIsThePositionAndAPixmapMarkerIsItsOwnDecompo
     const TQ3BoundingBox immediate = boundsOf(
         [&](TQ3ViewObject v) { EXPECT_Q3_ERROR(Q3PixmapMarker_Submit(&m_data, v), kQ3ErrorInvalidData); });
     EXPECT_EQ(immediate.isEmpty, kQ3True);
-    ASSERT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
-    EXPECT_EQ(Q3Geometry_GetDecomposed(marker, view()), nullptr);
-    TQ3BoundingBox ignored;
-    EXPECT_EQ(Q3View_EndBoundingBox(view(), &ignored), kQ3ViewStatusDone);
+    EXPECT_EQ(decomposedIn(view(), marker), nullptr);
 }
 
 TEST_F(PixmapMarkerApiTest, DuplicateCopiesTheFieldsAndDuplicatesTheStorage)

@@ -47,6 +47,47 @@ protected:
     TQ3PolyLineData m_data{};
 };
 
+// Everything GetData reports, copied out so that a failed call can be shown to
+// have changed nothing.
+struct PolyLineState {
+    std::vector<TQ3Point3D> points;
+    std::vector<TQ3AttributeSet> vertexSets;
+    std::vector<TQ3AttributeSet> segmentSets; // empty when there is no segment array
+    TQ3AttributeSet whole = nullptr;
+    unsigned long editIndex = 0;
+};
+
+PolyLineState stateOf(TQ3GeometryObject polyLine)
+{
+    PolyLineState state;
+    TQ3PolyLineData data{};
+    EXPECT_EQ(Q3PolyLine_GetData(polyLine, &data), kQ3Success);
+    for (unsigned long i = 0; i < data.numVertices; ++i) {
+        state.points.push_back(data.vertices[i].point);
+        state.vertexSets.push_back(data.vertices[i].attributeSet);
+    }
+    if (data.segmentAttributeSet != nullptr)
+        state.segmentSets.assign(data.segmentAttributeSet, data.segmentAttributeSet + data.numVertices - 1);
+    state.whole = data.polyLineAttributeSet;
+    EXPECT_EQ(Q3PolyLine_EmptyData(&data), kQ3Success);
+    state.editIndex = Q3Shared_GetEditIndex(polyLine);
+    return state;
+}
+
+void expectSameState(const PolyLineState& before, const PolyLineState& after)
+{
+    ASSERT_EQ(before.points.size(), after.points.size());
+    for (std::size_t i = 0; i < before.points.size(); ++i) {
+        EXPECT_EQ(before.points[i].x, after.points[i].x) << "vertex " << i;
+        EXPECT_EQ(before.points[i].y, after.points[i].y) << "vertex " << i;
+        EXPECT_EQ(before.points[i].z, after.points[i].z) << "vertex " << i;
+    }
+    EXPECT_EQ(before.vertexSets, after.vertexSets);
+    EXPECT_EQ(before.segmentSets, after.segmentSets);
+    EXPECT_EQ(before.whole, after.whole);
+    EXPECT_EQ(before.editIndex, after.editIndex);
+}
+
 // ---- Its size ----------------------------------------------------------
 
 TEST_F(PolyLineApiTest, TheSmallestPolyLineHasTwoVertices)
@@ -54,10 +95,7 @@ TEST_F(PolyLineApiTest, TheSmallestPolyLineHasTwoVertices)
     m_data.numVertices = 2;
     TQ3GeometryObject polyLine = own(Q3PolyLine_New(&m_data));
     ASSERT_NE(polyLine, nullptr);
-    TQ3PolyLineData out{};
-    ASSERT_EQ(Q3PolyLine_GetData(polyLine, &out), kQ3Success);
-    EXPECT_EQ(out.numVertices, 2u);
-    Q3PolyLine_EmptyData(&out);
+    EXPECT_EQ(stateOf(polyLine).points.size(), 2u);
 }
 
 // ---- The TQ3PolyLineData rules ----------------------------------------------------
@@ -112,47 +150,6 @@ TEST_F(PolyLineApiTest, SubmitInsideALoopChecksTheDataRules)
 constexpr unsigned long kHugeIndices[] = {std::numeric_limits<std::uint32_t>::max(),
                                           std::numeric_limits<unsigned long>::max()};
 
-// Everything GetData reports, copied out so that a failed call can be shown to
-// have changed nothing.
-struct PolyLineState {
-    std::vector<TQ3Point3D> points;
-    std::vector<TQ3AttributeSet> vertexSets;
-    std::vector<TQ3AttributeSet> segmentSets; // empty when there is no segment array
-    TQ3AttributeSet whole = nullptr;
-    unsigned long editIndex = 0;
-};
-
-PolyLineState stateOf(TQ3GeometryObject polyLine)
-{
-    PolyLineState state;
-    TQ3PolyLineData data{};
-    EXPECT_EQ(Q3PolyLine_GetData(polyLine, &data), kQ3Success);
-    for (unsigned long i = 0; i < data.numVertices; ++i) {
-        state.points.push_back(data.vertices[i].point);
-        state.vertexSets.push_back(data.vertices[i].attributeSet);
-    }
-    if (data.segmentAttributeSet != nullptr)
-        state.segmentSets.assign(data.segmentAttributeSet, data.segmentAttributeSet + data.numVertices - 1);
-    state.whole = data.polyLineAttributeSet;
-    EXPECT_EQ(Q3PolyLine_EmptyData(&data), kQ3Success);
-    state.editIndex = Q3Shared_GetEditIndex(polyLine);
-    return state;
-}
-
-void expectSameState(const PolyLineState& before, const PolyLineState& after)
-{
-    ASSERT_EQ(before.points.size(), after.points.size());
-    for (std::size_t i = 0; i < before.points.size(); ++i) {
-        EXPECT_EQ(before.points[i].x, after.points[i].x) << "vertex " << i;
-        EXPECT_EQ(before.points[i].y, after.points[i].y) << "vertex " << i;
-        EXPECT_EQ(before.points[i].z, after.points[i].z) << "vertex " << i;
-    }
-    EXPECT_EQ(before.vertexSets, after.vertexSets);
-    EXPECT_EQ(before.segmentSets, after.segmentSets);
-    EXPECT_EQ(before.whole, after.whole);
-    EXPECT_EQ(before.editIndex, after.editIndex);
-}
-
 TEST_F(PolyLineApiTest, SegmentAttributeSetsAreReadAndReplacedWithBalancedReferences)
 {
     TQ3AttributeSet green = own(colorSet(0, 1, 0));
@@ -175,9 +172,7 @@ TEST_F(PolyLineApiTest, SegmentAttributeSetsAreReadAndReplacedWithBalancedRefere
     EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, blue), kQ3Success);
     EXPECT_EQ(Q3Shared_IsReferenced(green), kQ3False);
     const PolyLineState state = stateOf(polyLine);
-    ASSERT_EQ(state.segmentSets.size(), 2u);
-    EXPECT_EQ(state.segmentSets[0], blue);
-    EXPECT_EQ(state.segmentSets[1], blue);
+    EXPECT_EQ(state.segmentSets, (std::vector<TQ3AttributeSet>{blue, blue}));
     EXPECT_EQ(state.vertexSets, std::vector<TQ3AttributeSet>(3, nullptr));
 
     EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, nullptr), kQ3Success);
@@ -207,9 +202,7 @@ TEST_F(PolyLineApiTest, APolyLineWithoutSegmentSetsGainsAnArrayOnlyWhenGivenASet
     EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 1, set), kQ3Success);
     EXPECT_NE(Q3Shared_GetEditIndex(polyLine), edit);
     const PolyLineState state = stateOf(polyLine);
-    ASSERT_EQ(state.segmentSets.size(), 2u);
-    EXPECT_EQ(state.segmentSets[0], nullptr);
-    EXPECT_EQ(state.segmentSets[1], set);
+    EXPECT_EQ(state.segmentSets, (std::vector<TQ3AttributeSet>{nullptr, set}));
 }
 
 TEST_F(PolyLineApiTest, IndexedAttributeSetCallsRejectBadIndicesAndChangeNothing)
@@ -278,25 +271,20 @@ TEST_F(PolyLineApiTest, PerVertexCallsRejectBadArgumentsAndChangeNothing)
         EXPECT_Q3_ERROR(Q3PolyLine_GetSegmentAttributeSet(wrong, 0, &got), code);
         EXPECT_Q3_ERROR(Q3PolyLine_SetSegmentAttributeSet(wrong, 0, set), code);
     }
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetVertexPosition(polyLine, 0, nullptr), kQ3Failure),
-                    kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexPosition(polyLine, 0, nullptr), kQ3Failure),
-                    kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetVertexAttributeSet(polyLine, 0, nullptr), kQ3Failure),
-                    kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_GetSegmentAttributeSet(polyLine, 0, nullptr), kQ3Failure),
-                    kQ3ErrorNULLParameter);
+    const auto fails = [&](TQ3Status status, TQ3Error code) {
+        EXPECT_Q3_ERROR(EXPECT_EQ(status, kQ3Failure), code);
+    };
+    fails(Q3PolyLine_GetVertexPosition(polyLine, 0, nullptr), kQ3ErrorNULLParameter);
+    fails(Q3PolyLine_SetVertexPosition(polyLine, 0, nullptr), kQ3ErrorNULLParameter);
+    fails(Q3PolyLine_GetVertexAttributeSet(polyLine, 0, nullptr), kQ3ErrorNULLParameter);
+    fails(Q3PolyLine_GetSegmentAttributeSet(polyLine, 0, nullptr), kQ3ErrorNULLParameter);
     // A NULL pointer is reported before a bad index.
     EXPECT_Q3_ERROR(Q3PolyLine_SetVertexPosition(polyLine, 99, nullptr), kQ3ErrorNULLParameter);
     // A bad attribute set handle is reported before a bad index.
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, notASet), kQ3Failure),
-                    kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 99, notASet), kQ3Failure),
-                    kQ3ErrorInvalidObjectType);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, stray), kQ3Failure),
-                    kQ3ErrorInvalidObject);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, stray), kQ3Failure),
-                    kQ3ErrorInvalidObject);
+    fails(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, notASet), kQ3ErrorInvalidObjectType);
+    fails(Q3PolyLine_SetSegmentAttributeSet(polyLine, 99, notASet), kQ3ErrorInvalidObjectType);
+    fails(Q3PolyLine_SetVertexAttributeSet(polyLine, 0, stray), kQ3ErrorInvalidObject);
+    fails(Q3PolyLine_SetSegmentAttributeSet(polyLine, 0, stray), kQ3ErrorInvalidObject);
     expectSameState(before, stateOf(polyLine));
 }
 

@@ -14,6 +14,7 @@
 #include "QD3DSet.h"
 #include "QD3DView.h"
 
+#include <functional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -109,7 +110,6 @@ TEST_F(PolyhedronApiTest, NewCopiesEverythingThatGetDataReturns)
     m_data.polyhedronAttributeSet = red;
     TQ3GeometryObject polyhedron = own(Q3Polyhedron_New(&m_data));
     ASSERT_NE(polyhedron, nullptr);
-    EXPECT_EQ(Q3Geometry_GetType(polyhedron), kQ3GeometryTypePolyhedron);
     EXPECT_EQ(referenceCount(red), 5u);
     TQ3PolyhedronData out{};
     ASSERT_EQ(Q3Polyhedron_GetData(polyhedron, &out), kQ3Success);
@@ -137,29 +137,24 @@ TEST_F(PolyhedronApiTest, NewCopiesEverythingThatGetDataReturns)
 TEST_F(PolyhedronApiTest, TheRulesAreCheckedInTheirOrder)
 {
     EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(nullptr), nullptr), kQ3ErrorNULLParameter);
-    TQ3PolyhedronData data = m_data;
-    data.vertices = nullptr;
-    data.numVertices = 0; // NULL comes first
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(&data), nullptr), kQ3ErrorNULLParameter);
-    data = m_data;
-    data.triangles = nullptr;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(&data), nullptr), kQ3ErrorNULLParameter);
-    data = m_data;
-    data.edges = nullptr;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(&data), nullptr), kQ3ErrorNULLParameter);
-    data = m_data;
-    data.numVertices = 2;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(&data), nullptr), kQ3ErrorGeometryInsufficientNumberOfPoints);
-    data = m_data;
-    data.numTriangles = 0;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(&data), nullptr), kQ3ErrorGeometryInsufficientNumberOfPoints);
+    // The fixture's data with one change.
+    const auto refusedWith = [&](TQ3Error code, const std::function<void(TQ3PolyhedronData&)>& change) {
+        TQ3PolyhedronData data = m_data;
+        change(data);
+        EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(&data), nullptr), code);
+    };
+    refusedWith(kQ3ErrorNULLParameter, [](TQ3PolyhedronData& d) {
+        d.vertices = nullptr;
+        d.numVertices = 0; // NULL comes first
+    });
+    refusedWith(kQ3ErrorNULLParameter, [](TQ3PolyhedronData& d) { d.triangles = nullptr; });
+    refusedWith(kQ3ErrorNULLParameter, [](TQ3PolyhedronData& d) { d.edges = nullptr; });
+    refusedWith(kQ3ErrorGeometryInsufficientNumberOfPoints, [](TQ3PolyhedronData& d) { d.numVertices = 2; });
+    refusedWith(kQ3ErrorGeometryInsufficientNumberOfPoints, [](TQ3PolyhedronData& d) { d.numTriangles = 0; });
     for (unsigned long TQ3PolyhedronData::*count :
          {&TQ3PolyhedronData::numVertices, &TQ3PolyhedronData::numEdges, &TQ3PolyhedronData::numTriangles})
-        for (unsigned long n : {(unsigned long)kQ3GeometryMaxArrayCount + 1, ~0UL}) {
-            data = m_data;
-            data.*count = n;
-            EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(&data), nullptr), kQ3ErrorParameterOutOfRange);
-        }
+        for (unsigned long n : {(unsigned long)kQ3GeometryMaxArrayCount + 1, ~0UL})
+            refusedWith(kQ3ErrorParameterOutOfRange, [&](TQ3PolyhedronData& d) { d.*count = n; });
     for (float bad : kNonFinite) {
         m_vertices[2].point.x = bad;
         EXPECT_Q3_ERROR(EXPECT_EQ(Q3Polyhedron_New(&m_data), nullptr), kQ3ErrorInvalidData);
@@ -296,20 +291,11 @@ TEST_F(PolyhedronApiTest, AccessorsReadAndWriteAtTheEdges)
 TEST_F(PolyhedronApiTest, TheDecompositionIsTheDataTriangleByTriangle)
 {
     TQ3GeometryObject polyhedron = own(Q3Polyhedron_New(&m_data));
-    ASSERT_EQ(Q3View_StartBoundingBox(view(), kQ3ComputeBoundsExact), kQ3Success);
-    TQ3GeometryObject mesh = Q3Geometry_GetDecomposed(polyhedron, view());
-    TQ3BoundingBox box;
-    EXPECT_EQ(Q3View_EndBoundingBox(view(), &box), kQ3ViewStatusDone);
-    ASSERT_NE(mesh, nullptr);
-    TQ3TriMeshData out{};
-    ASSERT_EQ(Q3TriMesh_GetData(mesh, &out), kQ3Success);
-    ASSERT_EQ(out.numTriangles, 4u);
+    const auto triangles = decomposedTriangles(view(), polyhedron);
+    ASSERT_EQ(triangles.size(), 4u);
     for (unsigned long t = 0; t < 4; ++t)
         for (int k = 0; k < 3; ++k)
-            EXPECT_TRUE(samePoint(out.points[out.triangles[t].pointIndices[k]],
-                                  m_vertices[m_triangles[t].vertexIndices[k]].point));
-    Q3TriMesh_EmptyData(&out);
-    Q3Object_Dispose(mesh);
+            EXPECT_TRUE(samePoint(triangles[t][k], m_vertices[m_triangles[t].vertexIndices[k]].point));
     const TQ3BoundingBox bounds = boundsOf([&](TQ3ViewObject v) { Q3Geometry_Submit(polyhedron, v); });
     EXPECT_EQ(bounds.max.x, 2.0f);
     EXPECT_EQ(bounds.max.z, 2.0f);

@@ -303,6 +303,26 @@ protected:
         return color;
     }
 
+    // The colour of Listing 1's curve (carrying curveSet) drawn after
+    // submitting the attribute state.
+    Rgba curveColorAfter(const std::function<void(TQ3ViewObject)>& state, TQ3AttributeSet curveSet = nullptr)
+    {
+        Listing1 listing;
+        const TQ3NURBCurveData data = listing.data(curveSet);
+        return renderedColor([&](TQ3ViewObject v) {
+            state(v);
+            Q3NURBCurve_Submit(&data, v);
+        });
+    }
+
+    // Every channel exactly: 255 where the colour is on, 0 where it is off.
+    static void expectColor(const Rgba& c, int r, int g, int b, const char* what = "")
+    {
+        EXPECT_EQ(c.r, r) << what;
+        EXPECT_EQ(c.g, g) << what;
+        EXPECT_EQ(c.b, b) << what;
+    }
+
     TQ3AttributeSet colorSet(float r, float g, float b)
     {
         TQ3AttributeSet set = Q3AttributeSet_New();
@@ -317,9 +337,7 @@ TEST_F(RenderColorTest, DefaultDiffuseColorIsWhite)
     Listing1 listing;
     const TQ3NURBCurveData data = listing.data();
     const Rgba c = renderedColor([&](TQ3ViewObject v) { Q3NURBCurve_Submit(&data, v); });
-    EXPECT_EQ(c.r, 255);
-    EXPECT_EQ(c.g, 255);
-    EXPECT_EQ(c.b, 255);
+    expectColor(c, 255, 255, 255);
 }
 
 TEST_F(RenderColorTest, CurveAttributeSetColorsTheCurve)
@@ -329,11 +347,9 @@ TEST_F(RenderColorTest, CurveAttributeSetColorsTheCurve)
     const TQ3NURBCurveData data = listing.data(red);
     TQ3GeometryObject curve = Q3NURBCurve_New(&data);
     const Rgba retained = renderedColor([&](TQ3ViewObject v) { Q3Geometry_Submit(curve, v); });
-    EXPECT_EQ(retained.r, 255);
-    EXPECT_EQ(retained.g + retained.b, 0);
+    expectColor(retained, 255, 0, 0, "retained");
     const Rgba immediate = renderedColor([&](TQ3ViewObject v) { Q3NURBCurve_Submit(&data, v); });
-    EXPECT_EQ(immediate.r, 255);
-    EXPECT_EQ(immediate.g + immediate.b, 0);
+    expectColor(immediate, 255, 0, 0, "immediate");
     Q3Object_Dispose(curve);
     Q3Object_Dispose(red);
 }
@@ -341,14 +357,8 @@ TEST_F(RenderColorTest, CurveAttributeSetColorsTheCurve)
 TEST_F(RenderColorTest, SubmittedAttributeStateColorsACurveWithoutItsOwn)
 {
     TQ3AttributeSet green = colorSet(0, 1, 0);
-    Listing1 listing;
-    const TQ3NURBCurveData data = listing.data();
-    const Rgba c = renderedColor([&](TQ3ViewObject v) {
-        EXPECT_EQ(Q3AttributeSet_Submit(green, v), kQ3Success);
-        Q3NURBCurve_Submit(&data, v);
-    });
-    EXPECT_EQ(c.g, 255);
-    EXPECT_EQ(c.r + c.b, 0);
+    expectColor(curveColorAfter([&](TQ3ViewObject v) { EXPECT_EQ(Q3AttributeSet_Submit(green, v), kQ3Success); }),
+                0, 255, 0);
     Q3Object_Dispose(green);
 }
 
@@ -356,14 +366,7 @@ TEST_F(RenderColorTest, CurveOwnColorWinsOverTheAttributeState)
 {
     TQ3AttributeSet green = colorSet(0, 1, 0);
     TQ3AttributeSet blue = colorSet(0, 0, 1);
-    Listing1 listing;
-    const TQ3NURBCurveData data = listing.data(blue);
-    const Rgba c = renderedColor([&](TQ3ViewObject v) {
-        Q3AttributeSet_Submit(green, v);
-        Q3NURBCurve_Submit(&data, v);
-    });
-    EXPECT_EQ(c.b, 255);
-    EXPECT_EQ(c.r + c.g, 0);
+    expectColor(curveColorAfter([&](TQ3ViewObject v) { Q3AttributeSet_Submit(green, v); }, blue), 0, 0, 255);
     Q3Object_Dispose(green);
     Q3Object_Dispose(blue);
 }
@@ -371,17 +374,12 @@ TEST_F(RenderColorTest, CurveOwnColorWinsOverTheAttributeState)
 TEST_F(RenderColorTest, PopRestoresTheAttributeStateOfThePush)
 {
     TQ3AttributeSet green = colorSet(0, 1, 0);
-    Listing1 listing;
-    const TQ3NURBCurveData data = listing.data();
-    const Rgba c = renderedColor([&](TQ3ViewObject v) {
+    const Rgba c = curveColorAfter([&](TQ3ViewObject v) {
         EXPECT_EQ(Q3Push_Submit(v), kQ3Success);
         Q3AttributeSet_Submit(green, v);
         EXPECT_EQ(Q3Pop_Submit(v), kQ3Success);
-        Q3NURBCurve_Submit(&data, v);
     });
-    EXPECT_EQ(c.r, 255);
-    EXPECT_EQ(c.g, 255);
-    EXPECT_EQ(c.b, 255);
+    expectColor(c, 255, 255, 255);
     Q3Object_Dispose(green);
 }
 
@@ -391,15 +389,11 @@ TEST_F(RenderColorTest, AnAttributeSetWithoutDiffuseColorLeavesTheStateAlone)
     TQ3AttributeSet other = Q3AttributeSet_New();
     const float ambient = 0.5f;
     Q3AttributeSet_Add(other, kQ3AttributeTypeAmbientCoefficient, &ambient);
-    Listing1 listing;
-    const TQ3NURBCurveData data = listing.data();
-    const Rgba c = renderedColor([&](TQ3ViewObject v) {
+    const Rgba c = curveColorAfter([&](TQ3ViewObject v) {
         Q3AttributeSet_Submit(green, v);
         Q3AttributeSet_Submit(other, v);
-        Q3NURBCurve_Submit(&data, v);
     });
-    EXPECT_EQ(c.g, 255);
-    EXPECT_EQ(c.r + c.b, 0);
+    expectColor(c, 0, 255, 0);
     Q3Object_Dispose(green);
     Q3Object_Dispose(other);
 }

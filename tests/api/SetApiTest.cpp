@@ -19,7 +19,7 @@ namespace {
 
 using namespace q3test;
 
-class SetApiTest : public OwningApiTest {
+class SetApiTest : public SetApiTestBase {
 protected:
     TQ3SetObject newSet() { return own(Q3Set_New()); }
 
@@ -222,13 +222,7 @@ TEST_F(SetApiTest, TheSurfaceShaderElementIsHeldByReference)
     EXPECT_EQ(Q3Set_Add(set, kQ3AttributeTypeSurfaceShader, &shader), kQ3Success);
     EXPECT_EQ(referenceCount(shader), 2UL);
     EXPECT_EQ(Q3Set_Contains(set, kQ3AttributeTypeSurfaceShader), kQ3True);
-
-    TQ3Object got = nullptr;
-    EXPECT_EQ(Q3Set_Get(set, kQ3AttributeTypeSurfaceShader, &got), kQ3Success);
-    EXPECT_EQ(got, shader);
-    EXPECT_EQ(referenceCount(shader), 3UL);
-    Q3Object_Dispose(got);
-    EXPECT_EQ(referenceCount(shader), 2UL);
+    expectSurfaceShaderHandedOut(Q3Set_Get, set, shader); // 3 references while handed out, then 2 again
 
     // A duplicate shares the shader.
     TQ3SetObject copy = Q3Object_Duplicate(set);
@@ -251,29 +245,7 @@ TEST_F(SetApiTest, TheSurfaceShaderElementIsHeldByReference)
 
 TEST_F(SetApiTest, OnlyASurfaceShaderIsTakenAsTheSurfaceShaderElement)
 {
-    TQ3SetObject set = newSet();
-    TQ3ShaderObject texture = own(newTextureShader());
-    ASSERT_EQ(Q3Set_Add(set, kQ3AttributeTypeSurfaceShader, &texture), kQ3Success);
-    const unsigned long edit = Q3Shared_GetEditIndex(set);
-    TQ3ShaderObject illumination = own(Q3PhongIllumination_New());
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Set_Add(set, kQ3AttributeTypeSurfaceShader, &illumination), kQ3Failure),
-                    kQ3ErrorInvalidObjectType);
-    EXPECT_EQ(referenceCount(illumination), 1UL);
-    TQ3Object dead = newTextureShader();
-    Q3Object_Dispose(dead);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Set_Add(set, kQ3AttributeTypeSurfaceShader, &dead), kQ3Failure),
-                    kQ3ErrorInvalidObject);
-    TQ3Object none = nullptr;
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Set_Add(set, kQ3AttributeTypeSurfaceShader, &none), kQ3Failure),
-                    kQ3ErrorNULLParameter);
-    EXPECT_Q3_ERROR(EXPECT_EQ(Q3Set_Add(set, kQ3AttributeTypeSurfaceShader, nullptr), kQ3Failure),
-                    kQ3ErrorNULLParameter);
-    EXPECT_EQ(Q3Shared_GetEditIndex(set), edit);
-    EXPECT_EQ(referenceCount(texture), 2UL);
-    TQ3Object got = nullptr;
-    ASSERT_EQ(Q3Set_Get(set, kQ3AttributeTypeSurfaceShader, &got), kQ3Success);
-    EXPECT_EQ(got, texture);
-    Q3Object_Dispose(got);
+    expectOnlySurfaceShadersTaken(Q3Set_Add, Q3Set_Get, newSet());
 }
 
 TEST_F(SetApiTest, AnAttributeSetIsASetButASetIsNoAttributeSet)

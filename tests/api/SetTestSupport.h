@@ -4,8 +4,11 @@
 
 // Helpers shared by the set and attribute set tests: a texture shader to
 // store as the surface shader attribute, one well-formed value of every
-// plain-data attribute type, and a set's contents read back through the C
-// calls.
+// plain-data attribute type, a set's contents read back through the C
+// calls, and the surface shader checks both kinds of set share.
+
+#include "GeometryTestSupport.h"
+#include "OwningApiTest.h"
 
 #include "QD3DSet.h"
 #include "QD3DShader.h"
@@ -113,5 +116,55 @@ inline std::vector<TQ3ElementType> elementWalk(TQ3SetObject set)
         types.push_back(type);
     return types;
 }
+
+/// The set and attribute set tests' fixture.
+class SetApiTestBase : public OwningApiTest {
+protected:
+    using AddCall = TQ3Status (*)(TQ3Object, TQ3ElementType, const void*);
+    using GetCall = TQ3Status (*)(TQ3Object, TQ3ElementType, void*);
+
+    /// `set` (a set or an attribute set, used through its own `add` and
+    /// `get`) takes a texture shader as its surface shader element; every
+    /// value that is no live surface shader is refused with its code, keeps
+    /// no reference and changes nothing.
+    void expectOnlySurfaceShadersTaken(AddCall add, GetCall get, TQ3Object set)
+    {
+        TQ3ShaderObject texture = own(newTextureShader());
+        ASSERT_EQ(add(set, kQ3AttributeTypeSurfaceShader, &texture), kQ3Success);
+        const unsigned long edit = Q3Shared_GetEditIndex(set);
+        for (TQ3ShaderObject illumination : {own(Q3LambertIllumination_New()), own(Q3PhongIllumination_New())}) {
+            EXPECT_Q3_ERROR(EXPECT_EQ(add(set, kQ3AttributeTypeSurfaceShader, &illumination), kQ3Failure),
+                            kQ3ErrorInvalidObjectType);
+            EXPECT_EQ(referenceCount(illumination), 1UL);
+        }
+        EXPECT_Q3_ERROR(EXPECT_EQ(add(set, kQ3AttributeTypeSurfaceShader, &set), kQ3Failure),
+                        kQ3ErrorInvalidObjectType);
+        TQ3Object dead = newTextureShader();
+        Q3Object_Dispose(dead);
+        EXPECT_Q3_ERROR(EXPECT_EQ(add(set, kQ3AttributeTypeSurfaceShader, &dead), kQ3Failure), kQ3ErrorInvalidObject);
+        TQ3Object none = nullptr;
+        EXPECT_Q3_ERROR(EXPECT_EQ(add(set, kQ3AttributeTypeSurfaceShader, &none), kQ3Failure), kQ3ErrorNULLParameter);
+        EXPECT_Q3_ERROR(EXPECT_EQ(add(set, kQ3AttributeTypeSurfaceShader, nullptr), kQ3Failure),
+                        kQ3ErrorNULLParameter);
+        EXPECT_Q3_ERROR(EXPECT_EQ(get(set, kQ3AttributeTypeSurfaceShader, nullptr), kQ3Failure),
+                        kQ3ErrorNULLParameter);
+        EXPECT_EQ(Q3Shared_GetEditIndex(set), edit);
+        EXPECT_EQ(referenceCount(texture), 2UL);
+        expectSurfaceShaderHandedOut(get, set, texture);
+    }
+
+    /// `get` hands out `shader`, the surface shader element of `set`, with a
+    /// reference of its own that disposing gives back.
+    void expectSurfaceShaderHandedOut(GetCall get, TQ3Object set, TQ3ShaderObject shader)
+    {
+        const unsigned long held = referenceCount(shader);
+        TQ3Object got = nullptr;
+        EXPECT_EQ(get(set, kQ3AttributeTypeSurfaceShader, &got), kQ3Success);
+        EXPECT_EQ(got, shader);
+        EXPECT_EQ(referenceCount(shader), held + 1);
+        Q3Object_Dispose(got);
+        EXPECT_EQ(referenceCount(shader), held);
+    }
+};
 
 } // namespace q3test

@@ -9,6 +9,7 @@
 #include "DiffuseColor.h"
 #include "OwningApiTest.h"
 #include "RenderTestSupport.h"
+#include "ShapeTypeChain.h"
 
 #include "QD3DSet.h"
 #include "QD3DShader.h"
@@ -23,6 +24,8 @@
 #include <vector>
 
 namespace {
+
+using q3test::expectShapeTypeChain;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -149,13 +152,8 @@ protected:
     void expectStyleOfType(TQ3StyleObject style, TQ3ObjectType type, const std::string& what)
     {
         ASSERT_NE(style, nullptr) << what;
-        EXPECT_EQ(Q3Object_GetType(style), kQ3ObjectTypeShared) << what;
-        EXPECT_EQ(Q3Shared_GetType(style), kQ3SharedTypeShape) << what;
-        EXPECT_EQ(Q3Shape_GetType(style), kQ3ShapeTypeStyle) << what;
+        expectShapeTypeChain(style, kQ3ShapeTypeStyle, type, kQ3True, what);
         EXPECT_EQ(Q3Style_GetType(style), type) << what;
-        EXPECT_EQ(Q3Object_GetLeafType(style), type) << what;
-        EXPECT_EQ(Q3Object_IsType(style, kQ3ShapeTypeStyle), kQ3True) << what;
-        EXPECT_EQ(Q3Object_IsDrawable(style), kQ3True) << what;
     }
 
     unsigned long valueOf(const ValueStyleApi& api, TQ3StyleObject style)

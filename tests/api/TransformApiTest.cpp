@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The Q3 authors
 #include "Q3ApiTest.h"
 #include "SetThenGet.h"
+#include "ShapeTypeChain.h"
 #include "TransformTestSupport.h"
 
 #include "QD3DGeometry.h"
@@ -19,6 +20,7 @@
 
 namespace {
 
+using q3test::expectShapeTypeChain;
 using q3test::Q3ApiTest;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
@@ -65,12 +67,7 @@ protected:
     void expectTransformOfType(TQ3TransformObject transform, TQ3ObjectType leafType)
     {
         ASSERT_NE(transform, nullptr);
-        EXPECT_EQ(Q3Object_GetType(transform), kQ3ObjectTypeShared);
-        EXPECT_EQ(Q3Shared_GetType(transform), kQ3SharedTypeShape);
-        EXPECT_EQ(Q3Shape_GetType(transform), kQ3ShapeTypeTransform);
-        EXPECT_EQ(Q3Object_GetLeafType(transform), leafType);
-        EXPECT_EQ(Q3Object_IsType(transform, kQ3ShapeTypeTransform), kQ3True);
-        EXPECT_EQ(Q3Object_IsDrawable(transform), kQ3True);
+        expectShapeTypeChain(transform, kQ3ShapeTypeTransform, leafType, kQ3True);
         TQ3Object copy = Q3Object_Duplicate(transform);
         ASSERT_NE(copy, nullptr);
         EXPECT_NE(copy, transform);

@@ -232,19 +232,23 @@ TEST_F(ArticleFigureGeometry, Figure22KnotInsertionLeavesTheCurveUnchanged)
     }
 }
 
+// x and y of `got` within `tolerance` of `want`'s.
+template <class Got, class Want>
+void expectNearXY(const Got& got, const Want& want, double tolerance)
+{
+    EXPECT_NEAR(got.x, want.x, tolerance);
+    EXPECT_NEAR(got.y, want.y, tolerance);
+}
+
 TEST_F(ArticleFigureGeometry, Figure13CurveStartsAtItsFirstControlPoint)
 {
     Q3Figure f = figure(13);
     const TQ3RationalPoint4D& b0 = f.curves[0].points[0];
-    const TQ3NURBCurveData data = q3fig_curve_data(&f.curves[0]);
-    const RefPoint start = q3test::referenceEvaluate(data, 0.0);
-    EXPECT_NEAR(start.x, b0.x, 1e-12);
-    EXPECT_NEAR(start.y, b0.y, 1e-12);
+    expectNearXY(q3test::referenceEvaluate(q3fig_curve_data(&f.curves[0]), 0.0), b0, 1e-12);
     const std::vector<TQ3Point3D> vertices = decompose(f.curves[0]);
     ASSERT_FALSE(vertices.empty());
     // A float vertex of the exact start (coordinates <= 1).
-    EXPECT_NEAR(vertices.front().x, b0.x, 1e-7);
-    EXPECT_NEAR(vertices.front().y, b0.y, 1e-7);
+    expectNearXY(vertices.front(), b0, 1e-7);
 
     // Figure 9's uniform curve, by contrast, starts halfway along B0-B1.
     Q3Figure uniform = figure(9);
@@ -259,16 +263,12 @@ TEST_F(ArticleFigureGeometry, Figure15CurvePassesThroughB2AtTheDoubleKnot)
 {
     Q3Figure f = figure(15);
     const TQ3RationalPoint4D& b2 = f.curves[0].points[2];
-    const TQ3NURBCurveData data = q3fig_curve_data(&f.curves[0]);
-    const RefPoint p = q3test::referenceEvaluate(data, 3.0);
-    EXPECT_NEAR(p.x, b2.x, 1e-12);
-    EXPECT_NEAR(p.y, b2.y, 1e-12);
+    expectNearXY(q3test::referenceEvaluate(q3fig_curve_data(&f.curves[0]), 3.0), b2, 1e-12);
     // t = 3 ends the first span (2 to 3): vertex kSegmentsPerSpan.
     const std::vector<TQ3Point3D> vertices = decompose(f.curves[0]);
     ASSERT_EQ(vertices.size(), std::size_t(2 * kSegmentsPerSpan + 1));
     const TQ3Point3D& v = vertices[std::size_t(kSegmentsPerSpan)];
-    EXPECT_NEAR(v.x, b2.x, 1e-6);
-    EXPECT_NEAR(v.y, b2.y, 1e-6);
+    expectNearXY(v, b2, 1e-6);
 }
 
 /// The closest the curve comes to a point, over 2001 parameters.

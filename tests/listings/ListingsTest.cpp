@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace {
@@ -341,14 +342,23 @@ Q3Figure figure9()
     return figure;
 }
 
+/// What Listing 2 returns, freed with q3listing_free_curve.
+using ListingCurve = std::unique_ptr<TQ3NURBCurveData, void (*)(TQ3NURBCurveData*)>;
+
+/// Listing 2's knot insertion of tNew into `curve`.
+ListingCurve listing2InsertKnot(TQ3NURBCurveData& curve, float tNew)
+{
+    return ListingCurve(q3listing2_insert_knot(&curve, tNew), q3listing_free_curve);
+}
+
 TEST_F(ArticleListing, Listing2InsertKnotKeepsTheCurveUnchanged)
 {
     Q3Figure figure = figure9();
     TQ3NURBCurveData before = q3fig_curve_data(&figure.curves[0]);
     for (float tNew : {3.6f, 2.5f, 3.0f, 4.75f}) {
         SCOPED_TRACE(tNew);
-        TQ3NURBCurveData* after = q3listing2_insert_knot(&before, tNew);
-        ASSERT_NE(after, nullptr);
+        const ListingCurve after = listing2InsertKnot(before, tNew);
+        ASSERT_NE(after.get(), nullptr);
         EXPECT_EQ(after->order, 3u);
         ASSERT_EQ(after->numPoints, 6u);
         std::vector<float> expectedKnots(before.knots, before.knots + 8);
@@ -357,7 +367,7 @@ TEST_F(ArticleListing, Listing2InsertKnotKeepsTheCurveUnchanged)
         EXPECT_EQ(after->curveAttributeSet, nullptr);
 
         // A valid curve: Q3 accepts it (the fixture fails on any error).
-        TQ3GeometryObject object = Q3NURBCurve_New(after);
+        TQ3GeometryObject object = Q3NURBCurve_New(after.get());
         EXPECT_NE(object, nullptr);
         if (object != nullptr)
             Q3Object_Dispose(object);
@@ -367,7 +377,6 @@ TEST_F(ArticleListing, Listing2InsertKnotKeepsTheCurveUnchanged)
         // roundings of 6 * 2^-24 = 4e-7; 1e-5 leaves a wide margin while a
         // wrong blend moves the curve by tenths.
         EXPECT_LT(largestDistance(before, *after, 600), 1e-5);
-        q3listing_free_curve(after);
     }
 }
 
@@ -375,8 +384,8 @@ TEST_F(ArticleListing, Listing2AgreesWithTheFiguresKnotInsertion)
 {
     Q3Figure figure = figure9();
     TQ3NURBCurveData before = q3fig_curve_data(&figure.curves[0]);
-    TQ3NURBCurveData* listing = q3listing2_insert_knot(&before, 3.6f);
-    ASSERT_NE(listing, nullptr);
+    const ListingCurve listing = listing2InsertKnot(before, 3.6f);
+    ASSERT_NE(listing.get(), nullptr);
     Q3FigCurve ours;
     ASSERT_EQ(q3fig_insert_knot(&figure.curves[0], 3.6f, &ours), 0);
     ASSERT_EQ(ours.numPoints, listing->numPoints);
@@ -389,15 +398,14 @@ TEST_F(ArticleListing, Listing2AgreesWithTheFiguresKnotInsertion)
     }
     for (unsigned long j = 0; j < ours.numPoints + ours.order; ++j)
         EXPECT_EQ(ours.knots[j], listing->knots[j]) << j;
-    q3listing_free_curve(listing);
 }
 
 TEST_F(ArticleListing, Listing2ResultRendersLikeTheOriginal)
 {
     Q3Figure figure = figure9();
     TQ3NURBCurveData before = q3fig_curve_data(&figure.curves[0]);
-    TQ3NURBCurveData* after = q3listing2_insert_knot(&before, 3.6f);
-    ASSERT_NE(after, nullptr);
+    const ListingCurve after = listing2InsertKnot(before, 3.6f);
+    ASSERT_NE(after.get(), nullptr);
 
     // Same curve, different polylines (the new knot splits a span, so the
     // vertices fall elsewhere): each curve pixel of one image must have one
@@ -415,7 +423,6 @@ TEST_F(ArticleListing, Listing2ResultRendersLikeTheOriginal)
     Q3Figure withControls = figureOf(*after, true);
     withControls.frame = plainBefore.frame;
     EXPECT_TRUE(q3test::matchesGolden("listing2_insert_knot", renderFigure(withControls)));
-    q3listing_free_curve(after);
 }
 
 TEST_F(ArticleListing, Listing2DuplicatesTheAttributeSet)
@@ -428,8 +435,8 @@ TEST_F(ArticleListing, Listing2DuplicatesTheAttributeSet)
     ASSERT_EQ(Q3AttributeSet_Add(before.curveAttributeSet, kQ3AttributeTypeDiffuseColor, &fuchsia),
               kQ3Success);
 
-    TQ3NURBCurveData* after = q3listing2_insert_knot(&before, 3.6f);
-    ASSERT_NE(after, nullptr);
+    const ListingCurve after = listing2InsertKnot(before, 3.6f);
+    ASSERT_NE(after.get(), nullptr);
     ASSERT_NE(after->curveAttributeSet, nullptr);
     EXPECT_NE(after->curveAttributeSet, before.curveAttributeSet);
     TQ3ColorRGB color{};
@@ -438,7 +445,6 @@ TEST_F(ArticleListing, Listing2DuplicatesTheAttributeSet)
     EXPECT_EQ(color.r, 1.0f);
     EXPECT_EQ(color.g, 0.0f);
     EXPECT_EQ(color.b, 1.0f);
-    q3listing_free_curve(after);
     Q3Object_Dispose(before.curveAttributeSet);
 }
 
