@@ -47,6 +47,12 @@ struct PositionRecord {
 };
 int g_serial = 0;
 
+void forgetWhatMethodsSaw()
+{
+    g_seen = Seen{};
+    g_serial = 0;
+}
+
 // A group's own data.
 struct GroupRecord {
     int tag;
@@ -244,8 +250,7 @@ protected:
     void SetUp() override
     {
         OwningApiTest::SetUp();
-        g_seen = Seen{};
-        g_serial = 0;
+        forgetWhatMethodsSaw();
     }
 
     /// Registers a class; the test unregisters it (after disposing its
@@ -443,15 +448,10 @@ TEST_F(CustomGroupApiTest, ReplacedCallsReachTheClassAndQ3sOwnBehaviourThroughIt
         EXPECT_NE(Q3Group_AddObject(group, object), nullptr);
     EXPECT_EQ(g_seen.added, 3);
     // The stack order: last added first.
-    std::vector<TQ3Object> order;
-    TQ3GroupPosition position = nullptr;
-    for (Q3Group_GetFirstPosition(group, &position); position != nullptr; Q3Group_GetNextPosition(group, &position)) {
-        TQ3Object object = nullptr;
-        ASSERT_EQ(Q3Group_GetPositionObject(group, position, &object), kQ3Success);
-        order.push_back(object);
-        Q3Object_Dispose(object);
-    }
+    const std::vector<TQ3Object> order = membersOf(group);
     EXPECT_EQ(order, (std::vector<TQ3Object>{c, b, a}));
+    disposeAll(order);
+    TQ3GroupPosition position = nullptr;
 
     // The untyped count goes to the OfType method with kQ3ObjectTypeShared.
     unsigned long n = 0;

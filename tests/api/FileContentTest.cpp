@@ -78,19 +78,6 @@ TQ3ShaderObject shaderOf(TQ3AttributeSet set)
     return shader;
 }
 
-// The group's objects in order (each a new reference).
-std::vector<TQ3Object> membersOf(TQ3GroupObject group)
-{
-    std::vector<TQ3Object> members;
-    TQ3GroupPosition position = nullptr;
-    for (Q3Group_GetFirstPosition(group, &position); position != nullptr; Q3Group_GetNextPosition(group, &position)) {
-        TQ3Object member = nullptr;
-        EXPECT_EQ(Q3Group_GetPositionObject(group, position, &member), kQ3Success);
-        members.push_back(member);
-    }
-    return members;
-}
-
 // Checks the model every apple_content file holds (and every copy Q3
 // writes of it): an inline display group holding a TriMesh and a plain
 // group holding a Triangle; the TriMesh's set holds white and the red|green

@@ -8,6 +8,7 @@
 #include "QD3D.h"
 #include "QD3DErrors.h"
 #include "QD3DGeometry.h"
+#include "QD3DGroup.h"
 #include "QD3DIO.h"
 #include "QD3DSet.h"
 #include "QD3DStorage.h"
@@ -112,6 +113,19 @@ inline std::vector<TQ3Object> readAll(const std::vector<unsigned char>& bytes)
     if (file == nullptr)
         return {};
     return readAllAndClose(file);
+}
+
+/// A group's objects in order (each a new reference: disposeAll them).
+inline std::vector<TQ3Object> membersOf(TQ3GroupObject group)
+{
+    std::vector<TQ3Object> members;
+    TQ3GroupPosition position = nullptr;
+    for (Q3Group_GetFirstPosition(group, &position); position != nullptr; Q3Group_GetNextPosition(group, &position)) {
+        TQ3Object member = nullptr;
+        EXPECT_EQ(Q3Group_GetPositionObject(group, position, &member), kQ3Success);
+        members.push_back(member);
+    }
+    return members;
 }
 
 inline void disposeAll(const std::vector<TQ3Object>& objects)

@@ -37,6 +37,14 @@ protected:
 
     TQ3ViewObject view() const { return m_view->view(); }
 
+    /// The listing's curve with `set` as its attribute set (the caller
+    /// disposes both).
+    TQ3GeometryObject curveWithSet(TQ3AttributeSet set)
+    {
+        const TQ3NURBCurveData data = m_listing.data(set);
+        return Q3NURBCurve_New(&data);
+    }
+
     // The decomposed polyline's vertices, read back through the public API.
     std::vector<TQ3Point3D> vertices(TQ3GeometryObject polyLine)
     {
@@ -215,8 +223,7 @@ TEST_F(ViewDecomposeTest, ARetainedCurveDecomposesAgainAfterEveryKindOfChange)
 TEST_F(ViewDecomposeTest, ThePolylineCarriesTheCurvesAttributeSet)
 {
     TQ3AttributeSet set = Q3AttributeSet_New();
-    const TQ3NURBCurveData data = m_listing.data(set);
-    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+    TQ3GeometryObject curve = curveWithSet(set);
     ASSERT_EQ(Q3View_StartRendering(view()), kQ3Success);
     TQ3GeometryObject polyLine = Q3Geometry_GetDecomposed(curve, view());
     ASSERT_NE(polyLine, nullptr);
@@ -388,8 +395,7 @@ TEST_F(ViewDecomposeTest, TheDecomposedPolylineIsTheProgramsOwnToCopyAndEdit)
 TEST_F(ViewDecomposeTest, EmptyDataOfADecompositionReleasesItsSetOrNothing)
 {
     TQ3AttributeSet set = Q3AttributeSet_New();
-    const TQ3NURBCurveData data = m_listing.data(set);
-    TQ3GeometryObject curve = Q3NURBCurve_New(&data);
+    TQ3GeometryObject curve = curveWithSet(set);
     ASSERT_EQ(Q3View_StartRendering(view()), kQ3Success);
     TQ3GeometryObject polyLine = Q3Geometry_GetDecomposed(curve, view());
     EXPECT_EQ(Q3View_EndRendering(view()), kQ3ViewStatusDone);
