@@ -112,6 +112,7 @@ void Session::step(Op op)
     case Op::kControllers: controllers(); break;
     case Op::kElements: elements(); break;
     case Op::kDescribed: described(); break;
+    case Op::kPortable: portable(); break;
     case Op::kCount: break;
     }
 }

@@ -3,6 +3,8 @@
 #include "CCaller.h"
 
 #include "QD3DDrawContext.h"
+#include "QD3DErrors.h"
+#include "QD3DExtension.h"
 #include "QD3DGeometry.h"
 #include "QD3DGroup.h"
 #include "QD3DIO.h"
@@ -32,6 +34,21 @@ TQ3Status q3fuzz_ViewHints_SetClearImageMethod(TQ3Object viewHints, int method)
 TQ3Status q3fuzz_SetDoubleBufferBypass(TQ3Object renderer, int bypass)
 {
     return Q3InteractiveRenderer_SetDoubleBufferBypass(renderer, (TQ3Boolean)bypass);
+}
+
+void q3fuzz_PostError(int code)
+{
+    Q3XError_Post((TQ3Error)code);
+}
+
+void q3fuzz_PostWarning(int code)
+{
+    Q3XWarning_Post((TQ3Warning)code);
+}
+
+void q3fuzz_PostNotice(int code)
+{
+    Q3XNotice_Post((TQ3Notice)code);
 }
 
 TQ3Status q3fuzz_GeneralPolygon_SetShapeHint(TQ3Object generalPolygon, int shapeHint)

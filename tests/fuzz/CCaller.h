@@ -25,6 +25,10 @@ TQ3Status q3fuzz_StartBoundingSphere(TQ3Object view, int computeBounds);
 TQ3Status q3fuzz_CalcAndUseBoundingBox(TQ3Object group, int computeBounds, TQ3Object view);
 TQ3Status q3fuzz_RotateTransform_SetAxis(TQ3Object transform, int axis);
 TQ3Status q3fuzz_GeneralPolygon_SetShapeHint(TQ3Object generalPolygon, int shapeHint);
+/* Q3XError_Post, Q3XWarning_Post and Q3XNotice_Post of any int. */
+void q3fuzz_PostError(int code);
+void q3fuzz_PostWarning(int code);
+void q3fuzz_PostNotice(int code);
 TQ3BoundingBox *q3fuzz_BoundingBox_Set(TQ3BoundingBox *bBox, const TQ3Point3D *min, const TQ3Point3D *max,
                                        int isEmpty);
 TQ3BoundingSphere *q3fuzz_BoundingSphere_Set(TQ3BoundingSphere *bSphere, const TQ3Point3D *origin, float radius,

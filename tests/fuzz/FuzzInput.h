@@ -121,6 +121,7 @@ enum class Op : std::uint8_t {
     kControllers,
     kElements,
     kDescribed,
+    kPortable,
     kCount
 };
 constexpr unsigned kOpCount = static_cast<unsigned>(Op::kCount);

@@ -869,6 +869,8 @@ private:
     // data, each call checked against the error contract; a handle a Get
     // returns is disposed.
     void elements();
+    // The rest of the portable API (FuzzPortable.cpp).
+    void portable();
 
     void picking();
 

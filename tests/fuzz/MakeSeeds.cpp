@@ -1334,6 +1334,18 @@ std::vector<std::pair<std::string, Seed>> seeds()
         s.curveTool(false, 10, 0, 0, 0, 9, 0).curveTool(false, 12, 0, 1, -1.0f, 0, 0);
         s.curveTool(false, 8, 0, 0, 0, 0, 13).curveTool(false, 12, 0, 0.9f, 1e-30f, 0, 0);
     }
+    // portable(): each of its sixteen families once, with a scene's view
+    // and draw context held (the kind byte, pick's two bytes, the type's
+    // two, then the family; what follows reads as zeros).
+    static const char* const kPortableNames[16] = {
+        "portable-00", "portable-01", "portable-02", "portable-03", "portable-04", "portable-05",
+        "portable-06", "portable-07", "portable-08", "portable-09", "portable-10", "portable-11",
+        "portable-12", "portable-13", "portable-14", "portable-15"};
+    for (std::uint8_t family = 0; family < 16; ++family) {
+        Seed& s = add(kPortableNames[family]);
+        s.scene();
+        s.op(Op::kPortable).u8(kView).u8(0).u8(0).u8(0).u8(0).u8(family);
+    }
     return all;
 }
 
