@@ -7,8 +7,8 @@
 // queries (RAVE contexts: none), edit tracking, the URL element, the shape
 // element calls, element and attribute classes, the extension classes'
 // queries, posting from extensions, shared libraries, the draw context's
-// mask and double-buffer state, unknown binaries' type strings, and the
-// release version. Each call keeps the error contract FuzzSession.h checks.
+// mask and double-buffer state, unknown binaries' data and type strings, a
+// file's idle method, and the release version. Each call keeps the error contract FuzzSession.h checks.
 
 #include "FuzzSession.h"
 
@@ -33,6 +33,11 @@ TQ3Status idleProgress(TQ3ViewObject, const void*, unsigned long, unsigned long)
 }
 
 void endFrame(TQ3ViewObject, void*) {}
+
+TQ3Status fileIdle(TQ3FileObject, const void*)
+{
+    return kQ3Success;
+}
 
 TQ3Status registerLibrary(void)
 {
@@ -158,6 +163,8 @@ void Session::portable()
         unsigned long count = 1;
         if (STATUS(Q3InteractiveRenderer_CountRAVEDrawContexts(renderer, &count)) == kQ3Success)
             require(count == 0, "Q3InteractiveRenderer_CountRAVEDrawContexts", "Q3 has no RAVE draw contexts");
+        unsigned long hints = 0;
+        STATUS(Q3InteractiveRenderer_GetRAVEContextHints(renderer, m_in.u8() == 0 ? nullptr : &hints));
         TQADrawContext* contexts[4] = {};
         TQAEngine* engines[4] = {};
         unsigned long listed = 1;
@@ -192,7 +199,19 @@ void Session::portable()
         const std::uint8_t which = m_in.u8();
         const TQ3ElementType element = which < 200 ? TQ3ElementType(which % 40) : TQ3ElementType(std::int32_t(m_in.u32()));
         QUERY(Q3Object_ContainsElement(target, element), kQ3False);
-        switch (m_in.u8() % 4) {
+        switch (m_in.u8() % 6) {
+        case 4: {
+            // Large enough for any element's C type; a handle is released.
+            float out[8] = {};
+            if (STATUS(Q3Shape_GetElement(target, element, out)) == kQ3Success &&
+                (element == kQ3AttributeTypeSurfaceShader || element == kQ3ElementTypeSet)) {
+                TQ3Object got;
+                std::memcpy(&got, out, sizeof got);
+                Q3Object_Dispose(got);
+            }
+            break;
+        }
+        case 5: QUERY(Q3XAttributeSet_GetMask(target), TQ3XAttributeMask{0}); break;
         case 0: STATUS(Q3Object_ClearElement(target, element)); break;
         case 1: {
             TQ3ElementType next = element;
@@ -286,6 +305,9 @@ void Session::portable()
         char* typeString = nullptr;
         if (STATUS(Q3UnknownBinary_GetTypeString(target, &typeString)) == kQ3Success)
             STATUS(Q3UnknownBinary_EmptyTypeString(&typeString));
+        TQ3UnknownBinaryData data{};
+        if (STATUS(Q3UnknownBinary_GetData(target, &data)) == kQ3Success)
+            STATUS(Q3UnknownBinary_EmptyData(&data));
         break;
     }
     default: {
@@ -293,6 +315,11 @@ void Session::portable()
         STATUS(Q3GetReleaseVersion(m_in.u8() == 0 ? nullptr : &release));
         QUERY(Q3MemoryStorage_GetType(target), TQ3ObjectType{kQ3ObjectTypeInvalid});
         QUERY(Q3Object_IsWritable(target, nullptr), kQ3False);
+        // A file's idle method, set and cleared on a file of its own.
+        if (const TQ3Object file = OBJECT(Q3File_New())) {
+            STATUS(Q3File_SetIdleMethod(file, (m_in.u8() & 1) ? nullptr : fileIdle, nullptr));
+            STATUS(Q3Object_Dispose(file));
+        }
         break;
     }
     }
