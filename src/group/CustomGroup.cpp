@@ -30,15 +30,24 @@ struct Running {
 };
 thread_local std::vector<Running> t_running;
 
+// A zeroed block (make_unique value-initializes its array), never of size
+// 0, so a position's data always has an address.
 std::unique_ptr<unsigned char[]> zeroed(std::size_t size)
 {
-    auto block = std::make_unique<unsigned char[]>(size == 0 ? 1 : size);
-    std::memset(block.get(), 0, size == 0 ? 1 : size);
-    return block;
+    return std::make_unique<unsigned char[]>(size == 0 ? 1 : size);
 }
 
 template <class G, bool Display = std::is_base_of_v<DisplayGroup, G>>
 class CustomGroupObjectOf;
+
+/// A new group of the class, registered live, no method run yet.
+template <class G>
+CustomGroupObjectOf<G>* makeGroupOf(std::shared_ptr<CustomClass> leaf)
+{
+    auto* made = new CustomGroupObjectOf<G>(std::move(leaf));
+    made->registerLive();
+    return made;
+}
 
 /// A group of a class an application registered under G (a group class Q3
 /// defines). Invariant: every node has private data exactly when the class
@@ -57,6 +66,7 @@ public:
                                                "gives at most " +
                                                std::to_string(kMaxPositionSize));
         m_positionSize = static_cast<std::size_t>(size);
+        m_keepsPositionData = m_positionSize != 0 || customClass().method(kQ3XMethodType_GroupPositionNew) != nullptr;
     }
 
     ~CustomGroupObject() override
@@ -70,9 +80,8 @@ public:
 
     Object* duplicate() const override
     {
-        std::shared_ptr<CustomClass> leaf = findCustomClass(customClass().type());
-        auto* made = new CustomGroupObjectOf<G>(std::move(leaf));
-        made->registerLive();
+        // The class cannot have been unregistered while this group lives.
+        auto* made = makeGroupOf<G>(findCustomClass(customClass().type()));
         std::unique_ptr<Object, void (*)(Object*)> copy{made, [](Object* object) { object->dispose(); }};
         // Its objects first, so the class's duplicate method sees them.
         if constexpr (std::is_base_of_v<DisplayGroup, G>)
@@ -103,18 +112,12 @@ public:
                      "the end-read method of the group class \"" + customClass().name() + "\" failed");
     }
 
-    /// Whether the class keeps data per position.
-    bool keepsPositionData() const
-    {
-        return m_positionSize != 0 || customClass().method(kQ3XMethodType_GroupPositionNew) != nullptr;
-    }
-
 protected:
     TQ3Object self() const { return const_cast<CustomGroupObject*>(this)->handle(); }
 
     void positionAdded(Group::Node& node) override
     {
-        if (!keepsPositionData())
+        if (!m_keepsPositionData)
             return;
         node.privateData = zeroed(m_positionSize);
         if (const auto make = customClass().template methodAs<TQ3XGroupPositionNewMethod>(kQ3XMethodType_GroupPositionNew))
@@ -137,7 +140,7 @@ protected:
 
     void positionCopied(const Group::Node& from, Group::Node& to) override
     {
-        if (!keepsPositionData() || !from.privateData)
+        if (!m_keepsPositionData || !from.privateData)
             return;
         auto block = zeroed(m_positionSize);
         if (const auto copy =
@@ -153,6 +156,8 @@ protected:
 
 private:
     std::size_t m_positionSize = 0;
+    /// A position size or a position new method: every node has data.
+    bool m_keepsPositionData = false;
 };
 
 /// The concrete classes: display groups also draw through the class's
@@ -201,17 +206,15 @@ public:
 };
 
 template <class G>
-Object* makeGroupOf(std::shared_ptr<CustomClass> leaf)
+Object* makeGroupObject(std::shared_ptr<CustomClass> leaf)
 {
-    auto* made = new CustomGroupObjectOf<G>(std::move(leaf));
-    made->registerLive();
-    return made;
+    return makeGroupOf<G>(std::move(leaf));
 }
 
 template <class G>
 bool allowSubclasses()
 {
-    return registerCustomBase(G::kClassType, makeGroupOf<G>);
+    return registerCustomBase(G::kClassType, makeGroupObject<G>);
 }
 
 // Applications may register classes under each group class Q3 defines.

@@ -466,20 +466,8 @@ Ref<SharedObject> ReadContext::groupOf(const Node& beginGroup)
         // A group class an application registered (or one nobody did): the
         // group, then its state and the objects beside it.
         Ref<SharedObject> read = groupObject(first);
-        auto& group = static_cast<Group&>(*read);
-        for (std::size_t i = 1; i < children.size(); ++i) {
-            if (children[i].type == kTypeDisplayGroupState) {
-                applyGroupState(*this, group, children[i]);
-                continue;
-            }
-            Ref<SharedObject> other = object(children[i]);
-            if (other->isType(kQ3ShapeTypeUnknown))
-                group.addOtherElement(std::move(other));
-            else
-                errors::postWarning(kQ3WarningInvalidSubObjectForObject,
-                                    std::string("a ") + group.classInfo().name + " holds a " +
-                                        other->classInfo().name + ", which is no part of a group; it is left out");
-        }
+        for (std::size_t i = 1; i < children.size(); ++i)
+            readGroupSubobject(*this, static_cast<Group&>(*read), children[i]);
         return read;
     }
     Parts parts{first, {}, &m_file, &children};

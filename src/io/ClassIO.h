@@ -25,6 +25,7 @@
 
 namespace q3 {
 class File;
+class Group;
 }
 
 namespace q3::io {
@@ -72,6 +73,11 @@ constexpr TQ3ObjectType kTypeDisplayGroupState = Q3_OBJECT_TYPE('d', 'g', 's', '
 /// state for a group that is no display group posts
 /// kQ3WarningInvalidSubObjectForObject and is ignored.
 void applyGroupState(ReadContext& context, SharedObject& group, const Node& state);
+/// One object beside a group in its BeginGroup (GroupIO.cpp): its state is
+/// applied, an unknown element is kept (kQ3WarningUnknownElementType) and
+/// written back, anything else is left out with
+/// kQ3WarningInvalidSubObjectForObject.
+void readGroupSubobject(ReadContext& context, Group& group, const Node& node);
 
 /// The family tables (one per file).
 void addGeometryClasses(std::vector<ClassIO>& table);

@@ -73,27 +73,8 @@ template <class G>
 Ref<SharedObject> readGroup(ReadContext& context, const Parts& parts)
 {
     Ref<G> group = makeShared<G>();
-    for (const Node* node : parts.subobjects) {
-        if (node->type == kTypeGroupState) {
-            applyGroupState(context, *group, *node);
-            continue;
-        }
-        // An element Q3 has no class for (Apple's name element in its
-        // container, say) is kept as the unknown object it reads as and
-        // written back; anything else is no part of a group.
-        Ref<SharedObject> element = context.object(*node);
-        if (element->isType(kQ3ShapeTypeUnknown)) {
-            errors::postWarning(kQ3WarningUnknownElementType,
-                                std::string("a ") + group->classInfo().name + " holds " +
-                                    (node->name.empty() ? typeName(node->type) : node->name) +
-                                    ", an element Q3 does not know; it is kept as an unknown object and written back");
-            group->addOtherElement(std::move(element));
-        } else {
-            errors::postWarning(kQ3WarningInvalidSubObjectForObject,
-                                std::string("a ") + group->classInfo().name + " holds a " +
-                                    element->classInfo().name + ", which is no part of a group; it is left out");
-        }
-    }
+    for (const Node* node : parts.subobjects)
+        readGroupSubobject(context, *group, *node);
     return Ref<SharedObject>(std::move(group));
 }
 
@@ -199,6 +180,29 @@ void writeUnknownBinary(WriteContext& context, const Object& object)
 }
 
 } // namespace
+
+void readGroupSubobject(ReadContext& context, Group& group, const Node& node)
+{
+    if (node.type == kTypeGroupState) {
+        applyGroupState(context, group, node);
+        return;
+    }
+    // An element Q3 has no class for (Apple's name element in its
+    // container, say) is kept as the unknown object it reads as and
+    // written back; anything else is no part of a group.
+    Ref<SharedObject> element = context.object(node);
+    if (element->isType(kQ3ShapeTypeUnknown)) {
+        errors::postWarning(kQ3WarningUnknownElementType,
+                            std::string("a ") + group.classInfo().name + " holds " +
+                                (node.name.empty() ? typeName(node.type) : node.name) +
+                                ", an element Q3 does not know; it is kept as an unknown object and written back");
+        group.addOtherElement(std::move(element));
+    } else {
+        errors::postWarning(kQ3WarningInvalidSubObjectForObject,
+                            std::string("a ") + group.classInfo().name + " holds a " + element->classInfo().name +
+                                ", which is no part of a group; it is left out");
+    }
+}
 
 void applyGroupState(ReadContext& context, SharedObject& group, const Node& state)
 {
