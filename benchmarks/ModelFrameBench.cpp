@@ -26,7 +26,9 @@
 //                 into, swizzled; EGL: glReadPixels). The peer uses Q3's
 //                 context kind (Q3_RENDER_BACKEND) and loader (render/GlApi.h).
 //   ModelFrameQ3Only, ModelFrameRawOnly  each side's frames alone, for a
-//                 profiler (perf record --benchmark_filter=...Only);
+//                 profiler (perf record --benchmark_filter=...Only), with
+//                 the CPU time of the calling thread and of llvmpipe's
+//                 rasterizer threads per frame;
 //   FirstFrame    a new view (draw context, camera, renderer) and its first
 //                 frame of the model, timed together; the view is disposed
 //                 of untimed, so the next one finds its context idle
@@ -52,7 +54,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include <dirent.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <fstream>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -568,16 +575,69 @@ void ModelFrame(benchmark::State& state)
     q3bench::runPaired(state, q3bench::Clock::kWall, {q3, raw});
 }
 
-// Q3's frames alone (no peer in the process's turns): what perf profiles.
+// CPU time (nanoseconds, /proc/self/task/*/schedstat) of the process's
+// threads: the calling thread's, and the sum of Mesa's llvmpipe rasterizer
+// threads'.
+struct ThreadCpu {
+    double mainNs = 0.0;
+    double rasterNs = 0.0;
+};
+
+ThreadCpu threadCpu()
+{
+    ThreadCpu cpu;
+    const std::string self = std::to_string(long(::syscall(SYS_gettid)));
+    DIR* tasks = ::opendir("/proc/self/task");
+    if (tasks == nullptr)
+        return cpu;
+    while (const dirent* entry = ::readdir(tasks)) {
+        const std::string tid = entry->d_name;
+        if (tid == "." || tid == "..")
+            continue;
+        std::ifstream comm("/proc/self/task/" + tid + "/comm");
+        std::string name;
+        std::getline(comm, name);
+        std::ifstream stat("/proc/self/task/" + tid + "/schedstat");
+        double ns = 0.0;
+        stat >> ns;
+        if (tid == self)
+            cpu.mainNs = ns;
+        else if (name.rfind("llvmpipe-", 0) == 0)
+            cpu.rasterNs += ns;
+    }
+    ::closedir(tasks);
+    return cpu;
+}
+
+// Each side's frames alone (no peer in the process's turns): what perf
+// profiles, and where each side's CPU time goes per frame (main_cpu_ms: the
+// thread that calls; raster_cpu_ms: llvmpipe's rasterizer threads), after
+// 5 untimed frames.
+template <class Frame>
+void framesAlone(benchmark::State& state, Frame&& frame)
+{
+    for (int i = 0; i < 5; ++i)
+        if (!frame()) {
+            state.SkipWithError("a frame failed");
+            return;
+        }
+    const ThreadCpu before = threadCpu();
+    for (auto _ : state)
+        if (!frame()) {
+            state.SkipWithError("a frame failed");
+            return;
+        }
+    const ThreadCpu after = threadCpu();
+    const double frames = double(std::max<benchmark::IterationCount>(state.iterations(), 1));
+    state.counters["main_cpu_ms"] = 1e-6 * (after.mainNs - before.mainNs) / frames;
+    state.counters["raster_cpu_ms"] = 1e-6 * (after.rasterNs - before.rasterNs) / frames;
+}
+
 void ModelFrameQ3Only(benchmark::State& state)
 {
     ModelScene& s = scene();
     static std::unique_ptr<q3bench::BenchView> view = s.newView();
-    for (auto _ : state)
-        if (!s.renderQ3(*view)) {
-            state.SkipWithError("a Q3 frame failed");
-            return;
-        }
+    framesAlone(state, [&] { return s.renderQ3(*view); });
 }
 
 // The peer's frames alone.
@@ -587,8 +647,10 @@ void ModelFrameRawOnly(benchmark::State& state)
     static std::unique_ptr<q3bench::BenchView> view = s.newView();
     static std::unique_ptr<RawModel> gl = std::make_unique<RawModel>(s, clipMatrix(view->camera()));
     gl->bind();
-    for (auto _ : state)
+    framesAlone(state, [&] {
         gl->frame(s);
+        return true;
+    });
     gl->release();
 }
 
@@ -654,8 +716,8 @@ void ProcessFirstFrame(benchmark::State& state)
 }
 
 BENCHMARK(ModelFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK(ModelFrameQ3Only)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(100);
-BENCHMARK(ModelFrameRawOnly)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(100);
+BENCHMARK(ModelFrameQ3Only)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(300);
+BENCHMARK(ModelFrameRawOnly)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(300);
 BENCHMARK(FirstFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 BENCHMARK(ProcessFirstFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 

@@ -153,16 +153,18 @@ RenderResult OffscreenRenderer::drawLit(const MeshView& mesh, const Shading& sha
     const int interpolation = shading.surface.interpolation;
     const float sign = shading.clockwiseFront ? -1.0f : 1.0f;
     bool shared = interpolation != 0 && mesh.normals != nullptr;
-    for (std::size_t i = 0; shared && i < mesh.vertexCount; ++i)
-        shared = !isNaN(mesh.normals[3 * i]);
     if (shared) {
+        // Unit normals, until a vertex turns out to have none.
         m_normals.resize(3 * mesh.vertexCount);
-        for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
+        for (std::size_t i = 0; shared && i < mesh.vertexCount; ++i) {
+            shared = !isNaN(mesh.normals[3 * i]);
             const glm::vec3 n = unit(at(mesh.normals, i));
             m_normals[3 * i] = n.x;
             m_normals[3 * i + 1] = n.y;
             m_normals[3 * i + 2] = n.z;
         }
+    }
+    if (shared) {
         return drawLitTriangles(mesh.positions, m_normals.data(), rgb, mesh.vertexCount, mesh.triangles,
                                 3 * mesh.triangleCount, shading.color, shading.surface, st);
     }

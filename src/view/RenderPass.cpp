@@ -247,25 +247,29 @@ const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureC
     id = kNoTexture;
     if (choice.texture == nullptr || mesh.uvs == nullptr)
         return nullptr;
-    for (std::size_t i = 0; i < 3 * mesh.triangleCount; ++i)
-        if (mesh.uvs[2 * std::size_t(mesh.triangles[i])] != mesh.uvs[2 * std::size_t(mesh.triangles[i])])
-            return nullptr;
-    id = loadTexture(choice);
-    if (id == kNoTexture)
-        return nullptr;
     // (u, v, 1) times the uv transform (its third column unused); the target's
-    // t runs down the image from its top row, v up from its bottom row.
+    // t runs down the image from its top row, v up from its bottom row. A
+    // vertex without a uv (NaN) gets (0, 0) if no triangle uses it; a
+    // triangle that does leaves the mesh untextured.
     const TQ3Matrix3x3& m = choice.uvTransform;
     m_st.resize(2 * mesh.vertexCount);
+    bool lacking = false;
     for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
         const float u = mesh.uvs[2 * i], v = mesh.uvs[2 * i + 1];
         if (u != u) {
             m_st[2 * i] = m_st[2 * i + 1] = 0.0f;
+            lacking = true;
             continue;
         }
         m_st[2 * i] = u * m.value[0][0] + v * m.value[1][0] + m.value[2][0];
         m_st[2 * i + 1] = 1.0f - (u * m.value[0][1] + v * m.value[1][1] + m.value[2][1]);
     }
+    for (std::size_t i = 0; lacking && i < 3 * mesh.triangleCount; ++i)
+        if (mesh.uvs[2 * std::size_t(mesh.triangles[i])] != mesh.uvs[2 * std::size_t(mesh.triangles[i])])
+            return nullptr;
+    id = loadTexture(choice);
+    if (id == kNoTexture)
+        return nullptr;
     return m_st.data();
 }
 

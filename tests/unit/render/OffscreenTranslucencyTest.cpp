@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -174,6 +176,58 @@ TEST(OffscreenTranslucency, OneDrawSplitsIntoOpaqueAndTranslucentTriangles)
     expectColumns(renderer, 0, kSize / 2, kFront.r, kFront.g, kFront.b, "opaque half");
     expectColumns(renderer, kSize / 2, kSize, blend(kFront.r, kBehind.r, 0.5), blend(kFront.g, kBehind.g, 0.5),
                   blend(kFront.b, kBehind.b, 0.5), "translucent half");
+}
+
+// Full-image translucent quads submitted in a scrambled order: 60 at random
+// depths behind 0, and in front of them the ones that decide the colour, at
+// 0 and below, several at one depth. Each pixel must be every quad blended over the one
+// behind, farthest first, quads at one depth in submission order; the
+// expected colour is that rule evaluated here (rounded to bytes after each
+// blend, as the image stores it).
+TEST(OffscreenTranslucency, TranslucentTrianglesBlendFarthestFirstAndTiesInSubmissionOrder)
+{
+    struct Layer {
+        float depth;
+        RgbColor color;
+    };
+    std::vector<Layer> layers;
+    const float fixedDepths[] = {0.0f, -0.25f, 0.0f, -0.75f, 0.0f, -0.25f, 0.0f};
+    std::uint32_t seed = 12345u;
+    const auto next = [&seed] {
+        seed = seed * 1664525u + 1013904223u;
+        return float(seed >> 8) / float(1u << 24);
+    };
+    for (int i = 0; i < 60; ++i)
+        layers.push_back({0.05f + 0.9f * next(), RgbColor{next(), next(), next()}});
+    for (std::size_t i = 0; i < std::size(fixedDepths); ++i)
+        layers.insert(layers.begin() + std::ptrdiff_t(9 * i), Layer{fixedDepths[i], RgbColor{next(), next(), next()}});
+    OffscreenRenderer renderer;
+    ASSERT_TRUE(beginDepthTestedFrame(renderer));
+    const std::vector<float> back = quad(0, kSize, 0.99f);
+    ASSERT_TRUE(renderer.drawTriangles(back.data(), 6, kBehind));
+    ASSERT_TRUE(renderer.setOpacity(OpacitySetup{nullptr, 0, RgbColor{0.5f, 0.5f, 0.5f}}));
+    for (const Layer& layer : layers) {
+        const std::vector<float> triangles = quad(0, kSize, layer.depth);
+        ASSERT_TRUE(renderer.drawTriangles(triangles.data(), 6, layer.color));
+    }
+    ASSERT_TRUE(renderer.endFrame());
+
+    std::vector<Layer> order = layers;
+    std::stable_sort(order.begin(), order.end(), [](const Layer& a, const Layer& b) { return a.depth > b.depth; });
+    int expected[3] = {byteOf(kBehind.r), byteOf(kBehind.g), byteOf(kBehind.b)};
+    for (const Layer& layer : order) {
+        const float channels[3] = {layer.color.r, layer.color.g, layer.color.b};
+        for (int c = 0; c < 3; ++c)
+            expected[c] = int(std::lround(0.5 * channels[c] * 255.0 + 0.5 * expected[c]));
+    }
+    int wrong = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const std::uint8_t* p = renderer.pixels() + renderer.rowBytes() * std::size_t(y) + std::size_t(x) * 4;
+            for (int c = 0; c < 3; ++c)
+                wrong += std::abs(p[c] - expected[c]) > 2;
+        }
+    EXPECT_EQ(wrong, 0) << "expected " << expected[0] << " " << expected[1] << " " << expected[2];
 }
 
 } // namespace
