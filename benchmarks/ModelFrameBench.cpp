@@ -517,6 +517,40 @@ double differingPixels(const std::vector<std::uint8_t>& a, const std::vector<std
     return double(differing);
 }
 
+// CPU time (nanoseconds, /proc/self/task/*/schedstat) of the process's
+// threads: the calling thread's, and the sum of Mesa's llvmpipe rasterizer
+// threads'.
+struct ThreadCpu {
+    double mainNs = 0.0;
+    double rasterNs = 0.0;
+};
+
+ThreadCpu threadCpu()
+{
+    ThreadCpu cpu;
+    const std::string self = std::to_string(long(::syscall(SYS_gettid)));
+    DIR* tasks = ::opendir("/proc/self/task");
+    if (tasks == nullptr)
+        return cpu;
+    while (const dirent* entry = ::readdir(tasks)) {
+        const std::string tid = entry->d_name;
+        if (tid == "." || tid == "..")
+            continue;
+        std::ifstream comm("/proc/self/task/" + tid + "/comm");
+        std::string name;
+        std::getline(comm, name);
+        std::ifstream stat("/proc/self/task/" + tid + "/schedstat");
+        double ns = 0.0;
+        stat >> ns;
+        if (tid == self)
+            cpu.mainNs = ns;
+        else if (name.rfind("llvmpipe-", 0) == 0)
+            cpu.rasterNs += ns;
+    }
+    ::closedir(tasks);
+    return cpu;
+}
+
 void ModelFrame(benchmark::State& state)
 {
     ModelScene& s = scene();
@@ -563,50 +597,43 @@ void ModelFrame(benchmark::State& state)
 
     // As in MeshFrameBench.cpp: each timed turn follows an untimed one by
     // the same contender, so switching contexts stays out of both.
+    // Where each side's timed turns spend CPU (outside the timing: the
+    // snapshots end the untimed step before a turn and start the one
+    // after): the calling thread, and llvmpipe's rasterizer threads.
+    ThreadCpu cpu[2][2];
+    double spent[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+    const auto account = [&](int side) {
+        spent[side][0] += cpu[side][1].mainNs - cpu[side][0].mainNs;
+        spent[side][1] += cpu[side][1].rasterNs - cpu[side][0].rasterNs;
+    };
     const auto q3Frame = [&] { s.renderQ3(*view); };
     q3bench::Contender q3{"q3", q3Frame};
-    q3.before = q3Frame;
+    q3.before = [&] {
+        q3Frame();
+        cpu[0][0] = threadCpu();
+    };
+    q3.after = [&] {
+        cpu[0][1] = threadCpu();
+        account(0);
+    };
     q3bench::Contender raw{"raw", [&] { gl->frame(s); }};
     raw.before = [&] {
         gl->bind();
         gl->frame(s);
+        cpu[1][0] = threadCpu();
     };
-    raw.after = [&] { gl->release(); };
+    raw.after = [&] {
+        cpu[1][1] = threadCpu();
+        account(1);
+        gl->release();
+    };
     q3bench::runPaired(state, q3bench::Clock::kWall, {q3, raw});
-}
-
-// CPU time (nanoseconds, /proc/self/task/*/schedstat) of the process's
-// threads: the calling thread's, and the sum of Mesa's llvmpipe rasterizer
-// threads'.
-struct ThreadCpu {
-    double mainNs = 0.0;
-    double rasterNs = 0.0;
-};
-
-ThreadCpu threadCpu()
-{
-    ThreadCpu cpu;
-    const std::string self = std::to_string(long(::syscall(SYS_gettid)));
-    DIR* tasks = ::opendir("/proc/self/task");
-    if (tasks == nullptr)
-        return cpu;
-    while (const dirent* entry = ::readdir(tasks)) {
-        const std::string tid = entry->d_name;
-        if (tid == "." || tid == "..")
-            continue;
-        std::ifstream comm("/proc/self/task/" + tid + "/comm");
-        std::string name;
-        std::getline(comm, name);
-        std::ifstream stat("/proc/self/task/" + tid + "/schedstat");
-        double ns = 0.0;
-        stat >> ns;
-        if (tid == self)
-            cpu.mainNs = ns;
-        else if (name.rfind("llvmpipe-", 0) == 0)
-            cpu.rasterNs += ns;
+    const double frames = double(std::max<benchmark::IterationCount>(state.iterations(), 1));
+    const char* const names[2] = {"q3", "raw"};
+    for (int side = 0; side < 2; ++side) {
+        state.counters[std::string(names[side]) + "_main_cpu_ms"] = 1e-6 * spent[side][0] / frames;
+        state.counters[std::string(names[side]) + "_raster_cpu_ms"] = 1e-6 * spent[side][1] / frames;
     }
-    ::closedir(tasks);
-    return cpu;
 }
 
 // Each side's frames alone (no peer in the process's turns): what perf

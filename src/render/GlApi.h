@@ -67,6 +67,7 @@
     X(DisableVertexAttribArray) \
     X(DrawArrays) \
     X(DrawElements) \
+    X(DrawRangeElements) \
     X(Enable) \
     X(EnableClientState) \
     X(EnableVertexAttribArray) \

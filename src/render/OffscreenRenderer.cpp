@@ -302,6 +302,11 @@ private:
         GLsizei count;
         bool multisample = false; // anti-aliased (AntiAliasOptions)
         std::uint32_t fog = kNoFog; // indexes m_fogs
+        // An indexed command's smallest and largest index (glDrawRangeElements:
+        // Mesa otherwise scans the indices for them at every draw from a
+        // buffer the frame rewrote).
+        GLuint minIndex = 0;
+        GLuint maxIndex = 0;
 
         bool drawsLike(const DrawCommand& other) const
         {
@@ -371,6 +376,10 @@ private:
         bool smooth;
         bool onlyTranslucentTexels; // alpha-tested: the texels below 1
         bool multisample;           // anti-aliased (AntiAliasOptions::triangles)
+        // The range of m_translucentVertices its triangles use (its draw's
+        // vertices, stored together), for glDrawRangeElements.
+        GLuint firstVertex;
+        GLuint lastVertex;
     };
     struct TranslucentTriangle {
         double depth; // of its centre in clip space (z / w), larger is farther
@@ -975,6 +984,8 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         const GLuint offset = GLuint(base);
         for (std::size_t i = 0; i < r.indexCount; ++i)
             out[i] = offset + r.indices[i];
+        command.minIndex = offset;
+        command.maxIndex = offset + GLuint(r.vertexCount - 1);
     } else {
         command.first = GLint(base);
     }
@@ -984,6 +995,8 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
             std::size_t(last.first) + std::size_t(last.count) == std::size_t(command.first) &&
             std::size_t(last.count) + count <= std::size_t(std::numeric_limits<GLsizei>::max())) {
             last.count += GLsizei(count);
+            last.minIndex = std::min(last.minIndex, command.minIndex);
+            last.maxIndex = std::max(last.maxIndex, command.maxIndex);
             return RenderResult::success();
         }
     }
@@ -1357,8 +1370,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     break;
                 if (end - i == 1) {
                     if (head.indexed)
-                        glDrawElements(glMode(head.primitive), head.count, GL_UNSIGNED_INT,
-                                       bufferOffset(sizeof(GLuint) * std::size_t(head.first)));
+                        glDrawRangeElements(glMode(head.primitive), head.minIndex, head.maxIndex, head.count,
+                                            GL_UNSIGNED_INT, bufferOffset(sizeof(GLuint) * std::size_t(head.first)));
                     else
                         glDrawArrays(glMode(head.primitive), head.first, head.count);
                 } else {
@@ -2023,6 +2036,7 @@ std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bo
     state.smooth = r.smooth;
     state.onlyTranslucentTexels = onlyTranslucentTexels;
     state.multisample = m_antiAlias.triangles;
+    state.firstVertex = state.lastVertex = 0; // drawSplit sets them
     m_translucentStates.push_back(state);
     return std::uint32_t(m_translucentStates.size() - 1);
 }
@@ -2064,6 +2078,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     std::uint32_t states[2] = {kNoState, kNoState}; // translucent, only translucent texels
     static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
     m_splitVertices.assign(r.vertexCount, kNoState);
+    const std::size_t firstVertex = m_translucentVertices.size();
     // Without an opacity per vertex every corner has the same one.
     const std::array<float, 4> uniformOpacity = opacityOf(uniform);
     for (std::size_t t = 0; t + 2 < count; t += 3) {
@@ -2123,6 +2138,11 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         triangle.depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
         m_translucentTriangles.push_back(triangle);
     }
+    for (std::uint32_t state : states)
+        if (state != kNoState) {
+            m_translucentStates[state].firstVertex = GLuint(firstVertex);
+            m_translucentStates[state].lastVertex = GLuint(m_translucentVertices.size() - 1);
+        }
     if (opaque.empty())
         return RenderResult::success();
     DrawRequest rest = r;
@@ -2290,9 +2310,7 @@ void OffscreenRenderer::Impl::clusterTranslucent()
 // key in the doubles' order (-0, which a depth that underflows can be,
 // counted as +0, so that the two stay equal).
 // A pass over a byte every key shares moves nothing and is skipped (the
-// exponent's bytes, for depths close together). On the model of
-// benchmarks/RESULTS.md (2,048 translucent triangles) this takes two thirds
-// of the time std::stable_sort's merge sort took.
+// exponent's bytes, for depths close together).
 void OffscreenRenderer::Impl::sortFarthestFirst()
 {
     const std::size_t count = m_translucentTriangles.size();
@@ -2305,16 +2323,19 @@ void OffscreenRenderer::Impl::sortFarthestFirst()
         const std::uint64_t ascending = (bits & kSign) != 0 ? ~bits : bits | kSign;
         m_sortKeys[i] = SortKey{~ascending, std::uint32_t(i)};
     }
-    // Every byte's counts in one pass over the keys (a key's bytes do not
-    // change as the passes reorder them).
-    std::array<std::array<std::uint32_t, 256>, 8> counts{};
+    // The passes sort by the keys' upper halves (sign, exponent and 20 bits
+    // of the mantissa: depths 1e-6 apart differ there); keys that share one
+    // are then put in order of their whole key by an insertion sort, which
+    // meets only short runs. Every byte's counts in one pass over the keys
+    // (a key's bytes do not change as the passes reorder them).
+    std::array<std::array<std::uint32_t, 256>, 4> counts{};
     for (const SortKey& key : m_sortKeys)
-        for (int byte = 0; byte < 8; ++byte)
-            ++counts[byte][(key.key >> (8 * byte)) & 0xFF];
+        for (int byte = 0; byte < 4; ++byte)
+            ++counts[byte][(key.key >> (32 + 8 * byte)) & 0xFF];
     m_sortScratch.resize(count);
-    for (int byte = 0; byte < 8; ++byte) {
+    for (int byte = 0; byte < 4; ++byte) {
         std::array<std::uint32_t, 256>& place = counts[byte];
-        const int shift = 8 * byte;
+        const int shift = 32 + 8 * byte;
         if (place[(m_sortKeys[0].key >> shift) & 0xFF] == count)
             continue;
         std::uint32_t next = 0;
@@ -2326,6 +2347,15 @@ void OffscreenRenderer::Impl::sortFarthestFirst()
         for (const SortKey& key : m_sortKeys)
             m_sortScratch[place[(key.key >> shift) & 0xFF]++] = key;
         m_sortKeys.swap(m_sortScratch);
+    }
+    for (std::size_t i = 1; i < count; ++i) {
+        const SortKey key = m_sortKeys[i];
+        std::size_t j = i;
+        while (j > 0 && (m_sortKeys[j - 1].key >> 32) == (key.key >> 32) && m_sortKeys[j - 1].key > key.key) {
+            m_sortKeys[j] = m_sortKeys[j - 1];
+            --j;
+        }
+        m_sortKeys[j] = key;
     }
     m_clustered.resize(count);
     for (std::size_t i = 0; i < count; ++i)
@@ -2424,7 +2454,8 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
                 break;
             program->finish().setFog(fogOf(state.fog));
         }
-        glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - i)), GL_UNSIGNED_INT, bufferOffset(sizeof(GLuint) * 3 * i));
+        glDrawRangeElements(GL_TRIANGLES, state.firstVertex, state.lastVertex, GLsizei(3 * (end - i)), GL_UNSIGNED_INT,
+                            bufferOffset(sizeof(GLuint) * 3 * i));
         i = end;
     }
 
