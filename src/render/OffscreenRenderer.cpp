@@ -68,9 +68,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace q3 {
@@ -172,22 +174,50 @@ GLenum takeGlError()
     return first;
 }
 
-// A float is infinite or NaN exactly when its exponent bits are all set, so
-// when its bits without the sign are at least those of infinity. The largest
-// such value of the array is an integer reduction the compiler vectorizes (a
-// sum of x - x, the earlier test, is a chain of dependent float additions:
-// a tenth of a frame's main-thread time on a model of 10,000 triangles,
+// A float is infinite or NaN exactly when its exponent bits are all set:
+// a test of each value's bits whose results are or-ed together, which the
+// compiler vectorizes in three instructions for four values (a sum of x - x,
+// the earlier test, is a chain of dependent float additions: a tenth of a
+// frame's main-thread time on a model of 10,000 triangles,
 // benchmarks/RESULTS.md, ModelFrame).
 bool allFinite(const float* values, std::size_t count)
 {
-    std::uint32_t largest = 0;
+    constexpr std::uint32_t kExponent = 0x7F800000u;
+    std::uint32_t infinite = 0;
     for (std::size_t i = 0; i < count; ++i) {
         std::uint32_t bits;
         std::memcpy(&bits, values + i, sizeof bits);
-        largest = std::max(largest, bits & 0x7FFFFFFFu);
+        infinite |= std::uint32_t((bits & kExponent) == kExponent);
     }
-    return largest < 0x7F800000u;
+    return infinite == 0;
 }
+
+// Vectors whose resize leaves new elements uninitialized (the batch's
+// indices are written right after; zeroing them first was a pass of its
+// own).
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = UninitializedAllocator<U>;
+    };
+    UninitializedAllocator() = default;
+    template <class U>
+    UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
+    {
+    }
+    template <class U>
+    void construct(U* at) noexcept
+    {
+        ::new (static_cast<void*>(at)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* at, Args&&... args)
+    {
+        ::new (static_cast<void*>(at)) U(std::forward<Args>(args)...);
+    }
+};
+using IndexVector = std::vector<GLuint, UninitializedAllocator<GLuint>>;
 
 RenderResult invalid(std::string message)
 {
@@ -435,7 +465,7 @@ private:
     std::vector<TranslucentState> m_translucentStates;
     std::vector<SurfaceShading> m_translucentShadings;
     std::vector<TranslucentTriangle> m_translucentTriangles;
-    std::vector<GLuint> m_translucentIndices;
+    IndexVector m_translucentIndices;
     std::vector<std::uint32_t> m_splitOpaque; // drawSplit's opaque triangles
     std::vector<std::uint32_t> m_splitVertices; // drawSplit: a vertex's place in m_translucentVertices
     UnlitProgram m_unlitPrograms[2];
@@ -463,7 +493,7 @@ private:
     std::unique_ptr<Position[]> m_positions;
     std::size_t m_positionCount = 0;
     std::size_t m_positionCapacity = 0;
-    std::vector<GLuint> m_indices;
+    IndexVector m_indices;
     std::vector<DrawCommand> m_commands;
     std::vector<std::array<float, 16>> m_matrices;
     std::uint32_t m_currentMatrix = 0;
@@ -901,12 +931,13 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
             return invalid("a shading value is NaN or infinite");
     }
     if (indexed) {
-        // The largest index first (a reduction the compiler vectorizes), the
-        // culprit only when there is one.
-        std::uint32_t largest = 0;
+        // Whether any index is too large first (a reduction the compiler
+        // vectorizes), the culprit only when there is one.
+        const std::uint32_t vertexCount = std::uint32_t(r.vertexCount);
+        std::uint32_t outside = 0;
         for (std::size_t i = 0; i < r.indexCount; ++i)
-            largest = std::max(largest, r.indices[i]);
-        if (largest >= r.vertexCount)
+            outside |= std::uint32_t(r.indices[i] >= vertexCount);
+        if (outside != 0)
             for (std::size_t i = 0; i < r.indexCount; ++i)
                 if (r.indices[i] >= r.vertexCount)
                     return invalid("index " + std::to_string(r.indices[i]) + " is not below the vertex count " +
