@@ -34,7 +34,7 @@ namespace {
 
 // The first source strings: the version, then the variant's switches
 // (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY, ONE_SIDED,
-// OPAQUE, PLAIN_VARYINGS), both before anything else as
+// OPAQUE, PLAIN_VARYINGS, LIGHT_COUNT), both before anything else as
 // GLSL requires.
 constexpr const char* kVersion = "#version 130\n";
 // The variant's switches (LitProgram::variant), after the version line.
@@ -55,6 +55,8 @@ std::string switches(int variant)
         text += "#define OPAQUE 1\n";
     if (LitProgram::usesPlainVaryings(variant))
         text += "#define PLAIN_VARYINGS 1\n";
+    if (variant >= 128)
+        text += "#define LIGHT_COUNT " + std::to_string(variant / 128 - 1) + "\n";
     return text;
 }
 
@@ -146,24 +148,30 @@ void shadeTwo(vec3 p, vec3 n, vec3 od, out vec3 lit, out vec3 specular)
     lit = ambientCoefficient * ambientLight * od;
     specular = ambientCoefficient * ambientLight * vec3(0.0);
     vec3 toEye = orthographic == 1 ? -viewDirection : normalize(eye - p);
+    // A variant that knows the number of lights loops a constant count,
+    // which the compiler unrolls (LitProgram::kUnrolledLights).
+#ifdef LIGHT_COUNT
+    for (int i = 0; i < LIGHT_COUNT; ++i) {
+#else
     for (int i = 0; i < MAX_LIGHTS; ++i) {
         if (i >= lightCount)
             break;
+#endif
         vec3 l;
         float f;
-        if (!lightAt(i, p, l, f))
-            continue;
-        float nl = dot(n, l);
-        if (nl <= 0.0)
-            continue;
-        lit += f * nl * lightColor[i] * od;
-        specular += f * nl * lightColor[i] * vec3(0.0);
-        if (illumination == 2) {
-            vec3 r = 2.0 * nl * n - l;
-            float rv = dot(r, toEye);
-            if (rv > 0.0) {
-                lit += f * lightColor[i] * specularColor * pow(rv, specularControl);
-                specular += f * lightColor[i] * specularColor * pow(rv, specularControl);
+        if (lightAt(i, p, l, f)) {
+            float nl = dot(n, l);
+            if (nl > 0.0) {
+                lit += f * nl * lightColor[i] * od;
+                if (illumination == 2) {
+                    vec3 r = 2.0 * nl * n - l;
+                    float rv = dot(r, toEye);
+                    if (rv > 0.0) {
+                        vec3 highlight = f * lightColor[i] * specularColor * pow(rv, specularControl);
+                        lit += highlight;
+                        specular += highlight;
+                    }
+                }
             }
         }
     }

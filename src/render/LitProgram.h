@@ -47,19 +47,31 @@ public:
     /// interpolates no opacity. Together they made the rasterizer threads'
     /// work that of a program written for the scene (benchmarks/RESULTS.md,
     /// ModelFrame).
-    static constexpr int kVariants = 128;
+    ///
+    /// Last, the number of lights (ambient ones aside), up to
+    /// kUnrolledLights: a variant that knows it loops over a constant count,
+    /// which the GLSL compiler unrolls; llvmpipe runs a loop bounded by a
+    /// uniform with its exit test and masks in every vertex, a fifth of the
+    /// vertex stage's time on the ModelFrame model (two lights). More lights
+    /// take the variant that reads the count from a uniform.
+    static constexpr int kUnrolledLights = 4;
+    static constexpr int kVariants = 128 * (kUnrolledLights + 2);
     static bool isOneSided(int variant) { return (variant & 16) != 0; }
     static bool usesPlainVaryings(int variant) { return (variant & (16 | 32 | 2)) == 16; }
     static int variant(bool textured, const SurfaceShading& shading, bool fogged, const LightingSetup& lighting,
                        bool opaque)
     {
         bool directionalOnly = true;
-        for (const RenderLight& light : lighting.lights)
+        int listed = 0; // the lights other than ambient ones
+        for (const RenderLight& light : lighting.lights) {
             directionalOnly = directionalOnly && (light.kind == RenderLight::Kind::kAmbient ||
                                                   light.kind == RenderLight::Kind::kDirectional);
+            listed += light.kind == RenderLight::Kind::kAmbient ? 0 : 1;
+        }
         return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0) +
                (directionalOnly ? 8 : 0) + (shading.flipBackFaces ? 0 : 16) +
-               (shading.interpolation == 0 ? 32 : 0) + (opaque ? 64 : 0);
+               (shading.interpolation == 0 ? 32 : 0) + (opaque ? 64 : 0) +
+               128 * (listed <= kUnrolledLights ? listed + 1 : 0);
     }
     /// Compiles and links variant `variant` in the current context; false
     /// (with the log in error) if the driver refuses it.
