@@ -2128,7 +2128,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         std::uint32_t& state = states[allOpaque ? 1 : 0];
         if (state == kNoState)
             state = translucentState(r, textured, allOpaque);
-        double centre[4] = {0.0, 0.0, 0.0, 0.0};
+        double z = 0.0, w = 0.0; // of the corners' clip coordinates, summed
         TranslucentTriangle triangle;
         triangle.state = state;
         for (int k = 0; k < 3; ++k) {
@@ -2162,11 +2162,12 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
             }
             triangle.v[k] = stored;
             const std::array<double, 4>& clip = m_translucentClip[stored];
-            for (int j = 0; j < 4; ++j)
-                centre[j] += clip[j] / 3.0;
+            z += clip[2];
+            w += clip[3];
         }
-        // A centre behind the eye sorts farthest.
-        triangle.depth = centre[3] > 0.0 ? centre[2] / centre[3] : std::numeric_limits<double>::max();
+        // The centre's z / w is the corners' sums' (the thirds cancel); a
+        // centre behind the eye sorts farthest.
+        triangle.depth = w > 0.0 ? z / w : std::numeric_limits<double>::max();
         m_translucentTriangles.push_back(triangle);
     }
     for (std::uint32_t state : states)
