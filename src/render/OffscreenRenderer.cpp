@@ -428,6 +428,20 @@ private:
     static constexpr std::uint32_t kFogUnknown = kNoFog - 1;
     static constexpr float kOpaqueAlpha = 0.998f; // between 254/255 and 1
     RenderResult drawSplit(const DrawRequest& request, bool textured);
+    // Vertex i of a draw, as the batch and the translucent store hold it.
+    static Vertex vertexAt(const DrawRequest& r, bool textured, std::size_t i)
+    {
+        static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
+        static const float kNoST[2] = {0.0f, 0.0f};
+        const float* xyz = r.xyz + 3 * i;
+        const float* n = r.normals != nullptr ? r.normals + 3 * i : kNoNormal;
+        const float* st = textured ? r.st + 2 * i : kNoST;
+        if (r.rgb != nullptr) {
+            const float* c = r.rgb + 3 * i;
+            return Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2], n[0], n[1], n[2], st[0], st[1]};
+        }
+        return Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b, n[0], n[1], n[2], st[0], st[1]};
+    }
     std::uint32_t translucentState(const DrawRequest& request, bool textured, bool onlyTranslucentTexels);
     // After the batch loop's program choice for a run: the unlit program
     // for fogged unlit runs, and the fog uniforms of the program in use
@@ -983,17 +997,8 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         m_positionCount += r.vertexCount;
     } else {
         Vertex* out = m_vertices.get() + base;
-        const float* xyz = r.xyz;
-        static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
-        static const float kNoST[2] = {0.0f, 0.0f};
-        for (std::size_t i = 0; i < r.vertexCount; ++i, xyz += 3) {
-            const float* c = r.rgb != nullptr ? r.rgb + 3 * i : nullptr;
-            const float* n = r.normals != nullptr ? r.normals + 3 * i : kNoNormal;
-            const float* st = textured ? r.st + 2 * i : kNoST;
-            out[i] = c != nullptr ? Vertex{xyz[0], xyz[1], xyz[2], c[0], c[1], c[2], n[0], n[1], n[2], st[0], st[1]}
-                                  : Vertex{xyz[0],    xyz[1],    xyz[2], r.color.r, r.color.g, r.color.b,
-                                           n[0],      n[1],      n[2],   st[0],     st[1]};
-        }
+        for (std::size_t i = 0; i < r.vertexCount; ++i)
+            out[i] = vertexAt(r, textured, i);
         m_vertexCount += r.vertexCount;
     }
 
@@ -2107,11 +2112,43 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     opaque.clear();
     constexpr std::uint32_t kNoState = std::numeric_limits<std::uint32_t>::max();
     std::uint32_t states[2] = {kNoState, kNoState}; // translucent, only translucent texels
-    static const float kNoNormal[3] = {0.0f, 0.0f, 1.0f};
     m_splitVertices.assign(r.vertexCount, kNoState);
     const std::size_t firstVertex = m_translucentVertices.size();
     // Without an opacity per vertex every corner has the same one.
     const std::array<float, 4> uniformOpacity = opacityOf(uniform);
+    if (rgb == nullptr && uniformOpacity[3] < 1.0f) {
+        // Every triangle is translucent: the draw's vertices are stored in
+        // their order, each transformed once, without looking each corner
+        // up (drawn in the same order, the same pixels).
+        if (count < 3)
+            return RenderResult::success();
+        const std::uint32_t state = translucentState(r, textured, false);
+        for (std::size_t i = 0; i < r.vertexCount; ++i) {
+            const float* p = r.xyz + 3 * i;
+            std::array<double, 4> clip;
+            for (int j = 0; j < 4; ++j)
+                clip[j] = double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j];
+            m_translucentClip.push_back(clip);
+            m_translucentVertices.push_back(vertexAt(r, textured, i));
+            m_translucentOpacity.insert(m_translucentOpacity.end(), uniformOpacity.begin(), uniformOpacity.end());
+        }
+        for (std::size_t t = 0; t + 2 < count; t += 3) {
+            TranslucentTriangle triangle;
+            triangle.state = state;
+            double z = 0.0, w = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                const std::size_t v = r.indexed ? r.indices[t + k] : t + k;
+                triangle.v[k] = std::uint32_t(firstVertex + v);
+                z += m_translucentClip[firstVertex + v][2];
+                w += m_translucentClip[firstVertex + v][3];
+            }
+            triangle.depth = w > 0.0 ? z / w : std::numeric_limits<double>::max();
+            m_translucentTriangles.push_back(triangle);
+        }
+        m_translucentStates[state].firstVertex = GLuint(firstVertex);
+        m_translucentStates[state].lastVertex = GLuint(m_translucentVertices.size() - 1);
+        return RenderResult::success();
+    }
     for (std::size_t t = 0; t + 2 < count; t += 3) {
         std::uint32_t v[3];
         std::array<float, 4> a[3];
@@ -2143,21 +2180,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
                 for (int j = 0; j < 4; ++j)
                     clip[j] = double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j];
                 m_translucentClip.push_back(clip);
-                const float* c = r.rgb != nullptr ? r.rgb + 3 * std::size_t(v[k]) : nullptr;
-                const float* n = r.normals != nullptr ? r.normals + 3 * std::size_t(v[k]) : kNoNormal;
-                Vertex out;
-                out.x = p[0];
-                out.y = p[1];
-                out.z = p[2];
-                out.r = c != nullptr ? c[0] : r.color.r;
-                out.g = c != nullptr ? c[1] : r.color.g;
-                out.b = c != nullptr ? c[2] : r.color.b;
-                out.nx = n[0];
-                out.ny = n[1];
-                out.nz = n[2];
-                out.s = textured ? r.st[2 * std::size_t(v[k])] : 0.0f;
-                out.t = textured ? r.st[2 * std::size_t(v[k]) + 1] : 0.0f;
-                m_translucentVertices.push_back(out);
+                m_translucentVertices.push_back(vertexAt(r, textured, v[k]));
                 m_translucentOpacity.insert(m_translucentOpacity.end(), a[k].begin(), a[k].end());
             }
             triangle.v[k] = stored;
@@ -2247,10 +2270,10 @@ void OffscreenRenderer::Impl::loadOpaqueAlphaTest(std::uint32_t texture, bool& l
 // after cluster, each in the sorted order, gives the very pixels of the
 // sorted order, with one draw call per state where a cluster is one state
 // (separate translucent objects) instead of one per switch between
-// interleaved depths. A rectangle is the triangle corners' window
-// coordinates widened by two pixels (covering whatever the rasterizer,
-// multisampled or not, can touch); a triangle with a corner at or behind
-// the eye (w <= 0, clipped into a larger area) makes its state cover
+// interleaved depths. A state's rectangle is the window coordinates of its
+// draw's vertices widened by two pixels (covering whatever the rasterizer,
+// multisampled or not, can touch); a vertex at or behind the eye (w <= 0,
+// its triangles clipped into a larger area) makes its state cover
 // everything. Beyond kMaxClusteredStates states the pairwise test is not
 // worth it and the order stays as sorted.
 void OffscreenRenderer::Impl::clusterTranslucent()
@@ -2278,21 +2301,32 @@ void OffscreenRenderer::Impl::clusterTranslucent()
         m_clusterWindow[i] = placed ? std::array<double, 2>{px, py}
                                     : std::array<double, 2>{std::numeric_limits<double>::quiet_NaN(), 0.0};
     }
-    for (const TranslucentTriangle& triangle : m_translucentTriangles) {
-        Box& box = boxes[triangle.state];
-        box.used = true;
-        for (std::uint32_t k = 0; k < 3; ++k) {
-            const std::array<double, 2>& at = m_clusterWindow[triangle.v[k]];
+    // (Every vertex of the draw, those of the state's triangles among them:
+    // a larger rectangle only merges clusters, whose triangles then keep the
+    // sorted order.)
+    for (const TranslucentTriangle& triangle : m_translucentTriangles)
+        boxes[triangle.state].used = true;
+    for (std::size_t state = 0; state < stateCount; ++state) {
+        Box& box = boxes[state];
+        if (!box.used)
+            continue;
+        const TranslucentState& drawn = m_translucentStates[state];
+        for (std::size_t v = drawn.firstVertex; v <= drawn.lastVertex; ++v) {
+            const std::array<double, 2>& at = m_clusterWindow[v];
             if (std::isnan(at[0])) {
                 box.x0 = box.y0 = -std::numeric_limits<double>::infinity();
                 box.x1 = box.y1 = std::numeric_limits<double>::infinity();
-                continue;
+                break;
             }
-            box.x0 = std::min(box.x0, at[0] - kMargin);
-            box.x1 = std::max(box.x1, at[0] + kMargin);
-            box.y0 = std::min(box.y0, at[1] - kMargin);
-            box.y1 = std::max(box.y1, at[1] + kMargin);
+            box.x0 = std::min(box.x0, at[0]);
+            box.x1 = std::max(box.x1, at[0]);
+            box.y0 = std::min(box.y0, at[1]);
+            box.y1 = std::max(box.y1, at[1]);
         }
+        box.x0 -= kMargin;
+        box.x1 += kMargin;
+        box.y0 -= kMargin;
+        box.y1 += kMargin;
     }
     // Union-find over the states whose rectangles overlap.
     std::vector<std::uint32_t> parent(stateCount);
