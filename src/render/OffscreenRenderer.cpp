@@ -443,6 +443,14 @@ private:
         return Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b, n[0], n[1], n[2], st[0], st[1]};
     }
     std::uint32_t translucentState(const DrawRequest& request, bool textured, bool onlyTranslucentTexels);
+    // Stores vertex i of a draw in the translucent store with its opacity
+    // and its clip coordinates under the current matrix (for the depths and
+    // the clusters' rectangles); returns its place there.
+    std::uint32_t storeTranslucentVertex(const DrawRequest& r, bool textured, std::size_t i,
+                                         const std::array<float, 4>& opacity);
+    // The triangle with its depth: its centre's in clip space, from its
+    // stored corners.
+    TranslucentTriangle withDepth(TranslucentTriangle triangle) const;
     // After the batch loop's program choice for a run: the unlit program
     // for fogged unlit runs, and the fog uniforms of the program in use
     // (`variant`, the lit variant the loop chose; -1 unlit).
@@ -2096,6 +2104,33 @@ std::array<float, 4> opacityOf(const float* rgb)
 
 } // namespace
 
+std::uint32_t OffscreenRenderer::Impl::storeTranslucentVertex(const DrawRequest& r, bool textured, std::size_t i,
+                                                               const std::array<float, 4>& opacity)
+{
+    const std::array<float, 16>& m = m_matrices[m_currentMatrix];
+    const float* p = r.xyz + 3 * i;
+    std::array<double, 4> clip;
+    for (int j = 0; j < 4; ++j)
+        clip[j] = double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j];
+    m_translucentClip.push_back(clip);
+    m_translucentVertices.push_back(vertexAt(r, textured, i));
+    m_translucentOpacity.insert(m_translucentOpacity.end(), opacity.begin(), opacity.end());
+    return std::uint32_t(m_translucentVertices.size() - 1);
+}
+
+OffscreenRenderer::Impl::TranslucentTriangle OffscreenRenderer::Impl::withDepth(TranslucentTriangle triangle) const
+{
+    // The centre's z / w is the corners' summed z over their summed w (the
+    // thirds cancel); a centre behind the eye sorts farthest.
+    double z = 0.0, w = 0.0;
+    for (std::uint32_t v : triangle.v) {
+        z += m_translucentClip[v][2];
+        w += m_translucentClip[v][3];
+    }
+    triangle.depth = w > 0.0 ? z / w : std::numeric_limits<double>::max();
+    return triangle;
+}
+
 RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textured)
 {
     const float* rgb = m_opacity.rgb;
@@ -2107,7 +2142,6 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     const float uniform[3] = {m_opacity.uniform.r, m_opacity.uniform.g, m_opacity.uniform.b};
     const bool alphaTexture = textured && m_textures[m_currentTexture].hasAlpha;
     const std::size_t count = r.indexed ? r.indexCount : r.vertexCount;
-    const std::array<float, 16>& m = m_matrices[m_currentMatrix];
     std::vector<std::uint32_t>& opaque = m_splitOpaque;
     opaque.clear();
     constexpr std::uint32_t kNoState = std::numeric_limits<std::uint32_t>::max();
@@ -2123,27 +2157,14 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         if (count < 3)
             return RenderResult::success();
         const std::uint32_t state = translucentState(r, textured, false);
-        for (std::size_t i = 0; i < r.vertexCount; ++i) {
-            const float* p = r.xyz + 3 * i;
-            std::array<double, 4> clip;
-            for (int j = 0; j < 4; ++j)
-                clip[j] = double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j];
-            m_translucentClip.push_back(clip);
-            m_translucentVertices.push_back(vertexAt(r, textured, i));
-            m_translucentOpacity.insert(m_translucentOpacity.end(), uniformOpacity.begin(), uniformOpacity.end());
-        }
+        for (std::size_t i = 0; i < r.vertexCount; ++i)
+            storeTranslucentVertex(r, textured, i, uniformOpacity);
         for (std::size_t t = 0; t + 2 < count; t += 3) {
             TranslucentTriangle triangle;
             triangle.state = state;
-            double z = 0.0, w = 0.0;
-            for (int k = 0; k < 3; ++k) {
-                const std::size_t v = r.indexed ? r.indices[t + k] : t + k;
-                triangle.v[k] = std::uint32_t(firstVertex + v);
-                z += m_translucentClip[firstVertex + v][2];
-                w += m_translucentClip[firstVertex + v][3];
-            }
-            triangle.depth = w > 0.0 ? z / w : std::numeric_limits<double>::max();
-            m_translucentTriangles.push_back(triangle);
+            for (int k = 0; k < 3; ++k)
+                triangle.v[k] = std::uint32_t(firstVertex + (r.indexed ? r.indices[t + k] : t + k));
+            m_translucentTriangles.push_back(withDepth(triangle));
         }
         m_translucentStates[state].firstVertex = GLuint(firstVertex);
         m_translucentStates[state].lastVertex = GLuint(m_translucentVertices.size() - 1);
@@ -2165,33 +2186,16 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         std::uint32_t& state = states[allOpaque ? 1 : 0];
         if (state == kNoState)
             state = translucentState(r, textured, allOpaque);
-        double z = 0.0, w = 0.0; // of the corners' clip coordinates, summed
         TranslucentTriangle triangle;
         triangle.state = state;
         for (int k = 0; k < 3; ++k) {
+            // A vertex's first triangle stores it.
             std::uint32_t& stored = m_splitVertices[v[k]];
-            if (stored == kNoState) {
-                // A vertex's first triangle stores it, with its clip
-                // coordinates (for the centres here and the clusters'
-                // rectangles, clusterTranslucent).
-                stored = std::uint32_t(m_translucentVertices.size());
-                const float* p = r.xyz + 3 * std::size_t(v[k]);
-                std::array<double, 4> clip;
-                for (int j = 0; j < 4; ++j)
-                    clip[j] = double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j];
-                m_translucentClip.push_back(clip);
-                m_translucentVertices.push_back(vertexAt(r, textured, v[k]));
-                m_translucentOpacity.insert(m_translucentOpacity.end(), a[k].begin(), a[k].end());
-            }
+            if (stored == kNoState)
+                stored = storeTranslucentVertex(r, textured, v[k], a[k]);
             triangle.v[k] = stored;
-            const std::array<double, 4>& clip = m_translucentClip[stored];
-            z += clip[2];
-            w += clip[3];
         }
-        // The centre's z / w is the corners' sums' (the thirds cancel); a
-        // centre behind the eye sorts farthest.
-        triangle.depth = w > 0.0 ? z / w : std::numeric_limits<double>::max();
-        m_translucentTriangles.push_back(triangle);
+        m_translucentTriangles.push_back(withDepth(triangle));
     }
     for (std::uint32_t state : states)
         if (state != kNoState) {
@@ -2389,19 +2393,17 @@ void OffscreenRenderer::Impl::sortFarthestFirst()
         const std::uint64_t ascending = (bits & kSign) != 0 ? ~bits : bits | kSign;
         m_sortKeys[i] = SortKey{~ascending, std::uint32_t(i)};
     }
-    // The passes sort by the keys' upper halves (sign, exponent and 20 bits
-    // of the mantissa: depths 1e-6 apart differ there); keys that share one
-    // are then put in order of their whole key by an insertion sort, which
-    // meets only short runs. Every byte's counts in one pass over the keys
-    // (a key's bytes do not change as the passes reorder them).
-    std::array<std::array<std::uint32_t, 256>, 4> counts{};
+    // Every byte's counts in one pass over the keys (a key's bytes do not
+    // change as the passes reorder them); eight passes at most, whatever
+    // the depths.
+    std::array<std::array<std::uint32_t, 256>, 8> counts{};
     for (const SortKey& key : m_sortKeys)
-        for (int byte = 0; byte < 4; ++byte)
-            ++counts[byte][(key.key >> (32 + 8 * byte)) & 0xFF];
+        for (int byte = 0; byte < 8; ++byte)
+            ++counts[byte][(key.key >> (8 * byte)) & 0xFF];
     m_sortScratch.resize(count);
-    for (int byte = 0; byte < 4; ++byte) {
+    for (int byte = 0; byte < 8; ++byte) {
         std::array<std::uint32_t, 256>& place = counts[byte];
-        const int shift = 32 + 8 * byte;
+        const int shift = 8 * byte;
         if (place[(m_sortKeys[0].key >> shift) & 0xFF] == count)
             continue;
         std::uint32_t next = 0;
@@ -2413,15 +2415,6 @@ void OffscreenRenderer::Impl::sortFarthestFirst()
         for (const SortKey& key : m_sortKeys)
             m_sortScratch[place[(key.key >> shift) & 0xFF]++] = key;
         m_sortKeys.swap(m_sortScratch);
-    }
-    for (std::size_t i = 1; i < count; ++i) {
-        const SortKey key = m_sortKeys[i];
-        std::size_t j = i;
-        while (j > 0 && (m_sortKeys[j - 1].key >> 32) == (key.key >> 32) && m_sortKeys[j - 1].key > key.key) {
-            m_sortKeys[j] = m_sortKeys[j - 1];
-            --j;
-        }
-        m_sortKeys[j] = key;
     }
     m_clustered.resize(count);
     for (std::size_t i = 0; i < count; ++i)
