@@ -705,10 +705,11 @@ void FirstFrame(benchmark::State& state)
 // before it in the process (run alone: --benchmark_filter=ProcessFirstFrame/0
 // for Q3, /1 for the peer, each in a process of its own): Q3's new view and
 // first frame against the peer's context, program, buffers, textures and
-// first frame. /2: a second view's first frame while the first view (made
-// and drawn untimed) lives, so that it makes a context of its own. Both pay for what Mesa does once per process (loading
+// first frame. Both pay for what Mesa does once per process (loading
 // llvmpipe and LLVM, starting the rasterizer threads, compiling shaders or
-// finding them in Mesa's on-disk cache).
+// finding them in Mesa's on-disk cache). /2: a second view's first frame
+// while the first view (made and drawn untimed) lives, so that it makes a
+// context of its own.
 void ProcessFirstFrame(benchmark::State& state)
 {
     static bool ran = false;
