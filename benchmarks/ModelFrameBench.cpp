@@ -35,6 +35,7 @@
 //                 (OffscreenRenderer.cpp, ContextPool). ModelFrame's
 //                 process_first_frame_ms is the process's very first view
 //                 and frame: a new context, every program compiled.
+//   ProcessFirstFrame  first frames, each case alone in a process (below).
 //
 // pixels_differing counts pixels whose colour differs by more than 2 in a
 // channel between the two images (informational: both light at the
@@ -708,8 +709,11 @@ void FirstFrame(benchmark::State& state)
 // first frame. Both pay for what Mesa does once per process (loading
 // llvmpipe and LLVM, starting the rasterizer threads, compiling shaders or
 // finding them in Mesa's on-disk cache). /2: a second view's first frame
-// while the first view (made and drawn untimed) lives, so that it makes a
-// context of its own.
+// while the first view (made and drawn untimed) lives: it draws with the
+// context the first lent between its frames. /3: the same while the first
+// view's frame is open (begun untimed, ended after), so that the second
+// view makes a context of its own, as views drawn at the same moment on two
+// threads do.
 void ProcessFirstFrame(benchmark::State& state)
 {
     static bool ran = false;
@@ -722,16 +726,23 @@ void ProcessFirstFrame(benchmark::State& state)
     double elapsed = 0.0;
     for (auto _ : state) {
         if (state.range(0) != 1) {
-            // /2: the first view made and drawn before, and alive.
-            std::unique_ptr<q3bench::BenchView> first = state.range(0) == 2 ? s.newView() : nullptr;
+            // /2 and /3: the first view made and drawn before, and alive
+            // (/3: in a frame).
+            std::unique_ptr<q3bench::BenchView> first = state.range(0) >= 2 ? s.newView() : nullptr;
             if (first != nullptr && !s.renderQ3(*first)) {
                 state.SkipWithError("a Q3 frame failed");
+                return;
+            }
+            if (state.range(0) == 3 && Q3View_StartRendering(first->view()) != kQ3Success) {
+                state.SkipWithError("starting the first view's frame failed");
                 return;
             }
             const double start = q3bench::now(q3bench::Clock::kWall);
             std::unique_ptr<q3bench::BenchView> view = s.newView();
             const bool ok = s.renderQ3(*view);
             elapsed = q3bench::now(q3bench::Clock::kWall) - start;
+            if (state.range(0) == 3 && Q3View_EndRendering(first->view()) != kQ3ViewStatusDone)
+                state.SkipWithError("ending the first view's frame failed");
             if (!ok)
                 state.SkipWithError("a Q3 frame failed");
         } else {
@@ -754,7 +765,7 @@ BENCHMARK(ModelFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0
 BENCHMARK(ModelFrameQ3Only)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(300);
 BENCHMARK(ModelFrameRawOnly)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(300);
 BENCHMARK(FirstFrame)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
-BENCHMARK(ProcessFirstFrame)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(ProcessFirstFrame)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 } // namespace bench
 } // namespace q3

@@ -63,6 +63,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
@@ -233,8 +234,8 @@ RenderResult outOfMemory()
 
 class OffscreenRenderer::Impl {
 public:
-    explicit Impl(const GlBackendChoice& backend) : m_backend(backend) {}
-    ~Impl() { destroyContext(true); }
+    explicit Impl(const GlBackendChoice& backend);
+    ~Impl();
 
     RenderResult beginFrame(std::uint32_t width, std::uint32_t height, const RgbaColor& clearColor,
                             const PixelRect& pane, const FrameOptions& options);
@@ -308,7 +309,7 @@ private:
         // (image i + 1 is max(1, width >> (i + 1)) wide).
         std::vector<std::vector<std::uint8_t>> mipmaps;
         bool hasAlpha = false; // a texel's alpha is below 1
-        // Its entry in m_textureCache, or kNotCached.
+        // Its entry in m_gl->textureCache, or kNotCached.
         std::uint32_t cacheSlot = std::numeric_limits<std::uint32_t>::max();
     };
 
@@ -349,13 +350,16 @@ private:
         }
     };
 
-    RenderResult createContext(std::uint32_t width, std::uint32_t height);
-    // Lets go of the context: into the process's pool of idle contexts
-    // (ContextPool) when `park` and it can be reused, else destroyed.
-    void destroyContext(bool park = false);
-    // Takes an idle context of this backend and size from the pool, with
-    // what it has compiled; false when there is none.
-    bool adoptContext(std::uint32_t width, std::uint32_t height);
+    // Makes m_gl a context of this backend for a width x height image (and
+    // m_image that image): the one held, else an idle one from the pool
+    // (ContextPool), else a new one. Errors: kContextFailure,
+    // kWrongRenderer, kGraphicsError.
+    RenderResult acquireContext(std::uint32_t width, std::uint32_t height);
+    // Lends m_gl to the pool (GlResources), if held.
+    void lendContext();
+    // Deletes the names of this renderer's own (uncached) textures, in
+    // m_textureNames and m_staleTextureNames; the context must be current.
+    void deleteOwnTextureNames();
     void initializeState();
     void startFrameInGl();
     RenderResult flush(bool finish);
@@ -382,8 +386,6 @@ private:
     bool useMultisample(bool on, std::string& error);
     // At endFrame: resolves the multisample framebuffer into the image.
     void resolveMultisample();
-    // Forgets the multisample objects (gone with the context).
-    void forgetMultisample();
     template <class T>
     static void reserve(std::unique_ptr<T[]>& storage, std::size_t& capacity, std::size_t used, std::size_t needed);
 
@@ -490,13 +492,9 @@ private:
     IndexVector m_translucentIndices;
     std::vector<std::uint32_t> m_splitOpaque; // drawSplit's opaque triangles
     std::vector<std::uint32_t> m_splitVertices; // drawSplit: a vertex's place in m_translucentVertices
-    UnlitProgram m_unlitPrograms[2];
 
-    // The backend asked for (its result: why it cannot be used), and its
-    // context for the current size.
+    // The backend asked for (its result: why it cannot be used).
     GlBackendChoice m_backend;
-    std::unique_ptr<GlContext> m_context;
-    GLint m_maxViewport[2] = {0, 0};
 
     PixelRect m_pane;
     RgbaColor m_clearColor;
@@ -526,9 +524,6 @@ private:
     LightingSetup m_lighting;
     std::vector<SurfaceShading> m_shadings;
     FaceOptions m_faces;
-    // The lighting programs, one per variant (LitProgram::variant): textured
-    // or not, lit at the vertices or at every pixel.
-    LitProgram m_litPrograms[LitProgram::kVariants];
     // The variant a shading is drawn with, built if it is not yet (null,
     // with `result` set, when the driver refuses it).
     LitProgram* litProgram(int variant, RenderResult& result);
@@ -559,9 +554,12 @@ private:
     // Textures kept on the GPU from frame to frame: a texture added with
     // the very bytes, layouts, wrap modes and filter of one the previous
     // frame used is neither decoded nor uploaded again (compared byte for
-    // byte, so an edited image is a new texture). An entry not used by a
-    // frame is deleted at its end, so what is kept is what the scene draws.
-    // The names belong to the renderer's context (released with it).
+    // byte, so an edited image is a new texture). The cache is the
+    // context's (GlResources), shared by the renderers that draw with it: an
+    // entry this renderer used last and its frame did not use is deleted at
+    // the frame's end, so what is kept is what each scene draws; an entry no
+    // frame of the context used for kStaleFrames frames goes too (its
+    // renderer draws with another context now).
     static constexpr std::uint32_t kNotCached = std::numeric_limits<std::uint32_t>::max();
     static constexpr std::size_t kTextureCacheBytes = std::size_t(64) << 20;
     struct CachedTexture {
@@ -572,26 +570,21 @@ private:
         TextureFilter filter = TextureFilter::kNearest;
         bool hasAlpha = false;
         GLuint name = 0; // 0 until a draw uploads it
-        std::uint64_t lastFrame = 0;
+        std::uint64_t lastFrame = 0; // the context's frame that used it last
+        const Impl* user = nullptr;  // the renderer that used it last
     };
-    std::vector<CachedTexture> m_textureCache;
-    std::size_t m_textureCacheBytes = 0;
-    std::uint64_t m_frameNumber = 0;
+    static constexpr std::uint64_t kStaleFrames = 64;
     // The slot of a cached texture with exactly these images and sampling,
     // or kNotCached.
     std::uint32_t findCachedTexture(const TextureImage& texture) const;
-    // Deletes the cache's textures that the frame did not use (all with
-    // `all`); the context must be current.
-    void evictTextures(bool all);
-    // Anti-aliasing: the current options, whether this frame draws into the
-    // multisample framebuffer, and its OpenGL objects (0: not made yet in
-    // this context), with the program that copies the image into it.
+    // Deletes cached textures (the context must be current): kUnused at a
+    // frame's end (see above), kMine this renderer's (it is going away).
+    enum class Evict { kUnused, kMine };
+    void evictTextures(Evict which);
+    // Anti-aliasing: the current options and whether this frame draws into
+    // the multisample framebuffer (GlResources holds its objects).
     AntiAliasOptions m_antiAlias;
     bool m_multisampling = false;
-    GLuint m_msFramebuffer = 0;
-    GLuint m_msColor = 0;
-    GLuint m_msDepth = 0;
-    GLuint m_copyProgram = 0;
     // Buffer objects the arrays of a flush are uploaded into once (0: not
     // made yet in this context): interleaved vertices, plain positions,
     // indices, translucent opacity. Drawing from client arrays instead makes
@@ -600,108 +593,242 @@ private:
     // interleaved in depth) then copied its whole vertex range per switch
     // (benchmarks/RESULTS.md, ModelFrame: most of the main thread's time).
     enum StreamBuffer { kStreamVertices, kStreamPositions, kStreamIndices, kStreamOpacity, kStreamBufferCount };
-    GLuint m_streamBuffers[kStreamBufferCount] = {0, 0, 0, 0};
-    // The bytes each stream buffer's store holds (it only grows: see
-    // uploadStream).
-    std::size_t m_streamCapacity[kStreamBufferCount] = {0, 0, 0, 0};
     // Uploads `bytes` into stream buffer `which`, leaving it bound to `target`.
     void uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes);
+
+public:
+    // What belongs to one OpenGL context and lives as long as it: the
+    // context, with what was made in it. A renderer holds one only from
+    // beginFrame to endFrame (or cancelFrame) and lends it to the process's
+    // pool of idle contexts (ContextPool) in between; its next frame takes
+    // it back if no other renderer took it, else another idle one of its
+    // backend and size, else a new one. So views drawn one after another on
+    // a thread, however many there are, draw with one context and what it
+    // compiled; only views drawn at the same moment need contexts of their
+    // own.
+    struct GlResources {
+        GlBackend backend = GlBackend::kOsMesa;
+        std::uint32_t width = 0;
+        std::uint32_t height = 0;
+        std::unique_ptr<GlContext> context;
+        GLint maxViewport[2] = {0, 0};
+        // The lighting programs, one per variant (LitProgram::variant):
+        // textured or not, lit at the vertices or at every pixel.
+        LitProgram litPrograms[LitProgram::kVariants];
+        UnlitProgram unlitPrograms[2];
+        // Anti-aliasing's OpenGL objects (0: not made yet in this context),
+        // with the program that copies the image into the multisample
+        // framebuffer.
+        GLuint msFramebuffer = 0;
+        GLuint msColor = 0;
+        GLuint msDepth = 0;
+        GLuint copyProgram = 0;
+        GLuint streamBuffers[kStreamBufferCount] = {0, 0, 0, 0};
+        // The bytes each stream buffer's store holds (it only grows: see
+        // uploadStream).
+        std::size_t streamCapacity[kStreamBufferCount] = {0, 0, 0, 0};
+        std::vector<CachedTexture> textureCache;
+        std::size_t textureCacheBytes = 0;
+        std::uint64_t frameNumber = 0; // frames begun with this context
+        const Impl* lender = nullptr;  // in the pool: the renderer that lent it
+    };
+
+private:
+    // This frame's context (null between frames: lent to the pool).
+    std::unique_ptr<GlResources> m_gl;
+    // The process's idle contexts (see ContextPool below).
+    struct ContextPool;
+    static ContextPool& contextPool();
+    // Takes from the pool the oldest idle contexts beyond what it keeps,
+    // for the caller to destroy outside the pool's lock (destroying one
+    // takes the context mutex).
+    static std::vector<std::unique_ptr<GlResources>> trimPoolLocked(ContextPool& pool);
 };
 
 namespace {
 
-// Idle contexts, kept for the next renderer of the same backend and size.
-// A new view's first frame otherwise pays for a new OpenGL context (about
+// Idle contexts: lent by renderers between their frames (GlResources) and
+// kept after a renderer is gone, for the next frame of the same backend and
+// size. A view's first frame otherwise pays for a new OpenGL context (about
 // 5 ms with llvmpipe) and for compiling its GLSL programs and llvmpipe's
 // machine code for them (about 20 ms for a textured, lit, translucent scene:
 // benchmarks/RESULTS.md, FirstFrame); a context handed on keeps its linked
-// programs, and llvmpipe keeps their compiled variants with them. Views come
-// and go (a window resized, a document reopened) far more often than
-// several live at once, so a few idle contexts cover the common case. The
-// pool is never destroyed: an atexit handler may still render after static
-// destructors ran, and the process's end frees what it holds.
-struct IdleContext {
-    GlBackend backend = GlBackend::kOsMesa;
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-    std::unique_ptr<GlContext> context;
-    GLint maxViewport[2] = {0, 0};
-    LitProgram litPrograms[LitProgram::kVariants];
-    UnlitProgram unlitPrograms[2];
-    GLuint streamBuffers[4] = {0, 0, 0, 0};
-    std::size_t streamCapacity[4] = {0, 0, 0, 0};
-    GLuint msFramebuffer = 0, msColor = 0, msDepth = 0, copyProgram = 0;
-};
-
+// programs, and llvmpipe keeps their compiled variants with them. The pool
+// keeps as many idle contexts as there are live renderers, and at least
+// kIdleContexts (views come and go: a window resized, a document
+// reopened), dropping the oldest beyond that. It is never destroyed: an
+// atexit handler may still render after static destructors ran, and the
+// process's end frees what it holds.
 constexpr std::size_t kIdleContexts = 2;
 
-struct ContextPool {
+std::atomic<std::uint64_t> g_contextsMade{0};
+
+} // namespace
+
+struct OffscreenRenderer::Impl::ContextPool {
     std::mutex mutex;
-    std::vector<std::unique_ptr<IdleContext>> idle; // oldest first
+    std::vector<std::unique_ptr<GlResources>> idle; // oldest first
+    std::size_t renderers = 0;                      // live renderers
 };
 
-ContextPool& contextPool()
+OffscreenRenderer::Impl::ContextPool& OffscreenRenderer::Impl::contextPool()
 {
     static ContextPool* pool = new ContextPool;
     return *pool;
 }
 
-} // namespace
-
-bool OffscreenRenderer::Impl::adoptContext(std::uint32_t width, std::uint32_t height)
+std::vector<std::unique_ptr<OffscreenRenderer::Impl::GlResources>>
+OffscreenRenderer::Impl::trimPoolLocked(ContextPool& pool)
 {
-    std::unique_ptr<IdleContext> taken;
-    {
-        ContextPool& pool = contextPool();
+    std::vector<std::unique_ptr<GlResources>> dropped;
+    const std::size_t keep = std::max(kIdleContexts, pool.renderers);
+    while (pool.idle.size() > keep) {
+        dropped.push_back(std::move(pool.idle.front()));
+        pool.idle.erase(pool.idle.begin());
+    }
+    return dropped;
+}
+
+OffscreenRenderer::Impl::Impl(const GlBackendChoice& backend) : m_backend(backend)
+{
+    ContextPool& pool = contextPool();
+    std::lock_guard<std::mutex> lock(pool.mutex);
+    ++pool.renderers;
+}
+
+OffscreenRenderer::Impl::~Impl()
+{
+    ContextPool& pool = contextPool();
+    if (m_gl == nullptr) {
+        // Its context back, if no other renderer took it: to delete the
+        // textures only this renderer drew.
         std::lock_guard<std::mutex> lock(pool.mutex);
-        for (auto it = pool.idle.end(); it != pool.idle.begin();) {
-            --it;
-            if ((*it)->backend == m_backend.backend && (*it)->width == width && (*it)->height == height) {
-                taken = std::move(*it);
+        for (auto it = pool.idle.begin(); it != pool.idle.end(); ++it)
+            if ((*it)->lender == this) {
+                m_gl = std::move(*it);
                 pool.idle.erase(it);
                 break;
             }
+    }
+    if (m_gl != nullptr) {
+        bool bound = false;
+        {
+            ContextScope scope(*m_gl->context, m_image.data());
+            bound = scope.bound();
+            if (bound) {
+                evictTextures(Evict::kMine);
+                deleteOwnTextureNames();
+            }
+        }
+        if (!bound) {
+            // Not handed on: a context that cannot be made current.
+            m_textureNames.clear();
+            m_staleTextureNames.clear();
+            m_gl.reset();
         }
     }
-    if (!taken)
-        return false;
-    m_context = std::move(taken->context);
-    m_maxViewport[0] = taken->maxViewport[0];
-    m_maxViewport[1] = taken->maxViewport[1];
-    for (int i = 0; i < LitProgram::kVariants; ++i)
-        m_litPrograms[i] = taken->litPrograms[i];
-    m_unlitPrograms[0] = taken->unlitPrograms[0];
-    m_unlitPrograms[1] = taken->unlitPrograms[1];
-    std::copy(std::begin(taken->streamBuffers), std::end(taken->streamBuffers), std::begin(m_streamBuffers));
-    std::copy(std::begin(taken->streamCapacity), std::end(taken->streamCapacity), std::begin(m_streamCapacity));
-    m_msFramebuffer = taken->msFramebuffer;
-    m_msColor = taken->msColor;
-    m_msDepth = taken->msDepth;
-    m_copyProgram = taken->copyProgram;
-    return true;
+    lendContext();
+    std::vector<std::unique_ptr<GlResources>> dropped;
+    {
+        std::lock_guard<std::mutex> lock(pool.mutex);
+        --pool.renderers;
+        for (std::unique_ptr<GlResources>& idle : pool.idle)
+            if (idle->lender == this)
+                idle->lender = nullptr;
+        dropped = trimPoolLocked(pool);
+    }
 }
 
-RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::uint32_t height)
+void OffscreenRenderer::Impl::deleteOwnTextureNames()
 {
+    m_staleTextureNames.insert(m_staleTextureNames.end(), m_textureNames.begin(), m_textureNames.end());
+    m_textureNames.clear();
+    std::vector<GLuint> names;
+    for (GLuint name : m_staleTextureNames)
+        if (name != 0)
+            names.push_back(name);
+    if (!names.empty())
+        glDeleteTextures(GLsizei(names.size()), names.data());
+    m_staleTextureNames.clear();
+}
+
+void OffscreenRenderer::Impl::lendContext()
+{
+    if (m_gl == nullptr)
+        return;
+    if (!m_textureNames.empty() || !m_staleTextureNames.empty()) {
+        // A cancelled frame's own textures: deleted in the context they are
+        // names of. A context that cannot be made current is not lent.
+        ContextScope scope(*m_gl->context, m_image.data());
+        if (!scope.bound()) {
+            m_textureNames.clear();
+            m_staleTextureNames.clear();
+            m_gl.reset();
+            return;
+        }
+        deleteOwnTextureNames();
+    }
+    m_gl->lender = this;
+    std::vector<std::unique_ptr<GlResources>> dropped;
+    {
+        ContextPool& pool = contextPool();
+        std::lock_guard<std::mutex> lock(pool.mutex);
+        pool.idle.push_back(std::move(m_gl));
+        dropped = trimPoolLocked(pool);
+    }
+}
+
+RenderResult OffscreenRenderer::Impl::acquireContext(std::uint32_t width, std::uint32_t height)
+{
+    if (m_gl != nullptr && m_gl->width == width && m_gl->height == height)
+        return RenderResult::success();
+    lendContext();
     if (!m_backend.result)
         return m_backend.result;
-    destroyContext(true);
-    std::vector<std::uint8_t>().swap(m_image);
-    m_width = 0;
-    m_height = 0;
-    m_image.resize(std::size_t(width) * height * 4);
+    if (width != m_width || height != m_height) {
+        std::vector<std::uint8_t>().swap(m_image);
+        m_width = 0;
+        m_height = 0;
+        m_image.resize(std::size_t(width) * height * 4);
+        m_width = width;
+        m_height = height;
+    }
+    {
+        // The one this renderer lent if it is there, else the most recently
+        // lent one of this backend and size.
+        ContextPool& pool = contextPool();
+        std::lock_guard<std::mutex> lock(pool.mutex);
+        auto found = pool.idle.end();
+        for (auto it = pool.idle.begin(); it != pool.idle.end(); ++it) {
+            if ((*it)->backend != m_backend.backend || (*it)->width != width || (*it)->height != height)
+                continue;
+            found = it;
+            if ((*it)->lender == this)
+                break;
+        }
+        if (found != pool.idle.end()) {
+            m_gl = std::move(*found);
+            pool.idle.erase(found);
+        }
+    }
+    if (m_gl != nullptr) {
+        m_gl->lender = nullptr;
+        return RenderResult::success();
+    }
 
-    RenderResult result = adoptContext(width, height)
-                              ? RenderResult::success()
-                              : createGlContext(m_backend.backend, width, height, m_image.data(), m_context);
+    auto made = std::make_unique<GlResources>();
+    made->backend = m_backend.backend;
+    made->width = width;
+    made->height = height;
+    RenderResult result = createGlContext(m_backend.backend, width, height, m_image.data(), made->context);
     if (result) {
-        ContextScope scope(*m_context, m_image.data());
+        ContextScope scope(*made->context, m_image.data());
         if (!scope.bound()) {
             result = RenderResult::failure(RenderStatus::kContextFailure,
                                            std::string("making the ") + glBackendName(m_backend.backend) +
                                                " context current failed");
         } else {
-            glGetIntegerv(GL_MAX_VIEWPORT_DIMS, m_maxViewport);
+            glGetIntegerv(GL_MAX_VIEWPORT_DIMS, made->maxViewport);
             initializeState();
             GLenum error = takeGlError();
             if (error != GL_NO_ERROR)
@@ -710,76 +837,15 @@ RenderResult OffscreenRenderer::Impl::createContext(std::uint32_t width, std::ui
                                                    glErrorName(error));
         }
     }
-    if (!result) {
-        destroyContext();
+    if (result) {
+        m_gl = std::move(made);
+        g_contextsMade.fetch_add(1, std::memory_order_relaxed);
+    } else {
         std::vector<std::uint8_t>().swap(m_image);
-        return result;
+        m_width = 0;
+        m_height = 0;
     }
-    m_width = width;
-    m_height = height;
     return result;
-}
-
-void OffscreenRenderer::Impl::destroyContext(bool park)
-{
-    if (m_context == nullptr)
-        return;
-    // A context with textures of its own left (a frame cancelled before its
-    // end) is not handed on: they could only be deleted with it current.
-    if (park && m_width != 0 && m_textureNames.empty() && m_staleTextureNames.empty() && !m_textureCache.empty()) {
-        // The cached textures are this renderer's: deleted before the
-        // context is handed on (a context that cannot be made current is
-        // not handed on).
-        ContextScope scope(*m_context, m_image.data());
-        if (scope.bound())
-            evictTextures(true);
-        else
-            park = false;
-    }
-    m_textureCache.clear();
-    m_textureCacheBytes = 0;
-    if (park && m_width != 0 && m_textureNames.empty() && m_staleTextureNames.empty()) {
-        auto idle = std::make_unique<IdleContext>();
-        idle->backend = m_backend.backend;
-        idle->width = m_width;
-        idle->height = m_height;
-        idle->context = std::move(m_context);
-        idle->maxViewport[0] = m_maxViewport[0];
-        idle->maxViewport[1] = m_maxViewport[1];
-        for (int i = 0; i < LitProgram::kVariants; ++i)
-            idle->litPrograms[i] = m_litPrograms[i];
-        idle->unlitPrograms[0] = m_unlitPrograms[0];
-        idle->unlitPrograms[1] = m_unlitPrograms[1];
-        std::copy(std::begin(m_streamBuffers), std::end(m_streamBuffers), std::begin(idle->streamBuffers));
-        std::copy(std::begin(m_streamCapacity), std::end(m_streamCapacity), std::begin(idle->streamCapacity));
-        idle->msFramebuffer = m_msFramebuffer;
-        idle->msColor = m_msColor;
-        idle->msDepth = m_msDepth;
-        idle->copyProgram = m_copyProgram;
-        std::unique_ptr<IdleContext> evicted;
-        {
-            ContextPool& pool = contextPool();
-            std::lock_guard<std::mutex> lock(pool.mutex);
-            pool.idle.push_back(std::move(idle));
-            if (pool.idle.size() > kIdleContexts) {
-                evicted = std::move(pool.idle.front());
-                pool.idle.erase(pool.idle.begin());
-            }
-        }
-        // Destroyed outside the pool's lock (it takes the context mutex).
-        evicted.reset();
-    }
-    m_context.reset();
-    for (LitProgram& program : m_litPrograms)
-        program.forget();
-    forgetMultisample();
-    m_unlitPrograms[0].forget();
-    m_unlitPrograms[1].forget();
-    std::fill(std::begin(m_streamBuffers), std::end(m_streamBuffers), 0u);
-    std::fill(std::begin(m_streamCapacity), std::end(m_streamCapacity), std::size_t(0));
-    // The context's textures went with it.
-    m_textureNames.clear();
-    m_staleTextureNames.clear();
 }
 
 // Every value here is OpenGL's default except the shade model; they are set
@@ -843,15 +909,15 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
         pane.y > kMaxPaneOffset)
         return invalid("pane origin is outside +-" + std::to_string(kMaxPaneOffset));
 
-    if (m_context == nullptr || width != m_width || height != m_height) {
-        RenderResult created = createContext(width, height);
-        if (!created)
-            return created;
-    }
-    if (pane.width > m_maxViewport[0] || pane.height > m_maxViewport[1])
+    RenderResult acquired = acquireContext(width, height);
+    if (!acquired)
+        return acquired;
+    if (pane.width > m_gl->maxViewport[0] || pane.height > m_gl->maxViewport[1]) {
+        lendContext();
         return invalid("pane is larger than the maximum viewport");
+    }
 
-    ++m_frameNumber;
+    ++m_gl->frameNumber;
     m_pane = pane;
     m_clearColor = clearColor;
     m_options = options;
@@ -1232,7 +1298,7 @@ LitProgram* OffscreenRenderer::Impl::useLitProgram(int variant, const SurfaceSha
 
 LitProgram* OffscreenRenderer::Impl::litProgram(int variant, RenderResult& result)
 {
-    LitProgram& program = m_litPrograms[variant];
+    LitProgram& program = m_gl->litPrograms[variant];
     if (!program.built()) {
         std::string error;
         if (!program.build(error, variant)) {
@@ -1245,9 +1311,9 @@ LitProgram* OffscreenRenderer::Impl::litProgram(int variant, RenderResult& resul
 
 void OffscreenRenderer::Impl::uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes)
 {
-    if (m_streamBuffers[which] == 0)
-        glGenBuffers(1, &m_streamBuffers[which]);
-    glBindBuffer(target, m_streamBuffers[which]);
+    if (m_gl->streamBuffers[which] == 0)
+        glGenBuffers(1, &m_gl->streamBuffers[which]);
+    glBindBuffer(target, m_gl->streamBuffers[which]);
     // The store is kept and overwritten, and made anew only to grow (by
     // half again, so a frame that grows a little each time does not make
     // one each frame). A new store every flush (orphaning) made Mesa free
@@ -1256,7 +1322,7 @@ void OffscreenRenderer::Impl::uploadStream(StreamBuffer which, GLenum target, co
     // clearing were a sixth of the main thread's time
     // (benchmarks/RESULTS.md, ModelFrame). llvmpipe reads the vertices and
     // indices during the draw call, so nothing waits for the overwrite.
-    std::size_t& capacity = m_streamCapacity[which];
+    std::size_t& capacity = m_gl->streamCapacity[which];
     if (bytes > capacity) {
         capacity = std::max(bytes, capacity + capacity / 2);
         glBufferData(target, GLsizeiptr(capacity), nullptr, GL_STREAM_DRAW);
@@ -1280,7 +1346,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
 {
     RenderResult result;
     {
-        ContextScope scope(*m_context, m_image.data());
+        ContextScope scope(*m_gl->context, m_image.data());
         if (!scope.bound()) {
             resetBatch();
             return RenderResult::failure(RenderStatus::kContextFailure, "making the OpenGL context current failed");
@@ -1341,12 +1407,12 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     if (head.plain) {
                         glDisableClientState(GL_COLOR_ARRAY);
                         glDisableClientState(GL_NORMAL_ARRAY);
-                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamPositions]);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_gl->streamBuffers[kStreamPositions]);
                         glVertexPointer(3, GL_FLOAT, sizeof(Position), bufferOffset(offsetof(Position, x)));
                     } else {
                         glEnableClientState(GL_COLOR_ARRAY);
                         glEnableClientState(GL_NORMAL_ARRAY);
-                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamVertices]);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_gl->streamBuffers[kStreamVertices]);
                         glVertexPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, x)));
                         glColorPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, r)));
                         glNormalPointer(GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, nx)));
@@ -1390,7 +1456,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                         bindTexture(head.texture);
                         glEnable(GL_TEXTURE_2D);
                         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-                        glBindBuffer(GL_ARRAY_BUFFER, m_streamBuffers[kStreamVertices]);
+                        glBindBuffer(GL_ARRAY_BUFFER, m_gl->streamBuffers[kStreamVertices]);
                         glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, s)));
                     }
                     loadedTexture = head.texture;
@@ -1453,7 +1519,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             m_textureNames.clear();
         }
         if (finish)
-            evictTextures(false);
+            evictTextures(Evict::kUnused);
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glEnableClientState(GL_COLOR_ARRAY);
@@ -1463,7 +1529,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             resolveMultisample();
         // The finished image into m_image.
         if (finish)
-            m_context->finish(m_image.data());
+            m_gl->context->finish(m_image.data());
         const GLenum error = takeGlError();
         if (error != GL_NO_ERROR && result)
             result = RenderResult::failure(RenderStatus::kGraphicsError,
@@ -1477,7 +1543,7 @@ void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
 {
     const BatchTexture& texture = m_textures[index];
     if (texture.cacheSlot != kNotCached) {
-        CachedTexture& cached = m_textureCache[texture.cacheSlot];
+        CachedTexture& cached = m_gl->textureCache[texture.cacheSlot];
         if (cached.name != 0) {
             glBindTexture(GL_TEXTURE_2D, cached.name);
             return;
@@ -1579,8 +1645,8 @@ std::uint32_t OffscreenRenderer::Impl::findCachedTexture(const TextureImage& tex
         return known.width == given.width && known.height == given.height && known.rowBytes == given.rowBytes &&
                long(known.pixelType) == enumValue(given.pixelType) && long(known.byteOrder) == enumValue(given.byteOrder);
     };
-    for (std::size_t slot = 0; slot < m_textureCache.size(); ++slot) {
-        const CachedTexture& cached = m_textureCache[slot];
+    for (std::size_t slot = 0; slot < m_gl->textureCache.size(); ++slot) {
+        const CachedTexture& cached = m_gl->textureCache[slot];
         if (cached.clampS != texture.clampS || cached.clampT != texture.clampT ||
             long(cached.filter) != enumValue(texture.filter) ||
             cached.layouts.size() != texture.mipmaps.size() + 1 || !sameLayout(cached.layouts[0], texture.layout))
@@ -1603,23 +1669,27 @@ std::uint32_t OffscreenRenderer::Impl::findCachedTexture(const TextureImage& tex
     return kNotCached;
 }
 
-void OffscreenRenderer::Impl::evictTextures(bool all)
+void OffscreenRenderer::Impl::evictTextures(Evict which)
 {
     std::vector<GLuint> names;
     std::size_t kept = 0;
-    for (std::size_t slot = 0; slot < m_textureCache.size(); ++slot) {
-        CachedTexture& cached = m_textureCache[slot];
-        if (all || cached.lastFrame != m_frameNumber) {
+    const std::uint64_t now = m_gl->frameNumber;
+    for (std::size_t slot = 0; slot < m_gl->textureCache.size(); ++slot) {
+        CachedTexture& cached = m_gl->textureCache[slot];
+        const bool evicted = which == Evict::kMine
+                                 ? cached.user == this
+                                 : (cached.user == this && cached.lastFrame != now) || now - cached.lastFrame > kStaleFrames;
+        if (evicted) {
             if (cached.name != 0)
                 names.push_back(cached.name);
-            m_textureCacheBytes -= cached.source.size();
+            m_gl->textureCacheBytes -= cached.source.size();
             continue;
         }
         if (kept != slot)
-            m_textureCache[kept] = std::move(cached);
+            m_gl->textureCache[kept] = std::move(cached);
         ++kept;
     }
-    m_textureCache.resize(kept);
+    m_gl->textureCache.resize(kept);
     if (!names.empty())
         glDeleteTextures(GLsizei(names.size()), names.data());
 }
@@ -1638,10 +1708,11 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
     if (m_textures.size() == kUntextured)
         return invalid("too many textures in one frame");
     const std::uint32_t slot = findCachedTexture(texture);
-    if (slot != kNotCached && m_textureCache[slot].name != 0) {
+    if (slot != kNotCached && m_gl->textureCache[slot].name != 0) {
         // Uploaded already: only what drawing asks of it.
-        CachedTexture& cached = m_textureCache[slot];
-        cached.lastFrame = m_frameNumber;
+        CachedTexture& cached = m_gl->textureCache[slot];
+        cached.lastFrame = m_gl->frameNumber;
+        cached.user = this;
         BatchTexture known;
         known.width = texture.layout.width;
         known.height = texture.layout.height;
@@ -1671,7 +1742,8 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
     for (std::size_t i = 3; i < decoded.rgba.size() && !decoded.hasAlpha; i += 4)
         decoded.hasAlpha = decoded.rgba[i] != 255;
     if (slot != kNotCached) {
-        m_textureCache[slot].lastFrame = m_frameNumber;
+        m_gl->textureCache[slot].lastFrame = m_gl->frameNumber;
+        m_gl->textureCache[slot].user = this;
         decoded.cacheSlot = slot;
     } else {
         // Kept for the frames after this one (uploaded when first drawn).
@@ -1686,15 +1758,16 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
         keep(texture.pixels, texture.layout);
         for (const TextureLevel& level : texture.mipmaps)
             keep(level.pixels, level.layout);
-        if (m_textureCacheBytes + cached.source.size() <= kTextureCacheBytes) {
+        if (m_gl->textureCacheBytes + cached.source.size() <= kTextureCacheBytes) {
             cached.clampS = texture.clampS;
             cached.clampT = texture.clampT;
             cached.filter = texture.filter;
             cached.hasAlpha = decoded.hasAlpha;
-            cached.lastFrame = m_frameNumber;
-            m_textureCacheBytes += cached.source.size();
-            m_textureCache.push_back(std::move(cached));
-            decoded.cacheSlot = std::uint32_t(m_textureCache.size() - 1);
+            cached.lastFrame = m_gl->frameNumber;
+            cached.user = this;
+            m_gl->textureCacheBytes += cached.source.size();
+            m_gl->textureCache.push_back(std::move(cached));
+            decoded.cacheSlot = std::uint32_t(m_gl->textureCache.size() - 1);
         }
     }
     m_textures.push_back(std::move(decoded));
@@ -1742,6 +1815,7 @@ RenderResult OffscreenRenderer::Impl::endFrame()
     const RenderResult result = flush(true);
     forgetTextures();
     forgetTranslucent();
+    lendContext();
     return result;
 }
 
@@ -1863,7 +1937,7 @@ void OffscreenRenderer::Impl::bindFrameFramebuffer()
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return;
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_gl->msFramebuffer);
     glEnable(GL_MULTISAMPLE);
 }
 
@@ -1873,7 +1947,7 @@ bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
         return true;
     const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
     if (!on) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_msFramebuffer);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_gl->msFramebuffer);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
         glDisable(GL_SCISSOR_TEST);
         glBlitFramebuffer(0, 0, GLint(m_width), GLint(m_height), 0, 0, GLint(m_width), GLint(m_height),
@@ -1888,20 +1962,20 @@ bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
         return true;
     }
     // Made once per context, which has one size.
-    if (m_msFramebuffer == 0) {
-        glGenFramebuffers(1, &m_msFramebuffer);
-        glGenRenderbuffers(1, &m_msColor);
-        glGenRenderbuffers(1, &m_msDepth);
-        glBindRenderbuffer(GL_RENDERBUFFER, m_msColor);
+    if (m_gl->msFramebuffer == 0) {
+        glGenFramebuffers(1, &m_gl->msFramebuffer);
+        glGenRenderbuffers(1, &m_gl->msColor);
+        glGenRenderbuffers(1, &m_gl->msDepth);
+        glBindRenderbuffer(GL_RENDERBUFFER, m_gl->msColor);
         glRenderbufferStorageMultisample(GL_RENDERBUFFER, kAntiAliasSamples, GL_RGBA8, GLsizei(m_width),
                                          GLsizei(m_height));
-        glBindRenderbuffer(GL_RENDERBUFFER, m_msDepth);
+        glBindRenderbuffer(GL_RENDERBUFFER, m_gl->msDepth);
         glRenderbufferStorageMultisample(GL_RENDERBUFFER, kAntiAliasSamples, GL_DEPTH_COMPONENT24,
                                          GLsizei(m_width), GLsizei(m_height));
         glBindRenderbuffer(GL_RENDERBUFFER, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_msColor);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_msDepth);
+        glBindFramebuffer(GL_FRAMEBUFFER, m_gl->msFramebuffer);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_gl->msColor);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_gl->msDepth);
         const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (status != GL_FRAMEBUFFER_COMPLETE) {
@@ -1909,9 +1983,9 @@ bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
             return false;
         }
     }
-    if (m_copyProgram == 0) {
-        m_copyProgram = compileCopyProgram(error);
-        if (m_copyProgram == 0)
+    if (m_gl->copyProgram == 0) {
+        m_gl->copyProgram = compileCopyProgram(error);
+        if (m_gl->copyProgram == 0)
             return false;
     }
 
@@ -1940,7 +2014,7 @@ bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
     const GLboolean cull = glIsEnabled(GL_CULL_FACE);
     GLint depthMask = GL_TRUE;
     glGetIntegerv(GL_DEPTH_WRITEMASK, &depthMask);
-    glBindFramebuffer(GL_FRAMEBUFFER, m_msFramebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_gl->msFramebuffer);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_ALPHA_TEST);
     glDisable(GL_BLEND);
@@ -1950,7 +2024,7 @@ bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glViewport(0, 0, GLsizei(m_width), GLsizei(m_height));
-    glUseProgram(m_copyProgram);
+    glUseProgram(m_gl->copyProgram);
     glBegin(GL_TRIANGLE_STRIP);
     glVertex2f(-1.0f, -1.0f);
     glVertex2f(1.0f, -1.0f);
@@ -1982,19 +2056,12 @@ bool OffscreenRenderer::Impl::useMultisample(bool on, std::string& error)
 
 void OffscreenRenderer::Impl::resolveMultisample()
 {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_msFramebuffer);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_gl->msFramebuffer);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glDisable(GL_SCISSOR_TEST);
     glBlitFramebuffer(0, 0, GLint(m_width), GLint(m_height), 0, 0, GLint(m_width), GLint(m_height),
                       GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    m_multisampling = false;
-}
-
-void OffscreenRenderer::Impl::forgetMultisample()
-{
-    m_msFramebuffer = m_msColor = m_msDepth = 0;
-    m_copyProgram = 0;
     m_multisampling = false;
 }
 
@@ -2222,7 +2289,7 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, int variant, FogL
             loaded.unlit = -1;
             return true;
         }
-        UnlitProgram& program = m_unlitPrograms[textured ? 1 : 0];
+        UnlitProgram& program = m_gl->unlitPrograms[textured ? 1 : 0];
         if (!program.built()) {
             std::string error;
             if (!program.build(error, textured)) {
@@ -2245,7 +2312,7 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, int variant, FogL
     loaded.unlit = -1;
     std::uint32_t& set = loaded.fog[variant];
     if (set != head.fog) {
-        m_litPrograms[variant].finish().setFog(fogOf(head.fog));
+        m_gl->litPrograms[variant].finish().setFog(fogOf(head.fog));
         set = head.fog;
     }
     return true;
@@ -2498,7 +2565,7 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
         }
         std::string error;
         if (state.shading == kUnlit) {
-            UnlitProgram& program = m_unlitPrograms[textured ? 1 : 0];
+            UnlitProgram& program = m_gl->unlitPrograms[textured ? 1 : 0];
             if (!program.built() && !program.build(error, textured)) {
                 result = RenderResult::failure(RenderStatus::kGraphicsError, error);
                 break;
@@ -2534,6 +2601,7 @@ void OffscreenRenderer::Impl::cancelFrame()
     resetBatch();
     forgetTextures();
     forgetTranslucent();
+    lendContext();
 }
 
 OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>(chooseGlBackendFromEnvironment())) {}
@@ -2777,6 +2845,11 @@ std::uint32_t OffscreenRenderer::height() const
 std::size_t OffscreenRenderer::rowBytes() const
 {
     return std::size_t(m_impl->m_width) * 4;
+}
+
+std::uint64_t OffscreenRenderer::contextsMade()
+{
+    return g_contextsMade.load(std::memory_order_relaxed);
 }
 
 const std::uint8_t* OffscreenRenderer::pixels() const

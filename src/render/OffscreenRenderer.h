@@ -60,8 +60,13 @@ public:
     /// pixels are cleared to clearColor and the viewport maps clip space onto
     /// it; pixels outside the pane become (0, 0, 0, 0). The pane may extend
     /// beyond the image (that part is simply not stored). The matrix is reset
-    /// to identity. The first frame, or a frame of a new size, creates the
-    /// OpenGL context and image; frames of an unchanged size reuse both.
+    /// to identity. The image is made by the first frame and by a frame of a
+    /// new size. The OpenGL context is the process's, not the renderer's: a
+    /// frame takes an idle one of its backend and size (the one this
+    /// renderer drew its last frame with, if no other renderer took it) and
+    /// endFrame or cancelFrame gives it back, with its compiled programs and
+    /// kept textures; only a frame begun while every such context is in a
+    /// frame makes a new one (contextsMade).
     /// Errors: kWrongState if a frame is open; kInvalidArgument if width or
     /// height is 0 or above the implementation limit (16384 for llvmpipe),
     /// the pane is empty, wider or taller than 16384 or has its origin
@@ -211,6 +216,9 @@ public:
     std::size_t rowBytes() const override;
     /// RGBA8 pixels, R first in memory, top row first; null before the first frame.
     const std::uint8_t* pixels() const override;
+
+    /// How many OpenGL contexts this process's renderers have made so far.
+    static std::uint64_t contextsMade();
 
 private:
     class Impl;
