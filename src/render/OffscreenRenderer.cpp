@@ -2457,8 +2457,9 @@ void OffscreenRenderer::Impl::clusterTranslucent()
     m_translucentTriangles.swap(m_clustered);
 }
 
-// A stable radix sort, least significant byte first, on a key per triangle
-// that orders as its depth does, reversed: the bits of a non-negative double
+// A stable radix sort, least significant byte first, on the upper half of
+// a key per triangle that orders as its depth does, reversed, then the runs
+// that half leaves tied by the whole key: the bits of a non-negative double
 // order as its value, a negative one's as its value reversed, so flipping
 // the sign bit of the first and every bit of the second gives an unsigned
 // key in the doubles' order (-0, which a depth that underflows can be,
@@ -2477,17 +2478,19 @@ void OffscreenRenderer::Impl::sortFarthestFirst()
         const std::uint64_t ascending = (bits & kSign) != 0 ? ~bits : bits | kSign;
         m_sortKeys[i] = SortKey{~ascending, std::uint32_t(i)};
     }
-    // Every byte's counts in one pass over the keys (a key's bytes do not
-    // change as the passes reorder them); eight passes at most, whatever
-    // the depths.
-    std::array<std::array<std::uint32_t, 256>, 8> counts{};
+    // By the keys' upper halves first: least significant byte first, each
+    // byte's counts taken in one pass over the keys (a key's bytes do not
+    // change as the passes reorder them), a byte every key shares skipped;
+    // four passes at most. Keys equal in their upper halves are then in
+    // submission order.
+    std::array<std::array<std::uint32_t, 256>, 4> counts{};
     for (const SortKey& key : m_sortKeys)
-        for (int byte = 0; byte < 8; ++byte)
-            ++counts[byte][(key.key >> (8 * byte)) & 0xFF];
+        for (int byte = 0; byte < 4; ++byte)
+            ++counts[byte][(key.key >> (32 + 8 * byte)) & 0xFF];
     m_sortScratch.resize(count);
-    for (int byte = 0; byte < 8; ++byte) {
+    for (int byte = 0; byte < 4; ++byte) {
         std::array<std::uint32_t, 256>& place = counts[byte];
-        const int shift = 8 * byte;
+        const int shift = 32 + 8 * byte;
         if (place[(m_sortKeys[0].key >> shift) & 0xFF] == count)
             continue;
         std::uint32_t next = 0;
@@ -2499,6 +2502,31 @@ void OffscreenRenderer::Impl::sortFarthestFirst()
         for (const SortKey& key : m_sortKeys)
             m_sortScratch[place[(key.key >> shift) & 0xFF]++] = key;
         m_sortKeys.swap(m_sortScratch);
+    }
+    // Then each run of keys equal in their upper halves (depths within
+    // about a millionth of each other: few, and short) by the whole key,
+    // keeping submission order on ties: by insertion up to kShortRun keys,
+    // else by a stable merge sort, so that no run costs more than
+    // n log n.
+    constexpr std::size_t kShortRun = 16;
+    const auto byKey = [](const SortKey& a, const SortKey& b) { return a.key < b.key; };
+    for (std::size_t i = 0; i < count;) {
+        const std::uint64_t upper = m_sortKeys[i].key >> 32;
+        std::size_t end = i + 1;
+        while (end < count && m_sortKeys[end].key >> 32 == upper)
+            ++end;
+        if (end - i > kShortRun) {
+            std::stable_sort(m_sortKeys.begin() + std::ptrdiff_t(i), m_sortKeys.begin() + std::ptrdiff_t(end), byKey);
+        } else {
+            for (std::size_t j = i + 1; j < end; ++j) {
+                const SortKey moved = m_sortKeys[j];
+                std::size_t k = j;
+                for (; k > i && moved.key < m_sortKeys[k - 1].key; --k)
+                    m_sortKeys[k] = m_sortKeys[k - 1];
+                m_sortKeys[k] = moved;
+            }
+        }
+        i = end;
     }
     m_clustered.resize(count);
     for (std::size_t i = 0; i < count; ++i)

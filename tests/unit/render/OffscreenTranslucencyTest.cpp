@@ -230,5 +230,67 @@ TEST(OffscreenTranslucency, TranslucentTrianglesBlendFarthestFirstAndTiesInSubmi
     EXPECT_EQ(wrong, 0) << "expected " << expected[0] << " " << expected[1] << " " << expected[2];
 }
 
+// Depths a float step or a few apart, whose sort keys share their upper
+// 32 bits (the sort orders such runs on its own: by insertion up to 16
+// keys, by a merge sort above): a run of 40 quads and one of 6, each
+// scrambled, with ties, in a frame of its own over the opaque back,
+// expected as above.
+TEST(OffscreenTranslucency, DepthsAFloatStepApartBlendFarthestFirst)
+{
+    struct Layer {
+        float depth;
+        RgbColor color;
+    };
+    std::uint32_t seed = 777u;
+    const auto next = [&seed] {
+        seed = seed * 1664525u + 1013904223u;
+        return seed >> 8;
+    };
+    for (const int length : {40, 6}) {
+        std::vector<Layer> layers;
+        float depth = -0.75f;
+        for (int k = 0; k < length; ++k) {
+            // Every fifth a tie with the one before.
+            if (k % 5 != 4)
+                depth = std::nextafter(depth, 1.0f);
+            layers.push_back({depth, RgbColor{float(next() % 256) / 255.0f, float(next() % 256) / 255.0f,
+                                              float(next() % 256) / 255.0f}});
+        }
+        for (std::size_t k = layers.size(); k > 1; --k)
+            std::swap(layers[k - 1], layers[next() % k]);
+
+        OffscreenRenderer renderer;
+        ASSERT_TRUE(beginDepthTestedFrame(renderer));
+        const std::vector<float> back = quad(0, kSize, 0.99f);
+        ASSERT_TRUE(renderer.drawTriangles(back.data(), 6, kBehind));
+        ASSERT_TRUE(renderer.setOpacity(OpacitySetup{nullptr, 0, RgbColor{0.5f, 0.5f, 0.5f}}));
+        for (const Layer& layer : layers) {
+            const std::vector<float> triangles = quad(0, kSize, layer.depth);
+            ASSERT_TRUE(renderer.drawTriangles(triangles.data(), 6, layer.color));
+        }
+        ASSERT_TRUE(renderer.endFrame());
+
+        std::vector<Layer> order = layers;
+        std::stable_sort(order.begin(), order.end(),
+                         [](const Layer& a, const Layer& b) { return a.depth > b.depth; });
+        int expected[3] = {byteOf(kBehind.r), byteOf(kBehind.g), byteOf(kBehind.b)};
+        for (const Layer& layer : order) {
+            const float channels[3] = {layer.color.r, layer.color.g, layer.color.b};
+            for (int c = 0; c < 3; ++c)
+                expected[c] = int(std::lround(0.5 * channels[c] * 255.0 + 0.5 * expected[c]));
+        }
+        int wrong = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const std::uint8_t* p =
+                    renderer.pixels() + renderer.rowBytes() * std::size_t(y) + std::size_t(x) * 4;
+                for (int c = 0; c < 3; ++c)
+                    wrong += std::abs(p[c] - expected[c]) > 2;
+            }
+        EXPECT_EQ(wrong, 0) << "run of " << length << ": expected " << expected[0] << " " << expected[1] << " "
+                            << expected[2];
+    }
+}
+
 } // namespace
 } // namespace q3
