@@ -339,38 +339,44 @@ void LitProgram::use() const
 
 void LitProgram::setLighting(const LightingSetup& lighting) const
 {
-    // Ambient lights add up into one term; the others are listed.
+    // Ambient lights add up into one term; the others are listed (at most
+    // kMaxLights: OffscreenRenderer::setLighting refuses more).
     float ambient[3] = {0.0f, 0.0f, 0.0f};
-    std::vector<GLint> kind, attenuation, fallOff;
-    std::vector<float> color, position, direction, hot, outer;
+    GLint kind[kMaxLights], attenuation[kMaxLights], fallOff[kMaxLights];
+    float color[3 * kMaxLights], position[3 * kMaxLights], direction[3 * kMaxLights];
+    float hot[kMaxLights], outer[kMaxLights];
+    std::size_t listed = 0;
     for (const RenderLight& light : lighting.lights) {
         if (light.kind == RenderLight::Kind::kAmbient) {
             for (int k = 0; k < 3; ++k)
                 ambient[k] += light.color[k];
             continue;
         }
-        kind.push_back(light.kind == RenderLight::Kind::kDirectional ? 1
-                       : light.kind == RenderLight::Kind::kPoint     ? 2
-                                                                     : 3);
-        color.insert(color.end(), light.color, light.color + 3);
-        position.insert(position.end(), light.position, light.position + 3);
-        direction.insert(direction.end(), light.direction, light.direction + 3);
-        attenuation.push_back(light.attenuation);
-        hot.push_back(light.hotAngle);
-        outer.push_back(light.outerAngle);
-        fallOff.push_back(light.fallOff);
+        if (listed == kMaxLights)
+            break;
+        kind[listed] = light.kind == RenderLight::Kind::kDirectional ? 1 : light.kind == RenderLight::Kind::kPoint ? 2 : 3;
+        for (int k = 0; k < 3; ++k) {
+            color[3 * listed + k] = light.color[k];
+            position[3 * listed + k] = light.position[k];
+            direction[3 * listed + k] = light.direction[k];
+        }
+        attenuation[listed] = light.attenuation;
+        hot[listed] = light.hotAngle;
+        outer[listed] = light.outerAngle;
+        fallOff[listed] = light.fallOff;
+        ++listed;
     }
-    const GLsizei count = GLsizei(kind.size());
+    const GLsizei count = GLsizei(listed);
     glUniform1i(m_lightCount, count);
     if (count > 0) {
-        glUniform1iv(m_lightKind, count, kind.data());
-        glUniform3fv(m_lightColor, count, color.data());
-        glUniform3fv(m_lightPosition, count, position.data());
-        glUniform3fv(m_lightDirection, count, direction.data());
-        glUniform1iv(m_lightAttenuation, count, attenuation.data());
-        glUniform1fv(m_lightHot, count, hot.data());
-        glUniform1fv(m_lightOuter, count, outer.data());
-        glUniform1iv(m_lightFallOff, count, fallOff.data());
+        glUniform1iv(m_lightKind, count, kind);
+        glUniform3fv(m_lightColor, count, color);
+        glUniform3fv(m_lightPosition, count, position);
+        glUniform3fv(m_lightDirection, count, direction);
+        glUniform1iv(m_lightAttenuation, count, attenuation);
+        glUniform1fv(m_lightHot, count, hot);
+        glUniform1fv(m_lightOuter, count, outer);
+        glUniform1iv(m_lightFallOff, count, fallOff);
     }
     glUniform3fv(m_ambientLight, 1, ambient);
     glUniform3fv(m_eye, 1, lighting.eye);
