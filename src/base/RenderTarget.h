@@ -50,6 +50,15 @@ struct FrameOptions {
     /// two at the same depth the later wins, as without the test) and writes
     /// its depth. Without it primitives are painted in submission order.
     bool depthTest = false;
+    /// Where the frame may be drawn straight into instead of the target's
+    /// own image: the caller's image of the frame's width x height, rows
+    /// `bgraRowBytes` apart (top row first), each pixel B, G, R, A bytes
+    /// (QuickDraw 3D's ARGB32 pixmap in little-endian order), for a pane
+    /// that is the whole image. A target that does says so (drewInPlace:
+    /// the image then holds exactly what pixels() would have, in that
+    /// order); one that does not ignores it. Null: not offered.
+    std::uint8_t* bgraImage = nullptr;
+    std::size_t bgraRowBytes = 0;
 };
 
 /// A 1-bit image drawn in screen space (a QuickDraw 3D marker): `height`
@@ -412,6 +421,9 @@ public:
     virtual std::size_t rowBytes() const = 0;
     /// RGBA8 pixels, R first in memory, top row first; null before the first frame.
     virtual const std::uint8_t* pixels() const = 0;
+    /// Whether the last successful frame went into FrameOptions::bgraImage
+    /// (pixels() is then unspecified).
+    virtual bool drewInPlace() const { return false; }
 };
 
 /// A new target of the backend the library was built with (render/ defines

@@ -122,7 +122,7 @@ bool osMesaAvailable()
     return false;
 }
 
-RenderResult createOsMesaContext(std::uint32_t, std::uint32_t, std::uint8_t*, std::unique_ptr<GlContext>&)
+RenderResult createOsMesaContext(std::uint32_t, std::uint32_t, std::uint8_t*, bool, std::unique_ptr<GlContext>&)
 {
     return RenderResult::failure(RenderStatus::kContextFailure, "this Q3 was built without OSMesa (Q3_WITH_OSMESA)");
 }
@@ -204,11 +204,13 @@ GlBackendChoice chooseGlBackendFromEnvironment()
 }
 
 RenderResult createGlContext(GlBackend backend, std::uint32_t width, std::uint32_t height, std::uint8_t* image,
-                             std::unique_ptr<GlContext>& context)
+                             std::unique_ptr<GlContext>& context, bool bgra)
 {
     context.reset();
+    if (backend == GlBackend::kEgl && bgra)
+        return RenderResult::failure(RenderStatus::kContextFailure, "EGL contexts draw RGBA images only");
     return backend == GlBackend::kEgl ? detail::createEglContext(width, height, image, context)
-                                      : detail::createOsMesaContext(width, height, image, context);
+                                      : detail::createOsMesaContext(width, height, image, bgra, context);
 }
 
 } // namespace q3

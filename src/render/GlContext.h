@@ -58,6 +58,14 @@ public:
     /// EGL ignores it), and remembers the thread's previous context of the
     /// same API. False when the backend refuses; nothing is current then.
     virtual bool makeCurrent(std::uint8_t* image) = 0;
+    /// With the context current: the rows of the image makeCurrent bound
+    /// are rowPixels pixels apart (0: its width, as after creation). False
+    /// when the backend draws only into images of packed rows (EGL, which
+    /// ignores the image).
+    virtual bool setRowPixels(std::uint32_t rowPixels)
+    {
+        return rowPixels == 0;
+    }
     /// Makes the remembered previous context current again, or none.
     virtual void restorePrevious() = 0;
     /// With the context current: finishes the drawing and leaves the image
@@ -67,12 +75,13 @@ public:
 };
 
 /// Creates a context of `backend` for width x height pixels drawing into
-/// `image` (as makeCurrent), and checks that
+/// `image` (as makeCurrent), R, G, B, A bytes per pixel or with `bgra` B,
+/// G, R, A (OSMesa only), and checks that
 /// it renders with llvmpipe (EGL on a GPU device: with that GPU); the
 /// context is not current afterwards. Errors: kContextFailure (the library
 /// is missing or refuses, a GL function is missing), kWrongRenderer.
 RenderResult createGlContext(GlBackend backend, std::uint32_t width, std::uint32_t height, std::uint8_t* image,
-                             std::unique_ptr<GlContext>& context);
+                             std::unique_ptr<GlContext>& context, bool bgra = false);
 
 /// Sets the environment variables Mesa reads when the process's first
 /// context is created (GlContext.cpp says which and why). Only the first
@@ -93,7 +102,7 @@ void pinMesaEnvironmentLocked();
 // loads the library once.
 bool osMesaAvailable();
 bool eglAvailable();
-RenderResult createOsMesaContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image,
+RenderResult createOsMesaContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image, bool bgra,
                                  std::unique_ptr<GlContext>& context);
 RenderResult createEglContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image,
                               std::unique_ptr<GlContext>& context);

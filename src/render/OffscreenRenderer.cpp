@@ -95,8 +95,10 @@ constexpr std::size_t kFlushIndexCount = std::size_t(1) << 21;
 /// scope, then the thread's previous context again, or none.
 class ContextScope {
 public:
-    ContextScope(GlContext& context, std::uint8_t* image)
-        : m_context(context), m_bound(context.makeCurrent(image)), m_api(m_bound ? &context.api() : nullptr)
+    // rowPixels: how far apart the image's rows are (0: its width).
+    ContextScope(GlContext& context, std::uint8_t* image, std::uint32_t rowPixels = 0)
+        : m_context(context), m_bound(context.makeCurrent(image) && context.setRowPixels(rowPixels)),
+          m_api(m_bound ? &context.api() : nullptr)
     {
     }
     ~ContextScope() { m_context.restorePrevious(); }
@@ -354,7 +356,7 @@ private:
     // m_image that image): the one held, else an idle one from the pool
     // (ContextPool), else a new one. Errors: kContextFailure,
     // kWrongRenderer, kGraphicsError.
-    RenderResult acquireContext(std::uint32_t width, std::uint32_t height);
+    RenderResult acquireContext(std::uint32_t width, std::uint32_t height, bool bgra);
     // Lends m_gl to the pool (GlResources), if held.
     void lendContext();
     // Deletes the names of this renderer's own (uncached) textures, in
@@ -621,6 +623,7 @@ public:
         GlBackend backend = GlBackend::kOsMesa;
         std::uint32_t width = 0;
         std::uint32_t height = 0;
+        bool bgra = false; // draws B, G, R, A images (FrameOptions::bgraImage)
         std::unique_ptr<GlContext> context;
         GLint maxViewport[2] = {0, 0};
         // The lighting programs, one per variant (LitProgram::variant):
@@ -644,9 +647,16 @@ public:
         const Impl* lender = nullptr;  // in the pool: the renderer that lent it
     };
 
+    bool m_drewInPlace = false; // the last frame went into FrameOptions::bgraImage
+
 private:
     // This frame's context (null between frames: lent to the pool).
     std::unique_ptr<GlResources> m_gl;
+    // The image this frame draws into: m_image, or the caller's
+    // (FrameOptions::bgraImage) with its rows m_frameRowPixels apart.
+    std::uint8_t* m_frameImage = nullptr;
+    std::uint32_t m_frameRowPixels = 0;
+    bool m_direct = false;
     // The process's idle contexts (see ContextPool below).
     struct ContextPool;
     static ContextPool& contextPool();
@@ -789,9 +799,9 @@ void OffscreenRenderer::Impl::lendContext()
     }
 }
 
-RenderResult OffscreenRenderer::Impl::acquireContext(std::uint32_t width, std::uint32_t height)
+RenderResult OffscreenRenderer::Impl::acquireContext(std::uint32_t width, std::uint32_t height, bool bgra)
 {
-    if (m_gl != nullptr && m_gl->width == width && m_gl->height == height)
+    if (m_gl != nullptr && m_gl->width == width && m_gl->height == height && m_gl->bgra == bgra)
         return RenderResult::success();
     lendContext();
     if (!m_backend.result)
@@ -811,7 +821,8 @@ RenderResult OffscreenRenderer::Impl::acquireContext(std::uint32_t width, std::u
         std::lock_guard<std::mutex> lock(pool.mutex);
         auto found = pool.idle.end();
         for (auto it = pool.idle.begin(); it != pool.idle.end(); ++it) {
-            if ((*it)->backend != m_backend.backend || (*it)->width != width || (*it)->height != height)
+            if ((*it)->backend != m_backend.backend || (*it)->width != width || (*it)->height != height ||
+                (*it)->bgra != bgra)
                 continue;
             found = it;
             if ((*it)->lender == this)
@@ -831,7 +842,8 @@ RenderResult OffscreenRenderer::Impl::acquireContext(std::uint32_t width, std::u
     made->backend = m_backend.backend;
     made->width = width;
     made->height = height;
-    RenderResult result = createGlContext(m_backend.backend, width, height, m_image.data(), made->context);
+    made->bgra = bgra;
+    RenderResult result = createGlContext(m_backend.backend, width, height, m_image.data(), made->context, bgra);
     if (result) {
         ContextScope scope(*made->context, m_image.data());
         if (!scope.bound()) {
@@ -920,9 +932,20 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
         pane.y > kMaxPaneOffset)
         return invalid("pane origin is outside +-" + std::to_string(kMaxPaneOffset));
 
-    RenderResult acquired = acquireContext(width, height);
+    // The caller's image when it offers one this backend can draw into
+    // (OSMesa binds any memory of the context's layout; EGL reads back
+    // RGBA into m_image): the copy into the caller's pixmap is saved.
+    const bool direct = options.bgraImage != nullptr && m_backend.backend == GlBackend::kOsMesa &&
+                        pane.x == 0 && pane.y == 0 && std::uint32_t(pane.width) == width &&
+                        std::uint32_t(pane.height) == height && options.bgraRowBytes % 4 == 0 &&
+                        options.bgraRowBytes / 4 >= width && options.bgraRowBytes / 4 <= kMaxImageSize;
+    m_drewInPlace = false;
+    RenderResult acquired = acquireContext(width, height, direct);
     if (!acquired)
         return acquired;
+    m_direct = direct;
+    m_frameImage = direct ? options.bgraImage : m_image.data();
+    m_frameRowPixels = direct ? std::uint32_t(options.bgraRowBytes / 4) : 0;
     if (pane.width > m_gl->maxViewport[0] || pane.height > m_gl->maxViewport[1]) {
         lendContext();
         return invalid("pane is larger than the maximum viewport");
@@ -1357,7 +1380,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
 {
     RenderResult result;
     {
-        ContextScope scope(*m_gl->context, m_image.data());
+        ContextScope scope(*m_gl->context, m_frameImage, m_frameRowPixels);
         if (!scope.bound()) {
             resetBatch();
             return RenderResult::failure(RenderStatus::kContextFailure, "making the OpenGL context current failed");
@@ -1540,7 +1563,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             resolveMultisample();
         // The finished image into m_image.
         if (finish)
-            m_gl->context->finish(m_image.data());
+            m_gl->context->finish(m_frameImage);
         const GLenum error = takeGlError();
         if (error != GL_NO_ERROR && result)
             result = RenderResult::failure(RenderStatus::kGraphicsError,
@@ -1827,6 +1850,7 @@ RenderResult OffscreenRenderer::Impl::endFrame()
     forgetTextures();
     forgetTranslucent();
     lendContext();
+    m_drewInPlace = result && m_direct;
     return result;
 }
 
@@ -2890,6 +2914,11 @@ std::uint32_t OffscreenRenderer::height() const
 std::size_t OffscreenRenderer::rowBytes() const
 {
     return std::size_t(m_impl->m_width) * 4;
+}
+
+bool OffscreenRenderer::drewInPlace() const
+{
+    return m_impl->m_drewInPlace;
 }
 
 std::uint64_t OffscreenRenderer::contextsMade()

@@ -216,6 +216,9 @@ public:
     std::size_t rowBytes() const override;
     /// RGBA8 pixels, R first in memory, top row first; null before the first frame.
     const std::uint8_t* pixels() const override;
+    /// Whether the last frame went into FrameOptions::bgraImage: OSMesa
+    /// draws there when offered (a context of B, G, R, A layout), EGL never.
+    bool drewInPlace() const override;
 
     /// How many OpenGL contexts this process's renderers have made so far.
     static std::uint64_t contextsMade();

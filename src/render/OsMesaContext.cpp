@@ -112,6 +112,12 @@ public:
         m_foreign = WindowSystemBinding{};
     }
 
+    bool setRowPixels(std::uint32_t rowPixels) override
+    {
+        osMesa().PixelStore(OSMESA_ROW_LENGTH, GLint(rowPixels));
+        return true;
+    }
+
     // glFinish makes OSMesa copy its framebuffer into the bound image.
     void finish(std::uint8_t*) override { glFinish(); }
 
@@ -139,7 +145,7 @@ bool osMesaAvailable()
     return osMesa().loaded;
 }
 
-RenderResult createOsMesaContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image,
+RenderResult createOsMesaContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image, bool bgra,
                                  std::unique_ptr<GlContext>& out)
 {
     const OsMesaLibrary& l = osMesa();
@@ -151,21 +157,22 @@ RenderResult createOsMesaContext(std::uint32_t width, std::uint32_t height, std:
         pinMesaEnvironmentLocked();
         // A depth buffer for FrameOptions::depthTest; frames without the test
         // never touch it.
-        const int attributes[] = {OSMESA_FORMAT,       OSMESA_RGBA, OSMESA_DEPTH_BITS,  24,
+        const int attributes[] = {OSMESA_FORMAT,       bgra ? OSMESA_BGRA : OSMESA_RGBA, OSMESA_DEPTH_BITS,  24,
                                   OSMESA_STENCIL_BITS, 0,           OSMESA_ACCUM_BITS,  0,
                                   OSMESA_PROFILE,      OSMESA_COMPAT_PROFILE, 0};
         raw = l.CreateContextAttribs(attributes, nullptr);
     }
     if (raw == nullptr)
         return RenderResult::failure(RenderStatus::kContextFailure,
-                                     "OSMesaCreateContextAttribs failed for an RGBA compatibility context");
+                                     std::string("OSMesaCreateContextAttribs failed for an ") +
+                                         (bgra ? "BGRA" : "RGBA") + " compatibility context");
     auto context = std::make_unique<OsMesaContext>(raw, width, height);
     OsMesaContext* made = context.get();
     return finishNewContext(
         std::move(context), image, true, "OSMesa", [made] { made->setRowsTopFirst(); },
         [&] {
             return "OSMesaMakeCurrent failed for a " + std::to_string(width) + " x " + std::to_string(height) +
-                   " RGBA8 buffer";
+                   (bgra ? " BGRA8" : " RGBA8") + " buffer";
         },
         out);
 }

@@ -335,6 +335,18 @@ void View::startRendering()
     style.textureFilter = m_renderer->textureFilter();
     FrameOptions options;
     options.depthTest = fills;
+    // A little-endian ARGB32 pixmap the frame replaces whole (cleared, no
+    // mask, the pane the whole image) is offered to the backend to draw in
+    // place of its own image, saving the copy into it (writeImage).
+    const PixmapLayout& layout = destination.layout;
+    if (!destination.window && !destination.appGl && destination.image != nullptr && destination.cleared &&
+        destination.mask.image == nullptr && layout.pixelType == PixelType::kARGB32 &&
+        layout.byteOrder == ByteOrder::kLittle && validatePixmapLayout(layout) &&
+        destination.pane.x == 0 && destination.pane.y == 0 && destination.pane.width == int(layout.width) &&
+        destination.pane.height == int(layout.height)) {
+        options.bgraImage = static_cast<std::uint8_t*>(destination.image);
+        options.bgraRowBytes = layout.rowBytes;
+    }
 
     if (!m_offscreen)
         m_offscreen = makeRenderTarget();
@@ -362,7 +374,7 @@ TQ3ViewStatus View::endRendering()
     const RenderResult finished = m_offscreen->endFrame();
     if (!finished)
         fail(kQ3ErrorRenderingLoopFailed, "the image could not be finished: " + finished.message);
-    const RenderResult written = writeImage();
+    const RenderResult written = m_offscreen->drewInPlace() ? RenderResult::success() : writeImage();
     if (!written)
         fail(kQ3ErrorRenderingLoopFailed, "the image could not be written: " + written.message);
     if (m_destination.window) {

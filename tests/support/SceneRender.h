@@ -63,9 +63,12 @@ inline SceneSetup sceneLookingAt(int width, int height, const TQ3ColorARGB& clea
     return setup;
 }
 
-/// Renders what `submit` submits (once per pass) under `setup`; expects the
-/// frame to start and end without error.
-inline RgbaImage renderScene(const SceneSetup& setup, const std::function<void(TQ3ViewObject)>& submit)
+/// Renders what `submit` submits (once per pass) under `setup` into an
+/// ARGB32 pixmap of `byteOrder`; expects the frame to start and end
+/// without error.
+inline std::vector<unsigned char> renderScenePixmap(const SceneSetup& setup,
+                                                   const std::function<void(TQ3ViewObject)>& submit,
+                                                   TQ3Endian byteOrder)
 {
     const std::size_t pixels = std::size_t(setup.width) * std::size_t(setup.height);
     std::vector<unsigned char> argb(pixels * 4, 0);
@@ -73,8 +76,8 @@ inline RgbaImage renderScene(const SceneSetup& setup, const std::function<void(T
     contextData.drawContextData.clearImageMethod = kQ3ClearMethodWithColor;
     contextData.drawContextData.clearImageColor = setup.clear;
     contextData.pixmap = TQ3Pixmap{argb.data(), (unsigned long)setup.width, (unsigned long)setup.height,
-                                   (unsigned long)setup.width * 4, 32, kQ3PixelTypeARGB32, kQ3EndianBig,
-                                   kQ3EndianBig};
+                                   (unsigned long)setup.width * 4, 32, kQ3PixelTypeARGB32, byteOrder,
+                                   byteOrder};
     TQ3DrawContextObject context = Q3PixmapDrawContext_New(&contextData);
     TQ3ViewAngleAspectCameraData cameraData{};
     cameraData.cameraData.placement = {setup.eye, setup.target, {0.0f, 1.0f, 0.0f}};
@@ -121,6 +124,24 @@ inline RgbaImage renderScene(const SceneSetup& setup, const std::function<void(T
     Q3Object_Dispose(renderer);
     Q3Object_Dispose(camera);
     Q3Object_Dispose(context);
+    return argb;
+}
+
+/// Renders what `submit` submits (once per pass) under `setup`, into a
+/// big-endian ARGB32 pixmap (the image returned) and again into a
+/// little-endian one, which the backend may draw in place of its own image
+/// (FrameOptions::bgraImage): the two must hold the same pixels, byte for
+/// byte.
+inline RgbaImage renderScene(const SceneSetup& setup, const std::function<void(TQ3ViewObject)>& submit)
+{
+    const std::vector<unsigned char> argb = renderScenePixmap(setup, submit, kQ3EndianBig);
+    const std::vector<unsigned char> bgra = renderScenePixmap(setup, submit, kQ3EndianLittle);
+    const std::size_t pixels = std::size_t(setup.width) * std::size_t(setup.height);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < pixels; ++i)
+        for (int k = 0; k < 4; ++k)
+            differing += argb[4 * i + std::size_t(k)] != bgra[4 * i + std::size_t(3 - k)];
+    EXPECT_EQ(differing, 0u) << "channels differing between the big-endian ARGB32 pixmap and the little-endian one";
     RgbaImage image(setup.width, setup.height);
     for (std::size_t i = 0; i < pixels; ++i) {
         image.pixels[4 * i] = argb[4 * i + 1];

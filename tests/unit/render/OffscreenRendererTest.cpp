@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright (c) 2026 The Q3 authors
 #include "render/OffscreenRenderer.h"
+#include "render/GlContext.h"
 
 #include <gtest/gtest.h>
 
@@ -379,6 +380,57 @@ TEST(RenderOffscreen, TwoThreadsMatchSequentialRendering)
     EXPECT_EQ(failures.load(), 0);
     EXPECT_EQ(mismatches[0].load(), 0);
     EXPECT_EQ(mismatches[1].load(), 0);
+}
+
+// FrameOptions::bgraImage: OSMesa draws the frame straight into the
+// caller's image (rows padded here, the padding left alone), B, G, R, A,
+// the very pixels an ordinary frame gives; EGL, or a pane that is not the
+// whole image, leave it untouched and draw as usual.
+TEST(RenderOffscreen, AFrameOfferedTheCallersImageDrawsTheSamePixelsThere)
+{
+    constexpr std::uint32_t kWidth = 96, kHeight = 72, kRowPixels = kWidth + 3;
+    for (const GlBackend backend : {GlBackend::kOsMesa, GlBackend::kEgl}) {
+        if (!glBackendAvailable(backend))
+            continue;
+        OffscreenRenderer reference(backend);
+        ASSERT_TRUE(reference.beginFrame(kWidth, kHeight, kClear, PixelRect{0, 0, int(kWidth), int(kHeight)}));
+        drawScene(reference, 7);
+        ASSERT_TRUE(reference.endFrame());
+        EXPECT_FALSE(reference.drewInPlace());
+        const std::vector<std::uint8_t> expected = imageOf(reference);
+
+        for (const bool wholePane : {true, false}) {
+            std::vector<std::uint8_t> bgra(std::size_t(kRowPixels) * 4 * kHeight, 0x5A);
+            OffscreenRenderer renderer(backend);
+            FrameOptions options;
+            options.bgraImage = bgra.data();
+            options.bgraRowBytes = std::size_t(kRowPixels) * 4;
+            const PixelRect pane = wholePane ? PixelRect{0, 0, int(kWidth), int(kHeight)}
+                                             : PixelRect{0, 0, int(kWidth), int(kHeight) - 1};
+            ASSERT_TRUE(renderer.beginFrame(kWidth, kHeight, kClear, pane, options));
+            drawScene(renderer, 7);
+            ASSERT_TRUE(renderer.endFrame());
+            const bool inPlace = backend == GlBackend::kOsMesa && wholePane;
+            EXPECT_EQ(renderer.drewInPlace(), inPlace) << glBackendName(backend) << " whole pane " << wholePane;
+            std::size_t wrong = 0, padding = 0, untouched = 0;
+            for (std::uint32_t y = 0; y < kHeight; ++y)
+                for (std::uint32_t x = 0; x < kRowPixels; ++x)
+                    for (int c = 0; c < 4; ++c) {
+                        const std::uint8_t got = bgra[(std::size_t(y) * kRowPixels + x) * 4 + std::size_t(c)];
+                        if (!inPlace || x >= kWidth) {
+                            (x >= kWidth ? padding : untouched) += got != 0x5A;
+                            continue;
+                        }
+                        const int rgba = c == 3 ? 3 : 2 - c; // B, G, R, A from R, G, B, A
+                        wrong += got != expected[(std::size_t(y) * kWidth + x) * 4 + std::size_t(rgba)];
+                    }
+            EXPECT_EQ(wrong, 0u) << glBackendName(backend);
+            EXPECT_EQ(padding, 0u) << glBackendName(backend);
+            EXPECT_EQ(untouched, 0u) << glBackendName(backend);
+            if (!inPlace && wholePane)
+                EXPECT_EQ(imageOf(renderer), expected) << glBackendName(backend);
+        }
+    }
 }
 
 TEST(RenderOffscreen, InterleavedFramesOnOneThreadStaySeparate)
