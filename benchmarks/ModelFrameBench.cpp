@@ -63,6 +63,7 @@
 #include <fstream>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -330,7 +331,12 @@ public:
     RawModel(const ModelScene& s, const TQ3Matrix4x4& clip) : m_image(kSize * kSize * 4), m_pixmap(kSize * kSize * 4)
     {
         const GlBackendChoice choice = chooseGlBackendFromEnvironment();
-        if (!choice.result || !createGlContext(choice.backend, kSize, kSize, m_image.data(), m_context))
+        // OSMesa draws straight into the pixmap, B, G, R, A (as Q3 does for
+        // a little-endian ARGB32 pixmap); EGL is read back and its R and B
+        // swapped.
+        m_inPlace = choice.backend == GlBackend::kOsMesa;
+        if (!choice.result ||
+            !createGlContext(choice.backend, kSize, kSize, target(), m_context, m_inPlace))
             throw std::runtime_error("creating the raw OpenGL context failed");
         if (!bind())
             throw std::runtime_error("making the raw OpenGL context current failed");
@@ -398,7 +404,7 @@ public:
 
     bool bind()
     {
-        if (!m_context->makeCurrent(m_image.data()))
+        if (!m_context->makeCurrent(target()))
             return false;
         m_scope = std::make_unique<GlApiScope>(&m_context->api());
         return true;
@@ -426,15 +432,18 @@ public:
             drawMesh(s.data()[k], m_buffers[k]);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
-        m_context->finish(m_image.data());
-        // Into the application's ARGB32 pixmap (little-endian: B, G, R, A).
+        m_context->finish(target());
+        if (m_inPlace)
+            return;
+        // Into the application's ARGB32 pixmap (little-endian: B, G, R, A):
+        // R and B swapped in whole words, which the compiler vectorizes.
         const std::uint8_t* from = m_image.data();
         std::uint8_t* to = m_pixmap.data();
         for (std::size_t i = 0; i < m_pixmap.size(); i += 4) {
-            to[i] = from[i + 2];
-            to[i + 1] = from[i + 1];
-            to[i + 2] = from[i];
-            to[i + 3] = from[i + 3];
+            std::uint32_t v;
+            std::memcpy(&v, from + i, 4);
+            v = (v & 0xFF00FF00u) | ((v >> 16) & 0xFFu) | ((v & 0xFFu) << 16);
+            std::memcpy(to + i, &v, 4);
         }
     }
 
@@ -497,8 +506,10 @@ private:
         return program;
     }
 
+    std::uint8_t* target() { return m_inPlace ? m_pixmap.data() : m_image.data(); }
     std::vector<std::uint8_t> m_image;
     std::vector<std::uint8_t> m_pixmap;
+    bool m_inPlace = false;
     std::unique_ptr<GlContext> m_context;
     std::unique_ptr<GlApiScope> m_scope;
     GLuint m_program = 0;
