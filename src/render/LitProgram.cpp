@@ -61,7 +61,16 @@ std::string switches(int variant)
 }
 
 constexpr const char* kShade = R"(
+// A variant that knows its number of lights sizes the light arrays to it:
+// the stage's uniforms are copied into a new constant buffer at every draw
+// that changes one, and 32 of each made that about 4 KB a draw.
+#if defined(LIGHT_COUNT) && LIGHT_COUNT > 0
+#define MAX_LIGHTS LIGHT_COUNT
+#elif defined(LIGHT_COUNT)
+#define MAX_LIGHTS 1
+#else
 #define MAX_LIGHTS 32
+#endif
 uniform int lightCount;
 uniform int lightKind[MAX_LIGHTS];
 uniform vec3 lightColor[MAX_LIGHTS];
