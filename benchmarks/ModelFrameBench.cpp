@@ -15,16 +15,19 @@
 // directional lights, 512 x 512 ARGB32 pixmap, interactive renderer.
 //
 //   ModelFrame    q3: Q3View_StartRendering, the Phong shader and the 20
-//                 meshes submitted, Q3View_EndRendering writing the pixmap;
+//                 meshes submitted, Q3View_EndRendering leaving the image
+//                 in the view's little-endian ARGB32 pixmap;
 //                 raw: the same triangles from static vertex and index
 //                 buffers uploaded once (one per mesh), one program lighting
 //                 at the vertices as Q3 does (diffuse times texel plus
 //                 specular), one draw per material, opaque meshes first then
 //                 the translucent ones back to front, blended without depth
-//                 writes; glFinish and the same read back into an ARGB32
-//                 pixmap of its own (OSMesa: the image the context draws
-//                 into, swizzled; EGL: glReadPixels). The peer uses Q3's
-//                 context kind (Q3_RENDER_BACKEND) and loader (render/GlApi.h).
+//                 writes; glFinish, the image delivered into a little-endian
+//                 ARGB32 pixmap of its own as Q3 delivers it (OSMesa: drawn
+//                 there in place, by a context of B, G, R, A layout; EGL:
+//                 glReadPixels, then R and B swapped in whole words). The
+//                 peer uses Q3's context kind (Q3_RENDER_BACKEND) and
+//                 loader (render/GlApi.h).
 //   ModelFrameQ3Only, ModelFrameRawOnly  each side's frames alone, for a
 //                 profiler (perf record --benchmark_filter=...Only), with
 //                 the CPU time of the calling thread and of llvmpipe's
