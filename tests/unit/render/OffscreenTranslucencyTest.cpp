@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace q3 {
@@ -178,29 +179,19 @@ TEST(OffscreenTranslucency, OneDrawSplitsIntoOpaqueAndTranslucentTriangles)
                   blend(kFront.b, kBehind.b, 0.5), "translucent half");
 }
 
-// Full-image translucent quads submitted in a scrambled order: 60 at random
-// depths behind 0, and in front of them the ones that decide the colour, at
-// 0 and below, several at one depth. Each pixel must be every quad blended over the one
-// behind, farthest first, quads at one depth in submission order; the
-// expected colour is that rule evaluated here (rounded to bytes after each
-// blend, as the image stores it).
-TEST(OffscreenTranslucency, TranslucentTrianglesBlendFarthestFirstAndTiesInSubmissionOrder)
+// A full-image quad at one depth, in one colour.
+struct Layer {
+    float depth;
+    RgbColor color;
+};
+
+// Draws `layers` in their order as translucent quads (opacity 0.5) over an
+// opaque back, then expects each pixel to be every quad blended over the
+// one behind, farthest first, quads at one depth in submission order: that
+// rule evaluated here (rounded to bytes after each blend, as the image
+// stores it).
+void expectFarthestFirst(const std::vector<Layer>& layers, const std::string& what)
 {
-    struct Layer {
-        float depth;
-        RgbColor color;
-    };
-    std::vector<Layer> layers;
-    const float fixedDepths[] = {0.0f, -0.25f, 0.0f, -0.75f, 0.0f, -0.25f, 0.0f};
-    std::uint32_t seed = 12345u;
-    const auto next = [&seed] {
-        seed = seed * 1664525u + 1013904223u;
-        return float(seed >> 8) / float(1u << 24);
-    };
-    for (int i = 0; i < 60; ++i)
-        layers.push_back({0.05f + 0.9f * next(), RgbColor{next(), next(), next()}});
-    for (std::size_t i = 0; i < std::size(fixedDepths); ++i)
-        layers.insert(layers.begin() + std::ptrdiff_t(9 * i), Layer{fixedDepths[i], RgbColor{next(), next(), next()}});
     OffscreenRenderer renderer;
     ASSERT_TRUE(beginDepthTestedFrame(renderer));
     const std::vector<float> back = quad(0, kSize, 0.99f);
@@ -227,20 +218,34 @@ TEST(OffscreenTranslucency, TranslucentTrianglesBlendFarthestFirstAndTiesInSubmi
             for (int c = 0; c < 3; ++c)
                 wrong += std::abs(p[c] - expected[c]) > 2;
         }
-    EXPECT_EQ(wrong, 0) << "expected " << expected[0] << " " << expected[1] << " " << expected[2];
+    EXPECT_EQ(wrong, 0) << what << ": expected " << expected[0] << " " << expected[1] << " " << expected[2];
+}
+
+// Quads submitted in a scrambled order: 60 at random depths behind 0, and
+// in front of them the ones that decide the colour, at 0 and below,
+// several at one depth.
+TEST(OffscreenTranslucency, TranslucentTrianglesBlendFarthestFirstAndTiesInSubmissionOrder)
+{
+    std::vector<Layer> layers;
+    const float fixedDepths[] = {0.0f, -0.25f, 0.0f, -0.75f, 0.0f, -0.25f, 0.0f};
+    std::uint32_t seed = 12345u;
+    const auto next = [&seed] {
+        seed = seed * 1664525u + 1013904223u;
+        return float(seed >> 8) / float(1u << 24);
+    };
+    for (int i = 0; i < 60; ++i)
+        layers.push_back({0.05f + 0.9f * next(), RgbColor{next(), next(), next()}});
+    for (std::size_t i = 0; i < std::size(fixedDepths); ++i)
+        layers.insert(layers.begin() + std::ptrdiff_t(9 * i), Layer{fixedDepths[i], RgbColor{next(), next(), next()}});
+    expectFarthestFirst(layers, "random depths");
 }
 
 // Depths a float step or a few apart, whose sort keys share their upper
 // 32 bits (the sort orders such runs on its own: by insertion up to 16
 // keys, by a merge sort above): a run of 40 quads and one of 6, each
-// scrambled, with ties, in a frame of its own over the opaque back,
-// expected as above.
+// scrambled, with ties, in a frame of its own.
 TEST(OffscreenTranslucency, DepthsAFloatStepApartBlendFarthestFirst)
 {
-    struct Layer {
-        float depth;
-        RgbColor color;
-    };
     std::uint32_t seed = 777u;
     const auto next = [&seed] {
         seed = seed * 1664525u + 1013904223u;
@@ -258,37 +263,7 @@ TEST(OffscreenTranslucency, DepthsAFloatStepApartBlendFarthestFirst)
         }
         for (std::size_t k = layers.size(); k > 1; --k)
             std::swap(layers[k - 1], layers[next() % k]);
-
-        OffscreenRenderer renderer;
-        ASSERT_TRUE(beginDepthTestedFrame(renderer));
-        const std::vector<float> back = quad(0, kSize, 0.99f);
-        ASSERT_TRUE(renderer.drawTriangles(back.data(), 6, kBehind));
-        ASSERT_TRUE(renderer.setOpacity(OpacitySetup{nullptr, 0, RgbColor{0.5f, 0.5f, 0.5f}}));
-        for (const Layer& layer : layers) {
-            const std::vector<float> triangles = quad(0, kSize, layer.depth);
-            ASSERT_TRUE(renderer.drawTriangles(triangles.data(), 6, layer.color));
-        }
-        ASSERT_TRUE(renderer.endFrame());
-
-        std::vector<Layer> order = layers;
-        std::stable_sort(order.begin(), order.end(),
-                         [](const Layer& a, const Layer& b) { return a.depth > b.depth; });
-        int expected[3] = {byteOf(kBehind.r), byteOf(kBehind.g), byteOf(kBehind.b)};
-        for (const Layer& layer : order) {
-            const float channels[3] = {layer.color.r, layer.color.g, layer.color.b};
-            for (int c = 0; c < 3; ++c)
-                expected[c] = int(std::lround(0.5 * channels[c] * 255.0 + 0.5 * expected[c]));
-        }
-        int wrong = 0;
-        for (int y = 0; y < kSize; ++y)
-            for (int x = 0; x < kSize; ++x) {
-                const std::uint8_t* p =
-                    renderer.pixels() + renderer.rowBytes() * std::size_t(y) + std::size_t(x) * 4;
-                for (int c = 0; c < 3; ++c)
-                    wrong += std::abs(p[c] - expected[c]) > 2;
-            }
-        EXPECT_EQ(wrong, 0) << "run of " << length << ": expected " << expected[0] << " " << expected[1] << " "
-                            << expected[2];
+        expectFarthestFirst(layers, "a run of " + std::to_string(length));
     }
 }
 
