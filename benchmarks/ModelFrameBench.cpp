@@ -25,9 +25,8 @@
 //                 writes; glFinish, the image delivered into a little-endian
 //                 ARGB32 pixmap of its own as Q3 delivers it (OSMesa: drawn
 //                 there in place, by a context of B, G, R, A layout; EGL:
-//                 glReadPixels, then R and B swapped in whole words). The
-//                 peer uses Q3's context kind (Q3_RENDER_BACKEND) and
-//                 loader (render/GlApi.h).
+//                 glReadPixels in that layout). The peer uses Q3's context
+//                 kind (Q3_RENDER_BACKEND) and loader (render/GlApi.h).
 //   ModelFrameQ3Only, ModelFrameRawOnly  each side's frames alone, for a
 //                 profiler (perf record --benchmark_filter=...Only), with
 //                 the CPU time of the calling thread and of llvmpipe's
@@ -331,15 +330,13 @@ void main()
 /// program, one draw per mesh (each mesh is one material).
 class RawModel {
 public:
-    RawModel(const ModelScene& s, const TQ3Matrix4x4& clip) : m_image(kSize * kSize * 4), m_pixmap(kSize * kSize * 4)
+    RawModel(const ModelScene& s, const TQ3Matrix4x4& clip) : m_pixmap(kSize * kSize * 4)
     {
         const GlBackendChoice choice = chooseGlBackendFromEnvironment();
-        // OSMesa draws straight into the pixmap, B, G, R, A (as Q3 does for
-        // a little-endian ARGB32 pixmap); EGL is read back and its R and B
-        // swapped.
-        m_inPlace = choice.backend == GlBackend::kOsMesa;
-        if (!choice.result ||
-            !createGlContext(choice.backend, kSize, kSize, target(), m_context, m_inPlace))
+        // Delivered straight into the pixmap, B, G, R, A, as Q3 delivers a
+        // little-endian ARGB32 pixmap: OSMesa draws there, EGL reads back
+        // there.
+        if (!choice.result || !createGlContext(choice.backend, kSize, kSize, m_pixmap.data(), m_context, true))
             throw std::runtime_error("creating the raw OpenGL context failed");
         if (!bind())
             throw std::runtime_error("making the raw OpenGL context current failed");
@@ -407,7 +404,7 @@ public:
 
     bool bind()
     {
-        if (!m_context->makeCurrent(target()))
+        if (!m_context->makeCurrent(m_pixmap.data()))
             return false;
         m_scope = std::make_unique<GlApiScope>(&m_context->api());
         return true;
@@ -435,19 +432,7 @@ public:
             drawMesh(s.data()[k], m_buffers[k]);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
-        m_context->finish(target());
-        if (m_inPlace)
-            return;
-        // Into the application's ARGB32 pixmap (little-endian: B, G, R, A):
-        // R and B swapped in whole words, which the compiler vectorizes.
-        const std::uint8_t* from = m_image.data();
-        std::uint8_t* to = m_pixmap.data();
-        for (std::size_t i = 0; i < m_pixmap.size(); i += 4) {
-            std::uint32_t v;
-            std::memcpy(&v, from + i, 4);
-            v = (v & 0xFF00FF00u) | ((v >> 16) & 0xFFu) | ((v & 0xFFu) << 16);
-            std::memcpy(to + i, &v, 4);
-        }
+        m_context->finish(m_pixmap.data());
     }
 
     /// B, G, R, A per pixel, top row first.
@@ -509,10 +494,7 @@ private:
         return program;
     }
 
-    std::uint8_t* target() { return m_inPlace ? m_pixmap.data() : m_image.data(); }
-    std::vector<std::uint8_t> m_image;
     std::vector<std::uint8_t> m_pixmap;
-    bool m_inPlace = false;
     std::unique_ptr<GlContext> m_context;
     std::unique_ptr<GlApiScope> m_scope;
     GLuint m_program = 0;

@@ -211,8 +211,8 @@ const EglDevice& eglDevice(const EglLibrary& l, bool software)
 class EglContext final : public GlContext {
 public:
     EglContext(EGLDisplay display, EGLContext context, EGLSurface surface, std::uint32_t width,
-               std::uint32_t height)
-        : m_display(display), m_context(context), m_surface(surface), m_width(width), m_height(height)
+               std::uint32_t height, bool bgra)
+        : m_display(display), m_context(context), m_surface(surface), m_width(width), m_height(height), m_bgra(bgra)
     {
     }
 
@@ -255,13 +255,24 @@ public:
     }
 
     // glReadPixels waits for the drawing; OpenGL's rows start at the bottom.
+    bool setRowPixels(std::uint32_t rowPixels) override
+    {
+        m_rowPixels = rowPixels;
+        return true;
+    }
+
+    // Read back bottom row first, as OpenGL gives it, in the context's
+    // layout, then the rows swapped top to bottom.
     void finish(std::uint8_t* image) override
     {
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
-        glReadPixels(0, 0, GLsizei(m_width), GLsizei(m_height), GL_RGBA, GL_UNSIGNED_BYTE, image);
-        const std::size_t rowBytes = std::size_t(m_width) * 4;
+        glPixelStorei(GL_PACK_ROW_LENGTH, GLint(m_rowPixels));
+        glReadPixels(0, 0, GLsizei(m_width), GLsizei(m_height), m_bgra ? GL_BGRA : GL_RGBA, GL_UNSIGNED_BYTE, image);
+        glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+        const std::size_t rowBytes = std::size_t(m_rowPixels != 0 ? m_rowPixels : m_width) * 4;
+        const std::size_t usedBytes = std::size_t(m_width) * 4;
         for (std::uint32_t top = 0, bottom = m_height - 1; top < bottom; ++top, --bottom)
-            std::swap_ranges(image + top * rowBytes, image + (top + 1) * rowBytes, image + bottom * rowBytes);
+            std::swap_ranges(image + top * rowBytes, image + top * rowBytes + usedBytes, image + bottom * rowBytes);
     }
 
     const GlApi& api() const override { return egl().gl; }
@@ -271,6 +282,8 @@ private:
     EGLContext m_context;
     EGLSurface m_surface;
     std::uint32_t m_width, m_height;
+    bool m_bgra;                  // finish reads B, G, R, A
+    std::uint32_t m_rowPixels = 0; // the image's rows apart (0: the width)
     EGLenum m_previousApi = EGL_OPENGL_ES_API;
     EGLContext m_previousContext = EGL_NO_CONTEXT;
     EGLDisplay m_previousDisplay = EGL_NO_DISPLAY;
@@ -288,7 +301,7 @@ bool eglAvailable()
     return egl().loaded;
 }
 
-RenderResult createEglContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image,
+RenderResult createEglContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image, bool bgra,
                               std::unique_ptr<GlContext>& out)
 {
     const EglLibrary& l = egl();
@@ -330,7 +343,7 @@ RenderResult createEglContext(std::uint32_t width, std::uint32_t height, std::ui
                                              std::to_string(height) + " pixels" + why);
         }
     }
-    auto context = std::make_unique<EglContext>(display, raw, surface, width, height);
+    auto context = std::make_unique<EglContext>(display, raw, surface, width, height, bgra);
     return finishNewContext(
         std::move(context), image, software, "EGL", [] {}, [&] { return "eglMakeCurrent failed" + eglErrorText(l); },
         out);

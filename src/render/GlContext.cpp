@@ -134,7 +134,7 @@ bool eglAvailable()
     return false;
 }
 
-RenderResult createEglContext(std::uint32_t, std::uint32_t, std::uint8_t*, std::unique_ptr<GlContext>&)
+RenderResult createEglContext(std::uint32_t, std::uint32_t, std::uint8_t*, bool, std::unique_ptr<GlContext>&)
 {
     return RenderResult::failure(RenderStatus::kContextFailure, "this Q3 was built without EGL (Q3_WITH_EGL)");
 }
@@ -207,9 +207,7 @@ RenderResult createGlContext(GlBackend backend, std::uint32_t width, std::uint32
                              std::unique_ptr<GlContext>& context, bool bgra)
 {
     context.reset();
-    if (backend == GlBackend::kEgl && bgra)
-        return RenderResult::failure(RenderStatus::kContextFailure, "EGL contexts draw RGBA images only");
-    return backend == GlBackend::kEgl ? detail::createEglContext(width, height, image, context)
+    return backend == GlBackend::kEgl ? detail::createEglContext(width, height, image, bgra, context)
                                       : detail::createOsMesaContext(width, height, image, bgra, context);
 }
 

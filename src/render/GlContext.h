@@ -59,13 +59,9 @@ public:
     /// same API. False when the backend refuses; nothing is current then.
     virtual bool makeCurrent(std::uint8_t* image) = 0;
     /// With the context current: the rows of the image makeCurrent bound
-    /// are rowPixels pixels apart (0: its width, as after creation). False
-    /// when the backend draws only into images of packed rows (EGL, which
-    /// ignores the image).
-    virtual bool setRowPixels(std::uint32_t rowPixels)
-    {
-        return rowPixels == 0;
-    }
+    /// (OSMesa) or finish fills (EGL) are rowPixels pixels apart (0: its
+    /// width, as after creation).
+    virtual bool setRowPixels(std::uint32_t rowPixels) = 0;
     /// Makes the remembered previous context current again, or none.
     virtual void restorePrevious() = 0;
     /// With the context current: finishes the drawing and leaves the image
@@ -76,7 +72,7 @@ public:
 
 /// Creates a context of `backend` for width x height pixels drawing into
 /// `image` (as makeCurrent), R, G, B, A bytes per pixel or with `bgra` B,
-/// G, R, A (OSMesa only), and checks that
+/// G, R, A, and checks that
 /// it renders with llvmpipe (EGL on a GPU device: with that GPU); the
 /// context is not current afterwards. Errors: kContextFailure (the library
 /// is missing or refuses, a GL function is missing), kWrongRenderer.
@@ -104,7 +100,7 @@ bool osMesaAvailable();
 bool eglAvailable();
 RenderResult createOsMesaContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image, bool bgra,
                                  std::unique_ptr<GlContext>& context);
-RenderResult createEglContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image,
+RenderResult createEglContext(std::uint32_t width, std::uint32_t height, std::uint8_t* image, bool bgra,
                               std::unique_ptr<GlContext>& context);
 // The last step of loading a backend's library: every GL entry point of
 // `gl` through `proc` (with `library`); false, with `error` naming the one

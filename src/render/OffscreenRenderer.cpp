@@ -932,11 +932,10 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
         pane.y > kMaxPaneOffset)
         return invalid("pane origin is outside +-" + std::to_string(kMaxPaneOffset));
 
-    // The caller's image when it offers one this backend can draw into
-    // (OSMesa binds any memory of the context's layout; EGL reads back
-    // RGBA into m_image): the copy into the caller's pixmap is saved.
-    const bool direct = options.bgraImage != nullptr && m_backend.backend == GlBackend::kOsMesa &&
-                        pane.x == 0 && pane.y == 0 && std::uint32_t(pane.width) == width &&
+    // The caller's image when it offers one (OSMesa draws into it with a
+    // context of that layout; EGL reads back into it in that layout): the
+    // copy into the caller's pixmap is saved.
+    const bool direct = options.bgraImage != nullptr && pane.x == 0 && pane.y == 0 && std::uint32_t(pane.width) == width &&
                         std::uint32_t(pane.height) == height && options.bgraRowBytes % 4 == 0 &&
                         options.bgraRowBytes / 4 >= width && options.bgraRowBytes / 4 <= kMaxImageSize;
     m_drewInPlace = false;

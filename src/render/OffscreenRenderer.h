@@ -216,8 +216,10 @@ public:
     std::size_t rowBytes() const override;
     /// RGBA8 pixels, R first in memory, top row first; null before the first frame.
     const std::uint8_t* pixels() const override;
-    /// Whether the last frame went into FrameOptions::bgraImage: OSMesa
-    /// draws there when offered (a context of B, G, R, A layout), EGL never.
+    /// Whether the last frame went into FrameOptions::bgraImage: it does
+    /// whenever one is offered for a pane that is the whole image (OSMesa
+    /// draws there with a context of B, G, R, A layout; EGL reads back
+    /// there in that layout).
     bool drewInPlace() const override;
 
     /// How many OpenGL contexts this process's renderers have made so far.
