@@ -41,8 +41,9 @@ namespace q3
 /// interleaved on one thread. One renderer must not be used by two threads at
 /// once.
 ///
-/// Invariant: outside a frame the batch is empty; pixels() has
-/// width() * height() * 4 bytes, valid after a successful endFrame().
+/// Invariant: outside a frame the batch is empty and no OpenGL context is
+/// held; pixels() has width() * height() * 4 bytes, valid after a
+/// successful endFrame() that did not draw in place (drewInPlace).
 class OffscreenRenderer final : public RenderTarget
 {
 public:
