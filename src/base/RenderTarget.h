@@ -53,10 +53,11 @@ struct FrameOptions {
     /// Where the frame may be drawn straight into instead of the target's
     /// own image: the caller's image of the frame's width x height, rows
     /// `bgraRowBytes` apart (top row first), each pixel B, G, R, A bytes
-    /// (QuickDraw 3D's ARGB32 pixmap in little-endian order), for a pane
-    /// that is the whole image. A target that does says so (drewInPlace:
-    /// the image then holds exactly what pixels() would have, in that
-    /// order); one that does not ignores it. Null: not offered.
+    /// (QuickDraw 3D's ARGB32 pixmap in little-endian order). A target uses
+    /// it only for a frame whose pane is the whole image and whose rows are
+    /// whole pixels apart, and then says so (drewInPlace: the image holds
+    /// exactly what pixels() would have, in that order); otherwise, or if
+    /// it cannot, it ignores it. Null: not offered.
     std::uint8_t* bgraImage = nullptr;
     std::size_t bgraRowBytes = 0;
 };

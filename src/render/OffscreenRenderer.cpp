@@ -464,8 +464,6 @@ private:
         const double w = 0.0 + a[3] + b[3] + c[3];
         return w > 0.0 ? z / w : std::numeric_limits<double>::max();
     }
-    // The triangle with its depth (depthOf) from its stored corners.
-    TranslucentTriangle withDepth(TranslucentTriangle triangle) const;
     // After the batch loop's program choice for a run: the unlit program
     // for fogged unlit runs, and the fog uniforms of the program in use
     // (`variant`, the lit variant the loop chose; -1 unlit).
@@ -762,15 +760,12 @@ OffscreenRenderer::Impl::~Impl()
 
 void OffscreenRenderer::Impl::deleteOwnTextureNames()
 {
-    m_staleTextureNames.insert(m_staleTextureNames.end(), m_textureNames.begin(), m_textureNames.end());
-    m_textureNames.clear();
-    std::vector<GLuint> names;
-    for (GLuint name : m_staleTextureNames)
-        if (name != 0)
-            names.push_back(name);
-    if (!names.empty())
-        glDeleteTextures(GLsizei(names.size()), names.data());
-    m_staleTextureNames.clear();
+    // glDeleteTextures skips the zeros (textures never uploaded).
+    for (std::vector<GLuint>* names : {&m_textureNames, &m_staleTextureNames}) {
+        if (!names->empty())
+            glDeleteTextures(GLsizei(names->size()), names->data());
+        names->clear();
+    }
 }
 
 void OffscreenRenderer::Impl::lendContext()
@@ -1560,7 +1555,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
         glDisable(GL_MULTISAMPLE);
         if (finish && m_multisampling)
             resolveMultisample();
-        // The finished image into m_image.
+        // The finished image into m_frameImage.
         if (finish)
             m_gl->context->finish(m_frameImage);
         const GLenum error = takeGlError();
@@ -2219,13 +2214,6 @@ std::uint32_t OffscreenRenderer::Impl::storeTranslucentVertex(const DrawRequest&
     return std::uint32_t(m_translucentVertices.size() - 1);
 }
 
-OffscreenRenderer::Impl::TranslucentTriangle OffscreenRenderer::Impl::withDepth(TranslucentTriangle triangle) const
-{
-    triangle.depth = depthOf(m_translucentClip[triangle.v[0]], m_translucentClip[triangle.v[1]],
-                             m_translucentClip[triangle.v[2]]);
-    return triangle;
-}
-
 RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textured)
 {
     const float* rgb = m_opacity.rgb;
@@ -2255,8 +2243,8 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         for (std::size_t i = 0; i < r.vertexCount; ++i)
             storeTranslucentVertex(r, textured, i, uniformOpacity);
         // Written in place, through pointers the loop's stores cannot
-        // change (push_back and withDepth per triangle went through the
-        // stack: a fifth of the batch's time on the calling thread).
+        // change (a triangle built on the stack and pushed back went
+        // through memory: a fifth of the batch's time on the calling thread).
         const std::size_t firstTriangle = m_translucentTriangles.size();
         m_translucentTriangles.resize(firstTriangle + count / 3);
         TranslucentTriangle* out = m_translucentTriangles.data() + firstTriangle;
@@ -2302,7 +2290,9 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
                 stored = storeTranslucentVertex(r, textured, v[k], a[k]);
             triangle.v[k] = stored;
         }
-        m_translucentTriangles.push_back(withDepth(triangle));
+        triangle.depth = depthOf(m_translucentClip[triangle.v[0]], m_translucentClip[triangle.v[1]],
+                                 m_translucentClip[triangle.v[2]]);
+        m_translucentTriangles.push_back(triangle);
     }
     for (std::uint32_t state : states)
         if (state != kNoState) {

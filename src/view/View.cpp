@@ -335,15 +335,14 @@ void View::startRendering()
     style.textureFilter = m_renderer->textureFilter();
     FrameOptions options;
     options.depthTest = fills;
-    // A little-endian ARGB32 pixmap the frame replaces whole (cleared, no
-    // mask, the pane the whole image) is offered to the backend to draw in
-    // place of its own image, saving the copy into it (writeImage).
+    // A little-endian ARGB32 pixmap the frame replaces (cleared, no mask)
+    // is offered to the backend to draw in place of its own image, saving
+    // the copy into it (writeImage); the backend takes it only when the
+    // pane is the whole image.
     const PixmapLayout& layout = destination.layout;
     if (!destination.window && !destination.appGl && destination.image != nullptr && destination.cleared &&
         destination.mask.image == nullptr && layout.pixelType == PixelType::kARGB32 &&
-        layout.byteOrder == ByteOrder::kLittle && validatePixmapLayout(layout) &&
-        destination.pane.x == 0 && destination.pane.y == 0 && destination.pane.width == int(layout.width) &&
-        destination.pane.height == int(layout.height)) {
+        layout.byteOrder == ByteOrder::kLittle && validatePixmapLayout(layout)) {
         options.bgraImage = static_cast<std::uint8_t*>(destination.image);
         options.bgraRowBytes = layout.rowBytes;
     }
