@@ -289,9 +289,11 @@ void Session::portable()
         switch (m_in.u8() % 6) {
         case 0: STATUS(Q3DrawContext_SetMask(context, &mask)); break;
         case 1: {
+            // The draw context hands back the caller's own bits (its
+            // SetMask stores the bitmap as given, as QuickDraw 3D's does):
+            // not the caller's to free with Q3Bitmap_Empty.
             TQ3Bitmap got{};
-            if (STATUS(Q3DrawContext_GetMask(context, &got)) == kQ3Success)
-                STATUS(Q3Bitmap_Empty(&got));
+            STATUS(Q3DrawContext_GetMask(context, &got));
             break;
         }
         case 2: STATUS(Q3DrawContext_SetMaskState(context, (m_in.u8() & 1) ? kQ3True : kQ3False)); break;
