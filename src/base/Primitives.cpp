@@ -204,25 +204,48 @@ void Mesh::addEdge(std::uint32_t a, std::uint32_t b)
 
 void Mesh::edgesFromTriangles()
 {
-    // Each side as (smaller, larger) index, sorted, duplicates dropped; the
-    // result keeps the orientation of the first triangle that had it.
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> sides;
-    sides.reserve(m_triangles.size());
-    for (std::size_t t = 0; t < m_triangles.size(); t += 3)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = m_triangles[t + k];
-            const std::uint32_t b = m_triangles[t + (k + 1) % 3];
-            const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-            sides.emplace_back(key, std::uint32_t(t + k));
-        }
-    std::sort(sides.begin(), sides.end());
+    // Each side is filed under its smaller vertex by a counting sort, so the
+    // work is linear in the triangles (a surface at the triangle limit has
+    // three million sides). A vertex's few sides are then ordered by their
+    // larger vertex and by corner, and duplicates dropped: each side comes
+    // out once, in (smaller, larger) order, running the way the first
+    // triangle that had it runs.
+    const std::size_t corners = m_triangles.size();
     m_edges.clear();
-    for (std::size_t i = 0; i < sides.size(); ++i) {
-        if (i > 0 && sides[i].first == sides[i - 1].first)
-            continue;
-        const std::size_t corner = sides[i].second;
+    if (corners == 0)
+        return;
+    const std::uint32_t highest = *std::max_element(m_triangles.begin(), m_triangles.end());
+    std::vector<std::uint32_t> start(std::size_t(highest) + 2, 0);
+    auto sideAt = [&](std::size_t corner) {
         const std::size_t t = corner - corner % 3;
-        addEdge(m_triangles[corner], m_triangles[t + (corner - t + 1) % 3]);
+        return std::make_pair(m_triangles[corner], m_triangles[t + (corner - t + 1) % 3]);
+    };
+    for (std::size_t corner = 0; corner < corners; ++corner) {
+        const auto [a, b] = sideAt(corner);
+        ++start[std::size_t(std::min(a, b)) + 1];
+    }
+    for (std::size_t v = 1; v < start.size(); ++v)
+        start[v] += start[v - 1];
+    // (larger vertex << 32 | corner), grouped by smaller vertex.
+    std::vector<std::uint64_t> filed(corners);
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::size_t corner = 0; corner < corners; ++corner) {
+        const auto [a, b] = sideAt(corner);
+        filed[next[std::min(a, b)]++] = (std::uint64_t(std::max(a, b)) << 32) | std::uint32_t(corner);
+    }
+    for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+        const auto first = filed.begin() + start[v], last = filed.begin() + start[v + 1];
+        if (last - first > 16)
+            std::sort(first, last); // a fan's hub: keep the work n log n
+        else
+            for (auto i = first; i != last; ++i)
+                for (auto j = i; j != first && *(j - 1) > *j; --j)
+                    std::iter_swap(j - 1, j);
+        for (auto i = first; i != last; ++i)
+            if (i == first || (*i >> 32) != (*(i - 1) >> 32)) {
+                const auto [a, b] = sideAt(std::size_t(*i & 0xffffffffu));
+                addEdge(a, b);
+            }
     }
 }
 

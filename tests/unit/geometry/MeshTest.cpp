@@ -126,6 +126,28 @@ expectedSides(const std::vector<std::uint32_t>& triangles)
     return sides;
 }
 
+// The mesh's edges are its triangles' sides, each once, running the way
+// its first triangle runs it, in order of (smaller, larger) vertex.
+void expectEdgesOfTriangles(const Mesh& mesh, const std::vector<std::uint32_t>& triangles)
+{
+    const auto expected = expectedSides(triangles);
+    const MeshView view = mesh.view();
+    ASSERT_EQ(view.edgeCount, expected.size());
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    std::pair<std::uint32_t, std::uint32_t> previous{0, 0};
+    for (std::size_t e = 0; e < view.edgeCount; ++e) {
+        const std::uint32_t a = view.edges[2 * e], b = view.edges[2 * e + 1];
+        const auto key = std::minmax(a, b);
+        EXPECT_TRUE(seen.insert(key).second) << "side " << a << "-" << b << " twice";
+        const auto found = expected.find(key);
+        ASSERT_NE(found, expected.end()) << "side " << a << "-" << b << " is no triangle's";
+        EXPECT_EQ(found->second, std::make_pair(a, b)) << "side " << a << "-" << b << " runs the wrong way";
+        if (e > 0)
+            EXPECT_LT(previous, std::make_pair(key.first, key.second)) << "side " << a << "-" << b << " out of order";
+        previous = key;
+    }
+}
+
 TEST(Mesh, EdgesFromTrianglesGivesEachUndirectedSideOnceInItsFirstTrianglesDirection)
 {
     // A 4 x 3 grid of quads, each split into two triangles with alternating
@@ -158,21 +180,37 @@ TEST(Mesh, EdgesFromTrianglesGivesEachUndirectedSideOnceInItsFirstTrianglesDirec
     mesh.addEdge(0, 19); // replaced by edgesFromTriangles
     mesh.edgesFromTriangles();
 
-    const auto expected = expectedSides(scrambled);
     // Sides of a 4 x 3 grid of quads: horizontal 4 * 4, vertical 5 * 3, diagonals 12.
-    ASSERT_EQ(expected.size(), 16u + 15u + 12u);
-    const MeshView view = mesh.view();
-    ASSERT_EQ(view.edgeCount, expected.size());
-    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
-    for (std::size_t e = 0; e < view.edgeCount; ++e) {
-        const std::uint32_t a = view.edges[2 * e], b = view.edges[2 * e + 1];
-        const auto key = std::minmax(a, b);
-        EXPECT_TRUE(seen.insert(key).second) << "side " << a << "-" << b << " twice";
-        const auto found = expected.find(key);
-        ASSERT_NE(found, expected.end()) << "side " << a << "-" << b << " is no triangle's";
-        EXPECT_EQ(found->second, std::make_pair(a, b)) << "side " << a << "-" << b << " runs the wrong way";
+    ASSERT_EQ(expectedSides(scrambled).size(), 16u + 15u + 12u);
+    expectEdgesOfTriangles(mesh, scrambled);
+}
+
+TEST(Mesh, EdgesFromTrianglesOfAFanWithManySidesAtItsHub)
+{
+    // 40 triangles around vertex 0 (80 sides meet there, more than a small
+    // vertex's share), listed out of order, some wound the other way and
+    // some twice, and one degenerate triangle.
+    Mesh mesh;
+    const std::uint32_t rim = 40;
+    mesh.addVertex({0, 0, 0}, VertexAttributes{});
+    for (std::uint32_t i = 0; i < rim; ++i)
+        mesh.addVertex({std::cos(0.1f * float(i)), std::sin(0.1f * float(i)), 0}, VertexAttributes{});
+    std::vector<std::uint32_t> triangles;
+    for (std::uint32_t k = 0; k < rim; ++k) {
+        const std::uint32_t i = 1 + (k * 17) % rim, j = 1 + (i % rim);
+        if (k % 3 == 0)
+            triangles.insert(triangles.end(), {j, 0, i});
+        else
+            triangles.insert(triangles.end(), {0, i, j});
+        if (k % 5 == 0)
+            triangles.insert(triangles.end(), {i, 0, j});
     }
-    EXPECT_EQ(seen.size(), expected.size());
+    triangles.insert(triangles.end(), {5, 5, 0});
+    for (std::size_t t = 0; t < triangles.size(); t += 3)
+        mesh.addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
+    mesh.edgesFromTriangles();
+    ASSERT_EQ(expectedSides(triangles).size(), 2u * rim + 1u); // spokes, rim, and 5-5
+    expectEdgesOfTriangles(mesh, triangles);
 }
 
 TEST(Mesh, EdgesFromTrianglesOfNoTrianglesIsNoEdges)
