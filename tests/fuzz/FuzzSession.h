@@ -54,7 +54,7 @@ namespace q3fuzz {
 // Bounds on the work one input may ask for.
 constexpr unsigned long kPointBudget = 4096;    // control points over all curve data built
 constexpr int kMaxCurveDraws = 12;              // curve and polyline submits and decompositions
-constexpr double kDrawSeconds = 2.0;            // then no more of them (one may take 12 s here: run.sh)
+constexpr double kDrawSeconds = 2.0;            // then no more of them (one may take far longer: run.sh)
 constexpr int kMaxDuplicates = 16;              // a decomposed polyline may have 2^20 vertices
 constexpr int kMaxOperations = 400;
 constexpr int kMaxViews = 3;

@@ -32,13 +32,16 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 # -timeout: no input may take this long. The fuzzer stops drawing once its
-# draws have taken 2 s, but one draw may be a surface at
-# kQ3SubdivisionMaxTrianglesPerSurface: up to 12 s under AddressSanitizer and
-# coverage on the 2-core machine (a measured box, 856,000 triangles; 0.43 s
-# in a Release build), and CI's machine runs about 30 % slower. 30 s leaves
-# room for that and still catches a hang. New inputs go to the first corpus
-# directory only.
-"$build/tests/fuzz/q3_fuzz_api" -max_total_time="$seconds" -timeout=30 -max_len=4096 \
+# draws have taken 2 s, but the draw that crosses that line may be a surface
+# at kQ3SubdivisionMaxTrianglesPerSurface, and under AddressSanitizer and
+# coverage an attempt that builds a whole cap takes about 12 s on the 2-core
+# machine (0.4 s in a Release build); a measured surface may make
+# quadric::kMaxDoublings + 1 such attempts, and CI's machine runs about 30 %
+# slower. 60 s is above that and still catches a hang.
+# -rss_limit_mb: one such surface peaks near 1 GB under AddressSanitizer, on
+# top of the fuzzer's own 0.9-1.8 GB (corpus, quarantine), above libFuzzer's
+# default 2 GB. New inputs go to the first corpus directory only.
+"$build/tests/fuzz/q3_fuzz_api" -max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 -max_len=4096 \
   -print_final_stats=1 -artifact_prefix="$build/findings/" "$@" \
   "$build/corpus" "$root/tests/fuzz/corpus"
 

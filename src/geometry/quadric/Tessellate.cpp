@@ -965,6 +965,7 @@ Tessellation tessellate(const Patches& patches, const Subdivision& subdivision)
             out.reduced = reduced;
             out.effectiveC1 = s.c1;
             out.effectiveC2 = s.c2;
+            out.overruns = tries;
             return out;
         } catch (const OverBudget&) {
             reduced = true;
@@ -974,7 +975,7 @@ Tessellation tessellate(const Patches& patches, const Subdivision& subdivision)
                 // per turn): that one, whatever it costs.
                 s.maxTriangles = std::numeric_limits<std::size_t>::max();
             } else if (s.method == Method::kMeasured) {
-                s.c1 = std::isfinite(s.c1) && tries < 60 ? 2.0 * s.c1 : std::numeric_limits<double>::infinity();
+                s.c1 = tries < kMaxDoublings ? 2.0 * s.c1 : std::numeric_limits<double>::infinity();
             } else {
                 s.c1 = std::max(1.0, std::floor(0.7 * s.c1));
                 s.c2 = std::max(1.0, std::floor(0.7 * s.c2));

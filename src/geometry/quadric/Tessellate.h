@@ -52,7 +52,8 @@
 //
 // Both methods keep the triangle count at most `maxTriangles`: the constant
 // counts are scaled down, the measured method's c1 scaled up (first from an
-// estimate of the drawn area, then doubled while an attempt runs over); then
+// estimate of the drawn area, then doubled while an attempt runs over, at
+// most kMaxDoublings times before the coarsest is taken); then
 // `reduced` is set and `effectiveC1` / `effectiveC2` say what was used, as
 // curves do with their segment cap. A cap below the coarsest tessellation
 // (one segment per quarter turn, the constant minimums) gives the coarsest.
@@ -103,6 +104,12 @@ constexpr double kRowDrop = 0.8;
 constexpr int kProbes = 24;
 /// How many times a strip may be halved before it is taken as it is.
 constexpr int kMaxRefinement = 24;
+/// How many times the measured method doubles c1 after an attempt runs over
+/// maxTriangles before it takes the coarsest tessellation. An attempt that
+/// runs over has built a whole cap's triangles first (about 0.4 s at
+/// kQ3SubdivisionMaxTrianglesPerSurface in a Release build), so the
+/// retries are few: a surface costs at most kMaxDoublings + 1 of them.
+constexpr int kMaxDoublings = 2;
 
 struct Tessellation {
     std::vector<Vec3> positions;
@@ -114,6 +121,7 @@ struct Tessellation {
     double effectiveC1 = 0.0;             ///< the c1 used (counts for constant, a length for measured)
     double effectiveC2 = 0.0;             ///< constant only
     std::size_t unresolved = 0;           ///< measured: strips left with a long edge after kMaxRefinement halvings
+    int overruns = 0;                     ///< attempts that ran over maxTriangles before this one
 
     std::size_t triangleCount() const { return triangles.size() / 3; }
 };

@@ -162,13 +162,18 @@ TEST(QuadricTessellate, TheTriangleCapCoarsensAndSaysSo)
     EXPECT_LE(c.triangleCount(), 1000u);
     EXPECT_LT(c.effectiveC1, 1024.0);
 
-    // A cap below the coarsest tessellation gives the coarsest.
+    // A cap below the coarsest tessellation gives the coarsest. The measured
+    // method gets there after at most kMaxDoublings doublings of c1 (each
+    // attempt that runs over costs a whole cap), then one attempt at the
+    // coarsest under the cap and the coarsest without it.
     for (Subdivision tiny : {measured(1e-3), constant(64, 64)}) {
         tiny.maxTriangles = 2;
         const Tessellation coarsest = tessellate(ellipsoidPatches(unitSphere()), tiny);
         EXPECT_TRUE(coarsest.reduced);
         EXPECT_GT(coarsest.triangleCount(), 2u);
         EXPECT_LE(coarsest.triangleCount(), 24u);
+        if (tiny.method == Method::kMeasured)
+            EXPECT_LE(coarsest.overruns, kMaxDoublings + 2);
     }
 
     const Tessellation plain = tessellate(ellipsoidPatches(unitSphere()), constant(16, 8));
