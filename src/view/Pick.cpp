@@ -42,6 +42,7 @@ Pick::Pick(const TQ3WindowPointPickData& data) : m_kind(Kind::kWindowPoint)
     check(data);
     m_point = data;
     m_data = data.data;
+    setHits(std::move(m_hits));
 }
 
 Pick::Pick(const TQ3WindowRectPickData& data) : m_kind(Kind::kWindowRect)
@@ -49,6 +50,7 @@ Pick::Pick(const TQ3WindowRectPickData& data) : m_kind(Kind::kWindowRect)
     check(data);
     m_rect = data;
     m_data = data.data;
+    setHits(std::move(m_hits));
 }
 
 Pick::Pick(const TQ3WorldRayPickData& data) : m_kind(Kind::kWorldRay)
@@ -56,6 +58,7 @@ Pick::Pick(const TQ3WorldRayPickData& data) : m_kind(Kind::kWorldRay)
     check(data);
     m_ray = data;
     m_data = data.data;
+    setHits(std::move(m_hits));
 }
 
 const ClassInfo& Pick::classInfo() const
@@ -122,6 +125,7 @@ void Pick::setData(const TQ3PickData& data)
     m_point.data = data;
     m_rect.data = data;
     m_ray.data = data;
+    setHits(std::move(m_hits));
 }
 
 float Pick::vertexTolerance() const
@@ -157,6 +161,7 @@ void Pick::setWindowPoint(const TQ3WindowPointPickData& data)
     check(data);
     m_point = data;
     m_data = data.data;
+    setHits(std::move(m_hits));
 }
 
 void Pick::setWindowRect(const TQ3WindowRectPickData& data)
@@ -164,6 +169,7 @@ void Pick::setWindowRect(const TQ3WindowRectPickData& data)
     check(data);
     m_rect = data;
     m_data = data.data;
+    setHits(std::move(m_hits));
 }
 
 void Pick::setWorldRay(const TQ3WorldRayPickData& data)
@@ -171,6 +177,7 @@ void Pick::setWorldRay(const TQ3WorldRayPickData& data)
     check(data);
     m_ray = data;
     m_data = data.data;
+    setHits(std::move(m_hits));
 }
 
 void Pick::setPoint(const TQ3Point2D& point)

@@ -62,6 +62,10 @@ public:
     static Pick& ofKind(TQ3Object handle, Kind kind, const char* what);
 
     const TQ3PickData& data() const { return m_data; }
+    /// This and the kinds' setters below apply the new sort, count and mask
+    /// to the hit list at once, as a picking loop ending would: a pick never
+    /// holds more hits or details than it asks for (a list is cut, never
+    /// grown back).
     void setData(const TQ3PickData& data);
 
     /// Tolerances: kQ3ErrorInvalidObjectType for a window-rect pick.

@@ -631,6 +631,48 @@ TEST_F(PickApiTest, DataSetDuringTheLoopRulesTheHitsDetails)
     EXPECT_Q3_ERROR(Q3Pick_GetPickDetailData(w, 0, kQ3PickDetailMaskPickID, &id), kQ3ErrorDataNotAvailable);
 }
 
+// Found by the fuzzer: a Q3Pick_SetData after the loop that asks for fewer
+// hits left the list longer than numHitsToReturn. The new data rules the list
+// at once, as it would have at the loop's end: sorted, cut and masked.
+TEST_F(PickApiTest, DataSetAfterTheLoopRulesTheHitList)
+{
+    TQ3ViewObject view = own(Q3View_New());
+    TQ3GeometryObject nearest = square(-1, -1, 0);
+    TQ3GeometryObject middle = square(-1, -1, -1);
+    TQ3GeometryObject farthest = square(-1, -1, -2);
+    auto scene = [&](TQ3ViewObject v) {
+        Q3PickIDStyle_Submit(2, v);
+        Q3Object_Submit(middle, v);
+        Q3PickIDStyle_Submit(1, v);
+        Q3Object_Submit(nearest, v);
+        Q3PickIDStyle_Submit(3, v);
+        Q3Object_Submit(farthest, v);
+    };
+    for (int setter = 0; setter < 2; ++setter) {
+        const TQ3WorldRayPickData ray = rayData({-0.5f, -0.5f, 5}, {0, 0, -2});
+        TQ3PickObject w = own(Q3WorldRayPick_New(&ray));
+        ASSERT_EQ(pick(view, w, scene), kQ3ViewStatusDone);
+        ASSERT_EQ(hits(w), 3u);
+        const TQ3PickData fewer = pickData(kQ3PickSortFarToNear, kQ3PickDetailMaskPickID, 2);
+        if (setter == 0) {
+            ASSERT_EQ(Q3Pick_SetData(w, &fewer), kQ3Success);
+        } else {
+            TQ3WorldRayPickData changed = ray;
+            changed.data = fewer;
+            ASSERT_EQ(Q3WorldRayPick_SetData(w, &changed), kQ3Success);
+        }
+        ASSERT_EQ(hits(w), 2u) << "setter " << setter;
+        EXPECT_EQ(detail<unsigned long>(w, 0, kQ3PickDetailMaskPickID), 3u);
+        EXPECT_EQ(detail<unsigned long>(w, 1, kQ3PickDetailMaskPickID), 2u);
+        TQ3PickDetail valid = 0;
+        ASSERT_EQ(Q3Pick_GetPickDetailValidMask(w, 0, &valid), kQ3Success);
+        EXPECT_EQ(valid, TQ3PickDetail(kQ3PickDetailMaskPickID));
+        // Asking for all hits again does not bring the cut one back.
+        ASSERT_EQ(Q3Pick_SetData(w, &ray.data), kQ3Success);
+        EXPECT_EQ(hits(w), 2u);
+    }
+}
+
 TEST_F(PickApiTest, HitPathThroughNestedGroups)
 {
     TQ3ViewObject view = own(Q3View_New());
