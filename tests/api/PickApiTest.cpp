@@ -117,6 +117,24 @@ protected:
         return own(Q3Triangle_New(&data));
     }
 
+    /// Squares at z = 0, -1 and -2 under x, y in [-1, 1], with pick IDs 1, 2
+    /// and 3 (nearest to farthest from +z), submitted middle, nearest,
+    /// farthest.
+    std::function<void(TQ3ViewObject)> threeSquares()
+    {
+        const TQ3GeometryObject nearest = square(-1, -1, 0);
+        const TQ3GeometryObject middle = square(-1, -1, -1);
+        const TQ3GeometryObject farthest = square(-1, -1, -2);
+        return [=](TQ3ViewObject v) {
+            Q3PickIDStyle_Submit(2, v);
+            Q3Object_Submit(middle, v);
+            Q3PickIDStyle_Submit(1, v);
+            Q3Object_Submit(nearest, v);
+            Q3PickIDStyle_Submit(3, v);
+            Q3Object_Submit(farthest, v);
+        };
+    }
+
     /// Runs a picking loop (the legacy do/while shape) around submit.
     TQ3ViewStatus pick(TQ3ViewObject view, TQ3PickObject pickObject, const std::function<void(TQ3ViewObject)>& submit)
     {
@@ -501,17 +519,7 @@ TEST_F(PickApiTest, HitIndexAndDetailErrors)
 TEST_F(PickApiTest, HitsAreSortedAndCut)
 {
     TQ3ViewObject view = own(Q3View_New());
-    TQ3GeometryObject nearest = square(-1, -1, 0);
-    TQ3GeometryObject middle = square(-1, -1, -1);
-    TQ3GeometryObject farthest = square(-1, -1, -2);
-    auto scene = [&](TQ3ViewObject v) {
-        Q3PickIDStyle_Submit(2, v);
-        Q3Object_Submit(middle, v);
-        Q3PickIDStyle_Submit(1, v);
-        Q3Object_Submit(nearest, v);
-        Q3PickIDStyle_Submit(3, v);
-        Q3Object_Submit(farthest, v);
-    };
+    const auto scene = threeSquares();
     auto ids = [&](TQ3PickObject p) {
         std::vector<unsigned long> out;
         for (unsigned long i = 0; i < hits(p); ++i)
@@ -637,17 +645,7 @@ TEST_F(PickApiTest, DataSetDuringTheLoopRulesTheHitsDetails)
 TEST_F(PickApiTest, DataSetAfterTheLoopRulesTheHitList)
 {
     TQ3ViewObject view = own(Q3View_New());
-    TQ3GeometryObject nearest = square(-1, -1, 0);
-    TQ3GeometryObject middle = square(-1, -1, -1);
-    TQ3GeometryObject farthest = square(-1, -1, -2);
-    auto scene = [&](TQ3ViewObject v) {
-        Q3PickIDStyle_Submit(2, v);
-        Q3Object_Submit(middle, v);
-        Q3PickIDStyle_Submit(1, v);
-        Q3Object_Submit(nearest, v);
-        Q3PickIDStyle_Submit(3, v);
-        Q3Object_Submit(farthest, v);
-    };
+    const auto scene = threeSquares();
     for (int setter = 0; setter < 2; ++setter) {
         const TQ3WorldRayPickData ray = rayData({-0.5f, -0.5f, 5}, {0, 0, -2});
         TQ3PickObject w = own(Q3WorldRayPick_New(&ray));
