@@ -206,7 +206,7 @@ void Mesh::edgesFromTriangles()
 {
     // Each side is filed under its smaller vertex by a counting sort, so the
     // work is linear in the triangles (a surface at the triangle limit has
-    // three million sides). A vertex's few sides are then ordered by their
+    // three million sides). Each vertex's sides are then sorted by their
     // larger vertex and by corner, and duplicates dropped: each side comes
     // out once, in (smaller, larger) order, running the way the first
     // triangle that had it runs.
@@ -235,12 +235,7 @@ void Mesh::edgesFromTriangles()
     }
     for (std::size_t v = 0; v + 1 < start.size(); ++v) {
         const auto first = filed.begin() + start[v], last = filed.begin() + start[v + 1];
-        if (last - first > 16)
-            std::sort(first, last); // a fan's hub: keep the work n log n
-        else
-            for (auto i = first; i != last; ++i)
-                for (auto j = i; j != first && *(j - 1) > *j; --j)
-                    std::iter_swap(j - 1, j);
+        std::sort(first, last); // a few sides; n log n at a fan's hub
         for (auto i = first; i != last; ++i)
             if (i == first || (*i >> 32) != (*(i - 1) >> 32)) {
                 const auto [a, b] = sideAt(std::size_t(*i & 0xffffffffu));

@@ -42,7 +42,6 @@ Pick::Pick(const TQ3WindowPointPickData& data) : m_kind(Kind::kWindowPoint)
     check(data);
     m_point = data;
     m_data = data.data;
-    setHits(std::move(m_hits));
 }
 
 Pick::Pick(const TQ3WindowRectPickData& data) : m_kind(Kind::kWindowRect)
@@ -50,7 +49,6 @@ Pick::Pick(const TQ3WindowRectPickData& data) : m_kind(Kind::kWindowRect)
     check(data);
     m_rect = data;
     m_data = data.data;
-    setHits(std::move(m_hits));
 }
 
 Pick::Pick(const TQ3WorldRayPickData& data) : m_kind(Kind::kWorldRay)
@@ -58,7 +56,6 @@ Pick::Pick(const TQ3WorldRayPickData& data) : m_kind(Kind::kWorldRay)
     check(data);
     m_ray = data;
     m_data = data.data;
-    setHits(std::move(m_hits));
 }
 
 const ClassInfo& Pick::classInfo() const

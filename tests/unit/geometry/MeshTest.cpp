@@ -187,8 +187,8 @@ TEST(Mesh, EdgesFromTrianglesGivesEachUndirectedSideOnceInItsFirstTrianglesDirec
 
 TEST(Mesh, EdgesFromTrianglesOfAFanWithManySidesAtItsHub)
 {
-    // 40 triangles around vertex 0 (80 sides meet there, more than a small
-    // vertex's share), listed out of order, some wound the other way and
+    // 40 triangles around vertex 0 (80 sides filed under it, many of them
+    // the same side), listed out of order, some wound the other way and
     // some twice, and one degenerate triangle.
     Mesh mesh;
     const std::uint32_t rim = 40;
