@@ -6,6 +6,7 @@
 #include "core/DataLayout.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -268,7 +269,14 @@ MeshView Mesh::view() const
         view.shaders = m_shaders.data();
         view.shaderCount = m_shaders.size();
     }
+    view.serial = m_serial.value;
     return view;
+}
+
+std::uint64_t Mesh::newSerial()
+{
+    static std::atomic<std::uint64_t> last{0};
+    return last.fetch_add(1, std::memory_order_relaxed) + 1;
 }
 
 void Mesh::clear()

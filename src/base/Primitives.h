@@ -132,6 +132,12 @@ struct MeshView {
     /// Colour images drawn in screen space (ScreenPixmap).
     const ScreenPixmap* pixmaps = nullptr;
     std::size_t pixmapCount = 0;
+    /// A number that names these arrays' contents: two views with the same
+    /// non-zero serial have the same vertices, attributes and primitives
+    /// (a retained geometry's cached mesh, Mesh::setSerial), so a renderer
+    /// may keep what it derived from them. 0: no such promise (a mesh built
+    /// for one submit, or a view whose arrays were replaced).
+    std::uint64_t serial = 0;
 };
 
 /// A decomposition that owns its arrays: what retained geometries cache.
@@ -176,7 +182,26 @@ public:
     MeshView view() const;
     void clear();
 
+    /// Names the mesh's present contents for its views (MeshView::serial):
+    /// a new number from newSerial() once the mesh is built and will not
+    /// change. A copy of the mesh, and the mesh after clear(), have none.
+    void setSerial(std::uint64_t serial) { m_serial.value = serial; }
+    /// A number no mesh was given before (never 0).
+    static std::uint64_t newSerial();
+
 private:
+    // MeshView::serial; copied as 0 (a copy may be changed).
+    struct Serial {
+        std::uint64_t value = 0;
+        Serial() = default;
+        Serial(const Serial&) noexcept {}
+        Serial& operator=(const Serial&) noexcept
+        {
+            value = 0;
+            return *this;
+        }
+    };
+    Serial m_serial;
     std::vector<float> m_positions;
     std::vector<float> m_colors;
     std::vector<float> m_transparency;

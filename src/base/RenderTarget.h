@@ -295,6 +295,13 @@ struct Shading {
     /// kNoTexture: untextured.
     const float* st = nullptr;
     std::uint32_t texture = kNoTexture;
+    /// The uv transform `st` was computed with from the mesh's uvs (the
+    /// first two columns of QuickDraw 3D's 3 x 3 matrix, row by row: s and
+    /// t of (u, v, 1) times it, before t is counted down): with the mesh's
+    /// serial (MeshView::serial) and the other fields here, it says all
+    /// that the arrays were derived from, so that a backend may keep its
+    /// vertex data for a mesh drawn again the same way.
+    float stTransform[6] = {1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f};
     /// The opacity of the filled triangles' vertices (OpacitySetup: `rgb`
     /// null or r g b per vertex of the mesh).
     OpacitySetup opacity;

@@ -78,6 +78,9 @@ void Geometry::withMesh(std::vector<double> key, const std::function<void(Mesh&)
         // Build into a fresh mesh so that a failure leaves no half-built one.
         auto fresh = std::make_unique<MeshCache>();
         build(fresh->mesh);
+        // Its contents stay as built until the key changes: a renderer may
+        // keep what it derives from them (MeshView::serial).
+        fresh->mesh.setSerial(Mesh::newSerial());
         fresh->key = std::move(key);
         m_meshCache = std::move(fresh);
         ++m_meshBuilds;

@@ -74,6 +74,7 @@
 #include <new>
 #include <string>
 #include <utility>
+#include <unordered_map>
 #include <vector>
 
 namespace q3 {
@@ -340,11 +341,14 @@ private:
         // buffer the frame rewrote).
         GLuint minIndex = 0;
         GLuint maxIndex = 0;
+        // Drawn from the context's kept vertex data (GlResources::kept)
+        // rather than the batch's.
+        bool staticArrays = false;
 
         bool drawsLike(const DrawCommand& other) const
         {
             return primitive == other.primitive && indexed == other.indexed && smooth == other.smooth &&
-                   multisample == other.multisample &&
+                   multisample == other.multisample && staticArrays == other.staticArrays &&
                    fog == other.fog &&
                    plain == other.plain && pointSize == other.pointSize && matrixIndex == other.matrixIndex &&
                    shading == other.shading && texture == other.texture && faces == other.faces &&
@@ -608,6 +612,85 @@ private:
     void uploadStream(StreamBuffer which, GLenum target, const void* data, std::size_t bytes);
 
 public:
+    // Static vertex data: the vertices and indices of a retained mesh's
+    // opaque filled triangles, kept in the context's buffers from frame to
+    // frame (GlResources::kept) so that a frame drawing the mesh again the
+    // same way neither checks, assembles nor uploads them, as an OpenGL
+    // program keeps its static buffers. What the batch would hold is fully
+    // determined by a StaticKey: the mesh's serial (MeshView::serial: its
+    // arrays), the uv transform its texture coordinates were computed with,
+    // the colour and the flags that choose how Impl::draw and drawLit
+    // derive the vertices. A key is kept the second time it is drawn (so a
+    // mesh edited every frame, which never comes back, is uploaded once a
+    // frame, not twice), from the batch that frame assembled.
+    struct StaticKey {
+        std::uint64_t serial = 0;
+        float stTransform[6] = {};
+        float color[3] = {};
+        std::uint32_t vertexCount = 0;
+        std::uint32_t triangleCount = 0;
+        std::uint8_t flags = 0; // kKey* below
+        std::uint8_t interpolation = 0;
+        bool operator==(const StaticKey& other) const;
+    };
+    static constexpr std::uint8_t kKeyColors = 1, kKeyTextured = 2, kKeyLit = 4, kKeySmooth = 8,
+                                  kKeyClockwise = 16;
+    // Draws the opaque filled triangles of `mesh` from kept data when the
+    // context keeps them under `key` (true; an error in `result`), else
+    // false: the caller draws them as usual, and the batch's copy is kept if
+    // the key was drawn before (the next draw request takes the offer).
+    bool drawKept(const StaticKey& key, const SurfaceShading* shading, RenderResult& result);
+    void withdrawOffer() { m_offer = false; }
+    std::uint64_t m_keptDraws = 0; // drawKept's draws, for tests
+    // Whether the frame's current opacity and texture let its filled
+    // triangles be drawn opaque, unsplit (Impl::draw).
+    bool opaqueFill(bool textured) const
+    {
+        if (m_opacity.rgb != nullptr || m_opacity.uniform.r < 1.0f || m_opacity.uniform.g < 1.0f ||
+            m_opacity.uniform.b < 1.0f)
+            return false;
+        return !textured || (m_currentTexture != kUntextured && !m_textures[m_currentTexture].hasAlpha);
+    }
+
+private:
+    struct KeptMesh {
+        StaticKey key;
+        enum class State { kSeen, kPending, kStored } state = State::kSeen;
+        GLuint firstVertex = 0; // in the kept vertex buffer
+        GLuint vertexCount = 0;
+        GLuint firstIndex = 0;  // in the kept index buffer
+        GLsizei indexCount = 0;
+        std::uint64_t lastFrame = 0; // the context's frame that drew it last
+    };
+    // A kept mesh the batch holds this frame, to be copied into the kept
+    // buffers at the flush.
+    struct PendingKept {
+        StaticKey key;
+        GLuint streamFirstVertex;
+        GLuint vertexCount;
+        GLint streamFirstIndex;
+        GLsizei indexCount;
+    };
+    std::vector<PendingKept> m_pendingKept;
+    std::vector<GLuint> m_keptIndices; // storePendingKept's scratch
+    StaticKey m_offerKey;
+    bool m_offer = false;
+    KeptMesh* findKept(const StaticKey& key);
+    // At the flush, after the batch's upload: copies the pending meshes
+    // into the kept buffers (those that fit).
+    void storePendingKept();
+    // At beginFrame: forgets meshes no frame drew for kStaleFrames frames,
+    // and empties the kept buffers after one ran out of room (to be filled
+    // again, larger, by the meshes drawn from then on).
+    void trimKept();
+    // The most vertices and indices kept per context; meshes beyond are
+    // drawn from the batch each frame.
+    static constexpr std::size_t kKeptVertexLimit = std::size_t(1) << 20;
+    static constexpr std::size_t kKeptIndexLimit = std::size_t(1) << 22;
+    static constexpr std::size_t kKeptInitialVertices = std::size_t(1) << 15;
+    static constexpr std::size_t kKeptInitialIndices = std::size_t(1) << 16;
+
+public:
     // What belongs to one OpenGL context and lives as long as it: the
     // context, with what was made in it. A renderer holds one only from
     // beginFrame to endFrame (or cancelFrame) and lends it to the process's
@@ -641,6 +724,18 @@ public:
         std::size_t streamCapacity[kStreamBufferCount] = {0, 0, 0, 0};
         std::vector<CachedTexture> textureCache;
         std::size_t textureCacheBytes = 0;
+        // Static vertex data (StaticKey): the meshes by serial, and two
+        // buffers (vertices, indices) filled from the front, with their
+        // capacity and what is used, in vertices and in indices; keptFull
+        // when a mesh did not fit (the buffers are emptied and grown at the
+        // next frame's start).
+        std::unordered_map<std::uint64_t, std::vector<KeptMesh>> kept;
+        GLuint keptBuffers[2] = {0, 0};
+        std::size_t keptCapacity[2] = {0, 0};
+        std::size_t keptAllocated[2] = {0, 0};
+        std::size_t keptUsed[2] = {0, 0};
+        std::size_t keptDemand[2] = {0, 0}; // what did not fit
+        bool keptFull = false;
         std::uint64_t frameNumber = 0; // frames begun with this context
         const Impl* lender = nullptr;  // in the pool: the renderer that lent it
     };
@@ -946,6 +1041,7 @@ RenderResult OffscreenRenderer::Impl::beginFrame(std::uint32_t width, std::uint3
     }
 
     ++m_gl->frameNumber;
+    trimKept();
     m_pane = pane;
     m_clearColor = clearColor;
     m_options = options;
@@ -1126,6 +1222,15 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
         command.maxIndex = offset + GLuint(r.vertexCount - 1);
     } else {
         command.first = GLint(base);
+    }
+    if (m_offer && indexed && !plain && r.primitive == Primitive::kTriangles) {
+        KeptMesh* kept = findKept(m_offerKey);
+        if (kept != nullptr && kept->state == KeptMesh::State::kSeen) {
+            m_pendingKept.push_back(PendingKept{m_offerKey, GLuint(base), GLuint(r.vertexCount), command.first,
+                                                GLsizei(r.indexCount)});
+            kept->state = KeptMesh::State::kPending;
+        }
+        m_offer = false;
     }
     if (r.primitive != Primitive::kLineStrip && !m_commands.empty()) {
         DrawCommand& last = m_commands.back();
@@ -1359,6 +1464,182 @@ void OffscreenRenderer::Impl::uploadStream(StreamBuffer which, GLenum target, co
         glBufferSubData(target, 0, GLsizeiptr(bytes), data);
 }
 
+bool OffscreenRenderer::Impl::StaticKey::operator==(const StaticKey& other) const
+{
+    // The floats by their bits: what was derived from them is the same
+    // only for the same bits.
+    return serial == other.serial && vertexCount == other.vertexCount && triangleCount == other.triangleCount &&
+           flags == other.flags && interpolation == other.interpolation &&
+           std::memcmp(stTransform, other.stTransform, sizeof stTransform) == 0 &&
+           std::memcmp(color, other.color, sizeof color) == 0;
+}
+
+OffscreenRenderer::Impl::KeptMesh* OffscreenRenderer::Impl::findKept(const StaticKey& key)
+{
+    const auto found = m_gl->kept.find(key.serial);
+    if (found == m_gl->kept.end())
+        return nullptr;
+    for (KeptMesh& mesh : found->second)
+        if (mesh.key == key)
+            return &mesh;
+    return nullptr;
+}
+
+bool OffscreenRenderer::Impl::drawKept(const StaticKey& key, const SurfaceShading* shading, RenderResult& result)
+{
+    m_offer = false;
+    if (!m_inFrame || m_gl == nullptr || key.serial == 0)
+        return false;
+    KeptMesh* kept = findKept(key);
+    if (kept == nullptr) {
+        // Seen once: kept if it is drawn again.
+        std::vector<KeptMesh>& meshes = m_gl->kept[key.serial];
+        meshes.push_back(KeptMesh{});
+        meshes.back().key = key;
+        meshes.back().lastFrame = m_gl->frameNumber;
+        return false;
+    }
+    kept->lastFrame = m_gl->frameNumber;
+    if (kept->state != KeptMesh::State::kStored) {
+        m_offer = kept->state == KeptMesh::State::kSeen;
+        m_offerKey = key;
+        return false;
+    }
+    if (shading != nullptr) {
+        // Checked as Impl::draw checks them; a bad value takes the usual
+        // path, which reports it.
+        const float values[5] = {shading->ambientCoefficient, shading->specularColor[0], shading->specularColor[1],
+                                 shading->specularColor[2], shading->specularControl};
+        if (!allFinite(shading->localToWorld, 16) || !allFinite(values, 5))
+            return false;
+    }
+    try {
+        if (shading != nullptr)
+            m_shadings.reserve(m_shadings.size() + 1);
+        if (m_commands.size() == m_commands.capacity())
+            m_commands.reserve(m_commands.empty() ? 256 : m_commands.size() * 2);
+    } catch (const std::bad_alloc&) {
+        result = outOfMemory();
+        return true;
+    }
+    std::uint32_t shadingIndex = kUnlit;
+    if (shading != nullptr) {
+        m_shadings.push_back(*shading);
+        shadingIndex = std::uint32_t(m_shadings.size() - 1);
+    }
+    const bool textured = (key.flags & kKeyTextured) != 0;
+    DrawCommand command{Primitive::kTriangles, true, (key.flags & kKeySmooth) != 0, false, 1.0f, m_currentMatrix,
+                        shadingIndex, textured ? m_currentTexture : kUntextured, m_faces, RgbColor{},
+                        GLint(kept->firstIndex), kept->indexCount};
+    command.multisample = m_antiAlias.triangles;
+    command.fog = m_currentFog;
+    command.minIndex = kept->firstVertex;
+    command.maxIndex = kept->firstVertex + kept->vertexCount - 1;
+    command.staticArrays = true;
+    m_commands.push_back(command);
+    ++m_keptDraws;
+    result = RenderResult::success();
+    return true;
+}
+
+void OffscreenRenderer::Impl::storePendingKept()
+{
+    GlResources& gl = *m_gl;
+    for (const PendingKept& pending : m_pendingKept) {
+        KeptMesh* kept = findKept(pending.key);
+        if (kept == nullptr || kept->state != KeptMesh::State::kPending)
+            continue;
+        kept->state = KeptMesh::State::kSeen;
+        if (gl.keptCapacity[0] == 0) {
+            gl.keptCapacity[0] = kKeptInitialVertices;
+            gl.keptCapacity[1] = kKeptInitialIndices;
+        }
+        const std::size_t counts[2] = {pending.vertexCount, std::size_t(pending.indexCount)};
+        const std::size_t limits[2] = {kKeptVertexLimit, kKeptIndexLimit};
+        bool fits = true;
+        bool couldFit = true;
+        for (int k = 0; k < 2; ++k) {
+            fits = fits && gl.keptUsed[k] + counts[k] <= gl.keptCapacity[k];
+            couldFit = couldFit && counts[k] <= limits[k];
+        }
+        if (!fits) {
+            // Emptied and grown at the next frame's start, unless it can
+            // never fit or the buffers are as large as they get (the mesh
+            // is then drawn from the batch each frame).
+            if (couldFit && (gl.keptCapacity[0] < kKeptVertexLimit || gl.keptCapacity[1] < kKeptIndexLimit)) {
+                gl.keptFull = true;
+                gl.keptDemand[0] += counts[0];
+                gl.keptDemand[1] += counts[1];
+            }
+            continue;
+        }
+        if (gl.keptBuffers[0] == 0)
+            glGenBuffers(2, gl.keptBuffers);
+        if (gl.keptAllocated[0] != gl.keptCapacity[0]) {
+            // Only ever when they are empty (trimKept).
+            glBindBuffer(GL_ARRAY_BUFFER, gl.keptBuffers[0]);
+            glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(gl.keptCapacity[0] * sizeof(Vertex)), nullptr, GL_STATIC_DRAW);
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl.keptBuffers[1]);
+            glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(gl.keptCapacity[1] * sizeof(GLuint)), nullptr,
+                         GL_STATIC_DRAW);
+            gl.keptAllocated[0] = gl.keptCapacity[0];
+            gl.keptAllocated[1] = gl.keptCapacity[1];
+        }
+        const GLuint firstVertex = GLuint(gl.keptUsed[0]);
+        glBindBuffer(GL_ARRAY_BUFFER, gl.keptBuffers[0]);
+        glBufferSubData(GL_ARRAY_BUFFER, GLintptr(firstVertex * sizeof(Vertex)),
+                        GLsizeiptr(pending.vertexCount * sizeof(Vertex)), m_vertices.get() + pending.streamFirstVertex);
+        // The batch's indices count from the batch's first vertex.
+        m_keptIndices.resize(std::size_t(pending.indexCount));
+        const GLuint* in = m_indices.data() + pending.streamFirstIndex;
+        for (std::size_t i = 0; i < m_keptIndices.size(); ++i)
+            m_keptIndices[i] = in[i] - pending.streamFirstVertex + firstVertex;
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl.keptBuffers[1]);
+        glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(gl.keptUsed[1] * sizeof(GLuint)),
+                        GLsizeiptr(m_keptIndices.size() * sizeof(GLuint)), m_keptIndices.data());
+        kept->firstVertex = firstVertex;
+        kept->vertexCount = pending.vertexCount;
+        kept->firstIndex = GLuint(gl.keptUsed[1]);
+        kept->indexCount = pending.indexCount;
+        kept->state = KeptMesh::State::kStored;
+        gl.keptUsed[0] += counts[0];
+        gl.keptUsed[1] += counts[1];
+    }
+    m_pendingKept.clear();
+}
+
+void OffscreenRenderer::Impl::trimKept()
+{
+    GlResources& gl = *m_gl;
+    if (gl.keptFull) {
+        // Emptied and grown to hold what was kept and what did not fit (at
+        // least twice as much); the meshes it held are kept again the next
+        // time they are drawn.
+        const std::size_t limits[2] = {kKeptVertexLimit, kKeptIndexLimit};
+        for (int k = 0; k < 2; ++k) {
+            gl.keptCapacity[k] =
+                std::min(limits[k], std::max(2 * gl.keptCapacity[k], gl.keptUsed[k] + gl.keptDemand[k]));
+            gl.keptUsed[k] = 0;
+            gl.keptDemand[k] = 0;
+        }
+        for (auto& [serial, meshes] : gl.kept)
+            for (KeptMesh& mesh : meshes)
+                mesh.state = KeptMesh::State::kSeen;
+        gl.keptFull = false;
+        return;
+    }
+    if (gl.frameNumber % kStaleFrames != 0)
+        return;
+    // Meshes no frame drew for kStaleFrames frames (their room is used
+    // again after the next emptying).
+    for (auto it = gl.kept.begin(); it != gl.kept.end();) {
+        std::vector<KeptMesh>& meshes = it->second;
+        const auto stale = [&](const KeptMesh& mesh) { return gl.frameNumber - mesh.lastFrame > kStaleFrames; };
+        meshes.erase(std::remove_if(meshes.begin(), meshes.end(), stale), meshes.end());
+        it = meshes.empty() ? gl.kept.erase(it) : std::next(it);
+    }
+}
+
 namespace {
 
 // A byte offset into the bound buffer object, as gl*Pointer and
@@ -1413,6 +1694,7 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
             if (!m_indices.empty())
                 uploadStream(kStreamIndices, GL_ELEMENT_ARRAY_BUFFER, m_indices.data(),
                              m_indices.size() * sizeof(GLuint));
+            storePendingKept();
             const std::size_t commandCount = m_commands.size();
             std::size_t i = 0;
             while (i < commandCount) {
@@ -1431,7 +1713,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     loadedTexture = kUntextured - 1;
                     fogLoad.unlit = -1;
                 }
-                if (int(head.plain) != loadedArrays) {
+                const int arrays = head.plain ? 1 : head.staticArrays ? 2 : 0;
+                if (arrays != loadedArrays) {
                     if (head.plain) {
                         glDisableClientState(GL_COLOR_ARRAY);
                         glDisableClientState(GL_NORMAL_ARRAY);
@@ -1440,12 +1723,17 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                     } else {
                         glEnableClientState(GL_COLOR_ARRAY);
                         glEnableClientState(GL_NORMAL_ARRAY);
-                        glBindBuffer(GL_ARRAY_BUFFER, m_gl->streamBuffers[kStreamVertices]);
+                        glBindBuffer(GL_ARRAY_BUFFER,
+                                     head.staticArrays ? m_gl->keptBuffers[0] : m_gl->streamBuffers[kStreamVertices]);
                         glVertexPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, x)));
                         glColorPointer(3, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, r)));
                         glNormalPointer(GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, nx)));
+                        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, s)));
                     }
-                    loadedArrays = int(head.plain);
+                    // The kept meshes' indices are in a buffer of their own.
+                    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER,
+                                 head.staticArrays ? m_gl->keptBuffers[1] : m_gl->streamBuffers[kStreamIndices]);
+                    loadedArrays = arrays;
                     // The current colour is undefined after drawing with a
                     // colour array: set it again.
                     if (head.plain)
@@ -1481,11 +1769,11 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                         glDisable(GL_TEXTURE_2D);
                         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
                     } else {
+                        // (Its coordinates' pointer is set with the arrays: a
+                        // textured command is never plain.)
                         bindTexture(head.texture);
                         glEnable(GL_TEXTURE_2D);
                         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-                        glBindBuffer(GL_ARRAY_BUFFER, m_gl->streamBuffers[kStreamVertices]);
-                        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), bufferOffset(offsetof(Vertex, s)));
                     }
                     loadedTexture = head.texture;
                 }
@@ -1828,6 +2116,14 @@ void OffscreenRenderer::Impl::resetBatch()
     m_indices.clear();
     m_commands.clear();
     m_shadings.clear();
+    // Pending meshes a flush did not store go back to being seen.
+    for (const PendingKept& pending : m_pendingKept) {
+        KeptMesh* kept = m_gl != nullptr ? findKept(pending.key) : nullptr;
+        if (kept != nullptr && kept->state == KeptMesh::State::kPending)
+            kept->state = KeptMesh::State::kSeen;
+    }
+    m_pendingKept.clear();
+    m_offer = false;
     if (!m_matrices.empty()) {
         m_matrices[0] = m_matrices[m_currentMatrix];
         m_matrices.resize(1);
@@ -2908,6 +3204,53 @@ std::size_t OffscreenRenderer::rowBytes() const
 bool OffscreenRenderer::drewInPlace() const
 {
     return m_impl->m_drewInPlace;
+}
+
+std::uint64_t OffscreenRenderer::keptDraws() const
+{
+    return m_impl->m_keptDraws;
+}
+
+bool OffscreenRenderer::drawKept(const MeshView& mesh, const Shading& shading, const float* st, RenderResult& result)
+{
+    constexpr std::size_t kMax = std::numeric_limits<std::uint32_t>::max();
+    if (mesh.serial == 0 || mesh.triangleCount == 0 || mesh.vertexCount > kMax || mesh.triangleCount > kMax / 3 ||
+        !m_impl->m_inFrame)
+        return false;
+    const bool textured = st != nullptr;
+    // Only opaque, unsplit draws (translucent triangles are sorted per
+    // frame).
+    if (!m_impl->opaqueFill(textured))
+        return false;
+    Impl::StaticKey key;
+    key.serial = mesh.serial;
+    key.vertexCount = std::uint32_t(mesh.vertexCount);
+    key.triangleCount = std::uint32_t(mesh.triangleCount);
+    if (textured)
+        std::copy(std::begin(shading.stTransform), std::end(shading.stTransform), std::begin(key.stTransform));
+    key.color[0] = shading.color.r;
+    key.color[1] = shading.color.g;
+    key.color[2] = shading.color.b;
+    key.flags = std::uint8_t((shading.rgb != nullptr ? Impl::kKeyColors : 0) | (textured ? Impl::kKeyTextured : 0));
+    if (shading.lit) {
+        // drawLit's normals follow the interpolation and the front's winding.
+        key.flags |= Impl::kKeyLit | (shading.clockwiseFront ? Impl::kKeyClockwise : 0) |
+                     (shading.surface.interpolation != 0 ? Impl::kKeySmooth : 0);
+        key.interpolation = std::uint8_t(std::clamp(shading.surface.interpolation, 0, 2));
+    } else if (shading.smooth) {
+        key.flags |= Impl::kKeySmooth;
+    }
+    try {
+        return m_impl->drawKept(key, shading.lit ? &shading.surface : nullptr, result);
+    } catch (const std::bad_alloc&) {
+        result = outOfMemory();
+        return true;
+    }
+}
+
+void OffscreenRenderer::endKeptOffer()
+{
+    m_impl->withdrawOffer();
 }
 
 std::uint64_t OffscreenRenderer::contextsMade()

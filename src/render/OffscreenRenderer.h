@@ -225,6 +225,10 @@ public:
 
     /// How many OpenGL contexts this process's renderers have made so far.
     static std::uint64_t contextsMade();
+    /// How many of this renderer's draws drew a retained mesh's filled
+    /// triangles from vertex data its context kept from an earlier frame
+    /// (OffscreenRenderer.cpp, StaticKey), for tests.
+    std::uint64_t keptDraws() const;
 
 private:
     class Impl;
@@ -234,6 +238,12 @@ private:
     RenderResult drawSegments(const MeshView& mesh, const Shading& shading, const std::uint32_t* pairs,
                               std::size_t count);
     RenderResult drawFilled(const MeshView& mesh, const Shading& shading);
+    // Draws the filled triangles of a mesh with a serial from the vertex
+    // data its context kept (true, the outcome in `result`), else offers
+    // the draw that follows to be kept (false).
+    bool drawKept(const MeshView& mesh, const Shading& shading, const float* st, RenderResult& result);
+    // Withdraws an offer the draw did not take.
+    void endKeptOffer();
     RenderResult drawLit(const MeshView& mesh, const Shading& shading, const float* st);
     std::vector<float> m_scratch;
     std::vector<std::uint32_t> m_indices;

@@ -137,10 +137,15 @@ RenderResult OffscreenRenderer::drawFilled(const MeshView& mesh, const Shading& 
     const RenderResult opacity = setOpacity(shading.opacity);
     if (!opacity)
         return opacity;
-    if (shading.lit)
-        return drawLit(mesh, shading, st);
-    return drawElements(DrawMode::kTriangles, mesh.positions, shading.rgb, mesh.vertexCount, mesh.triangles,
-                        3 * mesh.triangleCount, shading.color, shading.smooth, st);
+    RenderResult kept;
+    if (drawKept(mesh, shading, st, kept))
+        return kept;
+    const RenderResult drawn =
+        shading.lit ? drawLit(mesh, shading, st)
+                    : drawElements(DrawMode::kTriangles, mesh.positions, shading.rgb, mesh.vertexCount, mesh.triangles,
+                                   3 * mesh.triangleCount, shading.color, shading.smooth, st);
+    endKeptOffer();
+    return drawn;
 }
 
 // Normals: the vertices' own where every vertex has one and the

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -286,6 +287,10 @@ void RenderPass::drawFilled(const MeshView& mesh, const Shading& base, const Att
         shading.color = RgbColor{1.0f, 1.0f, 1.0f};
         shading.st = st;
         shading.texture = id;
+        const TQ3Matrix3x3& m = texture.uvTransform;
+        const float transform[6] = {m.value[0][0], m.value[0][1], m.value[1][0],
+                                    m.value[1][1], m.value[2][0], m.value[2][1]};
+        std::copy(std::begin(transform), std::end(transform), std::begin(shading.stTransform));
     }
     shading.smooth = styles.interpolation != kQ3InterpolationStyleNone;
     shading.opacity = m_opacity;
@@ -390,6 +395,7 @@ void RenderPass::draw(const MeshView& mesh, const AttributeSet* own)
                 MeshView run = triangles;
                 run.triangles = m_runs.data() + 3 * first;
                 run.triangleCount = count;
+                run.serial = 0; // its triangles are not the mesh's
                 drawFilled(run, shading, attributes, k == 0 ? base : textureOf(mesh.shaders[k - 1].get()));
             }
         }

@@ -291,6 +291,65 @@ TEST_F(RenderSurfacesTest, ATriMeshIsFilledOrDrawnAsEveryTriangleSide)
     }
 }
 
+// A renderer keeps a retained mesh's vertex data from frame to frame
+// (render/OffscreenRenderer.cpp, StaticKey); an edit of the geometry's
+// points, or of the attribute set that colours it, after frames that kept it
+// is drawn at once.
+TEST_F(RenderSurfacesTest, ARetainedTriMeshEditedAfterFramesThatKeptItIsDrawnAsEdited)
+{
+    std::vector<TQ3Point3D> points;
+    for (const Pixel& c : m_triangle)
+        points.push_back({float(c.x), float(c.y), 0});
+    TQ3TriMeshTriangleData triangle{{0, 1, 2}};
+    TQ3AttributeSet red = color(1, 0, 0);
+    TQ3TriMeshData data{};
+    data.numTriangles = 1;
+    data.triangles = &triangle;
+    data.numPoints = points.size();
+    data.points = points.data();
+    data.triMeshAttributeSet = red;
+    TQ3GeometryObject triMesh = own(Q3TriMesh_New(&data));
+    Pixmap image(kWidth, kHeight);
+    TestView view(image.pixmap());
+    // Frames of the mesh, checked against the triangle `corners` in `r g b`.
+    const auto frames = [&](const std::vector<Pixel>& corners, int r, int g, int b, const std::string& what) {
+        SCOPED_TRACE(what);
+        for (int f = 0; f < 3; ++f) {
+            ASSERT_EQ(view.render([&](TQ3ViewObject v) { EXPECT_EQ(Q3Geometry_Submit(triMesh, v), kQ3Success); }),
+                      kQ3ViewStatusDone);
+            const RegionReport report = inspect(
+                image, [&](double x, double y) { return insidePolygon(corners, x, y); }, outline(corners));
+            EXPECT_GT(report.insideLit, 1500u) << "frame " << f;
+            EXPECT_EQ(report.insideDark, 0u) << "frame " << f << ": " << report.first;
+            EXPECT_EQ(report.outsideLit, 0u) << "frame " << f << ": " << report.first;
+            double cx = 0, cy = 0;
+            for (const Pixel& c : corners) {
+                cx += c.x / 3;
+                cy += c.y / 3;
+            }
+            expectColor(colorAt(image, cx, cy), r, g, b, 1, "frame " + std::to_string(f));
+        }
+    };
+    frames(m_triangle, 255, 0, 0, "as made");
+    // The points moved down and left by a fifth of a unit.
+    std::vector<Pixel> moved;
+    for (TQ3Point3D& p : points) {
+        p.x -= 0.2f;
+        p.y -= 0.2f;
+        moved.push_back({p.x, p.y});
+    }
+    ASSERT_EQ(Q3TriMesh_SetData(triMesh, &data), kQ3Success);
+    frames(moved, 255, 0, 0, "moved");
+    // The set the geometry holds made green.
+    TQ3AttributeSet held = nullptr;
+    ASSERT_EQ(Q3Geometry_GetAttributeSet(triMesh, &held), kQ3Success);
+    ASSERT_NE(held, nullptr);
+    const TQ3ColorRGB green{0, 1, 0};
+    ASSERT_EQ(Q3AttributeSet_Add(held, kQ3AttributeTypeDiffuseColor, &green), kQ3Success);
+    Q3Object_Dispose(held);
+    frames(moved, 0, 255, 0, "green");
+}
+
 // ---- Depth ----------------------------------------------------------------------------
 
 TEST_F(RenderSurfacesTest, TheNearerTriangleHidesTheFartherOneWhateverTheOrderButWireframeFollowsTheOrder)

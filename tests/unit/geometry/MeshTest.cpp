@@ -321,5 +321,31 @@ TEST(Mesh, InheritTakesAShaderHandleOnlyWhereTheVertexHasNone)
     EXPECT_EQ(attributes.shader, a.get());
 }
 
+// A serial names a mesh's contents as built (MeshView::serial): new
+// numbers differ and are never 0; a copy, which may then be changed, and a
+// cleared mesh have none.
+TEST(Mesh, ASerialStaysWithTheMeshAsBuiltOnly)
+{
+    const std::uint64_t first = Mesh::newSerial(), second = Mesh::newSerial();
+    EXPECT_NE(first, 0u);
+    EXPECT_NE(second, 0u);
+    EXPECT_NE(first, second);
+    Mesh mesh;
+    mesh.addVertex({0, 0, 0}, VertexAttributes{});
+    EXPECT_EQ(mesh.view().serial, 0u);
+    mesh.setSerial(first);
+    EXPECT_EQ(mesh.view().serial, first);
+    Mesh copy = mesh;
+    EXPECT_EQ(copy.view().serial, 0u);
+    EXPECT_EQ(copy.view().vertexCount, 1u);
+    Mesh assigned;
+    assigned.setSerial(second);
+    assigned = mesh;
+    EXPECT_EQ(assigned.view().serial, 0u);
+    EXPECT_EQ(mesh.view().serial, first);
+    mesh.clear();
+    EXPECT_EQ(mesh.view().serial, 0u);
+}
+
 } // namespace
 } // namespace q3
