@@ -196,6 +196,14 @@ bool allFinite(const float* values, std::size_t count)
     return infinite == 0;
 }
 
+// Whether every value of a lit draw's shading is finite.
+bool shadingFinite(const SurfaceShading& s)
+{
+    const float values[5] = {s.ambientCoefficient, s.specularColor[0], s.specularColor[1], s.specularColor[2],
+                             s.specularControl};
+    return allFinite(s.localToWorld, 16) && allFinite(values, 5);
+}
+
 // Vectors whose resize leaves new elements uninitialized (the batch's
 // indices are written right after; zeroing them first was a pass of its
 // own).
@@ -630,7 +638,6 @@ public:
         std::uint32_t vertexCount = 0;
         std::uint32_t triangleCount = 0;
         std::uint8_t flags = 0; // kKey* below
-        std::uint8_t interpolation = 0;
         bool operator==(const StaticKey& other) const;
     };
     static constexpr std::uint8_t kKeyColors = 1, kKeyTextured = 2, kKeyLit = 4, kKeySmooth = 8,
@@ -1136,10 +1143,7 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
             return invalid("lit triangles need normals");
         if (!allFinite(r.normals, r.vertexCount * 3))
             return invalid("a vertex normal is NaN or infinite");
-        const SurfaceShading& s = *r.shading;
-        const float values[5] = {s.ambientCoefficient, s.specularColor[0], s.specularColor[1], s.specularColor[2],
-                                 s.specularControl};
-        if (!allFinite(s.localToWorld, 16) || !allFinite(values, 5))
+        if (!shadingFinite(*r.shading))
             return invalid("a shading value is NaN or infinite");
     }
     if (indexed) {
@@ -1155,10 +1159,7 @@ RenderResult OffscreenRenderer::Impl::draw(const DrawRequest& r)
                     return invalid("index " + std::to_string(r.indices[i]) + " is not below the vertex count " +
                                    std::to_string(r.vertexCount));
     }
-    if (r.primitive == Primitive::kTriangles && !r.opaquePart &&
-        (m_opacity.rgb != nullptr || m_opacity.uniform.r < 1.0f || m_opacity.uniform.g < 1.0f ||
-         m_opacity.uniform.b < 1.0f ||
-         (textured && m_textures[m_currentTexture].hasAlpha)))
+    if (r.primitive == Primitive::kTriangles && !r.opaquePart && !opaqueFill(textured))
         return drawSplit(r, textured);
 
     // One colour, no lighting, no interpolation: positions only
@@ -1469,7 +1470,7 @@ bool OffscreenRenderer::Impl::StaticKey::operator==(const StaticKey& other) cons
     // The floats by their bits: what was derived from them is the same
     // only for the same bits.
     return serial == other.serial && vertexCount == other.vertexCount && triangleCount == other.triangleCount &&
-           flags == other.flags && interpolation == other.interpolation &&
+           flags == other.flags &&
            std::memcmp(stTransform, other.stTransform, sizeof stTransform) == 0 &&
            std::memcmp(color, other.color, sizeof color) == 0;
 }
@@ -1505,14 +1506,9 @@ bool OffscreenRenderer::Impl::drawKept(const StaticKey& key, const SurfaceShadin
         m_offerKey = key;
         return false;
     }
-    if (shading != nullptr) {
-        // Checked as Impl::draw checks them; a bad value takes the usual
-        // path, which reports it.
-        const float values[5] = {shading->ambientCoefficient, shading->specularColor[0], shading->specularColor[1],
-                                 shading->specularColor[2], shading->specularControl};
-        if (!allFinite(shading->localToWorld, 16) || !allFinite(values, 5))
-            return false;
-    }
+    // A bad shading value takes the usual path, which reports it.
+    if (shading != nullptr && !shadingFinite(*shading))
+        return false;
     try {
         if (shading != nullptr)
             m_shadings.reserve(m_shadings.size() + 1);
@@ -3233,10 +3229,11 @@ bool OffscreenRenderer::drawKept(const MeshView& mesh, const Shading& shading, c
     key.color[2] = shading.color.b;
     key.flags = std::uint8_t((shading.rgb != nullptr ? Impl::kKeyColors : 0) | (textured ? Impl::kKeyTextured : 0));
     if (shading.lit) {
-        // drawLit's normals follow the interpolation and the front's winding.
+        // drawLit's normals follow the front's winding and whether the
+        // interpolation is flat (lit at the vertices or at every pixel,
+        // the vertices are the same).
         key.flags |= Impl::kKeyLit | (shading.clockwiseFront ? Impl::kKeyClockwise : 0) |
                      (shading.surface.interpolation != 0 ? Impl::kKeySmooth : 0);
-        key.interpolation = std::uint8_t(std::clamp(shading.surface.interpolation, 0, 2));
     } else if (shading.smooth) {
         key.flags |= Impl::kKeySmooth;
     }

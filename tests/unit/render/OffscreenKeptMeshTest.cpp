@@ -225,6 +225,32 @@ TEST_F(OffscreenKeptMesh, AMeshDrawnAnotherWayIsNotDrawnFromWhatWasKeptForTheFir
     }
 }
 
+TEST_F(OffscreenKeptMesh, LightingAtEveryPixelDrawsTheVerticesKeptForLightingAtTheVertices)
+{
+    // The two interpolations that light smoothly give the same vertices;
+    // only the program differs, chosen per draw.
+    OffscreenRenderer reference;
+    OffscreenRenderer renderer;
+    Shading perPixel = litColoured();
+    perPixel.surface.illumination = 2;
+    perPixel.surface.interpolation = 2;
+    Shading perVertex = perPixel;
+    perVertex.surface.interpolation = 1;
+    const std::vector<std::uint8_t> expected =
+        frame(reference, [&](std::uint32_t) { ASSERT_TRUE(reference.draw(square(0), perPixel).ok()); });
+    const std::vector<std::uint8_t> vertexLit =
+        frame(reference, [&](std::uint32_t) { ASSERT_TRUE(reference.draw(square(0), perVertex).ok()); });
+    ASSERT_NE(expected, vertexLit);
+    for (int f = 0; f < 3; ++f)
+        frame(renderer, [&](std::uint32_t) { ASSERT_TRUE(renderer.draw(square(301), perVertex).ok()); });
+    const std::uint64_t kept = renderer.keptDraws();
+    ASSERT_EQ(kept, 1u);
+    const std::vector<std::uint8_t> drawn =
+        frame(renderer, [&](std::uint32_t) { ASSERT_TRUE(renderer.draw(square(301), perPixel).ok()); });
+    EXPECT_EQ(drawn, expected);
+    EXPECT_EQ(renderer.keptDraws(), kept + 1);
+}
+
 TEST_F(OffscreenKeptMesh, TranslucentMeshesAndMeshesWithoutASerialAreNeverKept)
 {
     OffscreenRenderer reference;
