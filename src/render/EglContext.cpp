@@ -218,6 +218,8 @@ public:
 
     ~EglContext() override
     {
+        if (renderingShutDown())
+            return;
         std::lock_guard<std::mutex> lock(detail::contextMutex());
         egl().DestroySurface(m_display, m_surface);
         egl().DestroyContext(m_display, m_context);
@@ -228,6 +230,8 @@ public:
     // ES has that API bound), with its display and surfaces.
     bool makeCurrent(std::uint8_t*) override
     {
+        if (renderingShutDown())
+            return false;
         const EglLibrary& l = egl();
         // GLVND refuses an EGL context while a GLX one is current.
         m_foreign = releaseWindowSystemContext(false, true);
@@ -241,6 +245,8 @@ public:
 
     void restorePrevious() override
     {
+        if (renderingShutDown())
+            return;
         const EglLibrary& l = egl();
         if (m_previousContext != EGL_NO_CONTEXT) {
             l.BindAPI(m_previousApi);

@@ -21,8 +21,10 @@
 
 #include "render/GlApi.h"
 
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 
 namespace q3 {
 namespace {
@@ -41,9 +43,33 @@ constexpr PinnedVariable kPinnedEnvironment[] = {
     {"GALLIUM_NOOP", nullptr},
 };
 
+std::atomic<bool> g_shutDown{false};
+
+void markRenderingShutDown()
+{
+    g_shutDown.store(true, std::memory_order_release);
+}
+
 } // namespace
 
+bool renderingShutDown()
+{
+    return g_shutDown.load(std::memory_order_acquire);
+}
+
 namespace detail {
+
+const char* const kShutDownMessage =
+    "the process is exiting and the rendering library has shut down (an exit handler or static object made "
+    "before Q3 first drew runs after it)";
+
+void watchProcessExit(ExitWatch stage)
+{
+    static std::once_flag registered[2];
+    // Two registrations at most: the list of exit handlers does not grow.
+    std::call_once(registered[stage == ExitWatch::kFirstContext ? 0 : 1],
+                   [] { std::atexit(markRenderingShutDown); });
+}
 
 std::mutex& contextMutex()
 {
@@ -111,8 +137,10 @@ RenderResult finishNewContext(std::unique_ptr<GlContext> context, std::uint8_t* 
         result = checkRenderer(reinterpret_cast<const char*>(glGetString(GL_RENDERER)), softwareExpected, backend);
     }
     context->restorePrevious();
-    if (result)
+    if (result) {
         out = std::move(context);
+        watchProcessExit(ExitWatch::kFirstContext);
+    }
     return result;
 }
 
@@ -207,6 +235,8 @@ RenderResult createGlContext(GlBackend backend, std::uint32_t width, std::uint32
                              std::unique_ptr<GlContext>& context, bool bgra)
 {
     context.reset();
+    if (renderingShutDown())
+        return RenderResult::failure(RenderStatus::kContextFailure, detail::kShutDownMessage);
     return backend == GlBackend::kEgl ? detail::createEglContext(width, height, image, bgra, context)
                                       : detail::createOsMesaContext(width, height, image, bgra, context);
 }

@@ -88,7 +88,27 @@ RenderResult createGlContext(GlBackend backend, std::uint32_t width, std::uint32
 /// skipped. Thread-safe otherwise.
 void pinRenderingEnvironment();
 
+/// True once the process's exit has reached Q3's exit handler (see
+/// detail::watchProcessExit): the rendering libraries' own exit handlers
+/// run next, after which no OpenGL call is safe. From then on no context is
+/// created, made current or destroyed (a context left is reclaimed by the
+/// exit itself), and a frame fails with kContextFailure.
+bool renderingShutDown();
+
 namespace detail {
+// Registers Q3's exit handler (renderingShutDown) once per `stage`: after
+// the process's first context is made (finishNewContext) and after its
+// first frame (OffscreenRenderer's flush), the two moments at which Mesa
+// registers its own (at screen creation, and lazily at a first draw).
+// Handlers run in the reverse order of registration, so Q3's runs before
+// Mesa's, and an application's handler registered before Q3 first drew
+// (a static C++ object made before main, an atexit call before
+// Q3Initialize) runs after both: its Q3 calls then fail cleanly instead of
+// calling into a library that has shut down.
+enum class ExitWatch { kFirstContext, kFirstFrame };
+void watchProcessExit(ExitWatch stage);
+// The message of a context refused by renderingShutDown.
+extern const char* const kShutDownMessage;
 // Serializes context creation and destruction, which touch the process-wide
 // llvmpipe screen (and the first time the environment).
 std::mutex& contextMutex();

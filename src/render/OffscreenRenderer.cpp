@@ -898,6 +898,8 @@ void OffscreenRenderer::Impl::lendContext()
 
 RenderResult OffscreenRenderer::Impl::acquireContext(std::uint32_t width, std::uint32_t height, bool bgra)
 {
+    if (renderingShutDown())
+        return RenderResult::failure(RenderStatus::kContextFailure, detail::kShutDownMessage);
     if (m_gl != nullptr && m_gl->width == width && m_gl->height == height && m_gl->bgra == bgra)
         return RenderResult::success();
     lendContext();
@@ -945,8 +947,10 @@ RenderResult OffscreenRenderer::Impl::acquireContext(std::uint32_t width, std::u
         ContextScope scope(*made->context, m_image.data());
         if (!scope.bound()) {
             result = RenderResult::failure(RenderStatus::kContextFailure,
-                                           std::string("making the ") + glBackendName(m_backend.backend) +
-                                               " context current failed");
+                                           renderingShutDown() ? std::string(detail::kShutDownMessage)
+                                                               : std::string("making the ") +
+                                                                     glBackendName(m_backend.backend) +
+                                                                     " context current failed");
         } else {
             glGetIntegerv(GL_MAX_VIEWPORT_DIMS, made->maxViewport);
             initializeState();
@@ -1654,7 +1658,9 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
         ContextScope scope(*m_gl->context, m_frameImage, m_frameRowPixels);
         if (!scope.bound()) {
             resetBatch();
-            return RenderResult::failure(RenderStatus::kContextFailure, "making the OpenGL context current failed");
+            return RenderResult::failure(RenderStatus::kContextFailure,
+                                         renderingShutDown() ? detail::kShutDownMessage
+                                                             : "making the OpenGL context current failed");
         }
         bindFrameFramebuffer();
         if (!m_clearedInGl) {
@@ -1848,6 +1854,8 @@ RenderResult OffscreenRenderer::Impl::flush(bool finish)
                                            std::string("OpenGL reported ") + glErrorName(error));
     }
     resetBatch();
+    if (finish && result)
+        detail::watchProcessExit(detail::ExitWatch::kFirstFrame);
     return result;
 }
 

@@ -78,12 +78,16 @@ public:
 
     ~OsMesaContext() override
     {
+        if (renderingShutDown())
+            return;
         std::lock_guard<std::mutex> lock(detail::contextMutex());
         osMesa().DestroyContext(m_context);
     }
 
     bool makeCurrent(std::uint8_t* image) override
     {
+        if (renderingShutDown())
+            return false;
         const OsMesaLibrary& l = osMesa();
         // With an application's EGL or GLX context current, Mesa's current
         // context is that one, which OSMesaGetCurrentContext would take for
@@ -102,6 +106,8 @@ public:
 
     void restorePrevious() override
     {
+        if (renderingShutDown())
+            return;
         const OsMesaLibrary& l = osMesa();
         if (m_previous != nullptr)
             l.MakeCurrent(m_previous, m_previousBuffer, GLenum(m_previousType), m_previousWidth, m_previousHeight);

@@ -13,6 +13,13 @@
  * destroyed before the handler runs. Under AddressSanitizer (CI) a use after
  * free would stop the program; the exit status says whether every call
  * behaved.
+ *
+ * Built a second time with MY_HANDLER_FIRST: the handler is registered
+ * before Q3Initialize, as a C++ program's static objects' destructors are
+ * (before main). It then runs after the exit handlers of the rendering
+ * library Q3 loaded at the first draw (Mesa's), when no OpenGL call is
+ * safe: its draw must fail with an error posted, not crash, and the rest of
+ * its calls must work as in the first build.
  */
 #include <QD3D.h>
 #include <QD3DCamera.h>
@@ -32,6 +39,12 @@
 #include "LegacyCommon.h"
 
 const char *gMyProgramName = "ExitCleanup";
+
+#ifdef MY_HANDLER_FIRST
+#define MY_RENDERER kQ3RendererTypeInteractive
+#else
+#define MY_RENDERER kQ3RendererTypeWireFrame
+#endif
 
 static TQ3ViewObject gView = NULL;
 static TQ3DrawContextObject gContext = NULL;
@@ -87,20 +100,31 @@ static void MyCleanUp(void)
     TQ3GroupObject again = MyMakeScene();
     long lit = again == NULL ? -1 : MyDraw(again);
 
-    if (lit <= 0) {
-        printf("ExitCleanup: drawing in the atexit handler failed (%ld pixels)\n", lit);
+#ifdef MY_HANDLER_FIRST
+    if (again == NULL || lit != -1 || Q3Error_Get(NULL) != kQ3ErrorRenderingLoopFailed) {
+        printf("ExitCleanup: a draw after Mesa's exit handlers did not fail with an error (%ld pixels)\n", lit);
+        fflush(stdout);
         _Exit(1);
     }
+#else
+    if (lit <= 0) {
+        printf("ExitCleanup: drawing in the atexit handler failed (%ld pixels)\n", lit);
+        fflush(stdout);
+        _Exit(1);
+    }
+#endif
     Q3Object_Dispose(again);
     Q3Object_Dispose(gScene);
     if (Q3Object_Dispose(NULL) != kQ3Failure || Q3Error_Get(NULL) != kQ3ErrorNULLParameter) {
         printf("ExitCleanup: an error posted in the atexit handler was not seen\n");
+        fflush(stdout);
         _Exit(1);
     }
     Q3Object_Dispose(gView);
     Q3Object_Dispose(gContext);
     if (Q3Exit() != kQ3Success) {
         printf("ExitCleanup: Q3Exit failed\n");
+        fflush(stdout);
         _Exit(1);
     }
 }
@@ -109,6 +133,10 @@ int main(void)
 {
     TQ3CameraObject camera;
 
+#ifdef MY_HANDLER_FIRST
+    if (atexit(MyCleanUp) != 0)
+        return 1;
+#endif
     if (Q3Initialize() != kQ3Success)
         return 1;
     gContext = MyNewARGBDrawContext(gPixels, 64, 64);
@@ -119,13 +147,15 @@ int main(void)
         return 1;
     Q3View_SetDrawContext(gView, gContext);
     Q3View_SetCamera(gView, camera);
-    Q3View_SetRendererByType(gView, kQ3RendererTypeWireFrame);
+    Q3View_SetRendererByType(gView, MY_RENDERER);
     Q3Object_Dispose(camera);
     if (MyDraw(gScene) <= 0 || Q3Object_Dispose(NULL) != kQ3Failure) {
         printf("ExitCleanup: drawing in main failed\n");
         return 1;
     }
+#ifndef MY_HANDLER_FIRST
     if (atexit(MyCleanUp) != 0)
         return 1;
+#endif
     return 0;
 }
