@@ -649,6 +649,7 @@ public:
     bool drawKept(const StaticKey& key, const SurfaceShading* shading, RenderResult& result);
     void withdrawOffer() { m_offer = false; }
     std::uint64_t m_keptDraws = 0; // drawKept's draws, for tests
+    std::size_t m_keptLimits[2] = {kKeptVertexLimit, kKeptIndexLimit}; // setKeptLimits
     // Whether the frame's current opacity and texture let its filled
     // triangles be drawn opaque, unsplit (Impl::draw).
     bool opaqueFill(bool textured) const
@@ -690,8 +691,8 @@ private:
     // and empties the kept buffers after one ran out of room (to be filled
     // again, larger, by the meshes drawn from then on).
     void trimKept();
-    // The most vertices and indices kept per context; meshes beyond are
-    // drawn from the batch each frame.
+    // The most vertices and indices kept per context (meshes beyond are
+    // drawn from the batch each frame), and the buffers' first capacity.
     static constexpr std::size_t kKeptVertexLimit = std::size_t(1) << 20;
     static constexpr std::size_t kKeptIndexLimit = std::size_t(1) << 22;
     static constexpr std::size_t kKeptInitialVertices = std::size_t(1) << 15;
@@ -742,6 +743,7 @@ public:
         std::size_t keptAllocated[2] = {0, 0};
         std::size_t keptUsed[2] = {0, 0};
         std::size_t keptDemand[2] = {0, 0}; // what did not fit
+        std::size_t keptLive[2] = {0, 0};   // what the stored meshes use
         bool keptFull = false;
         std::uint64_t frameNumber = 0; // frames begun with this context
         const Impl* lender = nullptr;  // in the pool: the renderer that lent it
@@ -1550,23 +1552,29 @@ void OffscreenRenderer::Impl::storePendingKept()
         if (kept == nullptr || kept->state != KeptMesh::State::kPending)
             continue;
         kept->state = KeptMesh::State::kSeen;
+        const std::size_t* limits = m_keptLimits;
         if (gl.keptCapacity[0] == 0) {
-            gl.keptCapacity[0] = kKeptInitialVertices;
-            gl.keptCapacity[1] = kKeptInitialIndices;
+            gl.keptCapacity[0] = std::min(kKeptInitialVertices, limits[0]);
+            gl.keptCapacity[1] = std::min(kKeptInitialIndices, limits[1]);
         }
         const std::size_t counts[2] = {pending.vertexCount, std::size_t(pending.indexCount)};
-        const std::size_t limits[2] = {kKeptVertexLimit, kKeptIndexLimit};
         bool fits = true;
         bool couldFit = true;
+        bool grows = false; // the buffers may still grow
+        bool room = true;   // emptying them would make room for it
         for (int k = 0; k < 2; ++k) {
             fits = fits && gl.keptUsed[k] + counts[k] <= gl.keptCapacity[k];
             couldFit = couldFit && counts[k] <= limits[k];
+            grows = grows || gl.keptCapacity[k] < limits[k];
+            room = room && gl.keptLive[k] + gl.keptDemand[k] + counts[k] <= gl.keptCapacity[k];
         }
         if (!fits) {
-            // Emptied and grown at the next frame's start, unless it can
-            // never fit or the buffers are as large as they get (the mesh
-            // is then drawn from the batch each frame).
-            if (couldFit && (gl.keptCapacity[0] < kKeptVertexLimit || gl.keptCapacity[1] < kKeptIndexLimit)) {
+            // Emptied (and grown, up to the limits) at the next frame's
+            // start, unless it can never fit, or the buffers are as large as
+            // they get and what the stored meshes still use leaves no room
+            // (forgotten meshes leave space behind that only emptying
+            // reclaims): the mesh is then drawn from the batch each frame.
+            if (couldFit && (grows || room)) {
                 gl.keptFull = true;
                 gl.keptDemand[0] += counts[0];
                 gl.keptDemand[1] += counts[1];
@@ -1602,8 +1610,10 @@ void OffscreenRenderer::Impl::storePendingKept()
         kept->firstIndex = GLuint(gl.keptUsed[1]);
         kept->indexCount = pending.indexCount;
         kept->state = KeptMesh::State::kStored;
-        gl.keptUsed[0] += counts[0];
-        gl.keptUsed[1] += counts[1];
+        for (int k = 0; k < 2; ++k) {
+            gl.keptUsed[k] += counts[k];
+            gl.keptLive[k] += counts[k];
+        }
     }
     m_pendingKept.clear();
 }
@@ -1615,12 +1625,12 @@ void OffscreenRenderer::Impl::trimKept()
         // Emptied and grown to hold what was kept and what did not fit (at
         // least twice as much); the meshes it held are kept again the next
         // time they are drawn.
-        const std::size_t limits[2] = {kKeptVertexLimit, kKeptIndexLimit};
         for (int k = 0; k < 2; ++k) {
             gl.keptCapacity[k] =
-                std::min(limits[k], std::max(2 * gl.keptCapacity[k], gl.keptUsed[k] + gl.keptDemand[k]));
+                std::min(m_keptLimits[k], std::max(2 * gl.keptCapacity[k], gl.keptUsed[k] + gl.keptDemand[k]));
             gl.keptUsed[k] = 0;
             gl.keptDemand[k] = 0;
+            gl.keptLive[k] = 0;
         }
         for (auto& [serial, meshes] : gl.kept)
             for (KeptMesh& mesh : meshes)
@@ -1631,10 +1641,19 @@ void OffscreenRenderer::Impl::trimKept()
     if (gl.frameNumber % kStaleFrames != 0)
         return;
     // Meshes no frame drew for kStaleFrames frames (their room is used
-    // again after the next emptying).
+    // again after the next emptying, which a mesh that does not fit asks
+    // for).
     for (auto it = gl.kept.begin(); it != gl.kept.end();) {
         std::vector<KeptMesh>& meshes = it->second;
-        const auto stale = [&](const KeptMesh& mesh) { return gl.frameNumber - mesh.lastFrame > kStaleFrames; };
+        const auto stale = [&](const KeptMesh& mesh) {
+            if (gl.frameNumber - mesh.lastFrame <= kStaleFrames)
+                return false;
+            if (mesh.state == KeptMesh::State::kStored) {
+                gl.keptLive[0] -= mesh.vertexCount;
+                gl.keptLive[1] -= std::size_t(mesh.indexCount);
+            }
+            return true;
+        };
         meshes.erase(std::remove_if(meshes.begin(), meshes.end(), stale), meshes.end());
         it = meshes.empty() ? gl.kept.erase(it) : std::next(it);
     }
@@ -3213,6 +3232,12 @@ bool OffscreenRenderer::drewInPlace() const
 std::uint64_t OffscreenRenderer::keptDraws() const
 {
     return m_impl->m_keptDraws;
+}
+
+void OffscreenRenderer::setKeptLimits(std::size_t vertices, std::size_t indices)
+{
+    m_impl->m_keptLimits[0] = std::max<std::size_t>(vertices, 1);
+    m_impl->m_keptLimits[1] = std::max<std::size_t>(indices, 1);
 }
 
 bool OffscreenRenderer::drawKept(const MeshView& mesh, const Shading& shading, const float* st, RenderResult& result)

@@ -229,6 +229,10 @@ public:
     /// triangles from vertex data its context kept from an earlier frame
     /// (OffscreenRenderer.cpp, StaticKey), for tests.
     std::uint64_t keptDraws() const;
+    /// For tests: the most vertices and indices this renderer keeps in its
+    /// context (at least 1 each; 2^20 and 2^22 unless set), so that a test
+    /// reaches the limits with small meshes.
+    void setKeptLimits(std::size_t vertices, std::size_t indices);
 
 private:
     class Impl;

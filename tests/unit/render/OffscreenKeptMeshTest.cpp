@@ -5,8 +5,9 @@
 // serial drawn again the same way is drawn from what the context kept, with
 // exactly the image the usual path gives; a mesh drawn another way (colour,
 // uv transform, lighting), a translucent one and one without a serial are
-// not; and many meshes, more than the kept buffers first hold, still draw
-// right while the buffers are emptied and grown.
+// not; many meshes, more than the kept buffers first hold, still draw
+// right while the buffers are emptied and grown; and at the buffers' limit,
+// meshes no longer drawn give their room to the meshes drawn now.
 
 #include "render/OffscreenRenderer.h"
 
@@ -324,6 +325,57 @@ TEST_F(OffscreenKeptMesh, MoreMeshesThanTheKeptBuffersFirstHoldStillDrawRight)
     for (int f = 0; f < 6; ++f)
         EXPECT_EQ(draw(renderer, true), expected) << "frame " << f;
     EXPECT_GE(renderer.keptDraws(), std::uint64_t(kMeshes));
+}
+
+TEST_F(OffscreenKeptMesh, MeshesForgottenAtTheLimitLeaveTheirRoomToTheMeshesDrawnNow)
+{
+    // The kept buffers limited to four squares. Four squares are kept; then
+    // only four others are drawn. Once the first four are forgotten (no frame
+    // drew them for 64 frames: at most 128 frames later), the buffers, as
+    // large as they get, are emptied for the four drawn now, which are then
+    // kept, and every frame is still the image of the usual path.
+    // An image size no other test uses, so that the renderers take a context
+    // of their own from the process's pool, and serials no other mesh has.
+    constexpr int kSquares = 4;
+    constexpr std::uint32_t kImage = 19;
+    using Serials = std::array<std::uint64_t, kSquares>;
+    const Serials none{};
+    Serials first, second;
+    for (Serials* serials : {&first, &second})
+        for (std::uint64_t& serial : *serials)
+            serial = Mesh::newSerial();
+    const auto draw = [&](OffscreenRenderer& renderer, const Serials& serials) {
+        return frame(
+            renderer,
+            [&](std::uint32_t) {
+                for (std::uint64_t serial : serials)
+                    ASSERT_TRUE(renderer.draw(square(serial), litColoured()).ok());
+            },
+            kImage);
+    };
+    OffscreenRenderer reference;
+    const std::vector<std::uint8_t> expected = draw(reference, none);
+    ASSERT_TRUE(anyLit(expected));
+    OffscreenRenderer renderer;
+    renderer.setKeptLimits(4 * kSquares, 6 * kSquares);
+    for (int f = 0; f < 3; ++f)
+        EXPECT_EQ(draw(renderer, first), expected);
+    ASSERT_EQ(renderer.keptDraws(), std::uint64_t(kSquares)) << "the first four are kept at the third frame";
+    int framesUntilKept = -1;
+    for (int f = 0; f < 140; ++f) {
+        const std::uint64_t before = renderer.keptDraws();
+        EXPECT_EQ(draw(renderer, second), expected) << "frame " << f;
+        if (renderer.keptDraws() - before == std::uint64_t(kSquares)) {
+            framesUntilKept = f;
+            break;
+        }
+        EXPECT_EQ(renderer.keptDraws(), before) << "frame " << f;
+    }
+    EXPECT_GT(framesUntilKept, 60) << "the first four are not forgotten before 64 frames";
+    EXPECT_LT(framesUntilKept, 140) << "the four drawn now are never kept";
+    const std::uint64_t kept = renderer.keptDraws();
+    EXPECT_EQ(draw(renderer, second), expected);
+    EXPECT_EQ(renderer.keptDraws(), kept + kSquares);
 }
 
 } // namespace
