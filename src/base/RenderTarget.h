@@ -295,12 +295,20 @@ struct Shading {
     /// kNoTexture: untextured.
     const float* st = nullptr;
     std::uint32_t texture = kNoTexture;
-    /// The uv transform `st` was computed with from the mesh's uvs (the
-    /// first two columns of QuickDraw 3D's 3 x 3 matrix, row by row: s and
-    /// t of (u, v, 1) times it, before t is counted down): with the mesh's
-    /// serial (MeshView::serial) and the other fields here, it says all
-    /// that the arrays were derived from, so that a backend may keep its
-    /// vertex data for a mesh drawn again the same way.
+    /// Instead of `st` (which wins when both are set): the mesh's own uvs
+    /// (u v per vertex, every one finite), from which the backend computes
+    /// the coordinates itself with `stTransform`, exactly as
+    /// s = u m[0] + v m[2] + m[4], t = 1 - (u m[1] + v m[3] + m[5]) in
+    /// float; so a backend drawing a mesh from the vertex data it kept need
+    /// not compute them at all.
+    const float* uvs = nullptr;
+    /// The uv transform `st` was computed with from the mesh's uvs, or
+    /// `uvs` are to be (the first two columns of QuickDraw 3D's 3 x 3
+    /// matrix, row by row: s and t of (u, v, 1) times it, before t is
+    /// counted down): with the mesh's serial (MeshView::serial) and the
+    /// other fields here, it says all that the arrays were derived from, so
+    /// that a backend may keep its vertex data for a mesh drawn again the
+    /// same way.
     float stTransform[6] = {1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f};
     /// The opacity of the filled triangles' vertices (OpacitySetup: `rgb`
     /// null or r g b per vertex of the mesh).

@@ -59,6 +59,14 @@ std::size_t MemoryStorage::read(std::size_t offset, std::size_t count, unsigned 
     return n;
 }
 
+const unsigned char* MemoryStorage::inPlace(std::size_t offset, std::size_t count) const
+{
+    if (offset > m_valid || count > m_valid - offset)
+        return nullptr;
+    const unsigned char* bytes = m_borrowed != nullptr ? m_borrowed : m_owned.data();
+    return bytes + offset;
+}
+
 std::size_t MemoryStorage::write(std::size_t offset, std::size_t count, const unsigned char* in)
 {
     if (count == 0)

@@ -26,6 +26,10 @@ public:
     virtual std::size_t size() const = 0;
     /// Copies up to `count` bytes from `offset`; the number copied.
     virtual std::size_t read(std::size_t offset, std::size_t count, unsigned char* out) const = 0;
+    /// The `count` bytes from `offset` where they already lie in memory,
+    /// valid until the storage next changes; null where they do not (a
+    /// file) or are not all there.
+    virtual const unsigned char* inPlace(std::size_t, std::size_t) const { return nullptr; }
     /// Writes `count` bytes at `offset`, growing the storage; the number
     /// written (fewer only for a caller's buffer that is full).
     virtual std::size_t write(std::size_t offset, std::size_t count, const unsigned char* in) = 0;
@@ -62,6 +66,7 @@ public:
 
     std::size_t size() const override { return m_valid; }
     std::size_t read(std::size_t offset, std::size_t count, unsigned char* out) const override;
+    const unsigned char* inPlace(std::size_t offset, std::size_t count) const override;
     std::size_t write(std::size_t offset, std::size_t count, const unsigned char* in) override;
     void replaceAll(const std::vector<unsigned char>& bytes) override;
 

@@ -71,7 +71,7 @@ Image imageOf(const Texture& texture)
                                                                                                        : 2;
     for (std::uint32_t y = 0; y < pixels.height; ++y)
         for (std::uint32_t x = 0; x < pixels.width; ++x) {
-            const unsigned char* p = pixels.bytes.data() + y * pixels.rowBytes + std::size_t(x) * bytes;
+            const unsigned char* p = pixels.data() + y * pixels.rowBytes + std::size_t(x) * bytes;
             std::uint32_t word = 0;
             for (int b = 0; b < bytes; ++b)
                 word = pixels.byteOrder == kQ3EndianBig ? (word << 8) | p[b] : word | (std::uint32_t(p[b]) << (8 * b));

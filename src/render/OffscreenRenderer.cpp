@@ -3240,13 +3240,12 @@ void OffscreenRenderer::setKeptLimits(std::size_t vertices, std::size_t indices)
     m_impl->m_keptLimits[1] = std::max<std::size_t>(indices, 1);
 }
 
-bool OffscreenRenderer::drawKept(const MeshView& mesh, const Shading& shading, const float* st, RenderResult& result)
+bool OffscreenRenderer::drawKept(const MeshView& mesh, const Shading& shading, bool textured, RenderResult& result)
 {
     constexpr std::size_t kMax = std::numeric_limits<std::uint32_t>::max();
     if (mesh.serial == 0 || mesh.triangleCount == 0 || mesh.vertexCount > kMax || mesh.triangleCount > kMax / 3 ||
         !m_impl->m_inFrame)
         return false;
-    const bool textured = st != nullptr;
     // Only opaque, unsplit draws (translucent triangles are sorted per
     // frame).
     if (!m_impl->opaqueFill(textured))

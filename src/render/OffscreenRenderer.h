@@ -245,7 +245,7 @@ private:
     // Draws the filled triangles of a mesh with a serial from the vertex
     // data its context kept (true, the outcome in `result`), else offers
     // the draw that follows to be kept (false).
-    bool drawKept(const MeshView& mesh, const Shading& shading, const float* st, RenderResult& result);
+    bool drawKept(const MeshView& mesh, const Shading& shading, bool textured, RenderResult& result);
     // Withdraws an offer the draw did not take.
     void endKeptOffer();
     RenderResult drawLit(const MeshView& mesh, const Shading& shading, const float* st);
@@ -256,6 +256,7 @@ private:
     std::vector<float> m_litColors;
     std::vector<float> m_litST;
     std::vector<float> m_litOpacity;
+    std::vector<float> m_uvST; // drawFilled: Shading::uvs through the uv transform
 };
 
 } // namespace q3

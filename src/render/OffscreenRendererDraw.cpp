@@ -128,8 +128,8 @@ RenderResult OffscreenRenderer::drawSegments(const MeshView& mesh, const Shading
 
 RenderResult OffscreenRenderer::drawFilled(const MeshView& mesh, const Shading& shading)
 {
-    const float* st = shading.texture != kNoTexture ? shading.st : nullptr;
-    if (st != nullptr) {
+    const bool textured = shading.texture != kNoTexture && (shading.st != nullptr || shading.uvs != nullptr);
+    if (textured) {
         const RenderResult used = useTexture(shading.texture);
         if (!used)
             return used;
@@ -138,8 +138,20 @@ RenderResult OffscreenRenderer::drawFilled(const MeshView& mesh, const Shading& 
     if (!opacity)
         return opacity;
     RenderResult kept;
-    if (drawKept(mesh, shading, st, kept))
+    if (drawKept(mesh, shading, textured, kept))
         return kept;
+    const float* st = textured ? shading.st : nullptr;
+    if (textured && st == nullptr) {
+        // Shading::uvs through the uv transform, as the view would have.
+        const float* m = shading.stTransform;
+        m_uvST.resize(2 * mesh.vertexCount);
+        for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
+            const float u = shading.uvs[2 * i], v = shading.uvs[2 * i + 1];
+            m_uvST[2 * i] = u * m[0] + v * m[2] + m[4];
+            m_uvST[2 * i + 1] = 1.0f - (u * m[1] + v * m[3] + m[5]);
+        }
+        st = m_uvST.data();
+    }
     const RenderResult drawn =
         shading.lit ? drawLit(mesh, shading, st)
                     : drawElements(DrawMode::kTriangles, mesh.positions, shading.rgb, mesh.vertexCount, mesh.triangles,

@@ -66,13 +66,18 @@ const Storage& storageOf(TQ3StorageObject image)
 }
 
 TexturePixels readPixels(TQ3StorageObject image, std::size_t offset, unsigned long width, unsigned long height,
-                         unsigned long rowBytes, TQ3PixelType pixelType, TQ3Endian byteOrder)
+                         unsigned long rowBytes, TQ3PixelType pixelType, TQ3Endian byteOrder, PixelAccess access)
 {
     TexturePixels pixels;
     const std::size_t bytes = std::size_t(rowBytes) * height;
-    pixels.bytes.resize(bytes);
     const Storage& storage = storageOf(image);
-    const std::size_t read = storage.size() >= offset ? storage.read(offset, bytes, pixels.bytes.data()) : 0;
+    if (access == PixelAccess::kInPlace)
+        pixels.inPlace = storage.inPlace(offset, bytes);
+    std::size_t read = bytes;
+    if (pixels.inPlace == nullptr) {
+        pixels.bytes.resize(bytes);
+        read = storage.size() >= offset ? storage.read(offset, bytes, pixels.bytes.data()) : 0;
+    }
     if (read < bytes)
         fail(kQ3ErrorInvalidData, "the texture's storage now holds " + text(storage.size()) + " bytes, fewer than the " +
                                       text(offset + bytes) + " its image needs");
@@ -108,11 +113,11 @@ void PixmapTexture::check(const TQ3StoragePixmap& pixmap)
     checkImage(pixmap.width, pixmap.height, pixmap.rowBytes, 0, bits, storage.size(), "pixmap");
 }
 
-TexturePixels PixmapTexture::readImage() const
+TexturePixels PixmapTexture::readImage(PixelAccess access) const
 {
     const TQ3StoragePixmap& pixmap = held();
     return readPixels(pixmap.image, 0, pixmap.width, pixmap.height, pixmap.rowBytes, pixmap.pixelType,
-                      pixmap.byteOrder);
+                      pixmap.byteOrder, access);
 }
 
 unsigned MipmapTexture::imageCount(const TQ3Mipmap& mipmap)
@@ -158,15 +163,15 @@ void MipmapTexture::check(const TQ3Mipmap& mipmap)
     }
 }
 
-TexturePixels MipmapTexture::readImage() const
+TexturePixels MipmapTexture::readImage(PixelAccess access) const
 {
     const TQ3Mipmap& mipmap = held();
     const TQ3MipmapImage& first = mipmap.mipmaps[0];
     return readPixels(mipmap.image, first.offset, first.width, first.height, first.rowBytes, mipmap.pixelType,
-                      mipmap.byteOrder);
+                      mipmap.byteOrder, access);
 }
 
-std::vector<TexturePixels> MipmapTexture::readMipmaps() const
+std::vector<TexturePixels> MipmapTexture::readMipmaps(PixelAccess access) const
 {
     std::vector<TexturePixels> images;
     const TQ3Mipmap& mipmap = held();
@@ -174,7 +179,7 @@ std::vector<TexturePixels> MipmapTexture::readMipmaps() const
     for (unsigned i = 1; i < count; ++i) {
         const TQ3MipmapImage& image = mipmap.mipmaps[i];
         images.push_back(readPixels(mipmap.image, image.offset, image.width, image.height, image.rowBytes,
-                                    mipmap.pixelType, mipmap.byteOrder));
+                                    mipmap.pixelType, mipmap.byteOrder, access));
     }
     return images;
 }

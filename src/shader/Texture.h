@@ -25,13 +25,22 @@ extern const ClassInfo kMipmapTextureClass;
 /// bytes, top row first, each pixel a word of pixelType's layout stored in
 /// byteOrder. The fields obey the texture's data rules.
 struct TexturePixels {
+    /// A copy of the bytes, unless `inPlace` is set.
     std::vector<unsigned char> bytes;
+    /// Read with PixelAccess::kInPlace from a storage holding them in
+    /// memory: the storage's own bytes, valid until the storage changes.
+    const unsigned char* inPlace = nullptr;
+    const unsigned char* data() const { return inPlace != nullptr ? inPlace : bytes.data(); }
     std::uint32_t width = 0;
     std::uint32_t height = 0;
     std::size_t rowBytes = 0;
     TQ3PixelType pixelType = kQ3PixelTypeARGB32;
     TQ3Endian byteOrder = kQ3EndianBig;
 };
+
+/// How a texture's images are read: copied, or where the storage holds them
+/// in memory, pointed to (for a caller that uses them at once).
+enum class PixelAccess { kCopy, kInPlace };
 
 /// Every texture. Invariant: its data obeys QD3DShader.h's data rules (which
 /// the constructors and setters check before changing anything) and it holds
@@ -45,11 +54,11 @@ public:
     virtual unsigned long height() const = 0;
     /// The first image, read from the storage now; throws
     /// kQ3ErrorInvalidData when the storage no longer holds it.
-    virtual TexturePixels readImage() const = 0;
+    virtual TexturePixels readImage(PixelAccess access = PixelAccess::kCopy) const = 0;
     /// The images after the first (a mipmap chain's smaller ones, each half
     /// the one before, down to 1 x 1), read now; none for a texture of one
     /// image. Throws as readImage.
-    virtual std::vector<TexturePixels> readMipmaps() const { return {}; }
+    virtual std::vector<TexturePixels> readMipmaps(PixelAccess = PixelAccess::kCopy) const { return {}; }
 
 protected:
     Texture() = default;
@@ -92,7 +101,7 @@ public:
     const ClassInfo& classInfo() const override { return kPixmapTextureClass; }
     unsigned long width() const override { return held().width; }
     unsigned long height() const override { return held().height; }
-    TexturePixels readImage() const override;
+    TexturePixels readImage(PixelAccess access) const override;
 
     TQ3StoragePixmap pixmap() const { return described(); }
     void setPixmap(const TQ3StoragePixmap& pixmap) { describe(pixmap); }
@@ -110,9 +119,9 @@ public:
     const ClassInfo& classInfo() const override { return kMipmapTextureClass; }
     unsigned long width() const override { return held().mipmaps[0].width; }
     unsigned long height() const override { return held().mipmaps[0].height; }
-    TexturePixels readImage() const override;
+    TexturePixels readImage(PixelAccess access) const override;
     /// With useMipmapping, mipmaps[1] onwards.
-    std::vector<TexturePixels> readMipmaps() const override;
+    std::vector<TexturePixels> readMipmaps(PixelAccess access) const override;
 
     /// How many images the data rules read: 1, or with useMipmapping one
     /// more than log2 of the first image's larger side.

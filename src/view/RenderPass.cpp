@@ -155,7 +155,7 @@ float opacityOf(float channel)
 TextureLevel levelOf(const TexturePixels& pixels)
 {
     TextureLevel level;
-    level.pixels = pixels.bytes.data();
+    level.pixels = pixels.data();
     level.layout.width = pixels.width;
     level.layout.height = pixels.height;
     level.layout.rowBytes = std::uint32_t(pixels.rowBytes);
@@ -227,9 +227,14 @@ std::uint32_t RenderPass::loadTexture(const TextureChoice& choice)
             break;
         }
     if (loaded == nullptr) {
-        const TexturePixels pixels = texture.readImage();
-        const std::vector<TexturePixels> mipmaps =
-            m_style.textureFilter == TextureFilter::kTrilinear ? texture.readMipmaps() : std::vector<TexturePixels>{};
+        // Read in place where the storage holds them in memory: the target
+        // compares them with what it keeps, or copies them, before
+        // addTexture returns, so a frame of unchanged textures copies
+        // nothing.
+        const TexturePixels pixels = texture.readImage(PixelAccess::kInPlace);
+        const std::vector<TexturePixels> mipmaps = m_style.textureFilter == TextureFilter::kTrilinear
+                                                       ? texture.readMipmaps(PixelAccess::kInPlace)
+                                                       : std::vector<TexturePixels>{};
         const TextureLevel top = levelOf(pixels);
         TextureImage image{top.pixels, top.layout, choice.clampS, choice.clampT, m_style.textureFilter, {}};
         for (const TexturePixels& mipmap : mipmaps)
@@ -243,15 +248,25 @@ std::uint32_t RenderPass::loadTexture(const TextureChoice& choice)
     return loaded->id;
 }
 
-const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureChoice& choice, std::uint32_t& id)
+const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureChoice& choice, std::uint32_t& id,
+                                            bool& transformed)
 {
     id = kNoTexture;
+    transformed = false;
     if (choice.texture == nullptr || mesh.uvs == nullptr)
         return nullptr;
+    bool complete = true;
+    for (std::size_t i = 0; complete && i < mesh.vertexCount; ++i)
+        complete = mesh.uvs[2 * i] == mesh.uvs[2 * i];
+    if (complete) {
+        id = loadTexture(choice);
+        return id == kNoTexture ? nullptr : mesh.uvs;
+    }
     // (u, v, 1) times the uv transform (its third column unused); the target's
     // t runs down the image from its top row, v up from its bottom row. A
     // vertex without a uv (NaN) gets (0, 0) if no triangle uses it; a
     // triangle that does leaves the mesh untextured.
+    transformed = true;
     const TQ3Matrix3x3& m = choice.uvTransform;
     m_st.resize(2 * mesh.vertexCount);
     bool lacking = false;
@@ -281,11 +296,12 @@ void RenderPass::drawFilled(const MeshView& mesh, const Shading& base, const Att
     Shading shading = base;
     // A texture takes the place of the diffuse colour.
     std::uint32_t id = kNoTexture;
-    const float* st = textureCoordinates(mesh, texture, id);
+    bool transformed = false;
+    const float* st = textureCoordinates(mesh, texture, id, transformed);
     if (st != nullptr) {
         shading.rgb = nullptr;
         shading.color = RgbColor{1.0f, 1.0f, 1.0f};
-        shading.st = st;
+        (transformed ? shading.st : shading.uvs) = st;
         shading.texture = id;
         const TQ3Matrix3x3& m = texture.uvTransform;
         const float transform[6] = {m.value[0][0], m.value[0][1], m.value[1][0],

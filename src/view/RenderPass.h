@@ -117,12 +117,16 @@ private:
     /// when there is none. Throws kQ3ErrorInvalidData when the texture's
     /// storage no longer holds its image.
     std::uint32_t loadTexture(const TextureChoice& texture);
-    /// The texture coordinates of the mesh's vertices under `texture`: each
+    /// The texture coordinates of the mesh's vertices under `texture`, with
+    /// the target's number for the texture in `id`: where every vertex has
+    /// a uv, the mesh's uvs themselves (`transformed` false: the target
+    /// puts them through the uv transform, Shading::uvs); else each
     /// vertex's uv through the uv transform, v turned to run down the image
-    /// (0 for a vertex no triangle uses that has none), with the target's
-    /// number for the texture in `id`; null (untextured, id kNoTexture)
-    /// without a texture or when a triangle's vertex has no uv.
-    const float* textureCoordinates(const MeshView& mesh, const TextureChoice& texture, std::uint32_t& id);
+    /// (0 for a vertex no triangle uses that has none; `transformed`
+    /// true). Null (untextured, id kNoTexture) without a texture or when a
+    /// triangle's vertex has no uv.
+    const float* textureCoordinates(const MeshView& mesh, const TextureChoice& texture, std::uint32_t& id,
+                                    bool& transformed);
 
     RenderTarget& m_target;
     RenderStyle m_style;

@@ -289,6 +289,53 @@ TEST_F(TextureRenderTest, AMipmapTextureShowsItsFirstImage)
               300);
 }
 
+TEST_F(TextureRenderTest, TexelsChangedInTheCallersBufferOrThroughTheStorageAreDrawnInTheNextFrame)
+{
+    // A texture in the caller's buffer (Q3MemoryStorage_NewBuffer: used in
+    // place), drawn; its bytes then changed in the buffer itself, with no
+    // call; then replaced through the storage. Each frame shows the texels
+    // the storage holds then.
+    TQ3GeometryObject mesh = quad();
+    std::vector<unsigned char> buffer = textureBytes();
+    const unsigned long size = static_cast<unsigned long>(buffer.size());
+    TQ3StorageObject storage = own(Q3MemoryStorage_NewBuffer(buffer.data(), size, size));
+    const TQ3StoragePixmap pixmap{storage, kTexW, kTexH, 3 * kTexW, 24, kQ3PixelTypeRGB24, kQ3EndianBig, kQ3EndianBig};
+    TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
+    ASSERT_NE(shader, nullptr);
+    const auto draw = [&] {
+        return render([&](TQ3ViewObject v) {
+            EXPECT_EQ(Q3Shader_Submit(shader, v), kQ3Success);
+            EXPECT_EQ(Q3Geometry_Submit(mesh, v), kQ3Success);
+        });
+    };
+    // Every pixel the rule decides shows its texel, inverted or not.
+    const auto expectFrame = [&](const Pixmap& image, bool inverted, const char* what) {
+        int checked = 0;
+        for (int py = 0; py < kHeight; ++py)
+            for (int px = 0; px < kWidth; ++px) {
+                Rgba want{};
+                if (!expectedTexel(px, py, UVMap{}, want))
+                    continue;
+                ++checked;
+                if (inverted)
+                    want = Rgba{255 - want.r, 255 - want.g, 255 - want.b, 255};
+                const Rgba got = image.at(px, py);
+                EXPECT_TRUE(got.r == want.r && got.g == want.g && got.b == want.b)
+                    << what << ": pixel (" << px << ", " << py << ") is " << got.r << " " << got.g << " " << got.b
+                    << ", expected " << want.r << " " << want.g << " " << want.b;
+            }
+        EXPECT_GT(checked, 300) << what;
+    };
+    expectFrame(draw(), false, "first frame");
+    expectFrame(draw(), false, "second frame, unchanged");
+    for (unsigned char& byte : buffer)
+        byte = static_cast<unsigned char>(255 - byte);
+    expectFrame(draw(), true, "after the caller's buffer changed");
+    const std::vector<unsigned char> original = textureBytes();
+    ASSERT_EQ(Q3MemoryStorage_Set(storage, original.data(), size), kQ3Success);
+    expectFrame(draw(), false, "after Q3MemoryStorage_Set");
+}
+
 TEST_F(TextureRenderTest, AStorageThatNoLongerHoldsTheImageFailsTheRendering)
 {
     TQ3GeometryObject mesh = quad();

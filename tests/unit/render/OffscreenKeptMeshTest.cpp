@@ -252,6 +252,48 @@ TEST_F(OffscreenKeptMesh, LightingAtEveryPixelDrawsTheVerticesKeptForLightingAtT
     EXPECT_EQ(renderer.keptDraws(), kept + 1);
 }
 
+TEST_F(OffscreenKeptMesh, UvsGivenWithTheirTransformDrawAsTheCoordinatesComputedFromThem)
+{
+    // Shading::uvs: the renderer puts them through stTransform itself. The
+    // same square given the coordinates computed here (the formula of
+    // RenderTarget.h) draws the same image, streamed (no serial) and from
+    // kept data (a serial, from the third frame on).
+    const float transform[6] = {1.5f, 0.25f, -0.5f, 2.0f, 0.25f, -0.125f};
+    const float uvs[8] = {0.0f, 1.0f, 1.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.0f};
+    float st[8];
+    for (int i = 0; i < 4; ++i) {
+        const float u = uvs[2 * i], v = uvs[2 * i + 1];
+        st[2 * i] = u * transform[0] + v * transform[2] + transform[4];
+        st[2 * i + 1] = 1.0f - (u * transform[1] + v * transform[3] + transform[5]);
+    }
+    const auto draw = [&](OffscreenRenderer& renderer, std::uint64_t serial, bool fromUvs) {
+        return frame(renderer, [&](std::uint32_t texture) {
+            Shading shading = litTextured(texture, fromUvs ? nullptr : st);
+            if (fromUvs)
+                shading.uvs = uvs;
+            std::copy(std::begin(transform), std::end(transform), std::begin(shading.stTransform));
+            ASSERT_TRUE(renderer.draw(square(serial), shading).ok());
+        });
+    };
+    OffscreenRenderer reference;
+    const std::vector<std::uint8_t> expected = draw(reference, 0, false);
+    ASSERT_TRUE(anyLit(expected));
+    OffscreenRenderer streamed;
+    EXPECT_EQ(draw(streamed, 0, true), expected);
+    OffscreenRenderer renderer;
+    const std::uint64_t serial = Mesh::newSerial();
+    for (int f = 0; f < 4; ++f)
+        EXPECT_EQ(draw(renderer, serial, true), expected) << "frame " << f;
+    EXPECT_EQ(renderer.keptDraws(), 2u);
+    // A texture given neither coordinates nor uvs leaves the square
+    // untextured.
+    const std::vector<std::uint8_t> untextured = frame(reference, [&](std::uint32_t texture) {
+        Shading shading = litTextured(texture, nullptr);
+        ASSERT_TRUE(reference.draw(square(0), shading).ok());
+    });
+    EXPECT_NE(untextured, expected);
+}
+
 TEST_F(OffscreenKeptMesh, TranslucentMeshesAndMeshesWithoutASerialAreNeverKept)
 {
     OffscreenRenderer reference;
