@@ -949,10 +949,8 @@ RenderResult OffscreenRenderer::Impl::acquireContext(std::uint32_t width, std::u
         ContextScope scope(*made->context, m_image.data());
         if (!scope.bound()) {
             result = RenderResult::failure(RenderStatus::kContextFailure,
-                                           renderingShutDown() ? std::string(detail::kShutDownMessage)
-                                                               : std::string("making the ") +
-                                                                     glBackendName(m_backend.backend) +
-                                                                     " context current failed");
+                                           std::string("making the ") + glBackendName(m_backend.backend) +
+                                               " context current failed");
         } else {
             glGetIntegerv(GL_MAX_VIEWPORT_DIMS, made->maxViewport);
             initializeState();

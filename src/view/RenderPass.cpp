@@ -248,45 +248,30 @@ std::uint32_t RenderPass::loadTexture(const TextureChoice& choice)
     return loaded->id;
 }
 
-const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureChoice& choice, std::uint32_t& id,
-                                            bool& transformed)
+const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureChoice& choice, std::uint32_t& id)
 {
     id = kNoTexture;
-    transformed = false;
     if (choice.texture == nullptr || mesh.uvs == nullptr)
         return nullptr;
-    bool complete = true;
-    for (std::size_t i = 0; complete && i < mesh.vertexCount; ++i)
-        complete = mesh.uvs[2 * i] == mesh.uvs[2 * i];
-    if (complete) {
-        id = loadTexture(choice);
-        return id == kNoTexture ? nullptr : mesh.uvs;
-    }
-    // (u, v, 1) times the uv transform (its third column unused); the target's
-    // t runs down the image from its top row, v up from its bottom row. A
+    // The target puts the uvs through the uv transform (Shading::uvs). A
     // vertex without a uv (NaN) gets (0, 0) if no triangle uses it; a
     // triangle that does leaves the mesh untextured.
-    transformed = true;
-    const TQ3Matrix3x3& m = choice.uvTransform;
-    m_st.resize(2 * mesh.vertexCount);
+    const float* uvs = mesh.uvs;
     bool lacking = false;
-    for (std::size_t i = 0; i < mesh.vertexCount; ++i) {
-        const float u = mesh.uvs[2 * i], v = mesh.uvs[2 * i + 1];
-        if (u != u) {
-            m_st[2 * i] = m_st[2 * i + 1] = 0.0f;
-            lacking = true;
-            continue;
-        }
-        m_st[2 * i] = u * m.value[0][0] + v * m.value[1][0] + m.value[2][0];
-        m_st[2 * i + 1] = 1.0f - (u * m.value[0][1] + v * m.value[1][1] + m.value[2][1]);
+    for (std::size_t i = 0; !lacking && i < mesh.vertexCount; ++i)
+        lacking = mesh.uvs[2 * i] != mesh.uvs[2 * i];
+    if (lacking) {
+        for (std::size_t i = 0; i < 3 * mesh.triangleCount; ++i)
+            if (mesh.uvs[2 * std::size_t(mesh.triangles[i])] != mesh.uvs[2 * std::size_t(mesh.triangles[i])])
+                return nullptr;
+        m_uvs.assign(mesh.uvs, mesh.uvs + 2 * mesh.vertexCount);
+        for (std::size_t i = 0; i < mesh.vertexCount; ++i)
+            if (m_uvs[2 * i] != m_uvs[2 * i])
+                m_uvs[2 * i] = m_uvs[2 * i + 1] = 0.0f;
+        uvs = m_uvs.data();
     }
-    for (std::size_t i = 0; lacking && i < 3 * mesh.triangleCount; ++i)
-        if (mesh.uvs[2 * std::size_t(mesh.triangles[i])] != mesh.uvs[2 * std::size_t(mesh.triangles[i])])
-            return nullptr;
     id = loadTexture(choice);
-    if (id == kNoTexture)
-        return nullptr;
-    return m_st.data();
+    return id == kNoTexture ? nullptr : uvs;
 }
 
 void RenderPass::drawFilled(const MeshView& mesh, const Shading& base, const AttributeValues& attributes,
@@ -296,12 +281,11 @@ void RenderPass::drawFilled(const MeshView& mesh, const Shading& base, const Att
     Shading shading = base;
     // A texture takes the place of the diffuse colour.
     std::uint32_t id = kNoTexture;
-    bool transformed = false;
-    const float* st = textureCoordinates(mesh, texture, id, transformed);
-    if (st != nullptr) {
+    const float* uvs = textureCoordinates(mesh, texture, id);
+    if (uvs != nullptr) {
         shading.rgb = nullptr;
         shading.color = RgbColor{1.0f, 1.0f, 1.0f};
-        (transformed ? shading.st : shading.uvs) = st;
+        shading.uvs = uvs;
         shading.texture = id;
         const TQ3Matrix3x3& m = texture.uvTransform;
         const float transform[6] = {m.value[0][0], m.value[0][1], m.value[1][0],

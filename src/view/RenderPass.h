@@ -117,16 +117,12 @@ private:
     /// when there is none. Throws kQ3ErrorInvalidData when the texture's
     /// storage no longer holds its image.
     std::uint32_t loadTexture(const TextureChoice& texture);
-    /// The texture coordinates of the mesh's vertices under `texture`, with
-    /// the target's number for the texture in `id`: where every vertex has
-    /// a uv, the mesh's uvs themselves (`transformed` false: the target
-    /// puts them through the uv transform, Shading::uvs); else each
-    /// vertex's uv through the uv transform, v turned to run down the image
-    /// (0 for a vertex no triangle uses that has none; `transformed`
-    /// true). Null (untextured, id kNoTexture) without a texture or when a
-    /// triangle's vertex has no uv.
-    const float* textureCoordinates(const MeshView& mesh, const TextureChoice& texture, std::uint32_t& id,
-                                    bool& transformed);
+    /// The uvs of the mesh's vertices for the target to put through the uv
+    /// transform (Shading::uvs), with the target's number for `texture` in
+    /// `id`: the mesh's own, or where a vertex no triangle uses has none, a
+    /// copy with (0, 0) there. Null (untextured, id kNoTexture) without a
+    /// texture or when a triangle's vertex has no uv.
+    const float* textureCoordinates(const MeshView& mesh, const TextureChoice& texture, std::uint32_t& id);
 
     RenderTarget& m_target;
     RenderStyle m_style;
@@ -142,7 +138,7 @@ private:
     std::vector<float> m_opacityRgb;
     bool m_lightsLoaded = false;
     std::vector<float> m_colors;
-    std::vector<float> m_st;
+    std::vector<float> m_uvs; // textureCoordinates: uvs with the missing ones (0, 0)
     /// The triangles of a mesh grouped by surface shader, where each group
     /// starts, and where each is filled next.
     std::vector<std::uint32_t> m_runs;

@@ -289,6 +289,46 @@ TEST_F(TextureRenderTest, AMipmapTextureShowsItsFirstImage)
               300);
 }
 
+TEST_F(TextureRenderTest, AVertexWithoutAUVTexturesTheMeshUnlessAFaceUsesIt)
+{
+    // A Mesh: the quad's four corners with their uvs, and a fifth vertex
+    // with no uv. While no face uses it, the quad shows its texels under a
+    // uv transform; once a face does, the mesh is untextured (its red).
+    const TQ3Point3D corners[4] = {{kX0, kY0, 0}, {kX1, kY0, 0}, {kX1, kY1, 0}, {kX0, kY1, 0}};
+    const TQ3Param2D uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const auto meshWithFifthVertex = [&](bool fifthInAFace) {
+        TQ3GeometryObject mesh = own(Q3Mesh_New());
+        TQ3MeshVertex vertices[5];
+        for (int i = 0; i < 4; ++i) {
+            TQ3AttributeSet set = own(Q3AttributeSet_New());
+            EXPECT_EQ(Q3AttributeSet_Add(set, kQ3AttributeTypeSurfaceUV, &uvs[i]), kQ3Success);
+            const TQ3Vertex3D vertex{corners[i], set};
+            vertices[i] = Q3Mesh_VertexNew(mesh, &vertex);
+        }
+        const TQ3Vertex3D fifth{{kX1 + 0.2f, kY1, 0}, nullptr};
+        vertices[4] = Q3Mesh_VertexNew(mesh, &fifth);
+        EXPECT_NE(Q3Mesh_FaceNew(mesh, 4, vertices, own(colorSet(1, 0, 0))), nullptr);
+        if (fifthInAFace) {
+            TQ3MeshVertex sliver[3] = {vertices[1], vertices[4], vertices[2]};
+            EXPECT_NE(Q3Mesh_FaceNew(mesh, 3, sliver, own(colorSet(1, 0, 0))), nullptr);
+        }
+        return mesh;
+    };
+    UVMap map;
+    map.m[0][0] = 2.0f;
+    map.m[2][1] = 0.25f;
+    TQ3Matrix3x3 matrix;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            matrix.value[i][j] = map.m[i][j];
+    ASSERT_EQ(Q3Shader_SetUVTransform(m_shader, &matrix), kQ3Success);
+    EXPECT_GT(expectTexels(renderUnder(m_shader, meshWithFifthVertex(false)), map, "fifth vertex unused"), 200);
+    const Pixmap untextured = renderUnder(m_shader, meshWithFifthVertex(true));
+    const Rgba centre = untextured.at(kWidth / 2, kHeight / 2);
+    EXPECT_TRUE(centre.r == 255 && centre.g == 0 && centre.b == 0)
+        << "a face uses the vertex without a uv: " << centre.r << " " << centre.g << " " << centre.b;
+}
+
 TEST_F(TextureRenderTest, TexelsChangedInTheCallersBufferOrThroughTheStorageAreDrawnInTheNextFrame)
 {
     // A texture in the caller's buffer (Q3MemoryStorage_NewBuffer: used in
