@@ -17,7 +17,10 @@ stage() { echo "== $1 (at ${SECONDS} s)"; }
 bash scripts/setup.sh
 
 stage "Release build and tests"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+# The test programs at -O1 (the library stays at -O3): they are about two
+# thirds of the build's compile time, and -O1 compiles them about a quarter
+# faster than -O3 while their own code is never what a test measures.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DQ3_TEST_OPTIMIZE=-O1
 cmake --build build -j"$jobs"
 ctest --test-dir build -j"$jobs" --output-on-failure --timeout 300
 
