@@ -34,7 +34,7 @@ namespace {
 
 // The first source strings: the version, then the variant's switches
 // (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY, ONE_SIDED,
-// OPAQUE, PLAIN_VARYINGS, LIGHT_COUNT), both before anything else as
+// DRAW_OPACITY, PLAIN_VARYINGS, LIGHT_COUNT), both before anything else as
 // GLSL requires.
 constexpr const char* kVersion = "#version 130\n";
 // The variant's switches (LitProgram::variant), after the version line.
@@ -52,7 +52,7 @@ std::string switches(int variant)
     if ((variant & 16) != 0)
         text += "#define ONE_SIDED 1\n";
     if ((variant & 64) != 0)
-        text += "#define OPAQUE 1\n";
+        text += "#define DRAW_OPACITY 1\n";
     if (LitProgram::usesPlainVaryings(variant))
         text += "#define PLAIN_VARYINGS 1\n";
     if (variant >= 128)

@@ -43,8 +43,9 @@ public:
     /// interpolated passes its colours and texture coordinate in varyings of
     /// three and two components instead (usesPlainVaryings), clamped to 0..1
     /// as OpenGL clamps the built-in ones, so the pixels are the same. And
-    /// the opaque variant (the opaque primitives: every vertex's opacity 1)
-    /// interpolates no opacity. Together they made the rasterizer threads'
+    /// the variant with one opacity for the whole draw (DRAW_OPACITY: the
+    /// opaque primitives, and translucent draws of one grey opacity, which
+    /// blend by alpha alone) interpolates no opacity. Together they made the rasterizer threads'
     /// work that of a program written for the scene (benchmarks/RESULTS.md,
     /// ModelFrame).
     ///
@@ -59,7 +60,7 @@ public:
     static bool isOneSided(int variant) { return (variant & 16) != 0; }
     static bool usesPlainVaryings(int variant) { return (variant & (16 | 32 | 2)) == 16; }
     static int variant(bool textured, const SurfaceShading& shading, bool fogged, const LightingSetup& lighting,
-                       bool opaque)
+                       bool drawOpacity)
     {
         bool directionalOnly = true;
         int listed = 0; // the lights other than ambient ones
@@ -70,7 +71,7 @@ public:
         }
         return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0) +
                (directionalOnly ? 8 : 0) + (shading.flipBackFaces ? 0 : 16) +
-               (shading.interpolation == 0 ? 32 : 0) + (opaque ? 64 : 0) +
+               (shading.interpolation == 0 ? 32 : 0) + (drawOpacity ? 64 : 0) +
                128 * (listed <= kUnrolledLights ? listed + 1 : 0);
     }
     /// Compiles and links variant `variant` in the current context; false

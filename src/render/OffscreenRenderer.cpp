@@ -422,6 +422,10 @@ private:
         bool smooth;
         bool onlyTranslucentTexels; // alpha-tested: the texels below 1
         bool multisample;           // anti-aliased (AntiAliasOptions::triangles)
+        // Every vertex's opacity when the draw has one grey opacity (no
+        // array, r = g = b), else negative: a lit draw of one is drawn by
+        // the program variant that takes it as a uniform (SurfaceFinish.h).
+        float drawOpacity;
         // The range of m_translucentVertices its triangles use (its draw's
         // vertices, stored together), for glDrawRangeElements.
         GLuint firstVertex;
@@ -460,7 +464,8 @@ private:
         }
         return Vertex{xyz[0], xyz[1], xyz[2], r.color.r, r.color.g, r.color.b, n[0], n[1], n[2], st[0], st[1]};
     }
-    std::uint32_t translucentState(const DrawRequest& request, bool textured, bool onlyTranslucentTexels);
+    std::uint32_t translucentState(const DrawRequest& request, bool textured, bool onlyTranslucentTexels,
+                                   float drawOpacity);
     // Stores vertex i of a draw in the translucent store with its opacity
     // and its clip coordinates under the current matrix (for the depths and
     // the clusters' rectangles); returns its place there.
@@ -554,7 +559,10 @@ private:
     // two-sidedness set, the frame's lights loaded the first time this flush
     // uses it (lightsLoaded, one flag per variant). Null, with `result` set,
     // when the driver refuses the program.
-    LitProgram* useLitProgram(int variant, const SurfaceShading& shading, bool* lightsLoaded, RenderResult& result);
+    // Makes variant `variant` current with `shading`, its lights loaded once
+    // a frame, and `drawOpacity` when the variant takes one (DRAW_OPACITY).
+    LitProgram* useLitProgram(int variant, const SurfaceShading& shading, bool* lightsLoaded, RenderResult& result,
+                              float drawOpacity = 1.0f);
     // Two-sided colours for a lit variant that writes them (on between uses:
     // the unlit programs write both).
     static void setTwoSided(int variant)
@@ -1419,7 +1427,7 @@ void OffscreenRenderer::Impl::startFrameInGl()
 }
 
 LitProgram* OffscreenRenderer::Impl::useLitProgram(int variant, const SurfaceShading& shading, bool* lightsLoaded,
-                                                   RenderResult& result)
+                                                   RenderResult& result, float drawOpacity)
 {
     LitProgram* program = litProgram(variant, result);
     if (program == nullptr)
@@ -1431,6 +1439,7 @@ LitProgram* OffscreenRenderer::Impl::useLitProgram(int variant, const SurfaceSha
         lightsLoaded[variant] = true;
     }
     program->setShading(shading);
+    program->finish().setDrawOpacity(drawOpacity);
     return program;
 }
 
@@ -2478,7 +2487,7 @@ void OffscreenRenderer::Impl::forgetTranslucent()
 }
 
 std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bool textured,
-                                                        bool onlyTranslucentTexels)
+                                                        bool onlyTranslucentTexels, float drawOpacity)
 {
     TranslucentState state;
     state.matrix = m_matrices[m_currentMatrix];
@@ -2493,6 +2502,7 @@ std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bo
     state.smooth = r.smooth;
     state.onlyTranslucentTexels = onlyTranslucentTexels;
     state.multisample = m_antiAlias.triangles;
+    state.drawOpacity = drawOpacity;
     state.firstVertex = state.lastVertex = 0; // drawSplit sets them
     m_translucentStates.push_back(state);
     return std::uint32_t(m_translucentStates.size() - 1);
@@ -2550,13 +2560,16 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
     const std::size_t firstVertex = m_translucentVertices.size();
     // Without an opacity per vertex every corner has the same one.
     const std::array<float, 4> uniformOpacity = opacityOf(uniform);
+    const bool grey = uniformOpacity[0] == uniformOpacity[3] && uniformOpacity[1] == uniformOpacity[3] &&
+                      uniformOpacity[2] == uniformOpacity[3];
+    const float drawOpacity = rgb == nullptr && grey ? uniformOpacity[3] : -1.0f;
     if (rgb == nullptr && uniformOpacity[3] < 1.0f) {
         // Every triangle is translucent: the draw's vertices are stored in
         // their order, each transformed once, without looking each corner
         // up (drawn in the same order, the same pixels).
         if (count < 3)
             return RenderResult::success();
-        const std::uint32_t state = translucentState(r, textured, false);
+        const std::uint32_t state = translucentState(r, textured, false, drawOpacity);
         for (std::size_t i = 0; i < r.vertexCount; ++i)
             storeTranslucentVertex(r, textured, i, uniformOpacity);
         // Written in place, through pointers the loop's stores cannot
@@ -2597,7 +2610,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
             continue;
         std::uint32_t& state = states[allOpaque ? 1 : 0];
         if (state == kNoState)
-            state = translucentState(r, textured, allOpaque);
+            state = translucentState(r, textured, allOpaque, drawOpacity);
         TranslucentTriangle triangle;
         triangle.state = state;
         for (int k = 0; k < 3; ++k) {
@@ -2895,9 +2908,11 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     // Each colour channel by its own opacity, the programs' second output
     // (dual-source blending, SurfaceFinish.h); alpha by the mean, output 0's
     // alpha. The factors are complementary, so llvmpipe blends colour as it
-    // did with (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) for the same values.
+    // does with (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) for the same values,
+    // which is how a lit state of one grey opacity blends (its program has
+    // no second output).
     glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC1_COLOR, GL_ONE_MINUS_SRC1_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    int blendSources = 0; // 1 or 2 once set
     glDepthMask(GL_FALSE);
 
     bool lightsLoaded[LitProgram::kVariants] = {};
@@ -2938,6 +2953,14 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
         } else {
             glDisable(GL_ALPHA_TEST);
         }
+        const bool oneOpacity = state.shading != kUnlit && state.drawOpacity >= 0.0f;
+        if (blendSources != (oneOpacity ? 1 : 2)) {
+            if (oneOpacity)
+                glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            else
+                glBlendFuncSeparate(GL_SRC1_COLOR, GL_ONE_MINUS_SRC1_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            blendSources = oneOpacity ? 1 : 2;
+        }
         std::string error;
         if (state.shading == kUnlit) {
             UnlitProgram& program = m_gl->unlitPrograms[textured ? 1 : 0];
@@ -2949,8 +2972,9 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
             program.finish().setFog(fogOf(state.fog));
         } else {
             const SurfaceShading& shading = m_translucentShadings[state.shading];
-            const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog, m_lighting, false);
-            LitProgram* program = useLitProgram(variant, shading, lightsLoaded, result);
+            const int variant = LitProgram::variant(textured, shading, state.fog != kNoFog, m_lighting, oneOpacity);
+            LitProgram* program =
+                useLitProgram(variant, shading, lightsLoaded, result, oneOpacity ? state.drawOpacity : 1.0f);
             if (program == nullptr)
                 break;
             program->finish().setFog(fogOf(state.fog));

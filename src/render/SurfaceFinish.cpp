@@ -26,7 +26,7 @@ varying float q3FogW;
 
 void q3FinishVertex()
 {
-#ifndef OPAQUE
+#ifndef DRAW_OPACITY
     q3VertexOpacity = q3Opacity;
 #endif
     q3FogDepth = dot(gl_Position, q3FogDepthPlane);
@@ -44,19 +44,21 @@ varying vec4 q3VertexOpacity;
 varying float q3FogDepth;
 varying float q3FogW;
 out vec4 q3FragColor;
-#ifndef OPAQUE
+#ifdef DRAW_OPACITY
+uniform float q3DrawOpacity;
+#else
 out vec4 q3FragOpacity;
 #endif
 
 vec4 q3FinishFragment(vec4 color, float texelAlpha)
 {
-#ifdef OPAQUE
-    vec4 opacity = vec4(texelAlpha); // every vertex's opacity is 1
+#ifdef DRAW_OPACITY
+    // One grey opacity for the whole draw (1 for opaque draws), blended by
+    // alpha alone.
+    vec4 opacity = vec4(q3DrawOpacity * texelAlpha);
 #else
     vec4 opacity = q3VertexOpacity * texelAlpha;
-#endif
-#ifndef OPAQUE
-    q3FragOpacity = opacity; // the blend's second source (opaque draws do not blend)
+    q3FragOpacity = opacity; // the blend's second source
 #endif
     float a = opacity.a;
     color.a = a;
@@ -186,6 +188,12 @@ void FinishUniforms::locate(GLuint program)
     m_color = at("q3FogColor");
     m_depthPlane = at("q3FogDepthPlane");
     m_wPlane = at("q3FogWPlane");
+    m_drawOpacity = at("q3DrawOpacity");
+}
+
+void FinishUniforms::setDrawOpacity(float opacity) const
+{
+    glUniform1f(m_drawOpacity, opacity);
 }
 
 void FinishUniforms::setFog(const FogSetup& fog) const

@@ -19,8 +19,13 @@
 // for dual-source blending (OpenGL 3.3, ARB_blend_func_extended):
 // q3FragColor (index 0) is the colour with the mean opacity as alpha,
 // q3FragOpacity (index 1) the per-channel opacity, which the translucent
-// triangles blend with as (GL_SRC1_COLOR, GL_ONE_MINUS_SRC1_COLOR); opaque
-// draws do not blend, and index 1 is then unused. The fog's distance is an affine function of the world
+// triangles blend with as (GL_SRC1_COLOR, GL_ONE_MINUS_SRC1_COLOR). A
+// program compiled with DRAW_OPACITY has neither the attribute nor index 1:
+// one grey opacity for the whole draw, the uniform q3DrawOpacity (1 for
+// opaque draws, which do not blend), is the alpha, and its translucent draws
+// blend with (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA): the same factors for a
+// grey opacity, with nothing interpolated and one blend source, as cheap as
+// an application's own blending. The fog's distance is an affine function of the world
 // point, so it is interpolated exactly across a triangle as the ratio of two
 // perspective-correct varyings (FogSetup says which).
 
@@ -65,10 +70,13 @@ public:
     void locate(GLuint program);
     /// Sets the fog of the program in use (FogSetup::Mode::kOff: none).
     void setFog(const FogSetup& fog) const;
+    /// Sets the opacity of the program in use when it is a variant with one
+    /// opacity for the whole draw (DRAW_OPACITY; a no-op for the others).
+    void setDrawOpacity(float opacity) const;
 
 private:
     GLint m_mode = -1, m_start = -1, m_end = -1, m_density = -1, m_color = -1;
-    GLint m_depthPlane = -1, m_wPlane = -1;
+    GLint m_depthPlane = -1, m_wPlane = -1, m_drawOpacity = -1;
 };
 
 /// Unlit drawing as the fixed-function pipeline does it (the interpolated

@@ -393,6 +393,77 @@ TEST_F(TranslucencyFogRenderTest, LitTranslucentSurfaceBlendsItsLitColour)
     }
 }
 
+TEST_F(TranslucencyFogRenderTest, LitLayersOfOneGreyOpacityAndOfTintsBlendEachByTheBooksRuleInOneFrame)
+{
+    // Three layers, lit (Lambert under an ambient light of 1, so each lit
+    // colour is the diffuse one), submitted in no particular order: the
+    // opaque back at z = 0, a tinted layer at z = 0.5, and at z = 1 a grey
+    // one: on the left half its geometry's transparency (one grey opacity for
+    // the whole draw), on the right half the same grey on every vertex.
+    // Q3 draws the two grey halves and the tint by different programs and
+    // blend functions (SurfaceFinish.h); every pixel must be the book's rule
+    // applied layer by layer, farthest first.
+    const Color tint{0.2, 0.9, 0.5};
+    const Color grey{0.4, 0.4, 0.4};
+    const Color middle{0.7, 0.1, 0.5};
+    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
+    TQ3AttributeSet greyVertex = own(Q3AttributeSet_New());
+    const TQ3ColorRGB g{float(grey.r), float(grey.g), float(grey.b)};
+    ASSERT_EQ(Q3AttributeSet_Add(greyVertex, kQ3AttributeTypeTransparencyColor, &g), kQ3Success);
+    TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
+    TQ3GeometryObject tinted = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle, &tint));
+    TQ3GeometryObject left = rect(-3, 0, -3, 3, 1, 1, colorSet(kFront, &grey));
+    TQ3GeometryObject right = rect(0, 3, -3, 3, 1, 1, colorSet(kFront), greyVertex);
+    const Color expected = mix(kFront, mix(middle, kBehind, tint), grey.r);
+    for (TQ3InterpolationStyle interpolation : {kQ3InterpolationStyleVertex, kQ3InterpolationStylePixel}) {
+        const Pixmap image = render(
+            [&](TQ3ViewObject v) {
+                Q3InterpolationStyle_Submit(interpolation, v);
+                Q3Shader_Submit(lambert, v);
+                Q3Geometry_Submit(left, v);
+                Q3Geometry_Submit(tinted, v);
+                Q3Geometry_Submit(back, v);
+                Q3Geometry_Submit(right, v);
+            },
+            nullptr, true);
+        const std::string how = "interpolation " + std::to_string(int(interpolation));
+        expectColumns(image, 0, kSize / 2, [&](unsigned long) { return expected; }, "grey geometry, " + how);
+        expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return expected; }, "grey vertices, " + how);
+    }
+}
+
+TEST_F(TranslucencyFogRenderTest, LitAlphaTextureUnderGreyTransparencyBlendsByTheirProduct)
+{
+    // The 2 x 2 ARGB32 alpha texture (opaque red, alpha 0, alpha 128 green,
+    // opaque blue) on a lit square (Lambert under an ambient light of 1: the
+    // texel is the lit colour) whose transparency is grey 0.6: each texel's
+    // opacity is 0.6 times its alpha. The grey rectangle behind is drawn
+    // after it.
+    const double t = 0.6;
+    const Color grey{t, t, t};
+    const Color middle{0.3, 0.3, 0.3};
+    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
+    TQ3ShaderObject shader = alphaTextureShader();
+    TQ3GeometryObject textured = texturedSquare(colorSet(Color{1, 1, 1}, &grey));
+    TQ3GeometryObject between = rect(-3, 3, -3, 3, 0.5, 0.5, colorSet(middle));
+    const Pixmap image = render(
+        [&](TQ3ViewObject v) {
+            Q3Shader_Submit(lambert, v);
+            Q3Push_Submit(v);
+            Q3Shader_Submit(shader, v);
+            Q3Geometry_Submit(textured, v);
+            Q3Pop_Submit(v);
+            Q3Geometry_Submit(between, v);
+        },
+        nullptr, true);
+    const Color red{1, 0, 0}, green{0, 1, 0}, blue{0, 0, 1};
+    const double a = 128.0 / 255.0;
+    expectQuadrant(image, 0, 0, mix(red, middle, t), "opaque red texel");
+    expectQuadrant(image, kSize / 2, 0, middle, "alpha 0");
+    expectQuadrant(image, 0, kSize / 2, mix(green, middle, t * a), "alpha 128 green texel");
+    expectQuadrant(image, kSize / 2, kSize / 2, mix(blue, middle, t), "opaque blue texel");
+}
+
 TEST_F(TranslucencyFogRenderTest, TextureAlphaCutsOutAndOpaqueTexelsHideWhatIsBehind)
 {
     // A 2 x 2 ARGB32 texture: opaque red, alpha 0, alpha 128 green, opaque
