@@ -90,7 +90,7 @@ TQ3Status Q3MemoryStorage_GetBuffer(TQ3StorageObject storage, unsigned char** bu
     return guardStatus(__func__, [&] {
         MemoryStorage& source = lookup<MemoryStorage>(storage, "storage");
         if (buffer != nullptr)
-            *buffer = source.buffer();
+            *buffer = source.exposeBuffer();
         if (validSize != nullptr)
             *validSize = static_cast<unsigned long>(source.size());
         if (bufferSize != nullptr)

@@ -125,6 +125,11 @@ struct TextureImage {
     bool clampT = false;
     TextureFilter filter = TextureFilter::kNearest;
     std::vector<TextureLevel> mipmaps;
+    /// Empty, or what the bytes of every level are known by: two textures
+    /// with the same non-empty key and the same layouts have the same bytes,
+    /// so the target need not compare them (a key names an unchanged source,
+    /// such as a storage's version and each level's offset in it).
+    std::vector<std::uint64_t> sourceKey;
 };
 
 /// The most lights a frame is lit by (kQ3ViewMaxLights).

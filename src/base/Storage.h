@@ -30,6 +30,11 @@ public:
     /// valid until the storage next changes; null where they do not (a
     /// file) or are not all there.
     virtual const unsigned char* inPlace(std::size_t, std::size_t) const { return nullptr; }
+    /// A number that no other storage, and no other contents of this one,
+    /// ever has (its edit index), or 0 where the bytes can change without Q3
+    /// knowing: a file, the caller's buffer, or an owned buffer whose address
+    /// was handed out (exposeBuffer).
+    virtual unsigned long contentVersion() const { return 0; }
     /// Writes `count` bytes at `offset`, growing the storage; the number
     /// written (fewer only for a caller's buffer that is full).
     virtual std::size_t write(std::size_t offset, std::size_t count, const unsigned char* in) = 0;
@@ -74,6 +79,17 @@ public:
     /// Throws kQ3ErrorInvalidParameter when validSize > bufferSize.
     void setBuffer(unsigned char* buffer, std::size_t validSize, std::size_t bufferSize);
     unsigned char* buffer() { return m_borrowed != nullptr ? m_borrowed : m_owned.data(); }
+    /// buffer() for a caller that may write through it
+    /// (Q3MemoryStorage_GetBuffer): from then on the contents have no version.
+    unsigned char* exposeBuffer()
+    {
+        m_exposed = true;
+        return buffer();
+    }
+    unsigned long contentVersion() const override
+    {
+        return m_borrowed != nullptr || m_exposed ? 0 : editIndex();
+    }
     std::size_t capacity() const { return m_borrowed != nullptr ? m_borrowedSize : m_owned.size(); }
 
 private:
@@ -81,6 +97,7 @@ private:
     unsigned char* m_borrowed = nullptr;
     std::size_t m_borrowedSize = 0;
     std::size_t m_valid = 0;
+    bool m_exposed = false;
 };
 
 /// A file named by a path, opened for each access (so nothing stays open

@@ -596,6 +596,7 @@ private:
     struct CachedTexture {
         std::vector<std::uint8_t> source;  // every level's bytes as given, one after the other
         std::vector<PixmapLayout> layouts; // every level's layout
+        std::vector<std::uint64_t> sourceKey; // TextureImage::sourceKey, when it had one
         bool clampS = false;
         bool clampT = false;
         TextureFilter filter = TextureFilter::kNearest;
@@ -2000,6 +2001,8 @@ std::uint32_t OffscreenRenderer::Impl::findCachedTexture(const TextureImage& tex
         bool same = true;
         for (std::size_t i = 0; same && i < texture.mipmaps.size(); ++i)
             same = texture.mipmaps[i].pixels != nullptr && sameLayout(cached.layouts[i + 1], texture.mipmaps[i].layout);
+        if (same && !texture.sourceKey.empty() && texture.sourceKey == cached.sourceKey)
+            return std::uint32_t(slot); // the same bytes, by their source
         std::size_t at = 0;
         for (std::size_t i = 0; same && i < cached.layouts.size(); ++i) {
             const PixmapLayout& layout = cached.layouts[i];
@@ -2059,6 +2062,7 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
         CachedTexture& cached = m_gl->textureCache[slot];
         cached.lastFrame = m_gl->frameNumber;
         cached.user = this;
+        cached.sourceKey = texture.sourceKey; // (found by its bytes, it is known by this key now)
         BatchTexture known;
         known.width = texture.layout.width;
         known.height = texture.layout.height;
@@ -2090,6 +2094,7 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
     if (slot != kNotCached) {
         m_gl->textureCache[slot].lastFrame = m_gl->frameNumber;
         m_gl->textureCache[slot].user = this;
+        m_gl->textureCache[slot].sourceKey = texture.sourceKey;
         decoded.cacheSlot = slot;
     } else {
         // Kept for the frames after this one (uploaded when first drawn).
@@ -2108,6 +2113,7 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
             cached.clampS = texture.clampS;
             cached.clampT = texture.clampT;
             cached.filter = texture.filter;
+            cached.sourceKey = texture.sourceKey;
             cached.hasAlpha = decoded.hasAlpha;
             cached.lastFrame = m_gl->frameNumber;
             cached.user = this;

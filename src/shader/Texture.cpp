@@ -86,6 +86,8 @@ TexturePixels readPixels(TQ3StorageObject image, std::size_t offset, unsigned lo
     pixels.rowBytes = rowBytes;
     pixels.pixelType = pixelType;
     pixels.byteOrder = byteOrder;
+    pixels.sourceVersion = storage.contentVersion();
+    pixels.sourceOffset = offset;
     return pixels;
 }
 

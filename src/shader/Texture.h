@@ -36,6 +36,10 @@ struct TexturePixels {
     std::size_t rowBytes = 0;
     TQ3PixelType pixelType = kQ3PixelTypeARGB32;
     TQ3Endian byteOrder = kQ3EndianBig;
+    /// Where the bytes came from: the storage's contentVersion (0: unknown)
+    /// and their offset in it.
+    unsigned long sourceVersion = 0;
+    std::size_t sourceOffset = 0;
 };
 
 /// How a texture's images are read: copied, or where the storage holds them

@@ -236,9 +236,19 @@ std::uint32_t RenderPass::loadTexture(const TextureChoice& choice)
                                                        ? texture.readMipmaps(PixelAccess::kInPlace)
                                                        : std::vector<TexturePixels>{};
         const TextureLevel top = levelOf(pixels);
-        TextureImage image{top.pixels, top.layout, choice.clampS, choice.clampT, m_style.textureFilter, {}};
+        TextureImage image{top.pixels, top.layout, choice.clampS, choice.clampT, m_style.textureFilter, {}, {}};
         for (const TexturePixels& mipmap : mipmaps)
             image.mipmaps.push_back(levelOf(mipmap));
+        // Bytes of a storage Q3 owns are known by its version and their
+        // offsets, and the target finds them again without comparing them.
+        bool known = pixels.sourceVersion != 0;
+        for (const TexturePixels& mipmap : mipmaps)
+            known = known && mipmap.sourceVersion != 0;
+        if (known) {
+            image.sourceKey = {pixels.sourceVersion, pixels.sourceOffset};
+            for (const TexturePixels& mipmap : mipmaps)
+                image.sourceKey.insert(image.sourceKey.end(), {mipmap.sourceVersion, mipmap.sourceOffset});
+        }
         LoadedTexture entry{Ref<SharedObject>::retain(const_cast<Texture*>(&texture)), texture.editIndex(),
                             choice.clampS, choice.clampT, 0};
         throwIfFailed(m_target.addTexture(image, entry.id), "setting the texture");
@@ -257,9 +267,10 @@ const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureC
     // vertex without a uv (NaN) gets (0, 0) if no triangle uses it; a
     // triangle that does leaves the mesh untextured.
     const float* uvs = mesh.uvs;
+    // (Without an early exit, so that the compiler vectorizes the scan.)
     bool lacking = false;
-    for (std::size_t i = 0; !lacking && i < mesh.vertexCount; ++i)
-        lacking = mesh.uvs[2 * i] != mesh.uvs[2 * i];
+    for (std::size_t i = 0; i < mesh.vertexCount; ++i)
+        lacking |= mesh.uvs[2 * i] != mesh.uvs[2 * i];
     if (lacking) {
         for (std::size_t i = 0; i < 3 * mesh.triangleCount; ++i)
             if (mesh.uvs[2 * std::size_t(mesh.triangles[i])] != mesh.uvs[2 * std::size_t(mesh.triangles[i])])

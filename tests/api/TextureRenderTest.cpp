@@ -123,6 +123,44 @@ protected:
         return mesh;
     }
 
+    // Every pixel the rule decides (identity uv map) shows its texel, or its
+    // inverse (255 minus each channel).
+    void expectFrame(const Pixmap& image, bool inverted, const std::string& what)
+    {
+        int checked = 0;
+        for (int py = 0; py < kHeight; ++py)
+            for (int px = 0; px < kWidth; ++px) {
+                Rgba want{};
+                if (!expectedTexel(px, py, UVMap{}, want))
+                    continue;
+                ++checked;
+                if (inverted)
+                    want = Rgba{255 - want.r, 255 - want.g, 255 - want.b, 255};
+                const Rgba got = image.at(px, py);
+                EXPECT_TRUE(got.r == want.r && got.g == want.g && got.b == want.b)
+                    << what << ": pixel (" << px << ", " << py << ") is " << got.r << " " << got.g << " " << got.b
+                    << ", expected " << want.r << " " << want.g << " " << want.b;
+            }
+        EXPECT_GT(checked, 300) << what;
+    }
+
+    // Frames of one view, which keeps what its renderer cached from frame
+    // to frame (a new view's renderer would start afresh).
+    struct Frames {
+        Pixmap image{kWidth, kHeight};
+        TestView view{image.pixmap(), kQ3RendererTypeInteractive};
+
+        // A frame of `mesh` drawn with `shader`.
+        Pixmap draw(TQ3GeometryObject mesh, TQ3ShaderObject shader)
+        {
+            EXPECT_EQ(view.render([&](TQ3ViewObject v) {
+                EXPECT_EQ(Q3Shader_Submit(shader, v), kQ3Success);
+                EXPECT_EQ(Q3Geometry_Submit(mesh, v), kQ3Success);
+            }),
+                      kQ3ViewStatusDone);
+            return image;
+        }
+    };
 
     // Every pixel the rule decides shows its texel scaled by `scale` (within
     // `tolerance` per channel); returns how many were checked.
@@ -342,30 +380,8 @@ TEST_F(TextureRenderTest, TexelsChangedInTheCallersBufferOrThroughTheStorageAreD
     const TQ3StoragePixmap pixmap{storage, kTexW, kTexH, 3 * kTexW, 24, kQ3PixelTypeRGB24, kQ3EndianBig, kQ3EndianBig};
     TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
     ASSERT_NE(shader, nullptr);
-    const auto draw = [&] {
-        return render([&](TQ3ViewObject v) {
-            EXPECT_EQ(Q3Shader_Submit(shader, v), kQ3Success);
-            EXPECT_EQ(Q3Geometry_Submit(mesh, v), kQ3Success);
-        });
-    };
-    // Every pixel the rule decides shows its texel, inverted or not.
-    const auto expectFrame = [&](const Pixmap& image, bool inverted, const char* what) {
-        int checked = 0;
-        for (int py = 0; py < kHeight; ++py)
-            for (int px = 0; px < kWidth; ++px) {
-                Rgba want{};
-                if (!expectedTexel(px, py, UVMap{}, want))
-                    continue;
-                ++checked;
-                if (inverted)
-                    want = Rgba{255 - want.r, 255 - want.g, 255 - want.b, 255};
-                const Rgba got = image.at(px, py);
-                EXPECT_TRUE(got.r == want.r && got.g == want.g && got.b == want.b)
-                    << what << ": pixel (" << px << ", " << py << ") is " << got.r << " " << got.g << " " << got.b
-                    << ", expected " << want.r << " " << want.g << " " << want.b;
-            }
-        EXPECT_GT(checked, 300) << what;
-    };
+    Frames frames;
+    const auto draw = [&] { return frames.draw(mesh, shader); };
     expectFrame(draw(), false, "first frame");
     expectFrame(draw(), false, "second frame, unchanged");
     for (unsigned char& byte : buffer)
@@ -374,6 +390,70 @@ TEST_F(TextureRenderTest, TexelsChangedInTheCallersBufferOrThroughTheStorageAreD
     const std::vector<unsigned char> original = textureBytes();
     ASSERT_EQ(Q3MemoryStorage_Set(storage, original.data(), size), kQ3Success);
     expectFrame(draw(), false, "after Q3MemoryStorage_Set");
+}
+
+TEST_F(TextureRenderTest, TexelsOfAStorageQ3OwnsAreDrawnAsTheyAreAfterEveryWayOfChangingThem)
+{
+    // A storage Q3 owns (Q3MemoryStorage_New): the renderer may know its
+    // bytes by the storage's version instead of comparing them; every way
+    // the bytes can change must still show in the next frame: through the
+    // storage (Q3Storage_SetData), and through the pointer
+    // Q3MemoryStorage_GetBuffer hands out, with no call after it.
+    TQ3GeometryObject mesh = quad();
+    const std::vector<unsigned char> bytes = textureBytes();
+    std::vector<unsigned char> inverse = bytes;
+    for (unsigned char& byte : inverse)
+        byte = static_cast<unsigned char>(255 - byte);
+    const unsigned long size = static_cast<unsigned long>(bytes.size());
+    TQ3StorageObject storage = own(Q3MemoryStorage_New(bytes.data(), size));
+    const TQ3StoragePixmap pixmap{storage, kTexW, kTexH, 3 * kTexW, 24, kQ3PixelTypeRGB24, kQ3EndianBig, kQ3EndianBig};
+    TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3PixmapTexture_New(&pixmap))));
+    ASSERT_NE(shader, nullptr);
+    Frames frames;
+    expectFrame(frames.draw(mesh, shader), false, "first frame");
+    expectFrame(frames.draw(mesh, shader), false, "second frame, unchanged");
+    unsigned long written = 0;
+    ASSERT_EQ(Q3Storage_SetData(storage, 0, size, inverse.data(), &written), kQ3Success);
+    ASSERT_EQ(written, size);
+    expectFrame(frames.draw(mesh, shader), true, "after Q3Storage_SetData");
+    unsigned char* buffer = nullptr;
+    ASSERT_EQ(Q3MemoryStorage_GetBuffer(storage, &buffer, nullptr, nullptr), kQ3Success);
+    ASSERT_NE(buffer, nullptr);
+    expectFrame(frames.draw(mesh, shader), true, "after Q3MemoryStorage_GetBuffer");
+    std::copy(bytes.begin(), bytes.end(), buffer);
+    expectFrame(frames.draw(mesh, shader), false, "after a write through Q3MemoryStorage_GetBuffer's pointer");
+}
+
+TEST_F(TextureRenderTest, MipmapsOverOneStorageAtDifferentOffsetsDrawTheirOwnTexels)
+{
+    // One storage Q3 owns holding the texture and then its inverse; two
+    // mipmap textures of the same size and layout, the first at offset 0,
+    // the second at the inverse's offset: each is drawn with its own texels,
+    // in one frame after the other and both in the same frame's cache.
+    TQ3GeometryObject mesh = quad();
+    std::vector<unsigned char> bytes = textureBytes();
+    const std::size_t half = bytes.size();
+    for (std::size_t i = 0; i < half; ++i)
+        bytes.push_back(static_cast<unsigned char>(255 - bytes[i]));
+    TQ3StorageObject storage = own(Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size())));
+    const auto mipmapAt = [&](unsigned long offset) {
+        TQ3Mipmap mipmap{};
+        mipmap.image = storage;
+        mipmap.useMipmapping = kQ3False;
+        mipmap.pixelType = kQ3PixelTypeRGB24;
+        mipmap.bitOrder = kQ3EndianBig;
+        mipmap.byteOrder = kQ3EndianBig;
+        mipmap.mipmaps[0] = TQ3MipmapImage{kTexW, kTexH, 3 * kTexW, offset};
+        TQ3ShaderObject shader = own(Q3TextureShader_New(own(Q3MipmapTexture_New(&mipmap))));
+        EXPECT_NE(shader, nullptr);
+        return shader;
+    };
+    TQ3ShaderObject plain = mipmapAt(0);
+    TQ3ShaderObject inverted = mipmapAt(static_cast<unsigned long>(half));
+    Frames frames;
+    expectFrame(frames.draw(mesh, plain), false, "the texture at offset 0");
+    expectFrame(frames.draw(mesh, inverted), true, "the texture at the inverse's offset");
+    expectFrame(frames.draw(mesh, plain), false, "the texture at offset 0 again");
 }
 
 TEST_F(TextureRenderTest, AStorageThatNoLongerHoldsTheImageFailsTheRendering)
