@@ -270,7 +270,17 @@ MeshView Mesh::view() const
         view.shaderCount = m_shaders.size();
     }
     view.serial = m_serial.value;
+    view.uvsComplete = m_serial.value != 0 && m_serial.uvsComplete;
     return view;
+}
+
+void Mesh::setSerial(std::uint64_t serial)
+{
+    m_serial.value = serial;
+    bool complete = !m_uvs.empty();
+    for (std::size_t i = 0; i < m_uvs.size(); i += 2)
+        complete &= m_uvs[i] == m_uvs[i];
+    m_serial.uvsComplete = complete;
 }
 
 std::uint64_t Mesh::newSerial()

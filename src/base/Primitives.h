@@ -138,6 +138,10 @@ struct MeshView {
     /// may keep what it derived from them. 0: no such promise (a mesh built
     /// for one submit, or a view whose arrays were replaced).
     std::uint64_t serial = 0;
+    /// With a serial: every vertex has a uv (no u is NaN), found when the
+    /// serial was given, so that a renderer need not look again each frame.
+    /// false: not known.
+    bool uvsComplete = false;
 };
 
 /// A decomposition that owns its arrays: what retained geometries cache.
@@ -185,7 +189,8 @@ public:
     /// Names the mesh's present contents for its views (MeshView::serial):
     /// a new number from newSerial() once the mesh is built and will not
     /// change. A copy of the mesh, and the mesh after clear(), have none.
-    void setSerial(std::uint64_t serial) { m_serial.value = serial; }
+    /// (It also notes whether every vertex has a uv: MeshView::uvsComplete.)
+    void setSerial(std::uint64_t serial);
     /// A number no mesh was given before (never 0).
     static std::uint64_t newSerial();
 
@@ -193,11 +198,13 @@ private:
     // MeshView::serial; copied as 0 (a copy may be changed).
     struct Serial {
         std::uint64_t value = 0;
+        bool uvsComplete = false;
         Serial() = default;
         Serial(const Serial&) noexcept {}
         Serial& operator=(const Serial&) noexcept
         {
             value = 0;
+            uvsComplete = false;
             return *this;
         }
     };

@@ -267,10 +267,13 @@ const float* RenderPass::textureCoordinates(const MeshView& mesh, const TextureC
     // vertex without a uv (NaN) gets (0, 0) if no triangle uses it; a
     // triangle that does leaves the mesh untextured.
     const float* uvs = mesh.uvs;
-    // (Without an early exit, so that the compiler vectorizes the scan.)
+    // A retained mesh's were looked at once (MeshView::uvsComplete): the
+    // scan read them every frame, which a mesh drawn from kept vertex data
+    // otherwise never does (cache misses).
     bool lacking = false;
-    for (std::size_t i = 0; i < mesh.vertexCount; ++i)
-        lacking |= mesh.uvs[2 * i] != mesh.uvs[2 * i];
+    if (!mesh.uvsComplete)
+        for (std::size_t i = 0; i < mesh.vertexCount; ++i)
+            lacking |= mesh.uvs[2 * i] != mesh.uvs[2 * i];
     if (lacking) {
         for (std::size_t i = 0; i < 3 * mesh.triangleCount; ++i)
             if (mesh.uvs[2 * std::size_t(mesh.triangles[i])] != mesh.uvs[2 * std::size_t(mesh.triangles[i])])

@@ -347,5 +347,35 @@ TEST(Mesh, ASerialStaysWithTheMeshAsBuiltOnly)
     EXPECT_EQ(mesh.view().serial, 0u);
 }
 
+TEST(Mesh, ASerialNotesWhetherEveryVertexHasAUvAndACopyForgetsIt)
+{
+    // MeshView::uvsComplete: found when the serial is given; without a
+    // serial, in a copy, or with a vertex lacking a uv (NaN), not promised.
+    const auto withUV = [](float u, float v) {
+        VertexAttributes attributes;
+        attributes.uv = TQ3Param2D{u, v};
+        return attributes;
+    };
+    Mesh complete;
+    complete.addVertex({0, 0, 0}, withUV(0, 0));
+    complete.addVertex({1, 0, 0}, withUV(1, 0));
+    EXPECT_FALSE(complete.view().uvsComplete) << "no serial yet";
+    complete.setSerial(Mesh::newSerial());
+    EXPECT_TRUE(complete.view().uvsComplete);
+    const Mesh copy = complete;
+    EXPECT_FALSE(copy.view().uvsComplete) << "a copy has no serial";
+
+    Mesh lacking;
+    lacking.addVertex({0, 0, 0}, withUV(0, 0));
+    lacking.addVertex({1, 0, 0}, VertexAttributes{});
+    lacking.setSerial(Mesh::newSerial());
+    EXPECT_FALSE(lacking.view().uvsComplete) << "the second vertex has no uv";
+
+    Mesh none;
+    none.addVertex({0, 0, 0}, VertexAttributes{});
+    none.setSerial(Mesh::newSerial());
+    EXPECT_FALSE(none.view().uvsComplete) << "no uvs at all";
+}
+
 } // namespace
 } // namespace q3
