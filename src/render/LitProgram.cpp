@@ -24,6 +24,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -300,6 +301,7 @@ bool LitProgram::build(std::string& error, int variant)
     const std::string header = switches(variant);
     const char* const vertex[5] = {kVersion, header.c_str(), kShade, kFinishVertexGlsl, kVertex};
     const char* const fragment[5] = {kVersion, header.c_str(), kShade, kFinishFragmentGlsl, kFragment};
+    m_shadingLoaded = false;
     m_program = buildFinishProgram(vertex, fragment, 5, "lighting", error);
     if (m_program == 0)
         return false;
@@ -339,6 +341,7 @@ void LitProgram::release()
     if (m_program != 0)
         glDeleteProgram(m_program);
     m_program = 0;
+    m_shadingLoaded = false;
 }
 
 void LitProgram::use() const
@@ -393,8 +396,26 @@ void LitProgram::setLighting(const LightingSetup& lighting) const
     glUniform3fv(m_viewDirection, 1, lighting.viewDirection);
 }
 
-void LitProgram::setShading(const SurfaceShading& shading) const
+void LitProgram::setShading(const SurfaceShading& shading)
 {
+    const bool all = !m_shadingLoaded;
+    const SurfaceShading was = m_shading;
+    m_shading = shading;
+    m_shadingLoaded = true;
+    if (all || shading.illumination != was.illumination)
+        glUniform1i(m_illumination, shading.illumination);
+    if (all || shading.ambientCoefficient != was.ambientCoefficient)
+        glUniform1f(m_ambientCoefficient, shading.ambientCoefficient);
+    if (all || !std::equal(std::begin(shading.specularColor), std::end(shading.specularColor),
+                           std::begin(was.specularColor)))
+        glUniform3fv(m_specularColor, 1, shading.specularColor);
+    if (all || shading.specularControl != was.specularControl)
+        glUniform1f(m_specularControl, shading.specularControl);
+    if (all || shading.flipBackFaces != was.flipBackFaces)
+        glUniform1i(m_flipBack, shading.flipBackFaces ? 1 : 0);
+    if (!all && std::equal(std::begin(shading.localToWorld), std::end(shading.localToWorld),
+                           std::begin(was.localToWorld)))
+        return;
     // localToWorld is in QuickDraw 3D's row-vector layout, which is the
     // column-major layout of the column-vector matrix GLSL multiplies with.
     glUniformMatrix4fv(m_localToWorld, 1, GL_FALSE, shading.localToWorld);
@@ -412,11 +433,6 @@ void LitProgram::setShading(const SurfaceShading& shading) const
         for (int j = 0; j < 3; ++j)
             normalMatrix[3 * i + j] = float(normals[i][j]);
     glUniformMatrix3fv(m_normalToWorld, 1, GL_FALSE, normalMatrix);
-    glUniform1i(m_illumination, shading.illumination);
-    glUniform1f(m_ambientCoefficient, shading.ambientCoefficient);
-    glUniform3fv(m_specularColor, 1, shading.specularColor);
-    glUniform1f(m_specularControl, shading.specularControl);
-    glUniform1i(m_flipBack, shading.flipBackFaces ? 1 : 0);
 }
 
 } // namespace q3

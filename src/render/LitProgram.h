@@ -80,12 +80,19 @@ public:
     /// Deletes the program in the current context (when it is destroyed with
     /// its context, forgets it).
     void release();
-    void forget() { m_program = 0; }
+    void forget()
+    {
+        m_program = 0;
+        m_shadingLoaded = false;
+    }
     bool built() const { return m_program != 0; }
 
     void use() const;
     void setLighting(const LightingSetup& lighting) const;
-    void setShading(const SurfaceShading& shading) const;
+    /// Sets the uniforms of `shading` that differ from what the program was
+    /// last given (each draw sets its shading; most of it is the same from
+    /// draw to draw, and each uniform set costs Mesa a state update).
+    void setShading(const SurfaceShading& shading);
     /// The opacity and fog uniforms (render/SurfaceFinish.h).
     const FinishUniforms& finish() const { return m_finish; }
 
@@ -97,6 +104,9 @@ private:
     GLint m_illumination = -1, m_ambientCoefficient = -1, m_specularColor = -1, m_specularControl = -1;
     GLint m_localToWorld = -1, m_normalToWorld = -1, m_flipBack = -1;
     FinishUniforms m_finish;
+    // What setShading last gave the program, once it gave it anything.
+    SurfaceShading m_shading;
+    bool m_shadingLoaded = false;
 };
 
 } // namespace q3
