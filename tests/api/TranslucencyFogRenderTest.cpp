@@ -181,6 +181,21 @@ protected:
         return image;
     }
 
+    // `geometries` submitted in this order, lit by Lambert under an ambient
+    // light of 1 (so each lit colour is the diffuse one), with `interpolation`.
+    Pixmap renderLambert(TQ3InterpolationStyle interpolation, const std::vector<TQ3GeometryObject>& geometries)
+    {
+        TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
+        return render(
+            [&](TQ3ViewObject v) {
+                Q3InterpolationStyle_Submit(interpolation, v);
+                Q3Shader_Submit(lambert, v);
+                for (TQ3GeometryObject geometry : geometries)
+                    Q3Geometry_Submit(geometry, v);
+            },
+            nullptr, true);
+    }
+
     // Every pixel in columns i0..i1 (ends excluded) and every row, against
     // expected(i), within `tolerance` per channel.
     void expectColumns(const Pixmap& image, unsigned long i0, unsigned long i1,
@@ -376,18 +391,10 @@ TEST_F(TranslucencyFogRenderTest, LitTranslucentSurfaceBlendsItsLitColour)
 {
     // Lambert under an ambient light of 1: the lit colour is the diffuse one.
     const Color grey{0.25, 0.25, 0.25};
-    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
     TQ3GeometryObject back = rect(-3, 3, -3, 3, 0, 0, colorSet(kBehind));
     TQ3GeometryObject front = rect(-3, 3, -3, 3, 1, 1, colorSet(kFront, &grey));
     for (TQ3InterpolationStyle interpolation : {kQ3InterpolationStyleVertex, kQ3InterpolationStylePixel}) {
-        const Pixmap image = render(
-            [&](TQ3ViewObject v) {
-                Q3InterpolationStyle_Submit(interpolation, v);
-                Q3Shader_Submit(lambert, v);
-                Q3Geometry_Submit(front, v);
-                Q3Geometry_Submit(back, v);
-            },
-            nullptr, true);
+        const Pixmap image = renderLambert(interpolation, {front, back});
         expectColumns(image, 0, kSize, [&](unsigned long) { return mix(kFront, kBehind, 0.25); },
                       "lit, interpolation " + std::to_string(int(interpolation)));
     }
@@ -406,7 +413,6 @@ TEST_F(TranslucencyFogRenderTest, LitLayersOfOneGreyOpacityAndOfTintsBlendEachBy
     const Color tint{0.2, 0.9, 0.5};
     const Color grey{0.4, 0.4, 0.4};
     const Color middle{0.7, 0.1, 0.5};
-    TQ3ShaderObject lambert = own(Q3LambertIllumination_New());
     TQ3AttributeSet greyVertex = own(Q3AttributeSet_New());
     const TQ3ColorRGB g{float(grey.r), float(grey.g), float(grey.b)};
     ASSERT_EQ(Q3AttributeSet_Add(greyVertex, kQ3AttributeTypeTransparencyColor, &g), kQ3Success);
@@ -416,16 +422,7 @@ TEST_F(TranslucencyFogRenderTest, LitLayersOfOneGreyOpacityAndOfTintsBlendEachBy
     TQ3GeometryObject right = rect(0, 3, -3, 3, 1, 1, colorSet(kFront), greyVertex);
     const Color expected = mix(kFront, mix(middle, kBehind, tint), grey.r);
     for (TQ3InterpolationStyle interpolation : {kQ3InterpolationStyleVertex, kQ3InterpolationStylePixel}) {
-        const Pixmap image = render(
-            [&](TQ3ViewObject v) {
-                Q3InterpolationStyle_Submit(interpolation, v);
-                Q3Shader_Submit(lambert, v);
-                Q3Geometry_Submit(left, v);
-                Q3Geometry_Submit(tinted, v);
-                Q3Geometry_Submit(back, v);
-                Q3Geometry_Submit(right, v);
-            },
-            nullptr, true);
+        const Pixmap image = renderLambert(interpolation, {left, tinted, back, right});
         const std::string how = "interpolation " + std::to_string(int(interpolation));
         expectColumns(image, 0, kSize / 2, [&](unsigned long) { return expected; }, "grey geometry, " + how);
         expectColumns(image, kSize / 2, kSize, [&](unsigned long) { return expected; }, "grey vertices, " + how);
