@@ -557,10 +557,9 @@ private:
     LitProgram* litProgram(int variant, RenderResult& result);
     // Makes variant `variant` current for `shading`: built if need be, its
     // two-sidedness set, the frame's lights loaded the first time this flush
-    // uses it (lightsLoaded, one flag per variant). Null, with `result` set,
+    // uses it (lightsLoaded, one flag per variant), and `drawOpacity` set
+    // when the variant takes one (DRAW_OPACITY). Null, with `result` set,
     // when the driver refuses the program.
-    // Makes variant `variant` current with `shading`, its lights loaded once
-    // a frame, and `drawOpacity` when the variant takes one (DRAW_OPACITY).
     LitProgram* useLitProgram(int variant, const SurfaceShading& shading, bool* lightsLoaded, RenderResult& result,
                               float drawOpacity = 1.0f);
     // Two-sided colours for a lit variant that writes them (on between uses:
