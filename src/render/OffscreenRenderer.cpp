@@ -471,6 +471,13 @@ private:
     // the clusters' rectangles); returns its place there.
     std::uint32_t storeTranslucentVertex(const DrawRequest& r, bool textured, std::size_t i,
                                          const std::array<float, 4>& opacity);
+    // Stores every vertex of a draw, in order, each with `opacity`.
+    void storeTranslucentVertices(const DrawRequest& r, bool textured, const std::array<float, 4>& opacity);
+    // Makes the store `count` vertices long, its new places unwritten.
+    void growTranslucentVertices(std::size_t count);
+    // Writes vertex i of a draw at place `at` of the store, sized for it.
+    void writeTranslucentVertex(const DrawRequest& r, bool textured, std::size_t i,
+                                const std::array<float, 4>& opacity, std::size_t at);
     // The depth of a triangle with these corners in clip space: its
     // centre's z / w, which is the corners' summed z over their summed w
     // (the thirds cancel); a centre behind the eye sorts farthest.
@@ -509,11 +516,12 @@ private:
     std::vector<FogSetup> m_fogs;
     std::uint32_t m_currentFog = kNoFog;
     OpacitySetup m_opacity;
-    std::vector<Vertex> m_translucentVertices;
+    // (Resized without being zeroed: each is written right after.)
+    std::vector<Vertex, UninitializedAllocator<Vertex>> m_translucentVertices;
     // The clip coordinates of each translucent vertex under its draw's
     // matrix (x y z w), computed once per vertex by drawSplit.
-    std::vector<std::array<double, 4>> m_translucentClip;
-    std::vector<float> m_translucentOpacity; // r g b and their mean per vertex
+    std::vector<std::array<double, 4>, UninitializedAllocator<std::array<double, 4>>> m_translucentClip;
+    std::vector<float, UninitializedAllocator<float>> m_translucentOpacity; // r g b and their mean per vertex
     std::vector<TranslucentState> m_translucentStates;
     std::vector<SurfaceShading> m_translucentShadings;
     TriangleVector m_translucentTriangles;
@@ -2532,18 +2540,52 @@ std::array<float, 4> opacityOf(const float* rgb)
 
 } // namespace
 
-std::uint32_t OffscreenRenderer::Impl::storeTranslucentVertex(const DrawRequest& r, bool textured, std::size_t i,
-                                                               const std::array<float, 4>& opacity)
+void OffscreenRenderer::Impl::writeTranslucentVertex(const DrawRequest& r, bool textured, std::size_t i,
+                                                    const std::array<float, 4>& opacity, std::size_t at)
 {
     const std::array<float, 16>& m = m_matrices[m_currentMatrix];
     const float* p = r.xyz + 3 * i;
-    std::array<double, 4> clip;
+    std::array<double, 4>& clip = m_translucentClip[at];
     for (int j = 0; j < 4; ++j)
         clip[j] = double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j];
-    m_translucentClip.push_back(clip);
-    m_translucentVertices.push_back(vertexAt(r, textured, i));
-    m_translucentOpacity.insert(m_translucentOpacity.end(), opacity.begin(), opacity.end());
-    return std::uint32_t(m_translucentVertices.size() - 1);
+    m_translucentVertices[at] = vertexAt(r, textured, i);
+    std::copy(opacity.begin(), opacity.end(), m_translucentOpacity.begin() + std::ptrdiff_t(4 * at));
+}
+
+void OffscreenRenderer::Impl::growTranslucentVertices(std::size_t count)
+{
+    // Room in all three first (by half again at least, so that growing a
+    // vertex at a time costs no more than push_back), so that running out
+    // of memory leaves them the same length.
+    const auto room = [count](auto& values, std::size_t perVertex) {
+        const std::size_t needed = perVertex * count;
+        if (values.capacity() < needed)
+            values.reserve(std::max(needed, values.capacity() + values.capacity() / 2));
+    };
+    room(m_translucentClip, 1);
+    room(m_translucentVertices, 1);
+    room(m_translucentOpacity, 4);
+    m_translucentClip.resize(count);
+    m_translucentVertices.resize(count);
+    m_translucentOpacity.resize(4 * count);
+}
+
+std::uint32_t OffscreenRenderer::Impl::storeTranslucentVertex(const DrawRequest& r, bool textured, std::size_t i,
+                                                               const std::array<float, 4>& opacity)
+{
+    const std::size_t at = m_translucentVertices.size();
+    growTranslucentVertices(at + 1);
+    writeTranslucentVertex(r, textured, i, opacity, at);
+    return std::uint32_t(at);
+}
+
+void OffscreenRenderer::Impl::storeTranslucentVertices(const DrawRequest& r, bool textured,
+                                                       const std::array<float, 4>& opacity)
+{
+    const std::size_t first = m_translucentVertices.size();
+    growTranslucentVertices(first + r.vertexCount);
+    for (std::size_t i = 0; i < r.vertexCount; ++i)
+        writeTranslucentVertex(r, textured, i, opacity, first + i);
 }
 
 RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textured)
@@ -2575,8 +2617,7 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         if (count < 3)
             return RenderResult::success();
         const std::uint32_t state = translucentState(r, textured, false, drawOpacity);
-        for (std::size_t i = 0; i < r.vertexCount; ++i)
-            storeTranslucentVertex(r, textured, i, uniformOpacity);
+        storeTranslucentVertices(r, textured, uniformOpacity);
         // Written in place, through pointers the loop's stores cannot
         // change (a triangle built on the stack and pushed back went
         // through memory: a fifth of the batch's time on the calling thread).
