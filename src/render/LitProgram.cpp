@@ -35,7 +35,7 @@ namespace {
 
 // The first source strings: the version, then the variant's switches
 // (LitProgram::variant: TEXTURED, PER_PIXEL, FOG, DIRECTIONAL_ONLY, ONE_SIDED,
-// DRAW_OPACITY, PLAIN_VARYINGS, LIGHT_COUNT), both before anything else as
+// DRAW_OPACITY, PLAIN_VARYINGS, LOCAL_IS_WORLD, LIGHT_COUNT), both before anything else as
 // GLSL requires.
 constexpr const char* kVersion = "#version 130\n";
 // The variant's switches (LitProgram::variant), after the version line.
@@ -56,8 +56,10 @@ std::string switches(int variant)
         text += "#define DRAW_OPACITY 1\n";
     if (LitProgram::usesPlainVaryings(variant))
         text += "#define PLAIN_VARYINGS 1\n";
-    if (variant >= 128)
-        text += "#define LIGHT_COUNT " + std::to_string(variant / 128 - 1) + "\n";
+    if ((variant & 128) != 0)
+        text += "#define LOCAL_IS_WORLD 1\n";
+    if (variant >= 256)
+        text += "#define LIGHT_COUNT " + std::to_string(variant / 256 - 1) + "\n";
     return text;
 }
 
@@ -202,9 +204,14 @@ constexpr const char* kVertex = R"(
 void main()
 {
     gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+#ifdef LOCAL_IS_WORLD
+    worldPosition = gl_Vertex.xyz; // w is 1: every position array has three components
+    worldNormal = gl_Normal;
+#else
     vec4 w = localToWorld * gl_Vertex;
     worldPosition = w.xyz / w.w;
     worldNormal = normalToWorld * gl_Normal;
+#endif
 #ifdef TEXTURED
 #ifdef PLAIN_VARYINGS
     q3St = gl_MultiTexCoord0.st;

@@ -49,6 +49,15 @@ public:
     /// work that of a program written for the scene (benchmarks/RESULTS.md,
     /// ModelFrame).
     ///
+    /// A draw whose local-to-world transform is the identity (geometry
+    /// drawn where it was modelled, as most retained meshes of a model are)
+    /// takes the variant whose world position and normal are the local
+    /// ones (LOCAL_IS_WORLD): the same values (the identity maps each to
+    /// itself; multiplied by it they could differ only in the sign of a
+    /// zero, which no lighting sum keeps), without the two matrix products
+    /// per vertex, an eighth of the vertex stage's instructions on the
+    /// ModelFrame model (benchmarks/RESULTS.md, ninth round).
+    ///
     /// Last, the number of lights (ambient ones aside), up to
     /// kUnrolledLights: a variant that knows it loops over a constant count,
     /// which the GLSL compiler unrolls; llvmpipe runs a loop bounded by a
@@ -56,7 +65,7 @@ public:
     /// vertex stage's time on the ModelFrame model (two lights). More lights
     /// take the variant that reads the count from a uniform.
     static constexpr int kUnrolledLights = 4;
-    static constexpr int kVariants = 128 * (kUnrolledLights + 2);
+    static constexpr int kVariants = 256 * (kUnrolledLights + 2);
     static bool isOneSided(int variant) { return (variant & 16) != 0; }
     static bool usesPlainVaryings(int variant) { return (variant & (16 | 32 | 2)) == 16; }
     static int variant(bool textured, const SurfaceShading& shading, bool fogged, const LightingSetup& lighting,
@@ -72,7 +81,14 @@ public:
         return (textured ? 1 : 0) + (shading.interpolation == 2 ? 2 : 0) + (fogged ? 4 : 0) +
                (directionalOnly ? 8 : 0) + (shading.flipBackFaces ? 0 : 16) +
                (shading.interpolation == 0 ? 32 : 0) + (drawOpacity ? 64 : 0) +
-               128 * (listed <= kUnrolledLights ? listed + 1 : 0);
+               (isIdentity(shading.localToWorld) ? 128 : 0) + 256 * (listed <= kUnrolledLights ? listed + 1 : 0);
+    }
+    static bool isIdentity(const float (&matrix)[16])
+    {
+        for (int i = 0; i < 16; ++i)
+            if (matrix[i] != (i % 5 == 0 ? 1.0f : 0.0f))
+                return false;
+        return true;
     }
     /// Compiles and links variant `variant` in the current context; false
     /// (with the log in error) if the driver refuses it.

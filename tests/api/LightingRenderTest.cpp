@@ -21,6 +21,7 @@
 #include "QD3DSet.h"
 #include "QD3DShader.h"
 #include "QD3DStyle.h"
+#include "QD3DTransform.h"
 
 #include <algorithm>
 #include <cmath>
@@ -227,9 +228,12 @@ protected:
     }
 
     // Renders the square lit by lights (the light objects given, so that a
-    // test may edit them first) through the shader.
+    // test may edit them first) through the shader. With `placement`, the
+    // square is drawn through that transform from `modelled` instead.
     Pixmap render(const std::vector<TQ3LightObject>& lights, TQ3ShaderObject shader, TQ3AttributeSet set,
-                  TQ3BackfacingStyle backfacing = kQ3BackfacingStyleBoth, bool facingAway = false)
+                  TQ3BackfacingStyle backfacing = kQ3BackfacingStyleBoth, bool facingAway = false,
+                  TQ3InterpolationStyle interpolation = kQ3InterpolationStylePixel,
+                  const TQ3Matrix4x4* placement = nullptr, TQ3GeometryObject modelled = nullptr)
     {
         Pixmap image(kSize, kSize);
         TestView view(image.pixmap(), kQ3RendererTypeInteractive, camera());
@@ -237,12 +241,14 @@ protected:
         for (TQ3LightObject light : lights)
             EXPECT_NE(Q3Group_AddObject(group, light), nullptr);
         EXPECT_EQ(Q3View_SetLightGroup(view.view(), group), kQ3Success);
-        TQ3GeometryObject geometry = square(set, facingAway);
+        TQ3GeometryObject geometry = placement != nullptr ? modelled : square(set, facingAway);
         EXPECT_EQ(view.render([&](TQ3ViewObject v) {
-            Q3InterpolationStyle_Submit(kQ3InterpolationStylePixel, v);
+            Q3InterpolationStyle_Submit(interpolation, v);
             Q3BackfacingStyle_Submit(backfacing, v);
             if (shader != nullptr)
                 Q3Shader_Submit(shader, v);
+            if (placement != nullptr)
+                Q3MatrixTransform_Submit(placement, v);
             Q3Geometry_Submit(geometry, v);
         }),
                   kQ3ViewStatusDone);
@@ -277,6 +283,29 @@ protected:
             }
         EXPECT_GT(checked, 100) << what;
         EXPECT_EQ(wrong, 0) << what << ": " << first;
+    }
+
+    // A dim ambient light (brightness 0.1), a white point light, and a
+    // Phong surface.
+    struct PhongScene {
+        Light ambient;
+        Light point;
+        Surface surface;
+    };
+    static PhongScene phongScene(Vec location, double brightness, int attenuation, Vec diffuse, Vec specular,
+                                 double control)
+    {
+        PhongScene scene;
+        scene.ambient.brightness = 0.1;
+        scene.point.kind = Light::kPoint;
+        scene.point.location = location;
+        scene.point.brightness = brightness;
+        scene.point.attenuation = attenuation;
+        scene.surface.diffuse = diffuse;
+        scene.surface.specular = specular;
+        scene.surface.control = control;
+        scene.surface.phong = true;
+        return scene;
     }
 
     const Vec m_up{0, 0, 1}; // the square's normal, towards the camera
@@ -356,17 +385,7 @@ TEST_F(LightingRenderTest, SpotLightsFallOffBetweenTheirHotAndOuterAngles)
 
 TEST_F(LightingRenderTest, PhongAddsTheSpecularTermToLambert)
 {
-    Light point;
-    point.kind = Light::kPoint;
-    point.location = {-0.4, 0.6, 2.5};
-    point.brightness = 0.7;
-    Light ambient;
-    ambient.brightness = 0.1;
-    Surface s;
-    s.diffuse = {0.5, 0.2, 0.1};
-    s.specular = {0.9, 0.9, 1.0};
-    s.control = 12;
-    s.phong = true;
+    auto [ambient, point, s] = phongScene({-0.4, 0.6, 2.5}, 0.7, 0, {0.5, 0.2, 0.1}, {0.9, 0.9, 1.0}, 12);
     const std::vector<Light> lights{ambient, point};
     const Pixmap phong = render({newLight(ambient), newLight(point)}, own(Q3PhongIllumination_New()), surfaceSet(s));
     expectLit(phong, lights, s, m_up, "phong");
@@ -374,6 +393,53 @@ TEST_F(LightingRenderTest, PhongAddsTheSpecularTermToLambert)
     const Pixmap lambert =
         render({newLight(ambient), newLight(point)}, own(Q3LambertIllumination_New()), surfaceSet(s));
     expectLit(lambert, lights, s, m_up, "lambert");
+}
+
+// A geometry drawn through a transform is lit where the transform puts it,
+// with its normals by the transform's inverse transpose; one drawn without
+// is lit where it was modelled (the renderer lights the two by different
+// program variants, LitProgram.h's LOCAL_IS_WORLD).
+TEST_F(LightingRenderTest, ASquarePutInPlaceByATransformIsLitWhereItIsDrawn)
+{
+    const auto [ambient, point, s] = phongScene({0.5, -0.3, 1.5}, 1.3, 1, {0.8, 0.6, 0.4}, {0.9, 0.8, 1.0}, 10);
+    const std::vector<Light> lights{ambient, point};
+    // Modelled at half its width, tilted back and one unit behind z = 0:
+    // the transform (row vectors, p' = p M) doubles x, turns z' = z - y,
+    // and adds 1 to z, so that it lands on z = 0 with the normal (0, 0, 1)
+    // only by the inverse transpose (the local normal is (0, -1, 1) / sqrt 2).
+    const float h = float(kHalf) + 0.5f;
+    std::vector<TQ3Vertex3D> v{{{-h / 2, -h, -1 - h}, nullptr},
+                               {{h / 2, -h, -1 - h}, nullptr},
+                               {{h / 2, h, -1 + h}, nullptr},
+                               {{-h / 2, h, -1 + h}, nullptr}};
+    const TQ3PolygonData data{4, v.data(), surfaceSet(s)};
+    TQ3GeometryObject modelled = own(Q3Polygon_New(&data));
+    TQ3Matrix4x4 placement{};
+    placement.value[0][0] = 2;
+    placement.value[1][1] = 1;
+    placement.value[1][2] = -1;
+    placement.value[2][2] = 1;
+    placement.value[3][2] = 1;
+    placement.value[3][3] = 1;
+    for (TQ3InterpolationStyle interpolation : {kQ3InterpolationStylePixel, kQ3InterpolationStyleVertex}) {
+        const Pixmap moved = render({newLight(ambient), newLight(point)}, own(Q3PhongIllumination_New()), nullptr,
+                                    kQ3BackfacingStyleBoth, false, interpolation, &placement, modelled);
+        if (interpolation == kQ3InterpolationStylePixel) {
+            expectLit(moved, lights, s, m_up, "through the transform");
+            continue;
+        }
+        // Lit at the corners and interpolated: the same pixels as the
+        // square modelled in place.
+        const Pixmap inPlace = render({newLight(ambient), newLight(point)}, own(Q3PhongIllumination_New()),
+                                      surfaceSet(s), kQ3BackfacingStyleBoth, false, interpolation);
+        int differing = 0;
+        for (unsigned long j = 0; j < kSize; ++j)
+            for (unsigned long i = 0; i < kSize; ++i) {
+                const Rgba a = moved.at(i, j), b = inPlace.at(i, j);
+                differing += std::abs(a.r - b.r) > 1 || std::abs(a.g - b.g) > 1 || std::abs(a.b - b.b) > 1;
+            }
+        EXPECT_EQ(differing, 0) << "lit at the vertices";
+    }
 }
 
 TEST_F(LightingRenderTest, WithoutAnIlluminationShaderOrWithTheNullOneSurfacesShowTheirDiffuseColour)
