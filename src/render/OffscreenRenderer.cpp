@@ -1925,9 +1925,20 @@ void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
 // trilinear filter uploads the mipmaps; the others read the first image, so
 // GL_TEXTURE_MAX_LEVEL is 0 for them (a texture is then complete with one
 // image).
+//
+// A texture whose every texel drawn is opaque is stored without alpha
+// (GL_RGB8): sampled, its alpha is 1 as before, and llvmpipe's fragment code
+// then reads no alpha from it and multiplies by none (a sixtieth of the
+// opaque fragments' instructions on the ModelFrame model, benchmarks/
+// RESULTS.md, ninth round).
 void OffscreenRenderer::Impl::uploadTexture(const BatchTexture& texture)
 {
     const bool mipmapped = texture.filter == TextureFilter::kTrilinear && !texture.mipmaps.empty();
+    bool opaque = !texture.hasAlpha;
+    for (std::size_t i = 0; mipmapped && opaque && i < texture.mipmaps.size(); ++i)
+        for (std::size_t at = 3; at < texture.mipmaps[i].size() && opaque; at += 4)
+            opaque = texture.mipmaps[i][at] == 255;
+    const GLint stored = opaque ? GL_RGB8 : GL_RGBA8;
     const GLint magnify = texture.filter == TextureFilter::kNearest ? GL_NEAREST : GL_LINEAR;
     const GLint minify = mipmapped ? GL_LINEAR_MIPMAP_LINEAR : magnify;
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minify);
@@ -1935,13 +1946,13 @@ void OffscreenRenderer::Impl::uploadTexture(const BatchTexture& texture)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, texture.clampS ? GL_CLAMP_TO_EDGE : GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, texture.clampT ? GL_CLAMP_TO_EDGE : GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mipmapped ? GLint(texture.mipmaps.size()) : 0);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, GLsizei(texture.width), GLsizei(texture.height), 0, GL_RGBA,
+    glTexImage2D(GL_TEXTURE_2D, 0, stored, GLsizei(texture.width), GLsizei(texture.height), 0, GL_RGBA,
                  GL_UNSIGNED_BYTE, texture.rgba.data());
     if (!mipmapped)
         return;
     for (std::size_t i = 0; i < texture.mipmaps.size(); ++i) {
         const unsigned shift = unsigned(i + 1);
-        glTexImage2D(GL_TEXTURE_2D, GLint(shift), GL_RGBA8, GLsizei(std::max(1u, texture.width >> shift)),
+        glTexImage2D(GL_TEXTURE_2D, GLint(shift), stored, GLsizei(std::max(1u, texture.width >> shift)),
                      GLsizei(std::max(1u, texture.height >> shift)), 0, GL_RGBA, GL_UNSIGNED_BYTE,
                      texture.mipmaps[i].data());
     }

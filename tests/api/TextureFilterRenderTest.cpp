@@ -317,4 +317,41 @@ TEST_F(TextureFilterRenderTest, AMipmapWithoutUseMipmappingIsOneImageUnderBest)
     expectPixels(render(shader, &kBest), [](double, double) { return kLevelColours[0]; }, 0, "one image");
 }
 
+// The texture's alpha is the level's the filter reads, also where the first
+// image is opaque and a later one is not (the renderer stores a texture
+// without alpha only when every image it can read is opaque): drawn under
+// Best at level 1 exactly (k = 1: 64 texels over 32 pixels), the image's
+// alpha is that level's, as the draw writes it (a texture whose first image
+// is opaque draws opaque, unblended).
+TEST_F(TextureFilterRenderTest, BestReadsTheAlphaOfTheLevelItDraws)
+{
+    constexpr int kLevelAlpha = 96;
+    std::vector<unsigned char>& bytes = m_bytes.emplace_back();
+    std::vector<TQ3MipmapImage> images;
+    for (int level = 0, side = 64; side >= 1; ++level, side /= 2) {
+        images.push_back(TQ3MipmapImage{(unsigned long)side, (unsigned long)side, 4ul * side, bytes.size()});
+        const Colour c = kLevelColours[level];
+        const unsigned char alpha = level == 0 ? 255 : kLevelAlpha;
+        for (int i = 0; i < side * side; ++i)
+            bytes.insert(bytes.end(), {alpha, (unsigned char)c.r, (unsigned char)c.g, (unsigned char)c.b});
+    }
+    TQ3StorageObject storage = own(Q3MemoryStorage_New(bytes.data(), static_cast<unsigned long>(bytes.size())));
+    TQ3Mipmap mipmap = q3test::bigEndianMipmap(storage, kQ3PixelTypeARGB32, true, {});
+    for (std::size_t i = 0; i < images.size(); ++i)
+        mipmap.mipmaps[i] = images[i];
+    TQ3TextureObject texture = own(Q3MipmapTexture_New(&mipmap));
+    ASSERT_NE(texture, nullptr);
+    TQ3ShaderObject shader = own(Q3TextureShader_New(texture));
+    const Pixmap image = render(shader, &kBest);
+    expectPixels(image, [](double, double) { return kLevelColours[1]; }, 3, "level 1");
+    int wrong = 0;
+    for (int py = kQuad0; py < kQuad0 + kQuadSide; ++py)
+        for (int px = kQuad0; px < kQuad0 + kQuadSide; ++px)
+            wrong += std::abs(image.at(px, py).a - kLevelAlpha) > 3;
+    EXPECT_EQ(wrong, 0) << "pixels whose alpha is not level 1's";
+    // Under Mid the first image alone is read: opaque.
+    const Pixmap first = render(shader, &kMid);
+    EXPECT_EQ(first.at(kQuad0 + 5, kQuad0 + 5).a, 255);
+}
+
 } // namespace
