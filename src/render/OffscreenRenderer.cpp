@@ -2941,11 +2941,14 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
     // Farthest first; triangles at one depth keep their submission order.
     sortFarthestFirst();
     clusterTranslucent();
-    m_translucentIndices.clear();
-    m_translucentIndices.reserve(3 * m_translucentTriangles.size());
-    for (const TranslucentTriangle& triangle : m_translucentTriangles)
-        for (std::uint32_t k = 0; k < 3; ++k)
-            m_translucentIndices.push_back(triangle.v[k]);
+    m_translucentIndices.resize(3 * m_translucentTriangles.size());
+    GLuint* index = m_translucentIndices.data();
+    for (const TranslucentTriangle& triangle : m_translucentTriangles) {
+        index[0] = triangle.v[0];
+        index[1] = triangle.v[1];
+        index[2] = triangle.v[2];
+        index += 3;
+    }
 
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
