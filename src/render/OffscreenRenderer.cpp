@@ -1931,13 +1931,25 @@ void OffscreenRenderer::Impl::bindTexture(std::uint32_t index)
 // then reads no alpha from it and multiplies by none (a sixtieth of the
 // opaque fragments' instructions on the ModelFrame model, benchmarks/
 // RESULTS.md, ninth round).
+namespace {
+
+// Whether every texel of an RGBA8 image has alpha 255.
+bool allOpaque(const std::vector<std::uint8_t>& rgba)
+{
+    for (std::size_t i = 3; i < rgba.size(); i += 4)
+        if (rgba[i] != 255)
+            return false;
+    return true;
+}
+
+} // namespace
+
 void OffscreenRenderer::Impl::uploadTexture(const BatchTexture& texture)
 {
     const bool mipmapped = texture.filter == TextureFilter::kTrilinear && !texture.mipmaps.empty();
     bool opaque = !texture.hasAlpha;
     for (std::size_t i = 0; mipmapped && opaque && i < texture.mipmaps.size(); ++i)
-        for (std::size_t at = 3; at < texture.mipmaps[i].size() && opaque; at += 4)
-            opaque = texture.mipmaps[i][at] == 255;
+        opaque = allOpaque(texture.mipmaps[i]);
     const GLint stored = opaque ? GL_RGB8 : GL_RGBA8;
     const GLint magnify = texture.filter == TextureFilter::kNearest ? GL_NEAREST : GL_LINEAR;
     const GLint minify = mipmapped ? GL_LINEAR_MIPMAP_LINEAR : magnify;
@@ -2107,8 +2119,7 @@ RenderResult OffscreenRenderer::Impl::addTexture(const TextureImage& texture, st
     const RenderResult mipmaps = decodeMipmaps(texture, decoded);
     if (!mipmaps)
         return mipmaps;
-    for (std::size_t i = 3; i < decoded.rgba.size() && !decoded.hasAlpha; i += 4)
-        decoded.hasAlpha = decoded.rgba[i] != 255;
+    decoded.hasAlpha = !allOpaque(decoded.rgba);
     if (slot != kNotCached) {
         m_gl->textureCache[slot].lastFrame = m_gl->frameNumber;
         m_gl->textureCache[slot].user = this;
