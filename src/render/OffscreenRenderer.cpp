@@ -59,6 +59,7 @@
 #include "render/GlApi.h"
 #include "render/GlContext.h"
 #include "render/LitProgram.h"
+#include "render/SingleCover.h"
 #include "render/SurfaceFinish.h"
 
 #include <algorithm>
@@ -430,6 +431,13 @@ private:
         // vertices, stored together), for glDrawRangeElements.
         GLuint firstVertex;
         GLuint lastVertex;
+        // A draw whose every triangle is translucent, of a mesh with a
+        // serial whose boundary is one loop (SingleCover.h): the loop (in
+        // the draw's vertex numbers), and where its triangles are in
+        // m_translucentTriangles; else null.
+        const std::vector<std::uint32_t>* loop;
+        std::size_t firstTriangle;
+        std::size_t triangleCount;
     };
     struct TranslucentTriangle {
         double depth; // of its centre in clip space (z / w), larger is farther
@@ -495,20 +503,31 @@ private:
     // Opaque runs of an alpha texture draw only its opaque texels.
     void loadOpaqueAlphaTest(std::uint32_t texture, bool& loaded);
     void drawTranslucent(RenderResult& result);
-    // Orders m_translucentTriangles farthest first, those at one depth in
-    // submission order.
-    void sortFarthestFirst();
+    // Orders m_translucentTriangles from `first` on farthest first, those
+    // at one depth in submission order.
+    void sortFarthestFirst(std::size_t first);
     struct SortKey {
         std::uint64_t key;
         std::uint32_t index;
     };
     std::vector<SortKey> m_sortKeys; // sortFarthestFirst's scratch
     std::vector<SortKey> m_sortScratch;
-    // Reorders the sorted translucent triangles so that each state's run is
-    // as long as it can be without changing a pixel (see the definition).
-    void clusterTranslucent();
-    std::vector<std::uint32_t> m_clusterOf;        // clusterTranslucent's scratch
-    std::vector<std::array<double, 2>> m_clusterWindow;
+    // Groups the translucent states into clusters that may share pixels
+    // (see the definition): m_stateCluster; false, none found (too many
+    // states to compare).
+    bool findClusters();
+    // Moves to the front of m_translucentTriangles, in their order, those
+    // of each state alone in its cluster whose triangles cover no sample
+    // twice (coversOnce); returns how many.
+    std::size_t placeInOrder();
+    bool coversOnce(const TranslucentState& state);
+    LoopScratch m_loopScratch; // coversOnce's
+    // Reorders the sorted translucent triangles from `first` on so that
+    // each state's run is as long as it can be without changing a pixel.
+    void groupClusters(std::size_t first);
+    std::vector<std::uint32_t> m_stateCluster;     // findClusters: each state's cluster
+    std::vector<std::uint32_t> m_clusterOf;        // groupClusters' scratch
+    std::vector<std::array<double, 2>> m_clusterWindow; // each translucent vertex's window x y
     TriangleVector m_clustered;
     void forgetTranslucent();
     const FogSetup& fogOf(std::uint32_t fog) const;
@@ -663,8 +682,24 @@ public:
     // false: the caller draws them as usual, and the batch's copy is kept if
     // the key was drawn before (the next draw request takes the offer).
     bool drawKept(const StaticKey& key, const SurfaceShading* shading, RenderResult& result);
-    void withdrawOffer() { m_offer = false; }
+    void withdrawOffer()
+    {
+        m_offer = false;
+        m_loopOffer = LoopOffer{};
+    }
     std::uint64_t m_keptDraws = 0; // drawKept's draws, for tests
+    // A translucent mesh with a serial, offered for the draw that follows
+    // (drawFilled): if that draw's triangles are the mesh's own, all
+    // translucent, its boundary loop (SingleCover.h, found once per serial
+    // and kept with the context) may let them be drawn unsorted.
+    struct LoopOffer {
+        std::uint64_t serial = 0;
+        const std::uint32_t* corners = nullptr;
+        std::size_t vertexCount = 0;
+        std::size_t triangleCount = 0;
+    };
+    void offerLoop(const LoopOffer& offer) { m_loopOffer = offer; }
+    std::uint64_t m_inOrderTriangles = 0; // drawn in their own order (placeInOrder), for tests
     std::size_t m_keptLimits[2] = {kKeptVertexLimit, kKeptIndexLimit}; // setKeptLimits
     // Whether the frame's current opacity and texture let its filled
     // triangles be drawn opaque, unsplit (Impl::draw).
@@ -699,6 +734,16 @@ private:
     std::vector<GLuint> m_keptIndices; // storePendingKept's scratch
     StaticKey m_offerKey;
     bool m_offer = false;
+    LoopOffer m_loopOffer;
+    // The offered mesh's boundary loop when request `r` draws its
+    // triangles, else null; takes the offer.
+    const std::vector<std::uint32_t>* loopOf(const DrawRequest& r);
+    struct MeshLoop {
+        std::size_t vertexCount = 0;
+        std::size_t triangleCount = 0;
+        std::vector<std::uint32_t> loop; // empty: none (boundaryLoop false)
+        std::uint64_t lastFrame = 0;
+    };
     KeptMesh* findKept(const StaticKey& key);
     // At the flush, after the batch's upload: copies the pending meshes
     // into the kept buffers (those that fit).
@@ -761,6 +806,9 @@ public:
         std::size_t keptDemand[2] = {0, 0}; // what did not fit
         std::size_t keptLive[2] = {0, 0};   // what the stored meshes use
         bool keptFull = false;
+        // Translucent meshes' boundary loops by serial (loopOf), forgotten
+        // as kept meshes are.
+        std::unordered_map<std::uint64_t, MeshLoop> loops;
         std::uint64_t frameNumber = 0; // frames begun with this context
         const Impl* lender = nullptr;  // in the pool: the renderer that lent it
     };
@@ -1559,6 +1607,24 @@ bool OffscreenRenderer::Impl::drawKept(const StaticKey& key, const SurfaceShadin
     return true;
 }
 
+const std::vector<std::uint32_t>* OffscreenRenderer::Impl::loopOf(const DrawRequest& r)
+{
+    const LoopOffer offer = m_loopOffer;
+    m_loopOffer = LoopOffer{};
+    if (offer.serial == 0 || !r.indexed || r.indices != offer.corners || r.vertexCount != offer.vertexCount ||
+        r.indexCount != 3 * offer.triangleCount)
+        return nullptr;
+    const auto [at, made] = m_gl->loops.try_emplace(offer.serial);
+    MeshLoop& mesh = at->second;
+    if (made || mesh.vertexCount != offer.vertexCount || mesh.triangleCount != offer.triangleCount) {
+        mesh.vertexCount = offer.vertexCount;
+        mesh.triangleCount = offer.triangleCount;
+        boundaryLoop(offer.corners, offer.triangleCount, offer.vertexCount, mesh.loop);
+    }
+    mesh.lastFrame = m_gl->frameNumber;
+    return mesh.loop.empty() ? nullptr : &mesh.loop;
+}
+
 void OffscreenRenderer::Impl::storePendingKept()
 {
     GlResources& gl = *m_gl;
@@ -1636,6 +1702,9 @@ void OffscreenRenderer::Impl::storePendingKept()
 void OffscreenRenderer::Impl::trimKept()
 {
     GlResources& gl = *m_gl;
+    if (gl.frameNumber % kStaleFrames == 0)
+        for (auto it = gl.loops.begin(); it != gl.loops.end();)
+            it = gl.frameNumber - it->second.lastFrame > kStaleFrames ? gl.loops.erase(it) : std::next(it);
     if (gl.keptFull) {
         // Emptied and grown to hold what was kept and what did not fit (at
         // least twice as much); the meshes it held are kept again the next
@@ -2539,6 +2608,8 @@ std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bo
     state.multisample = m_antiAlias.triangles;
     state.drawOpacity = drawOpacity;
     state.firstVertex = state.lastVertex = 0; // drawSplit sets them
+    state.loop = nullptr;
+    state.firstTriangle = state.triangleCount = 0;
     m_translucentStates.push_back(state);
     return std::uint32_t(m_translucentStates.size() - 1);
 }
@@ -2659,8 +2730,12 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
             out->v[2] = v[2];
             out->depth = depthOf(clip[v[0]], clip[v[1]], clip[v[2]]);
         }
-        m_translucentStates[state].firstVertex = GLuint(firstVertex);
-        m_translucentStates[state].lastVertex = GLuint(m_translucentVertices.size() - 1);
+        TranslucentState& stored = m_translucentStates[state];
+        stored.firstVertex = GLuint(firstVertex);
+        stored.lastVertex = GLuint(m_translucentVertices.size() - 1);
+        stored.loop = loopOf(r);
+        stored.firstTriangle = firstTriangle;
+        stored.triangleCount = count / 3;
         return RenderResult::success();
     }
     for (std::size_t t = 0; t + 2 < count; t += 3) {
@@ -2775,12 +2850,12 @@ void OffscreenRenderer::Impl::loadOpaqueAlphaTest(std::uint32_t texture, bool& l
 // its triangles clipped into a larger area) makes its state cover
 // everything. Beyond kMaxClusteredStates states the pairwise test is not
 // worth it and the order stays as sorted.
-void OffscreenRenderer::Impl::clusterTranslucent()
+bool OffscreenRenderer::Impl::findClusters()
 {
     constexpr std::size_t kMaxClusteredStates = 256;
     const std::size_t stateCount = m_translucentStates.size();
-    if (stateCount < 2 || stateCount > kMaxClusteredStates)
-        return;
+    if (stateCount > kMaxClusteredStates)
+        return false;
     struct Box {
         double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
         double x1 = -x0, y1 = -x0;
@@ -2828,7 +2903,8 @@ void OffscreenRenderer::Impl::clusterTranslucent()
         box.y1 += kMargin;
     }
     // Union-find over the states whose rectangles overlap.
-    std::vector<std::uint32_t> parent(stateCount);
+    std::vector<std::uint32_t>& parent = m_stateCluster;
+    parent.resize(stateCount);
     for (std::uint32_t i = 0; i < stateCount; ++i)
         parent[i] = i;
     const auto root = [&parent](std::uint32_t i) {
@@ -2844,13 +2920,112 @@ void OffscreenRenderer::Impl::clusterTranslucent()
                 if (a != b)
                     parent[std::max(a, b)] = std::min(a, b);
             }
+    // Each state's cluster named by its root.
+    for (std::uint32_t i = 0; i < stateCount; ++i)
+        parent[i] = root(i);
+    return true;
+}
+
+// The rasterizer places each vertex where its float arithmetic puts it:
+// llvmpipe computes the clip coordinates as a float product of the matrix
+// and the position (each within 4 units in the last place of the sum of
+// its terms' magnitudes; kFloatError allows twice that), divides by w and
+// snaps to 1/256 of a pixel, which with the viewport's float rounding moves
+// a point by less than 1/128 of a pixel on the largest viewport
+// (kMaxImageSize); kSnapSlack allows four times that. The clip coordinates
+// here are exact to double precision. A vertex moved by dx and dw has its
+// window x moved by at most halfWidth * 2 (|dx| + |dw|) / w while
+// |x| <= w and |dw| <= w / 2.
+bool OffscreenRenderer::Impl::coversOnce(const TranslucentState& state)
+{
+    constexpr double kFloatError = 1.0 / double(1 << 21);
+    constexpr double kSnapSlack = 1.0 / 32.0;
+    // In one pass: the largest position magnitudes (for each clip
+    // coordinate's error), how far each vertex is inside the view volume
+    // (w less the largest of |x|, |y|, |z|, each with its own error added
+    // below), and the nearest w.
+    double reach[3] = {0.0, 0.0, 0.0};
+    double outside[3] = {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                         -std::numeric_limits<double>::infinity()};
+    double nearestW = std::numeric_limits<double>::infinity();
+    for (std::size_t v = state.firstVertex; v <= state.lastVertex; ++v) {
+        const Vertex& p = m_translucentVertices[v];
+        reach[0] = std::max(reach[0], double(std::fabs(p.x)));
+        reach[1] = std::max(reach[1], double(std::fabs(p.y)));
+        reach[2] = std::max(reach[2], double(std::fabs(p.z)));
+        const std::array<double, 4>& clip = m_translucentClip[v];
+        for (int k = 0; k < 3; ++k)
+            outside[k] = std::max(outside[k], std::fabs(clip[k]) - clip[3]);
+        nearestW = std::min(nearestW, clip[3]);
+    }
+    const std::array<float, 16>& m = state.matrix;
+    double error[4];
+    for (int k = 0; k < 4; ++k)
+        error[k] = kFloatError * (std::fabs(m[k]) * reach[0] + std::fabs(m[4 + k]) * reach[1] +
+                                  std::fabs(m[8 + k]) * reach[2] + std::fabs(m[12 + k]));
+    // Every vertex well inside, so that nothing is clipped (clipping makes
+    // vertices of its own), and in front of the eye by more than twice
+    // w's error. (A NaN fails every comparison.)
+    if (!(nearestW > 3.0 * error[3]))
+        return false;
+    for (int k = 0; k < 3; ++k)
+        if (!(outside[k] + error[k] + error[3] < 0.0))
+            return false;
+    const double slack =
+        kSnapSlack + 2.0 * std::max(0.5 * double(m_pane.width) * (error[0] + error[3]),
+                                    0.5 * double(m_pane.height) * (error[1] + error[3])) / nearestW;
+    int turn = 0;
+    const TranslucentTriangle* triangle = m_translucentTriangles.data() + state.firstTriangle;
+    for (std::size_t t = 0; t < state.triangleCount; ++t, ++triangle) {
+        const int way = turnWithSlack(m_clusterWindow[triangle->v[0]], m_clusterWindow[triangle->v[1]],
+                                      m_clusterWindow[triangle->v[2]], slack);
+        if (way == 0 || (turn != 0 && way != turn))
+            return false;
+        turn = way;
+    }
+    return simpleWithSlack(m_clusterWindow.data(), state.firstVertex, *state.loop, slack, m_loopScratch);
+}
+
+std::size_t OffscreenRenderer::Impl::placeInOrder()
+{
+    const std::size_t stateCount = m_translucentStates.size();
+    // How many states each cluster has (every state has triangles).
+    m_clusterOf.assign(stateCount, 0);
+    for (std::size_t state = 0; state < stateCount; ++state)
+        ++m_clusterOf[m_stateCluster[state]];
+    std::vector<bool> inOrder(stateCount, false);
+    std::size_t count = 0;
+    for (std::size_t state = 0; state < stateCount; ++state) {
+        const TranslucentState& drawn = m_translucentStates[state];
+        if (drawn.loop != nullptr && drawn.triangleCount > 0 && m_clusterOf[m_stateCluster[state]] == 1 &&
+            coversOnce(drawn)) {
+            inOrder[state] = true;
+            count += drawn.triangleCount;
+        }
+    }
+    if (count == 0)
+        return 0;
+    // A stable partition: those first, the rest after, each in its order.
+    const std::size_t total = m_translucentTriangles.size();
+    m_clustered.resize(total);
+    std::size_t front = 0, back = count;
+    for (const TranslucentTriangle& triangle : m_translucentTriangles)
+        m_clustered[inOrder[triangle.state] ? front++ : back++] = triangle;
+    m_translucentTriangles.swap(m_clustered);
+    m_inOrderTriangles += count;
+    return count;
+}
+
+void OffscreenRenderer::Impl::groupClusters(std::size_t first)
+{
     // Clusters numbered by first appearance in the sorted order; a stable
     // counting sort by cluster keeps the sorted order inside each.
     constexpr std::uint32_t kUnnumbered = std::numeric_limits<std::uint32_t>::max();
-    m_clusterOf.assign(stateCount, kUnnumbered);
+    m_clusterOf.assign(m_translucentStates.size(), kUnnumbered);
     std::vector<std::size_t> counts;
-    for (const TranslucentTriangle& triangle : m_translucentTriangles) {
-        std::uint32_t& cluster = m_clusterOf[root(triangle.state)];
+    const std::size_t total = m_translucentTriangles.size();
+    for (std::size_t i = first; i < total; ++i) {
+        std::uint32_t& cluster = m_clusterOf[m_stateCluster[m_translucentTriangles[i].state]];
         if (cluster == kUnnumbered) {
             cluster = std::uint32_t(counts.size());
             counts.push_back(0);
@@ -2859,12 +3034,16 @@ void OffscreenRenderer::Impl::clusterTranslucent()
     }
     if (counts.size() < 2)
         return;
-    std::vector<std::size_t> next(counts.size(), 0);
+    std::vector<std::size_t> next(counts.size(), first);
     for (std::size_t c = 1; c < counts.size(); ++c)
         next[c] = next[c - 1] + counts[c - 1];
-    m_clustered.resize(m_translucentTriangles.size());
-    for (const TranslucentTriangle& triangle : m_translucentTriangles)
-        m_clustered[next[m_clusterOf[root(triangle.state)]]++] = triangle;
+    m_clustered.resize(total);
+    std::copy(m_translucentTriangles.begin(), m_translucentTriangles.begin() + std::ptrdiff_t(first),
+              m_clustered.begin());
+    for (std::size_t i = first; i < total; ++i) {
+        const TranslucentTriangle& triangle = m_translucentTriangles[i];
+        m_clustered[next[m_clusterOf[m_stateCluster[triangle.state]]]++] = triangle;
+    }
     m_translucentTriangles.swap(m_clustered);
 }
 
@@ -2877,12 +3056,16 @@ void OffscreenRenderer::Impl::clusterTranslucent()
 // counted as +0, so that the two stay equal).
 // A pass over a byte every key shares moves nothing and is skipped (the
 // exponent's bytes, for depths close together).
-void OffscreenRenderer::Impl::sortFarthestFirst()
+void OffscreenRenderer::Impl::sortFarthestFirst(std::size_t first)
 {
-    const std::size_t count = m_translucentTriangles.size();
+    const std::size_t total = m_translucentTriangles.size();
+    if (total - first < 2)
+        return;
+    const TranslucentTriangle* triangles = m_translucentTriangles.data() + first;
+    const std::size_t count = total - first;
     m_sortKeys.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
-        const double depth = m_translucentTriangles[i].depth + 0.0;
+        const double depth = triangles[i].depth + 0.0;
         std::uint64_t bits;
         std::memcpy(&bits, &depth, sizeof bits);
         constexpr std::uint64_t kSign = std::uint64_t(1) << 63;
@@ -2939,9 +3122,11 @@ void OffscreenRenderer::Impl::sortFarthestFirst()
         }
         i = end;
     }
-    m_clustered.resize(count);
+    m_clustered.resize(total);
+    std::copy(m_translucentTriangles.begin(), m_translucentTriangles.begin() + std::ptrdiff_t(first),
+              m_clustered.begin());
     for (std::size_t i = 0; i < count; ++i)
-        m_clustered[i] = m_translucentTriangles[m_sortKeys[i].index];
+        m_clustered[first + i] = triangles[m_sortKeys[i].index];
     m_translucentTriangles.swap(m_clustered);
 }
 
@@ -2949,9 +3134,15 @@ void OffscreenRenderer::Impl::drawTranslucent(RenderResult& result)
 {
     if (m_translucentTriangles.empty())
         return;
-    // Farthest first; triangles at one depth keep their submission order.
-    sortFarthestFirst();
-    clusterTranslucent();
+    // The triangles of a state alone in its cluster that cover no sample
+    // twice first, in their order (any order gives their pixels); the
+    // rest farthest first, triangles at one depth in submission order,
+    // then cluster by cluster.
+    const bool clustered = findClusters();
+    const std::size_t inOrder = clustered ? placeInOrder() : 0;
+    sortFarthestFirst(inOrder);
+    if (clustered)
+        groupClusters(inOrder);
     m_translucentIndices.resize(3 * m_translucentTriangles.size());
     GLuint* index = m_translucentIndices.data();
     for (const TranslucentTriangle& triangle : m_translucentTriangles) {
@@ -3327,6 +3518,11 @@ std::uint64_t OffscreenRenderer::keptDraws() const
     return m_impl->m_keptDraws;
 }
 
+std::uint64_t OffscreenRenderer::translucentInOrder() const
+{
+    return m_impl->m_inOrderTriangles;
+}
+
 void OffscreenRenderer::setKeptLimits(std::size_t vertices, std::size_t indices)
 {
     m_impl->m_keptLimits[0] = std::max<std::size_t>(vertices, 1);
@@ -3373,6 +3569,12 @@ bool OffscreenRenderer::drawKept(const MeshView& mesh, const Shading& shading, b
 void OffscreenRenderer::endKeptOffer()
 {
     m_impl->withdrawOffer();
+}
+
+void OffscreenRenderer::offerLoop(const MeshView& mesh, bool textured)
+{
+    if (mesh.serial != 0 && m_impl->m_inFrame && !m_impl->opaqueFill(textured))
+        m_impl->offerLoop(Impl::LoopOffer{mesh.serial, mesh.triangles, mesh.vertexCount, mesh.triangleCount});
 }
 
 std::uint64_t OffscreenRenderer::contextsMade()

@@ -229,6 +229,10 @@ public:
     /// triangles from vertex data its context kept from an earlier frame
     /// (OffscreenRenderer.cpp, StaticKey), for tests.
     std::uint64_t keptDraws() const;
+    /// How many translucent triangles this renderer drew in their own
+    /// order, unsorted, because no two of them could cover one sample
+    /// (render/SingleCover.h), for tests.
+    std::uint64_t translucentInOrder() const;
     /// For tests: the most vertices and indices this renderer keeps in its
     /// context (at least 1 each; 2^20 and 2^22 unless set), so that a test
     /// reaches the limits with small meshes.
@@ -248,6 +252,10 @@ private:
     bool drawKept(const MeshView& mesh, const Shading& shading, bool textured, RenderResult& result);
     // Withdraws an offer the draw did not take.
     void endKeptOffer();
+    // Offers a translucent mesh with a serial to the draw that follows, to
+    // be drawn unsorted where that gives the pixels of the sorted order
+    // (OffscreenRenderer.cpp, placeInOrder); endKeptOffer withdraws it.
+    void offerLoop(const MeshView& mesh, bool textured);
     RenderResult drawLit(const MeshView& mesh, const Shading& shading, const float* st);
     std::vector<float> m_scratch;
     std::vector<std::uint32_t> m_indices;

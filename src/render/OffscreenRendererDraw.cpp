@@ -140,6 +140,7 @@ RenderResult OffscreenRenderer::drawFilled(const MeshView& mesh, const Shading& 
     RenderResult kept;
     if (drawKept(mesh, shading, textured, kept))
         return kept;
+    offerLoop(mesh, textured);
     const float* st = textured ? shading.st : nullptr;
     if (textured && st == nullptr) {
         // Shading::uvs through the uv transform, as the view would have.
