@@ -438,6 +438,7 @@ private:
         const std::vector<std::uint32_t>* loop;
         std::size_t firstTriangle;
         std::size_t triangleCount;
+        bool anyOrder; // with a loop: coversOnce(), found as it is stored
     };
     struct TranslucentTriangle {
         double depth; // of its centre in clip space (z / w), larger is farther
@@ -527,7 +528,6 @@ private:
     void groupClusters(std::size_t first);
     std::vector<std::uint32_t> m_stateCluster;     // findClusters: each state's cluster
     std::vector<std::uint32_t> m_clusterOf;        // groupClusters' scratch
-    std::vector<std::array<double, 2>> m_clusterWindow; // each translucent vertex's window x y
     TriangleVector m_clustered;
     void forgetTranslucent();
     const FogSetup& fogOf(std::uint32_t fog) const;
@@ -540,6 +540,9 @@ private:
     // The clip coordinates of each translucent vertex under its draw's
     // matrix (x y z w), computed once per vertex by drawSplit.
     std::vector<std::array<double, 4>, UninitializedAllocator<std::array<double, 4>>> m_translucentClip;
+    // And its window coordinates in pixels from the pane's lower left corner
+    // (x NaN for one at or behind the eye), for the clusters and coversOnce.
+    std::vector<WindowPoint, UninitializedAllocator<WindowPoint>> m_translucentWindow;
     std::vector<float, UninitializedAllocator<float>> m_translucentOpacity; // r g b and their mean per vertex
     std::vector<TranslucentState> m_translucentStates;
     std::vector<SurfaceShading> m_translucentShadings;
@@ -2588,6 +2591,7 @@ void OffscreenRenderer::Impl::forgetTranslucent()
     m_translucentTriangles.clear();
     m_translucentIndices.clear();
     m_translucentClip.clear();
+    m_translucentWindow.clear();
 }
 
 std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bool textured,
@@ -2610,6 +2614,7 @@ std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bo
     state.firstVertex = state.lastVertex = 0; // drawSplit sets them
     state.loop = nullptr;
     state.firstTriangle = state.triangleCount = 0;
+    state.anyOrder = false;
     m_translucentStates.push_back(state);
     return std::uint32_t(m_translucentStates.size() - 1);
 }
@@ -2641,6 +2646,12 @@ void OffscreenRenderer::Impl::writeTranslucentVertex(const DrawRequest& r, bool 
     std::array<double, 4>& clip = m_translucentClip[at];
     for (int j = 0; j < 4; ++j)
         clip[j] = double(p[0]) * m[j] + double(p[1]) * m[4 + j] + double(p[2]) * m[8 + j] + m[12 + j];
+    const double w = clip[3], toWindow = 1.0 / w;
+    const double x = clip[0] * toWindow, y = clip[1] * toWindow;
+    const double halfWidth = 0.5 * double(m_pane.width), halfHeight = 0.5 * double(m_pane.height);
+    m_translucentWindow[at] = w > 1e-6 && std::isfinite(x) && std::isfinite(y)
+                                  ? WindowPoint{(x + 1.0) * halfWidth, (y + 1.0) * halfHeight}
+                                  : WindowPoint{std::numeric_limits<double>::quiet_NaN(), 0.0};
     m_translucentVertices[at] = vertexAt(r, textured, i);
     std::copy(opacity.begin(), opacity.end(), m_translucentOpacity.begin() + std::ptrdiff_t(4 * at));
 }
@@ -2656,9 +2667,11 @@ void OffscreenRenderer::Impl::growTranslucentVertices(std::size_t count)
             values.reserve(std::max(needed, values.capacity() + values.capacity() / 2));
     };
     room(m_translucentClip, 1);
+    room(m_translucentWindow, 1);
     room(m_translucentVertices, 1);
     room(m_translucentOpacity, 4);
     m_translucentClip.resize(count);
+    m_translucentWindow.resize(count);
     m_translucentVertices.resize(count);
     m_translucentOpacity.resize(4 * count);
 }
@@ -2736,6 +2749,8 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         stored.loop = loopOf(r);
         stored.firstTriangle = firstTriangle;
         stored.triangleCount = count / 3;
+        // Tested now, while its vertices and triangles are in the cache.
+        stored.anyOrder = stored.loop != nullptr && coversOnce(stored);
         return RenderResult::success();
     }
     for (std::size_t t = 0; t + 2 < count; t += 3) {
@@ -2862,19 +2877,7 @@ bool OffscreenRenderer::Impl::findClusters()
         bool used = false;
     };
     std::vector<Box> boxes(stateCount);
-    const double halfWidth = 0.5 * double(m_pane.width), halfHeight = 0.5 * double(m_pane.height);
     constexpr double kMargin = 2.0;
-    // Each vertex's window coordinates once (it has the same ones in every
-    // triangle and state of its draw); NaN for one at or behind the eye.
-    m_clusterWindow.resize(m_translucentClip.size());
-    for (std::size_t i = 0; i < m_translucentClip.size(); ++i) {
-        const std::array<double, 4>& clip = m_translucentClip[i];
-        const double w = clip[3];
-        const double px = (clip[0] / w + 1.0) * halfWidth, py = (clip[1] / w + 1.0) * halfHeight;
-        const bool placed = w > 1e-6 && std::isfinite(clip[0] / w) && std::isfinite(clip[1] / w);
-        m_clusterWindow[i] = placed ? std::array<double, 2>{px, py}
-                                    : std::array<double, 2>{std::numeric_limits<double>::quiet_NaN(), 0.0};
-    }
     // (Every vertex of the draw, those of the state's triangles among them:
     // a larger rectangle only merges clusters, whose triangles then keep the
     // sorted order.)
@@ -2886,7 +2889,7 @@ bool OffscreenRenderer::Impl::findClusters()
             continue;
         const TranslucentState& drawn = m_translucentStates[state];
         for (std::size_t v = drawn.firstVertex; v <= drawn.lastVertex; ++v) {
-            const std::array<double, 2>& at = m_clusterWindow[v];
+            const WindowPoint& at = m_translucentWindow[v];
             if (std::isnan(at[0])) {
                 box.x0 = box.y0 = -std::numeric_limits<double>::infinity();
                 box.x1 = box.y1 = std::numeric_limits<double>::infinity();
@@ -2977,13 +2980,13 @@ bool OffscreenRenderer::Impl::coversOnce(const TranslucentState& state)
     int turn = 0;
     const TranslucentTriangle* triangle = m_translucentTriangles.data() + state.firstTriangle;
     for (std::size_t t = 0; t < state.triangleCount; ++t, ++triangle) {
-        const int way = turnWithSlack(m_clusterWindow[triangle->v[0]], m_clusterWindow[triangle->v[1]],
-                                      m_clusterWindow[triangle->v[2]], slack);
+        const int way = turnWithSlack(m_translucentWindow[triangle->v[0]], m_translucentWindow[triangle->v[1]],
+                                      m_translucentWindow[triangle->v[2]], slack);
         if (way == 0 || (turn != 0 && way != turn))
             return false;
         turn = way;
     }
-    return simpleWithSlack(m_clusterWindow.data(), state.firstVertex, *state.loop, slack, m_loopScratch);
+    return simpleWithSlack(m_translucentWindow.data(), state.firstVertex, *state.loop, slack, m_loopScratch);
 }
 
 std::size_t OffscreenRenderer::Impl::placeInOrder()
@@ -2997,8 +3000,7 @@ std::size_t OffscreenRenderer::Impl::placeInOrder()
     std::size_t count = 0;
     for (std::size_t state = 0; state < stateCount; ++state) {
         const TranslucentState& drawn = m_translucentStates[state];
-        if (drawn.loop != nullptr && drawn.triangleCount > 0 && m_clusterOf[m_stateCluster[state]] == 1 &&
-            coversOnce(drawn)) {
+        if (drawn.anyOrder && m_clusterOf[m_stateCluster[state]] == 1) {
             inOrder[state] = true;
             count += drawn.triangleCount;
         }
