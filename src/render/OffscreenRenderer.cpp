@@ -1617,15 +1617,25 @@ const std::vector<std::uint32_t>* OffscreenRenderer::Impl::loopOf(const DrawRequ
     if (offer.serial == 0 || !r.indexed || r.indices != offer.corners || r.vertexCount != offer.vertexCount ||
         r.indexCount != 3 * offer.triangleCount)
         return nullptr;
-    const auto [at, made] = m_gl->loops.try_emplace(offer.serial);
-    MeshLoop& mesh = at->second;
-    if (made || mesh.vertexCount != offer.vertexCount || mesh.triangleCount != offer.triangleCount) {
-        mesh.vertexCount = offer.vertexCount;
-        mesh.triangleCount = offer.triangleCount;
-        boundaryLoop(offer.corners, offer.triangleCount, offer.vertexCount, mesh.loop);
+    // Only an optimization: out of memory, the draw is sorted, and what is
+    // kept is a whole answer or none.
+    try {
+        const auto [at, made] = m_gl->loops.try_emplace(offer.serial);
+        MeshLoop& mesh = at->second;
+        if (made || mesh.vertexCount != offer.vertexCount || mesh.triangleCount != offer.triangleCount) {
+            mesh.vertexCount = mesh.triangleCount = 0;
+            mesh.loop.clear();
+            std::vector<std::uint32_t> loop;
+            boundaryLoop(offer.corners, offer.triangleCount, offer.vertexCount, loop);
+            mesh.loop = std::move(loop);
+            mesh.vertexCount = offer.vertexCount;
+            mesh.triangleCount = offer.triangleCount;
+        }
+        mesh.lastFrame = m_gl->frameNumber;
+        return mesh.loop.empty() ? nullptr : &mesh.loop;
+    } catch (const std::bad_alloc&) {
+        return nullptr;
     }
-    mesh.lastFrame = m_gl->frameNumber;
-    return mesh.loop.empty() ? nullptr : &mesh.loop;
 }
 
 void OffscreenRenderer::Impl::storePendingKept()
@@ -2749,8 +2759,13 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         stored.loop = loopOf(r);
         stored.firstTriangle = firstTriangle;
         stored.triangleCount = count / 3;
-        // Tested now, while its vertices and triangles are in the cache.
-        stored.anyOrder = stored.loop != nullptr && coversOnce(stored);
+        // Tested now, while its vertices and triangles are in the cache
+        // (out of memory for the test's arrays: sorted).
+        try {
+            stored.anyOrder = stored.loop != nullptr && coversOnce(stored);
+        } catch (const std::bad_alloc&) {
+            stored.anyOrder = false;
+        }
         return RenderResult::success();
     }
     for (std::size_t t = 0; t + 2 < count; t += 3) {
