@@ -779,9 +779,10 @@ public:
         bool bgra = false; // draws B, G, R, A images (FrameOptions::bgraImage)
         std::unique_ptr<GlContext> context;
         GLint maxViewport[2] = {0, 0};
-        // The lighting programs, one per variant (LitProgram::variant):
-        // textured or not, lit at the vertices or at every pixel.
-        LitProgram litPrograms[LitProgram::kVariants];
+        // The lighting programs by variant (LitProgram::variant), each made
+        // when a draw first needs it (a frame uses a handful of the
+        // kVariants; all of them held here were half a megabyte a context).
+        std::unique_ptr<LitProgram> litPrograms[LitProgram::kVariants];
         UnlitProgram unlitPrograms[2];
         // Anti-aliasing's OpenGL objects (0: not made yet in this context),
         // with the program that copies the image into the multisample
@@ -1504,7 +1505,16 @@ LitProgram* OffscreenRenderer::Impl::useLitProgram(int variant, const SurfaceSha
 
 LitProgram* OffscreenRenderer::Impl::litProgram(int variant, RenderResult& result)
 {
-    LitProgram& program = m_gl->litPrograms[variant];
+    std::unique_ptr<LitProgram>& made = m_gl->litPrograms[variant];
+    if (made == nullptr) {
+        try {
+            made = std::make_unique<LitProgram>();
+        } catch (const std::bad_alloc&) {
+            result = outOfMemory();
+            return nullptr;
+        }
+    }
+    LitProgram& program = *made;
     if (!program.built()) {
         std::string error;
         if (!program.build(error, variant)) {
@@ -2845,7 +2855,7 @@ bool OffscreenRenderer::Impl::loadFog(const DrawCommand& head, int variant, FogL
     loaded.unlit = -1;
     std::uint32_t& set = loaded.fog[variant];
     if (set != head.fog) {
-        m_gl->litPrograms[variant].finish().setFog(fogOf(head.fog));
+        m_gl->litPrograms[variant]->finish().setFog(fogOf(head.fog));
         set = head.fog;
     }
     return true;
@@ -3020,16 +3030,16 @@ std::size_t OffscreenRenderer::Impl::placeInOrder()
             count += drawn.triangleCount;
         }
     }
-    if (count == 0)
-        return 0;
-    // A stable partition: those first, the rest after, each in its order.
+    m_inOrderTriangles += count;
     const std::size_t total = m_translucentTriangles.size();
+    if (count == 0 || count == total)
+        return count;
+    // A stable partition: those first, the rest after, each in its order.
     m_clustered.resize(total);
     std::size_t front = 0, back = count;
     for (const TranslucentTriangle& triangle : m_translucentTriangles)
         m_clustered[inOrder[triangle.state] ? front++ : back++] = triangle;
     m_translucentTriangles.swap(m_clustered);
-    m_inOrderTriangles += count;
     return count;
 }
 
