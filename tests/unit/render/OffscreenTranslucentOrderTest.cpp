@@ -72,15 +72,18 @@ Shading translucent(const TestMesh& mesh, bool smooth)
 }
 
 // A depth-tested frame: an opaque back over the whole image at z 0.99,
-// then `draw`, with `matrix`.
+// then `draw`, with `matrix`, its triangles multisampled if `antiAlias`.
 template <class Draw>
 std::vector<std::uint8_t> frame(OffscreenRenderer& renderer, Draw&& draw,
-                                const std::array<float, 16>& matrix = pixelOrtho())
+                                const std::array<float, 16>& matrix = pixelOrtho(), bool antiAlias = false)
 {
     FrameOptions options;
     options.depthTest = true;
     const std::array<float, 16> ortho = pixelOrtho();
     EXPECT_TRUE(renderer.beginFrame(kSize, kSize, kClear, PixelRect{0, 0, kSize, kSize}, options).ok());
+    AntiAliasOptions smoothing;
+    smoothing.triangles = antiAlias;
+    EXPECT_TRUE(renderer.setAntiAlias(smoothing).ok());
     EXPECT_TRUE(renderer.setMatrix(ortho.data()).ok());
     const float back[] = {0, 0, 0.99f, kSize, 0, 0.99f, kSize, kSize, 0.99f,
                           0, 0, 0.99f, kSize, kSize, 0.99f, 0, kSize, 0.99f};
@@ -147,16 +150,21 @@ TEST(OffscreenTranslucentOrder, AMeshThatCoversEachSampleOnceIsDrawnUnsortedWith
     std::array<float, 16> perspective = pixelOrtho();
     perspective[11] = 0.4f;
     perspective[15] = 1.0f;
-    for (const std::array<float, 16>& matrix : {pixelOrtho(), perspective}) {
-        OffscreenRenderer sorted, unsorted;
-        const std::vector<std::uint8_t> expected = frame(
-            sorted, [&] { ASSERT_TRUE(sorted.draw(grid.view(false), translucent(grid, true)).ok()); }, matrix);
-        const std::vector<std::uint8_t> image = frame(
-            unsorted, [&] { ASSERT_TRUE(unsorted.draw(grid.view(), translucent(grid, true)).ok()); }, matrix);
-        EXPECT_EQ(sorted.translucentInOrder(), 0u);
-        EXPECT_EQ(unsorted.translucentInOrder(), grid.triangles.size() / 3);
-        EXPECT_EQ(image, expected);
-    }
+    // Multisampled too: the argument holds at every sample point.
+    for (const bool antiAlias : {false, true})
+        for (const std::array<float, 16>& matrix : {pixelOrtho(), perspective}) {
+            SCOPED_TRACE(antiAlias ? "multisampled" : "one sample a pixel");
+            OffscreenRenderer sorted, unsorted;
+            const std::vector<std::uint8_t> expected = frame(
+                sorted, [&] { ASSERT_TRUE(sorted.draw(grid.view(false), translucent(grid, true)).ok()); }, matrix,
+                antiAlias);
+            const std::vector<std::uint8_t> image = frame(
+                unsorted, [&] { ASSERT_TRUE(unsorted.draw(grid.view(), translucent(grid, true)).ok()); }, matrix,
+                antiAlias);
+            EXPECT_EQ(sorted.translucentInOrder(), 0u);
+            EXPECT_EQ(unsorted.translucentInOrder(), grid.triangles.size() / 3);
+            EXPECT_EQ(image, expected);
+        }
 }
 
 // Random grids, jittered so that some fold over themselves and some do
