@@ -431,14 +431,12 @@ private:
         // vertices, stored together), for glDrawRangeElements.
         GLuint firstVertex;
         GLuint lastVertex;
-        // A draw whose every triangle is translucent, of a mesh with a
-        // serial whose boundary is one loop (SingleCover.h): the loop (in
-        // the draw's vertex numbers), and where its triangles are in
-        // m_translucentTriangles; else null.
-        const std::vector<std::uint32_t>* loop;
-        std::size_t firstTriangle;
+        // How many triangles a draw whose every triangle is translucent
+        // stored, and whether they may be drawn in any order (coversOnce,
+        // found as they are stored: a mesh with a serial whose boundary is
+        // one loop); 0 and false for the other draws.
         std::size_t triangleCount;
-        bool anyOrder; // with a loop: coversOnce(), found as it is stored
+        bool anyOrder;
     };
     struct TranslucentTriangle {
         double depth; // of its centre in clip space (z / w), larger is farther
@@ -521,7 +519,10 @@ private:
     // of each state alone in its cluster whose triangles cover no sample
     // twice (coversOnce); returns how many.
     std::size_t placeInOrder();
-    bool coversOnce(const TranslucentState& state);
+    // Whether the state's triangles (its triangleCount from firstTriangle
+    // in m_translucentTriangles) cover no sample twice, `loop` being its
+    // mesh's boundary loop (SingleCover.h).
+    bool coversOnce(const TranslucentState& state, std::size_t firstTriangle, const std::vector<std::uint32_t>& loop);
     LoopScratch m_loopScratch; // coversOnce's
     // Reorders the sorted translucent triangles from `first` on so that
     // each state's run is as long as it can be without changing a pixel.
@@ -2632,8 +2633,7 @@ std::uint32_t OffscreenRenderer::Impl::translucentState(const DrawRequest& r, bo
     state.multisample = m_antiAlias.triangles;
     state.drawOpacity = drawOpacity;
     state.firstVertex = state.lastVertex = 0; // drawSplit sets them
-    state.loop = nullptr;
-    state.firstTriangle = state.triangleCount = 0;
+    state.triangleCount = 0;
     state.anyOrder = false;
     m_translucentStates.push_back(state);
     return std::uint32_t(m_translucentStates.size() - 1);
@@ -2766,13 +2766,12 @@ RenderResult OffscreenRenderer::Impl::drawSplit(const DrawRequest& r, bool textu
         TranslucentState& stored = m_translucentStates[state];
         stored.firstVertex = GLuint(firstVertex);
         stored.lastVertex = GLuint(m_translucentVertices.size() - 1);
-        stored.loop = loopOf(r);
-        stored.firstTriangle = firstTriangle;
         stored.triangleCount = count / 3;
+        const std::vector<std::uint32_t>* loop = loopOf(r);
         // Tested now, while its vertices and triangles are in the cache
         // (out of memory for the test's arrays: sorted).
         try {
-            stored.anyOrder = stored.loop != nullptr && coversOnce(stored);
+            stored.anyOrder = loop != nullptr && coversOnce(stored, firstTriangle, *loop);
         } catch (const std::bad_alloc&) {
             stored.anyOrder = false;
         }
@@ -2964,7 +2963,8 @@ bool OffscreenRenderer::Impl::findClusters()
 // here are exact to double precision. A vertex moved by dx and dw has its
 // window x moved by at most halfWidth * 2 (|dx| + |dw|) / w while
 // |x| <= w and |dw| <= w / 2.
-bool OffscreenRenderer::Impl::coversOnce(const TranslucentState& state)
+bool OffscreenRenderer::Impl::coversOnce(const TranslucentState& state, std::size_t firstTriangle,
+                                         const std::vector<std::uint32_t>& loop)
 {
     constexpr double kFloatError = 1.0 / double(1 << 21);
     constexpr double kSnapSlack = 1.0 / 32.0;
@@ -3003,7 +3003,7 @@ bool OffscreenRenderer::Impl::coversOnce(const TranslucentState& state)
         kSnapSlack + 2.0 * std::max(0.5 * double(m_pane.width) * (error[0] + error[3]),
                                     0.5 * double(m_pane.height) * (error[1] + error[3])) / nearestW;
     int turn = 0;
-    const TranslucentTriangle* triangle = m_translucentTriangles.data() + state.firstTriangle;
+    const TranslucentTriangle* triangle = m_translucentTriangles.data() + firstTriangle;
     for (std::size_t t = 0; t < state.triangleCount; ++t, ++triangle) {
         const int way = turnWithSlack(m_translucentWindow[triangle->v[0]], m_translucentWindow[triangle->v[1]],
                                       m_translucentWindow[triangle->v[2]], slack);
@@ -3011,7 +3011,7 @@ bool OffscreenRenderer::Impl::coversOnce(const TranslucentState& state)
             return false;
         turn = way;
     }
-    return simpleWithSlack(m_translucentWindow.data(), state.firstVertex, *state.loop, slack, m_loopScratch);
+    return simpleWithSlack(m_translucentWindow.data(), state.firstVertex, loop, slack, m_loopScratch);
 }
 
 std::size_t OffscreenRenderer::Impl::placeInOrder()
